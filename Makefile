@@ -1,0 +1,46 @@
+# foon2pddl developer tasks. `make test` works on a fresh Debian machine (installs first).
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed-stamp
+SHARED ?= ../shared/data
+
+.PHONY: install system-deps test bench lint pddl demo experiment clean
+
+install: $(STAMP)
+
+# Debian packages: WordNet 3.0 (FOON-EXP similarity) and Graphviz (SVG task trees).
+system-deps:
+	@if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	  need=""; for p in wordnet-base wordnet-sense-index graphviz; do \
+	    dpkg -s $$p >/dev/null 2>&1 || need="$$need $$p"; done; \
+	  if [ -n "$$need" ]; then apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$need; fi; \
+	else echo "not root on Debian: install wordnet-base wordnet-sense-index graphviz yourself (or nltk.download('wordnet'))"; fi
+
+$(STAMP): pyproject.toml
+	$(MAKE) system-deps
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q -e '.[test]'
+	touch $(STAMP)
+
+test: $(STAMP)
+	$(PY) -m pytest -n 2 tests
+
+bench: $(STAMP)
+	$(PY) -m bench --shared $(SHARED)
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check foon2pddl tests bench
+
+pddl: $(STAMP)
+	$(PY) -m foon2pddl.examples_pddl
+
+demo: $(STAMP)
+	$(VENV)/bin/foon2pddl plan --goal "lemonade"
+
+experiment: $(STAMP)
+	$(VENV)/bin/foon2pddl experiment $(SHARED)/foon-subgraphs -o docs/experiment --report docs/experiment.md
+
+clean:
+	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis

@@ -1,0 +1,5 @@
+"""`python -m foon2pddl`."""
+
+from .cli import main
+
+main()

@@ -1,0 +1,30 @@
+"""Options shared by several commands, so each is spelled and documented once."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..fileio import atomic_write
+
+paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
+level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
+                            help="Hierarchy level: 1 object, 2 object+states, 3 object+states+ingredients.")
+kitchen_option = click.option("--kitchen", "kitchen", type=click.Path(path_type=Path), default=None,
+                              help="Kitchen file (.json, FOON-style O/S lines, or one node per line). "
+                                   "Default: the example kitchen, or the network's default kitchen.")
+goal_option = click.option("--goal", "goal", default=None,
+                           help="Goal: 'label', 'label: state, state [obj]' or 'label: contains {a, b}'.")
+goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path_type=Path), default=None,
+                                help="Goal as one object node in FOON O/S lines.")
+output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
+                             help="Write to this file (atomically) instead of standard output.")
+
+
+def emit(text: str, output: Path | None) -> None:
+    """Print `text`, or write it atomically to `output`."""
+    if output is None:
+        click.echo(text, nl=False)
+    else:
+        atomic_write(output, text)

@@ -1,0 +1,70 @@
+"""Loading what a command works on: network, kitchen, goal (I/O edge shared by the CLI)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from .errors import ParseWarning
+from .goals import Goal, GoalSpec, parse_goal_spec, read_goal_file, resolve_goal
+from .errors import FoonInputError
+from .kitchen import Kitchen, default_kitchen, read_kitchen
+from .levels import check_level, project
+from .merge import load
+from .model import Foon
+
+
+def example_path(name: str = "example.foon") -> Path:
+    """Path of a file of the embedded example network (`example.foon`, `example_kitchen.txt`)."""
+    return Path(str(resources.files("foon2pddl") / "data" / name))
+
+
+@dataclass(frozen=True)
+class Network:
+    """A loaded network at level 3 with its warnings and the paths it came from."""
+
+    foon: Foon
+    warnings: tuple[ParseWarning, ...]
+    paths: tuple[str, ...]
+    is_example: bool = False
+
+    def at(self, level: int) -> Foon:
+        """The network projected to `level`."""
+        return project(self.foon, check_level(level))
+
+
+def load_network(paths: Sequence[str | Path]) -> Network:
+    """Merge the FOON files under `paths`, or the embedded example when none is given."""
+    if not paths:
+        foon, warnings = load([example_path()])
+        return Network(foon, warnings, (str(example_path()),), True)
+    foon, warnings = load(paths)
+    return Network(foon, warnings, tuple(str(p) for p in paths))
+
+
+def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitchen:
+    """The kitchen file given, the example kitchen for the example network, else the default kitchen."""
+    if path is None and network.is_example:
+        path = example_path("example_kitchen.txt")
+    if path is None:
+        return default_kitchen(network.at(level))
+    return read_kitchen(path).project(level)
+
+
+def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
+    """The goal from `--goal` text or `--goal-file`; exactly one must be given."""
+    if (goal is None) == (goal_file is None):
+        raise FoonInputError("<goal>", 0, "give exactly one of --goal and --goal-file")
+    if goal_file is not None:
+        return read_goal_file(goal_file)
+    try:
+        return parse_goal_spec(goal or "")
+    except ValueError as exc:
+        raise FoonInputError("<goal>", 0, f"{exc}: {goal!r}") from None
+
+
+def load_goal(goal: str | None, goal_file: str | Path | None, foon: Foon) -> Goal:
+    """Resolve the user's goal against a network (at the network's level)."""
+    return resolve_goal(goal_spec(goal, goal_file), foon)

@@ -1,0 +1,49 @@
+"""Hierarchy levels: how much of a node counts as its identity.
+
+Level 1 = object label; level 2 = label + states (state label with its related
+object); level 3 = level 2 + ingredient lists. Every algorithm projects the
+network, kitchen and goal to one level first and then compares nodes with `==`.
+"""
+
+from __future__ import annotations
+
+from .model import Foon, FunctionalUnit, ObjectNode, State
+
+LEVELS = (1, 2, 3)
+
+
+def check_level(level: int) -> int:
+    """Validate a level number."""
+    if level not in LEVELS:
+        raise ValueError(f"level must be 1, 2 or 3, not {level!r}")
+    return level
+
+
+def project_node(node: ObjectNode, level: int) -> ObjectNode:
+    """The node as seen at `level` (attributes kept)."""
+    if level == 3:
+        return node
+    if level == 1:
+        states: tuple[State, ...] = ()
+    else:
+        states = tuple(sorted({State(s.label, s.related) for s in node.states}))
+    return ObjectNode(node.label, states, node.motion_flag, node.goal, node.dish)
+
+
+def project_unit(unit: FunctionalUnit, level: int) -> FunctionalUnit:
+    """A unit with its nodes projected; a node listed twice on one side is kept once."""
+    if level == 3:
+        return unit
+    ins = tuple(dict.fromkeys(project_node(n, level) for n in unit.inputs))
+    outs = tuple(dict.fromkeys(project_node(n, level) for n in unit.outputs))
+    return FunctionalUnit(ins, unit.motion, outs, unit.sources)
+
+
+def project(foon: Foon, level: int) -> Foon:
+    """The network at `level` with units that became identical merged (provenance joined)."""
+    from .merge import dedupe_units
+
+    check_level(level)
+    if level >= foon.level:
+        return foon
+    return Foon(dedupe_units(project_unit(u, level) for u in foon.units), level)

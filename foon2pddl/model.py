@@ -1,0 +1,181 @@
+"""Immutable FOON model: states, object nodes, motions, functional units and networks.
+
+Labels are stored normalized (lower-cased, whitespace collapsed) so that node
+equality *is* node identity at level 3; `levels.project` derives levels 1 and 2.
+Attributes that are not identity (motion flag, goal and dish marks, times,
+provenance) are excluded from equality and hashing.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+from functools import cached_property
+
+_WS = re.compile(r"\s+")
+
+
+def normalize_label(text: str) -> str:
+    """Canonical form of a label: lower-cased, whitespace collapsed, stripped."""
+    return _WS.sub(" ", text).strip().lower()
+
+
+@dataclass(frozen=True, order=True)
+class State:
+    """A state of an object: `chopped`, `in [bowl]`, `contains {salt, water}`."""
+
+    label: str
+    related: str = ""
+    ingredients: tuple[str, ...] = ()
+
+    def describe(self) -> str:
+        """Human-readable form, also the goal syntax for one state."""
+        text = self.label
+        if self.related:
+            text += f" [{self.related}]"
+        if self.ingredients:
+            text += " {" + ", ".join(self.ingredients) + "}"
+        return text
+
+
+@dataclass(frozen=True, order=True)
+class ObjectNode:
+    """An object in a set of states. Equality is level-3 identity.
+
+    `states` is kept sorted and duplicate-free by the constructors in this
+    module (`make_node`), so two nodes with the same states compare equal
+    whatever order the source listed them in.
+    """
+
+    label: str
+    states: tuple[State, ...] = ()
+    motion_flag: int = field(default=0, compare=False)
+    goal: bool = field(default=False, compare=False)
+    dish: int | None = field(default=None, compare=False)
+
+    @cached_property
+    def ingredients(self) -> frozenset[str]:
+        """All ingredients listed on any state of this node."""
+        return frozenset(i for s in self.states for i in s.ingredients)
+
+    def describe(self) -> str:
+        """`onion (chopped, in [bowl])`: the goal syntax without the colon."""
+        if not self.states:
+            return self.label
+        return f"{self.label} ({', '.join(s.describe() for s in self.states)})"
+
+
+def make_state(label: str, related: str = "", ingredients: Iterable[str] = ()) -> State:
+    """Build a normalized state: ingredient list deduplicated and sorted, "" = no related object."""
+    items = sorted({normalize_label(i) for i in ingredients} - {""})
+    return State(normalize_label(label), normalize_label(related), tuple(items))
+
+
+def make_node(
+    label: str,
+    states: Iterable[State] = (),
+    *,
+    motion_flag: int = 0,
+    goal: bool = False,
+    dish: int | None = None,
+) -> ObjectNode:
+    """Build a normalized node: label normalized, states sorted and deduplicated."""
+    return ObjectNode(normalize_label(label), tuple(sorted(set(states))), motion_flag, goal, dish)
+
+
+@dataclass(frozen=True)
+class Motion:
+    """The manipulation of a unit. `composite` marks a `*`-suffixed label."""
+
+    label: str
+    start: str | None = field(default=None, compare=False)
+    end: str | None = field(default=None, compare=False)
+    composite: bool = field(default=False, compare=False)
+
+
+@dataclass(frozen=True)
+class Source:
+    """Where a unit was read: file path (or recipe name) and 1-based line."""
+
+    path: str
+    line: int = 0
+    url: str | None = None
+    expanded_from: str | None = None
+
+
+@dataclass(frozen=True)
+class FunctionalUnit:
+    """Inputs -> motion -> outputs, with the places it was read from."""
+
+    inputs: tuple[ObjectNode, ...]
+    motion: Motion
+    outputs: tuple[ObjectNode, ...]
+    sources: tuple[Source, ...] = field(default=(), compare=False)
+
+    @cached_property
+    def key(self) -> tuple[str, frozenset[ObjectNode], frozenset[ObjectNode]]:
+        """Duplicate-detection key: motion label with the sets of input and output nodes."""
+        return (self.motion.label, frozenset(self.inputs), frozenset(self.outputs))
+
+    @property
+    def source(self) -> Source | None:
+        """The first place this unit was read from."""
+        return self.sources[0] if self.sources else None
+
+    def describe(self) -> str:
+        """One-line summary: `chop: onion (whole), knife -> onion (chopped)`."""
+        ins = ", ".join(n.describe() for n in self.inputs)
+        outs = ", ".join(n.describe() for n in self.outputs)
+        return f"{self.motion.label}: {ins} -> {outs}"
+
+
+@dataclass(frozen=True)
+class Foon:
+    """A functional object-oriented network: units in a stable order, plus indexes.
+
+    `level` records which hierarchy level the nodes are expressed at (3 = as read).
+    """
+
+    units: tuple[FunctionalUnit, ...]
+    level: int = 3
+
+    def __iter__(self) -> Iterator[FunctionalUnit]:
+        return iter(self.units)
+
+    def __len__(self) -> int:
+        return len(self.units)
+
+    @cached_property
+    def nodes(self) -> tuple[ObjectNode, ...]:
+        """Every distinct object node, in order of first appearance."""
+        seen: dict[ObjectNode, None] = {}
+        for u in self.units:
+            for n in u.inputs:
+                seen.setdefault(n, None)
+            for n in u.outputs:
+                seen.setdefault(n, None)
+        return tuple(seen)
+
+    @cached_property
+    def producers(self) -> dict[ObjectNode, tuple[int, ...]]:
+        """Node -> indexes of the units that output it."""
+        return _index(self.units, lambda u: u.outputs)
+
+    @cached_property
+    def consumers(self) -> dict[ObjectNode, tuple[int, ...]]:
+        """Node -> indexes of the units that take it as input."""
+        return _index(self.units, lambda u: u.inputs)
+
+    @cached_property
+    def motions(self) -> tuple[str, ...]:
+        """Distinct motion labels, sorted."""
+        return tuple(sorted({u.motion.label for u in self.units}))
+
+
+def _index(units: tuple[FunctionalUnit, ...], side) -> dict[ObjectNode, tuple[int, ...]]:
+    acc: dict[ObjectNode, list[int]] = {}
+    for i, u in enumerate(units):
+        for n in dict.fromkeys(side(u)):
+            acc.setdefault(n, []).append(i)
+    return {n: tuple(v) for n, v in acc.items()}

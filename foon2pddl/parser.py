@@ -1,0 +1,285 @@
+"""Reader for the FOON text format (id-ful public dataset and id-less universal variant).
+
+Accepts every quirk of the public data (see docs/format.md); rejects anything
+else with a `FoonSyntaxError` naming path, line, the offending text and what
+was expected. Blocks that are not units (no motion, no outputs, no inputs)
+are skipped with a `ParseWarning`, never half-added.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from .errors import FoonSyntaxError, ParseWarning
+from .model import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
+
+_ID = re.compile(r"[OSM]\d*")
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
+_INT = re.compile(r"\d+")
+
+
+@dataclass(frozen=True)
+class ParseResult:
+    """A parsed file: its network, the warnings raised and its `# Source:` URLs."""
+
+    foon: Foon
+    warnings: tuple[ParseWarning, ...] = ()
+    urls: tuple[str, ...] = ()
+
+
+def read_text(path: Path) -> str:
+    """Read a file as UTF-8 (BOM tolerated); a decoding error names the line."""
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise FoonSyntaxError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        raise FoonSyntaxError(str(path), line, f"not UTF-8 text (byte 0x{data[exc.start]:02x})") from None
+
+
+def parse_file(path: str | Path) -> ParseResult:
+    """Parse one FOON file."""
+    p = Path(path)
+    return parse_text(read_text(p), str(p))
+
+
+class _Block:
+    """The unit being read: objects before and after the motion line."""
+
+    __slots__ = ("start", "inputs", "motion", "outputs", "obj")
+
+    def __init__(self, start: int) -> None:
+        self.start = start
+        self.inputs: list[ObjectNode] = []
+        self.motion: Motion | None = None
+        self.outputs: list[ObjectNode] = []
+        self.obj: _PendingObject | None = None
+
+    def empty(self) -> bool:
+        return self.obj is None and self.motion is None and not self.inputs and not self.outputs
+
+
+class _PendingObject:
+    __slots__ = ("label", "flag", "goal", "dish", "states")
+
+    def __init__(self, label: str, flag: int, goal: bool, dish: int | None) -> None:
+        self.label = label
+        self.flag = flag
+        self.goal = goal
+        self.dish = dish
+        self.states: list[State] = []
+
+    def build(self) -> ObjectNode:
+        return make_node(self.label, self.states, motion_flag=self.flag, goal=self.goal, dish=self.dish)
+
+
+def parse_text(text: str, path: str = "<string>") -> ParseResult:
+    """Parse FOON text; `path` is used in errors, warnings and provenance."""
+    units: list[FunctionalUnit] = []
+    warnings: list[ParseWarning] = []
+    urls: list[str] = []
+    block = _Block(1)
+    state_cache: dict[tuple[str, ...], State] = {}
+
+    def fail(lineno: int, message: str, line: str) -> FoonSyntaxError:
+        return FoonSyntaxError(path, lineno, message, line)
+
+    def close_object() -> None:
+        if block.obj is not None:
+            (block.inputs if block.motion is None else block.outputs).append(block.obj.build())
+            block.obj = None
+
+    def close_block(lineno: int) -> None:
+        nonlocal block
+        close_object()
+        if not block.empty():
+            problem = None
+            if block.motion is None:
+                problem = "block has no motion line ('M'); skipped"
+            elif not block.outputs:
+                problem = "unit has no output objects after its motion line; skipped"
+            elif not block.inputs:
+                problem = "unit has no input objects before its motion line; skipped"
+            if problem:
+                warnings.append(ParseWarning(path, block.start, problem))
+            else:
+                url = urls[-1] if urls else None
+                units.append(
+                    FunctionalUnit(
+                        tuple(block.inputs), block.motion, tuple(block.outputs),
+                        (Source(path, block.start, url),),
+                    )
+                )
+        block = _Block(lineno + 1)
+
+    lineno = 0
+    for lineno, raw in enumerate(text.split("\n"), start=1):
+        line = raw.rstrip("\r")
+        stripped = line.strip()
+        if not stripped:
+            continue
+        if stripped.startswith("#"):
+            if stripped[1:].lstrip().lower().startswith("source:"):
+                url = stripped[1:].lstrip()[len("source:"):].strip()
+                if url:
+                    urls.append(url)
+            continue
+        if stripped.startswith("//"):
+            close_block(lineno)
+            continue
+        if _CONTROL.search(line):
+            raise fail(lineno, "control character in line (garbage bytes?)", line)
+        if block.empty():
+            block.start = lineno
+        fields = [f.strip() for f in stripped.split("\t")]
+        head = fields[0]
+        kind = head[:1]
+        if kind not in "OSM" or not _ID.fullmatch(head):
+            raise fail(lineno, "expected an 'O', 'S' or 'M' line, '//' or a '#' comment", line)
+        if len(fields) < 2 or not fields[1]:
+            raise fail(lineno, f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')", line)
+        if kind == "O":
+            close_object()
+            block.obj = _parse_object(fields, lambda m: fail(lineno, m, line))
+        elif kind == "S":
+            if block.obj is None:
+                raise fail(lineno, "state line ('S') before any object line ('O') of its unit", line)
+            key = tuple(fields[1:])
+            state = state_cache.get(key)
+            if state is None:
+                state = state_cache[key] = _parse_state(fields, lambda m: fail(lineno, m, line))
+            block.obj.states.append(state)
+        else:
+            if block.motion is not None:
+                raise fail(lineno, "second motion line ('M') in one unit (missing '//'?)", line)
+            close_object()
+            block.motion = _parse_motion(fields)
+    close_block(lineno)
+    if not units:
+        raise FoonSyntaxError(path, max(lineno, 1), "no functional units in file")
+    return ParseResult(Foon(tuple(units)), tuple(warnings), tuple(dict.fromkeys(urls)))
+
+
+def _parse_object(fields: list[str], fail) -> _PendingObject:
+    """`O<id> label [flag] [dish|!]`: flag 0/1 (`00` seen), dish an integer, `!` a goal mark."""
+    label = fields[1]
+    if _CONTROL.search(label):
+        raise fail("control character in object label")
+    flag, goal, dish = 0, False, None
+    rest = [f for f in fields[2:] if f]
+    for i, value in enumerate(rest):
+        if value == "!":
+            goal = True
+        elif value.endswith("!") and _INT.fullmatch(value[:-1]):
+            goal = True
+            value = value[:-1]
+            if i == 0:
+                flag = int(value)
+            else:
+                dish = int(value)
+        elif _INT.fullmatch(value):
+            if i == 0:
+                flag = int(value)
+            elif dish is None:
+                dish = int(value)
+            else:
+                raise fail(f"unexpected extra field {value!r} on object line")
+        else:
+            what = "motion identifier 0/1" if i == 0 else "dish marker (integer) or '!'"
+            raise fail(f"expected {what}, found {value!r}")
+    return _PendingObject(label, flag, goal, dish)
+
+
+def _split_list(body: str) -> list[str]:
+    return [item.strip() for item in body.split(",") if item.strip()]
+
+
+def _parse_state(fields: list[str], fail) -> State:
+    """`S<id> label [ [related] | {ingredients} ]...`; `[a,b]` lists are read as ingredients."""
+    label = fields[1]
+    related = ""
+    ingredients: list[str] = []
+    for extra in fields[2:]:
+        if not extra:
+            continue
+        if extra.startswith("[") and extra.endswith("]"):
+            items = _split_list(extra[1:-1])
+            if len(items) == 1:
+                if related:
+                    raise fail("state has two related objects")
+                related = items[0]
+            else:
+                ingredients.extend(items)
+        elif extra.startswith("{") and extra.endswith("}"):
+            ingredients.extend(_split_list(extra[1:-1]))
+        else:
+            raise fail(f"expected '[related object]' or '{{ingredient, ...}}' after the state label, found {extra!r}")
+    return make_state(label, related, ingredients)
+
+
+def _parse_motion(fields: list[str]) -> Motion:
+    """`M<id> label [start end]` or `<start,end>` / `<Assumed>`; `label*` marks a composite unit."""
+    label = fields[1]
+    composite = label.endswith("*")
+    label = label.rstrip("*").strip() or label
+    times = [f for f in fields[2:] if f]
+    start = end = None
+    if len(times) == 1 and times[0].startswith("<") and times[0].endswith(">"):
+        parts = re.split(r"[,\-]", times[0][1:-1], maxsplit=1)
+        start = parts[0].strip() or None
+        end = parts[1].strip() if len(parts) > 1 else start
+    elif times:
+        start = times[0]
+        end = times[1] if len(times) > 1 else start
+    return Motion(normalize_label(label), start, end, composite)
+
+
+def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, int]]:
+    """Object nodes written as O/S lines (kitchen and goal files), with their line numbers.
+
+    Objects end at the next `O` line or at `//`; motion lines are an error here.
+    """
+    nodes: list[tuple[ObjectNode, int]] = []
+    obj: _PendingObject | None = None
+    start = 0
+
+    def close() -> None:
+        nonlocal obj
+        if obj is not None:
+            nodes.append((obj.build(), start))
+            obj = None
+
+    for lineno, raw in enumerate(text.split("\n"), start=1):
+        line = raw.rstrip("\r")
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if stripped.startswith("//"):
+            close()
+            continue
+        if _CONTROL.search(line):
+            raise FoonSyntaxError(path, lineno, "control character in line (garbage bytes?)", line)
+        fields = [f.strip() for f in stripped.split("\t")]
+        head = fields[0]
+        if head[:1] not in "OS" or not _ID.fullmatch(head):
+            raise FoonSyntaxError(path, lineno, "expected an 'O' or 'S' line, '//' or a '#' comment", line)
+        if len(fields) < 2 or not fields[1]:
+            raise FoonSyntaxError(path, lineno, f"'{head[0]}' line has no label", line)
+
+        def fail(message: str, lineno: int = lineno, line: str = line) -> FoonSyntaxError:
+            return FoonSyntaxError(path, lineno, message, line)
+
+        if head[0] == "O":
+            close()
+            obj, start = _parse_object(fields, fail), lineno
+        else:
+            if obj is None:
+                raise fail("state line ('S') before any object line ('O')")
+            obj.states.append(_parse_state(fields, fail))
+    close()
+    return nodes

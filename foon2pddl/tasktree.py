@@ -1,0 +1,51 @@
+"""Task trees: the units that, run in order from a kitchen, make a goal.
+
+A TaskTree is what every solver returns (native retrieval and mapped-back
+planner plans alike) and is checked the same way, by simulation.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .model import FunctionalUnit, ObjectNode
+
+
+@dataclass(frozen=True)
+class TaskTree:
+    """Units in executable order and the goal node the last of them makes available."""
+
+    units: tuple[FunctionalUnit, ...]
+    goal: ObjectNode
+    level: int = 3
+
+    def __len__(self) -> int:
+        return len(self.units)
+
+
+@dataclass(frozen=True)
+class Validation:
+    """Result of simulating a tree from a kitchen: ok, or the first problems found."""
+
+    ok: bool
+    problems: tuple[str, ...] = ()
+
+    def __bool__(self) -> bool:
+        return self.ok
+
+
+def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode]) -> Validation:
+    """Run the units in order: every input must be available when its unit runs, and the goal at the end."""
+    available = set(kitchen_nodes)
+    problems: list[str] = []
+    for step, unit in enumerate(tree.units, start=1):
+        missing = [n for n in unit.inputs if n not in available]
+        if missing:
+            problems.append(
+                f"step {step} ({unit.motion.label}): input not available: "
+                + "; ".join(n.describe() for n in missing)
+            )
+        available.update(unit.outputs)
+    if tree.goal not in available:
+        problems.append(f"goal not produced: {tree.goal.describe()}")
+    return Validation(not problems, tuple(problems))
