@@ -16,8 +16,8 @@ from .merge import load
 from .model import Foon
 
 
-def example_path(name: str = "example.foon") -> Path:
-    """Path of a file of the embedded example network (`example.foon`, `example_kitchen.txt`)."""
+def example_path(name: str = "example") -> Path:
+    """Path inside the embedded example: `example` (directory of recipes) or `example_kitchen.txt`."""
     return Path(str(resources.files("foon2pddl") / "data" / name))
 
 

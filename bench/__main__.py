@@ -1,0 +1,30 @@
+"""Run the benchmarks: `python -m bench [--shared DIR] [--only AREA ...] [--repeat N] [--quick]`."""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+from pathlib import Path
+
+from .harness import Context
+
+#: Benchmark modules in the order they run (each has `run(ctx)`).
+AREAS = ["foundation"]
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__)
+    ap.add_argument("--shared", type=Path, default=Path("../shared/data"), help="shared data directory")
+    ap.add_argument("--only", nargs="*", choices=AREAS, help="run only these areas")
+    ap.add_argument("--repeat", type=int, default=5, help="runs per measurement (median reported)")
+    ap.add_argument("--quick", action="store_true", help="smaller samples, for a smoke run")
+    ap.add_argument("--save", type=Path, default=Path("bench/results/latest.json"), help="where to write figures")
+    args = ap.parse_args()
+    ctx = Context(args.shared, args.repeat, args.quick)
+    for area in args.only or AREAS:
+        importlib.import_module(f"bench.{area}").run(ctx)
+    ctx.save(args.save)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,44 @@
+"""Timing helpers shared by every benchmark module: medians over repeated runs."""
+
+from __future__ import annotations
+
+import json
+import statistics
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+
+def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[float, list[float], Any]:
+    """Median wall time of `fn` in seconds over `repeat` runs (after `warmup`), all times, last result."""
+    result = None
+    for _ in range(warmup):
+        result = fn()
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        result = fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times), times, result
+
+
+@dataclass
+class Context:
+    """What a benchmark module gets: shared data path, repeat count and a report sink."""
+
+    shared: Path
+    repeat: int = 5
+    quick: bool = False
+    rows: list[dict[str, Any]] = field(default_factory=list)
+
+    def report(self, area: str, name: str, value: float, unit: str, note: str = "") -> None:
+        """Record and print one figure."""
+        self.rows.append({"area": area, "name": name, "value": value, "unit": unit, "note": note})
+        shown = f"{value:.4g}" if isinstance(value, float) else str(value)
+        print(f"[{area}] {name}: {shown} {unit}" + (f"  ({note})" if note else ""), flush=True)
+
+    def save(self, path: Path) -> None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(self.rows, indent=2) + "\n")

@@ -1,0 +1,28 @@
+"""Shared fixtures: the shared data directory beside the checkout and the merged universal FOON."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+SHARED = ROOT.parent / "shared" / "data"
+SUBGRAPHS = SHARED / "foon-subgraphs"
+SEARCH_INPUTS = SHARED / "foon-search-inputs"
+
+
+@pytest.fixture(scope="session")
+def universal():
+    """The universal FOON of the shared subgraphs at level 3 (with parse warnings)."""
+    from foon2pddl.merge import load
+
+    return load([SUBGRAPHS])
+
+
+@pytest.fixture(scope="session")
+def example():
+    """The embedded example network."""
+    from foon2pddl.inputs import load_network
+
+    return load_network([])
