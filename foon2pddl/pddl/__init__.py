@@ -1,0 +1,1 @@
+"""FOON to PDDL: planning-task IR, encodings, rendering, planners and plan decoding."""

@@ -1,0 +1,84 @@
+"""Planning-task intermediate representation: knows PDDL's structure, not its syntax.
+
+Encodings build a `PlanningTask`; `render` turns it into PDDL text through jinja2
+templates; planners and the decoder map action names back to functional units
+through `Action.unit`. All names here are already sanitized PDDL identifiers
+(see `names.py`); the original labels live in `PlanningTask.labels`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+
+@dataclass(frozen=True, order=True)
+class Atom:
+    """A predicate applied to object names or `?variables`."""
+
+    predicate: str
+    args: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Predicate:
+    """A predicate declaration: name and parameter types (`object` when untyped)."""
+
+    name: str
+    params: tuple[tuple[str, str], ...] = ()  # (?var, type)
+    comment: str = ""
+
+
+@dataclass(frozen=True)
+class Action:
+    """A (possibly parameterised) action; `unit` indexes `PlanningTask.units` (None for auxiliary actions)."""
+
+    name: str
+    pre: tuple[Atom, ...]
+    add: tuple[Atom, ...]
+    delete: tuple[Atom, ...] = ()
+    params: tuple[tuple[str, str], ...] = ()  # (?var, type)
+    cost: int | None = None
+    unit: int | None = None
+    comment: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class PlanningTask:
+    """A domain and a problem, ready to render."""
+
+    domain: str
+    problem: str
+    encoding: str
+    level: int
+    predicates: tuple[Predicate, ...]
+    actions: tuple[Action, ...]
+    init: tuple[Atom, ...]
+    goal: tuple[Atom, ...]
+    types: tuple[tuple[str, str], ...] = ()  # (type, parent type)
+    objects: tuple[tuple[str, str], ...] = ()  # (name, type) declared in the problem
+    units: tuple = ()  # FunctionalUnit per Action.unit index
+    labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
+    comments: tuple[str, ...] = ()  # header lines for both files
+
+    @property
+    def uses_costs(self) -> bool:
+        return any(a.cost is not None for a in self.actions)
+
+    @property
+    def requirements(self) -> tuple[str, ...]:
+        """Exactly the PDDL requirements the task uses."""
+        req = [":strips"]
+        if self.types:
+            req.append(":typing")
+        if self.uses_costs:
+            req.append(":action-costs")
+        return tuple(req)
+
+    def action_for(self, name: str) -> Action | None:
+        """The action called `name` (case-insensitive, as planners lower-case)."""
+        return self._by_name.get(name.lower())
+
+    @cached_property
+    def _by_name(self) -> dict[str, Action]:
+        return {a.name.lower(): a for a in self.actions}
