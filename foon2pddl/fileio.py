@@ -7,6 +7,13 @@ import tempfile
 from pathlib import Path
 
 
+def _umask_mode() -> int:
+    """Mode a plainly created file would get (mkstemp's 0600 is too strict for outputs)."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
 def atomic_write(path: str | Path, data: str | bytes) -> None:
     """Write `data` to `path` through a temporary file in the same directory and a rename."""
     p = Path(path)
@@ -15,6 +22,7 @@ def atomic_write(path: str | Path, data: str | bytes) -> None:
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data.encode("utf-8") if isinstance(data, str) else data)
+        os.chmod(tmp, _umask_mode())
         os.replace(tmp, p)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -31,6 +39,7 @@ def atomic_write_many(files: dict[Path, str | bytes]) -> None:
             staged.append((tmp, path))
             with os.fdopen(fd, "wb") as fh:
                 fh.write(data.encode("utf-8") if isinstance(data, str) else data)
+            os.chmod(tmp, _umask_mode())
         for tmp, path in staged:
             os.replace(tmp, path)
     except BaseException:
