@@ -7,9 +7,8 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from .errors import ParseWarning
+from .errors import FoonInputError, ParseWarning
 from .goals import Goal, GoalSpec, parse_goal_spec, read_goal_file, resolve_goal
-from .errors import FoonInputError
 from .kitchen import Kitchen, default_kitchen, read_kitchen
 from .levels import check_level, project
 from .merge import load

@@ -30,12 +30,16 @@ def project_node(node: ObjectNode, level: int) -> ObjectNode:
     return ObjectNode(node.label, states, node.motion_flag, node.goal, node.dish)
 
 
-def project_unit(unit: FunctionalUnit, level: int) -> FunctionalUnit:
-    """A unit with its nodes projected; a node listed twice on one side is kept once."""
+def project_unit(unit: FunctionalUnit, level: int, node=None) -> FunctionalUnit:
+    """A unit with its nodes projected; a node listed twice on one side is kept once.
+
+    `node` replaces `project_node(n, level)` (used by `project` to memoize).
+    """
     if level == 3:
         return unit
-    ins = tuple(dict.fromkeys(project_node(n, level) for n in unit.inputs))
-    outs = tuple(dict.fromkeys(project_node(n, level) for n in unit.outputs))
+    node = node or (lambda n: project_node(n, level))
+    ins = tuple(dict.fromkeys(node(n) for n in unit.inputs))
+    outs = tuple(dict.fromkeys(node(n) for n in unit.outputs))
     return FunctionalUnit(ins, unit.motion, outs, unit.sources)
 
 
@@ -46,4 +50,14 @@ def project(foon: Foon, level: int) -> Foon:
     check_level(level)
     if level >= foon.level:
         return foon
-    return Foon(dedupe_units(project_unit(u, level) for u in foon.units), level)
+    # Node instances recur across units: project each instance once (keyed by id, so
+    # attributes such as the motion flag stay those of the instance; `foon` keeps them alive).
+    memo: dict[int, ObjectNode] = {}
+
+    def node(n: ObjectNode) -> ObjectNode:
+        p = memo.get(id(n))
+        if p is None:
+            p = memo[id(n)] = project_node(n, level)
+        return p
+
+    return Foon(dedupe_units(project_unit(u, level, node) for u in foon.units), level)

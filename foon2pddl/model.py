@@ -11,13 +11,17 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 _WS = re.compile(r"\s+")
 
 
+@lru_cache(maxsize=1 << 16)
 def normalize_label(text: str) -> str:
-    """Canonical form of a label: lower-cased, whitespace collapsed, stripped."""
+    """Canonical form of a label: lower-cased, whitespace collapsed, stripped.
+
+    Cached: the same few hundred labels recur tens of thousands of times in a network.
+    """
     return _WS.sub(" ", text).strip().lower()
 
 
@@ -53,6 +57,20 @@ class ObjectNode:
     motion_flag: int = field(default=0, compare=False)
     goal: bool = field(default=False, compare=False)
     dish: int | None = field(default=None, compare=False)
+
+    def __hash__(self) -> int:
+        # Cached: nodes are hashed constantly (sets, dict keys, unit keys). Same value as
+        # the generated dataclass hash; dropped when pickling (string hashes differ per process).
+        try:
+            return self.__dict__["_hash"]
+        except KeyError:
+            value = self.__dict__["_hash"] = hash((self.label, self.states))
+            return value
+
+    def __getstate__(self) -> dict:
+        state = self.__dict__.copy()
+        state.pop("_hash", None)
+        return state
 
     @cached_property
     def ingredients(self) -> frozenset[str]:

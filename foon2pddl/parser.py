@@ -65,7 +65,7 @@ class _Block:
 
 
 class _PendingObject:
-    __slots__ = ("label", "flag", "goal", "dish", "states")
+    __slots__ = ("label", "flag", "goal", "dish", "states", "keys")
 
     def __init__(self, label: str, flag: int, goal: bool, dish: int | None) -> None:
         self.label = label
@@ -73,6 +73,10 @@ class _PendingObject:
         self.goal = goal
         self.dish = dish
         self.states: list[State] = []
+        self.keys: list[tuple[str, ...]] = []  # raw state fields, for the node cache
+
+    def cache_key(self) -> tuple:
+        return (self.label, self.flag, self.goal, self.dish, tuple(self.keys))
 
     def build(self) -> ObjectNode:
         return make_node(self.label, self.states, motion_flag=self.flag, goal=self.goal, dish=self.dish)
@@ -84,14 +88,21 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
     warnings: list[ParseWarning] = []
     urls: list[str] = []
     block = _Block(1)
+    # The same state and object lines recur throughout a file (a unit's outputs are the
+    # next unit's inputs): build each once, keyed by its raw fields, and share the instance.
     state_cache: dict[tuple[str, ...], State] = {}
+    node_cache: dict[tuple, ObjectNode] = {}
 
     def fail(lineno: int, message: str, line: str) -> FoonSyntaxError:
         return FoonSyntaxError(path, lineno, message, line)
 
     def close_object() -> None:
         if block.obj is not None:
-            (block.inputs if block.motion is None else block.outputs).append(block.obj.build())
+            key = block.obj.cache_key()
+            node = node_cache.get(key)
+            if node is None:
+                node = node_cache[key] = block.obj.build()
+            (block.inputs if block.motion is None else block.outputs).append(node)
             block.obj = None
 
     def close_block(lineno: int) -> None:
@@ -145,23 +156,24 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
             raise fail(lineno, f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')", line)
         if kind == "O":
             close_object()
-            block.obj = _parse_object(fields, lambda m: fail(lineno, m, line))
+            block.obj = _parse_object(fields, lambda m, n=lineno, t=line: fail(n, m, t))
         elif kind == "S":
             if block.obj is None:
                 raise fail(lineno, "state line ('S') before any object line ('O') of its unit", line)
             key = tuple(fields[1:])
             state = state_cache.get(key)
             if state is None:
-                state = state_cache[key] = _parse_state(fields, lambda m: fail(lineno, m, line))
+                state = state_cache[key] = _parse_state(fields, lambda m, n=lineno, t=line: fail(n, m, t))
             block.obj.states.append(state)
+            block.obj.keys.append(key)
         else:
             if block.motion is not None:
                 raise fail(lineno, "second motion line ('M') in one unit (missing '//'?)", line)
             close_object()
-            block.motion = _parse_motion(fields)
+            block.motion = _parse_motion(fields, lambda m, n=lineno, t=line: fail(n, m, t))
     close_block(lineno)
-    if not units:
-        raise FoonSyntaxError(path, max(lineno, 1), "no functional units in file")
+    if not units:  # reported at the last line of the file (1 when empty)
+        raise FoonSyntaxError(path, max(lineno - text.endswith("\n"), 1), "no functional units in file")
     return ParseResult(Foon(tuple(units)), tuple(warnings), tuple(dict.fromkeys(urls)))
 
 
@@ -222,11 +234,13 @@ def _parse_state(fields: list[str], fail) -> State:
     return make_state(label, related, ingredients)
 
 
-def _parse_motion(fields: list[str]) -> Motion:
+def _parse_motion(fields: list[str], fail) -> Motion:
     """`M<id> label [start end]` or `<start,end>` / `<Assumed>`; `label*` marks a composite unit."""
     label = fields[1]
     composite = label.endswith("*")
-    label = label.rstrip("*").strip() or label
+    label = label.rstrip("*").strip()
+    if not label:
+        raise fail("motion line has no label before '*'")
     times = [f for f in fields[2:] if f]
     start = end = None
     if len(times) == 1 and times[0].startswith("<") and times[0].endswith(">"):

@@ -59,7 +59,9 @@ def write_unit(unit: FunctionalUnit, ids=_no_ids, provenance: bool = False) -> s
     """A unit followed by its `//` separator."""
     head = ""
     if provenance:
-        head = "".join(f"# from {s.path}:{s.line}\n" for s in unit.sources)
+        head = "".join(f"# from {s.path}:{s.line}"
+                       + (f" (expanded from {s.expanded_from})" if s.expanded_from else "") + "\n"
+                       for s in unit.sources)
     return (
         head
         + "".join(write_node(n, ids) for n in unit.inputs)

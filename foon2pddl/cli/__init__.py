@@ -44,3 +44,12 @@ def main() -> None:
 
 
 from . import stats_cmd  # noqa: E402,F401  (registers `stats`)
+from . import merge_cmd  # noqa: E402,F401  (registers `merge`)
+from . import compile_cmd  # noqa: E402,F401  (registers `compile`)
+from . import plan_cmd  # noqa: E402,F401  (registers `plan`)
+from . import retrieve_cmd  # noqa: E402,F401  (registers `retrieve`)
+from . import goals_cmd  # noqa: E402,F401  (registers `goals`)
+from . import experiment_cmd  # noqa: E402,F401  (registers `experiment`)
+from . import similarity_cmd  # noqa: E402,F401  (registers `similarity`)
+from . import expand_cmd  # noqa: E402,F401  (registers `expand`)
+from . import generalize_cmd  # noqa: E402,F401  (registers `generalize`, `categories`)

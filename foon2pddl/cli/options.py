@@ -20,6 +20,14 @@ goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path
                                 help="Goal as one object node in FOON O/S lines.")
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
                              help="Write to this file (atomically) instead of standard output.")
+encoding_option = click.option("--encoding", type=click.Choice(["tree", "state", "foon-compat"]), default="tree",
+                               show_default=True, help="PDDL encoding (see docs/pddl.md).")
+prune_option = click.option("--prune/--no-prune", "prune", default=True, show_default=True,
+                            help="Compile only the units that can contribute to the goal.")
+costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"]), default=None,
+                            help="Action costs: 1 per unit, or from motion success rates (needs --rates).")
+rates_option = click.option("--rates", "rates", type=click.Path(path_type=Path), default=None,
+                            help="Motion success rates file (motion<TAB>rate).")
 
 
 def emit(text: str, output: Path | None) -> None:
@@ -27,4 +35,9 @@ def emit(text: str, output: Path | None) -> None:
     if output is None:
         click.echo(text, nl=False)
     else:
-        atomic_write(output, text)
+        try:
+            atomic_write(output, text)
+        except OSError as exc:
+            from ..errors import FoonInputError
+
+            raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None

@@ -57,6 +57,7 @@ class PlanningTask:
     goal: tuple[Atom, ...]
     types: tuple[tuple[str, str], ...] = ()  # (type, parent type)
     objects: tuple[tuple[str, str], ...] = ()  # (name, type) declared in the problem
+    constants: tuple[tuple[str, str], ...] = ()  # (name, type) declared in the domain (actions name them)
     units: tuple = ()  # FunctionalUnit per Action.unit index
     labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
     comments: tuple[str, ...] = ()  # header lines for both files
@@ -66,10 +67,20 @@ class PlanningTask:
         return any(a.cost is not None for a in self.actions)
 
     @property
+    def uses_types(self) -> bool:
+        """Whether any type other than `object` is declared or used."""
+        if self.types:
+            return True
+        typed = [t for _, t in self.objects + self.constants]
+        typed += [t for p in self.predicates for _, t in p.params]
+        typed += [t for a in self.actions for _, t in a.params]
+        return any(t != "object" for t in typed)
+
+    @property
     def requirements(self) -> tuple[str, ...]:
         """Exactly the PDDL requirements the task uses."""
         req = [":strips"]
-        if self.types:
+        if self.uses_types:
             req.append(":typing")
         if self.uses_costs:
             req.append(":action-costs")

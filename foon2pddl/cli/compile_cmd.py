@@ -1,0 +1,66 @@
+"""`foon2pddl compile`: write domain.pddl and problem.pddl for a goal."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..errors import FoonInputError
+from ..fileio import atomic_write_many
+from ..inputs import load_goal, load_kitchen, load_network
+from ..pddl.compile import compile_task
+from ..pddl.render import render
+from ..pddl.task import PlanningTask
+from ..retrieval.rates import read_rates
+from . import main
+from .options import (
+    costs_option,
+    encoding_option,
+    goal_file_option,
+    goal_option,
+    kitchen_option,
+    level_option,
+    paths_argument,
+    prune_option,
+    rates_option,
+)
+
+
+def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
+               prune: bool, costs: str | None, rates: Path | None) -> PlanningTask:
+    """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
+    if costs == "success-rate" and rates is None:
+        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
+    net = load_network(paths)
+    foon = net.at(level)
+    kit = load_kitchen(kitchen, net, level)
+    target = load_goal(goal, goal_file, foon)
+    return compile_task(foon, kit, target, encoding, level, prune, costs, read_rates(rates) if rates else None)
+
+
+@main.command("compile")
+@paths_argument
+@goal_option
+@goal_file_option
+@kitchen_option
+@encoding_option
+@level_option
+@prune_option
+@costs_option
+@rates_option
+@click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
+              default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
+def compile_(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, output_dir) -> None:
+    """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
+    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates)
+    domain, problem = render(task)
+    files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
+    try:
+        atomic_write_many(files)
+    except OSError as exc:
+        raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
+    units = sum(a.unit is not None for a in task.actions)
+    click.echo(f"wrote {output_dir / 'domain.pddl'} and {output_dir / 'problem.pddl'} "
+               f"({task.encoding} encoding, level {task.level}: {units} unit actions, "
+               f"{len(task.predicates)} predicates)")

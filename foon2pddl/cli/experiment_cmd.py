@@ -1,0 +1,138 @@
+"""`foon2pddl experiment`: the seed paper's REG/EXP/GEN comparison, native retrieval against planners."""
+
+from __future__ import annotations
+
+import shlex
+import sys
+from pathlib import Path
+
+import click
+
+from ..errors import FoonInputError
+from ..experiment.protocol import (
+    DEFAULT_GOALS,
+    DEFAULT_KITCHEN_FRACTION,
+    DEFAULT_SEED,
+    DEFAULT_TRIALS,
+    Protocol,
+)
+from ..experiment.sensitivity import DEFAULT_FRACTIONS
+from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
+from . import main
+from .options import level_option, paths_argument
+
+
+def _names(text: str, known, what: str) -> tuple[str, ...]:
+    names = tuple(dict.fromkeys(x.strip().lower() for x in text.split(",") if x.strip()))
+    unknown = [n for n in names if n not in known]
+    if unknown or not names:
+        raise FoonInputError("<options>", 0, f"--{what}: unknown {', '.join(map(repr, unknown)) or 'empty list'} "
+                                             f"(choose from {', '.join(known)})")
+    return names
+
+
+def _fractions(text: str) -> tuple[float, ...]:
+    if text.strip().lower() in ("", "none", "off"):
+        return ()
+    try:
+        values = tuple(float(x) for x in text.split(",") if x.strip())
+    except ValueError:
+        raise FoonInputError("<options>", 0, f"--sensitivity: expected fractions like 0.8,0.9,1, not {text!r}") from None
+    if any(not 0 < v <= 1 for v in values):
+        raise FoonInputError("<options>", 0, "--sensitivity: fractions must be in (0, 1]")
+    return values
+
+
+def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_limit: float, out_dir: Path,
+                 report: Path) -> str:
+    """The command that reproduces a run (written into the report)."""
+    parts = ["foon2pddl", "experiment", *(str(p) for p in paths), "--trials", str(protocol.trials),
+             "--goals", str(protocol.goals), "--kitchen-fraction", f"{protocol.kitchen_fraction:g}",
+             "--seed", str(protocol.seed), "--level", str(protocol.level), "--networks", ",".join(networks),
+             "--solvers", ",".join(solvers), "--time-limit", f"{time_limit:g}", "--jobs", str(jobs),
+             "-o", str(out_dir), "--report", str(report)]
+    return shlex.join(parts)
+
+
+@main.command("experiment")
+@paths_argument
+@click.option("--trials", type=click.IntRange(1), default=DEFAULT_TRIALS, show_default=True,
+              help="Trials (each: a random kitchen and random goals).")
+@click.option("--goals", type=click.IntRange(1), default=DEFAULT_GOALS, show_default=True, help="Goals per trial.")
+@click.option("--kitchen-fraction", "fraction", type=click.FloatRange(0, 1, min_open=True),
+              default=DEFAULT_KITCHEN_FRACTION, show_default=True,
+              help="Fraction of the default kitchen a trial's kitchen keeps.")
+@click.option("--networks", default="reg,exp,gen", show_default=True, help="Networks to compare (reg, exp, gen).")
+@click.option("--solvers", default=",".join(DEFAULT_SOLVERS), show_default=True,
+              help=f"Solvers to compare, from: {', '.join(SOLVERS)}.")
+@click.option("--seed", type=int, default=DEFAULT_SEED, show_default=True, help="Master seed.")
+@level_option
+@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True, help="Worker processes.")
+@click.option("--time-limit", type=click.FloatRange(0, min_open=True), default=DEFAULT_TIME_LIMIT,
+              show_default=True, help="Seconds per planner run.")
+@click.option("-o", "--output-dir", "out_dir", type=click.Path(path_type=Path, file_okay=False),
+              default=Path("experiment"), show_default=True,
+              help="Directory for results.jsonl, results.csv, protocol.json and the plots.")
+@click.option("--report", "report", type=click.Path(path_type=Path, dir_okay=False), default=None,
+              help="Markdown report to write [default: DIR/report.md].")
+@click.option("--sensitivity", default=",".join(f"{f:g}" for f in DEFAULT_FRACTIONS), show_default=True,
+              help="Kitchen fractions for the report's sensitivity table ('none' to skip).")
+@click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
+@click.option("--progress/--no-progress", default=None, help="Progress bar on stderr [default: when a terminal].")
+def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, jobs, time_limit, out_dir, report,
+               sensitivity, fresh, progress) -> None:
+    """Run the REG/EXP/GEN experiment and write results (JSONL, CSV), a Markdown report and plots.
+
+    Each cell (trial, goal, network, solver) is appended to DIR/results.jsonl as it finishes; running
+    the same command again skips the cells already done, so an interrupted run resumes. Exit status 1
+    when native complete retrieval and Fast Downward (tree encoding) disagree on some cell or a
+    returned tree does not validate.
+    """
+    from ..experiment import runner
+    from ..experiment.networks import NETWORKS
+    from ..experiment.report import ReportData, agreement, invalid_trees, write_report
+    from ..experiment.sensitivity import sensitivity as run_sensitivity
+
+    nets = _names(networks, NETWORKS, "networks")
+    chosen = _names(solvers, tuple(SOLVERS), "solvers")
+    fractions = _fractions(sensitivity)
+    protocol = Protocol(trials, goals, fraction, seed, level)
+    report = report or out_dir / "report.md"
+    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit)
+    summary = runner.run(config, progress=sys.stderr.isatty() if progress is None else progress, fresh=fresh)
+    views = runner.views(config)
+    meta = {
+        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report),
+        "inputs": ", ".join(f"`{p}`" for p in paths) or "the embedded example network",
+        "files": len(runner.input_files(config.paths)),
+        "fingerprint": runner.fingerprint(config.paths),
+        "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
+        "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
+        "network_sizes": [{"name": v.name.upper(), "units": len(v.foon.units), "nodes": len(v.foon.nodes),
+                           "what": _WHAT[v.name]} for v in views],
+        "solver_descriptions": [{"name": s, "description": SOLVERS[s].description} for s in chosen],
+        "time_limit": f"{time_limit:g}", "jobs": jobs, "wall": f"{summary.seconds:.1f} s",
+        "ran": summary.ran, "skipped": summary.skipped,
+    }
+    rows = run_sensitivity(views, protocol, fractions) if fractions else ()
+    data = ReportData(summary.records, nets, chosen, tuple(t.summary() for t in summary.trials), meta, rows)
+    try:
+        written = write_report(data, out_dir, report)
+    except OSError as exc:
+        raise FoonInputError(str(report), 0, f"cannot write the report: {exc.strerror or exc}") from None
+    solved = sum(r.solved for r in summary.records)
+    click.echo(f"{summary.ran} cells run, {summary.skipped} reused, {solved} solved, in {summary.seconds:.1f} s; "
+               f"wrote {config.results_path}, " + ", ".join(str(p) for p in written))
+    ag = agreement(data)
+    bad = invalid_trees(data)
+    if (ag is not None and ag.disagreements) or bad:
+        if ag is not None and ag.disagreements:
+            click.echo(f"DISAGREEMENT: native-complete and fd-tree differ on {len(ag.disagreements)} cells "
+                       f"(see {report})", err=True)
+        if bad:
+            click.echo(f"INVALID: {len(bad)} returned trees do not validate (see {report})", err=True)
+        sys.exit(1)
+
+
+_WHAT = {"reg": "the network as read", "exp": "FOON-EXP, Wu-Palmer similarity >= 0.89",
+         "gen": "FOON-GEN, objects replaced by their categories"}

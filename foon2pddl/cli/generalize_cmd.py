@@ -1,0 +1,86 @@
+"""`foon2pddl generalize` (FOON-GEN) and `foon2pddl categories` (the category index)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..inputs import load_network
+from ..jsonio import write_json
+from ..writer import write_foon
+from . import main
+from .options import emit, output_option, paths_argument
+
+categories_option = click.option("--categories", "categories", type=click.Path(path_type=Path), default=None,
+                                 help="Category index (JSON, see docs/generalization.md). Default: the shipped one.")
+
+
+@main.command("generalize")
+@paths_argument
+@categories_option
+@click.option("--provenance", is_flag=True, help="Precede each unit with '# from <file>:<line>' comments.")
+@click.option("--format", "fmt", type=click.Choice(["foon", "json"]), default="foon", show_default=True,
+              help="FOON text, or the JSON export.")
+@output_option
+def generalize_(paths, categories, provenance, fmt, output) -> None:
+    """Write FOON-GEN of the network: each object replaced by its category, duplicate units removed.
+
+    An object in several categories takes the most specific one (first in the index on
+    ties); objects in no category keep their label. Statistics per level go to standard error.
+    """
+    from ..generalize.categories import load_index
+    from ..generalize.compress import compress
+    from ..generalize.stats import format_levels_table, levels_table
+
+    index = load_index(categories)
+    net = load_network(paths)
+    c = compress(net.foon, index)
+    header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
+              f"{c.original_units} -> {len(c.foon.units)} units")
+    text = write_json(c.foon) if fmt == "json" else write_foon(c.foon, provenance=provenance, header=header)
+    emit(text, output)
+    click.echo(header, err=True)
+    click.echo(format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon})), err=True, nl=False)
+
+
+@main.command("categories")
+@paths_argument
+@categories_option
+@click.option("--check", is_flag=True, help="List the object labels of PATHS in no category, with the coverage.")
+@output_option
+def categories_(paths, categories, check, output) -> None:
+    """Show the category index (tree of categories with member counts), or --check its coverage of a network.
+
+    With --check, exit status 1 when some object label has no category.
+    """
+    from ..generalize.categories import coverage, load_index
+
+    index = load_index(categories)
+    if not check:
+        lines = [f"{'  ' * index.depth(c.name)}{c.name} ({len(c.members)}): {c.description}" for c in _tree(index)]
+        emit("\n".join(lines) + "\n", output)
+        return
+    net = load_network(paths)
+    cov = coverage((n.label for n in net.foon.nodes), index)
+    text = "".join(f"{label}\n" for label in cov.missing)
+    emit(text, output)
+    click.echo(f"{cov.covered} of {len(cov.labels)} object labels in some category ({cov.percent:.1f} %)", err=True)
+    if cov.missing:
+        click.get_current_context().exit(1)
+
+
+def _tree(index):
+    """Categories depth first under their parents, each level in index order."""
+    children: dict[str | None, list] = {}
+    for c in index.categories:
+        children.setdefault(c.parent, []).append(c)
+    out = []
+
+    def walk(parent):
+        for c in children.get(parent, ()):
+            out.append(c)
+            walk(c.name)
+
+    walk(None)
+    return out

@@ -1,0 +1,154 @@
+"""`foon2pddl plan`: compile a goal, run a planner, print the plan's task tree and the time of each phase."""
+
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+
+import click
+
+from ..errors import FoonInputError
+from ..fileio import atomic_write
+from ..inputs import load_goal, load_kitchen, load_network
+from ..pddl.planners import DEFAULT_PLANNER
+from ..pddl.solve import PHASES, PlanOutcome, plan
+from ..retrieval.formats import FORMATS, render_tree
+from ..retrieval.rates import read_rates
+from . import main
+from .options import (
+    costs_option,
+    encoding_option,
+    goal_file_option,
+    goal_option,
+    kitchen_option,
+    level_option,
+    paths_argument,
+    prune_option,
+    rates_option,
+)
+
+#: Exit status per outcome status.
+EXIT = {"solved": 0, "unsolvable": 1, "timeout": 1, "error": 2}
+
+
+def timing_line(timings: dict[str, float]) -> str:
+    """`load 0.101 s, encode 0.020 s, ...` in phase order."""
+    return ", ".join(f"{p} {timings[p]:.3f} s" for p in PHASES if p in timings)
+
+
+def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str | None) -> str:
+    """The outcome as one JSON document (status, plan, phases, validation, tree)."""
+    d = outcome.decoded
+
+    def check(v):
+        return None if v is None else {"ok": v.ok, "problems": list(v.problems)}
+
+    validation = None if d is None else {
+        "ok": d.ok, "plan": check(d.plan_check), "foon": check(d.validation), "up": check(d.up_validation),
+        "foon_semantics": d.foon_semantics,
+    }
+    data = {
+        "status": outcome.status,
+        "planner": outcome.result.planner,
+        "message": outcome.message or outcome.result.message,
+        "encoding": outcome.task.encoding,
+        "level": outcome.task.level,
+        "plan": list(outcome.result.plan),
+        "timings": {p: round(timings[p], 6) for p in PHASES if p in timings},
+        "validation": validation,
+        "tree": json.loads(tree_json) if tree_json is not None else None,
+    }
+    return json.dumps(data, indent=2) + "\n"
+
+
+@main.command("plan")
+@paths_argument
+@goal_option
+@goal_file_option
+@kitchen_option
+@encoding_option
+@level_option
+@click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
+              help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
+@click.option("--planner-cmd", "planner_cmd", default=None,
+              help="External planner command, run without a shell: 'cmd {domain} {problem} {plan}' "
+                   "(also {time}); its IPC plan file is read back.")
+@click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
+@click.option("--time-limit", "time_limit", type=click.FloatRange(min=0, min_open=True), default=300.0,
+              show_default=True, help="Seconds for the planner (translation and search).")
+@prune_option
+@costs_option
+@rates_option
+@click.option("--up-validate", is_flag=True,
+              help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
+@click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
+              help="How to print the task tree.")
+@click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
+              help="Write the task tree to this file (atomically) instead of standard output.")
+def plan_(paths, goal, goal_file, kitchen, encoding, level, planner, planner_cmd, optimal, time_limit, prune,
+          costs, rates, up_validate, fmt, output) -> None:
+    """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
+
+    Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
+    """
+    if costs == "success-rate" and rates is None:
+        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
+    t0 = time.perf_counter()
+    net = load_network(paths)
+    foon = net.at(level)
+    kit = load_kitchen(kitchen, net, level)
+    target = load_goal(goal, goal_file, foon)
+    motion_rates = read_rates(rates) if rates else None
+    load_s = time.perf_counter() - t0
+    try:
+        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                       up_validate=up_validate)
+    except ValueError as exc:
+        raise FoonInputError("<options>", 0, str(exc)) from None
+    timings = {"load": load_s, **outcome.timings}
+    status = outcome.status
+    data: str | None = None
+    if outcome.tree is not None and status == "solved":
+        data = render_tree(outcome.tree, fmt, kitchen=kit)
+    if fmt == "json":
+        data = outcome_json(outcome, timings, data)
+    else:
+        summary = f"{status} ({outcome.result.planner})"
+        if status == "solved":
+            summary += f": {len(outcome.result.plan)} plan steps, {len(outcome.tree)} units, valid"
+            if not outcome.validation.ok:  # state encoding: its semantics are not FOON's
+                summary += (f" under the {encoding} encoding; as a FOON task tree it is not executable: "
+                            + "; ".join(outcome.validation.problems[:2]))
+        else:
+            summary += f": {outcome.message or outcome.result.message}"
+        click.echo(summary, err=True)
+        if status == "unsolvable" and encoding != "state":
+            click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
+        click.echo("phases: " + timing_line(timings), err=True)
+    if data is not None:
+        _write(data, output)
+    if EXIT[status]:
+        click.get_current_context().exit(EXIT[status])
+
+
+def _why_unreachable(foon, kitchen, goal) -> str:
+    """FOON's own account of an unreachable goal: which missing nodes block it (tree and foon-compat semantics)."""
+    from ..retrieval.complete import unreachable_detail
+    from ..retrieval.reachability import reachable
+
+    reach = reachable(foon, kitchen.nodes)
+    if any(reach.can_make(c) for c in goal.candidates):
+        return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"
+    return unreachable_detail(reach, goal)
+
+
+def _write(data: str, output: Path | None) -> None:
+    if output is None:
+        click.echo(data, nl=False)
+        return
+    try:
+        atomic_write(output, data)
+    except OSError as exc:
+        raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None

@@ -1,0 +1,65 @@
+"""`foon2pddl retrieve`: native task tree retrieval for a goal."""
+
+from __future__ import annotations
+
+import click
+
+from ..errors import FoonInputError
+from ..inputs import load_goal, load_kitchen, load_network
+from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
+from ..retrieval.greedy import DEFAULT_BUDGET
+from ..retrieval.optimal import DEFAULT_NODE_LIMIT
+from . import main
+from .options import (
+    emit,
+    goal_file_option,
+    goal_option,
+    kitchen_option,
+    level_option,
+    output_option,
+    paths_argument,
+    rates_option,
+)
+
+
+@main.command("retrieve")
+@paths_argument
+@goal_option
+@goal_file_option
+@kitchen_option
+@level_option
+@click.option("--method", type=click.Choice(METHODS), default="complete", show_default=True,
+              help="greedy: the seed paper's search; complete: a tree whenever one exists; "
+                   "optimal: fewest units; weighted: highest success probability (needs --rates).")
+@rates_option
+@click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
+              help="How to print the task tree (svg needs Graphviz).")
+@click.option("--budget", type=click.IntRange(min=1), default=DEFAULT_BUDGET, show_default=True,
+              help="greedy: iterations (objects taken from its queue) before giving up.")
+@click.option("--node-limit", "node_limit", type=click.IntRange(min=1), default=DEFAULT_NODE_LIMIT,
+              show_default=True, help="optimal/weighted: search nodes expanded before returning the best tree so far.")
+@output_option
+def retrieve_(paths, goal, goal_file, kitchen, level, method, rates, fmt, budget, node_limit, output) -> None:
+    """Find the functional units that make the goal from the kitchen, in executable order.
+
+    Exit status: 0 a tree was found, 1 the goal cannot be made (the reason goes to stderr),
+    2 bad input.
+    """
+    if method == "weighted" and rates is None:
+        raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate)")
+    motion_rates = read_rates(rates) if rates else None
+    net = load_network(paths)
+    foon = net.at(level)
+    kit = load_kitchen(kitchen, net, level)
+    target = load_goal(goal, goal_file, foon)
+    result = retrieve(foon, kit, target, method, rates=motion_rates, budget=budget, node_limit=node_limit)
+    if result.tree is None:
+        click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {result.detail}", err=True)
+        click.get_current_context().exit(1)
+    emit(render_tree(result.tree, fmt, kitchen=kit), output)
+    note = f"{method}: {len(result.tree)} units"
+    if result.probability is not None:
+        note += f", success probability {result.probability:.4g}"
+    if result.proven_optimal is False:
+        note += ", not proven optimal"
+    click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)

@@ -1,0 +1,59 @@
+"""`foon2pddl similarity`: Wu-Palmer similarity of object labels (WordNet)."""
+
+from __future__ import annotations
+
+import json
+
+import click
+
+from ..errors import FoonInputError
+from ..model import normalize_label
+from . import main
+from .options import emit, output_option
+
+
+@main.command("similarity")
+@click.argument("labels", nargs=-1, required=True)
+@click.option("--pairs", "as_pairs", is_flag=True, help="Read LABELS as consecutive pairs (A B C D: A~B, C~D).")
+@click.option("--senses", is_flag=True, help="Also print the WordNet senses each label stands for.")
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@output_option
+def similarity(labels, as_pairs, senses, as_json, output) -> None:
+    """Similarity of object labels: one value for two labels, a matrix for more (or --pairs).
+
+    Wu-Palmer similarity over WordNet noun senses in kitchen-relevant lexicographer
+    files, with head-noun fallback for compounds and the shipped overrides
+    (docs/generalization.md). FOON-EXP substitutes labels at least 0.89 similar.
+    """
+    from ..generalize.similarity import LabelSimilarity
+
+    labels = [normalize_label(x) for x in labels]
+    if any(not x for x in labels):
+        raise FoonInputError("<labels>", 0, "empty label")
+    if as_pairs and len(labels) % 2:
+        raise FoonInputError("<labels>", 0, f"--pairs needs an even number of labels, got {len(labels)}")
+    if len(labels) < 2:
+        raise FoonInputError("<labels>", 0, "give at least two labels")
+    sim = LabelSimilarity()
+    if as_pairs or len(labels) == 2:
+        pairs = list(zip(labels[::2], labels[1::2], strict=True))
+        values = [(a, b, sim(a, b)) for a, b in pairs]
+        if as_json:
+            text = json.dumps([{"a": a, "b": b, "similarity": round(v, 6)} for a, b, v in values], indent=2) + "\n"
+        elif len(values) == 1:
+            text = f"{values[0][2]:.4f}\n"
+        else:
+            text = "".join(f"{v:.4f}\t{a}\t{b}\n" for a, b, v in values)
+    else:
+        names = list(dict.fromkeys(labels))
+        rows = [[sim(a, b) for b in names] for a in names]
+        if as_json:
+            text = json.dumps({"labels": names, "matrix": [[round(v, 6) for v in r] for r in rows]}, indent=2) + "\n"
+        else:
+            width = max(len(n) for n in names)
+            text = " " * width + "".join(f"  {i + 1:>6}" for i in range(len(names))) + "\n"
+            text += "".join(f"{n:<{width}}" + "".join(f"  {v:6.4f}" for v in r) + f"   ({i + 1})\n"
+                            for i, (n, r) in enumerate(zip(names, rows, strict=True)))
+    if senses and not as_json:
+        text += "".join(sim.resolution(x).describe() + "\n" for x in dict.fromkeys(labels))
+    emit(text, output)

@@ -1,0 +1,71 @@
+"""Generate `domains/` and `problems/` from the embedded example network (`make pddl`).
+
+`python -m foon2pddl.examples_pddl [ROOT]` writes, for every encoding and every
+goal in `GOALS`, the domain and problem that `foon2pddl compile --goal G
+--encoding E` writes for the example network and kitchen (level 3, pruned):
+`domains/<encoding>/<goal>.pddl` and `problems/<encoding>/<goal>.pddl`.
+A pruned domain depends on its goal, hence one pair per goal. `.pddl` files
+under those directories that are no longer generated are removed.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from .fileio import atomic_write_many
+from .inputs import load_goal, load_kitchen, load_network
+from .pddl.compile import ENCODINGS, compile_task
+from .pddl.names import sanitize
+from .pddl.render import render
+
+#: Goals a reader recognizes: the dishes of the example recipes the example kitchen can make.
+GOALS = (
+    "whipped cream",
+    "scrambled eggs",
+    "pancake",
+    "french toast",
+    "tomato soup",
+    "guacamole",
+    "greek salad",
+    "fruit salad",
+)
+
+LEVEL = 3
+
+
+def generate() -> dict[Path, str]:
+    """Relative path -> text of every generated file."""
+    net = load_network([])
+    foon = net.at(LEVEL)
+    kitchen = load_kitchen(None, net, LEVEL)
+    files: dict[Path, str] = {}
+    for goal_text in GOALS:
+        goal = load_goal(goal_text, None, foon)
+        stem = sanitize(goal_text)
+        for encoding in ENCODINGS:
+            domain, problem = render(compile_task(foon, kitchen, goal, encoding, LEVEL))
+            files[Path("domains") / encoding / f"{stem}.pddl"] = domain
+            files[Path("problems") / encoding / f"{stem}.pddl"] = problem
+    return files
+
+
+def stale_files(root: Path, files: dict[Path, str]) -> list[Path]:
+    """`.pddl` files under ROOT/domains and ROOT/problems that `files` does not hold."""
+    found = [p.relative_to(root) for d in ("domains", "problems") for p in sorted((root / d).rglob("*.pddl"))]
+    return [p for p in found if p not in files]
+
+
+def main(argv: list[str] | None = None) -> None:
+    args = sys.argv[1:] if argv is None else argv
+    root = Path(args[0]) if args else Path(".")
+    files = generate()
+    atomic_write_many({root / p: text for p, text in files.items()})
+    for p in stale_files(root, files):
+        (root / p).unlink()
+        print(f"removed stale {p}")
+    print(f"wrote {len(files)} files under {root / 'domains'} and {root / 'problems'}")
+
+
+if __name__ == "__main__":
+    main()

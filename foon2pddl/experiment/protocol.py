@@ -1,0 +1,110 @@
+"""The experiment protocol: seeded random kitchens and goals, per trial.
+
+As in the seed paper's evaluation: each trial draws a kitchen (a random subset
+of the available objects) and goals (random nodes some unit produces), and
+every network and solver is asked the same goals from the same kitchen.
+
+- Kitchen: `kitchen_fraction` of the network's default kitchen (`kitchen.default_kitchen`),
+  drawn by shuffling its sorted nodes with the trial's kitchen seed and keeping
+  a prefix, so a smaller fraction gives a subset of a larger one (same seed).
+- Goals: the goal pool is every node some unit produces that is not in the
+  default kitchen (starting nodes and base-state inputs such as `mixer (off)`
+  are excluded); the pool, sorted, is shuffled with the trial's goal seed and
+  the first `goals` are taken, so asking for more goals extends the sample.
+- Seeds: derived from the master seed, the trial number and the purpose by
+  SHA-256 (`derive_seed`), so a trial can be regenerated alone and runs are
+  reproducible across processes and Python versions.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import random
+from dataclasses import dataclass
+
+from ..kitchen import Kitchen, default_kitchen
+from ..model import Foon, ObjectNode
+
+#: Fraction of the default kitchen in a trial's kitchen (see docs/experiment.md for the sensitivity).
+DEFAULT_KITCHEN_FRACTION = 0.9
+DEFAULT_TRIALS = 10
+DEFAULT_GOALS = 100
+DEFAULT_SEED = 0
+
+
+@dataclass(frozen=True)
+class Protocol:
+    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level."""
+
+    trials: int = DEFAULT_TRIALS
+    goals: int = DEFAULT_GOALS
+    kitchen_fraction: float = DEFAULT_KITCHEN_FRACTION
+    seed: int = DEFAULT_SEED
+    level: int = 3
+
+    def __post_init__(self) -> None:
+        if self.trials < 1 or self.goals < 1:
+            raise ValueError("trials and goals must be at least 1")
+        if not 0.0 < self.kitchen_fraction <= 1.0:
+            raise ValueError(f"kitchen fraction must be in (0, 1], not {self.kitchen_fraction!r}")
+
+    def identity(self) -> dict:
+        """The parameters results depend on (counts excluded: more trials or goals extend a run)."""
+        return {"kitchen_fraction": self.kitchen_fraction, "seed": self.seed, "level": self.level}
+
+
+@dataclass(frozen=True)
+class Trial:
+    """One trial: its seeds, its kitchen (at the protocol's level) and its goal nodes."""
+
+    index: int
+    kitchen_seed: int
+    goal_seed: int
+    kitchen: Kitchen
+    goals: tuple[ObjectNode, ...]
+
+    def summary(self) -> dict:
+        """Seeds, sizes and goals, as recorded in protocol.json."""
+        return {"trial": self.index, "kitchen_seed": self.kitchen_seed, "goal_seed": self.goal_seed,
+                "kitchen_nodes": len(self.kitchen), "goals": [g.describe() for g in self.goals]}
+
+
+def derive_seed(seed: int, trial: int, purpose: str) -> int:
+    """A 32-bit seed for one purpose of one trial, stable everywhere."""
+    digest = hashlib.sha256(f"{seed}:{trial}:{purpose}".encode()).digest()
+    return int.from_bytes(digest[:4], "big")
+
+
+def goal_pool(foon: Foon, kitchen: Kitchen | None = None) -> tuple[ObjectNode, ...]:
+    """Nodes some unit produces that are not in `kitchen` (default: the default kitchen), sorted."""
+    kitchen = kitchen if kitchen is not None else default_kitchen(foon)
+    return tuple(sorted(n for n in foon.producers if n not in kitchen.nodes))
+
+
+def shuffled_prefix(items: tuple[ObjectNode, ...], count: int, seed: int) -> tuple[ObjectNode, ...]:
+    """The first `count` items after a seeded shuffle of `items` (sorted first, so input order never matters)."""
+    order = sorted(items)
+    random.Random(seed).shuffle(order)
+    return tuple(order[:count])
+
+
+def sample_kitchen(kitchen: Kitchen, fraction: float, seed: int) -> Kitchen:
+    """`fraction` of `kitchen`'s nodes (rounded, at least one), chosen by `seed`."""
+    count = max(1, round(fraction * len(kitchen)))
+    nodes = shuffled_prefix(tuple(kitchen.nodes), count, seed)
+    return Kitchen(frozenset(nodes), kitchen.level, f"{fraction:g} of the default kitchen, seed {seed}")
+
+
+def make_trial(foon: Foon, protocol: Protocol, index: int) -> Trial:
+    """Trial `index` of `protocol` over `foon` (the REG network at the protocol's level)."""
+    full = default_kitchen(foon)
+    kitchen_seed = derive_seed(protocol.seed, index, "kitchen")
+    goal_seed = derive_seed(protocol.seed, index, "goals")
+    kitchen = sample_kitchen(full, protocol.kitchen_fraction, kitchen_seed)
+    goals = shuffled_prefix(goal_pool(foon, full), protocol.goals, goal_seed)
+    return Trial(index, kitchen_seed, goal_seed, kitchen, goals)
+
+
+def make_trials(foon: Foon, protocol: Protocol) -> tuple[Trial, ...]:
+    """Every trial of `protocol` (numbered from 1)."""
+    return tuple(make_trial(foon, protocol, i) for i in range(1, protocol.trials + 1))

@@ -1,0 +1,215 @@
+"""The solvers an experiment compares, by name, each prepared once per (trial, network).
+
+A solver is prepared for one network view and one trial kitchen (`prepare`),
+which does the work shared by the goals of the batch (its time is the batch's
+`setup`), then answers goals one by one (`solve`). Native solvers share the
+reachability fixpoint (complete, optimal) or the network index (greedy);
+`fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once and
+swap goals in the translated task (`pddl.solve.GoalReplanner`); `fd-state`
+compiles and plans each goal afresh (the state encoding is pruned per goal);
+`fd-lifted-gen` plans over the concrete network with category types, on the
+GEN network only. Every tree a solver returns is validated by simulation from
+the kitchen the solver was given; a tree that fails is an `error`.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from ..kitchen import Kitchen
+from ..model import ObjectNode
+from ..tasktree import validate
+from .networks import NetworkView
+
+#: Default time limit (seconds) of one planner run.
+DEFAULT_TIME_LIMIT = 60.0
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What a solver says about one goal (a record without its key)."""
+
+    status: str
+    reason: str = ""
+    times: dict[str, float] = field(default_factory=dict)
+    units: int | None = None
+    plan_length: int | None = None
+    validated: bool | None = None
+    proven_optimal: bool | None = None
+
+
+@dataclass(frozen=True)
+class Setting:
+    """What a solver is prepared for: a network view, the trial's concrete kitchen, a planner time limit."""
+
+    view: NetworkView
+    kitchen: Kitchen
+    time_limit: float = DEFAULT_TIME_LIMIT
+
+
+class Prepared:
+    """A solver ready for the goals of one batch; `setup` is the preparation time in seconds."""
+
+    setup: float = 0.0
+
+    def solve(self, node: ObjectNode) -> Outcome:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+@dataclass(frozen=True)
+class Solver:
+    """A registered solver: name, what it is, the networks it applies to (None: all), its preparation."""
+
+    name: str
+    description: str
+    prepare: Callable[[Setting], Prepared]
+    networks: tuple[str, ...] | None = None
+    planner: bool = False
+
+    def applies_to(self, network: str) -> bool:
+        return self.networks is None or network in self.networks
+
+
+def _native_outcome(result, kitchen_nodes, seconds: float) -> Outcome:
+    """Outcome of a `Retrieval`, its tree validated from `kitchen_nodes`."""
+    times = {"retrieve": seconds}
+    if result.tree is None:
+        status = "unsolvable" if result.reason == "unreachable" else result.reason
+        return Outcome(status, result.detail or result.reason, times)
+    t0 = time.perf_counter()
+    check = validate(result.tree, kitchen_nodes)
+    times["validate"] = time.perf_counter() - t0
+    if not check.ok:
+        return Outcome("error", "tree does not validate: " + "; ".join(check.problems[:3]), times,
+                       len(result.tree), None, False, result.proven_optimal)
+    return Outcome("solved", result.detail, times, len(result.tree), None, True, result.proven_optimal)
+
+
+class _Native(Prepared):
+    """Native retrieval by `method` on the view's network, kitchen mapped through the view."""
+
+    def __init__(self, setting: Setting, method: str) -> None:
+        from ..retrieval.index import index_of
+        from ..retrieval.reachability import reachable
+
+        view = setting.view
+        t0 = time.perf_counter()
+        self.view = view
+        self.method = method
+        self.kitchen_nodes = view.kitchen(setting.kitchen).project(view.foon.level).nodes
+        index_of(view.foon)
+        self.reach = reachable(view.foon, self.kitchen_nodes) if method != "greedy" else None
+        self.setup = time.perf_counter() - t0
+
+    def solve(self, node: ObjectNode) -> Outcome:
+        from ..retrieval.complete import complete
+        from ..retrieval.greedy import greedy
+        from ..retrieval.optimal import optimal
+
+        goal = self.view.goal(node)
+        foon, nodes = self.view.foon, self.kitchen_nodes
+        t0 = time.perf_counter()
+        if self.method == "greedy":
+            result = greedy(foon, nodes, goal)
+        elif self.method == "complete":
+            result = complete(foon, nodes, goal, self.reach)
+        else:
+            result = optimal(foon, nodes, goal, reach=self.reach)
+        return _native_outcome(result, nodes, time.perf_counter() - t0)
+
+
+def _plan_outcome(outcome, steps: tuple[str, ...]) -> Outcome:
+    """Outcome of a planner run mapped back to a tree (`PlanOutcome` or `LiftedOutcome`)."""
+    times = dict(outcome.timings)
+    tree = outcome.tree
+    units = len(tree) if tree is not None else None
+    status = outcome.status  # `error` when a plan was found that does not decode or validate
+    validated = None if tree is None else status == "solved"
+    if status == "solved":
+        return Outcome("solved", "", times, units, len(steps), validated)
+    return Outcome(status, outcome.message, times, units, len(steps) if steps else None, validated)
+
+
+class _FdReuse(Prepared):
+    """Fast Downward on the unpruned `tree` encoding, translated once, goals swapped in."""
+
+    def __init__(self, setting: Setting, optimal: bool) -> None:
+        from ..pddl.solve import GoalReplanner
+
+        view = setting.view
+        self.view = view
+        self.time_limit = setting.time_limit
+        t0 = time.perf_counter()
+        kitchen = view.kitchen(setting.kitchen)
+        self.replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, optimal=optimal,
+                                       time_limit=setting.time_limit)
+        self.setup = time.perf_counter() - t0
+
+    def solve(self, node: ObjectNode) -> Outcome:
+        outcome = self.replanner.plan(self.view.goal(node), time_limit=self.time_limit)
+        return _plan_outcome(outcome, outcome.result.plan)
+
+
+class _FdFresh(Prepared):
+    """Fast Downward on one encoding, compiled (pruned) and translated for each goal."""
+
+    def __init__(self, setting: Setting, encoding: str) -> None:
+        self.view = setting.view
+        self.kitchen = setting.view.kitchen(setting.kitchen)
+        self.encoding = encoding
+        self.time_limit = setting.time_limit
+
+    def solve(self, node: ObjectNode) -> Outcome:
+        from ..pddl.solve import plan
+
+        foon = self.view.foon
+        outcome = plan(foon, self.kitchen, self.view.goal(node), self.encoding, foon.level,
+                       time_limit=self.time_limit)
+        return _plan_outcome(outcome, outcome.result.plan)
+
+
+class _LiftedGen(Prepared):
+    """Fast Downward on the lifted FOON-GEN task: categories as types, concrete kitchen and goal."""
+
+    def __init__(self, setting: Setting) -> None:
+        if setting.view.index is None:
+            raise ValueError("fd-lifted-gen needs the GEN network's category index")
+        self.view = setting.view
+        self.kitchen = setting.kitchen
+        self.time_limit = setting.time_limit
+
+    def solve(self, node: ObjectNode) -> Outcome:
+        from ..generalize.degeneralize import plan_lifted
+
+        concrete = self.view.concrete
+        outcome = plan_lifted(concrete, self.kitchen, self.view.concrete_goal(node), self.view.index,
+                              concrete.level, time_limit=self.time_limit)
+        return _plan_outcome(outcome, outcome.result.plan)
+
+
+SOLVERS: dict[str, Solver] = {s.name: s for s in (
+    Solver("native-greedy", "the seed paper's greedy task tree retrieval", lambda s: _Native(s, "greedy")),
+    Solver("native-complete", "reachability fixpoint, a tree whenever one exists", lambda s: _Native(s, "complete")),
+    Solver("native-optimal", "fewest distinct units (branch and bound)", lambda s: _Native(s, "optimal")),
+    Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial",
+           lambda s: _FdReuse(s, False), planner=True),
+    Solver("fd-tree-opt", "Fast Downward seq-opt-lmcut, tree encoding, one translation per trial",
+           lambda s: _FdReuse(s, True), planner=True),
+    Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal",
+           lambda s: _FdFresh(s, "state"), planner=True),
+    Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
+           _LiftedGen, networks=("gen",), planner=True),
+)}
+
+#: Solvers run when none are named: everything but the slow per-goal encodings.
+DEFAULT_SOLVERS = ("native-greedy", "native-complete", "native-optimal", "fd-tree", "fd-lifted-gen")
+
+
+def get_solver(name: str) -> Solver:
+    """The registered solver `name` (ValueError listing the known ones)."""
+    try:
+        return SOLVERS[name]
+    except KeyError:
+        raise ValueError(f"unknown solver {name!r} (expected one of {', '.join(SOLVERS)})") from None

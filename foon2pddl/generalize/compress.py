@@ -1,0 +1,76 @@
+"""FOON-GEN: every object label replaced by its category, duplicate units removed.
+
+Each label (node label, related object, ingredient) becomes the one category
+`CategoryIndex.choose` gives it (the most specific listing it, first in file
+order on ties); a label in no category stays as it is. Units that become
+identical are merged (`merge.dedupe_units`, provenance joined). A kitchen and a
+goal are abstracted the same way, so native retrieval runs unchanged on GEN.
+Two objects of one category in one unit become one node or ingredient: the
+compression the seed paper reports, and why `lifted.py` keeps concrete
+objects as typed parameters instead.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from ..goals import GoalSpec
+from ..kitchen import Kitchen
+from ..merge import dedupe_units
+from ..model import Foon, make_state
+from .categories import CategoryIndex
+from .substitute import substitute_node, substitute_unit, unit_labels
+
+
+def category_map(labels: Iterable[str], index: CategoryIndex) -> dict[str, str]:
+    """Label -> chosen category, for the labels that have one."""
+    out = {}
+    for label in labels:
+        cat = index.choose(label)
+        if cat is not None:
+            out[label] = cat
+    return out
+
+
+@dataclass(frozen=True)
+class Compression:
+    """The generalized network, the label mapping used and the size before."""
+
+    foon: Foon
+    mapping: dict[str, str]
+    original_units: int
+
+    @property
+    def removed_units(self) -> int:
+        return self.original_units - len(self.foon.units)
+
+
+def compress(foon: Foon, index: CategoryIndex) -> Compression:
+    """FOON-GEN of `foon` at its level."""
+    labels = set()
+    for u in foon.units:
+        labels |= unit_labels(u)
+    mapping = category_map(sorted(labels), index)
+    units = dedupe_units(substitute_unit(u, mapping) for u in foon.units)
+    return Compression(Foon(units, foon.level), mapping, len(foon.units))
+
+
+def abstract_kitchen(kitchen: Kitchen, index: CategoryIndex) -> Kitchen:
+    """The kitchen with every object replaced by its category (nodes that coincide merge)."""
+    labels = {n.label for n in kitchen.nodes} | {x for n in kitchen.nodes for s in n.states
+                                                 for x in (s.related, *s.ingredients) if x}
+    mapping = category_map(sorted(labels), index)
+    return Kitchen(frozenset(substitute_node(n, mapping) for n in kitchen.nodes), kitchen.level, kitchen.source)
+
+
+def abstract_goal(spec: GoalSpec, index: CategoryIndex) -> GoalSpec:
+    """The goal with its object and the objects its states mention replaced by categories."""
+    def gen(label: str) -> str:
+        return index.choose(label) or label
+
+    if spec.states is None:
+        return GoalSpec(gen(spec.label))
+    states = {make_state(s.label, gen(s.related) if s.related else "", (gen(i) for i in s.ingredients))
+              for s in spec.states}
+    return GoalSpec(gen(spec.label), tuple(sorted(states)))

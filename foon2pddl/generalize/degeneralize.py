@@ -1,0 +1,102 @@
+"""Plan with the lifted FOON-GEN task and map the plan back to a concrete, validated task tree.
+
+Each plan step names a lifted unit's action and the kitchen objects the planner
+bound its parameters to; substituting those objects into the unit (`lifted.ground_unit`)
+gives a concrete functional unit. The units in plan order, with the first goal
+candidate they make, form the task tree, checked by simulation from the concrete
+kitchen (`tasktree.validate`) exactly like a native retrieval.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from ..goals import Goal
+from ..kitchen import Kitchen
+from ..model import Foon, FunctionalUnit, ObjectNode
+from ..pddl.decode import PlanDecodeError, goal_node
+from ..pddl.planners import DEFAULT_PLANNER, PlanResult, run_planner
+from ..pddl.render import render
+from ..tasktree import TaskTree, Validation, validate
+from .categories import CategoryIndex
+from .lifted import LiftedTask, encode_lifted, ground_unit
+
+
+@dataclass(frozen=True)
+class LiftedOutcome:
+    """The planner's result on the lifted task, the concrete tree of its plan and that tree's validation."""
+
+    lifted: LiftedTask
+    result: PlanResult
+    tree: TaskTree | None = None
+    validation: Validation | None = None
+    decode_error: str = ""
+    timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
+
+    @property
+    def status(self) -> str:
+        """The planner's status, or `error` when its plan does not map back to a valid tree."""
+        if self.result.solved and (self.validation is None or not self.validation.ok):
+            return "error"
+        return self.result.status
+
+    @property
+    def message(self) -> str:
+        if self.decode_error:
+            return self.decode_error
+        if self.result.solved and self.validation is not None and not self.validation.ok:
+            return "plan does not validate: " + "; ".join(self.validation.problems[:3])
+        return "" if self.result.solved else self.result.message
+
+
+def plan_units(lt: LiftedTask, steps: Sequence[str]) -> tuple[FunctionalUnit, ...]:
+    """The concrete units of a plan's steps (auxiliary goal actions skipped); PlanDecodeError on a bad step."""
+    units = []
+    for n, step in enumerate(steps, start=1):
+        name, *args = step.split()
+        action = lt.task.action_for(name)
+        if action is None:
+            raise PlanDecodeError(f"plan step {n} ({step}) names no action of the task")
+        if action.unit is None:
+            continue
+        try:
+            units.append(ground_unit(lt, action.unit, tuple(args)))
+        except (KeyError, ValueError) as exc:
+            raise PlanDecodeError(f"plan step {n} ({step}): {exc}") from None
+    return tuple(units)
+
+
+def plan_tree(lt: LiftedTask, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode]) -> TaskTree:
+    """The concrete task tree a plan of the lifted task stands for."""
+    units = plan_units(lt, steps)
+    return TaskTree(units, goal_node(goal, lt.level, kitchen_nodes, units), lt.level)
+
+
+def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
+                planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, time_limit: float | None = None,
+                prune: bool = True, policy: str = "missing") -> LiftedOutcome:
+    """Encode, plan, ground the plan back to concrete units and validate them against the concrete kitchen."""
+    timings: dict[str, float] = {}
+    t0 = time.perf_counter()
+    lt = encode_lifted(foon, kitchen, goal, index, level, prune=prune, policy=policy)
+    timings["encode"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    domain, problem = render(lt.task)
+    timings["write"] = time.perf_counter() - t0
+    result = run_planner(lt.task, domain, problem, planner=planner, planner_cmd=planner_cmd, time_limit=time_limit)
+    timings.update({k: v for k, v in result.timings.items() if k in ("translate", "search")})
+    if not result.solved:
+        return LiftedOutcome(lt, result, timings=timings)
+    kitchen_nodes = kitchen.project(level).nodes
+    t0 = time.perf_counter()
+    try:
+        tree = plan_tree(lt, result.plan, goal, kitchen_nodes)
+    except PlanDecodeError as exc:
+        return LiftedOutcome(lt, result, decode_error=str(exc), timings=timings)
+    timings["decode"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    check = validate(tree, kitchen_nodes)
+    timings["validate"] = time.perf_counter() - t0
+    return LiftedOutcome(lt, result, tree, check, timings=timings)

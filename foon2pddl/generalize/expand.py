@@ -1,0 +1,101 @@
+"""FOON-EXP: copies of functional units with an object replaced by a similar one.
+
+For each unit and each object label among its nodes, every other label of the
+vocabulary at least `threshold` similar (Wu-Palmer, `similarity.py`) gives one
+copy of the unit with that object substituted everywhere in the unit (node
+label, related objects, ingredient lists; `substitute.py`). A label the unit
+already mentions is not substituted in (two objects would become one). Copies
+mark their sources `expanded_from=<original label>`; duplicates (also of
+original units) are removed with `merge.dedupe_units`, originals first, so an
+original unit keeps its unmarked provenance. One substitution per copy, as in
+the seed paper: squeezing a lime gives the recipe's `lemon juice`, not `lime juice`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from ..errors import FoonInputError
+from ..kitchen import Kitchen
+from ..merge import dedupe_units
+from ..model import Foon, FunctionalUnit
+from .similarity import SimilarityMatrix, similarity_matrix
+from .substitute import substitute_unit, unit_labels
+
+#: The seed paper's similarity threshold for FOON-EXP.
+DEFAULT_THRESHOLD = 0.89
+
+
+@dataclass(frozen=True)
+class Expansion:
+    """The expanded network and how it was made."""
+
+    foon: Foon
+    threshold: float
+    original_units: int
+    copies: int  # substituted copies generated, before removing duplicates
+    substitutions: tuple[tuple[str, str], ...]  # (label, similar label) pairs used, sorted
+
+    @property
+    def added_units(self) -> int:
+        return len(self.foon.units) - self.original_units
+
+
+def vocabulary(foon: Foon, kitchen: Kitchen | None = None, extra: Iterable[str] = ()) -> tuple[str, ...]:
+    """Object labels of the network's nodes, plus the kitchen's and `extra` ones, sorted."""
+    labels = {n.label for n in foon.nodes}
+    if kitchen is not None:
+        labels.update(n.label for n in kitchen.nodes)
+    labels.update(extra)
+    return tuple(sorted(labels))
+
+
+def is_expanded(unit: FunctionalUnit) -> bool:
+    """Whether a unit exists only as an EXP copy (its first source is marked)."""
+    return bool(unit.sources) and unit.sources[0].expanded_from is not None
+
+
+def expand(
+    foon: Foon,
+    matrix: SimilarityMatrix | None = None,
+    *,
+    threshold: float = DEFAULT_THRESHOLD,
+    max_units: int | None = None,
+    kitchen: Kitchen | None = None,
+) -> Expansion:
+    """FOON-EXP of `foon` (at its level) over the vocabulary of `matrix` (default: network + kitchen labels).
+
+    Raises FoonInputError when the result would hold more than `max_units` units.
+    """
+    if not 0 < threshold <= 1:
+        raise FoonInputError("<expand>", 0, f"similarity threshold must be in (0, 1], not {threshold}")
+    if matrix is None:
+        matrix = similarity_matrix(vocabulary(foon, kitchen))
+    known = set(matrix.labels)
+    similar_cache: dict[str, tuple[tuple[str, float], ...]] = {}
+    keys = {u.key for u in foon.units}
+    copies: list[FunctionalUnit] = []
+    used: set[tuple[str, str]] = set()
+    for unit in foon.units:
+        mentioned = unit_labels(unit)
+        for old in sorted({n.label for n in (*unit.inputs, *unit.outputs)}):
+            if old not in known:
+                continue
+            if old not in similar_cache:
+                similar_cache[old] = matrix.similar(old, threshold)
+            for new, _ in similar_cache[old]:
+                if new in mentioned:
+                    continue
+                copy = substitute_unit(unit, {old: new}, note=old)
+                copies.append(copy)
+                used.add((old, new))
+                keys.add(copy.key)
+                if max_units is not None and len(keys) > max_units:
+                    raise FoonInputError(
+                        "<expand>", 0,
+                        f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
+                        "raise the threshold or --max-units",
+                    )
+    units = dedupe_units((*foon.units, *copies))
+    return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)))

@@ -1,0 +1,381 @@
+"""Lifted PDDL for FOON-GEN: categories are types, the planner grounds them to kitchen objects.
+
+FOON-GEN on its own leaves a category-level task tree ("squeeze a citrus fruit")
+that must be "de-generalized" before a robot can use it. Here the network stays
+concrete and only its *parameters* are generalized:
+
+* **Types.** Every category of the index used by an object becomes a PDDL type,
+  a refined category a subtype of its parent (`object` for top-level ones).
+  PDDL gives a type one parent, so an object listed in several categories is
+  declared with its single chosen category (`CategoryIndex.choose`: the most
+  specific, then file order); it is not also an instance of the others.
+  Objects in no category are of type `object`.
+* **Objects.** Every object label of the network and the kitchen is a PDDL
+  object of its type; labels an action names as constants are domain constants.
+* **Actions.** A functional unit becomes an action with one parameter per
+  categorized object among its *inputs* (node labels, related objects and
+  ingredients of input nodes), typed with that object's category; objects that
+  only appear among its outputs (what it makes: `lemon juice`) stay constants.
+  Units equal up to those parameters are one action (`lift`).
+* **Facts.** Node identity is kept: a node is one atom whose predicate encodes
+  its *shape* (its states with the objects they mention replaced by argument
+  positions) and whose arguments are the node's object then the objects its
+  states mention, ordered by (top-level category, label). The planner is
+  delete-free like FOON itself (`tree` encoding).
+* **Kitchen and goal** stay concrete. A kitchen node becomes every atom that
+  reconstructs it under a shape some action needs (objects of one top-level
+  category may appear in any order, as a grounded action may order them
+  differently); the goal is any such atom of any goal candidate.
+
+Soundness: an atom determines its node (`node_of`), the initial atoms are those
+of kitchen nodes and an action adds the atoms of the output nodes of the
+grounded unit, so a valid plan maps back (`degeneralize.py`) to concrete units
+whose inputs are each in the kitchen or made before: a task tree that
+`tasktree.validate` accepts at the concrete level. The encoding is incomplete
+where a grounded action orders two same-category objects of one node
+differently from the action that needs the node.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from ..goals import Goal
+from ..kitchen import Kitchen
+from ..levels import project, project_node
+from ..merge import dedupe_units
+from ..model import Foon, FunctionalUnit, ObjectNode, make_node, make_state
+from ..pddl.encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
+from ..pddl.names import NameTable
+from ..pddl.task import Action, Atom, PlanningTask, Predicate
+from ..retrieval.reachability import UNREACHED, reachable
+from .categories import CategoryIndex
+from .substitute import substitute_node, substitute_unit, unit_labels
+
+#: Most atoms written for one kitchen node or goal candidate (orderings of same-category objects).
+MAX_REPRESENTATIONS = 24
+
+# A node shape: arity, then per state (label, related position or -1, ingredient positions).
+Shape = tuple[int, tuple[tuple[str, int, tuple[int, ...]], ...]]
+
+
+@dataclass(frozen=True)
+class LiftedUnit:
+    """A unit with some objects as typed parameters: `params` are (label in `unit`, category)."""
+
+    unit: FunctionalUnit
+    params: tuple[tuple[str, str], ...]
+
+    @property
+    def constants(self) -> frozenset[str]:
+        """Labels the unit names that are not parameters."""
+        return unit_labels(self.unit) - {label for label, _ in self.params}
+
+
+def input_labels(unit: FunctionalUnit) -> frozenset[str]:
+    """Labels mentioned by the unit's input nodes (labels, related objects, ingredients)."""
+    return unit_labels(FunctionalUnit(unit.inputs, unit.motion, ()))
+
+
+def lift_unit(unit: FunctionalUnit, index: CategoryIndex,
+              generalize: Callable[[str], bool] = lambda label: True) -> tuple[LiftedUnit, tuple]:
+    """The lifted unit and its duplicate key (the unit with parameters renamed by category and rank).
+
+    Categorized input labels for which `generalize` holds become parameters.
+    """
+    by_cat: dict[str, list[str]] = {}
+    for label in sorted(input_labels(unit)):
+        cat = index.choose(label)
+        if cat is not None and generalize(label):
+            by_cat.setdefault(cat, []).append(label)
+    params = tuple((label, cat) for cat in sorted(by_cat) for label in by_cat[cat])
+    rename = {label: f"\x00{cat}\x00{k}" for cat in by_cat for k, label in enumerate(by_cat[cat])}
+    return LiftedUnit(unit, params), substitute_unit(unit, rename).key
+
+
+def lift(foon: Foon, index: CategoryIndex,
+         generalize: Callable[[str], bool] = lambda label: True) -> tuple[LiftedUnit, ...]:
+    """Lifted units of `foon`, one per class of units equal up to their parameters (first kept)."""
+    kept: dict[tuple, LiftedUnit] = {}
+    for u in foon.units:
+        lifted, key = lift_unit(u, index, generalize)
+        first = kept.get(key)
+        if first is None:
+            kept[key] = lifted
+        else:
+            merged = FunctionalUnit(first.unit.inputs, first.unit.motion, first.unit.outputs,
+                                    first.unit.sources + u.sources)
+            kept[key] = LiftedUnit(merged, first.params)
+    return tuple(kept.values())
+
+
+class Ordering:
+    """The argument order of node atoms: (top-level category, label) of each object."""
+
+    def __init__(self, index: CategoryIndex) -> None:
+        self.index = index
+        self._root: dict[str, str] = {}
+
+    def root(self, label: str) -> str:
+        found = self._root.get(label)
+        if found is None:
+            cat = self.index.choose(label)
+            found = "" if cat is None else ((self.index.ancestors(cat) or (cat,))[-1])
+            self._root[label] = found
+        return found
+
+    def key(self, label: str) -> tuple[str, str]:
+        return (self.root(label), label)
+
+
+def mentioned(node: ObjectNode) -> list[str]:
+    """Distinct labels a node's states mention, other than its own."""
+    out = dict.fromkeys(x for s in node.states for x in (s.related, *s.ingredients) if x and x != node.label)
+    return list(out)
+
+
+def shape_with(node: ObjectNode, order: list[str]) -> Shape:
+    """The shape of `node` when its mentioned labels take positions 1.. in `order`."""
+    pos = {node.label: 0, **{label: i for i, label in enumerate(order, start=1)}}
+    states = tuple(sorted((s.label, pos[s.related] if s.related else -1, tuple(sorted(pos[i] for i in s.ingredients)))
+                          for s in node.states))
+    return (len(order) + 1, states)
+
+
+def node_atom_labels(node: ObjectNode, ordering: Ordering) -> tuple[Shape, tuple[str, ...]]:
+    """The canonical (shape, argument labels) of `node`."""
+    order = sorted(mentioned(node), key=ordering.key)
+    return shape_with(node, order), (node.label, *order)
+
+
+def representations(node: ObjectNode, ordering: Ordering, shapes: set[Shape]) -> list[tuple[Shape, tuple[str, ...]]]:
+    """Every (shape in `shapes`, argument labels) that reconstructs `node`, same-category objects in any order."""
+    order = sorted(mentioned(node), key=ordering.key)
+    groups = [list(g) for _, g in itertools.groupby(order, key=ordering.root)]
+    out: list[tuple[Shape, tuple[str, ...]]] = []
+    for combo in itertools.islice(itertools.product(*(itertools.permutations(g) for g in groups)),
+                                  MAX_REPRESENTATIONS):
+        labels = [x for part in combo for x in part]
+        shape = shape_with(node, labels)
+        if shape in shapes:
+            out.append((shape, (node.label, *labels)))
+    return out
+
+
+def node_of(shape: Shape, labels: tuple[str, ...]) -> ObjectNode:
+    """The node an atom of `shape` with argument `labels` stands for."""
+    states = [make_state(s, labels[r] if r >= 0 else "", (labels[i] for i in ings)) for s, r, ings in shape[1]]
+    return make_node(labels[0], states)
+
+
+def shape_label(shape: Shape) -> str:
+    """Readable text naming a shape (`contains {1} in [2]`), the base of its predicate name."""
+    parts = []
+    for s, r, ings in shape[1]:
+        text = s + (f" [{r}]" if r >= 0 else "") + (" {" + " ".join(map(str, ings)) + "}" if ings else "")
+        parts.append(text)
+    return "node " + (", ".join(parts) if parts else "plain") + f" /{shape[0]}"
+
+
+def relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Iterable[ObjectNode],
+             generalize: Callable[[str], bool], index: CategoryIndex, ordering: Ordering) -> list[int]:
+    """Indexes of the units that can matter for making a candidate from the kitchen.
+
+    Judged on an image of the network: every object of a top-level category that some
+    parameter belongs to is replaced by that category. A grounded action binds a
+    parameter to an object of a subtype of its type, hence of the same top-level
+    category, so its nodes have the image of its unit's nodes, and the image network
+    over-approximates the lifted task: a unit whose image does not fire from the
+    kitchen's image, or outputs no image needed for a candidate's image, is never
+    part of a plan. (An image unit may output one of its own inputs and still make a
+    new concrete node, so every unit outputting a needed image counts.)
+    """
+    roots = {ordering.root(x) for u in foon.units for x in input_labels(u)
+             if index.choose(x) is not None and generalize(x)}
+
+    def image(label: str) -> str:
+        root = ordering.root(label)
+        return root if root in roots else label
+
+    labels = {x for u in foon.units for x in unit_labels(u)} | {x for n in (*kitchen, *candidates)
+                                                                for x in (n.label, *mentioned(n))}
+    mapping = {x: image(x) for x in labels}
+    images = [substitute_unit(u, mapping) for u in foon.units]
+    coarse = Foon(tuple(images), foon.level)
+    reach = reachable(coarse, frozenset(substitute_node(n, mapping) for n in kitchen))
+    ix = reach.index
+    producers: dict[int, list[int]] = {}  # every unit with the node among its outputs: an image unit that
+    for u in range(len(images)):         # outputs one of its inputs may still make a new concrete node
+        for n in ix.outputs[u]:
+            producers.setdefault(n, []).append(u)
+    needed = set(ix.ids(substitute_node(c, mapping) for c in candidates))
+    stack = list(needed)
+    keep: set[int] = set()
+    while stack:
+        n = stack.pop()
+        for u in producers.get(n, ()):
+            if reach.unit_round[u] != UNREACHED and u not in keep:
+                keep.add(u)
+                for i in ix.inputs[u]:
+                    if i not in needed:
+                        needed.add(i)
+                        stack.append(i)
+    return sorted(keep)
+
+
+@dataclass(frozen=True)
+class LiftedTask:
+    """The PDDL task and what decoding its plans needs."""
+
+    task: PlanningTask
+    lifted: tuple[LiftedUnit, ...]  # Action.unit indexes this
+    level: int
+    shapes: dict[str, Shape]  # predicate name -> shape
+    objects: dict[str, str]  # PDDL object/constant name -> label
+
+
+def made_labels(foon: Foon) -> frozenset[str]:
+    """Labels of objects some unit makes (an output node whose label none of the unit's inputs mentions)."""
+    out: set[str] = set()
+    for u in foon.units:
+        seen = input_labels(u)
+        out.update(n.label for n in u.outputs if n.label not in seen)
+    return frozenset(out)
+
+
+#: Which categorized objects become parameters (see `generalizer`).
+POLICIES = ("missing", "absent", "all")
+
+
+def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -> Callable[[str], bool]:
+    """The labels to turn into parameters: `missing` (default), objects the recipes take from the kitchen
+    (no unit makes them) that no kitchen node has; `absent`, any object no kitchen node has; `all`, every one.
+
+    Grounding a parameter that a kitchen object already fills only multiplies the
+    ground actions (FD's translator times out on the universal FOON with `all`).
+    """
+    if policy not in POLICIES:
+        raise ValueError(f"generalization policy must be one of {', '.join(POLICIES)}, not {policy!r}")
+    if policy == "all":
+        return lambda label: True
+    have = {n.label for n in kitchen_nodes}
+    if policy == "absent":
+        return lambda label: label not in have
+    made = made_labels(foon)
+    return lambda label: label not in have and label not in made
+
+
+def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
+                  prune: bool = True, policy: str = "missing") -> LiftedTask:
+    """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc)."""
+    f = project(foon, level)
+    kitchen_nodes = kitchen.project(level).nodes
+    candidates = tuple(sorted({project_node(c, level) for c in goal.candidates}))
+    ordering = Ordering(index)
+    generalize = generalizer(policy, f, kitchen_nodes)
+    if prune:
+        f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, ordering)),
+                 level)
+    lifted = lift(Foon(dedupe_units(f.units), level), index, generalize)
+
+    table = NameTable()
+    table.reserve(GOAL_REACHED, "goal reached")
+    types: dict[str, str] = {}  # category -> type name
+
+    def type_of(cat: str | None) -> str:
+        if cat is None:
+            return "object"
+        if cat not in types:
+            for c in (*reversed(index.ancestors(cat)), cat):
+                if c not in types:
+                    types[c] = table.name(c, key=("type", c))
+        return types[cat]
+
+    def obj(label: str) -> str:
+        return table.name(label, key=("object", label))
+
+    shape_names: dict[Shape, str] = {}
+
+    def predicate(shape: Shape) -> str:
+        if shape not in shape_names:
+            shape_names[shape] = table.name(shape_label(shape), key=("shape", shape))
+        return shape_names[shape]
+
+    actions: list[Action] = []
+    constants: set[str] = set()
+    pre_shapes: set[Shape] = set()
+    for i, lu in enumerate(lifted):
+        vars_ = NameTable()
+        var = {label: "?" + vars_.name(f"{cat} {k}", key=label)
+               for k, (label, cat) in enumerate(lu.params, start=1)}
+        constants |= lu.constants
+
+        def atom(node: ObjectNode) -> Atom:
+            shape, labels = node_atom_labels(node, ordering)
+            return Atom(predicate(shape), tuple(var.get(x) or obj(x) for x in labels))
+
+        pre = tuple(dict.fromkeys(atom(n) for n in lu.unit.inputs))
+        pre_shapes.update(node_atom_labels(n, ordering)[0] for n in lu.unit.inputs)
+        add = tuple(dict.fromkeys(atom(n) for n in lu.unit.outputs))
+        actions.append(Action(
+            table.name(f"{lu.unit.motion.label} g{i}", key=("unit", i)), pre, add,
+            params=tuple((var[label], type_of(cat)) for label, cat in lu.params),
+            unit=i, comment=unit_comment(lu.unit, i)))
+    add_shapes = {node_atom_labels(n, ordering)[0] for lu in lifted for n in lu.unit.outputs}
+
+    goal_reps = [(c, representations(c, ordering, add_shapes | pre_shapes)) for c in candidates]
+    init_shapes = pre_shapes | {s for _, reps in goal_reps for s, _ in reps}
+    init = sorted({Atom(predicate(s), tuple(obj(x) for x in labels))
+                   for n in kitchen_nodes for s, labels in representations(n, ordering, init_shapes)})
+    atoms = [(c, (Atom(predicate(s), tuple(obj(x) for x in labels)),)) for c, reps in goal_reps for s, labels in reps]
+    if len(atoms) == 1:
+        goal_atoms: tuple[Atom, ...] = atoms[0][1]
+    else:  # goal actions live in the domain: the objects they name must be constants
+        constants |= {x for c, reps in goal_reps for _, labels in reps for x in labels}
+        actions.extend(goal_actions(table, atoms, Atom(GOAL_REACHED), EncodeOptions(prune=False)))
+        goal_atoms = (Atom(GOAL_REACHED),)
+
+    labels = {x for lu in lifted for x in unit_labels(lu.unit)}
+    labels |= {x for n in (*kitchen_nodes, *candidates) for x in (n.label, *mentioned(n))}
+    declared = {label: (obj(label), type_of(index.choose(label))) for label in sorted(labels)}
+    predicates = [Predicate(name, tuple((f"?x{k}", "object") for k in range(shape[0])), comment=shape_label(shape))
+                  for shape, name in sorted(shape_names.items(), key=lambda x: x[1])]
+    if len(atoms) != 1:
+        predicates.insert(0, Predicate(GOAL_REACHED, comment="a goal candidate was made"))
+    task = PlanningTask(
+        domain="foon-gen-lifted",
+        problem=table.name(f"make {goal.describe()}", key=("problem",)),
+        encoding="gen-lifted",
+        level=level,
+        predicates=tuple(predicates),
+        actions=tuple(actions),
+        init=tuple(init),
+        goal=goal_atoms,
+        types=tuple((name, types[index.get(cat).parent] if index.get(cat).parent else "object")
+                    for cat, name in types.items()),
+        objects=tuple(v for label, v in declared.items() if label not in constants),
+        constants=tuple(v for label, v in declared.items() if label in constants),
+        units=tuple(lu.unit for lu in lifted),
+        labels=table.labels,
+        comments=(f"foon2pddl, lifted FOON-GEN (categories as types), level {level}: "
+                  f"{len(lifted)} lifted units from {len(f.units)} units",
+                  f"goal: {goal.describe()} ({len(candidates)} candidate nodes)",
+                  f"kitchen: {kitchen.source or 'given'} ({len(kitchen_nodes)} nodes)"),
+    )
+    return LiftedTask(task, lifted, level, {n: s for s, n in shape_names.items()},
+                      {name: label for label, (name, _) in declared.items()})
+
+
+def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> FunctionalUnit:
+    """The concrete unit of lifted unit `action_index` with its parameters bound to the objects `args` (PDDL names)."""
+    lu = lt.lifted[action_index]
+    if len(args) != len(lu.params):
+        raise ValueError(f"action of unit {action_index} takes {len(lu.params)} arguments, got {len(args)}")
+    binding = {label: lt.objects[a] for (label, _), a in zip(lu.params, args, strict=True)}
+    changed = {k: v for k, v in binding.items() if k != v}
+    if not changed:
+        return lu.unit
+    note = "gen: " + ", ".join(f"{k} -> {v}" for k, v in sorted(changed.items()))
+    return substitute_unit(lu.unit, binding, note=note)

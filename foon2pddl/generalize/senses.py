@@ -1,0 +1,146 @@
+"""Which WordNet noun senses an object label stands for.
+
+A label is looked up as one WordNet term (`corn starch` -> `corn_starch`, then
+`cornstarch`; NLTK's morphy maps plurals), keeping only senses in the
+kitchen-relevant lexicographer files (`KITCHEN_LEXNAMES`: with all senses,
+"kale" and "lettuce" meet in a money-slang synset). A compound WordNet lacks
+falls back to its head noun: leading words are dropped until the rest is a term
+(`blueberry muffin` -> head `muffin`, modifier `blueberry`). The overrides file
+(`generalize/data/similarity_overrides.json`) names the senses of labels WordNet
+lacks or gets wrong, and fixes the similarity of particular pairs.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+
+from ..errors import FoonInputError
+
+#: Lexicographer files whose noun senses can name a kitchen object.
+KITCHEN_LEXNAMES: frozenset[str] = frozenset(
+    {"noun.food", "noun.plant", "noun.animal", "noun.artifact", "noun.substance", "noun.object"}
+)
+
+#: Senses of living things, dropped for tools and vessels (see `kitchen_senses`).
+LIVING: frozenset[str] = frozenset({"noun.plant", "noun.animal"})
+
+_SPLIT = re.compile(r"[\s\-_]+")
+
+
+def overrides_path() -> Path:
+    """The shipped overrides file."""
+    return Path(str(resources.files("foon2pddl") / "generalize" / "data" / "similarity_overrides.json"))
+
+
+@dataclass(frozen=True)
+class Overrides:
+    """Senses for labels WordNet lacks (label -> synset names) and fixed pair similarities."""
+
+    senses: dict[str, tuple[str, ...]]
+    pairs: dict[frozenset[str], float]
+    text: str = ""  # the file's content, part of the similarity cache key
+
+    def pair(self, a: str, b: str) -> float | None:
+        return self.pairs.get(frozenset((a, b)))
+
+
+def parse_overrides(text: str, path: str) -> Overrides:
+    """Read `{"senses": {label: [synset, ...]}, "pairs": [[a, b, value], ...]}`; errors name the file."""
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise FoonInputError(path, exc.lineno, f"invalid JSON: {exc.msg}") from None
+    if not isinstance(data, dict) or not isinstance(data.get("senses", {}), dict) \
+            or not isinstance(data.get("pairs", []), list):
+        raise FoonInputError(path, 0, "expected {\"senses\": {label: [synset, ...]}, \"pairs\": [[a, b, value], ...]}")
+    senses: dict[str, tuple[str, ...]] = {}
+    for label, names in data.get("senses", {}).items():
+        if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
+            raise FoonInputError(path, 0, f"senses of {label!r}: expected a non-empty list of synset names")
+        senses[_key(label)] = tuple(names)
+    pairs: dict[frozenset[str], float] = {}
+    for item in data.get("pairs", []):
+        if not (isinstance(item, list) and len(item) == 3 and all(isinstance(x, str) for x in item[:2])
+                and isinstance(item[2], int | float) and 0 <= item[2] <= 1):
+            raise FoonInputError(path, 0, f"pair {item!r}: expected [label, label, value in 0..1]")
+        pairs[frozenset((_key(item[0]), _key(item[1])))] = float(item[2])
+    return Overrides(senses, pairs, text)
+
+
+@lru_cache(maxsize=1)
+def shipped_overrides() -> Overrides:
+    """The overrides shipped with the package."""
+    p = overrides_path()
+    return parse_overrides(p.read_text(encoding="utf-8"), str(p))
+
+
+def _key(label: str) -> str:
+    return " ".join(w for w in _SPLIT.split(label.lower()) if w)
+
+
+@dataclass(frozen=True)
+class Resolution:
+    """The senses a label stands for: synset names, the term found, and a modifier when a head was used."""
+
+    label: str
+    senses: tuple[str, ...]
+    term: str = ""
+    modifier: str | None = None  # dropped leading words when only the head noun was found
+    source: str = "wordnet"  # wordnet | head | override | none
+    lexnames: tuple[str, ...] = ()  # lexicographer file of each sense
+
+    def describe(self) -> str:
+        if not self.senses:
+            return f"{self.label}: no kitchen sense in WordNet"
+        via = {"head": f" (head noun {self.term!r}, modifier {self.modifier!r})", "override": " (override)"}
+        return f"{self.label}: {', '.join(self.senses)}{via.get(self.source, '')}"
+
+
+def kitchen_senses(reader, term: str) -> dict[str, str]:
+    """Noun senses of `term` in kitchen-relevant lexicographer files (name -> file), in WordNet order.
+
+    A tool or vessel (a term with artifact senses and no food sense) drops its plant and
+    animal senses: `box` the container is not the box shrub that is similar to blueberries.
+    """
+    found = {s.name(): s.lexname() for s in reader.synsets(term, "n") if s.lexname() in KITCHEN_LEXNAMES}
+    kinds = set(found.values())
+    if "noun.artifact" in kinds and "noun.food" not in kinds:
+        found = {n: k for n, k in found.items() if k not in LIVING}
+    return found
+
+
+def _override(reader, label: str, names: tuple[str, ...], term: str, modifier: str | None, source: str) -> Resolution:
+    from nltk.corpus.reader.wordnet import WordNetError
+
+    try:
+        kinds = tuple(reader.synset(n).lexname() for n in names)
+    except (WordNetError, ValueError) as exc:
+        raise FoonInputError(str(overrides_path()), 0, f"senses of {term!r}: {exc}") from None
+    return Resolution(label, names, term, modifier, source, kinds)
+
+
+def resolve(reader, label: str, overrides: Overrides) -> Resolution:
+    """The senses of `label`: override, whole term (`a_b`, then `ab`), else head noun with a modifier."""
+    key = _key(label)
+    if key in overrides.senses:
+        return _override(reader, label, overrides.senses[key], key, None, "override")
+    words = key.split()
+    if not words:
+        return Resolution(label, (), "", None, "none")
+    for term in dict.fromkeys(("_".join(words), "".join(words))):
+        found = kitchen_senses(reader, term)
+        if found:
+            return Resolution(label, tuple(found), term, None, "wordnet", tuple(found.values()))
+    for i in range(1, len(words)):
+        head, modifier = " ".join(words[i:]), " ".join(words[:i])
+        if head in overrides.senses:
+            return _override(reader, label, overrides.senses[head], head, modifier, "head")
+        found = kitchen_senses(reader, "_".join(words[i:]))
+        if found:
+            return Resolution(label, tuple(found), "_".join(words[i:]), modifier, "head", tuple(found.values()))
+    return Resolution(label, (), "", None, "none")

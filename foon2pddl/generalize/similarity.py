@@ -1,0 +1,168 @@
+"""Similarity of object labels (Wu-Palmer over WordNet), and the cached similarity matrix.
+
+Rule, for two different labels `a` and `b` (a label is 1.0 similar to itself):
+- a pair fixed in the overrides file has that value;
+- a label with no kitchen-relevant sense (see `senses.resolve`) is similar to nothing (0.0);
+- both found as whole terms: the greatest Wu-Palmer similarity over their sense pairs;
+- both found only by their head nouns (`blueberry muffin`, `bran muffin`): the heads'
+  similarity times the similarity of the modifiers (`blueberry` vs `bran`), so that
+  `egg mixture` and `flour mixture` are not taken for the same thing;
+- one found only by its head (`sea salt` vs `salt`): Wu-Palmer with the compound
+  placed one level below its head (a sea salt is a kind of salt).
+Each sense pair is evaluated in name order, so the value is symmetric.
+
+The matrix over a vocabulary is cached in `<cache>/similarity/<key>.npz`, the key
+hashing the sorted vocabulary, the WordNet version, `CODE_VERSION` and the
+overrides; a cache hit does not import NLTK.
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..fileio import atomic_write
+from ..model import normalize_label
+from . import wordnet
+from .cache import cache_dir, digest
+from .senses import Overrides, Resolution, resolve, shipped_overrides
+
+#: Bump when the similarity rule changes, so cached matrices are recomputed.
+CODE_VERSION = "1"
+
+
+class LabelSimilarity:
+    """Label similarity with per-label senses and per-pair values cached in memory."""
+
+    def __init__(self, reader=None, overrides: Overrides | None = None) -> None:
+        from .wup import WupTable
+
+        self.reader = reader if reader is not None else wordnet.reader()
+        self.overrides = overrides if overrides is not None else shipped_overrides()
+        self._wup = WupTable(self.reader)
+        self._resolved: dict[str, Resolution] = {}
+        self._values: dict[tuple[str, str], float] = {}
+
+    def resolution(self, label: str) -> Resolution:
+        """The senses `label` stands for."""
+        label = normalize_label(label)
+        found = self._resolved.get(label)
+        if found is None:
+            found = self._resolved[label] = resolve(self.reader, label, self.overrides)
+        return found
+
+    def __call__(self, a: str, b: str) -> float:
+        """Similarity of labels `a` and `b` in [0, 1] (symmetric)."""
+        a, b = sorted((normalize_label(a), normalize_label(b)))
+        if a == b:
+            return 1.0
+        key = (a, b)
+        found = self._values.get(key)
+        if found is None:
+            found = self._values[key] = self._compute(a, b)
+        return found
+
+    def _compute(self, a: str, b: str) -> float:
+        fixed = self.overrides.pair(a, b)
+        if fixed is not None:
+            return fixed
+        ra, rb = self.resolution(a), self.resolution(b)
+        if not ra.senses or not rb.senses:
+            return 0.0
+        sa, sb = ra.senses, rb.senses
+        if ra.modifier is None and rb.modifier is None:
+            return self._best(sa, sb, 0)
+        if ra.modifier is not None and rb.modifier is not None:
+            return self._best(sa, sb, 0) * self(ra.modifier, rb.modifier)
+        return self._best(sa, sb, 1)
+
+    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int) -> float:
+        """Greatest Wu-Palmer value over sense pairs; `extra` links added below one side."""
+        best = 0.0
+        for s in senses_a:
+            for t in senses_b:
+                c = self._wup.components(s, t) if s <= t else self._wup.components(t, s)
+                if c is not None:
+                    depth, la, lb = c
+                    best = max(best, 2.0 * depth / (la + lb + 2 * depth + extra))
+        return best
+
+
+@dataclass(frozen=True)
+class SimilarityMatrix:
+    """Symmetric label similarities over a sorted vocabulary (`values[i][j]`, 1.0 on the diagonal)."""
+
+    labels: tuple[str, ...]
+    values: object  # numpy.ndarray of float64, shape (n, n)
+    key: str = ""
+
+    def index(self, label: str) -> int:
+        import bisect
+
+        i = bisect.bisect_left(self.labels, label)
+        if i == len(self.labels) or self.labels[i] != label:
+            raise KeyError(label)
+        return i
+
+    def __call__(self, a: str, b: str) -> float:
+        return float(self.values[self.index(a), self.index(b)])
+
+    def similar(self, label: str, threshold: float) -> tuple[tuple[str, float], ...]:
+        """Other labels at least `threshold` similar to `label`, most similar first (then by label)."""
+        row = self.values[self.index(label)]
+        found = [(self.labels[j], float(row[j])) for j in range(len(self.labels))
+                 if row[j] >= threshold and self.labels[j] != label]
+        return tuple(sorted(found, key=lambda x: (-x[1], x[0])))
+
+
+def matrix_key(labels: tuple[str, ...], overrides_text: str) -> str:
+    """Cache key: sorted vocabulary, WordNet version, code version, overrides."""
+    return digest("\n".join(labels), wordnet.version(), CODE_VERSION, overrides_text)
+
+
+def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "") -> SimilarityMatrix:
+    """All pairs of `labels` (sorted, distinct)."""
+    import numpy as np
+
+    n = len(labels)
+    values = np.eye(n, dtype=np.float64)
+    for i in range(n):
+        for j in range(i + 1, n):
+            values[i, j] = values[j, i] = sim(labels[i], labels[j])
+    return SimilarityMatrix(labels, values, key)
+
+
+def similarity_matrix(
+    vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None
+) -> SimilarityMatrix:
+    """The similarity matrix over `vocabulary` (labels normalized), from the disk cache when possible."""
+    import numpy as np
+
+    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
+    overrides = sim.overrides if sim is not None else shipped_overrides()
+    key = matrix_key(labels, overrides.text)
+    path = cache_dir() / "similarity" / f"{key}.npz"
+    if cache and path.is_file():
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                if tuple(str(x) for x in data["labels"]) == labels:
+                    return SimilarityMatrix(labels, data["values"], key)
+        except (OSError, ValueError, KeyError):
+            pass  # unreadable cache entry: recompute and replace it
+    result = compute_matrix(labels, sim or LabelSimilarity(overrides=overrides), key)
+    if cache:
+        buf = io.BytesIO()
+        np.savez(buf, labels=np.array(labels, dtype=str), values=result.values)
+        try:
+            atomic_write(path, buf.getvalue())
+        except OSError:
+            pass  # a read-only cache only costs time
+    return result
+
+
+def cache_path(vocabulary: Iterable[str]) -> Path:
+    """Where the matrix of `vocabulary` is cached (with the shipped overrides)."""
+    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
+    return cache_dir() / "similarity" / f"{matrix_key(labels, shipped_overrides().text)}.npz"

@@ -1,0 +1,25 @@
+"""Statistics of REG, EXP and GEN side by side: the seed paper's table of nodes per level."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from ..levels import LEVELS, project
+from ..model import Foon
+from ..stats import level_row
+
+
+def levels_table(networks: Mapping[str, Foon]) -> list[dict[str, int | str]]:
+    """One row per network and level: object nodes, motion nodes (= units), in the order given."""
+    rows: list[dict[str, int | str]] = []
+    for name, foon in networks.items():
+        for level in LEVELS:
+            rows.append({"network": name, **level_row(project(foon, level))})
+    return rows
+
+
+def format_levels_table(rows: list[dict[str, int | str]]) -> str:
+    """Markdown table: network, level, object nodes, motion nodes."""
+    lines = ["| network | level | object nodes | motion nodes (units) |", "|---|---|---|---|"]
+    lines += [f"| {r['network']} | {r['level']} | {r['object_nodes']} | {r['motion_nodes']} |" for r in rows]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,165 @@
+"""WordNet through NLTK's reader: an installed NLTK corpus, or Debian's WordNet 3.0 files.
+
+Search order: NLTK's data roots (what `python -m nltk.downloader wordnet` installs),
+then a corpus assembled earlier in the user cache, then Debian's `wordnet-base` +
+`wordnet-sense-index` files in /usr/share/wordnet, which are copied once into
+`<cache>/nltk_data/corpora/wordnet/` (NLTK refuses files outside its data roots,
+so links would not do) together with the standard `lexnames` table that Debian
+does not ship. Locating the corpus and reading its version does not import NLTK
+(importing it costs over a second), so a cached similarity matrix loads fast.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import sys
+import tempfile
+import zipfile
+from functools import lru_cache
+from pathlib import Path
+
+from ..errors import FoonInputError
+from .cache import cache_dir
+
+DEBIAN_DIR = Path("/usr/share/wordnet")
+
+#: The files NLTK's WordNetCorpusReader opens (its `_FILES`), `lexnames` excepted.
+CORPUS_FILES = (
+    "cntlist.rev", "index.sense",
+    "index.adj", "index.adv", "index.noun", "index.verb",
+    "data.adj", "data.adv", "data.noun", "data.verb",
+    "adj.exc", "adv.exc", "noun.exc", "verb.exc",
+)
+
+#: WordNet's lexicographer files by number (the `lexnames` file of every WordNet 3.0
+#: distribution): number, name, syntactic category (1 noun, 2 verb, 3 adjective, 4 adverb).
+LEXNAMES: tuple[tuple[str, int], ...] = (
+    ("adj.all", 3), ("adj.pert", 3), ("adv.all", 4),
+    ("noun.Tops", 1), ("noun.act", 1), ("noun.animal", 1), ("noun.artifact", 1),
+    ("noun.attribute", 1), ("noun.body", 1), ("noun.cognition", 1), ("noun.communication", 1),
+    ("noun.event", 1), ("noun.feeling", 1), ("noun.food", 1), ("noun.group", 1),
+    ("noun.location", 1), ("noun.motive", 1), ("noun.object", 1), ("noun.person", 1),
+    ("noun.phenomenon", 1), ("noun.plant", 1), ("noun.possession", 1), ("noun.process", 1),
+    ("noun.quantity", 1), ("noun.relation", 1), ("noun.shape", 1), ("noun.state", 1),
+    ("noun.substance", 1), ("noun.time", 1),
+    ("verb.body", 2), ("verb.change", 2), ("verb.cognition", 2), ("verb.communication", 2),
+    ("verb.competition", 2), ("verb.consumption", 2), ("verb.contact", 2), ("verb.creation", 2),
+    ("verb.emotion", 2), ("verb.motion", 2), ("verb.perception", 2), ("verb.possession", 2),
+    ("verb.social", 2), ("verb.stative", 2), ("verb.weather", 2),
+    ("adj.ppl", 3),
+)
+
+INSTALL_HINT = (
+    "WordNet not found: install Debian's WordNet 3.0 files "
+    "(apt-get install wordnet-base wordnet-sense-index) or NLTK's corpus (python -m nltk.downloader wordnet)"
+)
+
+_VERSION = re.compile(r"Word[nN]et (\d+\+?|\d+\.\d+) Copyright")
+
+
+def lexnames_text() -> str:
+    """The `lexnames` file: `NN<TAB>name<TAB>category` per line, numbered 00-44."""
+    return "".join(f"{i:02d}\t{name}\t{cat}\n" for i, (name, cat) in enumerate(LEXNAMES))
+
+
+def nltk_data_roots() -> list[Path]:
+    """NLTK's default data roots on Unix (`nltk.data.path` as NLTK computes it), without importing NLTK."""
+    roots = [Path(d).expanduser() for d in os.environ.get("NLTK_DATA", "").split(os.pathsep) if d]
+    if "APPENGINE_RUNTIME" not in os.environ and os.path.expanduser("~/") != "~/":
+        roots.append(Path(os.path.expanduser("~/nltk_data")))
+    roots += [Path(sys.prefix, "nltk_data"), Path(sys.prefix, "share", "nltk_data"),
+              Path(sys.prefix, "lib", "nltk_data"), Path("/usr/share/nltk_data"),
+              Path("/usr/local/share/nltk_data"), Path("/usr/lib/nltk_data"), Path("/usr/local/lib/nltk_data")]
+    return roots
+
+
+def assembled_root(cache: Path | None = None) -> Path:
+    """The NLTK data root inside the cache that holds an assembled `corpora/wordnet`."""
+    return (cache or cache_dir()) / "nltk_data"
+
+
+def _complete(corpus: Path) -> bool:
+    return corpus.is_dir() and all((corpus / f).is_file() for f in (*CORPUS_FILES, "lexnames"))
+
+
+def assemble(debian_dir: Path, root: Path) -> Path:
+    """Copy Debian's WordNet files and a `lexnames` table into `root/corpora/wordnet` (atomically)."""
+    target = root / "corpora" / "wordnet"
+    if _complete(target):
+        return target
+    target.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=".wordnet-", dir=target.parent))
+    try:
+        for name in CORPUS_FILES:
+            shutil.copyfile(debian_dir / name, staging / name)
+        (staging / "lexnames").write_text(lexnames_text(), encoding="utf-8")
+        try:
+            os.rename(staging, target)  # another process may have won the race: keep its copy
+        except OSError:
+            if not _complete(target):
+                raise
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+    return target
+
+
+def locate(
+    debian_dir: Path = DEBIAN_DIR, cache: Path | None = None, nltk_roots: list[Path] | None = None
+) -> tuple[Path, Path]:
+    """(data root, corpus dir or zip) of the WordNet to use, assembling Debian's files if needed.
+
+    Raises FoonInputError naming both install routes when no WordNet is found.
+    """
+    for root in nltk_data_roots() if nltk_roots is None else nltk_roots:
+        corpus = root / "corpora" / "wordnet"
+        if (corpus / "lexnames").is_file():
+            return root, corpus
+        if (root / "corpora" / "wordnet.zip").is_file():
+            return root, root / "corpora" / "wordnet.zip"
+    root = assembled_root(cache)
+    if _complete(root / "corpora" / "wordnet"):
+        return root, root / "corpora" / "wordnet"
+    if all((debian_dir / f).is_file() for f in CORPUS_FILES):
+        try:
+            return root, assemble(debian_dir, root)
+        except OSError as exc:
+            raise FoonInputError(str(root), 0, f"cannot assemble WordNet from {debian_dir}: {exc}") from None
+    raise FoonInputError("<wordnet>", 0, INSTALL_HINT)
+
+
+def corpus_version(corpus: Path) -> str:
+    """WordNet version from the copyright header of `data.adj` (as NLTK's `get_version` reads it)."""
+    if corpus.suffix == ".zip":
+        with zipfile.ZipFile(corpus) as zf:
+            name = next((n for n in zf.namelist() if n.endswith("/data.adj")), None)
+            head = zf.read(name)[:4096].decode("utf-8", "replace") if name else ""
+    else:
+        with open(corpus / "data.adj", encoding="utf-8", errors="replace") as fh:
+            head = fh.read(4096)
+    m = _VERSION.search(head)
+    return m.group(1) if m else "unknown"
+
+
+@lru_cache(maxsize=1)
+def version() -> str:
+    """Version of the WordNet `reader()` opens (e.g. "3.0"), read without importing NLTK."""
+    return corpus_version(locate()[1])
+
+
+@lru_cache(maxsize=1)
+def reader():
+    """NLTK's WordNetCorpusReader over the located corpus (no multilingual data)."""
+    import warnings
+
+    import nltk.data
+    from nltk.corpus.reader.wordnet import WordNetCorpusReader
+
+    root, _ = locate()
+    if str(root) not in [str(p) for p in nltk.data.path]:
+        nltk.data.path.append(str(root))  # authorizes the root in NLTK's path sandbox
+    pointer = nltk.data.find("corpora/wordnet")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # "multilingual functions are not available"
+        return WordNetCorpusReader(pointer, None)

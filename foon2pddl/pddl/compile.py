@@ -1,0 +1,34 @@
+"""`compile_task`: one entry point from (network, kitchen, goal) to a `PlanningTask` in any encoding."""
+
+from __future__ import annotations
+
+from ..goals import Goal
+from ..kitchen import Kitchen
+from ..model import Foon
+from ..retrieval.rates import Rates
+from .encode_compat import encode_compat
+from .encode_state import encode_state
+from .encode_tree import encode_tree
+from .encoding import EncodeOptions
+from .task import PlanningTask
+
+#: Encoding name -> encoder; the first is the default.
+ENCODINGS = {"tree": encode_tree, "state": encode_state, "foon-compat": encode_compat}
+
+
+def compile_task(
+    foon: Foon,
+    kitchen: Kitchen,
+    goal: Goal,
+    encoding: str = "tree",
+    level: int = 3,
+    prune: bool = True,
+    costs: str | None = None,
+    rates: Rates | None = None,
+) -> PlanningTask:
+    """Encode `goal` from `kitchen` over `foon` at `level` (ValueError on an unknown encoding or cost mode)."""
+    try:
+        encoder = ENCODINGS[encoding]
+    except KeyError:
+        raise ValueError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
+    return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates))

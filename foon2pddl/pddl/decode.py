@@ -1,0 +1,175 @@
+"""Plan -> task tree: map plan steps back to functional units and check the result.
+
+Each step names an action; `Action.unit` gives its functional unit (auxiliary
+actions, unit None, such as an encoding's goal actions, are skipped). The tree's
+goal is the first goal candidate (at the task's level) the units make.
+
+Two checks always run: the plan against the task's own STRIPS semantics
+(`simulate_plan`: preconditions hold, deletes then adds, goal at the end) and
+the tree by FOON simulation from the kitchen, exactly like a native retrieval
+(`tasktree.validate`). The `tree` and `foon-compat` encodings have FOON's
+semantics, so a valid plan must pass both; the `state` encoding combines facts
+of different nodes, so its plans need only pass the first, and the FOON check
+is reported as information. On request, and when the task is small, the plan
+is also checked by unified-planning's sequential plan validator, independent
+of our code (it imports UP, ~1.5 s, hence opt-in).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from ..goals import Goal
+from ..levels import project_node
+from ..model import FunctionalUnit, ObjectNode
+from ..tasktree import TaskTree, Validation, validate
+from .planners.result import step_action
+from .task import Atom, PlanningTask
+
+#: Largest task (actions) checked with UP's validator: its cost grows fast with size.
+UP_VALIDATE_MAX_ACTIONS = 300
+
+
+class PlanDecodeError(ValueError):
+    """A plan step that names no action of the task."""
+
+
+#: Encodings whose semantics are not FOON's: their trees need not pass FOON simulation.
+NON_FOON_ENCODINGS = frozenset({"state"})
+
+
+@dataclass(frozen=True)
+class Decoded:
+    """The task tree a plan stands for, with its checks.
+
+    `validation`: FOON simulation of the tree; `plan_check`: the plan under the
+    task's STRIPS semantics; `up_validation`: UP's verdict (None when not run);
+    `foon_semantics`: whether the encoding promises FOON's semantics (then
+    `validation` must pass too).
+    """
+
+    tree: TaskTree
+    validation: Validation
+    plan_check: Validation = Validation(True)
+    up_validation: Validation | None = None
+    foon_semantics: bool = True
+
+    @property
+    def ok(self) -> bool:
+        return (self.plan_check.ok and (self.up_validation is None or self.up_validation.ok)
+                and (self.validation.ok or not self.foon_semantics))
+
+    @property
+    def problems(self) -> tuple[str, ...]:
+        """What failed, the checks that decide `ok` first."""
+        out = self.plan_check.problems + (self.up_validation.problems if self.up_validation else ())
+        return out + (self.validation.problems if self.foon_semantics else ())
+
+
+def plan_units(task: PlanningTask, steps: Sequence[str]) -> tuple[FunctionalUnit, ...]:
+    """The functional units of a plan's steps, in order; raises PlanDecodeError for an unknown action."""
+    units = []
+    for n, step in enumerate(steps, start=1):
+        action = task.action_for(step_action(step))
+        if action is None:
+            raise PlanDecodeError(f"plan step {n} ({step}) names no action of the task")
+        if action.unit is not None:
+            units.append(task.units[action.unit])
+    return tuple(units)
+
+
+def goal_node(goal: Goal, level: int, kitchen_nodes: Iterable[ObjectNode],
+              units: Sequence[FunctionalUnit]) -> ObjectNode:
+    """The first goal candidate (at `level`) that the kitchen plus the units' outputs hold, else the first candidate."""
+    candidates = sorted({project_node(c, level) for c in goal.candidates})
+    available = set(kitchen_nodes)
+    for u in units:
+        available.update(u.outputs)
+    return next((c for c in candidates if c in available), candidates[0])
+
+
+def to_tree(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
+    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for an unknown action."""
+    units = plan_units(task, steps)
+    return TaskTree(units, goal_node(goal, task.level, kitchen_nodes, units), task.level)
+
+
+def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask, steps: Sequence[str], *,
+          up_validate: bool = False) -> Decoded:
+    """Validate a decoded tree by simulation, and the plan with UP when asked and the task is small."""
+    up = None
+    if up_validate and len(task.actions) <= UP_VALIDATE_MAX_ACTIONS:
+        up = up_validation(task, steps)
+    return Decoded(tree, validate(tree, kitchen_nodes), simulate_plan(task, steps), up,
+                   task.encoding not in NON_FOON_ENCODINGS)
+
+
+def decode(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,
+           up_validate: bool = False) -> Decoded:
+    """The plan's task tree (kitchen nodes at the task's level) with its checks (see the module doc)."""
+    return check(to_tree(task, steps, goal, kitchen_nodes), kitchen_nodes, task, steps, up_validate=up_validate)
+
+
+def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:
+    """Apply the plan to the task's initial state: (final state, or the state before the first failing step; problem)."""
+    state = set(task.init)
+    for n, step in enumerate(steps, start=1):
+        action = task.action_for(step_action(step))
+        if action is None:
+            return state, f"plan step {n} ({step}) names no action of the task"
+        args = step.split()[1:]
+        if len(args) != len(action.params):
+            return state, f"plan step {n} ({step}): {len(action.params)} arguments expected"
+        bind = {var: arg for (var, _), arg in zip(action.params, args, strict=True)}
+
+        def ground(atoms, bind=bind):
+            return [Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in atoms]
+
+        missing = [a for a in ground(action.pre) if a not in state]
+        if missing:
+            return state, f"plan step {n} ({step}): precondition false: " + ", ".join(map(_show, missing[:3]))
+        state.difference_update(ground(action.delete))
+        state.update(ground(action.add))
+    return state, None
+
+
+def simulate_plan(task: PlanningTask, steps: Sequence[str]) -> Validation:
+    """The plan under the task's STRIPS semantics: preconditions hold, deletes then adds, the goal at the end."""
+    state, problem = run_plan(task, steps)
+    if problem is not None:
+        return Validation(False, (problem,))
+    unmet = [a for a in task.goal if a not in state]
+    if unmet:
+        return Validation(False, ("goal false after the plan: " + _show(unmet[0]),))
+    return Validation(True)
+
+
+def _show(atom: Atom) -> str:
+    return f"({' '.join((atom.predicate, *atom.args))})"
+
+
+def up_validation(task: PlanningTask, steps: Sequence[str]) -> Validation:
+    """The plan checked by UP's SequentialPlanValidator on `to_up_problem(task)`."""
+    from unified_planning.plans import ActionInstance, SequentialPlan
+    from unified_planning.shortcuts import PlanValidator
+
+    from .up_problem import build_up
+
+    up = build_up(task)
+    actions = {name.lower(): a for name, a in up.actions.items()}
+    objects = {name.lower(): o for name, o in up.objects.items()}
+    try:
+        plan = SequentialPlan([
+            ActionInstance(actions[step_action(s)], [objects[a] for a in s.split()[1:]]) for s in steps
+        ])
+    except KeyError as exc:
+        return Validation(False, (f"UP validator: unknown name {exc.args[0]!r} in plan",))
+    with PlanValidator(name="sequential_plan_validator") as validator:
+        res = validator.validate(up.problem, plan)
+    if res.status.name == "VALID":
+        return Validation(True)
+    detail = res.reason.name.lower().replace("_", " ") if res.reason is not None else res.status.name.lower()
+    if res.inapplicable_action is not None:
+        detail += f": {res.inapplicable_action}"
+    return Validation(False, (f"UP validator: {detail}",))

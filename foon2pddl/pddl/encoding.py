@@ -1,0 +1,153 @@
+"""What every encoding shares: inputs at one level, options, comments, goal actions.
+
+An encoding is a pure function `(foon, kitchen, goal, level, options) -> PlanningTask`;
+this module brings its inputs to one hierarchy level (`at_level`), picks the
+units and nodes a node-proposition encoding compiles (`select`, pruned or not)
+and writes the parts that do not depend on the encoding (header and per-action
+comments, the auxiliary actions for a goal with several candidate nodes).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+from ..goals import Goal
+from ..kitchen import Kitchen
+from ..levels import check_level, project, project_node
+from ..model import Foon, FunctionalUnit, ObjectNode
+from ..retrieval.index import FoonIndex, index_of
+from ..retrieval.rates import Rates
+from .costs import check_costs, goal_cost
+from .names import NameTable
+from .prune import relevant_units
+from .task import Action, Atom
+
+#: Name of the 0-ary predicate (tree, state) auxiliary goal actions make true.
+GOAL_REACHED = "goal-reached"
+
+#: Longest unit description written into an action comment.
+DESCRIBE_MAX = 240
+
+
+@dataclass(frozen=True)
+class EncodeOptions:
+    """How to encode: relevance pruning, cost mode (None, `unit`, `success-rate`) and motion rates."""
+
+    prune: bool = True
+    costs: str | None = None
+    rates: Rates | None = None
+
+    def __post_init__(self) -> None:
+        check_costs(self.costs, self.rates)
+
+
+DEFAULT_OPTIONS = EncodeOptions()
+
+
+@dataclass(frozen=True)
+class LevelInputs:
+    """Network, kitchen nodes and goal candidates, all at one level."""
+
+    foon: Foon
+    kitchen: frozenset[ObjectNode]
+    candidates: tuple[ObjectNode, ...]
+    level: int
+    goal: Goal
+    kitchen_source: str
+
+
+def at_level(foon: Foon, kitchen: Kitchen, goal: Goal, level: int) -> LevelInputs:
+    """Project network, kitchen and goal to `level` (none of them may be coarser than `level`)."""
+    check_level(level)
+    for what, have in (("network", foon.level), ("kitchen", kitchen.level), ("goal", goal.level)):
+        if have < level:
+            raise ValueError(f"the {what} is at level {have}, cannot encode it at level {level}")
+    candidates = tuple(sorted({project_node(c, level) for c in goal.candidates}))
+    if not candidates:
+        raise ValueError(f"goal {goal.describe()!r} has no candidate node")
+    projected = project(foon, level)
+    ix = index_of(projected)
+    missing = [c for c in candidates if c not in ix.node_id]
+    if missing:
+        raise ValueError(f"goal candidate {missing[0].describe()!r} is not a node of the network")
+    return LevelInputs(projected, kitchen.project(level).nodes, candidates, level, goal, kitchen.source)
+
+
+@dataclass(frozen=True)
+class Selection:
+    """What a node-proposition encoding compiles: unit indexes and node ids (`index` ids), sorted."""
+
+    index: FoonIndex
+    units: tuple[int, ...]
+    nodes: tuple[int, ...]
+    candidates: tuple[int, ...]
+    kitchen: tuple[int, ...]  # kitchen nodes among `nodes`
+
+
+def select(inp: LevelInputs, prune: bool) -> Selection:
+    """The units to compile (all, or the relevant ones) and the nodes they and the goal mention."""
+    ix = index_of(inp.foon)
+    candidates = tuple(ix.ids(inp.candidates))
+    if prune:
+        units = relevant_units(inp.foon, inp.kitchen, inp.candidates)
+        used = set(candidates)
+        for u in units:
+            used.update(ix.inputs[u])
+            used.update(ix.outputs[u])
+        nodes = tuple(sorted(used))
+    else:
+        units = tuple(range(len(inp.foon.units)))
+        nodes = tuple(range(len(ix.nodes)))
+    chosen = set(nodes)
+    return Selection(ix, units, nodes, candidates, tuple(i for i in ix.ids(inp.kitchen) if i in chosen))
+
+
+@lru_cache(maxsize=4096)
+def short_path(path: str) -> str:
+    """A source path as written in comments: the file name (output must not depend on checkout place)."""
+    return path.replace("\\", "/").rstrip("/").rsplit("/", 1)[-1] or path
+
+
+def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
+    """Comment lines of a unit's action: index, motion, source recipe files and lines, what it does."""
+    places = [f"{short_path(s.path)}:{s.line}" + (f" (expanded from {s.expanded_from})" if s.expanded_from else "")
+              for s in unit.sources[:3]]
+    if len(unit.sources) > 3:
+        places.append(f"+{len(unit.sources) - 3} more")
+    motion = unit.motion.label + ("*" if unit.motion.composite else "")
+    first = f"unit {index}: {motion}" + (f" from {', '.join(places)}" if places else "")
+    text = unit.describe()
+    if len(text) > DESCRIBE_MAX:
+        text = text[: DESCRIBE_MAX - 3] + "..."
+    return (first, text)
+
+
+def header(encoding: str, inp: LevelInputs, options: EncodeOptions, kept: int) -> tuple[str, ...]:
+    """Header comment lines shared by the domain and problem files."""
+    total = len(inp.foon.units)
+    pruning = f"{kept} of {total} units after relevance pruning" if options.prune else f"all {total} units"
+    lines = [
+        f"foon2pddl, encoding {encoding}, level {inp.level}: {pruning}",
+        f"goal: {inp.goal.describe()} ({len(inp.candidates)} candidate node{'s' if len(inp.candidates) != 1 else ''})",
+        f"kitchen: {short_path(inp.kitchen_source) or 'given'} ({len(inp.kitchen)} nodes)",
+    ]
+    if options.costs:
+        costs = options.costs
+        if options.costs == "success-rate" and options.rates is not None:
+            costs += f" (rates: {short_path(options.rates.source) or 'given'})"
+        lines.append(f"action costs: {costs}")
+    return tuple(lines)
+
+
+def goal_actions(
+    table: NameTable, candidate_atoms: list[tuple[ObjectNode, tuple[Atom, ...]]], goal_atom: Atom,
+    options: EncodeOptions,
+) -> tuple[Action, ...]:
+    """One auxiliary action per candidate: its atoms -> `goal_atom` (unit None, cost 0)."""
+    actions = []
+    for i, (node, atoms) in enumerate(candidate_atoms, start=1):
+        name = table.name(f"reach-goal-{i}", key=("goal-action", i))
+        actions.append(Action(name, atoms, (goal_atom,), cost=goal_cost(options.costs), unit=None,
+                              comment=(f"goal candidate {i}: {node.describe()}",)))
+    return tuple(actions)

@@ -1,0 +1,70 @@
+"""Any planner as a command: `--planner-cmd 'cmd {domain} {problem} {plan}'`.
+
+The command is split like a shell would (shlex) but run without a shell, in its
+own temporary directory, with `{domain}`, `{problem}`, `{plan}` (and `{time}`,
+the time limit in whole seconds) replaced by paths in that directory. The plan
+is read back as an IPC plan file (`(action arg ...)` lines, `;` comments) from
+`{plan}`, or, when the planner writes elsewhere, from `sas_plan` (Fast
+Downward's default) or `problem.pddl.soln` (pyperplan's). A planner that exits
+normally without a plan reports the task unsolvable; a non-zero exit without a
+plan is an error, except Fast Downward's unsolvable codes 10-13 (its codes 1-3
+with a plan still mean a plan was found; the plan is validated anyway).
+"""
+
+from __future__ import annotations
+
+import math
+import shlex
+import tempfile
+import time
+from pathlib import Path
+
+from .process import run_process
+from .result import PlanResult, parse_plan_text, tail
+
+PLACEHOLDERS = ("{domain}", "{problem}", "{plan}", "{time}")
+
+
+def split_command(cmd: str) -> list[str]:
+    """The command's words; raises ValueError for an empty or unbalanced command."""
+    words = shlex.split(cmd)
+    if not words:
+        raise ValueError("empty planner command")
+    return words
+
+
+def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | None = None) -> PlanResult:
+    """Run a planner command on PDDL text and read its plan."""
+    name = "external"
+    try:
+        words = split_command(cmd)
+    except ValueError as exc:
+        return PlanResult("error", (), name, f"bad planner command {cmd!r}: {exc}")
+    name = f"external ({Path(words[0]).name})"
+    with tempfile.TemporaryDirectory(prefix="foon2pddl-ext-") as tmp:
+        work = Path(tmp)
+        t0 = time.perf_counter()
+        domain, problem, plan = work / "domain.pddl", work / "problem.pddl", work / "plan.txt"
+        domain.write_text(domain_text)
+        problem.write_text(problem_text)
+        write_s = time.perf_counter() - t0
+        seconds = "" if time_limit is None else str(max(1, math.ceil(time_limit)))
+        subst = {"{domain}": str(domain), "{problem}": str(problem), "{plan}": str(plan), "{time}": seconds}
+        argv = []
+        for word in words:
+            for key, value in subst.items():
+                word = word.replace(key, value)
+            argv.append(word)
+        try:
+            run = run_process(argv, work, time_limit)
+        except OSError as exc:
+            return PlanResult("error", (), name, f"cannot run planner command: {exc}", {"write": write_s})
+        timings = {"write": write_s, "search": run.seconds}
+        if run.timed_out:
+            return PlanResult("timeout", (), name, "time limit reached", timings)
+        found = next((p for p in (plan, work / "sas_plan", work / "problem.pddl.soln") if p.is_file()), None)
+        if found is not None and run.returncode in (0, 1, 2, 3):
+            return PlanResult("solved", parse_plan_text(found.read_text(errors="replace")), name, "plan found", timings)
+        if run.returncode == 0 or run.returncode in (10, 11, 12, 13):
+            return PlanResult("unsolvable", (), name, f"planner wrote no plan (exit code {run.returncode})", timings)
+        return PlanResult("error", (), name, f"planner exit code {run.returncode}: {tail(run.output)}", timings)

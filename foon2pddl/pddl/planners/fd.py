@@ -1,0 +1,199 @@
+"""Fast Downward from the `up-fast-downward` wheel, run as its driver runs it.
+
+The driver (`downward/fast-downward.py`) runs two components: the Python
+translator (`python -m fast_downward.translate`, with the wheel's
+`builds/release/bin` first on PYTHONPATH) and the `downward` search binary,
+fed the translated SAS task on stdin. We run the same two commands ourselves:
+it saves one interpreter start per plan, times translation and search
+separately, and lets `fd_reuse` search a translated task many times. Search
+configurations come from the driver's own `aliases.py` (`lama-first` by
+default; `seq-opt-lmcut`, A* with LM-cut, for `optimal=True`).
+
+Every run works in its own temporary directory: the translator writes its
+SAS file there, so concurrent solves never read each other's files.
+The package is located without importing it (importing `up_fast_downward`
+imports unified-planning, ~1.5 s).
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import os
+import sys
+import tempfile
+import time
+from functools import cache, lru_cache
+from pathlib import Path
+
+from .process import ProcessRun, remaining, run_process
+from .result import PlanResult, parse_plan_text, tail
+
+SATISFICING_ALIAS = "lama-first"
+OPTIMAL_ALIAS = "seq-opt-lmcut"
+
+#: Exit codes of the FD components (driver/returncodes.py) -> (status, meaning).
+EXIT_CODES: dict[int, tuple[str, str]] = {
+    0: ("solved", "plan found"),
+    1: ("solved", "plan found, then out of memory"),
+    2: ("solved", "plan found, then out of time"),
+    3: ("solved", "plan found, then out of memory and time"),
+    10: ("unsolvable", "translator proved the task unsolvable"),
+    11: ("unsolvable", "search proved the task unsolvable"),
+    12: ("unsolvable", "search space exhausted without a plan (incomplete search)"),
+    13: ("unsolvable", "no plan within the cost bound"),
+    20: ("error", "translator out of memory"),
+    21: ("timeout", "translator time limit"),
+    22: ("error", "search out of memory"),
+    23: ("timeout", "search time limit"),
+    24: ("error", "search out of memory and time"),
+    30: ("error", "translator critical error"),
+    31: ("error", "translator input error (PDDL not accepted)"),
+    32: ("error", "search critical error"),
+    33: ("error", "search input error"),
+    34: ("error", "search does not support this task"),
+    35: ("error", "driver critical error"),
+    36: ("error", "driver input error"),
+    37: ("error", "driver unsupported"),
+}
+
+
+def exit_status(code: int) -> tuple[str, str]:
+    """(status, meaning) of a Fast Downward exit code; unknown codes and signals are errors."""
+    if code in EXIT_CODES:
+        return EXIT_CODES[code]
+    if code < 0:
+        return "error", f"killed by signal {-code}"
+    return "error", f"unexpected exit code {code}"
+
+
+class FastDownwardMissing(RuntimeError):
+    """The up-fast-downward wheel (or its search binary) is not installed."""
+
+
+@lru_cache(maxsize=1)
+def downward_dir() -> Path:
+    """`up_fast_downward/downward` inside the installed wheel."""
+    spec = importlib.util.find_spec("up_fast_downward")
+    if spec is None or not spec.submodule_search_locations:
+        raise FastDownwardMissing("the up-fast-downward package is not installed")
+    path = Path(next(iter(spec.submodule_search_locations))) / "downward"
+    if not (path / "fast-downward.py").is_file():
+        raise FastDownwardMissing(f"no Fast Downward driver under {path}")
+    return path
+
+
+def bin_dir() -> Path:
+    return downward_dir() / "builds" / "release" / "bin"
+
+
+def search_binary() -> Path:
+    """The `downward` search executable."""
+    path = bin_dir() / "downward"
+    if not os.access(path, os.X_OK):
+        raise FastDownwardMissing(f"Fast Downward search binary missing or not executable: {path}")
+    return path
+
+
+@cache
+def alias_options(alias: str) -> tuple[str, ...]:
+    """Search options of a driver alias, read (not executed) from the driver's `aliases.py`."""
+    tree = ast.parse((downward_dir() / "driver" / "aliases.py").read_text())
+    for node in tree.body:
+        if (isinstance(node, ast.Assign) and len(node.targets) == 1
+                and isinstance(node.targets[0], ast.Subscript)
+                and isinstance(node.targets[0].slice, ast.Constant) and node.targets[0].slice.value == alias):
+            options = ast.literal_eval(node.value)
+            # The driver strips blanks the same way (aliases.set_options_for_alias).
+            return tuple(x.replace(" ", "").replace("\n", "") for x in options)
+    raise KeyError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
+
+
+#: Translator options for tasks without delete effects: with nothing deleted there are no
+#: mutexes to find, so invariant synthesis is skipped (~30 % of translation at 1,800 actions).
+DELETE_FREE_OPTIONS = ("--invariant-generation-max-candidates", "0")
+
+
+def translate_options_for(task) -> tuple[str, ...]:
+    """Translator options suited to a PlanningTask."""
+    return DELETE_FREE_OPTIONS if not any(a.delete for a in task.actions) else ()
+
+
+def search_options(optimal: bool = False) -> tuple[str, ...]:
+    return alias_options(OPTIMAL_ALIAS if optimal else SATISFICING_ALIAS)
+
+
+def planner_name(optimal: bool) -> str:
+    return f"fd ({OPTIMAL_ALIAS if optimal else SATISFICING_ALIAS})"
+
+
+def translate(domain: Path, problem: Path, sas: Path, cwd: Path, timeout: float | None,
+              options: tuple[str, ...] = (), memory_limit_mb: int | None = None) -> ProcessRun:
+    """Run FD's translator on PDDL files, writing the SAS task to `sas`."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (str(bin_dir()), env.get("PYTHONPATH", "")) if p)
+    cmd = [sys.executable, "-m", "fast_downward.translate", str(domain), str(problem), "--sas-file", str(sas), *options]
+    return run_process(cmd, cwd, timeout, env=env, memory_limit_mb=memory_limit_mb)
+
+
+def translation_failure(run: ProcessRun, name: str) -> PlanResult | None:
+    """The result to report when a translator run did not produce a usable task, else None."""
+    timings = {"translate": run.seconds}
+    if run.timed_out:
+        return PlanResult("timeout", (), name, "time limit reached during translation", timings)
+    if run.returncode != 0:
+        status, meaning = exit_status(30 if run.returncode == 1 else run.returncode)
+        return PlanResult(status, (), name, f"{meaning}: {tail(run.output)}", timings)
+    for line in run.output.splitlines():
+        if "Generating unsolvable task" in line:  # e.g. "No relaxed solution! Generating unsolvable task..."
+            reason = line.split("!", 1)[0].strip().lower() or "goal unreachable"
+            return PlanResult("unsolvable", (), name, f"translator: {reason}", timings)
+    return None
+
+
+def search(cwd: Path, options: tuple[str, ...], timeout: float | None, name: str, *,
+           sas_path: Path | None = None, sas_text: str | None = None,
+           memory_limit_mb: int | None = None) -> PlanResult:
+    """Run the search binary on a SAS task (file or text) and read its plan file."""
+    plan_file = cwd / "sas_plan"
+    plan_file.unlink(missing_ok=True)
+    if timeout is not None and timeout <= 0:
+        return PlanResult("timeout", (), name, "time limit reached before search", {"search": 0.0})
+    cmd = [str(search_binary()), *options, "--internal-plan-file", str(plan_file)]
+    run = run_process(cmd, cwd, timeout, stdin_path=sas_path, stdin_text=sas_text, memory_limit_mb=memory_limit_mb)
+    timings = {"search": run.seconds}
+    if run.timed_out:
+        return PlanResult("timeout", (), name, "time limit reached during search", timings)
+    status, meaning = exit_status(run.returncode)
+    if status == "solved":
+        if not plan_file.is_file():
+            return PlanResult("error", (), name, f"exit code {run.returncode} but no plan file: {tail(run.output)}", timings)
+        return PlanResult("solved", parse_plan_text(plan_file.read_text()), name, meaning, timings)
+    message = meaning if status == "unsolvable" else f"{meaning}: {tail(run.output)}"
+    return PlanResult(status, (), name, message, timings)
+
+
+def solve(domain_text: str, problem_text: str, *, optimal: bool = False, time_limit: float | None = None,
+          options: tuple[str, ...] | None = None, translate_options: tuple[str, ...] = (),
+          memory_limit_mb: int | None = None) -> PlanResult:
+    """Plan with Fast Downward on PDDL text. `options` overrides the search configuration."""
+    deadline = None if time_limit is None else time.monotonic() + time_limit
+    name = planner_name(optimal) if options is None else "fd (custom)"
+    try:
+        opts = search_options(optimal) if options is None else tuple(options)
+        with tempfile.TemporaryDirectory(prefix="foon2pddl-fd-") as tmp:
+            work = Path(tmp)
+            t0 = time.perf_counter()
+            (work / "domain.pddl").write_text(domain_text)
+            (work / "problem.pddl").write_text(problem_text)
+            write_s = time.perf_counter() - t0
+            sas = work / "output.sas"
+            run = translate(work / "domain.pddl", work / "problem.pddl", sas, work, remaining(deadline),
+                            translate_options, memory_limit_mb=memory_limit_mb)
+            failed = translation_failure(run, name)
+            if failed is not None:
+                return failed.with_timings(write=write_s)
+            result = search(work, opts, remaining(deadline), name, sas_path=sas, memory_limit_mb=memory_limit_mb)
+            return result.with_timings(write=write_s, translate=run.seconds)
+    except (FastDownwardMissing, KeyError, OSError) as exc:
+        return PlanResult("error", (), name, str(exc))

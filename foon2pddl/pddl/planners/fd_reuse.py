@@ -1,0 +1,209 @@
+"""Many goals on one domain and kitchen: translate once with Fast Downward, search per goal.
+
+FD's translator takes ~99 % of a plan's time on FOON tasks, and only the goal
+changes between goals on one network and kitchen. `TranslatedTask.build`
+translates the task's actions and initial state once, with a fresh anchor goal
+(so the translator's relaxed-reachability and empty-goal shortcuts never fire)
+and `--keep-unimportant-variables` (so every reachable fact stays a variable).
+`solve` then writes a goal section for each goal into that SAS text and runs the
+search binary on it.
+
+A goal is a disjunction of alternatives, each a conjunction of atoms (a FOON
+goal is reached by any of its candidate nodes). One alternative becomes the SAS
+goal directly; several get one zero-cost auxiliary operator each that sets the
+anchor variable, and the goal is the anchor (those operators are removed from
+the returned plan). A goal atom absent from the SAS text is either always true
+(the translator compiles away facts no action changes, e.g. kitchen atoms of
+the delete-free `tree` encoding) or unreachable: the task's initial state
+decides which.
+
+Only the goal may change: the translator prunes by reachability from the
+initial state, so a new kitchen needs a new translation. Build from a task
+compiled without goal-directed pruning, or goals outside its pruned part will
+wrongly come out unsolvable.
+"""
+
+from __future__ import annotations
+
+import tempfile
+import time
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from ..task import Action, Atom, PlanningTask, Predicate
+from . import fd
+from .result import PlanResult, step_action
+
+ANCHOR = "foon2pddl-reuse-anchor"
+GOAL_OP = "foon2pddl-reuse-goal-"
+
+
+def sas_fact_name(atom: Atom) -> str:
+    """How FD's translator names a fact: `Atom p(a, b)`."""
+    return f"Atom {atom.predicate}({', '.join(atom.args)})".lower()
+
+
+def _anchored(task: PlanningTask) -> PlanningTask:
+    """The task with its goal replaced by a fresh anchor atom one auxiliary action makes true."""
+    taken = {p.name.lower() for p in task.predicates} | {a.name.lower() for a in task.actions}
+    if ANCHOR in taken:
+        raise ValueError(f"task already uses the name {ANCHOR!r}")
+    anchor = Atom(ANCHOR)
+    return replace(
+        task,
+        predicates=(*task.predicates, Predicate(ANCHOR)),
+        actions=(*task.actions, Action(ANCHOR, (), (anchor,), cost=0 if task.uses_costs else None)),
+        goal=(anchor,),
+    )
+
+
+@dataclass(frozen=True)
+class _Sas:
+    """A translated SAS task cut into the parts a goal swap keeps."""
+
+    head: str  # version .. end_state (variables, mutexes, initial state)
+    operators: tuple[str, ...]  # operator blocks without the anchor's
+    tail: str  # axioms section
+    facts: dict[str, tuple[int, int]]  # "Atom p(a)" -> (variable, value)
+    anchor: tuple[int, int]
+
+
+def _parse_sas(text: str) -> _Sas:
+    lines = text.split("\n")
+    facts: dict[str, tuple[int, int]] = {}
+    i = 0
+    var = -1
+    while lines[i] != "begin_goal":
+        if lines[i] == "begin_variable":
+            var += 1
+            count = int(lines[i + 3])
+            for value in range(count):
+                facts.setdefault(lines[i + 4 + value].lower(), (var, value))
+            i += 4 + count
+        else:
+            i += 1
+    head = "\n".join(lines[:i]) + "\n"
+    while lines[i] != "end_goal":
+        i += 1
+    i += 1
+    n_ops = int(lines[i])
+    i += 1
+    ops = []
+    for _ in range(n_ops):
+        j = lines.index("end_operator", i)
+        if lines[i + 1].strip().lower() != ANCHOR:
+            ops.append("\n".join(lines[i:j + 1]) + "\n")
+        i = j + 1
+    tail = "\n".join(lines[i:])
+    anchor = facts[sas_fact_name(Atom(ANCHOR))]
+    return _Sas(head, tuple(ops), tail, facts, anchor)
+
+
+@dataclass(frozen=True)
+class TranslatedTask:
+    """A task translated once; `solve` searches it for any goal over its atoms."""
+
+    task: PlanningTask
+    sas: _Sas
+    translate_seconds: float
+    optimal: bool = False
+
+    @classmethod
+    def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None) -> TranslatedTask:
+        """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails."""
+        from ..render import render  # the one PDDL writer
+
+        domain_text, problem_text = render(_anchored(task))
+        with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
+            work = Path(tmp)
+            (work / "domain.pddl").write_text(domain_text)
+            (work / "problem.pddl").write_text(problem_text)
+            run = fd.translate(work / "domain.pddl", work / "problem.pddl", work / "output.sas", work, time_limit,
+                               ("--keep-unimportant-variables", *fd.translate_options_for(task)))
+            failed = fd.translation_failure(run, "fd-reuse")
+            if failed is not None:
+                raise RuntimeError(f"translation for reuse failed ({failed.status}): {failed.message}")
+            sas = _parse_sas((work / "output.sas").read_text())
+        return cls(task, sas, run.seconds, optimal)
+
+    def goal_sas(self, alternatives: Sequence[Sequence[Atom]]) -> str | PlanResult:
+        """SAS text for a goal, or the result when no search is needed (goal true at start or unreachable)."""
+        init = set(self.task.init)
+        reachable: list[list[tuple[int, int]]] = []
+        for alt in alternatives:
+            facts = []
+            for atom in alt:
+                fact = self.sas.facts.get(sas_fact_name(atom))
+                if fact is not None:
+                    facts.append(fact)
+                elif atom not in init:
+                    break  # never reachable from this initial state
+            else:
+                if not facts:
+                    return PlanResult("solved", (), self.name, "goal holds in the initial state")
+                reachable.append(sorted(set(facts)))
+        if not reachable:
+            return PlanResult("unsolvable", (), self.name, "no goal atom is reachable from the initial state")
+        ops = list(self.sas.operators)
+        if len(reachable) == 1:
+            goal = reachable[0]
+        else:
+            var, val = self.sas.anchor
+            for k, facts in enumerate(reachable):
+                prevail = "".join(f"{v} {x}\n" for v, x in facts)
+                ops.append(f"begin_operator\n{GOAL_OP}{k}\n{len(facts)}\n{prevail}1\n0 {var} -1 {val}\n0\nend_operator\n")
+            goal = [self.sas.anchor]
+        goal_text = f"begin_goal\n{len(goal)}\n" + "".join(f"{v} {x}\n" for v, x in goal) + "end_goal\n"
+        return self.sas.head + goal_text + f"{len(ops)}\n" + "".join(ops) + self.sas.tail
+
+    @property
+    def name(self) -> str:
+        return "fd-reuse " + fd.planner_name(self.optimal)[3:]
+
+    def solve(self, alternatives: Sequence[Sequence[Atom]], time_limit: float | None = None) -> PlanResult:
+        """Search for a plan reaching any alternative (a conjunction of atoms)."""
+        t0 = time.perf_counter()
+        sas = self.goal_sas(alternatives)
+        if isinstance(sas, PlanResult):
+            return sas.with_timings(translate=0.0, search=time.perf_counter() - t0)
+        translate_s = time.perf_counter() - t0
+        with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
+            result = fd.search(Path(tmp), fd.search_options(self.optimal), time_limit, self.name, sas_text=sas)
+        plan = tuple(s for s in result.plan if not step_action(s).startswith(GOAL_OP))
+        return replace(result, plan=plan).with_timings(translate=translate_s)
+
+
+def goal_alternatives(task: PlanningTask) -> tuple[tuple[Atom, ...], ...]:
+    """The task's goal as alternatives over atoms actions of units make true.
+
+    A goal atom that only auxiliary actions (unit None) make true stands for the
+    disjunction of those actions' preconditions (how encodings say "any of the
+    goal's candidate nodes").
+    """
+    aux: dict[Atom, list[Action]] = {}
+    real: set[Atom] = set()
+    for action in task.actions:
+        for atom in action.add:
+            if action.unit is None:
+                aux.setdefault(atom, []).append(action)
+            else:
+                real.add(atom)
+
+    def expand(atom: Atom, seen: frozenset[Atom]) -> list[tuple[Atom, ...]]:
+        if atom in real or atom not in aux or atom in seen or atom in task.init:
+            return [(atom,)]
+        out: list[tuple[Atom, ...]] = []
+        for action in aux[atom]:
+            out.extend(_conjoin(expand(p, seen | {atom}) for p in action.pre))
+        return out
+
+    return tuple(dict.fromkeys(_conjoin(expand(g, frozenset()) for g in task.goal)))
+
+
+def _conjoin(parts: Iterable[list[tuple[Atom, ...]]]) -> list[tuple[Atom, ...]]:
+    """Cross product of alternatives, each conjunction sorted and duplicate-free."""
+    acc: list[tuple[Atom, ...]] = [()]
+    for alts in parts:
+        acc = [tuple(sorted(set(a + b))) for a in acc for b in alts]
+    return acc

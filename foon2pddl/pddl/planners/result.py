@@ -1,0 +1,62 @@
+"""What every planner returns: a status, the plan's steps, a message and timings.
+
+Statuses: `solved` (a plan was found), `unsolvable` (the planner proved or
+concluded there is none), `timeout` (the time limit ran out first), `error`
+(the planner failed or does not support the task). Plan steps are the
+lower-cased text between the parentheses of an IPC plan line: the action name,
+then any arguments separated by single spaces.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+STATUSES = ("solved", "unsolvable", "timeout", "error")
+
+
+@dataclass(frozen=True)
+class PlanResult:
+    """Outcome of one planner run."""
+
+    status: str
+    plan: tuple[str, ...] = ()
+    planner: str = ""
+    message: str = ""
+    timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
+
+    def __post_init__(self) -> None:
+        if self.status not in STATUSES:
+            raise ValueError(f"unknown plan status {self.status!r}")
+
+    @property
+    def solved(self) -> bool:
+        return self.status == "solved"
+
+    def with_timings(self, **extra: float) -> PlanResult:
+        """A copy with more phase timings (seconds)."""
+        return replace(self, timings={**self.timings, **extra})
+
+
+def parse_plan_text(text: str) -> tuple[str, ...]:
+    """Steps of an IPC plan file: one `(action arg ...)` per line, `;` starts a comment."""
+    steps = []
+    for raw in text.splitlines():
+        line = raw.split(";", 1)[0].strip()
+        if not line:
+            continue
+        if line.startswith("(") and line.endswith(")"):
+            line = line[1:-1]
+        line = " ".join(line.lower().split())
+        if line:
+            steps.append(line)
+    return tuple(steps)
+
+
+def step_action(step: str) -> str:
+    """The action name of a plan step."""
+    return step.split(" ", 1)[0]
+
+
+def tail(text: str, lines: int = 8) -> str:
+    """The last lines of a process's output, for error messages."""
+    return "\n".join(text.strip().splitlines()[-lines:])

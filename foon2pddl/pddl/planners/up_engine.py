@@ -1,0 +1,132 @@
+"""Any unified-planning engine by name (`pyperplan`, `fast-downward`, `symk`, ...).
+
+Each solve runs in a child process (forked where possible) that starts its own
+process group and works in its own temporary directory: the time limit holds
+even for engines that ignore UP's `timeout` (pyperplan runs in-process), the
+whole group is killed when it runs out, and engines that write into the
+current directory (Fast Downward through UP writes `output.sas` there) never
+share one. The child builds the UP problem with `to_up_problem` and sends back
+plain data: status, plan steps and a message.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+import tempfile
+import time
+from typing import Any
+
+from ..task import PlanningTask
+from .result import PlanResult
+
+#: UP's PlanGenerationResultStatus names -> our statuses.
+UP_STATUS = {
+    "SOLVED_SATISFICING": "solved",
+    "SOLVED_OPTIMALLY": "solved",
+    "INTERMEDIATE": "solved",
+    "UNSOLVABLE_PROVEN": "unsolvable",
+    "UNSOLVABLE_INCOMPLETELY": "unsolvable",
+    "TIMEOUT": "timeout",
+    "MEMOUT": "error",
+    "INTERNAL_ERROR": "error",
+    "UNSUPPORTED_PROBLEM": "error",
+}
+
+
+def engine_names(env: Any = None) -> list[str]:
+    """Names of the one-shot planning engines UP can find (imports unified-planning)."""
+    if env is None:
+        from ..up_problem import quiet_environment
+
+        env = quiet_environment()
+    return sorted(n for n in env.factory.engines
+                  if getattr(env.factory.engine(n), "is_oneshot_planner", lambda: False)())
+
+
+def _pick_engine(env: Any, name: str, optimal: bool) -> tuple[str, str | None]:
+    """The engine name to use, or an error message."""
+    from unified_planning.engines import OptimalityGuarantee
+
+    known = engine_names(env)
+    if name not in known:
+        return name, f"unknown planner {name!r}; planners here: fd, {', '.join(known)} (unified-planning engines)"
+    if optimal:
+        for candidate in (name, f"{name}-opt"):
+            if candidate in known and env.factory.engine(candidate).satisfies(OptimalityGuarantee.SOLVED_OPTIMALLY):
+                return candidate, None
+        return name, f"engine {name!r} gives no optimality guarantee (and there is no {name}-opt)"
+    return name, None
+
+
+def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tuple[str, ...], str]:
+    """Build the UP problem and solve it in this process: (status, steps, message)."""
+    from unified_planning.shortcuts import OneshotPlanner
+
+    from ..up_problem import build_up, quiet_environment
+
+    env = quiet_environment()
+    engine, problem_msg = _pick_engine(env, name, optimal)
+    if problem_msg:
+        return "error", (), problem_msg
+    up = build_up(task)
+    problem = up.problem
+    with OneshotPlanner(name=engine) as planner:
+        if not planner.supports(problem.kind):
+            return "error", (), f"engine {engine!r} does not support this task's features"
+        res = planner.solve(problem)  # the parent enforces the time limit
+    status = UP_STATUS.get(res.status.name, "error")
+    steps: tuple[str, ...] = ()
+    if res.plan is not None and status == "solved":
+        steps = tuple(up.step(ai) for ai in res.plan.actions)
+    log = " ".join(str(m.message) for m in (res.log_messages or []))[-500:]
+    return status, steps, f"{engine}: {res.status.name.lower()}" + (f" ({log})" if status == "error" and log else "")
+
+
+def _child(conn: Any, task: PlanningTask, name: str, optimal: bool) -> None:
+    os.setsid()
+    try:
+        with tempfile.TemporaryDirectory(prefix="foon2pddl-up-") as tmp:
+            os.chdir(tmp)
+            conn.send(_solve_here(task, name, optimal))
+    except BaseException as exc:  # report, never hang the parent
+        conn.send(("error", (), f"{type(exc).__name__}: {exc}"))
+    finally:
+        conn.close()
+
+
+def _context() -> Any:
+    methods = multiprocessing.get_all_start_methods()
+    return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+
+
+def solve(task: PlanningTask, engine: str, *, optimal: bool = False, time_limit: float | None = None) -> PlanResult:
+    """Plan with a UP engine in a child process, killed (with its process group) at the time limit."""
+    name = f"up:{engine}"
+    ctx = _context()
+    recv, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=_child, args=(send, task, engine, optimal), daemon=True)
+    t0 = time.perf_counter()
+    proc.start()
+    send.close()
+    data = None
+    try:
+        if recv.poll(time_limit):
+            data = recv.recv()
+            proc.join(5)  # let the child clean its temporary directory up
+    except EOFError:
+        data = ("error", (), f"engine process died (exit code {proc.exitcode})")
+    finally:
+        if proc.is_alive():
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                proc.kill()
+        proc.join()
+        recv.close()
+    seconds = time.perf_counter() - t0
+    if data is None:
+        return PlanResult("timeout", (), name, "time limit reached", {"search": seconds})
+    status, steps, message = data
+    return PlanResult(status, tuple(steps), name, message, {"search": seconds})

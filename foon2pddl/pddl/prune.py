@@ -1,0 +1,103 @@
+"""Relevance pruning: compile only what can help reach the goal.
+
+Two analyses, one per semantics, both solvability-preserving:
+
+* `relevant_units` (FOON semantics, used by `tree` and `foon-compat`): the units
+  that fire in the kitchen's fixpoint (forward) *and* make, without consuming
+  it, a node needed for a goal candidate (backward: candidates, then the inputs
+  of every kept unit that fires, stopping at kitchen nodes; tighter than
+  `retrieval.reachability.relevant_units`, which does not know what fires). Any sequence of units that
+  reaches a candidate has a sub-sequence made of such units only, and removing
+  units never makes an unsolvable goal solvable, so the goal's solvability is
+  unchanged.
+* `prune_task` (STRIPS semantics, used by `state`, whose atoms combine across
+  nodes so FOON reachability does not bound it): the ground actions reachable
+  in the delete relaxation from the initial state and relevant backwards from
+  the goal atoms over adders. Sound for STRIPS with positive preconditions;
+  init atoms, predicates and constants no kept part mentions are dropped too.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import replace
+
+from ..model import Foon, ObjectNode
+from ..retrieval.reachability import UNREACHED, reachable
+from .task import Atom, PlanningTask
+
+
+def relevant_units(foon: Foon, kitchen: Iterable[ObjectNode], targets: Iterable[ObjectNode]) -> tuple[int, ...]:
+    """Sorted indexes of the units of `foon` that can contribute to making any of `targets` from `kitchen`."""
+    targets = tuple(targets)
+    reach = reachable(foon, kitchen, targets)  # the fixpoint over the units that can contribute to targets
+    ix, node_round, unit_round = reach.index, reach.node_round, reach.unit_round
+    keep: set[int] = set()
+    seen: set[int] = set()
+    stack = [i for i in ix.ids(targets) if node_round[i] != 0]
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        for u in ix.makers[n]:
+            if unit_round[u] != UNREACHED and u not in keep:
+                keep.add(u)
+                stack.extend(i for i in ix.inputs[u] if node_round[i] != 0 and i not in seen)
+    return tuple(sorted(keep))
+
+
+def prune_task(task: PlanningTask) -> PlanningTask:
+    """The task restricted to relevant, relaxed-reachable ground actions (lifted tasks are returned as is)."""
+    if any(a.params for a in task.actions):
+        return task
+    actions = task.actions
+    # Forward: delete-relaxed reachability with a missing-precondition counter per action.
+    missing = [len(set(a.pre)) for a in actions]
+    waiting: dict[Atom, list[int]] = {}
+    for i, a in enumerate(actions):
+        for atom in set(a.pre):
+            waiting.setdefault(atom, []).append(i)
+    applicable: set[int] = {i for i, m in enumerate(missing) if m == 0}
+    queue = list(task.init) + [x for i in sorted(applicable) for x in actions[i].add]
+    reached: set[Atom] = set()
+    while queue:
+        atom = queue.pop()
+        if atom in reached:
+            continue
+        reached.add(atom)
+        for i in waiting.get(atom, ()):
+            missing[i] -= 1
+            if missing[i] == 0:
+                applicable.add(i)
+                queue.extend(actions[i].add)
+    # Backward: atoms needed for the goal, over the applicable actions that add them.
+    adders: dict[Atom, list[int]] = {}
+    for i in applicable:
+        for atom in actions[i].add:
+            adders.setdefault(atom, []).append(i)
+    needed: set[Atom] = set()
+    keep: set[int] = set()
+    stack = list(task.goal)
+    while stack:
+        atom = stack.pop()
+        if atom in needed:
+            continue
+        needed.add(atom)
+        for i in adders.get(atom, ()):
+            if i not in keep:
+                keep.add(i)
+                stack.extend(p for p in actions[i].pre if p not in needed)
+    kept = tuple(a for i, a in enumerate(actions) if i in keep)
+    init = tuple(a for a in task.init if a in needed)
+    used_atoms = [*init, *task.goal, *(x for a in kept for x in (*a.pre, *a.add, *a.delete))]
+    used_preds = {a.predicate for a in used_atoms}
+    used_args = {arg for a in used_atoms for arg in a.args}
+    return replace(
+        task,
+        actions=kept,
+        init=init,
+        predicates=tuple(p for p in task.predicates if p.name in used_preds),
+        constants=tuple(c for c in task.constants if c[0] in used_args),
+        objects=tuple(o for o in task.objects if o[0] in used_args),
+    )

@@ -1,0 +1,70 @@
+"""PDDL text of a `PlanningTask` through the jinja2 templates in `foon2pddl/templates`.
+
+Autoescape is off (PDDL is not HTML) and undefined variables are errors. Names
+in the task are already valid identifiers (`names.py`); this module checks
+that and passes every comment through `names.comment`, so nothing a label
+contains can end a comment or inject a construct. The output depends only on
+the task: same task, same bytes.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import jinja2
+
+from .names import comment, is_valid_name
+from .task import Atom, PlanningTask
+
+
+def _atom(atom: Atom) -> str:
+    return f"({atom.predicate} {' '.join(atom.args)})" if atom.args else f"({atom.predicate})"
+
+
+def _params(params: tuple[tuple[str, str], ...], typed: bool) -> str:
+    if typed:
+        return "".join(f" {var} - {typ}" for var, typ in params)
+    return "".join(f" {var}" for var, _ in params)
+
+
+@lru_cache(maxsize=1)
+def _environment() -> jinja2.Environment:
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("foon2pddl", "templates"),
+        autoescape=False,
+        undefined=jinja2.StrictUndefined,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+    )
+    env.filters["atom"] = _atom
+    env.filters["params"] = _params
+    env.filters["comment"] = comment
+    return env
+
+
+def check_names(task: PlanningTask) -> None:
+    """Raise ValueError naming the first identifier of `task` that is not a safe PDDL name."""
+    names = [task.domain, task.problem]
+    names += [n for pair in task.types for n in pair]
+    names += [n for pair in (*task.constants, *task.objects) for n in pair]
+    for p in task.predicates:
+        names.append(p.name)
+        names += [n.removeprefix("?") for pair in p.params for n in pair]
+    for a in task.actions:
+        names.append(a.name)
+        names += [n.removeprefix("?") for pair in a.params for n in pair]
+        names += [x for atom in (*a.pre, *a.add, *a.delete) for x in (atom.predicate, *atom.args)]
+    names += [x for atom in (*task.init, *task.goal) for x in (atom.predicate, *atom.args)]
+    for name in set(names):
+        if not is_valid_name(name.removeprefix("?")) and name != "object":
+            raise ValueError(f"not a sanitized PDDL name in the planning task: {name!r}")
+
+
+def render(task: PlanningTask) -> tuple[str, str]:
+    """(domain text, problem text) of `task`."""
+    check_names(task)
+    env = _environment()
+    context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
+    return (env.get_template("domain.pddl.j2").render(context),
+            env.get_template("problem.pddl.j2").render(context))

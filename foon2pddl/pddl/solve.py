@@ -1,0 +1,163 @@
+"""Planning end to end: compile, render, plan, decode, validate, with the time of each phase.
+
+`plan` handles one goal. `GoalReplanner` handles many goals on one network and
+kitchen with Fast Downward, translating once (`planners.fd_reuse`): it compiles
+the network without goal-directed pruning and with every node as a goal
+candidate, which gives each node's goal atoms (the preconditions of the
+encoding's per-candidate goal actions) under names that no longer depend on
+the goal.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field, replace
+
+from ..goals import Goal, GoalSpec
+from ..kitchen import Kitchen
+from ..levels import project, project_node
+from ..model import Foon, ObjectNode
+from ..retrieval.rates import Rates
+from ..tasktree import TaskTree, Validation
+from .compile import compile_task
+from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
+from .planners import DEFAULT_PLANNER, PlanResult, run_planner
+from .render import render
+from .task import Atom, PlanningTask
+
+#: Phases in the order they run (the CLI adds `load` first).
+PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
+
+
+@dataclass(frozen=True)
+class PlanOutcome:
+    """A planner's result, the task tree its plan stands for and that tree's validation."""
+
+    result: PlanResult
+    task: PlanningTask
+    decoded: Decoded | None = None
+    decode_error: str | None = None
+    timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
+
+    @property
+    def status(self) -> str:
+        """The planner's status, or `error` when a plan was found but does not decode or validate."""
+        if self.result.solved and (self.decoded is None or not self.decoded.ok):
+            return "error"
+        return self.result.status
+
+    @property
+    def tree(self) -> TaskTree | None:
+        return self.decoded.tree if self.decoded is not None else None
+
+    @property
+    def validation(self) -> Validation | None:
+        return self.decoded.validation if self.decoded is not None else None
+
+    @property
+    def message(self) -> str:
+        """Why there is no valid tree (empty when there is one)."""
+        if self.decode_error:
+            return self.decode_error
+        if self.result.solved and self.decoded is not None and not self.decoded.ok:
+            return "plan does not validate: " + "; ".join(self.decoded.problems[:3])
+        return "" if self.result.solved else self.result.message
+
+
+def _finish(result: PlanResult, task: PlanningTask, goal: Goal, kitchen_nodes: frozenset[ObjectNode],
+            timings: dict[str, float], up_validate: bool) -> PlanOutcome:
+    """Decode and validate a planner result; fold its timings into `timings`."""
+    for phase in ("write", "translate", "search"):
+        if phase in result.timings:
+            timings[phase] = timings.get(phase, 0.0) + result.timings[phase]
+    if not result.solved:
+        return PlanOutcome(result, task, timings=timings)
+    t0 = time.perf_counter()
+    try:
+        tree = to_tree(task, result.plan, goal, kitchen_nodes)
+    except PlanDecodeError as exc:
+        timings["decode"] = time.perf_counter() - t0
+        return PlanOutcome(result, task, decode_error=str(exc), timings=timings)
+    timings["decode"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    decoded = check(tree, kitchen_nodes, task, result.plan, up_validate=up_validate)
+    timings["validate"] = time.perf_counter() - t0
+    return PlanOutcome(result, task, decoded, timings=timings)
+
+
+def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level: int = 3, *,
+         planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
+         time_limit: float | None = None, prune: bool = True, costs: str | None = None,
+         rates: Rates | None = None, up_validate: bool = False) -> PlanOutcome:
+    """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
+
+    `time_limit` bounds the planner run (translation and search). Raises ValueError for
+    bad options (encoding, cost mode); a planner's failure is a status, never an exception.
+    """
+    timings: dict[str, float] = {}
+    t0 = time.perf_counter()
+    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates)
+    timings["encode"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    domain_text, problem_text = render(task)
+    timings["write"] = time.perf_counter() - t0
+    result = run_planner(task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
+                         optimal=optimal, time_limit=time_limit)
+    return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
+
+
+class GoalReplanner:
+    """Many goals on one network and kitchen: Fast Downward translates once, then searches per goal."""
+
+    def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = "tree", level: int = 3, *,
+                 optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
+                 time_limit: float | None = None) -> None:
+        from .planners.fd_reuse import TranslatedTask
+
+        t0 = time.perf_counter()
+        at_level = project(foon, level)
+        nodes = tuple(sorted(at_level.nodes))
+        every = Goal(GoalSpec("any node"), nodes, level)
+        task = compile_task(at_level, kitchen, every, encoding, level, False, costs, rates)
+        self.node_atoms = _candidate_atoms(task, nodes)
+        goal_atoms = set(task.goal)
+        base = replace(task, actions=tuple(a for a in task.actions
+                                           if not (a.unit is None and goal_atoms & set(a.add))))
+        self.encode_seconds = time.perf_counter() - t0
+        self.level = level
+        self.kitchen_nodes = kitchen.project(level).nodes
+        self.translated = TranslatedTask.build(base, optimal=optimal, time_limit=time_limit)
+
+    @property
+    def task(self) -> PlanningTask:
+        return self.translated.task
+
+    def plan(self, goal: Goal, time_limit: float | None = None, up_validate: bool = False) -> PlanOutcome:
+        """Plan for one goal on the shared translation."""
+        t0 = time.perf_counter()
+        candidates = sorted({project_node(c, self.level) for c in goal.candidates})
+        alternatives = [self.node_atoms[c] for c in candidates if c in self.node_atoms]
+        timings = {"encode": time.perf_counter() - t0}
+        result = self.translated.solve(alternatives, time_limit)
+        # Check the plan against the alternative it reaches, as the goal of the task.
+        state, _ = run_plan(self.task, result.plan)
+        reached = next((a for a in alternatives if set(a) <= state), alternatives[0] if alternatives else ())
+        return _finish(result, replace(self.task, goal=tuple(reached)), goal, self.kitchen_nodes, timings,
+                       up_validate)
+
+
+def _candidate_atoms(task: PlanningTask, nodes: tuple[ObjectNode, ...]) -> dict[ObjectNode, tuple[Atom, ...]]:
+    """Node -> its goal atoms, read off a task compiled with `nodes` as goal candidates.
+
+    Encodings add one goal action per candidate, in candidate (sorted) order, whose
+    precondition is that candidate's atoms; with a single candidate the goal itself is.
+    """
+    aux = [a for a in task.actions if a.unit is None and set(a.add) & set(task.goal)]
+    if len(nodes) == 1 and not aux:
+        return {nodes[0]: task.goal}
+    if len(aux) != len(nodes):
+        raise ValueError(f"{task.encoding} encoding: expected {len(nodes)} goal actions, found {len(aux)}")
+    for node, action in zip(nodes, aux, strict=True):
+        if action.comment and not action.comment[0].endswith(node.describe()):
+            raise ValueError(f"{task.encoding} encoding: goal action {action.name} is not for {node.describe()}")
+    return {node: tuple(action.pre) for node, action in zip(nodes, aux, strict=True)}

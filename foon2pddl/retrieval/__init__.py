@@ -1,0 +1,17 @@
+"""Native task tree retrieval: FOON's own planner.
+
+- `reachability.reachable`: which nodes a kitchen can make (AND/OR fixpoint, linear time);
+- `complete`, `greedy`, `optimal` (fewest units, or `weighted`: highest success probability);
+- `retrieve`: one entry point returning a `Retrieval` (tree or reason);
+- `formats.render_tree`: steps, FOON text, JSON, DOT, SVG; `rates.read_rates`: motion success rates.
+See docs/retrieval.md for the algorithms, their complexity and tie-break orders.
+"""
+
+from .api import retrieve
+from .formats import FORMATS, render_tree
+from .rates import DEFAULT_RATE, Rates, read_rates
+from .reachability import Reachability, blockers, reachable
+from .result import METHODS, Retrieval
+
+__all__ = ["DEFAULT_RATE", "FORMATS", "METHODS", "Rates", "Reachability", "Retrieval", "blockers",
+           "reachable", "read_rates", "render_tree", "retrieve"]

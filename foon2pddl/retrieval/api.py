@@ -1,0 +1,55 @@
+"""`retrieve`: one entry point for the four retrieval methods."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import replace
+
+from ..goals import Goal
+from ..kitchen import Kitchen
+from ..model import Foon, ObjectNode
+from .complete import complete
+from .greedy import DEFAULT_BUDGET, greedy
+from .optimal import DEFAULT_NODE_LIMIT, optimal
+from .rates import Rates
+from .result import METHODS, Retrieval
+
+
+def kitchen_nodes(kitchen: Kitchen | Iterable[ObjectNode], level: int) -> frozenset[ObjectNode]:
+    """The kitchen's nodes as seen at `level` (a Kitchen is projected; plain nodes are taken as they are)."""
+    if isinstance(kitchen, Kitchen):
+        return kitchen.project(level).nodes
+    return frozenset(kitchen)
+
+
+def success_probability(units, rates: Rates) -> float:
+    """Product of the motion success rates of `units` (summed as logs, in a fixed order)."""
+    return math.exp(-math.fsum(rates.cost(u.motion.label) for u in units))
+
+
+def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, method: str = "complete",
+             rates: Rates | None = None, budget: int = DEFAULT_BUDGET,
+             node_limit: int = DEFAULT_NODE_LIMIT) -> Retrieval:
+    """A task tree for `goal` (any of its candidates) from `kitchen` in `foon`, by `method`.
+
+    greedy: the seed paper's search (iteration `budget`); complete: a tree whenever one
+    exists; optimal: fewest distinct units; weighted: highest product of motion success
+    `rates` (defaults for every motion when None). optimal/weighted expand at most
+    `node_limit` search nodes. With `rates`, every found tree's success probability is set.
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
+    nodes = kitchen_nodes(kitchen, foon.level)
+    if method == "weighted" and rates is None:
+        rates = Rates()
+    if method == "greedy":
+        result = greedy(foon, nodes, goal, budget)
+    elif method == "complete":
+        result = complete(foon, nodes, goal)
+    else:
+        result = optimal(foon, nodes, goal, rates=rates, weighted=method == "weighted",
+                         node_limit=node_limit, budget=budget)
+    if result.tree is not None and rates is not None:
+        result = replace(result, probability=success_probability(result.tree.units, rates))
+    return result

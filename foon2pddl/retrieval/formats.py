@@ -1,0 +1,190 @@
+"""Task tree outputs: numbered steps, FOON text, JSON, Graphviz DOT and SVG.
+
+Every format is deterministic (units in the tree's order, nodes numbered in
+sorted order). Diagrams use the public FOON viewer's colours: object nodes
+that enter the tree from the kitchen (inputs) green, object nodes some unit
+of the tree makes (outputs) blue, motion nodes red; the goal has a bold border.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from collections.abc import Iterable
+
+from ..errors import FoonInputError
+from ..jsonio import node_to_dict
+from ..kitchen import Kitchen
+from ..model import FunctionalUnit, ObjectNode
+from ..tasktree import TaskTree
+from ..writer import write_units
+
+FORMATS = ("steps", "foon", "json", "dot", "svg")
+
+INPUT_COLOUR = "#8fd18f"    # green
+OUTPUT_COLOUR = "#8fb8ff"   # blue
+MOTION_COLOUR = "#f08080"   # red
+
+#: State labels that, naming another input as their related object, say where a step happens.
+PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
+
+
+def render_tree(tree: TaskTree, fmt: str, kitchen: Kitchen | Iterable[ObjectNode] | None = None) -> str:
+    """The tree in `fmt` (one of FORMATS). `kitchen`, when given, lists what the tree takes from it."""
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown task tree format {fmt!r} (expected one of {', '.join(FORMATS)})")
+    return _RENDER[fmt](tree, _used_from_kitchen(tree, kitchen))
+
+
+def _used_from_kitchen(tree: TaskTree, kitchen) -> list[ObjectNode] | None:
+    """Inputs of the tree that come from the kitchen (not made by an earlier unit), sorted."""
+    if kitchen is None:
+        return None
+    nodes = kitchen.nodes if isinstance(kitchen, Kitchen) else frozenset(kitchen)
+    made: set[ObjectNode] = set()
+    used: set[ObjectNode] = set()
+    for u in tree.units:
+        used.update(n for n in u.inputs if n not in made and n in nodes)
+        made.update(u.outputs)
+    if not tree.units and tree.goal in nodes:
+        used.add(tree.goal)
+    return sorted(used)
+
+
+def _header(tree: TaskTree) -> str:
+    return f"task tree for {tree.goal.describe()}: {len(tree.units)} units, level {tree.level}"
+
+
+# -- steps ----------------------------------------------------------------------------------------
+
+
+def step_text(unit: FunctionalUnit) -> str:
+    """`chop onion (whole) with knife on cutting board -> onion (chopped)`.
+
+    The objects acted on are the inputs that change into a new output of the same label;
+    the other inputs are tools (`with`), or places when a changed object or a new output
+    is in a state such as `on [cutting board]` naming them. Inputs that are themselves
+    in or on an object acted on (a bowl's contents) are left out: that object's own
+    states list them.
+    """
+    new_outputs = [o for o in unit.outputs if o not in unit.inputs]
+    new_labels = {o.label for o in new_outputs}
+    acted = [i for i in unit.inputs if i not in unit.outputs and i.label in new_labels]
+    others = [i for i in unit.inputs if i not in acted]
+    if not acted:
+        acted, others = list(unit.inputs), []
+    places: dict[str, list[str]] = {}
+    tools: list[str] = []
+    about = acted + new_outputs
+    holders = {n.label for n in acted}
+    for o in others:
+        if any(s.label in PLACE_WORDS and s.related in holders for s in o.states):
+            continue
+        word = next((s.label for n in about for s in n.states if s.related == o.label and s.label in PLACE_WORDS),
+                    None)
+        if word is None:
+            tools.append(o.describe())
+        else:
+            places.setdefault(word, []).append(o.describe())
+    text = f"{unit.motion.label} " + ", ".join(n.describe() for n in acted)
+    if tools:
+        text += " with " + ", ".join(tools)
+    for word in sorted(places):
+        text += f" {word} " + ", ".join(places[word])
+    return text + " -> " + ", ".join(n.describe() for n in (new_outputs or unit.outputs))
+
+
+def _steps(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    lines = [_header(tree)]
+    if used is not None:
+        lines.append("from the kitchen: " + ("; ".join(n.describe() for n in used) or "nothing"))
+    if not tree.units:
+        lines.append("nothing to do: the goal is already available")
+    lines += [f"{i}. {step_text(u)}" for i, u in enumerate(tree.units, start=1)]
+    return "\n".join(lines) + "\n"
+
+
+# -- FOON text ------------------------------------------------------------------------------------
+
+
+def _foon(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    header = _header(tree)
+    if used is not None:
+        header += "\nfrom the kitchen: " + "; ".join(n.describe() for n in used)
+    return write_units(tree.units, header=header)
+
+
+# -- JSON -----------------------------------------------------------------------------------------
+
+
+def _json(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    data: dict = {
+        "goal": node_to_dict(tree.goal),
+        "level": tree.level,
+        "units": len(tree.units),
+        "steps": [
+            {"step": i, "text": step_text(u), "motion": u.motion.label,
+             "inputs": [node_to_dict(n) for n in u.inputs],
+             "outputs": [node_to_dict(n) for n in u.outputs]}
+            for i, u in enumerate(tree.units, start=1)
+        ],
+    }
+    if used is not None:
+        data["from_kitchen"] = [node_to_dict(n) for n in used]
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+# -- Graphviz -------------------------------------------------------------------------------------
+
+
+def _quote(text: str) -> str:
+    """A DOT double-quoted string (escapes backslashes and quotes; newlines become \\n)."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+def _node_label(node: ObjectNode) -> str:
+    if not node.states:
+        return node.label
+    return node.label + "\n" + "\n".join(s.describe() for s in node.states)
+
+
+def _dot(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    made = {n for u in tree.units for n in u.outputs if n not in u.inputs}
+    nodes = sorted({n for u in tree.units for n in u.inputs + u.outputs} | {tree.goal})
+    ids = {n: f"o{i}" for i, n in enumerate(nodes)}
+    lines = [
+        "digraph task_tree {",
+        f"  graph [label={_quote(_header(tree))}, labelloc=t, rankdir=TB];",
+        '  node [fontname="Helvetica", fontsize=10];',
+    ]
+    for n in nodes:
+        colour = OUTPUT_COLOUR if n in made else INPUT_COLOUR
+        extra = ", penwidth=3" if n == tree.goal else ""
+        lines.append(f"  {ids[n]} [label={_quote(_node_label(n))}, shape=ellipse, style=filled, "
+                     f'fillcolor="{colour}"{extra}];')
+    for i, u in enumerate(tree.units, start=1):
+        lines.append(f"  m{i} [label={_quote(f'{i}. {u.motion.label}')}, shape=box, style=filled, "
+                     f'fillcolor="{MOTION_COLOUR}"];')
+        lines += [f"  {ids[n]} -> m{i};" for n in dict.fromkeys(u.inputs)]
+        lines += [f"  m{i} -> {ids[n]};" for n in dict.fromkeys(u.outputs)]
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+def _svg(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    dot = shutil.which("dot")
+    if dot is None:
+        raise FoonInputError("<svg>", 0, "Graphviz 'dot' is not installed (`make install` installs the Debian "
+                                         "package graphviz); use --format dot to get the graph source instead")
+    try:
+        done = subprocess.run([dot, "-Tsvg"], input=_dot(tree, used), capture_output=True, text=True,
+                              timeout=120, check=False)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        raise FoonInputError("<svg>", 0, f"Graphviz 'dot' failed: {exc}") from None
+    if done.returncode != 0:
+        raise FoonInputError("<svg>", 0, f"Graphviz 'dot' failed: {done.stderr.strip()}")
+    return done.stdout
+
+
+_RENDER = {"steps": _steps, "foon": _foon, "json": _json, "dot": _dot, "svg": _svg}

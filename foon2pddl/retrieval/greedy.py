@@ -1,0 +1,116 @@
+"""`greedy` retrieval: the seed paper's task tree search, with guaranteed termination.
+
+As in Paulius et al. (ICRA 2018): a queue of objects still needed starts with
+the goal; for the object taken from the queue, the units that make it are
+tried in order and the first one whose inputs are all available fires (its
+outputs become available); if none can fire yet, the missing inputs of all of
+them are queued (breadth-wise among a unit's objects) and the object goes back
+to the end of the queue, to be retried once more has been made (depth-wise by
+functional unit). The search ends when a goal candidate is available.
+
+What is done differently from the public reference, and why:
+- Termination without a depth guess: an object is queued at most once and a
+  unit that consumes an object is never tried as its maker (no cycles). If a
+  whole pass over the queue makes nothing and queues nothing new, nothing more
+  can ever be made: the answer is `unreachable`. Progress (an object made or a
+  new object queued) happens at most twice per node, so the search stops after
+  O(nodes x queue length) steps even without its iteration `budget`; when the
+  budget runs out first the answer is `budget exhausted`.
+- All goal candidates are sought at once (reaching any satisfies the goal).
+- Tie-break order (never file order): the queue starts with the candidates in
+  sorted node order; an object's makers are tried in unit content order
+  (motion label, then sorted inputs, then sorted outputs; `index.FoonIndex`);
+  missing inputs are queued in that order of units, then sorted node order.
+- The returned tree keeps only the units needed: following, from the goal,
+  the first fired unit that made each node (or a unit already kept that fired
+  earlier, `extract`); units fired for sub-goals that ended up unused are
+  dropped (`detail` says how many).
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterable
+
+from ..goals import Goal
+from ..model import Foon, ObjectNode
+from .extract import make_tree, ordered_units
+from .index import index_of
+from .result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
+
+#: Default iteration budget (objects taken from the queue). The hardest goal
+#: of the universal FOON of the shared subgraphs needs a few thousand.
+DEFAULT_BUDGET = 200_000
+
+
+def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
+           budget: int = DEFAULT_BUDGET) -> Retrieval:
+    """Run the greedy search for any candidate of `goal` within `budget` iterations."""
+    ix = index_of(foon)
+    kitchen = ix.kitchen_ids(frozenset(kitchen_nodes))
+    in_kitchen = bytearray(len(ix.nodes))
+    for k in kitchen:
+        in_kitchen[k] = 1
+    available = bytearray(in_kitchen)
+    candidates = [ix.node_id[c] for c in goal.candidates]
+    for c in candidates:
+        if available[c]:
+            return Retrieval(make_tree(foon, ix, c, ()), None, "greedy", "goal is in the kitchen")
+    is_candidate = set(candidates)
+
+    makers, inputs, outputs = ix.makers, ix.inputs, ix.outputs
+    queue: deque[int] = deque(sorted(is_candidate))
+    seen: set[int] = set(queue)
+    achiever: dict[int, int] = {}
+    fired_at: dict[int, int] = {}
+    fired = 0
+    iterations = 0
+    since_progress, window = 0, len(queue)
+    while queue:
+        if iterations >= budget:
+            return Retrieval(None, BUDGET_EXHAUSTED, "greedy",
+                             f"{budget} iterations spent, {len(queue)} objects still queued", iterations)
+        iterations += 1
+        obj = queue.popleft()
+        if available[obj]:
+            since_progress += 1
+            if since_progress >= window:
+                break
+            continue
+        progress = False
+        for u in makers[obj]:
+            if all(available[i] for i in inputs[u]):
+                fired_at[u] = fired
+                fired += 1
+                made = None
+                for n in outputs[u]:
+                    if not available[n]:
+                        available[n] = 1
+                        achiever[n] = u
+                        if made is None and n in is_candidate:
+                            made = n
+                if made is not None:
+                    done = min((c for c in candidates if available[c]), key=candidates.index)
+                    units = ordered_units(ix, done, achiever.__getitem__, in_kitchen.__getitem__,
+                                          fired_at.__getitem__)
+                    return Retrieval(make_tree(foon, ix, done, units), None, "greedy",
+                                     f"{fired} units fired, {len(units)} kept", iterations)
+                progress = True
+                break
+        else:
+            for u in makers[obj]:
+                for i in inputs[u]:
+                    if not available[i] and i not in seen:
+                        seen.add(i)
+                        queue.append(i)
+                        progress = True
+            if makers[obj]:
+                queue.append(obj)  # retry once more is available; an object nobody makes is dropped
+        if progress:
+            since_progress, window = 0, len(queue)
+        else:
+            since_progress += 1
+            if since_progress >= window:
+                break
+    return Retrieval(None, UNREACHABLE, "greedy",
+                     "a full pass over the objects still needed made nothing new", iterations)

@@ -1,0 +1,227 @@
+"""Admissible lower bounds for delete-free FOON search: h_max and LM-cut.
+
+Both bound the cost of making a set of open nodes from the kitchen when some
+units are already paid for (cost 0). h_max is the cost of the dearest single
+chain; LM-cut (Helmert & Domshlak, ICAPS 2009) adds up disjoint "landmark"
+cuts -- sets of units one of which every solution must use -- and is usually
+close to the true cost on recipe-shaped networks, where h_max sees only one
+branch. A bound costs O(landmarks x cone size): h_max is computed once and
+then updated incrementally after each cut (costs only decrease).
+
+A `Cone` holds the units a search may use with dense local ids: for each unit
+its inputs that are not in the kitchen (`deps`) and its outputs that are cone
+nodes; for every non-kitchen node the cone units that make it.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Collection, Mapping, Sequence
+
+INF = math.inf
+ZERO = 1e-12
+
+
+class Cone:
+    """Units and nodes of a search, renumbered densely, with the bounds over them."""
+
+    def __init__(self, units: Collection[int], deps: Mapping[int, tuple[int, ...]],
+                 outputs: Sequence[tuple[int, ...]], makers: Mapping[int, tuple[int, ...]],
+                 weight: Sequence[float]) -> None:
+        self.unit_ids = sorted(units)
+        self.node_ids = sorted(makers)
+        local_u = {u: k for k, u in enumerate(self.unit_ids)}
+        local_n = {n: k for k, n in enumerate(self.node_ids)}
+        self.local_u = local_u
+        self.local_n = local_n
+        self.deps = [tuple(local_n[i] for i in deps[u]) for u in self.unit_ids]
+        # outputs that are cone nodes; a node the unit also consumes is no useful effect
+        self.outs = [tuple(local_n[o] for o in outputs[u] if o in local_n and o not in deps[u])
+                     for u in self.unit_ids]
+        self.weight = [weight[u] for u in self.unit_ids]
+        self.makers = [tuple(local_u[u] for u in makers[n] if u in local_u) for n in self.node_ids]
+        consumers: list[list[int]] = [[] for _ in self.node_ids]
+        for k, d in enumerate(self.deps):
+            for i in d:
+                consumers[i].append(k)
+        self.consumers = consumers
+        self.seeds = [k for k, d in enumerate(self.deps) if not d]
+
+    # -- h_max ------------------------------------------------------------------------------------
+
+    def _relevant(self, goal: list[int]) -> tuple[list[int], bytearray]:
+        """Units that can contribute to making `goal` (backwards over makers), as a list and a mask."""
+        deps, makers = self.deps, self.makers
+        mask = bytearray(len(deps))
+        seen = bytearray(len(self.node_ids))
+        units: list[int] = []
+        stack = list(goal)
+        while stack:
+            n = stack.pop()
+            if seen[n]:
+                continue
+            seen[n] = 1
+            for u in makers[n]:
+                if not mask[u]:
+                    mask[u] = 1
+                    units.append(u)
+                    stack.extend(deps[u])
+        return units, mask
+
+    def _hmax(self, rc: list[float], units: list[int] | None = None, mask: bytearray | None = None
+              ) -> tuple[list[float], list[float]]:
+        """Node costs and unit costs (max over inputs) by Dijkstra, over `units` (default: all)."""
+        deps, outs, consumers = self.deps, self.outs, self.consumers
+        cost = [INF] * len(self.node_ids)
+        ucost = [INF] * len(self.unit_ids)
+        heap: list[tuple[float, int]] = []
+        seeds = self.seeds if units is None else [u for u in units if not deps[u]]
+        for u in seeds:
+            ucost[u] = 0.0
+            c = rc[u]
+            for o in outs[u]:
+                if c < cost[o]:
+                    cost[o] = c
+                    heapq.heappush(heap, (c, o))
+        missing = [len(d) for d in deps]
+        settled = [False] * len(self.node_ids)
+        while heap:
+            c, n = heapq.heappop(heap)
+            if settled[n]:
+                continue
+            settled[n] = True
+            for u in consumers[n]:
+                if mask is not None and not mask[u]:
+                    continue
+                missing[u] -= 1
+                if missing[u] == 0:
+                    ucost[u] = c
+                    uc = c + rc[u]
+                    for o in outs[u]:
+                        if not settled[o] and uc < cost[o]:
+                            cost[o] = uc
+                            heapq.heappush(heap, (uc, o))
+        return cost, ucost
+
+    def _decrease(self, rc: list[float], cost: list[float], ucost: list[float], changed: Collection[int],
+                  touched: set[int], mask: bytearray) -> None:
+        """Propagate lower costs after the units in `changed` got cheaper (h_max stays exact)."""
+        deps, outs, consumers = self.deps, self.outs, self.consumers
+        heap: list[tuple[float, int]] = []
+        for u in changed:
+            uc = ucost[u] + rc[u]
+            for o in outs[u]:
+                if uc < cost[o]:
+                    cost[o] = uc
+                    heapq.heappush(heap, (uc, o))
+        while heap:
+            c, n = heapq.heappop(heap)
+            if c > cost[n]:
+                continue
+            for u in consumers[n]:
+                if not mask[u]:
+                    continue
+                touched.add(u)
+                new = max(cost[i] for i in deps[u])
+                if new < ucost[u]:
+                    ucost[u] = new
+                    uc = new + rc[u]
+                    for o in outs[u]:
+                        if uc < cost[o]:
+                            cost[o] = uc
+                            heapq.heappush(heap, (uc, o))
+
+    def _local(self, free: Collection[int], open_nodes: Collection[int]) -> tuple[list[float], list[int]]:
+        lu = self.local_u
+        rc = list(self.weight)
+        for u in free:
+            k = lu.get(u)
+            if k is not None:
+                rc[k] = 0.0
+        return rc, [self.local_n[n] for n in open_nodes]
+
+    def hmax(self, free: Collection[int], open_nodes: Collection[int]) -> float:
+        """The dearest open node's h_max cost, units in `free` costing 0."""
+        if not open_nodes:
+            return 0.0
+        rc, goal = self._local(free, open_nodes)
+        cost, _ = self._hmax(rc)
+        return max(cost[n] for n in goal)
+
+    def node_costs(self) -> dict[int, float]:
+        """h_max cost of every cone node with no unit free (network node id -> cost)."""
+        cost, _ = self._hmax(list(self.weight))
+        return dict(zip(self.node_ids, cost, strict=True))
+
+    # -- LM-cut -----------------------------------------------------------------------------------
+
+    def lmcut(self, free: Collection[int], open_nodes: Collection[int], stop_at: float = INF) -> float:
+        """LM-cut bound for making all `open_nodes`, units in `free` costing 0.
+
+        Returns early once the bound reaches `stop_at` (enough for pruning).
+        """
+        if not open_nodes:
+            return 0.0
+        rc, goal = self._local(free, open_nodes)
+        deps, outs, makers, consumers = self.deps, self.outs, self.makers, self.consumers
+        units, mask = self._relevant(goal)
+        cost, ucost = self._hmax(rc, units, mask)
+        pcf = [-1] * len(deps)  # each unit's dearest input (lowest id on ties); -1: none (the kitchen)
+        for u in units:
+            pcf[u] = _choose(deps[u], cost, ucost[u])
+        seeds = [u for u in units if not deps[u]]
+        total = 0.0
+        while True:
+            goal_cost = max(cost[n] for n in goal)
+            if goal_cost == INF:
+                return INF
+            if goal_cost <= ZERO:
+                return total
+            # goal zone: nodes reaching the goal along zero-cost justification edges
+            top = min(n for n in goal if cost[n] == goal_cost)
+            zone = {top}
+            stack = [top]
+            while stack:
+                n = stack.pop()
+                for u in makers[n]:
+                    if mask[u] and rc[u] <= ZERO and ucost[u] < INF:
+                        p = pcf[u]
+                        if p >= 0 and p not in zone:
+                            zone.add(p)
+                            stack.append(p)
+            # the cut: units leaving the part reached from the kitchen without entering the zone
+            cut: set[int] = set()
+            reached: set[int] = set()
+            frontier = list(seeds)
+            while frontier:
+                u = frontier.pop()
+                for o in outs[u]:
+                    if o in zone:
+                        cut.add(u)
+                    elif o not in reached:
+                        reached.add(o)
+                        for v in consumers[o]:
+                            if mask[v] and pcf[v] == o and ucost[v] < INF:
+                                frontier.append(v)
+            if not cut:  # impossible for a finite goal cost > 0; never loop
+                return total
+            m = min(rc[u] for u in cut)
+            total += m
+            if total >= stop_at:
+                return total
+            for u in cut:
+                rc[u] -= m
+            touched: set[int] = set()
+            self._decrease(rc, cost, ucost, cut, touched, mask)
+            for u in touched:
+                pcf[u] = _choose(deps[u], cost, ucost[u])
+
+
+def _choose(inputs: tuple[int, ...], cost: list[float], top: float) -> int:
+    """The input whose cost is `top` with the lowest id, -1 when there are no inputs."""
+    best = -1
+    for i in inputs:
+        if cost[i] == top and (best < 0 or i < best):
+            best = i
+    return best

@@ -1,0 +1,79 @@
+"""Motion success rates (weighted FOON): `motion<TAB>rate` files.
+
+One motion per line, its label then its success rate in (0, 1] as the last
+field (the public files separate them with a tab; any whitespace is accepted
+since labels such as `turn on` contain spaces). Blank lines and `#` comments
+are skipped. Labels are normalized like FOON labels and a composite `*` suffix
+is dropped, so `pour*` units use the rate of `pour`.
+
+A motion the file does not list gets `DEFAULT_RATE` (0.5: no knowledge either
+way, and low enough that an unrated motion is never preferred to a rated one
+that usually succeeds); pass `default=` to change it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..errors import FoonSyntaxError
+from ..model import normalize_label
+from ..parser import read_text
+
+DEFAULT_RATE = 0.5
+
+
+@dataclass(frozen=True)
+class Rates:
+    """Success rate per motion label, with the rate used for unlisted motions."""
+
+    table: dict[str, float] = field(default_factory=dict, hash=False)
+    default: float = DEFAULT_RATE
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if not 0.0 < self.default <= 1.0:
+            raise ValueError(f"default rate must be in (0, 1], not {self.default!r}")
+
+    def rate(self, motion: str) -> float:
+        """Success rate of a motion label (the default when unlisted)."""
+        return self.table.get(motion, self.default)
+
+    def cost(self, motion: str) -> float:
+        """-log(rate): additive cost whose minimum sum is the highest success product."""
+        return -math.log(self.rate(motion))
+
+
+def parse_rates(text: str, path: str = "<rates>", default: float = DEFAULT_RATE) -> Rates:
+    """Parse rates text; errors name path and line."""
+    table: dict[str, float] = {}
+    seen_at: dict[str, int] = {}
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        parts = line.rsplit(None, 1)
+        if len(parts) != 2:
+            raise FoonSyntaxError(path, lineno, "expected 'motion<TAB>rate'", raw)
+        label = normalize_label(parts[0]).removesuffix("*").strip()
+        try:
+            rate = float(parts[1])
+        except ValueError:
+            raise FoonSyntaxError(path, lineno, f"rate {parts[1]!r} is not a number", raw) from None
+        if not label:
+            raise FoonSyntaxError(path, lineno, "motion label is empty", raw)
+        if not 0.0 < rate <= 1.0:
+            raise FoonSyntaxError(path, lineno, f"rate {rate:g} is not in (0, 1]", raw)
+        if label in table and table[label] != rate:
+            raise FoonSyntaxError(path, lineno, f"motion {label!r} already has rate {table[label]:g} "
+                                                f"(line {seen_at[label]})", raw)
+        table[label] = rate
+        seen_at.setdefault(label, lineno)
+    return Rates(table, default, path)
+
+
+def read_rates(path: str | Path, default: float = DEFAULT_RATE) -> Rates:
+    """Read a rates file (see the module doc)."""
+    p = Path(path)
+    return parse_rates(read_text(p), str(p), default)

@@ -1,0 +1,170 @@
+"""Complete solvability: which nodes a kitchen can make, by an AND/OR fixpoint.
+
+A unit fires when all its inputs are available; its outputs become available.
+Each unit keeps a counter of inputs still missing; a node becoming available
+decrements the counters of its consumers, and a unit whose counter reaches 0
+fires. Every node and unit is handled once: O(nodes + sum of unit sizes).
+
+The fixpoint runs in rounds (round 0 = the kitchen; a unit fires in round
+1 + the latest round of its inputs) and, within a round, in the units' content
+order (`index.FoonIndex.order`). A node's *first achiever* is the first unit in
+that firing order that outputs it: following first achievers back from a node
+never meets a cycle, and gives a tree whose depth is the node's round, the
+fewest sequential rounds that can make it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from ..model import Foon, ObjectNode
+from .index import FoonIndex, index_of
+
+UNREACHED = -1
+
+
+@dataclass(frozen=True, eq=False)
+class Reachability:
+    """The fixpoint of a network from a kitchen.
+
+    `node_round[id]` is 0 for kitchen nodes, the round a unit first made it, or
+    UNREACHED; `achiever[id]` is the node's first achiever (unit index) or -1;
+    `fired` lists the units that fire, in firing order; `unit_round[u]` is the
+    round unit u fires in, or UNREACHED. When `targets` is set, only the units
+    that can contribute to them were run: the answers hold for the targets and
+    the nodes they depend on (for those they equal the full fixpoint's).
+    """
+
+    foon: Foon
+    index: FoonIndex
+    kitchen: frozenset[ObjectNode]
+    node_round: tuple[int, ...]
+    achiever: tuple[int, ...]
+    fired: tuple[int, ...]
+    unit_round: tuple[int, ...]
+    targets: frozenset[ObjectNode] | None = None
+
+    def can_make(self, node: ObjectNode) -> bool:
+        """Whether `node` is in the kitchen or some sequence of units makes it."""
+        i = self.index.node_id.get(node)
+        return node in self.kitchen if i is None else self.node_round[i] != UNREACHED
+
+    def round_of(self, node: ObjectNode) -> int | None:
+        """0 for a kitchen node, the round a unit first makes it, or None when it cannot be made."""
+        i = self.index.node_id.get(node)
+        if i is None:
+            return 0 if node in self.kitchen else None
+        r = self.node_round[i]
+        return None if r == UNREACHED else r
+
+    def achiever_of(self, node: ObjectNode) -> int | None:
+        """Index of the node's first achiever (None for kitchen or unreachable nodes)."""
+        i = self.index.node_id.get(node)
+        if i is None or self.achiever[i] < 0:
+            return None
+        return self.achiever[i]
+
+    @property
+    def reachable_nodes(self) -> frozenset[ObjectNode]:
+        """Every network node that can be made or is in the kitchen."""
+        return frozenset(n for n, r in zip(self.index.nodes, self.node_round, strict=True) if r != UNREACHED)
+
+
+def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray) -> list[int]:
+    """The units that can contribute to the target node ids: backwards over makers, not past
+    kitchen nodes (those need no making)."""
+    mask = bytearray(len(ix.inputs))
+    seen = bytearray(in_kitchen)
+    units: list[int] = []
+    stack = list(targets)
+    while stack:
+        n = stack.pop()
+        if seen[n]:
+            continue
+        seen[n] = 1
+        for u in ix.makers[n]:
+            if not mask[u]:
+                mask[u] = 1
+                units.append(u)
+                stack.extend(ix.inputs[u])
+    return units
+
+
+def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
+              targets: Iterable[ObjectNode] | None = None) -> Reachability:
+    """Run the fixpoint of `foon` from `kitchen_nodes` (nodes at the network's level).
+
+    With `targets`, run it only over the units that can contribute to them (a
+    node's round and first achiever depend only on such units, so the answers
+    for the targets are the same; used per goal, it is much faster).
+    """
+    ix = index_of(foon)
+    kitchen = frozenset(kitchen_nodes)
+    scope = None if targets is None else frozenset(targets)
+    kitchen_ids = ix.kitchen_ids(kitchen)
+    in_kitchen = bytearray(len(ix.nodes))
+    for k in kitchen_ids:
+        in_kitchen[k] = 1
+    inputs = ix.inputs
+    units = ix.order if scope is None else relevant_units(ix, ix.ids(scope), in_kitchen)
+    missing = [-1] * len(inputs)  # inputs still missing; -1 (never 0) for units outside the scope
+    ready: list[int] = []
+    for u in units:
+        left = 0
+        for i in inputs[u]:
+            if not in_kitchen[i]:
+                left += 1
+        missing[u] = left
+        if not left:
+            ready.append(u)
+    node_round = [UNREACHED] * len(ix.nodes)
+    for k in kitchen_ids:
+        node_round[k] = 0
+    achiever = [-1] * len(ix.nodes)
+    unit_round = [UNREACHED] * len(inputs)
+    rank, consumers, outputs = ix.rank, ix.consumers, ix.outputs
+    fired: list[int] = []
+    rnd = 0
+    while ready:
+        rnd += 1
+        ready.sort(key=rank.__getitem__)
+        nxt: list[int] = []
+        for u in ready:
+            unit_round[u] = rnd
+            fired.append(u)
+            for n in outputs[u]:
+                if node_round[n] == UNREACHED:
+                    node_round[n] = rnd
+                    achiever[n] = u
+                    for c in consumers[n]:
+                        missing[c] -= 1
+                        if missing[c] == 0:
+                            nxt.append(c)
+        ready = nxt
+    return Reachability(foon, ix, kitchen, tuple(node_round), tuple(achiever), tuple(fired), tuple(unit_round),
+                        scope)
+
+
+def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = 10) -> tuple[ObjectNode, ...]:
+    """Why `nodes` cannot be made: the unmakeable nodes they depend on that no unit makes.
+
+    Walks back from each unreachable node through every maker's unreachable
+    inputs; the nodes met that have no maker at all are what the kitchen lacks.
+    Returns up to `limit` of them in sorted order.
+    """
+    ix = reach.index
+    seen: set[int] = set()
+    stack = [i for i in ix.ids(nodes) if reach.node_round[i] == UNREACHED]
+    found: set[int] = set()
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        if not ix.makers[n]:
+            found.add(n)
+            continue
+        for u in ix.makers[n]:
+            stack.extend(i for i in ix.inputs[u] if reach.node_round[i] == UNREACHED and i not in seen)
+    return tuple(ix.nodes[i] for i in sorted(found)[:limit])

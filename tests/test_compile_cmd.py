@@ -1,0 +1,77 @@
+"""`foon2pddl compile`: writes both files atomically, reports bad input with exit status 2 and no output."""
+
+from __future__ import annotations
+
+import click
+import pddl.parser.domain
+from click.testing import CliRunner
+from conftest import SEARCH_INPUTS, SUBGRAPHS
+
+from foon2pddl.cli import main
+from foon2pddl.cli.options import costs_option, encoding_option
+from foon2pddl.pddl.compile import ENCODINGS
+from foon2pddl.pddl.costs import COST_MODES
+
+RECIPE = str(SUBGRAPHS / "0076-bloody_mary.txt")
+
+
+def _run(*args):
+    return CliRunner().invoke(main, ["compile", *args])
+
+
+def test_compile_writes_domain_and_problem_and_says_where(tmp_path):
+    result = _run(RECIPE, "--goal", "bloody mary", "-o", str(tmp_path / "out"))
+    assert result.exit_code == 0, result.output
+    domain = (tmp_path / "out" / "domain.pddl").read_text()
+    problem = (tmp_path / "out" / "problem.pddl").read_text()
+    assert str(tmp_path / "out" / "domain.pddl") in result.output
+    assert pddl.parser.domain.DomainParser()(domain).actions
+    assert "(:domain foon-tree)" in problem and "bloody_mary" in problem
+    assert not [p for p in (tmp_path / "out").iterdir() if p.name.startswith(".")]  # no temporary left
+
+
+def test_options_reach_the_encoder(tmp_path):
+    result = _run(RECIPE, "--goal", "bloody mary", "--encoding", "state", "--level", "2", "--no-prune",
+                  "--costs", "success-rate", "--rates", str(SEARCH_INPUTS / "motion.txt"), "-o", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    domain = (tmp_path / "domain.pddl").read_text()
+    assert "(define (domain foon-state)" in domain and "level 2: all " in domain
+    assert "(increase (total-cost) " in domain and "rates: motion.txt" in domain
+
+
+def test_bad_goal_exits_2_and_leaves_existing_files_alone(tmp_path):
+    (tmp_path / "domain.pddl").write_text("old domain")
+    result = _run(RECIPE, "--goal", "bloody marx", "-o", str(tmp_path))
+    assert result.exit_code == 2
+    assert "unknown object label 'bloody marx'" in result.output and "bloody mary" in result.output
+    assert "Traceback" not in result.output
+    assert (tmp_path / "domain.pddl").read_text() == "old domain"
+    assert not (tmp_path / "problem.pddl").exists()
+
+
+def test_missing_rates_and_missing_goal_exit_2(tmp_path):
+    result = _run(RECIPE, "--goal", "bloody mary", "--costs", "success-rate", "-o", str(tmp_path))
+    assert result.exit_code == 2 and "--rates" in result.output
+    result = _run(RECIPE, "-o", str(tmp_path))
+    assert result.exit_code == 2 and "--goal" in result.output
+    result = _run(RECIPE, "--goal", "bloody mary", "--kitchen", str(tmp_path / "nope.txt"), "-o", str(tmp_path))
+    assert result.exit_code == 2 and "nope.txt" in result.output
+    assert not list(tmp_path.iterdir())
+
+
+def test_unwritable_output_exits_2(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    result = _run(RECIPE, "--goal", "bloody mary", "-o", str(blocker / "sub"))
+    assert result.exit_code == 2 and "Traceback" not in result.output
+
+
+def test_cli_choices_are_the_encoders_and_cost_modes():
+    @click.command()
+    @encoding_option
+    @costs_option
+    def probe(encoding, costs):  # pragma: no cover - only inspected
+        pass
+
+    choices = {p.name: tuple(p.type.choices) for p in probe.params}
+    assert choices == {"encoding": tuple(ENCODINGS), "costs": COST_MODES}

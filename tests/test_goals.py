@@ -1,0 +1,168 @@
+"""Goals: the --goal syntax, goal files, and resolution (exact states first, else a superset)."""
+
+from __future__ import annotations
+
+import pytest
+
+from foon2pddl.errors import FoonInputError, FoonSyntaxError
+from foon2pddl.goals import GoalSpec, parse_goal_spec, read_goal_file, resolve_goal, spec_of_node
+from foon2pddl.inputs import goal_spec, load_goal
+from foon2pddl.levels import project
+from foon2pddl.model import State, make_node, make_state
+from foon2pddl.parser import parse_text
+
+
+@pytest.mark.parametrize(("text", "label", "states"), [
+    ("whipped cream", "whipped cream", None),
+    ("  Whipped   Cream ", "whipped cream", None),
+    ("onion: chopped", "onion", (State("chopped"),)),
+    ("water: in [pot]", "water", (State("in", "pot"),)),
+    ("bowl: contains {lettuce, tomato}", "bowl", (State("contains", "", ("lettuce", "tomato")),)),
+    ("bowl: contains {tomato,lettuce,}, on [Table]", "bowl",
+     (State("contains", "", ("lettuce", "tomato")), State("on", "table"))),
+    ("pot: in [stove] {water, salt}", "pot", (State("in", "stove", ("salt", "water")),)),
+    ("onion: sliced, chopped, sliced", "onion", (State("chopped"), State("sliced"))),
+    ("onion:", "onion", ()),
+])
+def test_goal_syntax(text, label, states):
+    spec = parse_goal_spec(text)
+    assert (spec.label, spec.states) == (label, states)
+    assert parse_goal_spec(spec.describe()) == spec
+
+
+@pytest.mark.parametrize(("text", "problem"), [
+    ("", "no object label"),
+    (": chopped", "no object label"),
+    ("bowl: contains {a, b", "unbalanced bracket"),
+    ("bowl: in [pot]]", "unbalanced bracket"),
+    ("bowl: [pot]", "cannot read state"),
+    ("bowl: in [pot] extra", "cannot read state"),
+])
+def test_goal_syntax_errors(text, problem):
+    with pytest.raises(ValueError, match=problem):
+        parse_goal_spec(text)
+
+
+FOON = parse_text("""//
+O\tonion
+S\twhole
+O\tknife
+M\tchop
+O\tonion
+S\tchopped
+//
+O\tonion
+S\tchopped
+O\tbowl
+S\tempty
+M\tpour
+O\tbowl
+S\tcontains\t{onion}
+O\tonion
+S\tchopped
+S\tin\t[bowl]
+//
+O\tbowl
+S\tcontains\t{onion}
+O\ttomato
+S\tchopped
+M\tpour
+O\tbowl
+S\tcontains\t{onion, tomato}
+//
+O\tonion
+S\twhole
+O\tpeeler
+M\tpeel
+O\tonion
+S\tpeeled
+S\twhole
+""", "g.foon").foon
+
+
+def node(label, *states):
+    return make_node(label, [make_state(*s) if isinstance(s, tuple) else make_state(s) for s in states])
+
+
+def test_label_goal_is_any_produced_node_with_that_label():
+    goal = resolve_goal(parse_goal_spec("onion"), FOON)
+    assert set(goal.candidates) == {node("onion", "chopped"), node("onion", "chopped", ("in", "bowl")),
+                                    node("onion", "peeled", "whole")}
+    assert node("onion", "whole") not in goal.candidates  # only ever an input
+    assert list(goal.candidates) == sorted(goal.candidates)
+
+
+def test_exact_states_win_over_supersets():
+    goal = resolve_goal(parse_goal_spec("onion: chopped"), FOON)
+    assert goal.candidates == (node("onion", "chopped"),)
+
+
+def test_superset_when_no_exact_match():
+    assert resolve_goal(parse_goal_spec("onion: in [bowl]"), FOON).candidates == \
+        (node("onion", "chopped", ("in", "bowl")),)
+    assert resolve_goal(parse_goal_spec("onion: whole"), FOON).candidates == (node("onion", "peeled", "whole"),)
+
+
+def test_level_3_goal_with_ingredients_and_its_level_2_reading():
+    spec = parse_goal_spec("bowl: contains {tomato, onion}")
+    assert resolve_goal(spec, FOON).candidates == (node("bowl", ("contains", "", ["onion", "tomato"])),)
+    one_ingredient = parse_goal_spec("bowl: contains {onion}")
+    assert resolve_goal(one_ingredient, FOON).candidates == (node("bowl", ("contains", "", ["onion"])),)
+    two = resolve_goal(one_ingredient, project(FOON, 2))
+    assert two.level == 2 and two.candidates == (node("bowl", "contains"),)  # ingredients are not level-2 identity
+
+
+def test_goal_at_level_1_ignores_states():
+    foon1 = project(FOON, 1)
+    goal = resolve_goal(parse_goal_spec("onion: chopped"), foon1)
+    assert goal.candidates == (make_node("onion"),) and goal.level == 1
+
+
+def test_unknown_label_lists_close_matches():
+    with pytest.raises(FoonInputError) as info:
+        resolve_goal(parse_goal_spec("onoin"), FOON)
+    assert "unknown object label 'onoin'" in info.value.message and "close matches: onion" in info.value.message
+    with pytest.raises(FoonInputError) as info:
+        resolve_goal(parse_goal_spec("zzzz"), FOON)
+    assert "close matches" not in info.value.message
+
+
+def test_label_that_is_only_an_input_or_states_not_produced():
+    with pytest.raises(FoonInputError, match="no unit produces 'knife'"):
+        resolve_goal(parse_goal_spec("knife"), FOON)
+    with pytest.raises(FoonInputError) as info:
+        resolve_goal(parse_goal_spec("onion: diced"), FOON)
+    assert "no produced 'onion' node is in states" in info.value.message
+    assert "(chopped)" in info.value.message
+
+
+def test_satisfied_by_returns_the_first_available_candidate():
+    goal = resolve_goal(parse_goal_spec("onion"), FOON)
+    assert goal.satisfied_by({node("onion", "whole")}) is None
+    have = {node("onion", "peeled", "whole"), node("onion", "chopped")}
+    assert goal.satisfied_by(have) == goal.candidates[0] == node("onion", "chopped")
+
+
+def test_goal_file_holds_one_object_node(tmp_path):
+    path = tmp_path / "goal.txt"
+    path.write_text("# the goal\r\nO7\tBowl\t0\r\nS1\tcontains\t{tomato,onion}\r\n")
+    spec = read_goal_file(path)
+    assert spec == GoalSpec("bowl", (State("contains", "", ("onion", "tomato")),))
+    assert spec == spec_of_node(node("bowl", ("contains", "", ["onion", "tomato"])))
+    path.write_text("O\tbowl\n//\nO\tonion\n")
+    with pytest.raises(FoonSyntaxError, match="exactly one object node, found 2") as info:
+        read_goal_file(path)
+    assert info.value.line == 3
+    path.write_text("# nothing\n")
+    with pytest.raises(FoonSyntaxError, match="found 0"):
+        read_goal_file(path)
+
+
+def test_goal_spec_needs_exactly_one_source(tmp_path):
+    with pytest.raises(FoonInputError, match="exactly one of --goal and --goal-file"):
+        goal_spec(None, None)
+    with pytest.raises(FoonInputError, match="exactly one"):
+        goal_spec("onion", tmp_path / "g.txt")
+    with pytest.raises(FoonInputError, match="unbalanced"):
+        goal_spec("onion: in [bowl", None)
+    assert load_goal("onion: chopped", None, FOON).candidates == (node("onion", "chopped"),)

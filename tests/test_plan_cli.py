@@ -1,0 +1,71 @@
+"""`foon2pddl plan`: outputs, phase timings and exit statuses."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import pytest
+from click.testing import CliRunner
+from conftest import SUBGRAPHS
+
+from foon2pddl.cli import main
+from foon2pddl.parser import parse_text
+
+WHIPPED = str(SUBGRAPHS / "0001-whipped_cream.txt")
+
+
+def run(*args):
+    result = CliRunner().invoke(main, ["plan", *args])
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+    return result
+
+
+def test_solved_prints_tree_and_phases():
+    result = run("--goal", "whipped cream", WHIPPED)
+    assert result.exit_code == 0, result.output
+    assert "whipped cream" in result.stdout
+    assert "phases: load" in result.stderr and "translate" in result.stderr and "validate" in result.stderr
+
+
+def test_json_carries_status_plan_timings_and_tree():
+    result = run("--goal", "whipped cream", "--format", "json", WHIPPED)
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["status"] == "solved" and data["plan"] and data["validation"]["ok"]
+    assert {"load", "encode", "write", "translate", "search", "decode", "validate"} <= set(data["timings"])
+    assert data["tree"] is not None
+
+
+def test_foon_format_to_file_reparses(tmp_path):
+    out = tmp_path / "tree.foon"
+    result = run("--goal", "whipped cream", "--format", "foon", "-o", str(out), WHIPPED)
+    assert result.exit_code == 0, result.output
+    assert len(parse_text(out.read_text(), str(out)).foon.units) >= 1
+
+
+def test_unsolvable_exits_1_with_reason(tmp_path):
+    kitchen = tmp_path / "kitchen.txt"
+    kitchen.write_text("bowl\n")
+    result = run("--goal", "whipped cream", "--kitchen", str(kitchen), WHIPPED)
+    assert result.exit_code == 1
+    assert result.stdout == ""
+    assert "unsolvable" in result.stderr and "reason:" in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("cmd", "code", "word"),
+    [(f"{sys.executable} -c 'import time; time.sleep(30)'", 1, "timeout"),
+     (f"{sys.executable} -c 'raise SystemExit(5)'", 2, "error"),
+     ("/nonexistent/planner {domain} {problem}", 2, "error")],
+)
+def test_planner_command_failures(cmd, code, word):
+    result = run("--goal", "whipped cream", "--planner-cmd", cmd, "--time-limit", "1", WHIPPED)
+    assert result.exit_code == code
+    assert result.stderr.startswith(word)
+
+
+def test_bad_input_exits_2_without_traceback():
+    result = run("--goal", "no such dish", WHIPPED)
+    assert result.exit_code == 2
+    assert "error" in result.stderr and "Traceback" not in result.output

@@ -1,0 +1,50 @@
+"""The `tree` encoding plans exactly when native complete retrieval finds a tree (universal FOON, sampled goals).
+
+The full run (default kitchen + 5 random kitchens, >= 200 goals) is `bench/planning.py`.
+"""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from foon2pddl.goals import resolve_goal, spec_of_node
+from foon2pddl.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.solve import GoalReplanner, plan
+from foon2pddl.retrieval.reachability import reachable
+
+
+def random_kitchen(foon, seed: int, keep: float = 0.7) -> Kitchen:
+    """A seeded random subset of the default kitchen (what a partly stocked kitchen holds)."""
+    rng = random.Random(seed)
+    nodes = sorted(default_kitchen(foon).nodes)
+    return Kitchen(frozenset(n for n in nodes if rng.random() < keep), foon.level, f"random kitchen {seed}")
+
+
+@pytest.fixture(scope="module")
+def network(universal):
+    foon, _ = universal
+    goals = random.Random(4).sample(sorted(foon.producers), 20)
+    return foon, [resolve_goal(spec_of_node(n), foon) for n in goals]
+
+
+@pytest.mark.parametrize("kitchen_seed", [None, 11])
+def test_fd_plans_iff_fixpoint_reaches_and_plans_validate(network, kitchen_seed):
+    foon, goals = network
+    kitchen = default_kitchen(foon) if kitchen_seed is None else random_kitchen(foon, kitchen_seed)
+    reach = reachable(foon, kitchen.nodes)
+    replanner = GoalReplanner(foon, kitchen)
+    solved = 0
+    for goal in goals:
+        expected = any(reach.can_make(c) for c in goal.candidates)
+        fresh = plan(foon, kitchen, goal)
+        reused = replanner.plan(goal)
+        assert fresh.status == ("solved" if expected else "unsolvable"), goal.describe()
+        assert reused.status == fresh.status, goal.describe()
+        for outcome in (fresh, reused):
+            if outcome.tree is not None:
+                assert outcome.validation.ok, outcome.validation.problems
+                assert outcome.tree.goal in goal.candidates
+        solved += expected
+    assert 0 < solved < len(goals)  # the sample has both kinds, so the test can fail either way

@@ -1,0 +1,187 @@
+"""Property tests of native retrieval on random FOONs (hypothesis).
+
+The networks are small (a pool of 8 nodes, up to 9 units) so that cycles,
+several makers per node, shared subtrees and unreachable goals all occur, and
+so that an exhaustive search over unit subsets can serve as the reference.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import random
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.goals import Goal, GoalSpec
+from foon2pddl.merge import dedupe_units
+from foon2pddl.model import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.retrieval import Rates, reachable, retrieve
+from foon2pddl.retrieval.result import BUDGET_EXHAUSTED, UNREACHABLE
+from foon2pddl.tasktree import validate
+
+POOL = [make_node("a"), make_node("b"), make_node("b", [make_state("cut")]), make_node("c", [make_state("in", "b")]),
+        make_node("d"), make_node("e", [make_state("mixed", "", ["a", "d"])]), make_node("f"), make_node("g")]
+MOTIONS = ["chop", "mix", "pour", "stir"]
+RATES = Rates({"chop": 0.5, "mix": 0.9, "pour": 0.8}, default=0.3)
+
+
+@st.composite
+def problems(draw):
+    """(network, kitchen nodes, goal) with 1-3 goal candidates among the produced nodes.
+
+    The kitchen holds the nodes no unit makes except up to two, plus up to three others,
+    so that most goals are reachable, many in several ways; half of the goals have a
+    candidate the reference closure (`naive_closure`) can make.
+    """
+    ins = st.lists(st.sampled_from(POOL), min_size=1, max_size=3, unique=True)
+    outs = st.lists(st.sampled_from(POOL), min_size=1, max_size=3, unique=True)
+    units = draw(st.lists(st.tuples(ins, st.sampled_from(MOTIONS), outs), min_size=4, max_size=9))
+    foon = Foon(dedupe_units(FunctionalUnit(tuple(i), Motion(m), tuple(o)) for i, m, o in units))
+    produced = sorted(foon.producers)
+    starting = sorted(set(foon.nodes) - set(produced))
+    missing = draw(st.lists(st.sampled_from(starting), max_size=2, unique=True)) if starting else []
+    extra = draw(st.lists(st.sampled_from(POOL), max_size=3, unique=True))
+    kitchen = frozenset(starting).difference(missing).union(extra)
+    makeable = sorted(set(produced) & naive_closure(foon.units, kitchen))
+    first = draw(st.sampled_from(makeable if makeable and draw(st.booleans()) else produced))
+    cands = {first} | set(draw(st.lists(st.sampled_from(produced), max_size=2)))
+    return foon, kitchen, Goal(GoalSpec("goal"), tuple(sorted(cands)), 3)
+
+
+def naive_closure(units, kitchen):
+    """Everything the units can make from the kitchen, by repeating passes until nothing changes."""
+    have = set(kitchen)
+    changed = True
+    while changed:
+        changed = False
+        for u in units:
+            if set(u.inputs) <= have and not set(u.outputs) <= have:
+                have |= set(u.outputs)
+                changed = True
+    return have
+
+
+def best_subset(foon, kitchen, goal, cost):
+    """The cheapest set of units whose closure from the kitchen reaches a candidate (exhaustive)."""
+    best = math.inf
+    for k in range(len(foon.units) + 1):
+        for subset in itertools.combinations(foon.units, k):
+            if goal.satisfied_by(naive_closure(subset, kitchen)) is not None:
+                best = min(best, cost(subset))
+    return best
+
+
+def unit_count(units):
+    return len(units)
+
+
+def neg_log(units):
+    return math.fsum(RATES.cost(u.motion.label) for u in units)
+
+
+@settings(max_examples=300, deadline=None)
+@given(problems())
+def test_fixpoint_matches_naive_closure(problem):
+    foon, kitchen, _ = problem
+    reach = reachable(foon, kitchen)
+    closure = naive_closure(foon.units, kitchen)
+    assert {n for n in foon.nodes if reach.can_make(n)} == {n for n in foon.nodes if n in closure}
+    # rounds: a made node's first achiever fired in its round, with all inputs from earlier rounds
+    for n in foon.nodes:
+        u = reach.achiever_of(n)
+        if u is not None:
+            assert reach.round_of(n) == 1 + max((reach.round_of(i) for i in foon.units[u].inputs), default=0)
+
+
+@settings(max_examples=300, deadline=None)
+@given(problems())
+def test_complete_and_greedy_find_a_valid_tree_iff_reachable(problem):
+    foon, kitchen, goal = problem
+    reach = reachable(foon, kitchen)
+    can = any(reach.can_make(c) for c in goal.candidates)
+    for method in ("complete", "greedy"):
+        result = retrieve(foon, kitchen, goal, method)
+        assert (result.tree is not None) == can, (method, result)
+        if result.tree is None:
+            assert result.reason == UNREACHABLE and result.detail
+        else:
+            assert result.tree.goal in goal.candidates
+            assert validate(result.tree, kitchen).ok, validate(result.tree, kitchen).problems
+            # pruned: every unit makes something a later unit or the goal needs
+            for k, unit in enumerate(result.tree.units):
+                later = {n for u in result.tree.units[k + 1:] for n in u.inputs} | {result.tree.goal}
+                assert set(unit.outputs) & later
+
+
+@settings(max_examples=200, deadline=None)
+@given(problems())
+def test_greedy_terminates_within_any_budget(problem):
+    foon, kitchen, goal = problem
+    for budget in (1, 3, 50):
+        result = retrieve(foon, kitchen, goal, "greedy", budget=budget)
+        assert result.expansions <= budget
+        assert result.reason in (None, UNREACHABLE, BUDGET_EXHAUSTED)
+        if result.tree is not None:
+            assert validate(result.tree, kitchen).ok
+
+
+@settings(max_examples=200, deadline=None)
+@given(problems())
+def test_optimal_is_minimal_and_never_worse_than_complete_or_greedy(problem):
+    foon, kitchen, goal = problem
+    result = retrieve(foon, kitchen, goal, "optimal")
+    best = best_subset(foon, kitchen, goal, unit_count)
+    if best == math.inf:
+        assert result.tree is None and result.reason == UNREACHABLE
+        return
+    assert result.proven_optimal
+    assert validate(result.tree, kitchen).ok
+    assert len(result.tree) == best
+    for other in ("complete", "greedy"):
+        assert len(result.tree) <= len(retrieve(foon, kitchen, goal, other).tree)
+
+
+@settings(max_examples=200, deadline=None)
+@given(problems())
+def test_weighted_maximizes_the_success_probability(problem):
+    foon, kitchen, goal = problem
+    result = retrieve(foon, kitchen, goal, "weighted", rates=RATES)
+    best = best_subset(foon, kitchen, goal, neg_log)
+    if best == math.inf:
+        assert result.tree is None
+        return
+    assert validate(result.tree, kitchen).ok
+    assert math.isclose(result.probability, math.exp(-best), rel_tol=1e-9)
+    for other in ("complete", "greedy", "optimal"):
+        assert result.probability >= retrieve(foon, kitchen, goal, other, rates=RATES).probability - 1e-12
+
+
+@settings(max_examples=100, deadline=None)
+@given(problems(), st.randoms(use_true_random=False))
+def test_results_do_not_depend_on_unit_order(problem, rnd: random.Random):
+    foon, kitchen, goal = problem
+    units = list(foon.units)
+    rnd.shuffle(units)
+    shuffled = Foon(tuple(units))
+    for method in ("complete", "greedy", "optimal", "weighted"):
+        a = retrieve(foon, kitchen, goal, method, rates=RATES)
+        b = retrieve(shuffled, kitchen, goal, method, rates=RATES)
+        assert (a.tree is None) == (b.tree is None)
+        if a.tree is not None:
+            assert [u.key for u in a.tree.units] == [u.key for u in b.tree.units], method
+
+
+def test_optimal_shares_a_unit_that_complete_and_greedy_duplicate():
+    """x is made in round 1 by `chop`, but `mix` (needed for y anyway) also makes it."""
+    k1, k2, w, x, y, z, goal = (make_node(s) for s in ("k1", "k2", "w", "x", "y", "z", "goal"))
+    units = [FunctionalUnit((k1,), Motion("chop"), (x,)), FunctionalUnit((z,), Motion("mix"), (x, y)),
+             FunctionalUnit((k2,), Motion("pour"), (z,)), FunctionalUnit((w,), Motion("zest"), (y,)),
+             FunctionalUnit((k1,), Motion("wash"), (w,)), FunctionalUnit((x, y), Motion("serve"), (goal,))]
+    foon, kitchen, target = Foon(tuple(units)), {k1, k2}, Goal(GoalSpec("goal"), (goal,), 3)
+    best = retrieve(foon, kitchen, target, "optimal")
+    assert [u.motion.label for u in best.tree.units] == ["pour", "mix", "serve"]
+    assert best.proven_optimal
+    for method in ("complete", "greedy"):
+        assert len(retrieve(foon, kitchen, target, method).tree) == 4
