@@ -96,6 +96,10 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
     def fail(lineno: int, message: str, line: str) -> FoonSyntaxError:
         return FoonSyntaxError(path, lineno, message, line)
 
+    def at(lineno: int, raw: str):
+        """`fail` for one line: message -> error naming that line."""
+        return lambda message: fail(lineno, message, raw.rstrip("\r"))
+
     def close_object() -> None:
         if block.obj is not None:
             key = block.obj.cache_key()
@@ -128,56 +132,91 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
                 )
         block = _Block(lineno + 1)
 
+    # Lines recur verbatim (a unit's outputs are the next unit's inputs): classify each
+    # distinct line once; what depends on the surrounding block is checked per occurrence.
+    line_cache: dict[str, tuple] = {}
+    motion_cache: dict[tuple[str, ...], Motion] = {}
     lineno = 0
     for lineno, raw in enumerate(text.split("\n"), start=1):
-        line = raw.rstrip("\r")
-        stripped = line.strip()
-        if not stripped:
+        entry = line_cache.get(raw)
+        if entry is None:
+            entry = line_cache[raw] = _classify(raw, at(lineno, raw))
+        kind = entry[0]
+        if kind == "#":
             continue
-        if stripped.startswith("#"):
-            if stripped[1:].lstrip().lower().startswith("source:"):
-                url = stripped[1:].lstrip()[len("source:"):].strip()
-                if url:
-                    urls.append(url)
+        if kind == "url":
+            urls.append(entry[1])
             continue
-        if stripped.startswith("//"):
+        if kind == "//":
             close_block(lineno)
             continue
-        if _CONTROL.search(line):
-            raise fail(lineno, "control character in line (garbage bytes?)", line)
         if block.empty():
             block.start = lineno
-        fields = [f.strip() for f in stripped.split("\t")]
-        head = fields[0]
-        kind = head[:1]
-        if kind not in "OSM" or not _ID.fullmatch(head):
-            raise fail(lineno, "expected an 'O', 'S' or 'M' line, '//' or a '#' comment", line)
-        if len(fields) < 2 or not fields[1]:
-            raise fail(lineno, f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')", line)
         if kind == "O":
             close_object()
-            block.obj = _parse_object(fields, lambda m, n=lineno, t=line: fail(n, m, t))
+            block.obj = _PendingObject(*entry[1:])
         elif kind == "S":
             if block.obj is None:
-                raise fail(lineno, "state line ('S') before any object line ('O') of its unit", line)
-            key = tuple(fields[1:])
+                raise fail(lineno, "state line ('S') before any object line ('O') of its unit", raw.rstrip("\r"))
+            key = entry[1]
             state = state_cache.get(key)
             if state is None:
-                state = state_cache[key] = _parse_state(fields, lambda m, n=lineno, t=line: fail(n, m, t))
+                state = state_cache[key] = _parse_state(("S",) + key, at(lineno, raw))
             block.obj.states.append(state)
             block.obj.keys.append(key)
         else:
             if block.motion is not None:
-                raise fail(lineno, "second motion line ('M') in one unit (missing '//'?)", line)
+                raise fail(lineno, "second motion line ('M') in one unit (missing '//'?)", raw.rstrip("\r"))
             close_object()
-            block.motion = _parse_motion(fields, lambda m, n=lineno, t=line: fail(n, m, t))
+            key = entry[1]
+            motion = motion_cache.get(key)
+            if motion is None:
+                motion = motion_cache[key] = _parse_motion(key, at(lineno, raw))
+            block.motion = motion
     close_block(lineno)
     if not units:  # reported at the last line of the file (1 when empty)
         raise FoonSyntaxError(path, max(lineno - text.endswith("\n"), 1), "no functional units in file")
     return ParseResult(Foon(tuple(units)), tuple(warnings), tuple(dict.fromkeys(urls)))
 
 
-def _parse_object(fields: list[str], fail) -> _PendingObject:
+_SKIP = ("#",)
+_SEPARATOR = ("//",)
+
+
+def _classify(raw: str, fail) -> tuple:
+    """What one raw line is, independent of its block: `("#",)`, `("url", url)`, `("//",)`,
+    `("O", label, flag, goal, dish)`, `("S", fields after the head)` or `("M", all fields)`."""
+    line = raw.rstrip("\r")
+    stripped = line.strip()
+    if not stripped:
+        return _SKIP
+    if stripped.startswith("#"):
+        comment = stripped[1:].lstrip()
+        if comment.lower().startswith("source:"):
+            url = comment[len("source:"):].strip()
+            if url:
+                return ("url", url)
+        return _SKIP
+    if stripped.startswith("//"):
+        return _SEPARATOR
+    if _CONTROL.search(line):
+        raise fail("control character in line (garbage bytes?)")
+    fields = [f.strip() for f in stripped.split("\t")]
+    head = fields[0]
+    kind = head[:1]
+    if kind not in "OSM" or not _ID.fullmatch(head):
+        raise fail("expected an 'O', 'S' or 'M' line, '//' or a '#' comment")
+    if len(fields) < 2 or not fields[1]:
+        raise fail(f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')")
+    if kind == "O":
+        obj = _parse_object(fields, fail)
+        return ("O", obj.label, obj.flag, obj.goal, obj.dish)
+    if kind == "S":
+        return ("S", tuple(fields[1:]))
+    return ("M", tuple(fields))
+
+
+def _parse_object(fields: list[str] | tuple[str, ...], fail) -> _PendingObject:
     """`O<id> label [flag] [dish|!]`: flag 0/1 (`00` seen), dish an integer, `!` a goal mark."""
     label = fields[1]
     if _CONTROL.search(label):
@@ -211,7 +250,7 @@ def _split_list(body: str) -> list[str]:
     return [item.strip() for item in body.split(",") if item.strip()]
 
 
-def _parse_state(fields: list[str], fail) -> State:
+def _parse_state(fields: list[str] | tuple[str, ...], fail) -> State:
     """`S<id> label [ [related] | {ingredients} ]...`; `[a,b]` lists are read as ingredients."""
     label = fields[1]
     related = ""
@@ -234,7 +273,7 @@ def _parse_state(fields: list[str], fail) -> State:
     return make_state(label, related, ingredients)
 
 
-def _parse_motion(fields: list[str], fail) -> Motion:
+def _parse_motion(fields: list[str] | tuple[str, ...], fail) -> Motion:
     """`M<id> label [start end]` or `<start,end>` / `<Assumed>`; `label*` marks a composite unit."""
     label = fields[1]
     composite = label.endswith("*")

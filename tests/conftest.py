@@ -26,3 +26,11 @@ def example():
     from foon2pddl.inputs import load_network
 
     return load_network([])
+
+
+@pytest.fixture(scope="session")
+def label_similarity():
+    """WordNet-backed label similarity (opening WordNet takes a few seconds: once per session)."""
+    from foon2pddl.generalize.similarity import LabelSimilarity
+
+    return LabelSimilarity()

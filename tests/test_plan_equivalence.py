@@ -9,17 +9,11 @@ import random
 
 import pytest
 
+from foon2pddl.experiment.protocol import sample_kitchen
 from foon2pddl.goals import resolve_goal, spec_of_node
-from foon2pddl.kitchen import Kitchen, default_kitchen
+from foon2pddl.kitchen import default_kitchen
 from foon2pddl.pddl.solve import GoalReplanner, plan
 from foon2pddl.retrieval.reachability import reachable
-
-
-def random_kitchen(foon, seed: int, keep: float = 0.7) -> Kitchen:
-    """A seeded random subset of the default kitchen (what a partly stocked kitchen holds)."""
-    rng = random.Random(seed)
-    nodes = sorted(default_kitchen(foon).nodes)
-    return Kitchen(frozenset(n for n in nodes if rng.random() < keep), foon.level, f"random kitchen {seed}")
 
 
 @pytest.fixture(scope="module")
@@ -32,7 +26,7 @@ def network(universal):
 @pytest.mark.parametrize("kitchen_seed", [None, 11])
 def test_fd_plans_iff_fixpoint_reaches_and_plans_validate(network, kitchen_seed):
     foon, goals = network
-    kitchen = default_kitchen(foon) if kitchen_seed is None else random_kitchen(foon, kitchen_seed)
+    kitchen = default_kitchen(foon) if kitchen_seed is None else sample_kitchen(default_kitchen(foon), 0.7, kitchen_seed)
     reach = reachable(foon, kitchen.nodes)
     replanner = GoalReplanner(foon, kitchen)
     solved = 0

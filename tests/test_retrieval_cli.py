@@ -6,8 +6,8 @@ import json
 
 import pytest
 from click.testing import CliRunner
-
 from conftest import SEARCH_INPUTS
+
 from foon2pddl.cli import main
 from foon2pddl.inputs import load_kitchen
 from foon2pddl.parser import parse_text
@@ -78,6 +78,14 @@ def test_lemonade_cannot_be_made_and_says_why():
         assert result.stdout == ""
         assert "lemonade" in result.stderr and "unreachable" in result.stderr
     assert "lemon (whole)" in run("retrieve", "--goal", "lemonade").stderr
+
+
+def test_node_limit_returns_the_best_tree_so_far_marked_unproven():
+    limited = run("retrieve", "--goal", "greek salad", "--method", "optimal", "--node-limit", "1")
+    full = run("retrieve", "--goal", "greek salad", "--method", "optimal")
+    assert limited.exit_code == full.exit_code == 0
+    assert "not proven optimal" in limited.stderr and "not proven optimal" not in full.stderr
+    assert len(limited.stdout.splitlines()) >= len(full.stdout.splitlines())
 
 
 def test_formats_are_deterministic_and_written_atomically(tmp_path):

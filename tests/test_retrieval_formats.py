@@ -7,8 +7,8 @@ import math
 import re
 
 import pytest
-
 from conftest import SEARCH_INPUTS
+
 from foon2pddl.errors import FoonSyntaxError
 from foon2pddl.model import FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.parser import parse_text

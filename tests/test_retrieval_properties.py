@@ -145,6 +145,23 @@ def test_optimal_is_minimal_and_never_worse_than_complete_or_greedy(problem):
 
 @settings(max_examples=200, deadline=None)
 @given(problems())
+def test_optimal_at_its_node_limit_returns_the_best_tree_so_far(problem):
+    foon, kitchen, goal = problem
+    full = retrieve(foon, kitchen, goal, "optimal")
+    cut = retrieve(foon, kitchen, goal, "optimal", node_limit=1)
+    assert (cut.tree is None) == (full.tree is None)
+    if cut.tree is not None:
+        assert validate(cut.tree, kitchen).ok
+        assert len(cut.tree) <= len(retrieve(foon, kitchen, goal, "complete").tree)
+        assert cut.expansions <= 1
+        if cut.proven_optimal:
+            assert len(cut.tree) == len(full.tree)
+        else:
+            assert "not proven optimal" in cut.detail
+
+
+@settings(max_examples=200, deadline=None)
+@given(problems())
 def test_weighted_maximizes_the_success_probability(problem):
     foon, kitchen, goal = problem
     result = retrieve(foon, kitchen, goal, "weighted", rates=RATES)

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 from click.testing import CliRunner
-
 from conftest import SUBGRAPHS
+
 from foon2pddl.cli import main
 from foon2pddl.goals import Goal, spec_of_node
 from foon2pddl.kitchen import default_kitchen, read_kitchen, write_kitchen

@@ -21,6 +21,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    network_option,
     paths_argument,
     prune_option,
     rates_option,
@@ -28,13 +29,26 @@ from .options import (
 
 
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
-               prune: bool, costs: str | None, rates: Path | None) -> PlanningTask:
+               prune: bool, costs: str | None, rates: Path | None, network: str = "reg") -> PlanningTask:
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     net = load_network(paths)
+    if network == "gen":
+        from ..generalize.categories import load_index
+        from ..generalize.lifted import check_lifted_options, encode_lifted
+
+        check_lifted_options(encoding, costs)
+        kit = load_kitchen(kitchen, net, level)
+        return encode_lifted(net.foon, kit, load_goal(goal, goal_file, net.at(level)), load_index(), level,
+                             prune=prune).task
     foon = net.at(level)
     kit = load_kitchen(kitchen, net, level)
+    if network == "exp":
+        from ..generalize.network import network_view
+
+        view = network_view(net, network, level, kit)
+        foon, kit = view.foon, view.kitchen
     target = load_goal(goal, goal_file, foon)
     return compile_task(foon, kit, target, encoding, level, prune, costs, read_rates(rates) if rates else None)
 
@@ -46,14 +60,15 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @kitchen_option
 @encoding_option
 @level_option
+@network_option
 @prune_option
 @costs_option
 @rates_option
 @click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
               default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
-def compile_(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, output_dir) -> None:
+def compile_(paths, goal, goal_file, kitchen, encoding, level, network, prune, costs, rates, output_dir) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
-    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates)
+    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network)
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
     try:

@@ -28,6 +28,10 @@ costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"
                             help="Action costs: 1 per unit, or from motion success rates (needs --rates).")
 rates_option = click.option("--rates", "rates", type=click.Path(path_type=Path), default=None,
                             help="Motion success rates file (motion<TAB>rate).")
+network_option = click.option("--network", type=click.Choice(["reg", "exp", "gen"]), default="reg", show_default=True,
+                              help="reg: the network as read; exp: FOON-EXP (similar objects, threshold 0.89); "
+                                   "gen: FOON-GEN (categories; compile/plan use the lifted encoding whose plans "
+                                   "name kitchen objects). See docs/generalization.md.")
 
 
 def emit(text: str, output: Path | None) -> None:

@@ -23,6 +23,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    network_option,
     paths_argument,
     prune_option,
     rates_option,
@@ -69,6 +70,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @kitchen_option
 @encoding_option
 @level_option
+@network_option
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,
@@ -86,8 +88,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="How to print the task tree.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, encoding, level, planner, planner_cmd, optimal, time_limit, prune,
-          costs, rates, up_validate, fmt, output) -> None:
+def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, planner_cmd, optimal, time_limit,
+          prune, costs, rates, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
@@ -98,13 +100,27 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, planner, planner_cmd
     net = load_network(paths)
     foon = net.at(level)
     kit = load_kitchen(kitchen, net, level)
+    if network == "exp":
+        from ..generalize.network import network_view
+
+        view = network_view(net, network, level, kit)
+        foon, kit = view.foon, view.kitchen
     target = load_goal(goal, goal_file, foon)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
     try:
-        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
-                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                       up_validate=up_validate)
+        if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
+            from ..generalize.categories import load_index
+            from ..generalize.degeneralize import plan_lifted
+            from ..generalize.lifted import check_lifted_options
+
+            check_lifted_options(encoding, costs)
+            outcome = plan_lifted(net.foon, kit, target, load_index(), level, planner=planner,
+                                  planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune)
+        else:
+            outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                           optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                           up_validate=up_validate)
     except ValueError as exc:
         raise FoonInputError("<options>", 0, str(exc)) from None
     timings = {"load": load_s, **outcome.timings}

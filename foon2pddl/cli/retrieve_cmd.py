@@ -16,6 +16,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    network_option,
     output_option,
     paths_argument,
     rates_option,
@@ -28,6 +29,7 @@ from .options import (
 @goal_file_option
 @kitchen_option
 @level_option
+@network_option
 @click.option("--method", type=click.Choice(METHODS), default="complete", show_default=True,
               help="greedy: the seed paper's search; complete: a tree whenever one exists; "
                    "optimal: fewest units; weighted: highest success probability (needs --rates).")
@@ -39,7 +41,8 @@ from .options import (
 @click.option("--node-limit", "node_limit", type=click.IntRange(min=1), default=DEFAULT_NODE_LIMIT,
               show_default=True, help="optimal/weighted: search nodes expanded before returning the best tree so far.")
 @output_option
-def retrieve_(paths, goal, goal_file, kitchen, level, method, rates, fmt, budget, node_limit, output) -> None:
+def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fmt, budget, node_limit,
+              output) -> None:
     """Find the functional units that make the goal from the kitchen, in executable order.
 
     Exit status: 0 a tree was found, 1 the goal cannot be made (the reason goes to stderr),
@@ -49,9 +52,16 @@ def retrieve_(paths, goal, goal_file, kitchen, level, method, rates, fmt, budget
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate)")
     motion_rates = read_rates(rates) if rates else None
     net = load_network(paths)
-    foon = net.at(level)
-    kit = load_kitchen(kitchen, net, level)
-    target = load_goal(goal, goal_file, foon)
+    if network == "reg":
+        foon = net.at(level)
+        kit = load_kitchen(kitchen, net, level)
+        target = load_goal(goal, goal_file, foon)
+    else:
+        from ..generalize.network import network_view
+
+        view = network_view(net, network, level, load_kitchen(kitchen, net, level))
+        foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
+        click.echo(view.note, err=True)
     result = retrieve(foon, kit, target, method, rates=motion_rates, budget=budget, node_limit=node_limit)
     if result.tree is None:
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {result.detail}", err=True)
@@ -60,6 +70,4 @@ def retrieve_(paths, goal, goal_file, kitchen, level, method, rates, fmt, budget
     note = f"{method}: {len(result.tree)} units"
     if result.probability is not None:
         note += f", success probability {result.probability:.4g}"
-    if result.proven_optimal is False:
-        note += ", not proven optimal"
     click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)

@@ -28,7 +28,10 @@ class Record:
     the cells of its (trial, network, solver) batch (a fixpoint, an FD
     translation), counted once per batch in per-trial totals. `units` counts the
     task tree's functional units, `plan_length` the planner's plan steps
-    (auxiliary goal actions included; None for native solvers).
+    (auxiliary goal actions included; None for native solvers). `validated`:
+    the tree or plan passed every check its solver promises (FOON simulation
+    from the kitchen; for the `state` encoding, the plan under the task's own
+    STRIPS semantics); `foon_valid`: the tree passed FOON simulation.
     """
 
     trial: int
@@ -44,6 +47,7 @@ class Record:
     plan_length: int | None = None
     validated: bool | None = None
     proven_optimal: bool | None = None
+    foon_valid: bool | None = None
 
     def __post_init__(self) -> None:
         if self.status not in STATUSES:

@@ -77,15 +77,15 @@ def to_csv(records: Iterable[Record]) -> str:
     phases = sorted({p for r in records for p in r.times})
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["trial", "goal", "network", "solver", "goal_label", "status", "solved", "validated", "units",
-                "plan_length", "proven_optimal", "time_ms", "setup_ms", *(f"{p}_ms" for p in phases), "reason"])
+    w.writerow(["trial", "goal", "network", "solver", "goal_label", "status", "solved", "validated", "foon_valid",
+                "units", "plan_length", "proven_optimal", "time_ms", "setup_ms", *(f"{p}_ms" for p in phases), "reason"])
 
     def opt(v):
         return "" if v is None else v
 
     for r in records:
         w.writerow([r.trial, r.goal, r.network, r.solver, r.goal_label, r.status, r.solved, opt(r.validated),
-                    opt(r.units), opt(r.plan_length), opt(r.proven_optimal), f"{solve_time(r) * 1000:.3f}",
+                    opt(r.foon_valid), opt(r.units), opt(r.plan_length), opt(r.proven_optimal), f"{solve_time(r) * 1000:.3f}",
                     f"{r.setup * 1000:.3f}", *(f"{r.times[p] * 1000:.3f}" if p in r.times else "" for p in phases),
                     r.reason])
     return buf.getvalue()
@@ -357,9 +357,10 @@ def statuses_md(data: ReportData) -> str:
                 count[r.status] += 1
             trees = sum(r.units is not None for r in cells)
             valid = sum(r.validated is True for r in cells)
-            rows.append([s, net_name(n), *(count[st] for st in STATUSES), trees, valid])
-    return md_table(["solver", "network", *STATUSES, "trees returned", "trees validated"], rows,
-                    "ll" + "r" * (len(STATUSES) + 2))
+            foon = sum(r.foon_valid is True for r in cells)
+            rows.append([s, net_name(n), *(count[st] for st in STATUSES), trees, valid, foon])
+    return md_table(["solver", "network", *STATUSES, "trees returned", "validated", "pass FOON simulation"], rows,
+                    "ll" + "r" * (len(STATUSES) + 3))
 
 
 def invalid_trees(data: ReportData) -> list[Record]:

@@ -3,7 +3,7 @@
 The cells (trial, goal, network, solver) not already in the results file are
 grouped into batches, one per (trial, network, solver), so that what a solver
 prepares once (a fixpoint, an FD translation) serves every goal of the batch.
-Batches run in `jobs` worker processes (`concurrent.futures`, longest kinds
+Batches run in `jobs` worker processes (`multiprocessing.Pool`, longest kinds
 first); each worker sends every finished cell back through a queue and the
 main process appends it to the JSONL file at once and advances the progress
 bar (tqdm, on stderr). FD runs each search in its own temporary directory
@@ -19,17 +19,16 @@ import queue as queue_mod
 import sys
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import FoonInputError
 from ..fileio import atomic_write
+from ..inputs import example_path
+from ..kitchen import default_kitchen
 from ..levels import project
 from ..merge import expand_paths, load
 from ..model import Foon
-from ..inputs import example_path
-from ..kitchen import default_kitchen
 from .networks import NETWORKS, NetworkView, build_view
 from .protocol import Protocol, Trial, goal_pool, make_trials
 from .records import Record, append, done_keys, open_for_append, read_records
@@ -158,7 +157,7 @@ def run_batch(batch: Batch, paths: tuple[str, ...], level: int, time_limit: floa
                 outcome = Outcome("error", f"{type(exc).__name__}: {exc}")
         emit(Record(trial.index, g, batch.network, batch.solver, node.describe(), outcome.status, outcome.reason,
                     outcome.times, setup, outcome.units, outcome.plan_length, outcome.validated,
-                    outcome.proven_optimal))
+                    outcome.proven_optimal, outcome.foon_valid))
     return len(batch.goals)
 
 
@@ -238,34 +237,39 @@ def _run_parallel(config: Config, batches: list[Batch], args: tuple, total: int,
         for network in sorted({b.network for b in batches}):
             _view(config.paths, config.protocol.level, network)
     q = ctx.Queue()
-    received = 0
-    with ProcessPoolExecutor(max_workers=config.jobs, mp_context=ctx, initializer=_worker_init,
-                             initargs=(q,)) as pool:
-        futures: list[Future] = [pool.submit(run_batch, b, *args) for b in batches]
+    pool = ctx.Pool(config.jobs, initializer=_worker_init, initargs=(q,))
+    try:
+        pending = [pool.apply_async(run_batch, (b, *args)) for b in batches]
+        received = 0
         idle_since = None
-        try:
-            while received < total:
-                try:
-                    record = q.get(timeout=0.2)
-                except queue_mod.Empty:
-                    for f in futures:
-                        if f.done() and f.exception() is not None:
-                            raise f.exception()
-                    if all(f.done() for f in futures):
-                        idle_since = idle_since or time.monotonic()
-                        if time.monotonic() - idle_since > 10:
-                            raise RuntimeError(f"workers finished but {total - received} results never arrived")
-                    continue
+        while received < total:
+            record = _next(q)
+            if record is not None:
                 sink(record)
                 received += 1
                 bar.update(1)
-        except BaseException:
-            for f in futures:
-                f.cancel()
-            pool.shutdown(wait=False, cancel_futures=True)
-            for p in list(getattr(pool, "_processes", {}).values()):
-                p.terminate()
-            raise
+                continue
+            for job in pending:
+                if job.ready() and not job.successful():
+                    job.get()  # re-raises the worker's exception
+            if all(job.ready() for job in pending):
+                idle_since = idle_since or time.monotonic()
+                if time.monotonic() - idle_since > 10:
+                    raise RuntimeError(f"workers finished but {total - received} results never arrived")
+        pool.close()
+    except BaseException:
+        pool.terminate()  # an interrupt or a failure: stop the workers now; written records stay
+        raise
+    finally:
+        pool.join()
+
+
+def _next(q, timeout: float = 0.2) -> Record | None:
+    """The next record from the workers' queue, or None after `timeout` seconds."""
+    try:
+        return q.get(timeout=timeout)
+    except queue_mod.Empty:
+        return None
 
 
 def run(config: Config, progress: bool = True, fresh: bool = False) -> RunSummary:

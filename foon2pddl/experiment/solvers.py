@@ -38,6 +38,7 @@ class Outcome:
     plan_length: int | None = None
     validated: bool | None = None
     proven_optimal: bool | None = None
+    foon_valid: bool | None = None
 
 
 @dataclass(frozen=True)
@@ -83,8 +84,8 @@ def _native_outcome(result, kitchen_nodes, seconds: float) -> Outcome:
     times["validate"] = time.perf_counter() - t0
     if not check.ok:
         return Outcome("error", "tree does not validate: " + "; ".join(check.problems[:3]), times,
-                       len(result.tree), None, False, result.proven_optimal)
-    return Outcome("solved", result.detail, times, len(result.tree), None, True, result.proven_optimal)
+                       len(result.tree), None, False, result.proven_optimal, False)
+    return Outcome("solved", result.detail, times, len(result.tree), None, True, result.proven_optimal, True)
 
 
 class _Native(Prepared):
@@ -127,9 +128,13 @@ def _plan_outcome(outcome, steps: tuple[str, ...]) -> Outcome:
     units = len(tree) if tree is not None else None
     status = outcome.status  # `error` when a plan was found that does not decode or validate
     validated = None if tree is None else status == "solved"
+    foon_valid = outcome.validation.ok if outcome.validation is not None else None
     if status == "solved":
-        return Outcome("solved", "", times, units, len(steps), validated)
-    return Outcome(status, outcome.message, times, units, len(steps) if steps else None, validated)
+        reason = "" if foon_valid is not False else "tree fails FOON simulation: " + "; ".join(
+            outcome.validation.problems[:2])
+        return Outcome("solved", reason, times, units, len(steps), validated, None, foon_valid)
+    return Outcome(status, outcome.message, times, units, len(steps) if steps else None, validated, None,
+                   foon_valid)
 
 
 class _FdReuse(Prepared):
@@ -197,7 +202,8 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
            lambda s: _FdReuse(s, False), planner=True),
     Solver("fd-tree-opt", "Fast Downward seq-opt-lmcut, tree encoding, one translation per trial",
            lambda s: _FdReuse(s, True), planner=True),
-    Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal",
+    Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
+                       "encoding's STRIPS semantics; FOON simulation reported apart)",
            lambda s: _FdFresh(s, "state"), planner=True),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
            _LiftedGen, networks=("gen",), planner=True),

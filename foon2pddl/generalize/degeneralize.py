@@ -36,6 +36,11 @@ class LiftedOutcome:
     timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
 
     @property
+    def task(self):
+        """The lifted PDDL task (as `pddl.solve.PlanOutcome.task`)."""
+        return self.lifted.task
+
+    @property
     def status(self) -> str:
         """The planner's status, or `error` when its plan does not map back to a valid tree."""
         if self.result.solved and (self.validation is None or not self.validation.ok):
@@ -75,8 +80,8 @@ def plan_tree(lt: LiftedTask, steps: Sequence[str], goal: Goal, kitchen_nodes: f
 
 
 def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
-                planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, time_limit: float | None = None,
-                prune: bool = True, policy: str = "missing") -> LiftedOutcome:
+                planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
+                time_limit: float | None = None, prune: bool = True, policy: str = "missing") -> LiftedOutcome:
     """Encode, plan, ground the plan back to concrete units and validate them against the concrete kitchen."""
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -85,7 +90,8 @@ def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, 
     t0 = time.perf_counter()
     domain, problem = render(lt.task)
     timings["write"] = time.perf_counter() - t0
-    result = run_planner(lt.task, domain, problem, planner=planner, planner_cmd=planner_cmd, time_limit=time_limit)
+    result = run_planner(lt.task, domain, problem, planner=planner, planner_cmd=planner_cmd, optimal=optimal,
+                         time_limit=time_limit)
     timings.update({k: v for k, v in result.timings.items() if k in ("translate", "search")})
     if not result.solved:
         return LiftedOutcome(lt, result, timings=timings)

@@ -9,14 +9,18 @@ concrete and only its *parameters* are generalized:
   PDDL gives a type one parent, so an object listed in several categories is
   declared with its single chosen category (`CategoryIndex.choose`: the most
   specific, then file order); it is not also an instance of the others.
-  Objects in no category are of type `object`.
+  Objects in no category are of type `kitchen-object`, the root of the category types.
 * **Objects.** Every object label of the network and the kitchen is a PDDL
   object of its type; labels an action names as constants are domain constants.
 * **Actions.** A functional unit becomes an action with one parameter per
   categorized object among its *inputs* (node labels, related objects and
   ingredients of input nodes), typed with that object's category; objects that
   only appear among its outputs (what it makes: `lemon juice`) stay constants.
-  Units equal up to those parameters are one action (`lift`).
+  Units equal up to those parameters are one action (`lift`). Which objects
+  become parameters is a policy (`generalizer`): by default (`missing`) those the
+  recipes take from the kitchen and the kitchen lacks (a `lemon` when it has a
+  `lime`); `all` parameterizes every categorized input object, which FD's
+  translator cannot ground on the universal FOON in minutes.
 * **Facts.** Node identity is kept: a node is one atom whose predicate encodes
   its *shape* (its states with the objects they mention replaced by argument
   positions) and whose arguments are the node's object then the objects its
@@ -53,6 +57,10 @@ from ..pddl.task import Action, Atom, PlanningTask, Predicate
 from ..retrieval.reachability import UNREACHED, reachable
 from .categories import CategoryIndex
 from .substitute import substitute_node, substitute_unit, unit_labels
+
+#: The root of the category types: objects in no category have it, predicates take it (some PDDL
+#: parsers reject `object` written out as a parameter type).
+ROOT_TYPE = "kitchen-object"
 
 #: Most atoms written for one kitchen node or goal candidate (orderings of same-category objects).
 MAX_REPRESENTATIONS = 24
@@ -282,11 +290,12 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
 
     table = NameTable()
     table.reserve(GOAL_REACHED, "goal reached")
+    table.reserve(ROOT_TYPE, "any kitchen object")
     types: dict[str, str] = {}  # category -> type name
 
     def type_of(cat: str | None) -> str:
         if cat is None:
-            return "object"
+            return ROOT_TYPE
         if cat not in types:
             for c in (*reversed(index.ancestors(cat)), cat):
                 if c not in types:
@@ -303,6 +312,11 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
             shape_names[shape] = table.name(shape_label(shape), key=("shape", shape))
         return shape_names[shape]
 
+    def atom(node: ObjectNode, var: dict[str, str]) -> Atom:
+        """The atom of a unit's node: parameters for the labels in `var`, constants for the others."""
+        shape, labels = node_atom_labels(node, ordering)
+        return Atom(predicate(shape), tuple(var.get(x) or obj(x) for x in labels))
+
     actions: list[Action] = []
     constants: set[str] = set()
     pre_shapes: set[Shape] = set()
@@ -311,14 +325,9 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         var = {label: "?" + vars_.name(f"{cat} {k}", key=label)
                for k, (label, cat) in enumerate(lu.params, start=1)}
         constants |= lu.constants
-
-        def atom(node: ObjectNode) -> Atom:
-            shape, labels = node_atom_labels(node, ordering)
-            return Atom(predicate(shape), tuple(var.get(x) or obj(x) for x in labels))
-
-        pre = tuple(dict.fromkeys(atom(n) for n in lu.unit.inputs))
+        pre = tuple(dict.fromkeys(atom(n, var) for n in lu.unit.inputs))
         pre_shapes.update(node_atom_labels(n, ordering)[0] for n in lu.unit.inputs)
-        add = tuple(dict.fromkeys(atom(n) for n in lu.unit.outputs))
+        add = tuple(dict.fromkeys(atom(n, var) for n in lu.unit.outputs))
         actions.append(Action(
             table.name(f"{lu.unit.motion.label} g{i}", key=("unit", i)), pre, add,
             params=tuple((var[label], type_of(cat)) for label, cat in lu.params),
@@ -340,7 +349,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     labels = {x for lu in lifted for x in unit_labels(lu.unit)}
     labels |= {x for n in (*kitchen_nodes, *candidates) for x in (n.label, *mentioned(n))}
     declared = {label: (obj(label), type_of(index.choose(label))) for label in sorted(labels)}
-    predicates = [Predicate(name, tuple((f"?x{k}", "object") for k in range(shape[0])), comment=shape_label(shape))
+    predicates = [Predicate(name, tuple((f"?x{k}", ROOT_TYPE) for k in range(shape[0])), comment=shape_label(shape))
                   for shape, name in sorted(shape_names.items(), key=lambda x: x[1])]
     if len(atoms) != 1:
         predicates.insert(0, Predicate(GOAL_REACHED, comment="a goal candidate was made"))
@@ -353,8 +362,8 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         actions=tuple(actions),
         init=tuple(init),
         goal=goal_atoms,
-        types=tuple((name, types[index.get(cat).parent] if index.get(cat).parent else "object")
-                    for cat, name in types.items()),
+        types=((ROOT_TYPE, "object"),) + tuple((name, types[index.get(cat).parent] if index.get(cat).parent
+                                                 else ROOT_TYPE) for cat, name in types.items()),
         objects=tuple(v for label, v in declared.items() if label not in constants),
         constants=tuple(v for label, v in declared.items() if label in constants),
         units=tuple(lu.unit for lu in lifted),
@@ -379,3 +388,13 @@ def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> Fun
         return lu.unit
     note = "gen: " + ", ".join(f"{k} -> {v}" for k, v in sorted(changed.items()))
     return substitute_unit(lu.unit, binding, note=note)
+
+
+def check_lifted_options(encoding: str, costs: str | None) -> None:
+    """The lifted encoding is its own encoding, without action costs: reject options that would be ignored."""
+    from ..errors import FoonInputError
+
+    if encoding != "tree":
+        raise FoonInputError("<options>", 0, "--network gen compiles the lifted encoding; drop --encoding")
+    if costs is not None:
+        raise FoonInputError("<options>", 0, "--network gen does not support --costs")

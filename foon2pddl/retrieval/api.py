@@ -11,6 +11,7 @@ from ..kitchen import Kitchen
 from ..model import Foon, ObjectNode
 from .complete import complete
 from .greedy import DEFAULT_BUDGET, greedy
+from .index import index_of
 from .optimal import DEFAULT_NODE_LIMIT, optimal
 from .rates import Rates
 from .result import METHODS, Retrieval
@@ -40,6 +41,11 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
     """
     if method not in METHODS:
         raise ValueError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
+    known = index_of(foon).node_id
+    stray = [c for c in goal.candidates if c not in known]
+    if stray:
+        raise ValueError(f"goal candidate {stray[0].describe()!r} is not a node of the network "
+                         f"(goal resolved at level {goal.level}, network at level {foon.level}?)")
     nodes = kitchen_nodes(kitchen, foon.level)
     if method == "weighted" and rates is None:
         rates = Rates()

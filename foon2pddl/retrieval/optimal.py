@@ -18,12 +18,12 @@ no solution; each branch fixes a different maker for the chosen node, so no
 partial solution is generated twice. Only units the fixpoint can fire and that
 lie backwards from the goal are considered.
 
-Bound. g = cost of S; h = the largest h_max cost, with the units of S free,
-of an open node (the cost of the dearest unit chain from the kitchen that
-makes it): every completion has to pay at least that, so g + h is admissible.
-A branch is cut when g + h cannot beat the best tree found so far. The first
-incumbent is the cheaper of the `complete` and `greedy` trees, so the answer
-is never worse than theirs.
+Bound. g = cost of S; h = LM-cut (`lmcut.py`) of making the open nodes with
+the units of S free, a relaxation (commitments and cycles ignored), hence
+admissible. A branch is cut when g + h cannot beat the best tree found so
+far; a partial solution is bounded when taken from the stack and its children
+inherit the bound until they branch. The first incumbent is the cheaper of
+the `complete` and `greedy` trees, so the answer is never worse than theirs.
 
 Complexity. Finding a cheapest delete-free plan is NP-hard (minimum-cost
 relaxed planning; set cover reduces to it: one unit per set, making all of its
@@ -33,10 +33,10 @@ when it is hit the best tree found so far is returned with
 `proven_optimal=False` (there always is one, since the fixpoint is run first
 and unreachable goals are answered `unreachable` without search).
 
-Ties between equally good trees go to the first found: makers are tried
-cheapest first (cost plus the static h_max of their inputs), then in unit
-content order; candidates in order of their static cost, then sorted order.
-Costs are compared with a tolerance of 1e-9.
+Ties between equally good trees go to the first found: makers already chosen
+first, then by their cost plus the static h_max of the nodes they open, then
+in unit content order; candidates in order of their static h_max cost, then
+sorted. Costs are compared with a tolerance of 1e-9.
 """
 
 from __future__ import annotations
@@ -197,12 +197,15 @@ class _Search:
     def _dfs(self, goal: int) -> None:
         """Depth-first branch and bound from the partial solution 'make `goal`'.
 
-        Children are bounded when generated (LM-cut) and tried best bound first
-        (ties: unit content order); a node with a single possible maker is
-        committed at once without computing a bound (forced chains are common).
+        A partial solution is bounded (LM-cut) when it is taken from the stack and
+        has more than one way on; a child inherits its parent's bound until then,
+        so a branch is often cut without bounding its children one by one. Children
+        are tried cheapest first by their cost plus the static h_max of the nodes
+        they open (ties: unit content order); a node with a single possible maker
+        is committed at once (forced chains are common).
         """
-        rank, lmcut = self.ix.rank, self.cone.lmcut
-        # frame: (f, g, chosen units, commitments, open nodes)
+        rank, lmcut, static = self.ix.rank, self.cone.lmcut, self.static
+        # frame: (lower bound f, g, chosen units, commitments, open nodes)
         stack = [(0.0, 0.0, frozenset(), {}, frozenset((goal,)))]
         while stack:
             f, g, chosen, commit, open_nodes = stack.pop()
@@ -218,16 +221,18 @@ class _Search:
                     return
                 self.expanded += 1
                 kids = list(self._children(g, chosen, commit, open_nodes))
-                if len(kids) == 1:  # forced: no bound needed to choose
+                if len(kids) == 1:  # forced: the parent's bound still holds
                     g, chosen, commit, open_nodes = kids[0][1]
                     f = max(f, g)
                     continue
-                scored = []
+                room = self.best_cost - EPS - g
+                f = max(f, g + lmcut(chosen, open_nodes, room))
+                if f >= self.best_cost - EPS:
+                    break
+                order = []
                 for u, (g2, ch2, co2, op2) in kids:
-                    room = self.best_cost - EPS - g2
-                    h = lmcut(ch2, op2, room) if room > 0 else math.inf
-                    if h < room:
-                        scored.append(((g2 + h, rank[u]), (g2 + h, g2, ch2, co2, op2)))
-                scored.sort(key=lambda c: c[0], reverse=True)
-                stack.extend(frame for _, frame in scored)
+                    est = g2 + max((static.get(i, math.inf) for i in op2 - open_nodes), default=0.0)
+                    order.append(((0 if u in chosen else 1, est, rank[u]), (max(f, g2), g2, ch2, co2, op2)))
+                order.sort(key=lambda c: c[0], reverse=True)
+                stack.extend(frame for _, frame in order)
                 break

@@ -1,0 +1,190 @@
+"""The experiment: seeded protocol, records, resumable runs, reports (on the embedded example network)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.cli import main
+from foon2pddl.experiment import runner
+from foon2pddl.experiment.protocol import Protocol, derive_seed, goal_pool, make_trials, sample_kitchen
+from foon2pddl.experiment.records import Record, open_for_append, read_records
+from foon2pddl.experiment.report import ReportData, agreement, agreement_md, to_csv
+from foon2pddl.kitchen import default_kitchen
+
+NATIVE = ("native-greedy", "native-complete", "native-optimal")
+
+
+@pytest.fixture(scope="module")
+def reg(example):
+    return example.foon
+
+
+# -- protocol ------------------------------------------------------------------------------------
+
+def test_trials_are_reproducible_and_seeds_recorded(reg):
+    a = make_trials(reg, Protocol(trials=3, goals=8, seed=7))
+    b = make_trials(reg, Protocol(trials=3, goals=8, seed=7))
+    assert [(t.kitchen, t.goals) for t in a] == [(t.kitchen, t.goals) for t in b]
+    assert [t.kitchen_seed for t in a] == [derive_seed(7, i, "kitchen") for i in (1, 2, 3)]
+    other = make_trials(reg, Protocol(trials=3, goals=8, seed=8))
+    assert [t.goals for t in other] != [t.goals for t in a]
+    assert len({t.goals for t in a}) == 3  # trials differ from each other
+
+
+def test_goals_are_produced_non_kitchen_nodes_and_extend_with_more_goals(reg):
+    full = default_kitchen(reg)
+    few = make_trials(reg, Protocol(trials=2, goals=5))
+    many = make_trials(reg, Protocol(trials=2, goals=12))
+    for f, m in zip(few, many):
+        assert m.goals[:5] == f.goals
+        assert len(set(m.goals)) == 12
+        assert all(g in reg.producers and g not in full.nodes for g in m.goals)
+        assert m.kitchen == f.kitchen
+    assert set(goal_pool(reg)) == {n for n in reg.producers if n not in full.nodes}
+
+
+@settings(max_examples=30, deadline=None)
+@given(small=st.floats(0.05, 1.0), large=st.floats(0.05, 1.0), seed=st.integers(0, 2**32 - 1))
+def test_kitchens_are_nested_subsets_of_the_default_kitchen(reg, small, large, seed):
+    small, large = sorted((small, large))
+    full = default_kitchen(reg)
+    a, b = sample_kitchen(full, small, seed), sample_kitchen(full, large, seed)
+    assert a.nodes <= b.nodes <= full.nodes
+    assert len(b) == max(1, round(large * len(full)))
+
+
+# -- records -------------------------------------------------------------------------------------
+
+def _record(trial=1, goal=1, network="reg", solver="native-complete", status="solved", **kw) -> Record:
+    kw.setdefault("validated", True if status == "solved" else None)
+    kw.setdefault("units", 2 if status == "solved" else None)
+    return Record(trial, goal, network, solver, f"goal {goal}", status, **kw)
+
+
+def test_records_round_trip_and_truncated_last_line_is_dropped(tmp_path):
+    path = tmp_path / "r.jsonl"
+    recs = [_record(goal=g, times={"retrieve": 0.001 * g}) for g in (1, 2, 3)]
+    with open_for_append(path) as fh:
+        for r in recs:
+            fh.write(r.to_json() + "\n")
+    text = path.read_text()
+    path.write_text(text + recs[0].to_json()[:25])  # a write cut short
+    assert list(read_records(path).values()) == recs
+    with open_for_append(path) as fh:  # cuts the partial line before appending
+        fh.write(_record(goal=4).to_json() + "\n")
+    assert sorted(k[1] for k in read_records(path)) == [1, 2, 3, 4]
+    path.write_text("garbage\n" + text)
+    with pytest.raises(ValueError, match="r.jsonl:1"):
+        read_records(path)
+
+
+# -- runs ----------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def full_run(tmp_path_factory):
+    """All networks, native solvers and FD tree, 2 trials x 6 goals, 2 worker processes."""
+    out = tmp_path_factory.mktemp("experiment")
+    result = CliRunner().invoke(main, [
+        "experiment", "--trials", "2", "--goals", "6", "--solvers", ",".join((*NATIVE, "fd-tree")),
+        "--jobs", "2", "-o", str(out), "--sensitivity", "0.8,1", "--no-progress"])
+    return out, result
+
+
+def test_run_writes_every_output(full_run):
+    out, result = full_run
+    assert result.exit_code == 0, result.output
+    records = read_records(out / "results.jsonl")
+    assert len(records) == 2 * 6 * 3 * 4
+    assert {(k[2], k[3]) for k in records} == {(n, s) for n in ("reg", "exp", "gen") for s in (*NATIVE, "fd-tree")}
+    csv_lines = (out / "results.csv").read_text().splitlines()
+    assert len(csv_lines) == 1 + len(records)
+    for png in ("successes.png", "times.png"):
+        assert (out / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    report = (out / "report.md").read_text()
+    assert "Agreement on all 36 cells" in report
+    assert "](successes.png)" in report and "## Sensitivity" in report
+    protocol = json.loads((out / "protocol.json").read_text())
+    assert [t["kitchen_seed"] for t in protocol["per_trial"]] == [derive_seed(0, i, "kitchen") for i in (1, 2)]
+
+
+def test_complete_and_fd_tree_agree_and_every_tree_validates(full_run):
+    out, _ = full_run
+    records = read_records(out / "results.jsonl")
+    solved = 0
+    for (trial, goal, network, solver), r in records.items():
+        assert r.status in ("solved", "unsolvable"), r
+        if r.units is not None:
+            assert r.validated and r.foon_valid, r
+        if solver == "fd-tree":
+            assert r.solved == records[(trial, goal, network, "native-complete")].solved, r
+            solved += r.solved
+    assert solved > 0  # the comparison is not vacuous
+
+
+def test_resume_after_truncation_redoes_nothing_finished(reg, tmp_path):
+    config = runner.Config((), Protocol(trials=2, goals=5), ("reg", "gen"), NATIVE, tmp_path)
+    first = runner.run(config, progress=False)
+    assert first.ran == 2 * 5 * 2 * 3 and first.skipped == 0
+    path = config.results_path
+    lines = path.read_text().splitlines(keepends=True)
+    kept = lines[:17]
+    path.write_text("".join(kept) + lines[17][:30])  # killed while writing line 18
+    again = runner.run(config, progress=False)
+    assert again.ran == len(lines) - 17 and again.skipped == 17
+    assert path.read_text().splitlines(keepends=True)[:17] == kept
+    assert {r.key: r.solved for r in again.records} == {r.key: r.solved for r in first.records}
+    assert runner.run(config, progress=False).ran == 0
+
+
+def test_interrupted_run_resumes(tmp_path, monkeypatch):
+    config = runner.Config((), Protocol(trials=2, goals=4), ("reg",), NATIVE, tmp_path)
+    real_append, calls = runner.append, []
+
+    def append_then_stop(fh, record):
+        if len(calls) == 9:
+            raise KeyboardInterrupt
+        calls.append(record.key)
+        real_append(fh, record)
+
+    monkeypatch.setattr(runner, "append", append_then_stop)
+    with pytest.raises(KeyboardInterrupt):
+        runner.run(config, progress=False)
+    monkeypatch.setattr(runner, "append", real_append)
+    assert set(read_records(config.results_path)) == set(calls)
+    again = runner.run(config, progress=False)
+    assert again.ran == 2 * 4 * 3 - 9 and len(again.records) == 24
+
+
+def test_results_of_another_protocol_are_refused(tmp_path):
+    args = ["experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-complete",
+            "-o", str(tmp_path), "--sensitivity", "none", "--no-progress"]
+    assert CliRunner().invoke(main, args).exit_code == 0
+    result = CliRunner().invoke(main, [*args, "--seed", "5"])
+    assert result.exit_code == 2 and "another protocol" in result.output
+    assert CliRunner().invoke(main, [*args, "--seed", "5", "--fresh"]).exit_code == 0
+
+
+def test_bad_options_exit_2():
+    result = CliRunner().invoke(main, ["experiment", "--solvers", "native-greedy,nope"])
+    assert result.exit_code == 2 and "nope" in result.output
+    result = CliRunner().invoke(main, ["experiment", "--networks", "reg,xyz"])
+    assert result.exit_code == 2 and "xyz" in result.output
+
+
+# -- report --------------------------------------------------------------------------------------
+
+def test_disagreement_is_flagged():
+    trials = ({"trial": 1, "goals": ["a", "b"], "kitchen_nodes": 3, "kitchen_seed": 1, "goal_seed": 2},)
+    recs = (_record(goal=1), _record(goal=2, status="unsolvable"),
+            _record(goal=1, solver="fd-tree"), _record(goal=2, solver="fd-tree"))
+    data = ReportData(recs, ("reg",), ("native-complete", "fd-tree"), trials)
+    ag = agreement(data)
+    assert ag.compared == 2 and [(a.goal, b.goal) for a, b in ag.disagreements] == [(2, 2)]
+    assert "DISAGREEMENT: 1 of 2 cells" in agreement_md(data)
+    assert to_csv(recs).count("\n") == 5

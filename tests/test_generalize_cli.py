@@ -1,0 +1,90 @@
+"""CLI: similarity, expand, generalize, and --network reg|exp|gen on retrieve, compile and plan."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.parser import parse_file
+
+
+@pytest.fixture(scope="module")
+def run():
+    runner = CliRunner()
+    return lambda *args: runner.invoke(main, list(args))
+
+
+def test_similarity_floors(run):
+    high = run("similarity", "onion", "chive")
+    low = run("similarity", "onion", "knife")
+    assert high.exit_code == 0 and float(high.stdout) >= 0.89
+    assert low.exit_code == 0 and float(low.stdout) < 0.5
+
+
+def test_similarity_matrix_and_pairs(run):
+    matrix = json.loads(run("similarity", "lemon", "lime", "knife", "--json").stdout)
+    assert matrix["labels"] == ["lemon", "lime", "knife"]
+    rows = matrix["matrix"]
+    assert all(rows[i][j] == rows[j][i] for i in range(3) for j in range(3)) and rows[0][0] == 1.0
+    pairs = run("similarity", "--pairs", "lemon", "lime", "onion", "knife")
+    assert pairs.exit_code == 0 and len(pairs.stdout.splitlines()) == 2
+    odd = run("similarity", "--pairs", "lemon", "lime", "onion")
+    assert odd.exit_code == 2 and "even number" in odd.stderr
+
+
+def test_expand_writes_a_readable_network_with_marked_copies(run, tmp_path):
+    out = tmp_path / "exp.foon"
+    r = run("expand", "--provenance", "-o", str(out))
+    assert r.exit_code == 0, r.stderr
+    assert "| EXP | 3 |" in r.stderr
+    text = out.read_text()
+    assert "(expanded from lemon)" in text
+    parsed = parse_file(out).foon
+    assert any(n.label == "lime" and any(s.label == "squeezed" for s in n.states)
+               for u in parsed.units for n in u.outputs)
+    guard = run("expand", "--max-units", "10", "-o", str(tmp_path / "no.foon"))
+    assert guard.exit_code == 2 and "exceed 10 units" in guard.stderr
+    assert not (tmp_path / "no.foon").exists()
+
+
+def test_generalize_writes_category_network(run, tmp_path):
+    out = tmp_path / "gen.foon"
+    r = run("generalize", "-o", str(out))
+    assert r.exit_code == 0, r.stderr
+    labels = {n.label for u in parse_file(out).foon.units for n in u.inputs}
+    assert "citrus fruits" in labels and "lemon" not in labels
+
+
+def test_network_option_on_retrieve(run):
+    assert run("retrieve", "--goal", "lemonade").exit_code == 1
+    exp = run("retrieve", "--goal", "lemonade", "--network", "exp")
+    assert exp.exit_code == 0 and "lime (whole)" in exp.stdout
+    gen = run("retrieve", "--goal", "lemonade", "--network", "gen")
+    assert gen.exit_code == 0 and "citrus fruits (whole)" in gen.stdout
+
+
+def test_network_option_on_plan(run):
+    assert run("plan", "--goal", "lemonade").exit_code == 1
+    gen = run("plan", "--goal", "lemonade", "--network", "gen")
+    assert gen.exit_code == 0, gen.stderr
+    assert "lime (whole)" in gen.stdout and "valid" in gen.stderr
+    exp = run("plan", "--goal", "lemonade", "--network", "exp")
+    assert exp.exit_code == 0 and "lime" in exp.stdout
+    bad = run("plan", "--goal", "lemonade", "--network", "gen", "--encoding", "state")
+    assert bad.exit_code == 2 and "lifted" in bad.stderr
+
+
+def test_compile_gen_writes_typed_pddl_that_parses(run, tmp_path):
+    from pddl import parse_domain, parse_problem
+
+    r = run("compile", "--goal", "lemonade", "--network", "gen", "-o", str(tmp_path))
+    assert r.exit_code == 0, r.stderr
+    domain = parse_domain(tmp_path / "domain.pddl")
+    problem = parse_problem(tmp_path / "problem.pddl")
+    assert any(t == "citrus_fruits" for t in domain.types)
+    assert any(a.parameters for a in domain.actions)
+    declared = {o.name: o.type_tag for o in (*problem.objects, *domain.constants)}
+    assert declared["lime"] == declared["lemon"] == "citrus_fruits"

@@ -1,0 +1,101 @@
+"""Lifted FOON-GEN PDDL: atoms stand for nodes, plans ground to concrete kitchen objects and validate."""
+
+from __future__ import annotations
+
+import pytest
+from foon_strategies import nodes
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.generalize.categories import shipped_index
+from foon2pddl.generalize.degeneralize import plan_lifted, plan_units
+from foon2pddl.generalize.lifted import (
+    Ordering,
+    encode_lifted,
+    generalizer,
+    lift,
+    node_atom_labels,
+    node_of,
+    representations,
+)
+from foon2pddl.goals import Goal, parse_goal_spec, resolve_goal, spec_of_node
+from foon2pddl.inputs import example_path
+from foon2pddl.kitchen import read_kitchen
+from foon2pddl.pddl.decode import PlanDecodeError
+from foon2pddl.tasktree import validate
+
+INDEX = shipped_index()
+CATEGORIZED = sorted({m for c in INDEX.categories for m in c.members})
+
+
+@pytest.fixture(scope="module")
+def kitchen():
+    return read_kitchen(example_path("example_kitchen.txt"))
+
+
+def test_lemonade_plan_grounds_lime_and_validates(example, kitchen):
+    goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
+    out = plan_lifted(example.foon, kitchen, goal, INDEX, time_limit=60)
+    assert out.status == "solved", out.message
+    tree = out.tree
+    assert validate(tree, kitchen.nodes).ok
+    labels = {n.label for u in tree.units for n in u.inputs}
+    assert "lime" in labels and "lemon" not in labels
+    assert tree.goal.label == "lemonade"
+    grounded = [u for u in tree.units if u.sources and u.sources[0].expanded_from]
+    assert grounded and all("lemon -> lime" in u.sources[0].expanded_from for u in grounded)
+
+
+def test_every_example_dish_plan_maps_back_to_a_valid_tree(example, kitchen):
+    dishes = sorted({n for u in example.foon.units for n in u.outputs if n.dish is not None})
+    solved = 0
+    for d in dishes:
+        out = plan_lifted(example.foon, kitchen, Goal(spec_of_node(d), (d,), 3), INDEX, time_limit=60)
+        assert out.status in ("solved", "unsolvable"), (d.describe(), out.message)
+        if out.status == "solved":
+            solved += 1
+            assert validate(out.tree, kitchen.nodes).ok and out.tree.goal == d
+    assert solved >= 2
+
+
+@settings(max_examples=80, deadline=None)
+@given(nodes(pool=st.sampled_from(CATEGORIZED[:40] + ["zork", "lemonade"])))
+def test_atoms_reconstruct_their_node(node):
+    ordering = Ordering(INDEX)
+    shape, labels = node_atom_labels(node, ordering)
+    assert node_of(shape, labels) == node
+    reps = representations(node, ordering, {shape})
+    assert (shape, labels) in reps
+    assert all(node_of(s, args) == node for s, args in reps)
+
+
+def test_lifting_parameterizes_missing_objects_only(example, kitchen):
+    have = kitchen.nodes
+    lifted = lift(example.foon, INDEX, generalizer("missing", example.foon, have))
+    params = {label for lu in lifted for label, _ in lu.params}
+    assert "lemon" in params  # the recipes take it from the kitchen, which has none
+    assert not params & {n.label for n in have}
+    every = lift(example.foon, INDEX)
+    assert len(every) < len(example.foon.units)  # units equal up to parameters become one action
+    assert {label for lu in every for label, _ in lu.params} > params
+
+
+def test_lifted_task_types_and_objects(example, kitchen):
+    goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
+    lt = encode_lifted(example.foon, kitchen, goal, INDEX)
+    types = dict(lt.task.types)
+    assert types["citrus_fruits"] == "fruits" and types["fruits"] == "kitchen-object"
+    declared = dict(lt.task.objects + lt.task.constants)
+    assert declared["lime"] == "citrus_fruits" and declared["lemon"] == "citrus_fruits"
+    squeeze = next(a for a in lt.task.actions if a.name.startswith("squeeze"))
+    assert [t for _, t in squeeze.params] == ["citrus_fruits"]  # only the missing lemon is a parameter
+
+
+def test_bad_plan_step_is_a_decode_error(example, kitchen):
+    goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
+    lt = encode_lifted(example.foon, kitchen, goal, INDEX)
+    with pytest.raises(PlanDecodeError):
+        plan_units(lt, ["no-such-action lime"])
+    squeeze = next(a for a in lt.task.actions if a.name.startswith("squeeze"))
+    with pytest.raises(PlanDecodeError):
+        plan_units(lt, [squeeze.name])  # missing arguments
