@@ -61,10 +61,12 @@ class ObjectNode:
     def __hash__(self) -> int:
         # Cached: nodes are hashed constantly (sets, dict keys, unit keys). Same value as
         # the generated dataclass hash; dropped when pickling (string hashes differ per process).
+        # Set as an attribute, not through `self.__dict__`, which would materialize a dict per node.
         try:
-            return self.__dict__["_hash"]
-        except KeyError:
-            value = self.__dict__["_hash"] = hash((self.label, self.states))
+            return self._hash
+        except AttributeError:
+            value = hash((self.label, self.states))
+            object.__setattr__(self, "_hash", value)
             return value
 
     def __getstate__(self) -> dict:
@@ -131,10 +133,15 @@ class FunctionalUnit:
     outputs: tuple[ObjectNode, ...]
     sources: tuple[Source, ...] = field(default=(), compare=False)
 
-    @cached_property
+    @property
     def key(self) -> tuple[str, frozenset[ObjectNode], frozenset[ObjectNode]]:
         """Duplicate-detection key: motion label with the sets of input and output nodes."""
-        return (self.motion.label, frozenset(self.inputs), frozenset(self.outputs))
+        try:  # cached as an attribute (a cached_property would materialize a dict per unit)
+            return self._key
+        except AttributeError:
+            value = (self.motion.label, frozenset(self.inputs), frozenset(self.outputs))
+            object.__setattr__(self, "_key", value)
+            return value
 
     @property
     def source(self) -> Source | None:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import multiprocessing
 import queue as queue_mod
+import signal
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -35,6 +36,8 @@ from .records import Record, append, done_keys, open_for_append, read_records
 from .solvers import DEFAULT_TIME_LIMIT, Outcome, Setting, get_solver
 
 RESULTS = "results.jsonl"
+#: Longest reason kept in a record (unreachable goals can list many missing nodes).
+REASON_MAX = 300
 PROTOCOL = "protocol.json"
 
 #: Batches of slower solvers and larger networks are started first (better load balance).
@@ -125,6 +128,8 @@ def _view(paths: tuple[str, ...], level: int, name: str) -> NetworkView:
 
 
 def _worker_init(q) -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the main process's to handle
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # the main process stops workers with SIGTERM
     _WORKER["queue"] = q
 
 
@@ -155,7 +160,8 @@ def run_batch(batch: Batch, paths: tuple[str, ...], level: int, time_limit: floa
                 outcome = prepared.solve(node)
             except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
                 outcome = Outcome("error", f"{type(exc).__name__}: {exc}")
-        emit(Record(trial.index, g, batch.network, batch.solver, node.describe(), outcome.status, outcome.reason,
+        reason = outcome.reason if len(outcome.reason) <= REASON_MAX else outcome.reason[:REASON_MAX - 3] + "..."
+        emit(Record(trial.index, g, batch.network, batch.solver, node.describe(), outcome.status, reason,
                     outcome.times, setup, outcome.units, outcome.plan_length, outcome.validated,
                     outcome.proven_optimal, outcome.foon_valid))
     return len(batch.goals)
@@ -217,6 +223,7 @@ def run_cells(config: Config, trials: tuple[Trial, ...], batches: list[Batch],
 
     total = sum(len(b.goals) for b in batches)
     args = (config.paths, config.protocol.level, config.time_limit)
+    stop = _interrupt_on_sigterm()
     bar = tqdm(total=total, unit="cell", desc="experiment", file=sys.stderr, disable=not progress or total == 0,
                dynamic_ncols=True, smoothing=0.05)
     try:
@@ -227,6 +234,21 @@ def run_cells(config: Config, trials: tuple[Trial, ...], batches: list[Batch],
         _run_parallel(config, batches, args, total, sink, bar)
     finally:
         bar.close()
+        stop()
+
+
+def _interrupt_on_sigterm() -> Callable[[], None]:
+    """Make SIGTERM interrupt the run like Ctrl-C (workers stopped, records kept); returns the undo."""
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    return lambda: signal.signal(signal.SIGTERM, previous)
 
 
 def _run_parallel(config: Config, batches: list[Batch], args: tuple, total: int,

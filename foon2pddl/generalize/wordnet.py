@@ -159,7 +159,14 @@ def reader():
     root, _ = locate()
     if str(root) not in [str(p) for p in nltk.data.path]:
         nltk.data.path.append(str(root))  # authorizes the root in NLTK's path sandbox
+    class Reader(WordNetCorpusReader):
+        def map_wn(self, version="wordnet"):
+            # NLTK maps the synsets of WordNet 3.0 onto the loaded WordNet for its multilingual
+            # data, by parsing index.sense twice: more than half of opening, and useless here
+            # (no multilingual data is loaded, and the map is the identity for WordNet 3.0).
+            return None
+
     pointer = nltk.data.find("corpora/wordnet")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # "multilingual functions are not available"
-        return WordNetCorpusReader(pointer, None)
+        return Reader(pointer, None)
