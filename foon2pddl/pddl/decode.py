@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..goals import Goal
 from ..levels import project_node
 from ..model import FunctionalUnit, ObjectNode
-from ..tasktree import TaskTree, Validation, validate
+from ..tasktree import TaskTree, Validation, justify, validate
 from .planners.result import step_action
 from .task import Atom, PlanningTask
 
@@ -90,9 +90,17 @@ def goal_node(goal: Goal, level: int, kitchen_nodes: Iterable[ObjectNode],
 
 
 def to_tree(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
-    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for an unknown action."""
+    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for an unknown action.
+
+    For encodings with FOON's semantics, steps the goal does not need are dropped
+    (`tasktree.justify`); the raw plan is still checked step by step in `check`.
+    """
+    kitchen_nodes = frozenset(kitchen_nodes)
     units = plan_units(task, steps)
-    return TaskTree(units, goal_node(goal, task.level, kitchen_nodes, units), task.level)
+    target = goal_node(goal, task.level, kitchen_nodes, units)
+    if task.encoding not in NON_FOON_ENCODINGS:
+        units = justify(units, kitchen_nodes, target)
+    return TaskTree(units, target, task.level)
 
 
 def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask, steps: Sequence[str], *,
