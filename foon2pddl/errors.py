@@ -16,8 +16,8 @@ class FoonError(Exception):
         super().__init__(self.location() + ": " + message)
 
     def location(self) -> str:
-        """`path:line`, or just `path` when the problem has no line."""
-        return f"{self.path}:{self.line}" if self.line else self.path
+        """`path:line`; line 0 when the problem is not on a line (a directory, a missing file)."""
+        return f"{self.path}:{self.line}"
 
     def __str__(self) -> str:
         text = f"{self.location()}: {self.message}"

@@ -347,9 +347,9 @@ def _check_one_error(result, path, line):
     assert result.exit_code == 2
     assert "Traceback" not in result.output + result.stderr
     assert result.stdout == ""
-    located = [r for r in result.stderr.splitlines() if re.match(r"\S.*?(:\d+)?: error: ", r)]
+    located = [r for r in result.stderr.splitlines() if re.match(r"\S.*?:\d+: error: ", r)]
     assert len(located) == 1, result.stderr
-    prefix = f"{path}:{line}: error: " if line is not None else f"{path}: error: "
+    prefix = f"{path}:{line if line is not None else 0}: error: "
     assert located[0].startswith(prefix), (located, prefix)
 
 

@@ -221,7 +221,7 @@ def table3_per_goal(data: ReportData) -> str:
 class Agreement:
     """Native complete against FD `tree`, over the cells both ran."""
 
-    rows: tuple[tuple, ...]  # (network, trial, both, neither, native only, fd only)
+    rows: tuple[tuple, ...]  # (network, cells, both, neither, a only, b only)
     disagreements: tuple[tuple[Record, Record], ...]  # (native, fd) pairs that differ
     compared: int
 
@@ -233,8 +233,8 @@ def agreement(data: ReportData, a: str = REFERENCE, b: str = FD_TREE) -> Agreeme
     index = data.by_key()
     rows, diffs, compared = [], [], 0
     for n in data.networks:
+        counts = [0, 0, 0, 0]
         for t in data.trials:
-            counts = [0, 0, 0, 0]
             for g in range(1, len(t["goals"]) + 1):
                 ra, rb = index.get((t["trial"], g, n, a)), index.get((t["trial"], g, n, b))
                 if ra is None or rb is None:
@@ -245,7 +245,8 @@ def agreement(data: ReportData, a: str = REFERENCE, b: str = FD_TREE) -> Agreeme
                 else:
                     counts[2 if ra.solved else 3] += 1
                     diffs.append((ra, rb))
-            rows.append((net_name(n), t["trial"], *counts))
+        if sum(counts):
+            rows.append((net_name(n), sum(counts), *counts))
     return Agreement(tuple(rows), tuple(diffs), compared)
 
 
@@ -259,7 +260,7 @@ def agreement_md(data: ReportData) -> str:
                 f"{REFERENCE} and {FD_TREE}.** They must have the same solvable set; see the cells below.\n")
     else:
         head = f"**Agreement on all {ag.compared} cells**: {REFERENCE} and {FD_TREE} solve exactly the same goals.\n"
-    text = head + "\n" + md_table(["network", "trial", "both solve", "neither", f"{REFERENCE} only",
+    text = head + "\n" + md_table(["network", "cells", "both solve", "neither", f"{REFERENCE} only",
                                    f"{FD_TREE} only"], ag.rows)
     if ag.disagreements:
         rows = [(net_name(a.network), a.trial, a.goal, a.goal_label, a.status, b.status, b.reason or a.reason)
@@ -452,8 +453,10 @@ def plot_times(data: ReportData) -> bytes:
     """Box plots of solve time per goal (ms, log scale), one panel per network, one box per solver."""
     nets = [n for n in data.networks if any(r.network == n for r in data.records)]
     fig = _figure(4.2 * max(1, len(nets)), 4.5)
+    first = None
     for i, n in enumerate(nets, start=1):
-        ax = fig.add_subplot(1, len(nets), i)
+        ax = fig.add_subplot(1, len(nets), i, sharey=first)
+        first = first or ax
         labels, values = [], []
         for s in data.solvers:
             ts = [max(solve_time(r) * 1000, 1e-3) for r in data.cells(n, s)]

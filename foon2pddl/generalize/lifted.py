@@ -254,7 +254,7 @@ def made_labels(foon: Foon) -> frozenset[str]:
 
 
 #: Which categorized objects become parameters (see `generalizer`).
-POLICIES = ("missing", "absent", "all")
+POLICIES = ("missing", "blocked", "absent", "all")
 
 
 def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -> Callable[[str], bool]:
@@ -269,6 +269,10 @@ def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -
     if policy == "all":
         return lambda label: True
     have = {n.label for n in kitchen_nodes}
+    if policy == "blocked":
+        reach = reachable(foon, kitchen_nodes)
+        blocked = {n.label for u in foon.units for n in u.inputs if not reach.can_make(n)}
+        return lambda label: label in blocked
     if policy == "absent":
         return lambda label: label not in have
     made = made_labels(foon)
