@@ -37,7 +37,8 @@ pddl: $(STAMP)
 	$(PY) -m foon2pddl.examples_pddl
 
 demo: $(STAMP)
-	$(VENV)/bin/foon2pddl plan --goal "lemonade"
+	$(VENV)/bin/foon2pddl plan --goal guacamole
+	$(VENV)/bin/foon2pddl plan --goal lemonade --network gen
 
 experiment: $(STAMP)
 	$(VENV)/bin/foon2pddl experiment $(SHARED)/foon-subgraphs -o docs/experiment --report docs/experiment.md
