@@ -25,8 +25,12 @@ NATIVE = ("native-greedy", "native-complete", "native-optimal")
 NETWORKS = ("reg", "exp", "gen")
 
 
+def _config(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], out: Path) -> runner.Config:
+    return runner.Config(paths, protocol, NETWORKS, solvers, out, jobs=2)
+
+
 def _run(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], out: Path) -> runner.RunSummary:
-    return runner.run(runner.Config(paths, protocol, NETWORKS, solvers, out, jobs=2), progress=False)
+    return runner.run(_config(paths, protocol, solvers, out), progress=False)
 
 
 def run(ctx: Context) -> None:
@@ -34,8 +38,8 @@ def run(ctx: Context) -> None:
     protocol = Protocol(trials=2, goals=20) if ctx.quick else Protocol()
     cells = protocol.trials * protocol.goals * len(NETWORKS)
     with tempfile.TemporaryDirectory(prefix="foon2pddl-bench-exp-") as tmp:
-        for name in NETWORKS:  # build the views (EXP: similarity matrix, expansion) outside the timings
-            runner._view(paths, protocol.level, name)
+        # build the views (EXP: similarity matrix, expansion) outside the timings
+        runner.views(_config(paths, protocol, NATIVE, Path(tmp)))
         t0 = time.perf_counter()
         _run(paths, protocol, ("native-complete",), Path(tmp) / "complete")
         ctx.report(AREA, "protocol, native complete, 2 jobs", time.perf_counter() - t0, "s", f"{cells} cells")

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -14,7 +13,7 @@ from foon2pddl.cli import main
 from foon2pddl.experiment import runner
 from foon2pddl.experiment.protocol import Protocol, derive_seed, goal_pool, make_trials, sample_kitchen
 from foon2pddl.experiment.records import Record, open_for_append, read_records
-from foon2pddl.experiment.report import ReportData, agreement, agreement_md, to_csv
+from foon2pddl.experiment.report import ReportData, agreement, agreement_md, to_csv, trial_times
 from foon2pddl.kitchen import default_kitchen
 
 NATIVE = ("native-greedy", "native-complete", "native-optimal")
@@ -41,7 +40,7 @@ def test_goals_are_produced_non_kitchen_nodes_and_extend_with_more_goals(reg):
     full = default_kitchen(reg)
     few = make_trials(reg, Protocol(trials=2, goals=5))
     many = make_trials(reg, Protocol(trials=2, goals=12))
-    for f, m in zip(few, many):
+    for f, m in zip(few, many, strict=True):
         assert m.goals[:5] == f.goals
         assert len(set(m.goals)) == 12
         assert all(g in reg.producers and g not in full.nodes for g in m.goals)
@@ -161,6 +160,15 @@ def test_interrupted_run_resumes(tmp_path, monkeypatch):
     assert again.ran == 2 * 4 * 3 - 9 and len(again.records) == 24
 
 
+def test_goal_limit_asks_a_solver_the_first_goals_only(tmp_path):
+    config = runner.Config((), Protocol(trials=2, goals=5), ("reg",), ("native-complete", "native-optimal"),
+                           tmp_path, goal_limits=(("native-optimal", 2),))
+    summary = runner.run(config, progress=False)
+    asked = sorted((r.trial, r.goal) for r in summary.records if r.solver == "native-optimal")
+    assert asked == [(1, 1), (1, 2), (2, 1), (2, 2)]
+    assert summary.ran == 2 * 5 + 2 * 2
+
+
 def test_results_of_another_protocol_are_refused(tmp_path):
     args = ["experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-complete",
             "-o", str(tmp_path), "--sensitivity", "none", "--no-progress"]
@@ -188,3 +196,11 @@ def test_disagreement_is_flagged():
     assert ag.compared == 2 and [(a.goal, b.goal) for a, b in ag.disagreements] == [(2, 2)]
     assert "DISAGREEMENT: 1 of 2 cells" in agreement_md(data)
     assert to_csv(recs).count("\n") == 5
+
+
+def test_trial_time_counts_the_shared_setup_once():
+    trials = ({"trial": 1, "goals": ["a", "b", "c"], "kitchen_nodes": 3, "kitchen_seed": 1, "goal_seed": 2},)
+    recs = tuple(_record(goal=g, solver="fd-tree", times={"search": 0.1, "validate": 5.0}, setup=2.0)
+                 for g in (1, 2, 3))
+    times = trial_times(ReportData(recs, ("reg",), ("fd-tree",), trials))
+    assert times[("reg", "fd-tree")][1] == pytest.approx(2.0 + 3 * 0.1)  # validation is not solving time

@@ -43,14 +43,26 @@ def _fractions(text: str) -> tuple[float, ...]:
     return values
 
 
+def _goal_limits(items, solvers) -> tuple[tuple[str, int], ...]:
+    out = {}
+    for item in items:
+        name, sep, n = item.partition("=")
+        name = name.strip().lower()
+        if not sep or not n.strip().isdigit() or int(n) < 1 or name not in solvers:
+            raise FoonInputError("<options>", 0, f"--goal-limit {item!r}: expected SOLVER=N with N >= 1 and "
+                                                 f"SOLVER one of the chosen solvers ({', '.join(solvers)})")
+        out[name] = int(n)
+    return tuple(sorted(out.items()))
+
+
 def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_limit: float, out_dir: Path,
-                 report: Path) -> str:
+                 report: Path, limits: tuple[tuple[str, int], ...] = ()) -> str:
     """The command that reproduces a run (written into the report)."""
     parts = ["foon2pddl", "experiment", *(str(p) for p in paths), "--trials", str(protocol.trials),
              "--goals", str(protocol.goals), "--kitchen-fraction", f"{protocol.kitchen_fraction:g}",
              "--seed", str(protocol.seed), "--level", str(protocol.level), "--networks", ",".join(networks),
              "--solvers", ",".join(solvers), "--time-limit", f"{time_limit:g}", "--jobs", str(jobs),
-             "-o", str(out_dir), "--report", str(report)]
+             *(x for s, n in limits for x in ("--goal-limit", f"{s}={n}")), "-o", str(out_dir), "--report", str(report)]
     return shlex.join(parts)
 
 
@@ -77,10 +89,12 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
               help="Markdown report to write [default: DIR/report.md].")
 @click.option("--sensitivity", default=",".join(f"{f:g}" for f in DEFAULT_FRACTIONS), show_default=True,
               help="Kitchen fractions for the report's sensitivity table ('none' to skip).")
+@click.option("--goal-limit", "goal_limits", multiple=True, metavar="SOLVER=N",
+              help="Ask SOLVER only the first N goals of each trial (for slow solvers; repeatable).")
 @click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
 @click.option("--progress/--no-progress", default=None, help="Progress bar on stderr [default: when a terminal].")
 def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, jobs, time_limit, out_dir, report,
-               sensitivity, fresh, progress) -> None:
+               sensitivity, goal_limits, fresh, progress) -> None:
     """Run the REG/EXP/GEN experiment and write results (JSONL, CSV), a Markdown report and plots.
 
     Each cell (trial, goal, network, solver) is appended to DIR/results.jsonl as it finishes; running
@@ -96,13 +110,15 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
     nets = _names(networks, NETWORKS, "networks")
     chosen = _names(solvers, tuple(SOLVERS), "solvers")
     fractions = _fractions(sensitivity)
+    limits = _goal_limits(goal_limits, chosen)
     protocol = Protocol(trials, goals, fraction, seed, level)
     report = report or out_dir / "report.md"
-    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit)
+    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits)
     summary = runner.run(config, progress=sys.stderr.isatty() if progress is None else progress, fresh=fresh)
     views = runner.views(config)
     meta = {
-        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report),
+        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits),
+        "goal_limits": dict(limits),
         "inputs": ", ".join(f"`{p}`" for p in paths) or "the embedded example network",
         "files": len(runner.input_files(config.paths)),
         "fingerprint": runner.fingerprint(config.paths),
@@ -110,7 +126,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
         "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
         "network_sizes": [{"name": v.name.upper(), "units": len(v.foon.units), "nodes": len(v.foon.nodes),
                            "what": _WHAT[v.name]} for v in views],
-        "solver_descriptions": [{"name": s, "description": SOLVERS[s].description} for s in chosen],
+        "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
+            f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
         "time_limit": f"{time_limit:g}", "jobs": jobs, "wall": f"{summary.seconds:.1f} s",
         "ran": summary.ran, "skipped": summary.skipped,
     }

@@ -56,6 +56,9 @@ class ReportData:
     def cells(self, network: str, solver: str) -> list[Record]:
         return [r for r in self.records if r.network == network and r.solver == solver]
 
+    def cells_of(self, solver: str) -> list[Record]:
+        return [r for r in self.records if r.solver == solver]
+
     def by_key(self) -> dict[tuple, Record]:
         return {r.key: r for r in self.records}
 
@@ -158,17 +161,26 @@ def _paper_span(network: str) -> str:
     return f"{lo_hi[0]}-{lo_hi[1]} of 100" if lo_hi else "-"
 
 
+def goals_asked(data: ReportData, solver: str) -> int:
+    """Goals per trial `solver` was asked (fewer than the protocol's with a goal limit)."""
+    per_trial: dict[tuple[int, str], set[int]] = defaultdict(set)
+    for r in data.records:
+        if r.solver == solver:
+            per_trial[(r.trial, r.network)].add(r.goal)
+    return max((len(v) for v in per_trial.values()), default=0)
+
+
 def table2_by_solver(data: ReportData) -> str:
     """Mean (min-max) successes per trial for every solver and network."""
     succ = successes(data)
     rows = []
     for s in data.solvers:
-        row: list[object] = [s]
+        row: list[object] = [s, goals_asked(data, s)]
         for n in data.networks:
             counts = list(succ[(n, s)].values()) if (n, s) in succ else []
             row.append(f"{statistics.fmean(counts):.1f} ({_span(counts)})" if counts else "-")
         rows.append(row)
-    return md_table(["solver", *(net_name(n) for n in data.networks)], rows)
+    return md_table(["solver", "goals/trial", *(net_name(n) for n in data.networks)], rows)
 
 
 # -- time (Table 3) ------------------------------------------------------------------------------
@@ -191,10 +203,10 @@ def table3(data: ReportData) -> str:
     times = trial_times(data)
     rows = []
     for s in data.solvers:
-        rows.append([s, *(statistics.fmean(times[(n, s)].values()) * 1000 if (n, s) in times else None
-                          for n in data.networks)])
-    rows.append([f"paper (greedy, {PAPER_CPU})", *(PAPER_TIME_MS.get(n) for n in data.networks)])
-    return md_table(["solver", *(f"{net_name(n)} ms/trial" for n in data.networks)], rows)
+        rows.append([s, goals_asked(data, s), *(statistics.fmean(times[(n, s)].values()) * 1000
+                                                if (n, s) in times else None for n in data.networks)])
+    rows.append([f"paper (greedy, {PAPER_CPU})", 100, *(PAPER_TIME_MS.get(n) for n in data.networks)])
+    return md_table(["solver", "goals/trial", *(f"{net_name(n)} ms/trial" for n in data.networks)], rows)
 
 
 def table3_per_goal(data: ReportData) -> str:
@@ -418,6 +430,7 @@ def plot_successes(data: ReportData) -> bytes:
     """Grouped bars: mean % of goals solved per trial by network and solver (min-max whiskers), paper ranges shaded."""
     succ = successes(data)
     goals = len(data.trials[0]["goals"]) if data.trials else 1
+    asked = {s: goals_asked(data, s) or 1 for s in data.solvers}
     fig = _figure(8.5, 4.5)
     ax = fig.add_subplot(1, 1, 1)
     nets, solvers = list(data.networks), list(data.solvers)
@@ -430,7 +443,7 @@ def plot_successes(data: ReportData) -> bytes:
     for j, s in enumerate(solvers):
         xs, means, lo, hi = [], [], [], []
         for i, n in enumerate(nets):
-            counts = [100.0 * c / goals for c in succ.get((n, s), {}).values()]
+            counts = [100.0 * c / asked[s] for c in succ.get((n, s), {}).values()]
             if not counts:
                 continue
             m = statistics.fmean(counts)
@@ -439,10 +452,11 @@ def plot_successes(data: ReportData) -> bytes:
             lo.append(m - min(counts))
             hi.append(max(counts) - m)
         if xs:
-            ax.bar(xs, means, width, yerr=[lo, hi], capsize=2, label=s)
+            label = s if asked[s] == goals else f"{s} (first {asked[s]} goals)"
+            ax.bar(xs, means, width, yerr=[lo, hi], capsize=2, label=label)
     ax.set_xticks(range(len(nets)), [net_name(n) for n in nets])
     ax.set_ylim(0, 100)
-    ax.set_ylabel(f"% of the {goals} goals of a trial solved")
+    ax.set_ylabel("% of a trial's goals solved")
     ax.set_title("Successes per trial (mean, min-max over trials)")
     ax.legend(fontsize=7, ncols=2, loc="upper left")
     fig.tight_layout()
@@ -485,11 +499,12 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
     succ = successes(data)
     times = trial_times(data)
     ag = agreement(data)
+    timed = "native-greedy" if "native-greedy" in data.solvers else ref
     summary = {}
     for n in data.networks:
         counts = list(succ.get((n, ref), {}).values())
         greedy = list(succ.get((n, "native-greedy"), {}).values())
-        t = times.get((n, "native-greedy")) or times.get((n, ref)) or {}
+        t = times.get((n, timed)) or {}
         summary[n] = {
             "name": net_name(n),
             "span": _span(counts), "mean": statistics.fmean(counts) if counts else math.nan,
@@ -498,11 +513,23 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
             "ms_per_trial": statistics.fmean(t.values()) * 1000 if t else math.nan,
             "paper_ms": PAPER_TIME_MS.get(n),
         }
+    goals = len(data.trials[0]["goals"]) if data.trials else 0
+    in_ranges = bool(goals) and all(
+        n in PAPER_SUCCESSES and PAPER_SUCCESSES[n][0] <= 100 * summary[n]["mean"] / goals <= PAPER_SUCCESSES[n][1]
+        for n in data.networks)
+    index = data.by_key()
+    greedy = data.cells_of("native-greedy")
+    greedy_exact = bool(greedy) and all(
+        (ref_rec := index.get((r.trial, r.goal, r.network, REFERENCE))) is not None and ref_rec.solved == r.solved
+        for r in greedy)
     return {
+        "in_paper_ranges": in_ranges,
+        "greedy_exact": greedy_exact,
         "meta": data.meta,
         "networks": data.networks,
         "solvers": data.solvers,
         "reference": ref,
+        "timed": timed,
         "trials": data.trials,
         "summary": summary,
         "table2": table2(data),

@@ -25,20 +25,18 @@ from pathlib import Path
 
 from ..errors import FoonInputError
 from ..fileio import atomic_write
-from ..inputs import example_path
+from ..inputs import example_path, load_network
 from ..kitchen import default_kitchen
-from ..levels import project
-from ..merge import expand_paths, load
-from ..model import Foon
+from ..merge import expand_paths
 from .networks import NETWORKS, NetworkView, build_view
 from .protocol import Protocol, Trial, goal_pool, make_trials
 from .records import Record, append, done_keys, open_for_append, read_records
 from .solvers import DEFAULT_TIME_LIMIT, Outcome, Setting, get_solver
 
 RESULTS = "results.jsonl"
+PROTOCOL = "protocol.json"
 #: Longest reason kept in a record (unreachable goals can list many missing nodes).
 REASON_MAX = 300
-PROTOCOL = "protocol.json"
 
 #: Batches of slower solvers and larger networks are started first (better load balance).
 _COST_ORDER = ("fd-state", "fd-tree-opt", "fd-lifted-gen", "fd-tree", "native-optimal", "native-greedy",
@@ -57,10 +55,16 @@ class Config:
     out_dir: Path
     jobs: int = 1
     time_limit: float = DEFAULT_TIME_LIMIT
+    goal_limits: tuple[tuple[str, int], ...] = ()  # (solver, n): that solver gets the first n goals of a trial
 
     @property
     def results_path(self) -> Path:
         return self.out_dir / RESULTS
+
+    def goals_for(self, solver: str, trial: Trial) -> range:
+        """1-based indexes of the goals of `trial` that `solver` is asked (goal samples are prefix-stable)."""
+        limit = dict(self.goal_limits).get(solver, len(trial.goals))
+        return range(1, min(limit, len(trial.goals)) + 1)
 
 
 @dataclass(frozen=True)
@@ -103,27 +107,19 @@ def fingerprint(paths: Sequence[str]) -> str:
     return h.hexdigest()
 
 
-def load_reg(paths: Sequence[str], level: int) -> Foon:
-    """The REG network at `level` (the embedded example when no path is given)."""
-    foon, _ = load(input_files(paths))
-    return project(foon, level)
-
-
 # -- worker side ---------------------------------------------------------------------------------
 
-_WORKER: dict = {"views": {}, "queue": None}
+_WORKER: dict = {"networks": {}, "views": {}, "queue": None}
 
 
 def _view(paths: tuple[str, ...], level: int, name: str) -> NetworkView:
     """The network view, built once per process (inherited from the parent when it forked)."""
-    key = (paths, level, name)
     views = _WORKER["views"]
+    if paths not in _WORKER["networks"]:
+        _WORKER["networks"][paths] = load_network(list(paths))
+    key = (paths, level, name)
     if key not in views:
-        reg_key = (paths, level, "reg")
-        if reg_key not in views:
-            views[reg_key] = build_view("reg", load_reg(paths, level))
-        if name != "reg":
-            views[key] = build_view(name, views[reg_key].foon)
+        views[key] = build_view(name, _WORKER["networks"][paths], level)
     return views[key]
 
 
@@ -189,6 +185,7 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
         "solvers": list(config.solvers),
         "paths": list(config.paths),
         "time_limit": config.time_limit,
+        "goal_limits": dict(config.goal_limits),
         "per_trial": [t.summary() for t in trials],
     }
     atomic_write(path, json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False) + "\n")
@@ -203,7 +200,7 @@ def plan_batches(config: Config, trials: tuple[Trial, ...], done: set) -> list[B
             if not spec.applies_to(network):
                 continue
             for trial in trials:
-                pending = tuple(g for g in range(1, len(trial.goals) + 1)
+                pending = tuple(g for g in config.goals_for(solver, trial)
                                 if (trial.index, g, network, solver) not in done)
                 if pending:
                     batches.append(Batch(trial, network, solver, pending))
@@ -216,14 +213,14 @@ def plan_batches(config: Config, trials: tuple[Trial, ...], done: set) -> list[B
     return sorted(batches, key=order)
 
 
-def run_cells(config: Config, trials: tuple[Trial, ...], batches: list[Batch],
-              sink: Callable[[Record], None], progress: bool) -> None:
+def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: bool) -> None:
     """Run `batches`, passing every record to `sink` in the main process as soon as it arrives."""
     from tqdm import tqdm
 
     total = sum(len(b.goals) for b in batches)
     args = (config.paths, config.protocol.level, config.time_limit)
     stop = _interrupt_on_sigterm()
+    tqdm.monitor_interval = 0  # no monitor thread: worker processes are forked while the bar runs
     bar = tqdm(total=total, unit="cell", desc="experiment", file=sys.stderr, disable=not progress or total == 0,
                dynamic_ncols=True, smoothing=0.05)
     try:
@@ -315,7 +312,7 @@ def run(config: Config, progress: bool = True, fresh: bool = False) -> RunSummar
     ran = sum(len(b.goals) for b in batches)
     if batches:
         with open_for_append(config.results_path) as fh:
-            run_cells(config, trials, batches, lambda r: append(fh, r), progress)
+            run_cells(config, batches, lambda r: append(fh, r), progress)
     records = read_records(config.results_path)
     keys = cell_keys(config, trials)
     mine = tuple(records[k] for k in sorted(keys) if k in records)
@@ -336,5 +333,5 @@ def cell_keys(config: Config, trials: tuple[Trial, ...]) -> set:
         spec = get_solver(solver)
         for network in config.networks:
             if spec.applies_to(network):
-                keys.update((t.index, g, network, solver) for t in trials for g in range(1, len(t.goals) + 1))
+                keys.update((t.index, g, network, solver) for t in trials for g in config.goals_for(solver, t))
     return keys

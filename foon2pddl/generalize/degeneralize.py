@@ -81,7 +81,7 @@ def plan_tree(lt: LiftedTask, steps: Sequence[str], goal: Goal, kitchen_nodes: f
 
 def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
                 planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
-                time_limit: float | None = None, prune: bool = True, policy: str = "missing") -> LiftedOutcome:
+                time_limit: float | None = None, prune: bool = True, policy: str = "absent") -> LiftedOutcome:
     """Encode, plan, ground the plan back to concrete units and validate them against the concrete kitchen."""
     timings: dict[str, float] = {}
     t0 = time.perf_counter()

@@ -17,10 +17,10 @@ concrete and only its *parameters* are generalized:
   ingredients of input nodes), typed with that object's category; objects that
   only appear among its outputs (what it makes: `lemon juice`) stay constants.
   Units equal up to those parameters are one action (`lift`). Which objects
-  become parameters is a policy (`generalizer`): by default (`missing`) those the
-  recipes take from the kitchen and the kitchen lacks (a `lemon` when it has a
-  `lime`); `all` parameterizes every categorized input object, which FD's
-  translator cannot ground on the universal FOON in minutes.
+  become parameters is a policy (`generalizer`): by default (`absent`) those no
+  kitchen node has (a `lemon` when the kitchen has a `lime`); `all`
+  parameterizes every categorized input object, which FD's translator cannot
+  ground on the universal FOON within a minute.
 * **Facts.** Node identity is kept: a node is one atom whose predicate encodes
   its *shape* (its states with the objects they mention replaced by argument
   positions) and whose arguments are the node's object then the objects its
@@ -254,25 +254,31 @@ def made_labels(foon: Foon) -> frozenset[str]:
 
 
 #: Which categorized objects become parameters (see `generalizer`).
-POLICIES = ("missing", "blocked", "absent", "all")
+POLICIES = ("absent", "missing", "blocked", "all")
 
 
 def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -> Callable[[str], bool]:
-    """The labels to turn into parameters: `missing` (default), objects the recipes take from the kitchen
-    (no unit makes them) that no kitchen node has; `absent`, any object no kitchen node has; `all`, every one.
+    """Which categorized labels become parameters, by policy:
 
-    Grounding a parameter that a kitchen object already fills only multiplies the
-    ground actions (FD's translator times out on the universal FOON with `all`).
+    - `absent` (default): objects no kitchen node has (a `lemon` when the kitchen has a
+      `lime`; intermediate products such as `lemon juice`, so another juice may stand in);
+    - `missing`: only the absent objects that no unit makes (raw ingredients and tools);
+    - `blocked`: objects of input nodes the concrete network cannot make from the kitchen;
+    - `all`: every categorized input object.
+
+    A parameter that a kitchen object already fills only multiplies the ground actions:
+    on the universal FOON with its default kitchen, FD's translator grounds `absent` and
+    `missing` in about a second and times out (60 s) with `blocked` and `all`.
     """
     if policy not in POLICIES:
         raise ValueError(f"generalization policy must be one of {', '.join(POLICIES)}, not {policy!r}")
     if policy == "all":
         return lambda label: True
-    have = {n.label for n in kitchen_nodes}
     if policy == "blocked":
         reach = reachable(foon, kitchen_nodes)
         blocked = {n.label for u in foon.units for n in u.inputs if not reach.can_make(n)}
         return lambda label: label in blocked
+    have = {n.label for n in kitchen_nodes}
     if policy == "absent":
         return lambda label: label not in have
     made = made_labels(foon)
@@ -280,7 +286,7 @@ def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -
 
 
 def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
-                  prune: bool = True, policy: str = "missing") -> LiftedTask:
+                  prune: bool = True, policy: str = "absent") -> LiftedTask:
     """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc)."""
     f = project(foon, level)
     kitchen_nodes = kitchen.project(level).nodes
