@@ -308,6 +308,25 @@ def agreement_matrix(data: ReportData) -> str:
     return md_table(["solver", *(net_name(n) for n in data.networks)], rows)
 
 
+def lifted_md(data: ReportData, solver: str = "fd-lifted-gen") -> str:
+    """The lifted GEN planner (concrete trees) against exact REG and GEN retrieval on the same goals."""
+    cells = data.cells("gen", solver)
+    if not cells or REFERENCE not in data.solvers:
+        return ""
+    index = data.by_key()
+    reg = [index.get((r.trial, r.goal, "reg", REFERENCE)) for r in cells]
+    gen = [index.get((r.trial, r.goal, "gen", REFERENCE)) for r in cells]
+    rows = [["goals asked", len(cells)], [f"{solver} solves", sum(r.solved for r in cells)]]
+    for name, refs in (("REG", reg), ("GEN", gen)):
+        if all(x is not None for x in refs):
+            rows.append([f"{name} {REFERENCE} solves", sum(x.solved for x in refs)])
+            rows.append([f"solved by {solver}, not by {name} {REFERENCE}",
+                         sum(r.solved and not x.solved for r, x in zip(cells, refs, strict=True))])
+            rows.append([f"solved by {name} {REFERENCE}, not by {solver}",
+                         sum(x.solved and not r.solved for r, x in zip(cells, refs, strict=True))])
+    return md_table(["", "goals"], rows)
+
+
 # -- quality -------------------------------------------------------------------------------------
 
 def quality_md(data: ReportData) -> str:
@@ -539,6 +558,7 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
         "agreement": agreement_md(data),
         "agreement_ok": ag is not None and not ag.disagreements,
         "agreement_matrix": agreement_matrix(data),
+        "lifted": lifted_md(data),
         "quality": quality_md(data),
         "statuses": statuses_md(data),
         "invalid": len(invalid_trees(data)),

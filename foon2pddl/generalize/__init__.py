@@ -1,9 +1,10 @@
 """Generalization of a FOON to objects it never saw (the seed paper's FOON-EXP and FOON-GEN).
 
 - `wordnet`: WordNet 3.0 through NLTK (an NLTK corpus, or Debian's files assembled once);
-- `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk;
-- `expand`: FOON-EXP, copies of units with similar objects substituted;
+- `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk;
+- `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
 - `categories`: the shipped category index; `compress`: FOON-GEN, objects replaced by categories;
-- `lifted`: category-typed PDDL whose plans ground back to concrete kitchen objects;
-- `network`: the `--network reg|exp|gen` view used by retrieve, compile and plan.
+- `lifted`, `degeneralize`: category-typed PDDL whose plans ground back to concrete kitchen objects;
+- `network`: the `--network reg|exp|gen` view used by retrieve, compile and plan; `stats`: tables.
+See docs/generalization.md.
 """

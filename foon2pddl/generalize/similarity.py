@@ -21,7 +21,6 @@ from __future__ import annotations
 import io
 from collections.abc import Iterable
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..fileio import atomic_write
 from ..model import normalize_label
@@ -160,9 +159,3 @@ def similarity_matrix(
         except OSError:
             pass  # a read-only cache only costs time
     return result
-
-
-def cache_path(vocabulary: Iterable[str]) -> Path:
-    """Where the matrix of `vocabulary` is cached (with the shipped overrides)."""
-    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
-    return cache_dir() / "similarity" / f"{matrix_key(labels, shipped_overrides().text)}.npz"
