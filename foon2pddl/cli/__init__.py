@@ -43,13 +43,16 @@ def main() -> None:
     """
 
 
-from . import stats_cmd  # noqa: E402,F401  (registers `stats`)
-from . import merge_cmd  # noqa: E402,F401  (registers `merge`)
-from . import compile_cmd  # noqa: E402,F401  (registers `compile`)
-from . import plan_cmd  # noqa: E402,F401  (registers `plan`)
-from . import retrieve_cmd  # noqa: E402,F401  (registers `retrieve`)
-from . import goals_cmd  # noqa: E402,F401  (registers `goals`)
-from . import experiment_cmd  # noqa: E402,F401  (registers `experiment`)
-from . import similarity_cmd  # noqa: E402,F401  (registers `similarity`)
-from . import expand_cmd  # noqa: E402,F401  (registers `expand`)
-from . import generalize_cmd  # noqa: E402,F401  (registers `generalize`, `categories`)
+# Each command module registers its commands on `main` when imported.
+from . import (  # noqa: E402,F401
+    compile_cmd,
+    expand_cmd,
+    experiment_cmd,
+    generalize_cmd,
+    goals_cmd,
+    merge_cmd,
+    plan_cmd,
+    retrieve_cmd,
+    similarity_cmd,
+    stats_cmd,
+)

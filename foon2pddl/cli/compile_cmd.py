@@ -8,7 +8,6 @@ import click
 
 from ..errors import FoonInputError
 from ..fileio import atomic_write_many
-from ..inputs import load_goal, load_kitchen, load_network
 from ..pddl.compile import compile_task
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
@@ -21,6 +20,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    load_view,
     network_option,
     paths_argument,
     prune_option,
@@ -33,24 +33,16 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
-    net = load_network(paths)
-    if network == "gen":
+    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
+    target = view.goal(goal, goal_file)
+    if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
         from ..generalize.categories import load_index
         from ..generalize.lifted import check_lifted_options, encode_lifted
 
         check_lifted_options(encoding, costs)
-        kit = load_kitchen(kitchen, net, level)
-        return encode_lifted(net.foon, kit, load_goal(goal, goal_file, net.at(level)), load_index(), level,
-                             prune=prune).task
-    foon = net.at(level)
-    kit = load_kitchen(kitchen, net, level)
-    if network == "exp":
-        from ..generalize.network import network_view
-
-        view = network_view(net, network, level, kit)
-        foon, kit = view.foon, view.kitchen
-    target = load_goal(goal, goal_file, foon)
-    return compile_task(foon, kit, target, encoding, level, prune, costs, read_rates(rates) if rates else None)
+        return encode_lifted(net.foon, view.kitchen, target, load_index(), level, prune=prune).task
+    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs,
+                        read_rates(rates) if rates else None)
 
 
 @main.command("compile")

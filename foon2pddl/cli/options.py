@@ -45,3 +45,16 @@ def emit(text: str, output: Path | None) -> None:
             from ..errors import FoonInputError
 
             raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
+
+
+def load_view(paths, kitchen: Path | None, level: int, network: str):
+    """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
+
+    The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level
+    and --network into what they search.
+    """
+    from ..generalize.network import network_view
+    from ..inputs import load_kitchen, load_network
+
+    net = load_network(paths)
+    return net, network_view(net, network, level, load_kitchen(kitchen, net, level))

@@ -10,7 +10,6 @@ import click
 
 from ..errors import FoonInputError
 from ..fileio import atomic_write
-from ..inputs import load_goal, load_kitchen, load_network
 from ..pddl.planners import DEFAULT_PLANNER
 from ..pddl.solve import PHASES, PlanOutcome, plan
 from ..retrieval.formats import FORMATS, render_tree
@@ -23,6 +22,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    load_view,
     network_option,
     paths_argument,
     prune_option,
@@ -97,15 +97,8 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
-    net = load_network(paths)
-    foon = net.at(level)
-    kit = load_kitchen(kitchen, net, level)
-    if network == "exp":
-        from ..generalize.network import network_view
-
-        view = network_view(net, network, level, kit)
-        foon, kit = view.foon, view.kitchen
-    target = load_goal(goal, goal_file, foon)
+    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
+    foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
     try:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import click
 
 from ..errors import FoonInputError
-from ..inputs import load_goal, load_kitchen, load_network
 from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
 from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT
@@ -16,6 +15,7 @@ from .options import (
     goal_option,
     kitchen_option,
     level_option,
+    load_view,
     network_option,
     output_option,
     paths_argument,
@@ -51,16 +51,9 @@ def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fm
     if method == "weighted" and rates is None:
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate)")
     motion_rates = read_rates(rates) if rates else None
-    net = load_network(paths)
-    if network == "reg":
-        foon = net.at(level)
-        kit = load_kitchen(kitchen, net, level)
-        target = load_goal(goal, goal_file, foon)
-    else:
-        from ..generalize.network import network_view
-
-        view = network_view(net, network, level, load_kitchen(kitchen, net, level))
-        foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
+    _, view = load_view(paths, kitchen, level, network)
+    foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
+    if view.note:
         click.echo(view.note, err=True)
     result = retrieve(foon, kit, target, method, rates=motion_rates, budget=budget, node_limit=node_limit)
     if result.tree is None:
