@@ -4,11 +4,10 @@ from __future__ import annotations
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from test_retrieval_properties import problems
 
 from foon2pddl.model import FunctionalUnit, Motion, make_node
 from foon2pddl.tasktree import TaskTree, justify, validate
-
-from test_retrieval_properties import problems
 
 
 def random_run(units, kitchen, order):
