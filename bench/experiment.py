@@ -1,8 +1,8 @@
 """Experiment benchmarks on the shared subgraphs: the default protocol's wall time.
 
 Figures (one run each: a run is tens of seconds to minutes; `--quick` runs 2 trials x 20 goals):
-- the default protocol (10 trials x 100 goals x REG/EXP/GEN) with the native solvers, 2 worker
-  processes (floor: <= 30 s), and with native complete alone;
+- the default protocol (10 trials x 100 goals x REG/EXP/GEN) with native complete alone, greedy and
+  complete, and the three native solvers, 2 worker processes (floor: <= 30 s);
 - FD on the `tree` encoding (translation reused per trial and network), 2 worker processes, on
   the first trial of the default protocol, and the per-trial figure times 10 as the estimate of
   the default protocol (floor: <= 15 min);
@@ -43,6 +43,10 @@ def run(ctx: Context) -> None:
         t0 = time.perf_counter()
         _run(paths, protocol, ("native-complete",), Path(tmp) / "complete")
         ctx.report(AREA, "protocol, native complete, 2 jobs", time.perf_counter() - t0, "s", f"{cells} cells")
+        t0 = time.perf_counter()
+        _run(paths, protocol, ("native-greedy", "native-complete"), Path(tmp) / "greedy")
+        ctx.report(AREA, "protocol, native greedy + complete, 2 jobs", time.perf_counter() - t0, "s",
+                   f"{2 * cells} cells")
         t0 = time.perf_counter()
         summary = _run(paths, protocol, NATIVE, Path(tmp) / "native")
         ctx.report(AREA, "protocol, 3 native solvers, 2 jobs", time.perf_counter() - t0, "s",

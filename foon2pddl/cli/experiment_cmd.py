@@ -129,7 +129,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
         "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
             f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
         "time_limit": f"{time_limit:g}", "jobs": jobs, "wall": f"{summary.seconds:.1f} s",
-        "ran": summary.ran, "skipped": summary.skipped,
+        "ran": summary.ran, "skipped": summary.skipped, "history": list(summary.history), "machine": machine(),
     }
     rows = run_sensitivity(views, protocol, fractions) if fractions else ()
     data = ReportData(summary.records, nets, chosen, tuple(t.summary() for t in summary.trials), meta, rows)
@@ -149,6 +149,20 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
         if bad:
             click.echo(f"INVALID: {len(bad)} returned trees do not validate (see {report})", err=True)
         sys.exit(1)
+
+
+def machine() -> str:
+    """CPU model and count, and the Python version (times in the report depend on them)."""
+    import os
+    import platform
+
+    model = platform.machine()
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as fh:
+            model = next((line.split(":", 1)[1].strip() for line in fh if line.startswith("model name")), model)
+    except OSError:
+        pass
+    return f"{model}, {os.cpu_count()} CPUs, Python {platform.python_version()}"
 
 
 _WHAT = {"reg": "the network as read", "exp": "FOON-EXP, Wu-Palmer similarity >= 0.89",

@@ -35,6 +35,7 @@ from .solvers import DEFAULT_TIME_LIMIT, Outcome, Setting, get_solver
 
 RESULTS = "results.jsonl"
 PROTOCOL = "protocol.json"
+RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs, wall seconds
 #: Longest reason kept in a record (unreachable goals can list many missing nodes).
 REASON_MAX = 300
 
@@ -88,6 +89,7 @@ class RunSummary:
     records: tuple[Record, ...]
     default_kitchen: int = 0  # nodes in the default kitchen trials sample from
     goal_pool: int = 0  # nodes goals are drawn from
+    history: tuple[dict, ...] = ()  # the invocations that computed cells in this directory (runs.jsonl)
 
 
 # -- inputs --------------------------------------------------------------------------------------
@@ -305,20 +307,41 @@ def run(config: Config, progress: bool = True, fresh: bool = False) -> RunSummar
     config.out_dir.mkdir(parents=True, exist_ok=True)
     if fresh:
         config.results_path.unlink(missing_ok=True)
+        (config.out_dir / RUNS).unlink(missing_ok=True)
     check_protocol(config, trials)
     existing = read_records(config.results_path)
     done = done_keys(existing)
     batches = plan_batches(config, trials, done)
     ran = sum(len(b.goals) for b in batches)
     if batches:
-        with open_for_append(config.results_path) as fh:
-            run_cells(config, batches, lambda r: append(fh, r), progress)
+        t_run = time.perf_counter()
+        try:
+            with open_for_append(config.results_path) as fh:
+                run_cells(config, batches, lambda r: append(fh, r), progress)
+        finally:
+            log = {"cells": ran, "jobs": config.jobs, "seconds": round(time.perf_counter() - t_run, 3),
+                   "solvers": sorted({b.solver for b in batches})}
+            with open(config.out_dir / RUNS, "a", encoding="utf-8") as fh:
+                fh.write(json.dumps(log, sort_keys=True) + "\n")
     records = read_records(config.results_path)
     keys = cell_keys(config, trials)
     mine = tuple(records[k] for k in sorted(keys) if k in records)
     full = default_kitchen(reg)
     return RunSummary(trials, ran, len(keys) - ran, time.perf_counter() - t0, mine, len(full),
-                      len(goal_pool(reg, full)))
+                      len(goal_pool(reg, full)), read_runs(config.out_dir / RUNS))
+
+
+def read_runs(path: Path) -> tuple[dict, ...]:
+    """The invocations logged in runs.jsonl (a damaged line is skipped: the log is informative only)."""
+    if not path.exists():
+        return ()
+    out = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        try:
+            out.append(json.loads(line))
+        except ValueError:
+            continue
+    return tuple(out)
 
 
 def views(config: Config) -> list[NetworkView]:
