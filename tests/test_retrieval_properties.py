@@ -14,6 +14,7 @@ import random
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import foon2pddl.retrieval.greedy as greedy_module
 from foon2pddl.goals import Goal, GoalSpec
 from foon2pddl.merge import dedupe_units
 from foon2pddl.model import Foon, FunctionalUnit, Motion, make_node, make_state
@@ -113,6 +114,24 @@ def test_complete_and_greedy_find_a_valid_tree_iff_reachable(problem):
             for k, unit in enumerate(result.tree.units):
                 later = {n for u in result.tree.units[k + 1:] for n in u.inputs} | {result.tree.goal}
                 assert set(unit.outputs) & later
+
+
+@settings(max_examples=200, deadline=None)
+@given(problems(), st.integers(1, 4))
+def test_greedy_fixpoint_shortcut_changes_no_answer(problem, check_after):
+    """Greedy given a fixpoint, or checking one after a few iterations, answers as the plain search does."""
+    foon, kitchen, goal = problem
+    plain = greedy_module.greedy(foon, kitchen, goal)
+    given_reach = greedy_module.greedy(foon, kitchen, goal, reach=reachable(foon, kitchen))
+    saved = greedy_module.FIXPOINT_CHECK_AFTER
+    greedy_module.FIXPOINT_CHECK_AFTER = check_after
+    try:
+        lazy = greedy_module.greedy(foon, kitchen, goal)
+    finally:
+        greedy_module.FIXPOINT_CHECK_AFTER = saved
+    for other in (given_reach, lazy):
+        assert other.reason == plain.reason
+        assert (other.tree is None) or other.tree.units == plain.tree.units
 
 
 @settings(max_examples=200, deadline=None)

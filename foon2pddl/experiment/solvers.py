@@ -101,7 +101,7 @@ class _Native(Prepared):
         self.method = method
         self.kitchen_nodes = view.kitchen(setting.kitchen).project(view.foon.level).nodes
         index_of(view.foon)
-        self.reach = reachable(view.foon, self.kitchen_nodes) if method != "greedy" else None
+        self.reach = reachable(view.foon, self.kitchen_nodes)
         self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
@@ -113,7 +113,7 @@ class _Native(Prepared):
         foon, nodes = self.view.foon, self.kitchen_nodes
         t0 = time.perf_counter()
         if self.method == "greedy":
-            result = greedy(foon, nodes, goal)
+            result = greedy(foon, nodes, goal, reach=self.reach)
         elif self.method == "complete":
             result = complete(foon, nodes, goal, self.reach)
         else:

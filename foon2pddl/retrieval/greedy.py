@@ -34,20 +34,42 @@ from collections.abc import Iterable
 
 from ..goals import Goal
 from ..model import Foon, ObjectNode
+from .complete import unreachable_detail
 from .extract import make_tree, ordered_units
 from .index import index_of
+from .reachability import Reachability, reachable
 from .result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
 
 #: Default iteration budget (objects taken from the queue). The hardest goal
 #: of the universal FOON of the shared subgraphs needs a few thousand.
 DEFAULT_BUDGET = 200_000
 
+#: Iterations after which a search not given a fixpoint checks the goal's reachability.
+FIXPOINT_CHECK_AFTER = 256
+
 
 def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
-           budget: int = DEFAULT_BUDGET) -> Retrieval:
-    """Run the greedy search for any candidate of `goal` within `budget` iterations."""
+           budget: int = DEFAULT_BUDGET, reach: Reachability | None = None) -> Retrieval:
+    """Run the greedy search for any candidate of `goal` within `budget` iterations.
+
+    Unreachable goals are also answered by the reachability fixpoint: at the start when
+    `reach` is given, else (computed for the goal's cone) once the search has taken
+    `FIXPOINT_CHECK_AFTER` iterations. The greedy search finds a tree whenever one
+    exists, so this changes no answer, but its own proof of unreachability (a full
+    pass over its queue that makes nothing) costs O(nodes x queue) where the fixpoint
+    is linear (FOON-EXP of the shared subgraphs: 133 ms -> ~14 ms per unreachable goal).
+    """
     ix = index_of(foon)
-    kitchen = ix.kitchen_ids(frozenset(kitchen_nodes))
+    kitchen_nodes = frozenset(kitchen_nodes)
+
+    def unreachable(reach: Reachability) -> Retrieval | None:
+        if any(reach.can_make(c) for c in goal.candidates):
+            return None
+        return Retrieval(None, UNREACHABLE, "greedy", unreachable_detail(reach, goal))
+
+    if reach is not None and (answer := unreachable(reach)) is not None:
+        return answer
+    kitchen = ix.kitchen_ids(kitchen_nodes)
     in_kitchen = bytearray(len(ix.nodes))
     for k in kitchen:
         in_kitchen[k] = 1
@@ -71,6 +93,10 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
             return Retrieval(None, BUDGET_EXHAUSTED, "greedy",
                              f"{budget} iterations spent, {len(queue)} objects still queued", iterations)
         iterations += 1
+        if iterations == FIXPOINT_CHECK_AFTER and reach is None:
+            answer = unreachable(reachable(foon, kitchen_nodes, targets=goal.candidates))
+            if answer is not None:
+                return answer
         obj = queue.popleft()
         if available[obj]:
             since_progress += 1
