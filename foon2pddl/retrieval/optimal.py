@@ -87,7 +87,7 @@ def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
         weight = [1.0] * len(ix.motions)
 
     search = _Search(foon, ix, reach, weight, cands, node_limit)
-    for seed in (complete(foon, kitchen_nodes, goal, reach), greedy(foon, kitchen_nodes, goal, budget)):
+    for seed in (complete(foon, kitchen_nodes, goal, reach), greedy(foon, kitchen_nodes, goal, budget, reach)):
         if seed.tree is not None:
             search.offer_tree(seed.tree)
     search.run(cands)
