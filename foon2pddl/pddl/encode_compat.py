@@ -16,10 +16,9 @@ from __future__ import annotations
 from ..goals import Goal
 from ..kitchen import Kitchen
 from ..model import Foon
-from .costs import unit_cost
-from .encoding import DEFAULT_OPTIONS, EncodeOptions, at_level, goal_actions, header, select, unit_comment
+from .encoding import DEFAULT_OPTIONS, EncodeOptions, at_level, goal_actions, header, select, unit_actions
 from .names import NameTable
-from .task import Action, Atom, PlanningTask, Predicate
+from .task import Atom, PlanningTask, Predicate
 
 NODE_TYPE = "object_node"
 AVAILABLE = "is_available"
@@ -43,17 +42,7 @@ def encode_compat(
     const = {i: table.name(ix.nodes[i].describe(), key=("node", i)) for i in sel.nodes}
     avail = {i: Atom(AVAILABLE, (name,)) for i, name in const.items()}
 
-    actions = []
-    for i in sel.units:
-        u = f.units[i]
-        actions.append(Action(
-            table.name(f"functional_unit_{i}", key=("unit", i)),
-            pre=tuple(avail[n] for n in ix.inputs[i]),
-            add=tuple(avail[n] for n in ix.outputs[i]),
-            cost=unit_cost(u, options.costs, options.rates),
-            unit=i,
-            comment=unit_comment(u, i),
-        ))
+    actions = unit_actions(f, sel, avail, lambda i, u: table.name(f"functional_unit_{i}", key=("unit", i)), options)
     constants = [(const[i], NODE_TYPE) for i in sel.nodes]
     if several:
         goal_atom = Atom(AVAILABLE, (GOAL_CONSTANT,))

@@ -14,7 +14,6 @@ from __future__ import annotations
 from ..goals import Goal
 from ..kitchen import Kitchen
 from ..model import Foon
-from .costs import unit_cost
 from .encoding import (
     DEFAULT_OPTIONS,
     GOAL_REACHED,
@@ -23,10 +22,10 @@ from .encoding import (
     goal_actions,
     header,
     select,
-    unit_comment,
+    unit_actions,
 )
 from .names import NameTable
-from .task import Action, Atom, PlanningTask, Predicate
+from .task import Atom, PlanningTask, Predicate
 
 
 def encode_tree(
@@ -47,17 +46,7 @@ def encode_tree(
     predicates = [Predicate(prop[i], comment=text) for i, text in described]
     atom = {i: Atom(prop[i]) for i in sel.nodes}
 
-    actions = []
-    for i in sel.units:
-        u = f.units[i]
-        actions.append(Action(
-            table.name(f"{u.motion.label} u{i}", key=("unit", i)),
-            pre=tuple(atom[n] for n in ix.inputs[i]),
-            add=tuple(atom[n] for n in ix.outputs[i]),
-            cost=unit_cost(u, options.costs, options.rates),
-            unit=i,
-            comment=unit_comment(u, i),
-        ))
+    actions = unit_actions(f, sel, atom, lambda i, u: table.name(f"{u.motion.label} u{i}", key=("unit", i)), options)
     if several:
         goal_atom = Atom(GOAL_REACHED)
         predicates.insert(0, Predicate(GOAL_REACHED, comment="a goal candidate was made"))

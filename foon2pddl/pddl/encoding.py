@@ -9,6 +9,7 @@ comments, the auxiliary actions for a goal with several candidate nodes).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -18,7 +19,7 @@ from ..levels import check_level, project, project_node
 from ..model import Foon, FunctionalUnit, ObjectNode
 from ..retrieval.index import FoonIndex, index_of
 from ..retrieval.rates import Rates
-from .costs import check_costs, goal_cost
+from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
 from .prune import relevant_units
 from .task import Action, Atom
@@ -151,3 +152,26 @@ def goal_actions(
         actions.append(Action(name, atoms, (goal_atom,), cost=goal_cost(options.costs), unit=None,
                               comment=(f"goal candidate {i}: {node.describe()}",)))
     return tuple(actions)
+
+
+def unit_actions(foon: Foon, sel: Selection, atom: dict[int, Atom], name: Callable[[int, FunctionalUnit], str],
+                 options: EncodeOptions) -> list[Action]:
+    """One delete-free action per selected unit: its input nodes' atoms as precondition, its outputs' as effect.
+
+    Shared by the node-proposition encodings (`tree`, `foon-compat`), which differ only in
+    how a node becomes an atom and how an action is named (`name(index, unit)`, called in
+    unit order so names are assigned deterministically).
+    """
+    ix = sel.index
+    actions = []
+    for i in sel.units:
+        u = foon.units[i]
+        actions.append(Action(
+            name(i, u),
+            pre=tuple(atom[n] for n in ix.inputs[i]),
+            add=tuple(atom[n] for n in ix.outputs[i]),
+            cost=unit_cost(u, options.costs, options.rates),
+            unit=i,
+            comment=unit_comment(u, i),
+        ))
+    return actions
