@@ -5,10 +5,8 @@ from __future__ import annotations
 import click
 
 from ..inputs import load_network
-from ..jsonio import write_json
-from ..writer import write_foon
 from . import main
-from .options import emit, kitchen_option, output_option, paths_argument
+from .options import emit_network, kitchen_option, output_option, paths_argument
 
 
 @main.command("expand")
@@ -27,21 +25,15 @@ def expand_(paths, threshold, max_units, kitchen, provenance, fmt, output) -> No
     """Write FOON-EXP of the network: for each unit and each object in it, a copy with a similar object.
 
     The vocabulary is the network's object labels plus those of --kitchen (the example
-    kitchen for the example network). Statistics per level go to standard error.
+    kitchen for the example network; a default kitchen adds no label). Statistics per level go to standard error.
     """
     from ..generalize.expand import expand
     from ..generalize.stats import format_levels_table, levels_table
-    from ..inputs import example_path
-    from ..kitchen import read_kitchen
+    from ..inputs import load_kitchen
 
     net = load_network(paths)
-    if kitchen is None and net.is_example:
-        kitchen = example_path("example_kitchen.txt")
-    kit = read_kitchen(kitchen) if kitchen is not None else None
-    e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=kit)
+    e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=load_kitchen(kitchen, net, 3))
     header = (f"FOON-EXP (threshold {threshold}): {e.original_units} units + {e.added_units} expanded, "
               f"{len(e.substitutions)} label substitutions")
-    text = write_json(e.foon) if fmt == "json" else write_foon(e.foon, provenance=provenance, header=header)
-    emit(text, output)
-    click.echo(header, err=True)
+    emit_network(e.foon, fmt, provenance, header, output)
     click.echo(format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon})), err=True, nl=False)

@@ -7,10 +7,8 @@ from pathlib import Path
 import click
 
 from ..inputs import load_network
-from ..jsonio import write_json
-from ..writer import write_foon
 from . import main
-from .options import emit, output_option, paths_argument
+from .options import emit, emit_network, output_option, paths_argument
 
 categories_option = click.option("--categories", "categories", type=click.Path(path_type=Path), default=None,
                                  help="Category index (JSON, see docs/generalization.md). Default: the shipped one.")
@@ -38,9 +36,7 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
     c = compress(net.foon, index)
     header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
               f"{c.original_units} -> {len(c.foon.units)} units")
-    text = write_json(c.foon) if fmt == "json" else write_foon(c.foon, provenance=provenance, header=header)
-    emit(text, output)
-    click.echo(header, err=True)
+    emit_network(c.foon, fmt, provenance, header, output)
     click.echo(format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon})), err=True, nl=False)
 
 

@@ -58,3 +58,12 @@ def load_view(paths, kitchen: Path | None, level: int, network: str):
 
     net = load_network(paths)
     return net, network_view(net, network, level, load_kitchen(kitchen, net, level))
+
+
+def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:
+    """Write a derived network (FOON text with `header`, or the JSON export) and echo the header on stderr."""
+    from ..jsonio import write_json
+    from ..writer import write_foon
+
+    emit(write_json(foon) if fmt == "json" else write_foon(foon, provenance=provenance, header=header), output)
+    click.echo(header, err=True)
