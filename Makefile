@@ -34,7 +34,7 @@ lint: $(STAMP)
 	$(VENV)/bin/ruff check foon2pddl tests bench
 
 pddl: $(STAMP)
-	$(PY) -m foon2pddl.examples_pddl
+	$(PY) -m foon2pddl.pddl.examples
 
 demo: $(STAMP)
 	$(VENV)/bin/foon2pddl plan --goal guacamole

@@ -17,9 +17,10 @@ import tempfile
 import time
 from pathlib import Path
 
-from foon2pddl.levels import project
-from foon2pddl.merge import expand_paths, load, merge
-from foon2pddl.parser import parse_file
+from foon2pddl.io.files import expand_paths, load
+from foon2pddl.io.parser import parse_file
+from foon2pddl.model.levels import project
+from foon2pddl.model.merge import merge
 
 from .harness import Context, timeit
 

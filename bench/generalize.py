@@ -24,7 +24,7 @@ from foon2pddl.generalize.categories import shipped_index
 from foon2pddl.generalize.compress import compress
 from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.similarity import LabelSimilarity, similarity_matrix
-from foon2pddl.merge import load
+from foon2pddl.io.files import load
 
 from .harness import Context, timeit
 
@@ -80,8 +80,8 @@ def run(ctx: Context) -> None:
     ctx.report(AREA, "FOON-GEN construction", t_gen, "s", f"{c.original_units} -> {len(c.foon.units)} units")
 
     from foon2pddl.generalize.degeneralize import plan_lifted
-    from foon2pddl.goals import Goal, spec_of_node
-    from foon2pddl.kitchen import default_kitchen
+    from foon2pddl.model.goal import Goal, spec_of_node
+    from foon2pddl.model.kitchen import default_kitchen
 
     kitchen = default_kitchen(foon)
     dishes = sorted({n for u in foon.units for n in u.outputs if n.dish is not None})[: 10 if ctx.quick else 40]

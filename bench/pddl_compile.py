@@ -9,12 +9,12 @@ subgraphs at level 3 with its default kitchen and the first makeable dish as the
 
 from __future__ import annotations
 
-from foon2pddl.goals import resolve_goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen
-from foon2pddl.merge import load
+from foon2pddl.analysis.reachability import reachable
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
 from foon2pddl.pddl.render import render
-from foon2pddl.retrieval.reachability import reachable
 
 from .harness import Context, timeit
 

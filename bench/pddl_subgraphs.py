@@ -18,16 +18,16 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from foon2pddl.analysis.reachability import blockers, reachable
 from foon2pddl.errors import FoonError
-from foon2pddl.goals import resolve_goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen
-from foon2pddl.levels import project, project_node
-from foon2pddl.merge import expand_paths, load
+from foon2pddl.io.files import expand_paths, load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.levels import project, project_node
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
-from foon2pddl.pddl.planners import fd
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
-from foon2pddl.retrieval.reachability import blockers, reachable
+from foon2pddl.planners import fd
 
 from .harness import Context
 

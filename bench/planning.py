@@ -20,10 +20,10 @@ import statistics
 import time
 
 from foon2pddl.experiment.protocol import sample_kitchen
-from foon2pddl.goals import resolve_goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen
-from foon2pddl.merge import load
-from foon2pddl.pddl.solve import PHASES, GoalReplanner, plan
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.planners.solve import PHASES, GoalReplanner, plan
 from foon2pddl.retrieval.complete import complete
 
 from .harness import Context

@@ -21,14 +21,15 @@ import statistics
 import time
 from collections import Counter
 
-from foon2pddl.goals import Goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen, json_node, read_kitchen
-from foon2pddl.levels import project, project_node
-from foon2pddl.merge import load
+from foon2pddl.analysis.index import build_index
+from foon2pddl.io.files import load
+from foon2pddl.io.kitchen_files import json_node, read_kitchen
+from foon2pddl.model.goal import Goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.levels import project, project_node
 from foon2pddl.retrieval import blockers, reachable, read_rates
 from foon2pddl.retrieval.complete import complete
 from foon2pddl.retrieval.greedy import greedy
-from foon2pddl.retrieval.index import build_index
 from foon2pddl.retrieval.optimal import optimal
 
 from .harness import Context, timeit

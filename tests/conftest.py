@@ -15,7 +15,7 @@ SEARCH_INPUTS = SHARED / "foon-search-inputs"
 @pytest.fixture(scope="session")
 def universal():
     """The universal FOON of the shared subgraphs at level 3 (with parse warnings)."""
-    from foon2pddl.merge import load
+    from foon2pddl.io.files import load
 
     return load([SUBGRAPHS])
 
@@ -23,7 +23,7 @@ def universal():
 @pytest.fixture(scope="session")
 def example():
     """The embedded example network."""
-    from foon2pddl.inputs import load_network
+    from foon2pddl.io.inputs import load_network
 
     return load_network([])
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from foon2pddl.model import Foon, FunctionalUnit, Motion, Source, make_node, make_state, normalize_label
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state, normalize_label
 
 # Characters the FOON text format can carry inside labels (no tab, newline, brackets, braces or commas).
 _ALPHABET = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 -'()&/.:éü"

@@ -6,10 +6,11 @@ import re
 
 import pytest
 
-from foon2pddl.inputs import example_path
-from foon2pddl.kitchen import read_kitchen, starting_nodes
-from foon2pddl.merge import expand_paths
-from foon2pddl.parser import parse_file, read_text
+from foon2pddl.io.files import expand_paths
+from foon2pddl.io.inputs import example_path
+from foon2pddl.io.kitchen_files import read_kitchen
+from foon2pddl.io.parser import parse_file, read_text
+from foon2pddl.model.kitchen import starting_nodes
 
 RECIPES = expand_paths([example_path()])
 HEADER = "# Source:\tfoon2pddl example network (original recipe)"

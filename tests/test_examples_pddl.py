@@ -7,8 +7,8 @@ import pddl.parser.problem
 import pytest
 from conftest import ROOT
 
-from foon2pddl.examples_pddl import GOALS, generate, main, stale_files
 from foon2pddl.pddl.compile import ENCODINGS
+from foon2pddl.pddl.examples import GOALS, generate, main, stale_files
 from foon2pddl.pddl.names import sanitize
 
 PAIRS = [(enc, sanitize(goal)) for enc in ENCODINGS for goal in GOALS]

@@ -14,7 +14,7 @@ from foon2pddl.experiment import runner
 from foon2pddl.experiment.protocol import Protocol, derive_seed, goal_pool, make_trials, sample_kitchen
 from foon2pddl.experiment.records import Record, open_for_append, read_records
 from foon2pddl.experiment.report import ReportData, agreement, agreement_md, to_csv, trial_times
-from foon2pddl.kitchen import default_kitchen
+from foon2pddl.model.kitchen import default_kitchen
 
 NATIVE = ("native-greedy", "native-complete", "native-optimal")
 

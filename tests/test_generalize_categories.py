@@ -12,11 +12,13 @@ from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.categories import coverage, parse_index, shipped_index
 from foon2pddl.generalize.compress import abstract_goal, abstract_kitchen, compress
-from foon2pddl.goals import parse_goal_spec, resolve_goal
-from foon2pddl.inputs import example_path
-from foon2pddl.kitchen import Kitchen, read_kitchen
-from foon2pddl.merge import load
-from foon2pddl.model import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.io.files import load
+from foon2pddl.io.goal_files import parse_goal_spec
+from foon2pddl.io.inputs import example_path
+from foon2pddl.io.kitchen_files import read_kitchen
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.model.goal import resolve_goal
+from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.retrieval import retrieve
 
 

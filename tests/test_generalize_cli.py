@@ -8,7 +8,7 @@ import pytest
 from click.testing import CliRunner
 
 from foon2pddl.cli import main
-from foon2pddl.parser import parse_file
+from foon2pddl.io.parser import parse_file
 
 
 @pytest.fixture(scope="module")

@@ -18,11 +18,12 @@ from foon2pddl.generalize.lifted import (
     node_of,
     representations,
 )
-from foon2pddl.goals import Goal, parse_goal_spec, resolve_goal, spec_of_node
-from foon2pddl.inputs import example_path
-from foon2pddl.kitchen import read_kitchen
-from foon2pddl.pddl.decode import PlanDecodeError
-from foon2pddl.tasktree import validate
+from foon2pddl.io.goal_files import parse_goal_spec
+from foon2pddl.io.inputs import example_path
+from foon2pddl.io.kitchen_files import read_kitchen
+from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
+from foon2pddl.model.tasktree import validate
+from foon2pddl.planners.decode import PlanDecodeError
 
 INDEX = shipped_index()
 CATEGORIZED = sorted({m for c in INDEX.categories for m in c.members})

@@ -5,11 +5,12 @@ from __future__ import annotations
 import pytest
 
 from foon2pddl.errors import FoonInputError, FoonSyntaxError
-from foon2pddl.goals import GoalSpec, parse_goal_spec, read_goal_file, resolve_goal, spec_of_node
-from foon2pddl.inputs import goal_spec, load_goal
-from foon2pddl.levels import project
-from foon2pddl.model import State, make_node, make_state
-from foon2pddl.parser import parse_text
+from foon2pddl.io.goal_files import parse_goal_spec, read_goal_file
+from foon2pddl.io.inputs import goal_spec, load_goal
+from foon2pddl.io.parser import parse_text
+from foon2pddl.model.foon import State, make_node, make_state
+from foon2pddl.model.goal import GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.levels import project
 
 
 @pytest.mark.parametrize(("text", "label", "states"), [

@@ -11,9 +11,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.errors import FoonSyntaxError
-from foon2pddl.jsonio import FORMAT, VERSION, foon_from_dict, foon_to_dict, parse_json, read_json, write_json
-from foon2pddl.levels import project
-from foon2pddl.model import Foon, FunctionalUnit, Motion, Source, make_node
+from foon2pddl.io.jsonio import FORMAT, VERSION, foon_from_dict, foon_to_dict, parse_json, read_json, write_json
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node
+from foon2pddl.model.levels import project
 
 
 @settings(max_examples=60, deadline=None)

@@ -8,11 +8,12 @@ import pytest
 from conftest import SEARCH_INPUTS
 
 from foon2pddl.errors import FoonSyntaxError
-from foon2pddl.inputs import load_kitchen, load_network
-from foon2pddl.kitchen import BASE_STATES, Kitchen, default_kitchen, read_kitchen, starting_nodes, write_kitchen
-from foon2pddl.levels import project, project_node
-from foon2pddl.model import make_node, make_state
-from foon2pddl.parser import parse_text
+from foon2pddl.io.inputs import load_kitchen, load_network
+from foon2pddl.io.kitchen_files import read_kitchen, write_kitchen
+from foon2pddl.io.parser import parse_text
+from foon2pddl.model.foon import make_node, make_state
+from foon2pddl.model.kitchen import BASE_STATES, Kitchen, default_kitchen, starting_nodes
+from foon2pddl.model.levels import project, project_node
 
 EXPECTED = {
     make_node("bowl", [make_state("empty")]),

@@ -13,11 +13,12 @@ from foon_strategies import full
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonSyntaxError
-from foon2pddl.jsonio import parse_json
-from foon2pddl.levels import project
-from foon2pddl.merge import dedupe_units, expand_paths, load, merge
-from foon2pddl.model import Foon, FunctionalUnit, Motion, Source, make_node, make_state
-from foon2pddl.parser import parse_file, parse_text
+from foon2pddl.io.files import expand_paths, load
+from foon2pddl.io.jsonio import parse_json
+from foon2pddl.io.parser import parse_file, parse_text
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, dedupe_units, make_node, make_state
+from foon2pddl.model.levels import project
+from foon2pddl.model.merge import merge
 
 FILES = expand_paths([SUBGRAPHS])
 

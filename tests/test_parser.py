@@ -14,10 +14,10 @@ from hypothesis import strategies as st
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonSyntaxError
-from foon2pddl.merge import expand_paths
-from foon2pddl.model import State, make_node, make_state
-from foon2pddl.parser import parse_file, parse_objects, parse_text
-from foon2pddl.writer import write_foon
+from foon2pddl.io.files import expand_paths
+from foon2pddl.io.parser import parse_file, parse_objects, parse_text
+from foon2pddl.io.writer import write_foon
+from foon2pddl.model.foon import State, make_node, make_state
 
 UNIT = "O1\tbowl\t1\nS1\tempty\nO2\tegg\t1\nS2\twhole\nM1\tcrack\t0:01\t0:05\nO1\tbowl\t0\nS3\tcontains\t{egg}\n"
 

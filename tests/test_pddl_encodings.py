@@ -14,18 +14,18 @@ from conftest import ROOT, SUBGRAPHS
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.goals import Goal, GoalSpec, resolve_goal, spec_of_node
-from foon2pddl.kitchen import Kitchen, default_kitchen
-from foon2pddl.levels import project, project_node
-from foon2pddl.merge import load
-from foon2pddl.model import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.analysis.reachability import reachable
+from foon2pddl.io.files import load
+from foon2pddl.io.rates import Rates
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.model.levels import project, project_node
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
-from foon2pddl.pddl.planners import fd
 from foon2pddl.pddl.prune import prune_task, relevant_units
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
-from foon2pddl.retrieval.rates import Rates
-from foon2pddl.retrieval.reachability import reachable
+from foon2pddl.planners import fd
 
 PARSE_DOMAIN = pddl.parser.domain.DomainParser()  # building a parser takes 0.2 s: build once
 PARSE_PROBLEM = pddl.parser.problem.ProblemParser()

@@ -9,9 +9,9 @@ import pddl.parser.problem
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.goals import Goal, GoalSpec
-from foon2pddl.kitchen import Kitchen
-from foon2pddl.model import Foon, FunctionalUnit, Motion, ObjectNode, Source, State
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
 from foon2pddl.pddl.names import MAX_LENGTH, RESERVED, NameTable, comment, sanitize
 from foon2pddl.pddl.render import render

@@ -10,7 +10,7 @@ from click.testing import CliRunner
 from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
-from foon2pddl.parser import parse_text
+from foon2pddl.io.parser import parse_text
 
 WHIPPED = str(SUBGRAPHS / "0001-whipped_cream.txt")
 

@@ -4,16 +4,16 @@ from __future__ import annotations
 
 import pytest
 
-from foon2pddl.goals import GoalSpec, resolve_goal
-from foon2pddl.kitchen import Kitchen
-from foon2pddl.model import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.goal import GoalSpec, resolve_goal
+from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_task
-from foon2pddl.pddl.decode import PlanDecodeError, decode, plan_units
-from foon2pddl.pddl.planners import up_engine
 from foon2pddl.pddl.render import render
-from foon2pddl.pddl.solve import GoalReplanner, plan
 from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate
 from foon2pddl.pddl.up_problem import build_up, to_up_problem
+from foon2pddl.planners import up_engine
+from foon2pddl.planners.decode import PlanDecodeError, decode, plan_units
+from foon2pddl.planners.solve import GoalReplanner, plan
 
 
 def node(label, *states):

@@ -9,11 +9,11 @@ import random
 
 import pytest
 
+from foon2pddl.analysis.reachability import reachable
 from foon2pddl.experiment.protocol import sample_kitchen
-from foon2pddl.goals import resolve_goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen
-from foon2pddl.pddl.solve import GoalReplanner, plan
-from foon2pddl.retrieval.reachability import reachable
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.planners.solve import GoalReplanner, plan
 
 
 @pytest.fixture(scope="module")

@@ -10,11 +10,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.pddl.planners import external, fd, run_planner
-from foon2pddl.pddl.planners.fd_reuse import TranslatedTask, goal_alternatives
-from foon2pddl.pddl.planners.result import PlanResult, parse_plan_text
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate
+from foon2pddl.planners import external, fd, run_planner
+from foon2pddl.planners.fd_reuse import TranslatedTask, goal_alternatives
+from foon2pddl.planners.result import PlanResult, parse_plan_text
 
 
 def chain_task(goal: str = "c", init: tuple[str, ...] = ("a",), costs: bool = False) -> PlanningTask:

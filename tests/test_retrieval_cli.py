@@ -9,11 +9,12 @@ from click.testing import CliRunner
 from conftest import SEARCH_INPUTS
 
 from foon2pddl.cli import main
-from foon2pddl.inputs import load_kitchen
-from foon2pddl.parser import parse_text
-from foon2pddl.retrieval import formats, render_tree, retrieve
-from foon2pddl.tasktree import TaskTree, validate
-from foon2pddl.writer import write_node
+from foon2pddl.io import tree_formats as formats
+from foon2pddl.io.inputs import load_kitchen
+from foon2pddl.io.parser import parse_text
+from foon2pddl.io.writer import write_node
+from foon2pddl.model.tasktree import TaskTree, validate
+from foon2pddl.retrieval import render_tree, retrieve
 
 RATES = str(SEARCH_INPUTS / "motion.txt")
 
@@ -101,7 +102,7 @@ def test_formats_are_deterministic_and_written_atomically(tmp_path):
 
 def test_json_and_steps_describe_the_same_tree(example):
     kitchen = load_kitchen(None, example, 3)
-    from foon2pddl.inputs import load_goal
+    from foon2pddl.io.inputs import load_goal
 
     tree = retrieve(example.foon, kitchen, load_goal("greek salad", None, example.foon), "complete").tree
     data = json.loads(render_tree(tree, "json", kitchen))

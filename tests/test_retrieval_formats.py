@@ -10,12 +10,12 @@ import pytest
 from conftest import SEARCH_INPUTS
 
 from foon2pddl.errors import FoonSyntaxError
-from foon2pddl.model import FunctionalUnit, Motion, make_node, make_state
-from foon2pddl.parser import parse_text
+from foon2pddl.io.parser import parse_text
+from foon2pddl.io.rates import parse_rates
+from foon2pddl.io.tree_formats import INPUT_COLOUR, MOTION_COLOUR, OUTPUT_COLOUR, step_text
+from foon2pddl.model.foon import FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.tasktree import TaskTree
 from foon2pddl.retrieval import DEFAULT_RATE, read_rates, render_tree
-from foon2pddl.retrieval.formats import INPUT_COLOUR, MOTION_COLOUR, OUTPUT_COLOUR, step_text
-from foon2pddl.retrieval.rates import parse_rates
-from foon2pddl.tasktree import TaskTree
 
 BOARD = make_node("cutting board")
 KNIFE = make_node("knife", motion_flag=1)

@@ -15,12 +15,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import foon2pddl.retrieval.greedy as greedy_module
-from foon2pddl.goals import Goal, GoalSpec
-from foon2pddl.merge import dedupe_units
-from foon2pddl.model import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, dedupe_units, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.tasktree import validate
 from foon2pddl.retrieval import Rates, reachable, retrieve
 from foon2pddl.retrieval.result import BUDGET_EXHAUSTED, UNREACHABLE
-from foon2pddl.tasktree import validate
 
 POOL = [make_node("a"), make_node("b"), make_node("b", [make_state("cut")]), make_node("c", [make_state("in", "b")]),
         make_node("d"), make_node("e", [make_state("mixed", "", ["a", "d"])]), make_node("f"), make_node("g")]

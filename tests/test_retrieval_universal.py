@@ -7,14 +7,15 @@ from click.testing import CliRunner
 from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
-from foon2pddl.goals import Goal, spec_of_node
-from foon2pddl.kitchen import default_kitchen, read_kitchen, write_kitchen
-from foon2pddl.levels import project
-from foon2pddl.parser import parse_text
+from foon2pddl.io.kitchen_files import read_kitchen, write_kitchen
+from foon2pddl.io.parser import parse_text
+from foon2pddl.io.writer import write_node
+from foon2pddl.model.goal import Goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.levels import project
+from foon2pddl.model.tasktree import TaskTree, validate
 from foon2pddl.retrieval import reachable, retrieve
 from foon2pddl.retrieval.result import UNREACHABLE
-from foon2pddl.tasktree import TaskTree, validate
-from foon2pddl.writer import write_node
 
 
 @pytest.fixture(scope="module")

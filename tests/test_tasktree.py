@@ -6,8 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from test_retrieval_properties import problems
 
-from foon2pddl.model import FunctionalUnit, Motion, make_node
-from foon2pddl.tasktree import TaskTree, justify, validate
+from foon2pddl.model.foon import FunctionalUnit, Motion, make_node
+from foon2pddl.model.tasktree import TaskTree, justify, validate
 
 
 def random_run(units, kitchen, order):

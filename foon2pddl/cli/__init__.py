@@ -44,7 +44,7 @@ def main() -> None:
 
 
 # Each command module registers its commands on `main` when imported.
-from . import (  # noqa: E402,F401
+from . import (
     compile_cmd,
     expand_cmd,
     experiment_cmd,

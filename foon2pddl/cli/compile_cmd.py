@@ -7,11 +7,11 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError
-from ..fileio import atomic_write_many
+from ..io.atomic import atomic_write_many
+from ..io.rates import read_rates
 from ..pddl.compile import compile_task
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
-from ..retrieval.rates import read_rates
 from . import main
 from .options import (
     costs_option,

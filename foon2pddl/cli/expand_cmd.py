@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from ..inputs import load_network
+from ..io.inputs import load_network
 from . import main
 from .options import emit_network, kitchen_option, output_option, paths_argument
 
@@ -29,7 +29,7 @@ def expand_(paths, threshold, max_units, kitchen, provenance, fmt, output) -> No
     """
     from ..generalize.expand import expand
     from ..generalize.stats import format_levels_table, levels_table
-    from ..inputs import load_kitchen
+    from ..io.inputs import load_kitchen
 
     net = load_network(paths)
     e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=load_kitchen(kitchen, net, 3))

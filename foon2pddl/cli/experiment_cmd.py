@@ -9,13 +9,7 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError
-from ..experiment.protocol import (
-    DEFAULT_GOALS,
-    DEFAULT_KITCHEN_FRACTION,
-    DEFAULT_SEED,
-    DEFAULT_TRIALS,
-    Protocol,
-)
+from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.sensitivity import DEFAULT_FRACTIONS
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
 from . import main

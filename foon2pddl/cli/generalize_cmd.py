@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..inputs import load_network
+from ..io.inputs import load_network
 from . import main
 from .options import emit, emit_network, output_option, paths_argument
 

@@ -6,9 +6,9 @@ import json
 
 import click
 
-from ..inputs import load_kitchen, load_network
-from ..jsonio import node_to_dict
-from ..model import Foon
+from ..io.inputs import load_kitchen, load_network
+from ..io.jsonio import node_to_dict
+from ..model.foon import Foon
 from ..retrieval import Reachability, reachable
 from . import main
 from .options import emit, kitchen_option, level_option, output_option, paths_argument

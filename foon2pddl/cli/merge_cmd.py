@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import click
 
-from ..inputs import load_network
-from ..jsonio import write_json
-from ..writer import write_foon
+from ..io.inputs import load_network
+from ..io.jsonio import write_json
+from ..io.writer import write_foon
 from . import main
 from .options import emit, level_option, output_option, paths_argument
 

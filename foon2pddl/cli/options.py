@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..fileio import atomic_write
+from ..io.atomic import atomic_write
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
@@ -54,7 +54,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str):
     and --network into what they search.
     """
     from ..generalize.network import network_view
-    from ..inputs import load_kitchen, load_network
+    from ..io.inputs import load_kitchen, load_network
 
     net = load_network(paths)
     return net, network_view(net, network, level, load_kitchen(kitchen, net, level))
@@ -62,8 +62,8 @@ def load_view(paths, kitchen: Path | None, level: int, network: str):
 
 def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:
     """Write a derived network (FOON text with `header`, or the JSON export) and echo the header on stderr."""
-    from ..jsonio import write_json
-    from ..writer import write_foon
+    from ..io.jsonio import write_json
+    from ..io.writer import write_foon
 
     emit(write_json(foon) if fmt == "json" else write_foon(foon, provenance=provenance, header=header), output)
     click.echo(header, err=True)

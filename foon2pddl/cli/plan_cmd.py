@@ -9,11 +9,11 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError
-from ..fileio import atomic_write
-from ..pddl.planners import DEFAULT_PLANNER
-from ..pddl.solve import PHASES, PlanOutcome, plan
-from ..retrieval.formats import FORMATS, render_tree
-from ..retrieval.rates import read_rates
+from ..io.atomic import atomic_write
+from ..io.rates import read_rates
+from ..io.tree_formats import FORMATS, render_tree
+from ..planners import DEFAULT_PLANNER
+from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
     costs_option,
@@ -144,8 +144,8 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
 
 def _why_unreachable(foon, kitchen, goal) -> str:
     """FOON's own account of an unreachable goal: which missing nodes block it (tree and foon-compat semantics)."""
+    from ..analysis.reachability import reachable
     from ..retrieval.complete import unreachable_detail
-    from ..retrieval.reachability import reachable
 
     reach = reachable(foon, kitchen.nodes)
     if any(reach.can_make(c) for c in goal.candidates):

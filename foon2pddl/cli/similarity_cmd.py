@@ -7,7 +7,7 @@ import json
 import click
 
 from ..errors import FoonInputError
-from ..model import normalize_label
+from ..model.foon import normalize_label
 from . import main
 from .options import emit, output_option
 

@@ -6,8 +6,8 @@ import json
 
 import click
 
-from ..inputs import load_network
-from ..stats import format_stats, network_stats
+from ..analysis.stats import format_stats, network_stats
+from ..io.inputs import load_network
 from . import main
 from .options import emit, output_option, paths_argument
 

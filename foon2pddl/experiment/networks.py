@@ -14,10 +14,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from ..goals import Goal, resolve_goal, spec_of_node
-from ..inputs import Network
-from ..kitchen import Kitchen, default_kitchen
-from ..model import Foon, ObjectNode
+from ..io.inputs import Network
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal, resolve_goal, spec_of_node
+from ..model.kitchen import Kitchen, default_kitchen
 
 NETWORKS = ("reg", "exp", "gen")
 

@@ -22,8 +22,8 @@ import hashlib
 import random
 from dataclasses import dataclass
 
-from ..kitchen import Kitchen, default_kitchen
-from ..model import Foon, ObjectNode
+from ..model.foon import Foon, ObjectNode
+from ..model.kitchen import Kitchen, default_kitchen
 
 #: Fraction of the default kitchen in a trial's kitchen (see docs/experiment.md for the sensitivity).
 DEFAULT_KITCHEN_FRACTION = 0.9

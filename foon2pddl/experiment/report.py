@@ -600,7 +600,7 @@ def report_files(data: ReportData, out_dir: Path, report_path: Path) -> dict[Pat
 
 def write_report(data: ReportData, out_dir: Path, report_path: Path) -> list[Path]:
     """Write the CSV, plots and Markdown (all or none); return their paths."""
-    from ..fileio import atomic_write_many
+    from ..io.atomic import atomic_write_many
 
     files = report_files(data, out_dir, report_path)
     atomic_write_many(files)

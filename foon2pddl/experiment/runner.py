@@ -24,10 +24,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import FoonInputError
-from ..fileio import atomic_write
-from ..inputs import example_path, load_network
-from ..kitchen import default_kitchen
-from ..merge import expand_paths
+from ..io.atomic import atomic_write
+from ..io.files import expand_paths
+from ..io.inputs import example_path, load_network
+from ..model.kitchen import default_kitchen
 from .networks import NETWORKS, NetworkView, build_view
 from .protocol import Protocol, Trial, goal_pool, make_trials
 from .records import Record, append, done_keys, open_for_append, read_records

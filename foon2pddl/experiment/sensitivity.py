@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
-from ..retrieval.reachability import reachable
+from ..analysis.reachability import reachable
 from .networks import NetworkView
 from .protocol import Protocol, make_trials
 

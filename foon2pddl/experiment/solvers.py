@@ -18,9 +18,9 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..kitchen import Kitchen
-from ..model import ObjectNode
-from ..tasktree import validate
+from ..model.foon import ObjectNode
+from ..model.kitchen import Kitchen
+from ..model.tasktree import validate
 from .networks import NetworkView
 
 #: Default time limit (seconds) of one planner run.
@@ -92,8 +92,8 @@ class _Native(Prepared):
     """Native retrieval by `method` on the view's network, kitchen mapped through the view."""
 
     def __init__(self, setting: Setting, method: str) -> None:
-        from ..retrieval.index import index_of
-        from ..retrieval.reachability import reachable
+        from ..analysis.index import index_of
+        from ..analysis.reachability import reachable
 
         view = setting.view
         t0 = time.perf_counter()
@@ -141,7 +141,7 @@ class _FdReuse(Prepared):
     """Fast Downward on the unpruned `tree` encoding, translated once, goals swapped in."""
 
     def __init__(self, setting: Setting, optimal: bool) -> None:
-        from ..pddl.solve import GoalReplanner
+        from ..planners.solve import GoalReplanner
 
         view = setting.view
         self.view = view
@@ -167,7 +167,7 @@ class _FdFresh(Prepared):
         self.time_limit = setting.time_limit
 
     def solve(self, node: ObjectNode) -> Outcome:
-        from ..pddl.solve import plan
+        from ..planners.solve import plan
 
         foon = self.view.foon
         outcome = plan(foon, self.kitchen, self.view.goal(node), self.encoding, foon.level,

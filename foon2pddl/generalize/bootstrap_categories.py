@@ -159,7 +159,7 @@ def bootstrap(labels: list[str]) -> dict:
 
 
 def main(argv: list[str] | None = None) -> None:
-    from ..inputs import load_kitchen, load_network
+    from ..io.inputs import load_kitchen, load_network
 
     ap = argparse.ArgumentParser(prog="python -m foon2pddl.generalize.bootstrap_categories", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)

@@ -22,7 +22,7 @@ from importlib import resources
 from pathlib import Path
 
 from ..errors import FoonInputError
-from ..model import normalize_label
+from ..model.foon import normalize_label
 
 
 def index_path() -> Path:

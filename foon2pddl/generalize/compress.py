@@ -15,10 +15,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from ..goals import GoalSpec
-from ..kitchen import Kitchen
-from ..merge import dedupe_units
-from ..model import Foon, make_state
+from ..model.foon import Foon, dedupe_units, make_state
+from ..model.goal import GoalSpec
+from ..model.kitchen import Kitchen
 from .categories import CategoryIndex
 from .substitute import substitute_node, substitute_unit, unit_labels
 

@@ -13,13 +13,13 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon, FunctionalUnit, ObjectNode
-from ..pddl.decode import PlanDecodeError, goal_node
-from ..pddl.planners import DEFAULT_PLANNER, PlanResult, run_planner
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from ..model.tasktree import TaskTree, Validation, validate
 from ..pddl.render import render
-from ..tasktree import TaskTree, Validation, validate
+from ..planners import DEFAULT_PLANNER, PlanResult, run_planner
+from ..planners.decode import PlanDecodeError, goal_node
 from .categories import CategoryIndex
 from .lifted import LiftedTask, encode_lifted, ground_unit
 

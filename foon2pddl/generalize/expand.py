@@ -17,9 +17,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ..errors import FoonInputError
-from ..kitchen import Kitchen
-from ..merge import dedupe_units
-from ..model import Foon, FunctionalUnit
+from ..model.foon import Foon, FunctionalUnit, dedupe_units
+from ..model.kitchen import Kitchen
 from .similarity import SimilarityMatrix, similarity_matrix
 from .substitute import substitute_unit, unit_labels
 

@@ -46,15 +46,14 @@ import itertools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..levels import project, project_node
-from ..merge import dedupe_units
-from ..model import Foon, FunctionalUnit, ObjectNode, make_node, make_state
+from ..analysis.reachability import UNREACHED, reachable
+from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units, make_node, make_state
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from ..model.levels import project, project_node
 from ..pddl.encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
 from ..pddl.names import NameTable
 from ..pddl.task import Action, Atom, PlanningTask, Predicate
-from ..retrieval.reachability import UNREACHED, reachable
 from .categories import CategoryIndex
 from .substitute import substitute_node, substitute_unit, unit_labels
 

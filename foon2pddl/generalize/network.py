@@ -15,11 +15,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..goals import Goal, GoalSpec, resolve_goal
-from ..inputs import Network, goal_spec
-from ..kitchen import Kitchen
-from ..levels import check_level, project
-from ..model import Foon
+from ..io.inputs import Network, goal_spec
+from ..model.foon import Foon
+from ..model.goal import Goal, GoalSpec, resolve_goal
+from ..model.kitchen import Kitchen
+from ..model.levels import check_level, project
 from .categories import CategoryIndex, load_index
 from .compress import abstract_goal, abstract_kitchen, compress
 from .expand import DEFAULT_THRESHOLD, expand

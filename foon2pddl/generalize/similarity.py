@@ -22,8 +22,8 @@ import io
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from ..fileio import atomic_write
-from ..model import normalize_label
+from ..io.atomic import atomic_write
+from ..model.foon import normalize_label
 from . import wordnet
 from .cache import cache_dir, digest
 from .senses import Overrides, Resolution, resolve, shipped_overrides

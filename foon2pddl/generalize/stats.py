@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from ..levels import LEVELS, project
-from ..model import Foon
-from ..stats import level_row
+from ..analysis.stats import level_row
+from ..model.foon import Foon
+from ..model.levels import LEVELS, project
 
 
 def levels_table(networks: Mapping[str, Foon]) -> list[dict[str, int | str]]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from ..model import FunctionalUnit, ObjectNode, Source, make_node, make_state
+from ..model.foon import FunctionalUnit, ObjectNode, Source, make_node, make_state
 
 
 def substitute_node(node: ObjectNode, mapping: Mapping[str, str]) -> ObjectNode:

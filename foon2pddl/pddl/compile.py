@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon
-from ..retrieval.rates import Rates
+from ..io.rates import Rates
+from ..model.foon import Foon
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
 from .encode_compat import encode_compat
 from .encode_state import encode_state
 from .encode_tree import encode_tree

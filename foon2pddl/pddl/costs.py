@@ -10,8 +10,8 @@ plans the shortest wins. Auxiliary goal actions cost 0.
 
 from __future__ import annotations
 
-from ..model import FunctionalUnit
-from ..retrieval.rates import Rates
+from ..io.rates import Rates
+from ..model.foon import FunctionalUnit
 
 COST_MODES = ("unit", "success-rate")
 

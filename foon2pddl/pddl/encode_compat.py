@@ -13,9 +13,9 @@ the only predicate). Semantics are the `tree` encoding's.
 
 from __future__ import annotations
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon
+from ..model.foon import Foon
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
 from .encoding import DEFAULT_OPTIONS, EncodeOptions, at_level, goal_actions, header, select, unit_actions
 from .names import NameTable
 from .task import Atom, PlanningTask, Predicate

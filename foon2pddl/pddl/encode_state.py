@@ -30,9 +30,9 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon, ObjectNode
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
 from .costs import unit_cost
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, goal_actions, header, unit_comment
 from .names import NameTable

@@ -11,19 +11,10 @@ such as pyperplan accept it).
 
 from __future__ import annotations
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon
-from .encoding import (
-    DEFAULT_OPTIONS,
-    GOAL_REACHED,
-    EncodeOptions,
-    at_level,
-    goal_actions,
-    header,
-    select,
-    unit_actions,
-)
+from ..model.foon import Foon
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, goal_actions, header, select, unit_actions
 from .names import NameTable
 from .task import Atom, PlanningTask, Predicate
 

@@ -13,12 +13,12 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..levels import check_level, project, project_node
-from ..model import Foon, FunctionalUnit, ObjectNode
-from ..retrieval.index import FoonIndex, index_of
-from ..retrieval.rates import Rates
+from ..analysis.index import FoonIndex, index_of
+from ..io.rates import Rates
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from ..model.levels import check_level, project, project_node
 from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
 from .prune import relevant_units

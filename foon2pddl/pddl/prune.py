@@ -22,8 +22,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import replace
 
-from ..model import Foon, ObjectNode
-from ..retrieval.reachability import UNREACHED, reachable
+from ..analysis.reachability import UNREACHED, reachable
+from ..model.foon import Foon, ObjectNode
 from .task import Atom, PlanningTask
 
 

@@ -7,10 +7,10 @@
 See docs/retrieval.md for the algorithms, their complexity and tie-break orders.
 """
 
+from ..analysis.reachability import Reachability, blockers, reachable
+from ..io.rates import DEFAULT_RATE, Rates, read_rates
+from ..io.tree_formats import FORMATS, render_tree
 from .api import retrieve
-from .formats import FORMATS, render_tree
-from .rates import DEFAULT_RATE, Rates, read_rates
-from .reachability import Reachability, blockers, reachable
 from .result import METHODS, Retrieval
 
 __all__ = ["DEFAULT_RATE", "FORMATS", "METHODS", "Rates", "Reachability", "Retrieval", "blockers",

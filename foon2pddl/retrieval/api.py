@@ -6,14 +6,14 @@ import math
 from collections.abc import Iterable
 from dataclasses import replace
 
-from ..goals import Goal
-from ..kitchen import Kitchen
-from ..model import Foon, ObjectNode
+from ..analysis.index import index_of
+from ..io.rates import Rates
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
 from .complete import complete
 from .greedy import DEFAULT_BUDGET, greedy
-from .index import index_of
 from .optimal import DEFAULT_NODE_LIMIT, optimal
-from .rates import Rates
 from .result import METHODS, Retrieval
 
 

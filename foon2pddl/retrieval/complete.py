@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..goals import Goal
-from ..model import Foon, ObjectNode
+from ..analysis.reachability import Reachability, blockers, reachable
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
 from .extract import make_tree, ordered_units
-from .reachability import Reachability, blockers, reachable
 from .result import UNREACHABLE, Retrieval
 
 

@@ -18,9 +18,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..model import Foon
-from ..tasktree import TaskTree
-from .index import FoonIndex
+from ..analysis.index import FoonIndex
+from ..model.foon import Foon
+from ..model.tasktree import TaskTree
 
 
 def ordered_units(ix: FoonIndex, goal: int, achiever: Callable[[int], int],

@@ -32,12 +32,12 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable
 
-from ..goals import Goal
-from ..model import Foon, ObjectNode
+from ..analysis.index import index_of
+from ..analysis.reachability import Reachability, reachable
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
 from .complete import unreachable_detail
 from .extract import make_tree, ordered_units
-from .index import index_of
-from .reachability import Reachability, reachable
 from .result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
 
 #: Default iteration budget (objects taken from the queue). The hardest goal

@@ -44,15 +44,15 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
-from ..goals import Goal
-from ..model import Foon, ObjectNode
+from ..analysis.index import FoonIndex
+from ..analysis.reachability import UNREACHED, Reachability, reachable
+from ..io.rates import Rates
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
 from .complete import complete, unreachable_detail
 from .extract import make_tree, ordered_units
 from .greedy import DEFAULT_BUDGET, greedy
-from .index import FoonIndex
 from .lmcut import Cone
-from .rates import Rates
-from .reachability import UNREACHED, Reachability, reachable
 from .result import UNREACHABLE, Retrieval
 
 DEFAULT_NODE_LIMIT = 20_000

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..tasktree import TaskTree
+from ..model.tasktree import TaskTree
 
 METHODS = ("greedy", "complete", "optimal", "weighted")
 

@@ -14,10 +14,10 @@ import json.scanner
 from pathlib import Path
 from typing import Any
 
-from .errors import FoonSyntaxError
-from .levels import LEVELS
-from .model import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
-from .parser import _CONTROL, read_text
+from ..errors import FoonSyntaxError
+from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
+from ..model.levels import LEVELS
+from .parser import CONTROL_CHARS, read_text
 
 FORMAT = "foon2pddl.foon"
 VERSION = 1
@@ -132,7 +132,7 @@ def _label(data: dict, key: str, where: tuple, what: str) -> str:
         raise _Invalid(where + (key,), f"{what} must be a non-empty string, found {_kind(value)}")
     if not value.strip():
         raise _Invalid(where + (key,), f"{what} must be a non-empty string, found a blank one")
-    if _CONTROL.search(value):
+    if CONTROL_CHARS.search(value):
         raise _Invalid(where + (key,), f"control character in {what}")
     return value
 
@@ -152,7 +152,7 @@ def _strings(data: dict, key: str, where: tuple, what: str) -> list[str]:
     for i, item in enumerate(items):
         if not isinstance(item, str) or not item.strip():
             raise _Invalid(where + (key, i), f"{what} must hold non-empty strings, found {_kind(item)}")
-        if _CONTROL.search(item):
+        if CONTROL_CHARS.search(item):
             raise _Invalid(where + (key, i), f"control character in {what}")
     return items
 
@@ -161,7 +161,7 @@ def _state(data: Any, where: tuple, level: int) -> State:
     d = _fields(data, where, "state", ("label",), ("related", "ingredients"))
     label = _label(d, "label", where, "state label")
     related = _opt(d, "related", (str,), "", where, "related object")
-    if _CONTROL.search(related):
+    if CONTROL_CHARS.search(related):
         raise _Invalid(where + ("related",), "control character in related object")
     ingredients = _strings(d, "ingredients", where, "ingredients")
     if ingredients and level < 3:

@@ -204,3 +204,15 @@ def _index(units: tuple[FunctionalUnit, ...], side) -> dict[ObjectNode, tuple[in
         for n in dict.fromkeys(side(u)):
             acc.setdefault(n, []).append(i)
     return {n: tuple(v) for n, v in acc.items()}
+
+
+def dedupe_units(units: Iterable[FunctionalUnit]) -> tuple[FunctionalUnit, ...]:
+    """Keep the first of each group of units with the same key; join their sources."""
+    kept: dict[tuple, FunctionalUnit] = {}
+    for u in units:
+        first = kept.get(u.key)
+        if first is None:
+            kept[u.key] = u
+        else:
+            kept[u.key] = FunctionalUnit(first.inputs, first.motion, first.outputs, first.sources + u.sources)
+    return tuple(kept.values())

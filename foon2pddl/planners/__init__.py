@@ -7,7 +7,7 @@
 
 from __future__ import annotations
 
-from ..task import PlanningTask
+from ..pddl.task import PlanningTask
 from .result import STATUSES, PlanResult, parse_plan_text, step_action
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action"]

@@ -1,6 +1,6 @@
 """Generate `domains/` and `problems/` from the embedded example network (`make pddl`).
 
-`python -m foon2pddl.examples_pddl [ROOT]` writes, for every encoding and every
+`python -m foon2pddl.pddl.examples [ROOT]` writes, for every encoding and every
 goal in `GOALS`, the domain and problem that `foon2pddl compile --goal G
 --encoding E` writes for the example network and kitchen (level 3, pruned):
 `domains/<encoding>/<goal>.pddl` and `problems/<encoding>/<goal>.pddl`.
@@ -13,11 +13,11 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from .fileio import atomic_write_many
-from .inputs import load_goal, load_kitchen, load_network
-from .pddl.compile import ENCODINGS, compile_task
-from .pddl.names import sanitize
-from .pddl.render import render
+from ..io.atomic import atomic_write_many
+from ..io.inputs import load_goal, load_kitchen, load_network
+from .compile import ENCODINGS, compile_task
+from .names import sanitize
+from .render import render
 
 #: Goals a reader recognizes: the dishes of the example recipes the example kitchen can make.
 GOALS = (

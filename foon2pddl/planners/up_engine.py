@@ -18,7 +18,7 @@ import tempfile
 import time
 from typing import Any
 
-from ..task import PlanningTask
+from ..pddl.task import PlanningTask
 from .result import PlanResult
 
 #: UP's PlanGenerationResultStatus names -> our statuses.
@@ -38,7 +38,7 @@ UP_STATUS = {
 def engine_names(env: Any = None) -> list[str]:
     """Names of the one-shot planning engines UP can find (imports unified-planning)."""
     if env is None:
-        from ..up_problem import quiet_environment
+        from ..pddl.up_problem import quiet_environment
 
         env = quiet_environment()
     return sorted(n for n in env.factory.engines
@@ -64,7 +64,7 @@ def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tupl
     """Build the UP problem and solve it in this process: (status, steps, message)."""
     from unified_planning.shortcuts import OneshotPlanner
 
-    from ..up_problem import build_up, quiet_environment
+    from ..pddl.up_problem import build_up, quiet_environment
 
     env = quiet_environment()
     engine, problem_msg = _pick_engine(env, name, optimal)

@@ -13,7 +13,7 @@ import weakref
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from ..model import Foon, ObjectNode
+from ..model.foon import Foon, ObjectNode
 
 
 @dataclass(frozen=True, eq=False)

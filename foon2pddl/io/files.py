@@ -1,8 +1,4 @@
-"""Universal FOON: merge many files into one network with duplicate units removed.
-
-Files are read in sorted path order so the result never depends on the file
-system; duplicates are found with hashed keys in one pass (linear time).
-"""
+"""FOON files and directories -> one universal FOON (paths expanded in sorted order)."""
 
 from __future__ import annotations
 
@@ -11,8 +7,9 @@ from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-from .errors import FoonSyntaxError, ParseWarning
-from .model import Foon, FunctionalUnit
+from ..errors import FoonSyntaxError, ParseWarning
+from ..model.foon import Foon
+from ..model.merge import merge
 from .parser import ParseResult, parse_file
 
 FOON_SUFFIXES = (".txt", ".foon")
@@ -33,31 +30,6 @@ def expand_paths(paths: Iterable[str | Path]) -> list[Path]:
         else:
             raise FoonSyntaxError(str(p), 0, "no such file or directory")
     return sorted(dict.fromkeys(out))
-
-
-def dedupe_units(units: Iterable[FunctionalUnit]) -> tuple[FunctionalUnit, ...]:
-    """Keep the first of each group of units with the same key; join their sources."""
-    kept: dict[tuple, FunctionalUnit] = {}
-    for u in units:
-        first = kept.get(u.key)
-        if first is None:
-            kept[u.key] = u
-        else:
-            kept[u.key] = FunctionalUnit(first.inputs, first.motion, first.outputs, first.sources + u.sources)
-    return tuple(kept.values())
-
-
-def merge(foons: Iterable[Foon], level: int = 3) -> Foon:
-    """Merge networks (projected to `level`) into one, removing duplicate units.
-
-    A network already at a lower level (e.g. a level-1 JSON export) lowers the
-    result's level, so that all nodes are compared at one level.
-    """
-    from .levels import project
-
-    foons = list(foons)
-    level = min([level, *(f.level for f in foons)])
-    return Foon(dedupe_units(u for f in foons for u in project(f, level).units), level)
 
 
 def read_network(path: Path) -> ParseResult:

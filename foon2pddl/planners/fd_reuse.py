@@ -31,7 +31,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..task import Action, Atom, PlanningTask, Predicate
+from ..pddl.task import Action, Atom, PlanningTask, Predicate
 from . import fd
 from .result import PlanResult, step_action
 
@@ -112,7 +112,7 @@ class TranslatedTask:
     @classmethod
     def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None) -> TranslatedTask:
         """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails."""
-        from ..render import render  # the one PDDL writer
+        from ..pddl.render import render
 
         domain_text, problem_text = render(_anchored(task))
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:

@@ -18,8 +18,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
-from ..model import normalize_label
-from ..parser import read_text
+from ..model.foon import normalize_label
+from .parser import read_text
 
 DEFAULT_RATE = 0.5
 

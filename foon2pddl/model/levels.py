@@ -7,7 +7,7 @@ network, kitchen and goal to one level first and then compares nodes with `==`.
 
 from __future__ import annotations
 
-from .model import Foon, FunctionalUnit, ObjectNode, State
+from .foon import Foon, FunctionalUnit, ObjectNode, State, dedupe_units
 
 LEVELS = (1, 2, 3)
 
@@ -45,7 +45,6 @@ def project_unit(unit: FunctionalUnit, level: int, node=None) -> FunctionalUnit:
 
 def project(foon: Foon, level: int) -> Foon:
     """The network at `level` with units that became identical merged (provenance joined)."""
-    from .merge import dedupe_units
 
     check_level(level)
     if level >= foon.level:

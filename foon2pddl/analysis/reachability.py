@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from ..model import Foon, ObjectNode
+from ..model.foon import Foon, ObjectNode
 from .index import FoonIndex, index_of
 
 UNREACHED = -1

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from .model import Foon, FunctionalUnit, Motion, ObjectNode, State
+from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, State
 
 
 class _Ids:

@@ -5,9 +5,9 @@ from __future__ import annotations
 from collections import Counter
 from typing import Any
 
-from .errors import ParseWarning
-from .levels import LEVELS, project
-from .model import Foon
+from ..errors import ParseWarning
+from ..model.foon import Foon
+from ..model.levels import LEVELS, project
 
 
 def level_row(foon: Foon) -> dict[str, int]:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .model import FunctionalUnit, ObjectNode
+from .foon import FunctionalUnit, ObjectNode
 
 
 @dataclass(frozen=True)

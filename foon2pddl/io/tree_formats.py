@@ -14,11 +14,11 @@ import subprocess
 from collections.abc import Iterable
 
 from ..errors import FoonInputError
-from ..jsonio import node_to_dict
-from ..kitchen import Kitchen
-from ..model import FunctionalUnit, ObjectNode
-from ..tasktree import TaskTree
-from ..writer import write_units
+from ..model.foon import FunctionalUnit, ObjectNode
+from ..model.kitchen import Kitchen
+from ..model.tasktree import TaskTree
+from .jsonio import node_to_dict
+from .writer import write_units
 
 FORMATS = ("steps", "foon", "json", "dot", "svg")
 

@@ -13,17 +13,17 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field, replace
 
-from ..goals import Goal, GoalSpec
-from ..kitchen import Kitchen
-from ..levels import project, project_node
-from ..model import Foon, ObjectNode
-from ..retrieval.rates import Rates
-from ..tasktree import TaskTree, Validation
-from .compile import compile_task
+from ..io.rates import Rates
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal, GoalSpec
+from ..model.kitchen import Kitchen
+from ..model.levels import project, project_node
+from ..model.tasktree import TaskTree, Validation
+from ..pddl.compile import compile_task
+from ..pddl.render import render
+from ..pddl.task import Atom, PlanningTask
+from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
-from .planners import DEFAULT_PLANNER, PlanResult, run_planner
-from .render import render
-from .task import Atom, PlanningTask
 
 #: Phases in the order they run (the CLI adds `load` first).
 PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
@@ -112,7 +112,7 @@ class GoalReplanner:
     def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = "tree", level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
                  time_limit: float | None = None) -> None:
-        from .planners.fd_reuse import TranslatedTask
+        from .fd_reuse import TranslatedTask
 
         t0 = time.perf_counter()
         at_level = project(foon, level)

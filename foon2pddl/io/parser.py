@@ -12,11 +12,11 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from .errors import FoonSyntaxError, ParseWarning
-from .model import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
+from ..errors import FoonSyntaxError, ParseWarning
+from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
 
 _ID = re.compile(r"[OSM]\d*")
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
+CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _INT = re.compile(r"\d+")
 
 
@@ -199,7 +199,7 @@ def _classify(raw: str, fail) -> tuple:
         return _SKIP
     if stripped.startswith("//"):
         return _SEPARATOR
-    if _CONTROL.search(line):
+    if CONTROL_CHARS.search(line):
         raise fail("control character in line (garbage bytes?)")
     fields = [f.strip() for f in stripped.split("\t")]
     head = fields[0]
@@ -219,7 +219,7 @@ def _classify(raw: str, fail) -> tuple:
 def _parse_object(fields: list[str] | tuple[str, ...], fail) -> _PendingObject:
     """`O<id> label [flag] [dish|!]`: flag 0/1 (`00` seen), dish an integer, `!` a goal mark."""
     label = fields[1]
-    if _CONTROL.search(label):
+    if CONTROL_CHARS.search(label):
         raise fail("control character in object label")
     flag, goal, dish = 0, False, None
     rest = [f for f in fields[2:] if f]
@@ -315,7 +315,7 @@ def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, i
         if stripped.startswith("//"):
             close()
             continue
-        if _CONTROL.search(line):
+        if CONTROL_CHARS.search(line):
             raise FoonSyntaxError(path, lineno, "control character in line (garbage bytes?)", line)
         fields = [f.strip() for f in stripped.split("\t")]
         head = fields[0]

@@ -7,12 +7,14 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from .errors import FoonInputError, ParseWarning
-from .goals import Goal, GoalSpec, parse_goal_spec, read_goal_file, resolve_goal
-from .kitchen import Kitchen, default_kitchen, read_kitchen
-from .levels import check_level, project
-from .merge import load
-from .model import Foon
+from ..errors import FoonInputError, ParseWarning
+from ..model.foon import Foon
+from ..model.goal import Goal, GoalSpec, resolve_goal
+from ..model.kitchen import Kitchen, default_kitchen
+from ..model.levels import check_level, project
+from .files import load
+from .goal_files import parse_goal_spec, read_goal_file
+from .kitchen_files import read_kitchen
 
 
 def example_path(name: str = "example") -> Path:

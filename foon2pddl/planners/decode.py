@@ -20,12 +20,12 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from ..goals import Goal
-from ..levels import project_node
-from ..model import FunctionalUnit, ObjectNode
-from ..tasktree import TaskTree, Validation, justify, validate
-from .planners.result import step_action
-from .task import Atom, PlanningTask
+from ..model.foon import FunctionalUnit, ObjectNode
+from ..model.goal import Goal
+from ..model.levels import project_node
+from ..model.tasktree import TaskTree, Validation, justify, validate
+from ..pddl.task import Atom, PlanningTask
+from .result import step_action
 
 #: Largest task (actions) checked with UP's validator: its cost grows fast with size.
 UP_VALIDATE_MAX_ACTIONS = 300
@@ -162,7 +162,7 @@ def up_validation(task: PlanningTask, steps: Sequence[str]) -> Validation:
     from unified_planning.plans import ActionInstance, SequentialPlan
     from unified_planning.shortcuts import PlanValidator
 
-    from .up_problem import build_up
+    from ..pddl.up_problem import build_up
 
     up = build_up(task)
     actions = {name.lower(): a for name, a in up.actions.items()}

@@ -1,0 +1,1 @@
+"""Graph analysis shared by retrieval and PDDL: the producer/consumer index, reachability, statistics."""

@@ -1,0 +1,1 @@
+"""The FOON model: immutable nodes, units, networks, hierarchy levels, goals, kitchens and task trees."""

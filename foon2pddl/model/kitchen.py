@@ -1,0 +1,66 @@
+"""Kitchens: the object nodes available before any unit runs.
+
+Three file formats are read (FOON-style O/S lines, the JSON convention of public
+FOON search projects, and one goal-syntax node per line), and a network's
+default kitchen is derived by the rule documented in `default_kitchen`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from .foon import Foon, ObjectNode
+from .levels import project_node
+
+#: States an object is in before anyone touches it. An input node whose states
+#: are all base states is in the default kitchen even if some unit also produces
+#: it (a mixer goes off -> on -> off; without this rule `off` would never be available).
+BASE_STATES: frozenset[str] = frozenset(
+    {
+        "off", "off (ready)", "empty", "clean", "whole", "raw", "uncooked", "uncook",
+        "unpeeled", "uncracked", "closed", "sealed", "dry", "frozen", "ready",
+        "solid", "liquid", "granulated", "powder", "fresh", "cold", "room temperature",
+    }
+)
+
+
+@dataclass(frozen=True)
+class Kitchen:
+    """A set of available object nodes at one hierarchy level."""
+
+    nodes: frozenset[ObjectNode]
+    level: int = 3
+    source: str = ""
+
+    def __contains__(self, node: object) -> bool:
+        return node in self.nodes
+
+    def __len__(self) -> int:
+        return len(self.nodes)
+
+    def project(self, level: int) -> Kitchen:
+        """The kitchen as seen at `level`."""
+        if level >= self.level:
+            return self
+        return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source)
+
+    def sorted_nodes(self) -> list[ObjectNode]:
+        """Nodes in a stable order (for writing and display)."""
+        return sorted(self.nodes)
+
+
+def starting_nodes(foon: Foon) -> frozenset[ObjectNode]:
+    """Input nodes that no unit creates (a unit that passes a node through unchanged does not create it)."""
+    created = {n for u in foon.units for n in u.outputs if n not in u.inputs}
+    return frozenset(n for u in foon.units for n in u.inputs if n not in created)
+
+
+def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
+    """Starting nodes plus every input node whose states are all base states."""
+    base = frozenset(base_states)
+    extra = {
+        n for u in foon.units for n in u.inputs
+        if n.states and all(s.label in base and not s.related and not s.ingredients for s in n.states)
+    }
+    return Kitchen(starting_nodes(foon) | frozenset(extra), foon.level, "default kitchen")
