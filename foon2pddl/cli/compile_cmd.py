@@ -25,6 +25,7 @@ from .options import (
     paths_argument,
     prune_option,
     rates_option,
+    view_goal,
 )
 
 
@@ -34,7 +35,7 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
-    target = view.goal(goal, goal_file)
+    target = view_goal(view, goal, goal_file, level)
     if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
         from ..generalize.categories import load_index
         from ..generalize.lifted import check_lifted_options, encode_lifted

@@ -6,12 +6,11 @@ import json
 
 import click
 
-from ..io.inputs import load_kitchen, load_network
 from ..io.jsonio import node_to_dict
 from ..model.foon import Foon
 from ..retrieval import Reachability, reachable
 from . import main
-from .options import emit, kitchen_option, level_option, output_option, paths_argument
+from .options import emit, kitchen_option, level_option, load_view, network_option, output_option, paths_argument
 
 
 def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
@@ -25,13 +24,15 @@ def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
     return rows
 
 
-def format_rows(rows: list[dict], kitchen_source: str) -> str:
-    """Text table: `yes   3  * node` (round; `*` marks a dish), then a summary line."""
-    lines = [f"{'yes' if r['reachable'] else 'no':<4}{'' if r['round'] is None else r['round']:>4}  "
-             f"{'*' if r['dish'] else ' '} {r['goal']}" for r in rows]
+def format_rows(rows: list[dict], kitchen_source: str, network: str = "reg") -> str:
+    """Text table: the legend and a column header first, then `yes      3  *    node` per goal."""
     made = sum(r["reachable"] for r in rows)
-    lines.append(f"{made} of {len(rows)} goal candidates can be made from {kitchen_source} "
-                 "(round = sequential steps needed; * = a recipe's dish)")
+    net = "" if network == "reg" else f" on FOON-{network.upper()}"
+    lines = [f"reachable: {made} of {len(rows)} goal candidates can be made from {kitchen_source}{net} "
+             "(round = sequential steps needed; * = a recipe's dish)",
+             f"{'made':<5}{'round':>5}  {'dish':<5}goal"]
+    lines += [f"{'yes' if r['reachable'] else 'no':<5}{'' if r['round'] is None else r['round']:>5}  "
+              f"{'*' if r['dish'] else '':<5}{r['goal']}" for r in rows]
     return "\n".join(lines) + "\n"
 
 
@@ -39,18 +40,21 @@ def format_rows(rows: list[dict], kitchen_source: str) -> str:
 @paths_argument
 @kitchen_option
 @level_option
+@network_option
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
 @output_option
-def goals(paths, kitchen, level, as_json, output) -> None:
-    """List the goal candidates (nodes some unit produces) and whether the kitchen can make each."""
-    net = load_network(paths)
-    foon = net.at(level)
-    kit = load_kitchen(kitchen, net, level)
+def goals(paths, kitchen, level, network, as_json, output) -> None:
+    """List the goal candidates (nodes some unit produces) and whether the kitchen can make each.
+
+    With --network exp or gen, the goals of FOON-EXP or FOON-GEN (GEN goals are category-level).
+    """
+    _, view = load_view(paths, kitchen, level, network)
+    foon, kit = view.foon, view.kitchen
     rows = goal_rows(foon, reachable(foon, kit.nodes))
     source = kit.source or "the kitchen"
     if as_json:
-        data = {"level": level, "kitchen": source, "reachable": sum(r["reachable"] for r in rows),
-                "total": len(rows), "goals": rows}
+        data = {"level": level, "network": network, "kitchen": source,
+                "reachable": sum(r["reachable"] for r in rows), "total": len(rows), "goals": rows}
         emit(json.dumps(data, indent=2, ensure_ascii=False) + "\n", output)
     else:
-        emit(format_rows(rows, source), output)
+        emit(format_rows(rows, source, network), output)

@@ -57,7 +57,34 @@ def load_view(paths, kitchen: Path | None, level: int, network: str):
     from ..io.inputs import load_kitchen, load_network
 
     net = load_network(paths)
-    return net, network_view(net, network, level, load_kitchen(kitchen, net, level))
+    kit = load_kitchen(kitchen, net, level)
+    view = network_view(net, network, level, kit)
+    if kitchen is not None:
+        warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
+    return net, view
+
+
+def warn_kitchen(kitchen, foon, strays) -> None:
+    """Warn (stderr) about kitchen items that match no node of the network, with close-match hints."""
+    from ..model.kitchen import unmatched_items
+
+    messages, total = unmatched_items(strays, foon)
+    for m in messages:
+        click.echo(f"{kitchen.source}: warning: {m}", err=True)
+    if total > len(messages):
+        click.echo(f"{kitchen.source}: warning: ... and {total - len(messages)} more kitchen items match no node",
+                   err=True)
+
+
+def view_goal(view, goal: str | None, goal_file: Path | None, level: int):
+    """The `--goal`/`--goal-file` goal resolved against a network view; warns when `level` drops part of it."""
+    from ..io.inputs import goal_spec
+    from ..model.goal import level_loss
+
+    loss = level_loss(goal_spec(goal, goal_file), level)
+    if loss:
+        click.echo(f"warning: {loss}", err=True)
+    return view.goal(goal, goal_file)
 
 
 def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:

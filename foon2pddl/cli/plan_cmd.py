@@ -27,6 +27,7 @@ from .options import (
     paths_argument,
     prune_option,
     rates_option,
+    view_goal,
 )
 
 #: Exit status per outcome status.
@@ -98,7 +99,7 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
-    foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
+    foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
     try:

@@ -20,6 +20,7 @@ from .options import (
     output_option,
     paths_argument,
     rates_option,
+    view_goal,
 )
 
 
@@ -52,7 +53,7 @@ def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fm
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate)")
     motion_rates = read_rates(rates) if rates else None
     _, view = load_view(paths, kitchen, level, network)
-    foon, kit, target = view.foon, view.kitchen, view.goal(goal, goal_file)
+    foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
     result = retrieve(foon, kit, target, method, rates=motion_rates, budget=budget, node_limit=node_limit)

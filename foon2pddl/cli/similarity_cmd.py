@@ -24,6 +24,8 @@ def similarity(labels, as_pairs, senses, as_json, output) -> None:
     Wu-Palmer similarity over WordNet noun senses in kitchen-relevant lexicographer
     files, with head-noun fallback for compounds and the shipped overrides
     (docs/generalization.md). FOON-EXP substitutes labels at least 0.89 similar.
+    A label with no kitchen sense in WordNet gets a warning on stderr (exit status 0):
+    its similarity to every other label is 0.
     """
     from ..generalize.similarity import LabelSimilarity
 
@@ -54,6 +56,12 @@ def similarity(labels, as_pairs, senses, as_json, output) -> None:
             text = " " * width + "".join(f"  {i + 1:>6}" for i in range(len(names))) + "\n"
             text += "".join(f"{n:<{width}}" + "".join(f"  {v:6.4f}" for v in r) + f"   ({i + 1})\n"
                             for i, (n, r) in enumerate(zip(names, rows, strict=True)))
+    for label in dict.fromkeys(labels):
+        if not sim.resolution(label).senses:
+            known = bool(sim.reader.synsets(label.replace(" ", "_")))
+            what = "has no kitchen sense in WordNet" if known else "is not in WordNet"
+            click.echo(f"warning: {label!r} {what} (nor its head noun, nor in the overrides): "
+                       "its similarity to any other label is 0", err=True)
     if senses and not as_json:
         text += "".join(sim.resolution(x).describe() + "\n" for x in dict.fromkeys(labels))
     emit(text, output)

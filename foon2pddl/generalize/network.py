@@ -11,18 +11,19 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..io.inputs import Network, goal_spec
-from ..model.foon import Foon
+from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec, resolve_goal
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project
 from .categories import CategoryIndex, load_index
-from .compress import abstract_goal, abstract_kitchen, compress
+from .compress import abstract_goal, abstract_kitchen, category_map, compress
 from .expand import DEFAULT_THRESHOLD, expand
+from .substitute import substitute_node
 
 NETWORKS = ("reg", "exp", "gen")
 
@@ -36,6 +37,13 @@ class NetworkView:
     kitchen: Kitchen
     map_goal: Callable[[GoalSpec], GoalSpec]
     note: str = ""
+    map_node: Callable[[ObjectNode], ObjectNode] = lambda node: node  # a kitchen node as this view sees it
+
+    def kitchen_strays(self, nodes: Iterable[ObjectNode], reg: Foon) -> list[ObjectNode]:
+        """The kitchen `nodes` (at this view's level) that are neither a node of `reg` nor, mapped, of this view."""
+        own = set(self.foon.nodes)
+        known = set(reg.nodes)
+        return [n for n in nodes if n not in known and self.map_node(n) not in own]
 
     def goal(self, goal: str | None, goal_file: str | Path | None) -> Goal:
         """The user's goal (`--goal` text or `--goal-file`) mapped and resolved against this network."""
@@ -56,6 +64,8 @@ def network_view(net: Network, kind: str, level: int, kitchen: Kitchen, *, thres
         ix = index or load_index()
         c = compress(net.foon, ix)
         note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units"
+        labels = {x for n in kitchen.nodes for x in (n.label, *(y for s in n.states for y in (s.related, *s.ingredients)))}
+        mapping = category_map(sorted(labels - {""}), ix)
         return NetworkView(kind, project(c.foon, level), abstract_kitchen(kitchen, ix),
-                           lambda spec: abstract_goal(spec, ix), note)
+                           lambda spec: abstract_goal(spec, ix), note, lambda node: substitute_node(node, mapping))
     raise ValueError(f"network must be one of {', '.join(NETWORKS)}, not {kind!r}")

@@ -165,6 +165,23 @@ class Foon:
     units: tuple[FunctionalUnit, ...]
     level: int = 3
 
+    def __repr__(self) -> str:
+        """Counts only: the full dataclass repr of a network runs to hundreds of kilobytes."""
+        return (f"<Foon level {self.level}: {len(self.units)} units, {len(self.nodes)} object nodes, "
+                f"{len(self.motions)} motions>")
+
+    def _repr_html_(self) -> str:
+        """Jupyter: a summary table (level, units, object nodes, labels, motions, recipes' dishes)."""
+        from html import escape
+
+        dishes = sorted({n.label for u in self.units for n in u.outputs if n.dish is not None})
+        rows = [("level", str(self.level)), ("units", str(len(self.units))),
+                ("object nodes", str(len(self.nodes))), ("object labels", str(len({n.label for n in self.nodes}))),
+                ("motions", str(len(self.motions))),
+                ("dishes", ", ".join(dishes[:12]) + (f", ... ({len(dishes)})" if len(dishes) > 12 else ""))]
+        body = "".join(f"<tr><th>{k}</th><td>{escape(v)}</td></tr>" for k, v in rows)
+        return f"<table><caption>FOON</caption>{body}</table>"
+
     def __iter__(self) -> Iterator[FunctionalUnit]:
         return iter(self.units)
 

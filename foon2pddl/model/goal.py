@@ -54,6 +54,33 @@ class Goal:
 
 
 
+def level_loss(spec: GoalSpec, level: int) -> str:
+    """What reading `spec` at `level` drops, in words ("" when nothing): level 1 keeps only the
+    object label, level 2 drops ingredient lists. Used to warn instead of silently answering
+    a different question."""
+    if spec.states is None or level >= 3:
+        return ""
+    kept = project_node(make_node(spec.label, spec.states), level)
+    full = make_node(spec.label, spec.states)
+    if kept == full:
+        return ""
+    what = "a goal's states" if level == 1 else "ingredients ({...})"
+    read = spec_of_node(kept) if kept.states else GoalSpec(kept.label)
+    return f"level {level} ignores {what}: {spec.describe()!r} is read as {read.describe()!r}"
+
+
+def label_hints(label: str, foon: Foon, limit: int = 5) -> list[str]:
+    """Produced labels close to `label`: difflib's close matches, then labels containing it as a word.
+
+    Only produced labels are goals, so only they are offered.
+    """
+    produced = sorted({n.label for n in foon.producers})
+    close = difflib.get_close_matches(label, produced, n=limit, cutoff=0.6)
+    words = set(label.split())
+    close += [x for x in produced if x not in close and words and words <= set(x.split())]
+    return close[:limit]
+
+
 def spec_of_node(node: ObjectNode) -> GoalSpec:
     """The goal that asks for exactly this node."""
     return GoalSpec(node.label, node.states)
@@ -70,11 +97,11 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     produced = [n for n in foon.producers]
     same_label = [n for n in produced if n.label == spec.label]
     if not same_label:
-        labels = sorted({n.label for n in foon.nodes})
-        close = difflib.get_close_matches(spec.label, labels, n=5, cutoff=0.6)
+        close = label_hints(spec.label, foon)
         hint = f"; close matches: {', '.join(close)}" if close else ""
-        if spec.label in labels:
-            raise FoonInputError("<goal>", 0, f"no unit produces {spec.label!r} (it only occurs as an input)")
+        hint += "; `foon2pddl goals` lists every goal"
+        if any(n.label == spec.label for n in foon.nodes):
+            raise FoonInputError("<goal>", 0, f"no unit produces {spec.label!r} (it only occurs as an input){hint}")
         raise FoonInputError("<goal>", 0, f"unknown object label {spec.label!r}{hint}")
     if spec.states is None:
         return Goal(spec, tuple(sorted(same_label)), level)

@@ -64,3 +64,43 @@ def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kit
         if n.states and all(s.label in base and not s.related and not s.ingredients for s in n.states)
     }
     return Kitchen(starting_nodes(foon) | frozenset(extra), foon.level, "default kitchen")
+
+
+def _goal_syntax(node: ObjectNode) -> str:
+    """`onion: whole`: how a user writes the node in a kitchen or goal line."""
+    return node.label + (": " + ", ".join(s.describe() for s in node.states) if node.states else "")
+
+
+def node_hints(node: ObjectNode, foon: Foon, limit: int = 3) -> list[str]:
+    """Network nodes (goal syntax) close to `node`, for a user who mistyped it.
+
+    Candidates are the nodes whose label is the node's label, a label close to it
+    (difflib), or a leading part of it (`onion whole` -> `onion`); among them the
+    closest in goal syntax come first. Cost: one difflib pass over the labels, then over
+    the few candidate nodes, so hints stay cheap on networks of thousands of nodes.
+    """
+    import difflib
+
+    by_label: dict[str, list[ObjectNode]] = {}
+    for n in foon.nodes:
+        by_label.setdefault(n.label, []).append(n)
+    words = node.label.split()
+    labels = {node.label} if node.label in by_label else set()
+    labels.update(" ".join(words[:i]) for i in range(1, len(words)) if " ".join(words[:i]) in by_label)
+    labels.update(difflib.get_close_matches(node.label, list(by_label), n=3, cutoff=0.75))
+    pool = {_goal_syntax(n): n for label in labels for n in by_label[label]}
+    return difflib.get_close_matches(_goal_syntax(node), sorted(pool), n=limit, cutoff=0.0) if pool else []
+
+
+def unmatched_items(nodes: Iterable[ObjectNode], foon: Foon, limit: int = 10) -> tuple[list[str], int]:
+    """Kitchen nodes that are no node of `foon` (same level): a message with hints for the first
+    `limit` (sorted), and how many there are in all. Such items can never be used; most are typos.
+    """
+    known = set(foon.nodes)
+    stray = sorted(n for n in nodes if n not in known)
+    messages = []
+    for n in stray[:limit]:
+        hints = node_hints(n, foon)
+        close = f"; close: {'; '.join(f'`{h}`' for h in hints)}" if hints else ""
+        messages.append(f"kitchen item `{_goal_syntax(n)}` matches no node of the network{close}")
+    return messages, len(stray)

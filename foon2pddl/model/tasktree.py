@@ -22,6 +22,18 @@ class TaskTree:
     def __len__(self) -> int:
         return len(self.units)
 
+    def __repr__(self) -> str:
+        """Goal and unit count only (the dataclass repr lists every node of every unit)."""
+        return f"<TaskTree for {self.goal.describe()!r}: {len(self.units)} units, level {self.level}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the goal and the numbered units (`motion: inputs -> outputs`), labels escaped."""
+        from html import escape
+
+        steps = "".join(f"<li>{escape(u.describe())}</li>" for u in self.units)
+        return (f"<div><b>task tree for {escape(self.goal.describe())}</b>: {len(self.units)} units, "
+                f"level {self.level}<ol>{steps}</ol></div>")
+
 
 @dataclass(frozen=True)
 class Validation:

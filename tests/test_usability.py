@@ -1,0 +1,117 @@
+"""What a newcomer meets first: warnings and hints that say what to do next (issue 12)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+
+
+def run(*args: str):
+    return CliRunner().invoke(main, list(args))
+
+
+# -- level 1/2 drop parts of a goal: say so ---------------------------------------------------------
+
+
+def test_level_1_warns_that_goal_states_are_ignored():
+    r = run("retrieve", "--goal", "onion: chopped, in [bowl]", "--level", "1")
+    assert "warning: level 1 ignores" in r.stderr
+    assert "'onion: chopped, in [bowl]' is read as 'onion'" in r.stderr
+
+
+def test_level_2_warns_that_ingredients_are_ignored_and_level_3_is_silent():
+    two = run("retrieve", "--goal", "mixing bowl: contains {whipped cream}", "--level", "2")
+    assert "warning: level 2 ignores" in two.stderr and "ingredients" in two.stderr
+    three = run("retrieve", "--goal", "onion: chopped", "--level", "3")
+    assert "warning" not in three.stderr
+    plain = run("retrieve", "--goal", "guacamole", "--level", "1")
+    assert plain.exit_code == 0 and "warning" not in plain.stderr
+
+
+# -- similarity of a label WordNet does not know ----------------------------------------------------
+
+
+def test_similarity_warns_about_labels_not_in_wordnet():
+    r = run("similarity", "xyzzy", "lemon")
+    assert r.exit_code == 0 and float(r.stdout) == 0.0
+    assert "warning: 'xyzzy' is not in WordNet" in r.stderr and "similarity to any other label is 0" in r.stderr
+    assert "lemon" not in r.stderr
+    known = run("similarity", "lemon", "lime")
+    assert known.stderr == ""
+    # in WordNet, but in no kitchen-relevant sense: a different message
+    abstract = run("similarity", "democracy", "lemon")
+    assert "warning: 'democracy' has no kitchen sense in WordNet" in abstract.stderr
+
+
+# -- unknown goal label: where to look --------------------------------------------------------------
+
+
+def test_unknown_goal_points_to_goals_command_and_closest_labels():
+    r = run("retrieve", "--goal", "guacamol")
+    assert r.exit_code == 2
+    assert "close matches: guacamole" in r.stderr and "foon2pddl goals" in r.stderr
+    # a word of a produced label is a hint too (difflib alone misses it)
+    cream = run("retrieve", "--goal", "cream")
+    assert cream.exit_code == 2 and "whipped cream" in cream.stderr
+
+
+# -- goals: header first, legend first, --network ---------------------------------------------------
+
+
+def test_goals_prints_legend_and_header_before_rows():
+    lines = run("goals").stdout.splitlines()
+    assert lines[0].startswith("reachable")  # legend line
+    assert "round = sequential steps" in lines[0] and "* = a recipe's dish" in lines[0]
+    assert lines[1].split() == ["made", "round", "dish", "goal"]
+    assert lines[2].startswith(("yes", "no"))
+    assert "of" in lines[0] and "goal candidates" in lines[0]
+
+
+@pytest.mark.parametrize(("network", "lemonade"), [("exp", "lemonade"), ("gen", "beverages")])
+def test_goals_takes_network(network, lemonade):
+    reg = json.loads(run("goals", "--json").stdout)
+    other = run("goals", "--json", "--network", network)
+    assert other.exit_code == 0, other.output
+    data = json.loads(other.stdout)
+    assert data["network"] == network
+    # lemonade (GEN: a beverage) can be made: a lime stands in for the lemon; on REG it cannot
+    assert any(g["reachable"] for g in data["goals"] if g["dish"] and g["node"]["label"] == lemonade)
+    assert not any(g["reachable"] for g in reg["goals"] if g["node"]["label"] == "lemonade")
+
+
+# -- kitchen items that match no node ---------------------------------------------------------------
+
+
+def test_kitchen_typos_are_warned_with_close_matches(tmp_path):
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("onoin: whole\nonion whole\nknife\ncutting board: empty\n")
+    r = run("retrieve", "--goal", "onion: chopped", "--kitchen", str(kitchen))
+    assert r.exit_code == 1
+    warned = [line for line in r.stderr.splitlines() if line.startswith(f"{kitchen}: warning: kitchen item")]
+    assert len(warned) == 2  # knife and the cutting board are nodes of the network
+    assert all("close: `onion: whole`" in line for line in warned)
+    assert any("`onoin: whole`" in line for line in warned) and any("`onion whole`" in line for line in warned)
+
+
+def test_example_kitchen_given_explicitly_raises_no_warning():
+    from foon2pddl.io.inputs import example_path
+
+    for network in ("reg", "exp", "gen"):
+        r = run("retrieve", "--goal", "lemonade", "--network", network, "--kitchen",
+                str(example_path("example_kitchen.txt")))
+        assert "warning" not in r.stderr, (network, r.stderr)
+
+
+def test_many_stray_kitchen_items_are_summarized(tmp_path):
+    from foon2pddl.io.inputs import load_network
+    from foon2pddl.model.foon import make_node
+    from foon2pddl.model.kitchen import unmatched_items
+
+    foon = load_network([]).foon
+    strays = [make_node(f"thing {i}") for i in range(25)]
+    messages, total = unmatched_items([*strays, foon.nodes[0]], foon, limit=10)
+    assert total == 25 and len(messages) == 10
