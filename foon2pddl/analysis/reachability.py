@@ -15,7 +15,7 @@ fewest sequential rounds that can make it.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Container, Iterable
 from dataclasses import dataclass
 
 from ..model.foon import Foon, ObjectNode
@@ -92,12 +92,13 @@ def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray)
 
 
 def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
-              targets: Iterable[ObjectNode] | None = None) -> Reachability:
+              targets: Iterable[ObjectNode] | None = None, skip: Container[int] = ()) -> Reachability:
     """Run the fixpoint of `foon` from `kitchen_nodes` (nodes at the network's level).
 
     With `targets`, run it only over the units that can contribute to them (a
     node's round and first achiever depend only on such units, so the answers
-    for the targets are the same; used per goal, it is much faster).
+    for the targets are the same; used per goal, it is much faster). Units whose
+    index is in `skip` never fire (the units constraints remove, `constraints.py`).
     """
     ix = index_of(foon)
     kitchen = frozenset(kitchen_nodes)
@@ -108,6 +109,8 @@ def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
         in_kitchen[k] = 1
     inputs = ix.inputs
     units = ix.order if scope is None else relevant_units(ix, ix.ids(scope), in_kitchen)
+    if skip:
+        units = [u for u in units if u not in skip]
     missing = [-1] * len(inputs)  # inputs still missing; -1 (never 0) for units outside the scope
     ready: list[int] = []
     for u in units:

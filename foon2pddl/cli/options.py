@@ -34,6 +34,25 @@ network_option = click.option("--network", type=click.Choice(["reg", "exp", "gen
                                    "name kitchen objects). See docs/generalization.md.")
 
 
+def constraints_options(command):
+    """`--constraints FILE` (repeatable) and the one-off `--without-motion`, `--without`, `--must-use`."""
+    options = [
+        click.option("--constraints", "constraints_files", multiple=True, type=click.Path(path_type=Path),
+                     help="Constraints file (JSON, docs/constraints.md); repeat to combine profiles."),
+        click.option("--without-motion", "without_motions", multiple=True, metavar="MOTION",
+                     help="A motion the robot cannot perform (also bans motions containing it: pour -> "
+                          "scoop and pour). Repeatable."),
+        click.option("--without", "without", multiple=True, metavar="OBJECT",
+                     help="An object or ingredient that must not appear anywhere in the tree (labels, "
+                          "ingredient lists, everything made from it). Repeatable."),
+        click.option("--must-use", "must_use", multiple=True, metavar="OBJECT",
+                     help="An object some unit of the tree must use. Repeatable."),
+    ]
+    for option in reversed(options):
+        command = option(command)
+    return command
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:

@@ -5,11 +5,14 @@ from __future__ import annotations
 import click
 
 from ..errors import FoonInputError
+from ..io.constraints_file import load_constraints, with_rates
 from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
+from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT
 from . import main
 from .options import (
+    constraints_options,
     emit,
     goal_file_option,
     goal_option,
@@ -41,22 +44,40 @@ from .options import (
               help="greedy: iterations (objects taken from its queue) before giving up.")
 @click.option("--node-limit", "node_limit", type=click.IntRange(min=1), default=DEFAULT_NODE_LIMIT,
               show_default=True, help="optimal/weighted: search nodes expanded before returning the best tree so far.")
+@constraints_options
+@click.option("--explain", is_flag=True,
+              help="With constraints: for an unreachable goal the smallest set of constraints to relax, "
+                   "for a solved one the units each constraint made the tree avoid (on stderr).")
 @output_option
 def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fmt, budget, node_limit,
-              output) -> None:
+              constraints_files, without_motions, without, must_use, explain, output) -> None:
     """Find the functional units that make the goal from the kitchen, in executable order.
 
     Exit status: 0 a tree was found, 1 the goal cannot be made (the reason goes to stderr),
     2 bad input.
     """
-    if method == "weighted" and rates is None:
-        raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate)")
-    motion_rates = read_rates(rates) if rates else None
+    cons = load_constraints(constraints_files, without_motions, without, must_use)
+    motion_rates = with_rates(read_rates(rates) if rates else None, cons)
+    if method == "weighted" and motion_rates is None:
+        raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate) "
+                                             "or rates in a --constraints file")
     _, view = load_view(paths, kitchen, level, network)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
-    result = retrieve(foon, kit, target, method, rates=motion_rates, budget=budget, node_limit=node_limit)
+    limits = {"budget": budget, "node_limit": node_limit}
+    if cons.items:
+        done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+        for line in constraint_notes(done.removal):
+            click.echo(line, err=True)
+        result = done.result
+        if explain and result.tree is not None:
+            for s in shaping(foon, kit, target, done, method, rates=motion_rates, **limits):
+                click.echo(explain_line(s), err=True)
+    else:
+        result = retrieve(foon, kit, target, method, rates=motion_rates, **limits)
+        if explain:
+            click.echo("explain: no constraints given", err=True)
     if result.tree is None:
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {result.detail}", err=True)
         click.get_current_context().exit(1)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from ..model.constraints import node_labels
 from ..model.foon import FunctionalUnit, ObjectNode, Source, make_node, make_state
 
 
@@ -25,14 +26,7 @@ def substitute_node(node: ObjectNode, mapping: Mapping[str, str]) -> ObjectNode:
 
 def unit_labels(unit: FunctionalUnit) -> frozenset[str]:
     """Every object label a unit mentions: node labels, related objects and ingredients."""
-    out: set[str] = set()
-    for n in (*unit.inputs, *unit.outputs):
-        out.add(n.label)
-        for s in n.states:
-            if s.related:
-                out.add(s.related)
-            out.update(s.ingredients)
-    return frozenset(out)
+    return frozenset().union(*(node_labels(n) for n in (*unit.inputs, *unit.outputs)))
 
 
 def substitute_unit(unit: FunctionalUnit, mapping: Mapping[str, str], note: str | None = None) -> FunctionalUnit:

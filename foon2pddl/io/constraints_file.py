@@ -1,0 +1,118 @@
+"""Constraints files (JSON, see docs/constraints.md and docs/constraints.schema.json).
+
+```json
+{"name": "one-armed robot", "without_motions": ["pour"], "without": ["peanut"],
+ "must_use": ["lettuce"], "rates": {"slice": 0.9}, "costs": {"stir": 0.1}}
+```
+
+Every key is optional; unknown keys are errors (a typo must not silently allow a
+motion). `costs` are -ln(success rate), so a cost c is the rate exp(-c): a cost of 0
+means the motion always succeeds. Errors name the file and the line of the key.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Iterable
+from pathlib import Path
+
+from ..errors import FoonSyntaxError
+from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
+from .parser import CONTROL_CHARS, read_text
+from .rates import Rates
+
+#: File key -> constraint kind of its list of labels.
+LIST_KEYS = {"without_motions": Kind.WITHOUT_MOTION, "without": Kind.WITHOUT, "must_use": Kind.MUST_USE}
+KEYS = (*LIST_KEYS, "name", "rates", "costs", "$schema", "description")
+
+
+def _line_of(text: str, key: str) -> int:
+    """1-based line of the first occurrence of `"key"` (1 when not found)."""
+    at = text.find(json.dumps(key))
+    return text.count("\n", 0, at) + 1 if at >= 0 else 1
+
+
+def _labels(value, path: str, line: int, key: str) -> list[str]:
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise FoonSyntaxError(path, line, f"{key!r} must be a list of labels (strings)")
+    for v in value:
+        if CONTROL_CHARS.search(v) or not v.strip():
+            raise FoonSyntaxError(path, line, f"{key!r}: label {v!r} is empty or has control characters")
+    return value
+
+
+def _table(value, path: str, line: int, key: str) -> dict[str, float]:
+    if not isinstance(value, dict) or not all(isinstance(v, int | float) and not isinstance(v, bool)
+                                              for v in value.values()):
+        raise FoonSyntaxError(path, line, f"{key!r} must map motion labels to numbers")
+    return value
+
+
+def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
+    """Parse a constraints document; FoonSyntaxError naming path and line on any problem."""
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise FoonSyntaxError(path, exc.lineno, f"not valid JSON: {exc.msg}") from None
+    if not isinstance(data, dict):
+        raise FoonSyntaxError(path, 1, "a constraints file is a JSON object")
+    for key in data:
+        if key not in KEYS:
+            raise FoonSyntaxError(path, _line_of(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
+    items = [Constraint(kind, v, path) for key, kind in LIST_KEYS.items()
+             for v in _labels(data.get(key, []), path, _line_of(text, key), key)]
+    rates: list[tuple[str, float]] = []
+    for key in ("rates", "costs"):
+        line = _line_of(text, key)
+        for motion, number in _table(data.get(key, {}), path, line, key).items():
+            if key == "costs":
+                if not 0.0 <= number < math.inf:
+                    raise FoonSyntaxError(path, line, f"cost of {motion!r} must be >= 0, not {number!r}")
+                number = math.exp(-number)
+            rates.append((motion, float(number)))
+    try:
+        return make_constraints(items, rates, (path,))
+    except ValueError as exc:
+        raise FoonSyntaxError(path, _line_of(text, "rates"), str(exc)) from None
+
+
+def read_constraints(path: str | Path) -> Constraints:
+    """Read one constraints file."""
+    p = Path(path)
+    return parse_constraints(read_text(p), str(p))
+
+
+def load_constraints(files: Iterable[str | Path] = (), without_motions: Iterable[str] = (),
+                     without: Iterable[str] = (), must_use: Iterable[str] = ()) -> Constraints:
+    """Constraints files combined with one-off labels (the CLI's `--constraints` and flags)."""
+    flags = [Constraint(Kind.WITHOUT_MOTION, m, "<options>") for m in without_motions]
+    flags += [Constraint(Kind.WITHOUT, x, "<options>") for x in without]
+    flags += [Constraint(Kind.MUST_USE, x, "<options>") for x in must_use]
+    for c in flags:
+        if CONTROL_CHARS.search(c.value) or not c.value.strip():
+            raise FoonSyntaxError("<options>", 0, f"--{c.kind.value}: label {c.value!r} is empty or has control "
+                                                  "characters")
+    parts = [read_constraints(f) for f in files]
+    try:
+        return combine(*parts, make_constraints(flags, sources=("<options>",) if flags else ()))
+    except ValueError as exc:  # two files give one motion different rates
+        raise FoonSyntaxError(", ".join(str(f) for f in files), 0, str(exc)) from None
+
+
+def with_rates(rates: Rates | None, constraints: Constraints) -> Rates | None:
+    """A rates file's table with the constraints' rates added (None when neither gives any).
+
+    A motion both give is an error (FoonSyntaxError naming both sources) unless the rates agree.
+    """
+    if not constraints.rates:
+        return rates
+    base = rates or Rates()
+    table = dict(base.table)
+    for motion, rate in constraints.rates:
+        if table.get(motion, rate) != rate:
+            raise FoonSyntaxError(", ".join(constraints.sources), 0,
+                                  f"motion {motion!r} has rate {rate:g} here and {table[motion]:g} in "
+                                  f"{base.source or 'the rates file'}")
+        table[motion] = rate
+    return Rates(table, base.default, " + ".join(s for s in (base.source, *constraints.sources) if s))

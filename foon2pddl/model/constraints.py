@@ -1,0 +1,145 @@
+"""Constraints on what a task tree may contain: a robot's abilities and a cook's diet.
+
+- `without-motion M`: no unit whose motion label is M (the robot cannot do it);
+- `without X`: no unit any of whose nodes *mentions* X (an object or ingredient that
+  must not appear anywhere in the tree);
+- `must-use X`: some unit of the tree uses X (one of its input nodes mentions X);
+- motion success rates (or costs, cost = -ln(rate)): how likely each motion succeeds.
+
+A node mentions X when X's words occur, as consecutive whole words, in the node's
+label, in a related object (`in [bowl]`) or in an item of an ingredient list: `peanut`
+matches `peanut`, `peanut butter` and `bowl (contains {peanut, salt})`, never `peanuts`
+or `eggplant` for `egg`. Everything made from X is excluded with it: a unit taking X
+is removed, so only ways of making a node that avoid X remain.
+
+Constraints from several profiles combine by union (`combine`); a motion given two
+different rates is an error. Each ban and requirement is one `Constraint`, the unit
+the minimal blocking set (`analysis.blocking`) is made of.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from enum import StrEnum
+from functools import lru_cache
+
+from .foon import FunctionalUnit, ObjectNode, normalize_label
+
+
+class Kind(StrEnum):
+    """What a constraint says; the value is also its flag and file key."""
+
+    WITHOUT_MOTION = "without-motion"
+    WITHOUT = "without"
+    MUST_USE = "must-use"
+
+
+@dataclass(frozen=True, order=True)
+class Constraint:
+    """One ban or requirement: its kind and the (normalized) motion or object label."""
+
+    kind: Kind
+    value: str
+    source: str = field(default="", compare=False)
+
+    def describe(self) -> str:
+        """`without-motion pour`: how the constraint is spelled on the command line."""
+        return f"{self.kind.value} {self.value}"
+
+
+@dataclass(frozen=True)
+class Constraints:
+    """A set of constraints (sorted, duplicate-free) and motion success rates (sorted pairs)."""
+
+    items: tuple[Constraint, ...] = ()
+    rates: tuple[tuple[str, float], ...] = ()
+    sources: tuple[str, ...] = ()
+
+    def __bool__(self) -> bool:
+        return bool(self.items or self.rates)
+
+    def of(self, kind: Kind) -> tuple[str, ...]:
+        """The values of the constraints of one kind, sorted."""
+        return tuple(c.value for c in self.items if c.kind is kind)
+
+    @property
+    def bans(self) -> tuple[Constraint, ...]:
+        """The constraints that remove units (motion and object bans)."""
+        return tuple(c for c in self.items if c.kind is not Kind.MUST_USE)
+
+    @property
+    def must_use(self) -> tuple[str, ...]:
+        return self.of(Kind.MUST_USE)
+
+    def without(self, drop: Iterable[Constraint]) -> Constraints:
+        """These constraints with `drop` relaxed (rates kept)."""
+        gone = set(drop)
+        return Constraints(tuple(c for c in self.items if c not in gone), self.rates, self.sources)
+
+
+def make_constraints(items: Iterable[Constraint] = (), rates: Iterable[tuple[str, float]] = (),
+                     sources: Iterable[str] = ()) -> Constraints:
+    """Normalize labels, drop empty and duplicate items, sort; ValueError for a rate outside (0, 1]
+    or a motion given two rates."""
+    found: dict[tuple[Kind, str], Constraint] = {}
+    for c in items:
+        value = normalize_label(c.value)
+        if value.endswith("*") and c.kind is Kind.WITHOUT_MOTION:
+            value = value.removesuffix("*").strip()
+        if value:
+            found.setdefault((c.kind, value), Constraint(c.kind, value, c.source))
+    table: dict[str, float] = {}
+    for motion, rate in rates:
+        motion = normalize_label(motion).removesuffix("*").strip()
+        if not 0.0 < rate <= 1.0:
+            raise ValueError(f"rate of {motion!r} must be in (0, 1], not {rate:g}")
+        if table.get(motion, rate) != rate:
+            raise ValueError(f"motion {motion!r} is given two rates, {table[motion]:g} and {rate:g}")
+        table[motion] = rate
+    return Constraints(tuple(sorted(found.values())), tuple(sorted(table.items())), tuple(dict.fromkeys(sources)))
+
+
+def combine(*profiles: Constraints) -> Constraints:
+    """The union of several constraint sets (a robot profile and a diet profile)."""
+    return make_constraints((c for p in profiles for c in p.items), (r for p in profiles for r in p.rates),
+                            (s for p in profiles for s in p.sources))
+
+
+@lru_cache(maxsize=1 << 14)
+def _words(label: str) -> tuple[str, ...]:
+    return tuple(label.split(" "))
+
+
+def label_mentions(label: str, obj: str) -> bool:
+    """Whether the words of `obj` occur consecutively in `label` (both normalized)."""
+    if label == obj:
+        return True
+    have, want = _words(label), _words(obj)
+    n = len(want)
+    return any(have[i:i + n] == want for i in range(len(have) - n + 1))
+
+
+def node_labels(node: ObjectNode) -> frozenset[str]:
+    """Every object label a node mentions: its own, related objects, ingredient items."""
+    out = {node.label}
+    for s in node.states:
+        if s.related:
+            out.add(s.related)
+        out.update(s.ingredients)
+    return frozenset(out)
+
+
+def mentions(node: ObjectNode, obj: str) -> bool:
+    """Whether `node` mentions the object `obj` (see the module doc)."""
+    return any(label_mentions(label, obj) for label in node_labels(node))
+
+
+def unit_mentions(unit: FunctionalUnit, obj: str) -> bool:
+    """Whether any input or output node of `unit` mentions `obj`."""
+    return any(mentions(n, obj) for n in (*unit.inputs, *unit.outputs))
+
+
+def unit_uses(unit: FunctionalUnit, obj: str) -> bool:
+    """Whether an input node of `unit` mentions `obj` (the unit uses it)."""
+    return any(mentions(n, obj) for n in unit.inputs)

@@ -1,0 +1,90 @@
+"""Constraints files, flags and the `retrieve` command under constraints (embedded example network)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.errors import FoonSyntaxError
+from foon2pddl.io.constraints_file import load_constraints, parse_constraints, with_rates
+from foon2pddl.io.rates import Rates
+from foon2pddl.model.constraints import Kind, label_mentions, mentions
+from foon2pddl.model.foon import make_node, make_state
+
+
+def run(*args: str):
+    return CliRunner().invoke(main, list(args))
+
+
+def test_mentions_match_whole_words_in_labels_related_objects_and_ingredients():
+    assert label_mentions("peanut butter", "peanut") and label_mentions("scoop and pour", "pour")
+    assert not label_mentions("peanuts", "peanut") and not label_mentions("eggplant", "egg")
+    assert mentions(make_node("bowl", [make_state("contains", "", ["peanut", "salt"])]), "peanut")
+    assert mentions(make_node("sauce", [make_state("in", "peanut butter jar")]), "peanut butter")
+    assert not mentions(make_node("bowl", [make_state("contains", "", ["salt"])]), "peanut")
+
+
+def test_file_keys_costs_and_combined_profiles(tmp_path):
+    robot = tmp_path / "robot.json"
+    robot.write_text(json.dumps({"name": "r", "without_motions": ["Pour*"], "costs": {"stir": 0.0, "mix": 1.0}}))
+    diet = tmp_path / "diet.json"
+    diet.write_text(json.dumps({"without": ["peanut"], "must_use": ["lettuce"], "rates": {"chop": 0.5}}))
+    cons = load_constraints([robot, diet], without=["kale", "peanut"])
+    assert cons.of(Kind.WITHOUT_MOTION) == ("pour",)
+    assert cons.of(Kind.WITHOUT) == ("kale", "peanut") and cons.must_use == ("lettuce",)
+    rates = dict(cons.rates)
+    assert rates["stir"] == 1.0 and math.isclose(rates["mix"], math.exp(-1)) and rates["chop"] == 0.5
+    merged = with_rates(Rates({"slice": 0.9}, source="r.txt"), cons)
+    assert merged.rate("slice") == 0.9 and merged.rate("chop") == 0.5
+    with pytest.raises(FoonSyntaxError, match="chop"):
+        with_rates(Rates({"chop": 0.7}), cons)
+
+
+@pytest.mark.parametrize(("text", "line", "words"), [
+    ('{\n  "without": ["a"],\n  "withuot": ["b"]\n}', 3, "unknown key 'withuot'"),
+    ('{\n  "without": "peanut"\n}', 2, "list of labels"),
+    ('{\n\n  "rates": {"pour": 1.5}\n}', 3, "(0, 1]"),
+    ('{\n  "costs": {"pour": -1}\n}', 2, ">= 0"),
+    ('{"without": [\n', 2, "not valid JSON"),
+    ('["pour"]', 1, "JSON object"),
+])
+def test_bad_files_name_the_line(text, line, words):
+    with pytest.raises(FoonSyntaxError) as err:
+        parse_constraints(text, "c.json")
+    assert err.value.line == line and words in err.value.message
+
+
+def test_two_profiles_with_different_rates_for_one_motion_are_an_error(tmp_path):
+    a, b = tmp_path / "a.json", tmp_path / "b.json"
+    a.write_text('{"rates": {"pour": 0.9}}')
+    b.write_text('{"rates": {"pour": 0.8}}')
+    result = run("retrieve", "--goal", "guacamole", "--constraints", str(a), "--constraints", str(b))
+    assert result.exit_code == 2 and "pour" in result.stderr and "Traceback" not in result.output
+
+
+def test_retrieve_without_pour_is_blocked_and_names_pour():
+    result = run("retrieve", "--goal", "guacamole", "--without-motion", "pour", "--explain")
+    assert result.exit_code == 1 and result.stdout == ""
+    assert "needs `without-motion pour`" in result.stderr
+    assert "smallest set of constraints to relax: `without-motion pour`" in result.stderr
+
+
+def test_retrieve_with_must_use_and_explain_of_a_solved_goal(tmp_path):
+    result = run("retrieve", "--goal", "whipped cream", "--must-use", "sugar", "--without", "flour", "--explain")
+    assert result.exit_code == 0, result.output
+    assert "sugar" in result.stdout and "flour" not in result.stdout
+    assert "`without flour` removes" in result.stderr and "explain:" in result.stderr
+
+
+def test_a_constraint_matching_nothing_is_warned_about():
+    result = run("retrieve", "--goal", "whipped cream", "--without-motion", "teleport")
+    assert result.exit_code == 0 and "warning: no unit of the network mentions 'teleport'" in result.stderr
+
+
+def test_bad_flag_value_exits_2():
+    result = run("retrieve", "--goal", "guacamole", "--without", " ")
+    assert result.exit_code == 2 and "<options>:0: error" in result.stderr and "empty" in result.stderr
