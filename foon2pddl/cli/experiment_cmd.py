@@ -9,11 +9,15 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError
+from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
-from ..experiment.sensitivity import DEFAULT_FRACTIONS
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
 from . import main
 from .options import level_option, paths_argument
+
+#: Exit statuses of `experiment` (documented in its --help and in docs/experiment.md).
+EXIT_DISAGREEMENT = 3  # the run finished, but solvers disagree or a returned tree does not validate
+EXIT_INCOMPLETE = 4  # cells were lost with their workers; running the same command again redoes them
 
 
 def _names(text: str, known, what: str) -> tuple[str, ...]:
@@ -25,16 +29,17 @@ def _names(text: str, known, what: str) -> tuple[str, ...]:
     return names
 
 
-def _fractions(text: str) -> tuple[float, ...]:
-    if text.strip().lower() in ("", "none", "off"):
-        return ()
-    try:
-        values = tuple(float(x) for x in text.split(",") if x.strip())
-    except ValueError:
-        raise FoonInputError("<options>", 0, f"--sensitivity: expected fractions like 0.8,0.9,1, not {text!r}") from None
-    if any(not 0 < v <= 1 for v in values):
-        raise FoonInputError("<options>", 0, "--sensitivity: fractions must be in (0, 1]")
-    return values
+def _sweeps(items) -> tuple[tuple[str, tuple], ...]:
+    out: dict[str, tuple] = {}
+    for item in items:
+        try:
+            name, values = parse_sweep(item)
+        except ValueError as exc:
+            raise FoonInputError("<options>", 0, f"--sweep: {exc}") from None
+        if name in out:
+            raise FoonInputError("<options>", 0, f"--sweep: {name} given twice")
+        out[name] = values
+    return tuple(out.items())
 
 
 def _goal_limits(items, solvers) -> tuple[tuple[str, int], ...]:
@@ -50,13 +55,15 @@ def _goal_limits(items, solvers) -> tuple[tuple[str, int], ...]:
 
 
 def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_limit: float, out_dir: Path,
-                 report: Path, limits: tuple[tuple[str, int], ...] = ()) -> str:
+                 report: Path, limits: tuple[tuple[str, int], ...] = (), sweeps: tuple = ()) -> str:
     """The command that reproduces a run (written into the report)."""
     parts = ["foon2pddl", "experiment", *(str(p) for p in paths), "--trials", str(protocol.trials),
              "--goals", str(protocol.goals), "--kitchen-fraction", f"{protocol.kitchen_fraction:g}",
              "--seed", str(protocol.seed), "--level", str(protocol.level), "--networks", ",".join(networks),
              "--solvers", ",".join(solvers), "--time-limit", f"{time_limit:g}", "--jobs", str(jobs),
-             *(x for s, n in limits for x in ("--goal-limit", f"{s}={n}")), "-o", str(out_dir), "--report", str(report)]
+             *(x for s, n in limits for x in ("--goal-limit", f"{s}={n}")),
+             *(x for name, values in sweeps for x in ("--sweep", f"{name}=" + ",".join(f"{v:g}" for v in values))),
+             "-o", str(out_dir), "--report", str(report)]
     return shlex.join(parts)
 
 
@@ -73,7 +80,10 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
               help=f"Solvers to compare, from: {', '.join(SOLVERS)}.")
 @click.option("--seed", type=int, default=DEFAULT_SEED, show_default=True, help="Master seed.")
 @level_option
-@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True, help="Worker processes.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
+              help="Workers: 1 runs the cells in this process; N > 1 starts a local Dask cluster of N workers.")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Run the cells on an existing Dask cluster (e.g. tcp://10.0.0.5:8786) instead of locally.")
 @click.option("--time-limit", type=click.FloatRange(0, min_open=True), default=DEFAULT_TIME_LIMIT,
               show_default=True, help="Seconds per planner run.")
 @click.option("-o", "--output-dir", "out_dir", type=click.Path(path_type=Path, file_okay=False),
@@ -81,37 +91,45 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
               help="Directory for results.jsonl, results.csv, protocol.json and the plots.")
 @click.option("--report", "report", type=click.Path(path_type=Path, dir_okay=False), default=None,
               help="Markdown report to write [default: DIR/report.md].")
-@click.option("--sensitivity", default=",".join(f"{f:g}" for f in DEFAULT_FRACTIONS), show_default=True,
-              help="Kitchen fractions for the report's sensitivity table ('none' to skip).")
+@click.option("--sweep", "sweeps", multiple=True, metavar="NAME=V1,V2,...",
+              help=f"Run the grid at every value (repeatable: every combination); NAME one of {', '.join(PARAMS)}.")
+@click.option("--sensitivity", default="none", hidden=True, help="Replaced by --sweep kitchen-fraction=...; ignored.")
 @click.option("--goal-limit", "goal_limits", multiple=True, metavar="SOLVER=N",
               help="Ask SOLVER only the first N goals of each trial (for slow solvers; repeatable).")
 @click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
-@click.option("--progress/--no-progress", default=None, help="Progress bar on stderr [default: when a terminal].")
-def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, jobs, time_limit, out_dir, report,
-               sensitivity, goal_limits, fresh, progress) -> None:
+@click.option("--progress/--no-progress", default=True, show_default=True,
+              help="Progress on stderr: a bar on a terminal, otherwise a line every 30 s (cells done, rate, ETA).")
+def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, jobs, scheduler, time_limit, out_dir,
+               report, sweeps, sensitivity, goal_limits, fresh, progress) -> None:
     """Run the REG/EXP/GEN experiment and write results (JSONL, CSV), a Markdown report and plots.
 
-    Each cell (trial, goal, network, solver) is appended to DIR/results.jsonl as it finishes; running
-    the same command again skips the cells already done, so an interrupted run resumes. Exit status 1
-    when native complete retrieval and Fast Downward (tree encoding) disagree on some cell or a
-    returned tree does not validate.
+    Each cell (trial, goal, network, solver, swept values) is appended to DIR/results.jsonl as it
+    finishes; running the same command again skips the cells already done, so an interrupted run
+    resumes (damaged lines are reported and their cells recomputed). Exit status: 0 done; 2 bad
+    input or options; 3 native complete retrieval and Fast Downward (tree encoding) disagree on some
+    cell, or a returned tree does not validate; 4 cells were lost with their workers (run the same
+    command again to redo them); 130 interrupted.
     """
     from ..experiment import runner
     from ..experiment.networks import NETWORKS
     from ..experiment.report import ReportData, agreement, invalid_trees, write_report
-    from ..experiment.sensitivity import sensitivity as run_sensitivity
 
     nets = _names(networks, NETWORKS, "networks")
     chosen = _names(solvers, tuple(SOLVERS), "solvers")
-    fractions = _fractions(sensitivity)
     limits = _goal_limits(goal_limits, chosen)
+    swept = _sweeps(sweeps)
+    if sensitivity.strip().lower() not in ("", "none", "off"):
+        click.echo("warning: --sensitivity is replaced by --sweep kitchen-fraction=V1,V2,...; ignored", err=True)
     protocol = Protocol(trials, goals, fraction, seed, level)
     report = report or out_dir / "report.md"
-    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits)
-    summary = runner.run(config, progress=sys.stderr.isatty() if progress is None else progress, fresh=fresh)
+    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
+                           swept, scheduler)
+    summary = runner.run(config, progress=progress, fresh=fresh)
+    for warning in summary.warnings:
+        click.echo(warning, err=True)
     views = runner.views(config)
     meta = {
-        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits),
+        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits, swept),
         "goal_limits": dict(limits),
         "inputs": ", ".join(f"`{p}`" for p in paths) or "the embedded example network",
         "files": len(runner.input_files(config.paths)),
@@ -122,11 +140,12 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
                            "what": _WHAT[v.name]} for v in views],
         "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
             f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
-        "time_limit": f"{time_limit:g}", "jobs": jobs, "wall": f"{summary.seconds:.1f} s",
+        "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",
         "ran": summary.ran, "skipped": summary.skipped, "history": list(summary.history), "machine": machine(),
     }
-    rows = run_sensitivity(views, protocol, fractions) if fractions else ()
-    data = ReportData(summary.records, nets, chosen, tuple(t.summary() for t in summary.trials), meta, rows)
+    first = dict(config.points[0])
+    data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,
+                      tuple(t.summary() for t in summary.trials), meta, swept, summary.records)
     try:
         written = write_report(data, out_dir, report)
     except OSError as exc:
@@ -142,7 +161,11 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
                        f"(see {report})", err=True)
         if bad:
             click.echo(f"INVALID: {len(bad)} returned trees do not validate (see {report})", err=True)
-        sys.exit(1)
+        sys.exit(EXIT_DISAGREEMENT)
+    if summary.lost:
+        click.echo(f"INCOMPLETE: {summary.lost} cells were lost with their workers; run the same command again "
+                   "to redo them", err=True)
+        sys.exit(EXIT_INCOMPLETE)
 
 
 def machine() -> str:

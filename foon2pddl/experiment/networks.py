@@ -49,8 +49,9 @@ class NetworkView:
         return Goal(spec_of_node(node), (node,), self.concrete.level)
 
 
-def build_view(name: str, net: Network, level: int) -> NetworkView:
-    """The view `name` (reg, exp or gen) of `net` at `level`."""
+def build_view(name: str, net: Network, level: int, threshold: float | None = None) -> NetworkView:
+    """The view `name` (reg, exp or gen) of `net` at `level` (EXP with similarity `threshold`)."""
+    from ..generalize.expand import DEFAULT_THRESHOLD
     from ..generalize.network import network_view
 
     if name not in NETWORKS:
@@ -61,5 +62,6 @@ def build_view(name: str, net: Network, level: int) -> NetworkView:
         from ..generalize.categories import load_index
 
         index = load_index()
-    view = network_view(net, name, level, default_kitchen(reg), index=index)
+    view = network_view(net, name, level, default_kitchen(reg), index=index,
+                        threshold=DEFAULT_THRESHOLD if threshold is None else threshold)
     return NetworkView(name, view.foon, reg, view, index)

@@ -22,6 +22,7 @@ import hashlib
 import random
 from dataclasses import dataclass
 
+from ..generalize.expand import DEFAULT_THRESHOLD
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import Kitchen, default_kitchen
 
@@ -34,23 +35,33 @@ DEFAULT_SEED = 0
 
 @dataclass(frozen=True)
 class Protocol:
-    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level."""
+    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level, EXP threshold."""
 
     trials: int = DEFAULT_TRIALS
     goals: int = DEFAULT_GOALS
     kitchen_fraction: float = DEFAULT_KITCHEN_FRACTION
     seed: int = DEFAULT_SEED
     level: int = 3
+    threshold: float = DEFAULT_THRESHOLD
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.goals < 1:
             raise ValueError("trials and goals must be at least 1")
         if not 0.0 < self.kitchen_fraction <= 1.0:
             raise ValueError(f"kitchen fraction must be in (0, 1], not {self.kitchen_fraction!r}")
+        if not 0.0 < self.threshold <= 1.0:
+            raise ValueError(f"similarity threshold must be in (0, 1], not {self.threshold!r}")
 
     def identity(self) -> dict:
-        """The parameters results depend on (counts excluded: more trials or goals extend a run)."""
-        return {"kitchen_fraction": self.kitchen_fraction, "seed": self.seed, "level": self.level}
+        """The parameters results depend on (counts excluded: more trials or goals extend a run).
+
+        The threshold appears only when it is not the default, so results written
+        before it was a parameter keep their identity.
+        """
+        out = {"kitchen_fraction": self.kitchen_fraction, "seed": self.seed, "level": self.level}
+        if self.threshold != DEFAULT_THRESHOLD:
+            out["threshold"] = self.threshold
+        return out
 
 
 @dataclass(frozen=True)

@@ -1,28 +1,55 @@
-"""One result per cell (trial, goal, network, solver), stored as JSON lines.
+"""One result per cell (trial, goal, network, solver, swept parameters), stored as JSON lines.
 
 The JSONL file is append-only: a record is written, flushed, as soon as its
-cell finishes, so an interrupted run loses at most the line being written.
-`read_records` ignores a truncated last line (and `open_for_append` cuts it
-off before appending), and keeps the last record of a key when a cell was run
-twice. Cells whose status is `error` count as not done, so a rerun retries them.
+cell (or its task's batch of cells) finishes, so an interrupted run loses at
+most what was being computed. `read_records` skips damaged lines (garbage, a
+truncated write, wrong field types, NUL bytes, invalid UTF-8), reporting each
+as `results.jsonl:N`, so their cells are simply recomputed; it keeps the last
+record of a key when a cell was run twice. Cells whose status is `error` or
+`lost` count as not done, so a rerun retries them.
 """
 
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import asdict, dataclass, field, fields
+from enum import StrEnum
 from pathlib import Path
-from typing import IO
+from typing import IO, Any
 
-#: Statuses of a cell. `solved` means a task tree was found and validated.
-STATUSES = ("solved", "unsolvable", "budget exhausted", "node limit", "timeout", "error")
+from ..errors import FoonInputError
 
-Key = tuple[int, int, str, str]
+
+class CellStatus(StrEnum):
+    """How a cell ended. `solved` means a task tree was found (and `validated` says whether it checks)."""
+
+    SOLVED = "solved"
+    UNSOLVABLE = "unsolvable"
+    BUDGET_EXHAUSTED = "budget exhausted"
+    NODE_LIMIT = "node limit"
+    TIMEOUT = "timeout"
+    ERROR = "error"
+    LOST = "lost"  # its worker died or its task was killed: no answer, a rerun redoes it
+
+
+#: Statuses in report order.
+STATUSES = tuple(CellStatus)
+#: Statuses a rerun retries.
+RETRIED = frozenset({CellStatus.ERROR, CellStatus.LOST})
+
+#: (trial, goal, network, solver, swept parameters as sorted (name, value) pairs).
+Key = tuple[int, int, str, str, tuple]
+
+
+def params_key(params: dict[str, Any]) -> tuple:
+    """The hashable, order-free form of a cell's swept parameters."""
+    return tuple(sorted(params.items()))
 
 
 @dataclass(frozen=True)
 class Record:
-    """The result of one solver on one goal of one trial on one network.
+    """The result of one solver on one goal of one trial on one network (at one point of a sweep).
 
     `times` holds this cell's phases in seconds; `setup` is the time shared by
     the cells of its (trial, network, solver) batch (a fixpoint, an FD
@@ -32,6 +59,10 @@ class Record:
     the tree or plan passed every check its solver promises (FOON simulation
     from the kitchen; for the `state` encoding, the plan under the task's own
     STRIPS semantics); `foon_valid`: the tree passed FOON simulation.
+    Anytime optimal solvers fill `bound` (proven lower bound on units), `gap`
+    ((units - bound) / units) and `proven_optimal`. `params` holds the values of
+    the swept parameters (empty without sweeps); `worker` the engine's worker
+    that computed the cell (None in-process).
     """
 
     trial: int
@@ -39,7 +70,7 @@ class Record:
     network: str
     solver: str
     goal_label: str
-    status: str
+    status: CellStatus
     reason: str = ""
     times: dict[str, float] = field(default_factory=dict)
     setup: float = 0.0
@@ -48,19 +79,25 @@ class Record:
     validated: bool | None = None
     proven_optimal: bool | None = None
     foon_valid: bool | None = None
+    bound: float | None = None
+    gap: float | None = None
+    params: dict[str, Any] = field(default_factory=dict)
+    worker: str | None = None
 
     def __post_init__(self) -> None:
-        if self.status not in STATUSES:
-            raise ValueError(f"unknown cell status {self.status!r}")
+        try:
+            object.__setattr__(self, "status", CellStatus(self.status))
+        except ValueError:
+            raise ValueError(f"unknown cell status {self.status!r}") from None
 
     @property
     def key(self) -> Key:
-        return (self.trial, self.goal, self.network, self.solver)
+        return (self.trial, self.goal, self.network, self.solver, params_key(self.params))
 
     @property
     def solved(self) -> bool:
         """A tree was found and it validates."""
-        return self.status == "solved" and self.validated is True
+        return self.status == CellStatus.SOLVED and self.validated is True
 
     @property
     def time(self) -> float:
@@ -69,44 +106,107 @@ class Record:
 
     def to_json(self) -> str:
         data = asdict(self)
+        data["status"] = str(self.status)
         data["solved"] = self.solved
         data["times"] = {k: round(v, 6) for k, v in sorted(self.times.items())}
         data["setup"] = round(self.setup, 6)
+        for name in ("bound", "gap", "worker"):  # optional: absent when unset (old files have none)
+            if data[name] is None:
+                del data[name]
+        if not self.params:
+            del data["params"]
         return json.dumps(data, sort_keys=True, ensure_ascii=False)
 
     @classmethod
     def from_json(cls, text: str) -> Record:
+        """Parse one line; ValueError when it is not a well-formed record."""
         data = json.loads(text)
+        if not isinstance(data, dict):
+            raise ValueError("not a JSON object")
         names = {f.name for f in fields(cls)}
-        return cls(**{k: v for k, v in data.items() if k in names})
+        data = {k: v for k, v in data.items() if k in names}
+        _check_types(data)
+        return cls(**data)
 
 
-def read_records(path: Path) -> dict[Key, Record]:
+_INT = ("trial", "goal")
+_STR = ("network", "solver", "goal_label")
+_OPT_INT = ("units", "plan_length")
+_OPT_BOOL = ("validated", "proven_optimal", "foon_valid")
+_OPT_NUM = ("bound", "gap")
+
+
+def _number(x: object) -> bool:
+    return isinstance(x, int | float) and not isinstance(x, bool) and math.isfinite(x)
+
+
+def _check_types(data: dict) -> None:
+    """Every field of a parsed line has its type (a damaged line must not become a wrong record)."""
+    problems = [k for k in _INT if not (isinstance(data.get(k), int) and not isinstance(data.get(k), bool))]
+    problems += [k for k in (*_STR, "status") if not isinstance(data.get(k), str)]
+    problems += [k for k in _OPT_INT if data.get(k) is not None and not (
+        isinstance(data[k], int) and not isinstance(data[k], bool))]
+    problems += [k for k in _OPT_BOOL if data.get(k) is not None and not isinstance(data[k], bool)]
+    problems += [k for k in _OPT_NUM if data.get(k) is not None and not _number(data[k])]
+    times = data.get("times", {})
+    if not isinstance(times, dict) or not all(isinstance(k, str) and _number(v) for k, v in times.items()):
+        problems.append("times")
+    if not isinstance(data.get("reason", ""), str):
+        problems.append("reason")
+    if not _number(data.get("setup", 0.0)):
+        problems.append("setup")
+    params = data.get("params", {})
+    if not isinstance(params, dict) or not all(isinstance(v, str | int | float) for v in params.values()):
+        problems.append("params")
+    if data.get("worker") is not None and not isinstance(data["worker"], str):
+        problems.append("worker")
+    if problems:
+        raise ValueError("bad or missing field(s): " + ", ".join(problems))
+
+
+def read_records(path: Path, warnings: list[str] | None = None) -> dict[Key, Record]:
     """Records of a JSONL file by key (last one wins); a missing file gives none.
 
-    A line that does not parse is skipped only if it is the last one (a write
-    cut short); elsewhere it is an error (ValueError naming the line).
+    Damaged lines are skipped; unless it is a last line cut short (an
+    interrupted write), each adds `path:N: warning: ...` to `warnings`.
+    FoonInputError when `path` is not a readable regular file.
     """
     if not path.exists():
         return {}
+    if not path.is_file():
+        raise FoonInputError(str(path), 0, "not a results file (a directory or a special file); "
+                                           "remove it or use another -o directory")
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise FoonInputError(str(path), 0, f"cannot read: {exc.strerror or exc}") from None
     out: dict[Key, Record] = {}
-    lines = path.read_text(encoding="utf-8").split("\n")
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():
+    lines = data.split(b"\n")
+    for number, raw in enumerate(lines, start=1):
+        if not raw.strip():
             continue
         try:
-            record = Record.from_json(line)
+            if b"\0" in raw:
+                raise ValueError("NUL bytes")
+            record = Record.from_json(raw.decode("utf-8"))
+        except UnicodeDecodeError:
+            problem = "invalid UTF-8"
         except (ValueError, TypeError) as exc:
-            if number == len(lines):  # no newline after it: a write cut short
-                continue
-            raise ValueError(f"{path}:{number}: not a result record: {exc}") from None
-        out[record.key] = record
+            problem = str(exc)
+        else:
+            out[record.key] = record
+            continue
+        if number == len(lines):  # no newline after it: a write cut short, cut off before the next append
+            continue
+        if warnings is not None:
+            warnings.append(f"{path}:{number}: warning: damaged result line skipped, its cell is recomputed "
+                            f"({problem[:120]})")
     return out
 
 
 def done_keys(records: dict[Key, Record]) -> set[Key]:
-    """Keys of cells that need no rerun (everything but errors)."""
-    return {k for k, r in records.items() if r.status != "error"}
+    """Keys of cells that need no rerun (everything but errors and lost cells)."""
+    return {k for k, r in records.items() if r.status not in RETRIED}
 
 
 def open_for_append(path: Path) -> IO[str]:

@@ -29,7 +29,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .records import STATUSES, Record
-from .sensitivity import SensitivityRow
 
 #: The seed paper's results (Paulius et al.; Tables 2 and 3), 10 trials x 100 goals, Intel i7-6500U.
 PAPER_SUCCESSES = {"reg": (15, 53), "exp": (14, 62), "gen": (66, 87)}
@@ -53,7 +52,8 @@ class ReportData:
     solvers: tuple[str, ...]
     trials: tuple[dict, ...]  # Trial.summary() of each trial
     meta: dict = field(default_factory=dict)  # protocol, inputs, jobs, wall time, cells ran/skipped
-    sensitivity: tuple[SensitivityRow, ...] = ()
+    sweeps: tuple[tuple[str, tuple], ...] = ()  # swept parameters and their values
+    all_records: tuple[Record, ...] | None = None  # every point of the sweep (`records`: the first point's)
 
     def cells(self, network: str, solver: str) -> list[Record]:
         return [r for r in self.records if r.network == network and r.solver == solver]
@@ -62,7 +62,8 @@ class ReportData:
         return [r for r in self.records if r.solver == solver]
 
     def by_key(self) -> dict[tuple, Record]:
-        return {r.key: r for r in self.records}
+        """Records by (trial, goal, network, solver): unique within one point of a sweep."""
+        return {r.key[:4]: r for r in self.records}
 
 
 def net_name(network: str) -> str:
@@ -413,25 +414,6 @@ def errors_md(data: ReportData, limit: int = 15) -> str:
     return md_table(["solver", "network", "trial", "goal", "goal node", "reason"], rows, "llrrll")
 
 
-# -- sensitivity ---------------------------------------------------------------------------------
-
-def sensitivity_md(rows: Sequence[SensitivityRow], networks: Sequence[str]) -> str:
-    """Mean (min-max) solvable goals per trial, by kitchen fraction and network."""
-    if not rows:
-        return ""
-    fractions = sorted({r.fraction for r in rows})
-    by = {(r.fraction, r.network): r for r in rows}
-    goals = rows[0].goals
-    table = []
-    for f in fractions:
-        line: list[object] = [f"{f:g}"]
-        for n in networks:
-            r = by.get((f, n))
-            line.append(f"{statistics.fmean(r.solvable):.1f} ({_span(r.solvable)})" if r else "-")
-        table.append(line)
-    return md_table(["kitchen fraction", *(f"{net_name(n)} (of {goals})" for n in networks)], table)
-
-
 # -- plots ---------------------------------------------------------------------------------------
 
 def _figure(width: float, height: float):
@@ -567,7 +549,7 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
         "statuses": statuses_md(data),
         "invalid": len(invalid_trees(data)),
         "errors": errors_md(data),
-        "sensitivity": sensitivity_md(data.sensitivity, data.networks),
+        "sensitivity": "",
         "plots": plot_links,
         "paper_cpu": PAPER_CPU,
     }

@@ -1,23 +1,21 @@
-"""Running an experiment: batches of cells in worker processes, results appended as they finish.
+"""Running an experiment: the grid of cells, what is already done, batches to an engine, records appended.
 
-The cells (trial, goal, network, solver) not already in the results file are
-grouped into batches, one per (trial, network, solver), so that what a solver
-prepares once (a fixpoint, an FD translation) serves every goal of the batch.
-Batches run in `jobs` worker processes (`multiprocessing.Pool`, longest kinds
-first); each worker sends every finished cell back through a queue and the
-main process appends it to the JSONL file at once and advances the progress
-bar (tqdm, on stderr). FD runs each search in its own temporary directory
-(`pddl.planners.fd`), so concurrent workers never share files. A rerun reads
-the file and skips the cells already done: an interrupted run resumes.
+The cells (point of the sweep, trial, goal, network, solver) not already in
+the results file are grouped into batches of at most `CHUNK` goals of one
+(point, trial, network, solver), so that what a solver prepares once (a
+fixpoint, an FD translation) serves the goals of the batch, and a lost task
+loses little. Batches run in this process (`jobs` 1) or on Dask (`engine.py`:
+a LocalCluster of `jobs` workers, or an existing cluster's `scheduler`),
+costliest solvers and largest networks first; every finished cell is appended
+to the JSONL file at once in this process. A rerun reads the file and skips the
+cells already done: an interrupted run resumes, and cells that ended in an
+error or were lost with their worker are redone.
 """
 
 from __future__ import annotations
 
 import json
-import multiprocessing
-import queue as queue_mod
 import signal
-import sys
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -25,29 +23,30 @@ from pathlib import Path
 
 from ..errors import FoonInputError
 from ..io.atomic import atomic_write
-from ..io.files import expand_paths
-from ..io.inputs import example_path, load_network
 from ..model.kitchen import default_kitchen
-from .networks import NETWORKS, NetworkView, build_view
+from .engine import run_dask, run_here
+from .networks import NETWORKS, NetworkView
+from .params import Point, points, protocol_at
+from .progress import OFF, Progress, default_mode
 from .protocol import Protocol, Trial, goal_pool, make_trials
-from .records import Record, append, done_keys, open_for_append, read_records
-from .solvers import DEFAULT_TIME_LIMIT, Outcome, Setting, get_solver
+from .records import Key, Record, append, done_keys, open_for_append, params_key, read_records
+from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
+from .worker import Batch, Job, fingerprint, input_files, view
+
+__all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]
 
 RESULTS = "results.jsonl"
 PROTOCOL = "protocol.json"
 RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs, wall seconds
-#: Longest reason kept in a record (unreachable goals can list many missing nodes).
-REASON_MAX = 300
-
-#: Batches of slower solvers and larger networks are started first (better load balance).
-_COST_ORDER = ("fd-state", "fd-tree-opt", "fd-lifted-gen", "fd-tree", "native-optimal", "native-greedy",
-               "native-complete")
+#: Most goals in one task (a lost task loses at most this many cells).
+CHUNK = 25
+#: Batches on larger networks start first (better load balance).
 _NETWORK_ORDER = ("exp", "gen", "reg")
 
 
 @dataclass(frozen=True)
 class Config:
-    """Everything that defines a run: inputs, protocol, what to compare, where results go."""
+    """Everything that defines a run: inputs, protocol, sweeps, what to compare, where results go, how to run."""
 
     paths: tuple[str, ...]
     protocol: Protocol
@@ -57,32 +56,40 @@ class Config:
     jobs: int = 1
     time_limit: float = DEFAULT_TIME_LIMIT
     goal_limits: tuple[tuple[str, int], ...] = ()  # (solver, n): that solver gets the first n goals of a trial
+    sweeps: tuple[tuple[str, tuple], ...] = ()  # (parameter, values): the grid is run at every combination
+    scheduler: str | None = None  # a Dask scheduler's address: run there instead of locally
 
     @property
     def results_path(self) -> Path:
         return self.out_dir / RESULTS
+
+    @property
+    def points(self) -> tuple[Point, ...]:
+        return points(self.sweeps)
 
     def goals_for(self, solver: str, trial: Trial) -> range:
         """1-based indexes of the goals of `trial` that `solver` is asked (goal samples are prefix-stable)."""
         limit = dict(self.goal_limits).get(solver, len(trial.goals))
         return range(1, min(limit, len(trial.goals)) + 1)
 
+    def identity(self) -> dict:
+        """What results in this directory depend on: the protocol (swept parameters aside) and the inputs."""
+        swept = [name for name, _ in self.sweeps]
+        base = self.protocol.identity()
+        from .params import PARAMS
 
-@dataclass(frozen=True)
-class Batch:
-    """The pending goals (1-based indexes into the trial's goals) of one (trial, network, solver)."""
-
-    trial: Trial
-    network: str
-    solver: str
-    goals: tuple[int, ...]
+        for name in swept:
+            base.pop(PARAMS[name].field or "", None)
+        if swept:
+            base["swept"] = sorted(swept)
+        return {**base, "inputs": fingerprint(self.paths)}
 
 
 @dataclass(frozen=True)
 class RunSummary:
     """What a run did: the trials, the cells it ran and skipped, its wall time, all records of its cells."""
 
-    trials: tuple[Trial, ...]
+    trials: tuple[Trial, ...]  # of the first point of the sweep
     ran: int
     skipped: int
     seconds: float
@@ -90,92 +97,71 @@ class RunSummary:
     default_kitchen: int = 0  # nodes in the default kitchen trials sample from
     goal_pool: int = 0  # nodes goals are drawn from
     history: tuple[dict, ...] = ()  # the invocations that computed cells in this directory (runs.jsonl)
+    warnings: tuple[str, ...] = ()  # damaged result lines skipped
+    points: tuple[Point, ...] = ((),)
+    lost: int = 0  # cells of this invocation lost with their worker (a rerun redoes them)
 
 
-# -- inputs --------------------------------------------------------------------------------------
+# -- the grid ------------------------------------------------------------------------------------
 
-def input_files(paths: Sequence[str]) -> list[Path]:
-    """The FOON files a run reads (the embedded example when no path is given)."""
-    return expand_paths(paths or [example_path()])
-
-
-def fingerprint(paths: Sequence[str]) -> str:
-    """SHA-256 over the names and contents of the input files: results belong to these exact inputs."""
-    import hashlib
-
-    h = hashlib.sha256()
-    for p in input_files(paths):
-        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
-    return h.hexdigest()
+def trials_at(config: Config, point: Point) -> tuple[Trial, ...]:
+    """The trials at one point of the sweep (drawn on REG at the point's level)."""
+    reg = view(config.paths, config.protocol, point, "reg").foon
+    return make_trials(reg, protocol_at(config.protocol, point))
 
 
-# -- worker side ---------------------------------------------------------------------------------
-
-_WORKER: dict = {"networks": {}, "views": {}, "queue": None}
-
-
-def _view(paths: tuple[str, ...], level: int, name: str) -> NetworkView:
-    """The network view, built once per process (inherited from the parent when it forked)."""
-    views = _WORKER["views"]
-    if paths not in _WORKER["networks"]:
-        _WORKER["networks"][paths] = load_network(list(paths))
-    key = (paths, level, name)
-    if key not in views:
-        views[key] = build_view(name, _WORKER["networks"][paths], level)
-    return views[key]
+def cells(config: Config) -> list[tuple[Point, Trial, str, str, int]]:
+    """Every cell of the run as (point, trial, network, solver, goal), solvers only on their networks."""
+    out = []
+    for point in config.points:
+        trials = trials_at(config, point)
+        for solver in config.solvers:
+            spec = get_solver(solver)
+            for network in config.networks:
+                if spec.applies_to(network):
+                    out.extend((point, t, network, solver, g) for t in trials for g in config.goals_for(solver, t))
+    return out
 
 
-def _worker_init(q) -> None:
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the main process's to handle
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # the main process stops workers with SIGTERM
-    _WORKER["queue"] = q
+def cell_keys(config: Config) -> set[Key]:
+    """Every cell key of the run."""
+    return {(t.index, g, n, s, params_key(dict(p))) for p, t, n, s, g in cells(config)}
 
 
-def run_batch(batch: Batch, paths: tuple[str, ...], level: int, time_limit: float,
-              emit: Callable[[Record], None] | None = None) -> int:
-    """Run one batch, passing each cell's record to `emit` (the worker's queue by default) as it finishes.
+def plan_batches(config: Config, done: set[Key]) -> list[Batch]:
+    """Batches of at most CHUNK pending goals, costliest solvers and largest networks first."""
+    pending: dict[tuple, list[int]] = {}
+    trial_of: dict[tuple, Trial] = {}
+    for point, trial, network, solver, goal in cells(config):
+        if (trial.index, goal, network, solver, params_key(dict(point))) in done:
+            continue
+        group = (point, trial.index, network, solver)
+        pending.setdefault(group, []).append(goal)
+        trial_of[group] = trial
+    batches = [Batch(trial_of[group], group[2], group[3], tuple(goals[i:i + CHUNK]), group[0])
+               for group, goals in pending.items() for i in range(0, len(goals), CHUNK)]
 
-    Never raises for a solver's failure: a failed preparation or goal becomes an `error` record,
-    so every pending cell gets exactly one record.
-    """
-    emit = emit or _WORKER["queue"].put
-    trial = batch.trial
-    setup = 0.0
-    prepared = None
-    failure = ""
-    try:
-        view = _view(paths, level, batch.network)
-        prepared = get_solver(batch.solver).prepare(Setting(view, trial.kitchen, time_limit))
-        setup = prepared.setup
-    except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
-        failure = f"preparation failed: {type(exc).__name__}: {exc}"
-    for g in batch.goals:
-        node = trial.goals[g - 1]
-        if prepared is None:
-            outcome = Outcome("error", failure)
-        else:
-            try:
-                outcome = prepared.solve(node)
-            except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
-                outcome = Outcome("error", f"{type(exc).__name__}: {exc}")
-        reason = outcome.reason if len(outcome.reason) <= REASON_MAX else outcome.reason[:REASON_MAX - 3] + "..."
-        emit(Record(trial.index, g, batch.network, batch.solver, node.describe(), outcome.status, reason,
-                    outcome.times, setup, outcome.units, outcome.plan_length, outcome.validated,
-                    outcome.proven_optimal, outcome.foon_valid))
-    return len(batch.goals)
+    def order(b: Batch) -> tuple:
+        n = _NETWORK_ORDER.index(b.network) if b.network in _NETWORK_ORDER else len(_NETWORK_ORDER)
+        return (-SOLVERS[b.solver].cost, n, config.points.index(b.point), b.trial.index, b.goals[0])
+
+    return sorted(batches, key=order)
 
 
-# -- main side -----------------------------------------------------------------------------------
+# -- protocol.json -------------------------------------------------------------------------------
 
 def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
-    """Write protocol.json, or refuse when the directory holds results of another protocol or input."""
+    """Write protocol.json, or refuse when the directory holds results of another (or an unknown) protocol."""
     path = config.out_dir / PROTOCOL
-    identity = {**config.protocol.identity(), "inputs": fingerprint(config.paths)}
-    if path.exists() and config.results_path.exists():
+    identity = config.identity()
+    results = config.results_path
+    if results.is_file() and results.stat().st_size > 0:
         try:
             old = json.loads(path.read_text(encoding="utf-8")).get("identity")
-        except (OSError, ValueError):
-            old = None
+        except (OSError, ValueError, AttributeError):
+            raise FoonInputError(str(path), 0, f"{results} holds results but this protocol file is missing or "
+                                               "unreadable, so they cannot be matched to a protocol; use another "
+                                               "-o directory, or --fresh to discard them") from None
         if old != identity:
             raise FoonInputError(str(path), 0, "this directory holds results of another protocol or input "
                                                f"({old} != {identity}); use another -o directory or --fresh")
@@ -190,54 +176,15 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
         "goal_limits": dict(config.goal_limits),
         "per_trial": [t.summary() for t in trials],
     }
+    if config.sweeps:
+        data["sweeps"] = {name: list(values) for name, values in config.sweeps}
     atomic_write(path, json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False) + "\n")
 
 
-def plan_batches(config: Config, trials: tuple[Trial, ...], done: set) -> list[Batch]:
-    """Batches of the cells not yet done, slowest kinds first."""
-    batches = []
-    for solver in config.solvers:
-        spec = get_solver(solver)
-        for network in config.networks:
-            if not spec.applies_to(network):
-                continue
-            for trial in trials:
-                pending = tuple(g for g in config.goals_for(solver, trial)
-                                if (trial.index, g, network, solver) not in done)
-                if pending:
-                    batches.append(Batch(trial, network, solver, pending))
-
-    def order(b: Batch) -> tuple:
-        s = _COST_ORDER.index(b.solver) if b.solver in _COST_ORDER else -1
-        n = _NETWORK_ORDER.index(b.network) if b.network in _NETWORK_ORDER else -1
-        return (s, n, b.trial.index)
-
-    return sorted(batches, key=order)
-
-
-def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: bool) -> None:
-    """Run `batches`, passing every record to `sink` in the main process as soon as it arrives."""
-    from tqdm import tqdm
-
-    total = sum(len(b.goals) for b in batches)
-    args = (config.paths, config.protocol.level, config.time_limit)
-    stop = _interrupt_on_sigterm()
-    tqdm.monitor_interval = 0  # no monitor thread: worker processes are forked while the bar runs
-    bar = tqdm(total=total, unit="cell", desc="experiment", file=sys.stderr, disable=not progress or total == 0,
-               dynamic_ncols=True, smoothing=0.05)
-    try:
-        if config.jobs <= 1 or len(batches) <= 1:
-            for b in batches:
-                run_batch(b, *args, emit=lambda r: (sink(r), bar.update(1)))
-            return
-        _run_parallel(config, batches, args, total, sink, bar)
-    finally:
-        bar.close()
-        stop()
-
+# -- running -------------------------------------------------------------------------------------
 
 def _interrupt_on_sigterm() -> Callable[[], None]:
-    """Make SIGTERM interrupt the run like Ctrl-C (workers stopped, records kept); returns the undo."""
+    """Make SIGTERM interrupt the run like Ctrl-C (tasks cancelled, records kept); returns the undo."""
     import threading
 
     if threading.current_thread() is not threading.main_thread():
@@ -250,111 +197,103 @@ def _interrupt_on_sigterm() -> Callable[[], None]:
     return lambda: signal.signal(signal.SIGTERM, previous)
 
 
-def _run_parallel(config: Config, batches: list[Batch], args: tuple, total: int,
-                  sink: Callable[[Record], None], bar) -> None:
-    methods = multiprocessing.get_all_start_methods()
-    ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    if ctx.get_start_method() == "fork":  # build the views once; the workers inherit them
-        for network in sorted({b.network for b in batches}):
-            _view(config.paths, config.protocol.level, network)
-    q = ctx.Queue()
-    pool = ctx.Pool(config.jobs, initializer=_worker_init, initargs=(q,))
+def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress) -> None:
+    """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives."""
+    job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit)
+    stop = _interrupt_on_sigterm()
     try:
-        pending = [pool.apply_async(run_batch, (b, *args)) for b in batches]
-        received = 0
-        idle_since = None
-        while received < total:
-            record = _next(q)
-            if record is not None:
-                sink(record)
-                received += 1
-                bar.update(1)
-                continue
-            for job in pending:
-                if job.ready() and not job.successful():
-                    job.get()  # re-raises the worker's exception
-            if all(job.ready() for job in pending):
-                idle_since = idle_since or time.monotonic()
-                if time.monotonic() - idle_since > 10:
-                    raise RuntimeError(f"workers finished but {total - received} results never arrived")
-        pool.close()
-    except BaseException:
-        pool.terminate()  # an interrupt or a failure: stop the workers now; written records stay
-        raise
+        if config.scheduler is None and config.jobs <= 1:
+            run_here(batches, job, sink, progress)
+        else:
+            run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler)
     finally:
-        pool.join()
+        progress.close()
+        stop()
 
 
-def _next(q, timeout: float = 0.2) -> Record | None:
-    """The next record from the workers' queue, or None after `timeout` seconds."""
-    try:
-        return q.get(timeout=timeout)
-    except queue_mod.Empty:
-        return None
-
-
-def run(config: Config, progress: bool = True, fresh: bool = False) -> RunSummary:
+def run(config: Config, progress: bool | str = True, fresh: bool = False) -> RunSummary:
     """Run every cell of `config` not already in its results file (all of them when `fresh`);
-    return all records of its cells."""
+    return all records of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode."""
     t0 = time.perf_counter()
     for name in config.solvers:
         get_solver(name)
     for name in config.networks:
         if name not in NETWORKS:
             raise ValueError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
-    reg = _view(config.paths, config.protocol.level, "reg").foon
-    trials = make_trials(reg, config.protocol)
+    first = config.points[0]
+    trials = trials_at(config, first)
     config.out_dir.mkdir(parents=True, exist_ok=True)
+    if config.results_path.exists() and not config.results_path.is_file():
+        raise FoonInputError(str(config.results_path), 0, "not a results file (a directory or a special file); "
+                                                          "remove it or use another -o directory")
     if fresh:
         config.results_path.unlink(missing_ok=True)
         (config.out_dir / RUNS).unlink(missing_ok=True)
     check_protocol(config, trials)
-    existing = read_records(config.results_path)
-    done = done_keys(existing)
-    batches = plan_batches(config, trials, done)
-    ran = sum(len(b.goals) for b in batches)
+    warnings: list[str] = []
+    done = done_keys(read_records(config.results_path, warnings))
+    batches = plan_batches(config, done)
+    planned = sum(len(b.goals) for b in batches)
+    written = [0, 0]  # cells written, of which lost
     if batches:
+        mode = (default_mode() if progress else OFF) if isinstance(progress, bool) else progress
+        bar = Progress(planned, mode)
+        for w in warnings:
+            bar.note(w)
         t_run = time.perf_counter()
+
+        def sink(record: Record) -> None:
+            append(fh, record)
+            written[0] += 1
+            written[1] += record.status == "lost"
+
         try:
             with open_for_append(config.results_path) as fh:
-                run_cells(config, batches, lambda r: append(fh, r), progress)
+                run_cells(config, batches, sink, bar)
         finally:
-            log = {"cells": ran, "jobs": config.jobs, "seconds": round(time.perf_counter() - t_run, 3),
-                   "solvers": sorted({b.solver for b in batches})}
+            log = {"cells": written[0], "planned": planned, "jobs": config.jobs,
+                   "seconds": round(time.perf_counter() - t_run, 3), "solvers": sorted({b.solver for b in batches})}
+            if config.scheduler:
+                log["scheduler"] = config.scheduler
             with open(config.out_dir / RUNS, "a", encoding="utf-8") as fh:
                 fh.write(json.dumps(log, sort_keys=True) + "\n")
     records = read_records(config.results_path)
-    keys = cell_keys(config, trials)
-    mine = tuple(records[k] for k in sorted(keys) if k in records)
+    keys = cell_keys(config)
+    mine = tuple(records[k] for k in sorted(keys, key=_sortable) if k in records)
+    reg = view(config.paths, config.protocol, first, "reg").foon
     full = default_kitchen(reg)
-    return RunSummary(trials, ran, len(keys) - ran, time.perf_counter() - t0, mine, len(full),
-                      len(goal_pool(reg, full)), read_runs(config.out_dir / RUNS))
+    return RunSummary(trials, written[0], len(keys) - planned, time.perf_counter() - t0, mine, len(full),
+                      len(goal_pool(reg, full)), read_runs(config.out_dir / RUNS), tuple(warnings), config.points,
+                      written[1])
+
+
+def _sortable(key: Key) -> tuple:
+    return (*key[:4], repr(key[4]))
 
 
 def read_runs(path: Path) -> tuple[dict, ...]:
     """The invocations logged in runs.jsonl (a damaged line is skipped: the log is informative only)."""
-    if not path.exists():
+    if not path.is_file():
         return ()
     out = []
-    for line in path.read_text(encoding="utf-8").splitlines():
+    for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
         try:
-            out.append(json.loads(line))
+            entry = json.loads(line)
         except ValueError:
             continue
+        if isinstance(entry, dict):
+            out.append(entry)
     return tuple(out)
 
 
-def views(config: Config) -> list[NetworkView]:
-    """The run's network views (built once per process)."""
-    return [_view(config.paths, config.protocol.level, n) for n in config.networks]
+def views(config: Config, point: Point | None = None) -> list[NetworkView]:
+    """The run's network views at `point` (the first of the sweep by default), built once per process."""
+    point = config.points[0] if point is None else point
+    return [view(config.paths, config.protocol, point, n) for n in config.networks]
 
 
-def cell_keys(config: Config, trials: tuple[Trial, ...]) -> set:
-    """Every cell key of the run (solvers only on the networks they apply to)."""
-    keys = set()
-    for solver in config.solvers:
-        spec = get_solver(solver)
-        for network in config.networks:
-            if spec.applies_to(network):
-                keys.update((t.index, g, network, solver) for t in trials for g in config.goals_for(solver, t))
-    return keys
+def describe_points(config: Config) -> Sequence[str]:
+    """Each point of the sweep as `name=value, ...`."""
+    from .params import label
+
+    return [label(p) for p in config.points]

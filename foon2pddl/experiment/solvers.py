@@ -17,21 +17,45 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from enum import StrEnum
 
 from ..model.foon import ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import validate
 from .networks import NetworkView
+from .records import CellStatus
 
 #: Default time limit (seconds) of one planner run.
 DEFAULT_TIME_LIMIT = 60.0
+
+#: The one mapping from a planner's status (`planners.result`) to a cell status.
+FROM_PLAN_STATUS: dict[str, CellStatus] = {
+    "solved": CellStatus.SOLVED, "unsolvable": CellStatus.UNSOLVABLE, "timeout": CellStatus.TIMEOUT,
+    "error": CellStatus.ERROR,
+}
+#: The one mapping from a native retrieval's reason for returning no tree (`retrieval.result`) to a cell status.
+FROM_RETRIEVAL_REASON: dict[str, CellStatus] = {
+    "unreachable": CellStatus.UNSOLVABLE, "budget exhausted": CellStatus.BUDGET_EXHAUSTED,
+    "node limit": CellStatus.NODE_LIMIT, "timeout": CellStatus.TIMEOUT,
+}
+
+
+class Role(StrEnum):
+    """What the report uses a solver for."""
+
+    REFERENCE = "reference"  # counts the successes (exactly the goals some task tree reaches)
+    AGREEMENT = "agreement"  # a planner that must solve exactly the reference's goals (cell by cell)
+    OPTIMUM = "optimum"  # an optimal solver: tree sizes are compared with its
+    PAPER = "paper"  # the seed paper's method: the time beside the paper's
+    CONCRETE = "concrete"  # returns concrete (REG) trees whatever network it runs on
+    OTHER = "other"
 
 
 @dataclass(frozen=True)
 class Outcome:
     """What a solver says about one goal (a record without its key)."""
 
-    status: str
+    status: CellStatus
     reason: str = ""
     times: dict[str, float] = field(default_factory=dict)
     units: int | None = None
@@ -39,6 +63,8 @@ class Outcome:
     validated: bool | None = None
     proven_optimal: bool | None = None
     foon_valid: bool | None = None
+    bound: float | None = None  # anytime optimal search: proven lower bound on the tree's units
+    gap: float | None = None  # (units - bound) / units
 
 
 @dataclass(frozen=True)
@@ -61,13 +87,16 @@ class Prepared:
 
 @dataclass(frozen=True)
 class Solver:
-    """A registered solver: name, what it is, the networks it applies to (None: all), its preparation."""
+    """A registered solver: name, what it is, its preparation, the networks it applies to (None: all),
+    its role in the report and its cost rank (batches of costlier solvers start first: better load balance)."""
 
     name: str
     description: str
     prepare: Callable[[Setting], Prepared]
     networks: tuple[str, ...] | None = None
     planner: bool = False
+    role: Role = Role.OTHER
+    cost: int = 0
 
     def applies_to(self, network: str) -> bool:
         return self.networks is None or network in self.networks
@@ -77,15 +106,23 @@ def _native_outcome(result, kitchen_nodes, seconds: float) -> Outcome:
     """Outcome of a `Retrieval`, its tree validated from `kitchen_nodes`."""
     times = {"retrieve": seconds}
     if result.tree is None:
-        status = "unsolvable" if result.reason == "unreachable" else result.reason
-        return Outcome(status, result.detail or result.reason, times)
+        return Outcome(FROM_RETRIEVAL_REASON[result.reason], result.detail or result.reason, times)
     t0 = time.perf_counter()
     check = validate(result.tree, kitchen_nodes)
     times["validate"] = time.perf_counter() - t0
     if not check.ok:
-        return Outcome("error", "tree does not validate: " + "; ".join(check.problems[:3]), times,
-                       len(result.tree), None, False, result.proven_optimal, False)
-    return Outcome("solved", result.detail, times, len(result.tree), None, True, result.proven_optimal, True)
+        return Outcome(CellStatus.ERROR, "tree does not validate: " + "; ".join(check.problems[:3]), times,
+                       len(result.tree), None, False, result.proven_optimal, False, *_bound(result))
+    return Outcome(CellStatus.SOLVED, result.detail, times, len(result.tree), None, True, result.proven_optimal,
+                   True, *_bound(result))
+
+
+def _bound(result) -> tuple[float | None, float | None]:
+    """(bound, gap) of an anytime retrieval that reports a lower bound (None, None otherwise)."""
+    bound = getattr(result, "bound", None)
+    if bound is None or result.tree is None or not len(result.tree):
+        return None, None
+    return float(bound), max(0.0, (len(result.tree) - bound) / len(result.tree))
 
 
 class _Native(Prepared):
@@ -126,13 +163,13 @@ def _plan_outcome(outcome, steps: tuple[str, ...]) -> Outcome:
     times = dict(outcome.timings)
     tree = outcome.tree
     units = len(tree) if tree is not None else None
-    status = outcome.status  # `error` when a plan was found that does not decode or validate
-    validated = None if tree is None else status == "solved"
+    status = FROM_PLAN_STATUS[outcome.status]  # `error` when a plan was found that does not decode or validate
     foon_valid = outcome.validation.ok if outcome.validation is not None else None
-    if status == "solved":
+    validated = None if tree is None else status == CellStatus.SOLVED
+    if status == CellStatus.SOLVED:
         reason = "" if foon_valid is not False else "tree fails FOON simulation: " + "; ".join(
             outcome.validation.problems[:2])
-        return Outcome("solved", reason, times, units, len(steps), validated, None, foon_valid)
+        return Outcome(status, reason, times, units, len(steps), validated, None, foon_valid)
     return Outcome(status, outcome.message, times, units, len(steps) if steps else None, validated, None,
                    foon_valid)
 
@@ -195,19 +232,28 @@ class _LiftedGen(Prepared):
 
 
 SOLVERS: dict[str, Solver] = {s.name: s for s in (
-    Solver("native-greedy", "the seed paper's greedy task tree retrieval", lambda s: _Native(s, "greedy")),
-    Solver("native-complete", "reachability fixpoint, a tree whenever one exists", lambda s: _Native(s, "complete")),
-    Solver("native-optimal", "fewest distinct units (branch and bound)", lambda s: _Native(s, "optimal")),
+    Solver("native-greedy", "the seed paper's greedy task tree retrieval", lambda s: _Native(s, "greedy"),
+           role=Role.PAPER, cost=1),
+    Solver("native-complete", "reachability fixpoint, a tree whenever one exists", lambda s: _Native(s, "complete"),
+           role=Role.REFERENCE, cost=0),
+    Solver("native-optimal", "fewest distinct units (branch and bound)", lambda s: _Native(s, "optimal"),
+           role=Role.OPTIMUM, cost=2),
     Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial",
-           lambda s: _FdReuse(s, False), planner=True),
+           lambda s: _FdReuse(s, False), planner=True, role=Role.AGREEMENT, cost=3),
     Solver("fd-tree-opt", "Fast Downward seq-opt-lmcut, tree encoding, one translation per trial",
-           lambda s: _FdReuse(s, True), planner=True),
+           lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5),
     Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
                        "encoding's STRIPS semantics; FOON simulation reported apart)",
-           lambda s: _FdFresh(s, "state"), planner=True),
+           lambda s: _FdFresh(s, "state"), planner=True, cost=6),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
-           _LiftedGen, networks=("gen",), planner=True),
+           _LiftedGen, networks=("gen",), planner=True, role=Role.CONCRETE, cost=4),
 )}
+
+
+def with_role(role: Role, solvers: tuple[str, ...] | None = None) -> tuple[str, ...]:
+    """Names of the registered solvers with `role` (among `solvers` when given), in registry order."""
+    return tuple(n for n, s in SOLVERS.items() if s.role == role and (solvers is None or n in solvers))
+
 
 #: Solvers run when none are named: everything but the slow per-goal encodings.
 DEFAULT_SOLVERS = ("native-greedy", "native-complete", "native-optimal", "fd-tree", "fd-lifted-gen")

@@ -1,0 +1,115 @@
+"""Where the cells run: in this process, or on Dask distributed.
+
+- `run_here`: one batch after the other in the calling process (`--jobs 1`).
+- `run_dask`: every batch is a Dask task (`worker.dask_task`), submitted
+  costliest first (Dask priorities); `jobs` > 1 starts a `LocalCluster` of
+  `jobs` single-threaded worker processes on this machine, `scheduler` sends the
+  tasks to an existing cluster (`dask scheduler` + `dask worker` elsewhere).
+  Each task's records come back as it finishes and are passed to `sink` in
+  the calling process (which appends them to the results file at once), so
+  results stream in whatever runs them. A task whose worker died (Dask retries
+  it on another worker first, up to its `allowed-failures`) or that was killed
+  or cancelled gives `lost` records for its cells: the run goes on, and a rerun
+  redoes them. Interrupting the run (Ctrl-C, SIGTERM) cancels the pending
+  tasks and closes a LocalCluster with its workers; records already written
+  stay.
+"""
+
+from __future__ import annotations
+
+import logging
+import uuid
+from collections.abc import Callable, Sequence
+
+from .progress import Progress
+from .records import CellStatus, Record
+from .worker import Batch, Job, dask_task, run_batch
+
+Sink = Callable[[Record], None]
+
+
+def run_here(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress) -> None:
+    """Run the batches one by one in this process."""
+    def emit(record: Record) -> None:
+        sink(record)
+        progress.update()
+
+    for batch in batches:
+        run_batch(batch, job, emit=emit)
+
+
+def _dashboard(client) -> str | None:
+    """The dashboard link, when the cluster serves one (it needs bokeh)."""
+    try:
+        import bokeh  # noqa: F401
+    except ImportError:
+        return None
+    try:
+        return client.dashboard_link
+    except Exception:  # noqa: BLE001 - no dashboard is not an error
+        return None
+
+
+def connect(jobs: int, scheduler: str | None):
+    """A Dask client and the LocalCluster it owns (None for an existing scheduler)."""
+    try:
+        import distributed
+    except ImportError:
+        from ..errors import FoonInputError
+
+        raise FoonInputError("<dask>", 0, "parallel and distributed runs need Dask: "
+                                          "pip install 'foon2pddl[experiment]' (or 'dask[distributed]')") from None
+
+    logging.getLogger("distributed").setLevel(logging.ERROR)
+    if scheduler is not None:
+        try:
+            return distributed.Client(scheduler, timeout="20s"), None
+        except (OSError, TimeoutError) as exc:
+            from ..errors import FoonInputError
+
+            raise FoonInputError(scheduler, 0, f"cannot reach the Dask scheduler: {exc}") from None
+    cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0", silence_logs=logging.ERROR)
+    try:
+        return distributed.Client(cluster), cluster
+    except BaseException:
+        cluster.close()
+        raise
+
+
+def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress, *, jobs: int = 2,
+             scheduler: str | None = None) -> None:
+    """Run the batches as Dask tasks; `sink` gets every record in this process as its task finishes."""
+    from distributed import as_completed
+
+    client, cluster = connect(jobs, scheduler)
+    futures: dict = {}
+    try:
+        link = _dashboard(client)
+        if link:
+            progress.note(f"Dask dashboard: {link}")
+        run = uuid.uuid4().hex[:8]
+        for i, batch in enumerate(batches):
+            future = client.submit(dask_task, batch, job, key=f"foon2pddl-{run}-{i}", priority=-i, pure=False,
+                                   retries=0)
+            futures[future] = batch
+        for future in as_completed(list(futures)):
+            batch = futures.pop(future)
+            try:
+                records = future.result()
+            except Exception as exc:  # noqa: BLE001 - KilledWorker, CancelledError, a worker's crash
+                records = batch.records(CellStatus.LOST, f"task lost ({type(exc).__name__}: {exc}); rerun to redo")
+                progress.note(f"experiment: {len(records)} cells lost ({type(exc).__name__}); a rerun redoes them")
+            for record in records:
+                sink(record)
+                progress.update()
+            future.release()
+    finally:
+        if futures:
+            try:
+                client.cancel(list(futures), force=True)
+            except Exception:  # noqa: BLE001 - closing anyway
+                pass
+        client.close()
+        if cluster is not None:
+            cluster.close()

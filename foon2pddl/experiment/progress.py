@@ -1,0 +1,87 @@
+"""Progress of a long run: a tqdm bar on a terminal, a periodic line otherwise (logs, CI, nohup).
+
+The line says cells done of planned, the rate since the start and the
+estimated time left, every `interval` seconds and once at the end:
+`experiment: 1,200/3,000 cells (40.0 %), 85.3 cells/s, ETA 21 s`.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from typing import IO
+
+BAR = "bar"
+LINES = "lines"
+OFF = "off"
+
+#: Seconds between two progress lines when stderr is not a terminal.
+LINE_INTERVAL = 30.0
+
+
+def default_mode(stream: IO[str] | None = None) -> str:
+    """A bar on a terminal, lines otherwise."""
+    stream = stream or sys.stderr
+    return BAR if stream.isatty() else LINES
+
+
+def duration(seconds: float) -> str:
+    """`42 s`, `3 min 05 s`, `2 h 07 min`."""
+    s = int(round(seconds))
+    if s < 60:
+        return f"{s} s"
+    if s < 3600:
+        return f"{s // 60} min {s % 60:02d} s"
+    return f"{s // 3600} h {s % 3600 // 60:02d} min"
+
+
+class Progress:
+    """Counts finished cells and shows them in `mode` (BAR, LINES or OFF) on `stream`."""
+
+    def __init__(self, total: int, mode: str = OFF, stream: IO[str] | None = None,
+                 interval: float = LINE_INTERVAL, clock=time.monotonic) -> None:
+        self.total = total
+        self.done = 0
+        self.mode = mode if total else OFF
+        self.stream = stream or sys.stderr
+        self.interval = interval
+        self.clock = clock
+        self.start = clock()
+        self.last = self.start
+        self.bar = None
+        if self.mode == BAR:
+            from tqdm import tqdm
+
+            tqdm.monitor_interval = 0  # no monitor thread
+            self.bar = tqdm(total=total, unit="cell", desc="experiment", file=self.stream, dynamic_ncols=True,
+                            smoothing=0.05)
+
+    def line(self) -> str:
+        """The progress line for the cells done so far."""
+        elapsed = max(self.clock() - self.start, 1e-9)
+        rate = self.done / elapsed
+        pct = 100.0 * self.done / self.total if self.total else 100.0
+        eta = duration((self.total - self.done) / rate) if rate > 0 else "?"
+        return (f"experiment: {self.done:,}/{self.total:,} cells ({pct:.1f} %), {rate:,.1f} cells/s, "
+                f"elapsed {duration(elapsed)}, ETA {eta}")
+
+    def update(self, n: int = 1) -> None:
+        self.done += n
+        if self.bar is not None:
+            self.bar.update(n)
+        elif self.mode == LINES and self.clock() - self.last >= self.interval:
+            self.last = self.clock()
+            print(self.line(), file=self.stream, flush=True)
+
+    def note(self, text: str) -> None:
+        """A message that does not break the bar (the dashboard link, a lost task)."""
+        if self.bar is not None:
+            self.bar.write(text, file=self.stream)
+        elif self.mode != OFF:
+            print(text, file=self.stream, flush=True)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+        elif self.mode == LINES:
+            print(self.line(), file=self.stream, flush=True)
