@@ -115,3 +115,43 @@ def test_many_stray_kitchen_items_are_summarized(tmp_path):
     strays = [make_node(f"thing {i}") for i in range(25)]
     messages, total = unmatched_items([*strays, foon.nodes[0]], foon, limit=10)
     assert total == 25 and len(messages) == 10
+
+
+# -- an unreachable goal that EXP or GEN would make ---------------------------------------------------
+
+
+def test_unreachable_goal_names_the_networks_that_make_it(tmp_path, monkeypatch):
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cache"))
+    cold = run("retrieve", "--goal", "lemonade")
+    assert cold.exit_code == 1
+    # EXP's similarity matrix is not cached: only the cheap GEN check runs
+    assert "hint: --network gen can make it" in cold.stderr
+    assert run("retrieve", "--goal", "lemonade", "--network", "exp").exit_code == 0  # caches the matrix
+    warm = run("retrieve", "--goal", "lemonade")
+    assert "hint: --network exp and --network gen can make it" in warm.stderr
+    planned = run("plan", "--goal", "lemonade")
+    assert planned.exit_code == 1 and "hint: --network exp and --network gen" in planned.stderr
+
+
+def test_no_network_hint_when_no_network_makes_it(tmp_path):
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("knife\n")
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", str(kitchen))
+    assert r.exit_code == 1 and "hint" not in r.stderr
+
+
+# -- output paths are checked before the work ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("command", [["plan", "--goal", "guacamole"], ["retrieve", "--goal", "guacamole"]])
+def test_unwritable_output_fails_before_planning(tmp_path, command):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    for bad in ("/proc/nope/x.txt", str(blocker / "x.txt"), str(tmp_path)):
+        r = run(*command, "-o", bad)
+        assert r.exit_code == 2, (bad, r.output)
+        assert f"{bad}:0: error: cannot write" in r.stderr
+        assert "phases:" not in r.stderr and "units" not in r.stderr  # nothing ran
+    ok = tmp_path / "new" / "dir" / "tree.txt"
+    assert run(*command, "-o", str(ok)).exit_code == 0 and ok.is_file()
+

@@ -14,6 +14,7 @@ from ..pddl.render import render
 from ..pddl.task import PlanningTask
 from . import main
 from .options import (
+    check_output,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -61,6 +62,7 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
               default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
 def compile_(paths, goal, goal_file, kitchen, encoding, level, network, prune, costs, rates, output_dir) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
+    check_output(output_dir, directory=True)
     task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network)
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}

@@ -53,6 +53,19 @@ def constraints_options(command):
     return command
 
 
+def check_output(output: Path | None, directory: bool = False) -> None:
+    """Fail now (exit 2) when `output` cannot be written, before any long work runs."""
+    if output is None:
+        return
+    from ..errors import FoonInputError
+    from ..io.atomic import check_writable
+
+    try:
+        check_writable(output, directory)
+    except OSError as exc:
+        raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:
@@ -113,3 +126,13 @@ def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | N
 
     emit(write_json(foon) if fmt == "json" else write_foon(foon, provenance=provenance, header=header), output)
     click.echo(header, err=True)
+
+
+def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
+    """After REG found a goal unreachable: say (stderr) whether `--network exp`/`gen` would make it."""
+    from ..generalize.hints import networks_hint
+    from ..io.inputs import goal_spec
+
+    hint = networks_hint(net, kitchen, goal_spec(goal, goal_file), level)
+    if hint:
+        click.echo(hint, err=True)

@@ -16,6 +16,7 @@ from ..planners import DEFAULT_PLANNER
 from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
+    check_output,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -24,6 +25,7 @@ from .options import (
     level_option,
     load_view,
     network_option,
+    other_networks_hint,
     paths_argument,
     prune_option,
     rates_option,
@@ -95,6 +97,7 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
+    check_output(output)
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
@@ -136,6 +139,8 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
         click.echo(summary, err=True)
         if status == "unsolvable" and encoding != "state":
             click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
+            if network == "reg":
+                other_networks_hint(net, kit, goal, goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         _write(data, output)
@@ -146,12 +151,12 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
 def _why_unreachable(foon, kitchen, goal) -> str:
     """FOON's own account of an unreachable goal: which missing nodes block it (tree and foon-compat semantics)."""
     from ..analysis.reachability import reachable
-    from ..retrieval.complete import unreachable_detail
+    from ..retrieval.explain import explain_unreachable
 
     reach = reachable(foon, kitchen.nodes)
     if any(reach.can_make(c) for c in goal.candidates):
         return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"
-    return unreachable_detail(reach, goal)
+    return explain_unreachable(foon, kitchen.nodes, goal)
 
 
 def _write(data: str, output: Path | None) -> None:

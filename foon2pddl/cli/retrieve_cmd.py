@@ -8,10 +8,13 @@ from ..errors import FoonInputError
 from ..io.constraints_file import load_constraints, with_rates
 from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
+from ..retrieval.explain import explain_unreachable
 from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT
+from ..retrieval.result import UNREACHABLE
 from . import main
 from .options import (
+    check_output,
     constraints_options,
     emit,
     goal_file_option,
@@ -20,6 +23,7 @@ from .options import (
     level_option,
     load_view,
     network_option,
+    other_networks_hint,
     output_option,
     paths_argument,
     rates_option,
@@ -56,12 +60,13 @@ def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fm
     Exit status: 0 a tree was found, 1 the goal cannot be made (the reason goes to stderr),
     2 bad input.
     """
+    check_output(output)
     cons = load_constraints(constraints_files, without_motions, without, must_use)
     motion_rates = with_rates(read_rates(rates) if rates else None, cons)
     if method == "weighted" and motion_rates is None:
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate) "
                                              "or rates in a --constraints file")
-    _, view = load_view(paths, kitchen, level, network)
+    net, view = load_view(paths, kitchen, level, network)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
@@ -79,7 +84,11 @@ def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fm
         if explain:
             click.echo("explain: no constraints given", err=True)
     if result.tree is None:
-        click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {result.detail}", err=True)
+        plain = result.reason == UNREACHABLE and not cons.items  # constraints explain themselves
+        detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
+        click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
+        if plain and network == "reg":
+            other_networks_hint(net, kit, goal, goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
     note = f"{method}: {len(result.tree)} units"

@@ -47,7 +47,11 @@ class NetworkView:
 
     def goal(self, goal: str | None, goal_file: str | Path | None) -> Goal:
         """The user's goal (`--goal` text or `--goal-file`) mapped and resolved against this network."""
-        return resolve_goal(self.map_goal(goal_spec(goal, goal_file)), self.foon)
+        return self.resolve(goal_spec(goal, goal_file))
+
+    def resolve(self, spec: GoalSpec) -> Goal:
+        """A goal as the user wrote it, mapped and resolved against this network."""
+        return resolve_goal(self.map_goal(spec), self.foon)
 
 
 def network_view(net: Network, kind: str, level: int, kitchen: Kitchen, *, threshold: float = DEFAULT_THRESHOLD,

@@ -133,6 +133,12 @@ def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "")
     return SimilarityMatrix(labels, values, key)
 
 
+def matrix_is_cached(vocabulary: Iterable[str]) -> bool:
+    """Whether the matrix over `vocabulary` is in the disk cache (no WordNet opened, no NLTK import)."""
+    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
+    return (cache_dir() / "similarity" / f"{matrix_key(labels, shipped_overrides().text)}.npz").is_file()
+
+
 def similarity_matrix(
     vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None
 ) -> SimilarityMatrix:

@@ -46,3 +46,25 @@ def atomic_write_many(files: dict[Path, str | bytes]) -> None:
         for tmp, _ in staged:
             Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def check_writable(path: str | Path, directory: bool = False) -> None:
+    """Raise OSError unless `atomic_write` could create `path` (or files in it, when `directory`).
+
+    Checked before long work (a planner run) so that a bad `-o` fails first, not after.
+    The nearest existing ancestor must be a directory in which a file can be created
+    (probed with a temporary file, removed at once: `os.access` says yes to root on
+    read-only or virtual file systems); an existing `path` must be a file (a directory
+    when `directory`).
+    """
+    p = Path(path)
+    if p.exists() and p.is_dir() != directory:
+        raise IsADirectoryError(21, "is a directory") if not directory else NotADirectoryError(20, "not a directory")
+    base = p if directory else p.parent
+    while not base.exists():
+        base = base.parent
+    if not base.is_dir():
+        raise NotADirectoryError(20, f"{base} is not a directory")
+    fd, tmp = tempfile.mkstemp(prefix=".foon2pddl-probe.", dir=base)
+    os.close(fd)
+    os.unlink(tmp)

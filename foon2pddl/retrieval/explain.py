@@ -1,0 +1,39 @@
+"""Why a goal cannot be made, in words a user can act on: the smallest kitchen additions.
+
+Computed only when an answer is printed (not inside the timed retrievals, which
+keep the cheap `complete.unreachable_detail`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from ..analysis.additions import smallest_additions
+from ..analysis.reachability import reachable
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import default_kitchen
+from .complete import unreachable_detail
+
+
+def additions_text(sets, shown: int = 3) -> str:
+    """`add 'a' and 'b'; or add 'c'` (backquoted node names): the first `shown` sets, and how many more there are."""
+    def one(nodes) -> str:
+        names = [f"`{n.describe()}`" for n in nodes]
+        return "add " + (", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else names[0])
+
+    text = "; or ".join(one(s) for s in sets[:shown])
+    return text + (f" (or {len(sets) - shown} more ways of that size)" if len(sets) > shown else "")
+
+
+def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, max_size: int = 3) -> str:
+    """Why no candidate of `goal` can be made from the kitchen: the smallest sets of nodes a kitchen
+    could hold (the network's default kitchen) that make it, else the missing leaves."""
+    reach = reachable(foon, kitchen_nodes, goal.candidates)
+    if any(reach.can_make(c) for c in goal.candidates):
+        return f"{goal.describe()!r} can be made from the kitchen"
+    fixes = smallest_additions(reach, goal.candidates, default_kitchen(foon).nodes, max_size=max_size)
+    if fixes.smallest:
+        return (f"none of the {len(goal.candidates)} node(s) matching {goal.describe()!r} can be made from the "
+                "kitchen; smallest kitchen additions that make it: " + additions_text(fixes.smallest))
+    return unreachable_detail(reach, goal) + f" (no set of up to {max_size} kitchen additions makes it)"
