@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.expand import expand, is_expanded, vocabulary
 from foon2pddl.generalize.similarity import SimilarityMatrix, similarity_matrix
-from foon2pddl.generalize.substitute import substitute_node, substitute_unit, unit_labels
+from foon2pddl.generalize.substitute import product_renames, replace_words, substitute_node, substitute_unit, unit_labels
 from foon2pddl.io.inputs import example_path
 from foon2pddl.io.kitchen_files import read_kitchen
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
@@ -96,11 +96,51 @@ def test_expansion_properties(foon, data):
     for u in e.foon.units:
         if u.key in originals:
             continue
-        # every copy is an original with one similar object substituted
+        # every copy is an original with one similar object (or a derived product) substituted,
+        # and the products it makes from that object renamed along
         old = u.sources[0].expanded_from
-        assert any(substitute_unit(o, {old: new}).key == u.key
-                   for o in foon.units for new in {b for a, b in close if a == old})
+        partners = {b for a, b in close if a == old} | {b for a, b in e.derived if a == old}
+        assert any(substitute_unit(o, {old: new, **product_renames(o, {old: new})}).key == u.key
+                   for o in foon.units for new in partners)
     assert {u.key for u in expand(foon, m, threshold=0.92).foon.units} <= set(keys)  # monotone in threshold
+
+
+SQUEEZE = FunctionalUnit((LEMON, make_node("juicer", [make_state("empty")])), Motion("squeeze"),
+                         (make_node("lemon", [make_state("squeezed")]),
+                          make_node("juicer", [make_state("contains", "", ["lemon juice"])]),
+                          make_node("lemon juice", [make_state("in", "juicer")])))
+POUR = FunctionalUnit((make_node("lemon juice", [make_state("in", "juicer")]), make_node("bowl")), Motion("pour"),
+                      (make_node("bowl", [make_state("contains", "", ["lemon juice"])]),))
+STIR = FunctionalUnit((make_node("bowl", [make_state("contains", "", ["lemon juice"])]), make_node("spoon")),
+                      Motion("stir"), (make_node("lemonade", [make_state("contains", "", ["lemon juice"])]),))
+
+
+def test_products_made_from_a_substituted_object_are_renamed_and_flow_down():
+    m = matrix(["lemon", "lime", "juicer", "lemon juice", "bowl", "spoon", "lemonade"], [("lemon", "lime", 0.93)])
+    e = expand(Foon((SQUEEZE, POUR, STIR)), m)
+    assert ("lemon juice", "lime juice") in e.derived  # `lime juice` is not even in the vocabulary
+    labels = [unit_labels(u) for u in e.foon.units if is_expanded(u)]
+    squeezed = [x for x in labels if "lime" in x]
+    assert squeezed and all("lime juice" in x and "lemon juice" not in x for x in squeezed)
+    # the renamed juice is poured and stirred: lemonade made of lime juice
+    stirred = make_node("lemonade", [make_state("contains", "", ["lime juice"])])
+    assert any(stirred in u.outputs for u in e.foon.units)
+    assert "lemonade" in {n.label for u in e.foon.units for n in u.outputs}  # not a whole-word match
+
+
+def test_a_product_is_not_substituted_away_from_its_source():
+    lime_squeeze = substitute_unit(SQUEEZE, {"lemon": "lime", "lemon juice": "lime juice"})
+    m = matrix(["lime", "juicer", "lime juice", "lemon juice"], [("lime juice", "lemon juice", 0.95)])
+    e = expand(Foon((lime_squeeze,)), m)
+    assert len(e.foon.units) == 1  # no `squeeze lime -> lemon juice`
+
+
+def test_word_replacement_is_whole_words():
+    assert replace_words("lemon juice", "lemon", "lime") == "lime juice"
+    assert replace_words("lemonade", "lemon", "lime") is None
+    assert replace_words("lemon", "lemon", "lime") is None
+    assert replace_words("juice of lemon and lemon zest", "lemon", "blood orange") == \
+        "juice of blood orange and blood orange zest"
 
 
 def test_example_exp_has_lime_copies_of_the_lemon_units(example, label_similarity):
@@ -108,6 +148,9 @@ def test_example_exp_has_lime_copies_of_the_lemon_units(example, label_similarit
     m = similarity_matrix(vocabulary(example.foon, kitchen), cache=False, sim=label_similarity)
     e = expand(example.foon, m, kitchen=kitchen)
     assert ("lemon", "lime") in e.substitutions
-    lime_units = [u for u in e.foon.units if is_expanded(u) and "lime" in unit_labels(u)
-                  and u.sources[0].expanded_from == "lemon"]
-    assert lime_units and all("lemon" not in unit_labels(u) for u in lime_units)
+    keys = {u.key for u in e.foon.units}
+    lemon_units = [u for u in example.foon.units if "lemon" in {n.label for n in u.inputs}]
+    assert lemon_units
+    for u in lemon_units:  # each has its lime copy (some coincide with the guacamole recipe's own units)
+        copy = substitute_unit(u, {"lemon": "lime", **product_renames(u, {"lemon": "lime"})})
+        assert copy.key in keys and "lemon" not in unit_labels(copy)

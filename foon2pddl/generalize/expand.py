@@ -8,7 +8,15 @@ already mentions is not substituted in (two objects would become one). Copies
 mark their sources `expanded_from=<original label>`; duplicates (also of
 original units) are removed with `merge.dedupe_units`, originals first, so an
 original unit keeps its unmarked provenance. One substitution per copy, as in
-the seed paper: squeezing a lime gives the recipe's `lemon juice`, not `lime juice`.
+the seed paper, with what the unit makes from the object renamed along
+(`substitute.product_renames`): squeezing a lime makes `lime juice`, not the
+recipe's `lemon juice`. Each such derived pair (`lemon juice` -> `lime juice`) is
+then substituted like a similar pair into every unit that mentions the product
+(anywhere: node, related object, ingredient), so the renamed product flows down
+the recipe (`pour lime juice`, `pitcher (contains {lime juice})`, ...), and
+its own products are renamed in turn, until no new pair appears. Conversely a
+product is not substituted away from its source (`squeeze lime -> lime juice`
+gets no `lemon juice` copy: `substitute.renames_product_away`).
 """
 
 from __future__ import annotations
@@ -20,7 +28,7 @@ from ..errors import FoonInputError
 from ..model.foon import Foon, FunctionalUnit, dedupe_units
 from ..model.kitchen import Kitchen
 from .similarity import SimilarityMatrix, similarity_matrix
-from .substitute import substitute_unit, unit_labels
+from .substitute import product_renames, renames_product_away, substitute_unit, unit_labels
 
 #: The seed paper's similarity threshold for FOON-EXP.
 DEFAULT_THRESHOLD = 0.89
@@ -35,6 +43,7 @@ class Expansion:
     original_units: int
     copies: int  # substituted copies generated, before removing duplicates
     substitutions: tuple[tuple[str, str], ...]  # (label, similar label) pairs used, sorted
+    derived: tuple[tuple[str, str], ...] = ()  # (product, renamed product) pairs propagated, sorted
 
     @property
     def added_units(self) -> int:
@@ -76,25 +85,44 @@ def expand(
     keys = {u.key for u in foon.units}
     copies: list[FunctionalUnit] = []
     used: set[tuple[str, str]] = set()
+    derived: dict[tuple[str, str], None] = {}
+
+    def add(unit: FunctionalUnit, old: str, new: str) -> None:
+        extra = product_renames(unit, {old: new})
+        copy = substitute_unit(unit, {old: new, **extra}, note=old)
+        copies.append(copy)
+        keys.add(copy.key)
+        for pair in extra.items():
+            derived.setdefault(pair, None)
+        if max_units is not None and len(keys) > max_units:
+            raise FoonInputError(
+                "<expand>", 0,
+                f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
+                "raise the threshold or --max-units",
+            )
+
+    mentions: dict[str, list[FunctionalUnit]] = {}
     for unit in foon.units:
         mentioned = unit_labels(unit)
+        for label in mentioned:
+            mentions.setdefault(label, []).append(unit)
         for old in sorted({n.label for n in (*unit.inputs, *unit.outputs)}):
             if old not in known:
                 continue
             if old not in similar_cache:
                 similar_cache[old] = matrix.similar(old, threshold)
             for new, _ in similar_cache[old]:
-                if new in mentioned:
+                if new in mentioned or renames_product_away(unit, old, new):
                     continue
-                copy = substitute_unit(unit, {old: new}, note=old)
-                copies.append(copy)
+                add(unit, old, new)
                 used.add((old, new))
-                keys.add(copy.key)
-                if max_units is not None and len(keys) > max_units:
-                    raise FoonInputError(
-                        "<expand>", 0,
-                        f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
-                        "raise the threshold or --max-units",
-                    )
+    done: set[tuple[str, str]] = set()
+    while len(done) < len(derived):  # derived products flow down the recipes that use them
+        old, new = pair = next(p for p in derived if p not in done)
+        done.add(pair)
+        for unit in mentions.get(old, ()):
+            if new not in unit_labels(unit) and not renames_product_away(unit, old, new):
+                add(unit, old, new)
     units = dedupe_units((*foon.units, *copies))
-    return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)))
+    return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)),
+                     tuple(sorted(derived)))

@@ -5,6 +5,9 @@ to the related object of each state (`in [bowl]`) and to each item of its
 ingredient lists, never to parts of other labels: replacing `lemon` leaves
 `lemon juice` alone. Nodes are rebuilt with `make_state`/`make_node`, so
 ingredient lists stay sorted and duplicate-free when two items become one.
+
+`product_renames` extends a substitution to what a unit *makes from* the replaced
+object: squeezing a lime instead of a lemon makes `lime juice`, not `lemon juice`.
 """
 
 from __future__ import annotations
@@ -37,3 +40,51 @@ def substitute_unit(unit: FunctionalUnit, mapping: Mapping[str, str], note: str 
     if note is not None:
         sources = tuple(Source(s.path, s.line, s.url, note) for s in unit.sources) or (Source("", 0, None, note),)
     return FunctionalUnit(ins, unit.motion, outs, sources)
+
+
+def replace_words(label: str, old: str, new: str) -> str | None:
+    """`label` with each whole-word occurrence of `old` replaced by `new`; None when there is none
+    (or `label` is `old` itself): `lemon juice` -> `lime juice`, but `lemonade` stays."""
+    words, target = label.split(), old.split()
+    if not target or words == target:
+        return None
+    out, i, hit = [], 0, False
+    while i < len(words):
+        if words[i:i + len(target)] == target:
+            out.extend(new.split())
+            i += len(target)
+            hit = True
+        else:
+            out.append(words[i])
+            i += 1
+    return " ".join(out) if hit else None
+
+
+def product_renames(unit: FunctionalUnit, mapping: Mapping[str, str]) -> dict[str, str]:
+    """Derived products renamed with their source: the labels of `unit`'s outputs that are no input's
+    label and contain a replaced label as whole words, mapped to the same words with the replacement
+    (`squeeze lemon -> lemon juice` under lemon -> lime: `lemon juice` -> `lime juice`). A new name the
+    unit already mentions is left out (two objects would become one)."""
+    inputs = {n.label for n in unit.inputs}
+    mentioned = unit_labels(unit)
+    out: dict[str, str] = {}
+    for n in unit.outputs:
+        if n.label in inputs or n.label in mapping or n.label in out:
+            continue
+        for old, new in sorted(mapping.items()):
+            renamed = replace_words(n.label, old, new)
+            if renamed is not None and renamed not in mentioned:
+                out[n.label] = renamed
+                break
+    return out
+
+
+def renames_product_away(unit: FunctionalUnit, old: str, new: str) -> bool:
+    """Whether replacing `old` by `new` in `unit` would rename a product away from what it is made of:
+    `old` is one of the unit's outputs (no input's label) containing an input's label as whole words,
+    and `new` does not (`squeeze lime -> lime juice` with `lime juice` -> `lemon juice`)."""
+    inputs = {n.label for n in unit.inputs}
+    if old in inputs or all(n.label != old for n in unit.outputs):
+        return False
+    sources = [x for x in inputs if replace_words(old, x, x) is not None]
+    return any(replace_words(new, x, x) is None for x in sources)

@@ -3,7 +3,8 @@
 Every format is deterministic (units in the tree's order, nodes numbered in
 sorted order). Diagrams use the public FOON viewer's colours: object nodes
 that enter the tree from the kitchen (inputs) green, object nodes some unit
-of the tree makes (outputs) blue, motion nodes red; the goal has a bold border.
+of the tree makes (outputs) blue, motion nodes red; the goal has a bold border. A legend
+says so, and a kitchen utensil several steps use is drawn once per use (dashed).
 """
 
 from __future__ import annotations
@@ -149,14 +150,45 @@ def _node_label(node: ObjectNode) -> str:
     return node.label + "\n" + "\n".join(s.describe() for s in node.states)
 
 
+def _legend() -> list[str]:
+    """A legend cluster: what each colour and shape means."""
+    items = [
+        ("legend_kitchen", "from the kitchen", f'shape=ellipse, style=filled, fillcolor="{INPUT_COLOUR}"'),
+        ("legend_made", "made by a step", f'shape=ellipse, style=filled, fillcolor="{OUTPUT_COLOUR}"'),
+        ("legend_motion", "step (motion)", f'shape=box, style=filled, fillcolor="{MOTION_COLOUR}"'),
+        ("legend_goal", "goal", f'shape=ellipse, style=filled, fillcolor="{OUTPUT_COLOUR}", penwidth=3'),
+        ("legend_utensil", "utensil (drawn once per use)",
+         f'shape=ellipse, style="filled,dashed", fillcolor="{INPUT_COLOUR}"'),
+    ]
+    lines = ["  subgraph cluster_legend {", '    label="legend"; fontsize=10; color="#999999";']
+    lines += [f"    {name} [label={_quote(text)}, {style}];" for name, text, style in items]
+    lines.append("    " + " -> ".join(name for name, _, _ in items) + " [style=invis];")
+    lines.append("  }")
+    return lines
+
+
 def _dot(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    """The tree as a graph: objects -> motion -> objects, with a legend.
+
+    A kitchen object that several steps use (a knife, a cutting board) would pull edges from
+    all over the diagram into one node; it is drawn once per use instead (dashed), next to
+    its step, and its unchanged pass-through output is not drawn again.
+    """
     made = {n for u in tree.units for n in u.outputs if n not in u.inputs}
-    nodes = sorted({n for u in tree.units for n in u.inputs + u.outputs} | {tree.goal})
+    uses: dict[ObjectNode, int] = {}
+    for u in tree.units:
+        for n in dict.fromkeys(u.inputs):
+            if n not in made:
+                uses[n] = uses.get(n, 0) + 1
+    per_use = {n for n, k in uses.items() if k > 1 and n != tree.goal}
+    shared = sorted(per_use)
+    nodes = sorted(({n for u in tree.units for n in u.inputs + u.outputs} | {tree.goal}) - per_use)
     ids = {n: f"o{i}" for i, n in enumerate(nodes)}
     lines = [
         "digraph task_tree {",
         f"  graph [label={_quote(_header(tree))}, labelloc=t, rankdir=TB];",
         '  node [fontname="Helvetica", fontsize=10];',
+        *_legend(),
     ]
     for n in nodes:
         colour = OUTPUT_COLOUR if n in made else INPUT_COLOUR
@@ -166,8 +198,15 @@ def _dot(tree: TaskTree, used: list[ObjectNode] | None) -> str:
     for i, u in enumerate(tree.units, start=1):
         lines.append(f"  m{i} [label={_quote(f'{i}. {u.motion.label}')}, shape=box, style=filled, "
                      f'fillcolor="{MOTION_COLOUR}"];')
-        lines += [f"  {ids[n]} -> m{i};" for n in dict.fromkeys(u.inputs)]
-        lines += [f"  m{i} -> {ids[n]};" for n in dict.fromkeys(u.outputs)]
+        for n in dict.fromkeys(u.inputs):
+            if n in per_use:
+                copy = f"t{shared.index(n)}_{i}"
+                lines.append(f"  {copy} [label={_quote(_node_label(n))}, shape=ellipse, "
+                             f'style="filled,dashed", fillcolor="{INPUT_COLOUR}"];')
+                lines.append(f"  {copy} -> m{i};")
+            else:
+                lines.append(f"  {ids[n]} -> m{i};")
+        lines += [f"  m{i} -> {ids[n]};" for n in dict.fromkeys(u.outputs) if n not in per_use]
     lines.append("}")
     return "\n".join(lines) + "\n"
 
