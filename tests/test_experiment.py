@@ -315,3 +315,59 @@ def test_progress_lines_without_a_terminal_say_done_rate_and_eta():
     assert out.getvalue().splitlines() == ["experiment: 15/100 cells (15.0 %), 0.5 cells/s, elapsed 30 s, ETA 2 min 50 s"]
     progress.close()
     assert out.getvalue().splitlines()[-1] == "experiment: 20/100 cells (20.0 %), 0.5 cells/s, elapsed 40 s, ETA 2 min 40 s"
+
+
+# -- sweeps --------------------------------------------------------------------------------------
+
+def test_sweeps_expand_the_grid_and_the_report_gets_a_table_and_plot_per_parameter(tmp_path):
+    args = ["experiment", "--trials", "2", "--goals", "4", "--networks", "reg,gen", "--solvers",
+            "native-complete,native-optimal", "--sweep", "kitchen-fraction=0.5,1", "--sweep", "level=2,3",
+            "-o", str(tmp_path), "--no-progress"]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 0, result.output
+    records = read_records(tmp_path / "results.jsonl")
+    assert len(records) == 2 * 2 * (2 * 4 * 2 * 2)
+    points = {k[4] for k in records}
+    assert points == {(("kitchen-fraction", f), ("level", lv)) for f in (0.5, 1.0) for lv in (2, 3)}
+    solved = {p: sum(r.solved for k, r in records.items() if k[4] == p and k[3] == "native-complete") for p in points}
+    # a larger kitchen (same seed: a superset) never solves fewer goals at the same level
+    for lv in (2, 3):
+        assert solved[(("kitchen-fraction", 0.5), ("level", lv))] <= solved[(("kitchen-fraction", 1.0), ("level", lv))]
+    report = (tmp_path / "report.md").read_text()
+    assert "## Sweep: kitchen-fraction (0.5, 1)" in report and "## Sweep: level (2, 3)" in report
+    assert "](sweep-kitchen-fraction.png)" in report and "](sweep-level.png)" in report
+    assert "| native-complete | REG | " in report.split("## Sweep: level")[1]
+    assert "## How often optimality was proven" in report
+    for png in ("sweep-kitchen-fraction.png", "sweep-level.png"):
+        assert (tmp_path / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    header = (tmp_path / "results.csv").read_text().splitlines()[0].split(",")
+    assert header[-2:] == ["kitchen-fraction", "level"]
+    again = CliRunner().invoke(main, args)
+    assert again.exit_code == 0 and "0 cells run, 128 reused" in again.output
+    wider = CliRunner().invoke(main, [x if x != "level=2,3" else "level=1,2,3" for x in args])
+    assert wider.exit_code == 0 and "64 cells run, 128 reused" in wider.output, wider.output
+    other = CliRunner().invoke(main, [*args[:11], "-o", str(tmp_path), "--no-progress"])  # no sweep: another grid
+    assert other.exit_code == 2 and "another protocol" in other.output
+
+
+def test_a_parameter_is_one_registry_entry_with_a_kitchen_hook(monkeypatch, tmp_path):
+    from foon2pddl.experiment.params import PARAMS, TRIAL, Param
+    from foon2pddl.model.kitchen import Kitchen
+
+    def keep_first(kitchen: Kitchen, count: int) -> Kitchen:
+        return Kitchen(frozenset(sorted(kitchen.nodes)[:count]), kitchen.level, "first nodes")
+
+    monkeypatch.setitem(PARAMS, "kitchen-size", Param("kitchen-size", int, TRIAL, "kitchen nodes kept",
+                                                      kitchen=keep_first))
+    config = runner.Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path,
+                           sweeps=(("kitchen-size", (0, 10_000)),))
+    summary = runner.run(config, progress=False)
+    by = {v: [r for r in summary.records if r.params == {"kitchen-size": v}] for v in (0, 10_000)}
+    assert len(by[0]) == len(by[10_000]) == 6
+    assert sum(r.solved for r in by[0]) == 0 < sum(r.solved for r in by[10_000])
+
+
+def test_bad_sweeps_exit_2():
+    for bad in ("nope=1", "level=4", "kitchen-fraction=", "threshold=x"):
+        result = CliRunner().invoke(main, ["experiment", "--sweep", bad, "--no-progress"])
+        assert result.exit_code == 2 and "--sweep" in result.output, (bad, result.output)

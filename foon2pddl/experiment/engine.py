@@ -98,7 +98,7 @@ def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress,
             try:
                 records = future.result()
             except Exception as exc:  # noqa: BLE001 - KilledWorker, CancelledError, a worker's crash
-                records = batch.records(CellStatus.LOST, f"task lost ({type(exc).__name__}: {exc}); rerun to redo")
+                records = batch.records(CellStatus.LOST, f"task lost, a rerun redoes it ({type(exc).__name__}: {exc})")
                 progress.note(f"experiment: {len(records)} cells lost ({type(exc).__name__}); a rerun redoes them")
             for record in records:
                 sink(record)
