@@ -11,7 +11,13 @@ from hypothesis import strategies as st
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.expand import expand, is_expanded, vocabulary
 from foon2pddl.generalize.similarity import SimilarityMatrix, similarity_matrix
-from foon2pddl.generalize.substitute import product_renames, replace_words, substitute_node, substitute_unit, unit_labels
+from foon2pddl.generalize.substitute import (
+    product_renames,
+    replace_words,
+    substitute_node,
+    substitute_unit,
+    unit_labels,
+)
 from foon2pddl.io.inputs import example_path
 from foon2pddl.io.kitchen_files import read_kitchen
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state

@@ -15,6 +15,7 @@ from ..pddl.task import PlanningTask
 from . import main
 from .options import (
     check_output,
+    containment_option,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -26,17 +27,20 @@ from .options import (
     paths_argument,
     prune_option,
     rates_option,
+    single_goal,
+    utensils_option,
     view_goal,
 )
 
 
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
-               prune: bool, costs: str | None, rates: Path | None, network: str = "reg") -> PlanningTask:
+               prune: bool, costs: str | None, rates: Path | None, network: str = "reg",
+               containment: str = "strict", utensils: Path | None = None) -> PlanningTask:
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
-    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
-    target = view_goal(view, goal, goal_file, level)
+    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
+    target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
     if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
         from ..generalize.categories import load_index
         from ..generalize.lifted import check_lifted_options, encode_lifted
@@ -52,6 +56,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @goal_option
 @goal_file_option
 @kitchen_option
+@utensils_option
+@containment_option
 @encoding_option
 @level_option
 @network_option
@@ -60,10 +66,12 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @rates_option
 @click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
               default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
-def compile_(paths, goal, goal_file, kitchen, encoding, level, network, prune, costs, rates, output_dir) -> None:
+def compile_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, prune, costs, rates,
+             output_dir) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
     check_output(output_dir, directory=True)
-    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network)
+    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
+                      utensils)
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
     try:

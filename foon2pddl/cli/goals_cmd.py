@@ -42,8 +42,10 @@ def format_rows(rows: list[dict], kitchen_source: str, network: str = "reg") -> 
 @level_option
 @network_option
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@click.option("--reachable", "only_reachable", is_flag=True,
+              help="Only the goals the kitchen can make (pipe into `retrieve --goals -`).")
 @output_option
-def goals(paths, kitchen, level, network, as_json, output) -> None:
+def goals(paths, kitchen, level, network, as_json, only_reachable, output) -> None:
     """List the goal candidates (nodes some unit produces) and whether the kitchen can make each.
 
     With --network exp or gen, the goals of FOON-EXP or FOON-GEN (GEN goals are category-level).
@@ -51,6 +53,8 @@ def goals(paths, kitchen, level, network, as_json, output) -> None:
     _, view = load_view(paths, kitchen, level, network)
     foon, kit = view.foon, view.kitchen
     rows = goal_rows(foon, reachable(foon, kit.nodes))
+    if only_reachable:
+        rows = [r for r in rows if r["reachable"]]
     source = kit.source or "the kitchen"
     if as_json:
         data = {"level": level, "network": network, "kitchen": source,

@@ -14,8 +14,18 @@ level_option = click.option("--level", type=click.IntRange(1, 3), default=3, sho
 kitchen_option = click.option("--kitchen", "kitchen", type=click.Path(path_type=Path), default=None,
                               help="Kitchen file (.json, FOON-style O/S lines, or one node per line). "
                                    "Default: the example kitchen, or the network's default kitchen.")
-goal_option = click.option("--goal", "goal", default=None,
-                           help="Goal: 'label', 'label: state, state [obj]' or 'label: contains {a, b}'.")
+goal_option = click.option("--goal", "goal", multiple=True,
+                           help="Goal: 'label', 'label: state, state [obj]' or 'label: contains {a, b}'. "
+                                "Repeat for a batch of goals.")
+goals_option = click.option("--goals", "goals_file", type=click.Path(path_type=Path, allow_dash=True), default=None,
+                            help="Batch of goals: goal_nodes.json-style JSON, `goals --json` output, FOON O/S "
+                                 "lines, or one goal a line (also `goals` table rows); '-' reads standard input.")
+containment_option = click.option("--containment", type=click.Choice(["strict", "infer"]), default="strict",
+                                  show_default=True,
+                                  help="infer: a container node `c (contains {x})` is available when its contents "
+                                       "`x (in [c])` are (docs/format.md).")
+utensils_option = click.option("--utensils", "utensils", type=click.Path(path_type=Path), default=None,
+                               help="Utensil labels, one a line: reusable, available in base state (docs/format.md).")
 goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path_type=Path), default=None,
                                 help="Goal as one object node in FOON O/S lines.")
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
@@ -79,20 +89,36 @@ def emit(text: str, output: Path | None) -> None:
             raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
 
 
-def load_view(paths, kitchen: Path | None, level: int, network: str):
+def single_goal(goal: tuple[str, ...]) -> str | None:
+    """The one `--goal` of a single-goal run (None when not given)."""
+    return goal[0] if goal else None
+
+
+def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",
+              utensils: Path | None = None):
     """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
 
-    The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level
-    and --network into what they search.
+    The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level,
+    --network, --utensils and --containment into what they search: utensils extend the
+    kitchen, and under `infer` the network gets the containment rule's inference units.
     """
+    from dataclasses import replace
+
     from ..generalize.network import network_view
     from ..io.inputs import load_kitchen, load_network
+    from ..io.kitchen_files import read_utensils
+    from ..model.containment import with_containment
+    from ..model.kitchen import with_utensils
 
     net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
     view = network_view(net, network, level, kit)
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
+    if utensils is not None:
+        view = replace(view, kitchen=with_utensils(view.kitchen, view.foon, read_utensils(utensils)))
+    if containment != "strict":
+        view = replace(view, foon=with_containment(view.foon, view.kitchen.nodes, containment))
     return net, view
 
 

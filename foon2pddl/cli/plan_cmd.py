@@ -17,6 +17,7 @@ from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
     check_output,
+    containment_option,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -29,6 +30,8 @@ from .options import (
     paths_argument,
     prune_option,
     rates_option,
+    single_goal,
+    utensils_option,
     view_goal,
 )
 
@@ -71,6 +74,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @goal_option
 @goal_file_option
 @kitchen_option
+@utensils_option
+@containment_option
 @encoding_option
 @level_option
 @network_option
@@ -91,7 +96,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="How to print the task tree.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, planner_cmd, optimal, time_limit,
+def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd, optimal, time_limit,
           prune, costs, rates, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
@@ -101,8 +106,8 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
-    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network)
-    foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
+    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
+    foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
     try:
@@ -140,7 +145,7 @@ def plan_(paths, goal, goal_file, kitchen, encoding, level, network, planner, pl
         if status == "unsolvable" and encoding != "state":
             click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
             if network == "reg":
-                other_networks_hint(net, kit, goal, goal_file, level)
+                other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         _write(data, output)

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import click
 
 from ..errors import FoonInputError
+from ..io.batch_report import TABLE_FORMATS
 from ..io.constraints_file import load_constraints, with_rates
+from ..model.containment import count_inference, inferred_nodes
 from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.explain import explain_unreachable
@@ -13,20 +17,24 @@ from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT
 from ..retrieval.result import UNREACHABLE
 from . import main
+from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
 from .options import (
     check_output,
     constraints_options,
+    containment_option,
     emit,
     goal_file_option,
     goal_option,
+    goals_option,
     kitchen_option,
     level_option,
     load_view,
     network_option,
     other_networks_hint,
-    output_option,
     paths_argument,
     rates_option,
+    single_goal,
+    utensils_option,
     view_goal,
 )
 
@@ -34,16 +42,20 @@ from .options import (
 @main.command("retrieve")
 @paths_argument
 @goal_option
+@goals_option
 @goal_file_option
 @kitchen_option
+@utensils_option
+@containment_option
 @level_option
 @network_option
 @click.option("--method", type=click.Choice(METHODS), default="complete", show_default=True,
               help="greedy: the seed paper's search; complete: a tree whenever one exists; "
                    "optimal: fewest units; weighted: highest success probability (needs --rates).")
 @rates_option
-@click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
-              help="How to print the task tree (svg needs Graphviz).")
+@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
+              help="How to print the task tree (svg needs Graphviz); for a batch, the table (text, csv, jsonl) "
+                   "or the format of the tree files in -o DIR.")
 @click.option("--budget", type=click.IntRange(min=1), default=DEFAULT_BUDGET, show_default=True,
               help="greedy: iterations (objects taken from its queue) before giving up.")
 @click.option("--node-limit", "node_limit", type=click.IntRange(min=1), default=DEFAULT_NODE_LIMIT,
@@ -52,22 +64,33 @@ from .options import (
 @click.option("--explain", is_flag=True,
               help="With constraints: for an unreachable goal the smallest set of constraints to relax, "
                    "for a solved one the units each constraint made the tree avoid (on stderr).")
-@output_option
-def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fmt, budget, node_limit,
-              constraints_files, without_motions, without, must_use, explain, output) -> None:
+@click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
+              help="Write the tree to this file (atomically) instead of standard output; for a batch, "
+                   "a directory receiving one tree file per solved goal.")
+def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, level, network, method, rates,
+              fmt, budget, node_limit, constraints_files, without_motions, without, must_use, explain,
+              output) -> None:
     """Find the functional units that make the goal from the kitchen, in executable order.
 
-    Exit status: 0 a tree was found, 1 the goal cannot be made (the reason goes to stderr),
-    2 bad input.
+    Several goals (--goal repeated, --goals FILE) run as a batch on one loaded network
+    and print one table (text, csv or jsonl: one JSON object per goal).
+
+    Exit status: 0 a tree was found (batch: every goal solved), 1 a goal cannot be made
+    (the reason goes to stderr, or into the table), 2 bad input.
     """
-    check_output(output)
+    check_output(output, directory=bool(goals_file) or len(goal) > 1 or fmt in TABLE_FORMATS)
     cons = load_constraints(constraints_files, without_motions, without, must_use)
     motion_rates = with_rates(read_rates(rates) if rates else None, cons)
     if method == "weighted" and motion_rates is None:
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate) "
                                              "or rates in a --constraints file")
-    net, view = load_view(paths, kitchen, level, network)
-    foon, kit, target = view.foon, view.kitchen, view_goal(view, goal, goal_file, level)
+    entries = batch_entries(goal, goals_file, goal_file, fmt)
+    if entries is not None and cons.items:
+        raise FoonInputError("<options>", 0, "constraints apply to one goal at a time (not with a batch of goals)")
+    net, view = load_view(paths, kitchen, level, network, containment, utensils)
+    if entries is not None:
+        return _batch(view, entries, method, motion_rates, fmt, budget, node_limit, output, containment)
+    foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
     limits = {"budget": budget, "node_limit": node_limit}
@@ -88,10 +111,31 @@ def retrieve_(paths, goal, goal_file, kitchen, level, network, method, rates, fm
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
         if plain and network == "reg":
-            other_networks_hint(net, kit, goal, goal_file, level)
+            other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
-    note = f"{method}: {len(result.tree)} units"
+    inferred = inferred_nodes(result.tree.units)
+    note = f"{method}: {len(result.tree) - count_inference(result.tree.units)} units"
+    if inferred:
+        note += f", {len(inferred)} inferred by containment: " + "; ".join(n.describe() for n in inferred)
     if result.probability is not None:
         note += f", success probability {result.probability:.4g}"
     click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)
+
+
+def _batch(view, entries, method, rates, fmt, budget, node_limit, output, containment) -> None:
+    """Every goal of `entries` on the loaded view: one table; trees into the -o directory."""
+    from ..model.goal import resolve_goal
+    from ..retrieval.batch import solve_goals
+
+    if view.note:
+        click.echo(view.note, err=True)
+    found = solve_goals(view.foon, view.kitchen.nodes, entries, lambda spec: resolve_goal(view.map_goal(spec), view.foon),
+                        method=method, rates=rates, budget=budget, node_limit=node_limit)
+    rows = [r.as_dict() for r in found]
+    table_fmt = fmt if fmt in TABLE_FORMATS else "text"
+    if output is not None:
+        tree_fmt = fmt if fmt in FORMATS else "steps"
+        texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
+        write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
+    finish(rows, table_fmt, f"{method}, containment {containment}")

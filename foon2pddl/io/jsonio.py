@@ -272,8 +272,40 @@ def read_json(path: str | Path) -> Foon:
     return parse_json(read_text(p), str(p))
 
 
+def node_from_dict(data: Any, path: str = "<json>", line: int = 0) -> ObjectNode:
+    """An object node from its `node_to_dict` form (FoonSyntaxError naming `path:line` when malformed)."""
+    try:
+        return _node(data, (), 3)
+    except _Invalid as exc:
+        raise FoonSyntaxError(path, line, f"{_pointer(exc.where) or 'node'}: {exc.message}") from None
+
+
+def item_lines(text: str, key: str | None = None) -> list[int]:
+    """Line of each item of the top-level JSON list (or of the list under `key` of the top-level
+    object); 1-based, [] when there is no such list."""
+    root, starts = _decode_tracked(text)
+    if key is not None and isinstance(root, dict):
+        root = root.get(key)
+    if not isinstance(root, list):
+        return []
+    return [text.count("\n", 0, starts.get(id(item), 0)) + 1 for item in root]
+
+
 def _line_of(text: str, where: tuple[str | int, ...]) -> int:
     """Line of the deepest JSON object or list on the path `where` (re-parses, only on error)."""
+    node, starts = _decode_tracked(text)
+    pos = starts.get(id(node), 0)
+    for step in where:
+        try:
+            node = node[step]
+        except (KeyError, IndexError, TypeError):
+            break
+        pos = starts.get(id(node), pos)
+    return text.count("\n", 0, pos) + 1
+
+
+def _decode_tracked(text: str) -> tuple[Any, dict[int, int]]:
+    """The decoded value and the start offset of every object and list in it (by id)."""
     starts: dict[int, int] = {}
     decoder = json.JSONDecoder()
     parse_object, parse_array = decoder.parse_object, decoder.parse_array
@@ -292,14 +324,6 @@ def _line_of(text: str, where: tuple[str | int, ...]) -> int:
     decoder.memo = {}
     decoder.scan_once = json.scanner.py_make_scanner(decoder)
     try:
-        node: Any = decoder.decode(text)
+        return decoder.decode(text), starts
     except (ValueError, RecursionError):
-        return 0
-    pos = starts.get(id(node), 0)
-    for step in where:
-        try:
-            node = node[step]
-        except (KeyError, IndexError, TypeError):
-            break
-        pos = starts.get(id(node), pos)
-    return text.count("\n", 0, pos) + 1
+        return None, {}

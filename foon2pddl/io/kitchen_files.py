@@ -65,7 +65,7 @@ def read_node_lines(text: str, path: str) -> list[ObjectNode]:
     return nodes
 
 
-def _looks_like_foon(text: str) -> bool:
+def looks_like_foon(text: str) -> bool:
     for line in text.splitlines():
         s = line.strip()
         if s and not s.startswith("#"):
@@ -80,7 +80,7 @@ def read_kitchen(path: str | Path) -> Kitchen:
         nodes = read_json_nodes(p)
     else:
         text = read_text(p)
-        if _looks_like_foon(text):
+        if looks_like_foon(text):
             nodes = [n for n, _ in parse_objects(text, str(p))]
         else:
             nodes = read_node_lines(text, str(p))
@@ -94,3 +94,25 @@ def write_kitchen(kitchen: Kitchen) -> str:
     from .writer import write_node
 
     return "".join(write_node(n) + "//\n" for n in kitchen.sorted_nodes())
+
+
+def parse_utensils(text: str, path: str = "<utensils>") -> frozenset[str]:
+    """Utensil labels, one a line (`utensils.txt`); blank lines and `#` comments skipped, labels normalized."""
+    from ..model.foon import normalize_label
+    from .parser import CONTROL_CHARS
+
+    labels = set()
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        if CONTROL_CHARS.search(line) or "\t" in line:
+            raise FoonSyntaxError(path, lineno, "expected one object label a line", raw)
+        labels.add(normalize_label(line))
+    return frozenset(labels)
+
+
+def read_utensils(path: str | Path) -> frozenset[str]:
+    """`parse_utensils` of a file."""
+    p = Path(path)
+    return parse_utensils(read_text(p), str(p))

@@ -14,6 +14,7 @@ import difflib
 from dataclasses import dataclass
 
 from ..errors import FoonInputError
+from .containment import is_auxiliary
 from .foon import Foon, ObjectNode, State, make_node
 from .levels import project_node
 
@@ -94,7 +95,7 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     Raises FoonInputError naming close labels when nothing matches.
     """
     level = foon.level if level is None else level
-    produced = [n for n in foon.producers]
+    produced = [n for n in foon.producers if not is_auxiliary(n)]
     same_label = [n for n in produced if n.label == spec.label]
     if not same_label:
         close = label_hints(spec.label, foon)

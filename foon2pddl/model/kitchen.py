@@ -104,3 +104,18 @@ def unmatched_items(nodes: Iterable[ObjectNode], foon: Foon, limit: int = 10) ->
         close = f"; close: {'; '.join(f'`{h}`' for h in hints)}" if hints else ""
         messages.append(f"kitchen item `{_goal_syntax(n)}` matches no node of the network{close}")
     return messages, len(stray)
+
+
+def is_base_node(node: ObjectNode, base_states: frozenset[str] = BASE_STATES) -> bool:
+    """A node in no state, or only in plain base states (`knife`, `bowl (empty)`, `pot (clean)`)."""
+    return all(s.label in base_states and not s.related and not s.ingredients for s in node.states)
+
+
+def with_utensils(kitchen: Kitchen, foon: Foon, utensils: Iterable[str]) -> Kitchen:
+    """The kitchen plus, for every utensil label it holds in any state, the network's base-state
+    nodes of that label: a utensil is not consumed and is cleaned after use (docs/format.md)."""
+    labels = frozenset(utensils) & {n.label for n in kitchen.nodes}
+    if not labels:
+        return kitchen
+    extra = {project_node(n, kitchen.level) for n in foon.nodes if n.label in labels and is_base_node(n)}
+    return Kitchen(kitchen.nodes | extra, kitchen.level, kitchen.source)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .containment import Containment, is_auxiliary, is_inference, rule_holds
 from .foon import FunctionalUnit, ObjectNode
 
 
@@ -41,26 +42,58 @@ class Validation:
 
     ok: bool
     problems: tuple[str, ...] = ()
+    inferred: tuple[ObjectNode, ...] = ()  # containers made available by the containment rule, in order
 
     def __bool__(self) -> bool:
         return self.ok
 
 
-def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode]) -> Validation:
-    """Run the units in order: every input must be available when its unit runs, and the goal at the end."""
+def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode],
+             containment: Containment | str = Containment.STRICT) -> Validation:
+    """Run the units in order: every input must be available when its unit runs, and the goal at the end.
+
+    Under `Containment.INFER` the containment rule (`containment.rule_holds`) applies: an
+    inference step must hold by the rule, and a missing container input is inferred when
+    the rule holds for it; `Validation.inferred` lists the containers inferred. Under strict,
+    an inference step is a problem.
+    """
+    infer = Containment(containment) is Containment.INFER
     available = set(kitchen_nodes)
     problems: list[str] = []
+    inferred: list[ObjectNode] = []
+
+    def note(nodes) -> None:
+        inferred.extend(n for n in nodes if not is_auxiliary(n) and n not in inferred)
+
     for step, unit in enumerate(tree.units, start=1):
+        if is_inference(unit):
+            bad = [n for n in unit.outputs if not (infer and rule_holds(n, available, tree.level))]
+            if bad:
+                why = "the containment rule does not hold" if infer else "containment inference needs infer"
+                problems.append(f"step {step} ({unit.motion.label}): {why} for: "
+                                + "; ".join(n.describe() for n in bad))
+            else:
+                note(n for n in unit.outputs if n not in available)
+            available.update(unit.outputs)
+            continue
         missing = [n for n in unit.inputs if n not in available]
+        if infer and missing:
+            made = [n for n in missing if rule_holds(n, available, tree.level)]
+            note(made)
+            available.update(made)
+            missing = [n for n in missing if n not in available]
         if missing:
             problems.append(
                 f"step {step} ({unit.motion.label}): input not available: "
                 + "; ".join(n.describe() for n in missing)
             )
         available.update(unit.outputs)
+    if infer and tree.goal not in available and rule_holds(tree.goal, available, tree.level):
+        note([tree.goal])
+        available.add(tree.goal)
     if tree.goal not in available:
         problems.append(f"goal not produced: {tree.goal.describe()}")
-    return Validation(not problems, tuple(problems))
+    return Validation(not problems, tuple(problems), tuple(inferred))
 
 
 def justify(units: tuple[FunctionalUnit, ...] | list[FunctionalUnit],

@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
+from ..model.containment import containment_of
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.levels import project_node
@@ -109,7 +110,8 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     up = None
     if up_validate and len(task.actions) <= UP_VALIDATE_MAX_ACTIONS:
         up = up_validation(task, steps)
-    return Decoded(tree, validate(tree, kitchen_nodes), simulate_plan(task, steps), up,
+    # a task compiled under --containment infer holds inference units: validate under the same rule
+    return Decoded(tree, validate(tree, kitchen_nodes, containment_of(task.units)), simulate_plan(task, steps), up,
                    task.encoding not in NON_FOON_ENCODINGS)
 
 

@@ -7,6 +7,7 @@ from collections.abc import Iterable
 from dataclasses import replace
 
 from ..analysis.index import index_of
+from ..analysis.reachability import Reachability
 from ..io.rates import Rates
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
@@ -31,13 +32,14 @@ def success_probability(units, rates: Rates) -> float:
 
 def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, method: str = "complete",
              rates: Rates | None = None, budget: int = DEFAULT_BUDGET,
-             node_limit: int = DEFAULT_NODE_LIMIT) -> Retrieval:
+             node_limit: int = DEFAULT_NODE_LIMIT, reach: Reachability | None = None) -> Retrieval:
     """A task tree for `goal` (any of its candidates) from `kitchen` in `foon`, by `method`.
 
     greedy: the seed paper's search (iteration `budget`); complete: a tree whenever one
     exists; optimal: fewest distinct units; weighted: highest product of motion success
     `rates` (defaults for every motion when None). optimal/weighted expand at most
     `node_limit` search nodes. With `rates`, every found tree's success probability is set.
+    `reach`: the fixpoint of `foon` from this kitchen, when already computed (batches share one).
     """
     if method not in METHODS:
         raise ValueError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
@@ -50,12 +52,12 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
     if method == "weighted" and rates is None:
         rates = Rates()
     if method == "greedy":
-        result = greedy(foon, nodes, goal, budget)
+        result = greedy(foon, nodes, goal, budget, reach)
     elif method == "complete":
-        result = complete(foon, nodes, goal)
+        result = complete(foon, nodes, goal, reach)
     else:
         result = optimal(foon, nodes, goal, rates=rates, weighted=method == "weighted",
-                         node_limit=node_limit, budget=budget)
+                         node_limit=node_limit, budget=budget, reach=reach)
     if result.tree is not None and rates is not None:
         result = replace(result, probability=success_probability(result.tree.units, rates))
     return result

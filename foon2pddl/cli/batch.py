@@ -1,0 +1,63 @@
+"""Batch mode shared by retrieve, compile and plan: which goals, the result table, the files per goal."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+import click
+
+from ..errors import FoonInputError
+from ..io.atomic import atomic_write_many
+from ..io.batch_report import TABLE_FORMATS, file_names, format_table, summary
+from ..io.goal_files import parse_goal_spec
+from ..io.goal_lists import GoalEntry, read_goal_list
+
+#: File name extension per task tree format.
+TREE_EXTENSIONS = {"steps": "txt", "foon": "foon", "json": "json", "dot": "dot", "svg": "svg"}
+
+
+def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Path | None,
+                  fmt: str | None = None) -> list[GoalEntry] | None:
+    """The goals of a batch run, or None for a single-goal run (one `--goal` or `--goal-file`, no
+    `--goals`, not a table format): single-goal runs behave exactly as before batches existed."""
+    if goals_file is None and len(goal) <= 1 and fmt not in TABLE_FORMATS:
+        return None
+    if goal_file is not None:
+        raise FoonInputError("<options>", 0, "--goal-file names one goal; use --goals FILE for a batch")
+    entries = []
+    for text in goal:
+        try:
+            entries.append(GoalEntry(parse_goal_spec(text)))
+        except ValueError as exc:
+            raise FoonInputError("<goal>", 0, f"{exc}: {text!r}") from None
+    if goals_file is not None:
+        entries.extend(read_goal_list(goals_file))
+    if not entries:
+        raise FoonInputError("<goal>", 0, "no goal given (--goal G, repeated, or --goals FILE)")
+    return entries
+
+
+def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None], ext: str) -> None:
+    """Write each row's content (None: no file) to DIR/<slug of its goal>.<ext>; set each row's `file`."""
+    names = file_names((r["goal"] for r in rows), ext)
+    files = {}
+    for row, name, text in zip(rows, names, contents, strict=True):
+        row["file"] = None
+        if text is not None:
+            row["file"] = str(directory / name)
+            files[directory / name] = text
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        atomic_write_many(files)
+    except OSError as exc:
+        raise FoonInputError(str(directory), 0, f"cannot write: {exc.strerror or exc}") from None
+
+
+def finish(rows: list[dict], table_fmt: str, note: str, solved: Callable[[dict], bool] | None = None) -> None:
+    """Print the table (stdout) and the summary (stderr); exit 1 unless every goal was solved."""
+    click.echo(format_table(rows, table_fmt), nl=False)
+    click.echo(f"{summary(rows)} ({note})", err=True)
+    ok = solved or (lambda r: r["status"] == "solved")
+    if not all(ok(r) for r in rows):
+        click.get_current_context().exit(1)
