@@ -40,7 +40,7 @@ def test_foon_text_with_several_nodes():
 def test_plain_lines_goal_syntax_described_nodes_and_goals_table_rows():
     text = "reachable: 2 of 9 goal candidates can be made from x (round = ...)\nmade round  dish goal\n" \
            "# goals\nonion: chopped\nbowl (contains {a, b}, in [sink])\nyes      3  *    tea (hot)\n" \
-           "no          9 lives: x\n"
+           "no               9 lives: x\n"
     specs = [e.spec.describe() for e in parse_goal_list(text, "g.txt")]
     assert specs == ["onion: chopped", "bowl: contains {a, b}, in [sink]", "tea: hot", "9 lives: x"]
 
