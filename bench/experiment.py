@@ -6,13 +6,19 @@ Figures (one run each: a run is tens of seconds to minutes; `--quick` runs 2 tri
 - FD on the `tree` encoding (translation reused per trial and network), 2 worker processes, on
   the first trial of the default protocol, and the per-trial figure times 10 as the estimate of
   the default protocol (floor: <= 15 min);
-- resuming a finished run (every cell skipped).
+- resuming a finished run (every cell skipped);
+- Dask scaling: the same grid (native solvers and fd-tree on REG and GEN) with a LocalCluster of 1 and
+  of 2 workers, started and warmed up outside the timings (speed-up = 1 worker / 2 workers), and
+  Dask's per-cell overhead: the 1-worker wall time minus the same cells in this process, per cell
+  (medians over `repeat` runs).
 """
 
 from __future__ import annotations
 
+import statistics
 import tempfile
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from foon2pddl.experiment import runner
@@ -34,6 +40,7 @@ def _run(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], o
 
 
 def run(ctx: Context) -> None:
+    run_scaling(ctx)
     paths = (str(ctx.shared / "foon-subgraphs"),)
     protocol = Protocol(trials=2, goals=20) if ctx.quick else Protocol()
     cells = protocol.trials * protocol.goals * len(NETWORKS)
@@ -61,3 +68,42 @@ def run(ctx: Context) -> None:
         ctx.report(AREA, "one trial, fd-tree, 2 jobs", seconds, "s", f"{summary.ran} cells")
         ctx.report(AREA, "protocol, fd-tree, 2 jobs (estimate: trials x one trial)", seconds * protocol.trials, "s",
                    "floor <= 900 s")
+
+
+def _timed_runs(config: runner.Config, repeat: int) -> float:
+    """Median wall time of `repeat` fresh runs of `config` (each into its own directory)."""
+    times = []
+    for i in range(repeat):
+        c = replace(config, out_dir=config.out_dir / f"r{i}")
+        t0 = time.perf_counter()
+        runner.run(c, progress=False)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def run_scaling(ctx: Context) -> None:
+    """Speed-up from 1 to 2 local Dask workers, and Dask's overhead per cell against one process."""
+    import distributed
+
+    paths = (str(ctx.shared / "foon-subgraphs"),)
+    protocol = Protocol(trials=2, goals=10 if ctx.quick else 40)
+    solvers = (*NATIVE, "fd-tree")
+    repeat = max(1, min(ctx.repeat, 3))
+    with tempfile.TemporaryDirectory(prefix="foon2pddl-bench-dask-") as tmp:
+        base = runner.Config(paths, protocol, ("reg", "gen"), solvers, Path(tmp) / "here")
+        runner.views(base)
+        cells = len(runner.cell_keys(base))
+        here = _timed_runs(base, repeat)
+        ctx.report(AREA, "grid in one process", here, "s", f"{cells} cells")
+        walls = {}
+        for workers in (1, 2):
+            with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                          dashboard_address=":0") as cluster:
+                config = replace(base, out_dir=Path(tmp) / f"dask{workers}", scheduler=cluster.scheduler_address)
+                runner.run(replace(config, out_dir=Path(tmp) / f"warm{workers}"), progress=False)  # build views
+                walls[workers] = _timed_runs(config, repeat)
+            ctx.report(AREA, f"grid on a LocalCluster of {workers} worker(s), warm", walls[workers], "s",
+                       f"{cells} cells")
+        ctx.report(AREA, "Dask speed-up, 2 workers against 1", walls[1] / walls[2], "x", "2 cores")
+        ctx.report(AREA, "Dask overhead per cell (1 worker against one process)",
+                   (walls[1] - here) / cells * 1000, "ms", f"{cells} cells")

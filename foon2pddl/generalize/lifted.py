@@ -43,10 +43,10 @@ differently from the action that needs the node.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from dataclasses import dataclass
 
-from ..analysis.reachability import UNREACHED, reachable
+from ..analysis.reachability import reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units, make_node, make_state
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -55,7 +55,8 @@ from ..pddl.encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comm
 from ..pddl.names import NameTable
 from ..pddl.task import Action, Atom, PlanningTask, Predicate
 from .categories import CategoryIndex
-from .substitute import substitute_node, substitute_unit, unit_labels
+from .relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
+from .substitute import substitute_unit, unit_labels
 
 #: The root of the category types: objects in no category have it, predicates take it (some PDDL
 #: parsers reject `object` written out as a parameter type).
@@ -79,11 +80,6 @@ class LiftedUnit:
     def constants(self) -> frozenset[str]:
         """Labels the unit names that are not parameters."""
         return unit_labels(self.unit) - {label for label, _ in self.params}
-
-
-def input_labels(unit: FunctionalUnit) -> frozenset[str]:
-    """Labels mentioned by the unit's input nodes (labels, related objects, ingredients)."""
-    return unit_labels(FunctionalUnit(unit.inputs, unit.motion, ()))
 
 
 def lift_unit(unit: FunctionalUnit, index: CategoryIndex,
@@ -116,31 +112,6 @@ def lift(foon: Foon, index: CategoryIndex,
                                     first.unit.sources + u.sources)
             kept[key] = LiftedUnit(merged, first.params)
     return tuple(kept.values())
-
-
-class Ordering:
-    """The argument order of node atoms: (top-level category, label) of each object."""
-
-    def __init__(self, index: CategoryIndex) -> None:
-        self.index = index
-        self._root: dict[str, str] = {}
-
-    def root(self, label: str) -> str:
-        found = self._root.get(label)
-        if found is None:
-            cat = self.index.choose(label)
-            found = "" if cat is None else ((self.index.ancestors(cat) or (cat,))[-1])
-            self._root[label] = found
-        return found
-
-    def key(self, label: str) -> tuple[str, str]:
-        return (self.root(label), label)
-
-
-def mentioned(node: ObjectNode) -> list[str]:
-    """Distinct labels a node's states mention, other than its own."""
-    out = dict.fromkeys(x for s in node.states for x in (s.related, *s.ingredients) if x and x != node.label)
-    return list(out)
 
 
 def shape_with(node: ObjectNode, order: list[str]) -> Shape:
@@ -184,52 +155,6 @@ def shape_label(shape: Shape) -> str:
         text = s + (f" [{r}]" if r >= 0 else "") + (" {" + " ".join(map(str, ings)) + "}" if ings else "")
         parts.append(text)
     return "node " + (", ".join(parts) if parts else "plain") + f" /{shape[0]}"
-
-
-def relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Iterable[ObjectNode],
-             generalize: Callable[[str], bool], index: CategoryIndex, ordering: Ordering) -> list[int]:
-    """Indexes of the units that can matter for making a candidate from the kitchen.
-
-    Judged on an image of the network: every object of a top-level category that some
-    parameter belongs to is replaced by that category. A grounded action binds a
-    parameter to an object of a subtype of its type, hence of the same top-level
-    category, so its nodes have the image of its unit's nodes, and the image network
-    over-approximates the lifted task: a unit whose image does not fire from the
-    kitchen's image, or outputs no image needed for a candidate's image, is never
-    part of a plan. (An image unit may output one of its own inputs and still make a
-    new concrete node, so every unit outputting a needed image counts.)
-    """
-    roots = {ordering.root(x) for u in foon.units for x in input_labels(u)
-             if index.choose(x) is not None and generalize(x)}
-
-    def image(label: str) -> str:
-        root = ordering.root(label)
-        return root if root in roots else label
-
-    labels = {x for u in foon.units for x in unit_labels(u)} | {x for n in (*kitchen, *candidates)
-                                                                for x in (n.label, *mentioned(n))}
-    mapping = {x: image(x) for x in labels}
-    images = [substitute_unit(u, mapping) for u in foon.units]
-    coarse = Foon(tuple(images), foon.level)
-    reach = reachable(coarse, frozenset(substitute_node(n, mapping) for n in kitchen))
-    ix = reach.index
-    producers: dict[int, list[int]] = {}  # every unit with the node among its outputs: an image unit that
-    for u in range(len(images)):         # outputs one of its inputs may still make a new concrete node
-        for n in ix.outputs[u]:
-            producers.setdefault(n, []).append(u)
-    needed = set(ix.ids(substitute_node(c, mapping) for c in candidates))
-    stack = list(needed)
-    keep: set[int] = set()
-    while stack:
-        n = stack.pop()
-        for u in producers.get(n, ()):
-            if reach.unit_round[u] != UNREACHED and u not in keep:
-                keep.add(u)
-                for i in ix.inputs[u]:
-                    if i not in needed:
-                        needed.add(i)
-                        stack.append(i)
-    return sorted(keep)
 
 
 @dataclass(frozen=True)
@@ -293,8 +218,10 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     ordering = Ordering(index)
     generalize = generalizer(policy, f, kitchen_nodes)
     if prune:
-        f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, ordering)),
-                 level)
+        coarse = shared_coarse(foon, level, kitchen_nodes, policy, index,
+                                lambda: coarse_network(f, kitchen_nodes, generalize, index, ordering))
+        f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, ordering,
+                                                     coarse)), level)
     lifted = lift(Foon(dedupe_units(f.units), level), index, generalize)
 
     table = NameTable()

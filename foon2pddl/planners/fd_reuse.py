@@ -58,6 +58,38 @@ def _anchored(task: PlanningTask) -> PlanningTask:
     )
 
 
+Fact = tuple[int, int]
+
+
+@dataclass(frozen=True)
+class _Op:
+    """What backward relevance needs of an operator: the facts it needs and the facts it makes."""
+
+    needs: tuple[Fact, ...]  # prevail conditions and effect preconditions (value != -1)
+    makes: tuple[Fact, ...]  # effect values
+    conditional: bool  # some effect has a condition
+
+
+def _parse_op(block: str) -> _Op:
+    lines = block.split("\n")
+    i = 2
+    n_prevail = int(lines[i])
+    needs = [tuple(map(int, lines[i + 1 + k].split())) for k in range(n_prevail)]
+    i += 1 + n_prevail
+    n_effects = int(lines[i])
+    makes, conditional = [], False
+    for k in range(n_effects):
+        parts = list(map(int, lines[i + 1 + k].split()))
+        n_cond = parts[0]
+        conditional = conditional or n_cond > 0
+        needs.extend((parts[1 + 2 * c], parts[2 + 2 * c]) for c in range(n_cond))
+        var, pre, post = parts[1 + 2 * n_cond:4 + 2 * n_cond]
+        if pre != -1:
+            needs.append((var, pre))
+        makes.append((var, post))
+    return _Op(tuple(needs), tuple(makes), conditional)
+
+
 @dataclass(frozen=True)
 class _Sas:
     """A translated SAS task cut into the parts a goal swap keeps."""
@@ -67,6 +99,32 @@ class _Sas:
     tail: str  # axioms section
     facts: dict[str, tuple[int, int]]  # "Atom p(a)" -> (variable, value)
     anchor: tuple[int, int]
+    parsed: tuple[_Op, ...] = ()  # `operators`, parsed for relevance
+    makers: dict[Fact, tuple[int, ...]] | None = None  # fact -> indexes of the operators that make it
+    prunable: bool = False  # no conditional effects, no axioms: backward relevance is exact
+
+    def relevant(self, goal_facts: Iterable[Fact]) -> list[int]:
+        """Indexes of the operators that can contribute to making `goal_facts` (backward relevance, O(task)).
+
+        An operator none of whose effects is a relevant fact never helps: dropping it from a plan
+        leaves every later precondition and the goal satisfied (no conditional effects, no axioms),
+        so optimal plan costs are unchanged and the search sees only the goal's part of the network.
+        """
+        if not self.prunable or self.makers is None:
+            return list(range(len(self.operators)))
+        needed = set(goal_facts)
+        stack = list(needed)
+        keep: set[int] = set()
+        while stack:
+            fact = stack.pop()
+            for op in self.makers.get(fact, ()):
+                if op not in keep:
+                    keep.add(op)
+                    for f in self.parsed[op].needs:
+                        if f not in needed:
+                            needed.add(f)
+                            stack.append(f)
+        return sorted(keep)
 
 
 def _parse_sas(text: str) -> _Sas:
@@ -97,7 +155,13 @@ def _parse_sas(text: str) -> _Sas:
         i = j + 1
     tail = "\n".join(lines[i:])
     anchor = facts[sas_fact_name(Atom(ANCHOR))]
-    return _Sas(head, tuple(ops), tail, facts, anchor)
+    parsed = tuple(_parse_op(op) for op in ops)
+    makers: dict[Fact, list[int]] = {}
+    for k, op in enumerate(parsed):
+        for fact in op.makes:
+            makers.setdefault(fact, []).append(k)
+    prunable = not any(op.conditional for op in parsed) and tail.strip().split("\n")[0].strip() == "0"
+    return _Sas(head, tuple(ops), tail, facts, anchor, parsed, {f: tuple(v) for f, v in makers.items()}, prunable)
 
 
 @dataclass(frozen=True)
@@ -108,9 +172,11 @@ class TranslatedTask:
     sas: _Sas
     translate_seconds: float
     optimal: bool = False
+    search: tuple[str, ...] | None = None  # search options (default: the alias for `optimal`)
 
     @classmethod
-    def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None) -> TranslatedTask:
+    def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
+              search: tuple[str, ...] | None = None) -> TranslatedTask:
         """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails."""
         from ..pddl.render import render
 
@@ -125,7 +191,7 @@ class TranslatedTask:
             if failed is not None:
                 raise RuntimeError(f"translation for reuse failed ({failed.status}): {failed.message}")
             sas = _parse_sas((work / "output.sas").read_text())
-        return cls(task, sas, run.seconds, optimal)
+        return cls(task, sas, run.seconds, optimal, search)
 
     def goal_sas(self, alternatives: Sequence[Sequence[Atom]]) -> str | PlanResult:
         """SAS text for a goal, or the result when no search is needed (goal true at start or unreachable)."""
@@ -145,7 +211,7 @@ class TranslatedTask:
                 reachable.append(sorted(set(facts)))
         if not reachable:
             return PlanResult("unsolvable", (), self.name, "no goal atom is reachable from the initial state")
-        ops = list(self.sas.operators)
+        ops = [self.sas.operators[k] for k in self.sas.relevant(f for alt in reachable for f in alt)]
         if len(reachable) == 1:
             goal = reachable[0]
         else:
@@ -159,6 +225,8 @@ class TranslatedTask:
 
     @property
     def name(self) -> str:
+        if self.search is not None:
+            return f"fd-reuse ({' '.join(self.search)})"
         return "fd-reuse " + fd.planner_name(self.optimal)[3:]
 
     def solve(self, alternatives: Sequence[Sequence[Atom]], time_limit: float | None = None) -> PlanResult:
@@ -169,7 +237,8 @@ class TranslatedTask:
             return sas.with_timings(translate=0.0, search=time.perf_counter() - t0)
         translate_s = time.perf_counter() - t0
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
-            result = fd.search(Path(tmp), fd.search_options(self.optimal), time_limit, self.name, sas_text=sas)
+            options = self.search if self.search is not None else fd.search_options(self.optimal)
+            result = fd.search(Path(tmp), options, time_limit, self.name, sas_text=sas)
         plan = tuple(s for s in result.plan if not step_action(s).startswith(GOAL_OP))
         return replace(result, plan=plan).with_timings(translate=translate_s)
 

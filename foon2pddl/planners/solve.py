@@ -111,7 +111,7 @@ class GoalReplanner:
 
     def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = "tree", level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
-                 time_limit: float | None = None) -> None:
+                 time_limit: float | None = None, search: tuple[str, ...] | None = None) -> None:
         from .fd_reuse import TranslatedTask
 
         t0 = time.perf_counter()
@@ -126,7 +126,7 @@ class GoalReplanner:
         self.encode_seconds = time.perf_counter() - t0
         self.level = level
         self.kitchen_nodes = kitchen.project(level).nodes
-        self.translated = TranslatedTask.build(base, optimal=optimal, time_limit=time_limit)
+        self.translated = TranslatedTask.build(base, optimal=optimal, time_limit=time_limit, search=search)
 
     @property
     def task(self) -> PlanningTask:
