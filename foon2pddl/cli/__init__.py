@@ -45,6 +45,7 @@ def main() -> None:
 
 # Each command module registers its commands on `main` when imported.
 from . import (
+    check_cmd,
     compile_cmd,
     expand_cmd,
     experiment_cmd,

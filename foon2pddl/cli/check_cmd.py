@@ -1,0 +1,73 @@
+"""`foon2pddl check`: defects of a FOON dataset, with the file and line of the units involved."""
+
+from __future__ import annotations
+
+import json
+
+import click
+
+from ..analysis.check import check, counts, has_errors
+from ..io.files import load
+from ..io.raw_objects import scan_paths
+from . import main
+from .options import emit, output_option, paths_argument
+
+
+def wordnet_lemma():
+    """`lemma(word)` from WordNet (noun morphology), or None when WordNet cannot be opened."""
+    try:
+        from ..generalize.wordnet import reader
+
+        wn = reader()
+    except Exception as exc:  # noqa: BLE001 - any failure to open the corpus means: use the fallback
+        click.echo(f"warning: WordNet unavailable ({exc}); spelling variants use string rules only", err=True)
+        return None
+
+    def lemma(word: str) -> str | None:
+        return wn.morphy(word.replace(" ", "_"), "n")
+
+    return lemma
+
+
+def format_defects(defects, total: dict[str, int]) -> str:
+    """`path:line: severity: kind: message (also at ...)` per defect, then the counts per kind."""
+    lines = []
+    for d in defects:
+        where = str(d.places[0]) if d.places else "<network>:0"
+        more = [str(p) for p in d.places[1:]]
+        extra = d.total_places - len(d.places)
+        also = f" (also at {', '.join(more)}{f' and {extra} more' if extra > 0 else ''})" if more else ""
+        lines.append(f"{where}: {d.severity}: {d.kind}: {d.message}{also}")
+    lines.append("defects: " + ", ".join(f"{k} {n}" for k, n in total.items()))
+    return "\n".join(lines) + "\n"
+
+
+@main.command("check")
+@paths_argument
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@click.option("--wordnet/--no-wordnet", default=True, show_default=True,
+              help="Use WordNet to tell spelling variants from different words (else string rules only).")
+@output_option
+def check_(paths, as_json, wordnet, output) -> None:
+    """Find defects in FOON files: self-supporting producers, cycles with no entry, units that change
+    nothing, contents lists that disagree with `in [c]` nodes, unknown objects, spelling variants,
+    state order and duplicated states (docs/check.md).
+
+    Exit status: 0 no error-class defect (warnings allowed), 1 some error-class defect, 2 bad input.
+    """
+    net_paths = paths or ()
+    if not net_paths:
+        from ..io.inputs import example_path
+
+        net_paths = (example_path(),)
+    foon, _ = load(net_paths)
+    defects = check(foon, scan_paths(net_paths), wordnet_lemma() if wordnet else None)
+    total = counts(defects)
+    if as_json:
+        data = {"counts": total, "errors": sum(d.severity == "error" for d in defects),
+                "warnings": sum(d.severity == "warning" for d in defects), "defects": [d.as_dict() for d in defects]}
+        emit(json.dumps(data, indent=2, ensure_ascii=False) + "\n", output)
+    else:
+        emit(format_defects(defects, total), output)
+    if has_errors(defects):
+        click.get_current_context().exit(1)
