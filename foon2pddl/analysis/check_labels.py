@@ -92,7 +92,7 @@ def spelling_variants(mentions: dict[str, list[Source]], lemma: Lemma | None = N
     groups: dict[str, list[str]] = defaultdict(list)
     for label in sorted(mentions):
         groups[find(label)].append(label)
-    return [defect(DefectKind.SPELLING_VARIANT, f"labels differ only in spelling, spacing or plural: "
+    return [defect(DefectKind.SPELLING_VARIANT, "labels differ only in spelling, spacing or plural: "
                    + " / ".join(g), (s for label in g for s in mentions[label]), g)
             for g in sorted(groups.values()) if len(g) > 1]
 
@@ -117,7 +117,7 @@ def written_form(objects: Iterable[RawObject]) -> list[Defect]:
         out.append(defect(DefectKind.DUPLICATE_STATE, f"{label}: state {state!r} written twice on one object" if "listed twice" not in state
                           else f"{label}: {state}",
                           (Source(p.path, p.line) for p in places), [label]))
-    for (label, states), variants in sorted(orders.items()):
+    for (label, _states), variants in sorted(orders.items()):
         if len(variants) > 1:
             forms = sorted(variants)
             out.append(defect(DefectKind.STATE_ORDER, f"{label} written with the same states in {len(forms)} "
