@@ -112,7 +112,7 @@ def check_file(path: Path, level: int = 3, prune: bool = True, time_limit: float
             steps = [task.action_for(step.split()[0]) for step in res.plan]
             native_units = [a.unit for a in steps if a is not None and a.unit is not None]
         detail = why
-        if not res.solved and native and enc != "tree":
+        if not res.solved and native and enc not in ("tree", "instances"):  # instances: bench.pddl_instances
             detail = replay_failure(compile_task(foon, kitchen, goal, enc, level, False), native_units)
         out.append(Outcome(path.name, enc, res.status, _reason(res.status, res.message, native), detail, native,
                            seconds))

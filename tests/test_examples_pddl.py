@@ -65,3 +65,21 @@ def test_tree_problems_solve_with_pyperplan(stem):
         assert op.preconditions <= facts
         facts |= op.add_effects
     assert all(str(g) in facts for g in getattr(problem.goal, "operands", [problem.goal]))
+
+
+@pytest.mark.parametrize("goal", GOALS)
+def test_instances_problems_solve_with_pyperplan_and_replay_at_the_instance_level(goal):
+    from pyperplan.planner import HEURISTICS, SEARCHES, search_plan
+
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.planners.instance_plan import instance_steps, simulate_instances
+
+    stem = sanitize(goal)
+    domain_path, problem_path = _pair("instances", stem)
+    plan = search_plan(str(domain_path), str(problem_path), SEARCHES["gbf"], HEURISTICS["hff"])
+    assert plan, f"pyperplan found no plan for {stem}"
+    net = load_network([])
+    target = load_goal(goal, None, net.at(3))
+    task = ENCODINGS["instances"](net.at(3), load_kitchen(None, net, 3), target)
+    steps = instance_steps(task, [op.name.strip("()") for op in plan])
+    assert simulate_instances(task, steps, target.candidates).ok

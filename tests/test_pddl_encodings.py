@@ -298,7 +298,7 @@ def test_rendered_pddl_parses_and_round_trips_the_actions(case, encoding, costs)
     assert {a.name for a in domain.actions} == {a.name for a in task.actions}
     costed = costs is not None and bool(task.actions)  # no action, no cost to count
     assert len(problem.init) == len(task.init) + costed
-    assert set(task.requirements) == {":strips"} | ({":typing"} if encoding == "foon-compat" else set()) | (
+    assert set(task.requirements) == {":strips"} | ({":typing"} if encoding in ("foon-compat", "instances") else set()) | (
         {":action-costs"} if costed else set())
 
 

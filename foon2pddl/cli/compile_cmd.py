@@ -14,16 +14,20 @@ from ..pddl.render import render
 from ..pddl.task import PlanningTask
 from . import main
 from .options import (
+    category_chains,
+    category_types_option,
     check_output,
     containment_option,
     costs_option,
     encoding_option,
     goal_file_option,
     goal_option,
+    instances_option,
     kitchen_option,
     level_option,
     load_view,
     network_option,
+    parse_instances,
     paths_argument,
     prune_option,
     rates_option,
@@ -35,7 +39,8 @@ from .options import (
 
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
                prune: bool, costs: str | None, rates: Path | None, network: str = "reg",
-               containment: str = "strict", utensils: Path | None = None) -> PlanningTask:
+               containment: str = "strict", utensils: Path | None = None, instances: tuple[str, ...] = (),
+               category_types: bool = False) -> PlanningTask:
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
@@ -47,8 +52,12 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 
         check_lifted_options(encoding, costs)
         return encode_lifted(net.foon, view.kitchen, target, load_index(), level, prune=prune).task
+    extra = {}
+    if encoding == "instances":
+        extra = {"instances": parse_instances(instances),
+                 "categories": category_chains(view.foon) if category_types else ()}
     return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs,
-                        read_rates(rates) if rates else None)
+                        read_rates(rates) if rates else None, **extra)
 
 
 @main.command("compile")
@@ -59,6 +68,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @utensils_option
 @containment_option
 @encoding_option
+@instances_option
+@category_types_option
 @level_option
 @network_option
 @prune_option
@@ -66,12 +77,12 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @rates_option
 @click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
               default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
-def compile_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, prune, costs, rates,
-             output_dir) -> None:
+def compile_(paths, goal, goal_file, kitchen, utensils, containment, encoding, instances, category_types, level,
+             network, prune, costs, rates, output_dir) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
     check_output(output_dir, directory=True)
     task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
-                      utensils)
+                      utensils, instances, category_types)
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
     try:

@@ -30,8 +30,16 @@ goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path
                                 help="Goal as one object node in FOON O/S lines.")
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
                              help="Write to this file (atomically) instead of standard output.")
-encoding_option = click.option("--encoding", type=click.Choice(["tree", "state", "foon-compat"]), default="tree",
-                               show_default=True, help="PDDL encoding (see docs/pddl.md).")
+encoding_option = click.option("--encoding", type=click.Choice(["tree", "instances", "state", "foon-compat"]),
+                               default="tree", show_default=True,
+                               help="PDDL encoding: tree (FOON's semantics), instances (physical objects whose "
+                                    "states change), state, foon-compat (see docs/pddl.md).")
+instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
+                                help="instances encoding: N objects of LABEL in each place one can start "
+                                     "(overrides the derived count; repeatable).")
+category_types_option = click.option("--category-types", "category_types", is_flag=True,
+                                     help="instances encoding: declare each label's type under its categories "
+                                          "from the shipped category index (FOON-GEN's).")
 prune_option = click.option("--prune/--no-prune", "prune", default=True, show_default=True,
                             help="Compile only the units that can contribute to the goal.")
 costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"]), default=None,
@@ -162,3 +170,26 @@ def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, 
     hint = networks_hint(net, kitchen, goal_spec(goal, goal_file), level)
     if hint:
         click.echo(hint, err=True)
+
+
+def parse_instances(items) -> tuple[tuple[str, int], ...]:
+    """`--instances LABEL=N` values as (normalized label, N), sorted; FoonInputError when malformed."""
+    from ..errors import FoonInputError
+    from ..model.foon import normalize_label
+
+    out: dict[str, int] = {}
+    for item in items:
+        label, sep, count = item.rpartition("=")
+        if not sep or not normalize_label(label) or not count.strip().isdigit():
+            raise FoonInputError("<options>", 0, f"--instances expects LABEL=N with N >= 0, not {item!r}")
+        out[normalize_label(label)] = int(count)
+    return tuple(sorted(out.items()))
+
+
+def category_chains(foon) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """Label -> its category chain (most specific first) from the shipped category index, for PDDL supertypes."""
+    from ..generalize.categories import load_index
+
+    index = load_index()
+    labels = sorted({n.label for n in foon.nodes})
+    return tuple((label, (cat, *index.ancestors(cat))) for label in labels if (cat := index.choose(label)))

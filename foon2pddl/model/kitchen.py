@@ -32,6 +32,7 @@ class Kitchen:
     nodes: frozenset[ObjectNode]
     level: int = 3
     source: str = ""
+    counts: tuple[tuple[ObjectNode, int], ...] = ()  # stated instance counts (`2 x bowl (empty)`), sorted
 
     def __contains__(self, node: object) -> bool:
         return node in self.nodes
@@ -43,7 +44,16 @@ class Kitchen:
         """The kitchen as seen at `level`."""
         if level >= self.level:
             return self
-        return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source)
+        counts: dict[ObjectNode, int] = {}
+        for n, k in self.counts:  # nodes that become one at `level` add up their counts
+            p = project_node(n, level)
+            counts[p] = counts.get(p, 0) + k
+        return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source,
+                       tuple(sorted(counts.items())))
+
+    def stated_counts(self) -> dict[ObjectNode, int]:
+        """Node -> instance count for the nodes whose count the kitchen states."""
+        return dict(self.counts)
 
     def sorted_nodes(self) -> list[ObjectNode]:
         """Nodes in a stable order (for writing and display)."""

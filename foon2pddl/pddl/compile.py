@@ -7,13 +7,14 @@ from ..model.foon import Foon
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from .encode_compat import encode_compat
+from .encode_instances import encode_instances
 from .encode_state import encode_state
 from .encode_tree import encode_tree
 from .encoding import EncodeOptions
 from .task import PlanningTask
 
 #: Encoding name -> encoder; the first is the default.
-ENCODINGS = {"tree": encode_tree, "state": encode_state, "foon-compat": encode_compat}
+ENCODINGS = {"tree": encode_tree, "instances": encode_instances, "state": encode_state, "foon-compat": encode_compat}
 
 
 def compile_task(
@@ -25,10 +26,17 @@ def compile_task(
     prune: bool = True,
     costs: str | None = None,
     rates: Rates | None = None,
+    *,
+    instances: tuple[tuple[str, int], ...] = (),
+    categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
 ) -> PlanningTask:
-    """Encode `goal` from `kitchen` over `foon` at `level` (ValueError on an unknown encoding or cost mode)."""
+    """Encode `goal` from `kitchen` over `foon` at `level` (ValueError on an unknown encoding or cost mode).
+
+    `instances` and `categories` are read by the `instances` encoding only (see `EncodeOptions`).
+    """
     try:
         encoder = ENCODINGS[encoding]
     except KeyError:
         raise ValueError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
-    return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates))
+    return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances,
+                                                                 categories=categories))

@@ -33,11 +33,18 @@ DESCRIBE_MAX = 240
 
 @dataclass(frozen=True)
 class EncodeOptions:
-    """How to encode: relevance pruning, cost mode (None, `unit`, `success-rate`) and motion rates."""
+    """How to encode: relevance pruning, cost mode (None, `unit`, `success-rate`) and motion rates.
+
+    The `instances` encoding also reads `instances` (label -> instances per starting place,
+    overriding derived counts) and `categories` (label -> its category chain, most specific
+    first, for PDDL supertypes; given as data because `pddl/` does not import `generalize/`).
+    """
 
     prune: bool = True
     costs: str | None = None
     rates: Rates | None = None
+    instances: tuple[tuple[str, int], ...] = ()
+    categories: tuple[tuple[str, tuple[str, ...]], ...] = ()
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

@@ -47,6 +47,51 @@ def relevant_units(foon: Foon, kitchen: Iterable[ObjectNode], targets: Iterable[
     return tuple(sorted(keep))
 
 
+def restoring_units(foon: Foon, kitchen: Iterable[ObjectNode], targets: Iterable[ObjectNode]) -> tuple[int, ...]:
+    """Units that can help make `targets` when a kitchen state can be used up, sorted.
+
+    With object instances, a unit that moves an object out of a kitchen state (a clean
+    knife gets dirty, a mixer turned on is no longer off) uses that state up, and a unit
+    that restores it (washing, turning off) can help although FOON's semantics never
+    needs one. Backward from the targets over the makers that fire in the kitchen's
+    fixpoint, like `relevant_units`, but a kitchen node is expanded too once some kept
+    unit moves an object out of it (`pairing.unit_roles`). Sound: every unit of a plan
+    fires in the fixpoint and makes something a kept unit needs or uses up.
+    """
+    from .pairing import unit_roles
+
+    kitchen = frozenset(kitchen)
+    reach = reachable(foon, kitchen)
+    ix = reach.index
+    keep: set[int] = set()
+    used_up: set[int] = set()
+    parked: set[int] = set()  # kitchen nodes met but not (yet) used up
+    seen: set[int] = set()
+    stack = list(ix.ids(targets))
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        if reach.node_round[n] == 0 and n not in used_up:
+            parked.add(n)
+            continue
+        for u in ix.makers[n]:
+            if reach.unit_round[u] == UNREACHED or u in keep:
+                continue
+            keep.add(u)
+            stack.extend(ix.inputs[u])
+            for r in unit_roles(foon.units[u]):
+                k = ix.node_id[r.before] if r.changes and r.before is not None else -1
+                if k >= 0 and reach.node_round[k] == 0 and k not in used_up:
+                    used_up.add(k)
+                    if k in parked:
+                        parked.discard(k)
+                        seen.discard(k)
+                        stack.append(k)
+    return tuple(sorted(keep))
+
+
 def prune_task(task: PlanningTask) -> PlanningTask:
     """The task restricted to relevant, relaxed-reachable ground actions (lifted tasks are returned as is)."""
     if any(a.params for a in task.actions):

@@ -41,6 +41,7 @@ class Action:
     cost: int | None = None
     unit: int | None = None
     comment: tuple[str, ...] = ()
+    roles: tuple = ()  # `instances`: per object of the unit, (`pairing.Role`, whether a parameter binds it)
 
 
 @dataclass(frozen=True)
@@ -61,6 +62,7 @@ class PlanningTask:
     units: tuple = ()  # FunctionalUnit per Action.unit index
     labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
     comments: tuple[str, ...] = ()  # header lines for both files
+    instances: tuple = ()  # `instances` encoding: (object name, label, start node or None: not yet made)
 
     @property
     def uses_costs(self) -> bool:

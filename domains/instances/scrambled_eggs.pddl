@@ -1,0 +1,636 @@
+; foon2pddl, encoding instances, level 3: 30 of 101 units after relevance pruning
+; goal: scrambled eggs (2 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 24 (avocado 1, black pepper 1, bowl 1, butter 1, cilantro 1, cutting board 1, egg 1, egg mixture 1, fork 1, frying pan 1, juicer 1, knife 1, lime 1, milk 1, onion 1, plate 1, salt 1, scrambled eggs 1, spatula 1, spoon 1, stove 2, tomato 1, whisk 1)
+(define (domain foon-instances)
+  (:requirements :strips :typing)
+  (:types
+    physical-object - object
+    object-state - object
+    avocado - physical-object
+    black_pepper - physical-object
+    bowl - physical-object
+    butter - physical-object
+    cilantro - physical-object
+    cutting_board - physical-object
+    egg - physical-object
+    egg_mixture - physical-object
+    fork - physical-object
+    frying_pan - physical-object
+    juicer - physical-object
+    knife - physical-object
+    lime - physical-object
+    milk - physical-object
+    onion - physical-object
+    plate - physical-object
+    salt - physical-object
+    scrambled_eggs - physical-object
+    spatula - physical-object
+    spoon - physical-object
+    stove - physical-object
+    tomato - physical-object
+    whisk - physical-object
+  )
+  (:constants
+    not-yet-made - object-state
+    avocado_halved_on_cutting_board - object-state
+    avocado_in_bowl_mashed - object-state
+    avocado_in_bowl_scooped - object-state
+    avocado_on_cutting_board_whole - object-state
+    avocado_whole - object-state
+    black_pepper_ground - object-state
+    black_pepper_in_bowl - object-state
+    bowl_contains_avocado - object-state
+    bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato - object-state
+    bowl_contains_avocado_cilantro_lime_juice_onion_tomato - object-state
+    bowl_contains_avocado_lime_juice - object-state
+    bowl_contains_avocado_lime_juice_onion - object-state
+    bowl_contains_avocado_lime_juice_onion_tomato - object-state
+    bowl_contains_black_pepper_egg_milk_salt - object-state
+    bowl_contains_egg - object-state
+    bowl_contains_egg_milk - object-state
+    bowl_contains_egg_mixture - object-state
+    bowl_empty - object-state
+    butter_in_frying_pan_melted - object-state
+    butter_in_frying_pan_solid - object-state
+    butter_solid - object-state
+    cilantro_chopped_in_bowl - object-state
+    cilantro_chopped_on_cutting_board - object-state
+    cilantro_fresh - object-state
+    cilantro_fresh_on_cutting_board - object-state
+    cutting_board_contains_avocado - object-state
+    cutting_board_contains_cilantro - object-state
+    cutting_board_contains_lime - object-state
+    cutting_board_contains_onion - object-state
+    cutting_board_contains_tomato - object-state
+    cutting_board_empty - object-state
+    egg_beaten_in_bowl - object-state
+    egg_cracked_in_bowl - object-state
+    egg_whole - object-state
+    egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl - object-state
+    egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan - object-state
+    fork_plain - object-state
+    frying_pan_contains_butter_on_stove - object-state
+    frying_pan_contains_butter_egg_mixture_on_stove - object-state
+    frying_pan_contains_scrambled_eggs_on_stove - object-state
+    frying_pan_empty - object-state
+    frying_pan_empty_on_stove - object-state
+    juicer_empty - object-state
+    knife_plain - object-state
+    lime_halved_on_cutting_board - object-state
+    lime_on_cutting_board_whole - object-state
+    lime_whole - object-state
+    milk_in_bowl - object-state
+    milk_in_carton - object-state
+    onion_chopped_in_bowl - object-state
+    onion_chopped_on_cutting_board - object-state
+    onion_on_cutting_board_peeled - object-state
+    onion_on_cutting_board_whole - object-state
+    onion_whole - object-state
+    plate_contains_scrambled_eggs - object-state
+    plate_empty - object-state
+    salt_granulated - object-state
+    salt_in_bowl - object-state
+    scrambled_eggs_cooked_in_frying_pan - object-state
+    scrambled_eggs_cooked_on_plate - object-state
+    spatula_plain - object-state
+    spoon_plain - object-state
+    stove_off - object-state
+    stove_on - object-state
+    tomato_chopped_in_bowl - object-state
+    tomato_chopped_on_cutting_board - object-state
+    tomato_on_cutting_board_whole - object-state
+    tomato_whole - object-state
+    whisk_plain - object-state
+  )
+  (:predicates
+    (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
+    (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
+    (goal-reached)  ; a goal candidate was made
+  )
+
+  (:action crack_u17
+    ; unit 17: crack from 03-scrambled_eggs.foon:3, 05-french_toast.foon:3
+    ; crack: bowl (empty), egg (whole) -> bowl (contains {egg}), egg (cracked, in [bowl])
+    :parameters (?bowl - bowl ?egg - egg)
+    :precondition (and
+      (is ?bowl bowl_empty)
+      (is ?egg egg_whole)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_egg)
+      (is ?egg egg_cracked_in_bowl)
+      (not (is ?bowl bowl_empty))
+      (not (is ?egg egg_whole))
+    )
+  )
+
+  (:action beat_u18
+    ; unit 18: beat from 03-scrambled_eggs.foon:14
+    ; beat: egg (cracked, in [bowl]), whisk -> egg (beaten, in [bowl]), whisk
+    :parameters (?egg - egg)
+    :precondition (and
+      (is ?egg egg_cracked_in_bowl)
+      (occupied whisk_plain)
+    )
+    :effect (and
+      (is ?egg egg_beaten_in_bowl)
+      (occupied egg_beaten_in_bowl)
+      (not (is ?egg egg_cracked_in_bowl))
+    )
+  )
+
+  (:action pour_u19
+    ; unit 19: pour from 03-scrambled_eggs.foon:24, 05-french_toast.foon:24
+    ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
+    :parameters (?bowl - bowl ?milk - milk)
+    :precondition (and
+      (is ?bowl bowl_contains_egg)
+      (occupied egg_beaten_in_bowl)
+      (is ?milk milk_in_carton)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_egg_milk)
+      (is ?milk milk_in_bowl)
+      (occupied milk_in_bowl)
+      (not (is ?bowl bowl_contains_egg))
+      (not (is ?milk milk_in_carton))
+    )
+  )
+
+  (:action sprinkle_u20
+    ; unit 20: sprinkle from 03-scrambled_eggs.foon:37
+    ; sprinkle: bowl (contains {egg, milk}), salt (granulated), black pepper (ground) -> bowl (contains {black pepper, egg, milk, salt}), salt (in [bowl]), black pepper (in [bowl])
+    :parameters (?bowl - bowl ?salt - salt ?black_pepper - black_pepper)
+    :precondition (and
+      (is ?bowl bowl_contains_egg_milk)
+      (is ?salt salt_granulated)
+      (is ?black_pepper black_pepper_ground)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
+      (is ?salt salt_in_bowl)
+      (occupied salt_in_bowl)
+      (is ?black_pepper black_pepper_in_bowl)
+      (occupied black_pepper_in_bowl)
+      (not (is ?bowl bowl_contains_egg_milk))
+      (not (is ?salt salt_granulated))
+      (not (is ?black_pepper black_pepper_ground))
+    )
+  )
+
+  (:action mix_u21
+    ; unit 21: mix from 03-scrambled_eggs.foon:51
+    ; mix: bowl (contains {black pepper, egg, milk, salt}), egg (beaten, in [bowl]), milk (in [bowl]), salt (in [bowl]), black pepper (in [bowl]), whisk -> bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, i...
+    :parameters (?bowl - bowl ?egg_mixture - egg_mixture)
+    :precondition (and
+      (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
+      (occupied egg_beaten_in_bowl)
+      (occupied milk_in_bowl)
+      (occupied salt_in_bowl)
+      (occupied black_pepper_in_bowl)
+      (occupied whisk_plain)
+      (is ?egg_mixture not-yet-made)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_egg_mixture)
+      (occupied bowl_contains_egg_mixture)
+      (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
+      (not (is ?bowl bowl_contains_black_pepper_egg_milk_salt))
+      (not (is ?egg_mixture not-yet-made))
+    )
+  )
+
+  (:action pick-and-place_u22
+    ; unit 22: pick-and-place from 03-scrambled_eggs.foon:71, 04-pancakes.foon:76, 05-french_toast.foon:83
+    ; pick-and-place: frying pan (empty), stove (off) -> frying pan (empty, on [stove])
+    :parameters (?frying_pan - frying_pan ?stove - stove)
+    :precondition (and
+      (is ?frying_pan frying_pan_empty)
+      (is ?stove stove_off)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_empty_on_stove)
+      (not (is ?frying_pan frying_pan_empty))
+    )
+  )
+
+  (:action turn_on_u23
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; turn on: stove (off) -> stove (on)
+    :parameters (?stove - stove)
+    :precondition (and
+      (is ?stove stove_off)
+    )
+    :effect (and
+      (is ?stove stove_on)
+      (occupied stove_on)
+      (not (is ?stove stove_off))
+    )
+  )
+
+  (:action pick-and-place_u24
+    ; unit 24: pick-and-place from 03-scrambled_eggs.foon:86, 04-pancakes.foon:91, 05-french_toast.foon:98
+    ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
+    :parameters (?frying_pan - frying_pan ?butter - butter)
+    :precondition (and
+      (is ?frying_pan frying_pan_empty_on_stove)
+      (is ?butter butter_solid)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (is ?butter butter_in_frying_pan_solid)
+      (not (is ?frying_pan frying_pan_empty_on_stove))
+      (not (is ?butter butter_solid))
+    )
+  )
+
+  (:action melt_u25
+    ; unit 25: melt from 03-scrambled_eggs.foon:99, 04-pancakes.foon:104, 05-french_toast.foon:111
+    ; melt: stove (on), butter (in [frying pan], solid) -> butter (in [frying pan], melted)
+    :parameters (?butter - butter)
+    :precondition (and
+      (occupied stove_on)
+      (is ?butter butter_in_frying_pan_solid)
+    )
+    :effect (and
+      (is ?butter butter_in_frying_pan_melted)
+      (occupied butter_in_frying_pan_melted)
+      (not (is ?butter butter_in_frying_pan_solid))
+    )
+  )
+
+  (:action pour_u26
+    ; unit 26: pour from 03-scrambled_eggs.foon:109
+    ; pour: bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, in [bowl]), frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan (contains {butter, egg mixture}, on [stove...
+    :parameters (?egg_mixture - egg_mixture ?frying_pan - frying_pan)
+    :precondition (and
+      (occupied bowl_contains_egg_mixture)
+      (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
+      (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (occupied butter_in_frying_pan_melted)
+    )
+    :effect (and
+      (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
+      (occupied egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
+      (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove)
+      (not (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl))
+      (not (is ?frying_pan frying_pan_contains_butter_on_stove))
+    )
+  )
+
+  (:action stir_u27
+    ; unit 27: stir from 03-scrambled_eggs.foon:128
+    ; stir: stove (on), frying pan (contains {butter, egg mixture}, on [stove]), egg mixture (contains {black pepper, egg, milk, salt}, in [frying pan]), spatula -> frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in...
+    :parameters (?frying_pan - frying_pan ?scrambled_eggs - scrambled_eggs)
+    :precondition (and
+      (occupied stove_on)
+      (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove)
+      (occupied egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
+      (occupied spatula_plain)
+      (is ?scrambled_eggs not-yet-made)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
+      (occupied frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (not (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove))
+      (not (is ?scrambled_eggs not-yet-made))
+    )
+  )
+
+  (:action scoop_u28
+    ; unit 28: scoop from 03-scrambled_eggs.foon:146
+    ; scoop: frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {scrambled eggs}), scrambled eggs (cooked, on [plate]), spatula
+    :parameters (?scrambled_eggs - scrambled_eggs ?plate - plate)
+    :precondition (and
+      (occupied frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (occupied spatula_plain)
+      (is ?plate plate_empty)
+    )
+    :effect (and
+      (is ?scrambled_eggs scrambled_eggs_cooked_on_plate)
+      (occupied scrambled_eggs_cooked_on_plate)
+      (is ?plate plate_contains_scrambled_eggs)
+      (occupied plate_contains_scrambled_eggs)
+      (not (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan))
+      (not (is ?plate plate_empty))
+    )
+  )
+
+  (:action beat_u39
+    ; unit 39: beat from 05-french_toast.foon:14
+    ; beat: egg (cracked, in [bowl]), fork -> egg (beaten, in [bowl]), fork
+    :parameters (?egg - egg)
+    :precondition (and
+      (is ?egg egg_cracked_in_bowl)
+      (occupied fork_plain)
+    )
+    :effect (and
+      (is ?egg egg_beaten_in_bowl)
+      (occupied egg_beaten_in_bowl)
+      (not (is ?egg egg_cracked_in_bowl))
+    )
+  )
+
+  (:action pick-and-place_u47
+    ; unit 47: pick-and-place from 06-tomato_soup.foon:3, 07-guacamole.foon:105, 08-greek_salad.foon:53
+    ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
+    :parameters (?cutting_board - cutting_board ?onion - onion)
+    :precondition (and
+      (is ?cutting_board cutting_board_empty)
+      (is ?onion onion_whole)
+    )
+    :effect (and
+      (is ?cutting_board cutting_board_contains_onion)
+      (occupied cutting_board_contains_onion)
+      (is ?onion onion_on_cutting_board_whole)
+      (not (is ?cutting_board cutting_board_empty))
+      (not (is ?onion onion_whole))
+    )
+  )
+
+  (:action peel_u48
+    ; unit 48: peel from 06-tomato_soup.foon:14, 07-guacamole.foon:116, 08-greek_salad.foon:64
+    ; peel: cutting board (contains {onion}), onion (on [cutting board], whole), knife -> cutting board (contains {onion}), onion (on [cutting board], peeled), knife
+    :parameters (?onion - onion)
+    :precondition (and
+      (occupied cutting_board_contains_onion)
+      (is ?onion onion_on_cutting_board_whole)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?onion onion_on_cutting_board_peeled)
+      (not (is ?onion onion_on_cutting_board_whole))
+    )
+  )
+
+  (:action chop_u49
+    ; unit 49: chop from 06-tomato_soup.foon:28, 07-guacamole.foon:130
+    ; chop: cutting board (contains {onion}), onion (on [cutting board], peeled), knife -> cutting board (contains {onion}), onion (chopped, on [cutting board]), knife
+    :parameters (?onion - onion)
+    :precondition (and
+      (occupied cutting_board_contains_onion)
+      (is ?onion onion_on_cutting_board_peeled)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?onion onion_chopped_on_cutting_board)
+      (not (is ?onion onion_on_cutting_board_peeled))
+    )
+  )
+
+  (:action pick-and-place_u50
+    ; unit 50: pick-and-place from 06-tomato_soup.foon:42, 07-guacamole.foon:156, 08-greek_salad.foon:28
+    ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
+    :parameters (?cutting_board - cutting_board ?tomato - tomato)
+    :precondition (and
+      (is ?cutting_board cutting_board_empty)
+      (is ?tomato tomato_whole)
+    )
+    :effect (and
+      (is ?cutting_board cutting_board_contains_tomato)
+      (occupied cutting_board_contains_tomato)
+      (is ?tomato tomato_on_cutting_board_whole)
+      (not (is ?cutting_board cutting_board_empty))
+      (not (is ?tomato tomato_whole))
+    )
+  )
+
+  (:action chop_u51
+    ; unit 51: chop from 06-tomato_soup.foon:53, 07-guacamole.foon:167, 08-greek_salad.foon:39
+    ; chop: cutting board (contains {tomato}), tomato (on [cutting board], whole), knife -> cutting board (contains {tomato}), tomato (chopped, on [cutting board]), knife
+    :parameters (?tomato - tomato)
+    :precondition (and
+      (occupied cutting_board_contains_tomato)
+      (is ?tomato tomato_on_cutting_board_whole)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?tomato tomato_chopped_on_cutting_board)
+      (not (is ?tomato tomato_on_cutting_board_whole))
+    )
+  )
+
+  (:action pick-and-place_u63
+    ; unit 63: pick-and-place from 07-guacamole.foon:3
+    ; pick-and-place: cutting board (empty), avocado (whole) -> cutting board (contains {avocado}), avocado (on [cutting board], whole)
+    :parameters (?cutting_board - cutting_board ?avocado - avocado)
+    :precondition (and
+      (is ?cutting_board cutting_board_empty)
+      (is ?avocado avocado_whole)
+    )
+    :effect (and
+      (is ?cutting_board cutting_board_contains_avocado)
+      (occupied cutting_board_contains_avocado)
+      (is ?avocado avocado_on_cutting_board_whole)
+      (not (is ?cutting_board cutting_board_empty))
+      (not (is ?avocado avocado_whole))
+    )
+  )
+
+  (:action cut_u64
+    ; unit 64: cut from 07-guacamole.foon:14
+    ; cut: cutting board (contains {avocado}), avocado (on [cutting board], whole), knife -> cutting board (contains {avocado}), avocado (halved, on [cutting board]), knife
+    :parameters (?avocado - avocado)
+    :precondition (and
+      (occupied cutting_board_contains_avocado)
+      (is ?avocado avocado_on_cutting_board_whole)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?avocado avocado_halved_on_cutting_board)
+      (not (is ?avocado avocado_on_cutting_board_whole))
+    )
+  )
+
+  (:action scoop_u65
+    ; unit 65: scoop from 07-guacamole.foon:28
+    ; scoop: avocado (halved, on [cutting board]), spoon, bowl (empty) -> bowl (contains {avocado}), avocado (in [bowl], scooped), spoon
+    :parameters (?avocado - avocado ?bowl - bowl)
+    :precondition (and
+      (is ?avocado avocado_halved_on_cutting_board)
+      (occupied spoon_plain)
+      (is ?bowl bowl_empty)
+    )
+    :effect (and
+      (is ?avocado avocado_in_bowl_scooped)
+      (is ?bowl bowl_contains_avocado)
+      (occupied bowl_contains_avocado)
+      (not (is ?avocado avocado_halved_on_cutting_board))
+      (not (is ?bowl bowl_empty))
+    )
+  )
+
+  (:action mash_u66
+    ; unit 66: mash from 07-guacamole.foon:42
+    ; mash: avocado (in [bowl], scooped), fork -> avocado (in [bowl], mashed), fork
+    :parameters (?avocado - avocado)
+    :precondition (and
+      (is ?avocado avocado_in_bowl_scooped)
+      (occupied fork_plain)
+    )
+    :effect (and
+      (is ?avocado avocado_in_bowl_mashed)
+      (occupied avocado_in_bowl_mashed)
+      (not (is ?avocado avocado_in_bowl_scooped))
+    )
+  )
+
+  (:action pick-and-place_u67
+    ; unit 67: pick-and-place from 07-guacamole.foon:52, 09-fruit_salad.foon:83
+    ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
+    :parameters (?cutting_board - cutting_board ?lime - lime)
+    :precondition (and
+      (is ?cutting_board cutting_board_empty)
+      (is ?lime lime_whole)
+    )
+    :effect (and
+      (is ?cutting_board cutting_board_contains_lime)
+      (occupied cutting_board_contains_lime)
+      (is ?lime lime_on_cutting_board_whole)
+      (not (is ?cutting_board cutting_board_empty))
+      (not (is ?lime lime_whole))
+    )
+  )
+
+  (:action cut_u68
+    ; unit 68: cut from 07-guacamole.foon:63, 09-fruit_salad.foon:94
+    ; cut: cutting board (contains {lime}), lime (on [cutting board], whole), knife -> cutting board (contains {lime}), lime (halved, on [cutting board]), knife
+    :parameters (?lime - lime)
+    :precondition (and
+      (occupied cutting_board_contains_lime)
+      (is ?lime lime_on_cutting_board_whole)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?lime lime_halved_on_cutting_board)
+      (occupied lime_halved_on_cutting_board)
+      (not (is ?lime lime_on_cutting_board_whole))
+    )
+  )
+
+  (:action pick-and-place_u71
+    ; unit 71: pick-and-place from 07-guacamole.foon:144
+    ; pick-and-place: bowl (contains {avocado, lime juice}), onion (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion}), onion (chopped, in [bowl])
+    :parameters (?bowl - bowl ?onion - onion)
+    :precondition (and
+      (is ?bowl bowl_contains_avocado_lime_juice)
+      (is ?onion onion_chopped_on_cutting_board)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_avocado_lime_juice_onion)
+      (is ?onion onion_chopped_in_bowl)
+      (occupied onion_chopped_in_bowl)
+      (not (is ?bowl bowl_contains_avocado_lime_juice))
+      (not (is ?onion onion_chopped_on_cutting_board))
+    )
+  )
+
+  (:action pick-and-place_u72
+    ; unit 72: pick-and-place from 07-guacamole.foon:181
+    ; pick-and-place: bowl (contains {avocado, lime juice, onion}), tomato (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion, tomato}), tomato (chopped, in [bowl])
+    :parameters (?bowl - bowl ?tomato - tomato)
+    :precondition (and
+      (is ?bowl bowl_contains_avocado_lime_juice_onion)
+      (is ?tomato tomato_chopped_on_cutting_board)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
+      (is ?tomato tomato_chopped_in_bowl)
+      (occupied tomato_chopped_in_bowl)
+      (not (is ?bowl bowl_contains_avocado_lime_juice_onion))
+      (not (is ?tomato tomato_chopped_on_cutting_board))
+    )
+  )
+
+  (:action pick-and-place_u73
+    ; unit 73: pick-and-place from 07-guacamole.foon:193
+    ; pick-and-place: cutting board (empty), cilantro (fresh) -> cutting board (contains {cilantro}), cilantro (fresh, on [cutting board])
+    :parameters (?cutting_board - cutting_board ?cilantro - cilantro)
+    :precondition (and
+      (is ?cutting_board cutting_board_empty)
+      (is ?cilantro cilantro_fresh)
+    )
+    :effect (and
+      (is ?cutting_board cutting_board_contains_cilantro)
+      (occupied cutting_board_contains_cilantro)
+      (is ?cilantro cilantro_fresh_on_cutting_board)
+      (not (is ?cutting_board cutting_board_empty))
+      (not (is ?cilantro cilantro_fresh))
+    )
+  )
+
+  (:action chop_u74
+    ; unit 74: chop from 07-guacamole.foon:204
+    ; chop: cutting board (contains {cilantro}), cilantro (fresh, on [cutting board]), knife -> cutting board (contains {cilantro}), cilantro (chopped, on [cutting board]), knife
+    :parameters (?cilantro - cilantro)
+    :precondition (and
+      (occupied cutting_board_contains_cilantro)
+      (is ?cilantro cilantro_fresh_on_cutting_board)
+      (occupied knife_plain)
+    )
+    :effect (and
+      (is ?cilantro cilantro_chopped_on_cutting_board)
+      (not (is ?cilantro cilantro_fresh_on_cutting_board))
+    )
+  )
+
+  (:action pick-and-place_u75
+    ; unit 75: pick-and-place from 07-guacamole.foon:218
+    ; pick-and-place: bowl (contains {avocado, lime juice, onion, tomato}), cilantro (chopped, on [cutting board]) -> bowl (contains {avocado, cilantro, lime juice, onion, tomato}), cilantro (chopped, in [bowl])
+    :parameters (?bowl - bowl ?cilantro - cilantro)
+    :precondition (and
+      (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
+      (is ?cilantro cilantro_chopped_on_cutting_board)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
+      (is ?cilantro cilantro_chopped_in_bowl)
+      (occupied cilantro_chopped_in_bowl)
+      (not (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato))
+      (not (is ?cilantro cilantro_chopped_on_cutting_board))
+    )
+  )
+
+  (:action sprinkle_u76
+    ; unit 76: sprinkle from 07-guacamole.foon:230
+    ; sprinkle: bowl (contains {avocado, cilantro, lime juice, onion, tomato}), salt (granulated) -> bowl (contains {avocado, cilantro, lime juice, onion, salt, tomato}), salt (in [bowl])
+    :parameters (?bowl - bowl ?salt - salt)
+    :precondition (and
+      (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
+      (is ?salt salt_granulated)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
+      (occupied bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
+      (is ?salt salt_in_bowl)
+      (occupied salt_in_bowl)
+      (not (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato))
+      (not (is ?salt salt_granulated))
+    )
+  )
+
+  (:action reach-goal-1
+    ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
+    :parameters (?x - scrambled_eggs)
+    :precondition (and
+      (is ?x scrambled_eggs_cooked_in_frying_pan)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-2
+    ; goal candidate 2: scrambled eggs (cooked, on [plate])
+    :parameters ()
+    :precondition (and
+      (occupied scrambled_eggs_cooked_on_plate)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+)

@@ -1,0 +1,208 @@
+"""The `instances` encoding: physical object instances whose states change.
+
+* **Types.** One PDDL type per object label (`bowl`), under its category chain
+  when one is given (`EncodeOptions.categories`, e.g. `lemon - citrus_fruits -
+  fruit`), under `physical-object`. Categories only group types: an action's
+  parameter has its label's type, so a lemon never stands in for a lime.
+* **Instances.** `bowl_1 ... bowl_k`, typed `bowl`, with counts from
+  `instance_counts` (derived per goal, stated by the kitchen, or overridden).
+* **State.** Every FOON node of a label is a domain constant of type
+  `object-state`; `(is ?x ?s)` says instance `?x` is in the state of node `?s`,
+  `(is ?x not-yet-made)` that it does not exist yet. Every instance is in
+  exactly one state at any time (init gives one, every action that adds a
+  state deletes the old one), so Fast Downward's invariant synthesis makes
+  one multi-valued variable per instance. A *stable* node, one that no action
+  of the task moves an instance out of, also has `(occupied s)`: true once an
+  instance is there, and then forever, so it is exactly "some instance is in
+  state s".
+* **Actions.** One lifted schema per functional unit, with one parameter per
+  role (`pairing.unit_roles`): a moved object must be in its input node's
+  state and goes to its output node's state (delete + add); kept and
+  read-only objects must be in their input node's state and stay there (when
+  that node is stable they are no parameter: `(occupied s)` is checked instead,
+  which keeps grounding small: seven read-only bowls of a salad would be 9^7
+  groundings with nine bowls, and the plan's instance for them is
+  chosen when the plan is replayed, `planners.instance_plan`); a new
+  object must be not yet made and comes into its output node's state. Two
+  roles of one label that require the same state (a node listed twice, two
+  new objects) must bind different instances: `(precedes ?a ?b)`, a static
+  strict order on the instances of a label, says so in plain STRIPS (and
+  halves the symmetric groundings). A unit whose labels have no instances
+  is dropped.
+* **Goal.** `(goal-reached)`, added by one `reach-goal-<i>` action per goal
+  candidate: "some instance is in the candidate's state".
+* **Pruning.** With pruning on (default), only the goal's relevant units
+  become schemas (`prune.restoring_units`: FOON's relevant units plus those that
+  can restore a kitchen state they use up, such as washing a knife): any plan
+  here maps to units that fire in FOON's delete-free semantics.
+
+Not modelled: which instance holds which (`in [bowl]` is part of a node's
+state, so the bowl holding the onion is *a* bowl; FOON's nodes rarely name
+the holding object in the same unit, see docs/pddl.md), quantities, and what
+becomes of read-only objects. `Action.roles` and `PlanningTask.instances` let
+a plan map back to units with instance bindings (`planners.instance_plan`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from .costs import goal_cost, unit_cost
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
+from .instance_counts import InstanceCounts, derive_counts
+from .names import NameTable
+from .pairing import unit_roles
+from .prune import restoring_units
+from .task import Action, Atom, PlanningTask, Predicate
+
+IS = "is"
+OCCUPIED = "occupied"
+NOT_MADE = "not-yet-made"
+PRECEDES = "precedes"
+STATE_TYPE = "object-state"
+ROOT_TYPE = "physical-object"
+
+#: Most labels listed in the header's count line.
+HEADER_LABELS = 40
+
+
+def _types(table: NameTable, labels: list[str], categories: Mapping[str, tuple[str, ...]]) -> tuple[dict, list]:
+    """Label -> type name, and the (type, parent) declarations (categories first, then labels)."""
+    decl: dict[str, str] = {}
+    cat_name: dict[str, str] = {}
+    for label in labels:
+        chain = categories.get(label, ())
+        for k in range(len(chain) - 1, -1, -1):
+            if chain[k] not in cat_name:
+                cat_name[chain[k]] = table.name(chain[k], key=("category", chain[k]))
+                decl[cat_name[chain[k]]] = cat_name[chain[k + 1]] if k + 1 < len(chain) else ROOT_TYPE
+    type_of = {}
+    for label in labels:
+        chain = categories.get(label, ())
+        type_of[label] = table.name(label, key=("type", label))
+        decl[type_of[label]] = cat_name[chain[0]] if chain else ROOT_TYPE
+    return type_of, [(ROOT_TYPE, "object"), (STATE_TYPE, "object"), *decl.items()]
+
+
+def encode_instances(
+    foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3, options: EncodeOptions = DEFAULT_OPTIONS,
+    *, extra: int = 0,
+) -> PlanningTask:
+    """The object-instance task of `goal` over `foon` (see the module doc); `extra` adds instances everywhere."""
+    inp = at_level(foon, kitchen, goal, level)
+    f = inp.foon
+    units = (restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units))))
+    counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
+                           overrides=dict(options.instances), extra=extra)
+    have = counts.labels()
+    units = tuple(u for u in units if all(r.label in have for r in unit_roles(f.units[u])))
+
+    table = NameTable()
+    for name in (IS, OCCUPIED, NOT_MADE, PRECEDES, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
+        table.reserve(name)
+    type_of, types = _types(table, sorted(set(have) | {c.label for c in inp.candidates}), dict(options.categories))
+    nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
+    for u in units:
+        nodes.update(x for r in unit_roles(f.units[u]) for x in (r.before, r.after) if x is not None)
+    # A node without states would take its label's name, which its type has: call it `<label> plain`.
+    const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
+    instances, init, precede = _instances(table, counts, const)
+    # Stable nodes: no kept unit moves an instance out of them, so "some instance is there" never
+    # becomes false again; roles that only need one there check `(occupied s)` instead of a parameter.
+    left = {r.before for u in units for r in unit_roles(f.units[u]) if r.changes}
+    stable = {n for n in const if n not in left}
+    init.extend(Atom(OCCUPIED, (const[n],)) for n, _ in counts.at_node if n in stable)
+
+    actions: list[Action] = []
+    for u in units:
+        unit = f.units[u]
+        roles = unit_roles(unit)
+        bound = tuple(r.changes or r.before not in stable for r in roles)
+        params_table = NameTable()
+        params = [f"?{params_table.name(r.label, key=k)}" for k, r in enumerate(roles)]
+        pre, add, delete = [], [], []
+        first: dict[tuple[str, str], str] = {}
+        for var, r, b in zip(params, roles, bound, strict=True):
+            state = const[r.before] if r.before is not None else NOT_MADE
+            if not b:
+                pre.append(Atom(OCCUPIED, (state,)))
+                continue
+            pre.append(Atom(IS, (var, state)))
+            if r.changes:
+                delete.append(Atom(IS, (var, state)))
+                add.append(Atom(IS, (var, const[r.after])))
+                if r.after in stable:
+                    add.append(Atom(OCCUPIED, (const[r.after],)))
+            same = (r.label, state)
+            if same in first:
+                pre.append(Atom(PRECEDES, (first[same], var)))
+                precede.add(r.label)
+            first[same] = var
+        actions.append(Action(
+            table.name(f"{unit.motion.label} u{u}", key=("unit", u)),
+            pre=tuple(pre), add=tuple(add), delete=tuple(delete),
+            params=tuple((var, type_of[r.label]) for var, r, b in zip(params, roles, bound, strict=True) if b),
+            cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
+            roles=tuple(zip(roles, bound, strict=True)),
+        ))
+    for i, c in enumerate(inp.candidates, start=1):  # kept even when no instance can reach c
+        stable_goal = c in stable
+        actions.append(Action(
+            table.name(f"reach-goal-{i}", key=("goal-action", i)),
+            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
+            add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
+            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
+        ))
+    for label in sorted(precede):
+        mine = [name for name, lab, _ in instances if lab == label]
+        init.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
+    predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
+                  Predicate(OCCUPIED, (("?s", STATE_TYPE),), "some instance is in state ?s, which no action leaves"),
+                  Predicate(GOAL_REACHED, comment="a goal candidate was made")]
+    if precede:
+        predicates.append(Predicate(PRECEDES, (("?a", ROOT_TYPE), ("?b", ROOT_TYPE)),
+                                    "static order of the instances of a label: binds two roles to two instances"))
+    return PlanningTask(
+        domain="foon-instances",
+        problem=table.name(f"make {goal.describe()}", key=("problem",)),
+        encoding="instances",
+        level=inp.level,
+        predicates=tuple(predicates),
+        actions=tuple(actions),
+        init=tuple(sorted(init)),
+        goal=(Atom(GOAL_REACHED),),
+        types=tuple(types),
+        constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, *const.values())),
+        objects=tuple((name, type_of[label]) for name, label, _ in instances),
+        units=f.units,
+        labels=table.labels,
+        comments=header("instances", inp, options, len(units)) + _count_lines(counts),
+        instances=tuple(instances),
+    )
+
+
+def _instances(table: NameTable, counts: InstanceCounts,
+               const: dict[ObjectNode, str]) -> tuple[list, list[Atom], set[str]]:
+    """Instance objects (name, label, start node or None) numbered per label, their initial states."""
+    starts: dict[str, list[ObjectNode | None]] = {}
+    for node, k in counts.at_node:
+        starts.setdefault(node.label, []).extend([node] * k)
+    for label, k in counts.unmade:
+        starts.setdefault(label, []).extend([None] * k)
+    instances, init = [], []
+    for label in sorted(starts):
+        for k, node in enumerate(starts[label], start=1):
+            name = table.name(f"{label} {k}", key=("instance", label, k))
+            instances.append((name, label, node))
+            init.append(Atom(IS, (name, NOT_MADE if node is None else const[node])))
+    return instances, init, set()
+
+
+def _count_lines(counts: InstanceCounts) -> tuple[str, ...]:
+    labels = counts.labels()
+    shown = ", ".join(f"{label} {k}" for label, k in list(labels.items())[:HEADER_LABELS])
+    more = f", +{len(labels) - HEADER_LABELS} more labels" if len(labels) > HEADER_LABELS else ""
+    return (f"instances: {counts.total} ({shown}{more})",)

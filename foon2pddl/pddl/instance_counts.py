@@ -1,0 +1,175 @@
+"""How many physical instances of each object the `instances` encoding declares, and where they start.
+
+The kitchen lists labels and states, not counts. Per goal, counts are derived by
+unfolding a delete-free plan backwards:
+
+1. A delete-free plan: back from the goal candidate made in the fewest rounds
+   of the kitchen's fixpoint (`analysis.reachability`), each needed node's
+   first achiever, in firing order.
+2. Unfolding, from the last unit to the first: a node's *demand* is the number
+   of instances that must pass through it: one per role that moves an instance
+   out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
+   one when some unit only reads it (read-only and kept roles, the goal) and so
+   needs one instance to stay. A unit fires F times, F being the largest
+   demand among the nodes it is credited with making (moved and new roles);
+   each firing moves one instance per moved role and needs one not-yet-made
+   instance per new role. Kitchen nodes are never credited to a unit: their
+   demand is the number of instances the kitchen must hold in that state.
+
+So the unfolded plan (each unit fired F times, in plan order) is executable at
+the instance level with exactly these counts: the task is solvable whenever
+FOON's delete-free semantics is. O(sum of unit sizes) after the fixpoint.
+
+Every kitchen state the task's units use gets at least one instance (the
+kitchen has what it lists; a unit outside the unfolded plan, such as washing
+a knife, may need it). Counts can be stated instead: in the kitchen (`2 x bowl (empty)`: exactly that
+many in that state) and per label (`--instances bowl=3`: three in each place the
+task can start a bowl: each of its kitchen states the task uses, and the
+not-yet-made pool when a unit makes bowls). Precedence: override, then the
+kitchen's count, then the derived one. When the goal cannot be made in FOON's
+semantics there is no plan to unfold, and every place gets one instance.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+
+from ..analysis.reachability import reachable
+from ..model.foon import Foon, ObjectNode
+from .pairing import RoleKind, unit_roles
+
+
+@dataclass(frozen=True)
+class InstanceCounts:
+    """Where instances start: per kitchen node, and per label not yet made; plus the unfolded firings.
+
+    `firings` maps unit index -> times it fires in the unfolded plan (empty when there was none).
+    """
+
+    at_node: tuple[tuple[ObjectNode, int], ...]
+    unmade: tuple[tuple[str, int], ...]
+    firings: tuple[tuple[int, int], ...] = ()
+
+    def labels(self) -> dict[str, int]:
+        """Label -> total instances."""
+        out: Counter[str] = Counter()
+        for node, k in self.at_node:
+            out[node.label] += k
+        for label, k in self.unmade:
+            out[label] += k
+        return {label: k for label, k in sorted(out.items()) if k > 0}
+
+    @property
+    def total(self) -> int:
+        return sum(k for _, k in self.at_node) + sum(k for _, k in self.unmade)
+
+
+def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode],
+                     candidates: Sequence[ObjectNode]) -> tuple[tuple[int, ...], ObjectNode] | None:
+    """A delete-free plan (unit indexes in firing order) for the candidate made in the fewest rounds.
+
+    Each needed node is made by its first achiever (`reachability`): following first
+    achievers back never meets a cycle and never pulls in another recipe's units the way
+    crediting the latest maker can. None when no candidate can be made.
+    """
+    reach = reachable(foon, kitchen, candidates)
+    made = [c for c in candidates if reach.can_make(c)]
+    if not made:
+        return None
+    target = min(made, key=lambda c: (reach.round_of(c), c))
+    ix = reach.index
+    chosen: set[int] = set()
+    seen: set[int] = set()
+    stack = [ix.node_id[target]] if target in ix.node_id else []
+    while stack:
+        n = stack.pop()
+        if n in seen or reach.node_round[n] == 0:
+            continue
+        seen.add(n)
+        u = reach.achiever[n]
+        if u not in chosen:
+            chosen.add(u)
+            stack.extend(ix.inputs[u])
+    return tuple(u for u in reach.fired if u in chosen), target
+
+
+def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode],
+           target: ObjectNode) -> tuple[Counter[ObjectNode], Counter[str], dict[int, int]]:
+    """(demand per kitchen node, not-yet-made instances per label, firings per unit) of `plan` (module doc)."""
+    consumed: Counter[ObjectNode] = Counter()
+    read: set[ObjectNode] = {target}
+    created: Counter[str] = Counter()
+    firings: dict[int, int] = {}
+
+    def demand(node: ObjectNode) -> int:
+        return consumed[node] + (node in read)
+
+    for u in reversed(plan):
+        roles = unit_roles(foon.units[u])
+        makes = [r.after for r in roles if r.changes and r.after not in kitchen]
+        times = max((demand(n) for n in makes), default=0)
+        if times == 0:
+            continue
+        firings[u] = times
+        for n in makes:
+            consumed.pop(n, None)
+            read.discard(n)
+        for r in roles:
+            if r.kind is RoleKind.NEW:
+                created[r.label] += times
+            elif r.kind is RoleKind.MOVED:
+                consumed[r.before] += times
+            else:
+                read.add(r.before)
+    at_kitchen = Counter({n: demand(n) for n in set(consumed) | read if n in kitchen and demand(n) > 0})
+    return at_kitchen, created, firings
+
+
+def start_places(foon: Foon, units: Iterable[int], kitchen: frozenset[ObjectNode],
+                 candidates: Iterable[ObjectNode]) -> tuple[set[ObjectNode], set[str]]:
+    """Kitchen nodes the units (or the goal) use, and labels the units create: where instances can start."""
+    nodes: set[ObjectNode] = {c for c in candidates if c in kitchen}
+    labels: set[str] = set()
+    for u in units:
+        for r in unit_roles(foon.units[u]):
+            if r.before is None:
+                labels.add(r.label)
+            elif r.before in kitchen:
+                nodes.add(r.before)
+    return nodes, labels
+
+
+def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNode],
+                  candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
+                  overrides: Mapping[str, int] | None = None, extra: int = 0) -> InstanceCounts:
+    """Instance counts for a task made of `units` (see the module doc).
+
+    `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
+    `extra`: instances added to every place (for measuring the cost of too many).
+    """
+    stated = stated or {}
+    overrides = overrides or {}
+    nodes, labels = start_places(foon, units, kitchen, candidates)
+    found = delete_free_plan(foon, kitchen, candidates)
+    if found is None:
+        at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
+        created: Counter[str] = Counter(dict.fromkeys(labels, 1))
+        firings: dict[int, int] = {}
+    else:
+        at_kitchen, created, firings = unfold(foon, found[0], kitchen, found[1])
+        nodes |= set(at_kitchen)
+        labels |= set(created)
+
+    def count(derived: int, label: str, node: ObjectNode | None = None) -> int:
+        if label in overrides:
+            return overrides[label]
+        if node is not None and node in stated:
+            return stated[node]
+        return derived + extra
+
+    # The kitchen has what it lists: at least one instance in every kitchen state the task uses.
+    at_node = tuple((n, k) for n in sorted(nodes) if (k := count(max(at_kitchen[n], 1), n.label, n)) > 0)
+    unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
+    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())))

@@ -1,0 +1,96 @@
+"""Object roles of a functional unit: which input node becomes which output node.
+
+The `instances` encoding gives every object a unit touches one role, i.e. one
+parameter of the unit's action, bound to a physical instance:
+
+* **moved**: an input node paired with an output node of the same label that it
+  becomes (`onion (whole)` -> `onion (chopped)`): the instance leaves the first
+  node's state for the second's;
+* **kept**: an input node that reappears unchanged among the outputs (a knife
+  listed on both sides): the instance must be in that state and stays there;
+* **read-only**: an input node with no output of its label left to pair with
+  (a carton poured from, a utensil FOON omits from the outputs): the instance
+  must be in that state and stays there (FOON does not say what became of it,
+  so it is not consumed);
+* **new**: an output node with no input of its label left (the juice a
+  squeeze makes): the action brings a not-yet-made instance into being.
+
+Pairing rule, per label: among all (input, output) pairs of that label, the
+pair of identical nodes first, then the greatest number of shared states, then
+of shared ingredients (`bowl (contains {a})` becomes `bowl (contains {a, b})`),
+ties broken by input position then output position (the order FOON lists them in);
+pairs are taken greedily, each node at most once. Ambiguity: when a unit has
+several inputs of one label and fewer outputs (two bowls combined into one), the
+rule picks the input most like the output as the one that "becomes" it; FOON
+does not say which physical object it was. A node listed twice on one side
+counts once (as `levels.project_unit` does at levels 1 and 2): in the public
+data that is a duplicated line, not two objects in one state.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+from functools import lru_cache
+
+from ..model.foon import FunctionalUnit, ObjectNode
+
+
+class RoleKind(StrEnum):
+    """How a unit treats one of its objects."""
+
+    MOVED = "moved"
+    KEPT = "kept"
+    READ_ONLY = "read-only"
+    NEW = "new"
+
+
+@dataclass(frozen=True)
+class Role:
+    """One object of a unit: its node before (None: new) and after (None: read-only) the unit."""
+
+    label: str
+    before: ObjectNode | None
+    after: ObjectNode | None
+
+    @property
+    def kind(self) -> RoleKind:
+        if self.before is None:
+            return RoleKind.NEW
+        if self.after is None:
+            return RoleKind.READ_ONLY
+        return RoleKind.KEPT if self.before == self.after else RoleKind.MOVED
+
+    @property
+    def changes(self) -> bool:
+        """Whether the unit changes this object's state (moved or new)."""
+        return self.after is not None and self.before != self.after
+
+
+def _overlap(a: ObjectNode, b: ObjectNode) -> tuple[int, int]:
+    """(shared states, shared ingredients): `bowl (contains {a})` is more like `bowl (contains {a, b})`."""
+    return len(set(a.states) & set(b.states)), len(a.ingredients & b.ingredients)
+
+
+@lru_cache(maxsize=1 << 14)
+def unit_roles(unit: FunctionalUnit) -> tuple[Role, ...]:
+    """The roles of `unit`: one per distinct input (in input order), then one per unpaired output (in order).
+
+    O(k^2 log k) for k nodes of one label (k is tiny in practice); cached per unit.
+    """
+    inputs, outputs = tuple(dict.fromkeys(unit.inputs)), tuple(dict.fromkeys(unit.outputs))
+    pairs = []
+    for i, a in enumerate(inputs):
+        for j, b in enumerate(outputs):
+            if a.label == b.label:
+                states, ingredients = _overlap(a, b)
+                pairs.append((a != b, -states, -ingredients, i, j))
+    partner: dict[int, int] = {}
+    taken: set[int] = set()
+    for *_, i, j in sorted(pairs):
+        if i not in partner and j not in taken:
+            partner[i] = j
+            taken.add(j)
+    roles = [Role(a.label, a, outputs[partner[i]] if i in partner else None) for i, a in enumerate(inputs)]
+    roles += [Role(b.label, None, b) for j, b in enumerate(outputs) if j not in taken]
+    return tuple(roles)

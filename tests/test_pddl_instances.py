@@ -1,0 +1,256 @@
+"""The `instances` encoding: pairing, counts, encoding, plans with bindings, the instance-level validator."""
+
+from __future__ import annotations
+
+import itertools
+from collections import deque
+
+import pddl.parser.domain
+import pddl.parser.problem
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.analysis.reachability import reachable
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_task
+from foon2pddl.pddl.encode_instances import IS, NOT_MADE, encode_instances
+from foon2pddl.pddl.encoding import EncodeOptions
+from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts, unfold
+from foon2pddl.pddl.pairing import RoleKind, unit_roles
+from foon2pddl.pddl.render import render
+from foon2pddl.pddl.task import Atom, PlanningTask
+from foon2pddl.planners import fd
+from foon2pddl.planners.instance_plan import InstancePlanError, instance_steps, simulate_instances, trace_lines
+
+from foon_strategies import foons
+
+
+def n(label, *states):
+    return make_node(label, [make_state(*s) if isinstance(s, tuple) else make_state(s) for s in states])
+
+
+def unit(motion, ins, outs):
+    return FunctionalUnit(tuple(ins), Motion(motion), tuple(outs))
+
+
+# The knife story: cutting and spreading both dirty the knife; washing cleans it. FOON's delete-free
+# semantics uses one knife for both; physically that needs two knives or a wash in between.
+BREAD, SLICE, BUTTERED = n("bread", "whole"), n("bread", "sliced"), n("bread", "buttered")
+CLEAN, DIRTY = n("knife", "clean"), n("knife", "dirty")
+BUTTER, FAUCET = n("butter", "soft"), n("faucet")
+CUT = unit("cut", [BREAD, CLEAN], [SLICE, DIRTY])
+SPREAD = unit("spread", [SLICE, BUTTER, CLEAN], [BUTTERED, DIRTY])
+WASH = unit("wash", [DIRTY, FAUCET], [CLEAN, FAUCET])
+KNIFE_FOON = Foon((CUT, SPREAD, WASH))
+KNIFE_KITCHEN = Kitchen(frozenset({BREAD, CLEAN, BUTTER, FAUCET}))
+KNIFE_GOAL = Goal(GoalSpec("bread"), (BUTTERED,))
+
+
+def roles_of(u):
+    return [(r.kind, r.label, r.before, r.after) for r in unit_roles(u)]
+
+
+def test_pairing_moves_keeps_reads_and_creates():
+    squeeze = unit("squeeze", [n("lime", "halved"), n("juicer", "empty"), n("carton")],
+                   [n("lime", "squeezed"), n("juicer", ("contains", "", ["lime juice"])), n("lime juice")])
+    kinds = [(k, label) for k, label, _, _ in roles_of(squeeze)]
+    assert kinds == [(RoleKind.MOVED, "lime"), (RoleKind.MOVED, "juicer"), (RoleKind.READ_ONLY, "carton"),
+                     (RoleKind.NEW, "lime juice")]
+    assert roles_of(WASH)[1] == (RoleKind.KEPT, "faucet", FAUCET, FAUCET)
+
+
+def test_pairing_prefers_identical_then_shared_states_then_shared_ingredients():
+    with_a = n("bowl", ("contains", "", ["a"]))
+    with_b = n("bowl", ("contains", "", ["b"]), "cold")
+    both = n("bowl", ("contains", "", ["a", "b"]))
+    combine = unit("pour", [with_b, with_a], [both])
+    kinds = {r.before: r.kind for r in unit_roles(combine)}
+    # No shared state with either input; `a` shares an ingredient... and so does `b`: input order decides.
+    assert kinds == {with_b: RoleKind.MOVED, with_a: RoleKind.READ_ONLY}
+    warm_both = n("bowl", ("contains", "", ["a", "b"]), "cold")
+    assert {r.before: r.kind for r in unit_roles(unit("pour", [with_a, with_b], [warm_both]))} == {
+        with_a: RoleKind.READ_ONLY, with_b: RoleKind.MOVED}  # shares the state `cold`
+    same = unit("chop", [n("onion", "whole"), CLEAN, n("onion", "peeled")], [n("onion", "peeled"), CLEAN])
+    assert [r.kind for r in unit_roles(same)] == [RoleKind.READ_ONLY, RoleKind.KEPT, RoleKind.KEPT]
+
+
+def test_pairing_counts_a_duplicated_input_node_once():
+    u = unit("stir", [n("bowl", "full"), n("bowl", "full"), n("spoon")], [n("bowl", "stirred"), n("spoon")])
+    assert [r.kind for r in unit_roles(u)] == [RoleKind.MOVED, RoleKind.KEPT]
+
+
+def test_unfolding_counts_a_node_two_units_consume():
+    plan, target = delete_free_plan(KNIFE_FOON, KNIFE_KITCHEN.nodes, (BUTTERED,))
+    assert [KNIFE_FOON.units[u].motion.label for u in plan] == ["cut", "spread"]
+    at_kitchen, created, firings = unfold(KNIFE_FOON, plan, KNIFE_KITCHEN.nodes, target)
+    assert at_kitchen == {CLEAN: 2, BREAD: 1, BUTTER: 1}
+    assert not created and firings == {0: 1, 1: 1}
+
+
+def test_unfolding_fires_a_producer_once_per_consumer():
+    raw, soft, melted, pan = n("butter", "cold"), n("butter", "soft"), n("butter", "melted"), n("pan")
+    toast = n("toast", "plain")
+    soften = unit("soften", [raw], [soft])
+    melt = unit("melt", [soft, pan], [melted, pan])
+    spread = unit("spread", [soft, toast], [n("toast", "buttered")])
+    dish = unit("serve", [melted, n("toast", "buttered")], [n("dish", "served")])
+    foon = Foon((soften, melt, spread, dish))
+    kitchen = frozenset({raw, pan, toast})
+    plan, target = delete_free_plan(foon, kitchen, (n("dish", "served"),))
+    at_kitchen, created, firings = unfold(foon, plan, kitchen, target)
+    assert firings[0] == 2  # soft butter is consumed twice: soften fires twice, from two cold butters
+    assert at_kitchen[raw] == 2 and at_kitchen[pan] == 1 and created == {"dish": 1}
+    counts = derive_counts(foon, range(4), kitchen, (target,), overrides={"pan": 3}, stated={toast: 5})
+    assert dict(counts.at_node) == {raw: 2, pan: 3, toast: 5}
+
+
+def test_encoding_structure_and_one_state_per_instance():
+    task = encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL)
+    assert task.encoding == "instances" and task.goal == (Atom("goal-reached"),)
+    assert sorted(name for name, _ in task.objects) == ["bread_1", "butter_1", "faucet_1", "knife_1", "knife_2"]
+    cut = next(a for a in task.actions if a.unit == 0)
+    assert [t for _, t in cut.params] == ["bread", "knife"]
+    assert Atom(IS, ("?knife", "knife_clean")) in cut.pre and Atom(IS, ("?knife", "knife_clean")) in cut.delete
+    assert Atom(IS, ("?knife", "knife_dirty")) in cut.add
+    # Every instance starts in exactly one state.
+    starts = [a.args[0] for a in task.init if a.predicate == IS]
+    assert sorted(starts) == sorted(name for name, _ in task.objects)
+    assert ("knife", "physical-object") in task.types
+
+
+def test_override_and_kitchen_counts():
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
+    assert [name for name, label, _ in task.instances if label == "knife"] == ["knife_1"]
+    stated = Kitchen(KNIFE_KITCHEN.nodes, 3, "k", ((CLEAN, 3),))
+    task = encode_instances(KNIFE_FOON, stated, KNIFE_GOAL)
+    assert sum(label == "knife" for _, label, _ in task.instances) == 3
+
+
+def _fd(task: PlanningTask):
+    return fd.solve(*render(task), time_limit=60)
+
+
+def test_one_knife_needs_a_wash_and_the_validator_catches_the_tree_plan():
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
+    res = _fd(task)
+    assert res.solved
+    steps = instance_steps(task, res.plan)
+    assert [s.unit.motion.label for s in steps] == ["cut", "wash", "spread"]
+    trace = simulate_instances(task, steps, (BUTTERED,))
+    assert trace.ok and trace.states[-1]["knife_1"] == DIRTY and trace.goal_instance((BUTTERED,)) == "bread_1"
+    assert steps[0].text() == "cut bread_1, knife_1"
+    assert steps[1].text() == "wash knife_1 with faucet_1"  # the faucet: read in a stable state, bound on replay
+    # FOON's tree plan (cut, spread) is not physically executable with one knife.
+    cut, spread = (next(a.name for a in task.actions if a.unit == u) for u in (0, 1))
+    broken = instance_steps(task, [f"{cut} bread_1 knife_1", f"{spread} bread_1 knife_1"])
+    trace = simulate_instances(task, broken, (BUTTERED,))
+    assert not trace.ok
+    assert "knife_1 is knife (dirty), the unit needs it knife (clean)" in trace.validation.problems[0]
+    assert len(trace.states) == 2 and "cut bread_1, knife_1: bread_1: bread (sliced); knife_1: knife (dirty)" in (
+        trace_lines(trace, broken)[1])
+    with pytest.raises(InstancePlanError):
+        instance_steps(task, [f"{cut} bread_1"])
+    with pytest.raises(InstancePlanError):
+        instance_steps(task, ["fly bread_1"])
+
+
+def test_derived_counts_solve_without_washing():
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances")
+    res = _fd(task)
+    steps = instance_steps(task, res.plan)
+    assert simulate_instances(task, steps, (BUTTERED,)).ok
+    assert sorted(name for s in steps for r, name in s.bindings if r.label == "knife") == ["knife_1", "knife_2"]
+
+
+def test_a_unit_fires_twice_with_different_instances():
+    lemon, juice = n("lemon", "halved"), n("juice", "squeezed")
+    squeeze = unit("squeeze", [lemon, n("glass", "empty")], [n("lemon", "squeezed"), n("glass", "full"), juice])
+    pour = unit("pour", [n("glass", "full"), n("jug", "empty")], [n("glass", "empty"), n("jug", "half")])
+    top = unit("pour", [n("glass", "full"), n("jug", "half")], [n("glass", "empty"), n("jug", "full")])
+    foon = Foon((squeeze, pour, top))
+    kitchen = Kitchen(frozenset({lemon, n("glass", "empty"), n("jug", "empty")}))
+    goal = Goal(GoalSpec("jug"), (n("jug", "full"),))
+    task = encode_instances(foon, kitchen, goal, options=EncodeOptions(instances=(("lemon", 2), ("glass", 2))))
+    res = _fd(task)
+    steps = instance_steps(task, res.plan)
+    assert simulate_instances(task, steps, goal.candidates).ok
+    squeezes = [s for s in steps if s.unit.motion.label == "squeeze"]
+    assert len(squeezes) == 2 and squeezes[0].bindings != squeezes[1].bindings
+
+
+PARSE_DOMAIN = pddl.parser.domain.DomainParser()
+PARSE_PROBLEM = pddl.parser.problem.ProblemParser()
+
+
+def test_renders_to_pddl_the_pddl_package_parses_with_types():
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", costs="unit",
+                        categories=(("knife", ("cutlery", "utensil")), ("bread", ("baked goods",))))
+    domain_text, problem_text = render(task)
+    domain = PARSE_DOMAIN(domain_text)
+    problem = PARSE_PROBLEM(problem_text)
+    assert {a.name for a in domain.actions} == {a.name for a in task.actions}
+    assert len(problem.objects) == len(task.objects)
+    assert "knife - cutlery" in domain_text and "cutlery - utensil" in domain_text
+    assert "utensil - physical-object" in domain_text
+    assert render(compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", costs="unit", categories=(
+        ("knife", ("cutlery", "utensil")), ("bread", ("baked goods",))))) == (domain_text, problem_text)
+
+
+# -- an independent oracle: brute-force search of the ground task ----------------------------------
+
+
+def brute_force_solvable(task: PlanningTask, limit: int = 20000) -> bool | None:
+    """Breadth-first search over the grounded task (None when the state space exceeds `limit`)."""
+    by_type: dict[str, list[str]] = {}
+    for name, typ in task.objects:
+        by_type.setdefault(typ, []).append(name)
+    ground = []
+    for a in task.actions:
+        for args in itertools.product(*(by_type.get(t, []) for _, t in a.params)):
+            bind = dict(zip((v for v, _ in a.params), args, strict=True))
+
+            def g(atoms, bind=bind):
+                return frozenset(Atom(x.predicate, tuple(bind.get(y, y) for y in x.args)) for x in atoms)
+
+            ground.append((g(a.pre), g(a.add), g(a.delete)))
+    start = frozenset(task.init)
+    seen, queue = {start}, deque([start])
+    while queue:
+        state = queue.popleft()
+        if set(task.goal) <= state:
+            return True
+        for pre, add, delete in ground:
+            if pre <= state:
+                nxt = (state - delete) | add
+                if nxt not in seen:
+                    if len(seen) >= limit:
+                        return None
+                    seen.add(nxt)
+                    queue.append(nxt)
+    return False
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(foons(max_units=4), st.data())
+def test_derived_counts_solve_exactly_what_foon_solves(foon, data):
+    produced = sorted(foon.producers)
+    target = data.draw(st.sampled_from(produced))
+    inputs = sorted({x for u in foon.units for x in u.inputs})
+    kitchen = Kitchen(frozenset(data.draw(st.lists(st.sampled_from(inputs), max_size=4))))
+    goal = Goal(GoalSpec(target.label), (target,))
+    task = encode_instances(foon, kitchen, goal)
+    verdict = brute_force_solvable(task)
+    if verdict is None:
+        return
+    assert verdict == reachable(foon, kitchen.nodes).can_make(target)
+
+
+def test_no_instance_state_goes_unmentioned():
+    task = encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL)
+    consts = {c for c, _ in task.constants}
+    assert NOT_MADE in consts
+    for a in task.actions:
+        assert all(x.args[-1] in consts for x in (*a.pre, *a.add, *a.delete) if x.predicate == IS)
