@@ -8,6 +8,7 @@ from collections import deque
 import pddl.parser.domain
 import pddl.parser.problem
 import pytest
+from foon_strategies import foons
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -24,8 +25,6 @@ from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Atom, PlanningTask
 from foon2pddl.planners import fd
 from foon2pddl.planners.instance_plan import InstancePlanError, instance_steps, simulate_instances, trace_lines
-
-from foon_strategies import foons
 
 
 def n(label, *states):
