@@ -128,4 +128,4 @@ def with_utensils(kitchen: Kitchen, foon: Foon, utensils: Iterable[str]) -> Kitc
     if not labels:
         return kitchen
     extra = {project_node(n, kitchen.level) for n in foon.nodes if n.label in labels and is_base_node(n)}
-    return Kitchen(kitchen.nodes | extra, kitchen.level, kitchen.source)
+    return Kitchen(kitchen.nodes | extra, kitchen.level, kitchen.source, kitchen.counts)
