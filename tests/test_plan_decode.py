@@ -165,3 +165,23 @@ def test_up_engine_errors_and_timeouts():
     )
     assert up_engine.solve(hard, "pyperplan", time_limit=1.0).status == "timeout"
     render(hard)  # the same task is valid PDDL
+
+
+def test_doubled_plan_decodes_to_the_same_tree_and_says_so():
+    """Issue 11: every step doubled was accepted as a 26-unit tree with repeated units."""
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.planners.result import PlanResult
+    from foon2pddl.planners.solve import _finish
+
+    net = load_network([])
+    foon = net.at(3)
+    kitchen, goal = load_kitchen(None, net, 3), load_goal("guacamole", None, foon)
+    once = plan(foon, kitchen, goal, "tree")
+    doubled = tuple(s for s in once.result.plan for _ in (0, 1))
+    twice = _finish(PlanResult("solved", doubled, "test"), once.task, goal, kitchen.project(3).nodes, {}, False)
+    assert twice.status == "solved" and twice.tree == once.tree
+    assert len(set(twice.tree.units)) == len(twice.tree.units)
+    units = sum(once.task.action_for(s.split()[0]).unit is not None for s in once.result.plan)
+    assert twice.decoded.notes == (f"dropped {units} plan steps repeating a unit already applied "
+                                   "(no effect in this delete-free encoding)",)
+    assert once.decoded.notes == ()

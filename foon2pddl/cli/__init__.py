@@ -1,7 +1,10 @@
 """Command-line interface: `foon2pddl <command>`. One module per command group.
 
 Errors in user input print `path:line: message` on stderr and exit with status 2;
-no traceback reaches the user.
+no traceback reaches the user. SIGINT exits 130 and SIGTERM 143, after the same
+cleanup: every command runs in a `command_scope` (private TMPDIR, processes
+marked), so no process or temporary path of the command survives it, and
+half-written output files are removed.
 """
 
 from __future__ import annotations
@@ -12,25 +15,44 @@ import click
 
 from .. import __version__
 from ..errors import FoonError
+from ..io.atomic import discard_staged
+from ..io.interrupts import Terminated, sigterm_raises
+from ..planners.cleanup import command_scope
 
 
 class _Group(click.Group):
     """Click group that turns project errors into `path:line: message` and exit status 2."""
 
     def invoke(self, ctx: click.Context):
+        _escape_unencodable_output()
         try:
-            return super().invoke(ctx)
+            with sigterm_raises():
+                try:
+                    with command_scope():
+                        return super().invoke(ctx)
+                finally:
+                    discard_staged()
         except FoonError as exc:
             click.echo(f"{exc.location()}: error: {exc.message}", err=True)
             if exc.text is not None:
                 click.echo(f"    {exc.text!r}", err=True)
             ctx.exit(2)
-        except KeyboardInterrupt:
-            click.echo("interrupted", err=True)
-            ctx.exit(130)
+        except KeyboardInterrupt as exc:
+            terminated = isinstance(exc, Terminated)
+            click.echo("terminated" if terminated else "interrupted", err=True)
+            ctx.exit(143 if terminated else 130)
         except BrokenPipeError:
             sys.stderr.close()
             ctx.exit(1)
+
+
+def _escape_unencodable_output() -> None:
+    """Standard output and error print lone surrogates (undecodable bytes of file names) as escapes."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.reconfigure(errors="backslashreplace")
+        except (AttributeError, ValueError):
+            pass
 
 
 @click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})

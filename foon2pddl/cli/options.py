@@ -84,6 +84,13 @@ def check_output(output: Path | None, directory: bool = False) -> None:
         raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
 
 
+def check_time_limit(value: float | None) -> float | None:
+    """A `--time-limit` value: NaN is a usage error (exit 2); infinity means no limit."""
+    if value is not None and value != value:
+        raise click.BadParameter("not a number (give seconds, or 'inf' for no limit)")
+    return value
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:

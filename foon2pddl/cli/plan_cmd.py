@@ -17,6 +17,7 @@ from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
     check_output,
+    check_time_limit,
     containment_option,
     costs_option,
     encoding_option,
@@ -53,7 +54,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 
     validation = None if d is None else {
         "ok": d.ok, "plan": check(d.plan_check), "foon": check(d.validation), "up": check(d.up_validation),
-        "foon_semantics": d.foon_semantics,
+        "foon_semantics": d.foon_semantics, "notes": list(d.notes),
     }
     data = {
         "status": outcome.status,
@@ -86,7 +87,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
                    "(also {time}); its IPC plan file is read back.")
 @click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
 @click.option("--time-limit", "time_limit", type=click.FloatRange(min=0, min_open=True), default=300.0,
-              show_default=True, help="Seconds for the planner (translation and search).")
+              show_default=True, callback=lambda ctx, param, value: check_time_limit(value),
+              help="Seconds for the planner (translation and search); 'inf' (or over 1e6) for no limit.")
 @prune_option
 @costs_option
 @rates_option
@@ -142,6 +144,8 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         else:
             summary += f": {outcome.message or outcome.result.message}"
         click.echo(summary, err=True)
+        for note in outcome.decoded.notes if outcome.decoded is not None else ():
+            click.echo("note: " + note, err=True)
         if status == "unsolvable" and encoding != "state":
             click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
             if network == "reg":

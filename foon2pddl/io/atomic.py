@@ -1,10 +1,39 @@
-"""Atomic output: a file is either written whole or not at all."""
+"""Output files: a regular file is either written whole or not at all.
+
+A regular file (or a new one) is written to a hidden temporary file beside it and
+renamed over it, keeping an existing file's permission bits (a new file gets the
+umask's). A symbolic link is followed: its target is replaced, the link stays.
+Character devices, FIFOs and sockets (`-o /dev/stdout`, `-o /dev/null`, a named
+pipe) cannot be replaced atomically and must not be: they are written through.
+Text is encoded as UTF-8, lone surrogates (undecodable bytes of file names) as
+`\\udcff` escapes, so no output ever fails to encode.
+
+Several files written as a unit (`atomic_write_many`, compile's domain/problem
+pair) are renamed while holding an exclusive `flock` on their directory, so
+concurrent writers into one directory end with one writer's complete pair;
+readers that take a shared lock on the directory (`read_locked`) never see a
+mixed pair.
+"""
 
 from __future__ import annotations
 
+import fcntl
 import os
+import stat
 import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
+
+from .interrupts import signals_deferred
+
+#: Paths that name an open file descriptor of this process: always written through.
+_FD_PATHS = ("/dev/stdout", "/dev/stderr", "/dev/fd/", "/proc/self/fd/")
+
+
+def encode(data: str | bytes) -> bytes:
+    """UTF-8 bytes of output text; a lone surrogate becomes its `\\udcXX` escape."""
+    return data.encode("utf-8", "backslashreplace") if isinstance(data, str) else data
 
 
 def _umask_mode() -> int:
@@ -14,37 +43,101 @@ def _umask_mode() -> int:
     return 0o666 & ~mask
 
 
-def atomic_write(path: str | Path, data: str | bytes) -> None:
-    """Write `data` to `path` through a temporary file in the same directory and a rename."""
-    p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", dir=p.parent)
+def _target(path: Path) -> tuple[Path, os.stat_result | None]:
+    """Where to write `path`: itself, or its final symlink target; with its stat (None if absent)."""
+    real = Path(os.path.realpath(path)) if path.is_symlink() else path
+    try:
+        return real, os.stat(real)
+    except FileNotFoundError:
+        return real, None
+
+
+def _writes_through(path: Path, info: os.stat_result | None) -> bool:
+    if str(path).startswith(_FD_PATHS):
+        return True
+    return info is not None and not stat.S_ISREG(info.st_mode) and not stat.S_ISDIR(info.st_mode)
+
+
+def _write_through(path: Path, data: bytes) -> None:
+    with open(path, "wb") as fh:  # O_TRUNC is ignored by devices and FIFOs
+        fh.write(data)
+
+
+#: Temporary files staged and not yet renamed or removed (removed on every exit path).
+_STAGED: set[str] = set()
+
+
+def _discard(tmp: str) -> None:
+    Path(tmp).unlink(missing_ok=True)
+    _STAGED.discard(tmp)
+
+
+def _stage(path: Path, data: bytes, info: os.stat_result | None) -> str:
+    """A hidden temporary file beside `path` holding `data`, with the mode `path` should get."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with signals_deferred():  # an interrupt between mkstemp and the caller's cleanup would leak it
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        _STAGED.add(tmp)
     try:
         with os.fdopen(fd, "wb") as fh:
-            fh.write(data.encode("utf-8") if isinstance(data, str) else data)
-        os.chmod(tmp, _umask_mode())
-        os.replace(tmp, p)
+            fh.write(data)
+        os.chmod(tmp, stat.S_IMODE(info.st_mode) if info is not None else _umask_mode())
     except BaseException:
-        Path(tmp).unlink(missing_ok=True)
+        _discard(tmp)
+        raise
+    return tmp
+
+
+def discard_staged() -> None:
+    """Remove every staged temporary file still present (called when a command ends abnormally)."""
+    for tmp in list(_STAGED):
+        _discard(tmp)
+
+
+def atomic_write(path: str | Path, data: str | bytes) -> None:
+    """Write `data` to `path` (see the module doc: atomic for regular files, through for devices)."""
+    target, info = _target(Path(path))
+    if _writes_through(Path(path), info):
+        _write_through(Path(path), encode(data))
+        return
+    tmp = None
+    try:
+        tmp = _stage(target, encode(data), info)
+        os.replace(tmp, target)
+        _STAGED.discard(tmp)
+    except BaseException:
+        if tmp is not None:
+            _discard(tmp)
         raise
 
 
+@contextmanager
+def locked_dir(directory: Path, shared: bool = False) -> Iterator[None]:
+    """Hold an advisory `flock` on a directory (exclusive for writers, shared for readers)."""
+    fd = os.open(directory, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_SH if shared else fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)
+
+
 def atomic_write_many(files: dict[Path, str | bytes]) -> None:
-    """Write several files; if any cannot be prepared, none is replaced."""
+    """Write several files as a unit: all staged first (none replaced if any fails), then renamed
+    under an exclusive lock on each directory, so concurrent writers never leave a mixed set."""
     staged: list[tuple[str, Path]] = []
     try:
         for path, data in files.items():
-            path.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            staged.append((tmp, path))
-            with os.fdopen(fd, "wb") as fh:
-                fh.write(data.encode("utf-8") if isinstance(data, str) else data)
-            os.chmod(tmp, _umask_mode())
-        for tmp, path in staged:
-            os.replace(tmp, path)
+            target, info = _target(path)
+            staged.append((_stage(target, encode(data), info), target))
+        dirs = sorted({target.parent for _, target in staged})
+        with _locked_all(dirs):
+            for tmp, target in staged:
+                os.replace(tmp, target)
+                _STAGED.discard(tmp)
     except BaseException:
         for tmp, _ in staged:
-            Path(tmp).unlink(missing_ok=True)
+            _discard(tmp)
         raise
 
 
@@ -65,6 +158,22 @@ def check_writable(path: str | Path, directory: bool = False) -> None:
         base = base.parent
     if not base.is_dir():
         raise NotADirectoryError(20, f"{base} is not a directory")
-    fd, tmp = tempfile.mkstemp(prefix=".foon2pddl-probe.", dir=base)
-    os.close(fd)
-    os.unlink(tmp)
+    with signals_deferred():  # an interrupt must not leave the probe behind
+        fd, tmp = tempfile.mkstemp(prefix=".foon2pddl-probe.", dir=base)
+        os.close(fd)
+        os.unlink(tmp)
+
+
+@contextmanager
+def _locked_all(dirs: list[Path]) -> Iterator[None]:
+    if not dirs:
+        yield
+        return
+    with locked_dir(dirs[0]), _locked_all(dirs[1:]):
+        yield
+
+
+def read_locked(paths: list[Path]) -> list[bytes]:
+    """Read files written together by `atomic_write_many` (same directory) as one consistent set."""
+    with locked_dir(paths[0].parent, shared=True):
+        return [p.read_bytes() for p in paths]

@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
-from ..model.foon import make_state, normalize_label
+from ..model.foon import State, make_state, normalize_label
 from ..model.goal import GoalSpec, spec_of_node
 from .parser import parse_objects, read_text
 
-_STATE = re.compile(r"^(?P<label>[^\[\]{}]*?)\s*(?:\[(?P<rel>[^\[\]]*)\])?\s*(?:\{(?P<ing>[^{}]*)\})?$")
+_EXPECTED = "(expected 'state', 'state [object]' or 'state {a, b}')"
 
 
 def _split_states(text: str) -> list[str]:
@@ -33,6 +32,37 @@ def _split_states(text: str) -> list[str]:
     return [p.strip() for p in parts if p.strip()]
 
 
+def _bracketed(text: str, open_: str, close: str) -> tuple[str, str] | None:
+    """`(inside, rest)` when `text` starts with `open_ ... close` with no second `open_` inside, else None."""
+    if not text.startswith(open_):
+        return None
+    end = text.find(close, 1)
+    if end < 0 or open_ in text[1:end]:
+        return None
+    return text[1:end], text[end + 1:].lstrip()
+
+
+def parse_state_text(part: str) -> State:
+    """One state: `label`, `label [related]`, `label {a, b}` or `label [related] {a, b}`.
+
+    A left-to-right scan (linear time; the regular expression it replaces backtracked
+    cubically on blanks before a bracket). The label holds no bracket; `[...]` may hold
+    braces and `{...}` brackets, as before. Raises ValueError.
+    """
+    cut = min((i for i in (part.find(c) for c in "[]{}") if i >= 0), default=len(part))
+    label, rest = part[:cut], part[cut:]
+    related, ingredients = "", ""
+    inner = _bracketed(rest, "[", "]")
+    if inner is not None:
+        related, rest = inner
+    inner = _bracketed(rest, "{", "}")
+    if inner is not None:
+        ingredients, rest = inner
+    if rest or not label.strip():
+        raise ValueError(f"cannot read state {part!r} {_EXPECTED}")
+    return make_state(label, related, [i for i in ingredients.split(",") if i.strip()])
+
+
 def parse_goal_spec(text: str) -> GoalSpec:
     """Parse the goal syntax; raises ValueError with what was expected."""
     label, sep, rest = text.partition(":")
@@ -41,13 +71,7 @@ def parse_goal_spec(text: str) -> GoalSpec:
         raise ValueError("goal has no object label (expected 'label' or 'label: state, ...')")
     if not sep:
         return GoalSpec(label)
-    states = []
-    for part in _split_states(rest):
-        m = _STATE.match(part)
-        if not m or not m.group("label").strip():
-            raise ValueError(f"cannot read state {part!r} (expected 'state', 'state [object]' or 'state {{a, b}}')")
-        ing = [i for i in (m.group("ing") or "").split(",") if i.strip()]
-        states.append(make_state(m.group("label"), m.group("rel") or "", ing))
+    states = [parse_state_text(part) for part in _split_states(rest)]
     return GoalSpec(label, tuple(sorted(set(states))))
 
 

@@ -13,7 +13,6 @@ Every goal keeps the file and line it came from for error messages and reports.
 
 from __future__ import annotations
 
-import json
 import re
 import sys
 from dataclasses import dataclass
@@ -23,6 +22,7 @@ from ..errors import FoonSyntaxError
 from ..model.foon import make_node
 from ..model.goal import GoalSpec, spec_of_node
 from .goal_files import parse_goal_spec
+from .json_text import load_json
 from .jsonio import item_lines, node_from_dict
 from .kitchen_files import json_node, looks_like_foon
 from .parser import parse_objects, read_text
@@ -54,7 +54,7 @@ def parse_described(text: str) -> GoalSpec:
 def parse_goal_lines(text: str, path: str) -> list[GoalEntry]:
     """Plain text: one goal a line (module doc); `#` comments and blank lines skipped."""
     out = []
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw.strip()
         if not line or line.startswith("#") or _TABLE_OTHER.match(line):
             continue
@@ -69,10 +69,7 @@ def parse_goal_lines(text: str, path: str) -> list[GoalEntry]:
 
 def parse_goal_json(text: str, path: str) -> list[GoalEntry]:
     """A goal_nodes.json list, or the `goals --json` document."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonSyntaxError(path, exc.lineno, f"invalid JSON: {exc.msg}") from None
+    data = load_json(text, path)  # located errors for bad JSON, deep nesting, huge integers
     if isinstance(data, dict) and isinstance(data.get("goals"), list):
         rows = data["goals"]
         lines = item_lines(text, "goals")

@@ -10,14 +10,14 @@ the file, the line of the offending JSON item and its place
 from __future__ import annotations
 
 import json
-import json.scanner
 from pathlib import Path
 from typing import Any
 
 from ..errors import FoonSyntaxError
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
 from ..model.levels import LEVELS
-from .parser import CONTROL_CHARS, read_text
+from .json_text import decode_tracked, line_of, load_json, text_problem
+from .parser import read_text
 
 FORMAT = "foon2pddl.foon"
 VERSION = 1
@@ -132,8 +132,9 @@ def _label(data: dict, key: str, where: tuple, what: str) -> str:
         raise _Invalid(where + (key,), f"{what} must be a non-empty string, found {_kind(value)}")
     if not value.strip():
         raise _Invalid(where + (key,), f"{what} must be a non-empty string, found a blank one")
-    if CONTROL_CHARS.search(value):
-        raise _Invalid(where + (key,), f"control character in {what}")
+    problem = text_problem(value, what)
+    if problem:
+        raise _Invalid(where + (key,), problem)
     return value
 
 
@@ -152,8 +153,9 @@ def _strings(data: dict, key: str, where: tuple, what: str) -> list[str]:
     for i, item in enumerate(items):
         if not isinstance(item, str) or not item.strip():
             raise _Invalid(where + (key, i), f"{what} must hold non-empty strings, found {_kind(item)}")
-        if CONTROL_CHARS.search(item):
-            raise _Invalid(where + (key, i), f"control character in {what}")
+        problem = text_problem(item, what)
+        if problem:
+            raise _Invalid(where + (key, i), problem)
     return items
 
 
@@ -161,8 +163,9 @@ def _state(data: Any, where: tuple, level: int) -> State:
     d = _fields(data, where, "state", ("label",), ("related", "ingredients"))
     label = _label(d, "label", where, "state label")
     related = _opt(d, "related", (str,), "", where, "related object")
-    if CONTROL_CHARS.search(related):
-        raise _Invalid(where + ("related",), "control character in related object")
+    problem = text_problem(related, "related object")
+    if problem:
+        raise _Invalid(where + ("related",), problem)
     ingredients = _strings(d, "ingredients", where, "ingredients")
     if ingredients and level < 3:
         raise _Invalid(where + ("ingredients",), f"ingredient list in a level-{level} network (level 3 only)")
@@ -200,6 +203,10 @@ def _motion(data: Any, where: tuple) -> Motion:
         raise _Invalid(where + ("label",), "motion label ends with '*' (write \"composite\": true instead)")
     start = _opt(d, "start", (str,), None, where, "start time")
     end = _opt(d, "end", (str,), None, where, "end time")
+    for key, value in (("start", start), ("end", end)):
+        problem = value and text_problem(value, f"{key} time")
+        if problem:
+            raise _Invalid(where + (key,), problem)
     composite = _opt(d, "composite", (bool,), False, where, "composite")
     return Motion(normalize_label(label), start, end, composite)
 
@@ -253,16 +260,11 @@ def foon_from_dict(data: Any, path: str = "<json>") -> Foon:
 
 def parse_json(text: str, path: str = "<json>") -> Foon:
     """Parse JSON text of a network; errors name the line and the item (`units[3].motion.label`)."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonSyntaxError(path, exc.lineno, f"invalid JSON: {exc.msg} (column {exc.colno})") from None
-    except RecursionError:
-        raise FoonSyntaxError(path, 1, "invalid JSON: nested too deeply") from None
+    data = load_json(text, path)
     try:
         return _foon(data)
     except _Invalid as exc:
-        line = _line_of(text, exc.where)
+        line = line_of(text, exc.where)
         raise FoonSyntaxError(path, line, f"{_pointer(exc.where)}: {exc.message}") from None
 
 
@@ -283,47 +285,9 @@ def node_from_dict(data: Any, path: str = "<json>", line: int = 0) -> ObjectNode
 def item_lines(text: str, key: str | None = None) -> list[int]:
     """Line of each item of the top-level JSON list (or of the list under `key` of the top-level
     object); 1-based, [] when there is no such list."""
-    root, starts = _decode_tracked(text)
+    root, starts = decode_tracked(text)
     if key is not None and isinstance(root, dict):
         root = root.get(key)
     if not isinstance(root, list):
         return []
     return [text.count("\n", 0, starts.get(id(item), 0)) + 1 for item in root]
-
-
-def _line_of(text: str, where: tuple[str | int, ...]) -> int:
-    """Line of the deepest JSON object or list on the path `where` (re-parses, only on error)."""
-    node, starts = _decode_tracked(text)
-    pos = starts.get(id(node), 0)
-    for step in where:
-        try:
-            node = node[step]
-        except (KeyError, IndexError, TypeError):
-            break
-        pos = starts.get(id(node), pos)
-    return text.count("\n", 0, pos) + 1
-
-
-def _decode_tracked(text: str) -> tuple[Any, dict[int, int]]:
-    """The decoded value and the start offset of every object and list in it (by id)."""
-    starts: dict[int, int] = {}
-    decoder = json.JSONDecoder()
-    parse_object, parse_array = decoder.parse_object, decoder.parse_array
-
-    def tracked_object(s_and_end, *args):
-        value, end = parse_object(s_and_end, *args)
-        starts[id(value)] = s_and_end[1] - 1
-        return value, end
-
-    def tracked_array(s_and_end, *args):
-        value, end = parse_array(s_and_end, *args)
-        starts[id(value)] = s_and_end[1] - 1
-        return value, end
-
-    decoder.parse_object, decoder.parse_array = tracked_object, tracked_array
-    decoder.memo = {}
-    decoder.scan_once = json.scanner.py_make_scanner(decoder)
-    try:
-        return decoder.decode(text), starts
-    except (ValueError, RecursionError):
-        return None, {}

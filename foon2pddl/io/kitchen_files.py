@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
+from .json_text import line_of, load_json, text_problem
 from .parser import parse_objects, read_text
 
 
@@ -15,19 +15,28 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
     """One `{"label", "states", "ingredients", "container"}` item of the JSON convention.
 
     `states` are state labels; `container` becomes the state `in [container]`;
-    `ingredients` become the state `contains {...}`.
+    `ingredients` become the state `contains {...}`. Errors name line 0 (`read_json_nodes` locates them).
     """
     if not isinstance(item, dict) or not isinstance(item.get("label"), str) or not item["label"].strip():
         raise FoonSyntaxError(path, 0, f"item {index}: expected an object with a non-empty string 'label'")
     states_raw = item.get("states") or []
     ingredients = item.get("ingredients") or []
     container = item.get("container")
+    label = item["label"]
+    problem = text_problem(label, "label")
+    if problem:
+        raise FoonSyntaxError(path, 0, f"item {index}: {problem}")
     if not isinstance(states_raw, list) or not all(isinstance(s, str) for s in states_raw):
-        raise FoonSyntaxError(path, 0, f"item {index} ({item['label']}): 'states' must be a list of strings")
+        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'states' must be a list of strings")
     if not isinstance(ingredients, list) or not all(isinstance(s, str) for s in ingredients):
-        raise FoonSyntaxError(path, 0, f"item {index} ({item['label']}): 'ingredients' must be a list of strings")
+        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'ingredients' must be a list of strings")
     if container is not None and not isinstance(container, str):
-        raise FoonSyntaxError(path, 0, f"item {index} ({item['label']}): 'container' must be a string or null")
+        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'container' must be a string or null")
+    for what, text in [("state", s) for s in states_raw] + [("ingredient", s) for s in ingredients] + \
+            [("container", container or "")]:
+        problem = text_problem(text, what)
+        if problem:
+            raise FoonSyntaxError(path, 0, f"item {index} ({label}): {problem}")
     states: list[State] = [make_state(s) for s in states_raw if s.strip()]
     if container and container.strip():
         states.append(make_state("in", container))
@@ -39,13 +48,16 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
 def read_json_nodes(path: Path) -> list[ObjectNode]:
     """Nodes of a JSON list in the public search projects' convention."""
     text = read_text(path)
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonSyntaxError(str(path), exc.lineno, f"invalid JSON: {exc.msg}") from None
+    data = load_json(text, str(path))
     if not isinstance(data, list):
         raise FoonSyntaxError(str(path), 1, "expected a JSON list of objects")
-    return [json_node(item, str(path), i) for i, item in enumerate(data)]
+    nodes = []
+    for i, item in enumerate(data):
+        try:
+            nodes.append(json_node(item, str(path), i))
+        except FoonSyntaxError as exc:  # locate the item (a re-parse, only on error)
+            raise FoonSyntaxError(exc.path, line_of(text, (i,)), exc.message) from None
+    return nodes
 
 
 def read_node_lines(text: str, path: str) -> list[ObjectNode]:
@@ -53,7 +65,7 @@ def read_node_lines(text: str, path: str) -> list[ObjectNode]:
     from .goal_files import parse_goal_spec
 
     nodes = []
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only: U+2028 is not a line break here
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
@@ -66,7 +78,7 @@ def read_node_lines(text: str, path: str) -> list[ObjectNode]:
 
 
 def looks_like_foon(text: str) -> bool:
-    for line in text.splitlines():
+    for line in text.split("\n"):
         s = line.strip()
         if s and not s.startswith("#"):
             return s.startswith("//") or (s[:1] in "OS" and "\t" in s)

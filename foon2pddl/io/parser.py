@@ -8,7 +8,9 @@ are skipped with a `ParseWarning`, never half-added.
 
 from __future__ import annotations
 
+import os
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -18,6 +20,8 @@ from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State
 _ID = re.compile(r"[OSM]\d*")
 CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _INT = re.compile(r"\d+")
+#: Longest integer read (Python's default int-string limit): longer ones are errors, never ValueError.
+MAX_INT_DIGITS = 4300
 
 
 @dataclass(frozen=True)
@@ -29,12 +33,31 @@ class ParseResult:
     urls: tuple[str, ...] = ()
 
 
-def read_text(path: Path) -> str:
-    """Read a file as UTF-8 (BOM tolerated); a decoding error names the line."""
+def read_bytes(path: Path) -> bytes:
+    """A regular file's bytes. FIFOs, devices and sockets are refused without blocking
+    (opened non-blocking, checked with fstat), so a FIFO never hangs a command."""
     try:
-        data = path.read_bytes()
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError as exc:
         raise FoonSyntaxError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
+    try:
+        info = os.fstat(fd)
+        if stat.S_ISDIR(info.st_mode):
+            raise FoonSyntaxError(str(path), 0, "cannot read file: Is a directory")
+        if not stat.S_ISREG(info.st_mode):
+            raise FoonSyntaxError(str(path), 0, "not a regular file (FIFOs and devices are not read)")
+        os.set_blocking(fd, True)
+        with os.fdopen(fd, "rb", closefd=False) as fh:
+            return fh.read()
+    except OSError as exc:
+        raise FoonSyntaxError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
+    finally:
+        os.close(fd)
+
+
+def read_text(path: Path) -> str:
+    """Read a regular file as UTF-8 (BOM tolerated); a decoding error names the line."""
+    data = read_bytes(path)
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
@@ -230,20 +253,28 @@ def _parse_object(fields: list[str] | tuple[str, ...], fail) -> _PendingObject:
             goal = True
             value = value[:-1]
             if i == 0:
-                flag = int(value)
+                flag = _int(value, fail)
             else:
-                dish = int(value)
+                dish = _int(value, fail)
         elif _INT.fullmatch(value):
             if i == 0:
-                flag = int(value)
+                flag = _int(value, fail)
             elif dish is None:
-                dish = int(value)
+                dish = _int(value, fail)
             else:
                 raise fail(f"unexpected extra field {value!r} on object line")
         else:
             what = "motion identifier 0/1" if i == 0 else "dish marker (integer) or '!'"
             raise fail(f"expected {what}, found {value!r}")
     return _PendingObject(label, flag, goal, dish)
+
+
+def _int(digits: str, fail) -> int:
+    """A field of digits as an int; more than MAX_INT_DIGITS significant digits is an error."""
+    significant = digits.lstrip("0") or "0"
+    if len(significant) > MAX_INT_DIGITS:
+        raise fail(f"integer field with {len(significant)} digits (at most {MAX_INT_DIGITS} are read)")
+    return int(significant)
 
 
 def _split_list(body: str) -> list[str]:

@@ -49,7 +49,7 @@ def parse_rates(text: str, path: str = "<rates>", default: float = DEFAULT_RATE)
     """Parse rates text; errors name path and line."""
     table: dict[str, float] = {}
     seen_at: dict[str, int] = {}
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only, as the FOON reader
         line = raw.strip()
         if not line or line.startswith("#"):
             continue

@@ -6,9 +6,26 @@ format can carry (no tabs, newlines, brackets or commas inside labels).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, State
+
+#: What `escape_text` escapes: the backslash, C0/C1 controls (every line break `str.splitlines` knows
+#: among them), U+2028/U+2029 and lone surrogates (undecodable bytes of file names).
+_UNSAFE = re.compile(r"[\\\x00-\x1f\x7f-\x9f\u2028\u2029\ud800-\udfff]")
+_NAMED = {"\\": "\\\\", "\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+
+def _escape_char(m: re.Match[str]) -> str:
+    ch = m.group()
+    return _NAMED.get(ch) or (f"\\x{ord(ch):02x}" if ord(ch) < 0x100 else f"\\u{ord(ch):04x}")
+
+
+def escape_text(text: str) -> str:
+    """`text` (a file name in a comment) on one line, as valid UTF-8: Python-style escapes for
+    backslashes, control characters, line and paragraph separators and lone surrogates."""
+    return _UNSAFE.sub(_escape_char, text)
 
 
 class _Ids:
@@ -59,8 +76,8 @@ def write_unit(unit: FunctionalUnit, ids=_no_ids, provenance: bool = False) -> s
     """A unit followed by its `//` separator."""
     head = ""
     if provenance:
-        head = "".join(f"# from {s.path}:{s.line}"
-                       + (f" (expanded from {s.expanded_from})" if s.expanded_from else "") + "\n"
+        head = "".join(f"# from {escape_text(s.path)}:{s.line}"
+                       + (f" (expanded from {escape_text(s.expanded_from)})" if s.expanded_from else "") + "\n"
                        for s in unit.sources)
     return (
         head
@@ -75,7 +92,7 @@ def write_units(units: Iterable[FunctionalUnit], *, with_ids: bool = False, prov
                 header: str = "") -> str:
     """FOON text for a sequence of units (a network or a task tree)."""
     ids = _Ids() if with_ids else _no_ids
-    head = "".join(f"# {line}\n" for line in header.splitlines())
+    head = "".join(f"# {escape_text(line)}\n" for line in header.split("\n"))
     return head + "//\n" + "".join(write_unit(u, ids, provenance) for u in units)
 
 

@@ -55,6 +55,7 @@ class Decoded:
     plan_check: Validation = Validation(True)
     up_validation: Validation | None = None
     foon_semantics: bool = True
+    notes: tuple[str, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -80,6 +81,16 @@ def plan_units(task: PlanningTask, steps: Sequence[str]) -> tuple[FunctionalUnit
     return tuple(units)
 
 
+def delete_free(task: PlanningTask) -> bool:
+    """No action deletes anything: applying a unit's action again changes nothing."""
+    return not any(a.delete for a in task.actions)
+
+
+def first_occurrences(units: Sequence[FunctionalUnit]) -> tuple[FunctionalUnit, ...]:
+    """The units without repeats of one already applied (first occurrence kept, order kept)."""
+    return tuple(dict.fromkeys(units))
+
+
 def goal_node(goal: Goal, level: int, kitchen_nodes: Iterable[ObjectNode],
               units: Sequence[FunctionalUnit]) -> ObjectNode:
     """The first goal candidate (at `level`) that the kitchen plus the units' outputs hold, else the first candidate."""
@@ -94,10 +105,13 @@ def to_tree(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes:
     """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for an unknown action.
 
     For encodings with FOON's semantics, steps the goal does not need are dropped
-    (`tasktree.justify`); the raw plan is still checked step by step in `check`.
+    (`tasktree.justify`); in delete-free tasks so are repeats of a unit already applied
+    (`check` notes them); the raw plan is still checked step by step in `check`.
     """
     kitchen_nodes = frozenset(kitchen_nodes)
     units = plan_units(task, steps)
+    if delete_free(task):
+        units = first_occurrences(units)
     target = goal_node(goal, task.level, kitchen_nodes, units)
     if task.encoding not in NON_FOON_ENCODINGS:
         units = justify(units, kitchen_nodes, target)
@@ -110,9 +124,16 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     up = None
     if up_validate and len(task.actions) <= UP_VALIDATE_MAX_ACTIONS:
         up = up_validation(task, steps)
+    notes = ()
+    if delete_free(task):
+        units = plan_units(task, steps)
+        repeats = len(units) - len(first_occurrences(units))
+        if repeats:
+            notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
+                     "(no effect in this delete-free encoding)",)
     # a task compiled under --containment infer holds inference units: validate under the same rule
     return Decoded(tree, validate(tree, kitchen_nodes, containment_of(task.units)), simulate_plan(task, steps), up,
-                   task.encoding not in NON_FOON_ENCODINGS)
+                   task.encoding not in NON_FOON_ENCODINGS, notes)
 
 
 def decode(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,

@@ -6,23 +6,29 @@ the time limit in whole seconds) replaced by paths in that directory. The plan
 is read back as an IPC plan file (`(action arg ...)` lines, `;` comments) from
 `{plan}`, or, when the planner writes elsewhere, from `sas_plan` (Fast
 Downward's default) or `problem.pddl.soln` (pyperplan's). A planner that exits
-normally without a plan reports the task unsolvable; a non-zero exit without a
-plan is an error, except Fast Downward's unsolvable codes 10-13 (its codes 1-3
-with a plan still mean a plan was found; the plan is validated anyway).
+without a plan reports the task unsolvable only when it says so: Fast
+Downward's unsolvable codes 10-13, or output such as "unsolvable" or "no
+solution" (`SAYS_UNSOLVABLE`); otherwise it is an error (a crash that exits 0
+must not pass for a proof). Its codes 1-3 with a plan still mean a plan was
+found; the plan is validated anyway.
 """
 
 from __future__ import annotations
 
 import math
+import re
 import shlex
 import tempfile
 import time
 from pathlib import Path
 
-from .process import run_process
+from .process import bounded_timeout, run_process
 from .result import PlanResult, parse_plan_text, tail
 
 PLACEHOLDERS = ("{domain}", "{problem}", "{plan}", "{time}")
+#: What planners print when they conclude there is no plan (FD, pyperplan, common wordings).
+SAYS_UNSOLVABLE = re.compile(r"unsolvable|no solution|no plan (?:was |could be )?found|"
+                             r"search stopped without finding a solution|goal (?:is )?unreachable", re.I)
 
 
 def split_command(cmd: str) -> list[str]:
@@ -48,7 +54,8 @@ def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | 
         domain.write_text(domain_text)
         problem.write_text(problem_text)
         write_s = time.perf_counter() - t0
-        seconds = "" if time_limit is None else str(max(1, math.ceil(time_limit)))
+        bounded = bounded_timeout(time_limit)
+        seconds = "" if bounded is None else str(max(1, math.ceil(bounded)))
         subst = {"{domain}": str(domain), "{problem}": str(problem), "{plan}": str(plan), "{time}": seconds}
         argv = []
         for word in words:
@@ -56,7 +63,7 @@ def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | 
                 word = word.replace(key, value)
             argv.append(word)
         try:
-            run = run_process(argv, work, time_limit)
+            run = run_process(argv, work, bounded)
         except OSError as exc:
             return PlanResult("error", (), name, f"cannot run planner command: {exc}", {"write": write_s})
         timings = {"write": write_s, "search": run.seconds}
@@ -65,6 +72,8 @@ def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | 
         found = next((p for p in (plan, work / "sas_plan", work / "problem.pddl.soln") if p.is_file()), None)
         if found is not None and run.returncode in (0, 1, 2, 3):
             return PlanResult("solved", parse_plan_text(found.read_text(errors="replace")), name, "plan found", timings)
-        if run.returncode == 0 or run.returncode in (10, 11, 12, 13):
+        if run.returncode in (10, 11, 12, 13) or (run.returncode == 0 and SAYS_UNSOLVABLE.search(run.output)):
             return PlanResult("unsolvable", (), name, f"planner wrote no plan (exit code {run.returncode})", timings)
-        return PlanResult("error", (), name, f"planner exit code {run.returncode}: {tail(run.output)}", timings)
+        what = "wrote no plan and did not say the task is unsolvable" if run.returncode == 0 else "exit code"
+        return PlanResult("error", (), name, f"planner {what} (exit code {run.returncode}): {tail(run.output)}",
+                          timings)

@@ -1,11 +1,18 @@
-"""Running a planner process: own process group, time limit, optional memory limit.
+"""Running a planner process: own process group, time limit, optional memory limit, bounded output.
 
 Every planner run gets its own working directory from the caller (planners
 write files such as `output.sas` into it), so concurrent runs never share one.
+The process writes its stdout and stderr to a file there (`OUTPUT_FILE`), not
+to a pipe: memory stays bounded whatever it prints (`ProcessRun.output` keeps
+the head and the tail), and a daemon child that inherited the output cannot
+make us wait for it. When the run ends (exit, time limit or interrupt) its
+process group and every process carrying its mark (`cleanup.MARK`, inherited
+even across `setsid`) are killed.
 """
 
 from __future__ import annotations
 
+import math
 import os
 import resource
 import signal
@@ -15,18 +22,57 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..io.interrupts import signals_deferred
+from .cleanup import MARK, kill_marked, new_token
+
+#: Output file of a run, in its working directory.
+OUTPUT_FILE = "planner-output.log"
+#: Bytes of output kept in memory: the first HEAD_BYTES and the last TAIL_BYTES.
+HEAD_BYTES = 64 * 1024
+TAIL_BYTES = 256 * 1024
+#: Longer time limits (seconds, ~11 days) mean no limit: waits take them as C ints of milliseconds.
+MAX_TIMEOUT = 1e6
+
 
 @dataclass(frozen=True)
 class ProcessRun:
-    """How a process ended: exit code (None when killed at the time limit), its output, wall time."""
+    """How a process ended: exit code (None when killed at the time limit), its output
+    (head and tail when long), wall time, and the output's full size in bytes."""
 
     returncode: int | None
     output: str
     seconds: float
+    output_bytes: int = 0
 
     @property
     def timed_out(self) -> bool:
         return self.returncode is None
+
+
+def bounded_timeout(seconds: float | None) -> float | None:
+    """A time limit every wait accepts: None (no limit) for None, infinity or more than MAX_TIMEOUT;
+    at least a millisecond. Raises ValueError for NaN."""
+    if seconds is None:
+        return None
+    if math.isnan(seconds):
+        raise ValueError("time limit is not a number")
+    return None if seconds > MAX_TIMEOUT else max(seconds, 0.001)
+
+
+def read_capped(path: Path, head: int = HEAD_BYTES, tail: int = TAIL_BYTES) -> tuple[str, int]:
+    """(text, size) of an output file: the whole text, or its head and tail around an omission note."""
+    try:
+        size = path.stat().st_size
+        with open(path, "rb") as fh:
+            if size <= head + tail:
+                data = fh.read()
+            else:
+                first = fh.read(head)
+                fh.seek(size - tail)
+                data = first + f"\n[... {size - head - tail} bytes of output omitted ...]\n".encode() + fh.read()
+    except OSError:
+        return "", 0
+    return data.decode("utf-8", "replace"), size
 
 
 def run_process(
@@ -39,47 +85,57 @@ def run_process(
     env: Mapping[str, str] | None = None,
     memory_limit_mb: int | None = None,
 ) -> ProcessRun:
-    """Run `cmd` (no shell) in `cwd`; kill its whole process group at `timeout` seconds.
+    """Run `cmd` (no shell) in `cwd`; at `timeout` seconds (None: no limit) kill it and everything it started.
 
-    stdout and stderr are merged into `output`. Raises OSError when the command cannot start.
+    stdout and stderr are merged into `cwd/OUTPUT_FILE`; `output` holds at most
+    HEAD_BYTES + TAIL_BYTES of it. Raises OSError when the command cannot start.
     """
+    timeout = bounded_timeout(timeout)
+    token = new_token()
+    run_env = dict(os.environ if env is None else env)
+    run_env[MARK] = token
+    if stdin_text is not None:
+        stdin_path = cwd / "planner-input.txt"
+        stdin_path.write_text(stdin_text)
+    log = cwd / OUTPUT_FILE
     t0 = time.perf_counter()
-    stdin = open(stdin_path, "rb") if stdin_path is not None else (subprocess.PIPE if stdin_text is not None else subprocess.DEVNULL)
+    proc: subprocess.Popen | None = None
+    code: int | None = None
     try:
-        proc = subprocess.Popen(
-            list(cmd), cwd=cwd, stdin=stdin, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-            env=dict(env) if env is not None else None, start_new_session=True,
-        )
-    finally:
-        if stdin_path is not None:
-            stdin.close()
-    if memory_limit_mb is not None:
-        limit = memory_limit_mb * 1024 * 1024
+        # Not under signals_deferred (the child would inherit the blocked mask): an interrupt before
+        # `proc` is bound is covered by the mark, which the child carries from its first instruction.
+        with open(log, "wb") as out, open(stdin_path or os.devnull, "rb") as stdin:
+            proc = subprocess.Popen(list(cmd), cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
+                                    env=run_env, start_new_session=True)
+        if memory_limit_mb is not None:
+            limit = memory_limit_mb * 1024 * 1024
+            try:
+                resource.prlimit(proc.pid, resource.RLIMIT_AS, (limit, limit))
+            except (OSError, ValueError):
+                pass
         try:
-            resource.prlimit(proc.pid, resource.RLIMIT_AS, (limit, limit))
-        except (OSError, ValueError):
-            pass
-    data = stdin_text.encode() if stdin_text is not None else None
-    try:
-        out, _ = proc.communicate(data, timeout=None if timeout is None else max(timeout, 0.001))
-        code: int | None = proc.returncode
-    except subprocess.TimeoutExpired:
-        _kill_group(proc)
-        out, _ = proc.communicate()
-        code = None
-    except BaseException:
-        _kill_group(proc)
+            code = proc.wait(timeout)
+        except subprocess.TimeoutExpired:
+            code = None
+    finally:
+        with signals_deferred():
+            _end(proc, token)
+    seconds = time.perf_counter() - t0
+    output, size = read_capped(log)
+    return ProcessRun(code, output, seconds, size)
+
+
+def _end(proc: subprocess.Popen | None, token: str) -> None:
+    """Kill the run's process group (while its leader is unreaped, so the group id is still ours),
+    then every process carrying the run's mark, and reap the leader."""
+    if proc is not None and proc.returncode is None:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            proc.kill()
+    kill_marked(token)
+    if proc is not None:
         proc.wait()
-        raise
-    return ProcessRun(code, out.decode("utf-8", "replace"), time.perf_counter() - t0)
-
-
-def _kill_group(proc: subprocess.Popen) -> None:
-    """Kill the process group this module started for `proc` (and nothing else)."""
-    try:
-        os.killpg(proc.pid, signal.SIGKILL)
-    except (ProcessLookupError, PermissionError):
-        proc.kill()
 
 
 def remaining(deadline: float | None) -> float | None:

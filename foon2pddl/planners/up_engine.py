@@ -18,7 +18,10 @@ import tempfile
 import time
 from typing import Any
 
+from ..io.interrupts import signals_deferred
 from ..pddl.task import PlanningTask
+from .cleanup import MARK, kill_marked, new_token
+from .process import bounded_timeout
 from .result import PlanResult
 
 #: UP's PlanGenerationResultStatus names -> our statuses.
@@ -84,12 +87,12 @@ def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tupl
     return status, steps, f"{engine}: {res.status.name.lower()}" + (f" ({log})" if status == "error" and log else "")
 
 
-def _child(conn: Any, task: PlanningTask, name: str, optimal: bool) -> None:
+def _child(conn: Any, task: PlanningTask, name: str, optimal: bool, work: str, token: str) -> None:
     os.setsid()
+    os.environ[MARK] = token  # processes the engine starts inherit the mark
     try:
-        with tempfile.TemporaryDirectory(prefix="foon2pddl-up-") as tmp:
-            os.chdir(tmp)
-            conn.send(_solve_here(task, name, optimal))
+        os.chdir(work)
+        conn.send(_solve_here(task, name, optimal))
     except BaseException as exc:  # report, never hang the parent
         conn.send(("error", (), f"{type(exc).__name__}: {exc}"))
     finally:
@@ -102,29 +105,34 @@ def _context() -> Any:
 
 
 def solve(task: PlanningTask, engine: str, *, optimal: bool = False, time_limit: float | None = None) -> PlanResult:
-    """Plan with a UP engine in a child process, killed (with its process group) at the time limit."""
+    """Plan with a UP engine in a child process, killed (with its process group and every process
+    carrying its mark) when it answers or at the time limit; its work directory is removed here."""
     name = f"up:{engine}"
     ctx = _context()
-    recv, send = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_child, args=(send, task, engine, optimal), daemon=True)
+    token = new_token()
     t0 = time.perf_counter()
-    proc.start()
-    send.close()
     data = None
-    try:
-        if recv.poll(time_limit):
-            data = recv.recv()
-            proc.join(5)  # let the child clean its temporary directory up
-    except EOFError:
-        data = ("error", (), f"engine process died (exit code {proc.exitcode})")
-    finally:
-        if proc.is_alive():
-            try:
-                os.killpg(proc.pid, signal.SIGKILL)
-            except (ProcessLookupError, PermissionError):
-                proc.kill()
-        proc.join()
-        recv.close()
+    with tempfile.TemporaryDirectory(prefix="foon2pddl-up-") as work:
+        recv, send = ctx.Pipe(duplex=False)
+        proc = ctx.Process(target=_child, args=(send, task, engine, optimal, work, token), daemon=True)
+        try:
+            proc.start()  # not under signals_deferred: the fork would inherit the blocked mask
+            send.close()
+            if recv.poll(bounded_timeout(time_limit)):
+                data = recv.recv()
+        except EOFError:
+            data = ("error", (), f"engine process died (exit code {proc.exitcode})")
+        finally:
+            with signals_deferred():
+                if proc.is_alive():
+                    try:
+                        os.killpg(proc.pid, signal.SIGKILL)
+                    except (ProcessLookupError, PermissionError):
+                        proc.kill()
+                kill_marked(token)
+                if proc.pid is not None:
+                    proc.join()
+                recv.close()
     seconds = time.perf_counter() - t0
     if data is None:
         return PlanResult("timeout", (), name, "time limit reached", {"search": seconds})

@@ -1,0 +1,57 @@
+"""Interrupts: SIGTERM handled like SIGINT, and short sections that no interrupt may split.
+
+Python turns SIGINT into KeyboardInterrupt, so `finally` blocks and context
+managers remove temporary files and kill planner processes. SIGTERM's default
+action kills the process outright and skips all of that; `sigterm_raises` makes
+it raise `Terminated` (a KeyboardInterrupt) instead, so both take the same
+cleanup paths. `signals_deferred` holds SIGINT and SIGTERM back (signal mask)
+across a few statements such as "create a temporary file, register it for
+removal", which an interrupt landing between the two would otherwise leak.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+_HELD = {signal.SIGINT, signal.SIGTERM}
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM received (raised where KeyboardInterrupt would be, so the same cleanup runs)."""
+
+
+def _raise_terminated(signum: int, frame: object) -> None:
+    raise Terminated()
+
+
+def _main_thread() -> bool:
+    return threading.current_thread() is threading.main_thread()
+
+
+@contextmanager
+def sigterm_raises() -> Iterator[None]:
+    """While inside, SIGTERM raises `Terminated` in the main thread (the previous handler is restored)."""
+    if not _main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+@contextmanager
+def signals_deferred() -> Iterator[None]:
+    """Deliver SIGINT and SIGTERM only after the block (main thread; elsewhere nothing to defer)."""
+    if not _main_thread():
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, _HELD)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)

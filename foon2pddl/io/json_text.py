@@ -1,0 +1,106 @@
+"""JSON text in, with every failure a located `FoonSyntaxError`, and label text checks.
+
+`load_json` turns what `json.loads` can raise on hostile input into errors naming
+the line: invalid JSON, nesting too deep for the decoder (RecursionError), and
+integers longer than Python's int-string limit (ValueError). `line_of` finds the
+line of an item by its path of keys and indexes (a re-parse, only on error;
+`decode_tracked` gives every object's and list's offset).
+`text_problem` says why a string cannot be a label: a control character or a lone
+surrogate (JSON's `"\\ud800"` decodes to one; it can be written to no UTF-8 file).
+"""
+
+from __future__ import annotations
+
+import json
+import json.scanner
+import re
+from typing import Any
+
+from ..errors import FoonSyntaxError
+from .parser import CONTROL_CHARS, MAX_INT_DIGITS
+
+_SURROGATE = re.compile(r"[\ud800-\udfff]")
+#: JSON strings and numbers, left to right (linear: no nested quantifiers).
+_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?')
+
+
+class _LongInt(ValueError):
+    """An integer token longer than MAX_INT_DIGITS."""
+
+
+def _bounded_int(token: str) -> int:
+    if len(token.lstrip("-").lstrip("0")) > MAX_INT_DIGITS:
+        raise _LongInt(token)
+    return int(token)
+
+
+def _long_int_line(text: str) -> int:
+    """Line of the first integer token (outside strings) longer than MAX_INT_DIGITS."""
+    for m in _TOKEN.finditer(text):
+        token = m.group()
+        if token[0] != '"' and not any(c in token for c in ".eE") and len(token.lstrip("-0")) > MAX_INT_DIGITS:
+            return text.count("\n", 0, m.start()) + 1
+    return 1
+
+
+def load_json(text: str, path: str) -> Any:
+    """`json.loads(text)`; every failure is a FoonSyntaxError naming `path` and the line."""
+    try:
+        return json.loads(text, parse_int=_bounded_int)
+    except json.JSONDecodeError as exc:
+        raise FoonSyntaxError(path, exc.lineno, f"invalid JSON: {exc.msg} (column {exc.colno})") from None
+    except RecursionError:
+        raise FoonSyntaxError(path, 1, "invalid JSON: nested too deeply") from None
+    except _LongInt as exc:
+        digits = len(str(exc).lstrip("-").lstrip("0"))
+        raise FoonSyntaxError(path, _long_int_line(text),
+                              f"integer with {digits} digits (at most {MAX_INT_DIGITS} are read)") from None
+
+
+def text_problem(value: str, what: str) -> str | None:
+    """Why `value` cannot be label text (`what` names it in the message), else None."""
+    if CONTROL_CHARS.search(value):
+        return f"control character in {what}"
+    m = _SURROGATE.search(value)
+    if m:
+        return f"lone surrogate U+{ord(m.group()):04X} in {what} (not Unicode text)"
+    return None
+
+
+def line_of(text: str, where: tuple[str | int, ...]) -> int:
+    """Line of the deepest JSON object or list on the path `where` (re-parses, only on error)."""
+    node, starts = decode_tracked(text)
+    pos = starts.get(id(node), 0)
+    for step in where:
+        try:
+            node = node[step]
+        except (KeyError, IndexError, TypeError):
+            break
+        pos = starts.get(id(node), pos)
+    return text.count("\n", 0, pos) + 1
+
+
+def decode_tracked(text: str) -> tuple[Any, dict[int, int]]:
+    """The decoded value and the start offset of every object and list in it (by id); (None, {})
+    when the text does not decode."""
+    starts: dict[int, int] = {}
+    decoder = json.JSONDecoder(parse_int=_bounded_int)
+    parse_object, parse_array = decoder.parse_object, decoder.parse_array
+
+    def tracked_object(s_and_end, *args):
+        value, end = parse_object(s_and_end, *args)
+        starts[id(value)] = s_and_end[1] - 1
+        return value, end
+
+    def tracked_array(s_and_end, *args):
+        value, end = parse_array(s_and_end, *args)
+        starts[id(value)] = s_and_end[1] - 1
+        return value, end
+
+    decoder.parse_object, decoder.parse_array = tracked_object, tracked_array
+    decoder.memo = {}
+    decoder.scan_once = json.scanner.py_make_scanner(decoder)
+    try:
+        return decoder.decode(text), starts
+    except (ValueError, RecursionError):
+        return None, {}

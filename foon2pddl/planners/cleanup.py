@@ -1,0 +1,142 @@
+"""Every process and temporary path a run starts is gone when it ends, however it ends.
+
+Marks: a planner run puts a random token in its process's environment (`MARK`).
+Children inherit it, including daemons that leave the process group with `setsid`
+and would survive `killpg`; `kill_marked` finds them all by reading
+`/proc/*/environ` and kills them (Linux; elsewhere it finds nothing and the
+process-group kill is all there is).
+
+Scope: `command_scope` wraps a whole CLI command. A private directory under the
+user's TMPDIR becomes TMPDIR for the command and every process it starts (planner
+work directories, Fast Downward's files, worker processes); a scope token marks
+those processes. On exit, whatever the path (return, error, SIGINT, SIGTERM), the
+marked processes and the command's own descendants are killed and the directory
+removed, so nothing leaks even from a worker killed before its own cleanup ran.
+"""
+
+from __future__ import annotations
+
+import os
+import secrets
+import shutil
+import signal
+import tempfile
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+MARK = "FOON2PDDL_RUN"
+SCOPE_MARK = "FOON2PDDL_SCOPE"
+_PROC = "/proc"
+
+
+def new_token() -> str:
+    """A fresh random token for `MARK` or `SCOPE_MARK`."""
+    return secrets.token_hex(8)
+
+
+def _pids() -> list[int]:
+    try:
+        return [int(e.name) for e in os.scandir(_PROC) if e.name.isdigit()]
+    except OSError:
+        return []
+
+
+def marked_pids(name: str, token: str) -> list[int]:
+    """Processes (not this one) whose environment holds `name=token`. O(processes on the machine)."""
+    needle = f"\0{name}={token}\0".encode()
+    me, found = os.getpid(), []
+    for pid in _pids():
+        if pid == me:
+            continue
+        try:
+            with open(f"{_PROC}/{pid}/environ", "rb") as fh:
+                env = fh.read()
+        except OSError:  # gone, or another user's
+            continue
+        if needle in b"\0" + env + b"\0":
+            found.append(pid)
+    return found
+
+
+def _stat(pid: int) -> tuple[int, int] | None:
+    """(parent pid, start time in clock ticks) of a process, None when it is gone."""
+    try:
+        with open(f"{_PROC}/{pid}/stat", "rb") as fh:
+            data = fh.read()
+    except OSError:
+        return None
+    fields = data[data.rfind(b")") + 2:].split()  # after "pid (comm) "
+    return int(fields[1]), int(fields[19])
+
+
+def descendants(root: int, started_after: int = 0) -> list[int]:
+    """Processes below `root` in the parent tree, started at or after tick `started_after`."""
+    children: dict[int, list[int]] = {}
+    start: dict[int, int] = {}
+    for pid in _pids():
+        info = _stat(pid)
+        if info is not None:
+            children.setdefault(info[0], []).append(pid)
+            start[pid] = info[1]
+    out, todo = [], [root]
+    while todo:
+        for child in children.get(todo.pop(), ()):
+            if start.get(child, 0) >= started_after:
+                out.append(child)
+            todo.append(child)
+    return out
+
+
+def _kill(pids: list[int]) -> None:
+    for pid in pids:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+
+
+def kill_marked(token: str, name: str = MARK, rounds: int = 5) -> None:
+    """SIGKILL every process marked `name=token` (repeated: a dying process may have just forked)."""
+    for _ in range(rounds):
+        pids = marked_pids(name, token)
+        if not pids:
+            return
+        _kill(pids)
+        time.sleep(0.01)
+
+
+def _now_ticks() -> int:
+    """This moment in /proc's start-time unit (clock ticks since boot)."""
+    try:
+        with open(f"{_PROC}/uptime") as fh:
+            return int(float(fh.read().split()[0]) * os.sysconf("SC_CLK_TCK"))
+    except (OSError, ValueError):
+        return 0
+
+
+@contextmanager
+def command_scope() -> Iterator[str]:
+    """Run a command inside a private TMPDIR and a process mark (see the module doc); yields the TMPDIR."""
+    from ..io.interrupts import signals_deferred
+
+    token, started = new_token(), _now_ticks()
+    saved = {k: os.environ.get(k) for k in ("TMPDIR", SCOPE_MARK)}
+    saved_tempdir = tempfile.tempdir
+    with signals_deferred():
+        scope = tempfile.mkdtemp(prefix="foon2pddl-")
+        os.environ["TMPDIR"], os.environ[SCOPE_MARK] = scope, token
+        tempfile.tempdir = scope
+    try:
+        yield scope
+    finally:
+        with signals_deferred():
+            kill_marked(token, SCOPE_MARK)
+            _kill(descendants(os.getpid(), started))
+            for key, value in saved.items():
+                if value is None:
+                    os.environ.pop(key, None)
+                else:
+                    os.environ[key] = value
+            tempfile.tempdir = saved_tempdir
+            shutil.rmtree(scope, ignore_errors=True)
