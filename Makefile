@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 SHARED ?= ../shared/data
 
-.PHONY: install system-deps test bench lint pddl demo experiment clean
+.PHONY: install system-deps test bench fuzz lint pddl demo experiment clean
 
 install: $(STAMP)
 
@@ -29,6 +29,11 @@ test: $(STAMP)
 
 bench: $(STAMP)
 	$(PY) -m bench --shared $(SHARED)
+
+# 10,000 seeded mutants of the shared subgraphs through stats/retrieve/compile (`make test` runs 500).
+FUZZ_MUTANTS ?= 10000
+fuzz: $(STAMP)
+	FOON2PDDL_MUTANTS=$(FUZZ_MUTANTS) $(PY) -m pytest -n 2 -q tests/test_fuzz_mutants.py tests/test_fuzz_inputs.py
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check foon2pddl tests bench

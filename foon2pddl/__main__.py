@@ -1,5 +1,15 @@
-"""`python -m foon2pddl`."""
+"""`python -m foon2pddl` and the `foon2pddl` console script."""
 
-from .cli import main
 
-main()
+def run() -> None:
+    """Exit 130/143 on SIGINT/SIGTERM even while the CLI's modules load, then run the CLI."""
+    from .io.interrupts import exit_on_signals
+
+    exit_on_signals()
+    from .cli import main
+
+    main()
+
+
+if __name__ == "__main__":
+    run()

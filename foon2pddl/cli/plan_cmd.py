@@ -144,7 +144,8 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         else:
             summary += f": {outcome.message or outcome.result.message}"
         click.echo(summary, err=True)
-        for note in outcome.decoded.notes if outcome.decoded is not None else ():
+        decoded = getattr(outcome, "decoded", None)  # a lifted outcome decodes differently
+        for note in decoded.notes if decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "unsolvable" and encoding != "state":
             click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)

@@ -33,15 +33,29 @@ def _main_thread() -> bool:
 
 @contextmanager
 def sigterm_raises() -> Iterator[None]:
-    """While inside, SIGTERM raises `Terminated` in the main thread (the previous handler is restored)."""
+    """While inside, SIGINT raises KeyboardInterrupt and SIGTERM `Terminated` in the main thread
+    (the previous handlers are restored on the way out)."""
     if not _main_thread():
         yield
         return
-    previous = signal.signal(signal.SIGTERM, _raise_terminated)
+    previous = {signal.SIGINT: signal.signal(signal.SIGINT, signal.default_int_handler),
+                signal.SIGTERM: signal.signal(signal.SIGTERM, _raise_terminated)}
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+
+
+def _exit_quietly(signum: int, frame: object) -> None:
+    raise SystemExit(128 + signum)
+
+
+def exit_on_signals() -> None:
+    """Until a command installs its own handling: SIGINT and SIGTERM exit 130 and 143, without a
+    traceback (for the program's start, while modules load, and its end)."""
+    for signum in _HELD:
+        signal.signal(signum, _exit_quietly)
 
 
 @contextmanager

@@ -70,19 +70,44 @@ def _stat(pid: int) -> tuple[int, int] | None:
     return int(fields[1]), int(fields[19])
 
 
+def _children_file(pid: int) -> list[int] | None:
+    """Child processes of `pid` from /proc/PID/task/*/children; None where the kernel lacks that file."""
+    try:
+        tasks = os.listdir(f"{_PROC}/{pid}/task")
+    except OSError:
+        return []
+    out: list[int] = []
+    for tid in tasks:
+        try:
+            with open(f"{_PROC}/{pid}/task/{tid}/children", "rb") as fh:
+                out.extend(int(x) for x in fh.read().split())
+        except FileNotFoundError:
+            return None
+        except OSError:
+            continue
+    return out
+
+
 def descendants(root: int, started_after: int = 0) -> list[int]:
-    """Processes below `root` in the parent tree, started at or after tick `started_after`."""
-    children: dict[int, list[int]] = {}
-    start: dict[int, int] = {}
-    for pid in _pids():
-        info = _stat(pid)
-        if info is not None:
-            children.setdefault(info[0], []).append(pid)
-            start[pid] = info[1]
+    """Processes below `root` in the parent tree, started at or after tick `started_after`.
+
+    O(descendants) reads of /proc where the kernel lists children, else one scan of /proc.
+    """
+    table: dict[int, list[int]] | None = None
     out, todo = [], [root]
     while todo:
-        for child in children.get(todo.pop(), ()):
-            if start.get(child, 0) >= started_after:
+        pid = todo.pop()
+        kids = _children_file(pid) if table is None else table.get(pid, [])
+        if kids is None:
+            table = {}
+            for p in _pids():
+                info = _stat(p)
+                if info is not None:
+                    table.setdefault(info[0], []).append(p)
+            kids = table.get(pid, [])
+        for child in kids:
+            info = _stat(child)
+            if info is not None and info[1] >= started_after:
                 out.append(child)
             todo.append(child)
     return out
@@ -131,8 +156,8 @@ def command_scope() -> Iterator[str]:
         yield scope
     finally:
         with signals_deferred():
-            kill_marked(token, SCOPE_MARK)
             _kill(descendants(os.getpid(), started))
+            kill_marked(token, SCOPE_MARK)  # orphans: daemons, children of workers that died first
             for key, value in saved.items():
                 if value is None:
                     os.environ.pop(key, None)
