@@ -241,3 +241,11 @@ def test_fifo_is_refused_not_waited_on(tmp_path, where):
 def test_parse_text_still_reads_crlf_and_u2028_inside_labels():
     res = parse_text("O\tbowl\u2028x\t0\r\nM\tpour\r\nO\tbowl\t0\r\nS\tfull\r\n", "t")
     assert res.foon.units[0].inputs[0].label.startswith("bowl")
+
+
+@pytest.mark.parametrize(("data", "line"), [(b'{"categories": {}}\n\xff\n', 2), (b"[" * 50_000, 1),
+                                            (b'{"categories":\n' + b"9" * 5000 + b"}", 2)])
+def test_bad_category_index_is_a_located_error(tmp_path, data, line):
+    index = tmp_path / "cats.json"
+    index.write_bytes(data)
+    error_at(cli("generalize", "--categories", index, WHIPPED), index, line)

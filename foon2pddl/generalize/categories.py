@@ -14,7 +14,6 @@ single parent per type, which this rule also provides (see `lifted.py`).
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -22,6 +21,8 @@ from importlib import resources
 from pathlib import Path
 
 from ..errors import FoonInputError
+from ..io.json_text import load_json
+from ..io.parser import read_text
 from ..model.foon import normalize_label
 
 
@@ -106,10 +107,7 @@ class CategoryIndex:
 
 def parse_index(text: str, path: str) -> CategoryIndex:
     """Read and check an index: JSON shape, known parents, no cycles, no category named like an object."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonInputError(path, exc.lineno, f"invalid JSON: {exc.msg}") from None
+    data = load_json(text, path)  # located errors for bad JSON, deep nesting, huge integers
     cats = data.get("categories") if isinstance(data, dict) else None
     if not isinstance(cats, dict):
         raise FoonInputError(path, 0, 'expected {"categories": {name: {"parent", "description", "members"}}}')
@@ -151,11 +149,7 @@ def load_index(path: str | Path | None = None) -> CategoryIndex:
     if path is None:
         return shipped_index()
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise FoonInputError(str(p), 0, f"cannot read category index: {exc.strerror or exc}") from None
-    return parse_index(text, str(p))
+    return parse_index(read_text(p), str(p))  # regular files only, UTF-8 errors located
 
 
 @lru_cache(maxsize=1)

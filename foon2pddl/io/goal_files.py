@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
@@ -12,23 +13,27 @@ from .parser import parse_objects, read_text
 _EXPECTED = "(expected 'state', 'state [object]' or 'state {a, b}')"
 
 
+_SPECIAL = re.compile(r"[\[\]{},]")
+
+
 def _split_states(text: str) -> list[str]:
-    parts, depth, cur = [], 0, []
-    for ch in text:
+    """Split on commas outside brackets; visits only the bracket and comma characters (linear, and
+    fast on long runs of ordinary text)."""
+    parts, depth, start = [], 0, 0
+    for m in _SPECIAL.finditer(text):
+        ch = m.group()
         if ch in "[{":
             depth += 1
         elif ch in "]}":
             depth -= 1
             if depth < 0:
                 raise ValueError(f"unbalanced bracket in goal states {text!r}")
-        if ch == "," and depth == 0:
-            parts.append("".join(cur))
-            cur = []
-        else:
-            cur.append(ch)
+        elif depth == 0:
+            parts.append(text[start:m.start()])
+            start = m.end()
     if depth:
         raise ValueError(f"unbalanced bracket in goal states {text!r}")
-    parts.append("".join(cur))
+    parts.append(text[start:])
     return [p.strip() for p in parts if p.strip()]
 
 
