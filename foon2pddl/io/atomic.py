@@ -148,11 +148,18 @@ def check_writable(path: str | Path, directory: bool = False) -> None:
     The nearest existing ancestor must be a directory in which a file can be created
     (probed with a temporary file, removed at once: `os.access` says yes to root on
     read-only or virtual file systems); an existing `path` must be a file (a directory
-    when `directory`).
+    when `directory`). Devices and FIFOs, written through, need only be writable; a
+    symlink is checked at its target.
     """
     p = Path(path)
     if p.exists() and p.is_dir() != directory:
         raise IsADirectoryError(21, "is a directory") if not directory else NotADirectoryError(20, "not a directory")
+    if not directory:
+        p, info = _target(p)
+        if _writes_through(Path(path), info):
+            if not os.access(path, os.W_OK):
+                raise PermissionError(13, "Permission denied")
+            return
     base = p if directory else p.parent
     while not base.exists():
         base = base.parent
