@@ -49,7 +49,7 @@ def test_file_keys_costs_and_combined_profiles(tmp_path):
     ('{\n  "without": "peanut"\n}', 2, "list of labels"),
     ('{\n\n  "rates": {"pour": 1.5}\n}', 3, "(0, 1]"),
     ('{\n  "costs": {"pour": -1}\n}', 2, ">= 0"),
-    ('{"without": [\n', 2, "not valid JSON"),
+    ('{"without": [\n', 2, "invalid JSON"),
     ('["pour"]', 1, "JSON object"),
 ])
 def test_bad_files_name_the_line(text, line, words):

@@ -249,3 +249,12 @@ def test_bad_category_index_is_a_located_error(tmp_path, data, line):
     index = tmp_path / "cats.json"
     index.write_bytes(data)
     error_at(cli("generalize", "--categories", index, WHIPPED), index, line)
+
+
+@pytest.mark.parametrize("data", ['{"without": [\n' + HUGE + "]}", "[" * 100_000])
+def test_bad_constraints_and_goal_lists_are_located_errors(tmp_path, data):
+    f = tmp_path / "c.json"
+    f.write_text(data)
+    line = 2 if HUGE in data else 1
+    error_at(cli("retrieve", "--goal", "whipped cream", "--constraints", f, WHIPPED), f, line)
+    error_at(cli("retrieve", "--goals", f, WHIPPED), f, line)

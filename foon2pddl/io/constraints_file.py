@@ -19,6 +19,7 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
+from .json_text import load_json
 from .parser import CONTROL_CHARS, read_text
 from .rates import Rates
 
@@ -51,10 +52,7 @@ def _table(value, path: str, line: int, key: str) -> dict[str, float]:
 
 def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
     """Parse a constraints document; FoonSyntaxError naming path and line on any problem."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonSyntaxError(path, exc.lineno, f"not valid JSON: {exc.msg}") from None
+    data = load_json(text, path)  # located errors for bad JSON, deep nesting, huge integers
     if not isinstance(data, dict):
         raise FoonSyntaxError(path, 1, "a constraints file is a JSON object")
     for key in data:

@@ -114,7 +114,7 @@ def parse_utensils(text: str, path: str = "<utensils>") -> frozenset[str]:
     from .parser import CONTROL_CHARS
 
     labels = set()
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only, as every reader
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
