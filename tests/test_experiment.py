@@ -371,3 +371,14 @@ def test_bad_sweeps_exit_2():
     for bad in ("nope=1", "level=4", "kitchen-fraction=", "threshold=x"):
         result = CliRunner().invoke(main, ["experiment", "--sweep", bad, "--no-progress"])
         assert result.exit_code == 2 and "--sweep" in result.output, (bad, result.output)
+
+
+def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_path):
+    config = runner.Config((), Protocol(trials=2, goals=30), ("reg",), ("native-complete", "fd-tree"), tmp_path)
+    batches = runner.plan_batches(config, set())
+    sizes = sorted((b.solver, b.trial.index, len(b.goals)) for b in batches)
+    assert sizes == [("fd-tree", 1, 30), ("fd-tree", 2, 30), ("native-complete", 1, 5), ("native-complete", 1, 25),
+                     ("native-complete", 2, 5), ("native-complete", 2, 25)]
+    assert batches[0].solver == "fd-tree"  # costliest first
+    done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
+    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [20, 30]

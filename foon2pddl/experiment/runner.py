@@ -129,7 +129,8 @@ def cell_keys(config: Config) -> set[Key]:
 
 
 def plan_batches(config: Config, done: set[Key]) -> list[Batch]:
-    """Batches of at most CHUNK pending goals, costliest solvers and largest networks first."""
+    """Batches of at most CHUNK pending goals (all of them for solvers whose preparation is costly, such as a
+    Fast Downward translation), costliest solvers and largest networks first."""
     pending: dict[tuple, list[int]] = {}
     trial_of: dict[tuple, Trial] = {}
     for point, trial, network, solver, goal in cells(config):
@@ -138,8 +139,11 @@ def plan_batches(config: Config, done: set[Key]) -> list[Batch]:
         group = (point, trial.index, network, solver)
         pending.setdefault(group, []).append(goal)
         trial_of[group] = trial
-    batches = [Batch(trial_of[group], group[2], group[3], tuple(goals[i:i + CHUNK]), group[0])
-               for group, goals in pending.items() for i in range(0, len(goals), CHUNK)]
+    batches = []
+    for group, goals in pending.items():
+        size = len(goals) if SOLVERS[group[3]].whole_batches else CHUNK
+        batches.extend(Batch(trial_of[group], group[2], group[3], tuple(goals[i:i + size]), group[0])
+                       for i in range(0, len(goals), size))
 
     def order(b: Batch) -> tuple:
         n = _NETWORK_ORDER.index(b.network) if b.network in _NETWORK_ORDER else len(_NETWORK_ORDER)

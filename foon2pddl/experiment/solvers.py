@@ -102,6 +102,7 @@ class Solver:
     planner: bool = False
     role: Role = Role.OTHER
     cost: int = 0
+    whole_batches: bool = False  # one task per (trial, network): its preparation is too costly to repeat
 
     def applies_to(self, network: str) -> bool:
         return self.networks is None or network in self.networks
@@ -245,10 +246,10 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
            role=Role.OPTIMUM, cost=2),
     Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial, each goal's relevant "
                       "operators only",
-           lambda s: _FdReuse(s, False), planner=True, role=Role.AGREEMENT, cost=3),
+           lambda s: _FdReuse(s, False), planner=True, role=Role.AGREEMENT, cost=3, whole_batches=True),
     Solver("fd-tree-opt", "Fast Downward A* with LM-cut and atom-centric stubborn sets (optimal), tree encoding, "
                           "one translation per trial, each goal's relevant operators only",
-           lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5),
+           lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5, whole_batches=True),
     Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
                        "encoding's STRIPS semantics; FOON simulation reported apart)",
            lambda s: _FdFresh(s, "state"), planner=True, cost=6),
