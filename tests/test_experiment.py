@@ -213,12 +213,12 @@ def test_resume_after_truncation_redoes_nothing_finished(reg, tmp_path):
     assert runner.run(config, progress=False).ran == 0
 
 
-def test_interrupted_run_resumes(tmp_path, monkeypatch):
-    config = runner.Config((), Protocol(trials=2, goals=4), ("reg",), NATIVE, tmp_path)
+def _interrupt_after(config: runner.Config, cells: int, monkeypatch) -> list:
+    """Run `config`, interrupted (as by Ctrl-C) after `cells` records were written; the keys written."""
     real_append, calls = runner.append, []
 
     def append_then_stop(fh, record):
-        if len(calls) == 9:
+        if len(calls) == cells:
             raise KeyboardInterrupt
         calls.append(record.key)
         real_append(fh, record)
@@ -227,6 +227,12 @@ def test_interrupted_run_resumes(tmp_path, monkeypatch):
     with pytest.raises(KeyboardInterrupt):
         runner.run(config, progress=False)
     monkeypatch.setattr(runner, "append", real_append)
+    return calls
+
+
+def test_interrupted_run_resumes(tmp_path, monkeypatch):
+    config = runner.Config((), Protocol(trials=2, goals=4), ("reg",), NATIVE, tmp_path)
+    calls = _interrupt_after(config, 9, monkeypatch)
     assert set(read_records(config.results_path)) == set(calls)
     again = runner.run(config, progress=False)
     assert again.ran == 2 * 4 * 3 - 9 and len(again.records) == 24
@@ -280,18 +286,7 @@ def test_trial_time_counts_the_shared_setup_once():
 
 def test_interrupted_run_logs_the_cells_it_completed_not_the_planned_ones(tmp_path, monkeypatch):
     config = runner.Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path)
-    real_append, calls = runner.append, []
-
-    def append_then_stop(fh, record):
-        if len(calls) == 4:
-            raise KeyboardInterrupt
-        calls.append(record.key)
-        real_append(fh, record)
-
-    monkeypatch.setattr(runner, "append", append_then_stop)
-    with pytest.raises(KeyboardInterrupt):
-        runner.run(config, progress=False)
-    monkeypatch.setattr(runner, "append", real_append)
+    _interrupt_after(config, 4, monkeypatch)
     again = runner.run(config, progress=False)
     assert again.ran == 2
     assert [(h["cells"], h["planned"]) for h in runner.read_runs(tmp_path / "runs.jsonl")] == [(4, 6), (2, 2)]

@@ -117,22 +117,23 @@ def network_key(protocol: Protocol, point: Point) -> tuple:
     return (at.level, at.threshold, network_hooks(point))
 
 
+def _apply(hook: str, value, point: Point):
+    """`value` through the point's `hook` ("network" or "kitchen") of each parameter, in sweep order."""
+    for name, v in point:
+        fn = getattr(PARAMS[name], hook)
+        if fn is not None:
+            value = fn(value, v)
+    return value
+
+
 def transform_network(foon: Foon, point: Point) -> Foon:
     """Apply the point's network hooks (in sweep order)."""
-    for name, value in point:
-        hook = PARAMS[name].network
-        if hook is not None:
-            foon = hook(foon, value)
-    return foon
+    return _apply("network", foon, point)
 
 
 def transform_kitchen(kitchen: Kitchen, point: Point) -> Kitchen:
     """Apply the point's kitchen hooks (in sweep order)."""
-    for name, value in point:
-        hook = PARAMS[name].kitchen
-        if hook is not None:
-            kitchen = hook(kitchen, value)
-    return kitchen
+    return _apply("kitchen", kitchen, point)
 
 
 def label(point: Point) -> str:
