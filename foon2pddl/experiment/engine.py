@@ -68,8 +68,13 @@ def connect(jobs: int, scheduler: str | None):
             from ..errors import FoonInputError
 
             raise FoonInputError(scheduler, 0, f"cannot reach the Dask scheduler: {exc}") from None
-    cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
-                                       dashboard_address=":0", silence_logs=logging.ERROR)
+    import dask
+
+    # Forked workers inherit the network views this process built (`worker.view`): a local run builds
+    # each network once, not once per worker (a worker the nanny restarts later builds its own).
+    with dask.config.set({"distributed.worker.multiprocessing-method": "fork"}):
+        cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                           dashboard_address=":0", silence_logs=logging.ERROR)
     try:
         return distributed.Client(cluster), cluster
     except BaseException:

@@ -209,6 +209,9 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
         if config.scheduler is None and config.jobs <= 1:
             run_here(batches, job, sink, progress)
         else:
+            if config.scheduler is None:  # local workers are forked: build the networks they need once, here
+                for point, network in dict.fromkeys((b.point, b.network) for b in batches):
+                    view(config.paths, config.protocol, point, network)
             run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler)
     finally:
         progress.close()
