@@ -60,7 +60,9 @@ def connect(jobs: int, scheduler: str | None):
         raise FoonInputError("<dask>", 0, "parallel and distributed runs need Dask: "
                                           "pip install 'foon2pddl[experiment]' (or 'dask[distributed]')") from None
 
-    logging.getLogger("distributed").setLevel(logging.ERROR)
+    # Dask's own log lines (a nanny interrupted while starting, a scratch directory already removed with the
+    # command's private TMPDIR) are noise here: lost tasks and unreachable schedulers are reported as such.
+    logging.getLogger("distributed").setLevel(logging.CRITICAL)
     if scheduler is not None:
         try:
             return distributed.Client(scheduler, timeout="20s"), None
@@ -72,14 +74,28 @@ def connect(jobs: int, scheduler: str | None):
 
     # Forked workers inherit the network views this process built (`worker.view`): a local run builds
     # each network once, not once per worker (a worker the nanny restarts later builds its own).
-    with dask.config.set({"distributed.worker.multiprocessing-method": "fork"}):
-        cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
-                                           dashboard_address=":0", silence_logs=logging.ERROR)
     try:
+        with dask.config.set({"distributed.worker.multiprocessing-method": "fork"}):
+            cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                               dashboard_address=":0", silence_logs=logging.CRITICAL)
         return distributed.Client(cluster), cluster
-    except BaseException:
-        cluster.close()
+    except BaseException:  # an interrupt while starting: no cluster may outlive the run
+        close_local_clusters()
         raise
+
+
+def close_local_clusters() -> None:
+    """Close, quietly, every local cluster still open (one interrupted while starting has no handle):
+    otherwise Dask's exit hook closes it and prints a traceback."""
+    from distributed.core import Status
+    from distributed.deploy.spec import SpecCluster
+
+    for cluster in list(SpecCluster._instances):
+        try:
+            if getattr(cluster, "status", Status.closed) != Status.closed:
+                cluster.close(timeout=10)
+        except BaseException:  # noqa: BLE001 - best effort while stopping
+            pass
 
 
 def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress, *, jobs: int = 2,
@@ -115,6 +131,10 @@ def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress,
                 client.cancel(list(futures), force=True)
             except Exception:  # noqa: BLE001 - closing anyway
                 pass
-        client.close()
-        if cluster is not None:
-            cluster.close()
+        try:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+        finally:
+            if cluster is not None:
+                close_local_clusters()

@@ -15,7 +15,6 @@ error or were lost with their worker are redone.
 from __future__ import annotations
 
 import json
-import signal
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -187,24 +186,9 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
 
 # -- running -------------------------------------------------------------------------------------
 
-def _interrupt_on_sigterm() -> Callable[[], None]:
-    """Make SIGTERM interrupt the run like Ctrl-C (tasks cancelled, records kept); returns the undo."""
-    import threading
-
-    if threading.current_thread() is not threading.main_thread():
-        return lambda: None
-
-    def interrupt(signum, frame):
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    return lambda: signal.signal(signal.SIGTERM, previous)
-
-
 def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress) -> None:
     """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives."""
     job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit)
-    stop = _interrupt_on_sigterm()
     try:
         if config.scheduler is None and config.jobs <= 1:
             run_here(batches, job, sink, progress)
@@ -215,7 +199,6 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
             run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler)
     finally:
         progress.close()
-        stop()
 
 
 def run(config: Config, progress: bool | str = True, fresh: bool = False) -> RunSummary:
