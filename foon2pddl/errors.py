@@ -1,26 +1,45 @@
-"""Errors and warnings that point at a place in an input file."""
+"""The package's one error hierarchy, and warnings that point at a place in an input file.
+
+- `FoonError`: every error reported to users (the CLI exits with status 2);
+  it has a location (`path`, `line`) only when the problem is in a file.
+- `FoonSyntaxError`, `FoonInputError`: a file that breaks its format, input that
+  parses but cannot be used; both name `path:line` (line 0: not on a line).
+- `UsageError` (also a `ValueError`): a bad argument or option value, no file.
+- `MissingDependencyError`: an optional part that is not installed (Fast
+  Downward, WordNet, Graphviz, an extra), with the command that installs it.
+
+Messages never name command-line flags: only `cli/` knows them.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+__all__ = ["FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
+           "UsageError"]
+
 
 class FoonError(Exception):
-    """Base of every error this package reports to users (CLI exit status 2)."""
+    """Base of every error this package reports to users (CLI exit status 2).
 
-    def __init__(self, path: str, line: int, message: str, text: str | None = None) -> None:
+    `path` and `line` locate the problem in an input file when there is one
+    (`line` 0: the file as a whole); `text` is the offending line.
+    """
+
+    def __init__(self, message: str, *, path: str | None = None, line: int = 0, text: str | None = None) -> None:
         self.path = path
         self.line = line
         self.message = message
         self.text = text
-        super().__init__(self.location() + ": " + message)
+        super().__init__(message)
 
-    def location(self) -> str:
-        """`path:line`; line 0 when the problem is not on a line (a directory, a missing file)."""
-        return f"{self.path}:{self.line}"
+    def location(self) -> str | None:
+        """`path:line` (line 0 when the problem is not on a line), None when not in a file."""
+        return None if self.path is None else f"{self.path}:{self.line}"
 
     def __str__(self) -> str:
-        text = f"{self.location()}: {self.message}"
+        where = self.location()
+        text = self.message if where is None else f"{where}: {self.message}"
         if self.text is not None:
             text += f"\n    {self.text!r}"
         return text
@@ -29,9 +48,30 @@ class FoonError(Exception):
 class FoonSyntaxError(FoonError):
     """A FOON, kitchen, goal or rates file that does not follow its format."""
 
+    def __init__(self, path: str, line: int, message: str, text: str | None = None) -> None:
+        super().__init__(message, path=path, line=line, text=text)
+
 
 class FoonInputError(FoonError):
-    """Input that parses but cannot be used (unknown goal label, missing file, ...)."""
+    """A file that parses but cannot be used, or cannot be read or written (missing, a directory, ...)."""
+
+    def __init__(self, path: str, line: int, message: str, text: str | None = None) -> None:
+        super().__init__(message, path=path, line=line, text=text)
+
+
+class UsageError(FoonError, ValueError):
+    """A bad argument or option value (an unknown method, a threshold out of range, a goal nothing makes)."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+
+
+class MissingDependencyError(FoonError):
+    """An optional dependency is not installed; `hint` says how to install it."""
+
+    def __init__(self, message: str, hint: str) -> None:
+        self.hint = hint
+        super().__init__(f"{message}: {hint}")
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,7 @@ from foon_strategies import foons
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.errors import FoonInputError
+from foon2pddl.errors import UsageError
 from foon2pddl.generalize.expand import expand, is_expanded, vocabulary
 from foon2pddl.generalize.similarity import SimilarityMatrix, similarity_matrix
 from foon2pddl.generalize.substitute import (
@@ -80,7 +80,7 @@ def test_a_label_the_unit_already_mentions_is_not_substituted_in():
 def test_max_units_guard():
     m = matrix(["lemon", "lime", "orange", "cutting board", "lemon juice", "bowl", "salt"],
                [("lemon", "lime", 0.93), ("lemon", "orange", 0.92)])
-    with pytest.raises(FoonInputError, match="exceed 2 units"):
+    with pytest.raises(UsageError, match="exceed 2 units"):
         expand(Foon((CUT,)), m, max_units=2)
     assert len(expand(Foon((CUT,)), m, max_units=3).foon.units) == 3
 

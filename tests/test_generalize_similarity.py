@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.errors import FoonInputError
+from foon2pddl.errors import FoonInputError, MissingDependencyError
 from foon2pddl.generalize import similarity as simmod
 from foon2pddl.generalize import wordnet
 from foon2pddl.generalize.senses import KITCHEN_LEXNAMES, Overrides, parse_overrides, shipped_overrides
@@ -56,7 +56,7 @@ def test_nltk_roots_match_nltk_data_path():
 
 
 def test_no_wordnet_names_both_install_routes(tmp_path):
-    with pytest.raises(FoonInputError) as err:
+    with pytest.raises(MissingDependencyError) as err:
         wordnet.locate(debian_dir=tmp_path / "none", cache=tmp_path / "cache", nltk_roots=[tmp_path / "nltk"])
     assert "apt-get install wordnet-base wordnet-sense-index" in err.value.message
     assert "nltk.downloader wordnet" in err.value.message

@@ -68,4 +68,4 @@ def test_planner_command_failures(cmd, code, word):
 def test_bad_input_exits_2_without_traceback():
     result = run("--goal", "no such dish", WHIPPED)
     assert result.exit_code == 2
-    assert "error" in result.stderr and "Traceback" not in result.output
+    assert "Error: unknown object label" in result.stderr and "Traceback" not in result.output

@@ -1,7 +1,9 @@
 """Command-line interface: `foon2pddl <command>`. One module per command group.
 
-Errors in user input print `path:line: message` on stderr and exit with status 2;
-no traceback reaches the user. SIGINT exits 130 and SIGTERM 143, after the same
+Errors in an input file print `path:line: error: message` on stderr; errors with no
+file (a bad option value, a missing dependency) print in click's style (`Error: ...`,
+with the command's usage line for option errors). Both exit with status 2; no
+traceback reaches the user. SIGINT exits 130 and SIGTERM 143, after the same
 cleanup: every command runs in a `command_scope` (private TMPDIR, processes
 marked), so no process or temporary path of the command survives it, and
 half-written output files are removed.
@@ -14,14 +16,28 @@ import sys
 import click
 
 from .. import __version__
-from ..errors import FoonError
+from ..errors import FoonError, UsageError
 from ..io.atomic import discard_staged
 from ..io.interrupts import Terminated, sigterm_raises
 from ..planners.cleanup import command_scope
 
+__all__ = ["main"]
+
+
+class _Command(click.Command):
+    """Click command that reports the package's `UsageError` as a click usage error (usage line, exit 2)."""
+
+    def invoke(self, ctx: click.Context):
+        try:
+            return super().invoke(ctx)
+        except UsageError as exc:
+            raise click.UsageError(exc.message, ctx) from None
+
 
 class _Group(click.Group):
-    """Click group that turns project errors into `path:line: message` and exit status 2."""
+    """Click group that turns project errors into `path:line: error: message` (or `Error: message`), exit 2."""
+
+    command_class = _Command
 
     def invoke(self, ctx: click.Context):
         _escape_unencodable_output()
@@ -33,7 +49,8 @@ class _Group(click.Group):
                 finally:
                     discard_staged()
         except FoonError as exc:
-            click.echo(f"{exc.location()}: error: {exc.message}", err=True)
+            where = exc.location()
+            click.echo(f"{where}: error: {exc.message}" if where else f"Error: {exc.message}", err=True)
             if exc.text is not None:
                 click.echo(f"    {exc.text!r}", err=True)
             ctx.exit(2)
@@ -66,7 +83,7 @@ def main() -> None:
 
 
 # Each command module registers its commands on `main` when imported.
-from . import (
+from . import (  # noqa: E402, F401
     check_cmd,
     compile_cmd,
     expand_cmd,

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS, file_names, format_table, summary
 from ..io.goal_files import parse_goal_spec
@@ -24,17 +24,17 @@ def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Pat
     if goals_file is None and len(goal) <= 1 and fmt not in TABLE_FORMATS:
         return None
     if goal_file is not None:
-        raise FoonInputError("<options>", 0, "--goal-file names one goal; use --goals FILE for a batch")
+        raise UsageError("--goal-file names one goal; use --goals FILE for a batch")
     entries = []
     for text in goal:
         try:
             entries.append(GoalEntry(parse_goal_spec(text)))
         except ValueError as exc:
-            raise FoonInputError("<goal>", 0, f"{exc}: {text!r}") from None
+            raise UsageError(f"{exc}: {text!r}") from None
     if goals_file is not None:
         entries.extend(read_goal_list(goals_file))
     if not entries:
-        raise FoonInputError("<goal>", 0, "no goal given (--goal G, repeated, or --goals FILE)")
+        raise UsageError("no goal given (--goal G, repeated, or --goals FILE)")
     return entries
 
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write_many
 from ..io.rates import read_rates
 from ..pddl.compile import compile_task
@@ -16,6 +16,7 @@ from . import main
 from .options import (
     category_chains,
     category_types_option,
+    check_lifted_options,
     check_output,
     containment_option,
     costs_option,
@@ -43,12 +44,12 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
                category_types: bool = False) -> PlanningTask:
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
-        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
+        raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
     if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
         from ..generalize.categories import load_index
-        from ..generalize.lifted import check_lifted_options, encode_lifted
+        from ..generalize.lifted import encode_lifted
 
         check_lifted_options(encoding, costs)
         return encode_lifted(net.foon, view.kitchen, target, load_index(), level, prune=prune).task

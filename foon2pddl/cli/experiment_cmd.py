@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, UsageError
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
@@ -24,7 +24,7 @@ def _names(text: str, known, what: str) -> tuple[str, ...]:
     names = tuple(dict.fromkeys(x.strip().lower() for x in text.split(",") if x.strip()))
     unknown = [n for n in names if n not in known]
     if unknown or not names:
-        raise FoonInputError("<options>", 0, f"--{what}: unknown {', '.join(map(repr, unknown)) or 'empty list'} "
+        raise UsageError(f"--{what}: unknown {', '.join(map(repr, unknown)) or 'empty list'} "
                                              f"(choose from {', '.join(known)})")
     return names
 
@@ -35,9 +35,9 @@ def _sweeps(items) -> tuple[tuple[str, tuple], ...]:
         try:
             name, values = parse_sweep(item)
         except ValueError as exc:
-            raise FoonInputError("<options>", 0, f"--sweep: {exc}") from None
+            raise UsageError(f"--sweep: {exc}") from None
         if name in out:
-            raise FoonInputError("<options>", 0, f"--sweep: {name} given twice")
+            raise UsageError(f"--sweep: {name} given twice")
         out[name] = values
     return tuple(out.items())
 
@@ -48,7 +48,7 @@ def _goal_limits(items, solvers) -> tuple[tuple[str, int], ...]:
         name, sep, n = item.partition("=")
         name = name.strip().lower()
         if not sep or not n.strip().isdigit() or int(n) < 1 or name not in solvers:
-            raise FoonInputError("<options>", 0, f"--goal-limit {item!r}: expected SOLVER=N with N >= 1 and "
+            raise UsageError(f"--goal-limit {item!r}: expected SOLVER=N with N >= 1 and "
                                                  f"SOLVER one of the chosen solvers ({', '.join(solvers)})")
         out[name] = int(n)
     return tuple(sorted(out.items()))

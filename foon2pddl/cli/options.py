@@ -6,6 +6,7 @@ from pathlib import Path
 
 import click
 
+from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
@@ -99,8 +100,6 @@ def emit(text: str, output: Path | None) -> None:
         try:
             atomic_write(output, text)
         except OSError as exc:
-            from ..errors import FoonInputError
-
             raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
 
 
@@ -151,6 +150,8 @@ def warn_kitchen(kitchen, foon, strays) -> None:
 
 def view_goal(view, goal: str | None, goal_file: Path | None, level: int):
     """The `--goal`/`--goal-file` goal resolved against a network view; warns when `level` drops part of it."""
+    if (goal is None) == (goal_file is None):
+        raise UsageError("give exactly one of --goal and --goal-file")
     from ..io.inputs import goal_spec
     from ..model.goal import level_loss
 
@@ -158,6 +159,14 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int):
     if loss:
         click.echo(f"warning: {loss}", err=True)
     return view.goal(goal, goal_file)
+
+
+def check_lifted_options(encoding: str, costs: str | None) -> None:
+    """--network gen compiles its own (lifted) encoding, without action costs: reject options it would ignore."""
+    if encoding != "tree":
+        raise UsageError("--network gen compiles the lifted encoding; drop --encoding")
+    if costs is not None:
+        raise UsageError("--network gen does not support --costs")
 
 
 def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:

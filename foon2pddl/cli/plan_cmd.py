@@ -8,14 +8,16 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 from ..io.rates import read_rates
 from ..io.tree_formats import FORMATS, render_tree
 from ..planners import DEFAULT_PLANNER
 from ..planners.solve import PHASES, PlanOutcome, plan
+from ..status import PlanStatus
 from . import main
 from .options import (
+    check_lifted_options,
     check_output,
     check_time_limit,
     containment_option,
@@ -37,7 +39,7 @@ from .options import (
 )
 
 #: Exit status per outcome status.
-EXIT = {"solved": 0, "unsolvable": 1, "timeout": 1, "error": 2}
+EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.TIMEOUT: 1, PlanStatus.ERROR: 2}
 
 
 def timing_line(timings: dict[str, float]) -> str:
@@ -106,27 +108,23 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
     """
     check_output(output)
     if costs == "success-rate" and rates is None:
-        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
+        raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
-    try:
-        if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
-            from ..generalize.categories import load_index
-            from ..generalize.degeneralize import plan_lifted
-            from ..generalize.lifted import check_lifted_options
+    if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
+        from ..generalize.categories import load_index
+        from ..generalize.degeneralize import plan_lifted
 
-            check_lifted_options(encoding, costs)
-            outcome = plan_lifted(net.foon, kit, target, load_index(), level, planner=planner,
-                                  planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune)
-        else:
-            outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
-                           optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                           up_validate=up_validate)
-    except ValueError as exc:
-        raise FoonInputError("<options>", 0, str(exc)) from None
+        check_lifted_options(encoding, costs)
+        outcome = plan_lifted(net.foon, kit, target, load_index(), level, planner=planner,
+                              planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune)
+    else:
+        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                       up_validate=up_validate)
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import UsageError
 from ..io.batch_report import TABLE_FORMATS
 from ..io.constraints_file import load_constraints, with_rates
 from ..model.containment import count_inference, inferred_nodes
@@ -82,11 +82,10 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     cons = load_constraints(constraints_files, without_motions, without, must_use)
     motion_rates = with_rates(read_rates(rates) if rates else None, cons)
     if method == "weighted" and motion_rates is None:
-        raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate) "
-                                             "or rates in a --constraints file")
+        raise UsageError("--method weighted needs --rates FILE (motion<TAB>rate) or rates in a --constraints file")
     entries = batch_entries(goal, goals_file, goal_file, fmt)
     if entries is not None and cons.items:
-        raise FoonInputError("<options>", 0, "constraints apply to one goal at a time (not with a batch of goals)")
+        raise UsageError("constraints apply to one goal at a time (not with a batch of goals)")
     net, view = load_view(paths, kitchen, level, network, containment, utensils)
     if entries is not None:
         return _batch(view, entries, method, motion_rates, fmt, budget, node_limit, output, containment)

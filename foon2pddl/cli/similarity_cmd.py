@@ -6,7 +6,7 @@ import json
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import UsageError
 from ..model.foon import normalize_label
 from . import main
 from .options import emit, output_option
@@ -31,11 +31,11 @@ def similarity(labels, as_pairs, senses, as_json, output) -> None:
 
     labels = [normalize_label(x) for x in labels]
     if any(not x for x in labels):
-        raise FoonInputError("<labels>", 0, "empty label")
+        raise UsageError("empty label")
     if as_pairs and len(labels) % 2:
-        raise FoonInputError("<labels>", 0, f"--pairs needs an even number of labels, got {len(labels)}")
+        raise UsageError(f"--pairs needs an even number of labels, got {len(labels)}")
     if len(labels) < 2:
-        raise FoonInputError("<labels>", 0, "give at least two labels")
+        raise UsageError("give at least two labels")
     sim = LabelSimilarity()
     if as_pairs or len(labels) == 2:
         pairs = list(zip(labels[::2], labels[1::2], strict=True))

@@ -55,10 +55,10 @@ def connect(jobs: int, scheduler: str | None):
     try:
         import distributed
     except ImportError:
-        from ..errors import FoonInputError
+        from ..errors import MissingDependencyError
 
-        raise FoonInputError("<dask>", 0, "parallel and distributed runs need Dask: "
-                                          "pip install 'foon2pddl[experiment]' (or 'dask[distributed]')") from None
+        raise MissingDependencyError("parallel and distributed runs need Dask",
+                                     "pip install 'foon2pddl[experiment]' (or 'dask[distributed]')") from None
 
     # Dask's own log lines (a nanny interrupted while starting, a scratch directory already removed with the
     # command's private TMPDIR) are noise here: lost tasks and unreachable schedulers are reported as such.
@@ -67,9 +67,9 @@ def connect(jobs: int, scheduler: str | None):
         try:
             return distributed.Client(scheduler, timeout="20s"), None
         except (OSError, TimeoutError) as exc:
-            from ..errors import FoonInputError
+            from ..errors import FoonError
 
-            raise FoonInputError(scheduler, 0, f"cannot reach the Dask scheduler: {exc}") from None
+            raise FoonError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
     import dask
 
     # Forked workers inherit the network views this process built (`worker.view`): a local run builds

@@ -14,24 +14,11 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import asdict, dataclass, field, fields
-from enum import StrEnum
 from pathlib import Path
 from typing import IO, Any
 
 from ..errors import FoonInputError
-
-
-class CellStatus(StrEnum):
-    """How a cell ended. `solved` means a task tree was found (and `validated` says whether it checks)."""
-
-    SOLVED = "solved"
-    UNSOLVABLE = "unsolvable"
-    BUDGET_EXHAUSTED = "budget exhausted"
-    NODE_LIMIT = "node limit"
-    TIMEOUT = "timeout"
-    ERROR = "error"
-    LOST = "lost"  # its worker died or its task was killed: no answer, a rerun redoes it
-
+from ..status import CellStatus
 
 #: Statuses in report order.
 STATUSES = tuple(CellStatus)

@@ -22,6 +22,7 @@ from enum import StrEnum
 from ..model.foon import ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import validate
+from ..status import cell_status
 from .networks import NetworkView
 from .records import CellStatus
 
@@ -32,18 +33,6 @@ DEFAULT_TIME_LIMIT = 60.0
 #: that plain A* orders every possible way: on the shared subgraphs (GEN, 20 goals) the mean search time
 #: per goal drops from 472 ms to 82 ms (max 4.2 s to 0.2 s), with the same optimal tree sizes.
 OPTIMAL_SEARCH = ("--search", "astar(lmcut(),pruning=atom_centric_stubborn_sets())")
-
-#: The one mapping from a planner's status (`planners.result`) to a cell status.
-FROM_PLAN_STATUS: dict[str, CellStatus] = {
-    "solved": CellStatus.SOLVED, "unsolvable": CellStatus.UNSOLVABLE, "timeout": CellStatus.TIMEOUT,
-    "error": CellStatus.ERROR,
-}
-#: The one mapping from a native retrieval's reason for returning no tree (`retrieval.result`) to a cell status.
-FROM_RETRIEVAL_REASON: dict[str, CellStatus] = {
-    "unreachable": CellStatus.UNSOLVABLE, "budget exhausted": CellStatus.BUDGET_EXHAUSTED,
-    "node limit": CellStatus.NODE_LIMIT, "timeout": CellStatus.TIMEOUT,
-}
-
 
 class Role(StrEnum):
     """What the report uses a solver for."""
@@ -112,7 +101,7 @@ def _native_outcome(result, kitchen_nodes, seconds: float) -> Outcome:
     """Outcome of a `Retrieval`, its tree validated from `kitchen_nodes`."""
     times = {"retrieve": seconds}
     if result.tree is None:
-        return Outcome(FROM_RETRIEVAL_REASON[result.reason], result.detail or result.reason, times)
+        return Outcome(cell_status(result.status), result.detail or result.reason, times)
     t0 = time.perf_counter()
     check = validate(result.tree, kitchen_nodes)
     times["validate"] = time.perf_counter() - t0
@@ -169,7 +158,7 @@ def _plan_outcome(outcome, steps: tuple[str, ...]) -> Outcome:
     times = dict(outcome.timings)
     tree = outcome.tree
     units = len(tree) if tree is not None else None
-    status = FROM_PLAN_STATUS[outcome.status]  # `error` when a plan was found that does not decode or validate
+    status = cell_status(outcome.status)  # `error` when a plan was found that does not decode or validate
     foon_valid = outcome.validation.ok if outcome.validation is not None else None
     validated = None if tree is None else status == CellStatus.SOLVED
     if status == CellStatus.SOLVED:

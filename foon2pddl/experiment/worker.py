@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..errors import FoonInputError
+from ..errors import FoonError, FoonInputError
 from ..io.files import expand_paths
 from ..io.inputs import Network, example_path, load_network
 from .networks import NetworkView, build_view
@@ -112,8 +112,8 @@ def _check_inputs(job: Job) -> None:
     try:
         mine = fingerprint(job.paths)
     except (OSError, FoonInputError) as exc:
-        raise FoonInputError(",".join(job.paths) or "<example>", 0, "this worker cannot read the input files "
-                             f"({exc}); they must be at the same path on every machine") from None
+        raise FoonError(f"this worker cannot read the input files ({exc}); they must be at the same path on every "
+                        "machine", path=",".join(job.paths) or None) from None
     if mine != job.fingerprint:
         raise FoonInputError(",".join(job.paths), 0, "the input files differ on this worker "
                              "(same paths, other contents): use a shared filesystem or identical copies")

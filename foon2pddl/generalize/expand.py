@@ -24,7 +24,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from ..errors import FoonInputError
+from ..errors import UsageError
 from ..model.foon import Foon, FunctionalUnit, dedupe_units
 from ..model.kitchen import Kitchen
 from .similarity import SimilarityMatrix, similarity_matrix
@@ -74,10 +74,10 @@ def expand(
 ) -> Expansion:
     """FOON-EXP of `foon` (at its level) over the vocabulary of `matrix` (default: network + kitchen labels).
 
-    Raises FoonInputError when the result would hold more than `max_units` units.
+    Raises UsageError when the result would hold more than `max_units` units.
     """
     if not 0 < threshold <= 1:
-        raise FoonInputError("<expand>", 0, f"similarity threshold must be in (0, 1], not {threshold}")
+        raise UsageError(f"similarity threshold must be in (0, 1], not {threshold}")
     if matrix is None:
         matrix = similarity_matrix(vocabulary(foon, kitchen))
     known = set(matrix.labels)
@@ -95,11 +95,8 @@ def expand(
         for pair in extra.items():
             derived.setdefault(pair, None)
         if max_units is not None and len(keys) > max_units:
-            raise FoonInputError(
-                "<expand>", 0,
-                f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
-                "raise the threshold or --max-units",
-            )
+            raise UsageError(f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
+                             "raise the threshold or the unit limit")
 
     mentions: dict[str, list[FunctionalUnit]] = {}
     for unit in foon.units:

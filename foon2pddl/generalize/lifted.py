@@ -47,6 +47,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..analysis.reachability import reachable
+from ..errors import UsageError
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units, make_node, make_state
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -195,7 +196,7 @@ def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -
     `missing` in about a second and times out (60 s) with `blocked` and `all`.
     """
     if policy not in POLICIES:
-        raise ValueError(f"generalization policy must be one of {', '.join(POLICIES)}, not {policy!r}")
+        raise UsageError(f"generalization policy must be one of {', '.join(POLICIES)}, not {policy!r}")
     if policy == "all":
         return lambda label: True
     if policy == "blocked":
@@ -325,12 +326,3 @@ def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> Fun
     note = "gen: " + ", ".join(f"{k} -> {v}" for k, v in sorted(changed.items()))
     return substitute_unit(lu.unit, binding, note=note)
 
-
-def check_lifted_options(encoding: str, costs: str | None) -> None:
-    """The lifted encoding is its own encoding, without action costs: reject options that would be ignored."""
-    from ..errors import FoonInputError
-
-    if encoding != "tree":
-        raise FoonInputError("<options>", 0, "--network gen compiles the lifted encoding; drop --encoding")
-    if costs is not None:
-        raise FoonInputError("<options>", 0, "--network gen does not support --costs")

@@ -15,6 +15,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..errors import UsageError
 from ..io.inputs import Network, goal_spec
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec, resolve_goal
@@ -72,4 +73,4 @@ def network_view(net: Network, kind: str, level: int, kitchen: Kitchen, *, thres
         mapping = category_map(sorted(labels - {""}), ix)
         return NetworkView(kind, project(c.foon, level), abstract_kitchen(kitchen, ix),
                            lambda spec: abstract_goal(spec, ix), note, lambda node: substitute_node(node, mapping))
-    raise ValueError(f"network must be one of {', '.join(NETWORKS)}, not {kind!r}")
+    raise UsageError(f"network must be one of {', '.join(NETWORKS)}, not {kind!r}")

@@ -20,7 +20,7 @@ import zipfile
 from functools import lru_cache
 from pathlib import Path
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, MissingDependencyError
 from .cache import cache_dir
 
 DEBIAN_DIR = Path("/usr/share/wordnet")
@@ -52,7 +52,7 @@ LEXNAMES: tuple[tuple[str, int], ...] = (
 )
 
 INSTALL_HINT = (
-    "WordNet not found: install Debian's WordNet 3.0 files "
+    "install Debian's WordNet 3.0 files "
     "(apt-get install wordnet-base wordnet-sense-index) or NLTK's corpus (python -m nltk.downloader wordnet)"
 )
 
@@ -110,7 +110,7 @@ def locate(
 ) -> tuple[Path, Path]:
     """(data root, corpus dir or zip) of the WordNet to use, assembling Debian's files if needed.
 
-    Raises FoonInputError naming both install routes when no WordNet is found.
+    Raises MissingDependencyError naming both install routes when no WordNet is found.
     """
     for root in nltk_data_roots() if nltk_roots is None else nltk_roots:
         corpus = root / "corpora" / "wordnet"
@@ -126,7 +126,7 @@ def locate(
             return root, assemble(debian_dir, root)
         except OSError as exc:
             raise FoonInputError(str(root), 0, f"cannot assemble WordNet from {debian_dir}: {exc}") from None
-    raise FoonInputError("<wordnet>", 0, INSTALL_HINT)
+    raise MissingDependencyError("WordNet not found", INSTALL_HINT)
 
 
 def corpus_version(corpus: Path) -> str:

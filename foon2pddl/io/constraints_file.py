@@ -17,7 +17,7 @@ import math
 from collections.abc import Iterable
 from pathlib import Path
 
-from ..errors import FoonSyntaxError
+from ..errors import FoonSyntaxError, UsageError
 from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
 from .json_text import load_json
 from .parser import CONTROL_CHARS, read_text
@@ -89,8 +89,7 @@ def load_constraints(files: Iterable[str | Path] = (), without_motions: Iterable
     flags += [Constraint(Kind.MUST_USE, x, "<options>") for x in must_use]
     for c in flags:
         if CONTROL_CHARS.search(c.value) or not c.value.strip():
-            raise FoonSyntaxError("<options>", 0, f"--{c.kind.value}: label {c.value!r} is empty or has control "
-                                                  "characters")
+            raise UsageError(f"--{c.kind.value}: label {c.value!r} is empty or has control characters")
     parts = [read_constraints(f) for f in files]
     try:
         return combine(*parts, make_constraints(flags, sources=("<options>",) if flags else ()))

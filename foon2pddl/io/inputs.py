@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from ..errors import FoonInputError, ParseWarning
+from ..errors import ParseWarning, UsageError
 from ..model.foon import Foon
 from ..model.goal import Goal, GoalSpec, resolve_goal
 from ..model.kitchen import Kitchen, default_kitchen
@@ -55,15 +55,15 @@ def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitch
 
 
 def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
-    """The goal from `--goal` text or `--goal-file`; exactly one must be given."""
+    """The goal from its text or from a goal file; exactly one must be given (UsageError otherwise)."""
     if (goal is None) == (goal_file is None):
-        raise FoonInputError("<goal>", 0, "give exactly one of --goal and --goal-file")
+        raise UsageError("give exactly one goal: as text or as a goal file")
     if goal_file is not None:
         return read_goal_file(goal_file)
     try:
         return parse_goal_spec(goal or "")
     except ValueError as exc:
-        raise FoonInputError("<goal>", 0, f"{exc}: {goal!r}") from None
+        raise UsageError(f"{exc}: {goal!r}") from None
 
 
 def load_goal(goal: str | None, goal_file: str | Path | None, foon: Foon) -> Goal:

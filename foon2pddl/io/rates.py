@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import FoonSyntaxError
+from ..errors import FoonSyntaxError, UsageError
 from ..model.foon import normalize_label
 from .parser import read_text
 
@@ -34,7 +34,7 @@ class Rates:
 
     def __post_init__(self) -> None:
         if not 0.0 < self.default <= 1.0:
-            raise ValueError(f"default rate must be in (0, 1], not {self.default!r}")
+            raise UsageError(f"default rate must be in (0, 1], not {self.default!r}")
 
     def rate(self, motion: str) -> float:
         """Success rate of a motion label (the default when unlisted)."""

@@ -14,7 +14,7 @@ import shutil
 import subprocess
 from collections.abc import Iterable
 
-from ..errors import FoonInputError
+from ..errors import FoonError, MissingDependencyError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
@@ -214,15 +214,16 @@ def _dot(tree: TaskTree, used: list[ObjectNode] | None) -> str:
 def _svg(tree: TaskTree, used: list[ObjectNode] | None) -> str:
     dot = shutil.which("dot")
     if dot is None:
-        raise FoonInputError("<svg>", 0, "Graphviz 'dot' is not installed (`make install` installs the Debian "
-                                         "package graphviz); use --format dot to get the graph source instead")
+        raise MissingDependencyError("Graphviz 'dot' is not installed",
+                                     "`make install` installs the Debian package graphviz; "
+                                     "the dot format gives the graph source without it")
     try:
         done = subprocess.run([dot, "-Tsvg"], input=_dot(tree, used), capture_output=True, text=True,
                               timeout=120, check=False)
     except (OSError, subprocess.TimeoutExpired) as exc:
-        raise FoonInputError("<svg>", 0, f"Graphviz 'dot' failed: {exc}") from None
+        raise FoonError(f"Graphviz 'dot' failed: {exc}") from None
     if done.returncode != 0:
-        raise FoonInputError("<svg>", 0, f"Graphviz 'dot' failed: {done.stderr.strip()}")
+        raise FoonError(f"Graphviz 'dot' failed: {done.stderr.strip()}")
     return done.stdout
 
 

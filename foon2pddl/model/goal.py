@@ -13,7 +13,7 @@ from __future__ import annotations
 import difflib
 from dataclasses import dataclass
 
-from ..errors import FoonInputError
+from ..errors import UsageError
 from .containment import is_auxiliary
 from .foon import Foon, ObjectNode, State, make_node
 from .levels import project_node
@@ -92,7 +92,7 @@ def spec_of_node(node: ObjectNode) -> GoalSpec:
 def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     """The produced nodes of `foon` (at its level) that match `spec`.
 
-    Raises FoonInputError naming close labels when nothing matches.
+    Raises UsageError naming close labels when nothing matches.
     """
     level = foon.level if level is None else level
     produced = [n for n in foon.producers if not is_auxiliary(n)]
@@ -102,8 +102,8 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
         hint = f"; close matches: {', '.join(close)}" if close else ""
         hint += "; `foon2pddl goals` lists every goal"
         if any(n.label == spec.label for n in foon.nodes):
-            raise FoonInputError("<goal>", 0, f"no unit produces {spec.label!r} (it only occurs as an input){hint}")
-        raise FoonInputError("<goal>", 0, f"unknown object label {spec.label!r}{hint}")
+            raise UsageError(f"no unit produces {spec.label!r} (it only occurs as an input){hint}")
+        raise UsageError(f"unknown object label {spec.label!r}{hint}")
     if spec.states is None:
         return Goal(spec, tuple(sorted(same_label)), level)
     want = project_node(make_node(spec.label, spec.states), level).states
@@ -112,8 +112,7 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     found = exact or subset
     if not found:
         known = sorted({", ".join(s.describe() for s in n.states) for n in same_label})[:8]
-        raise FoonInputError(
-            "<goal>", 0,
+        raise UsageError(
             f"no produced {spec.label!r} node is in states {spec.describe()!r}; produced states include: "
             + "; ".join(f"({k})" for k in known),
         )

@@ -7,6 +7,7 @@ network, kitchen and goal to one level first and then compares nodes with `==`.
 
 from __future__ import annotations
 
+from ..errors import UsageError
 from .foon import Foon, FunctionalUnit, ObjectNode, State, dedupe_units
 
 LEVELS = (1, 2, 3)
@@ -15,7 +16,7 @@ LEVELS = (1, 2, 3)
 def check_level(level: int) -> int:
     """Validate a level number."""
     if level not in LEVELS:
-        raise ValueError(f"level must be 1, 2 or 3, not {level!r}")
+        raise UsageError(f"level must be 1, 2 or 3, not {level!r}")
     return level
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..errors import UsageError
 from ..io.rates import Rates
 from ..model.foon import Foon
 from ..model.goal import Goal
@@ -30,13 +31,13 @@ def compile_task(
     instances: tuple[tuple[str, int], ...] = (),
     categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
 ) -> PlanningTask:
-    """Encode `goal` from `kitchen` over `foon` at `level` (ValueError on an unknown encoding or cost mode).
+    """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or cost mode).
 
     `instances` and `categories` are read by the `instances` encoding only (see `EncodeOptions`).
     """
     try:
         encoder = ENCODINGS[encoding]
     except KeyError:
-        raise ValueError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
+        raise UsageError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
     return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances,
                                                                  categories=categories))

@@ -10,6 +10,7 @@ plans the shortest wins. Auxiliary goal actions cost 0.
 
 from __future__ import annotations
 
+from ..errors import UsageError
 from ..io.rates import Rates
 from ..model.foon import FunctionalUnit
 
@@ -20,11 +21,11 @@ SCALE = 1000
 
 
 def check_costs(costs: str | None, rates: Rates | None) -> None:
-    """Validate a cost mode and its inputs (ValueError with what to give)."""
+    """Validate a cost mode and its inputs (UsageError with what to give)."""
     if costs is not None and costs not in COST_MODES:
-        raise ValueError(f"costs must be one of {', '.join(COST_MODES)}, not {costs!r}")
+        raise UsageError(f"costs must be one of {', '.join(COST_MODES)}, not {costs!r}")
     if costs == "success-rate" and rates is None:
-        raise ValueError("success-rate costs need motion success rates (--rates FILE)")
+        raise UsageError("success-rate costs need motion success rates (a rates file)")
 
 
 def unit_cost(unit: FunctionalUnit, costs: str | None, rates: Rates | None) -> int | None:
@@ -34,7 +35,7 @@ def unit_cost(unit: FunctionalUnit, costs: str | None, rates: Rates | None) -> i
     if costs == "unit":
         return 1
     if rates is None:
-        raise ValueError("success-rate costs need motion success rates")
+        raise UsageError("success-rate costs need motion success rates")
     return round(SCALE * rates.cost(unit.motion.label)) + 1
 
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from ..analysis.index import FoonIndex, index_of
+from ..errors import UsageError
 from ..io.rates import Rates
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
@@ -70,15 +71,15 @@ def at_level(foon: Foon, kitchen: Kitchen, goal: Goal, level: int) -> LevelInput
     check_level(level)
     for what, have in (("network", foon.level), ("kitchen", kitchen.level), ("goal", goal.level)):
         if have < level:
-            raise ValueError(f"the {what} is at level {have}, cannot encode it at level {level}")
+            raise UsageError(f"the {what} is at level {have}, cannot encode it at level {level}")
     candidates = tuple(sorted({project_node(c, level) for c in goal.candidates}))
     if not candidates:
-        raise ValueError(f"goal {goal.describe()!r} has no candidate node")
+        raise UsageError(f"goal {goal.describe()!r} has no candidate node")
     projected = project(foon, level)
     ix = index_of(projected)
     missing = [c for c in candidates if c not in ix.node_id]
     if missing:
-        raise ValueError(f"goal candidate {missing[0].describe()!r} is not a node of the network")
+        raise UsageError(f"goal candidate {missing[0].describe()!r} is not a node of the network")
     return LevelInputs(projected, kitchen.project(level).nodes, candidates, level, goal, kitchen.source)
 
 

@@ -26,6 +26,7 @@ import time
 from functools import cache, lru_cache
 from pathlib import Path
 
+from ..errors import MissingDependencyError, UsageError
 from .process import ProcessRun, remaining, run_process
 from .result import PlanResult, parse_plan_text, tail
 
@@ -67,8 +68,15 @@ def exit_status(code: int) -> tuple[str, str]:
     return "error", f"unexpected exit code {code}"
 
 
-class FastDownwardMissing(RuntimeError):
+#: How to install Fast Downward (the wheel ships the translator and the search binary).
+INSTALL_HINT = "pip install 'up-fast-downward' (make install does)"
+
+
+class FastDownwardMissing(MissingDependencyError):
     """The up-fast-downward wheel (or its search binary) is not installed."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message, INSTALL_HINT)
 
 
 @lru_cache(maxsize=1)
@@ -97,7 +105,7 @@ def search_binary() -> Path:
 
 @cache
 def alias_options(alias: str) -> tuple[str, ...]:
-    """Search options of a driver alias, read (not executed) from the driver's `aliases.py`."""
+    """Search options of a driver alias, read (not executed) from the driver's `aliases.py` (UsageError if none)."""
     tree = ast.parse((downward_dir() / "driver" / "aliases.py").read_text())
     for node in tree.body:
         if (isinstance(node, ast.Assign) and len(node.targets) == 1
@@ -106,7 +114,7 @@ def alias_options(alias: str) -> tuple[str, ...]:
             options = ast.literal_eval(node.value)
             # The driver strips blanks the same way (aliases.set_options_for_alias).
             return tuple(x.replace(" ", "").replace("\n", "") for x in options)
-    raise KeyError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
+    raise UsageError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
 
 
 #: Translator options for tasks without delete effects: with nothing deleted there are no
@@ -195,5 +203,5 @@ def solve(domain_text: str, problem_text: str, *, optimal: bool = False, time_li
                 return failed.with_timings(write=write_s)
             result = search(work, opts, remaining(deadline), name, sas_path=sas, memory_limit_mb=memory_limit_mb)
             return result.with_timings(write=write_s, translate=run.seconds)
-    except (FastDownwardMissing, KeyError, OSError) as exc:
+    except (FastDownwardMissing, OSError) as exc:
         return PlanResult("error", (), name, str(exc))

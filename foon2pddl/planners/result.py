@@ -1,8 +1,8 @@
 """What every planner returns: a status, the plan's steps, a message and timings.
 
-Statuses: `solved` (a plan was found), `unsolvable` (the planner proved or
-concluded there is none), `timeout` (the time limit ran out first), `error`
-(the planner failed or does not support the task). Plan steps are the
+Statuses (`status.PlanStatus`): `solved` (a plan was found), `unsolvable` (the
+planner proved or concluded there is none), `timeout` (the time limit ran out
+first), `error` (the planner failed or does not support the task). Plan steps are the
 lower-cased text between the parentheses of an IPC plan line: the action name,
 then any arguments separated by single spaces.
 """
@@ -11,26 +11,29 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-STATUSES = ("solved", "unsolvable", "timeout", "error")
+from ..status import PlanStatus
+
+#: Every plan status, in report order.
+STATUSES = tuple(PlanStatus)
 
 
 @dataclass(frozen=True)
 class PlanResult:
     """Outcome of one planner run."""
 
-    status: str
+    status: PlanStatus
     plan: tuple[str, ...] = ()
     planner: str = ""
     message: str = ""
     timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self) -> None:
-        if self.status not in STATUSES:
-            raise ValueError(f"unknown plan status {self.status!r}")
+        # Accept the plain strings too (`PlanStatus("solved")`); anything else is a bug.
+        object.__setattr__(self, "status", PlanStatus(self.status))
 
     @property
     def solved(self) -> bool:
-        return self.status == "solved"
+        return self.status == PlanStatus.SOLVED
 
     def with_timings(self, **extra: float) -> PlanResult:
         """A copy with more phase timings (seconds)."""

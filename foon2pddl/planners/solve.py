@@ -22,6 +22,7 @@ from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import compile_task
 from ..pddl.render import render
 from ..pddl.task import Atom, PlanningTask
+from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
 
@@ -40,10 +41,10 @@ class PlanOutcome:
     timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
 
     @property
-    def status(self) -> str:
+    def status(self) -> PlanStatus:
         """The planner's status, or `error` when a plan was found but does not decode or validate."""
         if self.result.solved and (self.decoded is None or not self.decoded.ok):
-            return "error"
+            return PlanStatus.ERROR
         return self.result.status
 
     @property

@@ -8,6 +8,7 @@ from dataclasses import replace
 
 from ..analysis.index import index_of
 from ..analysis.reachability import Reachability
+from ..errors import UsageError
 from ..io.rates import Rates
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
@@ -42,11 +43,11 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
     `reach`: the fixpoint of `foon` from this kitchen, when already computed (batches share one).
     """
     if method not in METHODS:
-        raise ValueError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
+        raise UsageError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
     known = index_of(foon).node_id
     stray = [c for c in goal.candidates if c not in known]
     if stray:
-        raise ValueError(f"goal candidate {stray[0].describe()!r} is not a node of the network "
+        raise UsageError(f"goal candidate {stray[0].describe()!r} is not a node of the network "
                          f"(goal resolved at level {goal.level}, network at level {foon.level}?)")
     nodes = kitchen_nodes(kitchen, foon.level)
     if method == "weighted" and rates is None:

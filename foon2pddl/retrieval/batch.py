@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from ..analysis.reachability import reachable
-from ..errors import FoonInputError
+from ..errors import FoonError
 from ..io.goal_lists import GoalEntry
 from ..io.rates import Rates
 from ..model.containment import Containment, containment_of, count_inference
@@ -89,7 +89,7 @@ def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, met
     where = f"{entry.path}:{entry.line}"
     try:
         goal = resolve(entry.spec)
-    except FoonInputError as exc:
+    except FoonError as exc:  # no node matches the goal
         return GoalRow(entry.spec.describe(), where, GoalStatus.UNMATCHED, clock() - t0, exc.message)
     result = retrieve(foon, kitchen, goal, method, rates=rates, budget=budget, node_limit=node_limit, reach=reach)
     if result.tree is None:

@@ -5,13 +5,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..model.tasktree import TaskTree
+from ..status import RetrievalStatus
 
 METHODS = ("greedy", "complete", "optimal", "weighted")
 
 #: Reasons for returning no tree.
-UNREACHABLE = "unreachable"
-BUDGET_EXHAUSTED = "budget exhausted"
-NODE_LIMIT = "node limit"
+UNREACHABLE = RetrievalStatus.UNREACHABLE
+BUDGET_EXHAUSTED = RetrievalStatus.BUDGET_EXHAUSTED
 
 
 @dataclass(frozen=True)
@@ -28,7 +28,7 @@ class Retrieval:
     """
 
     tree: TaskTree | None
-    reason: str | None
+    reason: RetrievalStatus | None
     method: str
     detail: str = ""
     expansions: int = 0
@@ -38,6 +38,15 @@ class Retrieval:
     def __post_init__(self) -> None:
         if (self.tree is None) == (self.reason is None):
             raise ValueError("a Retrieval has either a tree or a reason")
+        if self.reason is not None:
+            object.__setattr__(self, "reason", RetrievalStatus(self.reason))
+            if self.reason == RetrievalStatus.FOUND:
+                raise ValueError("a Retrieval without a tree needs a reason other than 'found'")
+
+    @property
+    def status(self) -> RetrievalStatus:
+        """`found`, or the reason there is no tree."""
+        return RetrievalStatus.FOUND if self.reason is None else self.reason
 
     @property
     def found(self) -> bool:

@@ -1,0 +1,83 @@
+"""What an encoding returns and how it is registered: a task plus the map from plan steps back to units.
+
+In the spirit of unified-planning's compilers (a compiled problem plus a map
+back to the original), every encoding turns (network, kitchen, goal, level,
+options) into a `Compiled`: the `PlanningTask`, how a plan step (an action with
+its arguments) maps back to a functional unit, and whether the task has FOON's
+semantics (then a valid plan is also a task tree that FOON simulation accepts).
+`compile.ENCODINGS` is the one registry of encodings by name.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from ..model.foon import Foon, FunctionalUnit
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from .encoding import EncodeOptions
+from .task import Action, PlanningTask
+
+__all__ = ["Compiled", "Encoder", "Encoding", "Ground", "PlanDecodeError", "ground_encoding"]
+
+#: (unit index of an action, the plan step's arguments) -> the functional unit the step stands for.
+Ground = Callable[[int, tuple[str, ...]], FunctionalUnit]
+
+
+class PlanDecodeError(ValueError):
+    """A plan step that does not map back to a functional unit (an unknown action, wrong arguments)."""
+
+
+@dataclass(frozen=True)
+class Compiled:
+    """A planning task and how its plans map back to functional units.
+
+    `ground(unit, args)` gives the unit of an action whose `Action.unit` is `unit`
+    applied to the PDDL objects `args`; None means the actions are ground, and the
+    unit is `task.units[unit]` (`ground` raises PlanDecodeError for arguments that
+    do not fit). `foon_semantics`: a valid plan is a FOON task tree.
+    """
+
+    task: PlanningTask
+    foon_semantics: bool = True
+    ground: Ground | None = None
+
+    def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
+        """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""
+        if action.unit is None:
+            return None
+        if self.ground is None:
+            return self.task.units[action.unit]
+        return self.ground(action.unit, args)
+
+
+#: An encoder: (network, kitchen, goal, level, options) -> the compiled task.
+Encoder = Callable[[Foon, Kitchen, Goal, int, EncodeOptions], Compiled]
+
+
+@dataclass(frozen=True)
+class Encoding:
+    """A registered encoding: its name, its encoder and what it supports.
+
+    `costs`: it honours `EncodeOptions.costs`; `lifted`: objects are typed
+    parameters over categories (it needs `EncodeOptions.categories` or loads
+    the shipped index), so plans name the objects the planner chose.
+    """
+
+    name: str
+    encode: Encoder
+    description: str
+    costs: bool = True
+    lifted: bool = False
+
+
+def ground_encoding(encode: Callable[[Foon, Kitchen, Goal, int, EncodeOptions], PlanningTask],
+                    foon_semantics: bool) -> Encoder:
+    """An encoder for an encoding of parameterless actions, one per unit (`Action.unit` indexes `task.units`)."""
+
+    def encoder(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
+        return Compiled(encode(foon, kitchen, goal, level, options), foon_semantics)
+
+    encoder.__doc__ = encode.__doc__
+    return encoder

@@ -1,0 +1,111 @@
+"""One vocabulary: status enums and their one mapping, the error hierarchy, and how the CLI reports errors."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.errors import FoonError, FoonInputError, FoonSyntaxError, MissingDependencyError, UsageError
+from foon2pddl.planners.result import STATUSES, PlanResult
+from foon2pddl.retrieval import retrieve
+from foon2pddl.retrieval.result import Retrieval
+from foon2pddl.status import CellStatus, PlanStatus, RetrievalStatus, cell_status
+
+
+def run(*args: str):
+    return CliRunner().invoke(main, list(args))
+
+
+# ------------------------------------------------------------------ statuses
+
+
+def test_statuses_are_their_old_strings():
+    assert STATUSES == ("solved", "unsolvable", "timeout", "error")
+    assert PlanResult("solved").status is PlanStatus.SOLVED
+    assert json.dumps({"s": PlanStatus.TIMEOUT, "r": RetrievalStatus.BUDGET_EXHAUSTED}) == \
+        '{"s": "timeout", "r": "budget exhausted"}'
+    assert f"{RetrievalStatus.UNREACHABLE}: x" == "unreachable: x"
+
+
+def test_every_plan_and_retrieval_status_maps_to_a_cell_status():
+    for status in (*PlanStatus, *RetrievalStatus):
+        assert cell_status(status) in CellStatus
+    # every cell status but a lost worker's (and the unused node-limit column) comes from a solver's status
+    assert {cell_status(s) for s in (*PlanStatus, *RetrievalStatus)} == set(CellStatus) - {"lost", "node limit"}
+    assert cell_status(RetrievalStatus.UNREACHABLE) is CellStatus.UNSOLVABLE
+    assert cell_status(RetrievalStatus.FOUND) is cell_status(PlanStatus.SOLVED) is CellStatus.SOLVED
+    assert cell_status("timeout") is CellStatus.TIMEOUT  # plain strings (records read back) map too
+
+
+def test_retrieval_status_and_reason(example):
+    from foon2pddl.io.inputs import load_goal, load_kitchen
+
+    kitchen = load_kitchen(None, example, 3)
+    found = retrieve(example.foon, kitchen, load_goal("guacamole", None, example.foon), "complete")
+    assert found.status is RetrievalStatus.FOUND and found.reason is None
+    missing = retrieve(example.foon, kitchen, load_goal("lemonade", None, example.foon), "complete")
+    assert missing.status is RetrievalStatus.UNREACHABLE and missing.reason == "unreachable"
+    with pytest.raises(ValueError):
+        Retrieval(None, "found", "complete")
+    with pytest.raises(ValueError):
+        Retrieval(None, "node limit", "complete")
+
+
+# ------------------------------------------------------------------ errors
+
+
+def test_error_hierarchy():
+    usage = UsageError("bad value")
+    assert isinstance(usage, ValueError) and isinstance(usage, FoonError)
+    assert usage.location() is None and str(usage) == "bad value"
+    file_error = FoonSyntaxError("k.txt", 3, "expected a node", "O1 x")
+    assert file_error.location() == "k.txt:3" and str(file_error) == "k.txt:3: expected a node\n    'O1 x'"
+    assert FoonInputError("dir", 0, "no files").location() == "dir:0"
+    missing = MissingDependencyError("Graphviz 'dot' is not installed", "apt-get install graphviz")
+    assert missing.hint == "apt-get install graphviz" and "apt-get install graphviz" in missing.message
+    assert missing.location() is None
+
+
+def test_library_raises_usage_errors_without_flag_names(example):
+    from foon2pddl.io.inputs import load_goal, load_kitchen
+    from foon2pddl.pddl.compile import compile_task
+
+    goal = load_goal("guacamole", None, example.foon)
+    kitchen = load_kitchen(None, example, 3)
+    with pytest.raises(UsageError) as err:
+        compile_task(example.foon, kitchen, goal, "nope")
+    assert "--" not in err.value.message
+    with pytest.raises(UsageError) as err:
+        compile_task(example.foon, kitchen, goal, costs="success-rate")
+    assert "--" not in err.value.message
+    with pytest.raises(UsageError):
+        retrieve(example.foon, kitchen, goal, "nope")
+
+
+@pytest.mark.parametrize("args", [
+    ("retrieve", "--goal", "guacamole", "--method", "weighted"),
+    ("retrieve",),
+    ("retrieve", "--goal", "xyzzy"),
+    ("plan", "--goal", "guacamole", "--costs", "success-rate"),
+    ("compile", "--goal", "lemonade", "--network", "gen", "--encoding", "state"),
+    ("similarity", "onion"),
+])
+def test_option_errors_print_in_click_usage_style(args):
+    result = run(*args)
+    assert result.exit_code == 2
+    assert "Traceback" not in result.output
+    assert ":0: error" not in result.stderr and "<" not in result.stderr.split("Error:")[-1][:1]
+    assert result.stderr.startswith("Usage: ") and "\nError: " in result.stderr, result.stderr
+
+
+def test_file_errors_still_name_path_and_line(tmp_path):
+    bad = tmp_path / "k.txt"
+    bad.write_text("O1\tonion\t0\nS\n")
+    result = run("retrieve", "--goal", "guacamole", "--kitchen", str(bad))
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"{bad}:2: error: "), result.stderr
+    result = run("stats", str(tmp_path / "missing"))
+    assert result.exit_code == 2 and result.stderr.startswith(f"{tmp_path / 'missing'}:0: error: ")
