@@ -79,16 +79,16 @@ def run(ctx: Context) -> None:
     t_gen, _, c = timeit(lambda: compress(foon, index), max(repeat, 3))
     ctx.report(AREA, "FOON-GEN construction", t_gen, "s", f"{c.original_units} -> {len(c.foon.units)} units")
 
-    from foon2pddl.generalize.degeneralize import plan_lifted
     from foon2pddl.model.goal import Goal, spec_of_node
     from foon2pddl.model.kitchen import default_kitchen
+    from foon2pddl.planners.solve import plan
 
     kitchen = default_kitchen(foon)
     dishes = sorted({n for u in foon.units for n in u.outputs if n.dish is not None})[: 10 if ctx.quick else 40]
     times, solved, valid = [], 0, 0
     for d in dishes:
         t0 = time.perf_counter()
-        out = plan_lifted(foon, kitchen, Goal(spec_of_node(d), (d,), 3), index, time_limit=120)
+        out = plan(foon, kitchen, Goal(spec_of_node(d), (d,), 3), "gen-lifted", category_index=index, time_limit=120)
         times.append(time.perf_counter() - t0)
         solved += out.result.solved
         valid += out.status == "solved"

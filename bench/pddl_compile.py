@@ -13,7 +13,8 @@ from foon2pddl.analysis.reachability import reachable
 from foon2pddl.io.files import load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
-from foon2pddl.pddl.compile import ENCODINGS, compile_task
+from foon2pddl.pddl.compile import GROUND_ENCODINGS as ENCODINGS
+from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.render import render
 
 from .harness import Context, timeit

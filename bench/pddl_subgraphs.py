@@ -24,7 +24,8 @@ from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.model.levels import project, project_node
-from foon2pddl.pddl.compile import ENCODINGS, compile_task
+from foon2pddl.pddl.compile import GROUND_ENCODINGS as ENCODINGS
+from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
 from foon2pddl.planners import fd

@@ -7,11 +7,11 @@ import pddl.parser.problem
 import pytest
 from conftest import ROOT
 
-from foon2pddl.pddl.compile import ENCODINGS
+from foon2pddl.pddl.compile import GROUND_ENCODINGS, compile_task
 from foon2pddl.pddl.examples import GOALS, generate, main, stale_files
 from foon2pddl.pddl.names import sanitize
 
-PAIRS = [(enc, sanitize(goal)) for enc in ENCODINGS for goal in GOALS]
+PAIRS = [(enc, sanitize(goal)) for enc in GROUND_ENCODINGS for goal in GOALS]
 
 
 def _pair(encoding: str, stem: str):
@@ -80,6 +80,6 @@ def test_instances_problems_solve_with_pyperplan_and_replay_at_the_instance_leve
     assert plan, f"pyperplan found no plan for {stem}"
     net = load_network([])
     target = load_goal(goal, None, net.at(3))
-    task = ENCODINGS["instances"](net.at(3), load_kitchen(None, net, 3), target)
+    task = compile_task(net.at(3), load_kitchen(None, net, 3), target, "instances")
     steps = instance_steps(task, [op.name.strip("()") for op in plan])
     assert simulate_instances(task, steps, target.candidates).ok

@@ -11,9 +11,9 @@ import pytest
 from foon2pddl.experiment.solvers import OPTIMAL_SEARCH
 from foon2pddl.generalize import relevance
 from foon2pddl.generalize.categories import load_index
-from foon2pddl.generalize.lifted import encode_lifted
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.encode_lifted import encode_lifted
 from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd_reuse
 from foon2pddl.planners.solve import GoalReplanner

@@ -21,7 +21,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.levels import project, project_node
-from foon2pddl.pddl.compile import ENCODINGS, compile_task
+from foon2pddl.pddl.compile import GROUND_ENCODINGS, compile_task
 from foon2pddl.pddl.prune import prune_task, relevant_units
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
@@ -287,7 +287,7 @@ def test_goal_actions_cost_zero_and_success_rate_needs_rates():
 
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(cases(), st.sampled_from(list(ENCODINGS)), st.sampled_from([None, "unit"]))
+@given(cases(), st.sampled_from(GROUND_ENCODINGS), st.sampled_from([None, "unit"]))
 def test_rendered_pddl_parses_and_round_trips_the_actions(case, encoding, costs):
     foon, kitchen, goal, level = case
     task = compile_task(foon, kitchen, goal, encoding, level, costs=costs)
@@ -357,7 +357,7 @@ def test_fast_downward_accepts_every_encoding_of_a_subgraph(name):
     goal = resolve_goal(spec_of_node(dish), foon)
     kitchen = default_kitchen(foon)
     native = native_solvable(foon, kitchen, goal, 3)
-    for encoding in ENCODINGS:
+    for encoding in GROUND_ENCODINGS:
         result = fd.solve(*render(compile_task(foon, kitchen, goal, encoding)), time_limit=60)
         assert result.status in ("solved", "unsolvable"), result.message
         if encoding != "state":
@@ -387,7 +387,7 @@ def test_unified_planning_reads_every_encoding_of_hostile_labels(tmp_path):
     units = (FunctionalUnit((bowl, onion), Motion("pour*", composite=True), (out,), (Source("a\nb;c.foon", 3),)),)
     foon = Foon(units)
     kitchen = Kitchen(frozenset({bowl, onion}), 3)
-    for encoding in ENCODINGS:
+    for encoding in GROUND_ENCODINGS:
         task = compile_task(foon, kitchen, Goal(GoalSpec("and"), (out,), 3), encoding, costs="unit")
         domain, problem = render(task)
         (tmp_path / "d.pddl").write_text(domain)

@@ -16,7 +16,6 @@ from . import main
 from .options import (
     category_chains,
     category_types_option,
-    check_lifted_options,
     check_output,
     containment_option,
     costs_option,
@@ -26,7 +25,7 @@ from .options import (
     instances_option,
     kitchen_option,
     level_option,
-    load_view,
+    load_pddl_view,
     network_option,
     parse_instances,
     paths_argument,
@@ -45,14 +44,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
     if costs == "success-rate" and rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
-    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
+    _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
-    if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
-        from ..generalize.categories import load_index
-        from ..generalize.lifted import encode_lifted
-
-        check_lifted_options(encoding, costs)
-        return encode_lifted(net.foon, view.kitchen, target, load_index(), level, prune=prune).task
     extra = {}
     if encoding == "instances":
         extra = {"instances": parse_instances(instances),

@@ -7,7 +7,9 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError, UsageError
+from ..generalize.network import NETWORKS
 from ..io.atomic import atomic_write
+from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
@@ -31,10 +33,10 @@ goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path
                                 help="Goal as one object node in FOON O/S lines.")
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
                              help="Write to this file (atomically) instead of standard output.")
-encoding_option = click.option("--encoding", type=click.Choice(["tree", "instances", "state", "foon-compat"]),
-                               default="tree", show_default=True,
-                               help="PDDL encoding: tree (FOON's semantics), instances (physical objects whose "
-                                    "states change), state, foon-compat (see docs/pddl.md).")
+encoding_option = click.option("--encoding", type=click.Choice(list(ENCODINGS)), default=DEFAULT_ENCODING,
+                               show_default=True,
+                               help="PDDL encoding: " + "; ".join(f"{e.name} ({e.description})" for e in ENCODINGS.values())
+                                    + " (see docs/pddl.md).")
 instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
                                 help="instances encoding: N objects of LABEL in each place one can start "
                                      "(overrides the derived count; repeatable).")
@@ -47,10 +49,10 @@ costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"
                             help="Action costs: 1 per unit, or from motion success rates (needs --rates).")
 rates_option = click.option("--rates", "rates", type=click.Path(path_type=Path), default=None,
                             help="Motion success rates file (motion<TAB>rate).")
-network_option = click.option("--network", type=click.Choice(["reg", "exp", "gen"]), default="reg", show_default=True,
-                              help="reg: the network as read; exp: FOON-EXP (similar objects, threshold 0.89); "
-                                   "gen: FOON-GEN (categories; compile/plan use the lifted encoding whose plans "
-                                   "name kitchen objects). See docs/generalization.md.")
+network_option = click.option("--network", type=click.Choice(list(NETWORKS)), default=next(iter(NETWORKS)),
+                              show_default=True,
+                              help="; ".join(f"{k.name}: {k.description}" for k in NETWORKS.values())
+                                   + ". See docs/generalization.md.")
 
 
 def constraints_options(command):
@@ -161,12 +163,24 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int):
     return view.goal(goal, goal_file)
 
 
-def check_lifted_options(encoding: str, costs: str | None) -> None:
-    """--network gen compiles its own (lifted) encoding, without action costs: reject options it would ignore."""
-    if encoding != "tree":
-        raise UsageError("--network gen compiles the lifted encoding; drop --encoding")
-    if costs is not None:
-        raise UsageError("--network gen does not support --costs")
+def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encoding: str, costs: str | None,
+                   containment: str = "strict", utensils: Path | None = None):
+    """`load_view` for the PDDL commands (compile, plan), with the encoding they use.
+
+    A network kind with its own encoding (`gen`: the lifted one) compiles that encoding
+    over the concrete network; an encoding without action costs rejects --costs.
+    """
+    own = NETWORKS[network].encoding
+    if own is not None:
+        if encoding not in (DEFAULT_ENCODING, own):
+            raise UsageError(f"--network {network} compiles the {own} encoding; drop --encoding")
+        if costs is not None and not ENCODINGS[own].costs:
+            raise UsageError(f"--network {network} does not support --costs")
+        encoding, network = own, next(iter(NETWORKS))
+    if costs is not None and not ENCODINGS[encoding].costs:
+        raise UsageError(f"--encoding {encoding} does not support --costs")
+    net, view = load_view(paths, kitchen, level, network, containment, utensils)
+    return net, view, encoding
 
 
 def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:

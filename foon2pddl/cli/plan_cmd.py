@@ -8,26 +8,26 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError, UsageError
-from ..io.atomic import atomic_write
+from ..errors import UsageError
 from ..io.rates import read_rates
 from ..io.tree_formats import FORMATS, render_tree
+from ..pddl.compile import ENCODINGS
 from ..planners import DEFAULT_PLANNER
 from ..planners.solve import PHASES, PlanOutcome, plan
 from ..status import PlanStatus
 from . import main
 from .options import (
-    check_lifted_options,
     check_output,
     check_time_limit,
     containment_option,
     costs_option,
+    emit,
     encoding_option,
     goal_file_option,
     goal_option,
     kitchen_option,
     level_option,
-    load_view,
+    load_pddl_view,
     network_option,
     other_networks_hint,
     paths_argument,
@@ -110,21 +110,12 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
     if costs == "success-rate" and rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
-    net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
+    net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
-    if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
-        from ..generalize.categories import load_index
-        from ..generalize.degeneralize import plan_lifted
-
-        check_lifted_options(encoding, costs)
-        outcome = plan_lifted(net.foon, kit, target, load_index(), level, planner=planner,
-                              planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune)
-    else:
-        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
-                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                       up_validate=up_validate)
+    outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd, optimal=optimal,
+                   time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates, up_validate=up_validate)
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None
@@ -142,16 +133,15 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         else:
             summary += f": {outcome.message or outcome.result.message}"
         click.echo(summary, err=True)
-        decoded = getattr(outcome, "decoded", None)  # a lifted outcome decodes differently
-        for note in decoded.notes if decoded is not None else ():
+        for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
-        if status == "unsolvable" and encoding != "state":
+        if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
             click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
             if network == "reg":
                 other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
-        _write(data, output)
+        emit(data, output)
     if EXIT[status]:
         click.get_current_context().exit(EXIT[status])
 
@@ -165,13 +155,3 @@ def _why_unreachable(foon, kitchen, goal) -> str:
     if any(reach.can_make(c) for c in goal.candidates):
         return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"
     return explain_unreachable(foon, kitchen.nodes, goal)
-
-
-def _write(data: str, output: Path | None) -> None:
-    if output is None:
-        click.echo(data, nl=False)
-        return
-    try:
-        atomic_write(output, data)
-    except OSError as exc:
-        raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None

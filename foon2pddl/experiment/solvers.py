@@ -19,6 +19,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import StrEnum
 
+from ..errors import UsageError
 from ..model.foon import ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import validate
@@ -131,7 +132,7 @@ class _Native(Prepared):
         t0 = time.perf_counter()
         self.view = view
         self.method = method
-        self.kitchen_nodes = view.kitchen(setting.kitchen).project(view.foon.level).nodes
+        self.kitchen_nodes = view.map_kitchen(setting.kitchen).project(view.foon.level).nodes
         index_of(view.foon)
         self.reach = reachable(view.foon, self.kitchen_nodes)
         self.setup = time.perf_counter() - t0
@@ -141,7 +142,7 @@ class _Native(Prepared):
         from ..retrieval.greedy import greedy
         from ..retrieval.optimal import optimal
 
-        goal = self.view.goal(node)
+        goal = self.view.goal_of(node)
         foon, nodes = self.view.foon, self.kitchen_nodes
         t0 = time.perf_counter()
         if self.method == "greedy":
@@ -154,7 +155,7 @@ class _Native(Prepared):
 
 
 def _plan_outcome(outcome, steps: tuple[str, ...]) -> Outcome:
-    """Outcome of a planner run mapped back to a tree (`PlanOutcome` or `LiftedOutcome`)."""
+    """Outcome of a planner run mapped back to a tree (`PlanOutcome`)."""
     times = dict(outcome.timings)
     tree = outcome.tree
     units = len(tree) if tree is not None else None
@@ -179,13 +180,13 @@ class _FdReuse(Prepared):
         self.view = view
         self.time_limit = setting.time_limit
         t0 = time.perf_counter()
-        kitchen = view.kitchen(setting.kitchen)
+        kitchen = view.map_kitchen(setting.kitchen)
         self.replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, optimal=optimal,
                                        time_limit=setting.time_limit, search=OPTIMAL_SEARCH if optimal else None)
         self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
-        outcome = self.replanner.plan(self.view.goal(node), time_limit=self.time_limit)
+        outcome = self.replanner.plan(self.view.goal_of(node), time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan)
 
 
@@ -194,7 +195,7 @@ class _FdFresh(Prepared):
 
     def __init__(self, setting: Setting, encoding: str) -> None:
         self.view = setting.view
-        self.kitchen = setting.view.kitchen(setting.kitchen)
+        self.kitchen = setting.view.map_kitchen(setting.kitchen)
         self.encoding = encoding
         self.time_limit = setting.time_limit
 
@@ -202,7 +203,7 @@ class _FdFresh(Prepared):
         from ..planners.solve import plan
 
         foon = self.view.foon
-        outcome = plan(foon, self.kitchen, self.view.goal(node), self.encoding, foon.level,
+        outcome = plan(foon, self.kitchen, self.view.goal_of(node), self.encoding, foon.level,
                        time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan)
 
@@ -212,17 +213,17 @@ class _LiftedGen(Prepared):
 
     def __init__(self, setting: Setting) -> None:
         if setting.view.index is None:
-            raise ValueError("fd-lifted-gen needs the GEN network's category index")
+            raise UsageError("fd-lifted-gen needs the GEN network's category index")
         self.view = setting.view
         self.kitchen = setting.kitchen
         self.time_limit = setting.time_limit
 
     def solve(self, node: ObjectNode) -> Outcome:
-        from ..generalize.degeneralize import plan_lifted
+        from ..planners.solve import plan
 
         concrete = self.view.concrete
-        outcome = plan_lifted(concrete, self.kitchen, self.view.concrete_goal(node), self.view.index,
-                              concrete.level, time_limit=self.time_limit)
+        outcome = plan(concrete, self.kitchen, self.view.concrete_goal(node), "gen-lifted", concrete.level,
+                       category_index=self.view.index, time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan)
 
 

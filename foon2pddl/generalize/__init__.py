@@ -1,10 +1,10 @@
-"""Generalization of a FOON to objects it never saw (the seed paper's FOON-EXP and FOON-GEN).
+"""Generalization of a FOON to objects it never saw (the seed paper's FOON-EXP and FOON-GEN): FOON -> FOON.
 
 - `wordnet`: WordNet 3.0 through NLTK (an NLTK corpus, or Debian's files assembled once);
 - `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk;
 - `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
 - `categories`: the shipped category index; `compress`: FOON-GEN, objects replaced by categories;
-- `lifted`, `degeneralize`: category-typed PDDL whose plans ground back to concrete kitchen objects;
 - `network`: the `--network reg|exp|gen` view used by retrieve, compile and plan; `stats`: tables.
+The lifted FOON-GEN PDDL encoding (categories as types) is `pddl.encode_lifted`.
 See docs/generalization.md.
 """

@@ -9,7 +9,7 @@ provenance) are excluded from equality and hashing.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
@@ -223,13 +223,15 @@ def _index(units: tuple[FunctionalUnit, ...], side) -> dict[ObjectNode, tuple[in
     return {n: tuple(v) for n, v in acc.items()}
 
 
-def dedupe_units(units: Iterable[FunctionalUnit]) -> tuple[FunctionalUnit, ...]:
-    """Keep the first of each group of units with the same key; join their sources."""
-    kept: dict[tuple, FunctionalUnit] = {}
+def dedupe_units(units: Iterable[FunctionalUnit],
+                 key: Callable[[FunctionalUnit], Hashable] | None = None) -> tuple[FunctionalUnit, ...]:
+    """Keep the first of each group of units with the same key (default `FunctionalUnit.key`); join their sources."""
+    kept: dict[Hashable, FunctionalUnit] = {}
     for u in units:
-        first = kept.get(u.key)
+        k = u.key if key is None else key(u)
+        first = kept.get(k)
         if first is None:
-            kept[u.key] = u
+            kept[k] = u
         else:
-            kept[u.key] = FunctionalUnit(first.inputs, first.motion, first.outputs, first.sources + u.sources)
+            kept[k] = FunctionalUnit(first.inputs, first.motion, first.outputs, first.sources + u.sources)
     return tuple(kept.values())

@@ -1,43 +1,105 @@
-"""`compile_task`: one entry point from (network, kitchen, goal) to a `PlanningTask` in any encoding."""
+"""The registry of encodings, and one entry point from (network, kitchen, goal) to a task in any of them.
+
+`ENCODINGS` maps each encoding's name to its `registry.Encoding` (the first is
+the default); `compile_goal` returns a `registry.Compiled` (the task and how plan
+steps map back to units), `compile_task` just its `PlanningTask`. To add an
+encoding, write its encoder and list it here.
+"""
 
 from __future__ import annotations
 
 from ..errors import UsageError
+from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
 from ..model.foon import Foon
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
+from .encode_lifted import compile_lifted
 from .encode_state import encode_state
 from .encode_tree import encode_tree
 from .encoding import EncodeOptions
+from .registry import Compiled, Encoding
 from .task import PlanningTask
 
-#: Encoding name -> encoder; the first is the default.
-ENCODINGS = {"tree": encode_tree, "instances": encode_instances, "state": encode_state, "foon-compat": encode_compat}
+__all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "as_compiled", "compile_goal", "compile_task",
+           "encoding_named"]
 
 
-def compile_task(
-    foon: Foon,
-    kitchen: Kitchen,
-    goal: Goal,
-    encoding: str = "tree",
-    level: int = 3,
-    prune: bool = True,
-    costs: str | None = None,
-    rates: Rates | None = None,
-    *,
-    instances: tuple[tuple[str, int], ...] = (),
-    categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
-) -> PlanningTask:
-    """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or cost mode).
+def _registry(*encodings: Encoding) -> dict[str, Encoding]:
+    return {e.name: e for e in encodings}
 
-    `instances` and `categories` are read by the `instances` encoding only (see `EncodeOptions`).
-    """
+
+#: Encoding name -> encoding, the default first.
+ENCODINGS: dict[str, Encoding] = _registry(
+    Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit"),
+    Encoding("instances", encode_instances, "physical object instances whose states change"),
+    Encoding("state", encode_state, "object-centred STRIPS: facts per object and state, with deletes",
+             foon_semantics=False),
+    Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),
+    Encoding("gen-lifted", compile_lifted,
+             "FOON-GEN: categories as types, the planner grounds them to kitchen objects",
+             costs=False, lifted=True),
+)
+
+DEFAULT_ENCODING = next(iter(ENCODINGS))
+
+#: The encodings whose plan steps map back through `Action.unit` alone (the lifted one grounds categories).
+GROUND_ENCODINGS = tuple(name for name, e in ENCODINGS.items() if not e.lifted)
+
+
+def encoding_named(name: str) -> Encoding:
+    """The registered encoding `name` (UsageError listing the known ones)."""
     try:
-        encoder = ENCODINGS[encoding]
+        return ENCODINGS[name]
     except KeyError:
-        raise UsageError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
-    return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances,
-                                                                 categories=categories))
+        raise UsageError(f"encoding must be one of {', '.join(ENCODINGS)}, not {name!r}") from None
+
+
+def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
+                 prune: bool = True, costs: str | None = None, rates: Rates | None = None,
+                 instances: tuple[tuple[str, int], ...] = (), categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
+                 category_index: CategoryIndex | None = None, policy: str = "absent") -> Compiled:
+    """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or bad options).
+
+    `instances` and `categories` (category chains) are read by the `instances` encoding,
+    `category_index` and `policy` by lifted ones (default: the shipped category index).
+
+    >>> from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+    >>> from foon2pddl.model.goal import Goal, GoalSpec
+    >>> from foon2pddl.model.kitchen import Kitchen
+    >>> whole, chopped = make_node("onion", [make_state("whole")]), make_node("onion", [make_state("chopped")])
+    >>> knife = make_node("knife")
+    >>> foon = Foon((FunctionalUnit((whole, knife), Motion("chop"), (chopped, knife)),), 3)
+    >>> compiled = compile_goal(foon, Kitchen(frozenset({whole, knife}), 3), Goal(GoalSpec("onion"), (chopped,), 3))
+    >>> [a.name for a in compiled.task.actions], compiled.task.goal[0].predicate
+    (['chop_u0'], 'onion_chopped')
+    >>> compiled.unit_of(compiled.task.actions[0]).motion.label
+    'chop'
+    """
+    enc = encoding_named(encoding)
+    if costs is not None and not enc.costs:
+        raise UsageError(f"the {enc.name} encoding does not support action costs")
+    options = EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances, categories=categories,
+                            category_index=category_index, policy=policy)
+    return enc.compile(foon, kitchen, goal, level, options)
+
+
+def as_compiled(task: PlanningTask | Compiled) -> Compiled:
+    """`task` with what its registered encoding promises (a lifted task needs its `Compiled` to map plans back)."""
+    if isinstance(task, Compiled):
+        return task
+    enc = encoding_named(task.encoding)
+    if enc.lifted:
+        raise UsageError(f"plans of the {enc.name} encoding map back through its Compiled task (compile_goal)")
+    return Compiled(task, enc.foon_semantics)
+
+
+def compile_task(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
+                 prune: bool = True, costs: str | None = None, rates: Rates | None = None, *,
+                 instances: tuple[tuple[str, int], ...] = (),
+                 categories: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> PlanningTask:
+    """The `PlanningTask` of `compile_goal` (for callers that do not map plans back)."""
+    return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
+                        instances=instances, categories=categories).task

@@ -10,11 +10,12 @@ comments, the auxiliary actions for a goal with several candidate nodes).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..analysis.index import FoonIndex, index_of
 from ..errors import UsageError
+from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
@@ -39,6 +40,8 @@ class EncodeOptions:
     The `instances` encoding also reads `instances` (label -> instances per starting place,
     overriding derived counts) and `categories` (label -> its category chain, most specific
     first, for PDDL supertypes; given as data because `pddl/` does not import `generalize/`).
+    Lifted encodings also take the category index (`category_index`, None: the shipped one)
+    and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
     """
 
     prune: bool = True
@@ -46,6 +49,8 @@ class EncodeOptions:
     rates: Rates | None = None
     instances: tuple[tuple[str, int], ...] = ()
     categories: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    category_index: CategoryIndex | None = field(default=None, compare=False)
+    policy: str = "absent"
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

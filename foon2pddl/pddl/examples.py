@@ -15,7 +15,7 @@ from pathlib import Path
 
 from ..io.atomic import atomic_write_many
 from ..io.inputs import load_goal, load_kitchen, load_network
-from .compile import ENCODINGS, compile_task
+from .compile import GROUND_ENCODINGS, compile_task
 from .names import sanitize
 from .render import render
 
@@ -43,7 +43,7 @@ def generate() -> dict[Path, str]:
     for goal_text in GOALS:
         goal = load_goal(goal_text, None, foon)
         stem = sanitize(goal_text)
-        for encoding in ENCODINGS:
+        for encoding in GROUND_ENCODINGS:
             domain, problem = render(compile_task(foon, kitchen, goal, encoding, LEVEL))
             files[Path("domains") / encoding / f"{stem}.pddl"] = domain
             files[Path("problems") / encoding / f"{stem}.pddl"] = problem

@@ -19,7 +19,7 @@ from ..model.kitchen import Kitchen
 from .encoding import EncodeOptions
 from .task import Action, PlanningTask
 
-__all__ = ["Compiled", "Encoder", "Encoding", "Ground", "PlanDecodeError", "ground_encoding"]
+__all__ = ["Compiled", "Encoder", "Encoding", "Ground", "PlanDecodeError"]
 
 #: (unit index of an action, the plan step's arguments) -> the functional unit the step stands for.
 Ground = Callable[[int, tuple[str, ...]], FunctionalUnit]
@@ -52,32 +52,29 @@ class Compiled:
         return self.ground(action.unit, args)
 
 
-#: An encoder: (network, kitchen, goal, level, options) -> the compiled task.
-Encoder = Callable[[Foon, Kitchen, Goal, int, EncodeOptions], Compiled]
+#: An encoder: (network, kitchen, goal, level, options) -> the task, or the compiled task when its
+#: plans need more than `Action.unit` to map back (parameters bound to objects).
+Encoder = Callable[[Foon, Kitchen, Goal, int, EncodeOptions], "PlanningTask | Compiled"]
 
 
 @dataclass(frozen=True)
 class Encoding:
-    """A registered encoding: its name, its encoder and what it supports.
+    """A registered encoding: its name, its encoder and what it promises and supports.
 
-    `costs`: it honours `EncodeOptions.costs`; `lifted`: objects are typed
-    parameters over categories (it needs `EncodeOptions.categories` or loads
-    the shipped index), so plans name the objects the planner chose.
+    `foon_semantics`: its valid plans are FOON task trees; `costs`: it honours
+    `EncodeOptions.costs`; `lifted`: objects are typed parameters over categories
+    (from `EncodeOptions.categories`, or the shipped index), so plans name the
+    objects the planner chose.
     """
 
     name: str
     encode: Encoder
     description: str
+    foon_semantics: bool = True
     costs: bool = True
     lifted: bool = False
 
-
-def ground_encoding(encode: Callable[[Foon, Kitchen, Goal, int, EncodeOptions], PlanningTask],
-                    foon_semantics: bool) -> Encoder:
-    """An encoder for an encoding of parameterless actions, one per unit (`Action.unit` indexes `task.units`)."""
-
-    def encoder(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
-        return Compiled(encode(foon, kitchen, goal, level, options), foon_semantics)
-
-    encoder.__doc__ = encode.__doc__
-    return encoder
+    def compile(self, foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
+        """The compiled task (an encoder's bare `PlanningTask` has parameterless actions, one per unit)."""
+        out = self.encode(foon, kitchen, goal, level, options)
+        return out if isinstance(out, Compiled) else Compiled(out, self.foon_semantics)

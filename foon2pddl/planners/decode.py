@@ -1,16 +1,18 @@
 """Plan -> task tree: map plan steps back to functional units and check the result.
 
-Each step names an action; `Action.unit` gives its functional unit (auxiliary
-actions, unit None, such as an encoding's goal actions, are skipped). The tree's
-goal is the first goal candidate (at the task's level) the units make.
+Each step names an action and its arguments; the compiled task maps them back to
+a functional unit (`registry.Compiled.unit_of`: `Action.unit`, grounded with the
+arguments for lifted encodings; auxiliary actions such as an encoding's goal
+actions are skipped). The tree's goal is the first goal candidate (at the task's
+level) the units make.
 
 Two checks always run: the plan against the task's own STRIPS semantics
 (`simulate_plan`: preconditions hold, deletes then adds, goal at the end) and
 the tree by FOON simulation from the kitchen, exactly like a native retrieval
-(`tasktree.validate`). The `tree` and `foon-compat` encodings have FOON's
-semantics, so a valid plan must pass both; the `state` encoding combines facts
-of different nodes, so its plans need only pass the first, and the FOON check
-is reported as information. On request, and when the task is small, the plan
+(`tasktree.validate`). Encodings with FOON's semantics (`tree`, `foon-compat`,
+`gen-lifted`) must pass both; the `state` encoding combines facts of different
+nodes, so its plans need only pass the first, and the FOON check is reported
+as information. On request, and when the task is small, the plan
 is also checked by unified-planning's sequential plan validator, independent
 of our code (it imports UP, ~1.5 s, hence opt-in).
 """
@@ -25,19 +27,16 @@ from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.levels import project_node
 from ..model.tasktree import TaskTree, Validation, justify, validate
+from ..pddl.compile import as_compiled
+from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask
 from .result import step_action
 
+__all__ = ["Decoded", "PlanDecodeError", "check", "decode", "goal_node", "plan_units", "run_plan", "simulate_plan",
+           "to_tree", "up_validation"]
+
 #: Largest task (actions) checked with UP's validator: its cost grows fast with size.
 UP_VALIDATE_MAX_ACTIONS = 300
-
-
-class PlanDecodeError(ValueError):
-    """A plan step that names no action of the task."""
-
-
-#: Encodings whose semantics are not FOON's: their trees need not pass FOON simulation.
-NON_FOON_ENCODINGS = frozenset({"state"})
 
 
 @dataclass(frozen=True)
@@ -69,15 +68,21 @@ class Decoded:
         return out + (self.validation.problems if self.foon_semantics else ())
 
 
-def plan_units(task: PlanningTask, steps: Sequence[str]) -> tuple[FunctionalUnit, ...]:
-    """The functional units of a plan's steps, in order; raises PlanDecodeError for an unknown action."""
+def plan_units(task: PlanningTask | Compiled, steps: Sequence[str]) -> tuple[FunctionalUnit, ...]:
+    """The functional units of a plan's steps, in order; PlanDecodeError for a step that maps to none."""
+    compiled = as_compiled(task)
     units = []
     for n, step in enumerate(steps, start=1):
-        action = task.action_for(step_action(step))
+        name, *args = step.split()
+        action = compiled.task.action_for(name)
         if action is None:
             raise PlanDecodeError(f"plan step {n} ({step}) names no action of the task")
-        if action.unit is not None:
-            units.append(task.units[action.unit])
+        try:
+            unit = compiled.unit_of(action, tuple(args))
+        except PlanDecodeError as exc:
+            raise PlanDecodeError(f"plan step {n} ({step}): {exc}") from None
+        if unit is not None:
+            units.append(unit)
     return tuple(units)
 
 
@@ -101,45 +106,50 @@ def goal_node(goal: Goal, level: int, kitchen_nodes: Iterable[ObjectNode],
     return next((c for c in candidates if c in available), candidates[0])
 
 
-def to_tree(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
-    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for an unknown action.
+def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
+            kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
+    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for a step that maps to no unit.
 
     For encodings with FOON's semantics, steps the goal does not need are dropped
     (`tasktree.justify`); in delete-free tasks so are repeats of a unit already applied
     (`check` notes them); the raw plan is still checked step by step in `check`.
     """
+    compiled = as_compiled(task)
     kitchen_nodes = frozenset(kitchen_nodes)
-    units = plan_units(task, steps)
-    if delete_free(task):
+    units = plan_units(compiled, steps)
+    if delete_free(compiled.task):
         units = first_occurrences(units)
-    target = goal_node(goal, task.level, kitchen_nodes, units)
-    if task.encoding not in NON_FOON_ENCODINGS:
+    target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
+    if compiled.foon_semantics:
         units = justify(units, kitchen_nodes, target)
-    return TaskTree(units, target, task.level)
+    return TaskTree(units, target, compiled.task.level)
 
 
-def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask, steps: Sequence[str], *,
-          up_validate: bool = False) -> Decoded:
+def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask | Compiled,
+          steps: Sequence[str], *, up_validate: bool = False) -> Decoded:
     """Validate a decoded tree by simulation, and the plan with UP when asked and the task is small."""
+    compiled = as_compiled(task)
     up = None
-    if up_validate and len(task.actions) <= UP_VALIDATE_MAX_ACTIONS:
-        up = up_validation(task, steps)
+    if up_validate and len(compiled.task.actions) <= UP_VALIDATE_MAX_ACTIONS:
+        up = up_validation(compiled.task, steps)
     notes = ()
-    if delete_free(task):
-        units = plan_units(task, steps)
+    if delete_free(compiled.task):
+        units = plan_units(compiled, steps)
         repeats = len(units) - len(first_occurrences(units))
         if repeats:
             notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
     # a task compiled under --containment infer holds inference units: validate under the same rule
-    return Decoded(tree, validate(tree, kitchen_nodes, containment_of(task.units)), simulate_plan(task, steps), up,
-                   task.encoding not in NON_FOON_ENCODINGS, notes)
+    return Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
+                   simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
 
 
-def decode(task: PlanningTask, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,
+def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,
            up_validate: bool = False) -> Decoded:
     """The plan's task tree (kitchen nodes at the task's level) with its checks (see the module doc)."""
-    return check(to_tree(task, steps, goal, kitchen_nodes), kitchen_nodes, task, steps, up_validate=up_validate)
+    compiled = as_compiled(task)
+    return check(to_tree(compiled, steps, goal, kitchen_nodes), kitchen_nodes, compiled, steps,
+                 up_validate=up_validate)
 
 
 def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:
@@ -181,7 +191,7 @@ def _show(atom: Atom) -> str:
 
 
 def up_validation(task: PlanningTask, steps: Sequence[str]) -> Validation:
-    """The plan checked by UP's SequentialPlanValidator on `to_up_problem(task)`."""
+    """The plan checked by UP's SequentialPlanValidator on the task as a UP problem (`up_problem.build_up`)."""
     from unified_planning.plans import ActionInstance, SequentialPlan
     from unified_planning.shortcuts import PlanValidator
 

@@ -1,6 +1,7 @@
 """Planning end to end: compile, render, plan, decode, validate, with the time of each phase.
 
-`plan` handles one goal. `GoalReplanner` handles many goals on one network and
+`plan` handles one goal in any registered encoding (`pddl.compile.ENCODINGS`,
+the lifted FOON-GEN one included) with any planner. `GoalReplanner` handles many goals on one network and
 kitchen with Fast Downward, translating once (`planners.fd_reuse`): it compiles
 the network without goal-directed pruning and with every node as a goal
 candidate, which gives each node's goal atoms (the preconditions of the
@@ -13,18 +14,22 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field, replace
 
+from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.tasktree import TaskTree, Validation
-from ..pddl.compile import compile_task
+from ..pddl.compile import DEFAULT_ENCODING, as_compiled, compile_goal, compile_task
+from ..pddl.registry import Compiled
 from ..pddl.render import render
 from ..pddl.task import Atom, PlanningTask
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
+
+__all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan"]
 
 #: Phases in the order they run (the CLI adds `load` first).
 PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
@@ -35,10 +40,14 @@ class PlanOutcome:
     """A planner's result, the task tree its plan stands for and that tree's validation."""
 
     result: PlanResult
-    task: PlanningTask
+    compiled: Compiled
     decoded: Decoded | None = None
     decode_error: str | None = None
     timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
+
+    @property
+    def task(self) -> PlanningTask:
+        return self.compiled.task
 
     @property
     def status(self) -> PlanStatus:
@@ -65,52 +74,56 @@ class PlanOutcome:
         return "" if self.result.solved else self.result.message
 
 
-def _finish(result: PlanResult, task: PlanningTask, goal: Goal, kitchen_nodes: frozenset[ObjectNode],
+def _finish(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes: frozenset[ObjectNode],
             timings: dict[str, float], up_validate: bool) -> PlanOutcome:
     """Decode and validate a planner result; fold its timings into `timings`."""
     for phase in ("write", "translate", "search"):
         if phase in result.timings:
             timings[phase] = timings.get(phase, 0.0) + result.timings[phase]
     if not result.solved:
-        return PlanOutcome(result, task, timings=timings)
+        return PlanOutcome(result, compiled, timings=timings)
     t0 = time.perf_counter()
     try:
-        tree = to_tree(task, result.plan, goal, kitchen_nodes)
+        tree = to_tree(compiled, result.plan, goal, kitchen_nodes)
     except PlanDecodeError as exc:
         timings["decode"] = time.perf_counter() - t0
-        return PlanOutcome(result, task, decode_error=str(exc), timings=timings)
+        return PlanOutcome(result, compiled, decode_error=str(exc), timings=timings)
     timings["decode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    decoded = check(tree, kitchen_nodes, task, result.plan, up_validate=up_validate)
+    decoded = check(tree, kitchen_nodes, compiled, result.plan, up_validate=up_validate)
     timings["validate"] = time.perf_counter() - t0
-    return PlanOutcome(result, task, decoded, timings=timings)
+    return PlanOutcome(result, compiled, decoded, timings=timings)
 
 
-def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level: int = 3, *,
+def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
-         rates: Rates | None = None, up_validate: bool = False) -> PlanOutcome:
+         rates: Rates | None = None, category_index: CategoryIndex | None = None,
+         up_validate: bool = False) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
-    `time_limit` bounds the planner run (translation and search). Raises ValueError for
-    bad options (encoding, cost mode); a planner's failure is a status, never an exception.
+    `encoding` is any registered encoding; `category_index` is the category index of lifted
+    ones (default: the shipped index). `time_limit` bounds the planner run (translation
+    and search). Raises UsageError for bad options (encoding, cost mode); a planner's
+    failure is a status, never an exception.
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
-    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates)
+    compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
+                            category_index=category_index)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    domain_text, problem_text = render(task)
+    domain_text, problem_text = render(compiled.task)
     timings["write"] = time.perf_counter() - t0
-    result = run_planner(task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
+    result = run_planner(compiled.task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
                          optimal=optimal, time_limit=time_limit)
-    return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
+    return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
 
 
 class GoalReplanner:
     """Many goals on one network and kitchen: Fast Downward translates once, then searches per goal."""
 
-    def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = "tree", level: int = 3, *,
+    def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
                  time_limit: float | None = None, search: tuple[str, ...] | None = None) -> None:
         from .fd_reuse import TranslatedTask
@@ -143,8 +156,8 @@ class GoalReplanner:
         # Check the plan against the alternative it reaches, as the goal of the task.
         state, _ = run_plan(self.task, result.plan)
         reached = next((a for a in alternatives if set(a) <= state), alternatives[0] if alternatives else ())
-        return _finish(result, replace(self.task, goal=tuple(reached)), goal, self.kitchen_nodes, timings,
-                       up_validate)
+        return _finish(result, as_compiled(replace(self.task, goal=tuple(reached))), goal, self.kitchen_nodes,
+                       timings, up_validate)
 
 
 def _candidate_atoms(task: PlanningTask, nodes: tuple[ObjectNode, ...]) -> dict[ObjectNode, tuple[Atom, ...]]:

@@ -8,22 +8,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.generalize.categories import shipped_index
-from foon2pddl.generalize.degeneralize import plan_lifted, plan_units
-from foon2pddl.generalize.lifted import (
-    Ordering,
-    encode_lifted,
-    generalizer,
-    lift,
-    node_atom_labels,
-    node_of,
-    representations,
-)
 from foon2pddl.io.goal_files import parse_goal_spec
 from foon2pddl.io.inputs import example_path
 from foon2pddl.io.kitchen_files import read_kitchen
 from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
 from foon2pddl.model.tasktree import validate
-from foon2pddl.planners.decode import PlanDecodeError
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.encode_lifted import encode_lifted, generalizer, lift
+from foon2pddl.pddl.lifted_atoms import Ordering, node_atom_labels, node_of, representations
+from foon2pddl.planners.decode import PlanDecodeError, plan_units
+from foon2pddl.planners.solve import plan
 
 INDEX = shipped_index()
 CATEGORIZED = sorted({m for c in INDEX.categories for m in c.members})
@@ -36,7 +30,7 @@ def kitchen():
 
 def test_lemonade_plan_grounds_lime_and_validates(example, kitchen):
     goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
-    out = plan_lifted(example.foon, kitchen, goal, INDEX, time_limit=60)
+    out = plan(example.foon, kitchen, goal, "gen-lifted", category_index=INDEX, time_limit=60)
     assert out.status == "solved", out.message
     tree = out.tree
     assert validate(tree, kitchen.nodes).ok
@@ -51,7 +45,8 @@ def test_every_example_dish_plan_maps_back_to_a_valid_tree(example, kitchen):
     dishes = sorted({n for u in example.foon.units for n in u.outputs if n.dish is not None})
     solved = 0
     for d in dishes:
-        out = plan_lifted(example.foon, kitchen, Goal(spec_of_node(d), (d,), 3), INDEX, time_limit=60)
+        out = plan(example.foon, kitchen, Goal(spec_of_node(d), (d,), 3), "gen-lifted", category_index=INDEX,
+                   time_limit=60)
         assert out.status in ("solved", "unsolvable"), (d.describe(), out.message)
         if out.status == "solved":
             solved += 1
@@ -94,9 +89,13 @@ def test_lifted_task_types_and_objects(example, kitchen):
 
 def test_bad_plan_step_is_a_decode_error(example, kitchen):
     goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
-    lt = encode_lifted(example.foon, kitchen, goal, INDEX)
+    compiled = compile_goal(example.foon, kitchen, goal, "gen-lifted", category_index=INDEX)
     with pytest.raises(PlanDecodeError):
-        plan_units(lt, ["no-such-action lime"])
-    squeeze = next(a for a in lt.task.actions if a.name.startswith("squeeze"))
+        plan_units(compiled, ["no-such-action lime"])
+    squeeze = next(a for a in compiled.task.actions if a.name.startswith("squeeze"))
     with pytest.raises(PlanDecodeError):
-        plan_units(lt, [squeeze.name])  # missing arguments
+        plan_units(compiled, [squeeze.name])  # missing arguments
+    with pytest.raises(PlanDecodeError, match="unknown object"):
+        plan_units(compiled, [squeeze.name + " no-such-object"])
+    (unit,) = plan_units(compiled, [squeeze.name + " lime"])
+    assert "lime" in {n.label for n in unit.inputs} and "lemon" not in {n.label for n in unit.inputs}

@@ -33,7 +33,7 @@ concrete and only its *parameters* are generalized:
 
 Soundness: an atom determines its node (`node_of`), the initial atoms are those
 of kitchen nodes and an action adds the atoms of the output nodes of the
-grounded unit, so a valid plan maps back (`degeneralize.py`) to concrete units
+grounded unit, so a valid plan maps back (`ground_unit`) to concrete units
 whose inputs are each in the kitchen or made before: a task tree that
 `tasktree.validate` accepts at the concrete level. The encoding is incomplete
 where a grounded action orders two same-category objects of one node
@@ -42,32 +42,30 @@ differently from the action that needs the node.
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..analysis.reachability import reachable
 from ..errors import UsageError
-from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units, make_node, make_state
+from ..generalize.categories import CategoryIndex, load_index
+from ..generalize.relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
+from ..generalize.substitute import substitute_unit, unit_labels
+from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
-from ..pddl.encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
-from ..pddl.names import NameTable
-from ..pddl.task import Action, Atom, PlanningTask, Predicate
-from .categories import CategoryIndex
-from .relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
-from .substitute import substitute_unit, unit_labels
+from .encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
+from .lifted_atoms import Shape, node_atom_labels, representations, shape_label
+from .names import NameTable
+from .registry import Compiled, PlanDecodeError
+from .task import Action, Atom, PlanningTask, Predicate
+
+__all__ = ["POLICIES", "ROOT_TYPE", "LiftedTask", "LiftedUnit", "compile_lifted", "encode_lifted", "generalizer",
+           "ground_unit", "lift", "lift_unit"]
 
 #: The root of the category types: objects in no category have it, predicates take it (some PDDL
 #: parsers reject `object` written out as a parameter type).
 ROOT_TYPE = "kitchen-object"
-
-#: Most atoms written for one kitchen node or goal candidate (orderings of same-category objects).
-MAX_REPRESENTATIONS = 24
-
-# A node shape: arity, then per state (label, related position or -1, ingredient positions).
-Shape = tuple[int, tuple[tuple[str, int, tuple[int, ...]], ...]]
 
 
 @dataclass(frozen=True)
@@ -101,61 +99,9 @@ def lift_unit(unit: FunctionalUnit, index: CategoryIndex,
 
 def lift(foon: Foon, index: CategoryIndex,
          generalize: Callable[[str], bool] = lambda label: True) -> tuple[LiftedUnit, ...]:
-    """Lifted units of `foon`, one per class of units equal up to their parameters (first kept)."""
-    kept: dict[tuple, LiftedUnit] = {}
-    for u in foon.units:
-        lifted, key = lift_unit(u, index, generalize)
-        first = kept.get(key)
-        if first is None:
-            kept[key] = lifted
-        else:
-            merged = FunctionalUnit(first.unit.inputs, first.unit.motion, first.unit.outputs,
-                                    first.unit.sources + u.sources)
-            kept[key] = LiftedUnit(merged, first.params)
-    return tuple(kept.values())
-
-
-def shape_with(node: ObjectNode, order: list[str]) -> Shape:
-    """The shape of `node` when its mentioned labels take positions 1.. in `order`."""
-    pos = {node.label: 0, **{label: i for i, label in enumerate(order, start=1)}}
-    states = tuple(sorted((s.label, pos[s.related] if s.related else -1, tuple(sorted(pos[i] for i in s.ingredients)))
-                          for s in node.states))
-    return (len(order) + 1, states)
-
-
-def node_atom_labels(node: ObjectNode, ordering: Ordering) -> tuple[Shape, tuple[str, ...]]:
-    """The canonical (shape, argument labels) of `node`."""
-    order = sorted(mentioned(node), key=ordering.key)
-    return shape_with(node, order), (node.label, *order)
-
-
-def representations(node: ObjectNode, ordering: Ordering, shapes: set[Shape]) -> list[tuple[Shape, tuple[str, ...]]]:
-    """Every (shape in `shapes`, argument labels) that reconstructs `node`, same-category objects in any order."""
-    order = sorted(mentioned(node), key=ordering.key)
-    groups = [list(g) for _, g in itertools.groupby(order, key=ordering.root)]
-    out: list[tuple[Shape, tuple[str, ...]]] = []
-    for combo in itertools.islice(itertools.product(*(itertools.permutations(g) for g in groups)),
-                                  MAX_REPRESENTATIONS):
-        labels = [x for part in combo for x in part]
-        shape = shape_with(node, labels)
-        if shape in shapes:
-            out.append((shape, (node.label, *labels)))
-    return out
-
-
-def node_of(shape: Shape, labels: tuple[str, ...]) -> ObjectNode:
-    """The node an atom of `shape` with argument `labels` stands for."""
-    states = [make_state(s, labels[r] if r >= 0 else "", (labels[i] for i in ings)) for s, r, ings in shape[1]]
-    return make_node(labels[0], states)
-
-
-def shape_label(shape: Shape) -> str:
-    """Readable text naming a shape (`contains {1} in [2]`), the base of its predicate name."""
-    parts = []
-    for s, r, ings in shape[1]:
-        text = s + (f" [{r}]" if r >= 0 else "") + (" {" + " ".join(map(str, ings)) + "}" if ings else "")
-        parts.append(text)
-    return "node " + (", ".join(parts) if parts else "plain") + f" /{shape[0]}"
+    """Lifted units of `foon`, one per class of units equal up to their parameters (first kept, sources joined)."""
+    units = dedupe_units(foon.units, key=lambda u: lift_unit(u, index, generalize)[1])
+    return tuple(lift_unit(u, index, generalize)[0] for u in units)
 
 
 @dataclass(frozen=True)
@@ -210,6 +156,70 @@ def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -
     return lambda label: label not in have and label not in made
 
 
+class _Names:
+    """PDDL names of the lifted task: types (categories), objects (labels) and predicates (shapes)."""
+
+    def __init__(self, index: CategoryIndex, ordering: Ordering) -> None:
+        self.index = index
+        self.ordering = ordering
+        self.table = NameTable()
+        self.table.reserve(GOAL_REACHED, "goal reached")
+        self.table.reserve(ROOT_TYPE, "any kitchen object")
+        self.types: dict[str, str] = {}  # category -> type name
+        self.shapes: dict[Shape, str] = {}  # shape -> predicate name
+
+    def type_of(self, cat: str | None) -> str:
+        """The type of a category (its ancestors named first), ROOT_TYPE for none."""
+        if cat is None:
+            return ROOT_TYPE
+        if cat not in self.types:
+            for c in (*reversed(self.index.ancestors(cat)), cat):
+                if c not in self.types:
+                    self.types[c] = self.table.name(c, key=("type", c))
+        return self.types[cat]
+
+    def obj(self, label: str) -> str:
+        return self.table.name(label, key=("object", label))
+
+    def predicate(self, shape: Shape) -> str:
+        if shape not in self.shapes:
+            self.shapes[shape] = self.table.name(shape_label(shape), key=("shape", shape))
+        return self.shapes[shape]
+
+    def atom(self, node: ObjectNode, var: dict[str, str]) -> Atom:
+        """The atom of a unit's node: parameters for the labels in `var`, constants for the others."""
+        shape, labels = node_atom_labels(node, self.ordering)
+        return Atom(self.predicate(shape), tuple(var.get(x) or self.obj(x) for x in labels))
+
+    def ground_atom(self, shape: Shape, labels: tuple[str, ...]) -> Atom:
+        return Atom(self.predicate(shape), tuple(self.obj(x) for x in labels))
+
+    def type_pairs(self) -> tuple[tuple[str, str], ...]:
+        """(type, parent type) of every declared type, the root first."""
+        parent = {name: self.types[self.index.get(cat).parent] if self.index.get(cat).parent else ROOT_TYPE
+                  for cat, name in self.types.items()}
+        return ((ROOT_TYPE, "object"), *parent.items())
+
+
+def _unit_actions(lifted: tuple[LiftedUnit, ...], names: _Names) -> tuple[list[Action], set[str], set[Shape]]:
+    """One action per lifted unit; the labels actions name as constants; the shapes preconditions use."""
+    actions: list[Action] = []
+    constants: set[str] = set()
+    pre_shapes: set[Shape] = set()
+    for i, lu in enumerate(lifted):
+        vars_ = NameTable()
+        var = {label: "?" + vars_.name(f"{cat} {k}", key=label) for k, (label, cat) in enumerate(lu.params, start=1)}
+        constants |= lu.constants
+        pre = tuple(dict.fromkeys(names.atom(n, var) for n in lu.unit.inputs))
+        pre_shapes.update(node_atom_labels(n, names.ordering)[0] for n in lu.unit.inputs)
+        add = tuple(dict.fromkeys(names.atom(n, var) for n in lu.unit.outputs))
+        actions.append(Action(
+            names.table.name(f"{lu.unit.motion.label} g{i}", key=("unit", i)), pre, add,
+            params=tuple((var[label], names.type_of(cat)) for label, cat in lu.params),
+            unit=i, comment=unit_comment(lu.unit, i)))
+    return actions, constants, pre_shapes
+
+
 def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
                   prune: bool = True, policy: str = "absent") -> LiftedTask:
     """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc)."""
@@ -224,101 +234,63 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, ordering,
                                                      coarse)), level)
     lifted = lift(Foon(dedupe_units(f.units), level), index, generalize)
-
-    table = NameTable()
-    table.reserve(GOAL_REACHED, "goal reached")
-    table.reserve(ROOT_TYPE, "any kitchen object")
-    types: dict[str, str] = {}  # category -> type name
-
-    def type_of(cat: str | None) -> str:
-        if cat is None:
-            return ROOT_TYPE
-        if cat not in types:
-            for c in (*reversed(index.ancestors(cat)), cat):
-                if c not in types:
-                    types[c] = table.name(c, key=("type", c))
-        return types[cat]
-
-    def obj(label: str) -> str:
-        return table.name(label, key=("object", label))
-
-    shape_names: dict[Shape, str] = {}
-
-    def predicate(shape: Shape) -> str:
-        if shape not in shape_names:
-            shape_names[shape] = table.name(shape_label(shape), key=("shape", shape))
-        return shape_names[shape]
-
-    def atom(node: ObjectNode, var: dict[str, str]) -> Atom:
-        """The atom of a unit's node: parameters for the labels in `var`, constants for the others."""
-        shape, labels = node_atom_labels(node, ordering)
-        return Atom(predicate(shape), tuple(var.get(x) or obj(x) for x in labels))
-
-    actions: list[Action] = []
-    constants: set[str] = set()
-    pre_shapes: set[Shape] = set()
-    for i, lu in enumerate(lifted):
-        vars_ = NameTable()
-        var = {label: "?" + vars_.name(f"{cat} {k}", key=label)
-               for k, (label, cat) in enumerate(lu.params, start=1)}
-        constants |= lu.constants
-        pre = tuple(dict.fromkeys(atom(n, var) for n in lu.unit.inputs))
-        pre_shapes.update(node_atom_labels(n, ordering)[0] for n in lu.unit.inputs)
-        add = tuple(dict.fromkeys(atom(n, var) for n in lu.unit.outputs))
-        actions.append(Action(
-            table.name(f"{lu.unit.motion.label} g{i}", key=("unit", i)), pre, add,
-            params=tuple((var[label], type_of(cat)) for label, cat in lu.params),
-            unit=i, comment=unit_comment(lu.unit, i)))
+    names = _Names(index, ordering)
+    actions, constants, pre_shapes = _unit_actions(lifted, names)
     add_shapes = {node_atom_labels(n, ordering)[0] for lu in lifted for n in lu.unit.outputs}
 
     goal_reps = [(c, representations(c, ordering, add_shapes | pre_shapes)) for c in candidates]
     init_shapes = pre_shapes | {s for _, reps in goal_reps for s, _ in reps}
-    init = sorted({Atom(predicate(s), tuple(obj(x) for x in labels))
+    init = sorted({names.ground_atom(s, labels)
                    for n in kitchen_nodes for s, labels in representations(n, ordering, init_shapes)})
-    atoms = [(c, (Atom(predicate(s), tuple(obj(x) for x in labels)),)) for c, reps in goal_reps for s, labels in reps]
+    atoms = [(c, (names.ground_atom(s, labels),)) for c, reps in goal_reps for s, labels in reps]
     if len(atoms) == 1:
         goal_atoms: tuple[Atom, ...] = atoms[0][1]
     else:  # goal actions live in the domain: the objects they name must be constants
         constants |= {x for c, reps in goal_reps for _, labels in reps for x in labels}
-        actions.extend(goal_actions(table, atoms, Atom(GOAL_REACHED), EncodeOptions(prune=False)))
+        actions.extend(goal_actions(names.table, atoms, Atom(GOAL_REACHED), EncodeOptions(prune=False)))
         goal_atoms = (Atom(GOAL_REACHED),)
 
     labels = {x for lu in lifted for x in unit_labels(lu.unit)}
     labels |= {x for n in (*kitchen_nodes, *candidates) for x in (n.label, *mentioned(n))}
-    declared = {label: (obj(label), type_of(index.choose(label))) for label in sorted(labels)}
+    declared = {label: (names.obj(label), names.type_of(index.choose(label))) for label in sorted(labels)}
     predicates = [Predicate(name, tuple((f"?x{k}", ROOT_TYPE) for k in range(shape[0])), comment=shape_label(shape))
-                  for shape, name in sorted(shape_names.items(), key=lambda x: x[1])]
+                  for shape, name in sorted(names.shapes.items(), key=lambda x: x[1])]
     if len(atoms) != 1:
         predicates.insert(0, Predicate(GOAL_REACHED, comment="a goal candidate was made"))
     task = PlanningTask(
         domain="foon-gen-lifted",
-        problem=table.name(f"make {goal.describe()}", key=("problem",)),
+        problem=names.table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="gen-lifted",
         level=level,
         predicates=tuple(predicates),
         actions=tuple(actions),
         init=tuple(init),
         goal=goal_atoms,
-        types=((ROOT_TYPE, "object"),) + tuple((name, types[index.get(cat).parent] if index.get(cat).parent
-                                                 else ROOT_TYPE) for cat, name in types.items()),
+        types=names.type_pairs(),
         objects=tuple(v for label, v in declared.items() if label not in constants),
         constants=tuple(v for label, v in declared.items() if label in constants),
         units=tuple(lu.unit for lu in lifted),
-        labels=table.labels,
+        labels=names.table.labels,
         comments=(f"foon2pddl, lifted FOON-GEN (categories as types), level {level}: "
                   f"{len(lifted)} lifted units from {len(f.units)} units",
                   f"goal: {goal.describe()} ({len(candidates)} candidate nodes)",
                   f"kitchen: {kitchen.source or 'given'} ({len(kitchen_nodes)} nodes)"),
     )
-    return LiftedTask(task, lifted, level, {n: s for s, n in shape_names.items()},
+    return LiftedTask(task, lifted, level, {n: s for s, n in names.shapes.items()},
                       {name: label for label, (name, _) in declared.items()})
 
 
 def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> FunctionalUnit:
-    """The concrete unit of lifted unit `action_index` with its parameters bound to the objects `args` (PDDL names)."""
+    """The concrete unit of lifted unit `action_index` with its parameters bound to the objects `args` (PDDL names).
+
+    Raises PlanDecodeError when `args` do not fit the action (count, unknown object).
+    """
     lu = lt.lifted[action_index]
     if len(args) != len(lu.params):
-        raise ValueError(f"action of unit {action_index} takes {len(lu.params)} arguments, got {len(args)}")
+        raise PlanDecodeError(f"action of unit {action_index} takes {len(lu.params)} arguments, got {len(args)}")
+    unknown = [a for a in args if a not in lt.objects]
+    if unknown:
+        raise PlanDecodeError(f"unknown object {unknown[0]!r}")
     binding = {label: lt.objects[a] for (label, _), a in zip(lu.params, args, strict=True)}
     changed = {k: v for k, v in binding.items() if k != v}
     if not changed:
@@ -326,3 +298,9 @@ def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> Fun
     note = "gen: " + ", ".join(f"{k} -> {v}" for k, v in sorted(changed.items()))
     return substitute_unit(lu.unit, binding, note=note)
 
+
+def compile_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
+    """The registered `gen-lifted` encoder: `encode_lifted` with the options' category index (default: shipped)."""
+    index = options.category_index if options.category_index is not None else load_index()
+    lt = encode_lifted(foon, kitchen, goal, index, level, prune=options.prune, policy=options.policy)
+    return Compiled(lt.task, True, lambda unit, args: ground_unit(lt, unit, args))
