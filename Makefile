@@ -21,7 +21,7 @@ $(STAMP): pyproject.toml
 	$(MAKE) system-deps
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
-	$(PY) -m pip install -q -e '.[test,experiment]'
+	$(PY) -m pip install -q -e '.[test,gen,experiment]'
 	touch $(STAMP)
 
 test: $(STAMP)

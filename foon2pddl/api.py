@@ -30,7 +30,8 @@ from .io.kitchen_files import read_node_lines
 from .io.rates import Rates
 from .io.tree_formats import render_tree
 from .model.foon import Foon, ObjectNode
-from .model.goal import Goal, GoalSpec, resolve_goal as _resolve_goal
+from .model.goal import Goal, GoalSpec
+from .model.goal import resolve_goal as _resolve_goal
 from .model.kitchen import Kitchen
 from .pddl.compile import ENCODINGS
 from .pddl.compile import compile_goal as _compile_goal

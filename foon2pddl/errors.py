@@ -13,10 +13,12 @@ Messages never name command-line flags: only `cli/` knows them.
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
+from types import ModuleType
 
 __all__ = ["FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
-           "UsageError"]
+           "UsageError", "require"]
 
 
 class FoonError(Exception):
@@ -72,6 +74,23 @@ class MissingDependencyError(FoonError):
     def __init__(self, message: str, hint: str) -> None:
         self.hint = hint
         super().__init__(f"{message}: {hint}")
+
+
+def require(module: str, extra: str, purpose: str) -> ModuleType:
+    """Import an optional dependency of the `extra` install option, or say how to install it.
+
+    >>> require("json", "gen", "reading JSON").__name__
+    'json'
+    >>> require("no_such_module_x", "gen", "FOON-EXP").hint
+    Traceback (most recent call last):
+        ...
+    foon2pddl.errors.MissingDependencyError: FOON-EXP needs no_such_module_x: pip install 'foon2pddl[gen]'
+    """
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        top = module.split(".")[0]
+        raise MissingDependencyError(f"{purpose} needs {top}", f"pip install 'foon2pddl[{extra}]'") from None
 
 
 @dataclass(frozen=True)

@@ -129,3 +129,8 @@ def test_the_checker_sees_lazy_and_relative_imports():
     modules = _modules()
     edges = {m for t in _imports("cli.options", modules["cli.options"]) if (m := _resolve(t, modules))}
     assert "generalize.network" in edges and "io.inputs" in edges  # `io.inputs` is imported inside a function
+
+
+def test_every_package_declares_all():
+    missing = [p.parent.name for p in PACKAGE.rglob("__init__.py") if "__all__" not in p.read_text()]
+    assert not missing, missing

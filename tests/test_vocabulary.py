@@ -109,3 +109,18 @@ def test_file_errors_still_name_path_and_line(tmp_path):
     assert result.stderr.startswith(f"{bad}:2: error: "), result.stderr
     result = run("stats", str(tmp_path / "missing"))
     assert result.exit_code == 2 and result.stderr.startswith(f"{tmp_path / 'missing'}:0: error: ")
+
+
+@pytest.mark.parametrize(("module", "call", "extra"), [
+    ("nltk", lambda: __import__("foon2pddl.generalize.wordnet", fromlist=["reader"]).reader.__wrapped__(), "gen"),
+    ("matplotlib", lambda: __import__("foon2pddl.experiment.plots", fromlist=["_figure"])._figure(1, 1), "experiment"),
+])
+def test_missing_extras_name_their_install_command(monkeypatch, module, call, extra):
+    import sys
+
+    for name in [m for m in sys.modules if m == module or m.startswith(module + ".")]:
+        monkeypatch.delitem(sys.modules, name)
+    monkeypatch.setitem(sys.modules, module, None)  # `import module` now raises ImportError
+    with pytest.raises(MissingDependencyError) as err:
+        call()
+    assert f"pip install 'foon2pddl[{extra}]'" in err.value.message and err.value.location() is None

@@ -23,6 +23,8 @@ from ..planners.cleanup import command_scope
 
 __all__ = ["main"]
 
+__all__ = ["main"]
+
 
 class _Command(click.Command):
     """Click command that reports the package's `UsageError` as a click usage error (usage line, exit 2)."""

@@ -7,3 +7,7 @@
 - `runner`: worker processes, resumable runs;
 - `report`: CSV, Markdown tables and PNG plots.
 """
+
+#: The package's modules (import them by name).
+__all__ = ["engine", "networks", "params", "plots", "progress", "protocol", "records", "render", "report", "runner",
+           "solvers", "tables", "worker"]

@@ -11,6 +11,8 @@ import sys
 import time
 from typing import IO
 
+from ..errors import require
+
 BAR = "bar"
 LINES = "lines"
 OFF = "off"
@@ -50,8 +52,7 @@ class Progress:
         self.last = self.start
         self.bar = None
         if self.mode == BAR:
-            from tqdm import tqdm
-
+            tqdm = require("tqdm", "experiment", "the experiment's progress bar").tqdm
             tqdm.monitor_interval = 0  # no monitor thread
             self.bar = tqdm(total=total, unit="cell", desc="experiment", file=self.stream, dynamic_ncols=True,
                             smoothing=0.05)

@@ -8,3 +8,7 @@
 The lifted FOON-GEN PDDL encoding (categories as types) is `pddl.encode_lifted`.
 See docs/generalization.md.
 """
+
+#: The package's modules (import them by name).
+__all__ = ["bootstrap_categories", "cache", "categories", "compress", "expand", "hints", "network", "senses",
+           "similarity", "stats", "substitute", "wordnet", "wup"]

@@ -20,7 +20,7 @@ import zipfile
 from functools import lru_cache
 from pathlib import Path
 
-from ..errors import FoonInputError, MissingDependencyError
+from ..errors import FoonInputError, MissingDependencyError, require
 from .cache import cache_dir
 
 DEBIAN_DIR = Path("/usr/share/wordnet")
@@ -153,12 +153,12 @@ def reader():
     """NLTK's WordNetCorpusReader over the located corpus (no multilingual data)."""
     import warnings
 
-    import nltk.data
-    from nltk.corpus.reader.wordnet import WordNetCorpusReader
+    nltk_data = require("nltk.data", "gen", "WordNet similarity (FOON-EXP, categories)")
+    WordNetCorpusReader = require("nltk.corpus.reader.wordnet", "gen", "WordNet").WordNetCorpusReader
 
     root, _ = locate()
-    if str(root) not in [str(p) for p in nltk.data.path]:
-        nltk.data.path.append(str(root))  # authorizes the root in NLTK's path sandbox
+    if str(root) not in [str(p) for p in nltk_data.path]:
+        nltk_data.path.append(str(root))  # authorizes the root in NLTK's path sandbox
     class Reader(WordNetCorpusReader):
         def map_wn(self, version="wordnet"):
             # NLTK maps the synsets of WordNet 3.0 onto the loaded WordNet for its multilingual
@@ -166,7 +166,7 @@ def reader():
             # (no multilingual data is loaded, and the map is the identity for WordNet 3.0).
             return None
 
-    pointer = nltk.data.find("corpora/wordnet")
+    pointer = nltk_data.find("corpora/wordnet")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # "multilingual functions are not available"
         return Reader(pointer, None)

@@ -69,7 +69,14 @@ def parse_state_text(part: str) -> State:
 
 
 def parse_goal_spec(text: str) -> GoalSpec:
-    """Parse the goal syntax; raises ValueError with what was expected."""
+    """Parse the goal syntax; raises ValueError with what was expected.
+
+    >>> spec = parse_goal_spec("bowl: contains {lettuce, tomato}, on [table]")
+    >>> spec.label, [s.describe() for s in spec.states]
+    ('bowl', ['contains {lettuce, tomato}', 'on [table]'])
+    >>> parse_goal_spec("onion").states is None
+    True
+    """
     label, sep, rest = text.partition(":")
     label = normalize_label(label)
     if not label:

@@ -14,7 +14,7 @@ import shutil
 import subprocess
 from collections.abc import Iterable
 
-from ..errors import FoonError, MissingDependencyError
+from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
@@ -32,9 +32,17 @@ PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "
 
 
 def render_tree(tree: TaskTree, fmt: str, kitchen: Kitchen | Iterable[ObjectNode] | None = None) -> str:
-    """The tree in `fmt` (one of FORMATS). `kitchen`, when given, lists what the tree takes from it."""
+    """The tree in `fmt` (one of FORMATS). `kitchen`, when given, lists what the tree takes from it.
+
+    >>> from foon2pddl.model.foon import FunctionalUnit, Motion, make_node, make_state
+    >>> unit = FunctionalUnit((make_node("onion", [make_state("whole")]), make_node("knife")), Motion("chop"),
+    ...                       (make_node("onion", [make_state("chopped")]), make_node("knife")))
+    >>> print(render_tree(TaskTree((unit,), make_node("onion", [make_state("chopped")]), 3), "steps"), end="")
+    task tree for onion (chopped): 1 units, level 3
+    1. chop onion (whole) with knife -> onion (chopped)
+    """
     if fmt not in FORMATS:
-        raise ValueError(f"unknown task tree format {fmt!r} (expected one of {', '.join(FORMATS)})")
+        raise UsageError(f"unknown task tree format {fmt!r} (expected one of {', '.join(FORMATS)})")
     return _RENDER[fmt](tree, _used_from_kitchen(tree, kitchen))
 
 

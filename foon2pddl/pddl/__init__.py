@@ -1,1 +1,5 @@
-"""FOON to PDDL: planning-task IR, encodings, rendering, planners and plan decoding."""
+"""FOON to PDDL: planning-task IR, the registry of encodings (`compile.ENCODINGS`), rendering, UP problems."""
+
+#: The package's modules (import them by name).
+__all__ = ["compile", "costs", "encode_compat", "encode_lifted", "encode_state", "encode_tree", "encoding", "examples",
+           "lifted_atoms", "names", "prune", "registry", "render", "task", "up_problem"]

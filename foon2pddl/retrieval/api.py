@@ -41,6 +41,16 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
     `rates` (defaults for every motion when None). optimal/weighted expand at most
     `node_limit` search nodes. With `rates`, every found tree's success probability is set.
     `reach`: the fixpoint of `foon` from this kitchen, when already computed (batches share one).
+
+    >>> from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+    >>> from foon2pddl.model.goal import Goal, GoalSpec
+    >>> whole, chopped, knife = make_node("onion", [make_state("whole")]), make_node("onion", [make_state("chopped")]), make_node("knife")
+    >>> foon = Foon((FunctionalUnit((whole, knife), Motion("chop"), (chopped, knife)),), 3)
+    >>> goal = Goal(GoalSpec("onion"), (chopped,), 3)
+    >>> len(retrieve(foon, [whole, knife], goal).tree)
+    1
+    >>> retrieve(foon, [whole], goal).reason    # no knife
+    <RetrievalStatus.UNREACHABLE: 'unreachable'>
     """
     if method not in METHODS:
         raise UsageError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")

@@ -1,0 +1,77 @@
+"""Every Python example in the docs runs: README.md and docs/*.md code blocks, and docstring `>>>` examples.
+
+A ```python block with `>>>` prompts is a doctest (its outputs are checked); any
+other ```python block is executed as a script. Docstring examples of every module
+of the package run as doctests (what `pytest --doctest-modules foon2pddl` does),
+so `make test` checks them.
+"""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import os
+import re
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+_BLOCK = re.compile(r"^```python\n(.*?)^```", re.M | re.S)
+
+#: Modules not imported for doctests: the entry points run code at import.
+NOT_IMPORTED = {"foon2pddl.__main__"}
+
+
+def _blocks() -> list[tuple[str, str]]:
+    out = []
+    for page in PAGES:
+        for k, m in enumerate(_BLOCK.finditer(page.read_text()), start=1):
+            out.append((f"{page.relative_to(ROOT)}#{k}", m.group(1)))
+    return out
+
+
+def _modules() -> list[str]:
+    package = ROOT / "foon2pddl"
+    names = [".".join(("foon2pddl", *p.relative_to(package).with_suffix("").parts)).removesuffix(".__init__")
+             for p in sorted(package.rglob("*.py"))]
+    return [n for n in names if n not in NOT_IMPORTED]
+
+
+def _run(tests) -> None:
+    """Run doctests; fail with doctest's report of every mismatch."""
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    out: list[str] = []
+    for test in tests:
+        runner.run(test, out=out.append)
+    assert not runner.failures, "".join(out)
+
+
+def test_the_readme_has_a_python_example():
+    assert any(page == "README.md#1" and ">>>" in code for page, code in _blocks())
+
+
+@pytest.mark.parametrize(("where", "code"), _blocks(), ids=[w for w, _ in _blocks()])
+def test_docs_python_blocks_run(where, code, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # examples may write files
+    if ">>>" in code:
+        _run([doctest.DocTestParser().get_doctest(code, {}, where, where, 0)])
+    else:
+        exec(compile(code, where, "exec"), {"__name__": "__docs__"})
+
+
+@pytest.mark.parametrize("name", _modules())
+def test_docstring_examples_run(name, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    module = importlib.import_module(name)
+    _run(doctest.DocTestFinder(exclude_empty=True).find(module, name))
+
+
+def test_some_public_functions_have_examples():
+    import foon2pddl.api as api
+
+    with_examples = [n for n in api.__all__ if ">>>" in (getattr(getattr(api, n), "__doc__", "") or "")
+                     and callable(getattr(api, n)) and getattr(api, n).__module__ == api.__name__]
+    assert len(with_examples) >= 6, with_examples
+    assert os.path.basename(api.__file__) == "api.py"
