@@ -25,7 +25,7 @@ from ..model.tasktree import TaskTree, validate
 from .api import retrieve
 from .greedy import DEFAULT_BUDGET
 from .optimal import DEFAULT_NODE_LIMIT
-from .result import BUDGET_EXHAUSTED, NODE_LIMIT, UNREACHABLE
+from .result import BUDGET_EXHAUSTED, UNREACHABLE
 
 
 class GoalStatus(StrEnum):
@@ -34,13 +34,11 @@ class GoalStatus(StrEnum):
     SOLVED = "solved"
     UNREACHABLE = "unreachable"
     BUDGET_EXHAUSTED = "budget exhausted"
-    NODE_LIMIT = "node limit"
     UNMATCHED = "unmatched"   # the goal names no node any unit produces
     INVALID = "invalid"       # a tree was found but does not validate (a bug: reported, never hidden)
 
 
-_REASONS = {UNREACHABLE: GoalStatus.UNREACHABLE, BUDGET_EXHAUSTED: GoalStatus.BUDGET_EXHAUSTED,
-            NODE_LIMIT: GoalStatus.NODE_LIMIT}
+_REASONS = {UNREACHABLE: GoalStatus.UNREACHABLE, BUDGET_EXHAUSTED: GoalStatus.BUDGET_EXHAUSTED}
 
 
 @dataclass(frozen=True)
