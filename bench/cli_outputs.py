@@ -119,9 +119,9 @@ def run_one(checkout: Path, args: tuple[str, ...], python: str) -> str:
         return _mask("\n".join(parts), checkout, work)
 
 
-def export(commit: str, into: Path) -> Path:
-    """The tree of `commit` written under `into` (no git worktree to clean up)."""
-    data = subprocess.run(["git", "archive", commit], cwd=ROOT, capture_output=True, check=True).stdout
+def export(commit: str, into: Path, repo: Path = ROOT) -> Path:
+    """The tree of `commit` (from the git repository `repo`) written under `into` (no git worktree to clean up)."""
+    data = subprocess.run(["git", "archive", commit], cwd=repo, capture_output=True, check=True).stdout
     with tarfile.open(fileobj=BytesIO(data)) as tar:
         tar.extractall(into, filter="data")
     return into
@@ -134,13 +134,14 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--only", default="", help="comma-separated words; run the commands whose name has one")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--python", default=sys.executable)
+    ap.add_argument("--repo", type=Path, default=ROOT, help="git repository holding the baseline commit")
     args = ap.parse_args(argv)
     todo = commands(args.shared.resolve())
     if args.only:
         words = [w.strip() for w in args.only.split(",") if w.strip()]
         todo = [c for c in todo if any(w in c[0] for w in words)]
     with tempfile.TemporaryDirectory(prefix="foon2pddl-baseline-") as tmp:
-        base = export(args.baseline, Path(tmp))
+        base = export(args.baseline, Path(tmp), args.repo)
         jobs = [(name, checkout, cmd) for name, cmd in todo for checkout in (base, ROOT)]
         with ThreadPoolExecutor(args.jobs) as pool:
             outs = list(pool.map(lambda j: run_one(j[1], j[2], args.python), jobs))

@@ -87,4 +87,4 @@ def test_a_constraint_matching_nothing_is_warned_about():
 
 def test_bad_flag_value_exits_2():
     result = run("retrieve", "--goal", "guacamole", "--without", " ")
-    assert result.exit_code == 2 and "Error: --without: " in result.stderr and "empty" in result.stderr
+    assert result.exit_code == 2 and "Error: without ' ': the label is empty" in result.stderr and "empty" in result.stderr

@@ -7,6 +7,7 @@ lazy import cannot hide a layering violation.
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -134,3 +135,32 @@ def test_the_checker_sees_lazy_and_relative_imports():
 def test_every_package_declares_all():
     missing = [p.parent.name for p in PACKAGE.rglob("__init__.py") if "__all__" not in p.read_text()]
     assert not missing, missing
+
+
+#: Options of programs the package runs (Fast Downward's driver, translator and search), not our flags.
+OTHER_PROGRAMS_FLAGS = {"--sas-file", "--internal-plan-file", "--search", "--invariant-generation-max-candidates",
+                        "--alias", "--evaluator", "--translate-options", "--search-options", "--plan-file",
+                        "--overall-time-limit", "--search-time-limit", "--translate-time-limit", "--keep-sas-file",
+                        "--keep-unimportant-variables",
+                        "--sas_file", "--help", "--out", "--port"}
+_FLAG = re.compile(r"(?<![\w-])--[a-z][a-z-]+")
+
+
+def _strings(tree: ast.AST) -> list[str]:
+    """String constants of a module other than docstrings."""
+    docs = {id(n.body[0].value) for n in ast.walk(tree)
+            if isinstance(n, ast.Module | ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef)
+            and n.body and isinstance(n.body[0], ast.Expr) and isinstance(n.body[0].value, ast.Constant)}
+    return [n.value for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docs]
+
+
+def test_flag_names_appear_only_in_cli():
+    found = []
+    for name, path in _modules().items():
+        if _layer(name) == "cli" or name.endswith("bootstrap_categories"):  # a script with its own argparse
+            continue
+        tree = ast.parse(path.read_text())
+        found += [f"{name}: {flag}" for s in _strings(tree) for flag in _FLAG.findall(s)
+                  if flag not in OTHER_PROGRAMS_FLAGS]
+    assert not found, found

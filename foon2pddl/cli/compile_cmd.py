@@ -17,22 +17,14 @@ from .options import (
     category_chains,
     category_types_option,
     check_output,
-    containment_option,
     costs_option,
-    encoding_option,
-    goal_file_option,
-    goal_option,
     instances_option,
-    kitchen_option,
-    level_option,
     load_pddl_view,
-    network_option,
     parse_instances,
-    paths_argument,
     prune_option,
     rates_option,
     single_goal,
-    utensils_option,
+    task_options,
     view_goal,
 )
 
@@ -55,17 +47,9 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 
 
 @main.command("compile")
-@paths_argument
-@goal_option
-@goal_file_option
-@kitchen_option
-@utensils_option
-@containment_option
-@encoding_option
+@task_options
 @instances_option
 @category_types_option
-@level_option
-@network_option
 @prune_option
 @costs_option
 @rates_option

@@ -124,7 +124,11 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
     report = report or out_dir / "report.md"
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)
-    summary = runner.run(config, progress=progress, fresh=fresh)
+    try:
+        summary = runner.run(config, progress=progress, fresh=fresh)
+    except runner.OtherResults as exc:
+        raise FoonInputError(exc.path, exc.line, exc.message + "; use another -o directory, or --fresh to discard "
+                                                               "them") from None
     for warning in summary.warnings:
         click.echo(warning, err=True)
     views = runner.views(config)

@@ -194,24 +194,33 @@ def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | N
 
 def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG found a goal unreachable: say (stderr) whether `--network exp`/`gen` would make it."""
-    from ..generalize.hints import networks_hint
+    from ..generalize.hints import networks_that_reach
     from ..io.inputs import goal_spec
 
-    hint = networks_hint(net, kitchen, goal_spec(goal, goal_file), level)
-    if hint:
-        click.echo(hint, err=True)
+    kinds = networks_that_reach(net, kitchen, goal_spec(goal, goal_file), level)
+    if kinds:
+        what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
+        click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
+                   + "; ".join(what[k] for k in kinds), err=True)
+
+
+def task_options(command):
+    """The options every goal-over-a-network command shares, in --help order: PATHS, goal, kitchen, network."""
+    for option in reversed((paths_argument, goal_option, goal_file_option, kitchen_option, utensils_option,
+                            containment_option, encoding_option, level_option, network_option)):
+        command = option(command)
+    return command
 
 
 def parse_instances(items) -> tuple[tuple[str, int], ...]:
-    """`--instances LABEL=N` values as (normalized label, N), sorted; FoonInputError when malformed."""
-    from ..errors import FoonInputError
+    """`--instances LABEL=N` values as (normalized label, N), sorted; UsageError when malformed."""
     from ..model.foon import normalize_label
 
     out: dict[str, int] = {}
     for item in items:
         label, sep, count = item.rpartition("=")
         if not sep or not normalize_label(label) or not count.strip().isdigit():
-            raise FoonInputError("<options>", 0, f"--instances expects LABEL=N with N >= 0, not {item!r}")
+            raise UsageError(f"--instances expects LABEL=N with N >= 0, not {item!r}")
         out[normalize_label(label)] = int(count)
     return tuple(sorted(out.items()))
 

@@ -19,22 +19,14 @@ from . import main
 from .options import (
     check_output,
     check_time_limit,
-    containment_option,
     costs_option,
     emit,
-    encoding_option,
-    goal_file_option,
-    goal_option,
-    kitchen_option,
-    level_option,
     load_pddl_view,
-    network_option,
     other_networks_hint,
-    paths_argument,
     prune_option,
     rates_option,
     single_goal,
-    utensils_option,
+    task_options,
     view_goal,
 )
 
@@ -73,15 +65,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 
 
 @main.command("plan")
-@paths_argument
-@goal_option
-@goal_file_option
-@kitchen_option
-@utensils_option
-@containment_option
-@encoding_option
-@level_option
-@network_option
+@task_options
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,

@@ -153,6 +153,10 @@ def plan_batches(config: Config, done: set[Key]) -> list[Batch]:
 
 # -- protocol.json -------------------------------------------------------------------------------
 
+class OtherResults(FoonInputError):
+    """The output directory holds results that cannot be matched to this run's protocol (start afresh or elsewhere)."""
+
+
 def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
     """Write protocol.json, or refuse when the directory holds results of another (or an unknown) protocol."""
     path = config.out_dir / PROTOCOL
@@ -162,12 +166,11 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
         try:
             old = json.loads(path.read_text(encoding="utf-8")).get("identity")
         except (OSError, ValueError, AttributeError):
-            raise FoonInputError(str(path), 0, f"{results} holds results but this protocol file is missing or "
-                                               "unreadable, so they cannot be matched to a protocol; use another "
-                                               "-o directory, or --fresh to discard them") from None
+            raise OtherResults(str(path), 0, f"{results} holds results but this protocol file is missing or "
+                                             "unreadable, so they cannot be matched to a protocol") from None
         if old != identity:
-            raise FoonInputError(str(path), 0, "this directory holds results of another protocol or input "
-                                               f"({old} != {identity}); use another -o directory or --fresh")
+            raise OtherResults(str(path), 0, "this directory holds results of another protocol or input "
+                                             f"({old} != {identity})")
     data = {
         "identity": identity,
         "trials": config.protocol.trials,

@@ -43,12 +43,3 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
             found.append(kind)
     return found
 
-
-def networks_hint(net: Network, kitchen: Kitchen, spec: GoalSpec, level: int) -> str:
-    """`hint: --network exp and gen can make it ...`, or "" when neither (cheaply) can."""
-    kinds = networks_that_reach(net, kitchen, spec, level)
-    if not kinds:
-        return ""
-    what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
-    return ("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
-            + "; ".join(what[k] for k in kinds))

@@ -89,7 +89,7 @@ def load_constraints(files: Iterable[str | Path] = (), without_motions: Iterable
     flags += [Constraint(Kind.MUST_USE, x, "<options>") for x in must_use]
     for c in flags:
         if CONTROL_CHARS.search(c.value) or not c.value.strip():
-            raise UsageError(f"--{c.kind.value}: label {c.value!r} is empty or has control characters")
+            raise UsageError(f"{c.kind.value} {c.value!r}: the label is empty or has control characters")
     parts = [read_constraints(f) for f in files]
     try:
         return combine(*parts, make_constraints(flags, sources=("<options>",) if flags else ()))

@@ -82,7 +82,7 @@ def parse_goal_json(text: str, path: str) -> list[GoalEntry]:
         return out
     if not isinstance(data, list):
         raise FoonSyntaxError(path, 1, "expected a JSON list of goal objects ({label, states, ingredients, "
-                                       "container}) or the output of `goals --json`")
+                                       "container}) or the goals JSON document (the goals command's JSON output)")
     lines = item_lines(text)
     out = []
     for i, item in enumerate(data):

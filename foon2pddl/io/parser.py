@@ -107,34 +107,52 @@ class _PendingObject:
 
 def parse_text(text: str, path: str = "<string>") -> ParseResult:
     """Parse FOON text; `path` is used in errors, warnings and provenance."""
-    units: list[FunctionalUnit] = []
-    warnings: list[ParseWarning] = []
-    urls: list[str] = []
-    block = _Block(1)
-    # The same state and object lines recur throughout a file (a unit's outputs are the
-    # next unit's inputs): build each once, keyed by its raw fields, and share the instance.
-    state_cache: dict[tuple[str, ...], State] = {}
-    node_cache: dict[tuple, ObjectNode] = {}
+    reader = _Reader(path)
+    lineno = 0
+    for lineno, raw in enumerate(text.split("\n"), start=1):
+        reader.line(lineno, raw)
+    return reader.finish(lineno, text.endswith("\n"))
 
-    def fail(lineno: int, message: str, line: str) -> FoonSyntaxError:
-        return FoonSyntaxError(path, lineno, message, line)
 
-    def at(lineno: int, raw: str):
+class _Reader:
+    """The state of one `parse_text` run: the open block, what was read so far, and caches.
+
+    Lines recur verbatim (a unit's outputs are the next unit's inputs): each distinct
+    line is classified once, each state, motion and object built once and shared; what
+    depends on the surrounding block is checked per occurrence.
+    """
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.units: list[FunctionalUnit] = []
+        self.warnings: list[ParseWarning] = []
+        self.urls: list[str] = []
+        self.block = _Block(1)
+        self.state_cache: dict[tuple[str, ...], State] = {}
+        self.node_cache: dict[tuple, ObjectNode] = {}
+        self.line_cache: dict[str, tuple] = {}
+        self.motion_cache: dict[tuple[str, ...], Motion] = {}
+
+    def fail(self, lineno: int, message: str, line: str) -> FoonSyntaxError:
+        return FoonSyntaxError(self.path, lineno, message, line)
+
+    def at(self, lineno: int, raw: str):
         """`fail` for one line: message -> error naming that line."""
-        return lambda message: fail(lineno, message, raw.rstrip("\r"))
+        return lambda message: self.fail(lineno, message, raw.rstrip("\r"))
 
-    def close_object() -> None:
+    def close_object(self) -> None:
+        block = self.block
         if block.obj is not None:
             key = block.obj.cache_key()
-            node = node_cache.get(key)
+            node = self.node_cache.get(key)
             if node is None:
-                node = node_cache[key] = block.obj.build()
+                node = self.node_cache[key] = block.obj.build()
             (block.inputs if block.motion is None else block.outputs).append(node)
             block.obj = None
 
-    def close_block(lineno: int) -> None:
-        nonlocal block
-        close_object()
+    def close_block(self, lineno: int) -> None:
+        self.close_object()
+        block = self.block
         if not block.empty():
             problem = None
             if block.motion is None:
@@ -144,62 +162,58 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
             elif not block.inputs:
                 problem = "unit has no input objects before its motion line; skipped"
             if problem:
-                warnings.append(ParseWarning(path, block.start, problem))
+                self.warnings.append(ParseWarning(self.path, block.start, problem))
             else:
-                url = urls[-1] if urls else None
-                units.append(
-                    FunctionalUnit(
-                        tuple(block.inputs), block.motion, tuple(block.outputs),
-                        (Source(path, block.start, url),),
-                    )
-                )
-        block = _Block(lineno + 1)
+                url = self.urls[-1] if self.urls else None
+                self.units.append(FunctionalUnit(tuple(block.inputs), block.motion, tuple(block.outputs),
+                                                 (Source(self.path, block.start, url),)))
+        self.block = _Block(lineno + 1)
 
-    # Lines recur verbatim (a unit's outputs are the next unit's inputs): classify each
-    # distinct line once; what depends on the surrounding block is checked per occurrence.
-    line_cache: dict[str, tuple] = {}
-    motion_cache: dict[tuple[str, ...], Motion] = {}
-    lineno = 0
-    for lineno, raw in enumerate(text.split("\n"), start=1):
-        entry = line_cache.get(raw)
+    def line(self, lineno: int, raw: str) -> None:
+        """Read one line into the open block."""
+        entry = self.line_cache.get(raw)
         if entry is None:
-            entry = line_cache[raw] = _classify(raw, at(lineno, raw))
+            entry = self.line_cache[raw] = _classify(raw, self.at(lineno, raw))
         kind = entry[0]
         if kind == "#":
-            continue
+            return
         if kind == "url":
-            urls.append(entry[1])
-            continue
+            self.urls.append(entry[1])
+            return
         if kind == "//":
-            close_block(lineno)
-            continue
+            self.close_block(lineno)
+            return
+        block = self.block
         if block.empty():
             block.start = lineno
         if kind == "O":
-            close_object()
+            self.close_object()
             block.obj = _PendingObject(*entry[1:])
         elif kind == "S":
             if block.obj is None:
-                raise fail(lineno, "state line ('S') before any object line ('O') of its unit", raw.rstrip("\r"))
+                raise self.fail(lineno, "state line ('S') before any object line ('O') of its unit", raw.rstrip("\r"))
             key = entry[1]
-            state = state_cache.get(key)
+            state = self.state_cache.get(key)
             if state is None:
-                state = state_cache[key] = _parse_state(("S",) + key, at(lineno, raw))
+                state = self.state_cache[key] = _parse_state(("S",) + key, self.at(lineno, raw))
             block.obj.states.append(state)
             block.obj.keys.append(key)
         else:
             if block.motion is not None:
-                raise fail(lineno, "second motion line ('M') in one unit (missing '//'?)", raw.rstrip("\r"))
-            close_object()
+                raise self.fail(lineno, "second motion line ('M') in one unit (missing '//'?)", raw.rstrip("\r"))
+            self.close_object()
             key = entry[1]
-            motion = motion_cache.get(key)
+            motion = self.motion_cache.get(key)
             if motion is None:
-                motion = motion_cache[key] = _parse_motion(key, at(lineno, raw))
+                motion = self.motion_cache[key] = _parse_motion(key, self.at(lineno, raw))
             block.motion = motion
-    close_block(lineno)
-    if not units:  # reported at the last line of the file (1 when empty)
-        raise FoonSyntaxError(path, max(lineno - text.endswith("\n"), 1), "no functional units in file")
-    return ParseResult(Foon(tuple(units)), tuple(warnings), tuple(dict.fromkeys(urls)))
+
+    def finish(self, lineno: int, final_newline: bool) -> ParseResult:
+        """Close the last block; the result (FoonSyntaxError at the last line when no unit was read)."""
+        self.close_block(lineno)
+        if not self.units:  # reported at the last line of the file (1 when empty)
+            raise FoonSyntaxError(self.path, max(lineno - final_newline, 1), "no functional units in file")
+        return ParseResult(Foon(tuple(self.units)), tuple(self.warnings), tuple(dict.fromkeys(self.urls)))
 
 
 _SKIP = ("#",)

@@ -67,22 +67,23 @@ def _by_object(nodes, facts_of) -> dict[str, set[Fact]]:
     return out
 
 
-def encode_state(
-    foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3, options: EncodeOptions = DEFAULT_OPTIONS
-) -> PlanningTask:
-    """The object-centred task of `foon` (see the module doc)."""
-    inp = at_level(foon, kitchen, goal, level)
-    f = inp.foon
-    cache: dict[ObjectNode, frozenset[Fact]] = {}
+class _FactsOf:
+    """`node_facts`, computed once per node; `cache` holds every node asked for."""
 
-    def facts_of(n: ObjectNode) -> frozenset[Fact]:
-        got = cache.get(n)
+    def __init__(self) -> None:
+        self.cache: dict[ObjectNode, frozenset[Fact]] = {}
+
+    def __call__(self, n: ObjectNode) -> frozenset[Fact]:
+        got = self.cache.get(n)
         if got is None:
-            got = cache[n] = node_facts(n)
+            got = self.cache[n] = node_facts(n)
         return got
 
-    changes = []  # per unit: (pre, add, delete) as fact sets
-    for u in f.units:
+
+def _changes(units, facts_of: _FactsOf) -> list[tuple[set[Fact], set[Fact], set[Fact]]]:
+    """Per unit: (pre, add, delete) fact sets; an object's facts change only where it is input and output."""
+    changes = []
+    for u in units:
         ins = _by_object(u.inputs, facts_of)
         outs = _by_object(u.outputs, facts_of)
         pre = set().union(*ins.values())
@@ -94,7 +95,34 @@ def encode_state(
             if obj in ins:
                 delete |= in_facts - out_facts
         changes.append((pre, add, delete))
-    mentioned = {a for fs in cache.values() for _, args in fs for a in args}
+    return changes
+
+
+def _predicates(table: NameTable, facts: set[Fact]) -> tuple[dict[tuple[str, ...], str], list[Predicate]]:
+    """Predicate names (fact key -> name) and declarations of `facts`, `available` first, in key order."""
+    pred_name: dict[tuple[str, ...], str] = {(AVAILABLE,): AVAILABLE}
+    predicates = [Predicate(AVAILABLE, (("?o", "object"),), "the object is in the kitchen or was made")]
+    for key in sorted({k for k, _ in facts} - {(AVAILABLE,)}):
+        kind, label = key
+        if kind == "is":
+            name = table.name(f"is-{label}", key=("pred", key))
+            predicates.append(Predicate(name, (("?o", "object"),), f"?o is {label}"))
+        else:
+            name = table.name(label, key=("pred", key))
+            predicates.append(Predicate(name, (("?o", "object"), ("?r", "object")), f"?o {label} [?r] or {{?r}}"))
+        pred_name[key] = name
+    return pred_name, predicates
+
+
+def encode_state(
+    foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3, options: EncodeOptions = DEFAULT_OPTIONS
+) -> PlanningTask:
+    """The object-centred task of `foon` (see the module doc)."""
+    inp = at_level(foon, kitchen, goal, level)
+    f = inp.foon
+    facts_of = _FactsOf()
+    changes = _changes(f.units, facts_of)
+    mentioned = {a for fs in facts_of.cache.values() for _, args in fs for a in args}
     init_facts = set().union(*(facts_of(n) for n in inp.kitchen if n.label in mentioned))
     goal_facts = [(c, facts_of(c)) for c in inp.candidates]
 
@@ -104,32 +132,17 @@ def encode_state(
     several = len(inp.candidates) > 1
     if several:
         table.reserve(GOAL_REACHED, "goal reached")
-    pred_name: dict[tuple[str, ...], str] = {(AVAILABLE,): AVAILABLE}
-    predicates = [Predicate(AVAILABLE, (("?o", "object"),), "the object is in the kitchen or was made")]
-    for key in sorted({k for k, _ in every} - {(AVAILABLE,)}):
-        kind, label = key
-        if kind == "is":
-            name = table.name(f"is-{label}", key=("pred", key))
-            predicates.append(Predicate(name, (("?o", "object"),), f"?o is {label}"))
-        else:
-            name = table.name(label, key=("pred", key))
-            predicates.append(Predicate(name, (("?o", "object"), ("?r", "object")), f"?o {label} [?r] or {{?r}}"))
-        pred_name[key] = name
+    pred_name, predicates = _predicates(table, every)
     labels = sorted({a for _, args in every for a in args})
     obj = {label: table.name(label, key=("object", label)) for label in labels}
 
     def atoms(facts) -> tuple[Atom, ...]:
         return tuple(sorted(Atom(pred_name[k], tuple(obj[a] for a in args)) for k, args in facts))
 
-    actions = []
-    for i, (u, (pre, add, delete)) in enumerate(zip(f.units, changes, strict=True)):
-        actions.append(Action(
-            table.name(f"{u.motion.label} u{i}", key=("unit", i)),
-            pre=atoms(pre), add=atoms(add), delete=atoms(delete),
-            cost=unit_cost(u, options.costs, options.rates),
-            unit=i,
-            comment=unit_comment(u, i),
-        ))
+    actions = [Action(table.name(f"{u.motion.label} u{i}", key=("unit", i)),
+                      pre=atoms(pre), add=atoms(add), delete=atoms(delete),
+                      cost=unit_cost(u, options.costs, options.rates), unit=i, comment=unit_comment(u, i))
+               for i, (u, (pre, add, delete)) in enumerate(zip(f.units, changes, strict=True))]
     if several:
         goal_atom = Atom(GOAL_REACHED)
         predicates.insert(1, Predicate(GOAL_REACHED, comment="a goal candidate was made"))

@@ -25,7 +25,6 @@ from pathlib import Path
 from .process import bounded_timeout, run_process
 from .result import PlanResult, parse_plan_text, tail
 
-PLACEHOLDERS = ("{domain}", "{problem}", "{plan}", "{time}")
 #: What planners print when they conclude there is no plan (FD, pyperplan, common wordings).
 SAYS_UNSOLVABLE = re.compile(r"unsolvable|no solution|no plan (?:was |could be )?found|"
                              r"search stopped without finding a solution|goal (?:is )?unreachable", re.I)
