@@ -113,7 +113,7 @@ def retrieve(network: Network | Foon, kitchen: Kitchen | Iterable[ObjectNode], g
 
 def compile_goal(network: Network | Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", *, level: int = 3,
             prune: bool = True, costs: str | None = None, rates: Rates | None = None,
-            categories: CategoryIndex | None = None) -> Compiled:
+            category_index: CategoryIndex | None = None) -> Compiled:
     """The goal compiled in a registered encoding (`ENCODINGS`): the task and how its plans map back.
 
     >>> net = load_network()
@@ -123,7 +123,7 @@ def compile_goal(network: Network | Foon, kitchen: Kitchen, goal: Goal, encoding
     """
     foon = network.foon if isinstance(network, Network) and ENCODINGS[encoding].lifted else _foon(network, level)
     return _compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
-                        categories=categories)
+                         category_index=category_index)
 
 
 def to_pddl(compiled: Compiled) -> tuple[str, str]:
@@ -147,7 +147,7 @@ def to_up_problem(compiled: Compiled):
 def plan(network: Network | Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", *, level: int = 3,
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = 300.0, prune: bool = True, costs: str | None = None, rates: Rates | None = None,
-         categories: CategoryIndex | None = None, up_validate: bool = False) -> PlanOutcome:
+         category_index: CategoryIndex | None = None, up_validate: bool = False) -> PlanOutcome:
     """Compile, run a planner (Fast Downward, a unified-planning engine, or a command), map the plan to a task tree.
 
     >>> net = load_network()
@@ -157,5 +157,5 @@ def plan(network: Network | Foon, kitchen: Kitchen, goal: Goal, encoding: str = 
     """
     foon = network.foon if isinstance(network, Network) and ENCODINGS[encoding].lifted else _foon(network, level)
     return _plan(foon, kitchen, goal, encoding, level, planner=planner, planner_cmd=planner_cmd, optimal=optimal,
-                 time_limit=time_limit, prune=prune, costs=costs, rates=rates, categories=categories,
+                 time_limit=time_limit, prune=prune, costs=costs, rates=rates, category_index=category_index,
                  up_validate=up_validate)

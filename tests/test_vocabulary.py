@@ -113,7 +113,8 @@ def test_file_errors_still_name_path_and_line(tmp_path):
 
 @pytest.mark.parametrize(("module", "call", "extra"), [
     ("nltk", lambda: __import__("foon2pddl.generalize.wordnet", fromlist=["reader"]).reader.__wrapped__(), "gen"),
-    ("matplotlib", lambda: __import__("foon2pddl.experiment.plots", fromlist=["_figure"])._figure(1, 1), "experiment"),
+    ("tqdm", lambda: __import__("foon2pddl.experiment.progress", fromlist=["Progress"]).Progress(10, mode="bar"),
+     "experiment"),
 ])
 def test_missing_extras_name_their_install_command(monkeypatch, module, call, extra):
     import sys

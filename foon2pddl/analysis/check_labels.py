@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 
 from ..io.raw_objects import RawObject
 from ..model.foon import Source
-from .check import Defect, DefectKind, Place, defect
+from .defects import Defect, DefectKind, Place, defect
 
 #: Shortest labels compared by edit distance (short words differ by one letter too often).
 MIN_EDIT_LENGTH = 5

@@ -9,7 +9,7 @@ import networkx as nx
 
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import default_kitchen, is_base_node
-from .check import Defect, DefectKind, defect
+from .defects import Defect, DefectKind, defect
 from .index import index_of
 from .reachability import UNREACHED, reachable
 

@@ -5,12 +5,10 @@ from __future__ import annotations
 import io
 import statistics
 
-from ..errors import require
 from .tables import PAPER_SUCCESSES, ReportData, goals_asked, net_name, solve_time, successes, sweep_rows
 
 
 def _figure(width: float, height: float):
-    require("matplotlib", "experiment", "experiment plots")
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 

@@ -22,6 +22,7 @@ import hashlib
 import random
 from dataclasses import dataclass
 
+from ..errors import UsageError
 from ..generalize.expand import DEFAULT_THRESHOLD
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import Kitchen, default_kitchen
@@ -46,11 +47,11 @@ class Protocol:
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.goals < 1:
-            raise ValueError("trials and goals must be at least 1")
+            raise UsageError("trials and goals must be at least 1")
         if not 0.0 < self.kitchen_fraction <= 1.0:
-            raise ValueError(f"kitchen fraction must be in (0, 1], not {self.kitchen_fraction!r}")
+            raise UsageError(f"kitchen fraction must be in (0, 1], not {self.kitchen_fraction!r}")
         if not 0.0 < self.threshold <= 1.0:
-            raise ValueError(f"similarity threshold must be in (0, 1], not {self.threshold!r}")
+            raise UsageError(f"similarity threshold must be in (0, 1], not {self.threshold!r}")
 
     def identity(self) -> dict:
         """The parameters results depend on (counts excluded: more trials or goals extend a run).

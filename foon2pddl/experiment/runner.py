@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 from ..model.kitchen import default_kitchen
 from .engine import run_dask, run_here
@@ -212,7 +212,7 @@ def run(config: Config, progress: bool | str = True, fresh: bool = False) -> Run
         get_solver(name)
     for name in config.networks:
         if name not in NETWORKS:
-            raise ValueError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
+            raise UsageError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
     first = config.points[0]
     trials = trials_at(config, first)
     config.out_dir.mkdir(parents=True, exist_ok=True)

@@ -262,4 +262,4 @@ def get_solver(name: str) -> Solver:
     try:
         return SOLVERS[name]
     except KeyError:
-        raise ValueError(f"unknown solver {name!r} (expected one of {', '.join(SOLVERS)})") from None
+        raise UsageError(f"unknown solver {name!r} (expected one of {', '.join(SOLVERS)})") from None
