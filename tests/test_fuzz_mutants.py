@@ -84,8 +84,9 @@ def check_mutant(path: Path, data: bytes, command: str, goal: str, out_dir: Path
     assert result.exit_code in (0, 1, 2), (where, result.exit_code, result.output)
     if result.exit_code == 2:
         m = ERROR.search(result.stderr)
-        assert m, (where, result.stderr)
-        if m.group("path") == str(path):
+        # a file error names path:line; an error in the goal text (no file) is click-style `Error: ...`
+        assert m or re.search(r"^Error: \S", result.stderr, re.M), (where, result.stderr)
+        if m and m.group("path") == str(path):
             assert 0 <= int(m.group("line")) <= data.count(b"\n") + 1, (where, result.stderr)
     leftovers = [p.name for p in out_dir.iterdir() if p.name.startswith(".")] if out_dir.exists() else []
     assert leftovers == [], where
