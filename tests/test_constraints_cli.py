@@ -88,3 +88,37 @@ def test_a_constraint_matching_nothing_is_warned_about():
 def test_bad_flag_value_exits_2():
     result = run("retrieve", "--goal", "guacamole", "--without", " ")
     assert result.exit_code == 2 and "<options>:0: error" in result.stderr and "empty" in result.stderr
+
+
+def test_compile_must_use_becomes_a_goal_condition_and_rates_become_costs(tmp_path):
+    import pddl.parser.domain
+    import pddl.parser.problem
+
+    profile = tmp_path / "robot.json"
+    profile.write_text(json.dumps({"without_motions": ["whisk"], "rates": {"pour": 0.9}}))
+    out = tmp_path / "out"
+    result = run("compile", "--goal", "whipped cream", "--must-use", "sugar", "--constraints", str(profile),
+                 "-o", str(out))
+    assert result.exit_code == 0, result.output
+    domain, problem = (out / "domain.pddl").read_text(), (out / "problem.pddl").read_text()
+    assert "(used_sugar)" in problem.split("(:goal", 1)[1]
+    assert ":action-costs" in domain and "whisk_u" not in domain
+    pddl.parser.domain.DomainParser()(domain)
+    pddl.parser.problem.ProblemParser()(problem)
+
+
+def test_compile_of_an_excluded_goal_exits_1_and_writes_nothing(tmp_path):
+    result = run("compile", "--goal", "guacamole", "--without", "avocado", "-o", str(tmp_path / "out"))
+    assert result.exit_code == 1 and "avocado" in result.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_plan_keeps_the_must_use_unit_the_goal_does_not_need():
+    result = run("plan", "--goal", "whipped cream", "--must-use", "avocado")
+    assert result.exit_code == 0, result.output
+    assert "avocado" in result.stdout and "valid" in result.stderr
+
+
+def test_plan_names_the_blocking_constraint():
+    result = run("plan", "--goal", "guacamole", "--without-motion", "pour")
+    assert result.exit_code == 1 and "smallest set of constraints to relax: `without-motion pour`" in result.stderr

@@ -91,6 +91,28 @@ def check_time_limit(value: float | None) -> float | None:
     return value
 
 
+def constraint_inputs(files, without_motions, without, must_use, rates: Path | None, costs: str | None = None):
+    """(constraints, motion rates, cost mode) from the options: rates from --rates and the constraints
+    files together; a constraints file with rates turns on `success-rate` costs unless --costs says otherwise."""
+    from ..io.constraints_file import load_constraints, with_rates
+    from ..io.rates import read_rates
+
+    cons = load_constraints(files, without_motions, without, must_use)
+    motion_rates = with_rates(read_rates(rates) if rates else None, cons)
+    if costs is None and cons.rates:
+        costs = "success-rate"
+    return cons, motion_rates, costs
+
+
+def reject_lifted_constraints(network: str, cons) -> None:
+    """The lifted GEN encoding does not take constraints (native `retrieve --network gen` does)."""
+    if network == "gen" and cons.items:
+        from ..errors import FoonInputError
+
+        raise FoonInputError("<options>", 0, "constraints are not supported by the lifted GEN encoding; "
+                                             "use --network reg or exp, or `retrieve --network gen`")
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:

@@ -10,8 +10,8 @@ import click
 
 from ..errors import FoonInputError
 from ..io.atomic import atomic_write
-from ..io.rates import read_rates
 from ..io.tree_formats import FORMATS, render_tree
+from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
 from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
@@ -19,6 +19,8 @@ from .options import (
     check_output,
     check_time_limit,
     containment_option,
+    constraint_inputs,
+    constraints_options,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -33,6 +35,7 @@ from .options import (
     rates_option,
     single_goal,
     utensils_option,
+    reject_lifted_constraints,
     view_goal,
 )
 
@@ -92,25 +95,29 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @prune_option
 @costs_option
 @rates_option
+@constraints_options
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
               help="How to print the task tree.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd, optimal, time_limit,
-          prune, costs, rates, up_validate, fmt, output) -> None:
+def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd,
+          optimal, time_limit, prune, costs, rates, constraints_files, without_motions, without, must_use, up_validate,
+          fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
     check_output(output)
-    if costs == "success-rate" and rates is None:
-        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
+    cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
+                                                  costs)
+    reject_lifted_constraints(network, cons)
+    if costs == "success-rate" and motion_rates is None:
+        raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
-    motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
     try:
         if network == "gen":  # lifted encoding: the planner grounds categories to kitchen objects
@@ -124,7 +131,11 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         else:
             outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                            optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                           up_validate=up_validate)
+                           up_validate=up_validate, constraints=cons)
+    except GoalExcluded as exc:
+        click.echo(f"unsolvable (constraints): {exc}", err=True)
+        click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
+        click.get_current_context().exit(1)
     except ValueError as exc:
         raise FoonInputError("<options>", 0, str(exc)) from None
     timings = {"load": load_s, **outcome.timings}
@@ -148,8 +159,8 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         for note in decoded.notes if decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "unsolvable" and encoding != "state":
-            click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
-            if network == "reg":
+            click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
+            if network == "reg" and not cons.items:
                 other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
@@ -158,11 +169,19 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         click.get_current_context().exit(EXIT[status])
 
 
-def _why_unreachable(foon, kitchen, goal) -> str:
-    """FOON's own account of an unreachable goal: which missing nodes block it (tree and foon-compat semantics)."""
+def _why_unreachable(foon, kitchen, goal, cons) -> str:
+    """FOON's own account of an unreachable goal: which missing nodes (or, under constraints, which
+    constraints) block it (tree and foon-compat semantics)."""
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
 
+    if cons.items:
+        from ..retrieval.constrained import retrieve_constrained
+
+        found = retrieve_constrained(foon, kitchen, goal, cons).result
+        if found.tree is None:
+            return found.detail
+        return "native retrieval finds a tree under the constraints; the planner gave up (see its message)"
     reach = reachable(foon, kitchen.nodes)
     if any(reach.can_make(c) for c in goal.candidates):
         return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"

@@ -8,9 +8,8 @@ import click
 
 from ..errors import FoonInputError
 from ..io.batch_report import TABLE_FORMATS
-from ..io.constraints_file import load_constraints, with_rates
 from ..model.containment import count_inference, inferred_nodes
-from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
+from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.explain import explain_unreachable
 from ..retrieval.greedy import DEFAULT_BUDGET
@@ -20,6 +19,7 @@ from . import main
 from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
 from .options import (
     check_output,
+    constraint_inputs,
     constraints_options,
     containment_option,
     emit,
@@ -79,8 +79,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     (the reason goes to stderr, or into the table), 2 bad input.
     """
     check_output(output, directory=bool(goals_file) or len(goal) > 1 or fmt in TABLE_FORMATS)
-    cons = load_constraints(constraints_files, without_motions, without, must_use)
-    motion_rates = with_rates(read_rates(rates) if rates else None, cons)
+    cons, motion_rates, _ = constraint_inputs(constraints_files, without_motions, without, must_use, rates)
     if method == "weighted" and motion_rates is None:
         raise FoonInputError("<options>", 0, "--method weighted needs --rates FILE (motion<TAB>rate) "
                                              "or rates in a --constraints file")

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 from ..io.rates import Rates
+from ..model.constraints import Constraints
 from ..model.foon import Foon
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from .constraints import add_must_use, constrained_inputs, must_use_cone
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
 from .encode_state import encode_state
@@ -26,6 +28,7 @@ def compile_task(
     prune: bool = True,
     costs: str | None = None,
     rates: Rates | None = None,
+    constraints: Constraints | None = None,
     *,
     instances: tuple[tuple[str, int], ...] = (),
     categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
@@ -33,10 +36,18 @@ def compile_task(
     """Encode `goal` from `kitchen` over `foon` at `level` (ValueError on an unknown encoding or cost mode).
 
     `instances` and `categories` are read by the `instances` encoding only (see `EncodeOptions`).
+    With `constraints`, the one place they apply to every encoding (`constraints.py`): the network,
+    kitchen and goal are filtered before encoding (GoalExcluded when no candidate remains) and
+    must-use objects join the goal after.
     """
     try:
         encoder = ENCODINGS[encoding]
     except KeyError:
         raise ValueError(f"encoding must be one of {', '.join(ENCODINGS)}, not {encoding!r}") from None
-    return encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances,
-                                                                 categories=categories))
+    if constraints:
+        foon, kitchen, goal = constrained_inputs(foon, kitchen, goal, constraints)
+        if constraints.must_use and prune:
+            foon, prune = must_use_cone(foon, kitchen, goal, constraints.must_use), False
+    task = encoder(foon, kitchen, goal, level, EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances,
+                                                             categories=categories))
+    return add_must_use(task, constraints.must_use) if constraints else task

@@ -14,6 +14,7 @@ import time
 from dataclasses import dataclass, field, replace
 
 from ..io.rates import Rates
+from ..model.constraints import Constraints
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
@@ -88,15 +89,17 @@ def _finish(result: PlanResult, task: PlanningTask, goal: Goal, kitchen_nodes: f
 def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level: int = 3, *,
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
-         rates: Rates | None = None, up_validate: bool = False) -> PlanOutcome:
+         rates: Rates | None = None, up_validate: bool = False,
+         constraints: Constraints | None = None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `time_limit` bounds the planner run (translation and search). Raises ValueError for
-    bad options (encoding, cost mode); a planner's failure is a status, never an exception.
+    bad options (encoding, cost mode), `pddl.constraints.GoalExcluded` when `constraints`
+    leave no way to make the goal; a planner's failure is a status, never an exception.
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
-    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates)
+    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates, constraints)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     domain_text, problem_text = render(task)
