@@ -122,3 +122,14 @@ def test_plan_keeps_the_must_use_unit_the_goal_does_not_need():
 def test_plan_names_the_blocking_constraint():
     result = run("plan", "--goal", "guacamole", "--without-motion", "pour")
     assert result.exit_code == 1 and "smallest set of constraints to relax: `without-motion pour`" in result.stderr
+
+
+def test_experiment_ban_axis_is_a_sweep_parameter_and_bans_only_lower_success(tmp_path):
+    out = tmp_path / "exp"
+    result = run("experiment", "--trials", "1", "--goals", "12", "--networks", "reg", "--solvers", "native-complete",
+                 "--sweep", "banned-motions=0,3,30", "-o", str(out), "--report", str(tmp_path / "r.md"))
+    assert result.exit_code == 0, result.output
+    rows = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines() if line.strip()]
+    solved = {k: sum(r["status"] == "solved" for r in rows if r["params"]["banned-motions"] == k) for k in (0, 3, 30)}
+    assert sum(r["params"]["banned-motions"] == 30 for r in rows) == 12
+    assert solved[0] >= solved[3] >= solved[30] and solved[30] < solved[0]

@@ -80,11 +80,22 @@ class Removal:
     def removed_units(self) -> frozenset[int]:
         return self.skipped()
 
+    @cached_property
+    def kept(self) -> tuple[int, ...]:
+        """Indexes of the units no ban removes."""
+        drop = self.removed_units
+        return tuple(i for i in range(len(self.foon.units)) if i not in drop)
+
+    @cached_property
+    def network(self) -> Foon:
+        """The network without the removed units (original order; the network itself when nothing is removed)."""
+        if not self.removed_units:
+            return self.foon
+        return Foon(tuple(self.foon.units[i] for i in self.kept), self.foon.level)
+
     def filtered(self, kitchen: Iterable[ObjectNode], goal: Goal) -> Filtered:
         """The network without the removed units, the kitchen without banned objects, the possible candidates."""
-        drop = self.removed_units
-        kept = tuple(i for i in range(len(self.foon.units)) if i not in drop)
-        foon = Foon(tuple(self.foon.units[i] for i in kept), self.foon.level) if drop else self.foon
+        kept, foon = self.kept, self.network
         kitchen = frozenset(n for n in kitchen if self.node_allowed(n))
         present = set(foon.producers) | kitchen
         cands = tuple(c for c in goal.candidates if c in present and self.node_allowed(c))

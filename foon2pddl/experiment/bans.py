@@ -7,16 +7,21 @@ ingredients and tools the cook may have to do without). Sorted pools, so the dra
 depends only on the network, the kitchen and the seed; `k` larger than the pool bans
 every motion. The same seed with a larger `k` bans a superset (prefix of one shuffle),
 so success can only fall as `k` grows within a trial.
+
+The experiment's ban axis (`--sweep banned-motions=0,5,10`, `--sweep excluded-objects=0,2,4`;
+`params.py`) filters the network read, before the REG/EXP/GEN views are built, with one
+draw per network (`AXIS_SEED`): every trial, network and solver faces the same bans.
 """
 
 from __future__ import annotations
 
 import random
 
+from ..analysis.constraints import removal
 from ..model.constraints import Constraint, Constraints, Kind, make_constraints
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, spec_of_node
-from ..model.kitchen import Kitchen
+from ..model.kitchen import Kitchen, default_kitchen
 
 
 def _prefix(pool: list[str], count: int, rng: random.Random) -> list[str]:
@@ -66,3 +71,18 @@ def sample_pairs(foon: Foon, kitchen: Kitchen, count: int, seed: int) -> list[tu
             extra.append(Constraint(Kind.MUST_USE, rng.choice(labels), f"pair {i}"))
         pairs.append((node, make_constraints((*base.items, *extra))))
     return pairs
+
+
+#: Seed of the experiment's ban axis: one draw per network, so k + 1 bans are k bans plus one.
+AXIS_SEED = 0
+
+
+def ban_motions(foon: Foon, k: int) -> Foon:
+    """The network without the units of `k` random motions (the `banned-motions` sweep parameter)."""
+    return removal(foon, random_bans(foon, default_kitchen(foon), AXIS_SEED, motions=k)).network
+
+
+def exclude_objects(foon: Foon, k: int) -> Foon:
+    """The network without the units mentioning `k` random objects of its default kitchen
+    (the `excluded-objects` sweep parameter)."""
+    return removal(foon, random_bans(foon, default_kitchen(foon), AXIS_SEED, objects=k)).network
