@@ -93,6 +93,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if view.note:
         click.echo(view.note, err=True)
     limits = {"budget": budget, "node_limit": node_limit}
+    done = None
     if cons.items:
         done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
         for line in constraint_notes(done.removal):
@@ -106,7 +107,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         if explain:
             click.echo("explain: no constraints given", err=True)
     if result.tree is None:
-        plain = result.reason == UNREACHABLE and not cons.items  # constraints explain themselves
+        # constraints explain themselves, unless the goal cannot be made even without them
+        plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
         if plain and network == "reg":
