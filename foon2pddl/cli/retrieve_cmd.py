@@ -110,8 +110,10 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         # constraints explain themselves, unless the goal cannot be made even without them
         plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
+        if plain and done is not None:
+            detail = "even without the constraints: " + detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
-        if plain and network == "reg":
+        if plain and network == "reg" and done is None:
             other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
