@@ -133,3 +133,30 @@ def test_experiment_ban_axis_is_a_sweep_parameter_and_bans_only_lower_success(tm
     solved = {k: sum(r["status"] == "solved" for r in rows if r["params"]["banned-motions"] == k) for k in (0, 3, 30)}
     assert sum(r["params"]["banned-motions"] == 30 for r in rows) == 12
     assert solved[0] >= solved[3] >= solved[30] and solved[30] < solved[0]
+
+
+def test_exp_substitutes_the_most_similar_allowed_object_and_says_so():
+    reg = run("retrieve", "--goal", "pancake", "--without", "mixing bowl")
+    assert reg.exit_code == 1
+    result = run("retrieve", "--goal", "pancake", "--network", "exp", "--without", "mixing bowl")
+    assert result.exit_code == 0, result.output
+    assert "substitution: mixing bowl -> bowl (Wu-Palmer 0.957)" in result.stderr
+    assert "mixing bowl" not in result.stdout and "bowl" in result.stdout
+
+
+def test_most_similar_working_substitute_is_preferred():
+    from foon2pddl.generalize.substitution import prefer_most_similar
+    from foon2pddl.model.constraints import Constraint, make_constraints
+    from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
+
+    def unit(obj, note=None):
+        return FunctionalUnit((make_node(obj),), Motion("chop"), (make_node("salad"),), (Source("r", 1, None, note),))
+
+    foon = Foon((unit("kale"), unit("spinach", "kale"), unit("lettuce", "kale"), unit("chard", "kale")))
+    cons = make_constraints([Constraint(Kind.WITHOUT, "kale")])
+    sim = {"spinach": 0.95, "lettuce": 0.93, "chard": 0.9}
+    similarity = lambda a, b: sim.get(b, sim.get(a, 0.0))  # noqa: E731
+    # the kitchen has no spinach: the most similar substitute that works is lettuce
+    kept = prefer_most_similar(foon, cons, similarity, lambda f: any(u.inputs[0].label == "lettuce" or
+                                                                          u.inputs[0].label == "chard" for u in f.units))
+    assert sorted(u.inputs[0].label for u in kept.units) == ["kale", "lettuce"]

@@ -132,12 +132,14 @@ def single_goal(goal: tuple[str, ...]) -> str | None:
 
 
 def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",
-              utensils: Path | None = None):
+              utensils: Path | None = None, constraints=None):
     """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
 
     The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level,
     --network, --utensils and --containment into what they search: utensils extend the
     kitchen, and under `infer` the network gets the containment rule's inference units.
+    With `constraints`, EXP and GEN are built from the kitchen without its banned objects
+    (so substitutes come from allowed ones).
     """
     from dataclasses import replace
 
@@ -149,6 +151,10 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
 
     net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
+    if constraints is not None and network != "reg":
+        from ..generalize.substitution import without_banned
+
+        kit = without_banned(kit, constraints)
     view = network_view(net, network, level, kit)
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))

@@ -18,9 +18,9 @@ from . import main
 from .options import (
     check_output,
     check_time_limit,
-    containment_option,
     constraint_inputs,
     constraints_options,
+    containment_option,
     costs_option,
     encoding_option,
     goal_file_option,
@@ -33,9 +33,9 @@ from .options import (
     paths_argument,
     prune_option,
     rates_option,
+    reject_lifted_constraints,
     single_goal,
     utensils_option,
-    reject_lifted_constraints,
     view_goal,
 )
 

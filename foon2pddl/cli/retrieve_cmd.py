@@ -86,7 +86,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     entries = batch_entries(goal, goals_file, goal_file, fmt)
     if entries is not None and cons.items:
         raise FoonInputError("<options>", 0, "constraints apply to one goal at a time (not with a batch of goals)")
-    net, view = load_view(paths, kitchen, level, network, containment, utensils)
+    net, view = load_view(paths, kitchen, level, network, containment, utensils,
+                          cons if cons.items else None)
     if entries is not None:
         return _batch(view, entries, method, motion_rates, fmt, budget, node_limit, output, containment)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
@@ -95,7 +96,10 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     limits = {"budget": budget, "node_limit": node_limit}
     done = None
     if cons.items:
-        done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+        if network == "reg":
+            done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+        else:
+            done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates, limits)
         for line in constraint_notes(done.removal):
             click.echo(line, err=True)
         result = done.result
@@ -142,3 +146,21 @@ def _batch(view, entries, method, rates, fmt, budget, node_limit, output, contai
         texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
         write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
     finish(rows, table_fmt, f"{method}, containment {containment}")
+
+
+def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits):
+    """Retrieval on EXP/GEN under constraints (most similar substitutes first); prints the substitutions made."""
+    from ..generalize.substitution import retrieve_substituted, without_banned
+    from ..io.inputs import load_kitchen
+
+    index = None
+    if network == "gen":
+        from ..generalize.categories import load_index
+
+        index = load_index()
+    concrete = without_banned(load_kitchen(kitchen_path, net, level), cons)
+    done, subs = retrieve_substituted(network, foon, kit, target, cons, method, index=index,
+                                      concrete_labels={n.label for n in concrete.nodes}, rates=rates, **limits)
+    for sub in subs:
+        click.echo(f"substitution: {sub.describe()}", err=True)
+    return done

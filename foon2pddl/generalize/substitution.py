@@ -17,8 +17,9 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
-from ..model.constraints import Constraints, Kind, label_mentions
+from ..model.constraints import Constraints, Kind, label_mentions, mentions
 from ..model.foon import Foon, FunctionalUnit
+from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
 from .substitute import unit_labels
@@ -47,9 +48,7 @@ def allowed(label: str, constraints: Constraints) -> bool:
 
 
 def without_banned(kitchen: Kitchen, constraints: Constraints) -> Kitchen:
-    """The kitchen without nodes whose own label mentions a banned object (before GEN abstracts it)."""
-    from ..model.constraints import mentions
-
+    """The kitchen without nodes mentioning a banned object (before GEN abstracts it)."""
     keep = frozenset(n for n in kitchen.nodes if not any(mentions(n, x) for x in banned_labels(constraints)))
     return Kitchen(keep, kitchen.level, kitchen.source)
 
@@ -108,3 +107,27 @@ def substitutions(tree: TaskTree, constraints: Constraints, sim: Callable[[str, 
             y = max(members, key=lambda m: (sim(x, m), m))
             found.add(Substitution(x, y, sim(x, y), cat))
     return tuple(sorted(found))
+
+
+def retrieve_substituted(kind: str, foon: Foon, kitchen: Kitchen, goal: Goal, constraints: Constraints,
+                         method: str = "complete", *, concrete_labels: Iterable[str] = (),
+                         sim: Callable[[str, str], float] | None = None, index=None, rates=None, **limits):
+    """Retrieval under `constraints` on the EXP (`kind` exp) or GEN (`kind` gen, `index` its categories)
+    network, preferring the most similar substitutes; (ConstrainedRetrieval, substitutions made)."""
+    from ..retrieval.constrained import retrieve_constrained
+
+    if not banned_labels(constraints):
+        return retrieve_constrained(foon, kitchen, goal, constraints, method, rates=rates, **limits), ()
+    if sim is None:
+        from .similarity import LabelSimilarity
+
+        sim = LabelSimilarity()
+    if kind == "exp":
+        foon = prefer_most_similar(foon, constraints, sim, lambda f: retrieve_constrained(
+            f, kitchen, goal, constraints, "complete").result.tree is not None)
+    done = retrieve_constrained(foon, kitchen, goal, constraints, method, rates=rates, **limits)
+    if done.result.tree is None:
+        return done, ()
+    category_of = index.choose if kind == "gen" and index is not None else None
+    return done, substitutions(done.result.tree, constraints, sim, kitchen_labels=concrete_labels,
+                               category_of=category_of)
