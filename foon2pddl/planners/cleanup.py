@@ -12,6 +12,8 @@ work directories, Fast Downward's files, worker processes); a scope token marks
 those processes. On exit, whatever the path (return, error, SIGINT, SIGTERM), the
 marked processes and the command's own descendants are killed and the directory
 removed, so nothing leaks even from a worker killed before its own cleanup ran.
+(multiprocessing's resource tracker and fork server, which outlive any one command
+in a long-lived interpreter, are spared.)
 """
 
 from __future__ import annotations
@@ -140,6 +142,21 @@ def _now_ticks() -> int:
         return 0
 
 
+def _interpreter_helpers() -> set[int]:
+    """Helper processes this interpreter keeps for its whole life (multiprocessing's resource
+    tracker and fork server): started during a command, they still serve the next one."""
+    import sys
+
+    pids: set[int] = set()
+    tracker = sys.modules.get("multiprocessing.resource_tracker")
+    server = sys.modules.get("multiprocessing.forkserver")
+    for pid in (getattr(getattr(tracker, "_resource_tracker", None), "_pid", None),
+                getattr(getattr(server, "_forkserver", None), "_forkserver_pid", None)):
+        if pid:
+            pids.add(pid)
+    return pids
+
+
 @contextmanager
 def command_scope() -> Iterator[str]:
     """Run a command inside a private TMPDIR and a process mark (see the module doc); yields the TMPDIR."""
@@ -156,7 +173,8 @@ def command_scope() -> Iterator[str]:
         yield scope
     finally:
         with signals_deferred():
-            _kill(descendants(os.getpid(), started))
+            keep = _interpreter_helpers()
+            _kill([p for p in descendants(os.getpid(), started) if p not in keep])
             kill_marked(token, SCOPE_MARK)  # orphans: daemons, children of workers that died first
             for key, value in saved.items():
                 if value is None:
