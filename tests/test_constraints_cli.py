@@ -160,3 +160,16 @@ def test_most_similar_working_substitute_is_preferred():
     kept = prefer_most_similar(foon, cons, similarity, lambda f: any(u.inputs[0].label == "lettuce" or
                                                                           u.inputs[0].label == "chard" for u in f.units))
     assert sorted(u.inputs[0].label for u in kept.units) == ["kale", "lettuce"]
+
+
+def test_schema_declares_exactly_the_keys_the_reader_accepts_and_the_example_profiles_parse():
+    from pathlib import Path
+
+    from foon2pddl.io.constraints_file import KEYS, read_constraints
+
+    docs = Path(__file__).resolve().parent.parent / "docs"
+    schema = json.loads((docs / "constraints.schema.json").read_text())
+    assert set(schema["properties"]) == set(KEYS) and schema["additionalProperties"] is False
+    robot = read_constraints(docs / "examples" / "robot-no-pour.json")
+    diet = read_constraints(docs / "examples" / "diet-no-egg.json")
+    assert robot.of(Kind.WITHOUT_MOTION) == ("pour",) and diet.of(Kind.WITHOUT) == ("egg",)
