@@ -9,7 +9,8 @@ from pathlib import Path
 from .harness import Context
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
-AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "generalize", "experiment", "reliability"]
+AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "constraints", "generalize", "experiment",
+         "reliability"]
 
 
 def main() -> None:

@@ -7,7 +7,9 @@ def run() -> None:
 
     exit_on_signals()
     from .cli import main
+    from .planners import cleanup
 
+    cleanup.SPARE_HELPERS = False  # this process ends with the command: nothing it started may stay
     main()
 
 

@@ -88,3 +88,88 @@ def test_a_constraint_matching_nothing_is_warned_about():
 def test_bad_flag_value_exits_2():
     result = run("retrieve", "--goal", "guacamole", "--without", " ")
     assert result.exit_code == 2 and "Error: without ' ': the label is empty" in result.stderr and "empty" in result.stderr
+
+
+def test_compile_must_use_becomes_a_goal_condition_and_rates_become_costs(tmp_path):
+    import pddl.parser.domain
+    import pddl.parser.problem
+
+    profile = tmp_path / "robot.json"
+    profile.write_text(json.dumps({"without_motions": ["whisk"], "rates": {"pour": 0.9}}))
+    out = tmp_path / "out"
+    result = run("compile", "--goal", "whipped cream", "--must-use", "sugar", "--constraints", str(profile),
+                 "-o", str(out))
+    assert result.exit_code == 0, result.output
+    domain, problem = (out / "domain.pddl").read_text(), (out / "problem.pddl").read_text()
+    assert "(used_sugar)" in problem.split("(:goal", 1)[1]
+    assert ":action-costs" in domain and "whisk_u" not in domain
+    pddl.parser.domain.DomainParser()(domain)
+    pddl.parser.problem.ProblemParser()(problem)
+
+
+def test_compile_of_an_excluded_goal_exits_1_and_writes_nothing(tmp_path):
+    result = run("compile", "--goal", "guacamole", "--without", "avocado", "-o", str(tmp_path / "out"))
+    assert result.exit_code == 1 and "avocado" in result.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_plan_keeps_the_must_use_unit_the_goal_does_not_need():
+    result = run("plan", "--goal", "whipped cream", "--must-use", "avocado")
+    assert result.exit_code == 0, result.output
+    assert "avocado" in result.stdout and "valid" in result.stderr
+
+
+def test_plan_names_the_blocking_constraint():
+    result = run("plan", "--goal", "guacamole", "--without-motion", "pour")
+    assert result.exit_code == 1 and "smallest set of constraints to relax: `without-motion pour`" in result.stderr
+
+
+def test_experiment_ban_axis_is_a_sweep_parameter_and_bans_only_lower_success(tmp_path):
+    out = tmp_path / "exp"
+    result = run("experiment", "--trials", "1", "--goals", "12", "--networks", "reg", "--solvers", "native-complete",
+                 "--sweep", "banned-motions=0,3,30", "-o", str(out), "--report", str(tmp_path / "r.md"))
+    assert result.exit_code == 0, result.output
+    rows = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines() if line.strip()]
+    solved = {k: sum(r["status"] == "solved" for r in rows if r["params"]["banned-motions"] == k) for k in (0, 3, 30)}
+    assert sum(r["params"]["banned-motions"] == 30 for r in rows) == 12
+    assert solved[0] >= solved[3] >= solved[30] and solved[30] < solved[0]
+
+
+def test_exp_substitutes_the_most_similar_allowed_object_and_says_so():
+    reg = run("retrieve", "--goal", "pancake", "--without", "mixing bowl")
+    assert reg.exit_code == 1
+    result = run("retrieve", "--goal", "pancake", "--network", "exp", "--without", "mixing bowl")
+    assert result.exit_code == 0, result.output
+    assert "substitution: mixing bowl -> bowl (Wu-Palmer 0.957)" in result.stderr
+    assert "mixing bowl" not in result.stdout and "bowl" in result.stdout
+
+
+def test_most_similar_working_substitute_is_preferred():
+    from foon2pddl.generalize.substitution import prefer_most_similar
+    from foon2pddl.model.constraints import Constraint, make_constraints
+    from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
+
+    def unit(obj, note=None):
+        return FunctionalUnit((make_node(obj),), Motion("chop"), (make_node("salad"),), (Source("r", 1, None, note),))
+
+    foon = Foon((unit("kale"), unit("spinach", "kale"), unit("lettuce", "kale"), unit("chard", "kale")))
+    cons = make_constraints([Constraint(Kind.WITHOUT, "kale")])
+    sim = {"spinach": 0.95, "lettuce": 0.93, "chard": 0.9}
+    similarity = lambda a, b: sim.get(b, sim.get(a, 0.0))  # noqa: E731
+    # the kitchen has no spinach: the most similar substitute that works is lettuce
+    kept = prefer_most_similar(foon, cons, similarity, lambda f: any(u.inputs[0].label == "lettuce" or
+                                                                          u.inputs[0].label == "chard" for u in f.units))
+    assert sorted(u.inputs[0].label for u in kept.units) == ["kale", "lettuce"]
+
+
+def test_schema_declares_exactly_the_keys_the_reader_accepts_and_the_example_profiles_parse():
+    from pathlib import Path
+
+    from foon2pddl.io.constraints_file import KEYS, read_constraints
+
+    docs = Path(__file__).resolve().parent.parent / "docs"
+    schema = json.loads((docs / "constraints.schema.json").read_text())
+    assert set(schema["properties"]) == set(KEYS) and schema["additionalProperties"] is False
+    robot = read_constraints(docs / "examples" / "robot-no-pour.json")
+    diet = read_constraints(docs / "examples" / "diet-no-egg.json")
+    assert robot.of(Kind.WITHOUT_MOTION) == ("pour",) and diet.of(Kind.WITHOUT) == ("egg",)

@@ -49,6 +49,14 @@ class Removal:
     constraints: Constraints
     removed: dict[Constraint, frozenset[int]] = field(hash=False)  # ban -> unit indexes it removes
     users: dict[str, frozenset[int]] = field(hash=False)  # must-use object -> unit indexes using it
+    masks: dict[str, bytearray] = field(hash=False, default_factory=dict)  # object -> node id -> mentions it
+
+    def relaxed(self, drop: Iterable[Constraint]) -> Removal:
+        """The removal of these constraints with `drop` relaxed (no label is matched again)."""
+        cons = self.constraints.without(drop)
+        keep = set(cons.items)
+        return Removal(self.foon, cons, {c: u for c, u in self.removed.items() if c in keep},
+                       {x: u for x, u in self.users.items() if x in cons.must_use}, self.masks)
 
     def skipped(self, relaxed: Iterable[Constraint] = ()) -> frozenset[int]:
         """Unit indexes removed by the bans not in `relaxed`."""
@@ -61,17 +69,33 @@ class Removal:
 
     def node_allowed(self, node: ObjectNode, relaxed: Iterable[Constraint] = ()) -> bool:
         """Whether `node` mentions none of the banned objects (those in `relaxed` aside)."""
-        return not any(mentions(node, x) for x in self.banned_objects(relaxed))
+        i = index_of(self.foon).node_id.get(node)
+        for x in self.banned_objects(relaxed):
+            mask = self.masks.get(x)
+            if (mentions(node, x) if mask is None or i is None else mask[i]):
+                return False
+        return True
 
     @cached_property
     def removed_units(self) -> frozenset[int]:
         return self.skipped()
 
+    @cached_property
+    def kept(self) -> tuple[int, ...]:
+        """Indexes of the units no ban removes."""
+        drop = self.removed_units
+        return tuple(i for i in range(len(self.foon.units)) if i not in drop)
+
+    @cached_property
+    def network(self) -> Foon:
+        """The network without the removed units (original order; the network itself when nothing is removed)."""
+        if not self.removed_units:
+            return self.foon
+        return Foon(tuple(self.foon.units[i] for i in self.kept), self.foon.level)
+
     def filtered(self, kitchen: Iterable[ObjectNode], goal: Goal) -> Filtered:
         """The network without the removed units, the kitchen without banned objects, the possible candidates."""
-        drop = self.removed_units
-        kept = tuple(i for i in range(len(self.foon.units)) if i not in drop)
-        foon = Foon(tuple(self.foon.units[i] for i in kept), self.foon.level) if drop else self.foon
+        kept, foon = self.kept, self.network
         kitchen = frozenset(n for n in kitchen if self.node_allowed(n))
         present = set(foon.producers) | kitchen
         cands = tuple(c for c in goal.candidates if c in present and self.node_allowed(c))
@@ -95,7 +119,8 @@ class Removal:
 
 
 def _motion_units(ix, motion: str) -> frozenset[int]:
-    return frozenset(u for u, m in enumerate(ix.motions) if label_mentions(m, motion))
+    hits = {m for m in set(ix.motions) if label_mentions(m, motion)}
+    return frozenset(u for u, m in enumerate(ix.motions) if m in hits)
 
 
 def _node_mask(ix, obj: str) -> bytearray:
@@ -121,14 +146,15 @@ def removal(foon: Foon, constraints: Constraints) -> Removal:
     ix = index_of(foon)
     removed: dict[Constraint, frozenset[int]] = {}
     users: dict[str, frozenset[int]] = {}
+    masks: dict[str, bytearray] = {}
     for c in constraints.items:
         if c.kind is Kind.WITHOUT_MOTION:
             removed[c] = _motion_units(ix, c.value)
             continue
-        mask = _node_mask(ix, c.value)
+        mask = masks[c.value] = masks.get(c.value) or _node_mask(ix, c.value)
         if c.kind is Kind.WITHOUT:
             removed[c] = frozenset(u for u in range(len(foon.units))
                                    if any(mask[n] for n in ix.inputs[u]) or any(mask[n] for n in ix.outputs[u]))
         else:
             users[c.value] = frozenset(u for u in range(len(foon.units)) if any(mask[n] for n in ix.inputs[u]))
-    return Removal(foon, constraints, removed, users)
+    return Removal(foon, constraints, removed, users, masks)

@@ -50,9 +50,14 @@ class FoonIndex:
         return (self.motions[u], self.inputs[u], self.outputs[u])
 
 
+def node_key(node: ObjectNode) -> tuple:
+    """The nodes' sort order (that of the model's dataclass order) as plain tuples, compared in C."""
+    return (node.label, tuple((s.label, s.related, s.ingredients) for s in node.states))
+
+
 def build_index(foon: Foon) -> FoonIndex:
     """Build the index (linear after one sort of nodes and one of units)."""
-    nodes = tuple(sorted(foon.nodes))
+    nodes = tuple(sorted(foon.nodes, key=node_key))
     node_id = {n: i for i, n in enumerate(nodes)}
     inputs = tuple(tuple(sorted({node_id[n] for n in u.inputs})) for u in foon.units)
     outputs = tuple(tuple(sorted({node_id[n] for n in u.outputs})) for u in foon.units)

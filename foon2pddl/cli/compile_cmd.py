@@ -8,8 +8,8 @@ import click
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write_many
-from ..io.rates import read_rates
 from ..pddl.compile import compile_task
+from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
 from . import main
@@ -17,12 +17,15 @@ from .options import (
     category_chains,
     category_types_option,
     check_output,
+    constraint_inputs,
+    constraints_options,
     costs_option,
     instances_option,
     load_pddl_view,
     parse_instances,
     prune_option,
     rates_option,
+    reject_lifted_constraints,
     single_goal,
     task_options,
     view_goal,
@@ -32,9 +35,12 @@ from .options import (
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
                prune: bool, costs: str | None, rates: Path | None, network: str = "reg",
                containment: str = "strict", utensils: Path | None = None, instances: tuple[str, ...] = (),
-               category_types: bool = False) -> PlanningTask:
-    """Load network, kitchen, goal and rates as the CLI options say, and compile (FoonError on bad input)."""
-    if costs == "success-rate" and rates is None:
+               category_types: bool = False, constraints=((), (), (), ())) -> PlanningTask:
+    """Load network, kitchen, goal, rates and constraints (files, without-motion, without, must-use labels)
+    as the CLI options say, and compile (FoonError on bad input; GoalExcluded when nothing is left)."""
+    cons, motion_rates, costs = constraint_inputs(*constraints, rates, costs)
+    reject_lifted_constraints(network, cons)
+    if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
@@ -42,8 +48,7 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if encoding == "instances":
         extra = {"instances": parse_instances(instances),
                  "categories": category_chains(view.foon) if category_types else ()}
-    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs,
-                        read_rates(rates) if rates else None, **extra)
+    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons, **extra)
 
 
 @main.command("compile")
@@ -53,14 +58,22 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 @prune_option
 @costs_option
 @rates_option
+@constraints_options
 @click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
               default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
 def compile_(paths, goal, goal_file, kitchen, utensils, containment, encoding, instances, category_types, level,
-             network, prune, costs, rates, output_dir) -> None:
-    """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically)."""
+             network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir) -> None:
+    """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically).
+
+    Exit status: 0 written, 1 the constraints leave no way to make the goal (nothing written), 2 bad input.
+    """
     check_output(output_dir, directory=True)
-    task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
-                      utensils, instances, category_types)
+    try:
+        task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
+                          utensils, instances, category_types, (constraints_files, without_motions, without, must_use))
+    except GoalExcluded as exc:
+        click.echo(f"cannot compile: {exc}", err=True)
+        click.get_current_context().exit(1)
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
     try:

@@ -94,6 +94,26 @@ def check_time_limit(value: float | None) -> float | None:
     return value
 
 
+def constraint_inputs(files, without_motions, without, must_use, rates: Path | None, costs: str | None = None):
+    """(constraints, motion rates, cost mode) from the options: rates from --rates and the constraints
+    files together; a constraints file with rates turns on `success-rate` costs unless --costs says otherwise."""
+    from ..io.constraints_file import load_constraints, with_rates
+    from ..io.rates import read_rates
+
+    cons = load_constraints(files, without_motions, without, must_use)
+    motion_rates = with_rates(read_rates(rates) if rates else None, cons)
+    if costs is None and cons.rates:
+        costs = "success-rate"
+    return cons, motion_rates, costs
+
+
+def reject_lifted_constraints(network: str, cons) -> None:
+    """The lifted GEN encoding does not take constraints (native `retrieve --network gen` does)."""
+    if network == "gen" and cons.items:
+        raise UsageError("constraints are not supported by the lifted GEN encoding; "
+                         "use --network reg or exp, or `retrieve --network gen`")
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:
@@ -111,12 +131,14 @@ def single_goal(goal: tuple[str, ...]) -> str | None:
 
 
 def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",
-              utensils: Path | None = None):
+              utensils: Path | None = None, constraints=None):
     """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
 
     The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level,
     --network, --utensils and --containment into what they search: utensils extend the
     kitchen, and under `infer` the network gets the containment rule's inference units.
+    With `constraints`, EXP and GEN are built from the kitchen without its banned objects
+    (so substitutes come from allowed ones).
     """
     from dataclasses import replace
 
@@ -128,6 +150,10 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
 
     net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
+    if constraints is not None and network != "reg":
+        from ..generalize.substitution import without_banned
+
+        kit = without_banned(kit, constraints)
     view = network_view(net, network, level, kit)
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))

@@ -9,9 +9,9 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
-from ..io.rates import read_rates
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
+from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
 from ..planners.solve import PHASES, PlanOutcome, plan
 from ..status import PlanStatus
@@ -19,12 +19,15 @@ from . import main
 from .options import (
     check_output,
     check_time_limit,
+    constraint_inputs,
+    constraints_options,
     costs_option,
     emit,
     load_pddl_view,
     other_networks_hint,
     prune_option,
     rates_option,
+    reject_lifted_constraints,
     single_goal,
     task_options,
     view_goal,
@@ -78,28 +81,38 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @prune_option
 @costs_option
 @rates_option
+@constraints_options
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
               help="How to print the task tree.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd, optimal, time_limit,
-          prune, costs, rates, up_validate, fmt, output) -> None:
+def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd,
+          optimal, time_limit, prune, costs, rates, constraints_files, without_motions, without, must_use, up_validate,
+          fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
     check_output(output)
-    if costs == "success-rate" and rates is None:
-        raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     t0 = time.perf_counter()
+    cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
+                                                  costs)
+    reject_lifted_constraints(network, cons)
+    if costs == "success-rate" and motion_rates is None:
+        raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
-    motion_rates = read_rates(rates) if rates else None
     load_s = time.perf_counter() - t0
-    outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd, optimal=optimal,
-                   time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates, up_validate=up_validate)
+    try:
+        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                       up_validate=up_validate, constraints=cons)
+    except GoalExcluded as exc:
+        click.echo(f"unsolvable (constraints): {exc}", err=True)
+        click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
+        click.get_current_context().exit(1)
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None
@@ -120,8 +133,8 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
-            click.echo("reason: " + _why_unreachable(foon, kit, target), err=True)
-            if network == "reg":
+            click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
+            if network == "reg" and not cons.items:
                 other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
@@ -130,11 +143,19 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         click.get_current_context().exit(EXIT[status])
 
 
-def _why_unreachable(foon, kitchen, goal) -> str:
-    """FOON's own account of an unreachable goal: which missing nodes block it (tree and foon-compat semantics)."""
+def _why_unreachable(foon, kitchen, goal, cons) -> str:
+    """FOON's own account of an unreachable goal: which missing nodes (or, under constraints, which
+    constraints) block it (tree and foon-compat semantics)."""
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
 
+    if cons.items:
+        from ..retrieval.constrained import retrieve_constrained
+
+        found = retrieve_constrained(foon, kitchen, goal, cons).result
+        if found.tree is None:
+            return found.detail
+        return "native retrieval finds a tree under the constraints; the planner gave up (see its message)"
     reach = reachable(foon, kitchen.nodes)
     if any(reach.can_make(c) for c in goal.candidates):
         return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"

@@ -8,9 +8,8 @@ import click
 
 from ..errors import UsageError
 from ..io.batch_report import TABLE_FORMATS
-from ..io.constraints_file import load_constraints, with_rates
 from ..model.containment import count_inference, inferred_nodes
-from ..retrieval import FORMATS, METHODS, read_rates, render_tree, retrieve
+from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.explain import explain_unreachable
 from ..retrieval.greedy import DEFAULT_BUDGET
@@ -20,6 +19,7 @@ from . import main
 from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
 from .options import (
     check_output,
+    constraint_inputs,
     constraints_options,
     containment_option,
     emit,
@@ -79,22 +79,26 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     (the reason goes to stderr, or into the table), 2 bad input.
     """
     check_output(output, directory=bool(goals_file) or len(goal) > 1 or fmt in TABLE_FORMATS)
-    cons = load_constraints(constraints_files, without_motions, without, must_use)
-    motion_rates = with_rates(read_rates(rates) if rates else None, cons)
+    cons, motion_rates, _ = constraint_inputs(constraints_files, without_motions, without, must_use, rates)
     if method == "weighted" and motion_rates is None:
         raise UsageError("--method weighted needs --rates FILE (motion<TAB>rate) or rates in a --constraints file")
     entries = batch_entries(goal, goals_file, goal_file, fmt)
     if entries is not None and cons.items:
         raise UsageError("constraints apply to one goal at a time (not with a batch of goals)")
-    net, view = load_view(paths, kitchen, level, network, containment, utensils)
+    net, view = load_view(paths, kitchen, level, network, containment, utensils,
+                          cons if cons.items else None)
     if entries is not None:
         return _batch(view, entries, method, motion_rates, fmt, budget, node_limit, output, containment)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
     limits = {"budget": budget, "node_limit": node_limit}
+    done = None
     if cons.items:
-        done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+        if network == "reg":
+            done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+        else:
+            done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates, limits)
         for line in constraint_notes(done.removal):
             click.echo(line, err=True)
         result = done.result
@@ -106,10 +110,13 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         if explain:
             click.echo("explain: no constraints given", err=True)
     if result.tree is None:
-        plain = result.reason == UNREACHABLE and not cons.items  # constraints explain themselves
+        # constraints explain themselves, unless the goal cannot be made even without them
+        plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
+        if plain and done is not None:
+            detail = "even without the constraints: " + detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
-        if plain and network == "reg":
+        if plain and network == "reg" and done is None:
             other_networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
@@ -138,3 +145,21 @@ def _batch(view, entries, method, rates, fmt, budget, node_limit, output, contai
         texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
         write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
     finish(rows, table_fmt, f"{method}, containment {containment}")
+
+
+def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits):
+    """Retrieval on EXP/GEN under constraints (most similar substitutes first); prints the substitutions made."""
+    from ..generalize.substitution import retrieve_substituted, without_banned
+    from ..io.inputs import load_kitchen
+
+    index = None
+    if network == "gen":
+        from ..generalize.categories import load_index
+
+        index = load_index()
+    concrete = without_banned(load_kitchen(kitchen_path, net, level), cons)
+    done, subs = retrieve_substituted(network, foon, kit, target, cons, method, index=index,
+                                      concrete_labels={n.label for n in concrete.nodes}, rates=rates, **limits)
+    for sub in subs:
+        click.echo(f"substitution: {sub.describe()}", err=True)
+    return done

@@ -1,11 +1,15 @@
 """Experiments: the seed paper's REG/EXP/GEN comparison, native retrieval against classical planners.
 
 - `protocol`: seeded trials (random kitchens, random goals);
+- `params`: the sweepable parameters (one registry entry each) and the points of a sweep;
 - `networks`: the REG, EXP and GEN views of a network (kitchen and goal mapped);
-- `solvers`: the registry of solvers compared;
-- `records`: one JSON line per (trial, goal, network, solver);
-- `runner`: worker processes, resumable runs;
-- `report`: CSV, Markdown tables and PNG plots.
+- `solvers`: the registry of solvers compared (role in the report, cost order);
+- `records`: one JSON line per (trial, goal, network, solver, swept values); cell statuses;
+- `worker`: one task = a batch of cells; networks and prepared solvers cached per process;
+- `engine`: where tasks run (this process, or Dask: a LocalCluster or a cluster's scheduler);
+- `runner`: the grid, what is already done, resumable runs;
+- `progress`: a bar on a terminal, periodic lines otherwise;
+- `tables`, `render`, `plots`, `report`: report rows, Markdown and CSV, PNG plots, the written report.
 """
 
 #: The package's modules (import them by name).

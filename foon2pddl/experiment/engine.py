@@ -70,12 +70,15 @@ def connect(jobs: int, scheduler: str | None):
             from ..errors import FoonError
 
             raise FoonError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
+    import multiprocessing
+
     import dask
 
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     # Forked workers inherit the network views this process built (`worker.view`): a local run builds
     # each network once, not once per worker (a worker the nanny restarts later builds its own).
     try:
-        with dask.config.set({"distributed.worker.multiprocessing-method": "fork"}):
+        with dask.config.set({"distributed.worker.multiprocessing-method": method}):
             cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
                                                dashboard_address=":0", silence_logs=logging.CRITICAL)
         return distributed.Client(cluster), cluster

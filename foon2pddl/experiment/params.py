@@ -23,6 +23,7 @@ from typing import Any
 
 from ..model.foon import Foon
 from ..model.kitchen import Kitchen
+from .bans import ban_motions, exclude_objects
 from .protocol import Protocol
 
 NETWORK = "network"
@@ -33,6 +34,13 @@ def _fraction(text: str) -> float:
     value = float(text)
     if not 0 < value <= 1:
         raise ValueError("must be in (0, 1]")
+    return value
+
+
+def _count(text: str) -> int:
+    value = int(text)
+    if value < 0:
+        raise ValueError("must be 0 or more")
     return value
 
 
@@ -61,6 +69,10 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
           field="kitchen_fraction"),
     Param("threshold", _fraction, NETWORK, "FOON-EXP Wu-Palmer similarity threshold", field="threshold"),
     Param("level", _level, NETWORK, "hierarchy level of goals, kitchens and networks", field="level"),
+    Param("banned-motions", _count, NETWORK, "motions the robot cannot perform (drawn at random, bans.py)",
+          network=ban_motions),
+    Param("excluded-objects", _count, NETWORK, "kitchen objects that must not appear (drawn at random, bans.py)",
+          network=exclude_objects),
 )}
 
 _PROTOCOL_FIELDS = {f.name for f in fields(Protocol)}

@@ -25,7 +25,7 @@ from ..io.atomic import atomic_write
 from ..model.kitchen import default_kitchen
 from .engine import run_dask, run_here
 from .networks import NETWORKS, NetworkView
-from .params import Point, points, protocol_at
+from .params import Point, network_hooks, points, protocol_at
 from .progress import OFF, Progress, default_mode
 from .protocol import Protocol, Trial, goal_pool, make_trials
 from .records import Key, Record, append, done_keys, open_for_append, params_key, read_records
@@ -104,8 +104,10 @@ class RunSummary:
 # -- the grid ------------------------------------------------------------------------------------
 
 def trials_at(config: Config, point: Point) -> tuple[Trial, ...]:
-    """The trials at one point of the sweep (drawn on REG at the point's level)."""
-    reg = view(config.paths, config.protocol, point, "reg").foon
+    """The trials at one point of the sweep (drawn on REG at the point's level, before the point's
+    network hooks: a hook such as `banned-motions` changes what can be made, not what is asked)."""
+    unhooked = tuple((n, v) for n, v in point if (n, v) not in network_hooks(point))
+    reg = view(config.paths, config.protocol, unhooked, "reg").foon
     return make_trials(reg, protocol_at(config.protocol, point))
 
 

@@ -26,7 +26,7 @@ from ..errors import FoonError, FoonInputError
 from ..io.files import expand_paths
 from ..io.inputs import Network, example_path, load_network
 from .networks import NetworkView, build_view
-from .params import Point, network_hooks, network_key, protocol_at, transform_kitchen, transform_network
+from .params import Point, label, network_hooks, network_key, protocol_at, transform_kitchen, transform_network
 from .protocol import Protocol, Trial
 from .records import CellStatus, Record
 from .solvers import Outcome, Setting, get_solver
@@ -151,14 +151,17 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
         _check_inputs(job)
         prepared = _prepared(batch, job)
     except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
-        out = batch.records(CellStatus.ERROR, f"preparation failed: {type(exc).__name__}: {exc}")
+        status, reason = CellStatus.ERROR, f"preparation failed: {type(exc).__name__}: {exc}"
+        if network_hooks(batch.point) and not view(job.paths, job.protocol, batch.point, batch.network).foon.units:
+            status, reason = CellStatus.UNSOLVABLE, f"no unit is left at {label(batch.point)}"
+        out = batch.records(status, reason)
         for r in out:
             (emit or _ignore)(r)
         return out
     for g in batch.goals:
         node = batch.trial.goals[g - 1]
         try:
-            outcome = prepared.solve(node)
+            outcome = _banned(prepared, node, batch.point) or prepared.solve(node)
         except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
             outcome = Outcome(CellStatus.ERROR, f"{type(exc).__name__}: {exc}")
         record = Record(trial=batch.trial.index, goal=g, network=batch.network, solver=batch.solver,
@@ -170,6 +173,18 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
         out.append(record)
         (emit or _ignore)(record)
     return out
+
+
+def _banned(prepared, node, point: Point) -> Outcome | None:
+    """UNSOLVABLE when the point's network hooks (bans, `bans.py`) left no unit making the goal: the
+    trial was drawn before the hooks, so a goal may no longer resolve; None otherwise (solve it)."""
+    if not network_hooks(point):
+        return None
+    try:
+        prepared.view.goal(node)
+    except FoonInputError as exc:
+        return Outcome(CellStatus.UNSOLVABLE, f"no unit left at {label(point)} makes it: {exc.message}")
+    return None
 
 
 def _ignore(record: Record) -> None:

@@ -115,11 +115,14 @@ def label_mentions(label: str, obj: str) -> bool:
     """Whether the words of `obj` occur consecutively in `label` (both normalized)."""
     if label == obj:
         return True
+    if obj not in label:  # fast rejection: most labels do not even contain the text
+        return False
     have, want = _words(label), _words(obj)
     n = len(want)
     return any(have[i:i + n] == want for i in range(len(have) - n + 1))
 
 
+@lru_cache(maxsize=1 << 16)
 def node_labels(node: ObjectNode) -> frozenset[str]:
     """Every object label a node mentions: its own, related objects, ingredient items."""
     out = {node.label}
@@ -143,3 +146,17 @@ def unit_mentions(unit: FunctionalUnit, obj: str) -> bool:
 def unit_uses(unit: FunctionalUnit, obj: str) -> bool:
     """Whether an input node of `unit` mentions `obj` (the unit uses it)."""
     return any(mentions(n, obj) for n in unit.inputs)
+
+
+def violations(units: Iterable[FunctionalUnit], constraints: Constraints) -> list[str]:
+    """What in a tree's units breaks `constraints` (empty when nothing does), unit by unit."""
+    units = tuple(units)
+    problems = []
+    for u in units:
+        for c in constraints.items:
+            if c.kind is Kind.WITHOUT_MOTION and label_mentions(u.motion.label, c.value):
+                problems.append(f"{u.describe()}: motion {c.value!r} is banned")
+            elif c.kind is Kind.WITHOUT and unit_mentions(u, c.value):
+                problems.append(f"{u.describe()}: mentions banned {c.value!r}")
+    problems += [f"no unit uses {x!r}" for x in constraints.must_use if not any(unit_uses(u, x) for u in units)]
+    return problems

@@ -97,21 +97,23 @@ def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNo
 
 
 def justify(units: tuple[FunctionalUnit, ...] | list[FunctionalUnit],
-            kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode], goal: ObjectNode) -> tuple[FunctionalUnit, ...]:
+            kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode], goal: ObjectNode,
+            keep: frozenset[int] = frozenset()) -> tuple[FunctionalUnit, ...]:
     """The units of a delete-free run that the goal needs, in their original order.
 
     A planner's plan may contain steps that make nothing the goal depends on;
     a task tree should not. Backward from the goal, each needed node is credited
     to the latest earlier unit that makes it (so units already kept are reused),
     and that unit's inputs become needed; nodes the kitchen holds need nothing.
-    The result still runs from the kitchen whenever the whole plan did.
+    The result still runs from the kitchen whenever the whole plan did. The units at the
+    positions in `keep` are kept too, with what they need (a must-use object's unit).
     """
     needed = {goal} - set(kitchen_nodes)
-    keep: list[int] = []
+    kept: list[int] = []
     for i in range(len(units) - 1, -1, -1):
         made = needed.intersection(units[i].outputs)
-        if made:
-            keep.append(i)
+        if made or i in keep:
+            kept.append(i)
             needed -= made
             needed.update(n for n in units[i].inputs if n not in kitchen_nodes)
-    return tuple(units[i] for i in reversed(keep))
+    return tuple(units[i] for i in reversed(kept))

@@ -8,12 +8,16 @@ encoding, write its encoder and list it here.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..errors import UsageError
 from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
+from ..model.constraints import Constraints
 from ..model.foon import Foon
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from .constraints import add_must_use, constrained_inputs, must_use_cone
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
 from .encode_lifted import compile_lifted
@@ -60,11 +64,15 @@ def encoding_named(name: str) -> Encoding:
 def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
                  prune: bool = True, costs: str | None = None, rates: Rates | None = None,
                  instances: tuple[tuple[str, int], ...] = (), categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
-                 category_index: CategoryIndex | None = None, policy: str = "absent") -> Compiled:
+                 category_index: CategoryIndex | None = None, policy: str = "absent",
+                 constraints: Constraints | None = None) -> Compiled:
     """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or bad options).
 
     `instances` and `categories` (category chains) are read by the `instances` encoding,
     `category_index` and `policy` by lifted ones (default: the shipped category index).
+    With `constraints`, the one place they apply to every encoding (`constraints.py`): the network,
+    kitchen and goal are filtered before encoding (GoalExcluded when no candidate remains) and
+    must-use objects join the goal after.
 
     >>> from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
     >>> from foon2pddl.model.goal import Goal, GoalSpec
@@ -81,9 +89,16 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
     enc = encoding_named(encoding)
     if costs is not None and not enc.costs:
         raise UsageError(f"the {enc.name} encoding does not support action costs")
+    if constraints:
+        foon, kitchen, goal = constrained_inputs(foon, kitchen, goal, constraints)
+        if constraints.must_use and prune:
+            foon, prune = must_use_cone(foon, kitchen, goal, constraints.must_use), False
     options = EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances, categories=categories,
                             category_index=category_index, policy=policy)
-    return enc.compile(foon, kitchen, goal, level, options)
+    compiled = enc.compile(foon, kitchen, goal, level, options)
+    if constraints:
+        compiled = replace(compiled, task=add_must_use(compiled.task, constraints.must_use))
+    return compiled
 
 
 def as_compiled(task: PlanningTask | Compiled) -> Compiled:
@@ -97,9 +112,9 @@ def as_compiled(task: PlanningTask | Compiled) -> Compiled:
 
 
 def compile_task(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
-                 prune: bool = True, costs: str | None = None, rates: Rates | None = None, *,
-                 instances: tuple[tuple[str, int], ...] = (),
+                 prune: bool = True, costs: str | None = None, rates: Rates | None = None,
+                 constraints: Constraints | None = None, *, instances: tuple[tuple[str, int], ...] = (),
                  categories: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> PlanningTask:
     """The `PlanningTask` of `compile_goal` (for callers that do not map plans back)."""
     return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
-                        instances=instances, categories=categories).task
+                        instances=instances, categories=categories, constraints=constraints).task

@@ -12,6 +12,8 @@ work directories, Fast Downward's files, worker processes); a scope token marks
 those processes. On exit, whatever the path (return, error, SIGINT, SIGTERM), the
 marked processes and the command's own descendants are killed and the directory
 removed, so nothing leaks even from a worker killed before its own cleanup ran.
+(In a long-lived interpreter, multiprocessing's resource tracker and fork server,
+which serve later commands too, are spared: `SPARE_HELPERS`.)
 """
 
 from __future__ import annotations
@@ -140,6 +142,28 @@ def _now_ticks() -> int:
         return 0
 
 
+#: Whether the interpreter outlives its commands (tests, library use): then the helpers below are
+#: spared; the CLI entry point (`foon2pddl.__main__.run`) clears it, its process ends with the command.
+SPARE_HELPERS = True
+
+
+def _interpreter_helpers() -> set[int]:
+    """Helper processes this interpreter keeps for its whole life (multiprocessing's resource
+    tracker and fork server), when SPARE_HELPERS: started during a command, they serve the next one."""
+    import sys
+
+    pids: set[int] = set()
+    if not SPARE_HELPERS:
+        return pids
+    tracker = sys.modules.get("multiprocessing.resource_tracker")
+    server = sys.modules.get("multiprocessing.forkserver")
+    for pid in (getattr(getattr(tracker, "_resource_tracker", None), "_pid", None),
+                getattr(getattr(server, "_forkserver", None), "_forkserver_pid", None)):
+        if pid:
+            pids.add(pid)
+    return pids
+
+
 @contextmanager
 def command_scope() -> Iterator[str]:
     """Run a command inside a private TMPDIR and a process mark (see the module doc); yields the TMPDIR."""
@@ -156,7 +180,8 @@ def command_scope() -> Iterator[str]:
         yield scope
     finally:
         with signals_deferred():
-            _kill(descendants(os.getpid(), started))
+            keep = _interpreter_helpers()
+            _kill([p for p in descendants(os.getpid(), started) if p not in keep])
             kill_marked(token, SCOPE_MARK)  # orphans: daemons, children of workers that died first
             for key, value in saved.items():
                 if value is None:

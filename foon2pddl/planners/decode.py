@@ -106,6 +106,25 @@ def goal_node(goal: Goal, level: int, kitchen_nodes: Iterable[ObjectNode],
     return next((c for c in candidates if c in available), candidates[0])
 
 
+def goal_adders(task: PlanningTask, steps: Sequence[str]) -> frozenset[int]:
+    """Positions (among the plan's unit steps) of the first unit step adding each goal atom that no
+    auxiliary action adds (such as a must-use `(used-X)`): the tree keeps them."""
+    aux = {a for x in task.actions if x.unit is None for a in x.add}
+    wanted = set(task.goal) - aux
+    found: set[int] = set()
+    position = 0
+    for step in steps:
+        action = task.action_for(step_action(step))
+        if action is None or action.unit is None:
+            continue
+        hit = wanted.intersection(action.add)
+        if hit:
+            found.add(position)
+            wanted -= hit
+        position += 1
+    return frozenset(found)
+
+
 def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
             kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
     """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for a step that maps to no unit.
@@ -121,7 +140,7 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
         units = first_occurrences(units)
     target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
     if compiled.foon_semantics:
-        units = justify(units, kitchen_nodes, target)
+        units = justify(units, kitchen_nodes, target, goal_adders(compiled.task, steps))
     return TaskTree(units, target, compiled.task.level)
 
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field, replace
 
 from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
+from ..model.constraints import Constraints
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
@@ -99,18 +100,19 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
          rates: Rates | None = None, category_index: CategoryIndex | None = None,
-         up_validate: bool = False) -> PlanOutcome:
+         up_validate: bool = False, constraints: Constraints | None = None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted
     ones (default: the shipped index). `time_limit` bounds the planner run (translation
-    and search). Raises UsageError for bad options (encoding, cost mode); a planner's
-    failure is a status, never an exception.
+    and search). Raises UsageError for bad options (encoding, cost mode),
+    `pddl.constraints.GoalExcluded` when `constraints` leave no way to make the goal; a
+    planner's failure is a status, never an exception.
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
-                            category_index=category_index)
+                            category_index=category_index, constraints=constraints)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     domain_text, problem_text = render(compiled.task)

@@ -83,11 +83,12 @@ def _real_tree(tree: TaskTree, real: dict[int, FunctionalUnit], must: tuple[str,
 
 
 def retrieve_constrained(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, constraints: Constraints,
-                         method: str = "complete", rates: Rates | None = None,
+                         method: str = "complete", rates: Rates | None = None, rm: Removal | None = None,
                          **limits) -> ConstrainedRetrieval:
-    """`retrieve` on the network filtered by `constraints` (module doc); `limits`: budget, node_limit."""
+    """`retrieve` on the network filtered by `constraints` (module doc); `limits`: budget, node_limit.
+    `rm`: the removal of `constraints` from `foon` when already computed."""
     nodes = kitchen_nodes(kitchen, foon.level)
-    rm = removal(foon, constraints)
+    rm = rm if rm is not None else removal(foon, constraints)
     filtered = rm.filtered(nodes, goal)
     must = constraints.must_use
     if filtered.candidates:
@@ -105,7 +106,8 @@ def retrieve_constrained(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], go
         if result.tree is not None or result.reason != UNREACHABLE:
             return ConstrainedRetrieval(result, rm, filtered)
     def relaxed_tree(relax):
-        done = retrieve_constrained(foon, nodes, goal, constraints.without(relax), "complete")
+        loose = rm.relaxed(relax)
+        done = retrieve_constrained(foon, nodes, goal, loose.constraints, "complete", rm=loose)
         return done.result.tree.units if done.result.tree is not None else ()
 
     blocking = explain_blocked(rm, nodes, goal, relaxed_tree)
