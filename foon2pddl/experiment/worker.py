@@ -181,8 +181,8 @@ def _banned(prepared, node, point: Point) -> Outcome | None:
     if not network_hooks(point):
         return None
     try:
-        prepared.view.goal(node)
-    except FoonInputError as exc:
+        prepared.view.goal_of(node)
+    except FoonError as exc:  # the goal no longer resolves (UsageError)
         return Outcome(CellStatus.UNSOLVABLE, f"no unit left at {label(point)} makes it: {exc.message}")
     return None
 
