@@ -13,6 +13,7 @@ from ..io.atomic import atomic_write
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
+from ..planners.commands import PRESETS, check_planner, resolve_command
 from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
@@ -87,7 +88,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,
               help="External planner command, run without a shell: 'cmd {domain} {problem} {plan}' "
-                   "(also {time}); its IPC plan file is read back.")
+                   "(also {time}); its IPC plan file is read back. Or a preset: "
+                   + ", ".join(PRESETS) + " (docs/planning.md).")
 @click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
 @click.option("--time-limit", "time_limit", type=click.FloatRange(min=0, min_open=True), default=300.0,
               show_default=True, callback=lambda ctx, param, value: check_time_limit(value),
@@ -110,6 +112,13 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
     check_output(output)
+    try:  # before anything is loaded or timed: a typo fails in milliseconds
+        if planner_cmd is not None:
+            resolve_command(planner_cmd)
+        else:
+            check_planner(planner)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="--planner-cmd" if planner_cmd else "--planner") from None
     t0 = time.perf_counter()
     cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
                                                   costs)
