@@ -14,6 +14,7 @@ from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS, check_planner, resolve_command
+from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
 from .options import (
@@ -91,6 +92,14 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
                    "(also {time}); its IPC plan file is read back. Or a preset: "
                    + ", ".join(PRESETS) + " (docs/planning.md).")
 @click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
+@click.option("--alias", default=None, metavar="NAME",
+              help="Fast Downward: a search alias of its driver (lama-first, seq-opt-lmcut, seq-sat-lama-2011, ...).")
+@click.option("--search", "search", default=None, metavar="CONFIG",
+              help="Fast Downward: a search configuration, as its driver's --search (e.g. 'astar(lmcut())').")
+@click.option("--evaluator", "evaluators", multiple=True, metavar="DEF",
+              help="Fast Downward: an evaluator for --search (e.g. 'h=ff()'), as its driver's; repeatable.")
+@click.option("--plan-file", "plan_file", type=click.Path(path_type=Path), default=None,
+              help="Also write the raw plan in Fast Downward's sas_plan format (for VAL and other tools).")
 @click.option("--time-limit", "time_limit", type=click.FloatRange(min=0, min_open=True), default=300.0,
               show_default=True, callback=lambda ctx, param, value: check_time_limit(value),
               help="Seconds for the planner (translation and search); 'inf' (or over 1e6) for no limit.")
@@ -105,13 +114,15 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output.")
 def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd,
-          optimal, time_limit, prune, costs, rates, constraints_files, without_motions, without, must_use, up_validate,
-          fmt, output) -> None:
+          optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates, constraints_files,
+          without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
     check_output(output)
+    check_output(plan_file)
+    config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
     try:  # before anything is loaded or timed: a typo fails in milliseconds
         if planner_cmd is not None:
             resolve_command(planner_cmd)
@@ -136,11 +147,12 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
 
             check_lifted_options(encoding, costs)
             outcome = plan_lifted(net.foon, kit, target, load_index(), level, planner=planner,
-                                  planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune)
+                                  planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune,
+                                  search=config)
         else:
             outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                            optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                           up_validate=up_validate, constraints=cons)
+                           up_validate=up_validate, constraints=cons, search=config)
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
         click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
@@ -174,8 +186,25 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         _write(data, output)
+    if plan_file is not None and outcome.result.solved:
+        _write(sas_plan_text(outcome.result.plan, plan_cost(outcome.task, outcome.result.plan)), plan_file)
     if EXIT[status]:
         click.get_current_context().exit(EXIT[status])
+
+
+def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
+    """Fast Downward's configuration from the driver-style options (None: the default); usage errors first."""
+    if alias is None and search is None and not evaluators:
+        return None
+    if planner_cmd is not None or planner != DEFAULT_PLANNER:
+        raise click.BadParameter("--alias, --search and --evaluator are Fast Downward options (--planner fd)",
+                                 param_hint="--planner")
+    from ..planners.fd import search_config
+
+    try:
+        return search_config(alias, search, evaluators, optimal)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="--alias" if alias else "--search") from None
 
 
 def _why_unreachable(foon, kitchen, goal, cons) -> str:

@@ -81,7 +81,8 @@ def plan_tree(lt: LiftedTask, steps: Sequence[str], goal: Goal, kitchen_nodes: f
 
 def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
                 planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
-                time_limit: float | None = None, prune: bool = True, policy: str = "absent") -> LiftedOutcome:
+                time_limit: float | None = None, prune: bool = True, policy: str = "absent",
+                search=None) -> LiftedOutcome:
     """Encode, plan, ground the plan back to concrete units and validate them against the concrete kitchen."""
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -91,7 +92,7 @@ def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, 
     domain, problem = render(lt.task)
     timings["write"] = time.perf_counter() - t0
     result = run_planner(lt.task, domain, problem, planner=planner, planner_cmd=planner_cmd, optimal=optimal,
-                         time_limit=time_limit)
+                         time_limit=time_limit, search=search)
     timings.update({k: v for k, v in result.timings.items() if k in ("translate", "search")})
     if not result.solved:
         return LiftedOutcome(lt, result, timings=timings)

@@ -90,7 +90,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
          rates: Rates | None = None, up_validate: bool = False,
-         constraints: Constraints | None = None) -> PlanOutcome:
+         constraints: Constraints | None = None, search=None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `time_limit` bounds the planner run (translation and search). Raises ValueError for
@@ -105,7 +105,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level
     domain_text, problem_text = render(task)
     timings["write"] = time.perf_counter() - t0
     result = run_planner(task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
-                         optimal=optimal, time_limit=time_limit)
+                         optimal=optimal, time_limit=time_limit, search=search)
     return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
 
 
