@@ -22,6 +22,7 @@ from ..planners import DEFAULT_PLANNER, PlanResult, run_planner
 from ..planners.decode import PlanDecodeError, goal_node
 from .categories import CategoryIndex
 from .lifted import LiftedTask, encode_lifted, ground_unit
+from .substitute import rename_derived, substitute_node, substitute_unit
 
 
 @dataclass(frozen=True)
@@ -73,10 +74,38 @@ def plan_units(lt: LiftedTask, steps: Sequence[str]) -> tuple[FunctionalUnit, ..
     return tuple(units)
 
 
+def plan_bindings(lt: LiftedTask, steps: Sequence[str]) -> dict[str, str]:
+    """Recipe object -> kitchen object, for every parameter a plan bound to another object."""
+    out: dict[str, str] = {}
+    for step in steps:
+        name, *args = step.split()
+        action = lt.task.action_for(name)
+        if action is None or action.unit is None or len(args) != len(lt.lifted[action.unit].params):
+            continue
+        for (label, _), a in zip(lt.lifted[action.unit].params, args, strict=True):
+            if lt.objects.get(a, label) != label:
+                out.setdefault(label, lt.objects[a])
+    return out
+
+
 def plan_tree(lt: LiftedTask, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode]) -> TaskTree:
-    """The concrete task tree a plan of the lifted task stands for."""
+    """The concrete task tree a plan of the lifted task stands for.
+
+    What the plan made from a substituted object is renamed with it (`substitute.rename_derived`:
+    a lime squeezed where the recipe squeezed a lemon gives `lime juice`), in every unit and in
+    the goal node, as FOON-EXP names it; when the renamed tree would not validate (a new name
+    colliding with another object), the recipe's names are kept.
+    """
     units = plan_units(lt, steps)
-    return TaskTree(units, goal_node(goal, lt.level, kitchen_nodes, units), lt.level)
+    tree = TaskTree(units, goal_node(goal, lt.level, kitchen_nodes, units), lt.level)
+    fixed = frozenset(x for n in kitchen_nodes for x in (n.label, *(y for s in n.states
+                                                                    for y in (s.related, *s.ingredients))) if x)
+    renames = rename_derived(units, plan_bindings(lt, steps), fixed)
+    if not renames:
+        return tree
+    renamed = TaskTree(tuple(substitute_unit(u, renames) for u in units), substitute_node(tree.goal, renames),
+                       lt.level)
+    return renamed if validate(renamed, kitchen_nodes).ok else tree
 
 
 def plan_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
