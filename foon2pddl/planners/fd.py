@@ -17,7 +17,6 @@ imports unified-planning, ~1.5 s).
 
 from __future__ import annotations
 
-import ast
 import importlib.util
 import os
 import sys
