@@ -157,17 +157,20 @@ def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = 10) 
     Returns up to `limit` of them in sorted order.
     """
     ix = reach.index
-    seen: set[int] = set()
-    stack = [i for i in ix.ids(nodes) if reach.node_round[i] == UNREACHED]
-    found: set[int] = set()
+    rounds, makers, inputs = reach.node_round, ix.makers, ix.inputs
+    seen = bytearray(len(ix.nodes))
+    stack = [i for i in ix.ids(nodes) if rounds[i] == UNREACHED]
+    found: list[int] = []
     while stack:
         n = stack.pop()
-        if n in seen:
+        if seen[n]:
             continue
-        seen.add(n)
-        if not ix.makers[n]:
-            found.add(n)
+        seen[n] = 1
+        if not makers[n]:
+            found.append(n)
             continue
-        for u in ix.makers[n]:
-            stack.extend(i for i in ix.inputs[u] if reach.node_round[i] == UNREACHED and i not in seen)
+        for u in makers[n]:
+            for i in inputs[u]:
+                if not seen[i] and rounds[i] == UNREACHED:
+                    stack.append(i)
     return tuple(ix.nodes[i] for i in sorted(found)[:limit])

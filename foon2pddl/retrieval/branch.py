@@ -25,10 +25,12 @@ from __future__ import annotations
 
 import math
 import time
+import weakref
 
 from ..analysis.index import FoonIndex
 from ..analysis.reachability import UNREACHED, Reachability
 from ..model.foon import Foon
+from .improve import improve
 from .lmcut import Cone
 
 EPS = 1e-9
@@ -44,7 +46,7 @@ class BranchAndBound:
         self.weight = weight
         self.node_limit = math.inf if node_limit is None else node_limit
         self.deadline = deadline
-        kitchen = [r == 0 for r in reach.node_round]
+        kitchen, deps = _per_fixpoint(reach)
         self.kitchen = kitchen
         fires = reach.unit_round
         # Units that can fire and lie backwards from a candidate, and the makers among them.
@@ -62,10 +64,13 @@ class BranchAndBound:
                     stack.extend(ix.inputs[u])
         self.units = units
         self.makers = makers
-        self.deps = {u: tuple(i for i in ix.inputs[u] if not kitchen[i]) for u in units}
-        self.cone = Cone(units, self.deps, ix.outputs, makers, weight)
+        for u in units:
+            if u not in deps:
+                deps[u] = tuple(i for i in ix.inputs[u] if not kitchen[i])
+        self.deps = deps
+        self.cone = Cone(units, self.deps, ix.outputs, makers, weight, ix.rank.__getitem__)
         self.static = self.cone.node_costs()
-        self.integral = all(float(w).is_integer() for w in weight)
+        self.integral = all(float(weight[u]).is_integer() for u in units)
         self.best_cost = math.inf
         self.best: tuple[int, dict[int, int]] = (-1, {})
         self.expanded = 0
@@ -74,12 +79,13 @@ class BranchAndBound:
         self.cand_bound = {c: self.static.get(c, math.inf) for c in cands}
         self.proven = 0.0  # lower bound proven by the completed iterations of `run`
         self.h_cache: dict[tuple[frozenset[int], frozenset[int]], float] = {}
+        self.improved = 0  # relaxed plans tried by the local search
 
     # -- incumbents --------------------------------------------------------------------------------
 
     def offer_tree(self, tree) -> None:
         """Take a valid tree (of this network's units) as the incumbent if it is cheaper."""
-        position = {id(x): i for i, x in enumerate(self.foon.units)}
+        position = self.ix.positions(self.foon)
         self.offer_units(self.ix.node_id[tree.goal], [position[id(x)] for x in tree.units])
 
     def offer_units(self, goal: int, units: list[int]) -> None:
@@ -114,20 +120,37 @@ class BranchAndBound:
 
     # -- search ------------------------------------------------------------------------------------
 
-    def run(self, cands: list[int]) -> None:
-        """Iterative deepening on the bound: search every tree of cost <= t, raise t, repeat.
-
-        t starts at the least root LM-cut of the candidates. An iteration that finds
-        no tree of cost <= t proves t' (the least bound it pruned above t) a lower
-        bound; a tree found within t is optimal (its cost is at least the proven t).
-        It stops when t reaches the incumbent's cost (proven), or the budget runs out.
-        """
+    def root(self, cands: list[int]) -> bool:
+        """Root LM-cut of every candidate; whether that already proves the incumbent optimal."""
         lmcut = self.cone.lmcut
         for c in cands:
             if self.deadline is not None and time.perf_counter() >= self.deadline:
                 self.stopped = "time budget"
-                return
+                return False
             self.cand_bound[c] = max(self.cand_bound[c], lmcut((), (c,)))
+        return self.lower_bound() >= self.best_cost - EPS
+
+    def improve(self, cands: list[int], attempts: int) -> None:
+        """Local search on the incumbent (`improve.improve`), at most `attempts` relaxed plans."""
+        cone = self.cone
+        gid, commit = self.best
+        units = sorted({cone.local_u[u] for u in commit.values()})
+        goal, order, used = improve(cone, units, cone.local_n[gid], {cone.local_n[c] for c in cands}, attempts,
+                                    self.deadline)
+        self.improved = used
+        self.offer_units(cone.node_ids[goal], [cone.unit_ids[u] for u in order])
+
+    def run(self, cands: list[int]) -> None:
+        """Iterative deepening on the bound: search every tree of cost <= t, raise t, repeat.
+
+        t starts at the least root LM-cut of the candidates (`root`). An iteration
+        that finds no tree of cost <= t proves t' (the least bound it pruned above t)
+        a lower bound; a tree found within t is optimal (its cost is at least the
+        proven t). It stops when t reaches the incumbent's cost (proven), or the
+        budget runs out.
+        """
+        if self.stopped:
+            return
         order = sorted(cands, key=lambda c: (self.cand_bound[c], self.static.get(c, math.inf), c))
         t = self.lower_bound()
         while t < self.best_cost - EPS:
@@ -225,3 +248,14 @@ class BranchAndBound:
                 stack.extend(frame for _, frame in order)
                 break
         return above
+
+
+_FIXPOINT_CACHE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _per_fixpoint(reach: Reachability) -> tuple[list[bool], dict[int, tuple[int, ...]]]:
+    """Kitchen mask and non-kitchen inputs per unit (filled lazily), shared by the goals of one fixpoint."""
+    hit = _FIXPOINT_CACHE.get(reach)
+    if hit is None:
+        hit = _FIXPOINT_CACHE[reach] = ([r == 0 for r in reach.node_round], {})
+    return hit

@@ -18,7 +18,8 @@ A superset is still admissible (every plan uses one of its units, and the
 cost partitioning argument does not depend on the cut being minimal); on the
 protocol's FOON-EXP goals it gives the same bound on 145 of 146 goals, 2.4x faster.
 
-A `Cone` holds the units a search may use with dense local ids: for each unit
+A `Cone` holds the units a search may use with dense local ids (in the order
+of `key`, e.g. content order, so that tie-breaks never follow file order): for each unit
 its inputs that are not in the kitchen (`deps`) and its outputs that are cone
 nodes; for every non-kitchen node the cone units that make it.
 """
@@ -27,7 +28,7 @@ from __future__ import annotations
 
 import heapq
 import math
-from collections.abc import Collection, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 
 INF = math.inf
 ZERO = 1e-12
@@ -38,8 +39,8 @@ class Cone:
 
     def __init__(self, units: Collection[int], deps: Mapping[int, tuple[int, ...]],
                  outputs: Sequence[tuple[int, ...]], makers: Mapping[int, tuple[int, ...]],
-                 weight: Sequence[float]) -> None:
-        self.unit_ids = sorted(units)
+                 weight: Sequence[float], key: Callable[[int], object] | None = None) -> None:
+        self.unit_ids = sorted(units, key=key)
         self.node_ids = sorted(makers)
         local_u = {u: k for k, u in enumerate(self.unit_ids)}
         local_n = {n: k for k, n in enumerate(self.node_ids)}

@@ -49,7 +49,7 @@ from ..analysis.reachability import Reachability, reachable
 from ..io.rates import Rates
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
-from .branch import BranchAndBound
+from .branch import EPS, BranchAndBound
 from .complete import complete, unreachable_detail
 from .extract import make_tree, ordered_units
 from .greedy import DEFAULT_BUDGET, greedy
@@ -59,6 +59,8 @@ from .result import UNREACHABLE, Retrieval
 DEFAULT_NODE_LIMIT = 20_000
 #: Default wall-clock cap per goal in seconds (a safety net; None: no cap).
 DEFAULT_TIME_LIMIT = 10.0
+#: Relaxed plans the local search on the incumbent may try per goal (deterministic).
+IMPROVE_ATTEMPTS = 60
 
 
 def unit_weights(ix, rates: Rates | None) -> list[float]:
@@ -97,10 +99,14 @@ def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
 
     weight = unit_weights(ix, rates if weighted else None)
     search = BranchAndBound(foon, ix, reach, weight, cands, node_limit, deadline)
-    for seed in (complete(foon, kitchen_nodes, goal, reach), greedy(foon, kitchen_nodes, goal, budget, reach)):
-        if seed.tree is not None:
-            search.offer_tree(seed.tree)
-    search.run(cands)
+    search.offer_tree(complete(foon, kitchen_nodes, goal, reach).tree)
+    if not search.root(cands):
+        seed = greedy(foon, kitchen_nodes, goal, budget, reach).tree
+        if seed is not None:
+            search.offer_tree(seed)
+        if search.lower_bound() < search.best_cost - EPS:
+            search.improve(cands, IMPROVE_ATTEMPTS)
+        search.run(cands)
     gid, commit = search.best
     units = ordered_units(ix, gid, commit.__getitem__, lambda n: rounds[n] == 0)
     tree = make_tree(foon, ix, gid, units)
@@ -109,6 +115,8 @@ def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
     proven = bound >= cost - 1e-9
     bound = cost if proven else bound
     detail = f"{search.expanded} search nodes expanded over {len(search.units)} candidate units"
+    if search.improved:
+        detail += f", {search.improved} relaxed plans tried by the local search"
     if not proven:
         limit = f"node limit {node_limit}" if search.stopped == "node limit" else f"time budget {time_limit:g} s"
         detail += (f"; {limit} hit: best tree found so far, not proven optimal "
