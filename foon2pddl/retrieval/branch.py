@@ -69,17 +69,24 @@ class BranchAndBound:
                 deps[u] = tuple(i for i in ix.inputs[u] if not kitchen[i])
         self.deps = deps
         self.cone = Cone(units, self.deps, ix.outputs, makers, weight, ix.rank.__getitem__)
-        self.static = self.cone.node_costs()
+        self._static: dict[int, float] | None = None
         self.integral = all(float(weight[u]).is_integer() for u in units)
         self.best_cost = math.inf
         self.best: tuple[int, dict[int, int]] = (-1, {})
         self.expanded = 0
         self.stopped = ""  # why the search stopped early: "", "node limit" or "time budget"
-        # candidate -> lower bound on its trees (static h_max until its root LM-cut is known)
-        self.cand_bound = {c: self.static.get(c, math.inf) for c in cands}
+        # candidate -> lower bound on its trees (0 until its root LM-cut is known)
+        self.cand_bound = {c: 0.0 for c in cands}
         self.proven = 0.0  # lower bound proven by the completed iterations of `run`
         self.h_cache: dict[tuple[frozenset[int], frozenset[int]], float] = {}
         self.improved = 0  # relaxed plans tried by the local search
+
+    @property
+    def static(self) -> dict[int, float]:
+        """h_max of every cone node with no unit free (child and candidate order), computed when first needed."""
+        if self._static is None:
+            self._static = self.cone.node_costs()
+        return self._static
 
     # -- incumbents --------------------------------------------------------------------------------
 

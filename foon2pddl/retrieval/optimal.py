@@ -1,42 +1,28 @@
-"""`optimal` and `weighted` retrieval: exact branch and bound over partial task trees.
+"""`optimal` and `weighted` retrieval: anytime exact search for the cheapest task tree.
 
 `optimal` minimizes the number of distinct units (a subtree shared by two
 branches counts once); `weighted` maximizes the success probability, the
 product of the units' motion success rates, i.e. minimizes the sum of
 -log(rate). Both run the same search with a different unit cost.
 
-Search space. A partial solution is a set S of chosen units, a commitment
-node -> unit for every node already explained, and the open nodes (inputs of
-chosen units, or the goal, that are neither in the kitchen nor committed).
-A search node picks one open node (the one with fewest possible makers, then
-the lowest id) and branches over its makers: a unit already in S (free), or a
-new one (its cost; its inputs become open). A commitment that would make a
-node depend on itself is refused, so every complete solution is executable:
-its units, ordered by the commitments, form a valid task tree. Conversely the
-first-achiever commitments of any valid tree are acyclic, so the search misses
-no solution; each branch fixes a different maker for the chosen node, so no
-partial solution is generated twice. Only units the fixpoint can fire and that
-lie backwards from the goal are considered.
-
-Bound. g = cost of S; h = LM-cut (`lmcut.py`) of making the open nodes with
-the units of S free, a relaxation (commitments and cycles ignored), hence
-admissible. A branch is cut when g + h cannot beat the best tree found so
-far; a partial solution is bounded when taken from the stack and its children
-inherit the bound until they branch. The first incumbent is the cheaper of
-the `complete` and `greedy` trees, so the answer is never worse than theirs.
+Steps: the `complete` tree is the first incumbent; the root LM-cut bound of
+each candidate (`branch.BranchAndBound.root`) often proves it optimal at once;
+otherwise the `greedy` tree and a local search (`improve.py`) improve the
+incumbent, and iterative deepening on the bound (`branch.py`) proves it or
+finds a better one. The search stops at `node_limit` search nodes
+(deterministic) or `time_limit` seconds (a wall-clock safety cap) and returns
+the best tree found, its cost and a proven lower bound (`Retrieval.cost`,
+`.bound`, `.proven_optimal`). There always is a tree: unreachable goals are
+answered `unreachable` by the fixpoint, without search.
 
 Complexity. Finding a cheapest delete-free plan is NP-hard (minimum-cost
 relaxed planning; set cover reduces to it: one unit per set, making all of its
-elements' nodes, and a goal unit needing every element), so the search is
-exponential in the worst case. `node_limit` caps the search nodes expanded;
-when it is hit the best tree found so far is returned with
-`proven_optimal=False` (there always is one, since the fixpoint is run first
-and unreachable goals are answered `unreachable` without search).
+elements' nodes, and a goal unit needing every element), so the exact search
+is exponential in the worst case; the budgeted one is O(node_limit x cone).
 
-Ties between equally good trees go to the first found: makers already chosen
-first, then by their cost plus the static h_max of the nodes they open, then
-in unit content order; candidates in order of their static h_max cost, then
-sorted. Costs are compared with a tolerance of 1e-9.
+Ties between equally good trees go to the first found (see `branch.py`,
+`improve.py`); candidates in order of their root bound, then static h_max,
+then id. Costs are compared with a tolerance of 1e-9.
 """
 
 from __future__ import annotations
@@ -55,12 +41,13 @@ from .extract import make_tree, ordered_units
 from .greedy import DEFAULT_BUDGET, greedy
 from .result import UNREACHABLE, Retrieval
 
-#: Default cap on search nodes expanded per goal (deterministic; None: no cap).
-DEFAULT_NODE_LIMIT = 20_000
+#: Default cap on search nodes expanded per goal (deterministic; None: no cap). With it, 96.8 % of the
+#: experiment protocol's solved goals are proven optimal (docs/retrieval.md).
+DEFAULT_NODE_LIMIT = 100
 #: Default wall-clock cap per goal in seconds (a safety net; None: no cap).
 DEFAULT_TIME_LIMIT = 10.0
 #: Relaxed plans the local search on the incumbent may try per goal (deterministic).
-IMPROVE_ATTEMPTS = 60
+IMPROVE_ATTEMPTS = 25
 
 
 def unit_weights(ix, rates: Rates | None) -> list[float]:
