@@ -19,7 +19,7 @@ import foon2pddl.retrieval.greedy as greedy_module
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, dedupe_units, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import validate
-from foon2pddl.retrieval import Rates, reachable, retrieve
+from foon2pddl.retrieval import Rates, blockers, reachable, retrieve
 from foon2pddl.retrieval.result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
 
 POOL = [make_node("a"), make_node("b"), make_node("b", [make_state("cut")]), make_node("c", [make_state("in", "b")]),
@@ -94,6 +94,38 @@ def test_fixpoint_matches_naive_closure(problem):
         u = reach.achiever_of(n)
         if u is not None:
             assert reach.round_of(n) == 1 + max((reach.round_of(i) for i in foon.units[u].inputs), default=0)
+
+
+def naive_blockers(foon, kitchen, nodes):
+    """Unmakeable nodes without a maker that the unmakeable `nodes` depend on (plain search on the units)."""
+    made = naive_closure(foon.units, kitchen)
+    makers = {}
+    for u in foon.units:
+        for o in u.outputs:
+            if o not in u.inputs:
+                makers.setdefault(o, []).append(u)
+    seen, found, stack = set(), set(), [n for n in nodes if n not in made]
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        if n not in makers:
+            found.add(n)
+        for u in makers.get(n, ()):
+            stack.extend(i for i in u.inputs if i not in made)
+    return sorted(found)
+
+
+@settings(max_examples=300, deadline=None)
+@given(problems(), st.lists(st.sampled_from(POOL), min_size=1, max_size=8), st.integers(1, 12))
+def test_blockers_remembered_per_fixpoint_match_a_plain_search(problem, queries, limit):
+    """Repeated queries on one fixpoint (answers remembered per component) give the plain search's answer."""
+    foon, kitchen, goal = problem
+    reach = reachable(foon, kitchen)
+    for nodes in [goal.candidates, *([q] for q in queries), queries]:
+        nodes = [n for n in nodes if n in foon.nodes]
+        assert list(blockers(reach, nodes, limit)) == naive_blockers(foon, kitchen, nodes)[:limit]
 
 
 @settings(max_examples=300, deadline=None)
