@@ -67,6 +67,7 @@ def main() -> None:
 
 # Each command module registers its commands on `main` when imported.
 from . import (
+    analyze_cmd,
     check_cmd,
     compile_cmd,
     expand_cmd,
