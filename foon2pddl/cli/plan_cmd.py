@@ -10,6 +10,7 @@ import click
 
 from ..errors import FoonInputError
 from ..io.atomic import atomic_write
+from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
@@ -17,6 +18,8 @@ from ..planners.commands import PRESETS, check_planner, resolve_command
 from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan
 from . import main
+from .batch import TREE_EXTENSIONS, batch_entries
+from .batch_pddl import plan_batch
 from .options import (
     check_output,
     check_time_limit,
@@ -27,6 +30,7 @@ from .options import (
     encoding_option,
     goal_file_option,
     goal_option,
+    goals_option,
     kitchen_option,
     level_option,
     load_view,
@@ -78,6 +82,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @main.command("plan")
 @paths_argument
 @goal_option
+@goals_option
 @goal_file_option
 @kitchen_option
 @utensils_option
@@ -109,18 +114,20 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @constraints_options
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
-@click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
-              help="How to print the task tree.")
+@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
+              help="How to print the task tree; for a batch, the table (text, csv, jsonl) or the tree files' format.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
-              help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd,
-          optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates, constraints_files,
-          without_motions, without, must_use, up_validate, fmt, output) -> None:
+              help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
+                   "a directory receiving one tree file per solved goal.")
+def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, level, network, planner,
+          planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
+          constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
-    check_output(output)
+    entries = batch_entries(goal, goals_file, goal_file, fmt)
+    check_output(output, directory=entries is not None)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
     try:  # before anything is loaded or timed: a typo fails in milliseconds
@@ -136,6 +143,14 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
         raise FoonInputError("<options>", 0, "--costs success-rate needs --rates FILE (motion<TAB>rate)")
+    if entries is not None:
+        if network == "gen" or cons.items:
+            raise FoonInputError("<options>", 0, "--network gen and constraints plan one goal at a time (not a batch)")
+        _, view = load_view(paths, kitchen, level, network, containment, utensils)
+        return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
+                          fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
+                          planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
+                          rates=motion_rates, up_validate=up_validate, search=config)
     net, view = load_view(paths, kitchen, level, "reg" if network == "gen" else network, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     load_s = time.perf_counter() - t0
