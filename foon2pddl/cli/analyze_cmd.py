@@ -6,11 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..analysis.network import analyze, graphml_graphs
 from ..errors import FoonInputError
-from ..io.atomic import atomic_write
-from ..io.inputs import load_network
-from ..io.network_report import format_text, plot_png, to_json, write_graphml
 from . import main
 from .options import emit, output_option, paths_argument
 
@@ -29,7 +25,12 @@ from .options import emit, output_option, paths_argument
 @output_option
 def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     """One-mode projections of the network (object-object, motion-motion), degree and betweenness
-    centrality, the most central objects and motions, connected components (docs/analysis.md)."""
+    centrality, the most central objects and motions, connected components (docs/datasets.md)."""
+    from ..analysis.network import analyze, graphml_graphs  # networkx: imported only when needed
+    from ..io.atomic import atomic_write
+    from ..io.inputs import load_network
+    from ..io.network_report import format_text, plot_png, to_json, write_graphml
+
     net = load_network(paths)
     result = analyze(net.foon, int(level))
     try:
