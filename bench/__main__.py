@@ -9,7 +9,7 @@ from pathlib import Path
 from .harness import Context
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
-AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "constraints", "generalize", "experiment",
+AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "batch", "constraints", "generalize", "experiment",
          "reliability"]
 
 

@@ -8,6 +8,9 @@ Figures (level 3 unless named):
 - `optimal` and `weighted` (shared motion rates) over 100 seeded reachable goals:
   median, worst case, expansions, and how often they beat `complete`;
 - the same medians at level 2;
+- anytime `optimal` (default budget) on the experiment protocol's goals on REG, EXP and GEN:
+  per-goal median and worst time, search nodes, the share proven optimal and the median gap
+  of the rest (the experiment's floor: >= 95 % proven);
 - the search-inputs exercise: how many of `goal_nodes.json`'s goals
   `kitchen.json` can make, at levels 3 and 2, by reason (see docs/retrieval.md).
 `--quick` uses fewer goals and repeats.
@@ -22,6 +25,7 @@ import time
 from collections import Counter
 
 from foon2pddl.analysis.index import build_index
+from foon2pddl.errors import FoonInputError
 from foon2pddl.io.files import load
 from foon2pddl.io.kitchen_files import json_node, read_kitchen
 from foon2pddl.model.goal import Goal, spec_of_node
@@ -99,6 +103,45 @@ def speed(ctx: Context, foon, label: str) -> None:
         ctx.report(AREA, f"{name} per goal, worst ({label})", worst[0], "s")
 
 
+def protocol_goals(ctx: Context) -> None:
+    """Anytime optimal (default budget) on the protocol's goals, per network view."""
+    from foon2pddl.experiment.networks import NETWORKS, build_view
+    from foon2pddl.experiment.protocol import Protocol, make_trials
+    from foon2pddl.io.inputs import load_network
+
+    net = load_network([ctx.shared / "foon-subgraphs"])
+    protocol = Protocol(trials=2, goals=20) if ctx.quick else Protocol()
+    views = {name: build_view(name, net, protocol.level) for name in NETWORKS}
+    trials = make_trials(views["reg"].foon, protocol)
+    for name, view in views.items():
+        times, expansions, gaps, solved = [], [], [], 0
+        for trial in trials:
+            nodes = view.kitchen(trial.kitchen).project(view.foon.level).nodes
+            reach = reachable(view.foon, nodes)
+            for node in trial.goals:
+                try:
+                    goal = view.goal(node)
+                except FoonInputError:  # no node of this view matches the goal
+                    continue
+                t0 = time.perf_counter()
+                result = optimal(view.foon, nodes, goal, reach=reach)
+                times.append(time.perf_counter() - t0)
+                if result.tree is not None:
+                    solved += 1
+                    expansions.append(result.expansions)
+                    if not result.proven_optimal:
+                        gaps.append(result.gap)
+        proven = solved - len(gaps)
+        note = (f"{len(times)} goals, {solved} solved, worst {max(times):.3f} s, median search nodes "
+                f"{statistics.median(expansions or [0]):.0f}; proven optimal {proven} of {solved} "
+                f"({100 * proven / max(solved, 1):.1f} %, floor >= 95 %); median gap of the rest "
+                f"{statistics.median(gaps) if gaps else 0:g} units")
+        ctx.report(AREA, f"anytime optimal per goal, median (protocol, {name.upper()})",
+                   statistics.median(times) * 1e3, "ms", note)
+        ctx.report(AREA, f"anytime optimal, proven share (protocol, {name.upper()})",
+                   100 * proven / max(solved, 1), "%")
+
+
 def search_inputs(ctx: Context, universal) -> None:
     """How many of the search inputs' 25 goals the search inputs' kitchen can make, and why not."""
     inputs = ctx.shared / "foon-search-inputs"
@@ -135,4 +178,5 @@ def run(ctx: Context) -> None:
     universal, _ = load([ctx.shared / "foon-subgraphs"])
     speed(ctx, universal, "level 3")
     speed(ctx, project(universal, 2), "level 2")
+    protocol_goals(ctx)
     search_inputs(ctx, universal)

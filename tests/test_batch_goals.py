@@ -124,3 +124,22 @@ def test_search_inputs_batch_every_tree_validates():
         assert len(rows) == 25 and r.exit_code == 1
         assert not [row for row in rows if row["status"] == "invalid"]
         assert sum(row["status"] == "solved" for row in rows) >= 1
+
+
+def test_compile_batch_writes_one_directory_per_goal(tmp_path):
+    r = run("compile", "--goal", "guacamole", "--goal", "unicorn stew", "--format", "jsonl", "-o", str(tmp_path))
+    assert r.exit_code == 1, r.output
+    rows = [json.loads(line) for line in r.stdout.splitlines()]
+    assert [row["status"] for row in rows] == ["compiled", "unmatched"]
+    single = tmp_path / "single"
+    assert run("compile", "--goal", "guacamole", "-o", str(single)).exit_code == 0
+    for name in ("domain.pddl", "problem.pddl"):
+        assert (tmp_path / "guacamole" / name).read_text() == (single / name).read_text()
+
+
+def test_plan_batch_table_and_trees(tmp_path):
+    r = run("plan", "--goal", "guacamole", "--goal", "lemonade", "--format", "jsonl", "-o", str(tmp_path / "t"))
+    assert r.exit_code == 1, r.output
+    rows = [json.loads(line) for line in r.stdout.splitlines()]
+    assert [row["status"] for row in rows] == ["solved", "unsolvable"]
+    assert rows[0]["units"] > 0 and (tmp_path / "t" / "guacamole.txt").read_text().startswith("task tree for")

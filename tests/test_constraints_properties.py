@@ -103,3 +103,4 @@ def test_optimal_under_constraints_is_no_larger_than_complete(problem, cons):
     best = retrieve_constrained(foon, kitchen, goal, cons, "optimal").result
     if best.tree is not None:
         assert len(best.tree) <= len(retrieve_constrained(foon, kitchen, goal, cons, "complete").result.tree)
+        assert best.cost == len(best.tree) and best.bound <= best.cost  # the auxiliary goal unit is not counted

@@ -13,6 +13,7 @@ from foon2pddl.generalize.expand import expand, is_expanded, vocabulary
 from foon2pddl.generalize.similarity import SimilarityMatrix, similarity_matrix
 from foon2pddl.generalize.substitute import (
     product_renames,
+    rename_derived,
     replace_words,
     substitute_node,
     substitute_unit,
@@ -160,3 +161,11 @@ def test_example_exp_has_lime_copies_of_the_lemon_units(example, label_similarit
     for u in lemon_units:  # each has its lime copy (some coincide with the guacamole recipe's own units)
         copy = substitute_unit(u, {"lemon": "lime", **product_renames(u, {"lemon": "lime"})})
         assert copy.key in keys and "lemon" not in unit_labels(copy)
+
+
+def test_rename_derived_follows_what_the_substituted_object_made():
+    lime_squeeze = substitute_unit(SQUEEZE, {"lemon": "lime"})  # as a lifted plan grounds it: juice keeps its name
+    units = (lime_squeeze, POUR, STIR)
+    assert rename_derived(units, {"lemon": "lime"}) == {"lemon juice": "lime juice"}
+    assert rename_derived(units, {"lemon": "lime"}, fixed=frozenset({"lemon juice"})) == {}
+    assert rename_derived((SQUEEZE, POUR, STIR), {"lemon": "lime"}) == {}  # no lime was squeezed

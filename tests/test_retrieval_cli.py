@@ -81,12 +81,29 @@ def test_lemonade_cannot_be_made_and_says_why():
     assert "lemon (whole)" in run("retrieve", "--goal", "lemonade").stderr
 
 
-def test_node_limit_returns_the_best_tree_so_far_marked_unproven():
-    limited = run("retrieve", "--goal", "greek salad", "--method", "optimal", "--node-limit", "1")
-    full = run("retrieve", "--goal", "greek salad", "--method", "optimal")
+#: Set cover: the goal needs a, b and c; `add` makes one of them, `mix` two. Complete takes the three
+#: `add` units (4 with serve), the optimum is two `mix` units (3), and LM-cut proves only 2 at the root.
+SET_COVER = "".join(f"//\nO\tk\t0\nM\tadd\nO\t{x}\t0\n" for x in "abc") + "".join(
+    f"//\nO\tk\t0\nM\tmix\nO\t{x}\t0\nO\t{y}\t0\n" for x, y in ("ab", "bc", "ac")) + \
+    "//\nO\ta\t0\nO\tb\t0\nO\tc\t0\nM\tserve\nO\tgoal\t0\n//\n"
+
+
+def test_node_limit_returns_the_best_tree_so_far_marked_unproven(tmp_path):
+    path = tmp_path / "cover.foon"
+    path.write_text(SET_COVER)
+    limited = run("retrieve", str(path), "--goal", "goal", "--method", "optimal", "--node-limit", "1")
+    full = run("retrieve", str(path), "--goal", "goal", "--method", "optimal", "--node-limit", "none",
+               "--budget", "none")
     assert limited.exit_code == full.exit_code == 0
-    assert "not proven optimal" in limited.stderr and "not proven optimal" not in full.stderr
-    assert len(limited.stdout.splitlines()) >= len(full.stdout.splitlines())
+    assert "not proven optimal (gap 1)" in limited.stderr and "cost 3, lower bound 2" in limited.stderr
+    assert "3 units, proven optimal" in full.stderr and "not proven" not in full.stderr
+    assert limited.stdout == full.stdout  # the local search found the optimum, only the proof is missing
+
+
+@pytest.mark.parametrize("flag,value", [("--budget", "-1"), ("--budget", "soon"), ("--node-limit", "1.5")])
+def test_bad_search_limits_are_usage_errors(flag, value):
+    result = run("retrieve", "--goal", "greek salad", "--method", "optimal", flag, value)
+    assert result.exit_code == 2 and flag in result.output
 
 
 def test_formats_are_deterministic_and_written_atomically(tmp_path):

@@ -11,6 +11,7 @@ import itertools
 import math
 import random
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -18,8 +19,8 @@ import foon2pddl.retrieval.greedy as greedy_module
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, dedupe_units, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import validate
-from foon2pddl.retrieval import Rates, reachable, retrieve
-from foon2pddl.retrieval.result import BUDGET_EXHAUSTED, UNREACHABLE
+from foon2pddl.retrieval import Rates, blockers, reachable, retrieve
+from foon2pddl.retrieval.result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
 
 POOL = [make_node("a"), make_node("b"), make_node("b", [make_state("cut")]), make_node("c", [make_state("in", "b")]),
         make_node("d"), make_node("e", [make_state("mixed", "", ["a", "d"])]), make_node("f"), make_node("g")]
@@ -93,6 +94,38 @@ def test_fixpoint_matches_naive_closure(problem):
         u = reach.achiever_of(n)
         if u is not None:
             assert reach.round_of(n) == 1 + max((reach.round_of(i) for i in foon.units[u].inputs), default=0)
+
+
+def naive_blockers(foon, kitchen, nodes):
+    """Unmakeable nodes without a maker that the unmakeable `nodes` depend on (plain search on the units)."""
+    made = naive_closure(foon.units, kitchen)
+    makers = {}
+    for u in foon.units:
+        for o in u.outputs:
+            if o not in u.inputs:
+                makers.setdefault(o, []).append(u)
+    seen, found, stack = set(), set(), [n for n in nodes if n not in made]
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        if n not in makers:
+            found.add(n)
+        for u in makers.get(n, ()):
+            stack.extend(i for i in u.inputs if i not in made)
+    return sorted(found)
+
+
+@settings(max_examples=300, deadline=None)
+@given(problems(), st.lists(st.sampled_from(POOL), min_size=1, max_size=8), st.integers(1, 12))
+def test_blockers_remembered_per_fixpoint_match_a_plain_search(problem, queries, limit):
+    """Repeated queries on one fixpoint (answers remembered per component) give the plain search's answer."""
+    foon, kitchen, goal = problem
+    reach = reachable(foon, kitchen)
+    for nodes in [goal.candidates, *([q] for q in queries), queries]:
+        nodes = [n for n in nodes if n in foon.nodes]
+        assert list(blockers(reach, nodes, limit)) == naive_blockers(foon, kitchen, nodes)[:limit]
 
 
 @settings(max_examples=300, deadline=None)
@@ -176,6 +209,61 @@ def test_optimal_at_its_node_limit_returns_the_best_tree_so_far(problem):
             assert len(cut.tree) == len(full.tree)
         else:
             assert "not proven optimal" in cut.detail
+
+
+@settings(max_examples=300, deadline=None)
+@given(problems(), st.sampled_from([1, 2, 5, None]), st.sampled_from([None, 1e-9]), st.booleans())
+def test_anytime_bound_is_a_true_lower_bound_and_exact_search_is_optimal(problem, node_limit, time_limit, weighted):
+    """Within any budget: a valid tree, its cost, and a bound <= the brute-force optimum <= cost;
+    proven exactly when bound == cost; without a budget the brute-force optimum, proven."""
+    foon, kitchen, goal = problem
+    method, cost = ("weighted", neg_log) if weighted else ("optimal", unit_count)
+    result = retrieve(foon, kitchen, goal, method, rates=RATES, node_limit=node_limit, time_limit=time_limit)
+    best = best_subset(foon, kitchen, goal, cost)
+    if best == math.inf:
+        assert result.tree is None and result.bound is None
+        return
+    assert validate(result.tree, kitchen).ok
+    assert math.isclose(result.cost, cost(result.tree.units), abs_tol=1e-9)
+    assert result.bound <= best + 1e-9 and best <= result.cost + 1e-9
+    assert result.proven_optimal == (result.bound == result.cost) == (result.gap == 0)
+    if result.proven_optimal:
+        assert math.isclose(result.cost, best, abs_tol=1e-9)
+    if node_limit is None and time_limit is None:
+        assert result.proven_optimal
+    assert result.expansions <= (node_limit or math.inf)
+
+
+def test_retrieval_bound_invariants_are_checked_on_construction():
+    tree = retrieve(*_cover(), "complete").tree
+    Retrieval(tree, None, "optimal", proven_optimal=False, cost=4.0, bound=2.0)
+    Retrieval(tree, None, "optimal", proven_optimal=True, cost=4.0, bound=4.0)
+    for bad in (dict(proven_optimal=True, cost=4.0, bound=2.0), dict(proven_optimal=False, cost=4.0, bound=4.0),
+                dict(proven_optimal=False, cost=4.0, bound=5.0), dict(proven_optimal=False, cost=4.0)):
+        with pytest.raises(ValueError):
+            Retrieval(tree, None, "optimal", **bad)
+    with pytest.raises(ValueError):
+        Retrieval(None, UNREACHABLE, "optimal", proven_optimal=True, cost=1.0, bound=1.0)
+
+
+def _cover():
+    """Set cover: the goal needs a, b, c; `add` makes one, `mix` two; LM-cut proves 2, the optimum is 3."""
+    k, a, b, c, g = (make_node(s) for s in ("k", "a", "b", "c", "goal"))
+    units = [FunctionalUnit((k,), Motion("add"), (x,)) for x in (a, b, c)]
+    units += [FunctionalUnit((k,), Motion("mix"), pair) for pair in ((a, b), (b, c), (a, c))]
+    units.append(FunctionalUnit((a, b, c), Motion("serve"), (g,)))
+    return Foon(tuple(units)), {k}, Goal(GoalSpec("goal"), (g,), 3)
+
+
+def test_anytime_search_raises_its_bound_until_it_proves_the_optimum():
+    bounds = []
+    for limit in (1, 3, 6, 12, None):
+        result = retrieve(*_cover(), "optimal", node_limit=limit, time_limit=None)
+        bounds.append((result.bound, result.cost, result.proven_optimal))
+    assert len(retrieve(*_cover(), "complete").tree) == 4
+    assert bounds[0] == (2.0, 3.0, False)  # the local search found the optimum; LM-cut proves only 2
+    assert all(a[0] <= b[0] and a[1] >= b[1] for a, b in itertools.pairwise(bounds))
+    assert bounds[-1] == (3.0, 3.0, True)
 
 
 @settings(max_examples=200, deadline=None)

@@ -45,6 +45,13 @@ class FoonIndex:
         self._memo["kitchen"] = (kitchen, ids)
         return ids
 
+    def positions(self, foon: Foon) -> dict[int, int]:
+        """id(unit) -> unit index, for the units of `foon` (the network of this index), remembered."""
+        hit = self._memo.get("positions")  # keyed by id: holding `foon` here would keep it alive
+        if hit is None or hit[0] != id(foon):
+            hit = self._memo["positions"] = (id(foon), {id(x): i for i, x in enumerate(foon.units)})
+        return hit[1]
+
     def unit_key(self, u: int) -> tuple:
         """Content key of unit `u` (the tie-break order)."""
         return (self.motions[u], self.inputs[u], self.outputs[u])

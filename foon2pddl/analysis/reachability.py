@@ -15,6 +15,7 @@ fewest sequential rounds that can make it.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Container, Iterable
 from dataclasses import dataclass
 
@@ -149,25 +150,112 @@ def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
                         scope)
 
 
-def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = 10) -> tuple[ObjectNode, ...]:
+#: Blockers remembered per node (the smallest ids), enough for `blockers(..., limit <= SUMMARY)`.
+SUMMARY = 10
+_SUMMARIES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = SUMMARY) -> tuple[ObjectNode, ...]:
     """Why `nodes` cannot be made: the unmakeable nodes they depend on that no unit makes.
 
     Walks back from each unreachable node through every maker's unreachable
     inputs; the nodes met that have no maker at all are what the kitchen lacks.
     Returns up to `limit` of them in sorted order.
+
+    The goals of a batch share one fixpoint and mostly the same unreachable region,
+    so each node's answer (its `SUMMARY` smallest blockers) is remembered per fixpoint:
+    the region is condensed into strongly connected components (Tarjan, iterative) and
+    a component's answer is the smallest of its own unmakeable nodes and its successors'
+    answers (the smallest k of a union are among the smallest k of its parts). Each node
+    and edge of the region is walked once per fixpoint instead of once per goal.
     """
     ix = reach.index
-    seen: set[int] = set()
-    stack = [i for i in ix.ids(nodes) if reach.node_round[i] == UNREACHED]
+    rounds = reach.node_round
+    starts = [i for i in ix.ids(nodes) if rounds[i] == UNREACHED]
+    if limit > SUMMARY:
+        found = _walk(reach, starts)
+    else:
+        memo = _summaries(reach, starts)
+        found = set().union(*(memo[s] for s in starts))
+    return tuple(ix.nodes[i] for i in sorted(found)[:limit])
+
+
+def _walk(reach: Reachability, starts: list[int]) -> set[int]:
+    """Every unmakeable node met walking back from `starts` (the plain search)."""
+    ix = reach.index
+    rounds, makers, inputs = reach.node_round, ix.makers, ix.inputs
+    seen = bytearray(len(ix.nodes))
+    stack = list(starts)
     found: set[int] = set()
     while stack:
         n = stack.pop()
-        if n in seen:
+        if seen[n]:
             continue
-        seen.add(n)
-        if not ix.makers[n]:
+        seen[n] = 1
+        if not makers[n]:
             found.add(n)
             continue
-        for u in ix.makers[n]:
-            stack.extend(i for i in ix.inputs[u] if reach.node_round[i] == UNREACHED and i not in seen)
-    return tuple(ix.nodes[i] for i in sorted(found)[:limit])
+        for u in makers[n]:
+            for i in inputs[u]:
+                if not seen[i] and rounds[i] == UNREACHED:
+                    stack.append(i)
+    return found
+
+
+def _summaries(reach: Reachability, starts: list[int]) -> dict[int, tuple[int, ...]]:
+    """The remembered answers of this fixpoint, extended to cover `starts` (module doc of `blockers`)."""
+    memo = _SUMMARIES.get(reach)
+    if memo is None:
+        memo = _SUMMARIES[reach] = {}
+    rounds, makers, inputs = reach.node_round, reach.index.makers, reach.index.inputs
+
+    def succ(n: int) -> list[int]:
+        return [i for u in makers[n] for i in inputs[u] if rounds[i] == UNREACHED]
+
+    index: dict[int, int] = {}
+    low: dict[int, int] = {}
+    stack: list[int] = []
+    on_stack: set[int] = set()
+    for s in starts:
+        if s in memo or s in index:
+            continue
+        index[s] = low[s] = len(index)
+        stack.append(s)
+        on_stack.add(s)
+        work = [(s, iter(succ(s)))]
+        while work:
+            v, it = work[-1]
+            for w in it:
+                if w in memo:
+                    continue
+                if w not in index:
+                    index[w] = low[w] = len(index)
+                    stack.append(w)
+                    on_stack.add(w)
+                    work.append((w, iter(succ(w))))
+                    break
+                if w in on_stack:
+                    low[v] = min(low[v], index[w])
+            else:
+                work.pop()
+                if work:
+                    parent = work[-1][0]
+                    low[parent] = min(low[parent], low[v])
+                if low[v] == index[v]:
+                    comp: list[int] = []
+                    while True:
+                        w = stack.pop()
+                        on_stack.discard(w)
+                        comp.append(w)
+                        if w == v:
+                            break
+                    members = set(comp)
+                    found = {w for w in comp if not makers[w]}
+                    for w in comp:
+                        for x in succ(w):
+                            if x not in members:
+                                found.update(memo[x])
+                    answer = tuple(sorted(found)[:SUMMARY])
+                    for w in comp:
+                        memo[w] = answer
+    return memo

@@ -86,6 +86,7 @@ def main() -> None:
 
 # Each command module registers its commands on `main` when imported.
 from . import (  # noqa: E402, F401
+    analyze_cmd,
     check_cmd,
     compile_cmd,
     expand_cmd,

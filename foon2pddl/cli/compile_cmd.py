@@ -8,26 +8,40 @@ import click
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write_many
+from ..io.batch_report import TABLE_FORMATS
+from ..io.rates import read_rates
 from ..pddl.compile import compile_task
 from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
 from . import main
+from .batch import batch_entries
+from .batch_pddl import compile_batch
 from .options import (
     category_chains,
     category_types_option,
     check_output,
     constraint_inputs,
     constraints_options,
+    containment_option,
     costs_option,
+    encoding_option,
+    goal_file_option,
+    goal_option,
+    goals_option,
     instances_option,
+    kitchen_option,
+    level_option,
     load_pddl_view,
+    load_view,
+    network_option,
     parse_instances,
+    paths_argument,
     prune_option,
     rates_option,
     reject_lifted_constraints,
     single_goal,
-    task_options,
+    utensils_option,
     view_goal,
 )
 
@@ -44,30 +58,59 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
-    extra = {}
-    if encoding == "instances":
-        extra = {"instances": parse_instances(instances),
-                 "categories": category_chains(view.foon) if category_types else ()}
-    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons, **extra)
+    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
+                        **encoder_options(encoding, instances, category_types, view.foon))
+
+
+def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:
+    """Keyword options of the `instances` encoding (none for the others)."""
+    if encoding != "instances":
+        return {}
+    return {"instances": parse_instances(instances), "categories": category_chains(foon) if category_types else ()}
 
 
 @main.command("compile")
-@task_options
+@paths_argument
+@goal_option
+@goals_option
+@goal_file_option
+@kitchen_option
+@utensils_option
+@containment_option
+@encoding_option
 @instances_option
 @category_types_option
+@level_option
+@network_option
 @prune_option
 @costs_option
 @rates_option
 @constraints_options
 @click.option("-o", "--output-dir", "output_dir", type=click.Path(path_type=Path, file_okay=False),
-              default=Path("."), show_default=True, help="Directory for domain.pddl and problem.pddl.")
-def compile_(paths, goal, goal_file, kitchen, utensils, containment, encoding, instances, category_types, level,
-             network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir) -> None:
+              default=Path("."), show_default=True,
+              help="Directory for domain.pddl and problem.pddl (a batch: one subdirectory per goal).")
+@click.option("--format", "fmt", type=click.Choice(TABLE_FORMATS), default="text", show_default=True,
+              help="Batch result table: text, csv or jsonl (one JSON object per goal).")
+def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
+             level, network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir,
+             fmt) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically).
 
-    Exit status: 0 written, 1 the constraints leave no way to make the goal (nothing written), 2 bad input.
+    Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table.
+
+    Exit status: 0 written, 1 the constraints leave no way to make the goal (nothing written), or some goal
+    of a batch names no produced node, 2 bad input.
     """
     check_output(output_dir, directory=True)
+    entries = batch_entries(goal, goals_file, goal_file)
+    if entries is not None:
+        if network == "gen" or constraints_files or without_motions or without or must_use:
+            raise UsageError("--network gen and constraints compile one goal at a time (not a batch)")
+        if costs == "success-rate" and rates is None:
+            raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
+        _, view = load_view(paths, kitchen, level, network, containment, utensils)
+        return compile_batch(view, entries, encoding, level, prune, costs, read_rates(rates) if rates else None,
+                             output_dir, fmt, **encoder_options(encoding, instances, category_types, view.foon))
     try:
         task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
                           utensils, instances, category_types, (constraints_files, without_motions, without, must_use))

@@ -9,27 +9,42 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
+from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
 from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
+from ..planners.commands import PRESETS, check_planner, resolve_command
+from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan
 from ..status import PlanStatus
 from . import main
+from .batch import TREE_EXTENSIONS, batch_entries
+from .batch_pddl import plan_batch
 from .options import (
     check_output,
     check_time_limit,
     constraint_inputs,
     constraints_options,
+    containment_option,
     costs_option,
     emit,
+    encoding_option,
+    goal_file_option,
+    goal_option,
+    goals_option,
+    kitchen_option,
+    level_option,
     load_pddl_view,
+    load_view,
+    network_option,
     other_networks_hint,
+    paths_argument,
     prune_option,
     rates_option,
     reject_lifted_constraints,
     single_goal,
-    task_options,
+    utensils_option,
     view_goal,
 )
 
@@ -68,13 +83,31 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 
 
 @main.command("plan")
-@task_options
+@paths_argument
+@goal_option
+@goals_option
+@goal_file_option
+@kitchen_option
+@utensils_option
+@containment_option
+@encoding_option
+@level_option
+@network_option
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,
               help="External planner command, run without a shell: 'cmd {domain} {problem} {plan}' "
-                   "(also {time}); its IPC plan file is read back.")
+                   "(also {time}); its IPC plan file is read back. Or a preset: "
+                   + ", ".join(PRESETS) + " (docs/planning.md).")
 @click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
+@click.option("--alias", default=None, metavar="NAME",
+              help="Fast Downward: a search alias of its driver (lama-first, seq-opt-lmcut, seq-sat-lama-2011, ...).")
+@click.option("--search", "search", default=None, metavar="CONFIG",
+              help="Fast Downward: a search configuration, as its driver's --search (e.g. 'astar(lmcut())').")
+@click.option("--evaluator", "evaluators", multiple=True, metavar="DEF",
+              help="Fast Downward: an evaluator for --search (e.g. 'h=ff()'), as its driver's; repeatable.")
+@click.option("--plan-file", "plan_file", type=click.Path(path_type=Path), default=None,
+              help="Also write the raw plan in Fast Downward's sas_plan format (for VAL and other tools).")
 @click.option("--time-limit", "time_limit", type=click.FloatRange(min=0, min_open=True), default=300.0,
               show_default=True, callback=lambda ctx, param, value: check_time_limit(value),
               help="Seconds for the planner (translation and search); 'inf' (or over 1e6) for no limit.")
@@ -84,31 +117,50 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @constraints_options
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
-@click.option("--format", "fmt", type=click.Choice(FORMATS), default="steps", show_default=True,
-              help="How to print the task tree.")
+@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
+              help="How to print the task tree; for a batch, the table (text, csv, jsonl) or the tree files' format.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
-              help="Write the task tree to this file (atomically) instead of standard output.")
-def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, level, network, planner, planner_cmd,
-          optimal, time_limit, prune, costs, rates, constraints_files, without_motions, without, must_use, up_validate,
-          fmt, output) -> None:
+              help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
+                   "a directory receiving one tree file per solved goal.")
+def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, level, network, planner,
+          planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
+          constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
     """
-    check_output(output)
+    entries = batch_entries(goal, goals_file, goal_file, fmt)
+    check_output(output, directory=entries is not None)
+    check_output(plan_file)
+    config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
+    try:  # before anything is loaded or timed: a typo fails in milliseconds
+        if planner_cmd is not None:
+            resolve_command(planner_cmd)
+        else:
+            check_planner(planner)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="--planner-cmd" if planner_cmd else "--planner") from None
     t0 = time.perf_counter()
     cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
                                                   costs)
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
+    if entries is not None:
+        if network == "gen" or cons.items:
+            raise UsageError("--network gen and constraints plan one goal at a time (not a batch)")
+        _, view = load_view(paths, kitchen, level, network, containment, utensils)
+        return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
+                          fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
+                          planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
+                          rates=motion_rates, up_validate=up_validate, search=config)
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     load_s = time.perf_counter() - t0
     try:
         outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                       up_validate=up_validate, constraints=cons)
+                       up_validate=up_validate, constraints=cons, search=config)
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
         click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
@@ -139,8 +191,25 @@ def plan_(paths, goal, goal_file, kitchen, utensils, containment, encoding, leve
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         emit(data, output)
+    if plan_file is not None and outcome.result.solved:
+        emit(sas_plan_text(outcome.result.plan, plan_cost(outcome.task, outcome.result.plan)), plan_file)
     if EXIT[status]:
         click.get_current_context().exit(EXIT[status])
+
+
+def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
+    """Fast Downward's configuration from the driver-style options (None: the default); usage errors first."""
+    if alias is None and search is None and not evaluators:
+        return None
+    if planner_cmd is not None or planner != DEFAULT_PLANNER:
+        raise click.BadParameter("--alias, --search and --evaluator are Fast Downward options (--planner fd)",
+                                 param_hint="--planner")
+    from ..planners.fd import search_config
+
+    try:
+        return search_config(alias, search, evaluators, optimal)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="--alias" if alias else "--search") from None
 
 
 def _why_unreachable(foon, kitchen, goal, cons) -> str:

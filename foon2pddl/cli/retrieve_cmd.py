@@ -13,7 +13,7 @@ from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.explain import explain_unreachable
 from ..retrieval.greedy import DEFAULT_BUDGET
-from ..retrieval.optimal import DEFAULT_NODE_LIMIT
+from ..retrieval.optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
 from ..retrieval.result import UNREACHABLE
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
@@ -39,6 +39,28 @@ from .options import (
 )
 
 
+class Limit(click.ParamType):
+    """A positive cap, or `none` / 0 for no cap (None)."""
+
+    def __init__(self, kind: type, name: str = "N|none") -> None:
+        self.kind = kind
+        self.name = name
+
+    def convert(self, value, param, ctx):
+        if value is None or isinstance(value, self.kind):
+            return value or None
+        text = str(value).strip().lower()
+        if text in ("none", "0", "inf", "unlimited"):
+            return None
+        try:
+            number = self.kind(text)
+        except ValueError:
+            self.fail(f"{value!r} is not a number or `none`", param, ctx)
+        if number < 0:
+            self.fail(f"{value!r} is negative", param, ctx)
+        return number or None
+
+
 @main.command("retrieve")
 @paths_argument
 @goal_option
@@ -56,10 +78,15 @@ from .options import (
 @click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
               help="How to print the task tree (svg needs Graphviz); for a batch, the table (text, csv, jsonl) "
                    "or the format of the tree files in -o DIR.")
-@click.option("--budget", type=click.IntRange(min=1), default=DEFAULT_BUDGET, show_default=True,
+@click.option("--budget", type=Limit(float, "SECONDS|none"), default=str(DEFAULT_TIME_LIMIT), show_default=True,
+              help="optimal/weighted: seconds per goal before returning the best tree found and its proven "
+                   "lower bound (a wall-clock safety cap; `none` or 0: no cap).")
+@click.option("--node-limit", "node_limit", type=Limit(int), default=str(DEFAULT_NODE_LIMIT), show_default=True,
+              help="optimal/weighted: search nodes expanded per goal before returning the best tree found "
+                   "(deterministic: same result on any machine; `none` or 0: no cap). "
+                   "Exact search: --node-limit none --budget none.")
+@click.option("--iterations", type=click.IntRange(min=1), default=DEFAULT_BUDGET, show_default=True,
               help="greedy: iterations (objects taken from its queue) before giving up.")
-@click.option("--node-limit", "node_limit", type=click.IntRange(min=1), default=DEFAULT_NODE_LIMIT,
-              show_default=True, help="optimal/weighted: search nodes expanded before returning the best tree so far.")
 @constraints_options
 @click.option("--explain", is_flag=True,
               help="With constraints: for an unreachable goal the smallest set of constraints to relax, "
@@ -68,7 +95,7 @@ from .options import (
               help="Write the tree to this file (atomically) instead of standard output; for a batch, "
                    "a directory receiving one tree file per solved goal.")
 def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, level, network, method, rates,
-              fmt, budget, node_limit, constraints_files, without_motions, without, must_use, explain,
+              fmt, budget, node_limit, iterations, constraints_files, without_motions, without, must_use, explain,
               output) -> None:
     """Find the functional units that make the goal from the kitchen, in executable order.
 
@@ -87,12 +114,12 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         raise UsageError("constraints apply to one goal at a time (not with a batch of goals)")
     net, view = load_view(paths, kitchen, level, network, containment, utensils,
                           cons if cons.items else None)
+    limits = {"budget": iterations, "node_limit": node_limit, "time_limit": budget}
     if entries is not None:
-        return _batch(view, entries, method, motion_rates, fmt, budget, node_limit, output, containment)
+        return _batch(view, entries, method, motion_rates, fmt, limits, output, containment)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     if view.note:
         click.echo(view.note, err=True)
-    limits = {"budget": budget, "node_limit": node_limit}
     done = None
     if cons.items:
         if network == "reg":
@@ -124,12 +151,14 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     note = f"{method}: {len(result.tree) - count_inference(result.tree.units)} units"
     if inferred:
         note += f", {len(inferred)} inferred by containment: " + "; ".join(n.describe() for n in inferred)
+    if result.bound is not None:
+        note += ", proven optimal" if result.proven_optimal else f", not proven optimal (gap {result.gap:.4g})"
     if result.probability is not None:
         note += f", success probability {result.probability:.4g}"
     click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)
 
 
-def _batch(view, entries, method, rates, fmt, budget, node_limit, output, containment) -> None:
+def _batch(view, entries, method, rates, fmt, limits: dict, output, containment) -> None:
     """Every goal of `entries` on the loaded view: one table; trees into the -o directory."""
     from ..model.goal import resolve_goal
     from ..retrieval.batch import solve_goals
@@ -137,7 +166,7 @@ def _batch(view, entries, method, rates, fmt, budget, node_limit, output, contai
     if view.note:
         click.echo(view.note, err=True)
     found = solve_goals(view.foon, view.kitchen.nodes, entries, lambda spec: resolve_goal(view.map_goal(spec), view.foon),
-                        method=method, rates=rates, budget=budget, node_limit=node_limit)
+                        method=method, rates=rates, **limits)
     rows = [r.as_dict() for r in found]
     table_fmt = fmt if fmt in TABLE_FORMATS else "text"
     if output is not None:

@@ -88,3 +88,25 @@ def renames_product_away(unit: FunctionalUnit, old: str, new: str) -> bool:
         return False
     sources = [x for x in inputs if replace_words(old, x, x) is not None]
     return any(replace_words(new, x, x) is None for x in sources)
+
+
+def rename_derived(units: tuple[FunctionalUnit, ...], pairs: Mapping[str, str],
+                   fixed: frozenset[str] = frozenset()) -> dict[str, str]:
+    """Derived products to rename in a tree whose units had objects substituted (`pairs`: old -> new):
+    a label a unit makes (no input's label) from a substituted object (`new` among its input labels),
+    containing `old` as whole words, is renamed with it (`lemon juice` -> `lime juice` where a lime
+    was squeezed); labels in `fixed` (the kitchen's) never. Apply the result to every unit of the
+    tree and to its goal, so the product keeps one name throughout."""
+    out: dict[str, str] = {}
+    for unit in units:
+        inputs = {n.label for n in unit.inputs}
+        for old, new in sorted(pairs.items()):
+            if new not in inputs:
+                continue
+            for n in unit.outputs:
+                if n.label in inputs or n.label in fixed or n.label in out:
+                    continue
+                renamed = replace_words(n.label, old, new)
+                if renamed is not None:
+                    out[n.label] = renamed
+    return out

@@ -42,18 +42,19 @@ differently from the action that needs the node.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from ..analysis.reachability import reachable
 from ..errors import UsageError
 from ..generalize.categories import CategoryIndex, load_index
 from ..generalize.relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
-from ..generalize.substitute import substitute_unit, unit_labels
+from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
+from ..model.tasktree import TaskTree, validate
 from .encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
 from .lifted_atoms import Shape, node_atom_labels, representations, shape_label
 from .names import NameTable
@@ -299,8 +300,40 @@ def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> Fun
     return substitute_unit(lu.unit, binding, note=note)
 
 
+def plan_bindings(lt: LiftedTask, steps: Sequence[str]) -> dict[str, str]:
+    """Recipe object -> kitchen object, for every parameter a plan bound to another object."""
+    out: dict[str, str] = {}
+    for step in steps:
+        name, *args = step.split()
+        action = lt.task.action_for(name)
+        if action is None or action.unit is None or len(args) != len(lt.lifted[action.unit].params):
+            continue
+        for (label, _), a in zip(lt.lifted[action.unit].params, args, strict=True):
+            if lt.objects.get(a, label) != label:
+                out.setdefault(label, lt.objects[a])
+    return out
+
+
+def rename_made(lt: LiftedTask, tree: TaskTree, steps: Sequence[str], kitchen_nodes: frozenset[ObjectNode]) -> TaskTree:
+    """The tree with what the plan made from a substituted object renamed with it, as FOON-EXP names it.
+
+    `substitute.rename_derived`: a lime squeezed where the recipe squeezed a lemon gives `lime juice`,
+    in every unit and in the goal node; when the renamed tree would not validate (a new name colliding
+    with another object), the recipe's names are kept.
+    """
+    fixed = frozenset(x for n in kitchen_nodes for x in (n.label, *(y for s in n.states
+                                                                    for y in (s.related, *s.ingredients))) if x)
+    renames = rename_derived(tree.units, plan_bindings(lt, steps), fixed)
+    if not renames:
+        return tree
+    renamed = TaskTree(tuple(substitute_unit(u, renames) for u in tree.units), substitute_node(tree.goal, renames),
+                       tree.level)
+    return renamed if validate(renamed, kitchen_nodes).ok else tree
+
+
 def compile_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
     """The registered `gen-lifted` encoder: `encode_lifted` with the options' category index (default: shipped)."""
     index = options.category_index if options.category_index is not None else load_index()
     lt = encode_lifted(foon, kitchen, goal, index, level, prune=options.prune, policy=options.policy)
-    return Compiled(lt.task, True, lambda unit, args: ground_unit(lt, unit, args))
+    return Compiled(lt.task, True, lambda unit, args: ground_unit(lt, unit, args),
+                    lambda tree, steps, kitchen_nodes: rename_made(lt, tree, steps, kitchen_nodes))

@@ -10,12 +10,13 @@ semantics (then a valid plan is also a task tree that FOON simulation accepts).
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from ..model.foon import Foon, FunctionalUnit
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.tasktree import TaskTree
 from .encoding import EncodeOptions
 from .task import Action, PlanningTask
 
@@ -42,6 +43,9 @@ class Compiled:
     task: PlanningTask
     foon_semantics: bool = True
     ground: Ground | None = None
+    #: (tree, plan steps, kitchen nodes) -> the tree to report (the lifted encoding renames what a
+    #: substituted object made after it); None: the tree as decoded.
+    finish: Callable[[TaskTree, Sequence[str], frozenset[ObjectNode]], TaskTree] | None = None
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
         """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""

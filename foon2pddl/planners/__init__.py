@@ -18,8 +18,11 @@ DEFAULT_PLANNER = "fd"
 
 def run_planner(task: PlanningTask, domain_text: str, problem_text: str, *, planner: str = DEFAULT_PLANNER,
                 planner_cmd: str | None = None, optimal: bool = False,
-                time_limit: float | None = None) -> PlanResult:
-    """Solve a rendered task with Fast Downward (`fd`), a UP engine by name, or an external command."""
+                time_limit: float | None = None, search=None) -> PlanResult:
+    """Solve a rendered task with Fast Downward (`fd`), a UP engine by name, or an external command.
+
+    `search` (an `fd.SearchConfig`: a driver alias or --search/--evaluator) configures Fast Downward.
+    """
     if planner_cmd is not None:
         from . import external
 
@@ -28,7 +31,7 @@ def run_planner(task: PlanningTask, domain_text: str, problem_text: str, *, plan
         from . import fd
 
         return fd.solve(domain_text, problem_text, optimal=optimal, time_limit=time_limit,
-                        translate_options=fd.translate_options_for(task))
+                        translate_options=fd.translate_options_for(task), config=search)
     from . import up_engine
 
     return up_engine.solve(task, planner, optimal=optimal, time_limit=time_limit)

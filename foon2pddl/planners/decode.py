@@ -141,7 +141,8 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
     target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
     if compiled.foon_semantics:
         units = justify(units, kitchen_nodes, target, goal_adders(compiled.task, steps))
-    return TaskTree(units, target, compiled.task.level)
+    tree = TaskTree(units, target, compiled.task.level)
+    return tree if compiled.finish is None else compiled.finish(tree, steps, kitchen_nodes)
 
 
 def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask | Compiled,

@@ -1,6 +1,8 @@
 """Any planner as a command: `--planner-cmd 'cmd {domain} {problem} {plan}'`.
 
-The command is split like a shell would (shlex) but run without a shell, in its
+The command (or a preset name, `commands.PRESETS`) is split like a shell would
+(shlex), its executable and relative paths resolved against the caller's working
+directory and PATH (`commands.resolve_command`), and run without a shell, in its
 own temporary directory, with `{domain}`, `{problem}`, `{plan}` (and `{time}`,
 the time limit in whole seconds) replaced by paths in that directory. The plan
 is read back as an IPC plan file (`(action arg ...)` lines, `;` comments) from
@@ -22,6 +24,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from .commands import PRESETS, resolve_command
 from .process import bounded_timeout, run_process
 from .result import PlanResult, parse_plan_text, tail
 
@@ -42,10 +45,10 @@ def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | 
     """Run a planner command on PDDL text and read its plan."""
     name = "external"
     try:
-        words = split_command(cmd)
+        words = resolve_command(cmd)  # here, before the run moves to its temporary directory
     except ValueError as exc:
         return PlanResult("error", (), name, f"bad planner command {cmd!r}: {exc}")
-    name = f"external ({Path(words[0]).name})"
+    name = f"external ({cmd.strip() if cmd.strip() in PRESETS else Path(words[0]).name})"
     with tempfile.TemporaryDirectory(prefix="foon2pddl-ext-") as tmp:
         work = Path(tmp)
         t0 = time.perf_counter()

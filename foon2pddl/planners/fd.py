@@ -17,12 +17,13 @@ imports unified-planning, ~1.5 s).
 
 from __future__ import annotations
 
-import ast
 import importlib.util
 import os
 import sys
 import tempfile
 import time
+from collections.abc import Sequence
+from dataclasses import dataclass
 from functools import cache, lru_cache
 from pathlib import Path
 
@@ -104,17 +105,34 @@ def search_binary() -> Path:
 
 
 @cache
+def driver_aliases() -> dict[str, tuple[str, ...]]:
+    """The driver's alias table (`driver/aliases.py`: `ALIASES`), as the driver builds it.
+
+    Some aliases are computed (`seq-sat-lama-2011` and `lama` call a helper), so the file
+    is run on its own, with its one import (`DRIVER_DIR`) supplied, not imported as part
+    of the driver package. Portfolios (run by the driver's portfolio runner) are not
+    aliases of the search binary and are left out.
+    """
+    path = downward_dir() / "driver" / "aliases.py"
+    source = path.read_text().replace("from .util import DRIVER_DIR", "")
+    namespace: dict = {"DRIVER_DIR": path.parent, "__name__": "fd_driver_aliases"}
+    exec(compile(source, str(path), "exec"), namespace)  # noqa: S102 - the installed FD's own table
+    # The driver strips blanks the same way (aliases.set_options_for_alias).
+    return {name: tuple(x.replace(" ", "").replace("\n", "") for x in options)
+            for name, options in namespace["ALIASES"].items()}
+
+
 def alias_options(alias: str) -> tuple[str, ...]:
-    """Search options of a driver alias, read (not executed) from the driver's `aliases.py` (UsageError if none)."""
-    tree = ast.parse((downward_dir() / "driver" / "aliases.py").read_text())
-    for node in tree.body:
-        if (isinstance(node, ast.Assign) and len(node.targets) == 1
-                and isinstance(node.targets[0], ast.Subscript)
-                and isinstance(node.targets[0].slice, ast.Constant) and node.targets[0].slice.value == alias):
-            options = ast.literal_eval(node.value)
-            # The driver strips blanks the same way (aliases.set_options_for_alias).
-            return tuple(x.replace(" ", "").replace("\n", "") for x in options)
-    raise UsageError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
+    """Search options of a driver alias."""
+    table = driver_aliases()
+    if alias not in table:
+        raise UsageError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
+    return table[alias]
+
+
+def alias_names() -> tuple[str, ...]:
+    """Every alias of the driver's table, sorted."""
+    return tuple(sorted(driver_aliases()))
 
 
 #: Translator options for tasks without delete effects: with nothing deleted there are no
@@ -129,6 +147,45 @@ def translate_options_for(task) -> tuple[str, ...]:
 
 def search_options(optimal: bool = False) -> tuple[str, ...]:
     return alias_options(OPTIMAL_ALIAS if optimal else SATISFICING_ALIAS)
+
+
+@dataclass(frozen=True)
+class SearchConfig:
+    """A search configuration as Fast Downward's driver takes it: `--alias NAME`, or `--search S` with
+    `--evaluator E` definitions (passed to the search binary verbatim, in the driver's order)."""
+
+    label: str
+    options: tuple[str, ...]
+
+    @property
+    def name(self) -> str:
+        return f"fd ({self.label})"
+
+
+def search_config(alias: str | None = None, search: str | None = None, evaluators: Sequence[str] = (),
+                  optimal: bool = False) -> SearchConfig:
+    """The configuration for the driver-style options; neither given: lama-first (seq-opt-lmcut when
+    `optimal`). Raises ValueError for an unknown alias or options that do not go together."""
+    if alias is not None and search is not None:
+        raise ValueError("give --alias or --search, not both (as Fast Downward's driver)")
+    if evaluators and search is None:
+        raise ValueError("--evaluator defines an evaluator for --search; give --search too")
+    if optimal and (alias is not None or search is not None):
+        raise ValueError("--optimal is the alias seq-opt-lmcut; drop it or --alias/--search")
+    if search is not None:
+        if not search.strip():
+            raise ValueError("empty --search")
+        return SearchConfig("custom", (*(x for e in evaluators for x in ("--evaluator", e)), "--search", search))
+    name = alias if alias is not None else (OPTIMAL_ALIAS if optimal else SATISFICING_ALIAS)
+    try:
+        return SearchConfig(name, alias_options(name))
+    except KeyError:
+        import difflib
+
+        known = alias_names()
+        close = difflib.get_close_matches(name, known, n=1)
+        hint = f"did you mean {close[0]!r}? " if close else ""
+        raise ValueError(f"unknown Fast Downward alias {name!r}; {hint}aliases: {', '.join(known)}") from None
 
 
 def planner_name(optimal: bool) -> str:
@@ -159,34 +216,48 @@ def translation_failure(run: ProcessRun, name: str) -> PlanResult | None:
     return None
 
 
+def _best_plan_file(cwd: Path) -> Path | None:
+    """`sas_plan`, or for anytime searches the last (best) of `sas_plan.1`, `sas_plan.2`, ..."""
+    if (cwd / "sas_plan").is_file():
+        return cwd / "sas_plan"
+    numbered = [(int(p.suffix[1:]), p) for p in cwd.glob("sas_plan.*") if p.suffix[1:].isdigit()]
+    return max(numbered)[1] if numbered else None
+
+
 def search(cwd: Path, options: tuple[str, ...], timeout: float | None, name: str, *,
            sas_path: Path | None = None, sas_text: str | None = None,
            memory_limit_mb: int | None = None) -> PlanResult:
     """Run the search binary on a SAS task (file or text) and read its plan file."""
     plan_file = cwd / "sas_plan"
-    plan_file.unlink(missing_ok=True)
+    for old in (plan_file, *cwd.glob("sas_plan.*")):
+        old.unlink(missing_ok=True)
     if timeout is not None and timeout <= 0:
         return PlanResult("timeout", (), name, "time limit reached before search", {"search": 0.0})
     cmd = [str(search_binary()), *options, "--internal-plan-file", str(plan_file)]
     run = run_process(cmd, cwd, timeout, stdin_path=sas_path, stdin_text=sas_text, memory_limit_mb=memory_limit_mb)
     timings = {"search": run.seconds}
+    best = _best_plan_file(cwd)
     if run.timed_out:
+        if best is not None:  # an anytime search (seq-sat-lama-2011, ...) had improved plans: FD's code 2
+            return PlanResult("solved", parse_plan_text(best.read_text()), name, EXIT_CODES[2][1], timings)
         return PlanResult("timeout", (), name, "time limit reached during search", timings)
     status, meaning = exit_status(run.returncode)
     if status == "solved":
-        if not plan_file.is_file():
+        if best is None:
             return PlanResult("error", (), name, f"exit code {run.returncode} but no plan file: {tail(run.output)}", timings)
-        return PlanResult("solved", parse_plan_text(plan_file.read_text()), name, meaning, timings)
+        return PlanResult("solved", parse_plan_text(best.read_text()), name, meaning, timings)
     message = meaning if status == "unsolvable" else f"{meaning}: {tail(run.output)}"
     return PlanResult(status, (), name, message, timings)
 
 
 def solve(domain_text: str, problem_text: str, *, optimal: bool = False, time_limit: float | None = None,
           options: tuple[str, ...] | None = None, translate_options: tuple[str, ...] = (),
-          memory_limit_mb: int | None = None) -> PlanResult:
-    """Plan with Fast Downward on PDDL text. `options` overrides the search configuration."""
+          memory_limit_mb: int | None = None, config: SearchConfig | None = None) -> PlanResult:
+    """Plan with Fast Downward on PDDL text. `config` (or raw `options`) overrides the search configuration."""
     deadline = None if time_limit is None else time.monotonic() + time_limit
     name = planner_name(optimal) if options is None else "fd (custom)"
+    if config is not None:
+        name, options = config.name, config.options
     try:
         opts = search_options(optimal) if options is None else tuple(options)
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fd-") as tmp:

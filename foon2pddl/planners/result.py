@@ -55,6 +55,22 @@ def parse_plan_text(text: str) -> tuple[str, ...]:
     return tuple(steps)
 
 
+def sas_plan_text(steps, cost: int | None = None) -> str:
+    """A plan in Fast Downward's `sas_plan` format (what VAL and other tools read): one
+    `(action arg ...)` per line, then `; cost = N (unit cost)`, or `(general cost)` when
+    `cost` (the sum of action costs) is given."""
+    kind = "unit cost" if cost is None else "general cost"
+    total = len(steps) if cost is None else cost
+    return "".join(f"({s})\n" for s in steps) + f"; cost = {total} ({kind})\n"
+
+
+def plan_cost(task, steps) -> int | None:
+    """The sum of the steps' action costs when `task` (a PlanningTask) has action costs, else None."""
+    if all(a.cost is None for a in task.actions):
+        return None
+    return sum((task.action_for(step_action(s)).cost or 0) for s in steps)
+
+
 def step_action(step: str) -> str:
     """The action name of a plan step."""
     return step.split(" ", 1)[0]

@@ -100,7 +100,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
          rates: Rates | None = None, category_index: CategoryIndex | None = None,
-         up_validate: bool = False, constraints: Constraints | None = None) -> PlanOutcome:
+         up_validate: bool = False, constraints: Constraints | None = None, search=None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted
@@ -118,7 +118,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     domain_text, problem_text = render(compiled.task)
     timings["write"] = time.perf_counter() - t0
     result = run_planner(compiled.task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
-                         optimal=optimal, time_limit=time_limit)
+                         optimal=optimal, time_limit=time_limit, search=search)
     return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
 
 

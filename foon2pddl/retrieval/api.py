@@ -15,7 +15,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from .complete import complete
 from .greedy import DEFAULT_BUDGET, greedy
-from .optimal import DEFAULT_NODE_LIMIT, optimal
+from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT, optimal
 from .result import METHODS, Retrieval
 
 
@@ -33,13 +33,16 @@ def success_probability(units, rates: Rates) -> float:
 
 def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, method: str = "complete",
              rates: Rates | None = None, budget: int = DEFAULT_BUDGET,
-             node_limit: int = DEFAULT_NODE_LIMIT, reach: Reachability | None = None) -> Retrieval:
+             node_limit: int | None = DEFAULT_NODE_LIMIT, time_limit: float | None = DEFAULT_TIME_LIMIT,
+             reach: Reachability | None = None) -> Retrieval:
     """A task tree for `goal` (any of its candidates) from `kitchen` in `foon`, by `method`.
 
     greedy: the seed paper's search (iteration `budget`); complete: a tree whenever one
     exists; optimal: fewest distinct units; weighted: highest product of motion success
-    `rates` (defaults for every motion when None). optimal/weighted expand at most
-    `node_limit` search nodes. With `rates`, every found tree's success probability is set.
+    `rates` (defaults for every motion when None). optimal/weighted are anytime: they
+    expand at most `node_limit` search nodes and run at most `time_limit` seconds (None:
+    no cap; both None: exact), and return the best tree found with its `cost` and a
+    proven lower `bound`. With `rates`, every found tree's success probability is set.
     `reach`: the fixpoint of `foon` from this kitchen, when already computed (batches share one).
 
     >>> from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
@@ -68,7 +71,7 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
         result = complete(foon, nodes, goal, reach)
     else:
         result = optimal(foon, nodes, goal, rates=rates, weighted=method == "weighted",
-                         node_limit=node_limit, budget=budget, reach=reach)
+                         node_limit=node_limit, time_limit=time_limit, budget=budget, reach=reach)
     if result.tree is not None and rates is not None:
         result = replace(result, probability=success_probability(result.tree.units, rates))
     return result

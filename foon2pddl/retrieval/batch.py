@@ -24,7 +24,7 @@ from ..model.goal import Goal, GoalSpec
 from ..model.tasktree import TaskTree, validate
 from .api import retrieve
 from .greedy import DEFAULT_BUDGET
-from .optimal import DEFAULT_NODE_LIMIT
+from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
 from .result import BUDGET_EXHAUSTED, UNREACHABLE
 
 
@@ -65,8 +65,8 @@ class GoalRow:
 
 def solve_goals(foon: Foon, kitchen_nodes: Iterable[ObjectNode], entries: Sequence[GoalEntry],
                 resolve: Callable[[GoalSpec], Goal], *, method: str = "complete", rates: Rates | None = None,
-                budget: int = DEFAULT_BUDGET, node_limit: int = DEFAULT_NODE_LIMIT,
-                clock: Callable[[], float] = time.perf_counter) -> list[GoalRow]:
+                budget: int = DEFAULT_BUDGET, node_limit: int | None = DEFAULT_NODE_LIMIT,
+                time_limit: float | None = DEFAULT_TIME_LIMIT, clock: Callable[[], float] = time.perf_counter) -> list[GoalRow]:
     """Retrieve a tree for every goal of `entries` (resolved by `resolve`) from one kitchen, in order.
 
     `foon` is the network as searched (with inference units under `--containment infer`,
@@ -78,18 +78,19 @@ def solve_goals(foon: Foon, kitchen_nodes: Iterable[ObjectNode], entries: Sequen
     rows = []
     for entry in entries:
         t0 = clock()
-        rows.append(_one(foon, kitchen, entry, resolve, mode, reach, method, rates, budget, node_limit, t0, clock))
+        limits = {"budget": budget, "node_limit": node_limit, "time_limit": time_limit}
+        rows.append(_one(foon, kitchen, entry, resolve, mode, reach, method, rates, limits, t0, clock))
     return rows
 
 
-def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, method, rates, budget, node_limit,
+def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, method, rates, limits: dict,
          t0: float, clock) -> GoalRow:
     where = f"{entry.path}:{entry.line}"
     try:
         goal = resolve(entry.spec)
     except FoonError as exc:  # no node matches the goal
         return GoalRow(entry.spec.describe(), where, GoalStatus.UNMATCHED, clock() - t0, exc.message)
-    result = retrieve(foon, kitchen, goal, method, rates=rates, budget=budget, node_limit=node_limit, reach=reach)
+    result = retrieve(foon, kitchen, goal, method, rates=rates, reach=reach, **limits)
     if result.tree is None:
         return GoalRow(goal.describe(), where, _REASONS.get(result.reason, GoalStatus.UNREACHABLE), clock() - t0,
                        f"{result.reason}: {result.detail}")

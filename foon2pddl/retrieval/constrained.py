@@ -100,7 +100,8 @@ def retrieve_constrained(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], go
             result = retrieve(aux_foon, filtered.kitchen, aux_goal, method, rates=rates, **limits)
             if result.tree is not None:
                 tree = _real_tree(result.tree, real, must, filtered.kitchen)
-                result = replace(result, tree=tree, detail=_side_note(tree, must, filtered.kitchen, result.detail))
+                result = replace(result, tree=tree, detail=_side_note(tree, must, filtered.kitchen, result.detail),
+                                 **_without_goal_unit(result, tree))
         else:
             result = retrieve(filtered.foon, filtered.kitchen, filtered.goal, method, rates=rates, **limits)
         if result.tree is not None or result.reason != UNREACHABLE:
@@ -112,6 +113,14 @@ def retrieve_constrained(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], go
 
     blocking = explain_blocked(rm, nodes, goal, relaxed_tree)
     return ConstrainedRetrieval(Retrieval(None, UNREACHABLE, method, blocking.message), rm, filtered, blocking)
+
+
+def _without_goal_unit(result: Retrieval, tree: TaskTree) -> dict:
+    """Cost and bound of the real tree: the auxiliary goal unit costs 1 unit (optimal), 0 (weighted: rate 1)."""
+    if result.bound is None:
+        return {}
+    extra = float(len(result.tree) - len(tree)) if result.method == "optimal" else 0.0
+    return {"cost": result.cost - extra, "bound": max(0.0, result.bound - extra)}
 
 
 def _side_note(tree: TaskTree, must: tuple[str, ...], kitchen: frozenset[ObjectNode], detail: str) -> str:

@@ -13,6 +13,9 @@ METHODS = ("greedy", "complete", "optimal", "weighted")
 UNREACHABLE = RetrievalStatus.UNREACHABLE
 BUDGET_EXHAUSTED = RetrievalStatus.BUDGET_EXHAUSTED
 
+#: Methods that minimize a cost and report a proven lower bound on it.
+BOUNDED = ("optimal", "weighted")
+
 
 @dataclass(frozen=True)
 class Retrieval:
@@ -22,9 +25,16 @@ class Retrieval:
     notes about the tree) in words. `expansions` counts the method's basic
     steps (greedy: objects taken from its queue; optimal/weighted: search nodes
     expanded; complete: units fired). `proven_optimal` is True when an optimal
-    or weighted search finished within its node limit, False when it returns the
-    best tree found so far, None for the other methods. `probability` is the
-    product of the tree's motion success rates when rates were given.
+    or weighted search proved its tree optimal, False when it returns the best
+    tree found within its budget, None for the other methods. `probability` is
+    the product of the tree's motion success rates when rates were given.
+
+    Anytime optimal/weighted retrieval also sets `cost`, the tree's objective
+    (optimal: its units; weighted: the sum of -log(rate) of its motions), and
+    `bound`, a proven lower bound on the cost of every tree for the goal.
+    Checked on construction: both are set together and only with a tree,
+    `bound <= cost`, and `proven_optimal` is exactly `bound == cost` (a search
+    that proves its tree optimal reports the bound equal to the cost).
     """
 
     tree: TaskTree | None
@@ -34,6 +44,8 @@ class Retrieval:
     expansions: int = 0
     proven_optimal: bool | None = None
     probability: float | None = None
+    cost: float | None = None
+    bound: float | None = None
 
     def __post_init__(self) -> None:
         if (self.tree is None) == (self.reason is None):
@@ -47,6 +59,20 @@ class Retrieval:
     def status(self) -> RetrievalStatus:
         """`found`, or the reason there is no tree."""
         return RetrievalStatus.FOUND if self.reason is None else self.reason
+        if (self.cost is None) != (self.bound is None):
+            raise ValueError("a Retrieval's cost and bound are set together")
+        if self.bound is not None:
+            if self.tree is None:
+                raise ValueError("a bound needs a tree")
+            if not self.bound <= self.cost:
+                raise ValueError(f"bound {self.bound} exceeds the tree's cost {self.cost}")
+            if self.proven_optimal is not (self.bound == self.cost):
+                raise ValueError("proven_optimal must be exactly bound == cost")
+
+    @property
+    def gap(self) -> float | None:
+        """cost - bound (0 when proven optimal), None without a bound."""
+        return None if self.bound is None else self.cost - self.bound
 
     @property
     def found(self) -> bool:

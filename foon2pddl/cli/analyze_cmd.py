@@ -1,0 +1,45 @@
+"""`foon2pddl analyze`: network analysis (projections, centrality, components), GraphML and a PNG."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..errors import FoonInputError
+from . import main
+from .options import emit, output_option, paths_argument
+
+
+@main.command("analyze")
+@paths_argument
+@click.option("--top", type=click.IntRange(min=1), default=10, show_default=True,
+              help="How many of the most central objects and motions to list.")
+@click.option("--level", type=click.Choice(["1", "3"]), default="1", show_default=True,
+              help="Objects by label (1, as Paulius et al. 2016 rank them) or as whole nodes with states (3).")
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@click.option("--graphml", "graphml", type=click.Path(path_type=Path, file_okay=False), default=None,
+              help="Directory for foon.graphml (bipartite), objects.graphml and motions.graphml (Gephi, Cytoscape).")
+@click.option("--plot", "plot", type=click.Path(path_type=Path, dir_okay=False), default=None,
+              help="PNG of the most central objects and motions.")
+@output_option
+def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
+    """One-mode projections of the network (object-object, motion-motion), degree and betweenness
+    centrality, the most central objects and motions, connected components (docs/datasets.md)."""
+    from ..analysis.network import analyze, graphml_graphs  # networkx: imported only when needed
+    from ..io.atomic import atomic_write
+    from ..io.inputs import load_network
+    from ..io.network_report import format_text, plot_png, to_json, write_graphml
+
+    net = load_network(paths)
+    result = analyze(net.foon, int(level))
+    try:
+        if graphml is not None:
+            for p in write_graphml(graphml, graphml_graphs(net.foon, result)):
+                click.echo(f"wrote {p}", err=True)
+        if plot is not None:
+            atomic_write(plot, plot_png(result, top))
+            click.echo(f"wrote {plot}", err=True)
+    except OSError as exc:
+        raise FoonInputError(str(graphml if plot is None else plot), 0, f"cannot write: {exc.strerror or exc}") from None
+    emit(to_json(result, top) if as_json else format_text(result, top), output)

@@ -1,0 +1,83 @@
+"""Batch mode of `compile` and `plan`: every goal on one loaded network, one table, files per goal."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from ..errors import FoonInputError
+from ..io.batch_report import file_names
+from ..model.containment import count_inference, inferred_nodes
+from ..model.goal import resolve_goal
+from .batch import TREE_EXTENSIONS, finish, write_files
+
+
+def _resolve(view, entry):
+    """(goal, None) or (None, the reason it names no produced node)."""
+    try:
+        return resolve_goal(view.map_goal(entry.spec), view.foon), None
+    except FoonInputError as exc:
+        return None, exc.message
+
+
+def _row(entry, goal, status: str, seconds: float, reason: str = "", units=None, inferred=()) -> dict:
+    return {"goal": goal.describe() if goal is not None else entry.spec.describe(), "status": status,
+            "units": units, "inferred": list(inferred), "seconds": round(seconds, 6), "reason": reason,
+            "source": f"{entry.path}:{entry.line}"}
+
+
+def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, rates, output_dir: Path,
+                  table_fmt: str, **encoder_options) -> None:
+    """DIR/<goal>/domain.pddl and problem.pddl per goal (all written atomically at the end), and the table."""
+    from ..io.atomic import atomic_write_many
+    from ..pddl.compile import compile_task
+    from ..pddl.render import render
+
+    rows, files = [], {}
+    dirs = [n[: -len(".d")] for n in file_names((e.spec.describe() for e in entries), "d")]
+    for entry, name in zip(entries, dirs, strict=True):
+        t0 = time.perf_counter()
+        goal, why = _resolve(view, entry)
+        if goal is None:
+            rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
+            continue
+        task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
+        domain, problem = render(task)
+        files[output_dir / name / "domain.pddl"] = domain
+        files[output_dir / name / "problem.pddl"] = problem
+        row = _row(entry, goal, "compiled", time.perf_counter() - t0,
+                   units=sum(a.unit is not None for a in task.actions))
+        row["file"] = str(output_dir / name)
+        rows.append(row)
+    try:
+        atomic_write_many(files)
+    except OSError as exc:
+        raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
+    finish(rows, table_fmt, f"{encoding} encoding", solved=lambda r: r["status"] == "compiled")
+
+
+def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fmt: str, output: Path | None,
+               **plan_options) -> None:
+    """Plan every goal; one table; with `output`, the task trees of solved goals in that directory."""
+    from ..io.tree_formats import render_tree
+    from ..planners.solve import plan
+
+    rows, trees = [], []
+    for entry in entries:
+        t0 = time.perf_counter()
+        goal, why = _resolve(view, entry)
+        if goal is None:
+            rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
+            trees.append(None)
+            continue
+        outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
+        tree = outcome.tree if outcome.status == "solved" else None
+        units = None if tree is None else len(tree.units) - count_inference(tree.units)
+        inferred = () if tree is None else (n.describe() for n in inferred_nodes(tree.units))
+        rows.append(_row(entry, goal, outcome.status, time.perf_counter() - t0,
+                         "" if tree is not None else outcome.message or outcome.result.message, units, inferred))
+        trees.append(tree)
+    if output is not None:
+        texts = [None if t is None else render_tree(t, tree_fmt, kitchen=view.kitchen) for t in trees]
+        write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
+    finish(rows, table_fmt, f"{encoding} encoding, planner {plan_options.get('planner')}")

@@ -1,0 +1,70 @@
+"""Network analysis outputs: text tables, JSON, GraphML files and a PNG of the most central nodes."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import networkx as nx
+
+from ..analysis.network import Analysis
+from .atomic import atomic_write_many
+
+KEYS = (("degree_centrality", "degree centrality"), ("betweenness", "betweenness centrality"))
+
+
+def format_text(a: Analysis, top: int) -> str:
+    """The `top` objects and motions by degree and betweenness centrality, and the components."""
+    what = "object labels" if a.level == 1 else "object nodes"
+    lines = [f"{a.object_count} {what}, {len(a.motions)} motions, {a.unit_count} units; "
+             f"{len(a.components)} connected component(s), sizes {', '.join(map(str, a.components[:10]))}"
+             + (" ..." if len(a.components) > 10 else "")]
+    for which in ("objects", "motions"):
+        for key, title in KEYS:
+            lines.append(f"\ntop {top} {which} by {title}:")
+            for i, r in enumerate(a.top(which, key, top), start=1):
+                lines.append(f"{i:>3}. {r.name:<40} {getattr(r, key):.4f}  (degree {r.degree})")
+    return "\n".join(lines) + "\n"
+
+
+def to_json(a: Analysis, top: int) -> str:
+    data = {"level": a.level, "objects": a.object_count, "motions": len(a.motions), "units": a.unit_count,
+            "components": list(a.components),
+            "top": {which: {key: [r.as_dict() for r in a.top(which, key, top)] for key, _ in KEYS}
+                    for which in ("objects", "motions")}}
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def graphml_text(g: nx.Graph) -> str:
+    """GraphML of `g` (deterministic: nodes and edges in insertion order)."""
+    return "\n".join(nx.generate_graphml(g, prettyprint=True)) + "\n"
+
+
+def write_graphml(directory: Path, graphs: dict[str, nx.Graph]) -> list[Path]:
+    """DIR/<name>.graphml for each graph (atomically, all or none); the paths written."""
+    files = {directory / f"{name}.graphml": graphml_text(g) for name, g in graphs.items()}
+    atomic_write_many(files)
+    return list(files)
+
+
+def plot_png(a: Analysis, top: int) -> bytes:
+    """Horizontal bars of the `top` objects and motions by both centralities (2 x 2 panels), as PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(2, 2, figsize=(12, 2 + 0.35 * top * 2))
+    for row, which in enumerate(("objects", "motions")):
+        for col, (key, title) in enumerate(KEYS):
+            items = a.top(which, key, top)[::-1]
+            ax = axes[row][col]
+            ax.barh([r.name for r in items], [getattr(r, key) for r in items], color="#8fb8ff" if row else "#8fd18f")
+            ax.set_title(f"{which}: {title}")
+            ax.tick_params(axis="y", labelsize=8)
+    fig.tight_layout()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100, metadata={"Software": None})
+    plt.close(fig)
+    return buf.getvalue()

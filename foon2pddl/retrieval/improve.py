@@ -1,0 +1,154 @@
+"""Local search on an incumbent tree: replace one unit at a time by a cheaper way to make what it made.
+
+Works on a `lmcut.Cone` (dense local ids). For each unit x of the incumbent
+(dearest first, then content order), x is forbidden, the other units of the
+incumbent cost nothing, and a relaxed plan for the goal is extracted from the
+h_add best supporters (Dijkstra, stopped at the first candidate settled);
+units the plan does not need are dropped (`prune`). A cheaper plan replaces
+the incumbent and the pass starts again. Every plan is executable: a node's
+best supporter fired after all its inputs were settled, so supporters never
+form a cycle, and pruning keeps a set whose fixpoint still makes the goal.
+
+Cost: one Dijkstra over the cone per attempt (it settles only the nodes no
+dearer than the goal, few when most units are free); `attempts` caps them.
+Tie-breaks: heap order (cost, node id), consumers in the cone's unit order
+(content order), so the result does not depend on file order.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+import time
+from collections.abc import Sequence
+
+from .lmcut import Cone
+
+INF = math.inf
+
+
+def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int, list[int]] | None:
+    """(candidate reached, units of a relaxed plan for it) by h_add best supporters; None if unreachable."""
+    deps, outs, consumers = cone.deps, cone.outs, cone.consumers
+    cost = [INF] * len(cone.node_ids)
+    sup = [-1] * len(cone.node_ids)
+    acc = [0.0] * len(deps)
+    missing = [len(d) for d in deps]
+    heap: list[tuple[float, int]] = []
+
+    def fire(u: int, base: float) -> None:
+        uc = base + rc[u]
+        for o in outs[u]:
+            if uc < cost[o]:
+                cost[o] = uc
+                sup[o] = u
+                heapq.heappush(heap, (uc, o))
+
+    for u in cone.seeds:
+        if rc[u] < INF:
+            fire(u, 0.0)
+    settled = bytearray(len(cone.node_ids))
+    while heap:
+        c, n = heapq.heappop(heap)
+        if settled[n] or c > cost[n]:
+            continue
+        settled[n] = 1
+        if n in goals:
+            return n, _extract(cone, sup, n)
+        for u in consumers[n]:
+            acc[u] += c
+            missing[u] -= 1
+            if missing[u] == 0 and rc[u] < INF:
+                uc = acc[u] + rc[u]
+                for o in outs[u]:
+                    if not settled[o] and uc < cost[o]:
+                        cost[o] = uc
+                        sup[o] = u
+                        heapq.heappush(heap, (uc, o))
+    return None
+
+
+def _extract(cone: Cone, sup: list[int], goal: int) -> list[int]:
+    plan: list[int] = []
+    seen: set[int] = set()
+    stack = [goal]
+    while stack:
+        u = sup[stack.pop()]
+        if u not in seen:
+            seen.add(u)
+            plan.append(u)
+            stack.extend(cone.deps[u])
+    return plan
+
+
+def firing_order(cone: Cone, units: Sequence[int], goal: int) -> list[int] | None:
+    """The units of `units` that fire from the kitchen, in firing order, if `goal` gets made; else None."""
+    deps, outs = cone.deps, cone.outs
+    member = set(units)
+    missing = {u: len(deps[u]) for u in units}
+    users: dict[int, list[int]] = {}
+    for u in units:
+        for i in deps[u]:
+            users.setdefault(i, []).append(u)
+    ready = sorted(u for u in units if not missing[u])
+    have: set[int] = set()
+    order: list[int] = []
+    k = 0
+    while k < len(ready):
+        u = ready[k]
+        k += 1
+        order.append(u)
+        for o in outs[u]:
+            if o not in have:
+                have.add(o)
+                for v in users.get(o, ()):
+                    if v in member:
+                        missing[v] -= 1
+                        if missing[v] == 0:
+                            ready.append(v)
+    return order if goal in have else None
+
+
+def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> list[int]:
+    """Drop units the goal does not need (dearest, then last in unit order, first); firing order."""
+    keep = list(units)
+    for u in sorted(units, key=lambda u: (-weight[u], -u)):
+        rest = [v for v in keep if v != u]
+        if firing_order(cone, rest, goal) is not None:
+            keep = rest
+    order = firing_order(cone, keep, goal)
+    if order is None:  # `units` must make the goal; never silently return a broken plan
+        raise ValueError("prune: the units do not make the goal")
+    return order
+
+
+def improve(cone: Cone, units: list[int], goal: int, goals: set[int], attempts: int,
+            deadline: float | None = None) -> tuple[int, list[int], int]:
+    """(goal, units in firing order, attempts used) of the cheapest plan the local search finds
+    from the executable `units` making `goal` (local ids), within `attempts` and the deadline."""
+    weight = cone.weight
+    best = prune(cone, units, goal, weight)
+    best_cost = math.fsum(weight[u] for u in best)
+    used = 0
+    improved = True
+    while improved and used < attempts:
+        improved = False
+        for x in sorted(best, key=lambda u: (-weight[u], u)):
+            if used >= attempts or (deadline is not None and time.perf_counter() >= deadline):
+                return goal, best, used
+            used += 1
+            rc = list(weight)
+            for u in best:
+                rc[u] = 0.0
+            rc[x] = INF
+            found = relaxed_plan(cone, rc, goals)
+            if found is None:
+                continue
+            g, plan = found
+            plan = prune(cone, plan, g, weight)
+            cost = math.fsum(weight[u] for u in plan)
+            if cost < best_cost - 1e-9:
+                goal, best, best_cost = g, plan, cost
+                improved = True
+                break
+    return goal, best, used
