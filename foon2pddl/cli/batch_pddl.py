@@ -5,7 +5,7 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-from ..errors import FoonInputError
+from ..errors import FoonError, FoonInputError
 from ..io.batch_report import file_names
 from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
@@ -16,7 +16,7 @@ def _resolve(view, entry):
     """(goal, None) or (None, the reason it names no produced node)."""
     try:
         return resolve_goal(view.map_goal(entry.spec), view.foon), None
-    except FoonInputError as exc:
+    except FoonError as exc:  # the goal names no node (UsageError)
         return None, exc.message
 
 

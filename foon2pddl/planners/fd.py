@@ -122,11 +122,18 @@ def driver_aliases() -> dict[str, tuple[str, ...]]:
             for name, options in namespace["ALIASES"].items()}
 
 
+class UnknownAlias(UsageError, KeyError):
+    """An alias the installed driver does not define (a KeyError too, for callers that look it up)."""
+
+    def __str__(self) -> str:  # KeyError would quote the message
+        return self.message
+
+
 def alias_options(alias: str) -> tuple[str, ...]:
     """Search options of a driver alias."""
     table = driver_aliases()
     if alias not in table:
-        raise UsageError(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
+        raise UnknownAlias(f"no Fast Downward alias {alias!r} in the driver's aliases.py")
     return table[alias]
 
 
