@@ -54,11 +54,6 @@ class Retrieval:
             object.__setattr__(self, "reason", RetrievalStatus(self.reason))
             if self.reason == RetrievalStatus.FOUND:
                 raise ValueError("a Retrieval without a tree needs a reason other than 'found'")
-
-    @property
-    def status(self) -> RetrievalStatus:
-        """`found`, or the reason there is no tree."""
-        return RetrievalStatus.FOUND if self.reason is None else self.reason
         if (self.cost is None) != (self.bound is None):
             raise ValueError("a Retrieval's cost and bound are set together")
         if self.bound is not None:
@@ -68,6 +63,11 @@ class Retrieval:
                 raise ValueError(f"bound {self.bound} exceeds the tree's cost {self.cost}")
             if self.proven_optimal is not (self.bound == self.cost):
                 raise ValueError("proven_optimal must be exactly bound == cost")
+
+    @property
+    def status(self) -> RetrievalStatus:
+        """`found`, or the reason there is no tree."""
+        return RetrievalStatus.FOUND if self.reason is None else self.reason
 
     @property
     def gap(self) -> float | None:
