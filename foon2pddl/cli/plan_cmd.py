@@ -21,6 +21,8 @@ from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
 from .options import (
+    category_chains,
+    category_types_option,
     check_output,
     check_time_limit,
     constraint_inputs,
@@ -31,11 +33,13 @@ from .options import (
     goal_file_option,
     goal_option,
     goals_option,
+    instances_option,
     kitchen_option,
     level_option,
     load_view,
     network_option,
     other_networks_hint,
+    parse_instances,
     paths_argument,
     prune_option,
     rates_option,
@@ -76,6 +80,11 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "validation": validation,
         "tree": json.loads(tree_json) if tree_json is not None else None,
     }
+    if d is not None and d.instance_check is not None:
+        from ..planners.instance_plan import instance_plan_json
+
+        validation["instances"] = check(d.instance_check)
+        data["instances"] = instance_plan_json(d.instance_plan)
     return json.dumps(data, indent=2) + "\n"
 
 
@@ -88,6 +97,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @utensils_option
 @containment_option
 @encoding_option
+@instances_option
+@category_types_option
 @level_option
 @network_option
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
@@ -119,7 +130,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
                    "a directory receiving one tree file per solved goal.")
-def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, level, network, planner,
+def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
+          level, network, planner,
           planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
           constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
@@ -167,7 +179,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         else:
             outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                            optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                           up_validate=up_validate, constraints=cons, search=config)
+                           up_validate=up_validate, constraints=cons, search=config,
+                           instances=parse_instances(instances),
+                           categories=category_chains(foon) if category_types and encoding == "instances" else ())
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
         click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
@@ -179,6 +193,11 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     data: str | None = None
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
+        if fmt == "steps" and outcome.decoded.instance_trace is not None:
+            from ..planners.instance_plan import trace_lines
+
+            data += "physical objects, step by step (instances encoding):\n" + "\n".join(
+                trace_lines(outcome.decoded.instance_trace, outcome.decoded.instance_plan)) + "\n"
     if fmt == "json":
         data = outcome_json(outcome, timings, data)
     else:

@@ -81,7 +81,8 @@ def _finish(result: PlanResult, task: PlanningTask, goal: Goal, kitchen_nodes: f
         return PlanOutcome(result, task, decode_error=str(exc), timings=timings)
     timings["decode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    decoded = check(tree, kitchen_nodes, task, result.plan, up_validate=up_validate)
+    decoded = check(tree, kitchen_nodes, task, result.plan, up_validate=up_validate,
+                    candidates=sorted({project_node(c, task.level) for c in goal.candidates}))
     timings["validate"] = time.perf_counter() - t0
     return PlanOutcome(result, task, decoded, timings=timings)
 
@@ -90,16 +91,19 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = "tree", level
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
          rates: Rates | None = None, up_validate: bool = False,
-         constraints: Constraints | None = None, search=None) -> PlanOutcome:
+         constraints: Constraints | None = None, search=None, instances: tuple[tuple[str, int], ...] = (),
+         categories: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `time_limit` bounds the planner run (translation and search). Raises ValueError for
     bad options (encoding, cost mode), `pddl.constraints.GoalExcluded` when `constraints`
     leave no way to make the goal; a planner's failure is a status, never an exception.
+    `instances`, `categories`: for the `instances` encoding (see `pddl.encoding.EncodeOptions`).
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
-    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates, constraints)
+    task = compile_task(foon, kitchen, goal, encoding, level, prune, costs, rates, constraints, instances=instances,
+                        categories=categories)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     domain_text, problem_text = render(task)
