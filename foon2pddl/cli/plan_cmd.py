@@ -80,7 +80,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "validation": validation,
         "tree": json.loads(tree_json) if tree_json is not None else None,
     }
-    if d is not None and d.instance_check is not None:
+    if d is not None and getattr(d, "instance_check", None) is not None:
         from ..planners.instance_plan import instance_plan_json
 
         validation["instances"] = check(d.instance_check)
@@ -193,11 +193,12 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     data: str | None = None
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
-        if fmt == "steps" and outcome.decoded.instance_trace is not None:
+        decoded = getattr(outcome, "decoded", None)  # a lifted GEN outcome has none
+        if fmt == "steps" and decoded is not None and decoded.instance_trace is not None:
             from ..planners.instance_plan import trace_lines
 
             data += "physical objects, step by step (instances encoding):\n" + "\n".join(
-                trace_lines(outcome.decoded.instance_trace, outcome.decoded.instance_plan)) + "\n"
+                trace_lines(decoded.instance_trace, decoded.instance_plan)) + "\n"
     if fmt == "json":
         data = outcome_json(outcome, timings, data)
     else:
