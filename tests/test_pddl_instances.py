@@ -109,7 +109,7 @@ def test_unfolding_fires_a_producer_once_per_consumer():
 def test_encoding_structure_and_one_state_per_instance():
     task = encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL)
     assert task.encoding == "instances" and task.goal == (Atom("goal-reached"),)
-    assert sorted(name for name, _ in task.objects) == ["bread_1", "butter_1", "faucet_1", "knife_1", "knife_2"]
+    assert sorted(name for name, _ in task.objects) == ["bread_1", "butter_1", "knife_1", "knife_2"]
     cut = next(a for a in task.actions if a.unit == 0)
     assert [t for _, t in cut.params] == ["bread", "knife"]
     assert Atom(IS, ("?knife", "knife_clean")) in cut.pre and Atom(IS, ("?knife", "knife_clean")) in cut.delete
@@ -133,7 +133,7 @@ def _fd(task: PlanningTask):
 
 
 def test_one_knife_needs_a_wash_and_the_validator_catches_the_tree_plan():
-    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
     res = _fd(task)
     assert res.solved
     steps = instance_steps(task, res.plan)
@@ -258,7 +258,7 @@ def test_no_instance_state_goes_unmentioned():
 def test_plan_pipeline_checks_plans_at_the_instance_level():
     from foon2pddl.planners.solve import plan
 
-    outcome = plan(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
+    outcome = plan(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
     assert outcome.status == "solved" and outcome.decoded.instance_check.ok
     # Every step is kept (no justification): the wash is in the tree although FOON does not need it.
     assert [u.motion.label for u in outcome.tree.units] == ["cut", "wash", "spread"]
