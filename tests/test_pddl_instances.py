@@ -280,3 +280,15 @@ def test_kitchen_file_states_counts(tmp_path):
     path.write_text("2 x knife: in [bowl\n")
     with pytest.raises(Exception, match="kitchen.txt:1"):
         read_kitchen(path)
+
+
+def test_to_up_problem_and_ups_validator_accept_an_instances_plan():
+    from foon2pddl.pddl.up_problem import to_up_problem
+    from foon2pddl.planners.decode import up_validation
+
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
+    problem = to_up_problem(task)
+    assert len(problem.actions) == len(task.actions) and problem.kind.has_hierarchical_typing()
+    res = _fd(task)
+    assert up_validation(task, res.plan).ok
+    assert not up_validation(task, [s for s in res.plan if not s.startswith("wash")]).ok
