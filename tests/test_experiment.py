@@ -377,3 +377,16 @@ def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_pat
     assert batches[0].solver == "fd-tree"  # costliest first
     done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
     assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [20, 30]
+
+
+def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_path):
+    config = runner.Config((), Protocol(trials=1, goals=4), ("reg",), ("native-complete", "fd-instances"), tmp_path)
+    summary = runner.run(config, progress=False)
+    by = {(r.solver, r.goal): r for r in summary.records}
+    instances = [r for r in summary.records if r.solver == "fd-instances"]
+    assert len(instances) == 4
+    for r in instances:
+        native = by["native-complete", r.goal]
+        if r.status == "solved":
+            assert native.status == "solved" and r.validated and r.foon_valid
+        assert r.status != "error", r.reason

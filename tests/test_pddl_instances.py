@@ -109,7 +109,7 @@ def test_unfolding_fires_a_producer_once_per_consumer():
 def test_encoding_structure_and_one_state_per_instance():
     task = encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL)
     assert task.encoding == "instances" and task.goal == (Atom("goal-reached"),)
-    assert sorted(name for name, _ in task.objects) == ["bread_1", "butter_1", "faucet_1", "knife_1", "knife_2"]
+    assert sorted(name for name, _ in task.objects) == ["bread_1", "butter_1", "knife_1", "knife_2"]
     cut = next(a for a in task.actions if a.unit == 0)
     assert [t for _, t in cut.params] == ["bread", "knife"]
     assert Atom(IS, ("?knife", "knife_clean")) in cut.pre and Atom(IS, ("?knife", "knife_clean")) in cut.delete
@@ -133,7 +133,7 @@ def _fd(task: PlanningTask):
 
 
 def test_one_knife_needs_a_wash_and_the_validator_catches_the_tree_plan():
-    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
     res = _fd(task)
     assert res.solved
     steps = instance_steps(task, res.plan)
@@ -253,3 +253,42 @@ def test_no_instance_state_goes_unmentioned():
     assert NOT_MADE in consts
     for a in task.actions:
         assert all(x.args[-1] in consts for x in (*a.pre, *a.add, *a.delete) if x.predicate == IS)
+
+
+def test_plan_pipeline_checks_plans_at_the_instance_level():
+    from foon2pddl.planners.solve import plan
+
+    outcome = plan(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
+    assert outcome.status == "solved" and outcome.decoded.instance_check.ok
+    # Every step is kept (no justification): the wash is in the tree although FOON does not need it.
+    assert [u.motion.label for u in outcome.tree.units] == ["cut", "wash", "spread"]
+    assert outcome.validation.ok  # and the tree is a valid FOON task tree from the kitchen
+    assert [s.text() for s in outcome.decoded.instance_plan][-1] == "spread bread_1, knife_1 with butter_1"
+
+
+def test_kitchen_file_states_counts(tmp_path):
+    from foon2pddl.io.kitchen_files import read_kitchen
+
+    path = tmp_path / "kitchen.txt"
+    path.write_text("# two knives\n2 x knife: clean\nbread: whole\n1x butter: soft\nfaucet\n")
+    kitchen = read_kitchen(path)
+    assert kitchen.nodes == KNIFE_KITCHEN.nodes
+    assert dict(kitchen.counts) == {CLEAN: 2, BUTTER: 1}
+    task = encode_instances(KNIFE_FOON, kitchen, KNIFE_GOAL, options=EncodeOptions(instances=(("bread", 2),)))
+    counts = {label: sum(lab == label for _, lab, _ in task.instances) for label in ("knife", "butter", "bread")}
+    assert counts == {"knife": 2, "butter": 1, "bread": 2}
+    path.write_text("2 x knife: in [bowl\n")
+    with pytest.raises(Exception, match="kitchen.txt:1"):
+        read_kitchen(path)
+
+
+def test_to_up_problem_and_ups_validator_accept_an_instances_plan():
+    from foon2pddl.pddl.up_problem import to_up_problem
+    from foon2pddl.planners.decode import up_validation
+
+    task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
+    problem = to_up_problem(task)
+    assert len(problem.actions) == len(task.actions) and problem.kind.has_hierarchical_typing()
+    res = _fd(task)
+    assert up_validation(task, res.plan).ok
+    assert not up_validation(task, [s for s in res.plan if not s.startswith("wash")]).ok

@@ -69,3 +69,17 @@ def test_bad_input_exits_2_without_traceback():
     result = run("--goal", "no such dish", WHIPPED)
     assert result.exit_code == 2
     assert "Error: unknown object label" in result.stderr and "Traceback" not in result.output
+
+
+def test_instances_encoding_prints_the_objects_step_by_step_and_json_bindings():
+    result = run("--goal", "whipped cream", "--encoding", "instances", WHIPPED)
+    assert result.exit_code == 0, result.output
+    assert "physical objects, step by step" in result.stdout and "mixing_bowl_1" in result.stdout
+    result = run("--goal", "whipped cream", "--encoding", "instances", "--instances", "mixer=2", "--format", "json",
+                 WHIPPED)
+    data = json.loads(result.stdout)
+    assert data["validation"]["instances"]["ok"] and data["encoding"] == "instances"
+    bound = {b["instance"] for step in data["instances"] for b in step["bindings"]}
+    assert "mixer_1" in bound or "mixer_2" in bound
+    bad = run("--goal", "whipped cream", "--encoding", "instances", "--instances", "mixer", WHIPPED)
+    assert bad.exit_code == 2 and "LABEL=N" in bad.stderr

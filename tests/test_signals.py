@@ -77,8 +77,9 @@ def test_signal_at_a_random_moment_leaves_nothing(tmp_path, command, case):
     assert proc.returncode in EXIT[command], (what, proc.returncode, err[-2000:])
     if command != "experiment":
         assert "Traceback" not in err, (what, err[-3000:])
-    else:  # Dask's own processes may print theirs when interrupted while the cluster starts (see notes/rel.md)
-        assert "Traceback" not in err.split("distributed", 1)[0].split("multiprocessing", 1)[0], (what, err[-3000:])
+    else:  # Dask's machinery may print its own when interrupted while the cluster starts (see notes/rel.md);
+        # none may pass through this project's code
+        assert f'File "{ROOT / "foon2pddl"}' not in err, (what, err[-3000:])
     deadline = time.monotonic() + 5  # killed processes may take a moment to disappear
     while survivors(private) and time.monotonic() < deadline:
         time.sleep(0.1)

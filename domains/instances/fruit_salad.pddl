@@ -1,71 +1,43 @@
-; foon2pddl, encoding instances, level 3: 26 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 13 of 101 units after relevance pruning
 ; goal: fruit salad (2 candidate nodes)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 23 (avocado 1, baking powder 1, banana 1, bowl 1, cutting board 3, electric mixer 1, flour 1, fork 1, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, salt 1, spoon 1, strawberry 1, sugar 1, whisk 1)
+; instances: 13 (banana 1, bowl 1, cutting board 3, fruit salad 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, spoon 1, strawberry 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    avocado - physical-object
-    baking_powder - physical-object
     banana - physical-object
     bowl - physical-object
     cutting_board - physical-object
-    electric_mixer - physical-object
-    flour - physical-object
-    fork - physical-object
     fruit_salad - physical-object
-    heavy_cream - physical-object
     honey - physical-object
     juicer - physical-object
     knife - physical-object
     lime - physical-object
     lime_juice - physical-object
-    mixing_bowl - physical-object
-    salt - physical-object
     spoon - physical-object
     strawberry - physical-object
-    sugar - physical-object
-    whisk - physical-object
   )
   (:constants
     not-yet-made - object-state
-    avocado_halved_on_cutting_board - object-state
-    avocado_in_bowl_mashed - object-state
-    avocado_in_bowl_scooped - object-state
-    avocado_on_cutting_board_whole - object-state
-    avocado_whole - object-state
-    baking_powder_in_mixing_bowl - object-state
-    baking_powder_powder - object-state
     banana_in_bowl_sliced - object-state
     banana_on_cutting_board_peeled - object-state
     banana_on_cutting_board_sliced - object-state
     banana_peeled - object-state
     banana_whole - object-state
-    bowl_contains_avocado - object-state
-    bowl_contains_avocado_lime_juice - object-state
     bowl_contains_banana_honey_lime_juice_strawberry - object-state
     bowl_contains_banana_lime_juice_strawberry - object-state
     bowl_contains_banana_strawberry - object-state
     bowl_contains_fruit_salad - object-state
     bowl_contains_strawberry - object-state
     bowl_empty - object-state
-    cutting_board_contains_avocado - object-state
     cutting_board_contains_banana - object-state
     cutting_board_contains_lime - object-state
     cutting_board_contains_strawberry - object-state
     cutting_board_empty - object-state
-    electric_mixer_off - object-state
-    electric_mixer_off_with_mixing_bowl - object-state
-    electric_mixer_on_with_mixing_bowl - object-state
-    flour_in_mixing_bowl - object-state
-    flour_powder - object-state
-    fork_plain - object-state
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl - object-state
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c - object-state
-    heavy_cream_in_carton - object-state
-    heavy_cream_in_mixing_bowl - object-state
     honey_in_bowl - object-state
     honey_in_jar - object-state
     juicer_contains_lime_juice - object-state
@@ -77,230 +49,16 @@
     lime_whole - object-state
     lime_juice_in_bowl - object-state
     lime_juice_in_juicer - object-state
-    mixing_bowl_attached_to_electric_mixer_contains_heavy_cream_sugar - object-state
-    mixing_bowl_attached_to_electric_mixer_contains_whipped_cream - object-state
-    mixing_bowl_contains_baking_powder_flour_salt_sugar - object-state
-    mixing_bowl_contains_flour - object-state
-    mixing_bowl_contains_heavy_cream - object-state
-    mixing_bowl_contains_heavy_cream_sugar - object-state
-    mixing_bowl_contains_whipped_cream - object-state
-    mixing_bowl_empty - object-state
-    salt_granulated - object-state
-    salt_in_mixing_bowl - object-state
     spoon_plain - object-state
     strawberry_in_bowl_sliced - object-state
     strawberry_on_cutting_board_sliced - object-state
     strawberry_on_cutting_board_whole - object-state
     strawberry_whole - object-state
-    sugar_granulated - object-state
-    sugar_in_mixing_bowl - object-state
-    whisk_plain - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
-  )
-
-  (:action pour_u9
-    ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
-    ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
-    :precondition (and
-      (is ?mixing_bowl mixing_bowl_empty)
-      (is ?heavy_cream heavy_cream_in_carton)
-    )
-    :effect (and
-      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
-      (is ?heavy_cream heavy_cream_in_mixing_bowl)
-      (occupied heavy_cream_in_mixing_bowl)
-      (not (is ?mixing_bowl mixing_bowl_empty))
-      (not (is ?heavy_cream heavy_cream_in_carton))
-    )
-  )
-
-  (:action pour_u10
-    ; unit 10: pour from 02-whipped_cream.foon:13, 09-fruit_salad.foon:174
-    ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
-    :precondition (and
-      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
-      (is ?sugar sugar_granulated)
-    )
-    :effect (and
-      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
-      (is ?sugar sugar_in_mixing_bowl)
-      (occupied sugar_in_mixing_bowl)
-      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
-      (not (is ?sugar sugar_granulated))
-    )
-  )
-
-  (:action attach_u11
-    ; unit 11: attach from 02-whipped_cream.foon:23
-    ; attach: mixing bowl (contains {heavy cream, sugar}), electric mixer (off) -> mixing bowl (attached to [electric mixer], contains {heavy cream, sugar}), electric mixer (off, with [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?electric_mixer - electric_mixer)
-    :precondition (and
-      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
-      (is ?electric_mixer electric_mixer_off)
-    )
-    :effect (and
-      (is ?mixing_bowl mixing_bowl_attached_to_electric_mixer_contains_heavy_cream_sugar)
-      (occupied mixing_bowl_attached_to_electric_mixer_contains_heavy_cream_sugar)
-      (is ?electric_mixer electric_mixer_off_with_mixing_bowl)
-      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
-      (not (is ?electric_mixer electric_mixer_off))
-    )
-  )
-
-  (:action turn_on_u12
-    ; unit 12: turn on from 02-whipped_cream.foon:35
-    ; turn on: electric mixer (off, with [mixing bowl]) -> electric mixer (on, with [mixing bowl])
-    :parameters (?electric_mixer - electric_mixer)
-    :precondition (and
-      (is ?electric_mixer electric_mixer_off_with_mixing_bowl)
-    )
-    :effect (and
-      (is ?electric_mixer electric_mixer_on_with_mixing_bowl)
-      (not (is ?electric_mixer electric_mixer_off_with_mixing_bowl))
-    )
-  )
-
-  (:action turn_off_u14
-    ; unit 14: turn off from 02-whipped_cream.foon:64
-    ; turn off: electric mixer (on, with [mixing bowl]) -> electric mixer (off, with [mixing bowl])
-    :parameters (?electric_mixer - electric_mixer)
-    :precondition (and
-      (is ?electric_mixer electric_mixer_on_with_mixing_bowl)
-    )
-    :effect (and
-      (is ?electric_mixer electric_mixer_off_with_mixing_bowl)
-      (not (is ?electric_mixer electric_mixer_on_with_mixing_bowl))
-    )
-  )
-
-  (:action detach_u15
-    ; unit 15: detach from 02-whipped_cream.foon:72
-    ; detach: electric mixer (off, with [mixing bowl]), mixing bowl (attached to [electric mixer], contains {whipped cream}) -> electric mixer (off), mixing bowl (contains {whipped cream})
-    :parameters (?electric_mixer - electric_mixer ?mixing_bowl - mixing_bowl)
-    :precondition (and
-      (is ?electric_mixer electric_mixer_off_with_mixing_bowl)
-      (is ?mixing_bowl mixing_bowl_attached_to_electric_mixer_contains_whipped_cream)
-    )
-    :effect (and
-      (is ?electric_mixer electric_mixer_off)
-      (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
-      (occupied mixing_bowl_contains_whipped_cream)
-      (not (is ?electric_mixer electric_mixer_off_with_mixing_bowl))
-      (not (is ?mixing_bowl mixing_bowl_attached_to_electric_mixer_contains_whipped_cream))
-    )
-  )
-
-  (:action pour_u29
-    ; unit 29: pour from 04-pancakes.foon:3
-    ; pour: mixing bowl (empty), flour (powder) -> mixing bowl (contains {flour}), flour (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?flour - flour)
-    :precondition (and
-      (is ?mixing_bowl mixing_bowl_empty)
-      (is ?flour flour_powder)
-    )
-    :effect (and
-      (is ?mixing_bowl mixing_bowl_contains_flour)
-      (is ?flour flour_in_mixing_bowl)
-      (occupied flour_in_mixing_bowl)
-      (not (is ?mixing_bowl mixing_bowl_empty))
-      (not (is ?flour flour_powder))
-    )
-  )
-
-  (:action pour_u30
-    ; unit 30: pour* from 04-pancakes.foon:13
-    ; pour: mixing bowl (contains {flour}), baking powder (powder), sugar (granulated), salt (granulated) -> mixing bowl (contains {baking powder, flour, salt, sugar}), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixi...
-    :parameters (?mixing_bowl - mixing_bowl ?baking_powder - baking_powder ?sugar - sugar ?salt - salt)
-    :precondition (and
-      (is ?mixing_bowl mixing_bowl_contains_flour)
-      (is ?baking_powder baking_powder_powder)
-      (is ?sugar sugar_granulated)
-      (is ?salt salt_granulated)
-    )
-    :effect (and
-      (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar)
-      (occupied mixing_bowl_contains_baking_powder_flour_salt_sugar)
-      (is ?baking_powder baking_powder_in_mixing_bowl)
-      (occupied baking_powder_in_mixing_bowl)
-      (is ?sugar sugar_in_mixing_bowl)
-      (occupied sugar_in_mixing_bowl)
-      (is ?salt salt_in_mixing_bowl)
-      (occupied salt_in_mixing_bowl)
-      (not (is ?mixing_bowl mixing_bowl_contains_flour))
-      (not (is ?baking_powder baking_powder_powder))
-      (not (is ?sugar sugar_granulated))
-      (not (is ?salt salt_granulated))
-    )
-  )
-
-  (:action pick-and-place_u63
-    ; unit 63: pick-and-place from 07-guacamole.foon:3
-    ; pick-and-place: cutting board (empty), avocado (whole) -> cutting board (contains {avocado}), avocado (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?avocado - avocado)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?avocado avocado_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_avocado)
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?avocado avocado_whole))
-    )
-  )
-
-  (:action cut_u64
-    ; unit 64: cut from 07-guacamole.foon:14
-    ; cut: cutting board (contains {avocado}), avocado (on [cutting board], whole), knife -> cutting board (contains {avocado}), avocado (halved, on [cutting board]), knife
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (not (is ?avocado avocado_on_cutting_board_whole))
-    )
-  )
-
-  (:action scoop_u65
-    ; unit 65: scoop from 07-guacamole.foon:28
-    ; scoop: avocado (halved, on [cutting board]), spoon, bowl (empty) -> bowl (contains {avocado}), avocado (in [bowl], scooped), spoon
-    :parameters (?avocado - avocado ?bowl - bowl)
-    :precondition (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (occupied spoon_plain)
-      (is ?bowl bowl_empty)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (is ?bowl bowl_contains_avocado)
-      (not (is ?avocado avocado_halved_on_cutting_board))
-      (not (is ?bowl bowl_empty))
-    )
-  )
-
-  (:action mash_u66
-    ; unit 66: mash from 07-guacamole.foon:42
-    ; mash: avocado (in [bowl], scooped), fork -> avocado (in [bowl], mashed), fork
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (occupied fork_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_mashed)
-      (occupied avocado_in_bowl_mashed)
-      (not (is ?avocado avocado_in_bowl_scooped))
-    )
   )
 
   (:action pick-and-place_u67
@@ -353,26 +111,6 @@
       (not (is ?lime lime_halved_on_cutting_board))
       (not (is ?juicer juicer_empty))
       (not (is ?lime_juice not-yet-made))
-    )
-  )
-
-  (:action pour_u70
-    ; unit 70: pour from 07-guacamole.foon:90
-    ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {avocado}), avocado (in [bowl], mashed) -> bowl (contains {avocado, lime juice}), lime juice (in [bowl])
-    :parameters (?lime_juice - lime_juice ?bowl - bowl)
-    :precondition (and
-      (occupied juicer_contains_lime_juice)
-      (is ?lime_juice lime_juice_in_juicer)
-      (is ?bowl bowl_contains_avocado)
-      (occupied avocado_in_bowl_mashed)
-    )
-    :effect (and
-      (is ?lime_juice lime_juice_in_bowl)
-      (occupied lime_juice_in_bowl)
-      (is ?bowl bowl_contains_avocado_lime_juice)
-      (occupied bowl_contains_avocado_lime_juice)
-      (not (is ?lime_juice lime_juice_in_juicer))
-      (not (is ?bowl bowl_contains_avocado))
     )
   )
 

@@ -1,41 +1,30 @@
-; foon2pddl, encoding instances, level 3: 24 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 18 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 20 (avocado 1, black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, fork 1, greek salad 1, juicer 1, knife 1, lime 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, spoon 1, tomato 1)
+; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    avocado - physical-object
     black_olive - physical-object
     bowl - physical-object
     cucumber - physical-object
     cutting_board - physical-object
     feta_cheese - physical-object
-    fork - physical-object
     greek_salad - physical-object
-    juicer - physical-object
     knife - physical-object
-    lime - physical-object
     olive_oil - physical-object
     onion - physical-object
     oregano - physical-object
     red_wine_vinegar - physical-object
     salad_tongs - physical-object
-    spoon - physical-object
     tomato - physical-object
   )
   (:constants
     not-yet-made - object-state
-    avocado_halved_on_cutting_board - object-state
-    avocado_in_bowl_mashed - object-state
-    avocado_in_bowl_scooped - object-state
-    avocado_on_cutting_board_whole - object-state
-    avocado_whole - object-state
     black_olive_in_bowl_pitted - object-state
     black_olive_pitted - object-state
-    bowl_contains_avocado - object-state
     bowl_contains_avocado_lime_juice - object-state
     bowl_contains_avocado_lime_juice_onion - object-state
     bowl_contains_avocado_lime_juice_onion_tomato - object-state
@@ -52,21 +41,14 @@
     cucumber_on_cutting_board_sliced - object-state
     cucumber_on_cutting_board_whole - object-state
     cucumber_whole - object-state
-    cutting_board_contains_avocado - object-state
     cutting_board_contains_cucumber - object-state
-    cutting_board_contains_lime - object-state
     cutting_board_contains_onion - object-state
     cutting_board_contains_tomato - object-state
     cutting_board_empty - object-state
     feta_cheese_crumbled - object-state
     feta_cheese_crumbled_in_bowl - object-state
-    fork_plain - object-state
     greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re - object-state
-    juicer_empty - object-state
     knife_plain - object-state
-    lime_halved_on_cutting_board - object-state
-    lime_on_cutting_board_whole - object-state
-    lime_whole - object-state
     olive_oil_in_bottle - object-state
     olive_oil_in_bowl - object-state
     onion_chopped_in_bowl - object-state
@@ -81,7 +63,6 @@
     red_wine_vinegar_in_bottle - object-state
     red_wine_vinegar_in_bowl - object-state
     salad_tongs_plain - object-state
-    spoon_plain - object-state
     tomato_chopped_in_bowl - object-state
     tomato_chopped_on_cutting_board - object-state
     tomato_on_cutting_board_whole - object-state
@@ -169,104 +150,6 @@
     :effect (and
       (is ?tomato tomato_chopped_on_cutting_board)
       (not (is ?tomato tomato_on_cutting_board_whole))
-    )
-  )
-
-  (:action pick-and-place_u63
-    ; unit 63: pick-and-place from 07-guacamole.foon:3
-    ; pick-and-place: cutting board (empty), avocado (whole) -> cutting board (contains {avocado}), avocado (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?avocado - avocado)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?avocado avocado_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_avocado)
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?avocado avocado_whole))
-    )
-  )
-
-  (:action cut_u64
-    ; unit 64: cut from 07-guacamole.foon:14
-    ; cut: cutting board (contains {avocado}), avocado (on [cutting board], whole), knife -> cutting board (contains {avocado}), avocado (halved, on [cutting board]), knife
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (not (is ?avocado avocado_on_cutting_board_whole))
-    )
-  )
-
-  (:action scoop_u65
-    ; unit 65: scoop from 07-guacamole.foon:28
-    ; scoop: avocado (halved, on [cutting board]), spoon, bowl (empty) -> bowl (contains {avocado}), avocado (in [bowl], scooped), spoon
-    :parameters (?avocado - avocado ?bowl - bowl)
-    :precondition (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (occupied spoon_plain)
-      (is ?bowl bowl_empty)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (is ?bowl bowl_contains_avocado)
-      (occupied bowl_contains_avocado)
-      (not (is ?avocado avocado_halved_on_cutting_board))
-      (not (is ?bowl bowl_empty))
-    )
-  )
-
-  (:action mash_u66
-    ; unit 66: mash from 07-guacamole.foon:42
-    ; mash: avocado (in [bowl], scooped), fork -> avocado (in [bowl], mashed), fork
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (occupied fork_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_mashed)
-      (occupied avocado_in_bowl_mashed)
-      (not (is ?avocado avocado_in_bowl_scooped))
-    )
-  )
-
-  (:action pick-and-place_u67
-    ; unit 67: pick-and-place from 07-guacamole.foon:52, 09-fruit_salad.foon:83
-    ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?lime - lime)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?lime lime_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_lime)
-      (occupied cutting_board_contains_lime)
-      (is ?lime lime_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?lime lime_whole))
-    )
-  )
-
-  (:action cut_u68
-    ; unit 68: cut from 07-guacamole.foon:63, 09-fruit_salad.foon:94
-    ; cut: cutting board (contains {lime}), lime (on [cutting board], whole), knife -> cutting board (contains {lime}), lime (halved, on [cutting board]), knife
-    :parameters (?lime - lime)
-    :precondition (and
-      (occupied cutting_board_contains_lime)
-      (is ?lime lime_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?lime lime_halved_on_cutting_board)
-      (occupied lime_halved_on_cutting_board)
-      (not (is ?lime lime_on_cutting_board_whole))
     )
   )
 

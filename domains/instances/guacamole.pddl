@@ -1,33 +1,26 @@
-; foon2pddl, encoding instances, level 3: 37 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 22 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 25 (avocado 1, banana 1, black pepper 1, bowl 1, cilantro 1, cucumber 1, cutting board 5, egg 1, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, milk 1, onion 1, salt 1, spoon 1, strawberry 1, tomato 1, whisk 1)
+; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
     avocado - physical-object
-    banana - physical-object
-    black_pepper - physical-object
     bowl - physical-object
     cilantro - physical-object
-    cucumber - physical-object
     cutting_board - physical-object
-    egg - physical-object
     fork - physical-object
     guacamole - physical-object
     juicer - physical-object
     knife - physical-object
     lime - physical-object
     lime_juice - physical-object
-    milk - physical-object
     onion - physical-object
     salt - physical-object
     spoon - physical-object
-    strawberry - physical-object
     tomato - physical-object
-    whisk - physical-object
   )
   (:constants
     not-yet-made - object-state
@@ -36,13 +29,6 @@
     avocado_in_bowl_scooped - object-state
     avocado_on_cutting_board_whole - object-state
     avocado_whole - object-state
-    banana_in_bowl_sliced - object-state
-    banana_on_cutting_board_peeled - object-state
-    banana_on_cutting_board_sliced - object-state
-    banana_peeled - object-state
-    banana_whole - object-state
-    black_pepper_ground - object-state
-    black_pepper_in_bowl - object-state
     bowl_contains_avocado - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_tomato - object-state
@@ -51,34 +37,20 @@
     bowl_contains_avocado_lime_juice_onion_tomato - object-state
     bowl_contains_banana_lime_juice_strawberry - object-state
     bowl_contains_banana_strawberry - object-state
-    bowl_contains_black_pepper_egg_milk_salt - object-state
     bowl_contains_cucumber - object-state
     bowl_contains_cucumber_tomato - object-state
-    bowl_contains_egg - object-state
-    bowl_contains_egg_milk - object-state
     bowl_contains_guacamole - object-state
-    bowl_contains_strawberry - object-state
     bowl_empty - object-state
     cilantro_chopped_in_bowl - object-state
     cilantro_chopped_on_cutting_board - object-state
     cilantro_fresh - object-state
     cilantro_fresh_on_cutting_board - object-state
-    cucumber_in_bowl_sliced - object-state
-    cucumber_on_cutting_board_sliced - object-state
-    cucumber_on_cutting_board_whole - object-state
-    cucumber_whole - object-state
     cutting_board_contains_avocado - object-state
-    cutting_board_contains_banana - object-state
     cutting_board_contains_cilantro - object-state
-    cutting_board_contains_cucumber - object-state
     cutting_board_contains_lime - object-state
     cutting_board_contains_onion - object-state
-    cutting_board_contains_strawberry - object-state
     cutting_board_contains_tomato - object-state
     cutting_board_empty - object-state
-    egg_beaten_in_bowl - object-state
-    egg_cracked_in_bowl - object-state
-    egg_whole - object-state
     fork_plain - object-state
     guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl - object-state
     juicer_contains_lime_juice - object-state
@@ -90,8 +62,6 @@
     lime_whole - object-state
     lime_juice_in_bowl - object-state
     lime_juice_in_juicer - object-state
-    milk_in_bowl - object-state
-    milk_in_carton - object-state
     onion_chopped_in_bowl - object-state
     onion_chopped_on_cutting_board - object-state
     onion_on_cutting_board_peeled - object-state
@@ -100,106 +70,15 @@
     salt_granulated - object-state
     salt_in_bowl - object-state
     spoon_plain - object-state
-    strawberry_in_bowl_sliced - object-state
-    strawberry_on_cutting_board_sliced - object-state
-    strawberry_on_cutting_board_whole - object-state
-    strawberry_whole - object-state
     tomato_chopped_in_bowl - object-state
     tomato_chopped_on_cutting_board - object-state
     tomato_on_cutting_board_whole - object-state
     tomato_whole - object-state
-    whisk_plain - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
-  )
-
-  (:action crack_u17
-    ; unit 17: crack from 03-scrambled_eggs.foon:3, 05-french_toast.foon:3
-    ; crack: bowl (empty), egg (whole) -> bowl (contains {egg}), egg (cracked, in [bowl])
-    :parameters (?bowl - bowl ?egg - egg)
-    :precondition (and
-      (is ?bowl bowl_empty)
-      (is ?egg egg_whole)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_egg)
-      (is ?egg egg_cracked_in_bowl)
-      (not (is ?bowl bowl_empty))
-      (not (is ?egg egg_whole))
-    )
-  )
-
-  (:action beat_u18
-    ; unit 18: beat from 03-scrambled_eggs.foon:14
-    ; beat: egg (cracked, in [bowl]), whisk -> egg (beaten, in [bowl]), whisk
-    :parameters (?egg - egg)
-    :precondition (and
-      (is ?egg egg_cracked_in_bowl)
-      (occupied whisk_plain)
-    )
-    :effect (and
-      (is ?egg egg_beaten_in_bowl)
-      (occupied egg_beaten_in_bowl)
-      (not (is ?egg egg_cracked_in_bowl))
-    )
-  )
-
-  (:action pour_u19
-    ; unit 19: pour from 03-scrambled_eggs.foon:24, 05-french_toast.foon:24
-    ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
-    :parameters (?bowl - bowl ?milk - milk)
-    :precondition (and
-      (is ?bowl bowl_contains_egg)
-      (occupied egg_beaten_in_bowl)
-      (is ?milk milk_in_carton)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_egg_milk)
-      (is ?milk milk_in_bowl)
-      (occupied milk_in_bowl)
-      (not (is ?bowl bowl_contains_egg))
-      (not (is ?milk milk_in_carton))
-    )
-  )
-
-  (:action sprinkle_u20
-    ; unit 20: sprinkle from 03-scrambled_eggs.foon:37
-    ; sprinkle: bowl (contains {egg, milk}), salt (granulated), black pepper (ground) -> bowl (contains {black pepper, egg, milk, salt}), salt (in [bowl]), black pepper (in [bowl])
-    :parameters (?bowl - bowl ?salt - salt ?black_pepper - black_pepper)
-    :precondition (and
-      (is ?bowl bowl_contains_egg_milk)
-      (is ?salt salt_granulated)
-      (is ?black_pepper black_pepper_ground)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
-      (occupied bowl_contains_black_pepper_egg_milk_salt)
-      (is ?salt salt_in_bowl)
-      (occupied salt_in_bowl)
-      (is ?black_pepper black_pepper_in_bowl)
-      (occupied black_pepper_in_bowl)
-      (not (is ?bowl bowl_contains_egg_milk))
-      (not (is ?salt salt_granulated))
-      (not (is ?black_pepper black_pepper_ground))
-    )
-  )
-
-  (:action beat_u39
-    ; unit 39: beat from 05-french_toast.foon:14
-    ; beat: egg (cracked, in [bowl]), fork -> egg (beaten, in [bowl]), fork
-    :parameters (?egg - egg)
-    :precondition (and
-      (is ?egg egg_cracked_in_bowl)
-      (occupied fork_plain)
-    )
-    :effect (and
-      (is ?egg egg_beaten_in_bowl)
-      (occupied egg_beaten_in_bowl)
-      (not (is ?egg egg_cracked_in_bowl))
-    )
   )
 
   (:action pick-and-place_u47
@@ -542,55 +421,6 @@
     )
   )
 
-  (:action pick-and-place_u78
-    ; unit 78: pick-and-place from 08-greek_salad.foon:3
-    ; pick-and-place: cutting board (empty), cucumber (whole) -> cutting board (contains {cucumber}), cucumber (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?cucumber - cucumber)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?cucumber cucumber_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_cucumber)
-      (occupied cutting_board_contains_cucumber)
-      (is ?cucumber cucumber_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?cucumber cucumber_whole))
-    )
-  )
-
-  (:action slice_u79
-    ; unit 79: slice from 08-greek_salad.foon:14
-    ; slice: cutting board (contains {cucumber}), cucumber (on [cutting board], whole), knife -> cutting board (contains {cucumber}), cucumber (on [cutting board], sliced), knife
-    :parameters (?cucumber - cucumber)
-    :precondition (and
-      (occupied cutting_board_contains_cucumber)
-      (is ?cucumber cucumber_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?cucumber cucumber_on_cutting_board_sliced)
-      (not (is ?cucumber cucumber_on_cutting_board_whole))
-    )
-  )
-
-  (:action pick-and-place_u81
-    ; unit 81: pick-and-place from 08-greek_salad.foon:92
-    ; pick-and-place: bowl (empty), cucumber (on [cutting board], sliced) -> bowl (contains {cucumber}), cucumber (in [bowl], sliced)
-    :parameters (?bowl - bowl ?cucumber - cucumber)
-    :precondition (and
-      (is ?bowl bowl_empty)
-      (is ?cucumber cucumber_on_cutting_board_sliced)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_cucumber)
-      (is ?cucumber cucumber_in_bowl_sliced)
-      (occupied cucumber_in_bowl_sliced)
-      (not (is ?bowl bowl_empty))
-      (not (is ?cucumber cucumber_on_cutting_board_sliced))
-    )
-  )
-
   (:action pick-and-place_u82
     ; unit 82: pick-and-place from 08-greek_salad.foon:104
     ; pick-and-place: bowl (contains {cucumber}), tomato (chopped, on [cutting board]) -> bowl (contains {cucumber, tomato}), tomato (chopped, in [bowl])
@@ -606,117 +436,6 @@
       (occupied tomato_chopped_in_bowl)
       (not (is ?bowl bowl_contains_cucumber))
       (not (is ?tomato tomato_chopped_on_cutting_board))
-    )
-  )
-
-  (:action pick-and-place_u89
-    ; unit 89: pick-and-place from 09-fruit_salad.foon:3
-    ; pick-and-place: cutting board (empty), strawberry (whole) -> cutting board (contains {strawberry}), strawberry (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?strawberry - strawberry)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?strawberry strawberry_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_strawberry)
-      (occupied cutting_board_contains_strawberry)
-      (is ?strawberry strawberry_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?strawberry strawberry_whole))
-    )
-  )
-
-  (:action slice_u90
-    ; unit 90: slice from 09-fruit_salad.foon:14
-    ; slice: cutting board (contains {strawberry}), strawberry (on [cutting board], whole), knife -> cutting board (contains {strawberry}), strawberry (on [cutting board], sliced), knife
-    :parameters (?strawberry - strawberry)
-    :precondition (and
-      (occupied cutting_board_contains_strawberry)
-      (is ?strawberry strawberry_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?strawberry strawberry_on_cutting_board_sliced)
-      (not (is ?strawberry strawberry_on_cutting_board_whole))
-    )
-  )
-
-  (:action peel_u91
-    ; unit 91: peel from 09-fruit_salad.foon:28
-    ; peel: banana (whole) -> banana (peeled)
-    :parameters (?banana - banana)
-    :precondition (and
-      (is ?banana banana_whole)
-    )
-    :effect (and
-      (is ?banana banana_peeled)
-      (not (is ?banana banana_whole))
-    )
-  )
-
-  (:action pick-and-place_u92
-    ; unit 92: pick-and-place from 09-fruit_salad.foon:34
-    ; pick-and-place: cutting board (empty), banana (peeled) -> cutting board (contains {banana}), banana (on [cutting board], peeled)
-    :parameters (?cutting_board - cutting_board ?banana - banana)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?banana banana_peeled)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_banana)
-      (occupied cutting_board_contains_banana)
-      (is ?banana banana_on_cutting_board_peeled)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?banana banana_peeled))
-    )
-  )
-
-  (:action slice_u93
-    ; unit 93: slice from 09-fruit_salad.foon:45
-    ; slice: cutting board (contains {banana}), banana (on [cutting board], peeled), knife -> cutting board (contains {banana}), banana (on [cutting board], sliced), knife
-    :parameters (?banana - banana)
-    :precondition (and
-      (occupied cutting_board_contains_banana)
-      (is ?banana banana_on_cutting_board_peeled)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?banana banana_on_cutting_board_sliced)
-      (not (is ?banana banana_on_cutting_board_peeled))
-    )
-  )
-
-  (:action pick-and-place_u94
-    ; unit 94: pick-and-place from 09-fruit_salad.foon:59
-    ; pick-and-place: bowl (empty), strawberry (on [cutting board], sliced) -> bowl (contains {strawberry}), strawberry (in [bowl], sliced)
-    :parameters (?bowl - bowl ?strawberry - strawberry)
-    :precondition (and
-      (is ?bowl bowl_empty)
-      (is ?strawberry strawberry_on_cutting_board_sliced)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_strawberry)
-      (is ?strawberry strawberry_in_bowl_sliced)
-      (occupied strawberry_in_bowl_sliced)
-      (not (is ?bowl bowl_empty))
-      (not (is ?strawberry strawberry_on_cutting_board_sliced))
-    )
-  )
-
-  (:action pick-and-place_u95
-    ; unit 95: pick-and-place from 09-fruit_salad.foon:71
-    ; pick-and-place: bowl (contains {strawberry}), banana (on [cutting board], sliced) -> bowl (contains {banana, strawberry}), banana (in [bowl], sliced)
-    :parameters (?bowl - bowl ?banana - banana)
-    :precondition (and
-      (is ?bowl bowl_contains_strawberry)
-      (is ?banana banana_on_cutting_board_sliced)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_banana_strawberry)
-      (is ?banana banana_in_bowl_sliced)
-      (occupied banana_in_bowl_sliced)
-      (not (is ?bowl bowl_contains_strawberry))
-      (not (is ?banana banana_on_cutting_board_sliced))
     )
   )
 

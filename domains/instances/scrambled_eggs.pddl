@@ -1,51 +1,32 @@
-; foon2pddl, encoding instances, level 3: 30 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 13 of 101 units after relevance pruning
 ; goal: scrambled eggs (2 candidate nodes)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 24 (avocado 1, black pepper 1, bowl 1, butter 1, cilantro 1, cutting board 1, egg 1, egg mixture 1, fork 1, frying pan 1, juicer 1, knife 1, lime 1, milk 1, onion 1, plate 1, salt 1, scrambled eggs 1, spatula 1, spoon 1, stove 2, tomato 1, whisk 1)
+; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    avocado - physical-object
     black_pepper - physical-object
     bowl - physical-object
     butter - physical-object
-    cilantro - physical-object
-    cutting_board - physical-object
     egg - physical-object
     egg_mixture - physical-object
     fork - physical-object
     frying_pan - physical-object
-    juicer - physical-object
-    knife - physical-object
-    lime - physical-object
     milk - physical-object
-    onion - physical-object
-    plate - physical-object
     salt - physical-object
     scrambled_eggs - physical-object
     spatula - physical-object
-    spoon - physical-object
     stove - physical-object
-    tomato - physical-object
     whisk - physical-object
   )
   (:constants
     not-yet-made - object-state
-    avocado_halved_on_cutting_board - object-state
-    avocado_in_bowl_mashed - object-state
-    avocado_in_bowl_scooped - object-state
-    avocado_on_cutting_board_whole - object-state
-    avocado_whole - object-state
     black_pepper_ground - object-state
     black_pepper_in_bowl - object-state
-    bowl_contains_avocado - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_tomato - object-state
-    bowl_contains_avocado_lime_juice - object-state
-    bowl_contains_avocado_lime_juice_onion - object-state
-    bowl_contains_avocado_lime_juice_onion_tomato - object-state
     bowl_contains_black_pepper_egg_milk_salt - object-state
     bowl_contains_egg - object-state
     bowl_contains_egg_milk - object-state
@@ -54,16 +35,6 @@
     butter_in_frying_pan_melted - object-state
     butter_in_frying_pan_solid - object-state
     butter_solid - object-state
-    cilantro_chopped_in_bowl - object-state
-    cilantro_chopped_on_cutting_board - object-state
-    cilantro_fresh - object-state
-    cilantro_fresh_on_cutting_board - object-state
-    cutting_board_contains_avocado - object-state
-    cutting_board_contains_cilantro - object-state
-    cutting_board_contains_lime - object-state
-    cutting_board_contains_onion - object-state
-    cutting_board_contains_tomato - object-state
-    cutting_board_empty - object-state
     egg_beaten_in_bowl - object-state
     egg_cracked_in_bowl - object-state
     egg_whole - object-state
@@ -75,32 +46,15 @@
     frying_pan_contains_scrambled_eggs_on_stove - object-state
     frying_pan_empty - object-state
     frying_pan_empty_on_stove - object-state
-    juicer_empty - object-state
-    knife_plain - object-state
-    lime_halved_on_cutting_board - object-state
-    lime_on_cutting_board_whole - object-state
-    lime_whole - object-state
     milk_in_bowl - object-state
     milk_in_carton - object-state
-    onion_chopped_in_bowl - object-state
-    onion_chopped_on_cutting_board - object-state
-    onion_on_cutting_board_peeled - object-state
-    onion_on_cutting_board_whole - object-state
-    onion_whole - object-state
-    plate_contains_scrambled_eggs - object-state
-    plate_empty - object-state
     salt_granulated - object-state
     salt_in_bowl - object-state
     scrambled_eggs_cooked_in_frying_pan - object-state
     scrambled_eggs_cooked_on_plate - object-state
     spatula_plain - object-state
-    spoon_plain - object-state
     stove_off - object-state
     stove_on - object-state
-    tomato_chopped_in_bowl - object-state
-    tomato_chopped_on_cutting_board - object-state
-    tomato_on_cutting_board_whole - object-state
-    tomato_whole - object-state
     whisk_plain - object-state
   )
   (:predicates
@@ -294,28 +248,9 @@
       (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
       (occupied frying_pan_contains_scrambled_eggs_on_stove)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (occupied scrambled_eggs_cooked_in_frying_pan)
       (not (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove))
       (not (is ?scrambled_eggs not-yet-made))
-    )
-  )
-
-  (:action scoop_u28
-    ; unit 28: scoop from 03-scrambled_eggs.foon:146
-    ; scoop: frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {scrambled eggs}), scrambled eggs (cooked, on [plate]), spatula
-    :parameters (?scrambled_eggs - scrambled_eggs ?plate - plate)
-    :precondition (and
-      (occupied frying_pan_contains_scrambled_eggs_on_stove)
-      (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
-      (occupied spatula_plain)
-      (is ?plate plate_empty)
-    )
-    :effect (and
-      (is ?scrambled_eggs scrambled_eggs_cooked_on_plate)
-      (occupied scrambled_eggs_cooked_on_plate)
-      (is ?plate plate_contains_scrambled_eggs)
-      (occupied plate_contains_scrambled_eggs)
-      (not (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan))
-      (not (is ?plate plate_empty))
     )
   )
 
@@ -331,266 +266,6 @@
       (is ?egg egg_beaten_in_bowl)
       (occupied egg_beaten_in_bowl)
       (not (is ?egg egg_cracked_in_bowl))
-    )
-  )
-
-  (:action pick-and-place_u47
-    ; unit 47: pick-and-place from 06-tomato_soup.foon:3, 07-guacamole.foon:105, 08-greek_salad.foon:53
-    ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?onion - onion)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?onion onion_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_onion)
-      (occupied cutting_board_contains_onion)
-      (is ?onion onion_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?onion onion_whole))
-    )
-  )
-
-  (:action peel_u48
-    ; unit 48: peel from 06-tomato_soup.foon:14, 07-guacamole.foon:116, 08-greek_salad.foon:64
-    ; peel: cutting board (contains {onion}), onion (on [cutting board], whole), knife -> cutting board (contains {onion}), onion (on [cutting board], peeled), knife
-    :parameters (?onion - onion)
-    :precondition (and
-      (occupied cutting_board_contains_onion)
-      (is ?onion onion_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?onion onion_on_cutting_board_peeled)
-      (not (is ?onion onion_on_cutting_board_whole))
-    )
-  )
-
-  (:action chop_u49
-    ; unit 49: chop from 06-tomato_soup.foon:28, 07-guacamole.foon:130
-    ; chop: cutting board (contains {onion}), onion (on [cutting board], peeled), knife -> cutting board (contains {onion}), onion (chopped, on [cutting board]), knife
-    :parameters (?onion - onion)
-    :precondition (and
-      (occupied cutting_board_contains_onion)
-      (is ?onion onion_on_cutting_board_peeled)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?onion onion_chopped_on_cutting_board)
-      (not (is ?onion onion_on_cutting_board_peeled))
-    )
-  )
-
-  (:action pick-and-place_u50
-    ; unit 50: pick-and-place from 06-tomato_soup.foon:42, 07-guacamole.foon:156, 08-greek_salad.foon:28
-    ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?tomato - tomato)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?tomato tomato_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_tomato)
-      (occupied cutting_board_contains_tomato)
-      (is ?tomato tomato_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?tomato tomato_whole))
-    )
-  )
-
-  (:action chop_u51
-    ; unit 51: chop from 06-tomato_soup.foon:53, 07-guacamole.foon:167, 08-greek_salad.foon:39
-    ; chop: cutting board (contains {tomato}), tomato (on [cutting board], whole), knife -> cutting board (contains {tomato}), tomato (chopped, on [cutting board]), knife
-    :parameters (?tomato - tomato)
-    :precondition (and
-      (occupied cutting_board_contains_tomato)
-      (is ?tomato tomato_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?tomato tomato_chopped_on_cutting_board)
-      (not (is ?tomato tomato_on_cutting_board_whole))
-    )
-  )
-
-  (:action pick-and-place_u63
-    ; unit 63: pick-and-place from 07-guacamole.foon:3
-    ; pick-and-place: cutting board (empty), avocado (whole) -> cutting board (contains {avocado}), avocado (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?avocado - avocado)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?avocado avocado_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_avocado)
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?avocado avocado_whole))
-    )
-  )
-
-  (:action cut_u64
-    ; unit 64: cut from 07-guacamole.foon:14
-    ; cut: cutting board (contains {avocado}), avocado (on [cutting board], whole), knife -> cutting board (contains {avocado}), avocado (halved, on [cutting board]), knife
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (occupied cutting_board_contains_avocado)
-      (is ?avocado avocado_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (not (is ?avocado avocado_on_cutting_board_whole))
-    )
-  )
-
-  (:action scoop_u65
-    ; unit 65: scoop from 07-guacamole.foon:28
-    ; scoop: avocado (halved, on [cutting board]), spoon, bowl (empty) -> bowl (contains {avocado}), avocado (in [bowl], scooped), spoon
-    :parameters (?avocado - avocado ?bowl - bowl)
-    :precondition (and
-      (is ?avocado avocado_halved_on_cutting_board)
-      (occupied spoon_plain)
-      (is ?bowl bowl_empty)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (is ?bowl bowl_contains_avocado)
-      (occupied bowl_contains_avocado)
-      (not (is ?avocado avocado_halved_on_cutting_board))
-      (not (is ?bowl bowl_empty))
-    )
-  )
-
-  (:action mash_u66
-    ; unit 66: mash from 07-guacamole.foon:42
-    ; mash: avocado (in [bowl], scooped), fork -> avocado (in [bowl], mashed), fork
-    :parameters (?avocado - avocado)
-    :precondition (and
-      (is ?avocado avocado_in_bowl_scooped)
-      (occupied fork_plain)
-    )
-    :effect (and
-      (is ?avocado avocado_in_bowl_mashed)
-      (occupied avocado_in_bowl_mashed)
-      (not (is ?avocado avocado_in_bowl_scooped))
-    )
-  )
-
-  (:action pick-and-place_u67
-    ; unit 67: pick-and-place from 07-guacamole.foon:52, 09-fruit_salad.foon:83
-    ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?lime - lime)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?lime lime_whole)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_lime)
-      (occupied cutting_board_contains_lime)
-      (is ?lime lime_on_cutting_board_whole)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?lime lime_whole))
-    )
-  )
-
-  (:action cut_u68
-    ; unit 68: cut from 07-guacamole.foon:63, 09-fruit_salad.foon:94
-    ; cut: cutting board (contains {lime}), lime (on [cutting board], whole), knife -> cutting board (contains {lime}), lime (halved, on [cutting board]), knife
-    :parameters (?lime - lime)
-    :precondition (and
-      (occupied cutting_board_contains_lime)
-      (is ?lime lime_on_cutting_board_whole)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?lime lime_halved_on_cutting_board)
-      (occupied lime_halved_on_cutting_board)
-      (not (is ?lime lime_on_cutting_board_whole))
-    )
-  )
-
-  (:action pick-and-place_u71
-    ; unit 71: pick-and-place from 07-guacamole.foon:144
-    ; pick-and-place: bowl (contains {avocado, lime juice}), onion (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion}), onion (chopped, in [bowl])
-    :parameters (?bowl - bowl ?onion - onion)
-    :precondition (and
-      (is ?bowl bowl_contains_avocado_lime_juice)
-      (is ?onion onion_chopped_on_cutting_board)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_avocado_lime_juice_onion)
-      (is ?onion onion_chopped_in_bowl)
-      (occupied onion_chopped_in_bowl)
-      (not (is ?bowl bowl_contains_avocado_lime_juice))
-      (not (is ?onion onion_chopped_on_cutting_board))
-    )
-  )
-
-  (:action pick-and-place_u72
-    ; unit 72: pick-and-place from 07-guacamole.foon:181
-    ; pick-and-place: bowl (contains {avocado, lime juice, onion}), tomato (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion, tomato}), tomato (chopped, in [bowl])
-    :parameters (?bowl - bowl ?tomato - tomato)
-    :precondition (and
-      (is ?bowl bowl_contains_avocado_lime_juice_onion)
-      (is ?tomato tomato_chopped_on_cutting_board)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
-      (is ?tomato tomato_chopped_in_bowl)
-      (occupied tomato_chopped_in_bowl)
-      (not (is ?bowl bowl_contains_avocado_lime_juice_onion))
-      (not (is ?tomato tomato_chopped_on_cutting_board))
-    )
-  )
-
-  (:action pick-and-place_u73
-    ; unit 73: pick-and-place from 07-guacamole.foon:193
-    ; pick-and-place: cutting board (empty), cilantro (fresh) -> cutting board (contains {cilantro}), cilantro (fresh, on [cutting board])
-    :parameters (?cutting_board - cutting_board ?cilantro - cilantro)
-    :precondition (and
-      (is ?cutting_board cutting_board_empty)
-      (is ?cilantro cilantro_fresh)
-    )
-    :effect (and
-      (is ?cutting_board cutting_board_contains_cilantro)
-      (occupied cutting_board_contains_cilantro)
-      (is ?cilantro cilantro_fresh_on_cutting_board)
-      (not (is ?cutting_board cutting_board_empty))
-      (not (is ?cilantro cilantro_fresh))
-    )
-  )
-
-  (:action chop_u74
-    ; unit 74: chop from 07-guacamole.foon:204
-    ; chop: cutting board (contains {cilantro}), cilantro (fresh, on [cutting board]), knife -> cutting board (contains {cilantro}), cilantro (chopped, on [cutting board]), knife
-    :parameters (?cilantro - cilantro)
-    :precondition (and
-      (occupied cutting_board_contains_cilantro)
-      (is ?cilantro cilantro_fresh_on_cutting_board)
-      (occupied knife_plain)
-    )
-    :effect (and
-      (is ?cilantro cilantro_chopped_on_cutting_board)
-      (not (is ?cilantro cilantro_fresh_on_cutting_board))
-    )
-  )
-
-  (:action pick-and-place_u75
-    ; unit 75: pick-and-place from 07-guacamole.foon:218
-    ; pick-and-place: bowl (contains {avocado, lime juice, onion, tomato}), cilantro (chopped, on [cutting board]) -> bowl (contains {avocado, cilantro, lime juice, onion, tomato}), cilantro (chopped, in [bowl])
-    :parameters (?bowl - bowl ?cilantro - cilantro)
-    :precondition (and
-      (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
-      (is ?cilantro cilantro_chopped_on_cutting_board)
-    )
-    :effect (and
-      (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
-      (is ?cilantro cilantro_chopped_in_bowl)
-      (occupied cilantro_chopped_in_bowl)
-      (not (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato))
-      (not (is ?cilantro cilantro_chopped_on_cutting_board))
     )
   )
 
@@ -614,9 +289,9 @@
 
   (:action reach-goal-1
     ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
-    :parameters (?x - scrambled_eggs)
+    :parameters ()
     :precondition (and
-      (is ?x scrambled_eggs_cooked_in_frying_pan)
+      (occupied scrambled_eggs_cooked_in_frying_pan)
     )
     :effect (and
       (goal-reached)

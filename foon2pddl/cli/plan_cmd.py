@@ -22,6 +22,8 @@ from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
 from .options import (
+    category_chains,
+    category_types_option,
     check_output,
     check_time_limit,
     constraint_inputs,
@@ -33,12 +35,14 @@ from .options import (
     goal_file_option,
     goal_option,
     goals_option,
+    instances_option,
     kitchen_option,
     level_option,
     load_pddl_view,
     load_view,
     network_option,
     other_networks_hint,
+    parse_instances,
     paths_argument,
     prune_option,
     rates_option,
@@ -79,6 +83,11 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "validation": validation,
         "tree": json.loads(tree_json) if tree_json is not None else None,
     }
+    if d is not None and getattr(d, "instance_check", None) is not None:
+        from ..planners.instance_plan import instance_plan_json
+
+        validation["instances"] = check(d.instance_check)
+        data["instances"] = instance_plan_json(d.instance_plan)
     return json.dumps(data, indent=2) + "\n"
 
 
@@ -91,6 +100,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @utensils_option
 @containment_option
 @encoding_option
+@instances_option
+@category_types_option
 @level_option
 @network_option
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
@@ -122,7 +133,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
                    "a directory receiving one tree file per solved goal.")
-def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, level, network, planner,
+def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
+          level, network, planner,
           planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
           constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
@@ -160,7 +172,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     try:
         outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                       up_validate=up_validate, constraints=cons, search=config)
+                       up_validate=up_validate, constraints=cons, search=config,
+                       instances=parse_instances(instances),
+                       categories=category_chains(foon) if category_types and encoding == "instances" else ())
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
         click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
@@ -170,6 +184,12 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     data: str | None = None
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
+        decoded = getattr(outcome, "decoded", None)  # a lifted GEN outcome has none
+        if fmt == "steps" and decoded is not None and decoded.instance_trace is not None:
+            from ..planners.instance_plan import trace_lines
+
+            data += "physical objects, step by step (instances encoding):\n" + "\n".join(
+                trace_lines(decoded.instance_trace, decoded.instance_plan)) + "\n"
     if fmt == "json":
         data = outcome_json(outcome, timings, data)
     else:

@@ -6,7 +6,9 @@ which does the work shared by the goals of the batch (its time is the batch's
 reachability fixpoint (complete, optimal) or the network index (greedy);
 `fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once and
 swap goals in the translated task (`pddl.solve.GoalReplanner`); `fd-state`
-compiles and plans each goal afresh (the state encoding is pruned per goal);
+and `fd-instances` compile and plan each goal afresh (both are pruned per goal;
+`fd-instances` plans with physical objects, so it may need a wash or a second
+bowl where FOON's semantics does not, and solve fewer goals than `native-complete`);
 `fd-lifted-gen` plans over the concrete network with category types, on the
 GEN network only. Every tree a solver returns is validated by simulation from
 the kitchen the solver was given; a tree that fails is an `error`.
@@ -243,6 +245,10 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
     Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
                        "encoding's STRIPS semantics; FOON simulation reported apart)",
            lambda s: _FdFresh(s, "state"), planner=True, cost=6),
+    Solver("fd-instances", "Fast Downward lama-first, instances encoding (physical objects whose states change, "
+                           "counts derived per goal), compiled per goal (plans replayed on the objects and "
+                           "validated as FOON trees)",
+           lambda s: _FdFresh(s, "instances"), planner=True, cost=6),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
            _LiftedGen, networks=("gen",), planner=True, role=Role.CONCRETE, cost=4),
 )}

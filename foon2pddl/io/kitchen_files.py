@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
@@ -60,20 +61,30 @@ def read_json_nodes(path: Path) -> list[ObjectNode]:
     return nodes
 
 
-def read_node_lines(text: str, path: str) -> list[ObjectNode]:
-    """One node per line in the goal syntax (`onion: whole`); `#` comments allowed."""
+#: `2 x bowl: empty`: a node-per-line kitchen entry with an instance count.
+_COUNT = re.compile(r"(\d+)\s*[x\u00d7]\s+(\S.*)\Z")
+
+
+def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]:
+    """One node per line in the goal syntax (`onion: whole`), optionally counted (`2 x bowl: empty`).
+
+    The count is how many physical objects are in that state (the `instances` PDDL
+    encoding uses it; FOON's own semantics ignores it); None when not given. `#` comments allowed.
+    """
     from .goal_files import parse_goal_spec
 
-    nodes = []
+    nodes: list[tuple[ObjectNode, int | None]] = []
     for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only: U+2028 is not a line break here
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
+        counted = _COUNT.match(line)
+        count = int(counted.group(1)) if counted else None
         try:
-            spec = parse_goal_spec(line)
+            spec = parse_goal_spec(counted.group(2) if counted else line)
         except ValueError as exc:
             raise FoonSyntaxError(path, lineno, str(exc), line) from None
-        nodes.append(make_node(spec.label, spec.states or ()))
+        nodes.append((make_node(spec.label, spec.states or ()), count))
     return nodes
 
 
@@ -88,6 +99,7 @@ def looks_like_foon(text: str) -> bool:
 def read_kitchen(path: str | Path) -> Kitchen:
     """Read a kitchen file: `.json`, FOON-style O/S lines, or one goal-syntax node per line."""
     p = Path(path)
+    counts: dict[ObjectNode, int] = {}
     if p.suffix.lower() == ".json":
         nodes = read_json_nodes(p)
     else:
@@ -95,10 +107,14 @@ def read_kitchen(path: str | Path) -> Kitchen:
         if looks_like_foon(text):
             nodes = [n for n, _ in parse_objects(text, str(p))]
         else:
-            nodes = read_node_lines(text, str(p))
+            counted = read_node_lines(text, str(p))
+            nodes = [n for n, _ in counted]
+            for n, k in counted:
+                if k is not None:
+                    counts[n] = counts.get(n, 0) + k
     if not nodes:
         raise FoonSyntaxError(str(p), 0, "kitchen file lists no object nodes")
-    return Kitchen(frozenset(nodes), 3, str(p))
+    return Kitchen(frozenset(nodes), 3, str(p), tuple(sorted(counts.items())))
 
 
 def write_kitchen(kitchen: Kitchen) -> str:

@@ -20,9 +20,11 @@ So the unfolded plan (each unit fired F times, in plan order) is executable at
 the instance level with exactly these counts: the task is solvable whenever
 FOON's delete-free semantics is. O(sum of unit sizes) after the fixpoint.
 
-Every kitchen state the task's units use gets at least one instance (the
-kitchen has what it lists; a unit outside the unfolded plan, such as washing
-a knife, may need it). Counts can be stated instead: in the kitchen (`2 x bowl (empty)`: exactly that
+Objects the unfolded plan does not need are left out, even when the kitchen
+lists their state (one of each would put ~340 objects into a task on the
+universal FOON and make grounding take seconds to minutes); a unit outside the
+unfolded plan (washing a knife) keeps its schema only when its objects exist.
+Counts can be stated instead: in the kitchen (`2 x bowl (empty)`: exactly that
 many in that state) and per label (`--instances bowl=3`: three in each place the
 task can start a bowl: each of its kitchen states the task uses, and the
 not-yet-made pool when a unit makes bowls). Precedence: override, then the
@@ -169,7 +171,6 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
             return stated[node]
         return derived + extra
 
-    # The kitchen has what it lists: at least one instance in every kitchen state the task uses.
-    at_node = tuple((n, k) for n in sorted(nodes) if (k := count(max(at_kitchen[n], 1), n.label, n)) > 0)
+    at_node = tuple((n, k) for n in sorted(nodes) if (k := count(at_kitchen[n], n.label, n)) > 0)
     unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())))

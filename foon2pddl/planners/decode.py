@@ -10,9 +10,11 @@ Two checks always run: the plan against the task's own STRIPS semantics
 (`simulate_plan`: preconditions hold, deletes then adds, goal at the end) and
 the tree by FOON simulation from the kitchen, exactly like a native retrieval
 (`tasktree.validate`). Encodings with FOON's semantics (`tree`, `foon-compat`,
-`gen-lifted`) must pass both; the `state` encoding combines facts of different
+`gen-lifted`, `instances`) must pass both; the `state` encoding combines facts of different
 nodes, so its plans need only pass the first, and the FOON check is reported
-as information. On request, and when the task is small, the plan
+as information. The `instances` encoding keeps every step (a unit may fire more
+than once, on other objects) and adds a third check, the plan replayed on the
+physical instances (`instance_plan.simulate_instances`). On request, and when the task is small, the plan
 is also checked by unified-planning's sequential plan validator, independent
 of our code (it imports UP, ~1.5 s, hence opt-in).
 """
@@ -20,7 +22,7 @@ of our code (it imports UP, ~1.5 s, hence opt-in).
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..model.containment import containment_of
 from ..model.foon import FunctionalUnit, ObjectNode
@@ -39,6 +41,10 @@ __all__ = ["Decoded", "PlanDecodeError", "check", "decode", "goal_node", "plan_u
 UP_VALIDATE_MAX_ACTIONS = 300
 
 
+#: Encodings whose trees keep every plan step (no `justify`): repeated firings are real.
+EVERY_STEP_ENCODINGS = frozenset({"state", "instances"})
+
+
 @dataclass(frozen=True)
 class Decoded:
     """The task tree a plan stands for, with its checks.
@@ -55,16 +61,21 @@ class Decoded:
     up_validation: Validation | None = None
     foon_semantics: bool = True
     notes: tuple[str, ...] = ()
+    instance_check: Validation | None = None  # `instances`: the plan replayed on the physical objects
+    instance_plan: tuple = ()  # `instances`: `instance_plan.InstanceStep` per unit step
+    instance_trace: object = None  # `instances`: `instance_plan.InstanceTrace`
 
     @property
     def ok(self) -> bool:
         return (self.plan_check.ok and (self.up_validation is None or self.up_validation.ok)
+                and (self.instance_check is None or self.instance_check.ok)
                 and (self.validation.ok or not self.foon_semantics))
 
     @property
     def problems(self) -> tuple[str, ...]:
         """What failed, the checks that decide `ok` first."""
         out = self.plan_check.problems + (self.up_validation.problems if self.up_validation else ())
+        out += self.instance_check.problems if self.instance_check else ()
         return out + (self.validation.problems if self.foon_semantics else ())
 
 
@@ -139,15 +150,19 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
     if delete_free(compiled.task):
         units = first_occurrences(units)
     target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
-    if compiled.foon_semantics:
+    if compiled.foon_semantics and compiled.task.encoding not in EVERY_STEP_ENCODINGS:
         units = justify(units, kitchen_nodes, target, goal_adders(compiled.task, steps))
     tree = TaskTree(units, target, compiled.task.level)
     return tree if compiled.finish is None else compiled.finish(tree, steps, kitchen_nodes)
 
 
 def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask | Compiled,
-          steps: Sequence[str], *, up_validate: bool = False) -> Decoded:
-    """Validate a decoded tree by simulation, and the plan with UP when asked and the task is small."""
+          steps: Sequence[str], *, up_validate: bool = False,
+          candidates: Iterable[ObjectNode] | None = None) -> Decoded:
+    """Validate a decoded tree by simulation, and the plan with UP when asked and the task is small.
+
+    `candidates`: the goal's nodes at the task's level (default: the tree's goal), for the instance check.
+    """
     compiled = as_compiled(task)
     up = None
     if up_validate and len(compiled.task.actions) <= UP_VALIDATE_MAX_ACTIONS:
@@ -160,8 +175,18 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
             notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
     # a task compiled under --containment infer holds inference units: validate under the same rule
-    return Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
-                   simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
+    decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
+                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
+    if compiled.task.encoding != "instances":
+        return decoded
+    from .instance_plan import InstancePlanError, instance_steps, simulate_instances
+
+    try:
+        isteps = instance_steps(compiled.task, steps)
+    except InstancePlanError as exc:
+        return replace(decoded, instance_check=Validation(False, (str(exc),)))
+    trace = simulate_instances(compiled.task, isteps, tuple(candidates) if candidates is not None else (tree.goal,))
+    return replace(decoded, instance_check=trace.validation, instance_plan=isteps, instance_trace=trace)
 
 
 def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,
@@ -169,7 +194,8 @@ def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitc
     """The plan's task tree (kitchen nodes at the task's level) with its checks (see the module doc)."""
     compiled = as_compiled(task)
     return check(to_tree(compiled, steps, goal, kitchen_nodes), kitchen_nodes, compiled, steps,
-                 up_validate=up_validate)
+                 up_validate=up_validate,
+                 candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}))
 
 
 def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:

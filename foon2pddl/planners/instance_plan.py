@@ -144,8 +144,9 @@ def simulate_instances(task: PlanningTask, steps: Sequence[InstanceStep],
 
 
 def trace_lines(trace: InstanceTrace, steps: Sequence[InstanceStep]) -> list[str]:
-    """Text of a trace: the start, then after each step the instances it changed."""
-    lines = ["start: " + "; ".join(f"{n}: {_show(s)}" for n, s in sorted(trace.states[0].items()))]
+    """Text of a trace: the start of the instances the plan uses, then after each step the instances it changed."""
+    used = {name for step in steps for _, name in step.bindings}
+    lines = ["start: " + "; ".join(f"{n}: {_show(s)}" for n, s in sorted(trace.states[0].items()) if n in used)]
     for k, step in enumerate(steps, start=1):
         if k >= len(trace.states):
             break
@@ -157,3 +158,15 @@ def trace_lines(trace: InstanceTrace, steps: Sequence[InstanceStep]) -> list[str
 
 def _show(node: ObjectNode | None) -> str:
     return "not yet made" if node is None else node.describe()
+
+
+def instance_plan_json(steps: Sequence[InstanceStep]) -> list[dict]:
+    """The firings as JSON-ready dicts: unit index, motion, text, and per role the instance and its states."""
+    return [
+        {"step": k, "unit": s.index, "motion": s.unit.motion.label, "text": s.text(),
+         "bindings": [{"instance": name, "role": str(role.kind),
+                       "before": role.before.describe() if role.before is not None else None,
+                       "after": role.after.describe() if role.after is not None else None}
+                      for role, name in s.bindings]}
+        for k, s in enumerate(steps, start=1)
+    ]

@@ -91,7 +91,8 @@ def _finish(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes: f
         return PlanOutcome(result, compiled, decode_error=str(exc), timings=timings)
     timings["decode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    decoded = check(tree, kitchen_nodes, compiled, result.plan, up_validate=up_validate)
+    decoded = check(tree, kitchen_nodes, compiled, result.plan, up_validate=up_validate,
+                    candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}))
     timings["validate"] = time.perf_counter() - t0
     return PlanOutcome(result, compiled, decoded, timings=timings)
 
@@ -100,19 +101,23 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
          planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
          time_limit: float | None = None, prune: bool = True, costs: str | None = None,
          rates: Rates | None = None, category_index: CategoryIndex | None = None,
-         up_validate: bool = False, constraints: Constraints | None = None, search=None) -> PlanOutcome:
+         up_validate: bool = False, constraints: Constraints | None = None, search=None,
+         instances: tuple[tuple[str, int], ...] = (),
+         categories: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted
     ones (default: the shipped index). `time_limit` bounds the planner run (translation
     and search). Raises UsageError for bad options (encoding, cost mode),
     `pddl.constraints.GoalExcluded` when `constraints` leave no way to make the goal; a
-    planner's failure is a status, never an exception.
+    planner's failure is a status, never an exception. `instances`, `categories`: for the
+    `instances` encoding (see `pddl.encoding.EncodeOptions`).
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
-                            category_index=category_index, constraints=constraints)
+                            category_index=category_index, constraints=constraints, instances=instances,
+                            categories=categories)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     domain_text, problem_text = render(compiled.task)

@@ -1,11 +1,10 @@
-; foon2pddl, encoding instances, level 3: 24 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 18 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 20 (avocado 1, black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, fork 1, greek salad 1, juicer 1, knife 1, lime 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, spoon 1, tomato 1)
+; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
 (define (problem make_greek_salad)
   (:domain foon-instances)
   (:objects
-    avocado_1 - avocado
     black_olive_1 - black_olive
     bowl_1 - bowl
     cucumber_1 - cucumber
@@ -13,21 +12,16 @@
     cutting_board_2 - cutting_board
     cutting_board_3 - cutting_board
     feta_cheese_1 - feta_cheese
-    fork_1 - fork
     greek_salad_1 - greek_salad
-    juicer_1 - juicer
     knife_1 - knife
-    lime_1 - lime
     olive_oil_1 - olive_oil
     onion_1 - onion
     oregano_1 - oregano
     red_wine_vinegar_1 - red_wine_vinegar
     salad_tongs_1 - salad_tongs
-    spoon_1 - spoon
     tomato_1 - tomato
   )
   (:init
-    (is avocado_1 avocado_whole)
     (is black_olive_1 black_olive_pitted)
     (is bowl_1 bowl_empty)
     (is cucumber_1 cucumber_whole)
@@ -35,23 +29,16 @@
     (is cutting_board_2 cutting_board_empty)
     (is cutting_board_3 cutting_board_empty)
     (is feta_cheese_1 feta_cheese_crumbled)
-    (is fork_1 fork_plain)
     (is greek_salad_1 not-yet-made)
-    (is juicer_1 juicer_empty)
     (is knife_1 knife_plain)
-    (is lime_1 lime_whole)
     (is olive_oil_1 olive_oil_in_bottle)
     (is onion_1 onion_whole)
     (is oregano_1 oregano_dried)
     (is red_wine_vinegar_1 red_wine_vinegar_in_bottle)
     (is salad_tongs_1 salad_tongs_plain)
-    (is spoon_1 spoon_plain)
     (is tomato_1 tomato_whole)
-    (occupied fork_plain)
-    (occupied juicer_empty)
     (occupied knife_plain)
     (occupied salad_tongs_plain)
-    (occupied spoon_plain)
   )
   (:goal (and
     (goal-reached)

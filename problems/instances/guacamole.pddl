@@ -1,66 +1,51 @@
-; foon2pddl, encoding instances, level 3: 37 of 101 units after relevance pruning
+; foon2pddl, encoding instances, level 3: 22 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 25 (avocado 1, banana 1, black pepper 1, bowl 1, cilantro 1, cucumber 1, cutting board 5, egg 1, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, milk 1, onion 1, salt 1, spoon 1, strawberry 1, tomato 1, whisk 1)
+; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
 (define (problem make_guacamole)
   (:domain foon-instances)
   (:objects
     avocado_1 - avocado
-    banana_1 - banana
-    black_pepper_1 - black_pepper
     bowl_1 - bowl
     cilantro_1 - cilantro
-    cucumber_1 - cucumber
     cutting_board_1 - cutting_board
     cutting_board_2 - cutting_board
     cutting_board_3 - cutting_board
     cutting_board_4 - cutting_board
     cutting_board_5 - cutting_board
-    egg_1 - egg
     fork_1 - fork
     guacamole_1 - guacamole
     juicer_1 - juicer
     knife_1 - knife
     lime_1 - lime
     lime_juice_1 - lime_juice
-    milk_1 - milk
     onion_1 - onion
     salt_1 - salt
     spoon_1 - spoon
-    strawberry_1 - strawberry
     tomato_1 - tomato
-    whisk_1 - whisk
   )
   (:init
     (is avocado_1 avocado_whole)
-    (is banana_1 banana_whole)
-    (is black_pepper_1 black_pepper_ground)
     (is bowl_1 bowl_empty)
     (is cilantro_1 cilantro_fresh)
-    (is cucumber_1 cucumber_whole)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
     (is cutting_board_3 cutting_board_empty)
     (is cutting_board_4 cutting_board_empty)
     (is cutting_board_5 cutting_board_empty)
-    (is egg_1 egg_whole)
     (is fork_1 fork_plain)
     (is guacamole_1 not-yet-made)
     (is juicer_1 juicer_empty)
     (is knife_1 knife_plain)
     (is lime_1 lime_whole)
     (is lime_juice_1 not-yet-made)
-    (is milk_1 milk_in_carton)
     (is onion_1 onion_whole)
     (is salt_1 salt_granulated)
     (is spoon_1 spoon_plain)
-    (is strawberry_1 strawberry_whole)
     (is tomato_1 tomato_whole)
-    (is whisk_1 whisk_plain)
     (occupied fork_plain)
     (occupied knife_plain)
     (occupied spoon_plain)
-    (occupied whisk_plain)
   )
   (:goal (and
     (goal-reached)
