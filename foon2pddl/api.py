@@ -81,8 +81,10 @@ def kitchen_of(*items: str | ObjectNode, level: int = 3) -> Kitchen:
     ['knife', 'onion (whole)']
     """
     nodes = [i for i in items if isinstance(i, ObjectNode)]
-    nodes += read_node_lines("\n".join(i for i in items if isinstance(i, str)), "<kitchen>")
-    return Kitchen(frozenset(nodes), 3).project(level)
+    counted = read_node_lines("\n".join(i for i in items if isinstance(i, str)), "<kitchen>")
+    nodes += [node for node, _ in counted]
+    counts = tuple(sorted((node, k) for node, k in counted if k is not None))
+    return Kitchen(frozenset(nodes), 3, counts=counts).project(level)
 
 
 def resolve_goal(network: Network | Foon, goal: str | GoalSpec, level: int = 3) -> Goal:

@@ -178,7 +178,7 @@ def test_doubled_plan_decodes_to_the_same_tree_and_says_so():
     kitchen, goal = load_kitchen(None, net, 3), load_goal("guacamole", None, foon)
     once = plan(foon, kitchen, goal, "tree")
     doubled = tuple(s for s in once.result.plan for _ in (0, 1))
-    twice = _finish(PlanResult("solved", doubled, "test"), once.task, goal, kitchen.project(3).nodes, {}, False)
+    twice = _finish(PlanResult("solved", doubled, "test"), once.compiled, goal, kitchen.project(3).nodes, {}, False)
     assert twice.status == "solved" and twice.tree == once.tree
     assert len(set(twice.tree.units)) == len(twice.tree.units)
     units = sum(once.task.action_for(s.split()[0]).unit is not None for s in once.result.plan)

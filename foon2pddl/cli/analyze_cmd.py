@@ -27,9 +27,9 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     """One-mode projections of the network (object-object, motion-motion), degree and betweenness
     centrality, the most central objects and motions, connected components (docs/datasets.md)."""
     from ..analysis.network import analyze, graphml_graphs  # networkx: imported only when needed
+    from ..analysis.network_report import format_text, plot_png, to_json, write_graphml
     from ..io.atomic import atomic_write
     from ..io.inputs import load_network
-    from ..io.network_report import format_text, plot_png, to_json, write_graphml
 
     net = load_network(paths)
     result = analyze(net.foon, int(level))

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import networkx as nx
 
-from ..analysis.network import Analysis
-from .atomic import atomic_write_many
+from ..io.atomic import atomic_write_many
+from .network import Analysis
 
 KEYS = (("degree_centrality", "degree centrality"), ("betweenness", "betweenness centrality"))
 
