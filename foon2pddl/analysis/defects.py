@@ -1,13 +1,4 @@
-"""What the dataset checker reports: defects, their kinds, severities and places (see `check`).
-
-Each defect has a kind (`DefectKind`), a severity (errors make a network give
-wrong answers or none: self-supporting producers, cycles with no entry, units
-that change nothing; warnings mark inconsistencies that silently split or lose
-nodes), a message and the places (file:line of the units or objects) involved.
-The checks live in `check_units` (network structure, one pass each) and
-`check_labels` (labels and the written form of nodes); `check` runs them all in
-a fixed order, so the report is deterministic.
-"""
+"""What the dataset checker reports: defects, their kinds, severities and places (the checks: `check`)."""
 
 from __future__ import annotations
 

@@ -19,29 +19,18 @@ from .batch import batch_entries
 from .batch_pddl import compile_batch
 from .options import (
     category_chains,
-    category_types_option,
     check_output,
     constraint_inputs,
     constraints_options,
-    containment_option,
     costs_option,
-    encoding_option,
-    goal_file_option,
-    goal_option,
-    goals_option,
-    instances_option,
-    kitchen_option,
-    level_option,
     load_pddl_view,
     load_view,
-    network_option,
     parse_instances,
-    paths_argument,
+    pddl_task_options,
     prune_option,
     rates_option,
     reject_lifted_constraints,
     single_goal,
-    utensils_option,
     view_goal,
 )
 
@@ -70,18 +59,7 @@ def encoder_options(encoding: str, instances: tuple[str, ...], category_types: b
 
 
 @main.command("compile")
-@paths_argument
-@goal_option
-@goals_option
-@goal_file_option
-@kitchen_option
-@utensils_option
-@containment_option
-@encoding_option
-@instances_option
-@category_types_option
-@level_option
-@network_option
+@pddl_task_options
 @prune_option
 @costs_option
 @rates_option

@@ -230,12 +230,22 @@ def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, 
                    + "; ".join(what[k] for k in kinds), err=True)
 
 
-def task_options(command):
-    """The options every goal-over-a-network command shares, in --help order: PATHS, goal, kitchen, network."""
-    for option in reversed((paths_argument, goal_option, goal_file_option, kitchen_option, utensils_option,
-                            containment_option, encoding_option, level_option, network_option)):
+def _apply(command, options):
+    for option in reversed(options):
         command = option(command)
     return command
+
+
+def goal_input_options(command):
+    """The inputs every goal-over-a-network command shares, in --help order: PATHS, goals, kitchen, containment."""
+    return _apply(command, (paths_argument, goal_option, goals_option, goal_file_option, kitchen_option,
+                            utensils_option, containment_option))
+
+
+def pddl_task_options(command):
+    """What compile and plan share: `goal_input_options`, then encoding, instances, level and network."""
+    return goal_input_options(_apply(command, (encoding_option, instances_option, category_types_option,
+                                               level_option, network_option)))
 
 
 def parse_instances(items) -> tuple[tuple[str, int], ...]:

@@ -23,32 +23,21 @@ from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
 from .options import (
     category_chains,
-    category_types_option,
     check_output,
     check_time_limit,
     constraint_inputs,
     constraints_options,
-    containment_option,
     costs_option,
     emit,
-    encoding_option,
-    goal_file_option,
-    goal_option,
-    goals_option,
-    instances_option,
-    kitchen_option,
-    level_option,
     load_pddl_view,
     load_view,
-    network_option,
     other_networks_hint,
     parse_instances,
-    paths_argument,
+    pddl_task_options,
     prune_option,
     rates_option,
     reject_lifted_constraints,
     single_goal,
-    utensils_option,
     view_goal,
 )
 
@@ -92,18 +81,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 
 
 @main.command("plan")
-@paths_argument
-@goal_option
-@goals_option
-@goal_file_option
-@kitchen_option
-@utensils_option
-@containment_option
-@encoding_option
-@instances_option
-@category_types_option
-@level_option
-@network_option
+@pddl_task_options
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,

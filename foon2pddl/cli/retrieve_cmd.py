@@ -21,20 +21,14 @@ from .options import (
     check_output,
     constraint_inputs,
     constraints_options,
-    containment_option,
     emit,
-    goal_file_option,
-    goal_option,
-    goals_option,
-    kitchen_option,
+    goal_input_options,
     level_option,
     load_view,
     network_option,
     other_networks_hint,
-    paths_argument,
     rates_option,
     single_goal,
-    utensils_option,
     view_goal,
 )
 
@@ -62,13 +56,7 @@ class Limit(click.ParamType):
 
 
 @main.command("retrieve")
-@paths_argument
-@goal_option
-@goals_option
-@goal_file_option
-@kitchen_option
-@utensils_option
-@containment_option
+@goal_input_options
 @level_option
 @network_option
 @click.option("--method", type=click.Choice(METHODS), default="complete", show_default=True,
