@@ -30,8 +30,7 @@ def encode_compat(
 ) -> PlanningTask:
     """The converter-compatible task of `foon` (see the module doc)."""
     inp = at_level(foon, kitchen, goal, level)
-    f = inp.foon
-    sel = select(inp, options.prune)
+    f, sel = inp.foon, select(inp, options.prune)
     ix = sel.index
     several = len(sel.candidates) > 1
     table = NameTable()

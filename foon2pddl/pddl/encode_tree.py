@@ -24,8 +24,7 @@ def encode_tree(
 ) -> PlanningTask:
     """The delete-free node-proposition task of `foon` (see the module doc)."""
     inp = at_level(foon, kitchen, goal, level)
-    f = inp.foon
-    sel = select(inp, options.prune)
+    f, sel = inp.foon, select(inp, options.prune)
     ix = sel.index
     table = NameTable()
     several = len(sel.candidates) > 1
