@@ -38,9 +38,9 @@ def _registry(*encodings: Encoding) -> dict[str, Encoding]:
 #: Encoding name -> encoding, the default first.
 ENCODINGS: dict[str, Encoding] = _registry(
     Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit"),
-    Encoding("instances", encode_instances, "physical object instances whose states change"),
+    Encoding("instances", encode_instances, "physical object instances whose states change", every_step=True),
     Encoding("state", encode_state, "object-centred STRIPS: facts per object and state, with deletes",
-             foon_semantics=False),
+             foon_semantics=False, every_step=True),
     Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),
     Encoding("gen-lifted", compile_lifted,
              "FOON-GEN: categories as types, the planner grounds them to kitchen objects",
@@ -108,7 +108,7 @@ def as_compiled(task: PlanningTask | Compiled) -> Compiled:
     enc = encoding_named(task.encoding)
     if enc.lifted:
         raise UsageError(f"plans of the {enc.name} encoding map back through its Compiled task (compile_goal)")
-    return Compiled(task, enc.foon_semantics)
+    return Compiled(task, enc.foon_semantics, every_step=enc.every_step)
 
 
 def compile_task(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,

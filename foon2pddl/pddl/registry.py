@@ -37,12 +37,15 @@ class Compiled:
     `ground(unit, args)` gives the unit of an action whose `Action.unit` is `unit`
     applied to the PDDL objects `args`; None means the actions are ground, and the
     unit is `task.units[unit]` (`ground` raises PlanDecodeError for arguments that
-    do not fit). `foon_semantics`: a valid plan is a FOON task tree.
+    do not fit). `foon_semantics`: a valid plan is a FOON task tree. `every_step`:
+    every plan step is a real firing (a unit may fire again on other objects), so the
+    tree keeps them all instead of justifying it down to what the goal needs.
     """
 
     task: PlanningTask
     foon_semantics: bool = True
     ground: Ground | None = None
+    every_step: bool = False
     #: (tree, plan steps, kitchen nodes) -> the tree to report (the lifted encoding renames what a
     #: substituted object made after it); None: the tree as decoded.
     finish: Callable[[TaskTree, Sequence[str], frozenset[ObjectNode]], TaskTree] | None = None
@@ -68,7 +71,7 @@ class Encoding:
     `foon_semantics`: its valid plans are FOON task trees; `costs`: it honours
     `EncodeOptions.costs`; `lifted`: objects are typed parameters over categories
     (from `EncodeOptions.categories`, or the shipped index), so plans name the
-    objects the planner chose.
+    objects the planner chose; `every_step`: see `Compiled`.
     """
 
     name: str
@@ -77,8 +80,9 @@ class Encoding:
     foon_semantics: bool = True
     costs: bool = True
     lifted: bool = False
+    every_step: bool = False
 
     def compile(self, foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
         """The compiled task (an encoder's bare `PlanningTask` has parameterless actions, one per unit)."""
         out = self.encode(foon, kitchen, goal, level, options)
-        return out if isinstance(out, Compiled) else Compiled(out, self.foon_semantics)
+        return out if isinstance(out, Compiled) else Compiled(out, self.foon_semantics, every_step=self.every_step)

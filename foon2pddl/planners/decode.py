@@ -41,10 +41,6 @@ __all__ = ["Decoded", "PlanDecodeError", "check", "decode", "goal_node", "plan_u
 UP_VALIDATE_MAX_ACTIONS = 300
 
 
-#: Encodings whose trees keep every plan step (no `justify`): repeated firings are real.
-EVERY_STEP_ENCODINGS = frozenset({"state", "instances"})
-
-
 @dataclass(frozen=True)
 class Decoded:
     """The task tree a plan stands for, with its checks.
@@ -150,7 +146,7 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
     if delete_free(compiled.task):
         units = first_occurrences(units)
     target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
-    if compiled.foon_semantics and compiled.task.encoding not in EVERY_STEP_ENCODINGS:
+    if compiled.foon_semantics and not compiled.every_step:
         units = justify(units, kitchen_nodes, target, goal_adders(compiled.task, steps))
     tree = TaskTree(units, target, compiled.task.level)
     return tree if compiled.finish is None else compiled.finish(tree, steps, kitchen_nodes)
@@ -177,7 +173,7 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     # a task compiled under --containment infer holds inference units: validate under the same rule
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
                       simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
-    if compiled.task.encoding != "instances":
+    if not compiled.task.instances:  # only tasks over physical objects get the instance replay
         return decoded
     from .instance_plan import InstancePlanError, instance_steps, simulate_instances
 

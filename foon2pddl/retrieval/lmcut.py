@@ -30,6 +30,8 @@ import heapq
 import math
 from collections.abc import Callable, Collection, Mapping, Sequence
 
+from ..analysis.reachability import backward_units
+
 INF = math.inf
 ZERO = 1e-12
 
@@ -63,22 +65,7 @@ class Cone:
 
     def _relevant(self, goal: list[int]) -> tuple[list[int], bytearray]:
         """Units that can contribute to making `goal` (backwards over makers), as a list and a mask."""
-        deps, makers = self.deps, self.makers
-        mask = bytearray(len(deps))
-        seen = bytearray(len(self.node_ids))
-        units: list[int] = []
-        stack = list(goal)
-        while stack:
-            n = stack.pop()
-            if seen[n]:
-                continue
-            seen[n] = 1
-            for u in makers[n]:
-                if not mask[u]:
-                    mask[u] = 1
-                    units.append(u)
-                    stack.extend(deps[u])
-        return units, mask
+        return backward_units(self.makers, self.deps, goal, bytearray(len(self.node_ids)))
 
     def _hmax(self, rc: list[float], units: list[int] | None = None, mask: bytearray | None = None
               ) -> tuple[list[float], list[float]]:
