@@ -45,10 +45,10 @@ class Compiled:
     task: PlanningTask
     foon_semantics: bool = True
     ground: Ground | None = None
-    every_step: bool = False
     #: (tree, plan steps, kitchen nodes) -> the tree to report (the lifted encoding renames what a
     #: substituted object made after it); None: the tree as decoded.
     finish: Callable[[TaskTree, Sequence[str], frozenset[ObjectNode]], TaskTree] | None = None
+    every_step: bool = False
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
         """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""
