@@ -19,7 +19,11 @@ from ..model.foon import FunctionalUnit, ObjectNode, Source, make_node, make_sta
 
 
 def substitute_node(node: ObjectNode, mapping: Mapping[str, str]) -> ObjectNode:
-    """`node` with every label in `mapping` replaced (attributes other than identity kept)."""
+    """`node` with every label in `mapping` replaced (attributes other than identity kept); `node`
+    itself when it mentions none (nodes are built normalized, so a rebuild would be equal)."""
+    if node.label not in mapping and not any(
+            s.related in mapping or any(i in mapping for i in s.ingredients) for s in node.states):
+        return node
     get = mapping.get
     states = [make_state(s.label, get(s.related, s.related) if s.related else "",
                          (get(i, i) for i in s.ingredients)) for s in node.states]

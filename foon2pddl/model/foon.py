@@ -205,6 +205,14 @@ class Foon:
         return _index(self.units, lambda u: u.outputs)
 
     @cached_property
+    def produced_by_label(self) -> dict[str, tuple[ObjectNode, ...]]:
+        """Object label -> the produced nodes with that label, in `producers` order (goal lookup by label)."""
+        acc: dict[str, list[ObjectNode]] = {}
+        for n in self.producers:
+            acc.setdefault(n.label, []).append(n)
+        return {k: tuple(v) for k, v in acc.items()}
+
+    @cached_property
     def consumers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that take it as input."""
         return _index(self.units, lambda u: u.inputs)

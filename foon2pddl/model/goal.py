@@ -95,8 +95,7 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     Raises UsageError naming close labels when nothing matches.
     """
     level = foon.level if level is None else level
-    produced = [n for n in foon.producers if not is_auxiliary(n)]
-    same_label = [n for n in produced if n.label == spec.label]
+    same_label = [n for n in foon.produced_by_label.get(spec.label, ()) if not is_auxiliary(n)]
     if not same_label:
         close = label_hints(spec.label, foon)
         hint = f"; close matches: {', '.join(close)}" if close else ""
