@@ -87,3 +87,55 @@ def test_signal_at_a_random_moment_leaves_nothing(tmp_path, command, case):
     assert list(private.iterdir()) == [], what
     hidden = [str(p) for p in out.rglob(".*")]
     assert hidden == [], what
+
+
+def _command_line_matches(marker: str) -> list[int]:
+    """Pids whose command line contains `marker` (what `pkill -f` would match), this process excluded."""
+    found = []
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit() or int(entry.name) == os.getpid():
+            continue
+        try:
+            cmd = Path(f"/proc/{entry.name}/cmdline").read_bytes()
+        except OSError:
+            continue
+        if marker.encode() in cmd:
+            found.append(int(entry.name))
+    return sorted(found)
+
+
+def test_sigterm_to_every_process_with_the_command_line_prints_no_traceback(tmp_path):
+    """`pkill -f "foon2pddl experiment"` also signals the forked Dask workers (same command line): they
+    die quietly (no `Terminated` traceback from a worker), the run exits 143 and leaves nothing behind."""
+    private, out = tmp_path / "tmp", tmp_path / "out-pkill"
+    private.mkdir()
+    env = dict(os.environ, PYTHONPATH=str(ROOT), TMPDIR=str(private))
+    args = ["experiment", str(SUBGRAPHS), "--trials", "2", "--goals", "100", "--networks", "reg",
+            "--solvers", "fd-tree", "--jobs", "2", "--no-progress", "-o", str(out)]
+    proc = subprocess.Popen([sys.executable, "-m", "foon2pddl", *args], cwd=tmp_path, env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        while len(_command_line_matches(str(out))) < 3 and time.monotonic() < deadline and proc.poll() is None:
+            time.sleep(0.1)
+        time.sleep(1.0)  # the workers are running their cells
+        pids = _command_line_matches(str(out))
+        assert proc.pid in pids and len(pids) >= 3, pids  # the command and its two forked workers
+        assert all(b"foon2pddl\0experiment\0" in Path(f"/proc/{p}/cmdline").read_bytes() for p in pids)
+        for pid in pids:  # the command first, then its workers, as pkill does (by pid)
+            try:
+                os.kill(pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
+        _, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert proc.returncode == 143, (proc.returncode, err[-3000:])
+    assert "Traceback" not in err, err[-3000:]
+    deadline = time.monotonic() + 5
+    while (survivors(private) or _command_line_matches(str(out))) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert survivors(private) == [] and _command_line_matches(str(out)) == []
+    assert list(private.iterdir()) == []

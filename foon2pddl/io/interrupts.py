@@ -7,10 +7,17 @@ it raise `Terminated` (a KeyboardInterrupt) instead, so both take the same
 cleanup paths. `signals_deferred` holds SIGINT and SIGTERM back (signal mask)
 across a few statements such as "create a temporary file, register it for
 removal", which an interrupt landing between the two would otherwise leak.
+
+A process forked while these handlers are installed (Dask's local workers,
+engine processes) gets the default actions back at once (`_forked_child`): the
+handlers serve the command's own cleanup, and `pkill -f`, which also signals
+forked children (same command line), must end them quietly, not print a
+`Terminated` traceback from each.
 """
 
 from __future__ import annotations
 
+import os
 import signal
 import threading
 from collections.abc import Iterator
@@ -56,6 +63,18 @@ def exit_on_signals() -> None:
     traceback (for the program's start, while modules load, and its end)."""
     for signum in _HELD:
         signal.signal(signum, _exit_quietly)
+
+
+def _forked_child() -> None:
+    """In a child forked while the command's handlers are installed: SIGINT and SIGTERM back to their
+    default actions (the parent, which holds the handlers' cleanup, ends its children itself)."""
+    if signal.getsignal(signal.SIGTERM) in (_raise_terminated, _exit_quietly):
+        for signum in _HELD:
+            signal.signal(signum, signal.SIG_DFL)
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_forked_child)
 
 
 @contextmanager
