@@ -1,7 +1,8 @@
 """Where the cells run: in this process, or on Dask distributed.
 
 - `run_here`: one batch after the other in the calling process (`--jobs 1`).
-- `run_dask`: every batch is a Dask task (`worker.dask_task`), submitted
+- `run_dask`: every batch is a Dask task (`worker.dask_task`, shipping the
+  batch by reference: `worker.BatchRef`), submitted
   costliest first (Dask priorities); `jobs` > 1 starts a `LocalCluster` of
   `jobs` single-threaded worker processes on this machine, `scheduler` sends the
   tasks to an existing cluster (`dask scheduler` + `dask worker` elsewhere).
@@ -114,7 +115,7 @@ def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress,
             progress.note(f"Dask dashboard: {link}")
         run = uuid.uuid4().hex[:8]
         for i, batch in enumerate(batches):
-            future = client.submit(dask_task, batch, job, key=f"foon2pddl-{run}-{i}", priority=-i, pure=False,
+            future = client.submit(dask_task, batch.ref(), job, key=f"foon2pddl-{run}-{i}", priority=-i, pure=False,
                                    retries=0)
             futures[future] = batch
         for future in as_completed(list(futures)):

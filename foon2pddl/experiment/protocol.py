@@ -107,16 +107,35 @@ def sample_kitchen(kitchen: Kitchen, fraction: float, seed: int) -> Kitchen:
     return Kitchen(frozenset(nodes), kitchen.level, f"{fraction:g} of the default kitchen, seed {seed}")
 
 
-def make_trial(foon: Foon, protocol: Protocol, index: int) -> Trial:
-    """Trial `index` of `protocol` over `foon` (the REG network at the protocol's level)."""
-    full = default_kitchen(foon)
+def make_trial(foon: Foon, protocol: Protocol, index: int, full: Kitchen | None = None,
+               pool: tuple[ObjectNode, ...] | None = None) -> Trial:
+    """Trial `index` of `protocol` over `foon` (the REG network at the protocol's level); `full` and
+    `pool`, the default kitchen and the goal pool, when the caller has them already."""
+    full = full if full is not None else default_kitchen(foon)
+    pool = pool if pool is not None else goal_pool(foon, full)
     kitchen_seed = derive_seed(protocol.seed, index, "kitchen")
     goal_seed = derive_seed(protocol.seed, index, "goals")
     kitchen = sample_kitchen(full, protocol.kitchen_fraction, kitchen_seed)
-    goals = shuffled_prefix(goal_pool(foon, full), protocol.goals, goal_seed)
+    goals = shuffled_prefix(pool, protocol.goals, goal_seed)
     return Trial(index, kitchen_seed, goal_seed, kitchen, goals)
+
+
+@dataclass(frozen=True)
+class Draw:
+    """Every trial of a protocol over one network, and what they were drawn from."""
+
+    kitchen: Kitchen  # the network's default kitchen
+    pool: tuple[ObjectNode, ...]  # the goal pool, sorted
+    trials: tuple[Trial, ...]
+
+
+def draw(foon: Foon, protocol: Protocol) -> Draw:
+    """Every trial of `protocol` (numbered from 1), the default kitchen and goal pool computed once."""
+    full = default_kitchen(foon)
+    pool = goal_pool(foon, full)
+    return Draw(full, pool, tuple(make_trial(foon, protocol, i, full, pool) for i in range(1, protocol.trials + 1)))
 
 
 def make_trials(foon: Foon, protocol: Protocol) -> tuple[Trial, ...]:
     """Every trial of `protocol` (numbered from 1)."""
-    return tuple(make_trial(foon, protocol, i) for i in range(1, protocol.trials + 1))
+    return draw(foon, protocol).trials

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import IO, Any
 
@@ -92,7 +92,7 @@ class Record:
         return sum(self.times.values())
 
     def to_json(self) -> str:
-        data = asdict(self)
+        data = {name: getattr(self, name) for name in _FIELDS}  # every field is a scalar or a flat dict
         data["status"] = str(self.status)
         data["solved"] = self.solved
         data["times"] = {k: round(v, 6) for k, v in sorted(self.times.items())}
@@ -102,7 +102,7 @@ class Record:
                 del data[name]
         if not self.params:
             del data["params"]
-        return json.dumps(data, sort_keys=True, ensure_ascii=False)
+        return _ENCODER.encode(data)
 
     @classmethod
     def from_json(cls, text: str) -> Record:
@@ -110,11 +110,15 @@ class Record:
         data = json.loads(text)
         if not isinstance(data, dict):
             raise ValueError("not a JSON object")
-        names = {f.name for f in fields(cls)}
-        data = {k: v for k, v in data.items() if k in names}
+        data = {k: v for k, v in data.items() if k in _NAMES}
         _check_types(data)
         return cls(**data)
 
+
+#: Record's fields, in order (`to_json`, `from_json`).
+_FIELDS = tuple(f.name for f in fields(Record))
+_NAMES = frozenset(_FIELDS)
+_ENCODER = json.JSONEncoder(sort_keys=True, ensure_ascii=False)
 
 _INT = ("trial", "goal")
 _STR = ("network", "solver", "goal_label")

@@ -22,15 +22,14 @@ from pathlib import Path
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
-from ..model.kitchen import default_kitchen
 from .engine import run_dask, run_here
 from .networks import NETWORKS, NetworkView
-from .params import Point, network_hooks, points, protocol_at
+from .params import Point, points
 from .progress import OFF, Progress, default_mode
-from .protocol import Protocol, Trial, goal_pool, make_trials
+from .protocol import Protocol, Trial
 from .records import Key, Record, append, done_keys, open_for_append, params_key, read_records
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
-from .worker import Batch, Job, fingerprint, input_files, view
+from .worker import Batch, Job, draw_at, fingerprint, input_files, view
 
 __all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]
 
@@ -104,14 +103,14 @@ class RunSummary:
 # -- the grid ------------------------------------------------------------------------------------
 
 def trials_at(config: Config, point: Point) -> tuple[Trial, ...]:
-    """The trials at one point of the sweep (drawn on REG at the point's level, before the point's
-    network hooks: a hook such as `banned-motions` changes what can be made, not what is asked)."""
-    unhooked = tuple((n, v) for n, v in point if (n, v) not in network_hooks(point))
-    reg = view(config.paths, config.protocol, unhooked, "reg").foon
-    return make_trials(reg, protocol_at(config.protocol, point))
+    """The trials at one point of the sweep (`worker.draw_at`: drawn once per process)."""
+    return draw_at(config.paths, config.protocol, point).trials
 
 
-def cells(config: Config) -> list[tuple[Point, Trial, str, str, int]]:
+Cell = tuple[Point, Trial, str, str, int]
+
+
+def cells(config: Config) -> list[Cell]:
     """Every cell of the run as (point, trial, network, solver, goal), solvers only on their networks."""
     out = []
     for point in config.points:
@@ -124,18 +123,24 @@ def cells(config: Config) -> list[tuple[Point, Trial, str, str, int]]:
     return out
 
 
-def cell_keys(config: Config) -> set[Key]:
-    """Every cell key of the run."""
-    return {(t.index, g, n, s, params_key(dict(p))) for p, t, n, s, g in cells(config)}
+def _params_keys(config: Config) -> dict[Point, tuple]:
+    return {p: params_key(dict(p)) for p in config.points}
 
 
-def plan_batches(config: Config, done: set[Key]) -> list[Batch]:
+def cell_keys(config: Config, grid: Sequence[Cell] | None = None) -> set[Key]:
+    """Every cell key of the run (of `grid`, the run's `cells`, when the caller has them)."""
+    params = _params_keys(config)
+    return {(t.index, g, n, s, params[p]) for p, t, n, s, g in (cells(config) if grid is None else grid)}
+
+
+def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = None) -> list[Batch]:
     """Batches of at most CHUNK pending goals (all of them for solvers whose preparation is costly, such as a
-    Fast Downward translation), costliest solvers and largest networks first."""
+    Fast Downward translation), costliest solvers and largest networks first; `grid`: the run's `cells`."""
     pending: dict[tuple, list[int]] = {}
     trial_of: dict[tuple, Trial] = {}
-    for point, trial, network, solver, goal in cells(config):
-        if (trial.index, goal, network, solver, params_key(dict(point))) in done:
+    params = _params_keys(config)
+    for point, trial, network, solver, goal in (cells(config) if grid is None else grid):
+        if (trial.index, goal, network, solver, params[point]) in done:
             continue
         group = (point, trial.index, network, solver)
         pending.setdefault(group, []).append(goal)
@@ -227,7 +232,8 @@ def run(config: Config, progress: bool | str = True, fresh: bool = False) -> Run
     check_protocol(config, trials)
     warnings: list[str] = []
     done = done_keys(read_records(config.results_path, warnings))
-    batches = plan_batches(config, done)
+    grid = cells(config)
+    batches = plan_batches(config, done, grid)
     planned = sum(len(b.goals) for b in batches)
     written = [0, 0]  # cells written, of which lost
     if batches:
@@ -253,12 +259,11 @@ def run(config: Config, progress: bool | str = True, fresh: bool = False) -> Run
             with open(config.out_dir / RUNS, "a", encoding="utf-8") as fh:
                 fh.write(json.dumps(log, sort_keys=True) + "\n")
     records = read_records(config.results_path)
-    keys = cell_keys(config)
+    keys = cell_keys(config, grid)
     mine = tuple(records[k] for k in sorted(keys, key=_sortable) if k in records)
-    reg = view(config.paths, config.protocol, first, "reg").foon
-    full = default_kitchen(reg)
-    return RunSummary(trials, written[0], len(keys) - planned, time.perf_counter() - t0, mine, len(full),
-                      len(goal_pool(reg, full)), read_runs(config.out_dir / RUNS), tuple(warnings), config.points,
+    drawn = draw_at(config.paths, config.protocol, first)
+    return RunSummary(trials, written[0], len(keys) - planned, time.perf_counter() - t0, mine, len(drawn.kitchen),
+                      len(drawn.pool), read_runs(config.out_dir / RUNS), tuple(warnings), config.points,
                       written[1])
 
 

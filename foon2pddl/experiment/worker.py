@@ -4,8 +4,12 @@ A task is a `Batch`: some goals of one trial, on one network, for one solver,
 at one point of the sweep. Whatever process runs it (the main one, or a Dask
 worker on this or another machine) builds the network views it needs once and
 keeps them (`_CACHE`), keyed by the inputs and the parameters a view depends on,
-so networks are never shipped with tasks: only the trial (its kitchen and goal
-nodes) and the goal indexes are. The solver prepared for a (trial, network,
+so networks are never shipped with tasks. Nor are trials: a Dask task is a
+`BatchRef` (trial index, goal indexes and labels), and the worker draws the
+trials itself, once per point (`draw_at`: seeded, the same in every process;
+the labels are checked). A trial's kitchen is hundreds of nodes: pickled with
+each of hundreds of tasks it cost the scheduler's process (the main one for a
+LocalCluster) seconds of CPU per run. The solver prepared for a (trial, network,
 solver) (a fixpoint, an FD translation) is kept too (the last few), so the
 next batch of the same trial on the same worker reuses it.
 
@@ -27,7 +31,7 @@ from ..io.files import expand_paths
 from ..io.inputs import Network, example_path, load_network
 from .networks import NetworkView, build_view
 from .params import Point, label, network_hooks, network_key, protocol_at, transform_kitchen, transform_network
-from .protocol import Protocol, Trial
+from .protocol import Draw, Protocol, Trial, draw
 from .records import CellStatus, Record
 from .solvers import Outcome, Setting, get_solver
 
@@ -74,14 +78,46 @@ class Batch:
     def params(self) -> dict:
         return dict(self.point)
 
+    def ref(self) -> BatchRef:
+        """The batch as a Dask task ships it."""
+        labels = tuple(self.trial.goals[g - 1].describe() for g in self.goals)
+        return BatchRef(self.trial.index, self.network, self.solver, self.goals, labels, self.point)
+
     def records(self, status: CellStatus, reason: str) -> list[Record]:
         """One record per goal with the same status and reason (a failed or lost task)."""
-        return [Record(trial=self.trial.index, goal=g, network=self.network, solver=self.solver,
-                       goal_label=self.trial.goals[g - 1].describe(), status=status, reason=_cut(reason),
-                       params=self.params) for g in self.goals]
+        return self.ref().records(status, reason)
 
 
-_CACHE: dict = {"networks": {}, "views": {}, "prepared": OrderedDict(), "checked": set()}
+@dataclass(frozen=True)
+class BatchRef:
+    """A batch by reference: its trial by index, its goals by index and label (`Batch.ref`, `resolve`)."""
+
+    trial: int
+    network: str
+    solver: str
+    goals: tuple[int, ...]
+    labels: tuple[str, ...]  # the goals' labels, as the run's process drew them
+    point: Point = ()
+
+    def resolve(self, job: Job) -> Batch:
+        """The batch, its trial drawn in this process; FoonError when this process draws other goals."""
+        trials = draw_at(job.paths, job.protocol, self.point).trials
+        trial = trials[self.trial - 1] if 1 <= self.trial <= len(trials) else None
+        mine = tuple(trial.goals[g - 1].describe() for g in self.goals) if trial else ()
+        if mine != self.labels:
+            raise FoonError(f"this worker draws other goals for trial {self.trial} than the run's process "
+                            "(another foon2pddl version?)")
+        return Batch(trial, self.network, self.solver, self.goals, self.point)
+
+    def records(self, status: CellStatus, reason: str) -> list[Record]:
+        """One record per goal with the same status and reason (a failed or lost task)."""
+        params = dict(self.point)
+        return [Record(trial=self.trial, goal=g, network=self.network, solver=self.solver, goal_label=label,
+                       status=status, reason=_cut(reason), params=params)
+                for g, label in zip(self.goals, self.labels, strict=True)]
+
+
+_CACHE: dict = {"networks": {}, "views": {}, "draws": {}, "prepared": OrderedDict(), "checked": set()}
 
 
 def _network(paths: tuple[str, ...], point: Point) -> Network:
@@ -103,6 +139,18 @@ def view(paths: tuple[str, ...], protocol: Protocol, point: Point, name: str) ->
         at = protocol_at(protocol, point)
         views[key] = build_view(name, _network(paths, point), at.level, at.threshold)
     return views[key]
+
+
+def draw_at(paths: tuple[str, ...], protocol: Protocol, point: Point) -> Draw:
+    """The trials at one point of the sweep, drawn once per process on REG at the point's level, before the
+    point's network hooks (a hook such as `banned-motions` changes what can be made, not what is asked)."""
+    at = protocol_at(protocol, point)
+    key = (paths, at)
+    draws = _CACHE["draws"]
+    if key not in draws:
+        unhooked = tuple((n, v) for n, v in point if (n, v) not in network_hooks(point))
+        draws[key] = draw(view(paths, protocol, unhooked, "reg").foon, at)
+    return draws[key]
 
 
 def _check_inputs(job: Job) -> None:
@@ -191,8 +239,13 @@ def _ignore(record: Record) -> None:
     pass
 
 
-def dask_task(batch: Batch, job: Job) -> list[Record]:
+def dask_task(ref: BatchRef, job: Job) -> list[Record]:
     """`run_batch` as a Dask task: the records, each naming the worker that computed it."""
     from distributed import get_worker
 
+    try:
+        _check_inputs(job)
+        batch = ref.resolve(job)
+    except Exception as exc:  # noqa: BLE001 - recorded, the run goes on
+        return ref.records(CellStatus.ERROR, f"preparation failed: {type(exc).__name__}: {exc}")
     return run_batch(batch, job, worker=get_worker().address)
