@@ -45,7 +45,8 @@ def _args(command: str, out: Path) -> list[str]:
         return ["plan", str(SUBGRAPHS), "--goal", "whipped cream", "--no-prune"]
     if command == "compile":
         return ["compile", str(SUBGRAPHS), "--goal", "whipped cream", "--no-prune", "-o", str(out)]
-    return ["experiment", str(SUBGRAPHS), "--trials", "1", "--goals", "6", "--networks", "reg",
+    # long enough (about 10 s) that the signal, at most 6 s in, lands while cells run
+    return ["experiment", str(SUBGRAPHS), "--trials", "12", "--goals", "40", "--networks", "reg",
             "--solvers", "native-greedy,fd-tree", "--jobs", "2", "--no-progress", "-o", str(out)]
 
 
@@ -74,7 +75,10 @@ def test_signal_at_a_random_moment_leaves_nothing(tmp_path, command, case):
         pass
     _, err = proc.communicate(timeout=300)
     what = f"{command} case {case}: {sig.name} to {'group' if to_group else 'process'} after {delay:.2f} s"
-    assert proc.returncode in EXIT[command], (what, proc.returncode, err[-2000:])
+    # a signal landing after the report is written, while the interpreter shuts down (it resets the
+    # handlers then), kills with the default action: the run was complete, nothing is left half-done
+    finished = command == "experiment" and proc.returncode == -sig and (out / "report.md").is_file()
+    assert proc.returncode in EXIT[command] or finished, (what, proc.returncode, err[-2000:])
     if command != "experiment":
         assert "Traceback" not in err, (what, err[-3000:])
     else:  # Dask's machinery may print its own when interrupted while the cluster starts (see notes/rel.md);
