@@ -110,3 +110,50 @@ def test_record_lines_are_byte_identical_to_the_asdict_format(record):
     assert line == _old_to_json(record)
     back = Record.from_json(line)
     assert back.key == record.key and back.status == record.status
+
+
+def test_collector_off_while_building_then_frozen_then_as_it_was():
+    import gc
+
+    from foon2pddl.experiment import collector
+
+    for enabled in (True, False):
+        (gc.enable if enabled else gc.disable)()
+        try:
+            with collector.building() as settle:
+                assert not gc.isenabled() and gc.get_freeze_count() == 0
+                settle()
+                assert gc.isenabled() == enabled and gc.get_freeze_count() > 0
+                settle()  # idempotent
+            assert gc.isenabled() == enabled and gc.get_freeze_count() == 0
+            with pytest.raises(RuntimeError), collector.building() as settle:
+                settle()
+                raise RuntimeError("a failed run")
+            assert gc.isenabled() == enabled and gc.get_freeze_count() == 0
+        finally:
+            gc.enable()
+
+
+def test_a_run_builds_its_networks_with_the_collector_off_and_runs_cells_with_them_frozen(tmp_path, monkeypatch):
+    import gc
+
+    seen = {"views": [], "cells": []}
+    real_view, real_here = runner.view, runner.run_here
+
+    def view(*args):
+        seen["views"].append(gc.isenabled())
+        if args[-1] == "gen" and len(seen["views"]) <= 3:  # a failed build here: the batches build it again
+            raise RuntimeError("gen failed once")
+        return real_view(*args)
+
+    def run_here(*args):
+        seen["cells"].append((gc.isenabled(), gc.get_freeze_count() > 0))
+        return real_here(*args)
+
+    monkeypatch.setattr(runner, "view", view)
+    monkeypatch.setattr(runner, "run_here", run_here)
+    summary = runner.run(_config(tmp_path), progress=False)
+    assert summary.ran == 2 * 12 * 2 * 2 and all(r.status != CellStatus.ERROR for r in summary.records)
+    assert seen["views"] and not any(seen["views"])
+    assert seen["cells"] == [(True, True)]
+    assert gc.isenabled() and gc.get_freeze_count() == 0

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
+from . import collector
 from .engine import run_dask, run_here
 from .networks import NETWORKS, NetworkView
 from .params import Point, points
@@ -196,16 +197,23 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
 
 # -- running -------------------------------------------------------------------------------------
 
-def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress) -> None:
-    """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives."""
+def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress,
+              settle: Callable[[], None] = lambda: None) -> None:
+    """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives.
+    A local run builds the networks the batches need first (local workers are forked: they inherit
+    them, each built once), then calls `settle` (`collector.building`) before the first cell."""
     job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit)
     try:
+        if config.scheduler is None:
+            for point, network in dict.fromkeys((b.point, b.network) for b in batches):
+                try:
+                    view(config.paths, config.protocol, point, network)
+                except Exception:  # noqa: BLE001 - not cached: its batches try again and record the error
+                    pass
+        settle()
         if config.scheduler is None and config.jobs <= 1:
             run_here(batches, job, sink, progress)
         else:
-            if config.scheduler is None:  # local workers are forked: build the networks they need once, here
-                for point, network in dict.fromkeys((b.point, b.network) for b in batches):
-                    view(config.paths, config.protocol, point, network)
             run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler)
     finally:
         progress.close()
@@ -214,6 +222,11 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
 def run(config: Config, progress: bool | str = True, fresh: bool = False) -> RunSummary:
     """Run every cell of `config` not already in its results file (all of them when `fresh`);
     return all records of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode."""
+    with collector.building() as settle:  # no garbage collection while the networks are built
+        return _run(config, progress, fresh, settle)
+
+
+def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None]) -> RunSummary:
     t0 = time.perf_counter()
     for name in config.solvers:
         get_solver(name)
@@ -250,7 +263,7 @@ def run(config: Config, progress: bool | str = True, fresh: bool = False) -> Run
 
         try:
             with open_for_append(config.results_path) as fh:
-                run_cells(config, batches, sink, bar)
+                run_cells(config, batches, sink, bar, settle)
         finally:
             log = {"cells": written[0], "planned": planned, "jobs": config.jobs,
                    "seconds": round(time.perf_counter() - t_run, 3), "solvers": sorted({b.solver for b in batches})}
