@@ -15,18 +15,25 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..model.constraints import node_labels
-from ..model.foon import FunctionalUnit, ObjectNode, Source, make_node, make_state
+from ..model.foon import FunctionalUnit, ObjectNode, Source, State, make_node, make_state
 
 
 def substitute_node(node: ObjectNode, mapping: Mapping[str, str]) -> ObjectNode:
-    """`node` with every label in `mapping` replaced (attributes other than identity kept); `node`
-    itself when it mentions none (nodes are built normalized, so a rebuild would be equal)."""
-    if node.label not in mapping and not any(
-            s.related in mapping or any(i in mapping for i in s.ingredients) for s in node.states):
+    """`node` with every label in `mapping` replaced (attributes other than identity kept).
+
+    Nodes and states that mention no mapped label are kept as they are: they are built
+    normalized, so rebuilding them would give equal objects (FOON-EXP renames ~1 in 6).
+    """
+    def touched(s: State) -> bool:
+        return s.related in mapping or any(i in mapping for i in s.ingredients)
+
+    hits = [touched(s) for s in node.states]
+    if node.label not in mapping and not any(hits):
         return node
     get = mapping.get
     states = [make_state(s.label, get(s.related, s.related) if s.related else "",
-                         (get(i, i) for i in s.ingredients)) for s in node.states]
+                         (get(i, i) for i in s.ingredients)) if hit else s
+              for s, hit in zip(node.states, hits, strict=True)]
     return make_node(get(node.label, node.label), states,
                      motion_flag=node.motion_flag, goal=node.goal, dish=node.dish)
 
