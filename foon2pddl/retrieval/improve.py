@@ -33,8 +33,9 @@ def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int,
     cost = [INF] * len(cone.node_ids)
     sup = [-1] * len(cone.node_ids)
     acc = [0.0] * len(deps)
-    missing = [len(d) for d in deps]
+    missing = list(cone.dep_counts)
     heap: list[tuple[float, int]] = []
+    push, pop = heapq.heappush, heapq.heappop
 
     def fire(u: int, base: float) -> None:
         uc = base + rc[u]
@@ -42,14 +43,14 @@ def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int,
             if uc < cost[o]:
                 cost[o] = uc
                 sup[o] = u
-                heapq.heappush(heap, (uc, o))
+                push(heap, (uc, o))
 
     for u in cone.seeds:
         if rc[u] < INF:
             fire(u, 0.0)
     settled = bytearray(len(cone.node_ids))
     while heap:
-        c, n = heapq.heappop(heap)
+        c, n = pop(heap)
         if settled[n] or c > cost[n]:
             continue
         settled[n] = 1
@@ -58,13 +59,13 @@ def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int,
         for u in consumers[n]:
             acc[u] += c
             missing[u] -= 1
-            if missing[u] == 0 and rc[u] < INF:
+            if not missing[u] and rc[u] < INF:
                 uc = acc[u] + rc[u]
                 for o in outs[u]:
                     if not settled[o] and uc < cost[o]:
                         cost[o] = uc
                         sup[o] = u
-                        heapq.heappush(heap, (uc, o))
+                        push(heap, (uc, o))
     return None
 
 
