@@ -46,7 +46,7 @@ class BranchAndBound:
         self.weight = weight
         self.node_limit = math.inf if node_limit is None else node_limit
         self.deadline = deadline
-        kitchen, deps = _per_fixpoint(reach)
+        kitchen, deps, firing_makers = _per_fixpoint(reach)
         self.kitchen = kitchen
         fires = reach.unit_round
         # Units that can fire and lie backwards from a candidate, and the makers among them.
@@ -57,16 +57,18 @@ class BranchAndBound:
             n = stack.pop()
             if n in makers or kitchen[n]:
                 continue
-            makers[n] = tuple(u for u in ix.makers[n] if fires[u] != UNREACHED)
-            for u in makers[n]:
+            mine = firing_makers.get(n)
+            if mine is None:
+                mine = firing_makers[n] = tuple(u for u in ix.makers[n] if fires[u] != UNREACHED)
+            makers[n] = mine
+            for u in mine:
                 if u not in units:
                     units.add(u)
                     stack.extend(ix.inputs[u])
+                    if u not in deps:
+                        deps[u] = tuple(i for i in ix.inputs[u] if not kitchen[i])
         self.units = units
         self.makers = makers
-        for u in units:
-            if u not in deps:
-                deps[u] = tuple(i for i in ix.inputs[u] if not kitchen[i])
         self.deps = deps
         self.cone = Cone(units, self.deps, ix.outputs, makers, weight, ix.rank.__getitem__)
         self._static: dict[int, float] | None = None
@@ -260,9 +262,10 @@ class BranchAndBound:
 _FIXPOINT_CACHE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def _per_fixpoint(reach: Reachability) -> tuple[list[bool], dict[int, tuple[int, ...]]]:
-    """Kitchen mask and non-kitchen inputs per unit (filled lazily), shared by the goals of one fixpoint."""
+def _per_fixpoint(reach: Reachability) -> tuple[list[bool], dict[int, tuple[int, ...]], dict[int, tuple[int, ...]]]:
+    """Kitchen mask, non-kitchen inputs per unit and firing makers per node (both filled lazily),
+    shared by the goals of one fixpoint."""
     hit = _FIXPOINT_CACHE.get(reach)
     if hit is None:
-        hit = _FIXPOINT_CACHE[reach] = ([r == 0 for r in reach.node_round], {})
+        hit = _FIXPOINT_CACHE[reach] = ([r == 0 for r in reach.node_round], {}, {})
     return hit

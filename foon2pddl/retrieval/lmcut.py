@@ -47,13 +47,14 @@ class Cone:
         local_n = {n: k for k, n in enumerate(self.node_ids)}
         self.local_u = local_u
         self.local_n = local_n
-        self.deps = [tuple(local_n[i] for i in deps[u]) for u in self.unit_ids]
+        self.deps = [tuple(map(local_n.__getitem__, deps[u])) for u in self.unit_ids]
         self.sorted_deps = [tuple(sorted(d)) for d in self.deps]  # lowest id first: the dearest input's tie-break
         # outputs that are cone nodes; a node the unit also consumes is no useful effect
         self.outs = [tuple(local_n[o] for o in outputs[u] if o in local_n and o not in deps[u])
                      for u in self.unit_ids]
         self.weight = [weight[u] for u in self.unit_ids]
-        self.makers = [tuple(local_u[u] for u in makers[n] if u in local_u) for n in self.node_ids]
+        in_cone = local_u.__contains__
+        self.makers = [tuple(map(local_u.__getitem__, filter(in_cone, makers[n]))) for n in self.node_ids]
         consumers: list[list[int]] = [[] for _ in self.node_ids]
         for k, d in enumerate(self.deps):
             for i in d:
