@@ -126,7 +126,7 @@ def test_sigterm_to_every_process_with_the_command_line_prints_no_traceback(tmp_
         pids = _command_line_matches(str(out))
         assert proc.pid in pids and len(pids) >= 3, pids  # the command and its two forked workers
         assert all(b"foon2pddl\0experiment\0" in Path(f"/proc/{p}/cmdline").read_bytes() for p in pids)
-        for pid in pids:  # the command first, then its workers, as pkill does (by pid)
+        for pid in sorted(pids, key=lambda p: p != proc.pid):  # the command first, then its workers
             try:
                 os.kill(pid, signal.SIGTERM)
             except ProcessLookupError:
