@@ -110,14 +110,41 @@ def firing_order(cone: Cone, units: Sequence[int], goal: int) -> list[int] | Non
     return order if goal in have else None
 
 
+def _makes(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]]) -> bool:
+    """Whether the units in `members` make `goal` from the kitchen (their fixpoint; stops at the goal).
+    `users`: node -> the units (a superset of `members`) that consume it."""
+    deps, outs = cone.deps, cone.outs
+    missing = {u: len(deps[u]) for u in members}
+    ready = [u for u in members if not missing[u]]
+    have: set[int] = set()
+    while ready:
+        for o in outs[ready.pop()]:
+            if o not in have:
+                if o == goal:
+                    return True
+                have.add(o)
+                for v in users.get(o, ()):
+                    if v in members:
+                        missing[v] -= 1
+                        if not missing[v]:
+                            ready.append(v)
+    return False
+
+
 def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> list[int]:
-    """Drop units the goal does not need (dearest, then last in unit order, first); firing order."""
-    keep = list(units)
+    """Drop units the goal does not need (dearest, then last in unit order, first); firing order.
+
+    One fixpoint per unit tried, O(plan size x plan edges)."""
+    users: dict[int, list[int]] = {}
+    for u in dict.fromkeys(units):
+        for i in cone.deps[u]:
+            users.setdefault(i, []).append(u)
+    keep = set(units)
     for u in sorted(units, key=lambda u: (-weight[u], -u)):
-        rest = [v for v in keep if v != u]
-        if firing_order(cone, rest, goal) is not None:
-            keep = rest
-    order = firing_order(cone, keep, goal)
+        keep.discard(u)
+        if not _makes(cone, keep, goal, users):
+            keep.add(u)
+    order = firing_order(cone, [v for v in units if v in keep], goal)
     if order is None:  # `units` must make the goal; never silently return a broken plan
         raise ValueError("prune: the units do not make the goal")
     return order
