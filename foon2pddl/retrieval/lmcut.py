@@ -30,7 +30,6 @@ import heapq
 import math
 from collections.abc import Callable, Collection, Mapping, Sequence
 
-
 INF = math.inf
 ZERO = 1e-12
 
