@@ -14,6 +14,7 @@ import signal
 import subprocess
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -23,19 +24,29 @@ SEED = 1100
 EXIT = {"plan": (0, 1, 130, 143), "compile": (0, 130, 143), "experiment": (0, 3, 4, 130, 143)}
 
 
-def survivors(private: Path) -> list[str]:
-    """Command lines of processes whose environment names `private` as (or under) TMPDIR."""
-    needle = b"TMPDIR=" + bytes(private)
-    found = []
+def _processes() -> Iterator[tuple[int, bytes]]:
+    """(pid, command line) of every live process but this one; zombies (empty command line) left out."""
     for entry in os.scandir("/proc"):
         if not entry.name.isdigit() or int(entry.name) == os.getpid():
             continue
         try:
-            env = Path(f"/proc/{entry.name}/environ").read_bytes()
             cmd = Path(f"/proc/{entry.name}/cmdline").read_bytes()
         except OSError:
             continue
-        if needle in env and cmd:  # zombies (empty cmdline) hold nothing
+        if cmd:
+            yield int(entry.name), cmd
+
+
+def survivors(private: Path) -> list[str]:
+    """Command lines of processes whose environment names `private` as (or under) TMPDIR."""
+    needle = b"TMPDIR=" + bytes(private)
+    found = []
+    for pid, cmd in _processes():
+        try:
+            env = Path(f"/proc/{pid}/environ").read_bytes()
+        except OSError:
+            continue
+        if needle in env:
             found.append(cmd.replace(b"\0", b" ").decode(errors="replace"))
     return found
 
@@ -112,17 +123,7 @@ def test_signal_at_a_random_moment_leaves_nothing(tmp_path, command, case):
 
 def _command_line_matches(marker: str) -> list[int]:
     """Pids whose command line contains `marker` (what `pkill -f` would match), this process excluded."""
-    found = []
-    for entry in os.scandir("/proc"):
-        if not entry.name.isdigit() or int(entry.name) == os.getpid():
-            continue
-        try:
-            cmd = Path(f"/proc/{entry.name}/cmdline").read_bytes()
-        except OSError:
-            continue
-        if marker.encode() in cmd:
-            found.append(int(entry.name))
-    return sorted(found)
+    return sorted(pid for pid, cmd in _processes() if marker.encode() in cmd)
 
 
 def test_sigterm_to_every_process_with_the_command_line_prints_no_traceback(tmp_path):

@@ -16,7 +16,7 @@ fewest sequential rounds that can make it.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Container, Iterable, Sequence
+from collections.abc import Container, Iterable
 from dataclasses import dataclass
 
 from ..model.foon import Foon, ObjectNode
@@ -72,12 +72,11 @@ class Reachability:
         return frozenset(n for n, r in zip(self.index.nodes, self.node_round, strict=True) if r != UNREACHED)
 
 
-def backward_units(makers: Sequence[Sequence[int]], inputs: Sequence[Sequence[int]], targets: Iterable[int],
-                   seen: bytearray) -> tuple[list[int], bytearray]:
-    """The units that can contribute to the target node ids, walking backwards over makers
-    (depth-first, O(units + edges)); nodes already marked in `seen` (updated in place) are not
-    expanded. Returns the units in discovery order and their mask."""
-    mask = bytearray(len(inputs))
+def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray) -> list[int]:
+    """The units that can contribute to the target node ids, in discovery order: backwards over
+    makers (depth-first, O(units + edges)), not past kitchen nodes (those need no making)."""
+    seen = bytearray(in_kitchen)
+    taken = bytearray(len(ix.inputs))
     units: list[int] = []
     stack = list(targets)
     while stack:
@@ -85,18 +84,12 @@ def backward_units(makers: Sequence[Sequence[int]], inputs: Sequence[Sequence[in
         if seen[n]:
             continue
         seen[n] = 1
-        for u in makers[n]:
-            if not mask[u]:
-                mask[u] = 1
+        for u in ix.makers[n]:
+            if not taken[u]:
+                taken[u] = 1
                 units.append(u)
-                stack.extend(inputs[u])
-    return units, mask
-
-
-def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray) -> list[int]:
-    """The units that can contribute to the target node ids: backwards over makers, not past
-    kitchen nodes (those need no making)."""
-    return backward_units(ix.makers, ix.inputs, targets, bytearray(in_kitchen))[0]
+                stack.extend(ix.inputs[u])
+    return units
 
 
 def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],

@@ -102,12 +102,12 @@ class BatchRef:
     def resolve(self, job: Job) -> Batch:
         """The batch, its trial drawn in this process; FoonError when this process draws other goals."""
         trials = draw_at(job.paths, job.protocol, self.point).trials
-        trial = trials[self.trial - 1] if 1 <= self.trial <= len(trials) else None
-        mine = tuple(trial.goals[g - 1].describe() for g in self.goals) if trial else ()
-        if mine != self.labels:
+        batch = Batch(trials[self.trial - 1], self.network, self.solver, self.goals, self.point) \
+            if 1 <= self.trial <= len(trials) else None
+        if batch is None or batch.ref() != self:
             raise FoonError(f"this worker draws other goals for trial {self.trial} than the run's process "
                             "(another foon2pddl version?)")
-        return Batch(trial, self.network, self.solver, self.goals, self.point)
+        return batch
 
     def records(self, status: CellStatus, reason: str) -> list[Record]:
         """One record per goal with the same status and reason (a failed or lost task)."""
