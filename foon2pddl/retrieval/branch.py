@@ -71,6 +71,7 @@ class BranchAndBound:
         self.makers = makers
         self.deps = deps
         self.cone = Cone(units, self.deps, ix.outputs, makers, weight, ix.rank.__getitem__)
+        self.top = self.cone.state(frozenset())  # h_max with no unit chosen: the base of every bound
         self._static: dict[int, float] | None = None
         self.integral = all(float(weight[u]).is_integer() for u in units)
         self.best_cost = math.inf
@@ -87,7 +88,7 @@ class BranchAndBound:
     def static(self) -> dict[int, float]:
         """h_max of every cone node with no unit free (child and candidate order), computed when first needed."""
         if self._static is None:
-            self._static = self.cone.node_costs()
+            self._static = dict(zip(self.cone.node_ids, self.top.cost, strict=True))
         return self._static
 
     # -- incumbents --------------------------------------------------------------------------------
@@ -136,7 +137,7 @@ class BranchAndBound:
             if self.deadline is not None and time.perf_counter() >= self.deadline:
                 self.stopped = "time budget"
                 return False
-            self.cand_bound[c] = max(self.cand_bound[c], lmcut((), (c,)))
+            self.cand_bound[c] = max(self.cand_bound[c], lmcut(self.top, (c,)))
         return self.lower_bound() >= self.best_cost - EPS
 
     def improve(self, cands: list[int], attempts: int) -> None:
@@ -145,7 +146,7 @@ class BranchAndBound:
         gid, commit = self.best
         units = sorted({cone.local_u[u] for u in commit.values()})
         goal, order, used = improve(cone, units, cone.local_n[gid], {cone.local_n[c] for c in cands}, attempts,
-                                    self.deadline)
+                                    self.deadline, self.lower_bound())
         self.improved = used
         self.offer_units(cone.node_ids[goal], [cone.unit_ids[u] for u in order])
 
@@ -217,12 +218,13 @@ class BranchAndBound:
         of the nodes they open (ties: a unit already chosen, then content order).
         """
         rank, lmcut, static, cache = self.ix.rank, self.cone.lmcut, self.static, self.h_cache
+        state = self.cone.state
         sharpen = self._sharpen
         above = math.inf
-        # frame: (lower bound f, g, chosen units, commitments, open nodes)
-        stack = [(root, 0.0, frozenset(), {}, frozenset((goal,)))]
+        # frame: (lower bound f, g, chosen units, commitments, open nodes, h_max of a subset of the chosen units)
+        stack = [(root, 0.0, frozenset(), {}, frozenset((goal,)), self.top)]
         while stack:
-            f, g, chosen, commit, open_nodes = stack.pop()
+            f, g, chosen, commit, open_nodes, base = stack.pop()
             while True:
                 bound = sharpen(f)
                 if bound > t + EPS or bound >= self.best_cost - EPS:
@@ -243,7 +245,8 @@ class BranchAndBound:
                 key = (chosen, open_nodes)
                 h = cache.get(key)
                 if h is None:
-                    h = cache[key] = lmcut(chosen, open_nodes, self.best_cost - EPS - g)
+                    base = state(chosen, base)  # the children's base too: they only add units
+                    h = cache[key] = lmcut(base, open_nodes, self.best_cost - EPS - g)
                 f = max(f, g + h)
                 bound = sharpen(f)
                 if bound > t + EPS or bound >= self.best_cost - EPS:
@@ -252,7 +255,7 @@ class BranchAndBound:
                 order = []
                 for u, (g2, ch2, co2, op2) in kids:
                     est = g2 + max((static.get(i, math.inf) for i in op2 - open_nodes), default=0.0)
-                    order.append(((0 if u in chosen else 1, est, rank[u]), (max(f, g2), g2, ch2, co2, op2)))
+                    order.append(((0 if u in chosen else 1, est, rank[u]), (max(f, g2), g2, ch2, co2, op2, base)))
                 order.sort(key=lambda c: c[0], reverse=True)
                 stack.extend(frame for _, frame in order)
                 break

@@ -17,6 +17,10 @@ What is done differently from the public reference, and why:
   O(nodes x queue length) steps even without its iteration `budget`; when the
   budget runs out first the answer is `budget exhausted`.
 - All goal candidates are sought at once (reaching any satisfies the goal).
+- Bookkeeping that changes no answer: each unit looked at keeps a count of its
+  missing inputs, updated as nodes get made, so a maker is checked in O(1);
+  a retried object none of whose makers became ready is put back at once, its
+  missing inputs being queued already (FOON-EXP protocol goals: 3.1 s -> 2.2 s).
 - Tie-break order (never file order): the queue starts with the candidates in
   sorted node order; an object's makers are tried in unit content order
   (motion label, then sorted inputs, then sorted outputs; `index.FoonIndex`);
@@ -80,9 +84,14 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
             return Retrieval(make_tree(foon, ix, c, ()), None, "greedy", "goal is in the kitchen")
     is_candidate = set(candidates)
 
-    makers, inputs, outputs = ix.makers, ix.inputs, ix.outputs
+    makers, inputs, outputs, consumers = ix.makers, ix.inputs, ix.outputs, ix.consumers
     queue: deque[int] = deque(sorted(is_candidate))
     seen: set[int] = set(queue)
+    # unavailable inputs per unit looked at (kept up to date as nodes get made): a retried object's
+    # makers are checked in O(1) each instead of scanning their inputs again
+    missing: dict[int, int] = {}
+    expanded: set[int] = set()  # objects whose makers' missing inputs are queued (they stay queued or made)
+    ready = bytearray(len(ix.nodes))  # some unit looked at and making this node has all its inputs now
     achiever: dict[int, int] = {}
     fired_at: dict[int, int] = {}
     fired = 0
@@ -103,9 +112,19 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
             if since_progress >= window:
                 break
             continue
+        if obj in expanded and not ready[obj]:  # a retry that still can fire nothing
+            queue.append(obj)
+            since_progress += 1
+            if since_progress >= window:
+                break
+            continue
         progress = False
         for u in makers[obj]:
-            if all(available[i] for i in inputs[u]):
+            m = missing.get(u)
+            if m is None:
+                ins = inputs[u]
+                m = missing[u] = len(ins) - sum(map(available.__getitem__, ins))
+            if not m:
                 fired_at[u] = fired
                 fired += 1
                 made = None
@@ -113,6 +132,12 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
                     if not available[n]:
                         available[n] = 1
                         achiever[n] = u
+                        for v in consumers[n]:
+                            if v in missing:
+                                missing[v] -= 1
+                                if not missing[v]:
+                                    for o in outputs[v]:
+                                        ready[o] = 1
                         if made is None and n in is_candidate:
                             made = n
                 if made is not None:
@@ -124,12 +149,14 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
                 progress = True
                 break
         else:
-            for u in makers[obj]:
-                for i in inputs[u]:
-                    if not available[i] and i not in seen:
-                        seen.add(i)
-                        queue.append(i)
-                        progress = True
+            if obj not in expanded:  # on a retry every missing input is already queued
+                expanded.add(obj)
+                for u in makers[obj]:
+                    for i in inputs[u]:
+                        if not available[i] and i not in seen:
+                            seen.add(i)
+                            queue.append(i)
+                            progress = True
             if makers[obj]:
                 queue.append(obj)  # retry once more is available; an object nobody makes is dropped
         if progress:

@@ -151,14 +151,15 @@ def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> l
 
 
 def improve(cone: Cone, units: list[int], goal: int, goals: set[int], attempts: int,
-            deadline: float | None = None) -> tuple[int, list[int], int]:
+            deadline: float | None = None, floor: float = 0.0) -> tuple[int, list[int], int]:
     """(goal, units in firing order, attempts used) of the cheapest plan the local search finds
-    from the executable `units` making `goal` (local ids), within `attempts` and the deadline."""
+    from the executable `units` making `goal` (local ids), within `attempts` and the deadline.
+    It stops early once a plan costs no more than `floor`, a proven lower bound (nothing is cheaper)."""
     weight = cone.weight
     best = prune(cone, units, goal, weight)
     best_cost = math.fsum(weight[u] for u in best)
     used = 0
-    improved = True
+    improved = best_cost > floor + 1e-9
     while improved and used < attempts:
         improved = False
         for x in sorted(best, key=lambda u: (-weight[u], u)):
@@ -177,6 +178,6 @@ def improve(cone: Cone, units: list[int], goal: int, goals: set[int], attempts: 
             cost = math.fsum(weight[u] for u in plan)
             if cost < best_cost - 1e-9:
                 goal, best, best_cost = g, plan, cost
-                improved = True
+                improved = best_cost > floor + 1e-9
                 break
     return goal, best, used

@@ -5,8 +5,11 @@ units are already paid for (cost 0). h_max is the cost of the dearest single
 chain; LM-cut (Helmert & Domshlak, ICAPS 2009) adds up disjoint "landmark"
 cuts -- sets of units one of which every solution must use -- and is usually
 close to the true cost on recipe-shaped networks, where h_max sees only one
-branch. A bound costs O(cone size + landmarks x zone makers): h_max is
-computed once and then updated incrementally after each cut (costs only decrease).
+branch. h_max is computed from scratch once per cone (`Cone.state`); a search
+node's h_max is its parent's with the newly chosen units made free, and each
+cut updates it in place: costs only ever decrease, and a unit is recomputed
+only when its dearest input got cheaper (`_decrease`). A bound costs
+O(cone size) to copy the state plus the nodes whose cost drops per landmark.
 
 The cut. Exact LM-cut takes the units whose dearest input is reachable from
 the kitchen without entering the goal zone; finding that part is a search
@@ -29,6 +32,7 @@ from __future__ import annotations
 import heapq
 import math
 from collections.abc import Callable, Collection, Mapping, Sequence
+from dataclasses import dataclass
 
 INF = math.inf
 ZERO = 1e-12
@@ -98,77 +102,91 @@ class Cone:
                             push(heap, (uc, o))
         return cost, ucost
 
-    def _decrease(self, rc: list[float], cost: list[float], ucost: list[float], changed: Collection[int],
-                  touched: set[int]) -> None:
-        """Propagate lower costs after the units in `changed` got cheaper (h_max stays exact)."""
-        deps, outs, consumers = self.deps, self.outs, self.consumers
+    def _decrease(self, rc: list[float], cost: list[float], ucost: list[float], pcf: list[int],
+                  changed: Collection[int]) -> None:
+        """Propagate lower costs after the units in `changed` got cheaper (h_max and `pcf` stay exact).
+
+        A unit's cost (the max over its inputs) can only drop when its dearest input
+        `pcf` does: a cheaper other input leaves the max, and the lowest-id tie-break,
+        unchanged. So only the consumers whose `pcf` is the popped node are recomputed.
+        """
+        sdeps, outs, consumers = self.sorted_deps, self.outs, self.consumers
+        push, pop = heapq.heappush, heapq.heappop
         heap: list[tuple[float, int]] = []
         for u in changed:
             uc = ucost[u] + rc[u]
             for o in outs[u]:
                 if uc < cost[o]:
                     cost[o] = uc
-                    heapq.heappush(heap, (uc, o))
+                    push(heap, (uc, o))
         while heap:
-            c, n = heapq.heappop(heap)
+            c, n = pop(heap)
             if c > cost[n]:
                 continue
             for u in consumers[n]:
-                touched.add(u)
-                d = deps[u]
-                new = cost[d[0]] if len(d) == 1 else max(map(cost.__getitem__, d))
+                if pcf[u] != n:
+                    continue
+                d = sdeps[u]
+                if len(d) == 1:
+                    new = c
+                else:
+                    new = max(map(cost.__getitem__, d))
+                    for i in d:
+                        if cost[i] == new:
+                            pcf[u] = i
+                            break
                 if new < ucost[u]:
                     ucost[u] = new
                     uc = new + rc[u]
                     for o in outs[u]:
                         if uc < cost[o]:
                             cost[o] = uc
-                            heapq.heappush(heap, (uc, o))
+                            push(heap, (uc, o))
 
-    def _local(self, free: Collection[int], open_nodes: Collection[int]) -> tuple[list[float], list[int]]:
+    def state(self, free: frozenset[int], base: HMax | None = None) -> HMax:
+        """h_max of the cone with the units in `free` (network ids) costing 0.
+
+        From `base` (whose free units are a subset of `free`) only the newly free
+        units' effects are propagated (`_decrease`): a search child differs from its
+        parent by a unit or two, and this is much cheaper than a fresh Dijkstra.
+        """
         lu = self.local_u
+        if base is not None and base.free <= free:
+            rc, cost, ucost, pcf = list(base.rc), list(base.cost), list(base.ucost), list(base.pcf)
+            changed = [lu[u] for u in free - base.free if u in lu]
+            for k in changed:
+                rc[k] = 0.0
+            self._decrease(rc, cost, ucost, pcf, changed)
+            return HMax(free, rc, cost, ucost, pcf)
         rc = list(self.weight)
         for u in free:
             k = lu.get(u)
             if k is not None:
                 rc[k] = 0.0
-        return rc, [self.local_n[n] for n in open_nodes]
-
-    def hmax(self, free: Collection[int], open_nodes: Collection[int]) -> float:
-        """The dearest open node's h_max cost, units in `free` costing 0."""
-        if not open_nodes:
-            return 0.0
-        rc, goal = self._local(free, open_nodes)
-        cost, _ = self._hmax(rc)
-        return max(cost[n] for n in goal)
-
-    def node_costs(self) -> dict[int, float]:
-        """h_max cost of every cone node with no unit free (network node id -> cost)."""
-        cost, _ = self._hmax(list(self.weight))
-        return dict(zip(self.node_ids, cost, strict=True))
-
-    # -- LM-cut -----------------------------------------------------------------------------------
-
-    def lmcut(self, free: Collection[int], open_nodes: Collection[int], stop_at: float = INF) -> float:
-        """LM-cut bound for making all `open_nodes`, units in `free` costing 0.
-
-        Returns early once the bound reaches `stop_at` (enough for pruning).
-        """
-        if not open_nodes:
-            return 0.0
-        rc, goal = self._local(free, open_nodes)
-        deps, makers = self.deps, self.makers
-        # Over the whole cone: the costs of the goal's backward closure depend only on its own units, so
-        # restricting to it (a backward walk per call) gives the same bound; it is ~97 % of the cone anyway.
         cost, ucost = self._hmax(rc)
-        pcf = [-1] * len(deps)  # each unit's dearest input (lowest id on ties); -1: none (the kitchen)
-        sdeps = self.sorted_deps
-        for u in range(len(deps)):
+        pcf = [-1] * len(self.deps)  # each unit's dearest input (lowest id on ties); -1: none (the kitchen)
+        for u, d in enumerate(self.sorted_deps):
             top = ucost[u]
-            for i in sdeps[u]:
+            for i in d:
                 if cost[i] == top:
                     pcf[u] = i
                     break
+        return HMax(free, rc, cost, ucost, pcf)
+
+    # -- LM-cut -----------------------------------------------------------------------------------
+
+    def lmcut(self, state: HMax, open_nodes: Collection[int], stop_at: float = INF) -> float:
+        """LM-cut bound for making all `open_nodes` (network ids) with `state`'s free units costing 0.
+
+        Returns early once the bound reaches `stop_at` (enough for pruning). `state` is not changed.
+        """
+        if not open_nodes:
+            return 0.0
+        goal = [self.local_n[n] for n in open_nodes]
+        makers = self.makers
+        # Over the whole cone: the costs of the goal's backward closure depend only on its own units, so
+        # restricting to it (a backward walk per call) gives the same bound; it is ~97 % of the cone anyway.
+        rc, cost, ucost, pcf = list(state.rc), list(state.cost), list(state.ucost), list(state.pcf)
         total = 0.0
         while True:
             goal_cost = max(cost[n] for n in goal)
@@ -198,12 +216,16 @@ class Cone:
                 return total
             for u in cut:
                 rc[u] -= m
-            touched: set[int] = set()
-            self._decrease(rc, cost, ucost, cut, touched)
-            for u in touched:
-                top = ucost[u]
-                for i in sdeps[u]:
-                    if cost[i] == top:
-                        pcf[u] = i
-                        break
+            self._decrease(rc, cost, ucost, pcf, cut)
 
+
+@dataclass(frozen=True, slots=True)
+class HMax:
+    """h_max over a cone with the units in `free` (network ids) costing 0: reduced unit costs `rc`,
+    node costs, unit costs (max over inputs) and each unit's dearest input `pcf` (local ids)."""
+
+    free: frozenset[int]
+    rc: list[float]
+    cost: list[float]
+    ucost: list[float]
+    pcf: list[int]
