@@ -37,7 +37,7 @@ def cones(draw):
         outputs.append(tuple(sorted(outs)))
     makers = {n: tuple(u for u in range(count) if n in outputs[u]) for n in range(NODES)}
     weight = draw(st.lists(st.sampled_from([1.0, 2.0, 0.5, 3.25]), min_size=count, max_size=count))
-    return Cone(range(count), deps, outputs, makers, weight), deps, outputs, weight
+    return Cone.of(range(count), deps, outputs, makers, weight), deps, outputs, weight
 
 
 def cheapest(deps, outputs, weight, free, goal):

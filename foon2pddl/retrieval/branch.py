@@ -31,7 +31,7 @@ from ..analysis.index import FoonIndex
 from ..analysis.reachability import UNREACHED, Reachability
 from ..model.foon import Foon
 from .improve import improve
-from .lmcut import Cone
+from .lmcut import Cone, HMax
 
 EPS = 1e-9
 
@@ -46,34 +46,17 @@ class BranchAndBound:
         self.weight = weight
         self.node_limit = math.inf if node_limit is None else node_limit
         self.deadline = deadline
-        kitchen, deps, firing_makers = _per_fixpoint(reach)
-        self.kitchen = kitchen
-        fires = reach.unit_round
-        # Units that can fire and lie backwards from a candidate, and the makers among them.
-        units: set[int] = set()
-        makers: dict[int, tuple[int, ...]] = {}
-        stack = list(cands)
-        while stack:
-            n = stack.pop()
-            if n in makers or kitchen[n]:
-                continue
-            mine = firing_makers.get(n)
-            if mine is None:
-                mine = firing_makers[n] = tuple(u for u in ix.makers[n] if fires[u] != UNREACHED)
-            makers[n] = mine
-            for u in mine:
-                if u not in units:
-                    units.add(u)
-                    stack.extend(ix.inputs[u])
-                    if u not in deps:
-                        deps[u] = tuple(i for i in ix.inputs[u] if not kitchen[i])
-        self.units = units
-        self.makers = makers
-        self.deps = deps
-        self.cone = Cone(units, self.deps, ix.outputs, makers, weight, ix.rank.__getitem__)
-        self.top = self.cone.state(frozenset())  # h_max with no unit chosen: the base of every bound
+        fix = _per_fixpoint(reach)
+        self.kitchen = fix.kitchen
+        self.deps = fix.deps
+        # The units that can fire and lie backwards from a candidate, and h_max over them with no unit
+        # chosen (the base of every bound), cut out of those of the whole fixpoint.
+        wide, wide_top = fix.top(weight)
+        self.cone, self.top = wide.restrict([wide.local_n[c] for c in cands], wide_top)
+        self.units = set(self.cone.unit_ids)
+        self.makers = {n: fix.makers[n] for n in self.cone.node_ids}
         self._static: dict[int, float] | None = None
-        self.integral = all(float(weight[u]).is_integer() for u in units)
+        self.integral = all(w.is_integer() for w in set(self.cone.weight))
         self.best_cost = math.inf
         self.best: tuple[int, dict[int, int]] = (-1, {})
         self.expanded = 0
@@ -262,13 +245,39 @@ class BranchAndBound:
         return above
 
 
+class _Fixpoint:
+    """What the goals of one fixpoint share: the kitchen mask; for every unit that fires its inputs not in
+    the kitchen (`deps`) and its outputs neither in the kitchen nor among its inputs (`effects`); for every
+    node they make its firing makers (content order); and the h_max of all firing units (`top`)."""
+
+    def __init__(self, reach: Reachability) -> None:
+        ix, fires = reach.index, reach.unit_round
+        self.kitchen = kitchen = [r == 0 for r in reach.node_round]
+        self.units = units = [u for u, r in enumerate(fires) if r != UNREACHED]
+        self.deps = {u: tuple(i for i in ix.inputs[u] if not kitchen[i]) for u in units}
+        self.effects = {u: tuple(o for o in ix.outputs[u] if not kitchen[o] and o not in ix.inputs[u])
+                        for u in units}
+        made = sorted({n for e in self.effects.values() for n in e})
+        self.makers = {n: tuple(u for u in ix.makers[n] if fires[u] != UNREACHED) for n in made}
+        self.rank = ix.rank.__getitem__
+        self._top: tuple[list[float], Cone, HMax] | None = None
+
+    def top(self, weight: list[float]) -> tuple[Cone, HMax]:
+        """The cone of every firing unit and its h_max with no unit free, for `weight` (the last one asked
+        is remembered, by identity: `optimal.unit_weights` returns the same list for the same rates)."""
+        hit = self._top
+        if hit is None or hit[0] is not weight:
+            cone = Cone.of(self.units, self.deps, self.effects, self.makers, weight, self.rank)
+            hit = self._top = (weight, cone, cone.state(frozenset()))
+        return hit[1], hit[2]
+
+
 _FIXPOINT_CACHE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def _per_fixpoint(reach: Reachability) -> tuple[list[bool], dict[int, tuple[int, ...]], dict[int, tuple[int, ...]]]:
-    """Kitchen mask, non-kitchen inputs per unit and firing makers per node (both filled lazily),
-    shared by the goals of one fixpoint."""
+def _per_fixpoint(reach: Reachability) -> _Fixpoint:
+    """The shared data of `reach`'s goals, cached while `reach` lives."""
     hit = _FIXPOINT_CACHE.get(reach)
     if hit is None:
-        hit = _FIXPOINT_CACHE[reach] = ([r == 0 for r in reach.node_round], {}, {})
+        hit = _FIXPOINT_CACHE[reach] = _Fixpoint(reach)
     return hit

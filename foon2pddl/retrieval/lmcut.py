@@ -24,7 +24,10 @@ protocol's FOON-EXP goals it gives the same bound on 145 of 146 goals, 2.4x fast
 A `Cone` holds the units a search may use with dense local ids (in the order
 of `key`, e.g. content order, so that tie-breaks never follow file order): for each unit
 its inputs that are not in the kitchen (`deps`) and its outputs that are cone
-nodes; for every non-kitchen node the cone units that make it.
+nodes; for every non-kitchen node the cone units that make it. The search builds
+one cone of every firing unit per fixpoint (`Cone.of`) with its h_max, and cuts
+each goal's cone out of it (`restrict`), h_max included: the goals of a kitchen
+share that work (FOON-EXP protocol: 5.8 ms -> 3.5 ms per goal).
 """
 
 from __future__ import annotations
@@ -39,32 +42,93 @@ ZERO = 1e-12
 
 
 class Cone:
-    """Units and nodes of a search, renumbered densely, with the bounds over them."""
+    """Units and nodes of a search, renumbered densely, with the bounds over them.
 
-    def __init__(self, units: Collection[int], deps: Mapping[int, tuple[int, ...]],
-                 outputs: Sequence[tuple[int, ...]], makers: Mapping[int, tuple[int, ...]],
-                 weight: Sequence[float], key: Callable[[int], object] | None = None) -> None:
-        self.unit_ids = sorted(units, key=key)
-        self.node_ids = sorted(makers)
-        local_u = {u: k for k, u in enumerate(self.unit_ids)}
-        local_n = {n: k for k, n in enumerate(self.node_ids)}
-        self.local_u = local_u
-        self.local_n = local_n
-        self.deps = [tuple(map(local_n.__getitem__, deps[u])) for u in self.unit_ids]
-        self.sorted_deps = [tuple(sorted(d)) for d in self.deps]  # lowest id first: the dearest input's tie-break
-        # outputs that are cone nodes; a node the unit also consumes is no useful effect
-        self.outs = [tuple(local_n[o] for o in outputs[u] if o in local_n and o not in deps[u])
-                     for u in self.unit_ids]
-        self.weight = [weight[u] for u in self.unit_ids]
-        in_cone = local_u.__contains__
-        self.makers = [tuple(map(local_u.__getitem__, filter(in_cone, makers[n]))) for n in self.node_ids]
-        consumers: list[list[int]] = [[] for _ in self.node_ids]
-        for k, d in enumerate(self.deps):
+    Local ids follow the network's orders (nodes by id, units by `key`), so a unit's
+    `deps` are in increasing local id order, the dearest input's tie-break."""
+
+    def __init__(self, unit_ids: list[int], node_ids: list[int], deps: list[tuple[int, ...]],
+                 outs: list[tuple[int, ...]], makers: list[tuple[int, ...]], consumers: list[tuple[int, ...]],
+                 weight: list[float]) -> None:
+        """From local structure: network ids per local id, and per local unit its inputs not in the
+        kitchen (`deps`, increasing) and useful outputs (`outs`), per local node its makers and consumers
+        (increasing), unit weights. `Cone.of` builds it from network ids, `restrict` from a wider cone."""
+        self.unit_ids = unit_ids
+        self.node_ids = node_ids
+        self.local_u = {u: k for k, u in enumerate(unit_ids)}
+        self.local_n = {n: k for k, n in enumerate(node_ids)}
+        self.deps = deps
+        self.outs = outs
+        self.makers = makers
+        self.consumers = consumers
+        self.weight = weight
+        self.seeds = [k for k, d in enumerate(deps) if not d]
+        self.dep_counts = list(map(len, deps))
+
+    @classmethod
+    def of(cls, units: Collection[int], deps: Mapping[int, tuple[int, ...]], effects: Mapping[int, tuple[int, ...]],
+           makers: Mapping[int, tuple[int, ...]], weight: Sequence[float],
+           key: Callable[[int], object] | None = None) -> Cone:
+        """The cone of `units` (network ids, ordered by `key`): `deps[u]` the inputs of unit u not in the
+        kitchen (increasing), `effects[u]` its outputs neither in the kitchen nor among its inputs,
+        `makers` node -> its makers (all in `units`); nodes are the keys of `makers`."""
+        unit_ids = sorted(units, key=key)
+        node_ids = sorted(makers)
+        local_u = {u: k for k, u in enumerate(unit_ids)}
+        local_n = {n: k for k, n in enumerate(node_ids)}
+        local_deps = [tuple(map(local_n.__getitem__, deps[u])) for u in unit_ids]
+        in_cone = local_n.__contains__
+        outs = [tuple(map(local_n.__getitem__, filter(in_cone, effects[u]))) for u in unit_ids]
+        local_makers = [tuple(map(local_u.__getitem__, makers[n])) for n in node_ids]
+        consumers: list[list[int]] = [[] for _ in node_ids]
+        for k, d in enumerate(local_deps):
             for i in d:
                 consumers[i].append(k)
-        self.consumers = consumers
-        self.seeds = [k for k, d in enumerate(self.deps) if not d]
-        self.dep_counts = [len(d) for d in self.deps]
+        return cls(unit_ids, node_ids, local_deps, outs, local_makers, list(map(tuple, consumers)),
+                   [weight[u] for u in unit_ids])
+
+    def restrict(self, goals: Collection[int], top: HMax) -> tuple[Cone, HMax]:
+        """The sub-cone of the units that lie backwards from the `goals` (local ids), and its h_max read
+        off `top` (this cone's, no unit free). A node's h_max depends only on its backward closure, which
+        both cones hold, and local ids keep their order, so the dearest inputs' tie-breaks agree too.
+        O(sub-cone + the sub-cone nodes' consumers here)."""
+        assert not top.free
+        makers, deps = self.makers, self.deps
+        seen_n = bytearray(len(self.node_ids))
+        seen_u = bytearray(len(self.unit_ids))
+        nodes: list[int] = []
+        units: list[int] = []
+        stack = list(goals)
+        while stack:
+            n = stack.pop()
+            if seen_n[n]:
+                continue
+            seen_n[n] = 1
+            nodes.append(n)
+            for u in makers[n]:
+                if not seen_u[u]:
+                    seen_u[u] = 1
+                    units.append(u)
+                    stack.extend(deps[u])
+        nodes.sort()
+        units.sort()
+        new_n = [-1] * len(self.node_ids)
+        for k, n in enumerate(nodes):
+            new_n[n] = k
+        new_u = [-1] * len(self.unit_ids)
+        for k, u in enumerate(units):
+            new_u[u] = k
+        at_n, at_u, absent = new_n.__getitem__, new_u.__getitem__, (-1).__ne__
+        sub = Cone([self.unit_ids[u] for u in units], [self.node_ids[n] for n in nodes],
+                   [tuple(map(at_n, deps[u])) for u in units],
+                   [tuple(filter(absent, map(at_n, self.outs[u]))) for u in units],
+                   [tuple(map(at_u, makers[n])) for n in nodes],
+                   [tuple(filter(absent, map(at_u, self.consumers[n]))) for n in nodes],
+                   [self.weight[u] for u in units])
+        pcf = top.pcf
+        state = HMax(top.free, list(sub.weight), [top.cost[n] for n in nodes], [top.ucost[u] for u in units],
+                     [-1 if pcf[u] < 0 else new_n[pcf[u]] for u in units])
+        return sub, state
 
     # -- h_max ------------------------------------------------------------------------------------
 
@@ -110,7 +174,7 @@ class Cone:
         `pcf` does: a cheaper other input leaves the max, and the lowest-id tie-break,
         unchanged. So only the consumers whose `pcf` is the popped node are recomputed.
         """
-        sdeps, outs, consumers = self.sorted_deps, self.outs, self.consumers
+        sdeps, outs, consumers = self.deps, self.outs, self.consumers
         push, pop = heapq.heappush, heapq.heappop
         heap: list[tuple[float, int]] = []
         for u in changed:
@@ -165,7 +229,7 @@ class Cone:
                 rc[k] = 0.0
         cost, ucost = self._hmax(rc)
         pcf = [-1] * len(self.deps)  # each unit's dearest input (lowest id on ties); -1: none (the kitchen)
-        for u, d in enumerate(self.sorted_deps):
+        for u, d in enumerate(self.deps):
             top = ucost[u]
             for i in d:
                 if cost[i] == top:

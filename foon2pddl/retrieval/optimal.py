@@ -51,11 +51,20 @@ IMPROVE_ATTEMPTS = 25
 
 
 def unit_weights(ix, rates: Rates | None) -> list[float]:
-    """Cost of every unit of the index: 1 (rates None), or -log of its motion's success rate."""
+    """Cost of every unit of the index: 1 (rates None), or -log of its motion's success rate.
+
+    The list of the last `rates` asked is remembered (the same object is returned: the
+    search caches per-fixpoint bounds by it); do not modify it."""
+    hit = ix._memo.get("unit_weights")
+    if hit is not None and hit[0] is rates:
+        return hit[1]
     if rates is None:
-        return [1.0] * len(ix.motions)
-    by_motion = {m: rates.cost(m) for m in set(ix.motions)}
-    return [by_motion[m] for m in ix.motions]
+        weights = [1.0] * len(ix.motions)
+    else:
+        by_motion = {m: rates.cost(m) for m in set(ix.motions)}
+        weights = [by_motion[m] for m in ix.motions]
+    ix._memo["unit_weights"] = (rates, weights)
+    return weights
 
 
 def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
