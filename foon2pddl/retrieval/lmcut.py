@@ -27,7 +27,7 @@ its inputs that are not in the kitchen (`deps`) and its outputs that are cone
 nodes; for every non-kitchen node the cone units that make it. The search builds
 one cone of every firing unit per fixpoint (`Cone.of`) with its h_max, and cuts
 each goal's cone out of it (`restrict`), h_max included: the goals of a kitchen
-share that work (FOON-EXP protocol: 5.8 ms -> 3.5 ms per goal).
+share that work (FOON-EXP protocol goals, cone and top h_max: 7.5 ms -> 4.8 ms each).
 """
 
 from __future__ import annotations
