@@ -91,6 +91,29 @@ def test_lmcut_is_admissible_and_at_least_hmax(cone_case, free, goal):
     assert (bound == math.inf) == (best == math.inf)
 
 
+@settings(max_examples=300, deadline=None)
+@given(cones(), st.lists(st.integers(0, NODES - 1), min_size=1, max_size=3, unique=True))
+def test_a_restricted_cone_is_the_cone_built_from_its_units(cone_case, goals):
+    """`restrict` (a goal's cone cut out of a wider one, h_max included) equals the cone built from
+    scratch over the units lying backwards from the goals, and its h_max a fresh one."""
+    wide, deps, outputs, weight = cone_case
+    nodes, units, stack = set(), set(), list(goals)
+    while stack:  # the backward closure, plainly
+        n = stack.pop()
+        if n not in nodes:
+            nodes.add(n)
+            for u in range(len(outputs)):
+                if n in outputs[u] and u not in units:
+                    units.add(u)
+                    stack.extend(deps[u])
+    fresh = Cone.of(units, deps, outputs, {n: tuple(u for u in sorted(units) if n in outputs[u]) for n in nodes},
+                    weight)
+    sub, top = wide.restrict([wide.local_n[g] for g in goals], wide.state(frozenset()))
+    fields = ("unit_ids", "node_ids", "deps", "outs", "makers", "consumers", "weight", "seeds", "dep_counts")
+    assert {f: getattr(sub, f) for f in fields} == {f: getattr(fresh, f) for f in fields}
+    assert snapshot(top) == snapshot(fresh.state(frozenset()))
+
+
 def plain_greedy(foon, kitchen, goal):
     """The paper's loop without bookkeeping: the units fired, in order, or None (nothing more can be made)."""
     ix = index_of(foon)
