@@ -369,14 +369,16 @@ def test_bad_sweeps_exit_2():
 
 
 def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_path):
-    config = runner.Config((), Protocol(trials=2, goals=30), ("reg",), ("native-complete", "fd-tree"), tmp_path)
+    goals = runner.CHUNK + 5
+    config = runner.Config((), Protocol(trials=2, goals=goals), ("reg",), ("native-complete", "fd-tree"), tmp_path)
     batches = runner.plan_batches(config, set())
     sizes = sorted((b.solver, b.trial.index, len(b.goals)) for b in batches)
-    assert sizes == [("fd-tree", 1, 30), ("fd-tree", 2, 30), ("native-complete", 1, 5), ("native-complete", 1, 25),
-                     ("native-complete", 2, 5), ("native-complete", 2, 25)]
+    assert sizes == [("fd-tree", 1, goals), ("fd-tree", 2, goals), ("native-complete", 1, 5),
+                     ("native-complete", 1, runner.CHUNK), ("native-complete", 2, 5),
+                     ("native-complete", 2, runner.CHUNK)]
     assert batches[0].solver == "fd-tree"  # costliest first
     done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
-    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [20, 30]
+    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [goals - 10, goals]
 
 
 def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_path):

@@ -106,9 +106,10 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     if spec.states is None:
         return Goal(spec, tuple(sorted(same_label)), level)
     want = project_node(make_node(spec.label, spec.states), level).states
-    exact = [n for n in same_label if n.states == want]
-    subset = [n for n in same_label if set(want) <= set(n.states)]
-    found = exact or subset
+    found = [n for n in same_label if n.states == want]
+    if not found:
+        wanted = set(want)
+        found = [n for n in same_label if wanted <= set(n.states)]
     if not found:
         known = sorted({", ".join(s.describe() for s in n.states) for n in same_label})[:8]
         raise UsageError(
