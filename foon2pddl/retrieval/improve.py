@@ -37,17 +37,14 @@ def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int,
     heap: list[tuple[float, int]] = []
     push, pop = heapq.heappush, heapq.heappop
 
-    def fire(u: int, base: float) -> None:
-        uc = base + rc[u]
-        for o in outs[u]:
-            if uc < cost[o]:
-                cost[o] = uc
-                sup[o] = u
-                push(heap, (uc, o))
-
     for u in cone.seeds:
-        if rc[u] < INF:
-            fire(u, 0.0)
+        uc = rc[u]
+        if uc < INF:
+            for o in outs[u]:
+                if uc < cost[o]:
+                    cost[o] = uc
+                    sup[o] = u
+                    push(heap, (uc, o))
     settled = bytearray(len(cone.node_ids))
     while heap:
         c, n = pop(heap)
@@ -110,12 +107,14 @@ def firing_order(cone: Cone, units: Sequence[int], goal: int) -> list[int] | Non
     return order if goal in have else None
 
 
-def _makes(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]]) -> bool:
+def _makes(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]], counts: dict[int, int],
+           seeds: list[int]) -> bool:
     """Whether the units in `members` make `goal` from the kitchen (their fixpoint; stops at the goal).
-    `users`: node -> the units (a superset of `members`) that consume it."""
-    deps, outs = cone.deps, cone.outs
-    missing = {u: len(deps[u]) for u in members}
-    ready = [u for u in members if not missing[u]]
+    `users`: node -> the units (a superset of `members`) that consume it; `counts`: their input counts;
+    `seeds`: those without inputs."""
+    outs = cone.outs
+    missing = counts.copy()
+    ready = [u for u in seeds if u in members]
     have: set[int] = set()
     while ready:
         for o in outs[ready.pop()]:
@@ -140,9 +139,11 @@ def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> l
         for i in cone.deps[u]:
             users.setdefault(i, []).append(u)
     keep = set(units)
+    counts = {u: cone.dep_counts[u] for u in keep}
+    seeds = [u for u in keep if not counts[u]]
     for u in sorted(units, key=lambda u: (-weight[u], -u)):
         keep.discard(u)
-        if not _makes(cone, keep, goal, users):
+        if not _makes(cone, keep, goal, users, counts, seeds):
             keep.add(u)
     order = firing_order(cone, [v for v in units if v in keep], goal)
     if order is None:  # `units` must make the goal; never silently return a broken plan
