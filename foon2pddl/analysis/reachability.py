@@ -16,7 +16,7 @@ fewest sequential rounds that can make it.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Container, Iterable
+from collections.abc import Container, Iterable, Sequence
 from dataclasses import dataclass
 
 from ..model.foon import Foon, ObjectNode
@@ -75,8 +75,15 @@ class Reachability:
 def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray) -> list[int]:
     """The units that can contribute to the target node ids, in discovery order: backwards over
     makers (depth-first, O(units + edges)), not past kitchen nodes (those need no making)."""
-    seen = bytearray(in_kitchen)
-    taken = bytearray(len(ix.inputs))
+    return walk_back(ix.makers, ix.inputs, targets, bytearray(in_kitchen))
+
+
+def walk_back(makers: Sequence[Sequence[int]], inputs: Sequence[Sequence[int]], targets: Iterable[int],
+              seen: bytearray) -> list[int]:
+    """The units met walking back from the `targets` (node ids) over `makers` (node -> units) and
+    `inputs` (unit -> nodes), depth-first, in discovery order, O(units + edges). Nodes marked in
+    `seen` are not walked past; every node met gets marked."""
+    taken = bytearray(len(inputs))
     units: list[int] = []
     stack = list(targets)
     while stack:
@@ -84,11 +91,11 @@ def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray)
         if seen[n]:
             continue
         seen[n] = 1
-        for u in ix.makers[n]:
+        for u in makers[n]:
             if not taken[u]:
                 taken[u] = 1
                 units.append(u)
-                stack.extend(ix.inputs[u])
+                stack.extend(inputs[u])
     return units
 
 

@@ -36,6 +36,9 @@ import heapq
 import math
 from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass
+from itertools import compress
+
+from ..analysis.reachability import walk_back
 
 INF = math.inf
 ZERO = 1e-12
@@ -94,24 +97,9 @@ class Cone:
         O(sub-cone + the sub-cone nodes' consumers here)."""
         assert not top.free
         makers, deps = self.makers, self.deps
-        seen_n = bytearray(len(self.node_ids))
-        seen_u = bytearray(len(self.unit_ids))
-        nodes: list[int] = []
-        units: list[int] = []
-        stack = list(goals)
-        while stack:
-            n = stack.pop()
-            if seen_n[n]:
-                continue
-            seen_n[n] = 1
-            nodes.append(n)
-            for u in makers[n]:
-                if not seen_u[u]:
-                    seen_u[u] = 1
-                    units.append(u)
-                    stack.extend(deps[u])
-        nodes.sort()
-        units.sort()
+        met = bytearray(len(self.node_ids))
+        units = sorted(walk_back(makers, deps, goals, met))
+        nodes = list(compress(range(len(met)), met))
         new_n = [-1] * len(self.node_ids)
         for k, n in enumerate(nodes):
             new_n[n] = k
