@@ -53,10 +53,10 @@ IMPROVE_ATTEMPTS = 25
 def unit_weights(ix, rates: Rates | None) -> list[float]:
     """Cost of every unit of the index: 1 (rates None), or -log of its motion's success rate.
 
-    The list of the last `rates` asked is remembered (the same object is returned: the
-    search caches per-fixpoint bounds by it); do not modify it."""
+    The list for the last `rates` asked is remembered (the same object is returned for equal
+    rates: the search caches per-fixpoint bounds by it); do not modify it."""
     hit = ix._memo.get("unit_weights")
-    if hit is not None and hit[0] is rates:
+    if hit is not None and hit[0] == rates:
         return hit[1]
     if rates is None:
         weights = [1.0] * len(ix.motions)
