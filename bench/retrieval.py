@@ -25,7 +25,7 @@ import time
 from collections import Counter
 
 from foon2pddl.analysis.index import build_index
-from foon2pddl.errors import FoonInputError
+from foon2pddl.errors import UsageError
 from foon2pddl.io.files import load
 from foon2pddl.io.kitchen_files import json_node, read_kitchen
 from foon2pddl.model.goal import Goal, spec_of_node
@@ -116,12 +116,12 @@ def protocol_goals(ctx: Context) -> None:
     for name, view in views.items():
         times, expansions, gaps, solved = [], [], [], 0
         for trial in trials:
-            nodes = view.kitchen(trial.kitchen).project(view.foon.level).nodes
+            nodes = view.map_kitchen(trial.kitchen).project(view.foon.level).nodes
             reach = reachable(view.foon, nodes)
             for node in trial.goals:
                 try:
-                    goal = view.goal(node)
-                except FoonInputError:  # no node of this view matches the goal
+                    goal = view.goal_of(node)
+                except UsageError:  # no node of this view matches the goal
                     continue
                 t0 = time.perf_counter()
                 result = optimal(view.foon, nodes, goal, reach=reach)
