@@ -12,12 +12,14 @@ import itertools
 import math
 from collections import deque
 
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from test_retrieval_properties import problems
 
 from foon2pddl.analysis.index import index_of
+from foon2pddl.retrieval.extract import ordered_units
 from foon2pddl.retrieval.greedy import greedy
+from foon2pddl.retrieval.improve import improve, relaxed_plan
 from foon2pddl.retrieval.lmcut import Cone
 
 NODES = 7  # node ids 0..6 (none in the kitchen: a unit without inputs fires from the kitchen)
@@ -115,24 +117,36 @@ def test_a_restricted_cone_is_the_cone_built_from_its_units(cone_case, goals):
 
 
 def plain_greedy(foon, kitchen, goal):
-    """The paper's loop without bookkeeping: the units fired, in order, or None (nothing more can be made)."""
+    """The paper's loop without bookkeeping (every maker's inputs scanned on every visit): the units of the
+    tree it extracts (`ordered_units`, first achievers, earlier firings reused) and its iterations, or None
+    when nothing more can be made."""
     ix = index_of(foon)
-    available = {ix.node_id[n] for n in kitchen if n in ix.node_id}
-    cands = sorted(ix.node_id[c] for c in goal.candidates)
-    if any(c in available for c in cands):
-        return []
-    queue, seen, fired = deque(cands), set(cands), []
-    since_progress, window = 0, len(queue)
+    in_kitchen = {ix.node_id[n] for n in kitchen if n in ix.node_id}
+    available = set(in_kitchen)
+    order = [ix.node_id[c] for c in goal.candidates]
+    done = next((c for c in order if c in available), None)
+    if done is not None:
+        return (), 0
+    queue = deque(sorted(order))
+    seen, achiever, fired_at = set(queue), {}, {}
+    since_progress, window, iterations = 0, len(queue), 0
     while queue:
         obj = queue.popleft()
+        iterations += 1
         progress = False
         if obj not in available:
             for u in ix.makers[obj]:
                 if all(i in available for i in ix.inputs[u]):
-                    fired.append(u)
-                    available.update(ix.outputs[u])
-                    if any(c in available for c in cands):
-                        return fired
+                    fired_at[u] = len(fired_at)
+                    for n in ix.outputs[u]:
+                        if n not in available:
+                            available.add(n)
+                            achiever[n] = u
+                    done = next((c for c in order if c in available), None)
+                    if done is not None:
+                        units = ordered_units(ix, done, achiever.__getitem__, in_kitchen.__contains__,
+                                              fired_at.__getitem__)
+                        return units, iterations
                     progress = True
                     break
             else:
@@ -156,12 +170,33 @@ def plain_greedy(foon, kitchen, goal):
 @settings(max_examples=300, deadline=None)
 @given(problems())
 def test_greedy_fires_what_the_plain_loop_fires(problem):
-    """greedy's missing-input counts and skipped retries change nothing: same units fired, same answer."""
+    """greedy's missing-input counts and skipped retries change nothing: the same tree after the same
+    number of iterations, or no tree."""
     foon, kitchen, goal = problem
-    fired = plain_greedy(foon, kitchen, goal)
+    plain = plain_greedy(foon, kitchen, goal)
     result = greedy(foon, kitchen, goal)
-    assert (result.tree is None) == (fired is None)
-    if fired is not None and result.tree is not None and fired:
-        assert result.detail.startswith(f"{len(fired)} units fired")
+    assert (result.tree is None) == (plain is None)
+    if plain is not None:
+        units, iterations = plain
         position = index_of(foon).positions(foon)
-        assert {position[id(u)] for u in result.tree.units} <= set(fired)
+        assert tuple(position[id(u)] for u in result.tree.units) == tuple(units)
+        assert result.expansions == iterations
+
+
+@settings(max_examples=300, deadline=None)
+@given(cones(), st.integers(0, NODES - 1), st.floats(0.0, 1.0))
+def test_local_search_that_stops_at_a_lower_bound_finds_the_same_plan(cone_case, goal, fraction):
+    """`improve` with a floor at or below the optimum returns the plan it returns without one (it only
+    skips attempts that cannot find anything cheaper), after no more attempts."""
+    cone, deps, outputs, weight = cone_case
+    found = relaxed_plan(cone, cone.weight, {cone.local_n[goal]})
+    assume(found is not None)
+    g, plan = found
+    best = cheapest(deps, outputs, weight, set(), [goal])
+    plain = improve(cone, plan, g, {g}, 25)
+    for floor in (best, best * fraction):
+        floored = improve(cone, plan, g, {g}, 25, floor=floor)
+        assert floored[:2] == plain[:2]
+        assert floored[2] <= plain[2]
+    if math.isclose(math.fsum(weight[u] for u in plan), best):
+        assert improve(cone, plan, g, {g}, 25, floor=best)[2] == 0

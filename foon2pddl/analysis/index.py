@@ -10,10 +10,13 @@ built once per `Foon` object and cached while that object lives.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Iterable
+from collections.abc import Callable, Hashable, Iterable
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from ..model.foon import Foon, ObjectNode
+
+T = TypeVar("T")
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,6 +54,15 @@ class FoonIndex:
         if hit is None or hit[0] != id(foon):
             hit = self._memo["positions"] = (id(foon), {id(x): i for i, x in enumerate(foon.units)})
         return hit[1]
+
+    def remember(self, name: str, key: Hashable, make: Callable[[], T]) -> T:
+        """`make()` for `key`, remembered under `name` while this index lives (the last key per name)."""
+        hit = self._memo.get(name)
+        if hit is not None and hit[0] == key:
+            return hit[1]
+        value = make()
+        self._memo[name] = (key, value)
+        return value
 
     def unit_key(self, u: int) -> tuple:
         """Content key of unit `u` (the tie-break order)."""

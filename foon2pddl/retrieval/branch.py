@@ -56,7 +56,7 @@ class BranchAndBound:
         self.units = set(self.cone.unit_ids)
         self.makers = {n: fix.makers[n] for n in self.cone.node_ids}
         self._static: dict[int, float] | None = None
-        self.integral = all(w.is_integer() for w in set(self.cone.weight))
+        self.integral = all(float(w).is_integer() for w in set(self.cone.weight))
         self.best_cost = math.inf
         self.best: tuple[int, dict[int, int]] = (-1, {})
         self.expanded = 0

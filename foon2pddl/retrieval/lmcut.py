@@ -5,11 +5,13 @@ units are already paid for (cost 0). h_max is the cost of the dearest single
 chain; LM-cut (Helmert & Domshlak, ICAPS 2009) adds up disjoint "landmark"
 cuts -- sets of units one of which every solution must use -- and is usually
 close to the true cost on recipe-shaped networks, where h_max sees only one
-branch. h_max is computed from scratch once per cone (`Cone.state`); a search
-node's h_max is its parent's with the newly chosen units made free, and each
-cut updates it in place: costs only ever decrease, and a unit is recomputed
-only when its dearest input got cheaper (`_decrease`). A bound costs
-O(cone size) to copy the state plus the nodes whose cost drops per landmark.
+branch. h_max is computed from scratch once per fixpoint, over the cone of
+all firing units (`Cone.state`); a goal's cone gets its own cut out of that one
+(`restrict`); a search node's h_max is that of its nearest ancestor whose bound
+was computed, with the units chosen since made free; and each cut updates it
+in place: costs only ever decrease, and a unit is recomputed only when its
+dearest input got cheaper (`_decrease`). A bound costs O(cone size) to copy
+the state plus the nodes whose cost drops per landmark.
 
 The cut. Exact LM-cut takes the units whose dearest input is reachable from
 the kitchen without entering the goal zone; finding that part is a search
@@ -94,7 +96,7 @@ class Cone:
         """The sub-cone of the units that lie backwards from the `goals` (local ids), and its h_max read
         off `top` (this cone's, no unit free). A node's h_max depends only on its backward closure, which
         both cones hold, and local ids keep their order, so the dearest inputs' tie-breaks agree too.
-        O(sub-cone + the sub-cone nodes' consumers here)."""
+        O(sub-cone + the sub-cone nodes' consumers here), plus marks as large as this cone (C loops)."""
         assert not top.free
         makers, deps = self.makers, self.deps
         met = bytearray(len(self.node_ids))

@@ -53,18 +53,16 @@ IMPROVE_ATTEMPTS = 25
 def unit_weights(ix, rates: Rates | None) -> list[float]:
     """Cost of every unit of the index: 1 (rates None), or -log of its motion's success rate.
 
-    The list for the last `rates` asked is remembered (the same object is returned for equal
-    rates: the search caches per-fixpoint bounds by it); do not modify it."""
-    hit = ix._memo.get("unit_weights")
-    if hit is not None and hit[0] == rates:
-        return hit[1]
-    if rates is None:
-        weights = [1.0] * len(ix.motions)
-    else:
+    Remembered for the last rates asked (the same list for rates with the same table and
+    default: the search caches per-fixpoint bounds by it); do not modify it."""
+    def make() -> list[float]:
+        if rates is None:
+            return [1.0] * len(ix.motions)
         by_motion = {m: rates.cost(m) for m in set(ix.motions)}
-        weights = [by_motion[m] for m in ix.motions]
-    ix._memo["unit_weights"] = (rates, weights)
-    return weights
+        return [by_motion[m] for m in ix.motions]
+
+    key = None if rates is None else (rates.default, tuple(sorted(rates.table.items())))
+    return ix.remember("unit_weights", key, make)
 
 
 def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
