@@ -201,8 +201,9 @@ class Cone:
         """h_max of the cone with the units in `free` (network ids) costing 0.
 
         From `base` (whose free units are a subset of `free`) only the newly free
-        units' effects are propagated (`_decrease`): a search child differs from its
-        parent by a unit or two, and this is much cheaper than a fresh Dijkstra.
+        units' effects are propagated (`_decrease`): a search node differs from its
+        nearest ancestor with a computed bound by a few units, and this is much cheaper
+        than a fresh Dijkstra.
         """
         lu = self.local_u
         if base is not None and base.free <= free:
