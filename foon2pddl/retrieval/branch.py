@@ -53,8 +53,7 @@ class BranchAndBound:
         # chosen (the base of every bound), cut out of those of the whole fixpoint.
         wide, wide_top = fix.top(weight)
         self.cone, self.top = wide.restrict([wide.local_n[c] for c in cands], wide_top)
-        self.units = set(self.cone.unit_ids)
-        self.makers = {n: fix.makers[n] for n in self.cone.node_ids}
+        self.makers = fix.makers  # every cone node's makers are all in the cone
         self._static: dict[int, float] | None = None
         self.integral = all(float(w).is_integer() for w in set(self.cone.weight))
         self.best_cost = math.inf
@@ -263,8 +262,8 @@ class _Fixpoint:
         self._top: tuple[list[float], Cone, HMax] | None = None
 
     def top(self, weight: list[float]) -> tuple[Cone, HMax]:
-        """The cone of every firing unit and its h_max with no unit free, for `weight` (the last one asked
-        is remembered, by identity: `optimal.unit_weights` returns the same list for the same rates)."""
+        """The cone of every firing unit and its h_max with no unit free, for `weight` (the last list asked
+        is remembered, by identity: `optimal.unit_weights` returns the same list for rates of equal content)."""
         hit = self._top
         if hit is None or hit[0] is not weight:
             cone = Cone.of(self.units, self.deps, self.effects, self.makers, weight, self.rank)

@@ -79,55 +79,31 @@ def _extract(cone: Cone, sup: list[int], goal: int) -> list[int]:
     return plan
 
 
-def firing_order(cone: Cone, units: Sequence[int], goal: int) -> list[int] | None:
-    """The units of `units` that fire from the kitchen, in firing order, if `goal` gets made; else None."""
-    deps, outs = cone.deps, cone.outs
-    member = set(units)
-    missing = {u: len(deps[u]) for u in units}
-    users: dict[int, list[int]] = {}
-    for u in units:
-        for i in deps[u]:
-            users.setdefault(i, []).append(u)
-    ready = sorted(u for u in units if not missing[u])
-    have: set[int] = set()
-    order: list[int] = []
-    k = 0
-    while k < len(ready):
-        u = ready[k]
-        k += 1
-        order.append(u)
-        for o in outs[u]:
-            if o not in have:
-                have.add(o)
-                for v in users.get(o, ()):
-                    if v in member:
-                        missing[v] -= 1
-                        if missing[v] == 0:
-                            ready.append(v)
-    return order if goal in have else None
-
-
-def _makes(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]], counts: dict[int, int],
-           seeds: list[int]) -> bool:
-    """Whether the units in `members` make `goal` from the kitchen (their fixpoint; stops at the goal).
-    `users`: node -> the units (a superset of `members`) that consume it; `counts`: their input counts;
-    `seeds`: those without inputs."""
+def _fire(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]], counts: dict[int, int],
+          seeds: list[int], stop_at_goal: bool) -> list[int] | None:
+    """The units of `members` that fire from the kitchen, in firing order (the `seeds` in their order, then
+    breadth-first), if `goal` gets made; else None. With `stop_at_goal` it returns as soon as the goal is
+    made (the order then stops there). `users`: node -> the units (a superset of `members`) that consume
+    it; `counts`: their input counts; `seeds`: those without inputs. O(members + their edges)."""
     outs = cone.outs
     missing = counts.copy()
     ready = [u for u in seeds if u in members]
     have: set[int] = set()
-    while ready:
-        for o in outs[ready.pop()]:
+    k = 0
+    while k < len(ready):
+        u = ready[k]
+        k += 1
+        for o in outs[u]:
             if o not in have:
-                if o == goal:
-                    return True
+                if stop_at_goal and o == goal:
+                    return ready
                 have.add(o)
                 for v in users.get(o, ()):
                     if v in members:
                         missing[v] -= 1
                         if not missing[v]:
                             ready.append(v)
-    return False
+    return ready if goal in have else None
 
 
 def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> list[int]:
@@ -140,12 +116,12 @@ def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> l
             users.setdefault(i, []).append(u)
     keep = set(units)
     counts = {u: cone.dep_counts[u] for u in keep}
-    seeds = [u for u in keep if not counts[u]]
+    seeds = sorted(u for u in keep if not counts[u])
     for u in sorted(units, key=lambda u: (-weight[u], -u)):
         keep.discard(u)
-        if not _makes(cone, keep, goal, users, counts, seeds):
+        if _fire(cone, keep, goal, users, counts, seeds, True) is None:
             keep.add(u)
-    order = firing_order(cone, [v for v in units if v in keep], goal)
+    order = _fire(cone, keep, goal, users, counts, seeds, False)
     if order is None:  # `units` must make the goal; never silently return a broken plan
         raise ValueError("prune: the units do not make the goal")
     return order

@@ -164,7 +164,7 @@ class Cone:
         `pcf` does: a cheaper other input leaves the max, and the lowest-id tie-break,
         unchanged. So only the consumers whose `pcf` is the popped node are recomputed.
         """
-        sdeps, outs, consumers = self.deps, self.outs, self.consumers
+        deps, outs, consumers = self.deps, self.outs, self.consumers
         push, pop = heapq.heappush, heapq.heappop
         heap: list[tuple[float, int]] = []
         for u in changed:
@@ -180,7 +180,7 @@ class Cone:
             for u in consumers[n]:
                 if pcf[u] != n:
                     continue
-                d = sdeps[u]
+                d = deps[u]
                 if len(d) == 1:
                     new = c
                 else:

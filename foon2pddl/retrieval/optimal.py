@@ -108,7 +108,7 @@ def optimal(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, *,
     bound = min(search.lower_bound(), cost)
     proven = bound >= cost - 1e-9
     bound = cost if proven else bound
-    detail = f"{search.expanded} search nodes expanded over {len(search.units)} candidate units"
+    detail = f"{search.expanded} search nodes expanded over {len(search.cone.unit_ids)} candidate units"
     if search.improved:
         detail += f", {search.improved} relaxed plans tried by the local search"
     if not proven:
