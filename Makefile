@@ -3,7 +3,8 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-SHARED ?= ../shared/data
+# The public FOON data beside the checkout when there (benchmarks, experiments), else the test corpus.
+SHARED ?= $(if $(wildcard ../shared/data),../shared/data,tests/data)
 
 .PHONY: install system-deps test bench fuzz lint pddl demo experiment clean
 

@@ -1,4 +1,4 @@
-"""Shared fixtures: the shared data directory beside the checkout and the merged universal FOON."""
+"""Shared fixtures: the test corpus (tests/data) and the merged universal FOON."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-SHARED = ROOT.parent / "shared" / "data"
+#: The test corpus shipped in the repository (tests/data/README.md): no file outside the checkout is read.
+SHARED = ROOT / "tests" / "data"
 SUBGRAPHS = SHARED / "foon-subgraphs"
 SEARCH_INPUTS = SHARED / "foon-search-inputs"
 

@@ -28,7 +28,7 @@ def transcripts(text: str) -> list[tuple[str, list[str]]]:
             fenced, transcript = not fenced, False
         elif fenced and line.startswith("$ foon2pddl "):
             command = line[len("$ foon2pddl "):]
-            transcript = "../" not in command  # embedded example only
+            transcript = "../" not in command  # the embedded example and the shipped test corpus
             if transcript:
                 out.append((command, []))
         elif fenced and transcript and line:

@@ -223,7 +223,8 @@ def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, 
     from ..generalize.hints import networks_that_reach
     from ..io.inputs import goal_spec
 
-    kinds = networks_that_reach(net, kitchen, goal_spec(goal, goal_file), level)
+    kinds = networks_that_reach(net, kitchen, goal_spec(goal, goal_file), level,
+                                notify=lambda message: click.echo(message, err=True))
     if kinds:
         what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "

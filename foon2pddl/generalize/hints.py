@@ -3,13 +3,17 @@
 Only run after REG answered "unreachable", and only where building the network
 is cheap. GEN up to `GEN_MAX_UNITS` (compress, index, fixpoint: 0.15 s for both
 checks on the 101-unit example, 0.9 s for GEN on the 1,845-unit universal FOON,
-medians of 5). EXP only when its similarity matrix is already in the disk cache
-(computing one opens WordNet: seconds) and the network is small (`EXP_MAX_UNITS`;
-EXP of the universal FOON takes ~3 s even cached). The check is reachability (the linear fixpoint)
-on each network, with the kitchen and goal mapped as `--network` maps them.
+medians of 5). EXP only when the network is small (`EXP_MAX_UNITS`; EXP of the
+universal FOON takes ~3 s even cached). The answer never depends on what the disk
+cache holds: when EXP's similarity matrix is not cached yet it is computed (WordNet
+opens: a few seconds, once) and `notify` is told first, so the wait is not silent.
+The check is reachability (the linear fixpoint) on each network, with the kitchen
+and goal mapped as `--network` maps them.
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 from ..analysis.reachability import reachable
 from ..errors import FoonError
@@ -25,14 +29,18 @@ EXP_MAX_UNITS = 600
 GEN_MAX_UNITS = 2500
 
 
-def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: int) -> list[str]:
-    """Which of `exp`, `gen` make the goal `spec` from `kitchen` (only the networks cheap to build)."""
+def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: int,
+                        notify: Callable[[str], None] | None = None) -> list[str]:
+    """Which of `exp`, `gen` make the goal `spec` from `kitchen` (only the networks cheap to build).
+
+    `notify(message)` is called before a slow step (building EXP's similarity matrix).
+    """
     found = []
     for kind in ("exp", "gen"):
         if len(net.foon.units) > (EXP_MAX_UNITS if kind == "exp" else GEN_MAX_UNITS):
             continue
-        if kind == "exp" and not matrix_is_cached(vocabulary(net.foon, kitchen)):
-            continue
+        if kind == "exp" and notify is not None and not matrix_is_cached(vocabulary(net.foon, kitchen)):
+            notify("checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)")
         try:
             view = network_view(net, kind, level, kitchen)
             goal = view.resolve(spec)
