@@ -1,0 +1,343 @@
+"""An independent physical replay of a plan: does every object sit where FOON says, after every step?
+
+`replay(trace)` walks a `model.physical.PhysicalTrace` from its initial state,
+recomputing each snapshot from the step's changes, and compares it with FOON's
+own words, never with an encoding's facts (it is the oracle that checks them).
+
+**States** (the initial state, step -1, and the state after every step):
+
+* a holder exists: every existing object in or on something is held by an object that
+  is made and not consumed (`HOLDER_GONE`);
+* placement: an object whose node says `in [C]` / `on [C]` is directly in / on an
+  object labelled C (`MISPLACED`); when its node names several places (`in [bowl]`,
+  `in [microwave]`), the direct holder matches one and the others are further up the
+  holder chain. An object whose node names no place may have a holder only when it
+  has had it since the initial state and its initial node named no place either (a
+  scene's placement FOON is silent about: the bowl on `counter_1`); any other holder
+  is `UNEXPECTED_HOLDER` (a board that is cut on, then carried, still holding the onion);
+* contents, for holders of a *container label* (a label some node of the trace gives a
+  `contains` or `empty` state; a stove or a table, whose nodes never describe what is on
+  them, may hold anything): the labels a container's node lists (`contains {a, b}`,
+  `contains [a]`) are exactly covered by the existing objects in or on it. An ingredient
+  list names what went into a mixture, so an object *stands for* its label plus every
+  object it absorbed: a consumed object is absorbed by the objects its step changed that
+  end up in the holder it was in (or, for a consumed object that stood free, by the
+  objects the step made), transitively. A listed label nothing in the container stands
+  for is `MISSING_CONTENT`, or `CLAIMED_TWICE` when the only objects of that label are in
+  other containers that list it too (two bowls claim one salmon). An object that stands
+  for nothing the list names is `UNLISTED_CONTENT`, or `HELD_BY_EMPTY` when the node
+  lists nothing (emptied, or a board that "becomes dirty" with the onion still on it).
+  Only objects whose node names a place count as contents: FOON lists what it places,
+  and a placeless object with a holder is judged by the placement rule above.
+
+**Steps**, for step k:
+
+* only bound objects change (`UNBOUND_CHANGE`);
+* a bound object exists before the step (`NOT_AVAILABLE`: not made yet, or consumed),
+  unless the step makes it, and then it did not exist (`REMADE`); its node before the
+  step is the binding's `before`, and after it the binding's `after` (or `before` when
+  the unit leaves it unchanged), unless the step consumes it (`STATE_MISMATCH`);
+* an object that leaves a holder was in a holder its input node names, and that holder
+  is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder,
+  the fridge a scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
+* a bound object whose node (before or after) names `in [C]` while the step binds
+  objects labelled C is in one of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in
+  the microwave while the salmon sits in bowl_2).
+
+A state disagreement is reported at the state where it arises and not again while it
+persists (`ReplayReport.affected_steps` still counts every step after which one holds).
+Order: by step, then checks in the order above, objects by id. Time: O(steps x objects).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from enum import StrEnum
+
+from ..model.foon import ObjectNode
+from ..model.physical import ObjectState, PhysicalTrace, Relation, TraceStep
+
+__all__ = ["Disagreement", "DisagreementKind", "ReplayReport", "container_labels", "listed", "places", "replay"]
+
+
+class DisagreementKind(StrEnum):
+    """What a replay found wrong (see the module doc for each rule)."""
+
+    HOLDER_GONE = "holder-gone"
+    MISPLACED = "misplaced"
+    UNEXPECTED_HOLDER = "unexpected-holder"
+    MISSING_CONTENT = "missing-content"
+    CLAIMED_TWICE = "claimed-twice"
+    UNLISTED_CONTENT = "unlisted-content"
+    HELD_BY_EMPTY = "held-by-empty"
+    UNBOUND_CHANGE = "unbound-change"
+    NOT_AVAILABLE = "not-available"
+    REMADE = "remade"
+    STATE_MISMATCH = "state-mismatch"
+    WRONG_SOURCE = "wrong-source"
+    UNBOUND_TARGET = "unbound-target"
+    HOLDER_NOT_BOUND = "holder-not-bound"
+
+
+@dataclass(frozen=True)
+class Disagreement:
+    """One finding: its kind, the step (-1: the initial state), the objects, the unit's `file:line`, a message."""
+
+    kind: DisagreementKind
+    step: int
+    objects: tuple[str, ...]
+    source: str
+    message: str
+
+    def describe(self) -> str:
+        """`file.txt:12: step 3: bowl_2 lists tomato, but nothing in it is a tomato [missing-content]`."""
+        where = "initial state" if self.step < 0 else f"step {self.step + 1}"
+        return f"{self.source + ': ' if self.source else ''}{where}: {self.message} [{self.kind}]"
+
+
+@dataclass(frozen=True)
+class ReplayReport:
+    """The verdict: every disagreement (in order), and the steps after which some state disagreement holds."""
+
+    disagreements: tuple[Disagreement, ...]
+    affected_steps: tuple[int, ...] = ()
+
+    @property
+    def ok(self) -> bool:
+        return not self.disagreements
+
+    def kinds(self) -> frozenset[DisagreementKind]:
+        return frozenset(d.kind for d in self.disagreements)
+
+
+def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
+    """The places a node names: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]` (a bare `on`
+    is an appliance switched on, not a place)."""
+    if node is None:
+        return ()
+    return tuple((Relation(s.label), s.related) for s in node.states if s.label in ("in", "on") and s.related)
+
+
+def listed(node: ObjectNode | None) -> frozenset[str]:
+    """The labels a container node lists: the ingredients and related objects of its `contains` states."""
+    if node is None:
+        return frozenset()
+    items = {i for s in node.states if s.label == "contains" for i in (*s.ingredients, s.related) if i}
+    return frozenset(items - {node.label})
+
+
+def _describes_contents(node: ObjectNode) -> bool:
+    return any(s.label in ("contains", "empty") for s in node.states)
+
+
+def container_labels(trace: PhysicalTrace) -> frozenset[str]:
+    """Labels some node of the trace (initial, binding or change) gives a `contains` or `empty` state."""
+    nodes = [s.node for s in trace.initial]
+    for step in trace.steps:
+        nodes += [n for b in step.bindings for n in (b.before, b.after)] + [c.node for c in step.changes]
+    return frozenset(n.label for n in nodes if n is not None and _describes_contents(n))
+
+
+def step_source(step: TraceStep) -> str:
+    """The step's `source`, else its unit's first `file:line`."""
+    if step.source:
+        return step.source
+    src = step.unit.source
+    return f"{src.path}:{src.line}" if src is not None else ""
+
+
+class _Replay:
+    """The walk's working state: labels, initial placements, absorbed labels, findings."""
+
+    def __init__(self, trace: PhysicalTrace) -> None:
+        self.trace = trace
+        self.label = {o.id: o.label for o in trace.objects}
+        self.initial = {s.id: s for s in trace.initial}
+        self.containers = container_labels(trace)
+        self.absorbed: dict[str, frozenset[str]] = {}
+        self.found: list[Disagreement] = []
+        self.active: set[tuple] = set()
+
+    def stands_for(self, oid: str) -> frozenset[str]:
+        return self.absorbed.get(oid, frozenset()) | {self.label[oid]}
+
+    # ---- states
+
+    def check_state(self, states: Mapping[str, ObjectState], step: int, source: str) -> bool:
+        """Report the state disagreements that are new since the previous state; whether any holds."""
+        now: list[Disagreement] = []
+
+        def add(kind: DisagreementKind, objects: tuple[str, ...], message: str) -> None:
+            now.append(Disagreement(kind, step, objects, source, message))
+
+        existing = sorted(i for i, s in states.items() if s.exists)
+        for oid in existing:
+            self._placement(states, oid, add)
+        self._contents(states, existing, add)
+        keys = {(d.kind, d.objects, d.message) for d in now}
+        self.found += [d for d in now if (d.kind, d.objects, d.message) not in self.active]
+        self.active = keys
+        return bool(now)
+
+    def _placement(self, states: Mapping[str, ObjectState], oid: str, add) -> None:
+        s = states[oid]
+        named = places(s.node)
+        if s.holder is not None and not states[s.holder].exists:
+            add(DisagreementKind.HOLDER_GONE, (oid, s.holder), f"{oid} is {s.relation} {s.holder}, which "
+                f"{'is consumed' if states[s.holder].consumed else 'is not made yet'}")
+        if not named:
+            first = self.initial[oid]
+            if s.holder is not None and not (s.holder == first.holder and not places(first.node)):
+                add(DisagreementKind.UNEXPECTED_HOLDER, (oid, s.holder),
+                    f"{oid} is {s.relation} {s.holder}, but its node {s.node.describe()!r} names no place")
+            return
+        if s.holder is None:
+            add(DisagreementKind.MISPLACED, (oid,), f"{oid} is {_say(named)} by its node, but is in or on nothing")
+            return
+        here = (s.relation, self.label[s.holder])
+        if here not in named:
+            add(DisagreementKind.MISPLACED, (oid, s.holder),
+                f"{oid} is {_say(named)} by its node, but is {s.relation} {s.holder} (a {here[1]})")
+            return
+        chain, at = set(), states[s.holder].holder
+        while at is not None:
+            chain.add(self.label[at])
+            at = states[at].holder
+        far = [(r, c) for r, c in named if (r, c) != here and c not in chain]
+        if far:
+            add(DisagreementKind.MISPLACED, (oid, s.holder),
+                f"{oid} is {_say(tuple(far))} by its node, but {s.holder} is in or on no {far[0][1]}")
+
+    def _contents(self, states: Mapping[str, ObjectState], existing: list[str], add) -> None:
+        inside: dict[str, list[str]] = {}
+        for oid in existing:
+            h = states[oid].holder
+            if h is not None and places(states[oid].node):
+                inside.setdefault(h, []).append(oid)
+        holders = [h for h in existing if self.label[h] in self.containers]
+        claims: dict[str, list[str]] = {}
+        for h in holders:
+            for x in listed(states[h].node):
+                claims.setdefault(x, []).append(h)
+        for h in holders:
+            node, items = states[h].node, listed(states[h].node)
+            covered = frozenset().union(*(self.stands_for(o) for o in inside.get(h, ())))
+            for x in sorted(items - covered):
+                others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
+                if others:
+                    add(DisagreementKind.CLAIMED_TWICE, (h, *sorted(others)),
+                        f"{h} lists {x}, but the only {x} ({', '.join(sorted(others))}) is in "
+                        f"{', '.join(sorted({states[o].holder for o in others}))}, which lists it too")
+                else:
+                    add(DisagreementKind.MISSING_CONTENT, (h,), f"{h} lists {x}, but nothing in it is {x} "
+                        "or was made from it")
+            for o in inside.get(h, ()):
+                if self.stands_for(o) & items:
+                    continue
+                if items:
+                    add(DisagreementKind.UNLISTED_CONTENT, (h, o),
+                        f"{o} is {states[o].relation} {h}, whose node lists only {', '.join(sorted(items))}")
+                else:
+                    add(DisagreementKind.HELD_BY_EMPTY, (h, o),
+                        f"{o} is {states[o].relation} {h}, whose node {node.describe()!r} lists nothing")
+
+    # ---- steps
+
+    def check_step(self, step: TraceStep, before: Mapping[str, ObjectState], after: Mapping[str, ObjectState]) -> None:
+        k, source, motion = step.index, step_source(step), step.unit.motion.label
+        bound = set(step.objects)
+
+        def add(kind: DisagreementKind, objects: tuple[str, ...], message: str) -> None:
+            self.found.append(Disagreement(kind, k, objects, source, f"{motion}: {message}"))
+
+        for c in sorted(step.changes, key=lambda c: c.id):
+            if c.id not in bound and c != before[c.id]:
+                add(DisagreementKind.UNBOUND_CHANGE, (c.id,), f"{c.id} changes, but the step does not use it")
+        for b in step.bindings:
+            was, now = before[b.object], after[b.object]
+            if b.before is None:
+                if was.exists:
+                    add(DisagreementKind.REMADE, (b.object,), f"the step makes {b.object}, which already exists")
+            elif not was.exists:
+                add(DisagreementKind.NOT_AVAILABLE, (b.object,),
+                    f"{b.object} is {'consumed' if was.consumed else 'not made yet'}, the step needs "
+                    f"{b.before.describe()!r}")
+            elif was.node != b.before:
+                add(DisagreementKind.STATE_MISMATCH, (b.object,),
+                    f"{b.object} is {was.node.describe()!r}, the step needs {b.before.describe()!r}")
+            want = b.after if b.after is not None else b.before
+            if want is not None and not now.consumed and now.node != want:
+                have = now.node.describe() if now.node is not None else "not made"
+                add(DisagreementKind.STATE_MISMATCH, (b.object,),
+                    f"{b.object} ends {have!r}, the step makes it {want.describe()!r}")
+        for b in step.bindings:
+            self._moves(b.object, b.before, before, after, bound, add)
+        self._holders_bound(step, before, after, add)
+        self._absorb(step, before, after)
+
+    def _moves(self, oid, node_before, before, after, bound, add) -> None:
+        was, now = before[oid], after[oid]
+        if was.holder == now.holder:
+            return
+        first = self.initial[oid]
+        scene = was.holder == first.holder and not places(first.node)
+        if was.holder is not None and not scene:
+            named = {c for _, c in places(node_before or was.node)}
+            if self.label[was.holder] not in named:
+                add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
+                    f"{oid} leaves {was.holder}, a {self.label[was.holder]} its input node does not name")
+            elif was.holder not in bound:
+                add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
+                    f"{oid} leaves {was.holder}, which the step does not use")
+        if now.holder is not None and now.holder not in bound:
+            add(DisagreementKind.UNBOUND_TARGET, (oid, now.holder),
+                f"{oid} goes {now.relation} {now.holder}, which the step does not use")
+
+    def _holders_bound(self, step: TraceStep, before, after, add) -> None:
+        by_label: dict[str, set[str]] = {}
+        for oid in step.objects:
+            by_label.setdefault(self.label[oid], set()).add(oid)
+        seen = set()
+        for b in step.bindings:
+            for node, state in ((b.before, before[b.object]), (b.after or b.before, after[b.object])):
+                if not state.exists or state.holder is None:
+                    continue
+                for rel, c in places(node):
+                    ours = by_label.get(c, set()) - {b.object}
+                    if ours and rel == state.relation and state.holder not in ours and (b.object, c) not in seen:
+                        seen.add((b.object, c))
+                        add(DisagreementKind.HOLDER_NOT_BOUND, (b.object, state.holder, *sorted(ours)),
+                            f"the step uses {', '.join(sorted(ours))}, but {b.object} is {rel} {state.holder}")
+
+    def _absorb(self, step: TraceStep, before, after) -> None:
+        changed = [c.id for c in step.changes if after[c.id].exists]
+        made = [i for i in changed if not before[i].exists]
+        for c in step.changes:
+            if not c.consumed or before[c.id].consumed:
+                continue
+            h = before[c.id].holder
+            takers = [i for i in changed if i != c.id and after[i].holder is not None
+                      and after[i].holder in (h, c.holder)] if h is not None else made
+            for t in takers:
+                self.absorbed[t] = self.absorbed.get(t, frozenset()) | self.stands_for(c.id)
+
+
+def _say(named: tuple[tuple[Relation, str], ...]) -> str:
+    return " and ".join(f"{r} a {c}" for r, c in named)
+
+
+def replay(trace: PhysicalTrace) -> ReplayReport:
+    """Replay `trace` and report every disagreement with FOON (see the module doc)."""
+    run = _Replay(trace)
+    snapshots = iter(trace.states())
+    before = next(snapshots)
+    run.check_state(before, -1, "")
+    affected = []
+    for step, after in zip(trace.steps, snapshots, strict=True):
+        n = len(run.found)
+        run.check_step(step, before, after)
+        if run.check_state(after, step.index, step_source(step)) or len(run.found) > n:
+            affected.append(step.index)
+        before = after
+    return ReplayReport(tuple(run.found), tuple(affected))

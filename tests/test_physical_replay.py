@@ -1,0 +1,194 @@
+"""The independent physical replay: a consistent trace passes, each kind of physical mistake is caught."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.model.physical import Binding, ObjectState
+from foon2pddl.planners.physical_replay import DisagreementKind as K
+from foon2pddl.planners.physical_replay import listed, places, replay
+from tests.physical_world import World, contents, node, random_world, salsa_world, with_change, with_initial
+
+
+def kinds(trace) -> set[K]:
+    return set(replay(trace).kinds())
+
+
+def test_consistent_trace_passes():
+    report = replay(salsa_world().trace())
+    assert report.ok, [d.describe() for d in report.disagreements]
+    assert report.affected_steps == ()
+
+
+def test_mixture_stands_for_its_ingredients():
+    """`bowl (contains {onion, salt})` after the mix still holds: the salsa stands for what went into it."""
+    t = salsa_world().trace()
+    t = with_change(t, 2, ObjectState("bowl_1", contents("bowl", ["onion", "salt"])))
+    steps = list(t.steps)
+    b = tuple(Binding("bowl_1", x.before, contents("bowl", ["onion", "salt"])) if x.object == "bowl_1" else x
+              for x in steps[2].bindings)
+    steps[2] = replace(steps[2], bindings=b)
+    assert replay(replace(t, steps=tuple(steps))).ok
+
+
+def test_holder_gone():
+    t = with_initial(salsa_world().trace(), ObjectState("board_1", contents("cutting board", ["onion"]),
+                                                        consumed=True))
+    report = replay(t)
+    d = next(d for d in report.disagreements if d.kind is K.HOLDER_GONE and d.objects[0] == "onion_1")
+    assert d.step == -1 and d.objects == ("onion_1", "board_1") and "consumed" in d.message
+
+
+def test_misplaced_no_holder_and_wrong_label():
+    t = with_initial(salsa_world().trace(), ObjectState("onion_1", node("onion", "chopped", ("on", "cutting board"))))
+    assert K.MISPLACED in kinds(t)
+    t = with_initial(salsa_world().trace(), ObjectState("salt_1", node("salt", ("in", "shaker")), "bowl_2", "in"))
+    d = next(d for d in replay(t).disagreements if d.kind is K.MISPLACED)
+    assert "bowl_2" in d.message and d.step == -1
+
+
+def test_unexpected_holder_but_scene_placement_allowed():
+    """knife_1 lies on the board from the start (FOON is silent): fine; a spoon put in the bowl is not."""
+    t = salsa_world().trace()
+    assert replay(t).ok
+    t = with_change(t, 2, ObjectState("spoon_1", node("spoon"), "bowl_1", "in"))
+    report = replay(t)
+    assert K.UNEXPECTED_HOLDER in report.kinds()
+    d = next(d for d in report.disagreements if d.kind is K.UNEXPECTED_HOLDER)
+    assert d.step == 2 and d.source == "recipe.txt:30" and d.describe().startswith("recipe.txt:30: step 3:")
+
+
+def test_missing_content_and_claimed_twice():
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["pepper"])))
+    assert K.MISSING_CONTENT in kinds(t)
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["salt"])))
+    shaker_claims = with_initial(t, ObjectState("bowl_2", contents("bowl", ["salt"])))
+    d = next(d for d in replay(shaker_claims).disagreements if d.kind is K.CLAIMED_TWICE)
+    assert d.objects == ("bowl_2", "salt_1") and "shaker_1" in d.message
+
+
+def test_unlisted_content_and_held_by_empty():
+    t = with_initial(salsa_world().trace(), ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
+    assert {K.HELD_BY_EMPTY, K.MISSING_CONTENT} <= kinds(t)  # bowl_2 empty holds salt; the shaker lacks it
+    # the board "becomes empty" while the onion stays on it
+    w = salsa_world()
+    t = with_change(w.trace(), 0, ObjectState("onion_1", node("onion", "chopped", ("on", "cutting board")),
+                                              "board_1", "on"))
+    assert K.HELD_BY_EMPTY in kinds(t)
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["pepper"])))
+    t = with_initial(t, ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
+    assert K.UNLISTED_CONTENT in kinds(t)
+
+
+def test_unbound_change():
+    t = with_change(salsa_world().trace(), 0, ObjectState("bowl_2", contents("bowl", ["onion"])))
+    d = next(d for d in replay(t).disagreements if d.kind is K.UNBOUND_CHANGE)
+    assert d.objects == ("bowl_2",) and d.step == 0
+
+
+def test_not_available_and_remade():
+    w = salsa_world()
+    w.step("mix", [ObjectState("salsa_1", node("salsa", "mixed", ("in", "bowl")), "bowl_1", "in")],
+           uses=("onion_1",))
+    assert {K.NOT_AVAILABLE} <= kinds(w.trace())
+    w = salsa_world()
+    t = w.trace()
+    steps = list(t.steps)
+    steps[2] = replace(steps[2], bindings=tuple(Binding(b.object, None, b.after) if b.object == "spoon_1" else b
+                                                for b in steps[2].bindings))
+    assert K.REMADE in kinds(replace(t, steps=tuple(steps)))
+
+
+def test_state_mismatch_before_and_after():
+    t = salsa_world().trace()
+    steps = list(t.steps)
+    steps[1] = replace(steps[1], bindings=tuple(Binding(b.object, node("salt", "ground", ("in", "shaker")), b.after)
+                                                if b.object == "salt_1" else b for b in steps[1].bindings))
+    report = replay(replace(t, steps=tuple(steps)))
+    assert [d.kind for d in report.disagreements] == [K.STATE_MISMATCH]
+    assert "needs 'salt (ground, in [shaker])'" in report.disagreements[0].message
+    t = with_change(salsa_world().trace(), 1, ObjectState("shaker_1", contents("shaker", ["sugar"])))
+    assert K.STATE_MISMATCH in kinds(t)
+
+
+def test_wrong_source_and_unbound_target():
+    """The salt is poured out of bowl_2 (never bound) into bowl_1; then into a bowl the step does not use."""
+    w = salsa_world()
+    t = with_initial(w.trace(), ObjectState("salt_1", node("salt", ("in", "shaker")), "bowl_2", "in"))
+    assert K.WRONG_SOURCE in kinds(t)
+    t = with_change(salsa_world().trace(), 1, ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
+    assert K.UNBOUND_TARGET in kinds(t)
+
+
+def test_holder_not_bound():
+    """The cut uses bowl_2 while the onion sits in bowl_1 (as a plan that defrosts the wrong bowl)."""
+    w = World({"bowl_1": "bowl", "bowl_2": "bowl", "onion_1": "onion", "knife_1": "knife"},
+              {"bowl_1": ObjectState("bowl_1", contents("bowl", ["onion"])),
+               "bowl_2": ObjectState("bowl_2", contents("bowl", [])),
+               "onion_1": ObjectState("onion_1", node("onion", "whole", ("in", "bowl")), "bowl_1", "in"),
+               "knife_1": ObjectState("knife_1", node("knife"))})
+    w.step("cut", [ObjectState("onion_1", node("onion", "chopped", ("in", "bowl")), "bowl_1", "in")],
+           uses=("knife_1", "bowl_1"))
+    assert replay(w.trace()).ok
+    w.steps.clear()
+    w.now = {s.id: s for s in w.initial}
+    w.step("cut", [ObjectState("onion_1", node("onion", "chopped", ("in", "bowl")), "bowl_1", "in")],
+           uses=("knife_1", "bowl_2"))
+    report = replay(w.trace())
+    assert [d.kind for d in report.disagreements] == [K.HOLDER_NOT_BOUND]
+    assert report.disagreements[0].objects == ("onion_1", "bowl_1", "bowl_2")
+
+
+def test_persisting_disagreement_reported_once_but_counted_per_step():
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["pepper"])))
+    report = replay(t)
+    assert [d.kind for d in report.disagreements] == [K.MISSING_CONTENT]
+    assert report.affected_steps == (0, 1, 2)
+
+
+def test_places_and_listed_read_foon_words():
+    n = node("pan", "on", ("on", "stove"), ("in", "oven"), ("contains", ["oil", "pan"]), ("seasoned", ["salt"]))
+    assert set(places(n)) == {("on", "stove"), ("in", "oven")}
+    assert listed(n) == {"oil"}
+    assert listed(node("bowl", ("contains", "rice"))) == {"rice"}
+
+
+@st.composite
+def worlds(draw):
+    return random_world(draw, st)
+
+
+@settings(max_examples=150, deadline=None)
+@given(worlds())
+def test_random_consistent_traces_pass(world):
+    report = replay(world.trace())
+    assert report.ok, [d.describe() for d in report.disagreements]
+
+
+@settings(max_examples=150, deadline=None)
+@given(worlds(), st.data())
+def test_single_mutations_fail(world, data):
+    """Move one object to another bowl, drop one change, unbind one changed object, or corrupt a `before`."""
+    t = world.trace()
+    mutation = data.draw(st.sampled_from(["move", "drop", "unbind", "before"] if t.steps else ["move"]))
+    if mutation == "move":
+        foods = [s for s in t.initial if s.holder is not None]
+        s = data.draw(st.sampled_from(foods))
+        other = data.draw(st.sampled_from([o.id for o in t.objects if o.label == "bowl" and o.id != s.holder]))
+        t = with_initial(t, replace(s, holder=other))
+    else:
+        k = data.draw(st.integers(0, len(t.steps) - 1))
+        step = t.steps[k]
+        c = data.draw(st.sampled_from(step.changes))
+        if mutation == "drop":
+            step = replace(step, changes=tuple(x for x in step.changes if x.id != c.id))
+        elif mutation == "unbind":
+            step = replace(step, bindings=tuple(b for b in step.bindings if b.object != c.id))
+        else:
+            step = replace(step, bindings=tuple(replace(b, before=node(t.by_id[b.object].label, "burnt"))
+                                                if b.object == c.id else b for b in step.bindings))
+        t = replace(t, steps=t.steps[:k] + (step,) + t.steps[k + 1:])
+    assert not replay(t).ok
