@@ -11,6 +11,7 @@ half-written output files are removed.
 
 from __future__ import annotations
 
+import importlib
 import sys
 
 import click
@@ -21,9 +22,26 @@ from ..io.atomic import discard_staged
 from ..io.interrupts import Terminated, sigterm_raises
 from ..planners.cleanup import command_scope
 
-__all__ = ["main"]
+__all__ = ["COMMANDS", "main"]
 
-__all__ = ["main"]
+#: Command name -> the module (in this package) that defines it. The group imports a command's
+#: module only when that command runs (or `--help` lists them all), so `foon2pddl --version` and
+#: `stats` load none of the planning, generalization or experiment stacks.
+COMMANDS = {
+    "analyze": "analyze_cmd",
+    "categories": "generalize_cmd",
+    "check": "check_cmd",
+    "compile": "compile_cmd",
+    "expand": "expand_cmd",
+    "experiment": "experiment_cmd",
+    "generalize": "generalize_cmd",
+    "goals": "goals_cmd",
+    "merge": "merge_cmd",
+    "plan": "plan_cmd",
+    "retrieve": "retrieve_cmd",
+    "similarity": "similarity_cmd",
+    "stats": "stats_cmd",
+}
 
 
 class _Command(click.Command):
@@ -40,6 +58,15 @@ class _Group(click.Group):
     """Click group that turns project errors into `path:line: error: message` (or `Error: message`), exit 2."""
 
     command_class = _Command
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted(set(COMMANDS) | set(self.commands))
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        """The command, importing its module on first use (the module registers it on `main`)."""
+        if cmd_name not in self.commands and cmd_name in COMMANDS:
+            importlib.import_module(f"{__name__}.{COMMANDS[cmd_name]}")
+        return self.commands.get(cmd_name)
 
     def invoke(self, ctx: click.Context):
         _escape_unencodable_output()
@@ -82,20 +109,3 @@ def main() -> None:
     Every command reads FOON files and directories given as PATHS (merged into one
     universal FOON); with no PATHS it uses the embedded example network and its kitchen.
     """
-
-
-# Each command module registers its commands on `main` when imported.
-from . import (  # noqa: E402, F401
-    analyze_cmd,
-    check_cmd,
-    compile_cmd,
-    expand_cmd,
-    experiment_cmd,
-    generalize_cmd,
-    goals_cmd,
-    merge_cmd,
-    plan_cmd,
-    retrieve_cmd,
-    similarity_cmd,
-    stats_cmd,
-)

@@ -7,9 +7,7 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError, UsageError
-from ..generalize.network import NETWORKS
 from ..io.atomic import atomic_write
-from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
@@ -33,10 +31,18 @@ goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path
                                 help="Goal as one object node in FOON O/S lines.")
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
                              help="Write to this file (atomically) instead of standard output.")
-encoding_option = click.option("--encoding", type=click.Choice(list(ENCODINGS)), default=DEFAULT_ENCODING,
-                               show_default=True,
-                               help="PDDL encoding: " + "; ".join(f"{e.name} ({e.description})" for e in ENCODINGS.values())
-                                    + " (see docs/pddl.md).")
+
+
+def encoding_option(command):
+    """`--encoding` with the registry's encodings (imported when a command that takes it is defined)."""
+    from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
+
+    return click.option("--encoding", type=click.Choice(list(ENCODINGS)), default=DEFAULT_ENCODING,
+                        show_default=True,
+                        help="PDDL encoding: " + "; ".join(f"{e.name} ({e.description})" for e in ENCODINGS.values())
+                             + " (see docs/pddl.md).")(command)
+
+
 instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
                                 help="instances encoding: N objects of LABEL in each place one can start "
                                      "(overrides the derived count; repeatable).")
@@ -49,10 +55,16 @@ costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"
                             help="Action costs: 1 per unit, or from motion success rates (needs --rates).")
 rates_option = click.option("--rates", "rates", type=click.Path(path_type=Path), default=None,
                             help="Motion success rates file (motion<TAB>rate).")
-network_option = click.option("--network", type=click.Choice(list(NETWORKS)), default=next(iter(NETWORKS)),
-                              show_default=True,
-                              help="; ".join(f"{k.name}: {k.description}" for k in NETWORKS.values())
-                                   + ". See docs/generalization.md.")
+
+
+def network_option(command):
+    """`--network` with the registry's network kinds (imported when a command that takes it is defined)."""
+    from ..generalize.network import NETWORKS
+
+    return click.option("--network", type=click.Choice(list(NETWORKS)), default=next(iter(NETWORKS)),
+                        show_default=True,
+                        help="; ".join(f"{k.name}: {k.description}" for k in NETWORKS.values())
+                             + ". See docs/generalization.md.")(command)
 
 
 def constraints_options(command):
@@ -196,6 +208,9 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
     A network kind with its own encoding (`gen`: the lifted one) compiles that encoding
     over the concrete network; an encoding without action costs rejects --costs.
     """
+    from ..generalize.network import NETWORKS
+    from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
+
     own = NETWORKS[network].encoding
     if own is not None:
         if encoding not in (DEFAULT_ENCODING, own):

@@ -6,15 +6,16 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..errors import ParseWarning, UsageError
 from ..model.foon import Foon
-from ..model.goal import Goal, GoalSpec, resolve_goal
-from ..model.kitchen import Kitchen, default_kitchen
 from ..model.levels import check_level, project
 from .files import load
-from .goal_files import parse_goal_spec, read_goal_file
-from .kitchen_files import read_kitchen
+
+if TYPE_CHECKING:  # kitchens and goals load when used: `stats` and `merge` need neither
+    from ..model.goal import Goal, GoalSpec
+    from ..model.kitchen import Kitchen
 
 
 def example_path(name: str = "example") -> Path:
@@ -47,6 +48,9 @@ def load_network(paths: Sequence[str | Path]) -> Network:
 
 def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitchen:
     """The kitchen file given, the example kitchen for the example network, else the default kitchen."""
+    from ..model.kitchen import default_kitchen
+    from .kitchen_files import read_kitchen
+
     if path is None and network.is_example:
         path = example_path("example_kitchen.txt")
     if path is None:
@@ -58,6 +62,8 @@ def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
     """The goal from its text or from a goal file; exactly one must be given (UsageError otherwise)."""
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one goal: as text or as a goal file")
+    from .goal_files import parse_goal_spec, read_goal_file
+
     if goal_file is not None:
         return read_goal_file(goal_file)
     try:
@@ -68,4 +74,6 @@ def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
 
 def load_goal(goal: str | None, goal_file: str | Path | None, foon: Foon) -> Goal:
     """Resolve the user's goal against a network (at the network's level)."""
+    from ..model.goal import resolve_goal
+
     return resolve_goal(goal_spec(goal, goal_file), foon)

@@ -19,7 +19,6 @@ which serve later commands too, are spared: `SPARE_HELPERS`.)
 from __future__ import annotations
 
 import os
-import secrets
 import shutil
 import signal
 import tempfile
@@ -34,7 +33,7 @@ _PROC = "/proc"
 
 def new_token() -> str:
     """A fresh random token for `MARK` or `SCOPE_MARK`."""
-    return secrets.token_hex(8)
+    return os.urandom(8).hex()  # what secrets.token_hex(8) returns, without importing hashlib and hmac
 
 
 def _pids() -> list[int]:
