@@ -11,30 +11,83 @@ from click.testing import CliRunner
 from conftest import ROOT
 
 from foon2pddl.cli import main
-from foon2pddl.planners.commands import PRESETS, check_planner, resolve_command
+from foon2pddl.errors import UsageError
+from foon2pddl.planners.commands import PRESETS, resolve_command
+from foon2pddl.planners.registry import PLANNERS, Planner, PlanRequest, lookup, register
 
 
 def run(*args: str):
     return CliRunner().invoke(main, list(args))
 
 
-def test_unknown_planner_fails_first_without_importing_unified_planning():
+def test_unknown_planner_fails_before_loading_anything():
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    done = subprocess.run([sys.executable, "-X", "importtime", "-m", "foon2pddl", "plan", "--goal", "guacamole",
+    done = subprocess.run([sys.executable, "-m", "foon2pddl", "plan", "--goal", "guacamole",
                            "--planner", "pyperplna"], capture_output=True, text=True, env=env, check=False)
     assert done.returncode == 2
     assert "unknown planner 'pyperplna'; did you mean 'pyperplan'?" in done.stderr
-    assert "phases:" not in done.stderr
-    assert "unified_planning" not in done.stderr  # -X importtime lists every module imported
+    assert "phases:" not in done.stderr and "Traceback" not in done.stderr
+
+
+def test_built_in_planner_names_are_checked_without_unified_planning():
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    code = "from foon2pddl.planners.registry import lookup; import sys; lookup('fd').check('fd'); " \
+           "print('unified_planning' in sys.modules)"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
+    assert done.stdout.strip() == "False"
+
+
+def check(name: str) -> None:
+    lookup(name).check(name)
 
 
 def test_planner_names():
-    check_planner("fd")
-    check_planner("pyperplan")
-    with pytest.raises(ValueError, match="not installed"):
-        check_planner("lpg")
-    with pytest.raises(ValueError, match="unknown planner 'up_grounder'"):
-        check_planner("up_grounder")  # an engine, but not a planner
+    check("fd")
+    check("pyperplan")
+    with pytest.raises(UsageError, match="not installed"):
+        check("lpg")
+    with pytest.raises(UsageError, match="unknown planner 'up_grounder'"):
+        check("up_grounder")  # an engine, but not a planner
+    assert lookup("fd") is PLANNERS["fd"] and lookup("fd", "some command") is PLANNERS["command"]
+    assert PLANNERS["fd"].configurable and not lookup("pyperplan").configurable
+
+
+def test_an_engine_added_to_unified_planning_is_a_planner():
+    """UP's own extension point (`factory.add_engine`) is enough: no list of ours to edit."""
+    from unified_planning.shortcuts import get_environment
+
+    from foon2pddl.pddl.up_problem import quiet_environment
+
+    name = "pyperplan-again-for-test"
+    factory = quiet_environment().factory
+    assert factory is get_environment().factory
+    with pytest.raises(UsageError, match="unknown planner"):
+        check(name)
+    factory.add_engine(name, "up_pyperplan.engine", "EngineImpl")
+    check(name)
+    r = run("plan", "--goal", "guacamole", "--planner", name)
+    assert r.exit_code == 0, r.stderr
+    assert f"solved (up:{name})" in r.stderr
+
+
+def test_a_registered_planner_runs_through_run_planner():
+    from foon2pddl.planners import run_planner
+    from foon2pddl.planners.result import PlanResult
+
+    seen = []
+
+    def solve(request: PlanRequest) -> PlanResult:
+        seen.append((request.name, request.optimal))
+        return PlanResult("unsolvable", (), request.name, "proved nothing, said no")
+
+    register(Planner("say-no", "a planner that never finds a plan", solve, lambda name: None))
+    try:
+        result = run_planner(None, "", "", planner="say-no", optimal=True)
+        r = run("plan", "--goal", "guacamole", "--planner", "say-no")
+    finally:
+        del PLANNERS["say-no"]
+    assert result.status == "unsolvable" and seen[0] == ("say-no", True)
+    assert r.exit_code == 1 and "unsolvable (say-no): proved nothing, said no" in r.stderr
 
 
 def test_python_means_this_interpreter_even_without_a_venv(monkeypatch):

@@ -14,7 +14,8 @@ from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
 from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
-from ..planners.commands import PRESETS, check_planner, resolve_command
+from ..planners.commands import PRESETS
+from ..planners.registry import UnknownPlanner, lookup
 from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan
 from ..status import PlanStatus
@@ -123,11 +124,11 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     check_output(output, directory=entries is not None)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
-    try:  # before anything is loaded or timed: a typo fails in milliseconds
-        if planner_cmd is not None:
-            resolve_command(planner_cmd)
-        else:
-            check_planner(planner)
+    try:  # before anything is loaded or timed
+        lookup(planner, planner_cmd).check(planner if planner_cmd is None else planner_cmd)
+    except UnknownPlanner as exc:
+        raise click.BadParameter(f"{exc} (or --planner-cmd with a command or a preset: {', '.join(PRESETS)})",
+                                 param_hint="--planner") from None
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="--planner-cmd" if planner_cmd else "--planner") from None
     t0 = time.perf_counter()
@@ -199,7 +200,7 @@ def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
     """Fast Downward's configuration from the driver-style options (None: the default); usage errors first."""
     if alias is None and search is None and not evaluators:
         return None
-    if planner_cmd is not None or planner != DEFAULT_PLANNER:
+    if not lookup(planner, planner_cmd).configurable:
         raise click.BadParameter("--alias, --search and --evaluator are Fast Downward options (--planner fd)",
                                  param_hint="--planner")
     from ..planners.fd import search_config

@@ -12,26 +12,19 @@ from .result import STATUSES, PlanResult, parse_plan_text, step_action
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action"]
 
-#: The built-in planner; any other name is looked up among unified-planning engines.
+#: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
 DEFAULT_PLANNER = "fd"
 
 
 def run_planner(task: PlanningTask, domain_text: str, problem_text: str, *, planner: str = DEFAULT_PLANNER,
                 planner_cmd: str | None = None, optimal: bool = False,
                 time_limit: float | None = None, search=None) -> PlanResult:
-    """Solve a rendered task with Fast Downward (`fd`), a UP engine by name, or an external command.
+    """Solve a rendered task with the registered planner `planner` (`planners.registry`): Fast Downward
+    (`fd`), a unified-planning engine by name, or, given `planner_cmd`, an external command.
 
     `search` (an `fd.SearchConfig`: a driver alias or --search/--evaluator) configures Fast Downward.
     """
-    if planner_cmd is not None:
-        from . import external
+    from .registry import PlanRequest, lookup
 
-        return external.solve(planner_cmd, domain_text, problem_text, time_limit=time_limit)
-    if planner == DEFAULT_PLANNER:
-        from . import fd
-
-        return fd.solve(domain_text, problem_text, optimal=optimal, time_limit=time_limit,
-                        translate_options=fd.translate_options_for(task), config=search)
-    from . import up_engine
-
-    return up_engine.solve(task, planner, optimal=optimal, time_limit=time_limit)
+    request = PlanRequest(task, domain_text, problem_text, planner, optimal, time_limit, search, planner_cmd)
+    return lookup(planner, planner_cmd).solve(request)

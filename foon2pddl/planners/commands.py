@@ -1,8 +1,5 @@
-"""Planner names and commands, checked and resolved before anything runs.
+"""Planner commands, resolved before anything runs (planner names: `planners.registry`).
 
-- `check_planner`: is `--planner NAME` Fast Downward or an installed unified-planning
-  engine? Read from UP's engine table (`unified_planning/engines/factory.py`, parsed,
-  not imported: importing UP costs seconds), so a typo fails at once.
 - `PRESETS`: named `--planner-cmd` templates for planners installable from PyPI.
 - `resolve_command`: a `--planner-cmd` (preset or template) as the words to run. The
   command runs in a private temporary directory, so the executable is resolved here,
@@ -14,17 +11,12 @@
 
 from __future__ import annotations
 
-import ast
-import importlib.util
 import os
 import shlex
 import shutil
 import sys
 from dataclasses import dataclass
-from functools import cache
 from pathlib import Path
-
-from . import DEFAULT_PLANNER
 
 PLACEHOLDERS = ("{domain}", "{problem}", "{plan}", "{time}")
 
@@ -99,49 +91,3 @@ def resolve_command(cmd: str, cwd: str | Path | None = None) -> list[str]:
             raise ValueError(f"{exe!r} is not on PATH; presets: {', '.join(PRESETS)}")
         words[0] = found
     return [words[0], *(_absolute(w, here) for w in words[1:])]
-
-
-#: Words in the names of UP's engines that are not planners (grounders, validators, compilers).
-NOT_PLANNERS = ("grounder", "validator", "simulator", "remover", "replanner", "oversubscription", "compiler",
-                "repairer")
-
-
-@cache
-def up_engine_table() -> dict[str, str]:
-    """UP's default planning engines: name -> the module that provides it (read from UP's source)."""
-    spec = importlib.util.find_spec("unified_planning")
-    if spec is None or not spec.submodule_search_locations:
-        return {}
-    source = Path(next(iter(spec.submodule_search_locations))) / "engines" / "factory.py"
-    tree = ast.parse(source.read_text())
-    for node in tree.body:
-        if (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)
-                and node.targets[0].id == "DEFAULT_ENGINES"):
-            table = ast.literal_eval(node.value)
-            return {name: module for name, (module, _) in table.items()
-                    if not any(word in name for word in NOT_PLANNERS)}
-    return {}
-
-
-def installed_engines() -> list[str]:
-    """The engines of `up_engine_table` whose package is installed."""
-    return sorted(n for n, m in up_engine_table().items() if importlib.util.find_spec(m.split(".")[0]) is not None)
-
-
-def check_planner(name: str) -> None:
-    """Raise ValueError unless `name` is `fd` or an installed UP engine (no UP import: milliseconds)."""
-    if name == DEFAULT_PLANNER:
-        return
-    table = up_engine_table()
-    if name in table and importlib.util.find_spec(table[name].split(".")[0]) is None:
-        package = table[name].split(".")[0].replace("_", "-")
-        raise ValueError(f"planner {name!r} is a unified-planning engine that is not installed "
-                         f"(pip install {package})")
-    if name not in table:
-        import difflib
-
-        known = [DEFAULT_PLANNER, *installed_engines()]
-        close = difflib.get_close_matches(name, known, n=1)
-        hint = f"did you mean {close[0]!r}? " if close else ""
-        raise ValueError(f"unknown planner {name!r}; {hint}planners here: {', '.join(known)} "
-                         "(or --planner-cmd with a command or a preset: " + ", ".join(PRESETS) + ")")

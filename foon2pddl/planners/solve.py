@@ -128,13 +128,19 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 
 
 class GoalReplanner:
-    """Many goals on one network and kitchen: Fast Downward translates once, then searches per goal."""
+    """Many goals on one network and kitchen: a planner that can reuse a translation (`Planner.translate_once`;
+    Fast Downward's) translates once, then searches per goal."""
 
     def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
-                 time_limit: float | None = None, search: tuple[str, ...] | None = None) -> None:
-        from .fd_reuse import TranslatedTask
+                 time_limit: float | None = None, search: tuple[str, ...] | None = None,
+                 planner: str = DEFAULT_PLANNER) -> None:
+        from ..errors import UsageError
+        from .registry import lookup
 
+        translate_once = lookup(planner).translate_once
+        if translate_once is None:
+            raise UsageError(f"planner {planner!r} cannot reuse one translation for many goals")
         t0 = time.perf_counter()
         at_level = project(foon, level)
         nodes = tuple(sorted(at_level.nodes))
@@ -147,7 +153,7 @@ class GoalReplanner:
         self.encode_seconds = time.perf_counter() - t0
         self.level = level
         self.kitchen_nodes = kitchen.project(level).nodes
-        self.translated = TranslatedTask.build(base, optimal=optimal, time_limit=time_limit, search=search)
+        self.translated = translate_once(base, optimal=optimal, time_limit=time_limit, search=search)
 
     @property
     def task(self) -> PlanningTask:
