@@ -4,7 +4,7 @@
 
 Per subgraph (its dish as the goal, its default kitchen, level 3, pruned):
 Fast Downward (lama-first) on `tree` and on `instances`; every `instances`
-plan is replayed at the instance level (`simulate_instances`) and its units,
+plan is replayed at the instance level (`planners.trace_check.check_states`) and its units,
 in plan order, are validated as a FOON task tree from the kitchen. Reports
 solved counts, plan lengths (units; repeated firings) and the median and
 worst time (translate + search). `--universal`: the merge of all subgraphs,
@@ -29,9 +29,10 @@ from foon2pddl.model.tasktree import TaskTree, validate
 from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.encode_instances import encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
+from foon2pddl.pddl.instance_replay import instance_trace
 from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd
-from foon2pddl.planners.instance_plan import instance_steps, simulate_instances
+from foon2pddl.planners.trace_check import check_states
 
 from .harness import Context
 
@@ -73,12 +74,14 @@ def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_l
     if not res.solved:
         return Row(name, native, tree.status, tree_units, res.status, 0, 0, len(task.instances), False,
                    res.message.splitlines()[0] if res.message else "", seconds, _seconds(tree))
-    steps = instance_steps(task, res.plan)
-    trace = simulate_instances(task, steps, goal.candidates)
-    reached = next((c for c in goal.candidates if c in trace.states[-1].values()), goal.candidates[0])
+    trace = instance_trace(task, res.plan)
+    verdict = check_states(trace, goal.candidates)
+    final = {s.node for s in trace.final.values()}
+    reached = next((c for c in goal.candidates if c in final), goal.candidates[0])
+    steps = trace.steps
     foon_check = validate(TaskTree(tuple(s.unit for s in steps), reached), kitchen.nodes)
-    problems = trace.validation.problems + foon_check.problems
-    return Row(name, native, tree.status, tree_units, res.status, len(steps), len({s.index for s in steps}),
+    problems = verdict.problems + foon_check.problems
+    return Row(name, native, tree.status, tree_units, res.status, len(steps), len({s.unit for s in steps}),
                len(task.instances), not problems, problems[0] if problems else "", seconds, _seconds(tree))
 
 

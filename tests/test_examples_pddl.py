@@ -72,7 +72,8 @@ def test_instances_problems_solve_with_pyperplan_and_replay_at_the_instance_leve
     from pyperplan.planner import HEURISTICS, SEARCHES, search_plan
 
     from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
-    from foon2pddl.planners.instance_plan import instance_steps, simulate_instances
+    from foon2pddl.pddl.instance_replay import instance_trace
+    from foon2pddl.planners.trace_check import check_states
 
     stem = sanitize(goal)
     domain_path, problem_path = _pair("instances", stem)
@@ -81,5 +82,5 @@ def test_instances_problems_solve_with_pyperplan_and_replay_at_the_instance_leve
     net = load_network([])
     target = load_goal(goal, None, net.at(3))
     task = compile_task(net.at(3), load_kitchen(None, net, 3), target, "instances")
-    steps = instance_steps(task, [op.name.strip("()") for op in plan])
-    assert simulate_instances(task, steps, target.candidates).ok
+    trace = instance_trace(task, [op.name.strip("()") for op in plan])
+    assert check_states(trace, target.candidates).ok

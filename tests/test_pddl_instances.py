@@ -20,11 +20,13 @@ from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.encode_instances import IS, NOT_MADE, encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
 from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts, unfold
+from foon2pddl.pddl.instance_replay import InstancePlanError, instance_trace, trace_lines
 from foon2pddl.pddl.pairing import RoleKind, unit_roles
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Atom, PlanningTask
+from foon2pddl.pddl.trace_view import step_text
 from foon2pddl.planners import fd
-from foon2pddl.planners.instance_plan import InstancePlanError, instance_steps, simulate_instances, trace_lines
+from foon2pddl.planners.trace_check import check_states
 
 
 def n(label, *states):
@@ -122,10 +124,10 @@ def test_encoding_structure_and_one_state_per_instance():
 
 def test_override_and_kitchen_counts():
     task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),))
-    assert [name for name, label, _ in task.instances if label == "knife"] == ["knife_1"]
+    assert [x.name for x in task.instances if x.label == "knife"] == ["knife_1"]
     stated = Kitchen(KNIFE_KITCHEN.nodes, 3, "k", ((CLEAN, 3),))
     task = encode_instances(KNIFE_FOON, stated, KNIFE_GOAL)
-    assert sum(label == "knife" for _, label, _ in task.instances) == 3
+    assert sum(x.label == "knife" for x in task.instances) == 3
 
 
 def _fd(task: PlanningTask):
@@ -136,32 +138,36 @@ def test_one_knife_needs_a_wash_and_the_validator_catches_the_tree_plan():
     task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
     res = _fd(task)
     assert res.solved
-    steps = instance_steps(task, res.plan)
-    assert [s.unit.motion.label for s in steps] == ["cut", "wash", "spread"]
-    trace = simulate_instances(task, steps, (BUTTERED,))
-    assert trace.ok and trace.states[-1]["knife_1"] == DIRTY and trace.goal_instance((BUTTERED,)) == "bread_1"
-    assert steps[0].text() == "cut bread_1, knife_1"
-    assert steps[1].text() == "wash knife_1 with faucet_1"  # the faucet: read in a stable state, bound on replay
+    trace = instance_trace(task, res.plan)
+    assert [s.unit.motion.label for s in trace.steps] == ["cut", "wash", "spread"]
+    assert check_states(trace, (BUTTERED,)).ok
+    assert trace.final["knife_1"].node == DIRTY and trace.final["bread_1"].node == BUTTERED
+    assert all(s.holder is None for s in trace.final.values())  # instances does not model holders
+    assert step_text(trace.steps[0]) == "cut bread_1, knife_1"
+    assert step_text(trace.steps[1]) == "wash knife_1 with faucet_1"  # the faucet: read in a stable state, bound on replay
     # FOON's tree plan (cut, spread) is not physically executable with one knife.
     cut, spread = (next(a.name for a in task.actions if a.unit == u) for u in (0, 1))
-    broken = instance_steps(task, [f"{cut} bread_1 knife_1", f"{spread} bread_1 knife_1"])
-    trace = simulate_instances(task, broken, (BUTTERED,))
-    assert not trace.ok
-    assert "knife_1 is knife (dirty), the unit needs it knife (clean)" in trace.validation.problems[0]
-    assert len(trace.states) == 2 and "cut bread_1, knife_1: bread_1: bread (sliced); knife_1: knife (dirty)" in (
-        trace_lines(trace, broken)[1])
+    broken = instance_trace(task, [f"{cut} bread_1 knife_1", f"{spread} bread_1 knife_1"])
+    verdict = check_states(broken, (BUTTERED,))
+    assert not verdict.ok
+    assert "step 2 (spread bread_1, knife_1 with butter_1): knife_1 is knife (dirty), the unit needs it knife (clean)" \
+        in verdict.problems[0]
+    assert "cut bread_1, knife_1: bread_1: bread (sliced); knife_1: knife (dirty)" in trace_lines(broken)[1]
     with pytest.raises(InstancePlanError):
-        instance_steps(task, [f"{cut} bread_1"])
+        instance_trace(task, [f"{cut} bread_1"])
     with pytest.raises(InstancePlanError):
-        instance_steps(task, ["fly bread_1"])
+        instance_trace(task, ["fly bread_1"])
+    with pytest.raises(InstancePlanError, match="not an instance"):
+        instance_trace(task, [f"{cut} bread_1 knife_9"])
 
 
 def test_derived_counts_solve_without_washing():
     task = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances")
     res = _fd(task)
-    steps = instance_steps(task, res.plan)
-    assert simulate_instances(task, steps, (BUTTERED,)).ok
-    assert sorted(name for s in steps for r, name in s.bindings if r.label == "knife") == ["knife_1", "knife_2"]
+    trace = instance_trace(task, res.plan)
+    assert check_states(trace, (BUTTERED,)).ok
+    assert sorted(b.object for s in trace.steps for b in s.bindings if b.object.startswith("knife")) == [
+        "knife_1", "knife_2"]
 
 
 def test_a_unit_fires_twice_with_different_instances():
@@ -174,9 +180,9 @@ def test_a_unit_fires_twice_with_different_instances():
     goal = Goal(GoalSpec("jug"), (n("jug", "full"),))
     task = encode_instances(foon, kitchen, goal, options=EncodeOptions(instances=(("lemon", 2), ("glass", 2))))
     res = _fd(task)
-    steps = instance_steps(task, res.plan)
-    assert simulate_instances(task, steps, goal.candidates).ok
-    squeezes = [s for s in steps if s.unit.motion.label == "squeeze"]
+    trace = instance_trace(task, res.plan)
+    assert check_states(trace, goal.candidates).ok
+    squeezes = [s for s in trace.steps if s.unit.motion.label == "squeeze"]
     assert len(squeezes) == 2 and squeezes[0].bindings != squeezes[1].bindings
 
 
@@ -259,11 +265,11 @@ def test_plan_pipeline_checks_plans_at_the_instance_level():
     from foon2pddl.planners.solve import plan
 
     outcome = plan(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1), ("faucet", 1)))
-    assert outcome.status == "solved" and outcome.decoded.instance_check.ok
+    assert outcome.status == "solved" and outcome.decoded.trace_check.ok and outcome.trace is outcome.decoded.trace
     # Every step is kept (no justification): the wash is in the tree although FOON does not need it.
     assert [u.motion.label for u in outcome.tree.units] == ["cut", "wash", "spread"]
     assert outcome.validation.ok  # and the tree is a valid FOON task tree from the kitchen
-    assert [s.text() for s in outcome.decoded.instance_plan][-1] == "spread bread_1, knife_1 with butter_1"
+    assert [step_text(s) for s in outcome.trace.steps][-1] == "spread bread_1, knife_1 with butter_1"
 
 
 def test_kitchen_file_states_counts(tmp_path):
@@ -275,7 +281,7 @@ def test_kitchen_file_states_counts(tmp_path):
     assert kitchen.nodes == KNIFE_KITCHEN.nodes
     assert dict(kitchen.counts) == {CLEAN: 2, BUTTER: 1}
     task = encode_instances(KNIFE_FOON, kitchen, KNIFE_GOAL, options=EncodeOptions(instances=(("bread", 2),)))
-    counts = {label: sum(lab == label for _, lab, _ in task.instances) for label in ("knife", "butter", "bread")}
+    counts = {label: sum(x.label == label for x in task.instances) for label in ("knife", "butter", "bread")}
     assert counts == {"knife": 2, "butter": 1, "bread": 2}
     path.write_text("2 x knife: in [bowl\n")
     with pytest.raises(Exception, match="kitchen.txt:1"):

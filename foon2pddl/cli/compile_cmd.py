@@ -10,7 +10,7 @@ from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS
 from ..io.rates import read_rates
-from ..pddl.compile import compile_task
+from ..pddl.compile import compile_task, encoding_named
 from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
@@ -52,8 +52,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:
-    """Keyword options of the `instances` encoding (none for the others)."""
-    if encoding != "instances":
+    """Keyword options of encodings over physical objects (none for the others)."""
+    if not encoding_named(encoding).physical:
         return {}
     return {"instances": parse_instances(instances), "categories": category_chains(foon) if category_types else ()}
 

@@ -73,11 +73,10 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "validation": validation,
         "tree": json.loads(tree_json) if tree_json is not None else None,
     }
-    if d is not None and getattr(d, "instance_check", None) is not None:
-        from ..planners.instance_plan import instance_plan_json
-
-        validation["instances"] = check(d.instance_check)
-        data["instances"] = instance_plan_json(d.instance_plan)
+    view = outcome.compiled.view
+    if d is not None and d.trace_check is not None and view is not None:
+        validation[view.key] = check(d.trace_check)
+        data[view.key] = view.json(outcome.task, d.trace) if d.trace is not None else None
     return json.dumps(data, indent=2) + "\n"
 
 
@@ -153,7 +152,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
                        up_validate=up_validate, constraints=cons, search=config,
                        instances=parse_instances(instances),
-                       categories=category_chains(foon) if category_types and encoding == "instances" else ())
+                       categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
         click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
@@ -163,12 +162,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     data: str | None = None
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
-        decoded = getattr(outcome, "decoded", None)  # a lifted GEN outcome has none
-        if fmt == "steps" and decoded is not None and decoded.instance_trace is not None:
-            from ..planners.instance_plan import trace_lines
-
-            data += "physical objects, step by step (instances encoding):\n" + "\n".join(
-                trace_lines(decoded.instance_trace, decoded.instance_plan)) + "\n"
+        view = outcome.compiled.view
+        if fmt == "steps" and view is not None and outcome.trace is not None:
+            data += view.text(outcome.task, outcome.trace)
     if fmt == "json":
         data = outcome_json(outcome, timings, data)
     else:

@@ -2,4 +2,4 @@
 
 #: The package's modules (import them by name).
 __all__ = ["compile", "costs", "encode_compat", "encode_lifted", "encode_state", "encode_tree", "encoding", "examples",
-           "lifted_atoms", "names", "prune", "registry", "render", "task", "up_problem"]
+           "instance_replay", "lifted_atoms", "names", "prune", "registry", "render", "task", "trace_view", "up_problem"]

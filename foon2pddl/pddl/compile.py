@@ -3,7 +3,8 @@
 `ENCODINGS` maps each encoding's name to its `registry.Encoding` (the first is
 the default); `compile_goal` returns a `registry.Compiled` (the task and how plan
 steps map back to units), `compile_task` just its `PlanningTask`. To add an
-encoding, write its encoder and list it here.
+encoding, write its encoder (and, over physical objects, its replay and view
+hooks) and list it here (docs/extending.md).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from .encode_lifted import compile_lifted
 from .encode_state import encode_state
 from .encode_tree import encode_tree
 from .encoding import EncodeOptions
+from .instance_replay import INSTANCE_VIEW, instance_trace
 from .registry import Compiled, Encoding
 from .task import PlanningTask
 
@@ -38,7 +40,8 @@ def _registry(*encodings: Encoding) -> dict[str, Encoding]:
 #: Encoding name -> encoding, the default first.
 ENCODINGS: dict[str, Encoding] = _registry(
     Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit"),
-    Encoding("instances", encode_instances, "physical object instances whose states change", every_step=True),
+    Encoding("instances", encode_instances, "physical object instances whose states change", every_step=True,
+             replay=instance_trace, view=INSTANCE_VIEW),
     Encoding("state", encode_state, "object-centred STRIPS: facts per object and state, with deletes",
              foon_semantics=False, every_step=True),
     Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),
@@ -108,7 +111,7 @@ def as_compiled(task: PlanningTask | Compiled) -> Compiled:
     enc = encoding_named(task.encoding)
     if enc.lifted:
         raise UsageError(f"plans of the {enc.name} encoding map back through its Compiled task (compile_goal)")
-    return Compiled(task, enc.foon_semantics, every_step=enc.every_step)
+    return enc.wrap(task)
 
 
 def compile_task(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,

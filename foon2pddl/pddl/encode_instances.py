@@ -22,7 +22,7 @@
   that node is stable they are no parameter: `(occupied s)` is checked instead,
   which keeps grounding small: seven read-only bowls of a salad would be 9^7
   groundings with nine bowls, and the plan's instance for them is
-  chosen when the plan is replayed, `planners.instance_plan`); a new
+  chosen when the plan is replayed, `instance_replay`); a new
   object must be not yet made and comes into its output node's state. Two
   roles of one label that require the same state (a node listed twice, two
   new objects) must bind different instances: `(precedes ?a ?b)`, a static
@@ -40,7 +40,8 @@ Not modelled: which instance holds which (`in [bowl]` is part of a node's
 state, so the bowl holding the onion is *a* bowl; FOON's nodes rarely name
 the holding object in the same unit, see docs/pddl.md), quantities, and what
 becomes of read-only objects. `Action.roles` and `PlanningTask.instances` let
-a plan map back to units with instance bindings (`planners.instance_plan`).
+a plan map back to units with instance bindings, and to a `model.physical.PhysicalTrace`
+with no holders (`instance_replay`, the encoding's replay hook).
 """
 
 from __future__ import annotations
@@ -56,7 +57,7 @@ from .instance_counts import InstanceCounts, derive_counts
 from .names import NameTable
 from .pairing import unit_roles
 from .prune import restoring_units
-from .task import Action, Atom, PlanningTask, Predicate
+from .task import Action, Atom, Instance, PlanningTask, Predicate
 
 IS = "is"
 OCCUPIED = "occupied"
@@ -157,7 +158,7 @@ def encode_instances(
             cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
         ))
     for label in sorted(precede):
-        mine = [name for name, lab, _ in instances if lab == label]
+        mine = [x.name for x in instances if x.label == label]
         init.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
     predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
                   Predicate(OCCUPIED, (("?s", STATE_TYPE),), "some instance is in state ?s, which no action leaves"),
@@ -176,7 +177,7 @@ def encode_instances(
         goal=(Atom(GOAL_REACHED),),
         types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, *const.values())),
-        objects=tuple((name, type_of[label]) for name, label, _ in instances),
+        objects=tuple((x.name, type_of[x.label]) for x in instances),
         units=f.units,
         labels=table.labels,
         comments=header("instances", inp, options, len(units)) + _count_lines(counts),
@@ -185,8 +186,8 @@ def encode_instances(
 
 
 def _instances(table: NameTable, counts: InstanceCounts,
-               const: dict[ObjectNode, str]) -> tuple[list, list[Atom], set[str]]:
-    """Instance objects (name, label, start node or None) numbered per label, their initial states."""
+               const: dict[ObjectNode, str]) -> tuple[list[Instance], list[Atom], set[str]]:
+    """Instance objects numbered per label, their initial states."""
     starts: dict[str, list[ObjectNode | None]] = {}
     for node, k in counts.at_node:
         starts.setdefault(node.label, []).extend([node] * k)
@@ -196,7 +197,7 @@ def _instances(table: NameTable, counts: InstanceCounts,
     for label in sorted(starts):
         for k, node in enumerate(starts[label], start=1):
             name = table.name(f"{label} {k}", key=("instance", label, k))
-            instances.append((name, label, node))
+            instances.append(Instance(name, label, node))
             init.append(Atom(IS, (name, NOT_MADE if node is None else const[node])))
     return instances, init, set()
 

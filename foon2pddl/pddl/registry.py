@@ -5,25 +5,35 @@ back to the original), every encoding turns (network, kitchen, goal, level,
 options) into a `Compiled`: the `PlanningTask`, how a plan step (an action with
 its arguments) maps back to a functional unit, and whether the task has FOON's
 semantics (then a valid plan is also a task tree that FOON simulation accepts).
-`compile.ENCODINGS` is the one registry of encodings by name.
+`compile.ENCODINGS` is the one registry of encodings by name. An encoding over
+physical objects also carries its hooks: `replay` (plan steps ->
+`model.physical.PhysicalTrace`, the plan object by object) and `view` (how that
+trace is printed, `trace_view.TraceView`); `planners.decode` and the CLI call
+them and never test an encoding's name.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree
 from .encoding import EncodeOptions
 from .task import Action, PlanningTask
+from .trace_view import TraceView
 
-__all__ = ["Compiled", "Encoder", "Encoding", "Ground", "PlanDecodeError"]
+__all__ = ["Compiled", "Encoder", "Encoding", "Ground", "PlanDecodeError", "Replay"]
 
 #: (unit index of an action, the plan step's arguments) -> the functional unit the step stands for.
 Ground = Callable[[int, tuple[str, ...]], FunctionalUnit]
+
+
+#: (task, plan steps) -> the plan as a physical trace (PlanDecodeError for a step that does not fit).
+Replay = Callable[[PlanningTask, Sequence[str]], PhysicalTrace]
 
 
 class PlanDecodeError(ValueError):
@@ -40,6 +50,8 @@ class Compiled:
     do not fit). `foon_semantics`: a valid plan is a FOON task tree. `every_step`:
     every plan step is a real firing (a unit may fire again on other objects), so the
     tree keeps them all instead of justifying it down to what the goal needs.
+    `replay`, `view`, `holders`: the encoding's trace hooks (`Encoding`), None for encodings
+    with no physical objects.
     """
 
     task: PlanningTask
@@ -49,6 +61,9 @@ class Compiled:
     #: substituted object made after it); None: the tree as decoded.
     finish: Callable[[TaskTree, Sequence[str], frozenset[ObjectNode]], TaskTree] | None = None
     every_step: bool = False
+    replay: Replay | None = None
+    view: TraceView | None = None
+    holders: bool = False
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
         """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""
@@ -71,7 +86,10 @@ class Encoding:
     `foon_semantics`: its valid plans are FOON task trees; `costs`: it honours
     `EncodeOptions.costs`; `lifted`: objects are typed parameters over categories
     (from `EncodeOptions.categories`, or the shipped index), so plans name the
-    objects the planner chose; `every_step`: see `Compiled`.
+    objects the planner chose; `every_step`: see `Compiled`. `replay`: plan steps -> the
+    plan's `PhysicalTrace` (None: the encoding has no physical objects); `view`: how the
+    trace is printed; `holders`: the trace's holders are modelled (not all None), so the
+    relational replay applies to it.
     """
 
     name: str
@@ -81,8 +99,22 @@ class Encoding:
     costs: bool = True
     lifted: bool = False
     every_step: bool = False
+    replay: Replay | None = None
+    view: TraceView | None = None
+    holders: bool = False
+
+    @property
+    def physical(self) -> bool:
+        """Its tasks are over physical objects (it reads `EncodeOptions.instances` and `categories`)."""
+        return self.replay is not None
 
     def compile(self, foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
         """The compiled task (an encoder's bare `PlanningTask` has parameterless actions, one per unit)."""
-        out = self.encode(foon, kitchen, goal, level, options)
-        return out if isinstance(out, Compiled) else Compiled(out, self.foon_semantics, every_step=self.every_step)
+        return self.wrap(self.encode(foon, kitchen, goal, level, options))
+
+    def wrap(self, out: PlanningTask | Compiled) -> Compiled:
+        """`out` with this encoding's promises and hooks."""
+        hooks = {"replay": self.replay, "view": self.view, "holders": self.holders}
+        if isinstance(out, Compiled):
+            return replace(out, **hooks)
+        return Compiled(out, self.foon_semantics, every_step=self.every_step, **hooks)

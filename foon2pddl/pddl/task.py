@@ -11,6 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from ..model.foon import ObjectNode
+from ..model.physical import Relation
+from .pairing import Role
+
 
 @dataclass(frozen=True, order=True)
 class Atom:
@@ -41,7 +45,21 @@ class Action:
     cost: int | None = None
     unit: int | None = None
     comment: tuple[str, ...] = ()
-    roles: tuple = ()  # `instances`: per object of the unit, (`pairing.Role`, whether a parameter binds it)
+    #: encodings over physical objects: per object of the unit, its `pairing.Role` and whether a parameter binds it
+    roles: tuple[tuple[Role, bool], ...] = ()
+
+
+@dataclass(frozen=True)
+class Instance:
+    """A physical object of a task: PDDL name, FOON label, the node it starts in (None: not yet made), and
+    what it starts in or on (`holder`, another instance's name, with its `relation`; None: it stands free
+    or the encoding does not model holders)."""
+
+    name: str
+    label: str
+    start: ObjectNode | None = None
+    holder: str | None = None
+    relation: Relation | None = None
 
 
 @dataclass(frozen=True)
@@ -62,7 +80,7 @@ class PlanningTask:
     units: tuple = ()  # FunctionalUnit per Action.unit index
     labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
     comments: tuple[str, ...] = ()  # header lines for both files
-    instances: tuple = ()  # `instances` encoding: (object name, label, start node or None: not yet made)
+    instances: tuple[Instance, ...] = ()  # encodings over physical objects: every object and where it starts
 
     @property
     def uses_costs(self) -> bool:

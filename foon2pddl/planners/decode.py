@@ -12,9 +12,10 @@ the tree by FOON simulation from the kitchen, exactly like a native retrieval
 (`tasktree.validate`). Encodings with FOON's semantics (`tree`, `foon-compat`,
 `gen-lifted`, `instances`) must pass both; the `state` encoding combines facts of different
 nodes, so its plans need only pass the first, and the FOON check is reported
-as information. The `instances` encoding keeps every step (a unit may fire more
-than once, on other objects) and adds a third check, the plan replayed on the
-physical instances (`instance_plan.simulate_instances`). On request, and when the task is small, the plan
+as information. An encoding over physical objects (`instances`) keeps every step (a unit may fire
+more than once, on other objects) and registers a replay hook (`registry.Encoding.replay`) giving the
+plan as a `model.physical.PhysicalTrace`: a third check replays it on FOON's nodes
+(`trace_check.check_states`). On request, and when the task is small, the plan
 is also checked by unified-planning's sequential plan validator, independent
 of our code (it imports UP, ~1.5 s, hence opt-in).
 """
@@ -28,11 +29,13 @@ from ..model.containment import containment_of
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.levels import project_node
+from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation, justify, validate
 from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask
 from .result import step_action
+from .trace_check import check_states
 
 __all__ = ["Decoded", "PlanDecodeError", "check", "decode", "goal_node", "plan_units", "run_plan", "simulate_plan",
            "to_tree", "up_validation"]
@@ -48,7 +51,8 @@ class Decoded:
     `validation`: FOON simulation of the tree; `plan_check`: the plan under the
     task's STRIPS semantics; `up_validation`: UP's verdict (None when not run);
     `foon_semantics`: whether the encoding promises FOON's semantics (then
-    `validation` must pass too).
+    `validation` must pass too); `trace`: the plan object by object (None for
+    encodings with no physical objects) and `trace_check` its replay.
     """
 
     tree: TaskTree
@@ -57,21 +61,20 @@ class Decoded:
     up_validation: Validation | None = None
     foon_semantics: bool = True
     notes: tuple[str, ...] = ()
-    instance_check: Validation | None = None  # `instances`: the plan replayed on the physical objects
-    instance_plan: tuple = ()  # `instances`: `instance_plan.InstanceStep` per unit step
-    instance_trace: object = None  # `instances`: `instance_plan.InstanceTrace`
+    trace: PhysicalTrace | None = None
+    trace_check: Validation | None = None
 
     @property
     def ok(self) -> bool:
         return (self.plan_check.ok and (self.up_validation is None or self.up_validation.ok)
-                and (self.instance_check is None or self.instance_check.ok)
+                and (self.trace_check is None or self.trace_check.ok)
                 and (self.validation.ok or not self.foon_semantics))
 
     @property
     def problems(self) -> tuple[str, ...]:
         """What failed, the checks that decide `ok` first."""
         out = self.plan_check.problems + (self.up_validation.problems if self.up_validation else ())
-        out += self.instance_check.problems if self.instance_check else ()
+        out += self.trace_check.problems if self.trace_check else ()
         return out + (self.validation.problems if self.foon_semantics else ())
 
 
@@ -173,16 +176,25 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     # a task compiled under --containment infer holds inference units: validate under the same rule
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
                       simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
-    if not compiled.task.instances:  # only tasks over physical objects get the instance replay
+    if compiled.replay is None:  # an encoding with no physical objects
         return decoded
-    from .instance_plan import InstancePlanError, instance_steps, simulate_instances
-
     try:
-        isteps = instance_steps(compiled.task, steps)
-    except InstancePlanError as exc:
-        return replace(decoded, instance_check=Validation(False, (str(exc),)))
-    trace = simulate_instances(compiled.task, isteps, tuple(candidates) if candidates is not None else (tree.goal,))
-    return replace(decoded, instance_check=trace.validation, instance_plan=isteps, instance_trace=trace)
+        trace = compiled.replay(compiled.task, steps)
+    except PlanDecodeError as exc:
+        return replace(decoded, trace_check=Validation(False, (str(exc),)))
+    wanted = tuple(candidates) if candidates is not None else (tree.goal,)
+    return replace(decoded, trace=trace, trace_check=check_trace(trace, wanted, compiled.holders))
+
+
+def check_trace(trace: PhysicalTrace, candidates: Iterable[ObjectNode], holders: bool) -> Validation:
+    """A plan's trace replayed on FOON's nodes; with `holders`, also on its holders (`physical_replay`)."""
+    found = check_states(trace, candidates)
+    if not holders or not found.ok:
+        return found
+    from .physical_replay import replay
+
+    report = replay(trace)
+    return found if report.ok else Validation(False, tuple(str(d) for d in report.disagreements))
 
 
 def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,

@@ -21,6 +21,7 @@ from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
+from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import DEFAULT_ENCODING, as_compiled, compile_goal, compile_task
 from ..pddl.registry import Compiled
@@ -60,6 +61,11 @@ class PlanOutcome:
     @property
     def tree(self) -> TaskTree | None:
         return self.decoded.tree if self.decoded is not None else None
+
+    @property
+    def trace(self) -> PhysicalTrace | None:
+        """The plan object by object (encodings over physical objects; None otherwise or without a plan)."""
+        return self.decoded.trace if self.decoded is not None else None
 
     @property
     def validation(self) -> Validation | None:
