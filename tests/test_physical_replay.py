@@ -6,11 +6,11 @@ from dataclasses import replace
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from physical_world import World, contents, node, random_world, salsa_world, with_change, with_initial
 
 from foon2pddl.model.physical import Binding, ObjectState
 from foon2pddl.planners.physical_replay import DisagreementKind as K
 from foon2pddl.planners.physical_replay import listed, places, replay
-from tests.physical_world import World, contents, node, random_world, salsa_world, with_change, with_initial
 
 
 def kinds(trace) -> set[K]:
