@@ -7,14 +7,15 @@ from physical_world import node as n
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
 from foon2pddl.pddl.compile import compile_task
+from foon2pddl.pddl.instance_replay import instance_trace
 from foon2pddl.pddl.pairing import unit_roles
 from foon2pddl.pddl.render import render
-from foon2pddl.pddl.task import PlanningTask
+from foon2pddl.pddl.task import Instance, PlanningTask
 from foon2pddl.planners import fd
 from foon2pddl.planners.instance_physical import HolderEvidence as E
 from foon2pddl.planners.instance_physical import physical_trace
-from foon2pddl.planners.instance_plan import InstanceStep, instance_steps
 from foon2pddl.planners.physical_replay import DisagreementKind as K
 from foon2pddl.planners.physical_replay import replay
 
@@ -41,7 +42,7 @@ def test_planned_brine_is_physically_consistent():
     task = compile_task(BRINE_FOON, BRINE_KITCHEN, Goal(GoalSpec("brine"), (BRINE,)), "instances")
     res = fd.solve(*render(task), time_limit=60)
     assert res.solved
-    inferred = physical_trace(task, instance_steps(task, res.plan))
+    inferred = physical_trace(task, instance_trace(task, res.plan))
     t = inferred.trace
     assert [s.unit.motion.label for s in t.steps] == ["pour", "pour", "mix"]
     assert t.holder_of("water_1", 0) == "bowl_1" and t.holder_of("salt_1", 0) == "shaker_1"
@@ -53,12 +54,16 @@ def test_planned_brine_is_physically_consistent():
     assert report.ok, [d.describe() for d in report.disagreements]
 
 
-def _task(instances) -> PlanningTask:
-    return PlanningTask("d", "p", "instances", 3, (), (), (), (), instances=tuple(instances))
-
-
-def _step(index, u, names):
-    return InstanceStep(index, u, tuple(zip(unit_roles(u), names, strict=True)))
+def _trace(instances, firings) -> tuple[PlanningTask, PhysicalTrace]:
+    """A task with `instances` (name, label, start node) and the holder-less trace of `firings` (unit, names)."""
+    task = PlanningTask("d", "p", "instances", 3, (), (), (), (), instances=tuple(Instance(*x) for x in instances))
+    steps = []
+    for k, (u, names) in enumerate(firings):
+        roles = list(zip(unit_roles(u), names, strict=True))
+        steps.append(TraceStep(k, u, tuple(Binding(x, r.before, r.after) for r, x in roles),
+                               tuple(ObjectState(x, r.after) for r, x in roles if r.changes)))
+    return task, PhysicalTrace(tuple(PhysicalObject(x, lab) for x, lab, _ in instances),
+                               tuple(ObjectState(x, start) for x, _, start in instances), tuple(steps))
 
 
 def test_tracking_keeps_the_salmon_in_its_bowl_and_the_replay_sees_the_wrong_bowl():
@@ -66,9 +71,9 @@ def test_tracking_keeps_the_salmon_in_its_bowl_and_the_replay_sees_the_wrong_bow
     frozen, thawed = n("salmon", "frozen", ("in", "bowl")), n("salmon", "thawed", ("in", "bowl"))
     bowl, micro = n("bowl", ("contains", ["salmon"])), n("microwave", "on")
     defrost = unit("defrost", [frozen, bowl, micro], [thawed, bowl, micro])
-    task = _task([("bowl_1", "bowl", bowl), ("bowl_2", "bowl", bowl), ("microwave_1", "microwave", micro),
-                  ("salmon_1", "salmon", frozen)])
-    inferred = physical_trace(task, [_step(0, defrost, ["salmon_1", "bowl_2", "microwave_1"])])
+    task, plain = _trace([("bowl_1", "bowl", bowl), ("bowl_2", "bowl", bowl), ("microwave_1", "microwave", micro),
+                  ("salmon_1", "salmon", frozen)], [(defrost, ["salmon_1", "bowl_2", "microwave_1"])])
+    inferred = physical_trace(task, plain)
     t = inferred.trace
     assert t.holder_of("salmon_1", -1) == "bowl_1" and t.holder_of("salmon_1") == "bowl_1"
     assert inferred.evidence[E.LISTED] == 1 and inferred.evidence[E.TRACKED] == 1
@@ -82,8 +87,8 @@ def test_pour_between_same_label_containers_follows_the_lists():
     src, drained = n("pot", ("contains", ["water"]), "dirty", "hot"), n("pot", "empty", "dirty", "hot")
     dst, filled = n("pot", "clean"), n("pot", ("contains", ["water"]), "clean")
     pour = unit("pour", [water, src, dst], [water, drained, filled])
-    task = _task([("pot_1", "pot", src), ("pot_2", "pot", dst), ("water_1", "water", water)])
-    inferred = physical_trace(task, [_step(0, pour, ["water_1", "pot_1", "pot_2"])])
+    task, plain = _trace([("pot_1", "pot", src), ("pot_2", "pot", dst), ("water_1", "water", water)], [(pour, ["water_1", "pot_1", "pot_2"])])
+    inferred = physical_trace(task, plain)
     assert inferred.trace.holder_of("water_1", -1) == "pot_1"
     assert inferred.trace.holder_of("water_1") == "pot_2"
     assert replay(inferred.trace).ok
@@ -95,16 +100,16 @@ def test_read_only_content_goes_where_the_list_names_it_or_into_the_product():
     cream, cup = n("cream", ("in", "cup")), n("cup", ("contains", ["cream"]))
     mb0, mb1 = n("mixing bowl", "empty"), n("mixing bowl", ("contains", ["cream"]))
     pour = unit("pour*", [cream, cup, mb0], [mb1])
-    task = _task([("cream_1", "cream", cream), ("cup_1", "cup", cup), ("mixing_bowl_1", "mixing bowl", mb0)])
-    t = physical_trace(task, [_step(0, pour, ["cream_1", "cup_1", "mixing_bowl_1"])]).trace
+    task, plain = _trace([("cream_1", "cream", cream), ("cup_1", "cup", cup), ("mixing_bowl_1", "mixing bowl", mb0)], [(pour, ["cream_1", "cup_1", "mixing_bowl_1"])])
+    t = physical_trace(task, plain).trace
     assert t.holder_of("cream_1") == "mixing_bowl_1" and not t.final["cream_1"].consumed
     assert K.MISPLACED in replay(t).kinds()
 
     lettuce, b0 = n("lettuce", "chopped", ("in", "bowl")), n("bowl", ("contains", ["lettuce"]))
     salad, b1 = n("salad", ("in", "bowl")), n("bowl", ("contains", ["salad"]))
     mix = unit("mix", [lettuce, b0], [salad, b1])
-    task = _task([("bowl_1", "bowl", b0), ("lettuce_1", "lettuce", lettuce), ("salad_1", "salad", None)])
-    t = physical_trace(task, [_step(0, mix, ["lettuce_1", "bowl_1", "salad_1"])]).trace
+    task, plain = _trace([("bowl_1", "bowl", b0), ("lettuce_1", "lettuce", lettuce), ("salad_1", "salad", None)], [(mix, ["lettuce_1", "bowl_1", "salad_1"])])
+    t = physical_trace(task, plain).trace
     assert t.final["lettuce_1"].consumed and t.contents("bowl_1") == ("salad_1",)
     assert replay(t).ok
 
@@ -113,9 +118,9 @@ def test_unresolved_holder_is_left_free_and_reported():
     """A product `in [bowl]` of a unit that binds no bowl: no evidence, no holder, the replay says misplaced."""
     juice = n("juice", ("in", "bowl"))
     squeeze = unit("squeeze", [n("lime", "halved")], [n("lime", "squeezed"), juice])
-    task = _task([("bowl_1", "bowl", n("bowl", "empty")), ("bowl_2", "bowl", n("bowl", "empty")),
-                  ("juice_1", "juice", None), ("lime_1", "lime", n("lime", "halved"))])
-    inferred = physical_trace(task, [_step(0, squeeze, ["lime_1", "juice_1"])])
+    task, plain = _trace([("bowl_1", "bowl", n("bowl", "empty")), ("bowl_2", "bowl", n("bowl", "empty")),
+                  ("juice_1", "juice", None), ("lime_1", "lime", n("lime", "halved"))], [(squeeze, ["lime_1", "juice_1"])])
+    inferred = physical_trace(task, plain)
     assert inferred.trace.holder_of("juice_1") is None and inferred.evidence[E.UNRESOLVED] == 1
     d = next(d for d in replay(inferred.trace).disagreements if d.kind is K.MISPLACED)
     assert d.objects == ("juice_1",) and d.source == "brine.txt:1"

@@ -1,7 +1,8 @@
-"""An `instances` plan as a `PhysicalTrace`, its holders inferred by tracking (for the physical replay).
+"""An `instances` plan as a `PhysicalTrace` with holders, inferred by tracking (for the physical replay).
 
 The `instances` encoding does not model which object holds which: `onion (in
-[bowl])` is part of the onion's state. `physical_trace` reconstructs the holders
+[bowl])` is part of the onion's state, and its plan's trace
+(`pddl.instance_replay.instance_trace`) has no holders. `physical_trace` rebuilds it with holders
 from FOON's own evidence, step by step, so `physical_replay.replay` can judge the
 plan object by object. It shares no logic with an encoding that models holders.
 
@@ -33,8 +34,7 @@ lettuce of a salad, the bread of a garlic bread); else it stays as it was (a
 baking tray FOON leaves out of a unit's outputs). A read-only role that is no parameter of
 the action (the encoding checks "some instance is there") gets, among the
 instances in the required state, the one holding another object of the step when
-there is one (the encoding leaves the choice open), else `instance_steps`' choice.
-Roles bound to no instance (`?`) are left out (the instance replay reports them).
+there is one (the encoding leaves the choice open), else the trace's choice.
 """
 
 from __future__ import annotations
@@ -45,10 +45,9 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from ..model.foon import ObjectNode
-from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
+from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceStep
 from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
-from .instance_plan import InstanceStep
 from .physical_replay import listed, places
 
 __all__ = ["HolderEvidence", "InferredTrace", "physical_trace"]
@@ -73,7 +72,7 @@ class InferredTrace:
 
 class _Builder:
     def __init__(self, task: PlanningTask) -> None:
-        self.label = {name: lab for name, lab, _ in task.instances}
+        self.label = {x.name: x.label for x in task.instances}
         self.now: dict[str, ObjectState] = {}
         self.evidence: Counter = Counter()
 
@@ -85,11 +84,12 @@ class _Builder:
             at = self.now[at].holder if at in self.now else None
         return False
 
-    def start(self, instances: Sequence[tuple[str, str, ObjectNode | None]]) -> tuple[ObjectState, ...]:
-        self.now = {name: ObjectState(name, node) for name, _, node in instances}
-        made = {name: node for name, _, node in instances if node is not None}
+    def start(self, initial: Sequence[ObjectState]) -> tuple[ObjectState, ...]:
+        self.now = {s.id: ObjectState(s.id, s.node) for s in initial}
+        made = {s.id: s.node for s in initial if s.node is not None}
         holds: dict[str, set[str]] = {}
-        for name, label, node in instances:
+        for name, node in ((s.id, s.node) for s in initial):
+            label = self.label[name]
             for rel, c in places(node):
                 cands = sorted(h for h, n in made.items() if self.label[h] == c and h != name)
                 lists = [h for h in cands if label in listed(made[h])]
@@ -103,7 +103,7 @@ class _Builder:
             else:
                 if places(node):
                     self.evidence[HolderEvidence.UNRESOLVED] += 1
-        return tuple(self.now[name] for name, _, _ in instances)
+        return tuple(self.now[s.id] for s in initial)
 
     def holder(self, obj: str, node: ObjectNode, roles: Sequence[tuple[Role, str]],
                unchanged: bool = False) -> tuple[str | None, Relation | None]:
@@ -173,8 +173,9 @@ class _Builder:
             out.append((role, name))
         return out
 
-    def step(self, k: int, step: InstanceStep, free: Sequence[bool]) -> TraceStep:
-        roles = self.rebind(list(step.bindings), free)
+    def step(self, step: TraceStep, free: Sequence[bool]) -> TraceStep:
+        given = [(Role(self.label[b.object], b.before, b.after), b.object) for b in step.bindings]
+        roles = self.rebind(given, free)
         roles = [(r, n) for r, n in roles if n in self.now]
         landed = {p for r, _ in roles if r.kind is RoleKind.NEW for p in places(r.after)}
         changes = []
@@ -197,18 +198,19 @@ class _Builder:
                 changes.append(new)
         self.now.update((c.id, c) for c in changes)
         bindings = tuple(Binding(n, r.before, r.after if r.changes else None) for r, n in roles)
-        return TraceStep(k, step.unit, bindings, tuple(changes))
+        return TraceStep(step.index, step.unit, bindings, tuple(changes), step.source)
 
 
-def physical_trace(task: PlanningTask, steps: Sequence[InstanceStep]) -> InferredTrace:
-    """The plan's unit firings over the task's instances, holders inferred (see the module doc). O(steps x instances)."""
+def physical_trace(task: PlanningTask, trace: PhysicalTrace) -> InferredTrace:
+    """`trace` (an `instances` plan over `task`'s instances) with holders inferred (see the module doc).
+
+    O(steps x instances)."""
     b = _Builder(task)
-    initial = b.start(task.instances)
-    by_unit = {a.unit: a for a in task.actions if a.unit is not None}
+    initial = b.start(trace.initial)
+    flags = {id(task.units[a.unit]): a.roles for a in task.actions if a.unit is not None}
     out = []
-    for k, s in enumerate(steps):
-        flags = by_unit[s.index].roles if s.index in by_unit else ()
-        free = [not bound for _, bound in flags] if len(flags) == len(s.bindings) else [False] * len(s.bindings)
-        out.append(b.step(k, s, free))
-    objects = tuple(PhysicalObject(name, label) for name, label, _ in task.instances)
-    return InferredTrace(PhysicalTrace(objects, initial, tuple(out)), b.evidence)
+    for s in trace.steps:
+        roles = flags.get(id(s.unit), ())
+        free = [not bound for _, bound in roles] if len(roles) == len(s.bindings) else [False] * len(s.bindings)
+        out.append(b.step(s, free))
+    return InferredTrace(PhysicalTrace(trace.objects, initial, tuple(out)), b.evidence)
