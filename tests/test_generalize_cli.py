@@ -18,10 +18,42 @@ def run():
 
 
 def test_similarity_floors(run):
-    high = run("similarity", "onion", "chive")
-    low = run("similarity", "onion", "knife")
+    high = run("similarity", "onion", "chive", "--similarity", "paper")
+    low = run("similarity", "onion", "knife", "--similarity", "paper")
     assert high.exit_code == 0 and float(high.stdout) >= 0.89
     assert low.exit_code == 0 and float(low.stdout) < 0.5
+
+
+def test_cook_similarity_rejects_what_paper_accepts(run):
+    assert run("similarity", "cilantro", "banana", "--similarity", "paper").stdout == "0.9000\n"
+    cook = run("similarity", "cilantro", "banana", "--senses")
+    assert cook.exit_code == 0 and cook.stdout.startswith("0.0000\n")
+    assert "under matter.n.03 (rejected: the ancestor covers" in cook.stdout
+    assert float(run("similarity", "lemon", "lime").stdout) >= 0.89
+
+
+def test_user_overrides_extend_the_table(run, tmp_path):
+    extra = tmp_path / "mine.json"
+    extra.write_text(json.dumps({"forbidden": [["lemon", "lime"]], "pairs": [["cilantro", "banana", 0.5]]}))
+    assert run("similarity", "lemon", "lime", "--overrides", str(extra)).stdout == "0.0000\n"
+    assert run("similarity", "cilantro", "banana", "--overrides", str(extra)).stdout == "0.5000\n"
+    extra.write_text('{"forbidden": [["lemon"]]}')
+    bad = run("similarity", "lemon", "lime", "--overrides", str(extra))
+    assert bad.exit_code == 2 and f"{extra}:" in bad.stderr and "forbidden" in bad.stderr
+
+
+def test_expand_pairs_lists_every_substitution_with_its_evidence(run):
+    tsv = run("expand", "--pairs")
+    assert tsv.exit_code == 0, tsv.stderr
+    lines = [line.split("\t") for line in tsv.stdout.splitlines()]
+    assert lines[0] == ["label", "substitute", "similarity", "ancestor", "label_sense", "substitute_sense", "kind"]
+    rows = {(r[0], r[1]): r for r in lines[1:]}
+    assert rows[("lemon", "lime")][2:] == ["0.9167", "citrus.n.01", "lemon.n.01", "lime.n.06", "similar"]
+    assert rows[("lemon juice", "lime juice")][-1] == "derived"
+    as_json = json.loads(run("expand", "--pairs", "--format", "json").stdout)
+    assert [(r["label"], r["substitute"]) for r in as_json] == [k for k in rows]
+    paper = run("expand", "--pairs", "--similarity", "paper").stdout.splitlines()
+    assert len(paper) > len(lines)  # the paper's rule substitutes more
 
 
 def test_similarity_matrix_and_pairs(run):

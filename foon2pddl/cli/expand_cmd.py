@@ -1,4 +1,4 @@
-"""`foon2pddl expand`: FOON-EXP, units copied onto similar objects."""
+"""`foon2pddl expand`: FOON-EXP, units copied onto similar objects (`--pairs`: the substitutions it uses)."""
 
 from __future__ import annotations
 
@@ -6,34 +6,51 @@ import click
 
 from ..io.inputs import load_network
 from . import main
-from .options import emit_network, kitchen_option, output_option, paths_argument
+from .options import (emit, emit_network, kitchen_option, load_overrides, output_option, paths_argument,
+                      similarity_options)
 
 
 @main.command("expand")
 @paths_argument
 @click.option("--threshold", type=click.FloatRange(0, 1, min_open=True), default=0.89, show_default=True,
-              help="Least Wu-Palmer similarity for a substitution.")
+              help="Least similarity for a substitution.")
+@similarity_options
 @click.option("--max-units", "max_units", type=click.IntRange(min=1), default=None,
               help="Fail (exit 2) instead of writing a network with more units than this.")
 @kitchen_option
 @click.option("--provenance", is_flag=True,
               help="Precede each unit with '# from <file>:<line>' comments; copies say what they were expanded from.")
+@click.option("--pairs", "as_pairs", is_flag=True,
+              help="Print the substitution pairs the expansion uses (TSV, or JSON with --format json) "
+                   "instead of the network.")
 @click.option("--format", "fmt", type=click.Choice(["foon", "json"]), default="foon", show_default=True,
               help="FOON text, or the JSON export (always carries provenance).")
 @output_option
-def expand_(paths, threshold, max_units, kitchen, provenance, fmt, output) -> None:
+def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provenance, as_pairs, fmt, output) -> None:
     """Write FOON-EXP of the network: for each unit and each object in it, a copy with a similar object.
 
     The vocabulary is the network's object labels plus those of --kitchen (the example
     kitchen for the example network; a default kitchen adds no label). Statistics per level go to standard error.
+    With --pairs, one row per substitution: label, substitute, similarity, common ancestor, the two
+    senses, and the kind (`similar`, or `derived` for a product renamed along, e.g. lemon juice -> lime juice).
     """
-    from ..generalize.expand import expand
+    from ..generalize.expand import expand, vocabulary
+    from ..generalize.modes import mode_matrix
     from ..generalize.stats import format_levels_table, levels_table
     from ..io.inputs import load_kitchen
 
     net = load_network(paths)
-    e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=load_kitchen(kitchen, net, 3))
-    header = (f"FOON-EXP (threshold {threshold}): {e.original_units} units + {e.added_units} expanded, "
+    kit = load_kitchen(kitchen, net, 3)
+    extra = load_overrides(overrides)
+    matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
+    e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
+    if as_pairs:
+        from ..generalize.pairs import format_pairs, substitution_pairs
+
+        emit(format_pairs(substitution_pairs(e, vocabulary(net.foon, kit), extra), fmt), output)
+        return
+    header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "
               f"{len(e.substitutions)} label substitutions")
     emit_network(e.foon, fmt, provenance, header, output)
     click.echo(format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon})), err=True, nl=False)
+

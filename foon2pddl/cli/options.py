@@ -29,6 +29,29 @@ utensils_option = click.option("--utensils", "utensils", type=click.Path(path_ty
                                help="Utensil labels, one a line: reusable, available in base state (docs/format.md).")
 goal_file_option = click.option("--goal-file", "goal_file", type=click.Path(path_type=Path), default=None,
                                 help="Goal as one object node in FOON O/S lines.")
+def similarity_options(f):
+    """`--similarity MODE` and `--overrides FILE` (extra sense overrides and forbidden pairs)."""
+    from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
+
+    f = click.option("--overrides", "overrides", type=click.Path(path_type=Path), default=None,
+                     help="Extra similarity overrides (JSON: senses, pairs, forbidden; docs/generalization.md), "
+                          "added to the mode's shipped table.")(f)
+    return click.option("--similarity", "similarity", type=click.Choice(list(SIMILARITY_MODES)),
+                        default=DEFAULT_MODE, show_default=True,
+                        help="Label similarity: " + "; ".join(f"{m.name}: {m.description}"
+                                                               for m in SIMILARITY_MODES.values()) + ".")(f)
+
+
+def load_overrides(path: Path | None):
+    """The user's overrides file (`--overrides`), parsed (located errors), or None."""
+    if path is None:
+        return None
+    from ..generalize.senses import parse_overrides
+    from ..io.parser import read_text
+
+    return parse_overrides(read_text(path), str(path))
+
+
 output_option = click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
                              help="Write to this file (atomically) instead of standard output.")
 

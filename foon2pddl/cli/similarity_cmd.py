@@ -9,7 +9,7 @@ import click
 from ..errors import UsageError
 from ..model.foon import normalize_label
 from . import main
-from .options import emit, output_option
+from .options import emit, load_overrides, output_option, similarity_options
 
 
 @main.command("similarity")
@@ -17,17 +17,20 @@ from .options import emit, output_option
 @click.option("--pairs", "as_pairs", is_flag=True, help="Read LABELS as consecutive pairs (A B C D: A~B, C~D).")
 @click.option("--senses", is_flag=True, help="Also print the WordNet senses each label stands for.")
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@similarity_options
 @output_option
-def similarity(labels, as_pairs, senses, as_json, output) -> None:
+def similarity(labels, as_pairs, senses, as_json, similarity, overrides, output) -> None:
     """Similarity of object labels: one value for two labels, a matrix for more (or --pairs).
 
-    Wu-Palmer similarity over WordNet noun senses in kitchen-relevant lexicographer
-    files, with head-noun fallback for compounds and the shipped overrides
-    (docs/generalization.md). FOON-EXP substitutes labels at least 0.89 similar.
+    Wu-Palmer similarity over WordNet noun senses, with head-noun fallback for
+    compounds and the shipped overrides (docs/generalization.md). `cook` (the default)
+    keeps the senses of a label's role (food, else kitchen artifact), uses the deepest
+    common ancestor and gives 0 to pairs whose ancestor is a broad class (--senses says
+    which); `paper` is the seed paper's rule. FOON-EXP substitutes labels at least 0.89 similar.
     A label with no kitchen sense in WordNet gets a warning on stderr (exit status 0):
     its similarity to every other label is 0.
     """
-    from ..generalize.similarity import LabelSimilarity
+    from ..generalize.modes import make_similarity
 
     labels = [normalize_label(x) for x in labels]
     if any(not x for x in labels):
@@ -36,7 +39,7 @@ def similarity(labels, as_pairs, senses, as_json, output) -> None:
         raise UsageError(f"--pairs needs an even number of labels, got {len(labels)}")
     if len(labels) < 2:
         raise UsageError("give at least two labels")
-    sim = LabelSimilarity()
+    sim = make_similarity(similarity, extra=load_overrides(overrides))
     if as_pairs or len(labels) == 2:
         pairs = list(zip(labels[::2], labels[1::2], strict=True))
         values = [(a, b, sim(a, b)) for a, b in pairs]
@@ -64,4 +67,26 @@ def similarity(labels, as_pairs, senses, as_json, output) -> None:
                        "its similarity to any other label is 0", err=True)
     if senses and not as_json:
         text += "".join(sim.resolution(x).describe() + "\n" for x in dict.fromkeys(labels))
+        if similarity != "paper":
+            text += "".join(_why(a, b, sim.explain(a, b)) for a, b in
+                            (pairs if as_pairs or len(labels) == 2 else _distinct_pairs(labels)))
     emit(text, output)
+
+
+def _distinct_pairs(labels):
+    names = list(dict.fromkeys(labels))
+    return [(a, b) for i, a in enumerate(names) for b in names[i + 1:]]
+
+
+def _why(a: str, b: str, ev) -> str:
+    """One line: the sense pair and common ancestor a cook-mode value comes from, or why it is 0."""
+    a, b = sorted((a, b))  # the evidence's sense order
+    if ev.rejected in ("same", "unknown", "fixed", "forbidden"):
+        what = {"same": "the same label", "unknown": "a label has no sense", "fixed": "fixed by the overrides",
+                "forbidden": "forbidden by the overrides"}[ev.rejected]
+        return f"{a} ~ {b}: {what}\n"
+    if not ev.ancestor:
+        return f"{a} ~ {b}: no common ancestor\n"
+    verdict = f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary" if ev.rejected == "broad" \
+        else f"ancestor covers {ev.breadth:.1%} of the vocabulary"
+    return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -27,7 +27,8 @@ from dataclasses import dataclass
 from ..errors import UsageError
 from ..model.foon import Foon, FunctionalUnit, dedupe_units
 from ..model.kitchen import Kitchen
-from .similarity import SimilarityMatrix, similarity_matrix
+from .modes import DEFAULT_MODE, mode_matrix
+from .similarity import SimilarityMatrix
 from .substitute import product_renames, renames_product_away, substitute_unit, unit_labels
 
 #: The seed paper's similarity threshold for FOON-EXP.
@@ -44,6 +45,12 @@ class Expansion:
     copies: int  # substituted copies generated, before removing duplicates
     substitutions: tuple[tuple[str, str], ...]  # (label, similar label) pairs used, sorted
     derived: tuple[tuple[str, str], ...] = ()  # (product, renamed product) pairs propagated, sorted
+    similarity: str = DEFAULT_MODE  # the similarity mode (`modes.py`)
+
+    def title(self) -> str:
+        """`FOON-EXP (threshold T)`, naming the similarity unless it is the paper's (whose outputs stay as they were)."""
+        mode = "" if self.similarity == "paper" else f"{self.similarity} similarity, "
+        return f"FOON-EXP ({mode}threshold {self.threshold})"
 
     @property
     def added_units(self) -> int:
@@ -71,15 +78,17 @@ def expand(
     threshold: float = DEFAULT_THRESHOLD,
     max_units: int | None = None,
     kitchen: Kitchen | None = None,
+    similarity: str = DEFAULT_MODE,
 ) -> Expansion:
-    """FOON-EXP of `foon` (at its level) over the vocabulary of `matrix` (default: network + kitchen labels).
+    """FOON-EXP of `foon` (at its level) over the vocabulary of `matrix` (default: the `similarity` mode's
+    matrix over the network's and kitchen's labels).
 
     Raises UsageError when the result would hold more than `max_units` units.
     """
     if not 0 < threshold <= 1:
         raise UsageError(f"similarity threshold must be in (0, 1], not {threshold}")
     if matrix is None:
-        matrix = similarity_matrix(vocabulary(foon, kitchen))
+        matrix = mode_matrix(vocabulary(foon, kitchen), similarity)
     known = set(matrix.labels)
     similar_cache: dict[str, tuple[tuple[str, float], ...]] = {}
     keys = {u.key for u in foon.units}
@@ -122,4 +131,4 @@ def expand(
                 add(unit, old, new)
     units = dedupe_units((*foon.units, *copies))
     return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)),
-                     tuple(sorted(derived)))
+                     tuple(sorted(derived)), similarity)

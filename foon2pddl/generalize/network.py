@@ -27,6 +27,7 @@ from ..model.levels import check_level, project
 from .categories import CategoryIndex, load_index
 from .compress import abstract_goal, abstract_kitchen, category_map, compress
 from .expand import DEFAULT_THRESHOLD, expand
+from .modes import DEFAULT_MODE
 from .substitute import substitute_node
 
 __all__ = ["NETWORKS", "NetworkKind", "NetworkView", "network_view"]
@@ -104,15 +105,17 @@ class NetworkView:
 
 
 def network_view(net: Network, kind: str, level: int, kitchen: Kitchen, *, threshold: float = DEFAULT_THRESHOLD,
-                 max_units: int | None = None, index: CategoryIndex | None = None) -> NetworkView:
-    """REG, EXP or GEN of `net` at `level`, with `kitchen` (at `level`) and the goal mapped to match."""
+                 max_units: int | None = None, index: CategoryIndex | None = None,
+                 similarity: str = DEFAULT_MODE) -> NetworkView:
+    """REG, EXP or GEN of `net` at `level`, with `kitchen` (at `level`) and the goal mapped to match;
+    EXP with the `similarity` mode (`modes.py`)."""
     check_level(level)
     reg = net.at(level)
     if kind == "reg":
         return NetworkView(kind, reg, kitchen, _same, reg)
     if kind == "exp":
-        e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=kitchen)
-        note = f"FOON-EXP (threshold {threshold}): {e.original_units} -> {len(e.foon.units)} units"
+        e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=kitchen, similarity=similarity)
+        note = f"{e.title()}: {e.original_units} -> {len(e.foon.units)} units"
         return NetworkView(kind, project(e.foon, level), kitchen, _same, reg, note=note)
     if kind == "gen":
         ix = index or load_index()

@@ -44,13 +44,23 @@ class Overrides:
     senses: dict[str, tuple[str, ...]]
     pairs: dict[frozenset[str], float]
     text: str = ""  # the file's content, part of the similarity cache key
+    forbidden: frozenset[frozenset[str]] = frozenset()  # pairs never substituted (similarity 0)
 
     def pair(self, a: str, b: str) -> float | None:
         return self.pairs.get(frozenset((a, b)))
 
+    def forbids(self, a: str, b: str) -> bool:
+        return frozenset((a, b)) in self.forbidden
+
+    def extended(self, other: Overrides) -> Overrides:
+        """These overrides with `other`'s added (its senses and pair values win)."""
+        return Overrides({**self.senses, **other.senses}, {**self.pairs, **other.pairs},
+                         self.text + "\n" + other.text, self.forbidden | other.forbidden)
+
 
 def parse_overrides(text: str, path: str) -> Overrides:
-    """Read `{"senses": {label: [synset, ...]}, "pairs": [[a, b, value], ...]}`; errors name the file."""
+    """Read `{"senses": {label: [synset, ...]}, "pairs": [[a, b, value], ...], "forbidden": [[a, b], ...]}`
+    (every key optional); errors name the file."""
     try:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
@@ -69,7 +79,11 @@ def parse_overrides(text: str, path: str) -> Overrides:
                 and isinstance(item[2], int | float) and 0 <= item[2] <= 1):
             raise FoonInputError(path, 0, f"pair {item!r}: expected [label, label, value in 0..1]")
         pairs[frozenset((_key(item[0]), _key(item[1])))] = float(item[2])
-    return Overrides(senses, pairs, text)
+    forbidden = data.get("forbidden", [])
+    if not isinstance(forbidden, list) or not all(
+            isinstance(x, list) and len(x) == 2 and all(isinstance(y, str) and y.strip() for y in x) for x in forbidden):
+        raise FoonInputError(path, 0, "forbidden: expected a list of [label, label] pairs")
+    return Overrides(senses, pairs, text, frozenset(frozenset((_key(a), _key(b))) for a, b in forbidden))
 
 
 @lru_cache(maxsize=1)
@@ -124,8 +138,11 @@ def _override(reader, label: str, names: tuple[str, ...], term: str, modifier: s
     return Resolution(label, names, term, modifier, source, kinds)
 
 
-def resolve(reader, label: str, overrides: Overrides) -> Resolution:
-    """The senses of `label`: override, whole term (`a_b`, then `ab`), else head noun with a modifier."""
+def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses) -> Resolution:
+    """The senses of `label`: override, whole term (`a_b`, then `ab`), else head noun with a modifier.
+
+    `senses_of(reader, term)` picks a term's senses (name -> lexicographer file).
+    """
     key = _key(label)
     if key in overrides.senses:
         return _override(reader, label, overrides.senses[key], key, None, "override")
@@ -133,14 +150,14 @@ def resolve(reader, label: str, overrides: Overrides) -> Resolution:
     if not words:
         return Resolution(label, (), "", None, "none")
     for term in dict.fromkeys(("_".join(words), "".join(words))):
-        found = kitchen_senses(reader, term)
+        found = senses_of(reader, term)
         if found:
             return Resolution(label, tuple(found), term, None, "wordnet", tuple(found.values()))
     for i in range(1, len(words)):
         head, modifier = " ".join(words[i:]), " ".join(words[:i])
         if head in overrides.senses:
             return _override(reader, label, overrides.senses[head], head, modifier, "head")
-        found = kitchen_senses(reader, "_".join(words[i:]))
+        found = senses_of(reader, "_".join(words[i:]))
         if found:
             return Resolution(label, tuple(found), "_".join(words[i:]), modifier, "head", tuple(found.values()))
     return Resolution(label, (), "", None, "none")

@@ -32,8 +32,28 @@ from .senses import Overrides, Resolution, resolve, shipped_overrides
 CODE_VERSION = "1"
 
 
+@dataclass(frozen=True)
+class Evidence:
+    """Why two labels have their similarity: the sense pair, its common ancestor and that ancestor's breadth.
+
+    `rejected`: "" (accepted), "broad" (the best sense pair's ancestor is too broad, `cook.py`),
+    "forbidden" (in the overrides), "fixed" (value from the overrides), "unknown" (a label
+    without sense), "same" (a label and itself).
+    """
+
+    similarity: float
+    ancestor: str = ""
+    sense_a: str = ""
+    sense_b: str = ""
+    breadth: float = 0.0
+    rejected: str = ""
+
+
 class LabelSimilarity:
-    """Label similarity with per-label senses and per-pair values cached in memory."""
+    """Label similarity with per-label senses and per-pair values cached in memory (mode `paper`)."""
+
+    mode = "paper"
+    tag = ""  # nothing beyond labels and overrides changes a value
 
     def __init__(self, reader=None, overrides: Overrides | None = None) -> None:
         from .wup import WupTable
@@ -77,6 +97,33 @@ class LabelSimilarity:
             return self._best(sa, sb, 0) * self(ra.modifier, rb.modifier)
         return self._best(sa, sb, 1)
 
+    def explain(self, a: str, b: str) -> Evidence:
+        """The similarity of `a` and `b` (as `__call__`) with the head senses and NLTK subsumer it comes from.
+
+        For two compounds the value multiplies the heads' and the modifiers' values; the
+        evidence names the heads' sense pair (the first in WordNet order with the best value).
+        """
+        a, b = sorted((normalize_label(a), normalize_label(b)))
+        value = self(a, b)
+        if a == b:
+            return Evidence(1.0, rejected="same")
+        if self.overrides.pair(a, b) is not None:
+            return Evidence(value, rejected="fixed")
+        ra, rb = self.resolution(a), self.resolution(b)
+        if not ra.senses or not rb.senses:
+            return Evidence(0.0, rejected="unknown")
+        extra = 1 if (ra.modifier is None) != (rb.modifier is None) else 0
+        best = None
+        for s in ra.senses:
+            for t in rb.senses:
+                x, y = (s, t) if s <= t else (t, s)
+                c = self._wup.components(x, y)
+                if c is not None:
+                    v = 2.0 * c[0] / (c[1] + c[2] + 2 * c[0] + extra)
+                    if best is None or v > best[0]:
+                        best = (v, self._wup.subsumer(x, y), s, t)
+        return Evidence(value, *best[1:]) if best else Evidence(value)
+
     def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int) -> float:
         """Greatest Wu-Palmer value over sense pairs; `extra` links added below one side."""
         best = 0.0
@@ -116,9 +163,11 @@ class SimilarityMatrix:
         return tuple(sorted(found, key=lambda x: (-x[1], x[0])))
 
 
-def matrix_key(labels: tuple[str, ...], overrides_text: str) -> str:
-    """Cache key: sorted vocabulary, WordNet version, code version, overrides."""
-    return digest("\n".join(labels), wordnet.version(), CODE_VERSION, overrides_text)
+def matrix_key(labels: tuple[str, ...], overrides_text: str, tag: str = "") -> str:
+    """Cache key: sorted vocabulary, WordNet version, code version, overrides, and the similarity's
+    own tag (what else its values depend on; none for this rule)."""
+    parts = ("\n".join(labels), wordnet.version(), CODE_VERSION, overrides_text)
+    return digest(*parts, tag) if tag else digest(*parts)
 
 
 def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "") -> SimilarityMatrix:
@@ -139,29 +188,43 @@ def matrix_is_cached(vocabulary: Iterable[str]) -> bool:
     return (cache_dir() / "similarity" / f"{matrix_key(labels, shipped_overrides().text)}.npz").is_file()
 
 
-def similarity_matrix(
-    vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None
-) -> SimilarityMatrix:
-    """The similarity matrix over `vocabulary` (labels normalized), from the disk cache when possible."""
+def cached_matrix(labels: tuple[str, ...], key: str) -> SimilarityMatrix | None:
+    """The matrix over `labels` (sorted, normalized) cached under `key`, or None (no WordNet opened)."""
     import numpy as np
 
-    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
-    overrides = sim.overrides if sim is not None else shipped_overrides()
-    key = matrix_key(labels, overrides.text)
     path = cache_dir() / "similarity" / f"{key}.npz"
-    if cache and path.is_file():
+    if path.is_file():
         try:
             with np.load(path, allow_pickle=False) as data:
                 if tuple(str(x) for x in data["labels"]) == labels:
                     return SimilarityMatrix(labels, data["values"], key)
         except (OSError, ValueError, KeyError):
             pass  # unreadable cache entry: recompute and replace it
+    return None
+
+
+def similarity_matrix(
+    vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None
+) -> SimilarityMatrix:
+    """The similarity matrix over `vocabulary` (labels normalized), from the disk cache when possible.
+
+    `sim` (default: this module's rule, mode `paper`) may be any similarity with
+    `overrides` and `tag` (`modes.make_similarity`).
+    """
+    import numpy as np
+
+    labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
+    overrides = sim.overrides if sim is not None else shipped_overrides()
+    key = matrix_key(labels, overrides.text, getattr(sim, "tag", ""))
+    found = cached_matrix(labels, key) if cache else None
+    if found is not None:
+        return found
     result = compute_matrix(labels, sim or LabelSimilarity(overrides=overrides), key)
     if cache:
         buf = io.BytesIO()
         np.savez(buf, labels=np.array(labels, dtype=str), values=result.values)
         try:
-            atomic_write(path, buf.getvalue())
+            atomic_write(cache_dir() / "similarity" / f"{key}.npz", buf.getvalue())
         except OSError:
             pass  # a read-only cache only costs time
     return result

@@ -13,6 +13,15 @@ definition exactly (nouns of WordNet >= 2.0, which need no simulated root):
 
 NLTK's tie-breaking makes wup(a, b) and wup(b, a) differ in rare cases; callers
 wanting a symmetric value pass the pair in a canonical order.
+
+`deepest` is the variant the cook's similarity uses (`cook.py`): the LCS is the
+common hypernym of greatest `max_depth` (ties: name), not of greatest `min_depth`.
+The two differ when a synset has two hypernym paths of different lengths: `lemon.n.01`
+(the food) reaches `citrus.n.01` through `edible_fruit.n.01`, which is both a
+`produce.n.01` (a food, min_depth 6) and a `fruit.n.01` (a plant part, max_depth 9).
+NLTK compares common hypernyms by their shortest path to the root, so a shallow
+subsumer reached by a short path can win over a deeper one; with the deepest common
+ancestor, two synsets one link below `citrus.n.01` always score as siblings there.
 """
 
 from __future__ import annotations
@@ -87,6 +96,31 @@ class WupTable:
             result = (self.info(lcs).max_depth + 1, self._distance(a, lcs), self._distance(b, lcs))
         self._pairs[key] = result
         return result
+
+    def subsumer(self, a: str, b: str) -> str | None:
+        """The LCS NLTK's wup(a, b) uses (see the module doc), or None."""
+        ia, ib = self.info(a), self.info(b)
+        first = next((x for x in ia.order if x in ib.dist), None)
+        if first is None:
+            return None
+        return a if (a in ib.dist and ia.min_depth == self.info(first).min_depth) else first
+
+    def deepest(self, a: str, b: str) -> tuple[str, int, int, int] | None:
+        """(LCS, depth, len_a, len_b) with the deepest common hypernym as LCS (greatest max_depth, then name).
+
+        depth = LCS max_depth + 1 and len_i = shortest hypernym distance to the LCS, as in
+        `components`; symmetric by construction. O(ancestors of a) set lookups.
+        """
+        ia, ib = self.info(a), self.info(b)
+        common = [x for x in ia.dist if x in ib.dist]
+        if not common:
+            return None
+        lcs = min(common, key=lambda x: (-self.info(x).max_depth, x))
+        return lcs, self.info(lcs).max_depth + 1, self._distance(a, lcs), self._distance(b, lcs)
+
+    def ancestors(self, name: str) -> frozenset[str]:
+        """Every hypernym of synset `name`, itself included."""
+        return frozenset(self.info(name).dist)
 
     def wup(self, a: str, b: str) -> float | None:
         """Wu-Palmer similarity of synsets `a` and `b` exactly as NLTK computes `a.wup_similarity(b)`."""

@@ -1,0 +1,195 @@
+"""The cook's similarity (mode `cook`, the default for substitutions): Wu-Palmer a cook would accept.
+
+The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
+Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
+0.9 through their plant senses. This rule keeps the paper's composition (overrides,
+head nouns and modifiers, see `similarity.py`) and changes three things:
+
+1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
+   keeps only its food senses; otherwise a label with an artifact sense is a tool or
+   container and keeps its artifact senses under `KITCHEN_ARTIFACTS` (all its
+   artifact senses when none is); otherwise substances, then the other kitchen senses.
+2. The deepest common ancestor (`WupTable.deepest`): greatest `max_depth`, not NLTK's
+   greatest `min_depth`, so lemon~lime as foods meet at `citrus.n.01` (0.917, NLTK 0.75).
+3. Broad ancestors rejected: a sense pair whose common ancestor covers more than
+   `breadth` of the breadth vocabulary (every label with a sense under it, counted
+   once) names a category, not a substitute (container~spoon, baking tray~pot), and
+   scores 0. Two labels with the same sense are never rejected. The breadth vocabulary
+   is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
+   labels of the 100 public FOON subgraphs and the example network) plus the labels of
+   the matrix being computed, so a value does not depend on how small a network is.
+
+The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
+with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
+pairs WordNet puts close that no cook swaps; a user file extends it (`extended`).
+Cost: per label one sense lookup; per sense pair one `deepest` call (set lookups).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+
+from ..model.foon import normalize_label
+from .cache import digest
+from .senses import Overrides, Resolution, kitchen_senses, parse_overrides, resolve
+from .similarity import Evidence
+
+#: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
+DEFAULT_BREADTH = 0.02
+
+#: Artifact synsets under which a tool or container sense is a kitchen one.
+KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
+    "container.n.01", "implement.n.01", "device.n.01", "tableware.n.01", "home_appliance.n.01",
+    "kitchen_appliance.n.01", "furniture.n.01", "covering.n.02", "crockery.n.01", "cutlery.n.02",
+    "wrapping.n.01", "sheet.n.06", "utensil.n.01", "vessel.n.03",
+})
+
+
+def _data(name: str) -> Path:
+    return Path(str(resources.files("foon2pddl") / "generalize" / "data" / name))
+
+
+def cook_overrides_path() -> Path:
+    return _data("cook_overrides.json")
+
+
+@lru_cache(maxsize=1)
+def cook_overrides() -> Overrides:
+    """The shipped overrides of the cook's similarity."""
+    p = cook_overrides_path()
+    return parse_overrides(p.read_text(encoding="utf-8"), str(p))
+
+
+@lru_cache(maxsize=1)
+def reference_vocabulary() -> tuple[str, ...]:
+    """The shipped breadth vocabulary, sorted."""
+    text = _data("reference_vocabulary.txt").read_text(encoding="utf-8")
+    return tuple(sorted({normalize_label(x) for x in text.splitlines()} - {""}))
+
+
+def role_senses(reader, term: str) -> dict[str, str]:
+    """Senses of `term` for the role it plays: food, else kitchen artifact, else substance, else any (module doc)."""
+    found = kitchen_senses(reader, term)
+    for kind in ("noun.food", "noun.artifact", "noun.substance"):
+        picked = {n: k for n, k in found.items() if k == kind}
+        if kind == "noun.artifact" and picked:
+            kitchen = {n: k for n, k in picked.items() if _under(reader, n, KITCHEN_ARTIFACTS)}
+            picked = kitchen or picked
+        if picked:
+            return picked
+    return found
+
+
+def _under(reader, name: str, roots: frozenset[str]) -> bool:
+    seen, stack = set(), [reader.synset(name)]
+    while stack:
+        s = stack.pop()
+        if s.name() in roots:
+            return True
+        for h in s.hypernyms() + s.instance_hypernyms():
+            if h.name() not in seen:
+                seen.add(h.name())
+                stack.append(h)
+    return False
+
+
+def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -> str:
+    """What a cook matrix depends on beyond its labels, computable without WordNet."""
+    vocab = sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""})
+    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text)
+
+
+class CookSimilarity:
+    """The cook's label similarity (module doc); same interface as `similarity.LabelSimilarity`."""
+
+    mode = "cook"
+
+    def __init__(self, reader=None, overrides: Overrides | None = None, *, vocabulary: Iterable[str] = (),
+                 breadth: float = DEFAULT_BREADTH) -> None:
+        from . import wordnet
+        from .wup import WupTable
+
+        self.reader = reader if reader is not None else wordnet.reader()
+        self.overrides = overrides if overrides is not None else cook_overrides()
+        self.breadth = breadth
+        self.vocabulary = tuple(sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""}))
+        self.tag = cache_tag(self.vocabulary, breadth, self.overrides)
+        self._wup = WupTable(self.reader)
+        self._resolved: dict[str, Resolution] = {}
+        self._evidence: dict[tuple[str, str], Evidence] = {}
+        self._cover: dict[str, int] | None = None
+
+    def resolution(self, label: str) -> Resolution:
+        label = normalize_label(label)
+        found = self._resolved.get(label)
+        if found is None:
+            found = self._resolved[label] = resolve(self.reader, label, self.overrides, role_senses)
+        return found
+
+    def coverage(self, ancestor: str) -> float:
+        """Share of the breadth vocabulary with a sense under synset `ancestor` (itself included)."""
+        if self._cover is None:
+            counts: dict[str, int] = {}
+            for label in self.vocabulary:
+                for x in set().union(*(self._wup.ancestors(s) for s in self.resolution(label).senses)):
+                    counts[x] = counts.get(x, 0) + 1
+            self._cover = counts
+        return self._cover.get(ancestor, 0) / len(self.vocabulary)
+
+    def __call__(self, a: str, b: str) -> float:
+        return self.explain(a, b).similarity
+
+    def explain(self, a: str, b: str) -> Evidence:
+        """The similarity of `a` and `b` with the sense pair and ancestor it comes from (symmetric)."""
+        a, b = sorted((normalize_label(a), normalize_label(b)))
+        if a == b:
+            return Evidence(1.0, rejected="same")
+        found = self._evidence.get((a, b))
+        if found is None:
+            found = self._evidence[(a, b)] = self._compute(a, b)
+        return found
+
+    def _compute(self, a: str, b: str) -> Evidence:
+        fixed = self.overrides.pair(a, b)
+        if fixed is not None:
+            return Evidence(fixed, rejected="fixed")
+        if self.overrides.forbids(a, b):
+            return Evidence(0.0, rejected="forbidden")
+        ra, rb = self.resolution(a), self.resolution(b)
+        if not ra.senses or not rb.senses:
+            return Evidence(0.0, rejected="unknown")
+        if ra.modifier is None and rb.modifier is None:
+            return self._best(ra.senses, rb.senses, 0)
+        if ra.modifier is not None and rb.modifier is not None:
+            heads = self._best(ra.senses, rb.senses, 0)
+            mod = self.explain(ra.modifier, rb.modifier)
+            if mod.rejected and mod.rejected != "fixed" and heads.similarity:
+                return Evidence(0.0, mod.ancestor, mod.sense_a, mod.sense_b, mod.breadth, mod.rejected)
+            return Evidence(heads.similarity * mod.similarity, heads.ancestor, heads.sense_a, heads.sense_b,
+                            heads.breadth, heads.rejected)
+        return self._best(ra.senses, rb.senses, 1)
+
+    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int) -> Evidence:
+        """Greatest accepted value over sense pairs (then first in WordNet order); the best rejected one
+        explains a 0. `extra` links are added below one side (a compound under its head)."""
+        best = Evidence(0.0)
+        broad = None
+        for s in senses_a:
+            for t in senses_b:
+                found = self._wup.deepest(*sorted((s, t)))
+                if found is None:
+                    continue
+                lcs, depth, la, lb = found
+                value = 2.0 * depth / (la + lb + 2 * depth + extra)
+                share = self.coverage(lcs)
+                if s != t and share > self.breadth:
+                    if broad is None or value > broad.similarity:
+                        broad = Evidence(value, lcs, s, t, share, "broad")
+                elif value > best.similarity:
+                    best = Evidence(value, lcs, s, t, share)
+        if best.similarity == 0.0 and broad is not None:
+            return Evidence(0.0, broad.ancestor, broad.sense_a, broad.sense_b, broad.breadth, "broad")
+        return best
