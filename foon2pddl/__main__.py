@@ -47,7 +47,12 @@ def leave(code: object) -> None:
         for stream in (sys.stdout, sys.stderr):
             if stream is not None and not stream.closed:
                 stream.flush()
-    except (OSError, ValueError):
+    except OSError as exc:
+        from .cli import output_failed  # standard output's device is full: an error, not a traceback
+
+        output_failed(exc)
+        os._exit(2)
+    except ValueError:
         raise SystemExit(code) from None
     os._exit((code or 0) & 0xFF)
 

@@ -11,6 +11,7 @@ half-written output files are removed.
 
 from __future__ import annotations
 
+import errno
 import importlib
 import sys
 
@@ -90,6 +91,32 @@ class _Group(click.Group):
         except BrokenPipeError:
             sys.stderr.close()
             ctx.exit(1)
+        except OSError as exc:
+            if exc.errno not in _FULL:
+                raise
+            output_failed(exc)
+            ctx.exit(2)
+
+
+#: errno values of a write that cannot complete: device full, quota, file too large, I/O error.
+_FULL = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO})
+
+
+def output_failed(exc: OSError) -> None:
+    """Say that standard output could not be written, and send what is still buffered for it nowhere
+    (so the exit's flush does not fail again and print a traceback)."""
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):
+        pass
+    try:
+        click.echo(f"Error: cannot write the output: {exc.strerror or exc}", err=True)
+    except OSError:
+        pass  # standard error is full too: the exit status says it
 
 
 def _escape_unencodable_output() -> None:

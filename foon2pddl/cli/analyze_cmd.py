@@ -27,7 +27,7 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     """One-mode projections of the network (object-object, motion-motion), degree and betweenness
     centrality, the most central objects and motions, connected components (docs/datasets.md)."""
     from ..analysis.network import analyze, graphml_graphs  # networkx: imported only when needed
-    from ..analysis.network_report import format_text, plot_png, to_json, write_graphml
+    from ..analysis.network_report import MAX_PLOT_BARS, format_text, plot_png, to_json, write_graphml
     from ..io.atomic import atomic_write
     from ..io.inputs import load_network
 
@@ -39,7 +39,8 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
                 click.echo(f"wrote {p}", err=True)
         if plot is not None:
             atomic_write(plot, plot_png(result, top))
-            click.echo(f"wrote {plot}", err=True)
+            shown = f" (the top {MAX_PLOT_BARS} of each ranking)" if top > MAX_PLOT_BARS else ""
+            click.echo(f"wrote {plot}{shown}", err=True)
     except OSError as exc:
         raise FoonInputError(str(graphml if plot is None else plot), 0, f"cannot write: {exc.strerror or exc}") from None
     emit(to_json(result, top) if as_json else format_text(result, top), output)

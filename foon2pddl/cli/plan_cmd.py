@@ -186,7 +186,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         emit(data, output)
-    if plan_file is not None and outcome.result.solved:
+    if plan_file is not None and status == "solved":  # only a plan that decoded and validated (atomically)
         emit(sas_plan_text(outcome.result.plan, plan_cost(outcome.task, outcome.result.plan)), plan_file)
     if EXIT[status]:
         click.get_current_context().exit(EXIT[status])

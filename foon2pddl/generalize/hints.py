@@ -39,13 +39,14 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
     for kind in ("exp", "gen"):
         if len(net.foon.units) > (EXP_MAX_UNITS if kind == "exp" else GEN_MAX_UNITS):
             continue
-        if kind == "exp" and notify is not None and not matrix_is_cached(vocabulary(net.foon, kitchen)):
-            notify("checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)")
-        try:
+        try:  # a hint is optional: nothing here (a missing WordNet or extra included) may become an error
+            if kind == "exp" and notify is not None and not matrix_is_cached(vocabulary(net.foon, kitchen)):
+                notify("checking whether FOON-EXP can make it: computing its WordNet similarity matrix "
+                       "(once, then cached)")
             view = network_view(net, kind, level, kitchen)
             goal = view.resolve(spec)
         except (FoonError, OSError):
-            continue  # the goal has no counterpart there, or the category index is unreadable
+            continue  # no WordNet, the goal has no counterpart there, or the category index is unreadable
         reach = reachable(view.foon, view.kitchen.nodes, goal.candidates)
         if any(reach.can_make(c) for c in goal.candidates):
             found.append(kind)

@@ -9,7 +9,9 @@ Text is encoded as UTF-8, lone surrogates (undecodable bytes of file names) as
 `\\udcff` escapes, so no output ever fails to encode.
 
 Several files written as a unit (`atomic_write_many`, compile's domain/problem
-pair) are renamed while holding an exclusive `flock` on their directory, so
+pair, a batch's `-o DIR`) are all staged before any is renamed (a target that is a
+directory fails the staging; directories made for the set are removed again when it
+fails, so a failed set leaves nothing), then renamed while holding an exclusive `flock` on their directory, so
 concurrent writers into one directory end with one writer's complete pair;
 readers that take a shared lock on the directory (`read_locked`) never see a
 mixed pair.
@@ -72,9 +74,39 @@ def _discard(tmp: str) -> None:
     _STAGED.discard(tmp)
 
 
-def _stage(path: Path, data: bytes, info: os.stat_result | None) -> str:
-    """A hidden temporary file beside `path` holding `data`, with the mode `path` should get."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+def _make_parents(directory: Path, created: list[Path] | None) -> None:
+    """`directory` and its missing ancestors; each one this call creates is appended to `created`."""
+    missing = []
+    for d in (directory, *directory.parents):
+        if d.exists() or d.is_symlink():
+            break
+        missing.append(d)
+    for d in reversed(missing):
+        try:
+            d.mkdir()
+        except FileExistsError:
+            continue  # another writer made it: not ours to remove
+        if created is not None:
+            created.append(d)
+    if not directory.is_dir():
+        raise NotADirectoryError(20, "Not a directory", str(directory))
+
+
+def _remove_dirs(created: list[Path]) -> None:
+    """Remove the directories a failed write created, deepest first, where still empty."""
+    for d in reversed(created):
+        try:
+            d.rmdir()
+        except OSError:
+            pass
+
+
+def _stage(path: Path, data: bytes, info: os.stat_result | None, created: list[Path] | None = None) -> str:
+    """A hidden temporary file beside `path` holding `data`, with the mode `path` should get
+    (the directories made for it are appended to `created`)."""
+    if info is not None and stat.S_ISDIR(info.st_mode):
+        raise IsADirectoryError(21, "Is a directory", str(path))
+    _make_parents(path.parent, created)
     with signals_deferred():  # an interrupt between mkstemp and the caller's cleanup would leak it
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
         _STAGED.add(tmp)
@@ -126,10 +158,11 @@ def atomic_write_many(files: dict[Path, str | bytes]) -> None:
     """Write several files as a unit: all staged first (none replaced if any fails), then renamed
     under an exclusive lock on each directory, so concurrent writers never leave a mixed set."""
     staged: list[tuple[str, Path]] = []
+    created: list[Path] = []  # directories made for the files: removed again when the set fails
     try:
         for path, data in files.items():
             target, info = _target(path)
-            staged.append((_stage(target, encode(data), info), target))
+            staged.append((_stage(target, encode(data), info, created), target))
         dirs = sorted({target.parent for _, target in staged})
         with _locked_all(dirs):
             for tmp, target in staged:
@@ -138,6 +171,7 @@ def atomic_write_many(files: dict[Path, str | bytes]) -> None:
     except BaseException:
         for tmp, _ in staged:
             _discard(tmp)
+        _remove_dirs(created)
         raise
 
 

@@ -7,7 +7,9 @@
 
 Every key is optional; unknown keys are errors (a typo must not silently allow a
 motion). `costs` are -ln(success rate), so a cost c is the rate exp(-c): a cost of 0
-means the motion always succeeds. Errors name the file and the line of the key.
+means the motion always succeeds. A cost over `MAX_COST` (about 744.4, where exp(-c)
+underflows to 0) is read as `MAX_COST`: the smallest positive rate, a motion used
+only when nothing else makes the goal. Errors name the file and the line of the key.
 """
 
 from __future__ import annotations
@@ -26,6 +28,9 @@ from .rates import Rates
 #: File key -> constraint kind of its list of labels.
 LIST_KEYS = {"without_motions": Kind.WITHOUT_MOTION, "without": Kind.WITHOUT, "must_use": Kind.MUST_USE}
 KEYS = (*LIST_KEYS, "name", "rates", "costs", "$schema", "description")
+#: The smallest positive float and the cost it stands for (-ln of it): larger costs are read as this.
+MIN_RATE = math.ulp(0.0)
+MAX_COST = -math.log(MIN_RATE)
 
 
 def _line_of(text: str, key: str) -> int:
@@ -67,7 +72,7 @@ def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
             if key == "costs":
                 if not 0.0 <= number < math.inf:
                     raise FoonSyntaxError(path, line, f"cost of {motion!r} must be >= 0, not {number!r}")
-                number = math.exp(-number)
+                number = max(math.exp(-number), MIN_RATE)
             rates.append((motion, float(number)))
     try:
         return make_constraints(items, rates, (path,))

@@ -8,6 +8,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import State, make_state, normalize_label
 from ..model.goal import GoalSpec, spec_of_node
+from .json_text import text_problem
 from .parser import parse_objects, read_text
 
 _EXPECTED = "(expected 'state', 'state [object]' or 'state {a, b}')"
@@ -77,6 +78,9 @@ def parse_goal_spec(text: str) -> GoalSpec:
     >>> parse_goal_spec("onion").states is None
     True
     """
+    problem = text_problem(text, "the goal")  # goals are label text: no control character reaches a table
+    if problem:
+        raise ValueError(problem)
     label, sep, rest = text.partition(":")
     label = normalize_label(label)
     if not label:

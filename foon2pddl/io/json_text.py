@@ -2,7 +2,10 @@
 
 `load_json` turns what `json.loads` can raise on hostile input into errors naming
 the line: invalid JSON, nesting too deep for the decoder (RecursionError), and
-integers longer than Python's int-string limit (ValueError). `line_of` finds the
+integers longer than Python's int-string limit (ValueError). A key given twice in
+one object is an error too (`json.loads` keeps the last value silently: a second
+`"without_motions": []` would drop a ban); its line is found by `_duplicate_line`,
+a linear re-scan run only on that error. `line_of` finds the
 line of an item by its path of keys and indexes (a re-parse, only on error;
 `decode_tracked` gives every object's and list's offset).
 `text_problem` says why a string cannot be a label: a control character or a lone
@@ -20,12 +23,33 @@ from ..errors import FoonSyntaxError
 from .parser import CONTROL_CHARS, MAX_INT_DIGITS
 
 _SURROGATE = re.compile(r"[\ud800-\udfff]")
+_KEY_OR_BRACKET = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\]]')
+_COLON = re.compile(r"\s*:")
 #: JSON strings and numbers, left to right (linear: no nested quantifiers).
 _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?')
 
 
 class _LongInt(ValueError):
     """An integer token longer than MAX_INT_DIGITS."""
+
+
+class _DuplicateKey(ValueError):
+    """A key given twice in one JSON object."""
+
+    def __init__(self, key: str) -> None:
+        super().__init__(key)
+        self.key = key
+
+
+def _unique_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    out = dict(pairs)
+    if len(out) != len(pairs):
+        seen: set[str] = set()
+        for key, _ in pairs:
+            if key in seen:
+                raise _DuplicateKey(key)
+            seen.add(key)
+    return out
 
 
 def _bounded_int(token: str) -> int:
@@ -43,10 +67,39 @@ def _long_int_line(text: str) -> int:
     return 1
 
 
+def _duplicate_line(text: str) -> int:
+    """Line of the first key that repeats a key of its own object (1 when none is found).
+
+    One pass over the string tokens and brackets (linear): a stack holds the keys of each open
+    object; a string followed by `:` is a key of the innermost object.
+    """
+    stack: list[set[str] | None] = []  # per open bracket: the object's keys so far, None for a list
+    for m in _KEY_OR_BRACKET.finditer(text):
+        token = m.group()
+        if token in "{[":
+            stack.append(set() if token == "{" else None)
+        elif token in "}]":
+            if stack:
+                stack.pop()
+        elif stack and stack[-1] is not None and _COLON.match(text, m.end()):
+            try:
+                key = json.loads(token)
+            except ValueError:
+                continue
+            if key in stack[-1]:
+                return text.count("\n", 0, m.start()) + 1
+            stack[-1].add(key)
+    return 1
+
+
 def load_json(text: str, path: str) -> Any:
-    """`json.loads(text)`; every failure is a FoonSyntaxError naming `path` and the line."""
+    """`json.loads(text)`; every failure is a FoonSyntaxError naming `path` and the line;
+    a key repeated in one object is one (`_DuplicateKey`)."""
     try:
-        return json.loads(text, parse_int=_bounded_int)
+        return json.loads(text, parse_int=_bounded_int, object_pairs_hook=_unique_pairs)
+    except _DuplicateKey as exc:
+        raise FoonSyntaxError(path, _duplicate_line(text), f"duplicate key {exc.key!r} in one JSON object "
+                                                           "(which value was meant?)") from None
     except json.JSONDecodeError as exc:
         raise FoonSyntaxError(path, exc.lineno, f"invalid JSON: {exc.msg} (column {exc.colno})") from None
     except RecursionError:
