@@ -59,9 +59,9 @@ class Limit(click.ParamType):
 @goal_input_options
 @level_option
 @network_option
-@click.option("--method", type=click.Choice(METHODS), default="complete", show_default=True,
-              help="greedy: the seed paper's search; complete: a tree whenever one exists; "
-                   "optimal: fewest units; weighted: highest success probability (needs --rates).")
+@click.option("--method", type=click.Choice(tuple(METHODS)), default="complete", show_default=True,
+              help="; ".join(f"{m.name}: {m.description}" + (" (needs --rates)" if m.needs_rates else "")
+                             for m in METHODS.values()) + ".")
 @rates_option
 @click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
               help="How to print the task tree (svg needs Graphviz); for a batch, the table (text, csv, jsonl) "
@@ -95,8 +95,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     """
     check_output(output, directory=bool(goals_file) or len(goal) > 1 or fmt in TABLE_FORMATS)
     cons, motion_rates, _ = constraint_inputs(constraints_files, without_motions, without, must_use, rates)
-    if method == "weighted" and motion_rates is None:
-        raise UsageError("--method weighted needs --rates FILE (motion<TAB>rate) or rates in a --constraints file")
+    if METHODS[method].needs_rates and motion_rates is None:
+        raise UsageError(f"--method {method} needs --rates FILE (motion<TAB>rate) or rates in a --constraints file")
     entries = batch_entries(goal, goals_file, goal_file, fmt)
     if entries is not None and cons.items:
         raise UsageError("constraints apply to one goal at a time (not with a batch of goals)")

@@ -140,19 +140,11 @@ class _Native(Prepared):
         self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
-        from ..retrieval.complete import complete
-        from ..retrieval.greedy import greedy
-        from ..retrieval.optimal import optimal
+        from ..retrieval.api import retrieve
 
-        goal = self.view.goal_of(node)
-        foon, nodes = self.view.foon, self.kitchen_nodes
+        nodes = self.kitchen_nodes
         t0 = time.perf_counter()
-        if self.method == "greedy":
-            result = greedy(foon, nodes, goal, reach=self.reach)
-        elif self.method == "complete":
-            result = complete(foon, nodes, goal, self.reach)
-        else:
-            result = optimal(foon, nodes, goal, reach=self.reach)
+        result = retrieve(self.view.foon, nodes, self.view.goal_of(node), self.method, reach=self.reach)
         return _native_outcome(result, nodes, time.perf_counter() - t0)
 
 

@@ -2,7 +2,7 @@
 
 - `reachability.reachable`: which nodes a kitchen can make (AND/OR fixpoint, linear time);
 - `complete`, `greedy`, `optimal` (fewest units, or `weighted`: highest success probability);
-- `retrieve`: one entry point returning a `Retrieval` (tree or reason);
+- `retrieve`: one entry point returning a `Retrieval` (tree or reason), by a method of `methods.METHODS`;
 - `formats.render_tree`: steps, FOON text, JSON, DOT, SVG; `rates.read_rates`: motion success rates.
 See docs/retrieval.md for the algorithms, their complexity and tie-break orders.
 """
@@ -11,7 +11,8 @@ from ..analysis.reachability import Reachability, blockers, reachable
 from ..io.rates import DEFAULT_RATE, Rates, read_rates
 from ..io.tree_formats import FORMATS, render_tree
 from .api import retrieve
-from .result import METHODS, Retrieval
+from .methods import METHODS
+from .result import Retrieval
 
 __all__ = ["DEFAULT_RATE", "FORMATS", "METHODS", "Rates", "Reachability", "Retrieval", "blockers",
            "reachable", "read_rates", "render_tree", "retrieve"]

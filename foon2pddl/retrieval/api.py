@@ -1,4 +1,4 @@
-"""`retrieve`: one entry point for the four retrieval methods."""
+"""`retrieve`: one entry point for every retrieval method (`retrieval.methods.METHODS`)."""
 
 from __future__ import annotations
 
@@ -13,10 +13,10 @@ from ..io.rates import Rates
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
-from .complete import complete
-from .greedy import DEFAULT_BUDGET, greedy
-from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT, optimal
-from .result import METHODS, Retrieval
+from .greedy import DEFAULT_BUDGET
+from .methods import Limits, get_method
+from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
+from .result import Retrieval
 
 
 def kitchen_nodes(kitchen: Kitchen | Iterable[ObjectNode], level: int) -> frozenset[ObjectNode]:
@@ -37,9 +37,10 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
              reach: Reachability | None = None) -> Retrieval:
     """A task tree for `goal` (any of its candidates) from `kitchen` in `foon`, by `method`.
 
-    greedy: the seed paper's search (iteration `budget`); complete: a tree whenever one
-    exists; optimal: fewest distinct units; weighted: highest product of motion success
-    `rates` (defaults for every motion when None). optimal/weighted are anytime: they
+    `method` names an entry of `retrieval.methods.METHODS`: greedy: the seed paper's search
+    (iteration `budget`); complete: a tree whenever one exists; optimal: fewest distinct
+    units; weighted: highest product of motion success `rates` (defaults for every motion
+    when None). optimal/weighted are anytime: they
     expand at most `node_limit` search nodes and run at most `time_limit` seconds (None:
     no cap; both None: exact), and return the best tree found with its `cost` and a
     proven lower `bound`. With `rates`, every found tree's success probability is set.
@@ -55,23 +56,16 @@ def retrieve(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, me
     >>> retrieve(foon, [whole], goal).reason    # no knife
     <RetrievalStatus.UNREACHABLE: 'unreachable'>
     """
-    if method not in METHODS:
-        raise UsageError(f"unknown retrieval method {method!r} (expected one of {', '.join(METHODS)})")
+    entry = get_method(method)
     known = index_of(foon).node_id
     stray = [c for c in goal.candidates if c not in known]
     if stray:
         raise UsageError(f"goal candidate {stray[0].describe()!r} is not a node of the network "
                          f"(goal resolved at level {goal.level}, network at level {foon.level}?)")
     nodes = kitchen_nodes(kitchen, foon.level)
-    if method == "weighted" and rates is None:
+    if entry.needs_rates and rates is None:
         rates = Rates()
-    if method == "greedy":
-        result = greedy(foon, nodes, goal, budget, reach)
-    elif method == "complete":
-        result = complete(foon, nodes, goal, reach)
-    else:
-        result = optimal(foon, nodes, goal, rates=rates, weighted=method == "weighted",
-                         node_limit=node_limit, time_limit=time_limit, budget=budget, reach=reach)
+    result = entry.run(foon, nodes, goal, Limits(budget, node_limit, time_limit, rates, reach))
     if result.tree is not None and rates is not None:
         result = replace(result, probability=success_probability(result.tree.units, rates))
     return result

@@ -31,6 +31,7 @@ from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree, justify
 from .api import kitchen_nodes, retrieve
+from .methods import get_method
 from .result import UNREACHABLE, Retrieval
 
 #: Labels of the auxiliary nodes and motion: the unit separator cannot occur in a real label.
@@ -94,7 +95,7 @@ def retrieve_constrained(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], go
     if filtered.candidates:
         if must or not all(c in filtered.foon.producers for c in filtered.candidates):
             aux_foon, aux_goal, real = with_must_use(filtered, must)
-            if rates is not None or method == "weighted":
+            if rates is not None or get_method(method).needs_rates:
                 base = rates or Rates()
                 rates = Rates({**base.table, GOAL: 1.0}, base.default, base.source)
             result = retrieve(aux_foon, filtered.kitchen, aux_goal, method, rates=rates, **limits)
@@ -119,7 +120,7 @@ def _without_goal_unit(result: Retrieval, tree: TaskTree) -> dict:
     """Cost and bound of the real tree: the auxiliary goal unit costs 1 unit (optimal), 0 (weighted: rate 1)."""
     if result.bound is None:
         return {}
-    extra = float(len(result.tree) - len(tree)) if result.method == "optimal" else 0.0
+    extra = float(len(result.tree) - len(tree)) if not get_method(result.method).needs_rates else 0.0
     return {"cost": result.cost - extra, "bound": max(0.0, result.bound - extra)}
 
 

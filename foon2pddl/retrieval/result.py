@@ -7,14 +7,9 @@ from dataclasses import dataclass
 from ..model.tasktree import TaskTree
 from ..status import RetrievalStatus
 
-METHODS = ("greedy", "complete", "optimal", "weighted")
-
 #: Reasons for returning no tree.
 UNREACHABLE = RetrievalStatus.UNREACHABLE
 BUDGET_EXHAUSTED = RetrievalStatus.BUDGET_EXHAUSTED
-
-#: Methods that minimize a cost and report a proven lower bound on it.
-BOUNDED = ("optimal", "weighted")
 
 
 @dataclass(frozen=True)
