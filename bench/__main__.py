@@ -10,7 +10,7 @@ from .harness import Context
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "batch", "constraints", "generalize", "experiment",
-         "reliability"]
+         "reliability", "physical_replay"]
 
 
 def main() -> None:

@@ -95,6 +95,8 @@ class Disagreement:
         where = "initial state" if self.step < 0 else f"step {self.step + 1}"
         return f"{self.source + ': ' if self.source else ''}{where}: {self.message} [{self.kind}]"
 
+    __str__ = describe
+
 
 @dataclass(frozen=True)
 class ReplayReport:

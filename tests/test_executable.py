@@ -1,0 +1,91 @@
+"""Native task trees scheduled over a kitchen's objects: answers known by hand on small networks."""
+
+from __future__ import annotations
+
+from physical_world import node as n
+
+from foon2pddl.model.foon import FunctionalUnit, Motion, Source
+from foon2pddl.model.tasktree import TaskTree
+from foon2pddl.planners.executable import Verdict, needed, schedule
+from foon2pddl.planners.physical_replay import replay
+
+
+def unit(motion, ins, outs, line=1):
+    return FunctionalUnit(tuple(ins), Motion(motion), tuple(outs), (Source("r.txt", line),))
+
+
+BREAD, SLICE, BUTTERED = n("bread", "whole"), n("bread", "sliced"), n("bread", "buttered")
+CLEAN, DIRTY, BUTTER, FAUCET = n("knife", "clean"), n("knife", "dirty"), n("butter", "soft"), n("faucet")
+CUT = unit("cut", [BREAD, CLEAN], [SLICE, DIRTY], 5)
+SPREAD = unit("spread", [SLICE, BUTTER, CLEAN], [BUTTERED, DIRTY], 9)
+WASH = unit("wash", [DIRTY, FAUCET], [CLEAN, FAUCET], 13)
+KNIFE_KITCHEN = frozenset({BREAD, CLEAN, BUTTER, FAUCET})
+
+
+def test_one_knife_runs_short_at_the_spread_unless_washed_or_doubled():
+    tree = TaskTree((CUT, SPREAD), BUTTERED)
+    got = schedule(tree, KNIFE_KITCHEN)
+    assert (got.verdict, got.step, got.label, got.node) == (Verdict.SHORT, 1, "knife", CLEAN)
+    assert "step 2 (spread)" in got.message and "one more knife in 'knife (clean)'" in got.message
+    assert schedule(tree, KNIFE_KITCHEN, {"knife": 2}).ok
+    assert schedule(tree, KNIFE_KITCHEN, per_item=2).ok
+    washed = schedule(TaskTree((CUT, WASH, SPREAD), BUTTERED), KNIFE_KITCHEN)
+    assert washed.ok and dict(washed.drawn)[CLEAN] == 1
+    assert [b.object for b in washed.trace.steps[2].bindings] == ["bread_1", "butter_1", "knife_1"]
+    assert dict(needed(tree, KNIFE_KITCHEN).drawn) == {BREAD: 1, CLEAN: 2, BUTTER: 1}
+
+
+# A salad and its dressing in two bowls at once, then combined into the first.
+EMPTY = n("bowl", "empty")
+LETTUCE, DRESSING = n("lettuce", "chopped"), n("oil")
+L_IN, D_IN = n("lettuce", "chopped", ("in", "bowl")), n("oil", ("in", "bowl"))
+B_L, B_D, B_LD = n("bowl", ("contains", ["lettuce"])), n("bowl", ("contains", ["oil"])), n("bowl", ("contains", ["lettuce", "oil"]))
+SALAD = n("salad", ("in", "bowl"))
+PUT_L = unit("put", [LETTUCE, EMPTY], [L_IN, B_L])
+PUT_D = unit("pour", [DRESSING, EMPTY], [D_IN, B_D])
+COMBINE = unit("pour", [D_IN, B_D, B_L], [n("oil", ("in", "bowl")), EMPTY, B_LD])
+MIX = unit("mix", [L_IN, D_IN, B_LD], [SALAD, n("bowl", ("contains", ["salad"]))])
+SALAD_KITCHEN = frozenset({EMPTY, LETTUCE, DRESSING})
+
+
+def test_two_bowls_at_once():
+    tree = TaskTree((PUT_L, PUT_D, COMBINE, MIX), SALAD)
+    got = schedule(tree, SALAD_KITCHEN)
+    assert (got.verdict, got.step, got.label) == (Verdict.SHORT, 1, "bowl")
+    ok = schedule(tree, SALAD_KITCHEN, {"bowl": 2})
+    assert ok.ok and dict(needed(tree, SALAD_KITCHEN).drawn)[EMPTY] == 2
+    final = ok.trace.final
+    assert final["lettuce_1"].consumed and final["oil_1"].consumed and final["salad_1"].exists
+    assert len(ok.trace.steps) == 4 and replay(ok.trace).disagreements  # no holders: the replay sees that
+
+
+def test_the_emptied_bowl_is_free_again():
+    """After the pour one bowl is `bowl (empty)` again (by FOON's pairing, the first: the input listed first
+    among equally similar ones becomes the fuller output): a later unit needing an empty bowl reuses it."""
+    again = unit("put", [n("tomato"), EMPTY], [n("tomato", ("in", "bowl")), n("bowl", ("contains", ["tomato"]))])
+    tree = TaskTree((PUT_L, PUT_D, COMBINE, again), SALAD)
+    got = schedule(tree, SALAD_KITCHEN | {n("tomato")}, {"bowl": 2})
+    assert got.ok and dict(got.drawn)[EMPTY] == 2
+    assert got.trace.final["bowl_2"].node == B_LD
+    assert got.trace.steps[3].bindings[1].object == "bowl_1"
+
+
+def test_an_intermediate_needed_twice_is_used_up():
+    whole, chopped, fried = n("onion", "whole"), n("onion", "chopped"), n("onion", "fried")
+    chop = unit("chop", [whole], [chopped])
+    fry = unit("fry", [chopped], [fried])
+    stew = unit("stew", [chopped], [n("stew")])
+    got = schedule(TaskTree((chop, fry, stew), n("stew")), {whole})
+    assert (got.verdict, got.step, got.label, got.node) == (Verdict.USED_UP, 2, "onion", chopped)
+    assert "must fire again" in got.message
+    missing = schedule(TaskTree((fry,), fried), {whole})
+    assert (missing.verdict, missing.step) == (Verdict.MISSING, 0)
+
+
+def test_kitchen_counts_apply_per_node():
+    """`counts` is per kitchen node of the label (as `--instances bowl=3`): two bowl nodes, one object each."""
+    clean_bowl = n("bowl", "clean")
+    u1 = unit("use", [EMPTY], [n("bowl", "dirty")])
+    u2 = unit("use", [clean_bowl], [n("bowl", "dirty")])
+    got = schedule(TaskTree((u1, u2), n("bowl", "dirty")), {EMPTY, clean_bowl})
+    assert got.ok and [o.id for o in got.trace.objects] == ["bowl_1", "bowl_2"]
