@@ -7,9 +7,12 @@ from pathlib import Path
 
 from ..errors import FoonError, FoonInputError
 from ..io.batch_report import file_names
+from ..model.constraints import Constraints
 from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
+from ..pddl.compile import ENCODINGS
 from .batch import TREE_EXTENSIONS, finish, write_files
+from .reasons import why_unsolvable
 
 
 def _resolve(view, entry):
@@ -72,10 +75,13 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
             continue
         outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
         tree = outcome.tree if outcome.status == "solved" else None
+        reason = "" if tree is not None else outcome.message or outcome.result.message
+        if outcome.status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
+            reason += ": " + why_unsolvable(view.foon, view.kitchen, goal, Constraints(), encoding,
+                                            plan_options.get("instances", ()))[0]
         units = None if tree is None else len(tree.units) - count_inference(tree.units)
         inferred = () if tree is None else (n.describe() for n in inferred_nodes(tree.units))
-        rows.append(_row(entry, goal, outcome.status, time.perf_counter() - t0,
-                         "" if tree is not None else outcome.message or outcome.result.message, units, inferred))
+        rows.append(_row(entry, goal, outcome.status, time.perf_counter() - t0, reason, units, inferred))
         trees.append(tree)
     if output is not None:
         texts = [None if t is None else render_tree(t, tree_fmt, kitchen=view.kitchen) for t in trees]

@@ -256,19 +256,6 @@ def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | N
     click.echo(header, err=True)
 
 
-def other_networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
-    """After REG found a goal unreachable: say (stderr) whether `--network exp`/`gen` would make it."""
-    from ..generalize.hints import networks_that_reach
-    from ..io.inputs import goal_spec
-
-    kinds = networks_that_reach(net, kitchen, goal_spec(goal, goal_file), level,
-                                notify=lambda message: click.echo(message, err=True))
-    if kinds:
-        what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
-        click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
-                   + "; ".join(what[k] for k in kinds), err=True)
-
-
 def _apply(command, options):
     for option in reversed(options):
         command = option(command)

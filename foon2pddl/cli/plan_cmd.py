@@ -32,7 +32,6 @@ from .options import (
     emit,
     load_pddl_view,
     load_view,
-    other_networks_hint,
     parse_instances,
     pddl_task_options,
     prune_option,
@@ -41,6 +40,7 @@ from .options import (
     single_goal,
     view_goal,
 )
+from .reasons import networks_hint, why_unsolvable
 
 #: Exit status per outcome status.
 EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.TIMEOUT: 1, PlanStatus.ERROR: 2}
@@ -143,7 +143,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
                           fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
-                          rates=motion_rates, up_validate=up_validate, search=config)
+                          rates=motion_rates, up_validate=up_validate, search=config,
+                          instances=parse_instances(instances))
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
     load_s = time.perf_counter() - t0
@@ -155,7 +156,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                        categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
-        click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
+        click.echo("reason: " + why_unsolvable(foon, kit, target, cons)[0], err=True)
         click.get_current_context().exit(1)
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
@@ -180,9 +181,10 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
-            click.echo("reason: " + _why_unreachable(foon, kit, target, cons), err=True)
-            if network == "reg" and not cons.items:
-                other_networks_hint(net, kit, single_goal(goal), goal_file, level)
+            reason, makes = why_unsolvable(foon, kit, target, cons, encoding, parse_instances(instances))
+            click.echo("reason: " + reason, err=True)
+            if network == "reg" and not cons.items and not makes:
+                networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         emit(data, output)
@@ -205,22 +207,3 @@ def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
         return search_config(alias, search, evaluators, optimal)
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="--alias" if alias else "--search") from None
-
-
-def _why_unreachable(foon, kitchen, goal, cons) -> str:
-    """FOON's own account of an unreachable goal: which missing nodes (or, under constraints, which
-    constraints) block it (tree and foon-compat semantics)."""
-    from ..analysis.reachability import reachable
-    from ..retrieval.explain import explain_unreachable
-
-    if cons.items:
-        from ..retrieval.constrained import retrieve_constrained
-
-        found = retrieve_constrained(foon, kitchen, goal, cons).result
-        if found.tree is None:
-            return found.detail
-        return "native retrieval finds a tree under the constraints; the planner gave up (see its message)"
-    reach = reachable(foon, kitchen.nodes)
-    if any(reach.can_make(c) for c in goal.candidates):
-        return "the FOON fixpoint reaches the goal; the planner gave up (see its message)"
-    return explain_unreachable(foon, kitchen.nodes, goal)

@@ -26,11 +26,11 @@ from .options import (
     level_option,
     load_view,
     network_option,
-    other_networks_hint,
     rates_option,
     single_goal,
     view_goal,
 )
+from .reasons import gen_reading_note, networks_hint
 
 
 class Limit(click.ParamType):
@@ -129,12 +129,18 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
         if plain and done is not None:
-            detail = "even without the constraints: " + detail
+            if network != "reg" and _made_with_banned(net, view, kitchen, level, target):
+                detail = ("the constraints rule out every tree: without them the kitchen makes it (an object "
+                          "ban also takes the object out of the kitchen, and no allowed object stands in for it)")
+            else:
+                detail = "even without the constraints: " + detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
         if plain and network == "reg" and done is None:
-            other_networks_hint(net, kit, single_goal(goal), goal_file, level)
+            networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
+    if network == "gen" and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
+        click.echo(reading, err=True)
     inferred = inferred_nodes(result.tree.units)
     note = f"{method}: {len(result.tree) - count_inference(result.tree.units)} units"
     if inferred:
@@ -162,6 +168,16 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
         texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
         write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
     finish(rows, table_fmt, f"{method}, containment {containment}")
+
+
+def _made_with_banned(net, view, kitchen_path, level: int, target) -> bool:
+    """Whether the view's network makes `target` from the kitchen as given, banned objects included."""
+    from ..analysis.reachability import reachable
+    from ..io.inputs import load_kitchen
+
+    full = view.map_kitchen(load_kitchen(kitchen_path, net, level))
+    reach = reachable(view.foon, full.nodes, target.candidates)
+    return any(reach.can_make(c) for c in target.candidates)
 
 
 def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits):

@@ -8,12 +8,14 @@ universal FOON takes ~3 s even cached). The answer never depends on what the dis
 cache holds: when EXP's similarity matrix is not cached yet it is computed (WordNet
 opens: a few seconds, once) and `notify` is told first, so the wait is not silent.
 The check is reachability (the linear fixpoint) on each network, with the kitchen
-and goal mapped as `--network` maps them.
+and goal mapped as `--network` maps them; a caller's `confirm` check (the CLI runs
+the lifted planner for GEN) must pass too, since the category-level fixpoint also
+"makes" a dish from another dish's categories.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 from ..analysis.reachability import reachable
 from ..errors import FoonError
@@ -30,11 +32,14 @@ GEN_MAX_UNITS = 2500
 
 
 def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: int,
-                        notify: Callable[[str], None] | None = None) -> list[str]:
+                        notify: Callable[[str], None] | None = None,
+                        confirm: Mapping[str, Callable[[], bool]] | None = None) -> list[str]:
     """Which of `exp`, `gen` make the goal `spec` from `kitchen` (only the networks cheap to build).
 
-    `notify(message)` is called before a slow step (building EXP's similarity matrix).
+    `notify(message)` is called before a slow step (building EXP's similarity matrix);
+    `confirm[kind]()`, when given, must also hold (called only once the fixpoint reaches the goal).
     """
+    confirm = confirm or {}
     found = []
     for kind in ("exp", "gen"):
         if len(net.foon.units) > (EXP_MAX_UNITS if kind == "exp" else GEN_MAX_UNITS):
@@ -48,7 +53,7 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
         except (FoonError, OSError):
             continue  # no WordNet, the goal has no counterpart there, or the category index is unreadable
         reach = reachable(view.foon, view.kitchen.nodes, goal.candidates)
-        if any(reach.can_make(c) for c in goal.candidates):
+        if any(reach.can_make(c) for c in goal.candidates) and (kind not in confirm or confirm[kind]()):
             found.append(kind)
     return found
 

@@ -174,3 +174,44 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     at_node = tuple((n, k) for n in sorted(nodes) if (k := count(at_kitchen[n], n.label, n)) > 0)
     unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())))
+
+
+@dataclass(frozen=True)
+class Shortfall:
+    """A stated count below what the unfolded plan uses: `place` (a kitchen node, or a label not yet made)."""
+
+    place: ObjectNode | str
+    given: int
+    used: int
+    by_override: bool
+
+    def describe(self) -> str:
+        what = self.place.describe() if isinstance(self.place, ObjectNode) else f"{self.place} (not yet made)"
+        source = "the count stated for the label" if self.by_override else "the kitchen's count"
+        return (f"{self.given} x `{what}` ({source}) where the derived count is {self.used} (the plan FOON's "
+                f"semantics finds passes {self.used} through that state; fewer do when the plan can reuse one)")
+
+
+def count_shortfalls(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], *,
+                     stated: Mapping[ObjectNode, int] | None = None,
+                     overrides: Mapping[str, int] | None = None) -> tuple[Shortfall, ...]:
+    """The stated counts (kitchen, then `--instances` overrides) below the derived ones (module doc).
+
+    The derived counts make the unfolded plan executable, so when the instance task is
+    unsolvable but FOON's semantics makes the goal, these are the counts to raise (or to
+    leave to derivation). Sorted by place; () when nothing is short or no plan exists.
+    """
+    stated = stated or {}
+    overrides = overrides or {}
+    found = delete_free_plan(foon, kitchen, candidates)
+    if found is None:
+        return ()
+    at_kitchen, created, _ = unfold(foon, found[0], kitchen, found[1])
+    out: list[Shortfall] = []
+    for node in sorted(at_kitchen):
+        given = overrides.get(node.label, stated.get(node))
+        if given is not None and given < at_kitchen[node]:
+            out.append(Shortfall(node, given, at_kitchen[node], node.label in overrides))
+    out.extend(Shortfall(label, overrides[label], created[label], True)
+               for label in sorted(created) if label in overrides and overrides[label] < created[label])
+    return tuple(out)

@@ -26,14 +26,32 @@ def additions_text(sets, shown: int = 3) -> str:
     return text + (f" (or {len(sets) - shown} more ways of that size)" if len(sets) > shown else "")
 
 
-def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal, max_size: int = 3) -> str:
+#: Largest kitchen-addition sets the explanation searches, tried in growing sizes.
+MAX_ADDITIONS = 6
+
+
+def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
+                        max_size: int = MAX_ADDITIONS) -> str:
     """Why no candidate of `goal` can be made from the kitchen: the smallest sets of nodes a kitchen
-    could hold (the network's default kitchen) that make it, else the missing leaves."""
+    could hold (the network's default kitchen) that make it.
+
+    Sizes 3, then 4 up to `max_size` are tried (a larger bound only costs when the smaller
+    finds nothing). When none is found the words say which limit was reached, and list
+    the unmakeable leaves only when no limit cut the search (then they are what the
+    kitchen lacks; otherwise they can be leaves of other recipes, a wrong list).
+    """
     reach = reachable(foon, kitchen_nodes, goal.candidates)
     if any(reach.can_make(c) for c in goal.candidates):
         return f"{goal.describe()!r} can be made from the kitchen"
-    fixes = smallest_additions(reach, goal.candidates, default_kitchen(foon).nodes, max_size=max_size)
-    if fixes.smallest:
-        return (f"none of the {len(goal.candidates)} node(s) matching {goal.describe()!r} can be made from the "
-                "kitchen; smallest kitchen additions that make it: " + additions_text(fixes.smallest))
-    return unreachable_detail(reach, goal) + f" (no set of up to {max_size} kitchen additions makes it)"
+    addable = default_kitchen(foon).nodes
+    head = f"none of the {len(goal.candidates)} node(s) matching {goal.describe()!r} can be made from the kitchen"
+    exact = True
+    for size in sorted({min(3, max_size), *range(4, max_size + 1)}):
+        fixes = smallest_additions(reach, goal.candidates, addable, max_size=size)
+        exact = exact and fixes.exact
+        if fixes.smallest:
+            return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
+    if exact:
+        return unreachable_detail(reach, goal) + f" (no set of up to {max_size} kitchen additions makes it)"
+    return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
+            "16 smallest sets per node, so it may have missed one; the goal may need more additions)")

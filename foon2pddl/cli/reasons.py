@@ -1,0 +1,113 @@
+"""Why a plan failed, and which other network would make the goal: words that are true for what they name.
+
+A reason never contradicts the planner's status: when FOON's own semantics makes the
+goal, the cause is the encoding's extra conditions (for `instances`, counts stated
+below what the plan uses), never "the planner gave up". A hint names a network only
+when the command it suggests succeeds there: EXP by FOON's fixpoint on FOON-EXP, GEN
+by the lifted planner (what `plan --network gen` runs), not by the category-level
+fixpoint, which also "makes" a dish from other categories' ingredients.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+#: Seconds the lifted planner may take to confirm a `--network gen` hint.
+GEN_HINT_TIME_LIMIT = 30.0
+#: Networks (units) from which the hint checks announce themselves on stderr (they can take seconds).
+ANNOUNCE_UNITS = 600
+
+
+def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
+                   instances: tuple[tuple[str, int], ...] = ()) -> tuple[str, bool]:
+    """(FOON's account of a failed plan, whether FOON's semantics makes the goal from `kitchen`).
+
+    Under constraints: the native constrained retrieval's words. Otherwise the missing
+    kitchen additions when the fixpoint does not reach the goal; when it does, what in
+    the encoding rules it out (instance counts), else that the planner found no plan.
+    """
+    from ..analysis.reachability import reachable
+    from ..retrieval.explain import explain_unreachable
+
+    if cons.items:
+        from ..retrieval.constrained import retrieve_constrained
+
+        found = retrieve_constrained(foon, kitchen, goal, cons).result
+        if found.tree is None:
+            return found.detail, False
+        return "native retrieval finds a tree under the constraints; the planner did not (see its message)", True
+    reach = reachable(foon, kitchen.nodes)
+    if not any(reach.can_make(c) for c in goal.candidates):
+        return explain_unreachable(foon, kitchen.nodes, goal), False
+    if encoding == "instances":
+        from ..pddl.instance_counts import count_shortfalls
+
+        short = count_shortfalls(foon, kitchen.nodes, goal.candidates, stated=kitchen.stated_counts(),
+                                 overrides=dict(instances))
+        if short:
+            return ("FOON's semantics makes the goal, but too few physical objects are given: "
+                    + "; ".join(s.describe() for s in short)
+                    + " (raise the count, or drop it to let the count be derived)"), True
+    return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
+           "encoding (see its message)", True
+
+
+def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
+    """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan."""
+    from ..generalize.hints import networks_that_reach
+    from ..io.inputs import goal_spec
+
+    spec = goal_spec(goal, goal_file)
+    if len(net.foon.units) > ANNOUNCE_UNITS:
+        click.echo("checking whether FOON-EXP or FOON-GEN makes it ...", err=True)
+    kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
+                                confirm={"gen": lambda: _lifted_solves(net, kitchen, spec, level)})
+    if kinds:
+        what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
+        click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
+                   + "; ".join(what[k] for k in kinds), err=True)
+
+
+def _lifted_solves(net, kitchen, spec, level: int) -> bool:
+    """Whether `plan --network gen` (the lifted encoding over the concrete network) solves the goal."""
+    from ..errors import FoonError
+    from ..model.goal import resolve_goal
+    from ..planners.solve import plan
+    from ..status import PlanStatus
+
+    foon = net.at(level)
+    try:
+        goal = resolve_goal(spec, foon)
+        outcome = plan(foon, kitchen, goal, "gen-lifted", level, time_limit=GEN_HINT_TIME_LIMIT)
+    except FoonError:
+        return False
+    return outcome.status == PlanStatus.SOLVED
+
+
+def gen_reading_note(view, goal: str | None, goal_file: Path | None, made) -> str:
+    """For a FOON-GEN tree: how the goal was read, and whether `made` (the tree's goal node) is the
+    category image of a node the user's goal names in the concrete network ("" when it is, or when
+    the goal is already a category). A category-level goal (`salads`) is met by any salad; this
+    says when the tree makes another dish of the category than the one asked for."""
+    from ..errors import FoonError
+    from ..generalize.compress import abstract_goal
+    from ..io.inputs import goal_spec
+    from ..model.goal import resolve_goal, spec_of_node
+
+    spec = goal_spec(goal, goal_file)
+    read = view.map_goal(spec)
+    if read == spec:
+        return ""
+    try:
+        concrete = resolve_goal(spec, view.concrete).candidates
+    except FoonError:
+        return ""
+    for node in concrete:
+        image = abstract_goal(spec_of_node(node), view.index)
+        if made.label == image.label and set(image.states or ()) <= set(made.states):
+            return ""
+    return (f"note: FOON-GEN reads {spec.describe()!r} as {read.describe()!r}: this tree makes "
+            f"`{made.describe()}`, the category image of no {spec.describe()!r} node of the network (another "
+            f"dish of the category); `plan --network gen` grounds only trees for the dish itself")

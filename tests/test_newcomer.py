@@ -1,0 +1,161 @@
+"""What a new user hit on real FOON files: hints and reasons that are true, goals that mean the dish,
+kitchens from scratch, wrong inputs named, no silent waits. Each test is one finding; small FOONs
+are built here for the cases found on files the test corpus does not hold."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.io.inputs import example_path
+from foon2pddl.io.kitchen_files import read_kitchen
+
+
+def run(*args: str, stdin: str | None = None):
+    return CliRunner().invoke(main, [str(a) for a in args], input=stdin)
+
+
+def kitchen_lines(drop=(), counts=None) -> str:
+    """The example kitchen as one node per line, without the labels in `drop`, with `counts` (label -> N)."""
+    counts = counts or {}
+    out = []
+    for n in read_kitchen(example_path("example_kitchen.txt")).sorted_nodes():
+        if n.label in drop:
+            continue
+        line = n.label + (": " + ", ".join(s.describe() for s in n.states) if n.states else "")
+        out.append(f"{counts[n.label]} x {line}" if n.label in counts else line)
+    return "\n".join(out) + "\n"
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(text)
+    return path
+
+
+#: Two salads: the greek one needs olive oil, which no kitchen object of its category replaces.
+SALADS = """//
+O\tbowl\t0
+S\tempty
+O\tfeta cheese\t1
+S\tcrumbled
+O\tolive oil\t1
+S\tliquid
+M\tmix
+O\tgreek salad\t0
+S\tcontains\t{feta cheese,olive oil}
+S\tin\t[bowl]
+//
+O\tbowl\t0
+S\tempty
+O\tlettuce\t1
+S\tchopped
+O\tcrouton\t1
+S\twhole
+M\tmix
+O\tcaesar salad\t0
+S\tcontains\t{crouton,lettuce}
+S\tin\t[bowl]
+//
+"""
+SALAD_KITCHEN = "bowl: empty\nlettuce: chopped\ncrouton: whole\nfeta cheese: crumbled\n"
+
+
+# -- 1. a hint is true for the command it suggests ----------------------------------------------------
+
+
+def test_gen_hint_only_when_plan_network_gen_makes_it(tmp_path):
+    foon = write(tmp_path / "salads.txt", SALADS)
+    kit = write(tmp_path / "k.txt", SALAD_KITCHEN)
+    planned = run("plan", foon, "--goal", "greek salad", "--kitchen", kit)
+    assert planned.exit_code == 1 and "olive oil" in planned.stderr
+    assert "--network gen" not in planned.stderr  # the category fixpoint makes *a* salad, not this one
+    gen = run("plan", foon, "--goal", "greek salad", "--kitchen", kit, "--network", "gen")
+    assert gen.exit_code == 1  # the oracle: the command the old hint suggested fails
+    # where the hint is given, the command it names succeeds
+    hinted = run("plan", "--goal", "lemonade")
+    assert "--network gen" in hinted.stderr and "--network exp" in hinted.stderr
+    assert run("plan", "--goal", "lemonade", "--network", "gen").exit_code == 0
+
+
+def test_gen_retrieval_says_when_its_tree_is_another_dish(tmp_path):
+    foon = write(tmp_path / "salads.txt", SALADS)
+    kit = write(tmp_path / "k.txt", SALAD_KITCHEN)
+    r = run("retrieve", foon, "--goal", "greek salad", "--kitchen", kit, "--network", "gen")
+    assert r.exit_code == 0
+    assert "reads 'greek salad' as 'salads'" in r.stderr and "no 'greek salad' node" in r.stderr
+    same = run("retrieve", "--goal", "lemonade", "--network", "gen")
+    assert same.exit_code == 0 and "no 'lemonade' node" not in same.stderr
+
+
+# -- 2. too few instances: the cause, no contradicting hint -------------------------------------------
+
+
+def test_instances_counts_too_low_are_named(tmp_path):
+    kit = write(tmp_path / "k.txt", kitchen_lines(counts={"cutting board": 1}))
+    r = run("plan", "--goal", "guacamole", "--encoding", "instances", "--kitchen", kit)
+    assert r.exit_code == 1 and "unsolvable" in r.stderr
+    assert "1 x `cutting board (empty)` (the kitchen's count)" in r.stderr
+    assert "gave up" not in r.stderr and "hint:" not in r.stderr
+    # the oracle: the counts the reason points to solve it
+    fixed = write(tmp_path / "k2.txt", kitchen_lines())
+    assert run("plan", "--goal", "guacamole", "--encoding", "instances", "--kitchen", fixed).exit_code == 0
+
+
+def test_instances_override_too_low_is_named():
+    r = run("plan", "--goal", "guacamole", "--encoding", "instances", "--instances", "cutting board=1")
+    if r.exit_code == 1:  # one board may do when the plan can reuse it; if not, the reason names it
+        assert "(the count stated for the label)" in r.stderr
+    else:
+        assert r.exit_code == 0
+
+
+# -- 3. constraints: "even without the constraints" only when true -------------------------------------
+
+
+def test_without_under_exp_does_not_claim_unreachable_without_constraints():
+    r = run("retrieve", "--goal", "guacamole", "--without", "cilantro", "--network", "exp")
+    assert r.exit_code == 1
+    assert "even without the constraints" not in r.stderr
+    assert "without them the kitchen makes it" in r.stderr
+    assert run("retrieve", "--goal", "guacamole", "--network", "exp").exit_code == 0  # the oracle
+
+
+# -- 4. kitchen additions past the old limit of 3 ----------------------------------------------------
+
+
+def test_four_missing_things_are_found_not_a_wrong_list(tmp_path):
+    kit = write(tmp_path / "k.txt", kitchen_lines(drop=("avocado", "cilantro", "juicer", "lime")))
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", kit)
+    assert r.exit_code == 1
+    assert ("smallest kitchen additions that make it: add `avocado (whole)`, `cilantro (fresh)`, "
+            "`juicer (empty)` and `lime (whole)`") in r.stderr
+    assert "missing" not in r.stderr
+    # the oracle: adding them back solves it
+    assert run("retrieve", "--goal", "guacamole", "--kitchen", write(tmp_path / "k2.txt", kitchen_lines())).exit_code == 0
+
+
+def test_the_limit_is_said_when_reached():
+    from foon2pddl.io.inputs import load_kitchen, load_network
+    from foon2pddl.model.goal import GoalSpec, resolve_goal
+    from foon2pddl.model.kitchen import Kitchen
+    from foon2pddl.retrieval.explain import explain_unreachable
+
+    net = load_network([])
+    kit = load_kitchen(None, net, 3)
+    drop = {"avocado", "cilantro", "juicer", "lime"}
+    less = Kitchen(frozenset(n for n in kit.nodes if n.label not in drop), 3)
+    goal = resolve_goal(GoalSpec("guacamole"), net.at(3))
+    text = explain_unreachable(net.at(3), less.nodes, goal, max_size=3)
+    assert "no set of up to 3 kitchen additions" in text
+    assert "smallest kitchen additions" not in text
+
+
+# -- 5. a batch explains as a single goal does ---------------------------------------------------------
+
+
+def test_batch_plan_explains_unreachable_goals():
+    r = run("plan", "--goal", "guacamole", "--goal", "lemonade")
+    assert r.exit_code == 1
+    assert "smallest kitchen additions that make it: add `lemon (whole)`" in r.stdout
