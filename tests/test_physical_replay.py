@@ -34,6 +34,19 @@ def test_mixture_stands_for_its_ingredients():
     assert replay(replace(t, steps=tuple(steps))).ok
 
 
+def test_a_mixture_list_names_ingredients_not_contents():
+    """`dough (contains {flour})` is a mixture nothing is put in: its list is not checked as contents."""
+    w = World({"dough_1": "dough", "bowl_1": "bowl"},
+              {"bowl_1": ObjectState("bowl_1", contents("bowl", ["dough"])),
+               "dough_1": ObjectState("dough_1", node("dough", ("contains", ["flour"]), ("in", "bowl")), "bowl_1", "in")})
+    assert replay(w.trace()).ok
+    w = World({"dough_1": "dough", "bowl_1": "bowl", "egg_1": "egg"},
+              {"bowl_1": ObjectState("bowl_1", contents("bowl", ["dough"])),
+               "egg_1": ObjectState("egg_1", node("egg", ("in", "dough")), "dough_1", "in"),
+               "dough_1": ObjectState("dough_1", node("dough", ("contains", ["flour"]), ("in", "bowl")), "bowl_1", "in")})
+    assert K.MISSING_CONTENT in kinds(w.trace())  # something is put in dough here: its list is its contents
+
+
 def test_holder_gone():
     t = with_initial(salsa_world().trace(), ObjectState("board_1", contents("cutting board", ["onion"]),
                                                         consumed=True))

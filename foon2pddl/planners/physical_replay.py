@@ -16,14 +16,16 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   scene's placement FOON is silent about: the bowl on `counter_1`); any other holder
   is `UNEXPECTED_HOLDER` (a board that is cut on, then carried, still holding the onion);
 * contents, for holders of a *container label* (a label some node of the trace gives a
-  `contains` or `empty` state; a stove or a table, whose nodes never describe what is on
-  them, may hold anything): the labels a container's node lists (`contains {a, b}`,
+  `contains` or `empty` state and some node names as a place; a stove or a table, whose
+  nodes never describe what is on them, may hold anything, and a `contains` list on a
+  mixture nothing is put in names its ingredients): the labels a container's node lists (`contains {a, b}`,
   `contains [a]`) are exactly covered by the existing objects in or on it. An ingredient
   list names what went into a mixture, so an object *stands for* its label plus every
   object it absorbed: a consumed object is absorbed by the objects its step changed that
   end up in the holder it was in (or, for a consumed object that stood free, by the
   objects the step made), transitively. A listed label nothing in the container stands
-  for is `MISSING_CONTENT`, or `CLAIMED_TWICE` when the only objects of that label are in
+  for (nor the container itself, when it is a mixture that absorbed it) is
+  `MISSING_CONTENT`, or `CLAIMED_TWICE` when the only objects of that label are in
   other containers that list it too (two bowls claim one salmon). An object that stands
   for nothing the list names is `UNLISTED_CONTENT`, or `HELD_BY_EMPTY` when the node
   lists nothing (emptied, or a board that "becomes dirty" with the onion still on it).
@@ -134,11 +136,15 @@ def _describes_contents(node: ObjectNode) -> bool:
 
 
 def container_labels(trace: PhysicalTrace) -> frozenset[str]:
-    """Labels some node of the trace (initial, binding or change) gives a `contains` or `empty` state."""
+    """Labels some node of the trace (initial, binding or change) gives a `contains` or `empty` state and
+    some node names as a place (`in [bowl]`): a `contains` list on anything else (`biscuit dough (contains
+    {butter, flour})`) names the ingredients of a mixture, not objects in it."""
     nodes = [s.node for s in trace.initial]
     for step in trace.steps:
         nodes += [n for b in step.bindings for n in (b.before, b.after)] + [c.node for c in step.changes]
-    return frozenset(n.label for n in nodes if n is not None and _describes_contents(n))
+    nodes = [n for n in nodes if n is not None]
+    placed = {c for n in nodes for _, c in places(n)}
+    return frozenset(n.label for n in nodes if _describes_contents(n) and n.label in placed)
 
 
 def step_source(step: TraceStep) -> str:
@@ -224,7 +230,7 @@ class _Replay:
                 claims.setdefault(x, []).append(h)
         for h in holders:
             node, items = states[h].node, listed(states[h].node)
-            covered = frozenset().union(*(self.stands_for(o) for o in inside.get(h, ())))
+            covered = frozenset().union(self.absorbed.get(h, frozenset()), *(self.stands_for(o) for o in inside.get(h, ())))
             for x in sorted(items - covered):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
                 if others:
