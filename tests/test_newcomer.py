@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 
 from foon2pddl.cli import main
@@ -159,3 +160,42 @@ def test_batch_plan_explains_unreachable_goals():
     r = run("plan", "--goal", "guacamole", "--goal", "lemonade")
     assert r.exit_code == 1
     assert "smallest kitchen additions that make it: add `lemon (whole)`" in r.stdout
+
+
+# -- 8. one goal grammar: the node text the tools print is a goal ------------------------------------
+
+GUACAMOLE = "guacamole (contains {avocado, cilantro, lime juice, onion, salt, tomato}, in [bowl])"
+
+
+def test_goal_accepts_the_node_text_the_tools_print(tmp_path):
+    printed = run("retrieve", "--goal", GUACAMOLE)
+    assert printed.exit_code == 0, printed.stderr
+    colon = run("retrieve", "--goal", "guacamole: contains {avocado, cilantro, lime juice, onion, salt, tomato}, "
+                "in [bowl]")
+    assert printed.stdout == colon.stdout
+    goals = write(tmp_path / "goals.txt", GUACAMOLE + "\n")
+    assert run("retrieve", "--goals", goals).exit_code == 0
+    assert run("plan", "--goal", GUACAMOLE).exit_code == 0
+    # kitchen lines too, with counts
+    kit = write(tmp_path / "k.txt", kitchen_lines().replace("cutting board: empty", "2 x cutting board (empty)"))
+    assert read_kitchen(kit).stated_counts() and run("retrieve", "--goal", "guacamole", "--kitchen", kit).exit_code == 0
+
+
+# -- 10. --instances typos and misuse are errors ------------------------------------------------------
+
+
+def test_instances_typo_is_an_error_with_close_matches():
+    r = run("plan", "--goal", "guacamole", "--encoding", "instances", "--instances", "cuting board=1")
+    assert r.exit_code == 2 and "no object of the network is labelled 'cuting board'" in r.stderr
+    assert "close matches: cutting board" in r.stderr and "Traceback" not in r.output
+    c = run("compile", "--goal", "guacamole", "--encoding", "instances", "--instances", "cuting board=1")
+    assert c.exit_code == 2 and "cuting board" in c.stderr
+
+
+@pytest.mark.parametrize("command", ["plan", "compile"])
+def test_instances_with_an_encoding_without_objects_is_an_error(command):
+    r = run(command, "--goal", "guacamole", "--instances", "cutting board=2")
+    assert r.exit_code == 2 and "--instances counts the objects of --encoding instances" in r.stderr
+    batch = run(command, "--goal", "guacamole", "--goal", "lemonade", "--instances", "cutting board=2",
+                *(["-o", "/tmp/nu-never"] if command == "compile" else []))
+    assert batch.exit_code == 2 and "--instances" in batch.stderr

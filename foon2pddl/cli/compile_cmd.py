@@ -20,12 +20,12 @@ from .batch_pddl import compile_batch
 from .options import (
     category_chains,
     check_output,
+    checked_instances,
     constraint_inputs,
     constraints_options,
     costs_option,
     load_pddl_view,
     load_view,
-    parse_instances,
     pddl_task_options,
     prune_option,
     rates_option,
@@ -53,9 +53,10 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:
     """Keyword options of encodings over physical objects (none for the others)."""
+    counts = checked_instances(instances, encoding, foon)
     if not encoding_named(encoding).physical:
         return {}
-    return {"instances": parse_instances(instances), "categories": category_chains(foon) if category_types else ()}
+    return {"instances": counts, "categories": category_chains(foon) if category_types else ()}
 
 
 @main.command("compile")

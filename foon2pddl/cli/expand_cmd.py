@@ -6,8 +6,15 @@ import click
 
 from ..io.inputs import load_network
 from . import main
-from .options import (emit, emit_network, kitchen_option, load_overrides, output_option, paths_argument,
-                      similarity_options)
+from .options import (
+    emit,
+    emit_network,
+    kitchen_option,
+    load_overrides,
+    output_option,
+    paths_argument,
+    similarity_options,
+)
 
 
 @main.command("expand")

@@ -287,6 +287,27 @@ def parse_instances(items) -> tuple[tuple[str, int], ...]:
     return tuple(sorted(out.items()))
 
 
+def checked_instances(items, encoding: str, foon) -> tuple[tuple[str, int], ...]:
+    """`parse_instances` of `items`, refused (UsageError) under an encoding without physical objects and
+    for a label no node of `foon` has (a typo would otherwise be ignored), naming close labels."""
+    import difflib
+
+    from ..pddl.compile import encoding_named
+
+    if not items:
+        return ()
+    if not encoding_named(encoding).physical:
+        raise UsageError(f"--instances counts the objects of --encoding instances; the {encoding} encoding has none")
+    parsed = parse_instances(items)
+    labels = sorted({n.label for n in foon.nodes})
+    for label, _ in parsed:
+        if label not in labels:
+            close = difflib.get_close_matches(label, labels, n=3)
+            raise UsageError(f"--instances: no object of the network is labelled {label!r}"
+                             + (f"; close matches: {', '.join(close)}" if close else ""))
+    return parsed
+
+
 def category_chains(foon) -> tuple[tuple[str, tuple[str, ...]], ...]:
     """Label -> its category chain (most specific first) from the shipped category index, for PDDL supertypes."""
     from ..generalize.categories import load_index

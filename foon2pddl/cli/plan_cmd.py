@@ -26,13 +26,13 @@ from .options import (
     category_chains,
     check_output,
     check_time_limit,
+    checked_instances,
     constraint_inputs,
     constraints_options,
     costs_option,
     emit,
     load_pddl_view,
     load_view,
-    parse_instances,
     pddl_task_options,
     prune_option,
     rates_option,
@@ -144,15 +144,16 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
-                          instances=parse_instances(instances))
+                          instances=checked_instances(instances, encoding, view.foon))
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
+    counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
     try:
         outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
                        up_validate=up_validate, constraints=cons, search=config,
-                       instances=parse_instances(instances),
+                       instances=counts,
                        categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
     except GoalExcluded as exc:
         click.echo(f"unsolvable (constraints): {exc}", err=True)
@@ -181,7 +182,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
-            reason, makes = why_unsolvable(foon, kit, target, cons, encoding, parse_instances(instances))
+            reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
             click.echo("reason: " + reason, err=True)
             if network == "reg" and not cons.items and not makes:
                 networks_hint(net, kit, single_goal(goal), goal_file, level)

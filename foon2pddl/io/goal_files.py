@@ -70,17 +70,24 @@ def parse_state_text(part: str) -> State:
 
 
 def parse_goal_spec(text: str) -> GoalSpec:
-    """Parse the goal syntax; raises ValueError with what was expected.
+    """Parse the goal syntax, or a node as the tools print it (`onion (chopped, in [bowl])`): one
+    grammar for --goal, goal lists and kitchen lines. Raises ValueError with what was expected.
 
     >>> spec = parse_goal_spec("bowl: contains {lettuce, tomato}, on [table]")
     >>> spec.label, [s.describe() for s in spec.states]
     ('bowl', ['contains {lettuce, tomato}', 'on [table]'])
+    >>> parse_goal_spec("bowl (contains {lettuce, tomato}, on [table])") == spec
+    True
     >>> parse_goal_spec("onion").states is None
     True
     """
     problem = text_problem(text, "the goal")  # goals are label text: no control character reaches a table
     if problem:
         raise ValueError(problem)
+    text = text.strip()
+    if ":" not in text.split("(", 1)[0] and text.endswith(")") and " (" in text:
+        label, _, states = text.partition(" (")
+        text = f"{label}: {states[:-1]}"
     label, sep, rest = text.partition(":")
     label = normalize_label(label)
     if not label:

@@ -44,10 +44,6 @@ class GoalEntry:
 
 def parse_described(text: str) -> GoalSpec:
     """A node as `describe()` prints it (`onion (chopped, in [bowl])`) or the goal syntax; ValueError if neither."""
-    text = text.strip()
-    if ":" not in text.split("(", 1)[0] and text.endswith(")") and " (" in text:
-        label, _, states = text.partition(" (")
-        return parse_goal_spec(f"{label}: {states[:-1]}")
     return parse_goal_spec(text)
 
 
