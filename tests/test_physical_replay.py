@@ -83,6 +83,17 @@ def test_missing_content_and_claimed_twice():
     assert d.objects == ("bowl_2", "salt_1") and "shaker_1" in d.message
 
 
+def test_stale_source():
+    """The unit pours the salt out of the shaker but (as FOON often does) gives the shaker no output node."""
+    t = salsa_world().trace()
+    s = t.steps[1]
+    s = replace(s, changes=tuple(c for c in s.changes if c.id != "shaker_1"),
+                bindings=tuple(replace(b, after=None) if b.object == "shaker_1" else b for b in s.bindings))
+    report = replay(replace(t, steps=(t.steps[0], s, t.steps[2])))
+    assert [(d.kind, d.step, d.objects) for d in report.disagreements] == [(K.STALE_SOURCE, 1, ("shaker_1",))]
+    assert "left it at step 2" in report.disagreements[0].message
+
+
 def test_unlisted_content_and_held_by_empty():
     t = with_initial(salsa_world().trace(), ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
     assert {K.HELD_BY_EMPTY, K.MISSING_CONTENT} <= kinds(t)  # bowl_2 empty holds salt; the shaker lacks it

@@ -18,19 +18,22 @@ own words, never with an encoding's facts (it is the oracle that checks them).
 * contents, for holders of a *container label* (a label some node of the trace gives a
   `contains` or `empty` state and some node names as a place; a stove or a table, whose
   nodes never describe what is on them, may hold anything, and a `contains` list on a
-  mixture nothing is put in names its ingredients): the labels a container's node lists (`contains {a, b}`,
-  `contains [a]`) are exactly covered by the existing objects in or on it. An ingredient
-  list names what went into a mixture, so an object *stands for* its label plus every
-  object it absorbed: a consumed object is absorbed by the objects its step changed that
-  end up in the holder it was in (or, for a consumed object that stood free, by the
-  objects the step made), transitively. A listed label nothing in the container stands
-  for (nor the container itself, when it is a mixture that absorbed it) is
-  `MISSING_CONTENT`, or `CLAIMED_TWICE` when the only objects of that label are in
-  other containers that list it too (two bowls claim one salmon). An object that stands
-  for nothing the list names is `UNLISTED_CONTENT`, or `HELD_BY_EMPTY` when the node
-  lists nothing (emptied, or a board that "becomes dirty" with the onion still on it).
-  Only objects whose node names a place count as contents: FOON lists what it places,
-  and a placeless object with a holder is judged by the placement rule above.
+  mixture nothing is put in names its ingredients): the labels a container's node lists
+  (`contains {a, b}`, `contains [a]`) are exactly covered by the existing objects in or
+  on it. An ingredient list names what went into a mixture, so an object *stands for*
+  its label plus every object it absorbed: a consumed object is absorbed by the objects
+  its step changed that end up in the holder it was in (or, for a consumed object that
+  stood free, by the objects the step made), transitively. A listed label nothing in the
+  container stands for (nor the container itself, when it is a mixture that absorbed it)
+  is `MISSING_CONTENT`, or `STALE_SOURCE` when an object of that label left the
+  container in a step that gave the container no new node (FOON leaves a pour's source
+  out of the unit's outputs, so its list goes stale), or `CLAIMED_TWICE` when the only
+  objects of that label are in other containers that list it too (two bowls claim one
+  salmon). An object that stands for nothing the list names is `UNLISTED_CONTENT`, or
+  `HELD_BY_EMPTY` when the node lists nothing (emptied, or a board that "becomes dirty"
+  with the onion still on it). Only objects whose node names a place count as contents:
+  FOON lists what it places, and a placeless object with a holder is judged by the
+  placement rule above.
 
 **Steps**, for step k:
 
@@ -70,6 +73,7 @@ class DisagreementKind(StrEnum):
     MISPLACED = "misplaced"
     UNEXPECTED_HOLDER = "unexpected-holder"
     MISSING_CONTENT = "missing-content"
+    STALE_SOURCE = "stale-source"
     CLAIMED_TWICE = "claimed-twice"
     UNLISTED_CONTENT = "unlisted-content"
     HELD_BY_EMPTY = "held-by-empty"
@@ -164,6 +168,7 @@ class _Replay:
         self.initial = {s.id: s for s in trace.initial}
         self.containers = container_labels(trace)
         self.absorbed: dict[str, frozenset[str]] = {}
+        self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
         self.active: set[tuple] = set()
 
@@ -233,7 +238,11 @@ class _Replay:
             covered = frozenset().union(self.absorbed.get(h, frozenset()), *(self.stands_for(o) for o in inside.get(h, ())))
             for x in sorted(items - covered):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
-                if others:
+                left = self.stale.get((h, x))
+                if left is not None and left[0] == node:
+                    add(DisagreementKind.STALE_SOURCE, (h,), f"{h} still lists {x}, which left it at step "
+                        f"{left[1] + 1}: that unit's outputs give {h} no state without it")
+                elif others:
                     add(DisagreementKind.CLAIMED_TWICE, (h, *sorted(others)),
                         f"{h} lists {x}, but the only {x} ({', '.join(sorted(others))}) is in "
                         f"{', '.join(sorted({states[o].holder for o in others}))}, which lists it too")
@@ -281,6 +290,9 @@ class _Replay:
                     f"{b.object} ends {have!r}, the step makes it {want.describe()!r}")
         for b in step.bindings:
             self._moves(b.object, b.before, before, after, bound, add)
+            h = before[b.object].holder
+            if h is not None and after[b.object].holder != h and self.label[b.object] in listed(after[h].node):
+                self.stale[(h, self.label[b.object])] = (after[h].node, k)
         self._holders_bound(step, before, after, add)
         self._absorb(step, before, after)
 
