@@ -199,3 +199,25 @@ def test_instances_with_an_encoding_without_objects_is_an_error(command):
     batch = run(command, "--goal", "guacamole", "--goal", "lemonade", "--instances", "cutting board=2",
                 *(["-o", "/tmp/nu-never"] if command == "compile" else []))
     assert batch.exit_code == 2 and "--instances" in batch.stderr
+
+
+# -- 9. what `goals --network gen` lists, `--network gen` plans; a one-goal --goals works ------------
+
+
+def test_gen_goals_listed_are_goals_of_plan_network_gen(tmp_path):
+    listed = run("goals", "--network", "gen")
+    rows = [line for line in listed.stdout.splitlines() if line.startswith("yes")]
+    beverage = next(line for line in rows if "beverages (" in line)
+    r = run("plan", "--network", "gen", "--goal", "beverages")
+    assert r.exit_code == 0, r.stderr
+    assert "lemonade" in r.stdout  # the one beverage the kitchen makes, grounded
+    # a row of the table as the goal (the node text `goals` printed)
+    node = beverage[17:]  # the goal column (made 5, round 5, 2 blanks, dish 5)
+    assert run("plan", "--network", "gen", "--goal", node).exit_code == 0
+    assert run("compile", "--network", "gen", "--goal", "beverages", "-o", tmp_path / "c").exit_code == 0
+    one = run("plan", "--network", "gen", "--goals", "-", stdin="lemonade\n")
+    assert one.exit_code == 0 and "1 goals: 1 solved" in one.stderr
+    many = run("compile", "--network", "gen", "--goal", "lemonade", "--goal", "beverages", "-o", tmp_path / "d")
+    assert many.exit_code == 0 and (tmp_path / "d" / "beverages" / "domain.pddl").exists()
+    unknown = run("plan", "--network", "gen", "--goal", "beveragez")
+    assert unknown.exit_code == 2 and "unknown object label" in unknown.stderr

@@ -12,12 +12,15 @@ from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
 from ..pddl.compile import ENCODINGS
 from .batch import TREE_EXTENSIONS, finish, write_files
+from .options import lifted_goal
 from .reasons import why_unsolvable
 
 
-def _resolve(view, entry):
-    """(goal, None) or (None, the reason it names no produced node)."""
+def _resolve(view, entry, encoding: str | None = None):
+    """(goal, None) or (None, the reason it names no produced node); the lifted GEN encoding reads categories."""
     try:
+        if encoding == "gen-lifted":
+            return lifted_goal(view, entry.spec), None
         return resolve_goal(view.map_goal(entry.spec), view.foon), None
     except FoonError as exc:  # the goal names no node (UsageError)
         return None, exc.message
@@ -40,7 +43,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
     dirs = [n[: -len(".d")] for n in file_names((e.spec.describe() for e in entries), "d")]
     for entry, name in zip(entries, dirs, strict=True):
         t0 = time.perf_counter()
-        goal, why = _resolve(view, entry)
+        goal, why = _resolve(view, entry, encoding)
         if goal is None:
             rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
             continue
@@ -68,7 +71,7 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
     rows, trees = [], []
     for entry in entries:
         t0 = time.perf_counter()
-        goal, why = _resolve(view, entry)
+        goal, why = _resolve(view, entry, encoding)
         if goal is None:
             rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
             trees.append(None)

@@ -25,7 +25,6 @@ from .options import (
     constraints_options,
     costs_option,
     load_pddl_view,
-    load_view,
     pddl_task_options,
     prune_option,
     rates_option,
@@ -46,7 +45,7 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
-    target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level)
+    target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
     return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
                         **encoder_options(encoding, instances, category_types, view.foon))
 
@@ -83,11 +82,11 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
     check_output(output_dir, directory=True)
     entries = batch_entries(goal, goals_file, goal_file)
     if entries is not None:
-        if network == "gen" or constraints_files or without_motions or without or must_use:
-            raise UsageError("--network gen and constraints compile one goal at a time (not a batch)")
+        if constraints_files or without_motions or without or must_use:
+            raise UsageError("constraints compile one goal at a time (not a batch)")
         if costs == "success-rate" and rates is None:
             raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
-        _, view = load_view(paths, kitchen, level, network, containment, utensils)
+        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
         return compile_batch(view, entries, encoding, level, prune, costs, read_rates(rates) if rates else None,
                              output_dir, fmt, **encoder_options(encoding, instances, category_types, view.foon))
     try:

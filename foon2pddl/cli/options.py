@@ -211,17 +211,38 @@ def warn_kitchen(kitchen, foon, strays) -> None:
                    err=True)
 
 
-def view_goal(view, goal: str | None, goal_file: Path | None, level: int):
-    """The `--goal`/`--goal-file` goal resolved against a network view; warns when `level` drops part of it."""
+def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encoding: str | None = None):
+    """The `--goal`/`--goal-file` goal resolved against a network view; warns when `level` drops part of it.
+
+    Under the lifted GEN encoding a goal may name a category (as `goals --network gen` lists them).
+    """
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one of --goal and --goal-file")
     from ..io.inputs import goal_spec
     from ..model.goal import level_loss
 
-    loss = level_loss(goal_spec(goal, goal_file), level)
+    spec = goal_spec(goal, goal_file)
+    loss = level_loss(spec, level)
     if loss:
         click.echo(f"warning: {loss}", err=True)
+    if encoding == "gen-lifted":
+        return lifted_goal(view, spec)
     return view.goal(goal, goal_file)
+
+
+def lifted_goal(view, spec):
+    """A goal of the lifted GEN encoding: a concrete node of the network, else a category's nodes."""
+    from ..errors import FoonError
+    from ..generalize.categories import load_index
+    from ..generalize.compress import category_goal
+
+    try:
+        return view.resolve(spec)
+    except FoonError:
+        found = category_goal(spec, view.foon, load_index())
+        if found is None:
+            raise
+        return found
 
 
 def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encoding: str, costs: str | None,

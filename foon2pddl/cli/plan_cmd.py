@@ -32,7 +32,6 @@ from .options import (
     costs_option,
     emit,
     load_pddl_view,
-    load_view,
     pddl_task_options,
     prune_option,
     rates_option,
@@ -137,16 +136,16 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     if entries is not None:
-        if network == "gen" or cons.items:
-            raise UsageError("--network gen and constraints plan one goal at a time (not a batch)")
-        _, view = load_view(paths, kitchen, level, network, containment, utensils)
+        if cons.items:
+            raise UsageError("constraints plan one goal at a time (not a batch)")
+        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
         return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
                           fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
                           instances=checked_instances(instances, encoding, view.foon))
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
-    foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level)
+    foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
     try:

@@ -15,8 +15,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from ..model.containment import is_auxiliary
 from ..model.foon import Foon, dedupe_units, make_state
-from ..model.goal import GoalSpec
+from ..model.goal import Goal, GoalSpec, spec_of_node
 from ..model.kitchen import Kitchen
 from .categories import CategoryIndex
 from .substitute import substitute_node, substitute_unit, unit_labels
@@ -73,3 +74,19 @@ def abstract_goal(spec: GoalSpec, index: CategoryIndex) -> GoalSpec:
     states = {make_state(s.label, gen(s.related) if s.related else "", (gen(i) for i in s.ingredients))
               for s in spec.states}
     return GoalSpec(gen(spec.label), tuple(sorted(states)))
+
+
+def category_goal(spec: GoalSpec, foon: Foon, index: CategoryIndex) -> Goal | None:
+    """A goal naming a category (`beverages`, as `goals --network gen` lists FOON-GEN's goals) read on
+    the concrete network: the produced nodes whose label generalizes to it (`CategoryIndex.choose`)
+    and whose category image is in the given states (equal states if any node has them, else a
+    superset, as `resolve_goal`). None when the label is no category or no node matches."""
+    if not index.is_category(spec.label):
+        return None
+    nodes = sorted(n for label, made in foon.produced_by_label.items() if index.choose(label) == spec.label
+                   for n in made if not is_auxiliary(n))
+    if spec.states is not None:
+        want = set(spec.states)
+        images = {n: set(abstract_goal(spec_of_node(n), index).states or ()) for n in nodes}
+        nodes = [n for n in nodes if images[n] == want] or [n for n in nodes if want <= images[n]]
+    return Goal(spec, tuple(nodes), foon.level) if nodes else None
