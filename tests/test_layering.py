@@ -16,7 +16,7 @@ PACKAGE = Path(__file__).resolve().parent.parent / "foon2pddl"
 
 #: The pipeline, lowest first; a module may import its own layer and the layers before it.
 #: `errors` and `status` (and the top-level `api`) are shared: `errors`/`status` by every layer.
-LAYERS = ["errors", "status", "model", "io", "analysis", "retrieval", "generalize", "pddl", "planners",
+LAYERS = ["errors", "status", "model", "io", "analysis", "retrieval", "generalize", "pddl", "planners", "skills",
           "experiment", "api", "cli"]
 #: Top-level modules allowed to import anything (the package's front doors).
 FRONT = {"__init__", "__main__"}

@@ -81,10 +81,11 @@ class PlanningTask:
     labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
     comments: tuple[str, ...] = ()  # header lines for both files
     instances: tuple[Instance, ...] = ()  # encodings over physical objects: every object and where it starts
+    metric: bool = False  # minimize total-cost although no action here has a cost (the domain comes from a file)
 
     @property
     def uses_costs(self) -> bool:
-        return any(a.cost is not None for a in self.actions)
+        return self.metric or any(a.cost is not None for a in self.actions)
 
     @property
     def uses_types(self) -> bool:

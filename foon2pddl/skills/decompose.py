@@ -1,0 +1,185 @@
+"""A plan's macro steps decomposed into robot skills, solved per step, then replayed end to end.
+
+For each step of a `PhysicalTrace`: the motion's skill (`skills.table`); none,
+and the step stays **abstract** (reported by its motion, kept in place). Otherwise
+its micro problem (`skills.micro`) is solved with Fast Downward on the skill
+domain pruned to the transport skills and the step's own (`skills.fd_micro`); a
+step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
+with the planner's reason, and kept as an abstract step too. The skill sequences
+are concatenated and replayed from the start by `skills.replay`, which checks
+every precondition and, after every macro step, that the state is the trace's.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from enum import StrEnum
+
+from ..model.physical import PhysicalTrace
+from ..model.tasktree import Validation
+from ..pddl.task import Atom
+from .domain import SkillDomain
+from .fd_micro import solve_micro
+from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem
+from .profile import Robot
+from .replay import Replayer, SkillError, check
+from .table import MotionTable
+
+__all__ = ["MacroSkills", "SkillCall", "SkillPlan", "StepStatus", "decompose"]
+
+
+class StepStatus(StrEnum):
+    """How a macro step came out: decomposed into skills, abstract (motion not mapped), or failed."""
+
+    DECOMPOSED = "decomposed"
+    ABSTRACT = "abstract"
+    FAILED = "failed"
+
+
+@dataclass(frozen=True)
+class SkillCall:
+    """One skill of a plan: macro step index (0-based), skill, hand, the objects it names (trace ids, or
+    `workspace`), and each object's holder just before the skill (an id, a hand, or None: on the workspace)."""
+
+    macro: int
+    skill: str
+    hand: str
+    objects: tuple[str, ...]
+    holders: tuple[str | None, ...]
+
+    def text(self) -> str:
+        return f"{self.skill} {' '.join(self.objects)}" + (f" ({self.hand})" if self.hand != "hand_1" else "")
+
+
+@dataclass(frozen=True)
+class MacroSkills:
+    """One macro step: its index, motion, unit source (`file:line`), skill, status, reason and skill calls."""
+
+    index: int
+    motion: str
+    source: str
+    skill: str | None
+    status: StepStatus
+    reason: str
+    calls: tuple[SkillCall, ...]
+    problem: MicroProblem | None
+    seconds: float
+
+
+@dataclass(frozen=True)
+class SkillPlan:
+    """Every macro step with its skills, the replay's verdict, and the domain used."""
+
+    steps: tuple[MacroSkills, ...]
+    replay: Validation
+    domain: SkillDomain
+
+    @property
+    def calls(self) -> tuple[SkillCall, ...]:
+        return tuple(c for s in self.steps for c in s.calls)
+
+    @property
+    def decomposed(self) -> int:
+        return sum(s.status is StepStatus.DECOMPOSED for s in self.steps)
+
+    @property
+    def share(self) -> float:
+        """Share of macro steps that decomposed (1.0 for a plan without steps)."""
+        return self.decomposed / len(self.steps) if self.steps else 1.0
+
+    @property
+    def ok(self) -> bool:
+        """Every step decomposed and the replay holds."""
+        return self.replay.ok and self.decomposed == len(self.steps)
+
+
+Solver = Callable[[str, str], tuple[str, tuple[str, ...], str, float]]
+
+
+def _fd(domain_text: str, problem_text: str) -> tuple[str, tuple[str, ...], str, float]:
+    r = solve_micro(domain_text, problem_text)
+    return str(r.status), r.plan, r.message, r.timings.get("translate", 0.0) + r.timings.get("search", 0.0)
+
+
+def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: SkillDomain, robot: Robot,
+               naming: Naming, roles, solver: Solver) -> tuple[MacroSkills, tuple[tuple[str, tuple[str, ...]], ...]]:
+    step = trace.steps[index]
+    motion = step.unit.motion.label
+    skill = table.skill_of(motion)
+
+    def out(status, reason, problem=None, seconds=0.0, calls=()):
+        return MacroSkills(index, motion, step.source, skill, status, reason, (), problem, seconds), calls
+
+    if skill is None:
+        return out(StepStatus.ABSTRACT, f"motion {motion!r} has no skill in the motion table")
+    if robot.lacks(skill):
+        return out(StepStatus.FAILED, f"the robot has no {skill} skill (motion {motion!r})")
+    if skill not in domain.by_name:
+        return out(StepStatus.FAILED, f"skill {skill!r} is not defined in {domain.path}")
+    problem = micro_problem(trace, index, skill, naming, domain, roles)
+    keep = {a for a in problem.actions if not robot.lacks(a)}
+    status, plan, message, seconds = solver(domain.pruned(keep, robot.cost_table), problem.text)
+    if status != "solved":
+        return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, seconds)
+    calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)
+    return out(StepStatus.DECOMPOSED, "", problem, seconds, calls)
+
+
+def decompose(trace: PhysicalTrace, table: MotionTable, domain: SkillDomain, robot: Robot | None = None,
+              solver: Solver = _fd) -> SkillPlan:
+    """Decompose and replay (see the module doc). One micro task per step; the replay is linear in the skills.
+
+    `robot`: default one hand, every skill, each costing 1. `solver(domain text, problem text)` returns
+    (status, plan lines, message, seconds); default Fast Downward (`fd_micro`).
+    """
+    robot = robot if robot is not None else Robot()
+    naming = Naming(trace, domain, robot.hands)
+    roles = _roles(trace)
+    everyone = tuple(o.id for o in trace.objects)
+    types = {**{h: "hand" for h in naming.hands}, naming.workspace: "thing", **{n: "thing" for n in naming.ids.values()}}
+    base = {Atom("placed", (naming.workspace,))} | {Atom("hand-empty", (h,)) for h in naming.hands}
+    planned = [_plan_step(trace, k, table, domain, robot, naming, roles, solver) for k in range(len(trace.steps))]
+    for states in trace.states():  # name every phase before the replay's universe is fixed
+        dynamic_facts(naming, states, everyone)
+    phases = {n: "phase" for (key, n) in _phase_names(naming)}
+    rep = Replayer(domain, {**types, **phases}, dynamic_facts(naming, trace.after(-1), everyone) | base,
+                   robot.cost_table)
+    problems: list[str] = []
+    steps = []
+    for (macro, calls) in planned:
+        done = []
+        if not problems and macro.status is StepStatus.DECOMPOSED:
+            rep.add(macro.problem.statics)
+            for name, args in calls:
+                things = args[1:]
+                holders = tuple(None if h == naming.workspace else _back(naming, h) for h in map(rep.holder, things))
+                try:
+                    rep.apply(name, args)
+                except SkillError as exc:
+                    problems.append(f"step {macro.index + 1} ({macro.source}): {exc}")
+                    break
+                done.append(SkillCall(macro.index, name, args[0], tuple(_back(naming, a) for a in things), holders))
+            rep.remove(macro.problem.statics)
+        expected = dynamic_facts(naming, trace.after(macro.index), everyone) | base
+        if not problems:
+            if macro.status is StepStatus.DECOMPOSED:
+                diff = check(rep, expected)
+                if diff:
+                    problems.append(f"after step {macro.index + 1} ({macro.source}): " + "; ".join(diff))
+            else:
+                rep.reset_dynamic(expected)
+        steps.append(MacroSkills(macro.index, macro.motion, macro.source, macro.skill, macro.status, macro.reason,
+                                 tuple(done), macro.problem, macro.seconds))
+    return SkillPlan(tuple(steps), Validation(not problems, tuple(problems)), domain)
+
+
+def _phase_names(naming: Naming):
+    """(label, name) of every phase name handed out so far."""
+    return [(label, name) for name, label in naming.table.labels.items() if label.startswith("phase ")]
+
+
+def _back(naming: Naming, name: str | None) -> str | None:
+    if name is None or name == naming.workspace:
+        return None if name is None else "workspace"
+    return naming.back.get(name, name)

@@ -1,0 +1,80 @@
+"""Fast Downward on micro tasks: the translator run in this process, the search binary as `planners.fd` runs it.
+
+A micro task is tiny (a handful of objects, five skills), so starting an interpreter
+for the translator would cost more than translating. The installed translator
+(`fast_downward.translate`, shipped in the wheel's `builds/release/bin`) takes its
+options through `options.set_options`, so it is called in-process, its output
+captured; calls are serialized (the translator keeps its options in a module
+global). If the in-process translator cannot be imported, the translator
+subprocess of `planners.fd` is used. Search: `lama-first`, through `fd.search`.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+from ..planners import fd
+from ..planners.process import ProcessRun
+from ..planners.result import PlanResult
+
+__all__ = ["solve_micro"]
+
+_LOCK = threading.Lock()
+NAME = "fd (lama-first)"
+
+
+def _translator():
+    """The translator's (set_options, main), or None when it cannot be imported in-process."""
+    try:
+        path = str(fd.bin_dir())
+        if path not in sys.path:
+            sys.path.append(path)
+        from fast_downward.translate.main import main
+        from fast_downward.translate.options import set_options
+    except Exception:  # noqa: BLE001 - any import failure falls back to the subprocess
+        return None
+    return set_options, main
+
+
+def _translate(work: Path) -> ProcessRun:
+    found = _translator()
+    args = [str(work / "domain.pddl"), str(work / "problem.pddl"), "--sas-file", str(work / "output.sas")]
+    if found is None:
+        return fd.translate(work / "domain.pddl", work / "problem.pddl", work / "output.sas", work, None)
+    set_options, main = found
+    out = io.StringIO()
+    t0 = time.perf_counter()
+    code = 0
+    with _LOCK, contextlib.redirect_stdout(out):
+        try:
+            set_options(args)
+            main()
+        except SystemExit as exc:
+            code = exc.code if isinstance(exc.code, int) else 1
+        except Exception as exc:  # noqa: BLE001 - a translator failure is a result, never a crash
+            print(f"{type(exc).__name__}: {exc}")
+            code = 30
+    return ProcessRun(code, out.getvalue(), time.perf_counter() - t0)
+
+
+def solve_micro(domain_text: str, problem_text: str, time_limit: float | None = 10.0) -> PlanResult:
+    """Plan one micro task; the result's timings have `translate` and `search` (seconds)."""
+    with tempfile.TemporaryDirectory(prefix="foon2pddl-skill-") as tmp:
+        work = Path(tmp)
+        (work / "domain.pddl").write_text(domain_text)
+        (work / "problem.pddl").write_text(problem_text)
+        run = _translate(work)
+        failed = fd.translation_failure(run, NAME)
+        if failed is not None:
+            return failed
+        try:
+            result = fd.search(work, fd.search_options(), time_limit, NAME, sas_path=work / "output.sas")
+        except (fd.FastDownwardMissing, OSError) as exc:
+            return PlanResult("error", (), NAME, str(exc), {"translate": run.seconds})
+        return result.with_timings(translate=run.seconds)

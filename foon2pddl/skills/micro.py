@@ -1,0 +1,190 @@
+"""One micro problem per macro step: the step's objects, where they are, and what FOON says the step does.
+
+Rule (docs/skills.md): the objects are the ones the step binds or changes, plus
+their holders before and after the step (transitively: a bowl in the fridge brings
+the fridge); everything stands where the trace says, and free-standing objects
+stand on the `workspace`. Init = those objects' facts before the step, the robot's
+hands empty, and the step's outcome as facts tagged with the skill its motion maps
+to: `changes` (a physical phase changes), `moves-in`/`moves-on` (moved by a
+non-transport skill: poured, scooped, spread), `makes-in`/`makes-on` (a product
+appears), `uses-up` (an ingredient is consumed), each with its `target`. Goal = the
+objects' facts after the step and every hand empty. Objects moved by a transport
+skill (pick-and-place) stay `graspable`; objects poured or scooped out of a holder
+are not (a robot pours water, it does not grasp it). A `tool` is a step object the
+step leaves as it is and that holds nothing (knife, spoon, whisk).
+
+Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
+stay as they are), with the domain's constants, the workspace and the hands
+reserved; a phase (an object's non-relational states, `chopped`) gets one name
+for the whole trace, so the replay compares facts across steps.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from functools import cached_property
+
+from ..model.foon import ObjectNode
+from ..model.physical import ObjectState, PhysicalTrace, Relation
+from ..pddl.names import NameTable
+from ..pddl.render import render
+from ..pddl.task import Atom, PlanningTask
+from .domain import TRANSPORT, SkillDomain
+
+__all__ = ["MicroProblem", "Naming", "dynamic_facts", "micro_problem", "phase_of", "step_objects"]
+
+WORKSPACE = "workspace"
+_RELATIONAL = {"contains", "empty"}
+
+
+def phase_of(node: ObjectNode) -> tuple[str, ...]:
+    """An object's physical phase: its states other than where it is or what it holds (`chopped`, `on`)."""
+    return tuple(s.describe() for s in node.states
+                 if not (s.related and s.label in ("in", "on")) and s.label not in _RELATIONAL
+                 and not (s.label in ("in", "on") and s.ingredients)) or ("plain",)
+
+
+class Naming:
+    """PDDL names for one trace: objects, phases, hands and the workspace (see the module doc)."""
+
+    def __init__(self, trace: PhysicalTrace, domain: SkillDomain, hands: int) -> None:
+        self.table = NameTable()
+        for c in domain.skills:
+            self.table.reserve(c)
+        self.workspace = self.table.name(WORKSPACE, key=("workspace",))
+        self.hands = tuple(self.table.name(f"hand_{k}", key=("hand", k)) for k in range(1, hands + 1))
+        self.ids = {o.id: self.table.name(o.id, key=("object", o.id)) for o in trace.objects}
+        self.back = {name: oid for oid, name in self.ids.items()}
+        self.back[self.workspace] = WORKSPACE
+
+    def phase(self, node: ObjectNode) -> str:
+        key = phase_of(node)
+        return self.table.name("phase " + ", ".join(key), key=("phase", key))
+
+    def holder(self, state: ObjectState) -> Atom:
+        """`(in bowl_1 onion_1)`, `(on board_1 onion_1)`, or `(on workspace onion_1)` when it stands free."""
+        if state.holder is None:
+            return Atom("on", (self.workspace, self.ids[state.id]))
+        return Atom(str(state.relation), (self.ids[state.holder], self.ids[state.id]))
+
+
+def dynamic_facts(naming: Naming, states: Mapping[str, ObjectState], ids: Iterable[str]) -> set[Atom]:
+    """The changing facts of `ids` in `states`: holder, placed and phase when it exists, else consumed/unmade."""
+    out: set[Atom] = set()
+    for oid in ids:
+        s, name = states[oid], naming.ids[oid]
+        if s.exists:
+            out |= {naming.holder(s), Atom("placed", (name,)), Atom("state", (name, naming.phase(s.node)))}
+        elif s.consumed:
+            out.add(Atom("consumed", (name,)))
+        else:
+            out.add(Atom("unmade", (name,)))
+    return out
+
+
+def step_objects(trace: PhysicalTrace, index: int) -> tuple[str, ...]:
+    """The ids of step `index`'s objects and of their holders before and after it (transitively), sorted."""
+    step = trace.steps[index]
+    before, after = trace.after(index - 1), trace.after(index)
+    found = set(step.objects) | {c.id for c in step.changes}
+    todo = list(found)
+    while todo:
+        oid = todo.pop()
+        for states in (before, after):
+            h = states[oid].holder
+            if h is not None and h not in found:
+                found.add(h)
+                todo.append(h)
+    return tuple(sorted(found))
+
+
+@dataclass(frozen=True)
+class MicroProblem:
+    """A step's micro problem: its skill, objects (trace ids), per-step facts, init, goal and PDDL problem."""
+
+    index: int
+    skill: str
+    objects: tuple[str, ...]
+    statics: frozenset[Atom]
+    init: tuple[Atom, ...]
+    goal: tuple[Atom, ...]
+    task: PlanningTask
+
+    @cached_property
+    def text(self) -> str:
+        return render(self.task)[1]
+
+    @property
+    def actions(self) -> frozenset[str]:
+        """The skills the micro task may use: the transport skills and the step's own."""
+        return frozenset((*TRANSPORT, self.skill))
+
+
+def _roles(trace: PhysicalTrace) -> tuple[set[str], set[str]]:
+    """(containers, surfaces): every object something is ever in, or on, or whose node says it holds things."""
+    containers, surfaces = set(), set()
+    for states in trace.states():
+        for s in states.values():
+            if s.holder is not None:
+                (containers if s.relation is Relation.IN else surfaces).add(s.holder)
+            if s.node is not None and any(x.label in _RELATIONAL for x in s.node.states):
+                containers.add(s.id)
+    return containers, surfaces
+
+
+def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, domain: SkillDomain,
+                  roles: tuple[set[str], set[str]] | None = None) -> MicroProblem:
+    """The micro problem of step `index` carried out by `skill` (see the module doc). O(objects of the step)."""
+    before, after = trace.after(index - 1), trace.after(index)
+    ids = step_objects(trace, index)
+    containers, surfaces = roles if roles is not None else _roles(trace)
+    n = naming.ids
+    ws = naming.workspace
+    tag = domain.constant(skill)
+    statics: set[Atom] = {Atom("surface", (ws,))}
+    rigid: set[str] = set()
+
+    def where(s: ObjectState) -> str:
+        return ws if s.holder is None else n[s.holder]
+
+    def rel(s: ObjectState) -> str:
+        return "on" if s.relation in (None, Relation.ON) else "in"
+
+    touched = set(trace.steps[index].objects) | {c.id for c in trace.steps[index].changes}
+    for oid in ids:
+        b, a = before[oid], after[oid]
+        if not b.exists and a.exists:
+            statics |= {Atom(f"makes-{rel(a)}", (tag, n[oid], where(a), naming.phase(a.node))),
+                        Atom("target", (tag, where(a)))}
+        elif b.exists and not a.exists:
+            statics |= {Atom("uses-up", (tag, n[oid])), Atom("target", (tag, where(b)))}
+        elif b.exists:
+            if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT and b.holder is not None:
+                statics |= {Atom(f"moves-{rel(a)}", (tag, n[oid], where(a))), Atom("target", (tag, where(a)))}
+                rigid.add(oid)
+            if phase_of(b.node) != phase_of(a.node):
+                statics |= {Atom("changes", (tag, n[oid], naming.phase(b.node), naming.phase(a.node))),
+                            Atom("target", (tag, n[oid]))}
+    holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
+    for oid in ids:
+        if oid not in rigid:
+            statics.add(Atom("graspable", (n[oid],)))
+        if oid in containers:
+            statics.add(Atom("container", (n[oid],)))
+        if oid in surfaces:
+            statics.add(Atom("surface", (n[oid],)))
+        if oid in touched and before[oid] == after[oid] and before[oid].exists and oid not in holders:
+            statics.add(Atom("tool", (n[oid],)))
+    hands = {Atom("hand-empty", (h,)) for h in naming.hands}
+    init = tuple(sorted(dynamic_facts(naming, before, ids) | hands | statics | {Atom("placed", (ws,))}))
+    goal = tuple(sorted(dynamic_facts(naming, after, ids) | hands | {Atom("placed", (ws,))}))
+    phases = sorted({a.args[-1] for a in (*init, *goal) if a.predicate == "state"}
+                    | {a.args[-1] for a in statics if a.predicate.startswith("makes-")}
+                    | {x for a in statics if a.predicate == "changes" for x in a.args[2:]})
+    objects = ((*((h, "hand") for h in naming.hands), (ws, "thing"), *((n[i], "thing") for i in ids),
+                *((p, "phase") for p in phases)))
+    task = PlanningTask(domain.name, f"step-{index + 1}", "skills", 3, (), (), init, goal, objects=objects,
+                        metric=True, comments=(f"step {index + 1}: {trace.steps[index].unit.describe()}",
+                                                   f"skill {skill}"))
+    return MicroProblem(index, skill, ids, frozenset(statics), init, goal, task)

@@ -1,0 +1,154 @@
+"""Decomposing macro steps into skills: micro problems, Fast Downward per step, the independent replay.
+
+Traces are built by hand here (what the relational encoding gives: objects, holders,
+states per step), so the expected skills follow from the trace alone.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from foon2pddl.model.foon import FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
+from foon2pddl.skills.decompose import StepStatus, decompose
+from foon2pddl.skills.domain import shipped_domain
+from foon2pddl.skills.micro import Naming, micro_problem
+from foon2pddl.skills.profile import Robot, robot_constraints
+from foon2pddl.skills.table import parse_table, shipped_table
+
+IN, ON = Relation.IN, Relation.ON
+
+
+def node(label, *states):
+    return make_node(label, [make_state(s) for s in states])
+
+
+def unit(motion, line):
+    return FunctionalUnit((), Motion(motion), (), (Source("r.txt", line),))
+
+
+def trace(objects, initial, steps):
+    """objects: {id: label}; initial: [ObjectState]; steps: [(motion, [ObjectState changes], [bound ids])]."""
+    out = [TraceStep(k, unit(m, 10 * (k + 1)), tuple(Binding(b, None, None) for b in bound), tuple(changes),
+                     f"r.txt:{10 * (k + 1)}") for k, (m, changes, bound) in enumerate(steps)]
+    return PhysicalTrace(tuple(PhysicalObject(i, lab) for i, lab in objects.items()), tuple(initial), tuple(out))
+
+
+ONION_WHOLE, ONION_CHOPPED = node("onion", "whole"), node("onion", "chopped")
+KNIFE, BOARD, BOWL, CUP, SPOON = node("knife"), node("cutting board"), node("bowl"), node("cup"), node("spoon")
+WATER = node("water", "liquid")
+
+
+def kitchen_trace(*steps):
+    objects = {"onion_1": "onion", "knife_1": "knife", "board_1": "cutting board", "bowl_1": "bowl",
+               "cup_1": "cup", "water_1": "water", "spoon_1": "spoon", "salad_1": "salad"}
+    initial = [ObjectState("onion_1", ONION_WHOLE, "board_1", ON), ObjectState("knife_1", KNIFE),
+               ObjectState("board_1", BOARD), ObjectState("bowl_1", BOWL), ObjectState("cup_1", CUP),
+               ObjectState("water_1", WATER, "cup_1", IN), ObjectState("spoon_1", SPOON), ObjectState("salad_1")]
+    return trace(objects, initial, steps)
+
+
+CHOP = ("chop", [ObjectState("onion_1", ONION_CHOPPED, "board_1", ON)], ["onion_1", "knife_1", "board_1"])
+POUR = ("pour", [ObjectState("water_1", WATER, "bowl_1", IN)], ["water_1", "cup_1", "bowl_1"])
+MOVE = ("pick-and-place", [ObjectState("onion_1", ONION_CHOPPED, "bowl_1", IN)], ["onion_1", "bowl_1"])
+MIX = ("mix", [ObjectState("onion_1", ONION_CHOPPED, consumed=True), ObjectState("water_1", WATER, consumed=True),
+               ObjectState("salad_1", node("salad", "mixed"), "bowl_1", IN)],
+       ["onion_1", "water_1", "bowl_1", "spoon_1", "salad_1"])
+
+
+def skills(plan):
+    return [(c.skill, c.objects) for c in plan.calls]
+
+
+def test_chop_picks_the_knife_cuts_and_puts_it_back():
+    plan = decompose(kitchen_trace(CHOP), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("knife_1", "workspace")), ("chop", ("knife_1", "onion_1")),
+                            ("place", ("knife_1", "workspace"))]
+    assert plan.calls[1].holders == ("hand_1", "board_1")  # the knife is in the hand, the onion on the board
+
+
+def test_pour_holds_the_source_and_moves_only_what_was_in_it():
+    plan = decompose(kitchen_trace(POUR), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert [s for s, _ in skills(plan)] == ["pick", "pour", "place"]
+    assert plan.calls[1].objects == ("cup_1", "bowl_1")
+
+
+def test_whole_recipe_chop_move_pour_mix_replays_end_to_end():
+    plan = decompose(kitchen_trace(CHOP, MOVE, POUR, MIX), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert [s.status for s in plan.steps] == [StepStatus.DECOMPOSED] * 4
+    assert [c.macro for c in plan.calls] == sorted(c.macro for c in plan.calls)
+    move = [c.skill for c in plan.calls if c.macro == 1]
+    assert move == ["pick", "put-in"]  # graspable onion: transport, not pour
+    assert "mix" in [c.skill for c in plan.calls if c.macro == 3]
+    assert all(s.source == f"r.txt:{10 * (s.index + 1)}" for s in plan.steps)
+
+
+def test_an_unmapped_motion_stays_abstract_and_later_steps_still_replay():
+    table = parse_table('{"motions": {"pour": "pour", "pick-and-place": "place"}}', "t.json")
+    plan = decompose(kitchen_trace(CHOP, MOVE, POUR), table, shipped_domain())
+    assert [s.status for s in plan.steps] == [StepStatus.ABSTRACT, StepStatus.DECOMPOSED, StepStatus.DECOMPOSED]
+    assert "'chop'" in plan.steps[0].reason and plan.steps[0].calls == ()
+    assert plan.replay.ok and not plan.ok and plan.share == pytest.approx(2 / 3)
+
+
+def test_a_robot_without_pour_fails_the_pour_step_and_bans_every_pouring_motion():
+    robot = Robot.of(without=["pour"])
+    plan = decompose(kitchen_trace(POUR), shipped_table(), shipped_domain(), robot)
+    assert plan.steps[0].status is StepStatus.FAILED and "no pour skill" in plan.steps[0].reason
+    banned = robot_constraints(shipped_table(), robot).of(robot_constraints(shipped_table(), robot).items[0].kind)
+    assert "pour" in banned and "add" in banned and "pick-and-place" not in banned
+
+
+def test_costs_steer_the_micro_plan_and_are_written_into_the_domain():
+    robot = Robot.of(costs={"pick": 5})
+    plan = decompose(kitchen_trace(CHOP), shipped_table(), shipped_domain(), robot)
+    assert plan.ok
+    assert "(increase (total-cost) 5)" in shipped_domain().pruned({"pick"}, robot.cost_table)
+
+
+def test_two_hands_are_named_and_the_goal_empties_both():
+    t = kitchen_trace(CHOP)
+    naming = Naming(t, shipped_domain(), 2)
+    problem = micro_problem(t, 0, "chop", naming, shipped_domain())
+    assert {a.args for a in problem.goal if a.predicate == "hand-empty"} == {("hand_1",), ("hand_2",)}
+    plan = decompose(t, shipped_table(), shipped_domain(), Robot.of(hands=2))
+    assert plan.ok
+
+
+def test_micro_problem_holds_the_step_objects_and_their_holders_only():
+    t = kitchen_trace(CHOP, POUR)
+    problem = micro_problem(t, 1, "pour", Naming(t, shipped_domain(), 1), shipped_domain())
+    assert problem.objects == ("bowl_1", "cup_1", "water_1")
+    assert {"(moves-in sk-pour water_1 bowl_1)", "(target sk-pour bowl_1)"} <= {
+        f"({a.predicate} {' '.join(a.args)})" for a in problem.init}
+    assert not any(a.predicate == "graspable" and a.args == ("water_1",) for a in problem.init)
+    assert problem.text == micro_problem(t, 1, "pour", Naming(t, shipped_domain(), 1), shipped_domain()).text
+
+
+def test_the_replay_rejects_a_skill_whose_precondition_fails():
+    def cheat(domain_text, problem_text):
+        return "solved", ("chop hand_1 knife_1 onion_1",), "", 0.0  # never picked the knife up
+
+    plan = decompose(kitchen_trace(CHOP), shipped_table(), shipped_domain(), solver=cheat)
+    assert not plan.replay.ok and "precondition fails: (holding hand_1 knife_1)" in plan.replay.problems[0]
+
+
+def test_the_replay_rejects_a_plan_that_does_not_reach_the_step_effects():
+    def lazy(domain_text, problem_text):
+        return "solved", ("pick hand_1 knife_1 workspace", "place hand_1 knife_1 workspace"), "", 0.0
+
+    plan = decompose(kitchen_trace(CHOP), shipped_table(), shipped_domain(), solver=lazy)
+    assert not plan.replay.ok
+    assert "after step 1 (r.txt:10)" in plan.replay.problems[0] and "missing (state onion_1" in plan.replay.problems[0]
+
+
+def test_an_impossible_step_is_reported_failed_not_dropped():
+    # the water jumps from the cup into the bowl by "chop": no chop can move it
+    jump = ("chop", [ObjectState("water_1", WATER, "bowl_1", IN), ObjectState("onion_1", ONION_CHOPPED, "board_1", ON)],
+            ["water_1", "onion_1", "bowl_1"])
+    plan = decompose(kitchen_trace(jump), shipped_table(), shipped_domain())
+    assert plan.steps[0].status is StepStatus.FAILED and "micro task" in plan.steps[0].reason
+    assert plan.replay.ok  # kept as an abstract step: the replay jumps to the trace's state
