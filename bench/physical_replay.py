@@ -10,6 +10,12 @@ are inferred by tracking, `planners.instance_physical`) and is replayed by
 disagreement, unit steps after which one holds, plans inconsistent in the
 initial state, and per kind the plans and steps it occurs in; for `instances`,
 which rule placed the objects. `relational` is measured when it is registered.
+
+`--native`: FOON's native task tree of each dish (`retrieve`, method `complete`)
+scheduled over the default kitchen with one object per kitchen item
+(`planners.executable`): how many trees are executable, which labels run short
+first, how many need an intermediate again, and how many objects per kitchen node
+they would need.
 """
 
 from __future__ import annotations
@@ -25,7 +31,9 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal
 from foon2pddl.pddl.registry import PlanDecodeError
 from foon2pddl.pddl.render import render
+from foon2pddl.retrieval.api import retrieve
 from foon2pddl.planners import fd
+from foon2pddl.planners.executable import needed, schedule
 from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
 
@@ -88,6 +96,46 @@ def check_all(subgraphs: Path, encodings: tuple[str, ...], time_limit: float = 6
     return [r for f in expand_paths([subgraphs])[:limit] for r in check_file(f, encodings, time_limit)]
 
 
+@dataclass(frozen=True)
+class NativeRow:
+    """One dish's native tree: units, verdict, the label and step that fail, and the most objects a node needs."""
+
+    file: str
+    units: int
+    verdict: str
+    label: str
+    step: int | None
+    most: int
+
+
+def native_rows(subgraphs: Path, limit: int | None = None) -> list[NativeRow]:
+    rows = []
+    for path in expand_paths([subgraphs])[:limit]:
+        foon, _ = load([path])
+        dishes = sorted(n for n in foon.nodes if n.dish is not None)
+        if not dishes or dishes[0] not in foon.producers:
+            continue
+        kitchen = default_kitchen(foon)
+        found = retrieve(foon, kitchen, resolve_goal(spec_of_node(dishes[0]), foon))
+        if found.tree is None:
+            continue
+        got = schedule(found.tree, kitchen.nodes)
+        most = max((k for _, k in needed(found.tree, kitchen.nodes).drawn), default=0)
+        rows.append(NativeRow(path.name, len(found.tree), str(got.verdict), got.label, got.step, most))
+    return rows
+
+
+def native_summary(rows: list[NativeRow]) -> str:
+    verdicts = collections.Counter(r.verdict for r in rows)
+    short = collections.Counter(r.label for r in rows if r.verdict == "short")
+    return "\n".join([
+        f"native trees: {len(rows)}; " + ", ".join(f"{k} {v}" for k, v in sorted(verdicts.items())),
+        "  runs short first: " + ", ".join(f"{k} {v}" for k, v in short.most_common(8)),
+        f"  trees needing 2+ objects in one kitchen node: {sum(r.most >= 2 for r in rows)}; "
+        f"most in one node: {max((r.most for r in rows), default=0)}",
+    ])
+
+
 def summary(rows: list[Row]) -> str:
     lines = []
     for enc in dict.fromkeys(r.encoding for r in rows):
@@ -122,6 +170,10 @@ def run(ctx: Context) -> None:
                    f"of {len(plans)}; steps after which one holds: {sum(r.affected for r in plans)} of "
                    f"{sum(r.steps for r in plans)}")
     print(summary(rows))
+    native = native_rows(ctx.shared / "foon-subgraphs", limit=10 if ctx.quick else None)
+    ctx.report(AREA, "native trees executable with one object per kitchen item",
+               sum(r.verdict == "executable" for r in native), "trees", f"of {len(native)}")
+    print(native_summary(native))
 
 
 def main() -> None:
@@ -131,7 +183,15 @@ def main() -> None:
     ap.add_argument("--time-limit", type=float, default=60.0, help="seconds per FD run")
     ap.add_argument("--limit", type=int, default=None, help="only the first N files")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per file and encoding")
+    ap.add_argument("--native", action="store_true", help="schedule native trees instead (module doc)")
     args = ap.parse_args()
+    if args.native:
+        native = native_rows(args.shared / "foon-subgraphs", args.limit)
+        if args.verbose:
+            for r in native:
+                print(f"{r.file}\t{r.units}\t{r.verdict}\t{r.label}\t{r.step}\t{r.most}")
+        print(native_summary(native))
+        return
     encodings = tuple(args.encodings or (e for e in WANTED if e in ENCODINGS))
     rows = check_all(args.shared / "foon-subgraphs", encodings, args.time_limit, args.limit)
     if args.verbose:

@@ -17,8 +17,10 @@ lettuce of a salad), as in `instance_physical`.
 Verdicts (`Executability.verdict`): `executable`; `short` (the kitchen runs out:
 no object of the label is in the node, and its kitchen objects there are all
 taken: which label, at which step); `used-up` (the node is no kitchen node and the
-object once made in it has moved on or was consumed: the unit would have to fire
-again); `missing` (no object was ever in that node: the tree is not valid). The
+object once made in it has moved on or was consumed: in the tree's order the unit
+making it would have to fire again; FOON's delete-free order may also turn a mixer
+off before a unit that needs it on, which another order would avoid: the schedule
+keeps the tree's order, as a cook reading the tree would); `missing` (no object was ever in that node: the tree is not valid). The
 schedule stops at the first failing step. `needed` gives the objects per kitchen
 node an unlimited kitchen draws (how many more the tree needs). Inference units
 (`--containment infer`) move no object and are skipped. O(steps x objects).
@@ -78,6 +80,7 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
     drawn: dict[ObjectNode, int] = {}
     per_label: dict[str, int] = {}
     made: set[ObjectNode] = set()
+    left: dict[ObjectNode, int] = {}  # node -> the last step that moved an object out of it
     steps: list[TraceStep] = []
 
     def new_object(label: str, node: ObjectNode | None) -> str:
@@ -117,8 +120,9 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
                               f"the kitchen has {limit} there, none free")
             if role.before in made:
                 return result(Verdict.USED_UP, k, role.label, role.before,
-                              f"step {k + 1} ({unit.motion.label}) needs {what!r} again: the {role.label} made "
-                              "in it has changed or was used up (the unit making it must fire again)")
+                              f"step {k + 1} ({unit.motion.label}) needs {what!r} again, but step "
+                              f"{left[role.before] + 1} moved the {role.label} on (in this order of the units "
+                              "the unit making it must fire again)")
             return result(Verdict.MISSING, k, role.label, role.before,
                           f"step {k + 1} ({unit.motion.label}) needs {what!r}, which no earlier step makes")
         names = [n or new_object(r.label, None) for r, n in zip(roles, names, strict=True)]
@@ -130,6 +134,10 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
                 made.add(role.after)
             elif role.kind is RoleKind.READ_ONLY and set(places(role.before)) & landed:
                 changes.append(ObjectState(oid, role.before, consumed=True))
+            else:
+                continue
+            if role.before is not None:
+                left[role.before] = k
         bindings = tuple(Binding(o, r.before, r.after if r.changes else None) for o, r in zip(names, roles, strict=True))
         steps.append(TraceStep(k, unit, bindings, tuple(changes), step_source(TraceStep(k, unit, (), ()))))
         now.update((c.id, c) for c in changes)
