@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 
 from ..errors import FoonInputError, UsageError
+from ..generalize.network import DEFAULT_NETWORK
 from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS
 from ..io.rates import read_rates
@@ -35,7 +36,7 @@ from .options import (
 
 
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
-               prune: bool, costs: str | None, rates: Path | None, network: str = "reg",
+               prune: bool, costs: str | None, rates: Path | None, network: str = DEFAULT_NETWORK,
                containment: str = "strict", utensils: Path | None = None, instances: tuple[str, ...] = (),
                category_types: bool = False, constraints=((), (), (), ())) -> PlanningTask:
     """Load network, kitchen, goal, rates and constraints (files, without-motion, without, must-use labels)

@@ -140,8 +140,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
         "fingerprint": runner.fingerprint(config.paths),
         "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
         "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
-        "network_sizes": [{"name": v.name.upper(), "units": len(v.foon.units), "nodes": len(v.foon.nodes),
-                           "what": _WHAT[v.name]} for v in views],
+        "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
+                           "what": NETWORKS[v.name].summary} for v in views],
         "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
             f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
         "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",
@@ -185,6 +185,3 @@ def machine() -> str:
         pass
     return f"{model}, {os.cpu_count()} CPUs, Python {platform.python_version()}"
 
-
-_WHAT = {"reg": "the network as read", "exp": "FOON-EXP, Wu-Palmer similarity >= 0.89",
-         "gen": "FOON-GEN, objects replaced by their categories"}

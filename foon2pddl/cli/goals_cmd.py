@@ -6,6 +6,7 @@ import json
 
 import click
 
+from ..generalize.network import DEFAULT_NETWORK, NETWORKS
 from ..io.jsonio import node_to_dict
 from ..model.foon import Foon
 from ..retrieval import Reachability, reachable
@@ -24,10 +25,10 @@ def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
     return rows
 
 
-def format_rows(rows: list[dict], kitchen_source: str, network: str = "reg") -> str:
+def format_rows(rows: list[dict], kitchen_source: str, network: str = DEFAULT_NETWORK) -> str:
     """Text table: the legend and a column header first, then `yes      3  *    node` per goal."""
     made = sum(r["reachable"] for r in rows)
-    net = "" if network == "reg" else f" on FOON-{network.upper()}"
+    net = "" if NETWORKS[network].as_read else f" on FOON-{NETWORKS[network].label}"
     lines = [f"reachable: {made} of {len(rows)} goal candidates can be made from {kitchen_source}{net} "
              "(round = sequential steps needed; * = a recipe's dish)",
              f"{'made':<5}{'round':>5}  {'dish':<5}goal"]

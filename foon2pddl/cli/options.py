@@ -143,10 +143,13 @@ def constraint_inputs(files, without_motions, without, must_use, rates: Path | N
 
 
 def reject_lifted_constraints(network: str, cons) -> None:
-    """The lifted GEN encoding does not take constraints (native `retrieve --network gen` does)."""
-    if network == "gen" and cons.items:
-        raise UsageError("constraints are not supported by the lifted GEN encoding; "
-                         "use --network reg or exp, or `retrieve --network gen`")
+    """A lifted encoding (GEN's) does not take constraints (native `retrieve --network gen` does)."""
+    from ..generalize.network import NETWORKS
+
+    if NETWORKS[network].encoding is not None and cons.items:
+        others = " or ".join(k.name for k in NETWORKS.values() if k.encoding is None)
+        raise UsageError(f"constraints are not supported by the lifted {NETWORKS[network].label} encoding; "
+                         f"use --network {others}, or `retrieve --network {network}`")
 
 
 def emit(text: str, output: Path | None) -> None:
@@ -177,7 +180,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     """
     from dataclasses import replace
 
-    from ..generalize.network import network_view
+    from ..generalize.network import NETWORKS, Substitutes, network_view
     from ..io.inputs import load_kitchen, load_network
     from ..io.kitchen_files import read_utensils
     from ..model.containment import with_containment
@@ -185,7 +188,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
 
     net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
-    if constraints is not None and network != "reg":
+    if constraints is not None and NETWORKS[network].substitutes is not Substitutes.NONE:
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)

@@ -9,6 +9,7 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
+from ..generalize.network import NETWORKS
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
@@ -183,7 +184,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
             reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
             click.echo("reason: " + reason, err=True)
-            if network == "reg" and not cons.items and not makes:
+            if NETWORKS[network].as_read and not cons.items and not makes:
                 networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:

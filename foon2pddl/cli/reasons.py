@@ -57,21 +57,22 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
 def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan."""
     from ..generalize.hints import networks_that_reach
+    from ..generalize.network import NETWORKS
     from ..io.inputs import goal_spec
 
     spec = goal_spec(goal, goal_file)
     if len(net.foon.units) > ANNOUNCE_UNITS:
         click.echo("checking whether FOON-EXP or FOON-GEN makes it ...", err=True)
     kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
-                                confirm={"gen": lambda: _lifted_solves(net, kitchen, spec, level)})
+                                confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
+                                         for k in NETWORKS.values() if k.encoding is not None})
     if kinds:
-        what = {"exp": "FOON-EXP (similar objects stand in)", "gen": "FOON-GEN (object categories)"}
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
-                   + "; ".join(what[k] for k in kinds), err=True)
+                   + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
 
 
-def _lifted_solves(net, kitchen, spec, level: int) -> bool:
-    """Whether `plan --network gen` (the lifted encoding over the concrete network) solves the goal."""
+def _lifted_solves(net, kitchen, spec, level: int, encoding: str) -> bool:
+    """Whether `plan --network gen` (a kind's own `encoding`, lifted, over the concrete network) solves the goal."""
     from ..errors import FoonError
     from ..model.goal import resolve_goal
     from ..planners.solve import plan
@@ -80,7 +81,7 @@ def _lifted_solves(net, kitchen, spec, level: int) -> bool:
     foon = net.at(level)
     try:
         goal = resolve_goal(spec, foon)
-        outcome = plan(foon, kitchen, goal, "gen-lifted", level, time_limit=GEN_HINT_TIME_LIMIT)
+        outcome = plan(foon, kitchen, goal, encoding, level, time_limit=GEN_HINT_TIME_LIMIT)
     except FoonError:
         return False
     return outcome.status == PlanStatus.SOLVED

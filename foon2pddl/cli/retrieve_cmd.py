@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
+from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..model.containment import count_inference, inferred_nodes
 from ..retrieval import FORMATS, METHODS, render_tree, retrieve
@@ -109,8 +110,9 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if view.note:
         click.echo(view.note, err=True)
     done = None
+    kind = NETWORKS[network]
     if cons.items:
-        if network == "reg":
+        if kind.substitutes is Substitutes.NONE:
             done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
         else:
             done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates, limits)
@@ -129,17 +131,17 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
         detail = explain_unreachable(foon, kit.nodes, target) if plain else result.detail
         if plain and done is not None:
-            if network != "reg" and _made_with_banned(net, view, kitchen, level, target):
+            if not kind.as_read and _made_with_banned(net, view, kitchen, level, target):
                 detail = ("the constraints rule out every tree: without them the kitchen makes it (an object "
                           "ban also takes the object out of the kitchen, and no allowed object stands in for it)")
             else:
                 detail = "even without the constraints: " + detail
         click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
-        if plain and network == "reg" and done is None:
+        if plain and kind.as_read and done is None:
             networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
-    if network == "gen" and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
+    if view.index is not None and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
         click.echo(reading, err=True)
     inferred = inferred_nodes(result.tree.units)
     note = f"{method}: {len(result.tree) - count_inference(result.tree.units)} units"
@@ -186,7 +188,7 @@ def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, met
     from ..io.inputs import load_kitchen
 
     index = None
-    if network == "gen":
+    if NETWORKS[network].substitutes is Substitutes.CATEGORY:
         from ..generalize.categories import load_index
 
         index = load_index()

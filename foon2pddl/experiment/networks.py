@@ -11,11 +11,11 @@ the concrete REG network beside it (the lifted GEN planner plans over it).
 from __future__ import annotations
 
 from ..generalize.expand import DEFAULT_THRESHOLD
-from ..generalize.network import NETWORKS, NetworkView, network_view
+from ..generalize.network import DEFAULT_NETWORK, NETWORKS, NetworkView, lifted_networks, network_view
 from ..io.inputs import Network
 from ..model.kitchen import default_kitchen
 
-__all__ = ["NETWORKS", "NetworkView", "build_view"]
+__all__ = ["DEFAULT_NETWORK", "NETWORKS", "NetworkView", "build_view", "lifted_networks"]
 
 
 def build_view(name: str, net: Network, level: int, threshold: float | None = None) -> NetworkView:

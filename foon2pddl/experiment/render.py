@@ -8,7 +8,8 @@ import statistics
 from collections.abc import Iterable, Sequence
 
 from .records import STATUSES, CellStatus, Record
-from .solvers import Role
+from .networks import DEFAULT_NETWORK
+from .solvers import SOLVERS, Role
 from .tables import (
     FD_TREE,
     PAPER_CPU,
@@ -195,14 +196,15 @@ def agreement_matrix(data: ReportData) -> str:
 def lifted_md(data: ReportData) -> str:
     """The lifted GEN planner (concrete trees) against exact REG and GEN retrieval on the same goals."""
     solver = next(iter(data.role(Role.CONCRETE)), None)
-    cells = data.cells("gen", solver) if solver else []
+    lifted = (SOLVERS[solver].networks or (DEFAULT_NETWORK,))[0] if solver else DEFAULT_NETWORK
+    cells = data.cells(lifted, solver) if solver else []
     if not cells or REFERENCE not in data.solvers:
         return ""
     index = data.by_key()
-    reg = [index.get((r.trial, r.goal, "reg", REFERENCE)) for r in cells]
-    gen = [index.get((r.trial, r.goal, "gen", REFERENCE)) for r in cells]
+    reg = [index.get((r.trial, r.goal, DEFAULT_NETWORK, REFERENCE)) for r in cells]
+    gen = [index.get((r.trial, r.goal, lifted, REFERENCE)) for r in cells]
     rows = [["goals asked", len(cells)], [f"{solver} solves", sum(r.solved for r in cells)]]
-    for name, refs in (("REG", reg), ("GEN", gen)):
+    for name, refs in ((net_name(DEFAULT_NETWORK), reg), (net_name(lifted), gen)):
         if all(x is not None for x in refs):
             rows.append([f"{name} {REFERENCE} solves", sum(x.solved for x in refs)])
             rows.append([f"solved by {solver}, not by {name} {REFERENCE}",

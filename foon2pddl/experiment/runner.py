@@ -41,8 +41,6 @@ RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs,
 #: tasks and result messages, ~1 s less on the default protocol's native solvers (21.2 vs 22.2 s, median
 #: of 3); the costliest batches start first, so the tail stays short.
 CHUNK = 50
-#: Batches on larger networks start first (better load balance).
-_NETWORK_ORDER = ("exp", "gen", "reg")
 
 
 @dataclass(frozen=True)
@@ -155,7 +153,7 @@ def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = N
                        for i in range(0, len(goals), size))
 
     def order(b: Batch) -> tuple:
-        n = _NETWORK_ORDER.index(b.network) if b.network in _NETWORK_ORDER else len(_NETWORK_ORDER)
+        n = NETWORKS[b.network].schedule  # batches on larger networks start first (better load balance)
         return (-SOLVERS[b.solver].cost, n, config.points.index(b.point), b.trial.index, b.goals[0])
 
     return sorted(batches, key=order)

@@ -26,7 +26,7 @@ from ..model.foon import ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import validate
 from ..status import cell_status
-from .networks import NetworkView
+from .networks import NETWORKS, NetworkView, lifted_networks
 from .records import CellStatus
 
 #: Default time limit (seconds) of one planner run.
@@ -216,8 +216,8 @@ class _LiftedGen(Prepared):
         from ..planners.solve import plan
 
         concrete = self.view.concrete
-        outcome = plan(concrete, self.kitchen, self.view.concrete_goal(node), "gen-lifted", concrete.level,
-                       category_index=self.view.index, time_limit=self.time_limit)
+        outcome = plan(concrete, self.kitchen, self.view.concrete_goal(node), NETWORKS[self.view.name].encoding,
+                       concrete.level, category_index=self.view.index, time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan)
 
 
@@ -242,7 +242,7 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
                            "validated as FOON trees)",
            lambda s: _FdFresh(s, "instances"), planner=True, cost=6),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
-           _LiftedGen, networks=("gen",), planner=True, role=Role.CONCRETE, cost=4),
+           _LiftedGen, networks=lifted_networks(), planner=True, role=Role.CONCRETE, cost=4),
 )}
 
 

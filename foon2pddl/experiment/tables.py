@@ -19,17 +19,14 @@ import statistics
 from collections import defaultdict
 from dataclasses import dataclass, field
 
+from .networks import DEFAULT_NETWORK, NETWORKS
 from .records import Record
 from .solvers import Role, with_role
 
-PAPER_SUCCESSES = {"reg": (15, 53), "exp": (14, 62), "gen": (66, 87)}
-
-
-PAPER_TIME_MS = {"reg": 2120.0, "exp": 15217.0, "gen": 1167.5}
-
-
+#: The seed paper's success range (percent of goals) and greedy time per trial, per network (`NetworkKind.paper`).
+PAPER_SUCCESSES = {k.name: k.paper.successes for k in NETWORKS.values() if k.paper is not None}
+PAPER_TIME_MS = {k.name: k.paper.time_ms for k in NETWORKS.values() if k.paper is not None}
 PAPER_CPU = "Intel i7-6500U"
-NETWORK_NAMES = {"reg": "REG", "exp": "EXP", "gen": "GEN"}
 UNTIMED_PHASES = frozenset({"validate"})
 #: The solver Table 2 counts with and the planner that must agree with it.
 REFERENCE = with_role(Role.REFERENCE)[0]
@@ -65,7 +62,8 @@ class ReportData:
 
 
 def net_name(network: str) -> str:
-    return NETWORK_NAMES.get(network, network)
+    """A network's label in reports (`NetworkKind.label`: REG, EXP, GEN)."""
+    return NETWORKS[network].label if network in NETWORKS else network
 
 
 def solve_time(record: Record) -> float:
@@ -175,7 +173,7 @@ def quality_rows(data: ReportData) -> list[QualityRow]:
     for n in data.networks:
         for s in data.solvers:
             # trees of concrete units (lifted GEN) are compared with REG's optimum, the others with their network's
-            base = "reg" if s in concrete else n
+            base = DEFAULT_NETWORK if s in concrete else n
             pairs = []
             for r in data.cells(n, s):
                 if not r.solved or r.units is None:

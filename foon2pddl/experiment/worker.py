@@ -29,7 +29,7 @@ from pathlib import Path
 from ..errors import FoonError, FoonInputError
 from ..io.files import expand_paths
 from ..io.inputs import Network, example_path, load_network
-from .networks import NetworkView, build_view
+from .networks import DEFAULT_NETWORK, NetworkView, build_view
 from .params import Point, label, network_hooks, network_key, protocol_at, transform_kitchen, transform_network
 from .protocol import Draw, Protocol, Trial, draw
 from .records import CellStatus, Record
@@ -149,7 +149,7 @@ def draw_at(paths: tuple[str, ...], protocol: Protocol, point: Point) -> Draw:
     draws = _CACHE["draws"]
     if key not in draws:
         unhooked = tuple((n, v) for n, v in point if (n, v) not in network_hooks(point))
-        draws[key] = draw(view(paths, protocol, unhooked, "reg").foon, at)
+        draws[key] = draw(view(paths, protocol, unhooked, DEFAULT_NETWORK).foon, at)
     return draws[key]
 
 

@@ -1,4 +1,4 @@
-"""The registry of networks (REG, EXP, GEN) and their views: which network is searched, kitchen and goal to match.
+"""The registry of network kinds (REG, EXP, GEN) and their views: which network is searched, kitchen and goal to match.
 
 - `reg`: the network as read;
 - `exp`: FOON-EXP over the network's and the kitchen's object labels (`expand.py`);
@@ -8,14 +8,18 @@
   encoding instead (`pddl.encode_lifted`, `NetworkKind.encoding`), whose plans
   name concrete kitchen objects.
 
-The CLI's `--network` choices, the experiment's networks and the retrieve, compile
-and plan commands all read `NETWORKS`.
+Each kind is a `NetworkKind` entry of `NETWORKS` with its `build` callable, its label
+and what the CLI's hints, constraints and the experiment need to know of it; the CLI's
+`--network` choices, the experiment's networks and the retrieve, compile and plan
+commands all read `NETWORKS`, and no other module names a kind. Adding a kind is one
+`register(NetworkKind(...))` (docs/extending.md).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from enum import StrEnum
 from pathlib import Path
 
 from ..errors import UsageError
@@ -30,29 +34,8 @@ from .expand import DEFAULT_THRESHOLD, expand
 from .modes import DEFAULT_MODE
 from .substitute import substitute_node
 
-__all__ = ["NETWORKS", "NetworkKind", "NetworkView", "network_view"]
-
-
-@dataclass(frozen=True)
-class NetworkKind:
-    """A registered network kind: its name, what it is, and the encoding PDDL commands use for it.
-
-    `encoding`: compile and plan use this encoding over the concrete (REG) network
-    instead of compiling the view (None: the user's choice over the view).
-    """
-
-    name: str
-    description: str
-    encoding: str | None = None
-
-
-#: Network name -> kind, the default first.
-NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
-    NetworkKind("reg", "the network as read"),
-    NetworkKind("exp", f"FOON-EXP (similar objects, threshold {DEFAULT_THRESHOLD})"),
-    NetworkKind("gen", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen objects)",
-                encoding="gen-lifted"),
-)}
+__all__ = ["DEFAULT_NETWORK", "NETWORKS", "NetworkKind", "NetworkView", "PaperFigures", "Substitutes", "ViewOptions",
+           "get_network", "lifted_networks", "network_view", "register"]
 
 
 def _same(x):
@@ -104,25 +87,136 @@ class NetworkView:
         return Goal(spec_of_node(node), (node,), self.concrete.level)
 
 
+class Substitutes(StrEnum):
+    """What stands in for an object constraints ban: nothing (the network as read), the most similar
+    allowed object (EXP), an allowed member of its category (GEN)."""
+
+    NONE = "none"
+    SIMILAR = "similar"
+    CATEGORY = "category"
+
+
+@dataclass(frozen=True)
+class ViewOptions:
+    """How a kind builds its network: EXP's similarity `threshold`, `max_units` and `similarity` mode,
+    GEN's category `index` (None: the shipped one)."""
+
+    threshold: float = DEFAULT_THRESHOLD
+    max_units: int | None = None
+    index: CategoryIndex | None = None
+    similarity: str = DEFAULT_MODE
+
+
+@dataclass(frozen=True)
+class PaperFigures:
+    """The seed paper's figures for a network: success range (percent of goals) and greedy ms per trial."""
+
+    successes: tuple[int, int]
+    time_ms: float
+
+
+@dataclass(frozen=True)
+class NetworkKind:
+    """A registered network kind.
+
+    `build(net, level, kitchen, options)` gives its `NetworkView`; `label` is its name in
+    reports (REG); `description` the `--network` help, `summary` the experiment report's.
+    `encoding`: compile and plan use this encoding over the concrete (REG) network instead
+    of compiling the view (None: the user's choice over the view). `as_read`: the network
+    as read (the default; other kinds are hinted when it cannot make a goal). `hint`: what
+    a hint says the kind offers ("" never hinted), built for a hint only on networks of at
+    most `hint_max_units` units; `slow_step(net, kitchen)`: a message to show before a
+    build that will take seconds (None: it will not). `substitutes`: what stands in for
+    banned objects. `schedule`: experiment batches on kinds with a lower value start first.
+    """
+
+    name: str
+    label: str
+    description: str
+    build: Callable[[Network, int, Kitchen, ViewOptions], NetworkView]
+    summary: str = ""
+    encoding: str | None = None
+    as_read: bool = False
+    hint: str = ""
+    hint_max_units: int = 0
+    slow_step: Callable[[Network, Kitchen], str | None] | None = None
+    substitutes: Substitutes = Substitutes.NONE
+    paper: PaperFigures | None = None
+    schedule: int = 0
+
+
+def _reg(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
+    reg = net.at(level)
+    return NetworkView(DEFAULT_NETWORK, reg, kitchen, _same, reg)
+
+
+def _exp(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
+    e = expand(net.foon, threshold=options.threshold, max_units=options.max_units, kitchen=kitchen,
+               similarity=options.similarity)
+    note = f"{e.title()}: {e.original_units} -> {len(e.foon.units)} units"
+    return NetworkView(_EXP, project(e.foon, level), kitchen, _same, net.at(level), note=note)
+
+
+def _exp_slow_step(net: Network, kitchen: Kitchen) -> str | None:
+    from .expand import vocabulary
+    from .similarity import matrix_is_cached
+
+    if matrix_is_cached(vocabulary(net.foon, kitchen)):
+        return None
+    return "checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)"
+
+
+def _gen(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
+    ix = options.index or load_index()
+    c = compress(net.foon, ix)
+    note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units"
+    labels = {x for n in kitchen.nodes for x in (n.label, *(y for s in n.states for y in (s.related, *s.ingredients)))}
+    mapping = category_map(sorted(labels - {""}), ix)
+    return NetworkView(_GEN, project(c.foon, level), abstract_kitchen(kitchen, ix),
+                       lambda spec: abstract_goal(spec, ix), net.at(level), ix, note,
+                       lambda node: substitute_node(node, mapping))
+
+
+DEFAULT_NETWORK, _EXP, _GEN = "reg", "exp", "gen"
+
+#: Network name -> kind, the default first.
+NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
+    NetworkKind(DEFAULT_NETWORK, "REG", "the network as read", _reg, "the network as read", as_read=True,
+                paper=PaperFigures((15, 53), 2120.0), schedule=2),
+    NetworkKind(_EXP, "EXP", f"FOON-EXP (similar objects, threshold {DEFAULT_THRESHOLD})", _exp,
+                "FOON-EXP, Wu-Palmer similarity >= 0.89", hint="FOON-EXP (similar objects stand in)",
+                hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
+                paper=PaperFigures((14, 62), 15217.0), schedule=0),
+    NetworkKind(_GEN, "GEN", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen "
+                "objects)", _gen, "FOON-GEN, objects replaced by their categories", encoding="gen-lifted",
+                hint="FOON-GEN (object categories)", hint_max_units=2500, substitutes=Substitutes.CATEGORY,
+                paper=PaperFigures((66, 87), 1167.5), schedule=1),
+)}
+
+
+def register(kind: NetworkKind) -> NetworkKind:
+    """Add (or replace) a network kind; returns it."""
+    NETWORKS[kind.name] = kind
+    return kind
+
+
+def get_network(name: str) -> NetworkKind:
+    """The kind called `name` (UsageError listing the known ones)."""
+    try:
+        return NETWORKS[name]
+    except KeyError:
+        raise UsageError(f"network must be one of {', '.join(NETWORKS)}, not {name!r}") from None
+
+
+def lifted_networks() -> tuple[str, ...]:
+    """The kinds whose planning uses their own (lifted) encoding over the concrete network."""
+    return tuple(k.name for k in NETWORKS.values() if k.encoding is not None)
+
+
 def network_view(net: Network, kind: str, level: int, kitchen: Kitchen, *, threshold: float = DEFAULT_THRESHOLD,
                  max_units: int | None = None, index: CategoryIndex | None = None,
                  similarity: str = DEFAULT_MODE) -> NetworkView:
-    """REG, EXP or GEN of `net` at `level`, with `kitchen` (at `level`) and the goal mapped to match;
-    EXP with the `similarity` mode (`modes.py`)."""
+    """The view of kind `kind` (REG, EXP, GEN, ...) of `net` at `level`, with `kitchen` (at `level`) and the goal
+    mapped to match; EXP with the `similarity` mode (`modes.py`)."""
     check_level(level)
-    reg = net.at(level)
-    if kind == "reg":
-        return NetworkView(kind, reg, kitchen, _same, reg)
-    if kind == "exp":
-        e = expand(net.foon, threshold=threshold, max_units=max_units, kitchen=kitchen, similarity=similarity)
-        note = f"{e.title()}: {e.original_units} -> {len(e.foon.units)} units"
-        return NetworkView(kind, project(e.foon, level), kitchen, _same, reg, note=note)
-    if kind == "gen":
-        ix = index or load_index()
-        c = compress(net.foon, ix)
-        note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units"
-        labels = {x for n in kitchen.nodes for x in (n.label, *(y for s in n.states for y in (s.related, *s.ingredients)))}
-        mapping = category_map(sorted(labels - {""}), ix)
-        return NetworkView(kind, project(c.foon, level), abstract_kitchen(kitchen, ix),
-                           lambda spec: abstract_goal(spec, ix), reg, ix, note, lambda node: substitute_node(node, mapping))
-    raise UsageError(f"network must be one of {', '.join(NETWORKS)}, not {kind!r}")
+    return get_network(kind).build(net, level, kitchen, ViewOptions(threshold, max_units, index, similarity))

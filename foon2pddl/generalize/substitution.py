@@ -112,9 +112,13 @@ def substitutions(tree: TaskTree, constraints: Constraints, sim: Callable[[str, 
 def retrieve_substituted(kind: str, foon: Foon, kitchen: Kitchen, goal: Goal, constraints: Constraints,
                          method: str = "complete", *, concrete_labels: Iterable[str] = (),
                          sim: Callable[[str, str], float] | None = None, index=None, rates=None, **limits):
-    """Retrieval under `constraints` on the EXP (`kind` exp) or GEN (`kind` gen, `index` its categories)
-    network, preferring the most similar substitutes; (ConstrainedRetrieval, substitutions made)."""
+    """Retrieval under `constraints` on the network of `kind` (EXP: the most similar allowed objects are
+    preferred; GEN: `index` its categories, substitutes from the same category), ranked by similarity;
+    (ConstrainedRetrieval, substitutions made)."""
     from ..retrieval.constrained import retrieve_constrained
+    from .network import NETWORKS, Substitutes
+
+    substitutes = NETWORKS[kind].substitutes
 
     if not banned_labels(constraints):
         return retrieve_constrained(foon, kitchen, goal, constraints, method, rates=rates, **limits), ()
@@ -122,12 +126,12 @@ def retrieve_substituted(kind: str, foon: Foon, kitchen: Kitchen, goal: Goal, co
         from .similarity import LabelSimilarity
 
         sim = LabelSimilarity()
-    if kind == "exp":
+    if substitutes is Substitutes.SIMILAR:
         foon = prefer_most_similar(foon, constraints, sim, lambda f: retrieve_constrained(
             f, kitchen, goal, constraints, "complete").result.tree is not None)
     done = retrieve_constrained(foon, kitchen, goal, constraints, method, rates=rates, **limits)
     if done.result.tree is None:
         return done, ()
-    category_of = index.choose if kind == "gen" and index is not None else None
+    category_of = index.choose if substitutes is Substitutes.CATEGORY and index is not None else None
     return done, substitutions(done.result.tree, constraints, sim, kitchen_labels=concrete_labels,
                                category_of=category_of)
