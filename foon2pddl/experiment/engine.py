@@ -63,7 +63,10 @@ def connect(jobs: int, scheduler: str | None):
 
     # Dask's own log lines (a nanny interrupted while starting, a scratch directory already removed with the
     # command's private TMPDIR) are noise here: lost tasks and unreachable schedulers are reported as such.
+    # So is asyncio's "Task exception was never retrieved" for a nanny whose worker a signal ended while it
+    # started (the run reports the interrupt itself, exit 130/143).
     logging.getLogger("distributed").setLevel(logging.CRITICAL)
+    logging.getLogger("asyncio").setLevel(logging.CRITICAL)
     if scheduler is not None:
         try:
             return distributed.Client(scheduler, timeout="20s"), None
