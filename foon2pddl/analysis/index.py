@@ -14,6 +14,7 @@ from collections.abc import Callable, Hashable, Iterable
 from dataclasses import dataclass, field
 from typing import TypeVar
 
+from ..model.bulk import bulk
 from ..model.foon import Foon, ObjectNode
 
 T = TypeVar("T")
@@ -74,6 +75,7 @@ def node_key(node: ObjectNode) -> tuple:
     return (node.label, tuple((s.label, s.related, s.ingredients) for s in node.states))
 
 
+@bulk
 def build_index(foon: Foon) -> FoonIndex:
     """Build the index (linear after one sort of nodes and one of units)."""
     nodes = tuple(sorted(foon.nodes, key=node_key))

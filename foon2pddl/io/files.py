@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import gc
-from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from collections.abc import Iterable
 from pathlib import Path
 
 from ..errors import FoonSyntaxError, ParseWarning
+from ..model.bulk import full_gc_paused
 from ..model.foon import Foon
 from ..model.merge import merge
 from .parser import ParseResult, parse_file
@@ -39,24 +38,6 @@ def read_network(path: Path) -> ParseResult:
 
         return ParseResult(read_json(path))
     return parse_file(path)
-
-
-@contextmanager
-def full_gc_paused() -> Iterator[None]:
-    """Hold back the cyclic garbage collector's full collections while building a network.
-
-    Loading allocates many long-lived objects and no reference cycles. Full
-    collections would re-scan the growing heap again and again (10 relabelled
-    copies of the subgraphs took ~19x the time of one copy); disabling the
-    collector instead leaves one huge young generation to scan afterwards, which
-    is slow too. Young collections keep running; the thresholds are restored after.
-    """
-    thresholds = gc.get_threshold()
-    gc.set_threshold(thresholds[0], thresholds[1], 1 << 30)
-    try:
-        yield
-    finally:
-        gc.set_threshold(*thresholds)
 
 
 def load(paths: Iterable[str | Path], level: int = 3) -> tuple[Foon, tuple[ParseWarning, ...]]:

@@ -13,6 +13,8 @@ from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
+from .bulk import bulk
+
 _WS = re.compile(r"\s+")
 
 
@@ -189,6 +191,7 @@ class Foon:
         return len(self.units)
 
     @cached_property
+    @bulk
     def nodes(self) -> tuple[ObjectNode, ...]:
         """Every distinct object node, in order of first appearance."""
         seen: dict[ObjectNode, None] = {}
@@ -200,11 +203,13 @@ class Foon:
         return tuple(seen)
 
     @cached_property
+    @bulk
     def producers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that output it."""
         return _index(self.units, lambda u: u.outputs)
 
     @cached_property
+    @bulk
     def produced_by_label(self) -> dict[str, tuple[ObjectNode, ...]]:
         """Object label -> the produced nodes with that label, in `producers` order (goal lookup by label)."""
         acc: dict[str, list[ObjectNode]] = {}
@@ -213,6 +218,7 @@ class Foon:
         return {k: tuple(v) for k, v in acc.items()}
 
     @cached_property
+    @bulk
     def consumers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that take it as input."""
         return _index(self.units, lambda u: u.inputs)

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from .bulk import bulk
 from .foon import Foon, ObjectNode
 from .levels import project_node
 
@@ -60,12 +61,14 @@ class Kitchen:
         return sorted(self.nodes)
 
 
+@bulk
 def starting_nodes(foon: Foon) -> frozenset[ObjectNode]:
     """Input nodes that no unit creates (a unit that passes a node through unchanged does not create it)."""
     created = {n for u in foon.units for n in u.outputs if n not in u.inputs}
     return frozenset(n for u in foon.units for n in u.inputs if n not in created)
 
 
+@bulk
 def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
     """Starting nodes plus every input node whose states are all base states."""
     base = frozenset(base_states)

@@ -8,6 +8,7 @@ network, kitchen and goal to one level first and then compares nodes with `==`.
 from __future__ import annotations
 
 from ..errors import UsageError
+from .bulk import bulk
 from .foon import Foon, FunctionalUnit, ObjectNode, State, dedupe_units
 
 LEVELS = (1, 2, 3)
@@ -44,6 +45,7 @@ def project_unit(unit: FunctionalUnit, level: int, node=None) -> FunctionalUnit:
     return FunctionalUnit(ins, unit.motion, outs, unit.sources)
 
 
+@bulk
 def project(foon: Foon, level: int) -> Foon:
     """The network at `level` with units that became identical merged (provenance joined)."""
 
