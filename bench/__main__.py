@@ -9,8 +9,8 @@ from pathlib import Path
 from .harness import Context
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
-AREAS = ["foundation", "pddl_compile", "planning", "retrieval", "batch", "constraints", "generalize", "experiment",
-         "reliability", "physical_replay"]
+AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
+         "generalize", "experiment", "reliability", "physical_replay"]
 
 
 def main() -> None:

@@ -185,20 +185,40 @@ class _FdReuse(Prepared):
 
 
 class _FdFresh(Prepared):
-    """Fast Downward on one encoding, compiled (pruned) and translated for each goal."""
+    """Fast Downward on one encoding, compiled (pruned) and translated for each goal.
+
+    For an encoding whose valid plans are FOON task trees (`instances`), a goal that no
+    task tree reaches from the kitchen has no plan either: the trial's reachability
+    fixpoint (built once, the `setup`) answers it `unsolvable` without compiling or
+    translating, as `fd-tree`'s shared translation answers it without searching.
+    """
 
     def __init__(self, setting: Setting, encoding: str) -> None:
+        from ..analysis.reachability import reachable
+        from ..pddl.compile import ENCODINGS
+
+        t0 = time.perf_counter()
         self.view = setting.view
         self.kitchen = setting.view.map_kitchen(setting.kitchen)
         self.encoding = encoding
         self.time_limit = setting.time_limit
+        self.reach = None
+        if ENCODINGS[encoding].foon_semantics:
+            foon = self.view.foon
+            self.reach = reachable(foon, self.kitchen.project(foon.level).nodes)
+        self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
         from ..planners.solve import plan
 
         foon = self.view.foon
-        outcome = plan(foon, self.kitchen, self.view.goal_of(node), self.encoding, foon.level,
-                       time_limit=self.time_limit)
+        goal = self.view.goal_of(node)
+        if self.reach is not None:
+            t0 = time.perf_counter()
+            if not any(self.reach.can_make(c) for c in goal.candidates):
+                return Outcome(CellStatus.UNSOLVABLE, "no task tree reaches the goal from the kitchen, so no plan "
+                               f"of the {self.encoding} encoding does", {"reachability": time.perf_counter() - t0})
+        outcome = plan(foon, self.kitchen, goal, self.encoding, foon.level, time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan)
 
 
