@@ -48,6 +48,10 @@ KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
 })
 
 
+#: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
+PREPARED: frozenset[str] = frozenset({"dish.n.02", "baked_goods.n.01", "beverage.n.01"})
+
+
 def _data(name: str) -> Path:
     return Path(str(resources.files("foon2pddl") / "generalize" / "data" / name))
 
@@ -139,6 +143,19 @@ class CookSimilarity:
             self._cover = counts
         return self._cover.get(ancestor, 0) / len(self.vocabulary)
 
+    def variant(self, r: Resolution) -> bool:
+        """Whether a label known by its head noun is a recipe's preparation (rule 4): a food whose head is a
+        prepared food (`PREPARED`), or whose modifier ends in a food (garlic-parmesan chicken) or a past
+        participle (barbecued ribs)."""
+        if not r.senses or not all(k == "noun.food" for k in r.lexnames):
+            return False
+        last = (r.modifier or "").split()[-1:]
+        if last and last[0].endswith("ed") and self.reader.morphy(last[0], "v") not in (None, last[0]):
+            return True
+        if last and any(s.lexname() == "noun.food" for s in self.reader.synsets(last[0], "n")):
+            return True
+        return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
+
     def __call__(self, a: str, b: str) -> float:
         return self.explain(a, b).similarity
 
@@ -163,6 +180,8 @@ class CookSimilarity:
             return Evidence(0.0, rejected="unknown")
         if ra.modifier is None and rb.modifier is None:
             return self._best(ra.senses, rb.senses, 0)
+        if (ra.modifier is None) != (rb.modifier is None) and self.variant(ra if ra.modifier is not None else rb):
+            return Evidence(0.0, rejected="variant")
         if ra.modifier is not None and rb.modifier is not None:
             heads = self._best(ra.senses, rb.senses, 0)
             mod = self.explain(ra.modifier, rb.modifier)

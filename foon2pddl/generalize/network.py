@@ -159,9 +159,9 @@ def _exp(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> Ne
 
 def _exp_slow_step(net: Network, kitchen: Kitchen) -> str | None:
     from .expand import vocabulary
-    from .similarity import matrix_is_cached
+    from .modes import mode_matrix_is_cached
 
-    if matrix_is_cached(vocabulary(net.foon, kitchen)):
+    if mode_matrix_is_cached(vocabulary(net.foon, kitchen)):
         return None
     return "checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)"
 

@@ -9,7 +9,7 @@
 - `--network gen`: the kitchen loses its banned objects *before* it is abstracted to
   categories, so a category in the tree is grounded by an allowed member.
 `substitutions` says, for a found tree, which substitute replaced which banned label
-and how similar they are (Wu-Palmer, `similarity.LabelSimilarity`).
+and how similar they are (the default similarity mode, `modes.py`).
 """
 
 from __future__ import annotations
@@ -123,9 +123,9 @@ def retrieve_substituted(kind: str, foon: Foon, kitchen: Kitchen, goal: Goal, co
     if not banned_labels(constraints):
         return retrieve_constrained(foon, kitchen, goal, constraints, method, rates=rates, **limits), ()
     if sim is None:
-        from .similarity import LabelSimilarity
+        from .modes import make_similarity
 
-        sim = LabelSimilarity()
+        sim = make_similarity()  # the default mode (cook)
     if substitutes is Substitutes.SIMILAR:
         foon = prefer_most_similar(foon, constraints, sim, lambda f: retrieve_constrained(
             f, kitchen, goal, constraints, "complete").result.tree is not None)

@@ -1,0 +1,91 @@
+"""Precision and recall of good substitution pairs per similarity mode, on the labelled pairs.
+
+The pairs (`bench/similarity_pairs.tsv`, labelled per `bench/similarity_rubric.md`)
+come from the shared subgraphs. A mode accepts a pair when its similarity is at
+least the FOON-EXP threshold (0.89). Per mode and split (`independent`, `tune`, all):
+precision = good accepted / accepted, recall = good accepted / good, each with a
+Wilson 95 % score interval. The cook mode's breadth vocabulary is the shipped
+reference vocabulary (the shared subgraphs' labels), so no network is read.
+Also reported per mode: the share of accepted pairs labelled bad.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
+from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity
+
+from .harness import Context
+
+AREA = "similarity"
+PAIRS = Path(__file__).with_name("similarity_pairs.tsv")
+SPLITS = ("independent", "tune", "all")
+Z95 = 1.959963984540054
+
+
+@dataclass(frozen=True)
+class Pair:
+    a: str
+    b: str
+    label: str  # good | marginal | bad
+    source: str
+    split: str
+
+
+def read_pairs(path: Path = PAIRS) -> list[Pair]:
+    with open(path, encoding="utf-8", newline="") as fh:
+        return [Pair(r["label_a"], r["label_b"], r["label"], r["source"], r["split"])
+                for r in csv.DictReader(fh, delimiter="\t")]
+
+
+def wilson(successes: int, n: int, z: float = Z95) -> tuple[float, float]:
+    """Wilson score interval of a binomial proportion (0..1 when n is 0)."""
+    if n == 0:
+        return 0.0, 1.0
+    p = successes / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+@dataclass(frozen=True)
+class Scores:
+    accepted: int
+    good_accepted: int
+    good: int
+    bad_accepted: int
+
+    def precision(self) -> tuple[float, float, float]:
+        p = self.good_accepted / self.accepted if self.accepted else 0.0
+        return (p, *wilson(self.good_accepted, self.accepted))
+
+    def recall(self) -> tuple[float, float, float]:
+        r = self.good_accepted / self.good if self.good else 0.0
+        return (r, *wilson(self.good_accepted, self.good))
+
+
+def score(pairs: list[Pair], accepts) -> Scores:
+    """Counts over `pairs` for the predicate `accepts(a, b)`."""
+    acc = [p for p in pairs if accepts(p.a, p.b)]
+    return Scores(len(acc), sum(p.label == "good" for p in acc), sum(p.label == "good" for p in pairs),
+                  sum(p.label == "bad" for p in acc))
+
+
+def run(ctx: Context) -> None:
+    pairs = read_pairs()
+    reader = None
+    for mode in SIMILARITY_MODES:
+        sim = make_similarity(mode, reader=reader)
+        reader = sim.reader
+        for split in SPLITS:
+            chosen = [p for p in pairs if split == "all" or p.split == split]
+            s = score(chosen, lambda a, b: sim(a, b) >= DEFAULT_THRESHOLD)
+            p, plo, phi = s.precision()
+            r, rlo, rhi = s.recall()
+            note = (f"{len(chosen)} pairs, {s.good} good, {s.accepted} accepted ({s.bad_accepted} bad)")
+            ctx.report(AREA, f"{mode} precision ({split})", p, "", f"95 % CI {plo:.2f}-{phi:.2f}; {note}")
+            ctx.report(AREA, f"{mode} recall ({split})", r, "", f"95 % CI {rlo:.2f}-{rhi:.2f}")

@@ -1,0 +1,133 @@
+"""The cook's similarity (default) against the paper's (kept byte-identical), and `expand --pairs`."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.errors import FoonInputError
+from foon2pddl.generalize.cook import DEFAULT_BREADTH, CookSimilarity, cook_overrides, reference_vocabulary
+from foon2pddl.generalize.expand import expand, vocabulary
+from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity, mode_matrix
+from foon2pddl.generalize.senses import parse_overrides
+from foon2pddl.generalize.wup import WupTable
+
+#: sha256 of `foon2pddl expand` on the example network before the cook mode existed (the paper's rule).
+PAPER_EXAMPLE_EXPAND = "651d5273a2c5aa7b76d1ebfb76e67e61c7e944f3a26b106a02ba34fce7197854"
+
+
+@pytest.fixture(scope="module")
+def cook(label_similarity):
+    return CookSimilarity(label_similarity.reader)
+
+
+def test_registry_default_is_cook_and_paper_is_kept():
+    assert list(SIMILARITY_MODES) == ["cook", "paper"]
+
+
+def test_paper_mode_output_is_byte_identical(tmp_path):
+    out = tmp_path / "exp.foon"
+    r = CliRunner().invoke(main, ["expand", "--similarity", "paper", "-o", str(out)])
+    assert r.exit_code == 0, r.stderr
+    assert hashlib.sha256(out.read_bytes()).hexdigest() == PAPER_EXAMPLE_EXPAND
+    assert out.read_text().startswith("# FOON-EXP (threshold 0.89): 101 units + 181 expanded, 34 label")
+
+
+def test_floors(cook, label_similarity):
+    lemon = cook.explain("lemon", "lime")
+    assert lemon.similarity >= 0.89 and (lemon.sense_a, lemon.sense_b) == ("lemon.n.01", "lime.n.06")
+    assert cook.reader.synset(lemon.sense_a).lexname() == "noun.food" == cook.reader.synset(lemon.sense_b).lexname()
+    for a, b in [("cilantro", "banana"), ("carrot", "strawberry"), ("grater", "masher"), ("baking tray", "pot"),
+                 ("container", "spoon")]:
+        assert label_similarity(a, b) >= 0.89  # what the paper's rule accepts
+        assert cook(a, b) == 0.0, (a, b)
+        assert cook.explain(a, b).rejected == "broad"
+
+
+def test_deepest_common_ancestor_differs_from_nltk(label_similarity):
+    wn = label_similarity.reader
+    table = WupTable(wn)
+    lemon, lime = wn.synset("lemon.n.01"), wn.synset("lime.n.06")
+    assert lemon.wup_similarity(lime) == pytest.approx(0.75)  # NLTK: LCS by min_depth
+    assert table.wup("lemon.n.01", "lime.n.06") == pytest.approx(0.75)
+    lcs, depth, la, lb = table.deepest("lemon.n.01", "lime.n.06")
+    assert (lcs, la, lb) == ("citrus.n.01", 1, 1) and depth == wn.synset("citrus.n.01").max_depth() + 1
+    assert table.subsumer("lemon.n.01", "lime.n.06") != "citrus.n.01"
+    # Independent oracle: the deepest common hypernym by NLTK's own max_depth.
+    common = set(lemon.common_hypernyms(lime))
+    assert max(common, key=lambda s: (s.max_depth(), s.name())).name() == "citrus.n.01"
+    assert table.deepest("lime.n.06", "lemon.n.01")[0] == lcs  # symmetric
+
+
+def test_breadth_is_the_share_of_the_vocabulary_under_the_ancestor(cook):
+    vocab = cook.vocabulary
+    under = [x for x in vocab if any("citrus.n.01" in cook._wup.ancestors(s) for s in cook.resolution(x).senses)]
+    assert cook.coverage("citrus.n.01") == len(under) / len(vocab)
+    assert {"lemon", "lime", "orange"} <= set(under)
+    assert cook.coverage("kitchen_utensil.n.01") > DEFAULT_BREADTH
+
+
+def test_breadth_threshold_is_a_parameter(label_similarity):
+    loose = CookSimilarity(label_similarity.reader, breadth=1.0)
+    assert loose("grater", "masher") == pytest.approx(0.9)
+    strict = CookSimilarity(label_similarity.reader, breadth=0.001)
+    assert strict("lemon", "lime") == 0.0
+
+
+def test_role_senses(cook):
+    assert cook.resolution("banana").senses == ("banana.n.02",)  # the fruit, not the plant
+    assert cook.resolution("cilantro").senses == ("coriander.n.03",)
+    assert cook.resolution("mint").senses == ("mint.n.04",)  # override: the herb, not the candy
+    assert all(cook.reader.synset(s).lexname() == "noun.artifact" for s in cook.resolution("skimmer").senses)
+    assert "toilet.n.02" not in cook.resolution("pot").senses  # not a kitchen artifact
+
+
+def test_variants_are_not_substitutes(cook):
+    assert cook.explain("soup", "tomato soup").rejected == "variant"
+    assert cook.explain("chicken", "garlic-parmesan chicken").rejected == "variant"
+    assert cook("grill spatula", "spatula") >= 0.89  # a tool compound keeps the rule
+    assert cook("salt", "sea salt") >= 0.89
+
+
+def test_values_are_symmetric_and_bounded(cook):
+    words = ["lemon", "lime", "pot", "saucepan", "bowl", "mixing bowl", "sugar", "honey", "greek salad", "salad"]
+    for a in words:
+        for b in words:
+            v = cook(a, b)
+            assert 0.0 <= v <= 1.0 and v == cook(b, a)
+            assert (v == 1.0) == (a == b) or cook.resolution(a).senses == cook.resolution(b).senses
+
+
+def test_forbidden_pairs_and_user_extension(label_similarity):
+    assert cook_overrides().forbids("food processor", "oven")
+    extra = parse_overrides(json.dumps({"forbidden": [["lemon", "lime"]]}), "mine.json")
+    sim = make_similarity("cook", reader=label_similarity.reader, extra=extra)
+    assert sim("lemon", "lime") == 0.0 and sim.explain("lemon", "lime").rejected == "forbidden"
+    with pytest.raises(FoonInputError, match="forbidden"):
+        parse_overrides('{"forbidden": [["a", "b", "c"]]}', "bad.json")
+
+
+def test_matrix_is_cached_per_mode(tmp_path, monkeypatch, example, label_similarity):
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path))
+    labels = ["lemon", "lime", "knife", "banana", "cilantro"]
+    cook_m = mode_matrix(labels, "cook")
+    paper_m = mode_matrix(labels, "paper")
+    assert cook_m.key != paper_m.key
+    assert cook_m("banana", "cilantro") == 0.0 and paper_m("banana", "cilantro") == pytest.approx(0.9)
+    assert mode_matrix(labels, "cook").values.tolist() == cook_m.values.tolist()  # from the cache
+
+
+def test_cook_expansion_is_smaller_and_keeps_lemon_lime(example):
+    from foon2pddl.io.inputs import load_kitchen
+
+    kit = load_kitchen(None, example, 3)
+    e = expand(example.foon, kitchen=kit)
+    assert e.similarity == "cook" and ("lemon", "lime") in e.substitutions
+    paper = expand(example.foon, kitchen=kit, similarity="paper")
+    assert len(e.foon.units) < len(paper.foon.units)
+    assert len(e.substitutions) < len(paper.substitutions)
+    assert reference_vocabulary() and set(vocabulary(example.foon, kit)) <= set(reference_vocabulary())
