@@ -31,11 +31,11 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal
 from foon2pddl.pddl.registry import PlanDecodeError
 from foon2pddl.pddl.render import render
-from foon2pddl.retrieval.api import retrieve
 from foon2pddl.planners import fd
 from foon2pddl.planners.executable import needed, schedule
 from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
+from foon2pddl.retrieval.api import retrieve
 
 from .harness import Context
 
