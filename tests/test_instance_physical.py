@@ -124,3 +124,16 @@ def test_unresolved_holder_is_left_free_and_reported():
     assert inferred.trace.holder_of("juice_1") is None and inferred.evidence[E.UNRESOLVED] == 1
     d = next(d for d in replay(inferred.trace).disagreements if d.kind is K.MISPLACED)
     assert d.objects == ("juice_1",) and d.source == "brine.txt:1"
+
+
+def test_plan_notes_what_the_replay_finds_with_inferred_holders(example):
+    """`instances` models no holders: `plan` keeps its verdict and notes the physical replay's findings."""
+    from foon2pddl.io.inputs import load_goal, load_kitchen
+    from foon2pddl.planners.solve import plan
+
+    foon, kitchen = example.at(3), load_kitchen(None, example, 3)
+    outcome = plan(foon, kitchen, load_goal("guacamole", None, foon), "instances")
+    note = next(n for n in outcome.decoded.notes if n.startswith("not checked physically"))
+    assert "07-guacamole.foon:" in note and "disagreement" in note
+    clean = plan(BRINE_FOON, BRINE_KITCHEN, Goal(GoalSpec("brine"), (BRINE,)), "instances")
+    assert not any(n.startswith("not checked physically") for n in clean.decoded.notes)

@@ -183,6 +183,10 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     except PlanDecodeError as exc:
         return replace(decoded, trace_check=Validation(False, (str(exc),)))
     wanted = tuple(candidates) if candidates is not None else (tree.goal,)
+    if not compiled.holders:  # no holders modelled: say what the physical replay finds with inferred ones
+        from .instance_physical import replay_note
+
+        decoded = replace(decoded, notes=decoded.notes + replay_note(compiled.task, trace))
     return replace(decoded, trace=trace, trace_check=check_trace(trace, wanted, compiled.holders))
 
 

@@ -48,9 +48,9 @@ from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceStep
 from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
-from .physical_replay import listed, places
+from .physical_replay import listed, places, replay
 
-__all__ = ["HolderEvidence", "InferredTrace", "physical_trace"]
+__all__ = ["HolderEvidence", "InferredTrace", "physical_trace", "replay_note"]
 
 
 class HolderEvidence(StrEnum):
@@ -214,3 +214,15 @@ def physical_trace(task: PlanningTask, trace: PhysicalTrace) -> InferredTrace:
         free = [not bound for _, bound in roles] if len(roles) == len(s.bindings) else [False] * len(s.bindings)
         out.append(b.step(s, free))
     return InferredTrace(PhysicalTrace(trace.objects, initial, tuple(out)), b.evidence)
+
+
+def replay_note(task: PlanningTask, trace: PhysicalTrace) -> tuple[str, ...]:
+    """A note for a plan whose encoding models no holders: what the physical replay finds with inferred ones
+    (empty when it finds nothing)."""
+    report = replay(physical_trace(task, trace).trace)
+    if report.ok:
+        return ()
+    n, steps = len(report.disagreements), len(trace.steps)
+    return (f"not checked physically by the encoding: with holders inferred by tracking, the physical replay "
+            f"finds {n} disagreement{'s' if n != 1 else ''} ({len(report.affected_steps)} of {steps} steps "
+            f"affected); first: {report.disagreements[0]}",)
