@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from physical_world import node as n
 
-from foon2pddl.model.foon import FunctionalUnit, Motion, Source
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, dedupe_units
+from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import TaskTree
 from foon2pddl.planners.executable import Verdict, needed, schedule
+from foon2pddl.planners.physical_replay import DisagreementKind as K
 from foon2pddl.planners.physical_replay import replay
+from foon2pddl.retrieval.api import retrieve
 
 
 def unit(motion, ins, outs, line=1):
@@ -89,3 +94,45 @@ def test_kitchen_counts_apply_per_node():
     u2 = unit("use", [clean_bowl], [n("bowl", "dirty")])
     got = schedule(TaskTree((u1, u2), n("bowl", "dirty")), {EMPTY, clean_bowl})
     assert got.ok and [o.id for o in got.trace.objects] == ["bowl_1", "bowl_2"]
+
+
+# ---- properties on random networks: the schedule's own bookkeeping, checked by the replay, and monotonicity
+
+POOL = [n("a"), n("b"), n("b", "cut"), n("c", ("in", "b")), n("d"), n("e", "mixed"), n("f"), n("f", "dirty")]
+
+
+@st.composite
+def trees(draw):
+    ins = st.lists(st.sampled_from(POOL), min_size=1, max_size=3, unique=True)
+    outs = st.lists(st.sampled_from(POOL), min_size=1, max_size=3, unique=True)
+    units = draw(st.lists(st.tuples(ins, st.sampled_from(["chop", "mix", "pour"]), outs), min_size=2, max_size=8))
+    foon = Foon(dedupe_units(FunctionalUnit(tuple(i), Motion(m), tuple(o)) for i, m, o in units))
+    kitchen = frozenset(foon.nodes) - set(foon.producers) | set(draw(st.lists(st.sampled_from(POOL), max_size=2)))
+    goal = draw(st.sampled_from(sorted(foon.producers)))
+    return retrieve(foon, kitchen, Goal(GoalSpec("goal"), (goal,), 3)).tree, kitchen
+
+
+BOOKKEEPING = {K.UNBOUND_CHANGE, K.NOT_AVAILABLE, K.REMADE, K.STATE_MISMATCH}
+
+
+@settings(max_examples=200, deadline=None)
+@given(trees())
+def test_schedules_are_consistent_and_more_objects_never_hurt(case):
+    tree, kitchen = case
+    if tree is None:
+        return
+    got = schedule(tree, kitchen)
+    assert not replay(got.trace).kinds() & BOOKKEEPING
+    assert got.ok or (got.step is not None and got.label and got.node is not None and got.message)
+    if got.ok:
+        assert schedule(tree, kitchen, per_item=3).ok
+    if got.verdict is Verdict.SHORT:
+        assert schedule(TaskTree(tree.units[:got.step], tree.goal), kitchen).ok
+    need = needed(tree, kitchen)
+    assert need.verdict is not Verdict.SHORT
+    if need.ok:
+        counts = {}
+        for node_, k in need.drawn:
+            counts[node_.label] = max(counts.get(node_.label, 0), k)
+        assert schedule(tree, kitchen, counts).ok
+    assert got.verdict in (Verdict.EXECUTABLE, Verdict.SHORT) or got.verdict is need.verdict
