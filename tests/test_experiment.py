@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -10,6 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.cli import main
+from foon2pddl.errors import UsageError
 from foon2pddl.experiment import runner
 from foon2pddl.experiment.protocol import Protocol, derive_seed, goal_pool, make_trials, sample_kitchen
 from foon2pddl.experiment.records import Record, open_for_append, read_records
@@ -392,3 +394,35 @@ def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_
         if r.status == "solved":
             assert native.status == "solved" and r.validated and r.foon_valid
         assert r.status != "error", r.reason
+
+
+# -- similarity mode ------------------------------------------------------------------------------
+
+def test_similarity_mode_is_in_the_protocol_identity_and_sweepable():
+    from foon2pddl.cli.experiment_cmd import command_line
+    from foon2pddl.experiment.params import network_key, parse_sweep
+
+    assert Protocol().similarity == "cook" and Protocol().identity()["similarity"] == "cook"
+    assert "similarity" not in Protocol(similarity="paper").identity()  # results from before the option
+    with pytest.raises(UsageError):
+        Protocol(similarity="nope")
+    assert parse_sweep("similarity=cook,paper") == ("similarity", ("cook", "paper"))
+    assert network_key(Protocol(), (("similarity", "paper"),)) != network_key(Protocol(), ())
+    line = command_line((), Protocol(similarity="paper"), ("exp",), ("native-complete",), 1, 1.0, Path("d"),
+                        Path("d/r.md"), sweeps=(("similarity", ("cook", "paper")),))
+    assert "--similarity paper" in line and "--sweep similarity=cook,paper" in line
+
+
+def test_experiment_with_each_similarity_mode(tmp_path):
+    counts = {}
+    for mode in ("cook", "paper"):
+        out = tmp_path / mode
+        r = CliRunner().invoke(main, ["experiment", "--trials", "1", "--goals", "6", "--networks", "exp",
+                                      "--solvers", "native-complete", "--similarity", mode, "-o", str(out),
+                                      "--no-progress"])
+        assert r.exit_code == 0, r.stderr
+        identity = json.loads((out / "protocol.json").read_text())["identity"]
+        assert identity.get("similarity") == (None if mode == "paper" else mode)
+        assert f"--similarity {mode}" in (out / "report.md").read_text()
+        counts[mode] = len((out / "results.jsonl").read_text().splitlines())
+    assert counts["cook"] == counts["paper"] == 6

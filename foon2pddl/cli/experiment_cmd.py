@@ -12,6 +12,7 @@ from ..errors import FoonInputError, UsageError
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
+from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
 from . import main
 from .options import level_option, paths_argument
 
@@ -59,10 +60,12 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
     """The command that reproduces a run (written into the report)."""
     parts = ["foon2pddl", "experiment", *(str(p) for p in paths), "--trials", str(protocol.trials),
              "--goals", str(protocol.goals), "--kitchen-fraction", f"{protocol.kitchen_fraction:g}",
-             "--seed", str(protocol.seed), "--level", str(protocol.level), "--networks", ",".join(networks),
+             "--seed", str(protocol.seed), "--level", str(protocol.level), "--similarity", protocol.similarity,
+             "--networks", ",".join(networks),
              "--solvers", ",".join(solvers), "--time-limit", f"{time_limit:g}", "--jobs", str(jobs),
              *(x for s, n in limits for x in ("--goal-limit", f"{s}={n}")),
-             *(x for name, values in sweeps for x in ("--sweep", f"{name}=" + ",".join(f"{v:g}" for v in values))),
+             *(x for name, values in sweeps for x in ("--sweep", f"{name}=" + ",".join(f"{v:g}" if isinstance(v, float) else str(v)
+                                                                   for v in values))),
              "-o", str(out_dir), "--report", str(report)]
     return shlex.join(parts)
 
@@ -80,6 +83,8 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
               help=f"Solvers to compare, from: {', '.join(SOLVERS)}.")
 @click.option("--seed", type=int, default=DEFAULT_SEED, show_default=True, help="Master seed.")
 @level_option
+@click.option("--similarity", type=click.Choice(list(SIMILARITY_MODES)), default=DEFAULT_MODE, show_default=True,
+              help="FOON-EXP's similarity mode (docs/generalization.md); recorded in the protocol.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
               help="Workers: 1 runs the cells in this process; N > 1 starts a local Dask cluster of N workers.")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
@@ -99,7 +104,7 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
 @click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
 @click.option("--progress/--no-progress", default=True, show_default=True,
               help="Progress on stderr: a bar on a terminal, otherwise a line every 30 s (cells done, rate, ETA).")
-def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, jobs, scheduler, time_limit, out_dir,
+def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, similarity, jobs, scheduler, time_limit, out_dir,
                report, sweeps, sensitivity, goal_limits, fresh, progress) -> None:
     """Run the REG/EXP/GEN experiment and write results (JSONL, CSV), a Markdown report and plots.
 
@@ -120,7 +125,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, j
     swept = _sweeps(sweeps)
     if sensitivity.strip().lower() not in ("", "none", "off"):
         click.echo("warning: --sensitivity is replaced by --sweep kitchen-fraction=V1,V2,...; ignored", err=True)
-    protocol = Protocol(trials, goals, fraction, seed, level)
+    protocol = Protocol(trials, goals, fraction, seed, level, similarity=similarity)
     report = report or out_dir / "report.md"
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)

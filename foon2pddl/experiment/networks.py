@@ -12,16 +12,19 @@ from __future__ import annotations
 
 from ..generalize.expand import DEFAULT_THRESHOLD
 from ..generalize.network import DEFAULT_NETWORK, NETWORKS, NetworkView, lifted_networks, network_view
+from ..generalize.modes import DEFAULT_MODE
 from ..io.inputs import Network
 from ..model.kitchen import default_kitchen
 
 __all__ = ["DEFAULT_NETWORK", "NETWORKS", "NetworkView", "build_view", "lifted_networks"]
 
 
-def build_view(name: str, net: Network, level: int, threshold: float | None = None) -> NetworkView:
-    """The view `name` (reg, exp or gen) of `net` at `level`, EXP with similarity `threshold` (default 0.89).
+def build_view(name: str, net: Network, level: int, threshold: float | None = None,
+               similarity: str = DEFAULT_MODE) -> NetworkView:
+    """The view `name` (reg, exp or gen) of `net` at `level`, EXP with similarity `threshold` (default 0.89)
+    and the `similarity` mode.
 
     Raises UsageError for an unknown name.
     """
     return network_view(net, name, level, default_kitchen(net.at(level)),
-                        threshold=DEFAULT_THRESHOLD if threshold is None else threshold)
+                        threshold=DEFAULT_THRESHOLD if threshold is None else threshold, similarity=similarity)

@@ -6,7 +6,7 @@ cell records the values of the swept parameters (`Record.params`), and the
 report gets one table and one plot per swept parameter.
 
 A parameter is either a field of `Protocol` (kitchen fraction, hierarchy level,
-FOON-EXP threshold: consumed where trials and networks are built), or carries
+FOON-EXP threshold and similarity mode: consumed where trials and networks are built), or carries
 hooks: `network` transforms the network read from the inputs before the
 REG/EXP/GEN views are built, `kitchen` transforms each trial's kitchen. Adding
 a parameter is one entry in `PARAMS` below. `stage` says what a value change
@@ -44,6 +44,16 @@ def _count(text: str) -> int:
     return value
 
 
+def _mode(text: str) -> str:
+    from ..errors import UsageError
+    from ..generalize.modes import check_mode
+
+    try:
+        return check_mode(text.strip().lower())
+    except UsageError as exc:
+        raise ValueError(exc.message) from None
+
+
 def _level(text: str) -> int:
     value = int(text)
     if value not in (1, 2, 3):
@@ -68,6 +78,7 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("kitchen-fraction", _fraction, TRIAL, "fraction of the default kitchen a trial keeps",
           field="kitchen_fraction"),
     Param("threshold", _fraction, NETWORK, "FOON-EXP Wu-Palmer similarity threshold", field="threshold"),
+    Param("similarity", _mode, NETWORK, "FOON-EXP similarity mode (cook, paper)", field="similarity"),
     Param("level", _level, NETWORK, "hierarchy level of goals, kitchens and networks", field="level"),
     Param("banned-motions", _count, NETWORK, "motions the robot cannot perform (drawn at random, bans.py)",
           network=ban_motions),
@@ -126,7 +137,7 @@ def network_hooks(point: Point) -> Point:
 def network_key(protocol: Protocol, point: Point) -> tuple:
     """What a network view depends on at this point (its cache key beside the inputs and the network name)."""
     at = protocol_at(protocol, point)
-    return (at.level, at.threshold, network_hooks(point))
+    return (at.level, at.threshold, at.similarity, network_hooks(point))
 
 
 def _apply(hook: str, value, point: Point):

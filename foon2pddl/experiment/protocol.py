@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 from ..errors import UsageError
 from ..generalize.expand import DEFAULT_THRESHOLD
+from ..generalize.modes import DEFAULT_MODE, check_mode
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import Kitchen, default_kitchen
 
@@ -36,7 +37,8 @@ DEFAULT_SEED = 0
 
 @dataclass(frozen=True)
 class Protocol:
-    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level, EXP threshold."""
+    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level, EXP threshold
+    and EXP's similarity mode (`generalize.modes`)."""
 
     trials: int = DEFAULT_TRIALS
     goals: int = DEFAULT_GOALS
@@ -44,8 +46,10 @@ class Protocol:
     seed: int = DEFAULT_SEED
     level: int = 3
     threshold: float = DEFAULT_THRESHOLD
+    similarity: str = DEFAULT_MODE
 
     def __post_init__(self) -> None:
+        check_mode(self.similarity)
         if self.trials < 1 or self.goals < 1:
             raise UsageError("trials and goals must be at least 1")
         if not 0.0 < self.kitchen_fraction <= 1.0:
@@ -56,12 +60,15 @@ class Protocol:
     def identity(self) -> dict:
         """The parameters results depend on (counts excluded: more trials or goals extend a run).
 
-        The threshold appears only when it is not the default, so results written
-        before it was a parameter keep their identity.
+        The threshold appears only when it is not the default, and the similarity mode
+        only when it is not `paper` (the only rule before it was a parameter), so results
+        written before either was a parameter keep their identity.
         """
         out = {"kitchen_fraction": self.kitchen_fraction, "seed": self.seed, "level": self.level}
         if self.threshold != DEFAULT_THRESHOLD:
             out["threshold"] = self.threshold
+        if self.similarity != "paper":
+            out["similarity"] = self.similarity
         return out
 
 

@@ -137,7 +137,7 @@ def view(paths: tuple[str, ...], protocol: Protocol, point: Point, name: str) ->
     views = _CACHE["views"]
     if key not in views:
         at = protocol_at(protocol, point)
-        views[key] = build_view(name, _network(paths, point), at.level, at.threshold)
+        views[key] = build_view(name, _network(paths, point), at.level, at.threshold, at.similarity)
     return views[key]
 
 
