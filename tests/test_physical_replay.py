@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 from physical_world import World, contents, node, random_world, salsa_world, with_change, with_initial
 
 from foon2pddl.model.physical import Binding, ObjectState
+from foon2pddl.planners.physical_replay import HOLDER_KINDS, listed, places, replay
 from foon2pddl.planners.physical_replay import DisagreementKind as K
-from foon2pddl.planners.physical_replay import listed, places, replay
 
 
 def kinds(trace) -> set[K]:
@@ -45,6 +45,20 @@ def test_a_mixture_list_names_ingredients_not_contents():
                "egg_1": ObjectState("egg_1", node("egg", ("in", "dough")), "dough_1", "in"),
                "dough_1": ObjectState("dough_1", node("dough", ("contains", ["flour"]), ("in", "bowl")), "bowl_1", "in")})
     assert K.MISSING_CONTENT in kinds(w.trace())  # something is put in dough here: its list is its contents
+
+
+def test_reported_label_mismatches_are_aliases():
+    """A list naming `sea salt` for the salt object: reported as missing and unlisted, unless the caller
+    reported the mismatch (`aliases`); a place `in [shakr]` likewise."""
+    t = with_initial(salsa_world().trace(), ObjectState("shaker_1", contents("shaker", ["sea salt"])))
+    assert {K.MISSING_CONTENT, K.UNLISTED_CONTENT} <= kinds(t)
+    assert not replay(t, {"sea salt": "salt"}).kinds() & HOLDER_KINDS  # the step's binding still differs
+    t = with_initial(salsa_world().trace(), ObjectState("salt_1", node("salt", ("in", "shakr")), "shaker_1", "in"))
+    assert K.MISPLACED in kinds(t) and not replay(t, {"shakr": "shaker"}).kinds() & HOLDER_KINDS
+
+
+def test_holder_kinds_leave_out_the_binding_kinds():
+    assert K.STATE_MISMATCH not in HOLDER_KINDS and K.MISPLACED in HOLDER_KINDS and len(HOLDER_KINDS) == 11
 
 
 def test_holder_gone():

@@ -63,7 +63,7 @@ from enum import StrEnum
 from ..model.foon import ObjectNode
 from ..model.physical import ObjectState, PhysicalTrace, Relation, TraceStep
 
-__all__ = ["Disagreement", "DisagreementKind", "ReplayReport", "container_labels", "listed", "places", "replay"]
+__all__ = ["HOLDER_KINDS", "Disagreement", "DisagreementKind", "ReplayReport", "container_labels", "listed", "places", "replay"]
 
 
 class DisagreementKind(StrEnum):
@@ -84,6 +84,12 @@ class DisagreementKind(StrEnum):
     WRONG_SOURCE = "wrong-source"
     UNBOUND_TARGET = "unbound-target"
     HOLDER_NOT_BOUND = "holder-not-bound"
+
+
+#: Kinds about where objects are (holders, placements, contents, pour sources and targets); the others are
+#: about the bindings themselves (an encoding's plan that fires a unit on the wrong objects).
+HOLDER_KINDS = frozenset(DisagreementKind) - {DisagreementKind.UNBOUND_CHANGE, DisagreementKind.NOT_AVAILABLE,
+                                              DisagreementKind.REMADE, DisagreementKind.STATE_MISMATCH}
 
 
 @dataclass(frozen=True)
@@ -139,7 +145,7 @@ def _describes_contents(node: ObjectNode) -> bool:
     return any(s.label in ("contains", "empty") for s in node.states)
 
 
-def container_labels(trace: PhysicalTrace) -> frozenset[str]:
+def container_labels(trace: PhysicalTrace, aliases: Mapping[str, str] | None = None) -> frozenset[str]:
     """Labels some node of the trace (initial, binding or change) gives a `contains` or `empty` state and
     some node names as a place (`in [bowl]`): a `contains` list on anything else (`biscuit dough (contains
     {butter, flour})`) names the ingredients of a mixture, not objects in it."""
@@ -147,7 +153,8 @@ def container_labels(trace: PhysicalTrace) -> frozenset[str]:
     for step in trace.steps:
         nodes += [n for b in step.bindings for n in (b.before, b.after)] + [c.node for c in step.changes]
     nodes = [n for n in nodes if n is not None]
-    placed = {c for n in nodes for _, c in places(n)}
+    aliases = aliases or {}
+    placed = {aliases.get(c, c) for n in nodes for _, c in places(n)}
     return frozenset(n.label for n in nodes if _describes_contents(n) and n.label in placed)
 
 
@@ -162,15 +169,22 @@ def step_source(step: TraceStep) -> str:
 class _Replay:
     """The walk's working state: labels, initial placements, absorbed labels, findings."""
 
-    def __init__(self, trace: PhysicalTrace) -> None:
+    def __init__(self, trace: PhysicalTrace, aliases: Mapping[str, str]) -> None:
         self.trace = trace
+        self.aliases = aliases
         self.label = {o.id: o.label for o in trace.objects}
         self.initial = {s.id: s for s in trace.initial}
-        self.containers = container_labels(trace)
+        self.containers = container_labels(trace, aliases)
         self.absorbed: dict[str, frozenset[str]] = {}
         self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
         self.active: set[tuple] = set()
+
+    def places(self, node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
+        return tuple((r, self.aliases.get(c, c)) for r, c in places(node))
+
+    def listed(self, node: ObjectNode | None) -> frozenset[str]:
+        return frozenset(self.aliases.get(x, x) for x in listed(node))
 
     def stands_for(self, oid: str) -> frozenset[str]:
         return self.absorbed.get(oid, frozenset()) | {self.label[oid]}
@@ -195,13 +209,13 @@ class _Replay:
 
     def _placement(self, states: Mapping[str, ObjectState], oid: str, add) -> None:
         s = states[oid]
-        named = places(s.node)
+        named = self.places(s.node)
         if s.holder is not None and not states[s.holder].exists:
             add(DisagreementKind.HOLDER_GONE, (oid, s.holder), f"{oid} is {s.relation} {s.holder}, which "
                 f"{'is consumed' if states[s.holder].consumed else 'is not made yet'}")
         if not named:
             first = self.initial[oid]
-            if s.holder is not None and not (s.holder == first.holder and not places(first.node)):
+            if s.holder is not None and not (s.holder == first.holder and not self.places(first.node)):
                 add(DisagreementKind.UNEXPECTED_HOLDER, (oid, s.holder),
                     f"{oid} is {s.relation} {s.holder}, but its node {s.node.describe()!r} names no place")
             return
@@ -226,15 +240,15 @@ class _Replay:
         inside: dict[str, list[str]] = {}
         for oid in existing:
             h = states[oid].holder
-            if h is not None and places(states[oid].node):
+            if h is not None and self.places(states[oid].node):
                 inside.setdefault(h, []).append(oid)
         holders = [h for h in existing if self.label[h] in self.containers]
         claims: dict[str, list[str]] = {}
         for h in holders:
-            for x in listed(states[h].node):
+            for x in self.listed(states[h].node):
                 claims.setdefault(x, []).append(h)
         for h in holders:
-            node, items = states[h].node, listed(states[h].node)
+            node, items = states[h].node, self.listed(states[h].node)
             covered = frozenset().union(self.absorbed.get(h, frozenset()), *(self.stands_for(o) for o in inside.get(h, ())))
             for x in sorted(items - covered):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
@@ -291,7 +305,7 @@ class _Replay:
         for b in step.bindings:
             self._moves(b.object, b.before, before, after, bound, add)
             h = before[b.object].holder
-            if h is not None and after[b.object].holder != h and self.label[b.object] in listed(after[h].node):
+            if h is not None and after[b.object].holder != h and self.label[b.object] in self.listed(after[h].node):
                 self.stale[(h, self.label[b.object])] = (after[h].node, k)
         self._holders_bound(step, before, after, add)
         self._absorb(step, before, after)
@@ -301,9 +315,9 @@ class _Replay:
         if was.holder == now.holder:
             return
         first = self.initial[oid]
-        scene = was.holder == first.holder and not places(first.node)
+        scene = was.holder == first.holder and not self.places(first.node)
         if was.holder is not None and not scene:
-            named = {c for _, c in places(node_before or was.node)}
+            named = {c for _, c in self.places(node_before or was.node)}
             if self.label[was.holder] not in named:
                 add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
                     f"{oid} leaves {was.holder}, a {self.label[was.holder]} its input node does not name")
@@ -323,7 +337,7 @@ class _Replay:
             for node, state in ((b.before, before[b.object]), (b.after or b.before, after[b.object])):
                 if not state.exists or state.holder is None:
                     continue
-                for rel, c in places(node):
+                for rel, c in self.places(node):
                     ours = by_label.get(c, set()) - {b.object}
                     if ours and rel == state.relation and state.holder not in ours and (b.object, c) not in seen:
                         seen.add((b.object, c))
@@ -347,9 +361,14 @@ def _say(named: tuple[tuple[Relation, str], ...]) -> str:
     return " and ".join(f"{r} a {c}" for r, c in named)
 
 
-def replay(trace: PhysicalTrace) -> ReplayReport:
-    """Replay `trace` and report every disagreement with FOON (see the module doc)."""
-    run = _Replay(trace)
+def replay(trace: PhysicalTrace, aliases: Mapping[str, str] | None = None) -> ReplayReport:
+    """Replay `trace` and report every disagreement with FOON (see the module doc).
+
+    `aliases` maps a name FOON writes in an ingredient list or a place to the object label it means
+    (`olive oil` -> `green olive oil`, `muff` -> `muffin pan`): label mismatches the caller has reported,
+    so they are not reported again as missing or misplaced contents.
+    """
+    run = _Replay(trace, aliases or {})
     snapshots = iter(trace.states())
     before = next(snapshots)
     run.check_state(before, -1, "")
