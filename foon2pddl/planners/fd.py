@@ -201,10 +201,17 @@ def planner_name(optimal: bool) -> str:
 
 def translate(domain: Path, problem: Path, sas: Path, cwd: Path, timeout: float | None,
               options: tuple[str, ...] = (), memory_limit_mb: int | None = None) -> ProcessRun:
-    """Run FD's translator on PDDL files, writing the SAS task to `sas`."""
+    """Run FD's translator on PDDL files, writing the SAS task to `sas`: in a child of the warm
+    translator server (`planners.translator`) when it is free, else in a fresh interpreter."""
+    from . import translator
+
+    args = [str(domain), str(problem), "--sas-file", str(sas), *options]
+    warm = translator.run(args, cwd, timeout, bin_dir(), memory_limit_mb)
+    if warm is not None:
+        return warm
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(bin_dir()), env.get("PYTHONPATH", "")) if p)
-    cmd = [sys.executable, "-m", "fast_downward.translate", str(domain), str(problem), "--sas-file", str(sas), *options]
+    cmd = [sys.executable, "-m", "fast_downward.translate", *args]
     return run_process(cmd, cwd, timeout, env=env, memory_limit_mb=memory_limit_mb)
 
 

@@ -1,0 +1,128 @@
+"""The warm translator (`planners.translator`) does what a fresh `python -m fast_downward.translate`
+does: the same SAS file byte for byte, the same exit codes and messages, the time limit; and it
+recovers when its server dies, is busy, or this interpreter forked."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.io.inputs import load_network
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.render import render
+from foon2pddl.planners import fd, translator
+
+
+def _translate(tmp: Path, domain: str, problem: str, warm: bool, timeout: float | None = 60.0):
+    tmp.mkdir(parents=True, exist_ok=True)
+    (tmp / "domain.pddl").write_text(domain)
+    (tmp / "problem.pddl").write_text(problem)
+    os.environ[translator.SWITCH] = "1" if warm else "0"
+    try:
+        run = fd.translate(tmp / "domain.pddl", tmp / "problem.pddl", tmp / "output.sas", tmp, timeout)
+    finally:
+        os.environ.pop(translator.SWITCH, None)
+    sas = tmp / "output.sas"
+    return run, sas.read_bytes() if sas.exists() else None
+
+
+@pytest.fixture(scope="module")
+def example():
+    net = load_network([])
+    return net.foon, default_kitchen(net.foon)
+
+
+@pytest.fixture(scope="module")
+def goals(example):
+    foon, _ = example
+    return sorted({n for u in foon.units for n in u.outputs if n.dish is not None})
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data(), encoding=st.sampled_from(["instances", "tree", "state"]))
+def test_warm_and_fresh_write_the_same_sas_file(example, goals, tmp_path_factory, data, encoding):
+    foon, kitchen = example
+    node = data.draw(st.sampled_from(goals))
+    goal = resolve_goal(spec_of_node(node), foon)
+    domain, problem = render(compile_goal(foon, kitchen, goal, encoding, 3).task)
+    tmp = tmp_path_factory.mktemp("tr")
+    fresh, fresh_sas = _translate(tmp / "fresh", domain, problem, warm=False)
+    warm, warm_sas = _translate(tmp / "warm", domain, problem, warm=True)
+    assert (warm.returncode, warm_sas) == (fresh.returncode, fresh_sas)
+    assert fresh.returncode == 0 and fresh_sas
+
+
+def test_input_error_has_the_fresh_translators_exit_code_and_message(tmp_path):
+    fresh, _ = _translate(tmp_path / "fresh", "(define (domain d) (:predicates (p))", "(define", warm=False)
+    warm, _ = _translate(tmp_path / "warm", "(define (domain d) (:predicates (p))", "(define", warm=True)
+    assert warm.returncode == fresh.returncode != 0
+    assert fresh.output.strip().splitlines()[-1] == warm.output.strip().splitlines()[-1]
+
+
+def test_time_limit_kills_the_child_and_the_server_serves_the_next_task(example, goals, tmp_path):
+    foon, kitchen = example
+    domain, problem = render(compile_goal(foon, kitchen, resolve_goal(spec_of_node(goals[0]), foon),
+                                          "instances", 3).task)
+    run, _ = _translate(tmp_path / "late", domain, problem, warm=True, timeout=0.001)
+    assert run.timed_out
+    again, sas = _translate(tmp_path / "next", domain, problem, warm=True)
+    assert again.returncode == 0 and sas
+
+
+def test_a_dead_server_is_replaced(example, goals, tmp_path):
+    foon, kitchen = example
+    domain, problem = render(compile_goal(foon, kitchen, resolve_goal(spec_of_node(goals[0]), foon),
+                                          "tree", 3).task)
+    first, _ = _translate(tmp_path / "a", domain, problem, warm=True)
+    server = translator._server
+    assert first.returncode == 0 and server is not None
+    os.killpg(server.proc.pid, signal.SIGKILL)
+    server.proc.wait()
+    second, sas = _translate(tmp_path / "b", domain, problem, warm=True)
+    assert second.returncode == 0 and sas and translator._server is not server
+
+
+def test_busy_server_falls_back_to_a_fresh_translator(tmp_path):
+    assert translator._LOCK.acquire(blocking=False)
+    try:
+        assert translator.run([], tmp_path, 1.0, fd.bin_dir()) is None
+    finally:
+        translator._LOCK.release()
+
+
+def test_switch_off_means_no_server(tmp_path, monkeypatch):
+    monkeypatch.setenv(translator.SWITCH, "0")
+    assert translator.run([], tmp_path, 1.0, fd.bin_dir()) is None
+
+
+def test_a_forked_interpreter_starts_its_own_server(example, goals, tmp_path):
+    foon, kitchen = example
+    domain, problem = render(compile_goal(foon, kitchen, resolve_goal(spec_of_node(goals[0]), foon),
+                                          "tree", 3).task)
+    _translate(tmp_path / "parent", domain, problem, warm=True)
+    parent_server = translator._server.proc.pid
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover - the child reports through the pipe
+        ok = 0
+        try:
+            run, sas = _translate(tmp_path / "child", domain, problem, warm=True)
+            ok = int(run.returncode == 0 and bool(sas) and translator._server.proc.pid != parent_server)
+        finally:
+            os.write(write, bytes([ok]))
+            os._exit(0)
+    os.close(write)
+    assert os.read(read, 1) == b"\x01"
+    os.waitpid(pid, 0)
+    time.sleep(0.05)
+    # the parent's server still answers
+    run, sas = _translate(tmp_path / "after", domain, problem, warm=True)
+    assert run.returncode == 0 and sas and translator._server.proc.pid == parent_server
