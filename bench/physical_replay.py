@@ -1,6 +1,7 @@
 """Physical replay of `instances` (and `relational`) plans: each shared subgraph alone, its dish as the goal.
 
-`python -m bench.physical_replay [--shared DIR] [--encodings E ...] [--time-limit S] [--limit N] [-v]`
+`python -m bench.physical_replay [--shared DIR] [--encodings E ...] [--universal | --native] [--time-limit S]
+[--limit N] [-v]`
 
 Per subgraph (its dish, its default kitchen, level 3, pruned): Fast Downward
 (lama-first) on each encoding; every plan becomes a `PhysicalTrace` (the
@@ -10,6 +11,7 @@ are inferred by tracking, `planners.instance_physical`) and is replayed by
 disagreement, unit steps after which one holds, plans inconsistent in the
 initial state, and per kind the plans and steps it occurs in; for `instances`,
 which rule placed the objects. `relational` is measured when it is registered.
+`--universal`: the merge of all subgraphs, each reachable dish a goal.
 
 `--native`: FOON's native task tree of each dish (`retrieve`, method `complete`)
 scheduled over the default kitchen with one object per kitchen item
@@ -25,6 +27,7 @@ import collections
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from foon2pddl.analysis.reachability import reachable
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
@@ -63,19 +66,32 @@ def check_file(path: Path, encodings: tuple[str, ...], time_limit: float) -> lis
     dishes = sorted(n for n in foon.nodes if n.dish is not None)
     if not dishes or dishes[0] not in foon.producers:
         return []
-    goal = resolve_goal(spec_of_node(dishes[0]), foon)
+    return check_goal(path.name, foon, default_kitchen(foon), dishes[0], encodings, time_limit)
+
+
+def universal_rows(subgraphs: Path, encodings: tuple[str, ...], time_limit: float,
+                   limit: int | None = None) -> list[Row]:
+    """The merge of every subgraph, each reachable dish a goal (per-goal pruning)."""
+    foon, _ = load([subgraphs])
     kitchen = default_kitchen(foon)
+    reach = reachable(foon, kitchen.nodes)
+    dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
+    return [r for d in dishes[:limit] for r in check_goal(d.describe(), foon, kitchen, d, encodings, time_limit)]
+
+
+def check_goal(name: str, foon, kitchen, dish, encodings: tuple[str, ...], time_limit: float) -> list[Row]:
+    goal = resolve_goal(spec_of_node(dish), foon)
     rows = []
     for enc in encodings:
         compiled = compile_goal(foon, kitchen, goal, enc)
         res = fd.solve(*render(compiled.task), time_limit=time_limit)
         if not res.solved:
-            rows.append(Row(path.name, enc, res.status))
+            rows.append(Row(name, enc, res.status))
             continue
         try:
             trace = compiled.replay(compiled.task, res.plan)
         except PlanDecodeError as exc:
-            rows.append(Row(path.name, enc, "undecodable", first=str(exc)))
+            rows.append(Row(name, enc, "undecodable", first=str(exc)))
             continue
         evidence = {}
         if not compiled.holders:
@@ -85,7 +101,7 @@ def check_file(path: Path, encodings: tuple[str, ...], time_limit: float) -> lis
         kinds: dict[DisagreementKind, set[int]] = collections.defaultdict(set)
         for d in report.disagreements:
             kinds[d.kind].add(d.step)
-        rows.append(Row(path.name, enc, "solved", len(trace.steps), len(report.affected_steps),
+        rows.append(Row(name, enc, "solved", len(trace.steps), len(report.affected_steps),
                         any(d.step < 0 for d in report.disagreements), dict(kinds), evidence,
                         report.disagreements[0].describe() if report.disagreements else ""))
     return rows
@@ -184,6 +200,7 @@ def main() -> None:
     ap.add_argument("--limit", type=int, default=None, help="only the first N files")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per file and encoding")
     ap.add_argument("--native", action="store_true", help="schedule native trees instead (module doc)")
+    ap.add_argument("--universal", action="store_true", help="the merged network, each reachable dish a goal")
     args = ap.parse_args()
     if args.native:
         native = native_rows(args.shared / "foon-subgraphs", args.limit)
@@ -193,7 +210,10 @@ def main() -> None:
         print(native_summary(native))
         return
     encodings = tuple(args.encodings or (e for e in WANTED if e in ENCODINGS))
-    rows = check_all(args.shared / "foon-subgraphs", encodings, args.time_limit, args.limit)
+    if args.universal:
+        rows = universal_rows(args.shared / "foon-subgraphs", encodings, args.time_limit, args.limit)
+    else:
+        rows = check_all(args.shared / "foon-subgraphs", encodings, args.time_limit, args.limit)
     if args.verbose:
         for r in rows:
             print(f"{r.file}\t{r.encoding}\t{r.status}\t{r.affected}/{r.steps}\t"
