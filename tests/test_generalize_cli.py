@@ -120,3 +120,14 @@ def test_compile_gen_writes_typed_pddl_that_parses(run, tmp_path):
     assert any(a.parameters for a in domain.actions)
     declared = {o.name: o.type_tag for o in (*problem.objects, *domain.constants)}
     assert declared["lime"] == declared["lemon"] == "citrus_fruits"
+
+
+def test_exp_tree_names_its_substitutions_and_similarity_is_an_option(run):
+    cook = run("retrieve", "--goal", "lemonade", "--network", "exp")
+    assert cook.exit_code == 0 and "FOON-EXP (cook similarity, threshold 0.89)" in cook.stderr
+    assert "substitution: lemon juice -> lime juice (Wu-Palmer 0.875)" in cook.stderr
+    paper = run("retrieve", "--goal", "lemonade", "--network", "exp", "--similarity", "paper")
+    assert paper.exit_code == 0 and "FOON-EXP (threshold 0.89): 101 -> 282 units" in paper.stderr
+    assert paper.stdout == cook.stdout  # the same tree: lime stands in for lemon either way
+    plain = run("retrieve", "--goal", "guacamole")
+    assert "substitution:" not in plain.stderr

@@ -84,10 +84,28 @@ def network_option(command):
     """`--network` with the registry's network kinds (imported when a command that takes it is defined)."""
     from ..generalize.network import NETWORKS
 
+    from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
+
+    def remember(ctx, _param, value):
+        ctx.meta["foon2pddl.similarity"] = value  # read by load_view and the substitution notes
+        return value
+
+    command = click.option("--similarity", type=click.Choice(list(SIMILARITY_MODES)), default=DEFAULT_MODE,
+                           show_default=True, expose_value=False, callback=remember, is_eager=True,
+                           help="The similarity FOON-EXP and --without substitutes use (cook; paper: the seed "
+                                "paper's rule). See docs/generalization.md.")(command)
     return click.option("--network", type=click.Choice(list(NETWORKS)), default=next(iter(NETWORKS)),
                         show_default=True,
                         help="; ".join(f"{k.name}: {k.description}" for k in NETWORKS.values())
                              + ". See docs/generalization.md.")(command)
+
+
+def chosen_similarity() -> str:
+    """The command's `--similarity` (the default mode outside a command or without the option)."""
+    from ..generalize.modes import DEFAULT_MODE
+
+    ctx = click.get_current_context(silent=True)
+    return ctx.meta.get("foon2pddl.similarity", DEFAULT_MODE) if ctx is not None else DEFAULT_MODE
 
 
 def constraints_options(command):
@@ -192,7 +210,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    view = network_view(net, network, level, kit)
+    view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
     if utensils is not None:

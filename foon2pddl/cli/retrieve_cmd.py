@@ -20,6 +20,7 @@ from . import main
 from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
 from .options import (
     check_output,
+    chosen_similarity,
     constraint_inputs,
     constraints_options,
     emit,
@@ -141,6 +142,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
             networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
+    if kind.substitutes is Substitutes.SIMILAR and not cons.items:
+        expansion_notes(result.tree)
     if view.index is not None and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
         click.echo(reading, err=True)
     inferred = inferred_nodes(result.tree.units)
@@ -152,6 +155,18 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if result.probability is not None:
         note += f", success probability {result.probability:.4g}"
     click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)
+
+
+def expansion_notes(tree) -> None:
+    """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity."""
+    from ..generalize.modes import make_similarity
+    from ..generalize.substitution import expansion_substitutions
+
+    subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
+    for sub in subs:
+        click.echo(f"substitution: {sub.describe()}", err=True)
+    if not subs:
+        click.echo("substitution: none (the tree uses only units as read)", err=True)
 
 
 def _batch(view, entries, method, rates, fmt, limits: dict, output, containment) -> None:
@@ -193,7 +208,10 @@ def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, met
 
         index = load_index()
     concrete = without_banned(load_kitchen(kitchen_path, net, level), cons)
+    from ..generalize.modes import make_similarity
+
     done, subs = retrieve_substituted(network, foon, kit, target, cons, method, index=index,
+                                      sim=make_similarity(chosen_similarity()),
                                       concrete_labels={n.label for n in concrete.nodes}, rates=rates, **limits)
     for sub in subs:
         click.echo(f"substitution: {sub.describe()}", err=True)

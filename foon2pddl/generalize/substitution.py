@@ -83,6 +83,18 @@ def prefer_most_similar(foon: Foon, constraints: Constraints, sim: Callable[[str
     return foon
 
 
+def expansion_substitutions(tree: TaskTree, sim: Callable[[str, str], float]) -> tuple[Substitution, ...]:
+    """The substitutions an EXP tree relies on: for each FOON-EXP copy among its units, the label it
+    replaced and the label standing in (the copy's label most similar to it), sorted."""
+    found = set()
+    for u in tree.units:
+        original = u.sources[0].expanded_from if u.sources else None
+        if original is not None:
+            label, value = _substitute(u, original, sim)
+            found.add(Substitution(original, label, value))
+    return tuple(sorted(found))
+
+
 def substitutions(tree: TaskTree, constraints: Constraints, sim: Callable[[str, str], float], *,
                   kitchen_labels: Iterable[str] = (), category_of: Callable[[str], str | None] | None = None
                   ) -> tuple[Substitution, ...]:
