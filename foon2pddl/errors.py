@@ -7,6 +7,9 @@
 - `UsageError` (also a `ValueError`): a bad argument or option value, no file.
 - `MissingDependencyError`: an optional part that is not installed (Fast
   Downward, WordNet, Graphviz, an extra), with the command that installs it.
+- `PlanDecodeError` (also a `ValueError`): a planner's plan that does not map back
+  to the task (an unknown action, wrong arguments); `PlanOutcome` reports it as
+  its `decode_error`, never raised to the user.
 
 Messages never name command-line flags: only `cli/` knows them.
 """
@@ -18,7 +21,7 @@ from dataclasses import dataclass
 from types import ModuleType
 
 __all__ = ["FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
-           "UsageError", "require"]
+           "PlanDecodeError", "UsageError", "require"]
 
 
 class FoonError(Exception):
@@ -74,6 +77,13 @@ class MissingDependencyError(FoonError):
     def __init__(self, message: str, hint: str) -> None:
         self.hint = hint
         super().__init__(f"{message}: {hint}")
+
+
+class PlanDecodeError(FoonError, ValueError):
+    """A plan step that does not map back to a functional unit (an unknown action, wrong arguments)."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
 
 
 def require(module: str, extra: str, purpose: str) -> ModuleType:

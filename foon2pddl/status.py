@@ -6,6 +6,8 @@ serializes to JSON as) its old string: `PlanStatus.SOLVED == "solved"`.
 - `PlanStatus`: what a planner run ends in (`planners.result.PlanResult.status`);
 - `RetrievalStatus`: what a native retrieval ends in (`retrieval.result.Retrieval.status`;
   its `reason` is one of the non-`FOUND` members);
+- `BatchStatus`: one goal of a batch (`retrieve`, `compile`, `plan` with several goals;
+  plan rows carry their `PlanStatus`, or `unmatched`); `batch_status` maps a retrieval's into it;
 - `CellStatus`: one experiment cell (a solver on a goal), covering both (and
   `lost` cells); `cell_status` is the one explicit mapping into it.
 """
@@ -14,14 +16,17 @@ from __future__ import annotations
 
 from enum import StrEnum
 
-__all__ = ["CellStatus", "PlanStatus", "RetrievalStatus", "cell_status"]
+__all__ = ["BatchStatus", "CellStatus", "PlanStatus", "RetrievalStatus", "batch_status", "cell_status"]
 
 
 class PlanStatus(StrEnum):
-    """A planner run: a plan was found, the planner proved or concluded there is none, it ran out of time, it failed."""
+    """A planner run: a plan was found, the planner proved (or, for an external command, said) there is none,
+    its search stopped without a plan and without a proof (an incomplete search exhausted, a cost bound: `gave
+    up`), it ran out of time, it failed."""
 
     SOLVED = "solved"
     UNSOLVABLE = "unsolvable"
+    GAVE_UP = "gave up"
     TIMEOUT = "timeout"
     ERROR = "error"
 
@@ -34,17 +39,30 @@ class RetrievalStatus(StrEnum):
     BUDGET_EXHAUSTED = "budget exhausted"
 
 
+class BatchStatus(StrEnum):
+    """One goal of a batch: a tree was found, the goal cannot be made, the budget ran out, the goal names no
+    node any unit produces, a found tree does not validate (a bug: reported, never hidden), its PDDL was written."""
+
+    SOLVED = "solved"
+    UNREACHABLE = "unreachable"
+    BUDGET_EXHAUSTED = "budget exhausted"
+    UNMATCHED = "unmatched"
+    INVALID = "invalid"
+    COMPILED = "compiled"
+
+
 class CellStatus(StrEnum):
     """How an experiment cell ended, whichever kind of solver ran it (`solved`: a task tree was found).
 
+    `unsolvable`: proven (the fixpoint, a planner's proof); `gave up`: a planner's search
+    stopped without a plan or a proof; `budget exhausted`: a native search's budget ran out.
     `lost`: its worker died or its task was killed (no answer; a rerun redoes it).
-    `node limit` is kept as a report column; no solver produces it today.
     """
 
     SOLVED = "solved"
     UNSOLVABLE = "unsolvable"
+    GAVE_UP = "gave up"
     BUDGET_EXHAUSTED = "budget exhausted"
-    NODE_LIMIT = "node limit"
     TIMEOUT = "timeout"
     ERROR = "error"
     LOST = "lost"
@@ -53,12 +71,29 @@ class CellStatus(StrEnum):
 _CELL: dict[PlanStatus | RetrievalStatus, CellStatus] = {
     PlanStatus.SOLVED: CellStatus.SOLVED,
     PlanStatus.UNSOLVABLE: CellStatus.UNSOLVABLE,
+    PlanStatus.GAVE_UP: CellStatus.GAVE_UP,
     PlanStatus.TIMEOUT: CellStatus.TIMEOUT,
     PlanStatus.ERROR: CellStatus.ERROR,
     RetrievalStatus.FOUND: CellStatus.SOLVED,
     RetrievalStatus.UNREACHABLE: CellStatus.UNSOLVABLE,
     RetrievalStatus.BUDGET_EXHAUSTED: CellStatus.BUDGET_EXHAUSTED,
 }
+
+
+_BATCH: dict[RetrievalStatus, BatchStatus] = {
+    RetrievalStatus.FOUND: BatchStatus.SOLVED,
+    RetrievalStatus.UNREACHABLE: BatchStatus.UNREACHABLE,
+    RetrievalStatus.BUDGET_EXHAUSTED: BatchStatus.BUDGET_EXHAUSTED,
+}
+
+
+def batch_status(status: RetrievalStatus) -> BatchStatus:
+    """The batch row status of a retrieval's status.
+
+    >>> batch_status(RetrievalStatus.FOUND)
+    <BatchStatus.SOLVED: 'solved'>
+    """
+    return _BATCH[status]
 
 
 def cell_status(status: PlanStatus | RetrievalStatus) -> CellStatus:

@@ -42,7 +42,7 @@ def test_parse_plan_text_reads_ipc_plans():
 
 @pytest.mark.parametrize(
     ("code", "status"),
-    [(0, "solved"), (2, "solved"), (10, "unsolvable"), (11, "unsolvable"), (12, "unsolvable"),
+    [(0, "solved"), (2, "solved"), (10, "unsolvable"), (11, "unsolvable"), (12, "gave up"), (13, "gave up"),
      (21, "timeout"), (23, "timeout"), (22, "error"), (31, "error"), (34, "error"), (99, "error"), (-9, "error")],
 )
 def test_fd_exit_codes_map_to_statuses(code, status):
@@ -192,7 +192,8 @@ def test_external_command_plan_is_read_back(tmp_path):
     ("body", "status"),
     [("import sys; sys.exit(0)", "error"),  # no plan and no word on why: a planner error (issue 11)
      ("print('Completely explored state space -- no solution!')", "unsolvable"),
-     ("import sys; sys.exit(12)", "unsolvable"),
+     ("import sys; sys.exit(11)", "unsolvable"),
+     ("import sys; sys.exit(12)", "gave up"),  # an incomplete search stopped: no proof
      ("raise SystemExit('crash')", "error"),
      ("import time; time.sleep(30)", "timeout")],
 )

@@ -23,7 +23,7 @@ def run(*args: str):
 
 
 def test_statuses_are_their_old_strings():
-    assert STATUSES == ("solved", "unsolvable", "timeout", "error")
+    assert STATUSES == ("solved", "unsolvable", "gave up", "timeout", "error")
     assert PlanResult("solved").status is PlanStatus.SOLVED
     assert json.dumps({"s": PlanStatus.TIMEOUT, "r": RetrievalStatus.BUDGET_EXHAUSTED}) == \
         '{"s": "timeout", "r": "budget exhausted"}'
@@ -33,8 +33,10 @@ def test_statuses_are_their_old_strings():
 def test_every_plan_and_retrieval_status_maps_to_a_cell_status():
     for status in (*PlanStatus, *RetrievalStatus):
         assert cell_status(status) in CellStatus
-    # every cell status but a lost worker's (and the unused node-limit column) comes from a solver's status
-    assert {cell_status(s) for s in (*PlanStatus, *RetrievalStatus)} == set(CellStatus) - {"lost", "node limit"}
+    # every cell status but a lost worker's comes from a solver's status
+    assert {cell_status(s) for s in (*PlanStatus, *RetrievalStatus)} == set(CellStatus) - {"lost"}
+    # a proof of unsolvability and a search that gave up stay apart
+    assert cell_status(PlanStatus.UNSOLVABLE) is not cell_status(PlanStatus.GAVE_UP)
     assert cell_status(RetrievalStatus.UNREACHABLE) is CellStatus.UNSOLVABLE
     assert cell_status(RetrievalStatus.FOUND) is cell_status(PlanStatus.SOLVED) is CellStatus.SOLVED
     assert cell_status("timeout") is CellStatus.TIMEOUT  # plain strings (records read back) map too
@@ -67,6 +69,40 @@ def test_error_hierarchy():
     missing = MissingDependencyError("Graphviz 'dot' is not installed", "apt-get install graphviz")
     assert missing.hint == "apt-get install graphviz" and "apt-get install graphviz" in missing.message
     assert missing.location() is None
+    from foon2pddl.errors import PlanDecodeError
+    from foon2pddl.pddl.instance_replay import InstancePlanError
+
+    assert issubclass(PlanDecodeError, FoonError) and issubclass(InstancePlanError, FoonError)
+    assert str(PlanDecodeError("plan step 1 (x) names no action of the task")).startswith("plan step 1")
+
+
+def test_unsolvable_under_constraints_is_an_outcome(example):
+    """Constraints that leave no way to the goal give an `unsolvable` outcome, not an exception."""
+    from foon2pddl.io.inputs import load_goal, load_kitchen
+    from foon2pddl.model.constraints import Constraint, Kind, make_constraints
+    from foon2pddl.planners.solve import EXCLUDED, plan
+
+    goal = load_goal("guacamole", None, example.foon)
+    kitchen = load_kitchen(None, example, 3)
+    bans = make_constraints([Constraint(Kind.WITHOUT, c.label) for c in goal.candidates])
+    outcome = plan(example.foon, kitchen, goal, constraints=bans)
+    assert outcome.status is PlanStatus.UNSOLVABLE and outcome.result.planner == EXCLUDED
+    assert outcome.tree is None and "left by the constraints" in outcome.message
+
+
+def test_batch_rows_use_the_status_vocabulary(example):
+    from foon2pddl.io.goal_lists import GoalEntry
+    from foon2pddl.model.goal import GoalSpec, resolve_goal
+    from foon2pddl.retrieval.batch import solve_goals
+    from foon2pddl.status import BatchStatus
+
+    from foon2pddl.io.inputs import load_kitchen
+
+    kitchen = load_kitchen(None, example, 3)
+    entries = [GoalEntry(GoalSpec(x), "goals.txt", n) for n, x in enumerate(("guacamole", "lemonade", "unicorn"), 1)]
+    rows = solve_goals(example.foon, kitchen.nodes, entries, lambda spec: resolve_goal(spec, example.foon))
+    assert [r.status for r in rows] == [BatchStatus.SOLVED, BatchStatus.UNREACHABLE, BatchStatus.UNMATCHED]
+    assert all(type(r.status) is BatchStatus for r in rows)
 
 
 def test_library_raises_usage_errors_without_flag_names(example):

@@ -11,6 +11,7 @@ from ..model.constraints import Constraints
 from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
 from ..pddl.compile import ENCODINGS
+from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
 from .reasons import why_unsolvable
@@ -26,7 +27,7 @@ def _resolve(view, entry, encoding: str | None = None):
         return None, exc.message
 
 
-def _row(entry, goal, status: str, seconds: float, reason: str = "", units=None, inferred=()) -> dict:
+def _row(entry, goal, status: BatchStatus | PlanStatus, seconds: float, reason: str = "", units=None, inferred=()) -> dict:
     return {"goal": goal.describe() if goal is not None else entry.spec.describe(), "status": status,
             "units": units, "inferred": list(inferred), "seconds": round(seconds, 6), "reason": reason,
             "source": f"{entry.path}:{entry.line}"}
@@ -45,13 +46,13 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         t0 = time.perf_counter()
         goal, why = _resolve(view, entry, encoding)
         if goal is None:
-            rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
+            rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             continue
         task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
         domain, problem = render(task)
         files[output_dir / name / "domain.pddl"] = domain
         files[output_dir / name / "problem.pddl"] = problem
-        row = _row(entry, goal, "compiled", time.perf_counter() - t0,
+        row = _row(entry, goal, BatchStatus.COMPILED, time.perf_counter() - t0,
                    units=sum(a.unit is not None for a in task.actions))
         row["file"] = str(output_dir / name)
         rows.append(row)
@@ -59,7 +60,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         atomic_write_many(files)
     except OSError as exc:
         raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
-    finish(rows, table_fmt, f"{encoding} encoding", solved=lambda r: r["status"] == "compiled")
+    finish(rows, table_fmt, f"{encoding} encoding", solved=lambda r: r["status"] == BatchStatus.COMPILED)
 
 
 def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fmt: str, output: Path | None,
@@ -73,13 +74,13 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
         t0 = time.perf_counter()
         goal, why = _resolve(view, entry, encoding)
         if goal is None:
-            rows.append(_row(entry, None, "unmatched", time.perf_counter() - t0, why))
+            rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             trees.append(None)
             continue
         outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
         tree = outcome.tree if outcome.status == "solved" else None
         reason = "" if tree is not None else outcome.message or outcome.result.message
-        if outcome.status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
+        if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:
             reason += ": " + why_unsolvable(view.foon, view.kitchen, goal, Constraints(), encoding,
                                             plan_options.get("instances", ()))[0]
         units = None if tree is None else len(tree.units) - count_inference(tree.units)

@@ -13,7 +13,6 @@ from ..generalize.network import NETWORKS
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
-from ..pddl.constraints import GoalExcluded
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
 from ..planners.registry import UnknownPlanner, lookup
@@ -43,7 +42,8 @@ from .options import (
 from .reasons import networks_hint, why_unsolvable
 
 #: Exit status per outcome status.
-EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.TIMEOUT: 1, PlanStatus.ERROR: 2}
+EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.GAVE_UP: 1, PlanStatus.TIMEOUT: 1,
+        PlanStatus.ERROR: 2}
 
 
 def timing_line(timings: dict[str, float]) -> str:
@@ -117,7 +117,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
           constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
-    Exit status: 0 solved, 1 unsolvable or time limit (reason on stderr), 2 bad input or planner error.
+    Exit status: 0 solved, 1 unsolvable, search gave up or time limit (reason on stderr), 2 bad input or planner error.
     """
     entries = batch_entries(goal, goals_file, goal_file, fmt)
     check_output(output, directory=entries is not None)
@@ -149,16 +149,11 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
-    try:
-        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
-                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                       up_validate=up_validate, constraints=cons, search=config,
-                       instances=counts,
-                       categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
-    except GoalExcluded as exc:
-        click.echo(f"unsolvable (constraints): {exc}", err=True)
-        click.echo("reason: " + why_unsolvable(foon, kit, target, cons)[0], err=True)
-        click.get_current_context().exit(1)
+    outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                   optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                   up_validate=up_validate, constraints=cons, search=config,
+                   instances=counts,
+                   categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None
@@ -181,7 +176,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         click.echo(summary, err=True)
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
-        if status == "unsolvable" and ENCODINGS[encoding].foon_semantics:
+        if status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:
             reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
             click.echo("reason: " + reason, err=True)
             if NETWORKS[network].as_read and not cons.items and not makes:

@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
+from ..errors import PlanDecodeError
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -34,10 +35,6 @@ Ground = Callable[[int, tuple[str, ...]], FunctionalUnit]
 
 #: (task, plan steps) -> the plan as a physical trace (PlanDecodeError for a step that does not fit).
 Replay = Callable[[PlanningTask, Sequence[str]], PhysicalTrace]
-
-
-class PlanDecodeError(ValueError):
-    """A plan step that does not map back to a functional unit (an unknown action, wrong arguments)."""
 
 
 @dataclass(frozen=True)

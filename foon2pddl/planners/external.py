@@ -9,9 +9,9 @@ is read back as an IPC plan file (`(action arg ...)` lines, `;` comments) from
 `{plan}`, or, when the planner writes elsewhere, from `sas_plan` (Fast
 Downward's default) or `problem.pddl.soln` (pyperplan's). A planner that exits
 without a plan reports the task unsolvable only when it says so: Fast
-Downward's unsolvable codes 10-13, or output such as "unsolvable" or "no
-solution" (`SAYS_UNSOLVABLE`); otherwise it is an error (a crash that exits 0
-must not pass for a proof). Its codes 1-3 with a plan still mean a plan was
+Downward's unsolvable codes 10-11, or output such as "unsolvable" or "no
+solution" (`SAYS_UNSOLVABLE`); its codes 12-13 (search stopped without a proof)
+are `gave up`; otherwise it is an error (a crash that exits 0 must not pass for a proof). Its codes 1-3 with a plan still mean a plan was
 found; the plan is validated anyway.
 """
 
@@ -74,7 +74,9 @@ def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | 
         found = next((p for p in (plan, work / "sas_plan", work / "problem.pddl.soln") if p.is_file()), None)
         if found is not None and run.returncode in (0, 1, 2, 3):
             return PlanResult("solved", parse_plan_text(found.read_text(errors="replace")), name, "plan found", timings)
-        if run.returncode in (10, 11, 12, 13) or (run.returncode == 0 and SAYS_UNSOLVABLE.search(run.output)):
+        if run.returncode in (12, 13):  # Fast Downward's codes for a search that stopped without a proof
+            return PlanResult("gave up", (), name, f"planner wrote no plan (exit code {run.returncode})", timings)
+        if run.returncode in (10, 11) or (run.returncode == 0 and SAYS_UNSOLVABLE.search(run.output)):
             return PlanResult("unsolvable", (), name, f"planner wrote no plan (exit code {run.returncode})", timings)
         what = "wrote no plan and did not say the task is unsolvable" if run.returncode == 0 else "exit code"
         return PlanResult("error", (), name, f"planner {what} (exit code {run.returncode}): {tail(run.output)}",

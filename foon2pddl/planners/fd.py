@@ -42,8 +42,8 @@ EXIT_CODES: dict[int, tuple[str, str]] = {
     3: ("solved", "plan found, then out of memory and time"),
     10: ("unsolvable", "translator proved the task unsolvable"),
     11: ("unsolvable", "search proved the task unsolvable"),
-    12: ("unsolvable", "search space exhausted without a plan (incomplete search)"),
-    13: ("unsolvable", "no plan within the cost bound"),
+    12: ("gave up", "search space exhausted without a plan (incomplete search)"),
+    13: ("gave up", "no plan within the cost bound"),
     20: ("error", "translator out of memory"),
     21: ("timeout", "translator time limit"),
     22: ("error", "search out of memory"),
@@ -260,7 +260,7 @@ def search(cwd: Path, options: tuple[str, ...], timeout: float | None, name: str
         if best is None:
             return PlanResult("error", (), name, f"exit code {run.returncode} but no plan file: {tail(run.output)}", timings)
         return PlanResult("solved", parse_plan_text(best.read_text()), name, meaning, timings)
-    message = meaning if status == "unsolvable" else f"{meaning}: {tail(run.output)}"
+    message = meaning if status in ("unsolvable", "gave up") else f"{meaning}: {tail(run.output)}"
     return PlanResult(status, (), name, message, timings)
 
 

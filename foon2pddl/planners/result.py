@@ -1,8 +1,8 @@
 """What every planner returns: a status, the plan's steps, a message and timings.
 
 Statuses (`status.PlanStatus`): `solved` (a plan was found), `unsolvable` (the
-planner proved or concluded there is none), `timeout` (the time limit ran out
-first), `error` (the planner failed or does not support the task). Plan steps are the
+planner proved there is none), `gave up` (its search stopped without a plan or a
+proof), `timeout` (the time limit ran out first), `error` (the planner failed or does not support the task). Plan steps are the
 lower-cased text between the parentheses of an IPC plan line: the action name,
 then any arguments separated by single spaces.
 """

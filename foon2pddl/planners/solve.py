@@ -24,6 +24,7 @@ from ..model.levels import project, project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import DEFAULT_ENCODING, as_compiled, compile_goal, compile_task
+from ..pddl.constraints import GoalExcluded
 from ..pddl.registry import Compiled
 from ..pddl.render import render
 from ..pddl.task import Atom, PlanningTask
@@ -32,6 +33,9 @@ from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
 
 __all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan"]
+
+#: The planner named by the outcome of a goal that constraints exclude (nothing was planned).
+EXCLUDED = "constraints"
 
 #: Phases in the order they run (the CLI adds `load` first).
 PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
@@ -114,16 +118,23 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted
     ones (default: the shipped index). `time_limit` bounds the planner run (translation
-    and search). Raises UsageError for bad options (encoding, cost mode),
-    `pddl.constraints.GoalExcluded` when `constraints` leave no way to make the goal; a
-    planner's failure is a status, never an exception. `instances`, `categories`: for the
+    and search). Raises UsageError for bad options (encoding, cost mode). When `constraints`
+    leave no way to make the goal, nothing is compiled and the outcome is `unsolvable`
+    (planner `constraints`, an empty task of the encoding); a planner's failure is a
+    status, never an exception. `instances`, `categories`: for the
     `instances` encoding (see `pddl.encoding.EncodeOptions`).
     """
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
-    compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
-                            category_index=category_index, constraints=constraints, instances=instances,
-                            categories=categories)
+    try:
+        compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
+                                category_index=category_index, constraints=constraints, instances=instances,
+                                categories=categories)
+    except GoalExcluded as exc:
+        timings["encode"] = time.perf_counter() - t0
+        empty = PlanningTask("excluded", "excluded", encoding, level, (), (), (), ())
+        return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), EXCLUDED, str(exc)), Compiled(empty),
+                           timings=timings)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     domain_text, problem_text = render(compiled.task)

@@ -30,7 +30,7 @@ UP_STATUS = {
     "SOLVED_OPTIMALLY": "solved",
     "INTERMEDIATE": "solved",
     "UNSOLVABLE_PROVEN": "unsolvable",
-    "UNSOLVABLE_INCOMPLETELY": "unsolvable",
+    "UNSOLVABLE_INCOMPLETELY": "gave up",
     "TIMEOUT": "timeout",
     "MEMOUT": "error",
     "INTERNAL_ERROR": "error",

@@ -12,7 +12,6 @@ from __future__ import annotations
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from enum import StrEnum
 
 from ..analysis.reachability import reachable
 from ..errors import FoonError
@@ -22,23 +21,10 @@ from ..model.containment import Containment, containment_of, count_inference
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.tasktree import TaskTree, validate
+from ..status import BatchStatus, batch_status
 from .api import retrieve
 from .greedy import DEFAULT_BUDGET
 from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
-from .result import BUDGET_EXHAUSTED, UNREACHABLE
-
-
-class GoalStatus(StrEnum):
-    """Outcome of one goal of a batch."""
-
-    SOLVED = "solved"
-    UNREACHABLE = "unreachable"
-    BUDGET_EXHAUSTED = "budget exhausted"
-    UNMATCHED = "unmatched"   # the goal names no node any unit produces
-    INVALID = "invalid"       # a tree was found but does not validate (a bug: reported, never hidden)
-
-
-_REASONS = {UNREACHABLE: GoalStatus.UNREACHABLE, BUDGET_EXHAUSTED: GoalStatus.BUDGET_EXHAUSTED}
 
 
 @dataclass(frozen=True)
@@ -48,7 +34,7 @@ class GoalRow:
 
     goal: str
     source: str
-    status: GoalStatus
+    status: BatchStatus
     seconds: float
     reason: str = ""
     units: int | None = None
@@ -89,16 +75,16 @@ def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, met
     try:
         goal = resolve(entry.spec)
     except FoonError as exc:  # no node matches the goal
-        return GoalRow(entry.spec.describe(), where, GoalStatus.UNMATCHED, clock() - t0, exc.message)
+        return GoalRow(entry.spec.describe(), where, BatchStatus.UNMATCHED, clock() - t0, exc.message)
     result = retrieve(foon, kitchen, goal, method, rates=rates, reach=reach, **limits)
     if result.tree is None:
-        return GoalRow(goal.describe(), where, _REASONS.get(result.reason, GoalStatus.UNREACHABLE), clock() - t0,
+        return GoalRow(goal.describe(), where, batch_status(result.reason), clock() - t0,
                        f"{result.reason}: {result.detail}")
     check = validate(result.tree, kitchen, mode)
     units = len(result.tree.units) - count_inference(result.tree.units)
     inferred = tuple(n.describe() for n in check.inferred)
     if not check.ok:
-        return GoalRow(goal.describe(), where, GoalStatus.INVALID, clock() - t0, "; ".join(check.problems[:3]),
+        return GoalRow(goal.describe(), where, BatchStatus.INVALID, clock() - t0, "; ".join(check.problems[:3]),
                        units, inferred, result.probability, result.tree)
-    return GoalRow(goal.describe(), where, GoalStatus.SOLVED, clock() - t0, result.detail, units, inferred,
+    return GoalRow(goal.describe(), where, BatchStatus.SOLVED, clock() - t0, result.detail, units, inferred,
                    result.probability, result.tree)
