@@ -144,6 +144,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         "files": len(runner.input_files(config.paths)),
         "fingerprint": runner.fingerprint(config.paths),
         "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
+        "similarity": similarity,
         "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
         "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
                            "what": NETWORKS[v.name].summary} for v in views],
