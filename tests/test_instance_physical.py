@@ -137,3 +137,13 @@ def test_plan_notes_what_the_replay_finds_with_inferred_holders(example):
     assert "07-guacamole.foon:" in note and "disagreement" in note
     clean = plan(BRINE_FOON, BRINE_KITCHEN, Goal(GoalSpec("brine"), (BRINE,)), "instances")
     assert not any(n.startswith("not checked physically") for n in clean.decoded.notes)
+
+
+def test_the_only_holder_of_a_label_that_the_unit_never_lists():
+    """`bread (in [oven])` from a unit that binds no oven, with one oven in the task: that oven (rule 4)."""
+    bake = unit("bake", [n("bread", "raw")], [n("bread", "baked", ("in", "oven"))])
+    task, plain = _trace([("bread_1", "bread", n("bread", "raw")), ("oven_1", "oven", n("oven", "on"))],
+                         [(bake, ["bread_1"])])
+    inferred = physical_trace(task, plain)
+    assert inferred.trace.holder_of("bread_1") == "oven_1" and inferred.evidence[E.ONLY] == 1
+    assert [d.kind for d in replay(inferred.trace).disagreements] == [K.UNBOUND_TARGET]

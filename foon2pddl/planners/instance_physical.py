@@ -15,7 +15,9 @@ Holder of an object whose new node says `in [C]` / `on [C]` (`HolderEvidence`):
 2. **single**: the step binds exactly one other object labelled C;
 3. **listed**: the bound C whose new ingredient list names the object's label (one
    that did not list it before first; then the first in role order);
-4. **unresolved**: none of these: no holder (the replay then reports it misplaced).
+4. **only**: the step binds no C, and exactly one object labelled C exists (the
+   oven a unit never lists: the replay then reports that the step does not use it);
+5. **unresolved**: none of these: no holder (the replay then reports it misplaced).
 
 A node naming several places (`in [bowl]`, `in [microwave]`) is resolved for the
 place whose candidates name another of its places first (the bowl in the
@@ -45,7 +47,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from ..model.foon import ObjectNode
-from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceStep
+from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
 from .physical_replay import listed, places, replay
@@ -59,6 +61,7 @@ class HolderEvidence(StrEnum):
     TRACKED = "tracked"
     SINGLE = "single"
     LISTED = "listed"
+    ONLY = "only"
     UNRESOLVED = "unresolved"
 
 
@@ -107,7 +110,7 @@ class _Builder:
 
     def holder(self, obj: str, node: ObjectNode, roles: Sequence[tuple[Role, str]],
                unchanged: bool = False) -> tuple[str | None, Relation | None]:
-        """Where `obj`, now in `node`, is after a step with `roles` (module doc, rules 1-4; only rule 1's
+        """Where `obj`, now in `node`, is after a step with `roles` (module doc, rules 1-5; only rule 1's
         exception for an object the step leaves `unchanged`)."""
         named = places(node)
         cur = self.now[obj]
@@ -140,6 +143,8 @@ class _Builder:
                 pick, why = bound[0], HolderEvidence.SINGLE
             elif lists:
                 pick, why = (fresh or lists)[0], HolderEvidence.LISTED
+            elif not bound and len(only := [n for n, s in self.now.items() if self.label[n] == c and s.exists]) == 1:
+                pick, why = only[0], HolderEvidence.ONLY
             else:
                 continue
             if not self.loops(obj, pick):
@@ -219,7 +224,10 @@ def physical_trace(task: PlanningTask, trace: PhysicalTrace) -> InferredTrace:
 def replay_note(task: PlanningTask, trace: PhysicalTrace) -> tuple[str, ...]:
     """A note for a plan whose encoding models no holders: what the physical replay finds with inferred ones
     (empty when it finds nothing)."""
-    report = replay(physical_trace(task, trace).trace)
+    try:
+        report = replay(physical_trace(task, trace).trace)
+    except TraceError as exc:  # an inference bug must not cost the user the plan
+        return (f"not checked physically by the encoding, and its holders could not be inferred: {exc}",)
     if report.ok:
         return ()
     n, steps = len(report.disagreements), len(trace.steps)
