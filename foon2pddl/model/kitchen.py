@@ -64,7 +64,9 @@ class Kitchen:
 @bulk
 def starting_nodes(foon: Foon) -> frozenset[ObjectNode]:
     """Input nodes that no unit creates (a unit that passes a node through unchanged does not create it)."""
-    created = {n for u in foon.units for n in u.outputs if n not in u.inputs}
+    # `u.key[1]` is the unit's input set (hashed, cached by the merge): membership without
+    # comparing the output with every input field by field
+    created = {n for u in foon.units for n in u.outputs if n not in u.key[1]}
     return frozenset(n for u in foon.units for n in u.inputs if n not in created)
 
 
@@ -72,10 +74,9 @@ def starting_nodes(foon: Foon) -> frozenset[ObjectNode]:
 def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
     """Starting nodes plus every input node whose states are all base states."""
     base = frozenset(base_states)
-    extra = {
-        n for u in foon.units for n in u.inputs
-        if n.states and all(s.label in base and not s.related and not s.ingredients for s in n.states)
-    }
+    inputs = {n for u in foon.units for n in u.inputs}  # each distinct node checked once
+    extra = {n for n in inputs if n.states and all(s.label in base and not s.related and not s.ingredients
+                                                   for s in n.states)}
     return Kitchen(starting_nodes(foon) | frozenset(extra), foon.level, "default kitchen")
 
 
