@@ -259,7 +259,8 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
            lambda s: _FdFresh(s, "state"), planner=True, cost=6),
     Solver("fd-instances", "Fast Downward lama-first, instances encoding (physical objects whose states change, "
                            "counts derived per goal), compiled per goal (plans replayed on the objects and "
-                           "validated as FOON trees)",
+                           "validated as FOON trees; goals no task tree reaches are answered from the trial's "
+                           "fixpoint)",
            lambda s: _FdFresh(s, "instances"), planner=True, cost=6),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects)",
            _LiftedGen, networks=lifted_networks(), planner=True, role=Role.CONCRETE, cost=4),
