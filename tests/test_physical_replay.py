@@ -108,6 +108,29 @@ def test_stale_source():
     assert "left it at step 2" in report.disagreements[0].message
 
 
+def test_an_undescribed_source_is_still_there_but_unchecked():
+    """The pour leaves the shaker with no FOON node (node None): no stale list, it may still hold things,
+    and a later unit cannot use it in a FOON state."""
+    t = salsa_world().trace()
+    s = t.steps[1]
+    s = replace(s, changes=tuple(ObjectState("shaker_1") if c.id == "shaker_1" else c for c in s.changes),
+                bindings=tuple(replace(b, after=None) if b.object == "shaker_1" else b for b in s.bindings))
+    t = replace(t, steps=(t.steps[0], s, t.steps[2]))
+    assert replay(t).ok
+    t = with_change(t, 2, ObjectState("spoon_1", node("spoon", ("in", "shaker")), "shaker_1", "in"))
+    assert K.HOLDER_GONE not in kinds(t)
+    w = salsa_world()
+    w.steps[1] = s
+    w.now["shaker_1"] = ObjectState("shaker_1")
+    w.steps.pop()
+    w.step("shake", [], uses=("spoon_1",))
+    steps = list(w.trace().steps)
+    steps[2] = replace(steps[2], bindings=(*steps[2].bindings, Binding("shaker_1", contents("shaker", []), None)))
+    report = replay(replace(w.trace(), steps=tuple(steps)))
+    d = next(d for d in report.disagreements if d.kind is K.NOT_AVAILABLE)
+    assert "described by no FOON node" in d.message
+
+
 def test_unlisted_content_and_held_by_empty():
     t = with_initial(salsa_world().trace(), ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
     assert {K.HELD_BY_EMPTY, K.MISSING_CONTENT} <= kinds(t)  # bowl_2 empty holds salt; the shaker lacks it

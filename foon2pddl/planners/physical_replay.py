@@ -7,7 +7,11 @@ own words, never with an encoding's facts (it is the oracle that checks them).
 **States** (the initial state, step -1, and the state after every step):
 
 * a holder exists: every existing object in or on something is held by an object that
-  is made and not consumed (`HOLDER_GONE`);
+  is made and not consumed (`HOLDER_GONE`). An object made earlier whose node became
+  None (FOON gives it no state any more: a carton FOON leaves out of a pour's outputs,
+  a bowl a unit fills without listing it) is *undescribed*: still there, it can hold
+  things and stands for its label in a container, but nothing is checked of its own
+  state or contents;
 * placement: an object whose node says `in [C]` / `on [C]` is directly in / on an
   object labelled C (`MISPLACED`); when its node names several places (`in [bowl]`,
   `in [microwave]`), the direct holder matches one and the others are further up the
@@ -179,6 +183,15 @@ class _Replay:
         self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
         self.active: set[tuple] = set()
+        self.seen: set[str] = set()  # objects that have existed: with no node later, they are undescribed
+
+    def present(self, state: ObjectState) -> bool:
+        """Physically there: existing, or made earlier and not consumed, with no FOON node any more."""
+        return not state.consumed and (state.node is not None or state.id in self.seen)
+
+    def status(self, state: ObjectState) -> str:
+        return ("consumed" if state.consumed else "described by no FOON node" if self.present(state)
+                else "not made yet")
 
     def places(self, node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
         return tuple((r, self.aliases.get(c, c)) for r, c in places(node))
@@ -199,6 +212,7 @@ class _Replay:
             now.append(Disagreement(kind, step, objects, source, message))
 
         existing = sorted(i for i, s in states.items() if s.exists)
+        self.seen.update(existing)
         for oid in existing:
             self._placement(states, oid, add)
         self._contents(states, existing, add)
@@ -210,9 +224,9 @@ class _Replay:
     def _placement(self, states: Mapping[str, ObjectState], oid: str, add) -> None:
         s = states[oid]
         named = self.places(s.node)
-        if s.holder is not None and not states[s.holder].exists:
+        if s.holder is not None and not self.present(states[s.holder]):
             add(DisagreementKind.HOLDER_GONE, (oid, s.holder), f"{oid} is {s.relation} {s.holder}, which "
-                f"{'is consumed' if states[s.holder].consumed else 'is not made yet'}")
+                f"is {self.status(states[s.holder])}")
         if not named:
             first = self.initial[oid]
             if s.holder is not None and not (s.holder == first.holder and not self.places(first.node)):
@@ -238,10 +252,12 @@ class _Replay:
 
     def _contents(self, states: Mapping[str, ObjectState], existing: list[str], add) -> None:
         inside: dict[str, list[str]] = {}
-        for oid in existing:
-            h = states[oid].holder
-            if h is not None and self.places(states[oid].node):
-                inside.setdefault(h, []).append(oid)
+        cover: dict[str, list[str]] = {}  # also undescribed objects: they still stand for what they are
+        for oid, st in states.items():
+            if st.holder is not None and self.present(st) and (st.node is None or self.places(st.node)):
+                cover.setdefault(st.holder, []).append(oid)
+                if st.node is not None:
+                    inside.setdefault(st.holder, []).append(oid)
         holders = [h for h in existing if self.label[h] in self.containers]
         claims: dict[str, list[str]] = {}
         for h in holders:
@@ -249,7 +265,7 @@ class _Replay:
                 claims.setdefault(x, []).append(h)
         for h in holders:
             node, items = states[h].node, self.listed(states[h].node)
-            covered = frozenset().union(self.absorbed.get(h, frozenset()), *(self.stands_for(o) for o in inside.get(h, ())))
+            covered = frozenset().union(self.absorbed.get(h, frozenset()), *map(self.stands_for, cover.get(h, ())))
             for x in sorted(items - covered):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
                 left = self.stale.get((h, x))
@@ -288,17 +304,17 @@ class _Replay:
         for b in step.bindings:
             was, now = before[b.object], after[b.object]
             if b.before is None:
-                if was.exists:
+                if self.present(was):
                     add(DisagreementKind.REMADE, (b.object,), f"the step makes {b.object}, which already exists")
             elif not was.exists:
                 add(DisagreementKind.NOT_AVAILABLE, (b.object,),
-                    f"{b.object} is {'consumed' if was.consumed else 'not made yet'}, the step needs "
-                    f"{b.before.describe()!r}")
+                    f"{b.object} is {self.status(was)}, the step needs {b.before.describe()!r}")
             elif was.node != b.before:
                 add(DisagreementKind.STATE_MISMATCH, (b.object,),
                     f"{b.object} is {was.node.describe()!r}, the step needs {b.before.describe()!r}")
             want = b.after if b.after is not None else b.before
-            if want is not None and not now.consumed and now.node != want:
+            undescribed = b.after is None and now.node is None and was.exists  # the unit gives it no output
+            if want is not None and not now.consumed and now.node != want and not undescribed:
                 have = now.node.describe() if now.node is not None else "not made"
                 add(DisagreementKind.STATE_MISMATCH, (b.object,),
                     f"{b.object} ends {have!r}, the step makes it {want.describe()!r}")
