@@ -16,19 +16,16 @@ The public Python API (`api.py`), importable from the package itself:
 The names are loaded on first use, so `import foon2pddl` stays cheap.
 """
 
-from __future__ import annotations
-
-from typing import Any
-
 __version__ = "0.1.0"
 
 #: Public names, each from `api` (loaded on first access).
-__all__ = ["ENCODINGS", "Compiled", "Foon", "Goal", "Kitchen", "Network", "PlanOutcome", "Retrieval", "__version__",
-           "compile_goal", "kitchen_of", "load_kitchen", "load_network", "plan", "render_tree", "resolve_goal",
-           "retrieve", "to_pddl", "to_up_problem"]
+__all__ = ["ENCODINGS", "Compiled", "Constraints", "Foon", "Goal", "GoalPlan", "GoalRow", "Kitchen", "Network",
+           "PlanOutcome", "Retrieval", "__version__", "compile_goal", "constraints_of", "kitchen_of", "load_kitchen",
+           "load_network", "plan", "plan_goals", "render_tree", "resolve_goal", "retrieve", "retrieve_goals",
+           "run_experiment", "to_pddl", "to_up_problem"]
 
 
-def __getattr__(name: str) -> Any:
+def __getattr__(name: str) -> object:
     if name in __all__:
         from . import api
 

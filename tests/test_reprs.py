@@ -79,3 +79,10 @@ def test_task_tree_html_lists_every_step_escaped(example):
     from foon2pddl.model.foon import make_node
     odd = replace(tree, goal=make_node("<b>x</b> & y"))
     assert "<b>x</b>" not in odd._repr_html_() and "&lt;b&gt;" in odd._repr_html_()
+
+
+def test_kitchen_repr_counts_and_shows_a_few_nodes(example):
+    kitchen = load_kitchen(None, example, 3)
+    text = repr(kitchen)
+    assert text.startswith(f"<Kitchen level 3: {len(kitchen.nodes)} nodes") and text.endswith(", ...)>")
+    assert len(text) < 300 and "frozenset" not in text

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from ..errors import FoonSyntaxError, ParseWarning
+from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
 from ..model.bulk import full_gc_paused
 from ..model.foon import Foon
 from ..model.merge import merge
@@ -27,7 +27,7 @@ def expand_paths(paths: Iterable[str | Path]) -> list[Path]:
         elif p.exists():
             out.append(p)
         else:
-            raise FoonSyntaxError(str(p), 0, "no such file or directory")
+            raise FoonInputError(str(p), 0, "no such file or directory")
     return sorted(dict.fromkeys(out))
 
 

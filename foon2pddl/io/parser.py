@@ -14,7 +14,7 @@ import stat
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import FoonSyntaxError, ParseWarning
+from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
 
 _ID = re.compile(r"[OSM]\d*")
@@ -39,18 +39,18 @@ def read_bytes(path: Path) -> bytes:
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError as exc:
-        raise FoonSyntaxError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
+        raise FoonInputError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
     try:
         info = os.fstat(fd)
         if stat.S_ISDIR(info.st_mode):
-            raise FoonSyntaxError(str(path), 0, "cannot read file: Is a directory")
+            raise FoonInputError(str(path), 0, "cannot read file: Is a directory")
         if not stat.S_ISREG(info.st_mode):
-            raise FoonSyntaxError(str(path), 0, "not a regular file (FIFOs and devices are not read)")
+            raise FoonInputError(str(path), 0, "not a regular file (FIFOs and devices are not read)")
         os.set_blocking(fd, True)
         with os.fdopen(fd, "rb", closefd=False) as fh:
             return fh.read()
     except OSError as exc:
-        raise FoonSyntaxError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
+        raise FoonInputError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
     finally:
         os.close(fd)
 

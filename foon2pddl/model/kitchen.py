@@ -38,6 +38,14 @@ class Kitchen:
     def __contains__(self, node: object) -> bool:
         return node in self.nodes
 
+    def __repr__(self) -> str:
+        """Counts and a few nodes: the dataclass repr of a kitchen lists hundreds of nodes."""
+        shown = sorted(n.describe() for n in self.nodes)
+        head = ", ".join(shown[:3]) + (", ..." if len(shown) > 3 else "")
+        source = f" from {self.source}" if self.source else ""
+        counted = f", {len(self.counts)} counted" if self.counts else ""
+        return f"<Kitchen level {self.level}: {len(self.nodes)} nodes{counted}{source} ({head})>"
+
     def __len__(self) -> int:
         return len(self.nodes)
 

@@ -1,0 +1,61 @@
+"""The Python API does what the CLI does: network kinds, constraints, search configuration, batches, experiment."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+import foon2pddl as fp
+from foon2pddl.cli import main
+from foon2pddl.errors import FoonInputError, UsageError
+
+
+@pytest.fixture(scope="module")
+def net():
+    return fp.load_network()
+
+
+def test_the_package_namespace_is_the_api():
+    public = {n for n in dir(fp) if not n.startswith("_")}
+    assert public <= set(fp.__all__) | {"analysis", "api", "cli", "errors", "experiment", "generalize", "io",
+                                        "model", "pddl", "planners", "retrieval", "status"}
+    assert not hasattr(fp, "Any") and not hasattr(fp, "annotations")
+
+
+def test_missing_paths_are_input_errors(net, tmp_path):
+    with pytest.raises(FoonInputError, match="no such file"):
+        fp.load_network(tmp_path / "nope.txt")
+    with pytest.raises(FoonInputError, match="cannot read"):
+        fp.load_kitchen(net, tmp_path / "kitchen.txt")
+
+
+def test_retrieve_under_constraints_and_kinds_matches_the_cli(net):
+    kitchen = fp.load_kitchen(net)
+    no_lime = fp.constraints_of(without=["lime"])
+    for kind in ("reg", "exp", "gen"):
+        api = fp.retrieve(net, kitchen, "guacamole", constraints=no_lime, network_kind=kind)
+        r = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole", "--without", "lime", "--network", kind,
+                                      "--format", "json"])
+        assert (r.exit_code == 0) == api.found, (kind, r.stderr)
+        if api.found:
+            assert json.loads(r.stdout)["units"] == len(api.tree)
+
+
+def test_plan_takes_a_search_configuration(net):
+    kitchen = fp.load_kitchen(net)
+    out = fp.plan(net, kitchen, "guacamole", alias="seq-opt-lmcut")
+    assert out.status == "solved" and out.result.planner == "fd (seq-opt-lmcut)"
+    with pytest.raises(UsageError, match="unknown Fast Downward alias"):
+        fp.plan(net, kitchen, "guacamole", alias="lama-frist")
+    with pytest.raises(UsageError, match="configure Fast Downward"):
+        fp.plan(net, kitchen, "guacamole", planner="pyperplan", search="astar(lmcut())")
+
+
+def test_batches_and_the_experiment(net, tmp_path):
+    kitchen = fp.load_kitchen(net)
+    rows = fp.plan_goals(net, kitchen, ["guacamole", "unicorn"])
+    assert rows[0].outcome.status == "solved" and rows[1].outcome is None and "unicorn" in rows[1].reason
+    summary = fp.run_experiment(tmp_path, networks=["reg"], solvers=["native-complete"], trials=1, goals=3)
+    assert summary.ran == 3 and (tmp_path / "results.jsonl").is_file()
