@@ -37,7 +37,7 @@ from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
 from ..model.tasktree import TaskTree
 from ..pddl.pairing import RoleKind, unit_roles
-from .physical_replay import places, step_source
+from .foon_places import places, step_source
 
 __all__ = ["Executability", "Verdict", "needed", "schedule"]
 

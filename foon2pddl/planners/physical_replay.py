@@ -66,6 +66,7 @@ from enum import StrEnum
 
 from ..model.foon import ObjectNode
 from ..model.physical import ObjectState, PhysicalTrace, Relation, TraceStep
+from .foon_places import container_labels, listed, places, step_source
 
 __all__ = ["HOLDER_KINDS", "Disagreement", "DisagreementKind", "ReplayReport", "container_labels", "listed", "places", "replay"]
 
@@ -127,47 +128,6 @@ class ReplayReport:
 
     def kinds(self) -> frozenset[DisagreementKind]:
         return frozenset(d.kind for d in self.disagreements)
-
-
-def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
-    """The places a node names: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]` (a bare `on`
-    is an appliance switched on, not a place)."""
-    if node is None:
-        return ()
-    return tuple((Relation(s.label), s.related) for s in node.states if s.label in ("in", "on") and s.related)
-
-
-def listed(node: ObjectNode | None) -> frozenset[str]:
-    """The labels a container node lists: the ingredients and related objects of its `contains` states."""
-    if node is None:
-        return frozenset()
-    items = {i for s in node.states if s.label == "contains" for i in (*s.ingredients, s.related) if i}
-    return frozenset(items - {node.label})
-
-
-def _describes_contents(node: ObjectNode) -> bool:
-    return any(s.label in ("contains", "empty") for s in node.states)
-
-
-def container_labels(trace: PhysicalTrace, aliases: Mapping[str, str] | None = None) -> frozenset[str]:
-    """Labels some node of the trace (initial, binding or change) gives a `contains` or `empty` state and
-    some node names as a place (`in [bowl]`): a `contains` list on anything else (`biscuit dough (contains
-    {butter, flour})`) names the ingredients of a mixture, not objects in it."""
-    nodes = [s.node for s in trace.initial]
-    for step in trace.steps:
-        nodes += [n for b in step.bindings for n in (b.before, b.after)] + [c.node for c in step.changes]
-    nodes = [n for n in nodes if n is not None]
-    aliases = aliases or {}
-    placed = {aliases.get(c, c) for n in nodes for _, c in places(n)}
-    return frozenset(n.label for n in nodes if _describes_contents(n) and n.label in placed)
-
-
-def step_source(step: TraceStep) -> str:
-    """The step's `source`, else its unit's first `file:line`."""
-    if step.source:
-        return step.source
-    src = step.unit.source
-    return f"{src.path}:{src.line}" if src is not None else ""
 
 
 class _Replay:
