@@ -44,15 +44,38 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
 @paths_argument
 @categories_option
 @click.option("--check", is_flag=True, help="List the object labels of PATHS in no category, with the coverage.")
+@click.option("--extend", is_flag=True,
+              help="Write the index extended to the object labels of PATHS it lacks (through WordNet) to -o; "
+                   "each new assignment is listed on stderr for review.")
+@click.option("--min-similarity", "min_similarity", type=click.FloatRange(0, 1), default=0.65, show_default=True,
+              help="--extend: least similarity to the nearest known label for a WordNet assignment.")
 @output_option
-def categories_(paths, categories, check, output) -> None:
-    """Show the category index (tree of categories with member counts), or --check its coverage of a network.
+def categories_(paths, categories, check, extend, min_similarity, output) -> None:
+    """Show the category index (tree of categories with member counts), --check its coverage of a network,
+    or --extend it to a network's labels.
 
-    With --check, exit status 1 when some object label has no category.
+    With --check, exit status 1 when some object label has no category. With --extend, the
+    review list is TSV on stderr: label, category, the known label it was matched to,
+    similarity, and how (head noun, wordnet, or none when no category was found).
     """
     from ..generalize.categories import coverage, load_index
 
     index = load_index(categories)
+    if extend:
+        from ..generalize.extend import assign, extended_index, index_json
+
+        net = load_network(paths)
+        labels = [n.label for n in net.foon.nodes]
+        found = assign(labels, index, min_similarity=min_similarity)
+        bigger = extended_index(index, found)
+        emit(index_json(bigger, "Extended by foon2pddl categories --extend: review the assignments."), output)
+        click.echo("label\tcategory\tvia\tsimilarity\thow", err=True)
+        for a in found:
+            click.echo(a.describe(), err=True)
+        before, after = coverage(labels, index), coverage(labels, bigger)
+        click.echo(f"{after.covered} of {len(after.labels)} object labels in some category ({after.percent:.1f} %; "
+                   f"{before.percent:.1f} % before, {sum(a.category is not None for a in found)} added)", err=True)
+        return
     if not check:
         lines = [f"{'  ' * index.depth(c.name)}{c.name} ({len(c.members)}): {c.description}" for c in _tree(index)]
         emit("\n".join(lines) + "\n", output)

@@ -10,5 +10,6 @@ See docs/generalization.md.
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bootstrap_categories", "cache", "categories", "compress", "expand", "hints", "network", "senses",
+__all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "hints", "modes",
+           "network", "pairs", "senses",
            "similarity", "stats", "substitute", "wordnet", "wup"]

@@ -1,22 +1,15 @@
-"""Bootstrap the category index from WordNet hypernyms (run once; the shipped file was then corrected by hand).
-
-    python -m foon2pddl.generalize.bootstrap_categories ../shared/data/foon-subgraphs -o categories.json
+"""How the category index was bootstrapped from WordNet hypernyms (once; the shipped file was then corrected
+by hand). To extend an index to new labels use `foon2pddl categories --extend` (`extend.py`).
 
 Each category below names WordNet "anchor" synsets; an object label joins every
 category one of whose anchors is among the hypernyms of one of its kitchen
 senses (`senses.resolve`, head-noun fallback included). The output is a draft:
 WordNet puts the banana plant among herbs and a spoon among containers, and
 knows nothing of `X mixture`, so the shipped `generalize/data/categories.json`
-is this draft corrected by hand. Running the script again overwrites its output
-file only; it never touches the shipped index unless told to write there.
+is this draft corrected by hand (and later refined: coarse categories split).
 """
 
 from __future__ import annotations
-
-import argparse
-import json
-import sys
-from pathlib import Path
 
 #: (name, parent, description, anchor synsets), in the index's order (parents first).
 SPEC: tuple[tuple[str, str | None, str, tuple[str, ...]], ...] = (
@@ -156,26 +149,3 @@ def bootstrap(labels: list[str]) -> dict:
                     members[cat].add(label)
     return {"categories": {name: {"parent": parent, "description": desc, "members": sorted(members[name])}
                            for name, parent, desc, _ in SPEC}}
-
-
-def main(argv: list[str] | None = None) -> None:
-    from ..io.inputs import load_kitchen, load_network
-
-    ap = argparse.ArgumentParser(prog="python -m foon2pddl.generalize.bootstrap_categories", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("paths", nargs="*", help="FOON files or directories (the example network is always included)")
-    ap.add_argument("-o", "--output", type=Path, help="write here instead of standard output")
-    args = ap.parse_args(argv)
-    example = load_network([])
-    labels = {n.label for n in example.foon.nodes} | {n.label for n in load_kitchen(None, example, 3).nodes}
-    if args.paths:
-        labels |= {n.label for n in load_network(args.paths).foon.nodes}
-    text = json.dumps(bootstrap(sorted(labels)), indent=2) + "\n"
-    if args.output:
-        args.output.write_text(text, encoding="utf-8")
-    else:
-        sys.stdout.write(text)
-
-
-if __name__ == "__main__":
-    main()

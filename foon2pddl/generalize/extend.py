@@ -1,0 +1,97 @@
+"""Extending a category index to labels it does not know, through WordNet: `categories --extend`.
+
+Each unknown object label joins the category of the known label it is nearest to:
+
+1. head noun: a compound whose head (or a shorter tail of it) is a known label joins
+   that label's category (`zucchini bread` -> the category of `bread`);
+2. otherwise nearest member: the known label with the greatest Wu-Palmer value under
+   the cook mode's senses (role senses, deepest common ancestor; no breadth rejection,
+   since a category is meant to be broad), at least `min_similarity` (default 0.65);
+   ties broken by label order.
+
+A label with no WordNet sense and no known head stays unassigned (listed as such).
+Every assignment is returned with its evidence for review (`Assignment`); the index
+is otherwise unchanged. Cost: per unknown label, one similarity per known label.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from ..model.foon import normalize_label
+from .categories import Category, CategoryIndex
+
+#: Least similarity to the nearest member for a WordNet assignment (measured: docs/generalization.md).
+DEFAULT_MIN_SIMILARITY = 0.65
+
+
+@dataclass(frozen=True)
+class Assignment:
+    """An unknown label, the category it joins (None: unassigned), through which known label, how similar."""
+
+    label: str
+    category: str | None
+    via: str = ""
+    similarity: float = 0.0
+    how: str = ""  # head | wordnet | none
+
+    def describe(self) -> str:
+        if self.category is None:
+            return f"{self.label}\t-\t-\t-\tnone"
+        return f"{self.label}\t{self.category}\t{self.via}\t{self.similarity:.4f}\t{self.how}"
+
+
+def _tails(label: str) -> list[str]:
+    words = label.split()
+    return [" ".join(words[i:]) for i in range(1, len(words))]
+
+
+def assign(labels: Iterable[str], index: CategoryIndex, sim=None,
+           min_similarity: float = DEFAULT_MIN_SIMILARITY) -> tuple[Assignment, ...]:
+    """Assignments of the `labels` in no category of `index` (sorted by label)."""
+    known = sorted({m for c in index.categories for m in c.members})
+    todo = sorted({normalize_label(x) for x in labels} - set(known) - set(index.names) - {""})
+    if not todo:
+        return ()
+    if sim is None:
+        from .cook import CookSimilarity
+
+        sim = CookSimilarity(breadth=1.0, vocabulary=[*known, *todo])
+    out = []
+    for label in todo:
+        head = next((t for t in _tails(label) if index.choose(t) is not None), None)
+        if head is not None:
+            out.append(Assignment(label, index.choose(head), head, 1.0, "head"))
+            continue
+        best, value = "", 0.0
+        for m in known:
+            v = sim(label, m)
+            if v > value:
+                best, value = m, v
+        if best and value >= min_similarity:
+            out.append(Assignment(label, index.choose(best), best, value, "wordnet"))
+        else:
+            out.append(Assignment(label, None, best, value, "none"))
+    return tuple(out)
+
+
+def extended_index(index: CategoryIndex, assignments: Iterable[Assignment]) -> CategoryIndex:
+    """`index` with each assigned label added to its category's members."""
+    extra: dict[str, set[str]] = {}
+    for a in assignments:
+        if a.category is not None:
+            extra.setdefault(a.category, set()).add(a.label)
+    cats = tuple(Category(c.name, c.parent, c.description, tuple(sorted({*c.members, *extra.get(c.name, ())})))
+                 for c in index.categories)
+    return CategoryIndex(cats, index.source)
+
+
+def index_json(index: CategoryIndex, comment: str = "") -> str:
+    """The index in the shipped file's format (`categories.parse_index` reads it back)."""
+    import json
+
+    body = {c.name: {"parent": c.parent, "description": c.description, "members": list(c.members)}
+            for c in index.categories}
+    data = {"_comment": comment, "categories": body} if comment else {"categories": body}
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"

@@ -1,0 +1,51 @@
+"""`categories --extend`: unknown labels join the category of their nearest known label (WordNet)."""
+
+from __future__ import annotations
+
+import json
+
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, parse_index, shipped_index
+from foon2pddl.generalize.extend import assign, extended_index, index_json
+
+FORGOTTEN = ("lime", "salad bowl", "cayenne pepper")
+
+
+def _without(index: CategoryIndex, labels) -> CategoryIndex:
+    return CategoryIndex(tuple(Category(c.name, c.parent, c.description, tuple(m for m in c.members if m not in labels))
+                               for c in index.categories))
+
+
+def test_forgotten_labels_find_their_categories_again(label_similarity):
+    full = shipped_index()
+    small = _without(full, FORGOTTEN)
+    found = {a.label: a for a in assign([*FORGOTTEN, "lemon", "xyzzy plorb"], small)}
+    assert set(found) == {*FORGOTTEN, "xyzzy plorb"}  # known labels are not reassigned
+    assert found["lime"].category == full.choose("lime") == "citrus fruits" and found["lime"].how == "wordnet"
+    assert found["salad bowl"].how == "head" and found["salad bowl"].category == full.choose("bowl")
+    cayenne = found["cayenne pepper"].category
+    assert cayenne is not None and "seasonings" in (cayenne, *full.ancestors(cayenne))
+    assert found["xyzzy plorb"].category is None and found["xyzzy plorb"].how == "none"
+    bigger = extended_index(small, found.values())
+    assert coverage(FORGOTTEN, bigger).percent == 100.0
+    again = parse_index(index_json(bigger), "x.json")  # the written file reads back
+    assert again.choose("lime") == "citrus fruits" and len(again) == len(full)
+
+
+def test_cli_extend_writes_the_index_and_lists_assignments(tmp_path, example):
+    small = tmp_path / "small.json"
+    small.write_text(index_json(_without(shipped_index(), ("lime", "avocado"))))
+    out = tmp_path / "index.json"
+    r = CliRunner().invoke(main, ["categories", "--categories", str(small), "--extend", "-o", str(out)])
+    assert r.exit_code == 0, r.stderr
+    lines = r.stderr.splitlines()
+    assert lines[0] == "label\tcategory\tvia\tsimilarity\thow"
+    rows = {line.split("\t")[0]: line.split("\t") for line in lines[1:-1]}
+    assert rows["lime"][1] == "citrus fruits"
+    assert "object labels in some category" in lines[-1]
+    data = json.loads(out.read_text())
+    assert "lime" in data["categories"]["citrus fruits"]["members"]
+    check = CliRunner().invoke(main, ["categories", "--categories", str(out), "--check"])
+    assert "lime" not in check.stdout.split()
