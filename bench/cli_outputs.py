@@ -8,7 +8,10 @@ once with the current tree, and compares stdout, stderr, exit status and every f
 a command writes. Lines that report elapsed time (`phases: ...`, JSON `timings`) and
 the checkout's own path are masked before comparing.
 
-    python -m bench.cli_outputs --shared ../shared/data [--baseline ce6cbbc] [--only retrieve,plan]
+    python -m bench.cli_outputs --shared ../shared/data [--baseline ce6cbbc] [--against COMMIT] [--only retrieve,plan]
+
+`--against COMMIT` compares two commits (both exported) instead of the baseline and this
+checkout: one commit's effect alone, with `--baseline COMMIT^`.
 
 Exit status 0 when every output is identical, 1 otherwise (each difference is printed
 as a unified diff).
@@ -102,6 +105,7 @@ _TIMING = re.compile(r'^phases: .*$|"timings": \{[^}]*\}', re.M)
 
 def _mask(text: str, checkout: Path, work: Path) -> str:
     text = text.replace(str(work), "<OUT>").replace(str(checkout), "<ROOT>")
+    text = re.sub(r"/tmp/foon2pddl-baseline-[^/]+/(?:baseline|current)", "<ROOT>", text)
     return _TIMING.sub("<timing>", text)
 
 
@@ -134,6 +138,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--only", default="", help="comma-separated words; run the commands whose name has one")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--python", default=sys.executable)
+    ap.add_argument("--against", default=None, help="a commit to compare instead of this checkout")
     ap.add_argument("--repo", type=Path, default=ROOT, help="git repository holding the baseline commit")
     args = ap.parse_args(argv)
     todo = commands(args.shared.resolve())
@@ -141,8 +146,9 @@ def main(argv: list[str] | None = None) -> int:
         words = [w.strip() for w in args.only.split(",") if w.strip()]
         todo = [c for c in todo if any(w in c[0] for w in words)]
     with tempfile.TemporaryDirectory(prefix="foon2pddl-baseline-") as tmp:
-        base = export(args.baseline, Path(tmp), args.repo)
-        jobs = [(name, checkout, cmd) for name, cmd in todo for checkout in (base, ROOT)]
+        base = export(args.baseline, Path(tmp) / "baseline", args.repo)
+        current = ROOT if args.against is None else export(args.against, Path(tmp) / "current", args.repo)
+        jobs = [(name, checkout, cmd) for name, cmd in todo for checkout in (base, current)]
         with ThreadPoolExecutor(args.jobs) as pool:
             outs = list(pool.map(lambda j: run_one(j[1], j[2], args.python), jobs))
     differ = 0
