@@ -126,3 +126,21 @@ def test_a_forked_interpreter_starts_its_own_server(example, goals, tmp_path):
     # the parent's server still answers
     run, sas = _translate(tmp_path / "after", domain, problem, warm=True)
     assert run.returncode == 0 and sas and translator._server.proc.pid == parent_server
+
+
+def test_prestart_starts_the_server_that_the_next_translation_uses(example, goals, tmp_path, monkeypatch):
+    foon, kitchen = example
+    domain, problem = render(compile_goal(foon, kitchen, resolve_goal(spec_of_node(goals[0]), foon),
+                                          "instances", 3).task)
+    translator._drop()
+    monkeypatch.setenv(translator.SWITCH, "0")
+    fd.prestart_translator()
+    assert translator._server is None  # switched off: nothing starts
+    monkeypatch.delenv(translator.SWITCH)
+    fd.prestart_translator()
+    server = translator._server
+    assert server is not None and server.usable()
+    fd.prestart_translator()
+    assert translator._server is server  # a running server is kept
+    run, sas = _translate(tmp_path / "t", domain, problem, warm=True)
+    assert run.returncode == 0 and sas and translator._server is server

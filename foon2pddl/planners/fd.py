@@ -215,6 +215,16 @@ def translate(domain: Path, problem: Path, sas: Path, cwd: Path, timeout: float 
     return run_process(cmd, cwd, timeout, env=env, memory_limit_mb=memory_limit_mb)
 
 
+def prestart_translator() -> None:
+    """Start the warm translator now (see `planners.translator`), when Fast Downward is installed."""
+    from . import translator
+
+    try:
+        translator.prestart(bin_dir())
+    except FastDownwardMissing:
+        pass
+
+
 def translation_failure(run: ProcessRun, name: str) -> PlanResult | None:
     """The result to report when a translator run did not produce a usable task, else None."""
     timings = {"translate": run.seconds}

@@ -124,6 +124,10 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     status, never an exception. `instances`, `categories`: for the
     `instances` encoding (see `pddl.encoding.EncodeOptions`).
     """
+    if planner == DEFAULT_PLANNER and planner_cmd is None:
+        from . import fd
+
+        fd.prestart_translator()  # its start-up overlaps the encoding
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     try:

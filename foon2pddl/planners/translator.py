@@ -96,6 +96,22 @@ def run(args: Sequence[str], cwd: Path, timeout: float | None, bin_dir: Path,
         _LOCK.release()
 
 
+def prestart(bin_dir: Path) -> None:
+    """Start the server now, when it is on and not running, so that its start-up overlaps the caller's
+    work (loading, encoding) instead of delaying the first translation."""
+    global _server
+    if not enabled() or not _LOCK.acquire(blocking=False):
+        return
+    try:
+        if _server is None or not _server.usable():
+            _drop()
+            _server = _Server(bin_dir)
+    except OSError:
+        _server = None
+    finally:
+        _LOCK.release()
+
+
 def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path,
                 memory_limit_mb: int | None) -> ProcessRun | None:
     global _server
@@ -103,8 +119,7 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
     t0 = time.perf_counter()
     try:
         if _server is None or not _server.usable():
-            if _server is not None and _server.owner == os.getpid():
-                _server.close()
+            _drop()
             _server = _Server(bin_dir)
         request = {"args": args, "cwd": str(cwd), "memory_mb": memory_limit_mb}
         _server.proc.stdin.write((json.dumps(request) + "\n").encode())
