@@ -147,13 +147,23 @@ def check_time_limit(value: float | None) -> float | None:
     return value
 
 
-def constraint_inputs(files, without_motions, without, must_use, rates: Path | None, costs: str | None = None):
+def constraint_inputs(files, without_motions, without, must_use, rates: Path | None, costs: str | None = None,
+                      without_skills=(), skill_table: Path | None = None):
     """(constraints, motion rates, cost mode) from the options: rates from --rates and the constraints
-    files together; a constraints file with rates turns on `success-rate` costs unless --costs says otherwise."""
+    files together; a constraints file with rates turns on `success-rate` costs unless --costs says otherwise.
+    Skills the robot lacks (`without_skills` of a file, `--without-skill`) ban the motions the motion table
+    (shipped, or `skill_table`) maps to them."""
     from ..io.constraints_file import load_constraints, with_rates
     from ..io.rates import read_rates
 
-    cons = load_constraints(files, without_motions, without, must_use)
+    cons = load_constraints(files, without_motions, without, must_use, without_skills)
+    if cons.without_skills:
+        from ..model.constraints import combine
+        from ..skills.profile import Robot, robot_constraints
+        from ..skills.table import read_table, shipped_table
+
+        table = read_table(skill_table) if skill_table is not None else shipped_table()
+        cons = combine(cons, robot_constraints(table, Robot.of(without=cons.without_skills)))
     motion_rates = with_rates(read_rates(rates) if rates else None, cons)
     if costs is None and cons.rates:
         costs = "success-rate"

@@ -40,6 +40,7 @@ from .options import (
     view_goal,
 )
 from .reasons import networks_hint, why_unsolvable
+from .skills_cli import plan_with_skills, skill_encoding, skill_options
 
 #: Exit status per outcome status.
 EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.GAVE_UP: 1, PlanStatus.TIMEOUT: 1,
@@ -110,17 +111,22 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="How to print the task tree; for a batch, the table (text, csv, jsonl) or the tree files' format.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
-                   "a directory receiving one tree file per solved goal.")
+                   "a directory receiving one tree file per solved goal; with --skills, a directory receiving "
+                   "the skill domain, one PDDL problem per step and the skill plan.")
+@skill_options
 def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
           level, network, planner,
           planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
-          constraints_files, without_motions, without, must_use, up_validate, fmt, output) -> None:
+          constraints_files, without_motions, without, must_use, up_validate, fmt, output, skills, skill_table,
+          without_skills, hands) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable, search gave up or time limit (reason on stderr), 2 bad input or planner error.
     """
     entries = batch_entries(goal, goals_file, goal_file, fmt)
-    check_output(output, directory=entries is not None)
+    if skills is not None and entries is not None:
+        raise UsageError("--skills plans one goal at a time (not a batch)")
+    check_output(output, directory=entries is not None or skills is not None)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
     try:  # before anything is loaded or timed
@@ -132,7 +138,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         raise click.BadParameter(str(exc), param_hint="--planner-cmd" if planner_cmd else "--planner") from None
     t0 = time.perf_counter()
     cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
-                                                  costs)
+                                                  costs, without_skills=without_skills, skill_table=skill_table)
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
@@ -145,10 +151,19 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
                           instances=checked_instances(instances, encoding, view.foon))
+    if skills is not None:
+        source = click.get_current_context().get_parameter_source("encoding")
+        encoding = skill_encoding(encoding, source is not click.core.ParameterSource.DEFAULT)
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
+    if skills is not None:
+        return plan_with_skills(foon, kit, target, encoding, cons, skills=skills, table_path=skill_table,
+                                without_skills=without_skills, hands=hands, fmt=fmt, output=output,
+                                timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
+                                optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
+                                rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
     outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                    optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
                    up_validate=up_validate, constraints=cons, search=config,

@@ -2,8 +2,12 @@
 
 ```json
 {"name": "one-armed robot", "without_motions": ["pour"], "without": ["peanut"],
- "must_use": ["lettuce"], "rates": {"slice": 0.9}, "costs": {"stir": 0.1}}
+ "must_use": ["lettuce"], "rates": {"slice": 0.9}, "costs": {"stir": 0.1},
+ "without_skills": ["sprinkle"], "skill_costs": {"pick": 2}}
 ```
+
+`without_skills` and `skill_costs` are a robot's skills (docs/skills.md): skills it
+lacks, and what each skill costs in a skill plan (non-negative integers).
 
 Every key is optional; unknown keys are errors (a typo must not silently allow a
 motion). `costs` are -ln(success rate), so a cost c is the rate exp(-c): a cost of 0
@@ -27,7 +31,7 @@ from .rates import Rates
 
 #: File key -> constraint kind of its list of labels.
 LIST_KEYS = {"without_motions": Kind.WITHOUT_MOTION, "without": Kind.WITHOUT, "must_use": Kind.MUST_USE}
-KEYS = (*LIST_KEYS, "name", "rates", "costs", "$schema", "description")
+KEYS = (*LIST_KEYS, "name", "rates", "costs", "without_skills", "skill_costs", "$schema", "description")
 #: The smallest positive float and the cost it stands for (-ln of it): larger costs are read as this.
 MIN_RATE = math.ulp(0.0)
 MAX_COST = -math.log(MIN_RATE)
@@ -74,8 +78,14 @@ def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
                     raise FoonSyntaxError(path, line, f"cost of {motion!r} must be >= 0, not {number!r}")
                 number = max(math.exp(-number), MIN_RATE)
             rates.append((motion, float(number)))
+    lacks = _labels(data.get("without_skills", []), path, _line_of(text, "without_skills"), "without_skills")
+    line = _line_of(text, "skill_costs")
+    skill_costs = data.get("skill_costs", {})
+    if not isinstance(skill_costs, dict) or not all(isinstance(v, int) and not isinstance(v, bool) and v >= 0
+                                                    for v in skill_costs.values()):
+        raise FoonSyntaxError(path, line, "'skill_costs' must map skill names to non-negative integers")
     try:
-        return make_constraints(items, rates, (path,))
+        return make_constraints(items, rates, (path,), lacks, skill_costs.items())
     except ValueError as exc:
         raise FoonSyntaxError(path, _line_of(text, "rates"), str(exc)) from None
 
@@ -87,17 +97,20 @@ def read_constraints(path: str | Path) -> Constraints:
 
 
 def load_constraints(files: Iterable[str | Path] = (), without_motions: Iterable[str] = (),
-                     without: Iterable[str] = (), must_use: Iterable[str] = ()) -> Constraints:
+                     without: Iterable[str] = (), must_use: Iterable[str] = (),
+                     without_skills: Iterable[str] = ()) -> Constraints:
     """Constraints files combined with one-off labels (the CLI's `--constraints` and flags)."""
     flags = [Constraint(Kind.WITHOUT_MOTION, m, "<options>") for m in without_motions]
     flags += [Constraint(Kind.WITHOUT, x, "<options>") for x in without]
     flags += [Constraint(Kind.MUST_USE, x, "<options>") for x in must_use]
-    for c in flags:
-        if CONTROL_CHARS.search(c.value) or not c.value.strip():
-            raise UsageError(f"{c.kind.value} {c.value!r}: the label is empty or has control characters")
+    without_skills = tuple(without_skills)
+    for kind, value in [(c.kind.value, c.value) for c in flags] + [("without-skill", s) for s in without_skills]:
+        if CONTROL_CHARS.search(value) or not value.strip():
+            raise UsageError(f"{kind} {value!r}: the label is empty or has control characters")
     parts = [read_constraints(f) for f in files]
     try:
-        return combine(*parts, make_constraints(flags, sources=("<options>",) if flags else ()))
+        return combine(*parts, make_constraints(flags, sources=("<options>",) if flags or without_skills else (),
+                                                without_skills=without_skills))
     except ValueError as exc:  # two files give one motion different rates
         raise FoonSyntaxError(", ".join(str(f) for f in files), 0, str(exc)) from None
 

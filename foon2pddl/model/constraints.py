@@ -4,7 +4,9 @@
 - `without X`: no unit any of whose nodes *mentions* X (an object or ingredient that
   must not appear anywhere in the tree);
 - `must-use X`: some unit of the tree uses X (one of its input nodes mentions X);
-- motion success rates (or costs, cost = -ln(rate)): how likely each motion succeeds.
+- motion success rates (or costs, cost = -ln(rate)): how likely each motion succeeds;
+- a robot's skills: `without-skill S` (a skill it lacks; the CLI turns it into the
+  `without-motion` bans of the motions that map to S) and per-skill costs (`skills`).
 
 A node mentions X when X's words occur, as consecutive whole words, in the node's
 label, in a related object (`in [bowl]`) or in an item of an ingredient list: `peanut`
@@ -20,7 +22,7 @@ the minimal blocking set (`analysis.blocking`) is made of.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from functools import lru_cache
 
@@ -55,6 +57,8 @@ class Constraints:
     items: tuple[Constraint, ...] = ()
     rates: tuple[tuple[str, float], ...] = ()
     sources: tuple[str, ...] = ()
+    without_skills: tuple[str, ...] = ()  # robot skills the robot lacks (sorted)
+    skill_costs: tuple[tuple[str, int], ...] = ()  # per-skill costs of a robot profile (sorted)
 
     def __bool__(self) -> bool:
         return bool(self.items or self.rates)
@@ -75,13 +79,14 @@ class Constraints:
     def without(self, drop: Iterable[Constraint]) -> Constraints:
         """These constraints with `drop` relaxed (rates kept)."""
         gone = set(drop)
-        return Constraints(tuple(c for c in self.items if c not in gone), self.rates, self.sources)
+        return replace(self, items=tuple(c for c in self.items if c not in gone))
 
 
 def make_constraints(items: Iterable[Constraint] = (), rates: Iterable[tuple[str, float]] = (),
-                     sources: Iterable[str] = ()) -> Constraints:
-    """Normalize labels, drop empty and duplicate items, sort; ValueError for a rate outside (0, 1]
-    or a motion given two rates."""
+                     sources: Iterable[str] = (), without_skills: Iterable[str] = (),
+                     skill_costs: Iterable[tuple[str, int]] = ()) -> Constraints:
+    """Normalize labels, drop empty and duplicate items, sort; ValueError for a rate outside (0, 1],
+    a motion given two rates, a negative skill cost or a skill given two costs."""
     found: dict[tuple[Kind, str], Constraint] = {}
     for c in items:
         value = normalize_label(c.value)
@@ -97,13 +102,24 @@ def make_constraints(items: Iterable[Constraint] = (), rates: Iterable[tuple[str
         if table.get(motion, rate) != rate:
             raise ValueError(f"motion {motion!r} is given two rates, {table[motion]:g} and {rate:g}")
         table[motion] = rate
-    return Constraints(tuple(sorted(found.values())), tuple(sorted(table.items())), tuple(dict.fromkeys(sources)))
+    costs: dict[str, int] = {}
+    for skill, cost in skill_costs:
+        skill = normalize_label(skill)
+        if cost < 0:
+            raise ValueError(f"cost of skill {skill!r} must be >= 0, not {cost}")
+        if costs.get(skill, cost) != cost:
+            raise ValueError(f"skill {skill!r} is given two costs, {costs[skill]} and {cost}")
+        costs[skill] = cost
+    lacks = tuple(sorted({normalize_label(s) for s in without_skills} - {""}))
+    return Constraints(tuple(sorted(found.values())), tuple(sorted(table.items())), tuple(dict.fromkeys(sources)),
+                       lacks, tuple(sorted(costs.items())))
 
 
 def combine(*profiles: Constraints) -> Constraints:
     """The union of several constraint sets (a robot profile and a diet profile)."""
     return make_constraints((c for p in profiles for c in p.items), (r for p in profiles for r in p.rates),
-                            (s for p in profiles for s in p.sources))
+                            (s for p in profiles for s in p.sources), (s for p in profiles for s in p.without_skills),
+                            (c for p in profiles for c in p.skill_costs))
 
 
 @lru_cache(maxsize=1 << 14)

@@ -7,10 +7,15 @@ stand on the `workspace`. Init = those objects' facts before the step, the robot
 hands empty, and the step's outcome as facts tagged with the skill its motion maps
 to: `changes` (a physical phase changes), `moves-in`/`moves-on` (moved by a
 non-transport skill: poured, scooped, spread), `makes-in`/`makes-on` (a product
-appears), `uses-up` (an ingredient is consumed), each with its `target`. Goal = the
+appears), `uses-up` (an ingredient is consumed), and the `target`s, the sites the
+skill may work on: the changed objects, where moved objects go, where products
+appear, where consumed objects were (the workspace only when nothing else is a
+site). A tool or hand skill brings the whole outcome in one application at any
+target; a transfer at the target its moved objects go to. Goal = the
 objects' facts after the step and every hand empty. Objects moved by a transport
 skill (pick-and-place) stay `graspable`; objects poured or scooped out of a holder
-are not (a robot pours water, it does not grasp it). A `tool` is a step object the
+are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
+puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is a step object the
 step leaves as it is and that holds nothing (knife, spoon, whisk).
 
 Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
@@ -152,20 +157,28 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
         return "on" if s.relation in (None, Relation.ON) else "in"
 
     touched = set(trace.steps[index].objects) | {c.id for c in trace.steps[index].changes}
+    sites: dict[int, list[str]] = {0: [], 1: [], 2: [], 3: []}  # changed, moved-to, made-in, used-up-in
     for oid in ids:
         b, a = before[oid], after[oid]
         if not b.exists and a.exists:
-            statics |= {Atom(f"makes-{rel(a)}", (tag, n[oid], where(a), naming.phase(a.node))),
-                        Atom("target", (tag, where(a)))}
+            statics.add(Atom(f"makes-{rel(a)}", (tag, n[oid], where(a), naming.phase(a.node))))
+            sites[2].append(where(a))
         elif b.exists and not a.exists:
-            statics |= {Atom("uses-up", (tag, n[oid])), Atom("target", (tag, where(b)))}
+            statics.add(Atom("uses-up", (tag, n[oid])))
+            sites[3].append(where(b))
         elif b.exists:
-            if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT and b.holder is not None:
-                statics |= {Atom(f"moves-{rel(a)}", (tag, n[oid], where(a))), Atom("target", (tag, where(a)))}
-                rigid.add(oid)
+            if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT:
+                statics.add(Atom(f"moves-{rel(a)}", (tag, n[oid], where(a))))
+                sites[1].append(where(a))
+                if b.holder is not None:
+                    rigid.add(oid)
             if phase_of(b.node) != phase_of(a.node):
-                statics |= {Atom("changes", (tag, n[oid], naming.phase(b.node), naming.phase(a.node))),
-                            Atom("target", (tag, n[oid]))}
+                statics.add(Atom("changes", (tag, n[oid], naming.phase(b.node), naming.phase(a.node))))
+                sites[0].append(n[oid])
+    targets = list(dict.fromkeys(x for _, found in sorted(sites.items()) for x in found))
+    if len(targets) > 1 and ws in targets:
+        targets.remove(ws)
+    statics |= {Atom("target", (tag, x)) for x in targets}
     holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
     for oid in ids:
         if oid not in rigid:

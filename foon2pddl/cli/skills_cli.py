@@ -1,0 +1,113 @@
+"""`plan --skills`: the plan's macro steps, each with the robot skills that carry it out (docs/skills.md)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from ..errors import UsageError
+from ..pddl.compile import ENCODINGS
+from ..pddl.constraints import GoalExcluded
+from ..status import PlanStatus
+from .options import emit
+from .reasons import why_unsolvable
+
+__all__ = ["plan_with_skills", "skill_encoding", "skill_options"]
+
+
+def skill_options(command):
+    """`--skills [FILE]`, `--skill-table FILE`, `--without-skill SKILL`, `--hands N`."""
+    options = [
+        click.option("--skills", "skills", is_flag=False, flag_value="", default=None, metavar="[FILE]",
+                     help="Decompose every step into robot skills (pick, place, pour, stir, cut ...): with the "
+                          "shipped skill domain, or a PDDL skill domain FILE (docs/skills.md)."),
+        click.option("--skill-table", "skill_table", type=click.Path(path_type=Path), default=None,
+                     help="Motion-to-skill table (JSON, docs/skills.md) instead of the shipped one."),
+        click.option("--without-skill", "without_skills", multiple=True, metavar="SKILL",
+                     help="A skill the robot lacks: the motions that map to it are banned (as --without-motion). "
+                          "Repeatable."),
+        click.option("--hands", "hands", type=click.IntRange(1, 4), default=1, show_default=True,
+                     help="How many hands the robot has (with --skills)."),
+    ]
+    for option in reversed(options):
+        command = option(command)
+    return command
+
+
+def skill_encoding(encoding: str, explicit: bool) -> str:
+    """The encoding `--skills` plans with: the default one when none was asked for, else the one asked for,
+    which must have physical objects (UsageError otherwise)."""
+    from ..skills.run import skills_encoding
+
+    if not explicit:
+        return skills_encoding()
+    if not ENCODINGS[encoding].physical:
+        raise UsageError(f"--skills needs an encoding over physical objects (e.g. {skills_encoding()}), "
+                         f"not {encoding}")
+    return encoding
+
+
+def _inputs(skills: str, table_path: Path | None):
+    from ..skills.domain import read_domain, shipped_domain
+    from ..skills.table import read_table, shipped_table
+
+    domain = read_domain(skills) if skills else shipped_domain()
+    table = read_table(table_path) if table_path is not None else shipped_table()
+    table.check(domain)
+    return domain, table
+
+
+def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skills: str, table_path: Path | None,
+                     without_skills: tuple[str, ...], hands: int, fmt: str, output: Path | None, timings: dict,
+                     **options) -> None:
+    """Plan, decompose, print (or write `-o DIR`); exits 1 when there is no plan, 2 when the skill replay fails."""
+    from ..io.atomic import atomic_write_many
+    from ..skills.report import micro_files, skill_plan_json, skill_plan_text
+    from ..skills.run import plan_skills, robot_profile
+
+    domain, table = _inputs(skills, table_path)
+    robot = robot_profile(cons, hands, without_skills)
+    ctx = click.get_current_context()
+    try:
+        done = plan_skills(foon, kitchen, goal, encoding=encoding, domain=domain, table=table, robot=robot,
+                           constraints=cons, **options)
+    except GoalExcluded as exc:
+        click.echo(f"unsolvable (robot and constraints): {exc}", err=True)
+        ctx.exit(1)
+    outcome, plan = done.outcome, done.skills
+    if plan is None:
+        click.echo(f"{outcome.status} ({outcome.result.planner}): {outcome.message or outcome.result.message}",
+                   err=True)
+        if outcome.status == PlanStatus.UNSOLVABLE:
+            from ..model.constraints import combine
+            from ..skills.profile import robot_constraints
+
+            reason, _ = why_unsolvable(foon, kitchen, goal, combine(cons, robot_constraints(table, robot)), encoding)
+            click.echo("reason: " + reason, err=True)
+        ctx.exit(1 if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.TIMEOUT) else 2)
+    if fmt == "json":
+        text = json.dumps({"status": outcome.status, "encoding": outcome.task.encoding,
+                           "plan": list(outcome.result.plan), **skill_plan_json(plan)}, indent=2) + "\n"
+    else:
+        text = skill_plan_text(plan, robot)
+    click.echo(f"solved ({outcome.result.planner}): {len(plan.steps)} macro steps under the {encoding} encoding, "
+               f"{plan.decomposed} decomposed into {len(plan.calls)} skills; skill replay "
+               + ("valid" if plan.replay.ok else "INVALID"), err=True)
+    for s in plan.steps:
+        if s.reason:
+            click.echo(f"note: step {s.index + 1} ({s.motion}, {s.source}) is {s.status}: {s.reason}", err=True)
+    for problem in plan.replay.problems:
+        click.echo(f"error: {problem}", err=True)
+    micro_s = sum(s.seconds for s in plan.steps)
+    click.echo("phases: " + ", ".join(f"{p} {v:.3f} s" for p, v in {**timings, **outcome.timings}.items())
+               + f", skills {micro_s:.3f} s", err=True)
+    if output is not None:
+        files = {output / name: body for name, body in micro_files(plan, robot).items()}
+        files[output / ("skills.json" if fmt == "json" else "skills.txt")] = text
+        atomic_write_many(files)
+    else:
+        emit(text, None)
+    if not plan.replay.ok:
+        ctx.exit(2)

@@ -1,0 +1,97 @@
+"""`plan --skills`: skill plans on the command line, robot profiles, micro problem files, bad input."""
+
+from __future__ import annotations
+
+import json
+
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.skills.domain import shipped_domain
+
+
+def run(*args):
+    result = CliRunner().invoke(main, ["plan", *args])
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+    return result
+
+
+def test_skills_print_every_macro_step_with_its_skills():
+    result = run("--goal", "whipped cream", "--skills")
+    assert result.exit_code == 0, result.output
+    out = result.stdout.splitlines()
+    assert out[0].startswith("skill plan (foon-skills, 1 hand): 3 macro steps, 3 decomposed")
+    assert out[0].endswith("skill replay valid")
+    assert [line.split(" [")[0] for line in out if line[:1].isdigit()] == ["1. pour", "2. pour", "3. whisk"]
+    assert "   pick whisk_1 from workspace" in out and "   place whisk_1 on workspace" in out
+    assert "skills" in result.stderr.splitlines()[-1]
+
+
+def test_json_gives_a_skill_list_an_executive_can_consume():
+    result = run("--goal", "guacamole", "--skills", "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["ok"] and data["replay"] == {"ok": True, "problems": []}
+    skills = data["skills"]
+    names = {a.name for a in shipped_domain().actions}
+    assert skills and all(s["skill"] in names for s in skills)
+    assert all(len(s["objects"]) == len(s["holders"]) and s["unit"].rsplit(":", 1)[1].isdigit() for s in skills)
+    assert [s["macro_step"] for s in skills] == sorted(s["macro_step"] for s in skills)
+    assert {s["macro_step"] for s in skills} == set(range(1, data["macro_steps"] + 1))
+    pours = [s for s in skills if s["skill"] == "pour"]
+    assert pours and all(p["holders"][0] == p["hand"] for p in pours)  # the source is in the hand
+    assert data["steps"][0]["status"] == "decomposed"
+
+
+def test_output_dir_holds_the_domain_and_one_problem_per_step_that_other_parsers_read(tmp_path):
+    from pddl import parse_domain, parse_problem
+    from unified_planning.io import PDDLReader
+
+    out = tmp_path / "micro"
+    result = run("--goal", "whipped cream", "--skills", "-o", str(out))
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in out.iterdir()) == ["domain.pddl", "skills.txt", "step-001.pddl", "step-002.pddl",
+                                                     "step-003.pddl"]
+    assert result.stdout == ""
+    for step in sorted(out.glob("step-*.pddl")):
+        parse_domain(str(out / "domain.pddl"))
+        assert parse_problem(str(step)).name.startswith("step-")
+        assert PDDLReader().parse_problem(str(out / "domain.pddl"), str(step)) is not None
+
+
+def test_a_robot_without_pour_gets_no_pour_or_the_blocking_motion_like_native_retrieval():
+    native = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole", "--without-motion", "pour"])
+    result = run("--goal", "guacamole", "--skills", "--without-skill", "pour", "--format", "json")
+    if native.exit_code == 0:
+        assert result.exit_code == 0, result.output
+        data = json.loads(result.stdout)
+        assert not [s for s in data["skills"] if s["skill"] == "pour"]
+        assert not [s for s in data["steps"] if s["skill"] == "pour"]
+    else:
+        assert result.exit_code == 1 and "pour" in result.stderr
+
+
+def test_without_skills_in_a_constraints_file_ban_the_motions_of_plain_plans(tmp_path):
+    profile = tmp_path / "robot.json"
+    profile.write_text('{"without_skills": ["beat"], "skill_costs": {"pick": 3}}')
+    plain = run("--goal", "whipped cream")
+    result = run("--goal", "whipped cream", "--constraints", str(profile))
+    assert "whisk" in plain.stdout and plain.exit_code == 0
+    assert result.exit_code == 0 and "whisk" not in result.stdout  # whisk maps to beat: the electric mixer instead
+    assert ". mix " in result.stdout
+
+
+def test_bad_skill_domain_is_a_located_error_and_no_output_is_written(tmp_path):
+    bad = tmp_path / "mine.pddl"
+    bad.write_text(shipped_domain().text.replace("(unmade ?o - thing)", ""))
+    out = tmp_path / "dir"
+    result = run("--goal", "whipped cream", "--skills", str(bad), "-o", str(out))
+    assert result.exit_code == 2 and f"{bad}:" in result.stderr and "error: " in result.stderr
+    assert "Traceback" not in result.output and not out.exists()
+
+
+def test_skills_need_an_encoding_with_objects_and_one_goal():
+    result = run("--goal", "whipped cream", "--skills", "--encoding", "tree")
+    assert result.exit_code == 2 and "physical objects" in result.stderr
+    result = run("--goals", "whipped cream,guacamole", "--skills")
+    assert result.exit_code == 2
