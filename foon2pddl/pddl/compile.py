@@ -22,11 +22,13 @@ from .constraints import add_must_use, constrained_inputs, must_use_cone
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
 from .encode_lifted import compile_lifted
+from .encode_relational import encode_relational
 from .encode_state import encode_state
 from .encode_tree import encode_tree
 from .encoding import EncodeOptions
 from .instance_replay import INSTANCE_VIEW, instance_trace
 from .registry import Compiled, Encoding
+from .relational_replay import RELATIONAL_VIEW, relational_trace
 from .task import PlanningTask
 
 __all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "as_compiled", "compile_goal", "compile_task",
@@ -42,6 +44,8 @@ ENCODINGS: dict[str, Encoding] = _registry(
     Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit"),
     Encoding("instances", encode_instances, "physical object instances whose states change", every_step=True,
              replay=instance_trace, view=INSTANCE_VIEW),
+    Encoding("relational", encode_relational, "physical objects and which object holds which: (in ?holder ?obj)",
+             every_step=True, replay=relational_trace, view=RELATIONAL_VIEW, holders=True),
     Encoding("state", encode_state, "object-centred STRIPS: facts per object and state, with deletes",
              foon_semantics=False, every_step=True),
     Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),

@@ -73,8 +73,8 @@ class Decoded:
     @property
     def problems(self) -> tuple[str, ...]:
         """What failed, the checks that decide `ok` first."""
-        out = self.plan_check.problems + (self.up_validation.problems if self.up_validation else ())
-        out += self.trace_check.problems if self.trace_check else ()
+        out = self.plan_check.problems + (self.up_validation.problems if self.up_validation is not None else ())
+        out += self.trace_check.problems if self.trace_check is not None else ()
         return out + (self.validation.problems if self.foon_semantics else ())
 
 
@@ -198,7 +198,7 @@ def check_trace(trace: PhysicalTrace, candidates: Iterable[ObjectNode], holders:
     from .physical_replay import replay
 
     report = replay(trace)
-    return found if report.ok else Validation(False, tuple(str(d) for d in report.disagreements))
+    return found if report.ok else Validation(False, tuple(d.describe() for d in report.disagreements))
 
 
 def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitchen_nodes: frozenset[ObjectNode], *,

@@ -1,0 +1,124 @@
+"""The `relational` encoding against `instances` and `tree` on each subgraph alone (dish goal, default kitchen).
+
+`python -m bench.pddl_relational [--shared DIR] [--time-limit S] [--limit N] [-v]`
+plans every subgraph with `tree`, `instances` and `relational` (`planners.solve.plan`,
+Fast Downward lama-first) and reports per encoding: solved, plans whose trace
+passes the relational replay (`planners.physical_replay`, zero disagreements;
+`instances` traces have no holders, so its figure counts what a holder-blind
+plan gets wrong), disagreements by kind, unit steps and objects per task
+(median, worst), translate+search seconds (median, worst). `-v`: one line per
+file and encoding. As a bench area (`run(ctx)`) it reports the counts.
+"""
+
+from __future__ import annotations
+
+import argparse
+import collections
+import statistics
+from dataclasses import dataclass
+from pathlib import Path
+
+from foon2pddl.errors import FoonError
+from foon2pddl.io.files import expand_paths, load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+from .harness import Context
+
+AREA = "pddl_relational"
+ENCODINGS = ("tree", "instances", "relational")
+
+
+@dataclass(frozen=True)
+class Row:
+    file: str
+    encoding: str
+    status: str
+    steps: int
+    objects: int
+    kinds: tuple[str, ...]  # replay disagreement kinds (one per disagreement)
+    seconds: float
+    message: str = ""
+
+
+def check_file(path: Path, time_limit: float) -> list[Row]:
+    foon, _ = load([path])
+    dishes = sorted(n for n in foon.nodes if n.dish is not None)
+    if not dishes:
+        return []
+    try:
+        goal = resolve_goal(spec_of_node(dishes[0]), foon)
+    except FoonError:
+        return []
+    kitchen = default_kitchen(foon)
+    rows = []
+    for enc in ENCODINGS:
+        out = plan(foon, kitchen, goal, enc, time_limit=time_limit)
+        seconds = out.timings.get("translate", 0.0) + out.timings.get("search", 0.0)
+        kinds: tuple[str, ...] = ()
+        if out.trace is not None:
+            kinds = tuple(str(d.kind) for d in replay(out.trace).disagreements)
+        steps = len(out.trace.steps) if out.trace is not None else (len(out.tree) if out.tree is not None else 0)
+        rows.append(Row(path.name, enc, str(out.status), steps, len(out.task.instances), kinds, seconds,
+                        out.message.splitlines()[0][:200] if out.message else ""))
+    return rows
+
+
+def summary(rows: list[Row]) -> str:
+    lines = []
+    for enc in ENCODINGS:
+        mine = [r for r in rows if r.encoding == enc]
+        solved = [r for r in mine if r.status == "solved"]
+        line = f"{enc}: {len(solved)}/{len(mine)} solved"
+        if enc != "tree":
+            traced = [r for r in mine if r.steps and r.status in ("solved", "error")]
+            clean = [r for r in traced if not r.kinds]
+            kinds = collections.Counter(k for r in traced for k in r.kinds)
+            bad_plans = collections.Counter(k for r in traced for k in set(r.kinds))
+            line += (f"; plans with zero replay disagreements {len(clean)}/{len(traced)}; "
+                     f"disagreements {sum(kinds.values())} ("
+                     + ", ".join(f"{k} {v} in {bad_plans[k]} plans" for k, v in kinds.most_common()) + ")")
+            objs = [r.objects for r in traced]
+            if objs:
+                line += f"; objects median {statistics.median(objs):.0f}, worst {max(objs)}"
+        if solved:
+            secs = [r.seconds for r in solved]
+            line += (f"; unit steps median {statistics.median(r.steps for r in solved):.0f}; "
+                     f"translate+search median {statistics.median(secs):.2f} s, worst {max(secs):.2f} s")
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def run(ctx: Context) -> None:
+    rows = [r for f in expand_paths([ctx.shared / "foon-subgraphs"])[: 10 if ctx.quick else None]
+            for r in check_file(f, 60.0)]
+    for enc in ENCODINGS:
+        mine = [r for r in rows if r.encoding == enc]
+        ctx.report(AREA, f"{enc} solved", sum(r.status == "solved" for r in mine), "files")
+        if enc != "tree":
+            ctx.report(AREA, f"{enc} plans without replay disagreements",
+                       sum(1 for r in mine if r.steps and not r.kinds), "plans")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--shared", type=Path, default=Path(__file__).resolve().parent.parent / "tests" / "data")
+    ap.add_argument("--time-limit", type=float, default=60.0)
+    ap.add_argument("--limit", type=int, default=None)
+    ap.add_argument("-v", "--verbose", action="store_true")
+    args = ap.parse_args()
+    rows = []
+    for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]:
+        for r in check_file(f, args.time_limit):
+            rows.append(r)
+            if args.verbose:
+                kinds = collections.Counter(r.kinds)
+                print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\t"
+                      f"{r.seconds:.2f}s\t{dict(kinds)}\t{r.message}", flush=True)
+    print(summary(rows))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,190 @@
+"""The `relational` encoding: physical objects as in `instances`, plus which object holds which.
+
+* **Objects and states** as in `encode_instances`: one PDDL object per physical
+  object (counts from `instance_counts`), `(is ?x ?s)` for its FOON node,
+  `(occupied s)` for stable nodes, `(precedes ?a ?b)` to bind two roles of one
+  state to two objects.
+* **Relations** as facts between objects, holder first (the public converter's
+  order): `(in ?holder ?obj)`, `(on ?surface ?obj)`. A container's contents are
+  the objects in it; an object is in or on at most one holder (init gives one,
+  every action that adds a holder fact deletes the old one).
+* **Actions.** One schema per unit. Per role (`holders.relational_roles`): the
+  state change of `instances`; an object that stays at a place whose holder the
+  unit names must be there (`(in ?bowl ?onion)`: nothing is cut on another board);
+  an object that moves must be in its source holder (deleted) and goes into its
+  target holder (added). A holder FOON does not identify is bound late: one
+  parameter of the holder's label per moving object (the planner picks the bowl),
+  never one per read-only object. Products are new objects in the holder FOON
+  names; FOON's implied moves (an ingredient listed only as an input, whose
+  receiving container lists it after) are completed with an implied node.
+* **Consumption** is read from the containers' lists when the plan is replayed
+  (`relational_replay`): an object in a container whose new node no longer lists
+  its label became part of the mixture.
+* **Init.** Kitchen objects start in the state of their node; an object whose
+  node names a place starts in an object of that label whose node lists it, else
+  in the first of that label.
+
+Not modelled: emptiness as a derived predicate (it stays a FOON state), quantities,
+scene kitchens with object ids, generic restoring actions. Requirements: `:strips
+:typing` (plus `:action-costs` with costs): no conditional effects.
+"""
+
+from __future__ import annotations
+
+from ..model.foon import Foon, ObjectNode
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from .costs import goal_cost, unit_cost
+from .encode_instances import IS, NOT_MADE, OCCUPIED, PRECEDES, ROOT_TYPE, STATE_TYPE, _count_lines, _instances, _types
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
+from .holders import listed, mismatches, place_of, relational_roles
+from .instance_counts import derive_counts
+from .names import NameTable
+from .prune import restoring_units
+from .task import Action, Atom, Instance, PlanningTask, Predicate
+
+__all__ = ["IN", "ON", "encode_relational", "holder_init"]
+
+IN, ON = "in", "on"
+
+
+def holder_init(instances: list[Instance]) -> list[Instance]:
+    """Instances with their starting holders: an object whose node names `in [C]` goes into an object of label C
+    whose node lists its label (the first not yet given one of that label), else the first of label C."""
+    by_label: dict[str, list[Instance]] = {}
+    for x in instances:
+        by_label.setdefault(x.label, []).append(x)
+    used: set[tuple[str, str]] = set()
+    out = []
+    for x in instances:
+        place = place_of(x.start)
+        if place is None or place[1] not in by_label:
+            out.append(x)
+            continue
+        rel, label = place
+        pool = [h for h in by_label[label] if h.name != x.name]
+        listing = [h for h in pool if x.label in listed(h.start)]
+        free = [h for h in listing if (h.name, x.label) not in used]
+        pick = (free or listing or pool or [None])[0]
+        if pick is None:
+            out.append(x)
+            continue
+        used.add((pick.name, x.label))
+        out.append(Instance(x.name, x.label, x.start, pick.name, rel))
+    return out
+
+
+def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
+                      options: EncodeOptions = DEFAULT_OPTIONS) -> PlanningTask:
+    """The relational task of `goal` over `foon` (see the module doc)."""
+    inp = at_level(foon, kitchen, goal, level)
+    f = inp.foon
+    units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
+    counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
+                           overrides=dict(options.instances))
+    have = counts.labels()
+    units = tuple(u for u in units if all(r.role.label in have for r in relational_roles(f.units[u])))
+
+    table = NameTable()
+    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, PRECEDES, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
+        table.reserve(name)
+    type_of, types = _types(table, sorted(set(have) | {c.label for c in inp.candidates}), dict(options.categories))
+    nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
+    for u in units:
+        nodes.update(x for r in relational_roles(f.units[u]) for x in (r.role.before, r.after) if x is not None)
+    const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
+    instances, init, precede = _instances(table, counts, const)
+    instances = holder_init(instances)
+    init.extend(Atom(x.relation.value, (x.holder, x.name)) for x in instances if x.holder is not None)
+    left = {r.role.before for u in units for r in relational_roles(f.units[u]) if r.changes}
+    stable = {n for n in const if n not in left}
+    init.extend(Atom(OCCUPIED, (const[n],)) for n, _ in counts.at_node if n in stable)
+
+    actions = [_unit_action(u, f.units[u], table, const, stable, type_of, options, precede) for u in units]
+    for i, c in enumerate(inp.candidates, start=1):
+        stable_goal = c in stable
+        actions.append(Action(
+            table.name(f"reach-goal-{i}", key=("goal-action", i)),
+            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
+            add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
+            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
+        ))
+    for label in sorted(precede):
+        mine = [x.name for x in instances if x.label == label]
+        init.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
+    hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
+    predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
+                  Predicate(IN, hold, "?x is in ?h"), Predicate(ON, hold, "?x is on ?h"),
+                  Predicate(OCCUPIED, (("?s", STATE_TYPE),), "some object is in state ?s, which no action leaves"),
+                  Predicate(GOAL_REACHED, comment="a goal candidate was made")]
+    if precede:
+        predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
+    notes = sorted({f"{_where(f.units[u])}: {m}" for u in units for m in mismatches(f.units[u])})
+    return PlanningTask(
+        domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
+        encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),
+        init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
+        constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, *const.values())),
+        objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
+        comments=header("relational", inp, options, len(units)) + _count_lines(counts)
+        + tuple(f"label mismatch: {m}" for m in notes),
+        instances=tuple(instances),
+    )
+
+
+def _where(unit) -> str:
+    src = unit.source
+    return f"{src.path}:{src.line}" if src is not None else "?"
+
+
+def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
+                 type_of: dict[str, str], options: EncodeOptions, precede: set[str]) -> Action:
+    """One unit's schema (see the module doc): per role its state change and its holder facts."""
+    rels = relational_roles(unit)
+    holders = {p.role for r in rels for p in (r.source, r.target, r.stays) if p is not None and p.role is not None}
+    bound = tuple(r.changes or r.moves or k in holders or r.role.before not in stable
+                  or (r.stays is not None and r.stays.role is not None) for k, r in enumerate(rels))
+    names = NameTable()
+    var = [f"?{names.name(r.role.label, key=k)}" for k, r in enumerate(rels)]
+    params = [(v, type_of[r.role.label]) for v, r, b in zip(var, rels, bound, strict=True) if b]
+    pre, add, delete = [], [], []
+    first: dict[tuple[str, str], str] = {}
+    for k, (v, r, b) in enumerate(zip(var, rels, bound, strict=True)):
+        state = const[r.role.before] if r.role.before is not None else NOT_MADE
+        if not b:
+            pre.append(Atom(OCCUPIED, (state,)))
+            continue
+        pre.append(Atom(IS, (v, state)))
+        if r.changes:
+            delete.append(Atom(IS, (v, state)))
+            add.append(Atom(IS, (v, const[r.after])))
+            if r.after in stable:
+                add.append(Atom(OCCUPIED, (const[r.after],)))
+        same = (r.role.label, state)
+        if same in first:
+            pre.append(Atom(PRECEDES, (first[same], v)))
+            precede.add(r.role.label)
+        first[same] = v
+        if r.stays is not None and r.stays.role is not None:
+            pre.append(Atom(r.stays.relation.value, (var[r.stays.role], v)))
+        for place, side in ((r.source, "from"), (r.target, "into")):
+            if place is None or not r.moves:
+                continue
+            if place.role is not None:
+                h = var[place.role]
+            elif place.holder in type_of:
+                h = f"?{names.name(f'{side} {place.holder} {k}', key=(side, k))}"
+                params.append((h, type_of[place.holder]))
+            else:
+                continue
+            fact = Atom(place.relation.value, (h, v))
+            if side == "from":
+                pre.append(fact)
+                delete.append(fact)
+            else:
+                add.append(fact)
+    return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(pre), add=tuple(add),
+                  delete=tuple(d for d in delete if d not in add), params=tuple(params),
+                  cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
+                  roles=tuple((r.role, b) for r, b in zip(rels, bound, strict=True)))
+

@@ -1,0 +1,176 @@
+"""The `relational` encoding: holder evidence per unit, the task's holder facts, plans replayed with holders."""
+
+from __future__ import annotations
+
+import json
+
+import pddl.parser.domain
+import pddl.parser.problem
+from click.testing import CliRunner
+from conftest import SUBGRAPHS
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.cli import main
+from foon2pddl.io.files import load
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.model.physical import Relation
+from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
+from foon2pddl.pddl.holders import listed, mismatches, place_of, relational_roles, without
+from foon2pddl.pddl.relational_replay import relational_trace
+from foon2pddl.pddl.render import render
+from foon2pddl.pddl.task import Atom
+from foon2pddl.planners.decode import simulate_plan
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+WHIPPED = SUBGRAPHS / "0001-whipped_cream.txt"
+
+
+def n(label, *states):
+    return make_node(label, [s if not isinstance(s, str) else make_state(s) for s in states])
+
+
+def contains(*items):
+    return make_state("contains", "", items)
+
+
+def inside(holder):
+    return make_state("in", holder)
+
+
+# Heavy cream poured from a carton into a cup: FOON lists the cream only as an input (read-only).
+CARTON, CREAM = n("carton", contains("heavy cream")), n("heavy cream", inside("carton"))
+CUP, FULL_CUP = n("cup", "empty"), n("cup", contains("heavy cream"))
+POUR = FunctionalUnit((CARTON, CREAM, CUP), Motion("pour"), (FULL_CUP,))
+
+
+def test_places_and_lists_read_foon_states():
+    assert place_of(CREAM) == (Relation.IN, "carton") and place_of(CUP) is None
+    assert place_of(n("stove", "on")) is None  # a bare `on` is switched on, not a place
+    assert listed(FULL_CUP) == {"heavy cream"} and listed(CUP) == frozenset()
+    assert without(CARTON, {"heavy cream"}) == n("carton", "empty")
+
+
+def test_an_ingredient_listed_only_as_input_moves_into_the_receiving_container():
+    carton, cream, cup = relational_roles(POUR)
+    assert cream.after == n("heavy cream", inside("cup")) and cream.changes
+    assert cream.source.role == 0 and cream.target.role == 2  # the carton and the cup of this unit
+    assert carton.after == n("carton", "empty")  # the source no longer lists what left it
+    assert cup.after == FULL_CUP and cup.source is None and cup.target is None
+
+
+def test_two_bowls_the_ingredient_list_names_the_holder():
+    a, b = n("bowl", contains("salt")), n("bowl", contains("sugar"))
+    sugar = n("sugar", inside("bowl"))
+    stir = FunctionalUnit((a, b, sugar), Motion("stir"), (a, b, n("sugar", inside("bowl"), make_state("stirred"))))
+    roles = relational_roles(stir)
+    assert roles[2].stays is not None and roles[2].stays.role == 1  # the bowl listing sugar, not the first bowl
+
+
+def test_label_mismatches_are_reported_per_unit():
+    oil = n("green olive oil", inside("bottle"))
+    unit = FunctionalUnit((n("bowl", "empty"), oil), Motion("pour"), (n("bowl", contains("olive oil")),))
+    assert mismatches(unit) == ("bowl lists olive oil, which no object of the unit is",)
+
+
+POUR_FOON = Foon((POUR,))
+POUR_KITCHEN = Kitchen(frozenset({CARTON, CREAM, CUP}))
+POUR_GOAL = Goal(GoalSpec("cup"), (FULL_CUP,))
+
+
+def test_the_task_moves_the_holder_fact_and_requires_the_real_source():
+    task = compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")
+    assert Atom("in", ("carton_1", "heavy_cream_1")) in task.init  # holder first, as the converter writes it
+    assert task.requirements == (":strips", ":typing")
+    (pour,) = [a for a in task.actions if a.unit is not None]
+    assert Atom("in", ("?carton", "?heavy_cream")) in pour.pre and Atom("in", ("?cup", "?heavy_cream")) in pour.add
+    good = [f"{pour.name} carton_1 heavy_cream_1 cup_1", "reach-goal-1"]
+    assert simulate_plan(task, good).ok
+    # With the cream already poured, a second carton cannot give it again: it is not in that carton.
+    trace = relational_trace(task, good)
+    assert trace.holder_of("heavy_cream_1") == "cup_1" and trace.contents("cup_1") == ("heavy_cream_1",)
+    assert trace.final["carton_1"].node == n("carton", "empty")
+    assert replay(trace).ok
+
+
+def test_a_plan_that_pours_from_the_wrong_holder_fails_the_task_semantics():
+    two = Kitchen(POUR_KITCHEN.nodes, 3, "k", ((CARTON, 2),))
+    task = compile_task(POUR_FOON, two, POUR_GOAL, "relational")
+    (pour,) = [a for a in task.actions if a.unit is not None]
+    holder = next(a.args[0] for a in task.init if a.predicate == "in" and a.args[1] == "heavy_cream_1")
+    other = next(x.name for x in task.instances if x.label == "carton" and x.name != holder)
+    assert not simulate_plan(task, [f"{pour.name} {other} heavy_cream_1 cup_1"]).ok
+
+
+def test_renders_pddl_the_pddl_package_and_up_read():
+    from unified_planning.io import PDDLReader
+
+    task = compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")
+    domain_text, problem_text = render(task)
+    assert {a.name for a in pddl.parser.domain.DomainParser()(domain_text).actions} == {a.name for a in task.actions}
+    pddl.parser.problem.ProblemParser()(problem_text)
+    import tempfile
+    from pathlib import Path
+
+    with tempfile.TemporaryDirectory() as tmp:
+        (Path(tmp) / "d.pddl").write_text(domain_text)
+        (Path(tmp) / "p.pddl").write_text(problem_text)
+        problem = PDDLReader().parse_problem(str(Path(tmp) / "d.pddl"), str(Path(tmp) / "p.pddl"))
+    assert len(problem.actions) == len(task.actions)
+    assert render(compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")) == (domain_text, problem_text)
+
+
+def _whipped():
+    foon, _ = load([WHIPPED])
+    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+    return foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon)
+
+
+def test_whipped_cream_plan_has_real_holders_and_passes_the_relational_replay():
+    foon, kitchen, goal = _whipped()
+    outcome = plan(foon, kitchen, goal, "relational")
+    assert outcome.status == "solved", outcome.message
+    trace = outcome.trace
+    assert replay(trace).ok and outcome.decoded.trace_check.ok and outcome.validation.ok
+    assert trace.contents("bowl_1") == ("whipped_cream_1",) and trace.contents("mixing_bowl_1") == ()
+    assert trace.final["mixing_bowl_1"].node.describe() == "mixing bowl (empty)"  # scraped out (FOON omits it)
+    assert trace.final["heavy_cream_1"].consumed and trace.final["refined_sugar_1"].consumed
+    first = trace.after(0)
+    assert first["heavy_cream_1"].holder == "measuring_cup_1"
+    text = outcome.compiled.view.text(outcome.task, trace)
+    assert "pour heavy_cream_1 from carton_1 into measuring_cup_1" in text
+    assert "mix in mixing_bowl_1: heavy_cream_1, refined_sugar_1 -> whipped_cream_1 with mixer_1" in text
+    assert ENCODINGS["relational"].holders and not ENCODINGS["instances"].holders
+
+
+def test_plan_cli_json_gives_every_objects_holder_and_consumed_flag():
+    result = CliRunner().invoke(main, ["plan", "--goal", "whipped cream", "--encoding", "relational",
+                                       "--format", "json", str(WHIPPED)])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["validation"]["relational"]["ok"]
+    steps = data["relational"]["steps"]
+    assert steps[0]["source"].endswith("0001-whipped_cream.txt:27")
+    cream = next(o for o in steps[0]["objects"] if o["id"] == "heavy_cream_1")
+    assert cream == {"id": "heavy_cream_1", "label": "heavy cream", "state": "heavy cream (in [measuring cup])",
+                     "holder": "measuring_cup_1", "relation": "in", "consumed": False}
+    assert all({"holder", "consumed", "state"} <= set(o) for s in steps for o in s["objects"])
+    text = CliRunner().invoke(main, ["plan", "--goal", "whipped cream", "--encoding", "relational", str(WHIPPED)])
+    assert "objects, step by step (relational encoding):" in text.stdout and "valid" in text.stderr
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(1, 3), st.integers(1, 3))
+def test_every_state_of_a_trace_has_one_holder_per_object(cartons, cups):
+    kitchen = Kitchen(POUR_KITCHEN.nodes, 3, "k", ((CARTON, cartons), (CUP, cups), (CREAM, cartons)))
+    task = compile_goal(POUR_FOON, kitchen, POUR_GOAL, "relational").task
+    holders = {}
+    for a in task.init:
+        if a.predicate in ("in", "on"):
+            assert a.args[1] not in holders
+            holders[a.args[1]] = a.args[0]
+    # every cream starts in a carton that lists it, each in its own carton
+    assert sorted(holders.values()) == sorted(x.name for x in task.instances if x.label == "carton")
