@@ -21,7 +21,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.levels import project, project_node
-from foon2pddl.pddl.compile import GROUND_ENCODINGS, compile_task
+from foon2pddl.pddl.compile import ENCODINGS, GROUND_ENCODINGS, compile_task
 from foon2pddl.pddl.prune import prune_task, relevant_units
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
@@ -298,8 +298,10 @@ def test_rendered_pddl_parses_and_round_trips_the_actions(case, encoding, costs)
     assert {a.name for a in domain.actions} == {a.name for a in task.actions}
     costed = costs is not None and bool(task.actions)  # no action, no cost to count
     assert len(problem.init) == len(task.init) + costed
-    assert set(task.requirements) == {":strips"} | ({":typing"} if encoding in ("foon-compat", "instances") else set()) | (
-        {":action-costs"} if costed else set())
+    physical = ENCODINGS[encoding].physical
+    assert set(task.requirements) == {":strips"} | ({":typing"} if encoding == "foon-compat" or physical else set()) | (
+        {":action-costs"} if costed else set()) | (
+        {":conditional-effects"} if any(a.release for a in task.actions) else set())
 
 
 def test_empty_precondition_is_written_as_an_empty_and():
@@ -360,7 +362,7 @@ def test_fast_downward_accepts_every_encoding_of_a_subgraph(name):
     for encoding in GROUND_ENCODINGS:
         result = fd.solve(*render(compile_task(foon, kitchen, goal, encoding)), time_limit=60)
         assert result.status in ("solved", "unsolvable"), result.message
-        if encoding != "state":
+        if ENCODINGS[encoding].complete:
             assert result.solved == native
 
 

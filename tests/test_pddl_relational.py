@@ -58,7 +58,7 @@ def test_an_ingredient_listed_only_as_input_moves_into_the_receiving_container()
     carton, cream, cup = relational_roles(POUR)
     assert cream.after == n("heavy cream", inside("cup")) and cream.changes
     assert cream.source.role == 0 and cream.target.role == 2  # the carton and the cup of this unit
-    assert carton.after == n("carton", "empty")  # the source no longer lists what left it
+    assert carton.after is None  # a read-only source keeps its node in the task; the replay empties it
     assert cup.after == FULL_CUP and cup.source is None and cup.target is None
 
 
@@ -84,10 +84,12 @@ POUR_GOAL = Goal(GoalSpec("cup"), (FULL_CUP,))
 def test_the_task_moves_the_holder_fact_and_requires_the_real_source():
     task = compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")
     assert Atom("in", ("carton_1", "heavy_cream_1")) in task.init  # holder first, as the converter writes it
-    assert task.requirements == (":strips", ":typing")
     (pour,) = [a for a in task.actions if a.unit is not None]
-    assert Atom("in", ("?carton", "?heavy_cream")) in pour.pre and Atom("in", ("?cup", "?heavy_cream")) in pour.add
-    good = [f"{pour.name} carton_1 heavy_cream_1 cup_1", "reach-goal-1"]
+    # The cream leaves whatever holds it (a quantified delete, no parameter per carton) and goes into the cup.
+    assert task.requirements == (":strips", ":typing", ":conditional-effects")
+    assert [(t, a) for _, t, a in pour.release] == [("physical-object", Atom("in", ("?from_1", "?heavy_cream")))]
+    assert Atom("in", ("?cup", "?heavy_cream")) in pour.add
+    good = [f"{pour.name} heavy_cream_1 cup_1", "reach-goal-1"]
     assert simulate_plan(task, good).ok
     # With the cream already poured, a second carton cannot give it again: it is not in that carton.
     trace = relational_trace(task, good)
@@ -96,13 +98,17 @@ def test_the_task_moves_the_holder_fact_and_requires_the_real_source():
     assert replay(trace).ok
 
 
-def test_a_plan_that_pours_from_the_wrong_holder_fails_the_task_semantics():
-    two = Kitchen(POUR_KITCHEN.nodes, 3, "k", ((CARTON, 2),))
-    task = compile_task(POUR_FOON, two, POUR_GOAL, "relational")
-    (pour,) = [a for a in task.actions if a.unit is not None]
-    holder = next(a.args[0] for a in task.init if a.predicate == "in" and a.args[1] == "heavy_cream_1")
-    other = next(x.name for x in task.instances if x.label == "carton" and x.name != holder)
-    assert not simulate_plan(task, [f"{pour.name} {other} heavy_cream_1 cup_1"]).ok
+def test_a_plan_that_beats_an_egg_in_another_bowl_fails_the_task_semantics():
+    bowl, egg = n("bowl", contains("egg")), n("egg", inside("bowl"), make_state("whole"))
+    beaten_bowl, beaten = n("bowl", contains("egg"), make_state("shaken")), n("egg", inside("bowl"), make_state("beaten"))
+    foon = Foon((FunctionalUnit((bowl, egg), Motion("beat"), (beaten_bowl, beaten)),))
+    kitchen = Kitchen(frozenset({bowl, egg}), 3, "k", ((bowl, 2), (egg, 2)))
+    task = compile_task(foon, kitchen, Goal(GoalSpec("egg"), (beaten,)), "relational")
+    assert {a.args for a in task.init if a.predicate == "in"} == {("bowl_1", "egg_1"), ("bowl_2", "egg_2")}
+    (beat,) = [a for a in task.actions if a.unit is not None]
+    assert Atom("in", ("?bowl", "?egg")) in beat.pre
+    assert simulate_plan(task, [f"{beat.name} bowl_2 egg_2", "reach-goal-1"]).ok
+    assert not simulate_plan(task, [f"{beat.name} bowl_1 egg_2", "reach-goal-1"]).ok
 
 
 def test_renders_pddl_the_pddl_package_and_up_read():

@@ -14,7 +14,10 @@
   an object that moves must be in its source holder (deleted) and goes into its
   target holder (added). A holder FOON does not identify is bound late: one
   parameter of the holder's label per moving object (the planner picks the bowl),
-  never one per read-only object. Products are new objects in the holder FOON
+  never one per read-only object; an object leaving a holder the unit does not
+  change leaves whatever holds it, by a quantified delete `(forall (?h -
+  physical-object) (when (in ?h ?x) (not (in ?h ?x))))` instead of one parameter
+  per possible source. Products are new objects in the holder FOON
   names; FOON's implied moves (an ingredient listed only as an input, whose
   receiving container lists it after) are completed with an implied node.
 * **Consumption** is read from the containers' lists when the plan is replayed
@@ -22,22 +25,25 @@
   its label became part of the mixture.
 * **Init.** Kitchen objects start in the state of their node; an object whose
   node names a place starts in an object of that label whose node lists it, else
-  in the first of that label.
+  in the first of that label. A holder the kitchen names but the task has no
+  object of (`heavy cream (in [carton])`, no carton in any unit) is added, listing
+  what starts in it (`implied_holders`).
 
 Not modelled: emptiness as a derived predicate (it stays a FOON state), quantities,
 scene kitchens with object ids, generic restoring actions. Requirements: `:strips
-:typing` (plus `:action-costs` with costs): no conditional effects.
+:typing`, `:conditional-effects` when some object leaves a holder by a quantified
+delete, `:action-costs` with costs.
 """
 
 from __future__ import annotations
 
-from ..model.foon import Foon, ObjectNode
+from ..model.foon import Foon, ObjectNode, make_node, make_state
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from .costs import goal_cost, unit_cost
 from .encode_instances import IS, NOT_MADE, OCCUPIED, PRECEDES, ROOT_TYPE, STATE_TYPE, _count_lines, _instances, _types
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .holders import listed, mismatches, place_of, relational_roles
+from .holders import Place, RelRole, listed, mismatches, place_of, relational_roles
 from .instance_counts import derive_counts
 from .names import NameTable
 from .prune import restoring_units
@@ -74,6 +80,18 @@ def holder_init(instances: list[Instance]) -> list[Instance]:
     return out
 
 
+def implied_holders(instances: list[Instance]) -> tuple[ObjectNode, ...]:
+    """Holders the kitchen's objects start in but the task has no object of (`heavy cream (in [carton])` and no
+    carton): one per label, listing what starts in it (`carton (contains {heavy cream})`), sorted by label."""
+    have = {x.label for x in instances}
+    wanted: dict[str, set[str]] = {}
+    for x in instances:
+        place = place_of(x.start)
+        if place is not None and place[1] not in have:
+            wanted.setdefault(place[1], set()).add(x.label)
+    return tuple(make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items()))
+
+
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> PlanningTask:
     """The relational task of `goal` over `foon` (see the module doc)."""
@@ -94,6 +112,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         nodes.update(x for r in relational_roles(f.units[u]) for x in (r.role.before, r.after) if x is not None)
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
     instances, init, precede = _instances(table, counts, const)
+    extra = implied_holders(instances)
+    for node in extra:
+        const[node] = table.name(node.describe(), key=("node", node))
+        if node.label not in type_of:
+            type_of[node.label] = table.name(node.label, key=("type", node.label))
+            types.append((type_of[node.label], ROOT_TYPE))
+        name = table.name(f"{node.label} 1", key=("instance", node.label, 1))
+        instances.append(Instance(name, node.label, node))
+        init.append(Atom(IS, (name, const[node])))
     instances = holder_init(instances)
     init.extend(Atom(x.relation.value, (x.holder, x.name)) for x in instances if x.holder is not None)
     left = {r.role.before for u in units for r in relational_roles(f.units[u]) if r.changes}
@@ -141,13 +168,17 @@ def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], s
                  type_of: dict[str, str], options: EncodeOptions, precede: set[str]) -> Action:
     """One unit's schema (see the module doc): per role its state change and its holder facts."""
     rels = relational_roles(unit)
-    holders = {p.role for r in rels for p in (r.source, r.target, r.stays) if p is not None and p.role is not None}
+    # A source holder is a parameter only when the unit changes it; else the object leaves whatever holds it
+    # (a quantified delete): seven read-only bowls poured from are no 9^7 groundings.
+    held = [p for r in rels for p in (r.target, _checked(r, rels)) + ((r.source,) if r.moves else ())
+            if p is not None and p.role is not None and (p is not r.source or rels[p.role].changes)]
+    holders = {p.role for p in held}
     bound = tuple(r.changes or r.moves or k in holders or r.role.before not in stable
-                  or (r.stays is not None and r.stays.role is not None) for k, r in enumerate(rels))
+                  or _checked(r, rels) is not None for k, r in enumerate(rels))
     names = NameTable()
     var = [f"?{names.name(r.role.label, key=k)}" for k, r in enumerate(rels)]
     params = [(v, type_of[r.role.label]) for v, r, b in zip(var, rels, bound, strict=True) if b]
-    pre, add, delete = [], [], []
+    pre, add, delete, release = [], [], [], []
     first: dict[tuple[str, str], str] = {}
     for k, (v, r, b) in enumerate(zip(var, rels, bound, strict=True)):
         state = const[r.role.before] if r.role.before is not None else NOT_MADE
@@ -165,10 +196,13 @@ def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], s
             pre.append(Atom(PRECEDES, (first[same], v)))
             precede.add(r.role.label)
         first[same] = v
-        if r.stays is not None and r.stays.role is not None:
-            pre.append(Atom(r.stays.relation.value, (var[r.stays.role], v)))
+        if (place := _checked(r, rels)) is not None:
+            pre.append(Atom(place.relation.value, (var[place.role], v)))
         for place, side in ((r.source, "from"), (r.target, "into")):
             if place is None or not r.moves:
+                continue
+            if side == "from" and (place.role is None or not rels[place.role].changes):
+                release.append((f"?{names.name(f'from {k}', key=('from', k))}", ROOT_TYPE, None, place.relation, v))
                 continue
             if place.role is not None:
                 h = var[place.role]
@@ -185,6 +219,15 @@ def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], s
                 add.append(fact)
     return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(pre), add=tuple(add),
                   delete=tuple(d for d in delete if d not in add), params=tuple(params),
+                  release=tuple((h, t, Atom(rel.value, (h, x))) for h, t, _, rel, x in release),
                   cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
                   roles=tuple((r.role, b) for r, b in zip(rels, bound, strict=True)))
 
+
+def _checked(r: RelRole, rels: tuple[RelRole, ...]) -> Place | None:
+    """Where an unmoved object must be, checked by a precondition: its holder is a role of the unit and the
+    unit changes the object or the holder (a read-only salt in a read-only bowl is checked by neither)."""
+    place = r.stays
+    if place is None or place.role is None or not (r.changes or rels[place.role].changes):
+        return None
+    return place

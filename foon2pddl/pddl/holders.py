@@ -18,8 +18,9 @@ Rules, in order (each reads only the unit itself):
    node lists L and its input node does not: its output node is its input node
    with the place replaced by `in [that role's label]` (a node FOON implies,
    marked in the trace by the state `in [C]`). Likewise a source container that
-   the moving object leaves but whose output node (or, read-only, input node)
-   still lists it: its output node lists the rest, or is `empty` (2b).
+   the unit changes and that the moving object leaves, but whose output node
+   still lists it: its output node lists the rest, or is `empty` (2b). A read-only
+   source keeps its node here; the plan's replay empties it (`relational_replay`).
 3. **Holder binding.** The holder of an object of label L at a place of label C
    (before: from the input nodes, after: from the output nodes) is, among the
    unit's other roles of label C: the one whose node on that side lists L; else
@@ -130,7 +131,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         if src is not None and src.role is not None and src != dst:
             leaving.setdefault(src.role, set()).add(roles[k].label)
     for j, labels in leaving.items():
-        if roles[j].before is not None and listed(out_nodes[j]) & labels:
+        if roles[j].changes and listed(out_nodes[j]) & labels:
             out_nodes[j] = without(out_nodes[j], labels)
     result = []
     for k, r in enumerate(roles):

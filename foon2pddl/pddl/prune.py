@@ -135,7 +135,8 @@ def prune_task(task: PlanningTask) -> PlanningTask:
                 stack.extend(p for p in actions[i].pre if p not in needed)
     kept = tuple(a for i, a in enumerate(actions) if i in keep)
     init = tuple(a for a in task.init if a in needed)
-    used_atoms = [*init, *task.goal, *(x for a in kept for x in (*a.pre, *a.add, *a.delete))]
+    used_atoms = [*init, *task.goal, *(x for a in kept for x in (*a.pre, *a.add, *a.delete)),
+                  *(x for a in kept for _, _, x in a.release)]
     used_preds = {a.predicate for a in used_atoms}
     used_args = {arg for a in used_atoms for arg in a.args}
     return replace(

@@ -86,7 +86,8 @@ class Encoding:
     objects the planner chose; `every_step`: see `Compiled`. `replay`: plan steps -> the
     plan's `PhysicalTrace` (None: the encoding has no physical objects); `view`: how the
     trace is printed; `holders`: the trace's holders are modelled (not all None), so the
-    relational replay applies to it.
+    relational replay applies to it. `complete`: it solves every goal FOON's delete-free
+    semantics solves (an encoding with more physical rules can fail where FOON's data has gaps).
     """
 
     name: str
@@ -99,6 +100,7 @@ class Encoding:
     replay: Replay | None = None
     view: TraceView | None = None
     holders: bool = False
+    complete: bool = True
 
     @property
     def physical(self) -> bool:

@@ -4,13 +4,14 @@
 preconditions are not checked here: `planners.decode.simulate_plan` does that)
 and records, per unit step, the object bound to each role (parameters first;
 read-only objects checked by `(occupied s)` take the first object, by name, in
-the role's node), the late-bound holders (the remaining parameters), and the
+the role's node), the late-bound holders (the remaining parameters, and the
+holders objects were released from by a quantified delete), and the
 new node, holder and consumed flag of every object the step changes.
 Consumption is read from FOON's lists: after the step, an object in a container
 whose new node describes its contents (`contains`, `empty`) but no longer lists
 the object's label, that the step did not change, and that the container listed
 before or the step reads, became part of the mixture (it is bound to the step
-and marked consumed). An object with two
+and marked consumed), and so did everything in or on a consumed object. An object with two
 holders is a PlanDecodeError (the encoding promises at most one). Two more
 FOON completions happen here, where the plan says which objects: a late-bound
 source holder no longer lists what left it (its PDDL state is unchanged, so a
@@ -29,7 +30,7 @@ from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace
 from .holders import listed, relational_roles, without
 from .instance_replay import source_of
 from .registry import PlanDecodeError
-from .task import Atom, PlanningTask
+from .task import Atom, PlanningTask, released
 from .trace_view import TraceView, changed, show_node
 
 __all__ = ["RELATIONAL_VIEW", "relational_json", "relational_text", "relational_trace", "step_words"]
@@ -72,6 +73,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
             raise PlanDecodeError(f"plan step {n} ({step}): {unknown[0]} is not an object of the task")
         bind = {v: a for (v, _), a in zip(action.params, args, strict=True)}
         facts -= {Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in action.delete}
+        facts -= released(facts, action.release, bind)
         facts |= {Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in action.add}
         if action.unit is None:
             holder = _holders(facts)
@@ -80,25 +82,39 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         rels = relational_roles(unit)
         given = iter(args)
         names: list[str | None] = [next(given) if bound else None for _, bound in action.roles]
-        for k, (role, bound) in enumerate(action.roles):
-            if not bound:
+        for j, r in enumerate(rels):  # a read-only source holder is the one the moving object is in
+            src = r.source.role if r.source is not None and r.moves else None
+            if src is not None and names[src] is None and names[j] in holder:
+                names[src] = holder[names[j]][0]
+        for k, (role, _) in enumerate(action.roles):
+            if names[k] is None:
                 names[k] = next((x for x in sorted(node) if label[x] == role.label and node[x] == role.before
                                  and x not in consumed and x not in names), None)
                 if names[k] is None:
                     raise PlanDecodeError(f"plan step {n} ({step}): no {role.label} is {show_node(role.before)}")
-        late = [h for h in given if h not in names]
+        params = [h for h in given if h not in names]
         was = {x: (node[x], holder.get(x), x in consumed) for x in node}
         bindings = [Binding(x, r.role.before, r.after) for r, x in zip(rels, names, strict=True)]
         for r, x in zip(rels, names, strict=True):
             if r.changes:
                 node[x] = r.after
         old_holder, holder = holder, _holders(facts)
-        for h in late:  # a late-bound source no longer holds what left it
-            gone = {label[x] for x in names if x is not None and old_holder.get(x, ("",))[0] == h
-                    and holder.get(x, ("",))[0] != h}
-            after = without(node[h], gone) if node[h] is not None and listed(node[h]) & gone else None
-            bindings.append(Binding(h, node[h], after))
-            node[h] = after or node[h]
+        gone: dict[str, set[str]] = {}
+        for x in names:
+            if x in old_holder and holder.get(x) != old_holder[x]:
+                gone.setdefault(old_holder[x][0], set()).add(label[x])
+        for h in params:
+            gone.setdefault(h, set())
+        for h, labels in sorted(gone.items()):  # a read-only or late-bound source no longer holds what left it
+            empty = without(node[h], labels) if node[h] is not None and listed(node[h]) & labels else None
+            if h in names:
+                k = names.index(h)
+                if empty is not None and bindings[k].after is None:
+                    bindings[k] = Binding(h, bindings[k].before, empty)
+                    node[h] = empty
+                continue
+            bindings.append(Binding(h, node[h], empty))
+            node[h] = empty or node[h]
         bound = {b.object for b in bindings}
         changed_now = {x for r, x in zip(rels, names, strict=True) if r.changes}
         read = {x for r, x in zip(rels, names, strict=True) if r.after is None}
@@ -116,6 +132,12 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
                     consumed.add(y)
                     if y not in bound:
                         bindings.append(Binding(y, node[y], None))
+        inner = True
+        while inner:  # what is in a consumed object went with it
+            inner = [y for y, (h, _) in sorted(holder.items()) if h in consumed and y not in consumed
+                     and node[y] is not None]
+            consumed.update(inner)
+            bindings += [Binding(y, node[y], None) for y in inner if y not in {b.object for b in bindings}]
         changes = []
         for x in sorted(node):
             now = (node[x], holder.get(x), x in consumed)

@@ -54,7 +54,9 @@ def check_names(task: PlanningTask) -> None:
     for a in task.actions:
         names.append(a.name)
         names += [n.removeprefix("?") for pair in a.params for n in pair]
-        names += [x for atom in (*a.pre, *a.add, *a.delete) for x in (atom.predicate, *atom.args)]
+        released = tuple(atom for _, _, atom in a.release)
+        names += [n.removeprefix("?") for var, typ, _ in a.release for n in (var, typ)]
+        names += [x for atom in (*a.pre, *a.add, *a.delete, *released) for x in (atom.predicate, *atom.args)]
     names += [x for atom in (*task.init, *task.goal) for x in (atom.predicate, *atom.args)]
     for name in set(names):
         if not is_valid_name(name.removeprefix("?")) and name != "object":

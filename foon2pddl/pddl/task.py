@@ -47,6 +47,9 @@ class Action:
     comment: tuple[str, ...] = ()
     #: encodings over physical objects: per object of the unit, its `pairing.Role` and whether a parameter binds it
     roles: tuple[tuple[Role, bool], ...] = ()
+    #: quantified deletes `(forall (?v - type) (when atom (not atom)))`, as (?v, type, atom): an object leaves
+    #: whatever holds it without a parameter per possible holder (`relational`)
+    release: tuple[tuple[str, str, Atom], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -94,7 +97,7 @@ class PlanningTask:
             return True
         typed = [t for _, t in self.objects + self.constants]
         typed += [t for p in self.predicates for _, t in p.params]
-        typed += [t for a in self.actions for _, t in a.params]
+        typed += [t for a in self.actions for _, t in (*a.params, *((v, t) for v, t, _ in a.release))]
         return any(t != "object" for t in typed)
 
     @property
@@ -103,6 +106,8 @@ class PlanningTask:
         req = [":strips"]
         if self.uses_types:
             req.append(":typing")
+        if any(a.release for a in self.actions):
+            req.append(":conditional-effects")
         if self.uses_costs:
             req.append(":action-costs")
         return tuple(req)
@@ -114,3 +119,17 @@ class PlanningTask:
     @cached_property
     def _by_name(self) -> dict[str, Action]:
         return {a.name.lower(): a for a in self.actions}
+
+
+def released(state: set[Atom], release: tuple[tuple[str, str, Atom], ...], bind: dict[str, str]) -> set[Atom]:
+    """The atoms of `state` an action's quantified deletes remove (`Action.release`), under the binding `bind`.
+
+    Types are not checked: encodings quantify over the root type (O(|release| x |state|)).
+    """
+    out = set()
+    for var, _, atom in release:
+        for fact in state:
+            if fact.predicate == atom.predicate and len(fact.args) == len(atom.args) and all(
+                    a == var or bind.get(a, a) == f for a, f in zip(atom.args, fact.args, strict=True)):
+                out.add(fact)
+    return out

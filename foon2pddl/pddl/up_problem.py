@@ -78,7 +78,7 @@ def to_up_problem(task: PlanningTask) -> Problem:
 def build_up(task: PlanningTask) -> UpTask:
     """The task as a UP problem, with name maps (actions first, so they keep their names)."""
     quiet_environment()
-    from unified_planning.model import Fluent, InstantaneousAction, Object
+    from unified_planning.model import Fluent, InstantaneousAction, Object, Variable
     from unified_planning.model.metrics import MinimizeActionCosts
     from unified_planning.shortcuts import BoolType, Int, UserType
 
@@ -129,6 +129,11 @@ def build_up(task: PlanningTask) -> UpTask:
                 ua.add_effect(expr(atom), False)
         for atom in action.add:
             ua.add_effect(expr(atom), True)
+        for var, t, atom in action.release:
+            v = Variable(_param(var), up_type(t))
+            scope = {**params, var: v}
+            cond = fluents[atom.predicate](*(scope[a] if a.startswith("?") else objects[a] for a in atom.args))
+            ua.add_effect(cond, False, cond, forall=(v,))
         problem.add_action(ua)
         if action.cost is not None:
             costs[ua] = Int(action.cost)

@@ -1,0 +1,388 @@
+; foon2pddl, encoding relational, level 3: 12 of 101 units after relevance pruning
+; goal: pancake (4 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 15 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, salt 1, stove 2, sugar 1, whisk 1)
+(define (domain foon-relational)
+  (:requirements :strips :typing :conditional-effects)
+  (:types
+    physical-object - object
+    object-state - object
+    baking_powder - physical-object
+    butter - physical-object
+    egg - physical-object
+    flour - physical-object
+    frying_pan - physical-object
+    ladle - physical-object
+    milk - physical-object
+    mixing_bowl - physical-object
+    pancake - physical-object
+    pancake_batter - physical-object
+    salt - physical-object
+    stove - physical-object
+    sugar - physical-object
+    whisk - physical-object
+    carton - physical-object
+  )
+  (:constants
+    not-yet-made - object-state
+    baking_powder_in_mixing_bowl - object-state
+    baking_powder_in_pancake_batter - object-state
+    baking_powder_powder - object-state
+    butter_in_frying_pan_melted - object-state
+    butter_in_frying_pan_solid - object-state
+    butter_solid - object-state
+    egg_cracked_in_mixing_bowl - object-state
+    egg_cracked_in_pancake_batter - object-state
+    egg_whole - object-state
+    flour_in_mixing_bowl - object-state
+    flour_in_pancake_batter - object-state
+    flour_powder - object-state
+    frying_pan_contains_butter_on_stove - object-state
+    frying_pan_contains_butter_pancake_batter_on_stove - object-state
+    frying_pan_contains_pancake_on_stove - object-state
+    frying_pan_empty - object-state
+    frying_pan_empty_on_stove - object-state
+    ladle_plain - object-state
+    milk_in_carton - object-state
+    milk_in_mixing_bowl - object-state
+    milk_in_pancake_batter - object-state
+    mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar - object-state
+    mixing_bowl_contains_baking_powder_egg_flour_salt_sugar - object-state
+    mixing_bowl_contains_baking_powder_flour_salt_sugar - object-state
+    mixing_bowl_contains_flour - object-state
+    mixing_bowl_contains_heavy_cream - object-state
+    mixing_bowl_contains_heavy_cream_sugar - object-state
+    mixing_bowl_contains_pancake_batter - object-state
+    mixing_bowl_empty - object-state
+    pancake_cooked_in_frying_pan - object-state
+    pancake_cooked_on_plate - object-state
+    pancake_cooked_on_plate_topped_maple_syrup - object-state
+    pancake_half-cooked_in_frying_pan - object-state
+    pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan - object-state
+    pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl - object-state
+    salt_granulated - object-state
+    salt_in_mixing_bowl - object-state
+    salt_in_pancake_batter - object-state
+    stove_off - object-state
+    stove_on - object-state
+    sugar_granulated - object-state
+    sugar_in_mixing_bowl - object-state
+    sugar_in_pancake_batter - object-state
+    whisk_plain - object-state
+    carton_contains_milk - object-state
+  )
+  (:predicates
+    (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
+    (in ?h - physical-object ?x - physical-object)  ; ?x is in ?h
+    (on ?h - physical-object ?x - physical-object)  ; ?x is on ?h
+    (occupied ?s - object-state)  ; some object is in state ?s, which no action leaves
+    (goal-reached)  ; a goal candidate was made
+  )
+
+  (:action pour_u10
+    ; unit 10: pour from 02-whipped_cream.foon:13, 09-fruit_salad.foon:174
+    ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (is ?sugar sugar_granulated)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (occupied mixing_bowl_contains_heavy_cream_sugar)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
+      (not (is ?sugar sugar_granulated))
+    )
+  )
+
+  (:action pick-and-place_u22
+    ; unit 22: pick-and-place from 03-scrambled_eggs.foon:71, 04-pancakes.foon:76, 05-french_toast.foon:83
+    ; pick-and-place: frying pan (empty), stove (off) -> frying pan (empty, on [stove])
+    :parameters (?frying_pan - frying_pan ?stove - stove)
+    :precondition (and
+      (is ?frying_pan frying_pan_empty)
+      (is ?stove stove_off)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_empty_on_stove)
+      (on ?stove ?frying_pan)
+      (not (is ?frying_pan frying_pan_empty))
+    )
+  )
+
+  (:action turn_on_u23
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; turn on: stove (off) -> stove (on)
+    :parameters (?stove - stove)
+    :precondition (and
+      (is ?stove stove_off)
+    )
+    :effect (and
+      (is ?stove stove_on)
+      (occupied stove_on)
+      (not (is ?stove stove_off))
+    )
+  )
+
+  (:action pick-and-place_u24
+    ; unit 24: pick-and-place from 03-scrambled_eggs.foon:86, 04-pancakes.foon:91, 05-french_toast.foon:98
+    ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
+    :parameters (?frying_pan - frying_pan ?butter - butter)
+    :precondition (and
+      (is ?frying_pan frying_pan_empty_on_stove)
+      (is ?butter butter_solid)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (is ?butter butter_in_frying_pan_solid)
+      (in ?frying_pan ?butter)
+      (not (is ?frying_pan frying_pan_empty_on_stove))
+      (not (is ?butter butter_solid))
+    )
+  )
+
+  (:action melt_u25
+    ; unit 25: melt from 03-scrambled_eggs.foon:99, 04-pancakes.foon:104, 05-french_toast.foon:111
+    ; melt: stove (on), butter (in [frying pan], solid) -> butter (in [frying pan], melted)
+    :parameters (?butter - butter)
+    :precondition (and
+      (occupied stove_on)
+      (is ?butter butter_in_frying_pan_solid)
+    )
+    :effect (and
+      (is ?butter butter_in_frying_pan_melted)
+      (occupied butter_in_frying_pan_melted)
+      (not (is ?butter butter_in_frying_pan_solid))
+    )
+  )
+
+  (:action pour_u29
+    ; unit 29: pour from 04-pancakes.foon:3
+    ; pour: mixing bowl (empty), flour (powder) -> mixing bowl (contains {flour}), flour (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?flour - flour)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_empty)
+      (is ?flour flour_powder)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_flour)
+      (is ?flour flour_in_mixing_bowl)
+      (in ?mixing_bowl ?flour)
+      (not (is ?mixing_bowl mixing_bowl_empty))
+      (not (is ?flour flour_powder))
+    )
+  )
+
+  (:action pour_u30
+    ; unit 30: pour* from 04-pancakes.foon:13
+    ; pour: mixing bowl (contains {flour}), baking powder (powder), sugar (granulated), salt (granulated) -> mixing bowl (contains {baking powder, flour, salt, sugar}), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixi...
+    :parameters (?mixing_bowl - mixing_bowl ?baking_powder - baking_powder ?sugar - sugar ?salt - salt)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_flour)
+      (is ?baking_powder baking_powder_powder)
+      (is ?sugar sugar_granulated)
+      (is ?salt salt_granulated)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar)
+      (is ?baking_powder baking_powder_in_mixing_bowl)
+      (in ?mixing_bowl ?baking_powder)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (is ?salt salt_in_mixing_bowl)
+      (in ?mixing_bowl ?salt)
+      (not (is ?mixing_bowl mixing_bowl_contains_flour))
+      (not (is ?baking_powder baking_powder_powder))
+      (not (is ?sugar sugar_granulated))
+      (not (is ?salt salt_granulated))
+    )
+  )
+
+  (:action crack_u31
+    ; unit 31: crack from 04-pancakes.foon:31
+    ; crack: mixing bowl (contains {baking powder, flour, salt, sugar}), egg (whole) -> mixing bowl (contains {baking powder, egg, flour, salt, sugar}), egg (cracked, in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?egg - egg)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar)
+      (is ?egg egg_whole)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
+      (is ?egg egg_cracked_in_mixing_bowl)
+      (in ?mixing_bowl ?egg)
+      (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar))
+      (not (is ?egg egg_whole))
+    )
+  )
+
+  (:action pour_u32
+    ; unit 32: pour from 04-pancakes.foon:42
+    ; pour: mixing bowl (contains {baking powder, egg, flour, salt, sugar}), milk (in [carton]) -> mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), milk (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?milk - milk)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
+      (is ?milk milk_in_carton)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
+      (is ?milk milk_in_mixing_bowl)
+      (in ?mixing_bowl ?milk)
+      (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar))
+      (not (is ?milk milk_in_carton))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?milk) (not (in ?from_1 ?milk))))
+    )
+  )
+
+  (:action whisk_u33
+    ; unit 33: whisk from 04-pancakes.foon:52
+    ; whisk: mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), flour (in [mixing bowl]), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixing bowl]), egg (cracked, in [mixing bowl]), milk (in [mixin...
+    :parameters (?mixing_bowl - mixing_bowl ?flour - flour ?baking_powder - baking_powder ?sugar - sugar ?salt - salt ?egg - egg ?milk - milk ?pancake_batter - pancake_batter)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
+      (is ?flour flour_in_mixing_bowl)
+      (in ?mixing_bowl ?flour)
+      (is ?baking_powder baking_powder_in_mixing_bowl)
+      (in ?mixing_bowl ?baking_powder)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (is ?salt salt_in_mixing_bowl)
+      (in ?mixing_bowl ?salt)
+      (is ?egg egg_cracked_in_mixing_bowl)
+      (in ?mixing_bowl ?egg)
+      (is ?milk milk_in_mixing_bowl)
+      (in ?mixing_bowl ?milk)
+      (occupied whisk_plain)
+      (is ?pancake_batter not-yet-made)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_pancake_batter)
+      (occupied mixing_bowl_contains_pancake_batter)
+      (is ?flour flour_in_pancake_batter)
+      (occupied flour_in_pancake_batter)
+      (in ?pancake_batter ?flour)
+      (is ?baking_powder baking_powder_in_pancake_batter)
+      (occupied baking_powder_in_pancake_batter)
+      (in ?pancake_batter ?baking_powder)
+      (is ?sugar sugar_in_pancake_batter)
+      (occupied sugar_in_pancake_batter)
+      (in ?pancake_batter ?sugar)
+      (is ?salt salt_in_pancake_batter)
+      (occupied salt_in_pancake_batter)
+      (in ?pancake_batter ?salt)
+      (is ?egg egg_cracked_in_pancake_batter)
+      (occupied egg_cracked_in_pancake_batter)
+      (in ?pancake_batter ?egg)
+      (is ?milk milk_in_pancake_batter)
+      (occupied milk_in_pancake_batter)
+      (in ?pancake_batter ?milk)
+      (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?pancake_batter)
+      (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar))
+      (not (is ?flour flour_in_mixing_bowl))
+      (not (in ?mixing_bowl ?flour))
+      (not (is ?baking_powder baking_powder_in_mixing_bowl))
+      (not (in ?mixing_bowl ?baking_powder))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
+      (not (is ?salt salt_in_mixing_bowl))
+      (not (in ?mixing_bowl ?salt))
+      (not (is ?egg egg_cracked_in_mixing_bowl))
+      (not (in ?mixing_bowl ?egg))
+      (not (is ?milk milk_in_mixing_bowl))
+      (not (in ?mixing_bowl ?milk))
+      (not (is ?pancake_batter not-yet-made))
+    )
+  )
+
+  (:action pour_u34
+    ; unit 34: pour from 04-pancakes.foon:114
+    ; pour: mixing bowl (contains {pancake batter}), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [mixing bowl]), ladle, frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan ...
+    :parameters (?pancake_batter - pancake_batter ?frying_pan - frying_pan ?butter - butter)
+    :precondition (and
+      (occupied mixing_bowl_contains_pancake_batter)
+      (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
+      (occupied ladle_plain)
+      (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (is ?butter butter_in_frying_pan_melted)
+      (in ?frying_pan ?butter)
+    )
+    :effect (and
+      (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
+      (occupied pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
+      (in ?frying_pan ?pancake_batter)
+      (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove)
+      (not (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl))
+      (not (is ?frying_pan frying_pan_contains_butter_on_stove))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?pancake_batter) (not (in ?from_1 ?pancake_batter))))
+    )
+  )
+
+  (:action cook_u35
+    ; unit 35: cook from 04-pancakes.foon:135
+    ; cook: stove (on), frying pan (contains {butter, pancake batter}, on [stove]), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [frying pan]) -> frying pan (contains {pancake}, on [stove]), pancake (half-cooked,...
+    :parameters (?stove - stove ?frying_pan - frying_pan ?pancake_batter - pancake_batter ?pancake - pancake)
+    :precondition (and
+      (is ?stove stove_on)
+      (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove)
+      (on ?stove ?frying_pan)
+      (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
+      (in ?frying_pan ?pancake_batter)
+      (is ?pancake not-yet-made)
+    )
+    :effect (and
+      (is ?frying_pan frying_pan_contains_pancake_on_stove)
+      (occupied frying_pan_contains_pancake_on_stove)
+      (is ?pancake pancake_half-cooked_in_frying_pan)
+      (occupied pancake_half-cooked_in_frying_pan)
+      (in ?frying_pan ?pancake)
+      (not (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove))
+      (not (is ?pancake not-yet-made))
+    )
+  )
+
+  (:action reach-goal-1
+    ; goal candidate 1: pancake (cooked, in [frying pan])
+    :parameters ()
+    :precondition (and
+      (occupied pancake_cooked_in_frying_pan)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-2
+    ; goal candidate 2: pancake (cooked, on [plate])
+    :parameters ()
+    :precondition (and
+      (occupied pancake_cooked_on_plate)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-3
+    ; goal candidate 3: pancake (cooked, on [plate], topped {maple syrup})
+    :parameters ()
+    :precondition (and
+      (occupied pancake_cooked_on_plate_topped_maple_syrup)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-4
+    ; goal candidate 4: pancake (half-cooked, in [frying pan])
+    :parameters ()
+    :precondition (and
+      (occupied pancake_half-cooked_in_frying_pan)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+)

@@ -1,0 +1,134 @@
+; foon2pddl, encoding relational, level 3: 3 of 101 units after relevance pruning
+; goal: whipped cream (3 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 5 (heavy cream 1, mixing bowl 1, sugar 1, whipped cream 1, whisk 1)
+(define (domain foon-relational)
+  (:requirements :strips :typing :conditional-effects)
+  (:types
+    physical-object - object
+    object-state - object
+    heavy_cream - physical-object
+    mixing_bowl - physical-object
+    sugar - physical-object
+    whipped_cream - physical-object
+    whisk - physical-object
+    carton - physical-object
+  )
+  (:constants
+    not-yet-made - object-state
+    heavy_cream_in_carton - object-state
+    heavy_cream_in_mixing_bowl - object-state
+    mixing_bowl_contains_heavy_cream - object-state
+    mixing_bowl_contains_heavy_cream_sugar - object-state
+    mixing_bowl_contains_whipped_cream - object-state
+    mixing_bowl_empty - object-state
+    sugar_granulated - object-state
+    sugar_in_mixing_bowl - object-state
+    whipped_cream_in_bowl_whipped - object-state
+    whipped_cream_in_mixing_bowl_whipped - object-state
+    whipped_cream_on_fruit_salad_whipped - object-state
+    whisk_plain - object-state
+    carton_contains_heavy_cream - object-state
+  )
+  (:predicates
+    (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
+    (in ?h - physical-object ?x - physical-object)  ; ?x is in ?h
+    (on ?h - physical-object ?x - physical-object)  ; ?x is on ?h
+    (occupied ?s - object-state)  ; some object is in state ?s, which no action leaves
+    (goal-reached)  ; a goal candidate was made
+  )
+
+  (:action pour_u9
+    ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
+    ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_empty)
+      (is ?heavy_cream heavy_cream_in_carton)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (occupied heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (not (is ?mixing_bowl mixing_bowl_empty))
+      (not (is ?heavy_cream heavy_cream_in_carton))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?heavy_cream) (not (in ?from_1 ?heavy_cream))))
+    )
+  )
+
+  (:action pour_u10
+    ; unit 10: pour from 02-whipped_cream.foon:13, 09-fruit_salad.foon:174
+    ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (is ?sugar sugar_granulated)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?sugar sugar_in_mixing_bowl)
+      (occupied sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
+      (not (is ?sugar sugar_granulated))
+    )
+  )
+
+  (:action whisk_u99
+    ; unit 99: whisk from 09-fruit_salad.foon:184
+    ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream ?sugar - sugar ?whipped_cream - whipped_cream)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (occupied whisk_plain)
+      (is ?whipped_cream not-yet-made)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
+      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (occupied whipped_cream_in_mixing_bowl_whipped)
+      (in ?mixing_bowl ?whipped_cream)
+      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?whipped_cream not-yet-made))
+    )
+  )
+
+  (:action reach-goal-1
+    ; goal candidate 1: whipped cream (in [bowl], whipped)
+    :parameters ()
+    :precondition (and
+      (occupied whipped_cream_in_bowl_whipped)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-2
+    ; goal candidate 2: whipped cream (in [mixing bowl], whipped)
+    :parameters ()
+    :precondition (and
+      (occupied whipped_cream_in_mixing_bowl_whipped)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+
+  (:action reach-goal-3
+    ; goal candidate 3: whipped cream (on [fruit salad], whipped)
+    :parameters ()
+    :precondition (and
+      (occupied whipped_cream_on_fruit_salad_whipped)
+    )
+    :effect (and
+      (goal-reached)
+    )
+  )
+)

@@ -1,0 +1,47 @@
+; foon2pddl, encoding relational, level 3: 12 of 101 units after relevance pruning
+; goal: french toast (3 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 14 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, milk 1, spatula 1, stove 2, vanilla extract 1)
+(define (problem make_french_toast)
+  (:domain foon-relational)
+  (:objects
+    bowl_1 - bowl
+    bread_1 - bread
+    butter_1 - butter
+    cinnamon_1 - cinnamon
+    custard_1 - custard
+    egg_1 - egg
+    fork_1 - fork
+    french_toast_1 - french_toast
+    frying_pan_1 - frying_pan
+    milk_1 - milk
+    spatula_1 - spatula
+    stove_1 - stove
+    stove_2 - stove
+    vanilla_extract_1 - vanilla_extract
+    carton_1 - carton
+  )
+  (:init
+    (in carton_1 milk_1)
+    (is bowl_1 bowl_empty)
+    (is bread_1 bread_sliced)
+    (is butter_1 butter_solid)
+    (is carton_1 carton_contains_milk)
+    (is cinnamon_1 cinnamon_ground)
+    (is custard_1 not-yet-made)
+    (is egg_1 egg_whole)
+    (is fork_1 fork_plain)
+    (is french_toast_1 not-yet-made)
+    (is frying_pan_1 frying_pan_empty)
+    (is milk_1 milk_in_carton)
+    (is spatula_1 spatula_plain)
+    (is stove_1 stove_off)
+    (is stove_2 stove_off)
+    (is vanilla_extract_1 vanilla_extract_liquid)
+    (occupied fork_plain)
+    (occupied spatula_plain)
+  )
+  (:goal (and
+    (goal-reached)
+  ))
+)

@@ -1,0 +1,50 @@
+; foon2pddl, encoding relational, level 3: 18 of 101 units after relevance pruning
+; goal: greek salad (1 candidate node)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
+(define (problem make_greek_salad)
+  (:domain foon-relational)
+  (:objects
+    black_olive_1 - black_olive
+    bowl_1 - bowl
+    cucumber_1 - cucumber
+    cutting_board_1 - cutting_board
+    cutting_board_2 - cutting_board
+    cutting_board_3 - cutting_board
+    feta_cheese_1 - feta_cheese
+    greek_salad_1 - greek_salad
+    knife_1 - knife
+    olive_oil_1 - olive_oil
+    onion_1 - onion
+    oregano_1 - oregano
+    red_wine_vinegar_1 - red_wine_vinegar
+    salad_tongs_1 - salad_tongs
+    tomato_1 - tomato
+    bottle_1 - bottle
+  )
+  (:init
+    (in bottle_1 olive_oil_1)
+    (in bottle_1 red_wine_vinegar_1)
+    (is black_olive_1 black_olive_pitted)
+    (is bottle_1 bottle_contains_olive_oil_red_wine_vinegar)
+    (is bowl_1 bowl_empty)
+    (is cucumber_1 cucumber_whole)
+    (is cutting_board_1 cutting_board_empty)
+    (is cutting_board_2 cutting_board_empty)
+    (is cutting_board_3 cutting_board_empty)
+    (is feta_cheese_1 feta_cheese_crumbled)
+    (is greek_salad_1 not-yet-made)
+    (is knife_1 knife_plain)
+    (is olive_oil_1 olive_oil_in_bottle)
+    (is onion_1 onion_whole)
+    (is oregano_1 oregano_dried)
+    (is red_wine_vinegar_1 red_wine_vinegar_in_bottle)
+    (is salad_tongs_1 salad_tongs_plain)
+    (is tomato_1 tomato_whole)
+    (occupied knife_plain)
+    (occupied salad_tongs_plain)
+  )
+  (:goal (and
+    (goal-reached)
+  ))
+)

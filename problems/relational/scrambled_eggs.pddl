@@ -1,0 +1,48 @@
+; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
+; goal: scrambled eggs (2 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
+(define (problem make_scrambled_eggs)
+  (:domain foon-relational)
+  (:objects
+    black_pepper_1 - black_pepper
+    bowl_1 - bowl
+    butter_1 - butter
+    egg_1 - egg
+    egg_mixture_1 - egg_mixture
+    fork_1 - fork
+    frying_pan_1 - frying_pan
+    milk_1 - milk
+    salt_1 - salt
+    scrambled_eggs_1 - scrambled_eggs
+    spatula_1 - spatula
+    stove_1 - stove
+    stove_2 - stove
+    whisk_1 - whisk
+    carton_1 - carton
+  )
+  (:init
+    (in carton_1 milk_1)
+    (is black_pepper_1 black_pepper_ground)
+    (is bowl_1 bowl_empty)
+    (is butter_1 butter_solid)
+    (is carton_1 carton_contains_milk)
+    (is egg_1 egg_whole)
+    (is egg_mixture_1 not-yet-made)
+    (is fork_1 fork_plain)
+    (is frying_pan_1 frying_pan_empty)
+    (is milk_1 milk_in_carton)
+    (is salt_1 salt_granulated)
+    (is scrambled_eggs_1 not-yet-made)
+    (is spatula_1 spatula_plain)
+    (is stove_1 stove_off)
+    (is stove_2 stove_off)
+    (is whisk_1 whisk_plain)
+    (occupied fork_plain)
+    (occupied spatula_plain)
+    (occupied whisk_plain)
+  )
+  (:goal (and
+    (goal-reached)
+  ))
+)

@@ -1,0 +1,46 @@
+; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
+; goal: tomato soup (4 candidate nodes)
+; kitchen: example_kitchen.txt (51 nodes)
+; instances: 12 (cutting board 2, knife 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
+(define (problem make_tomato_soup)
+  (:domain foon-relational)
+  (:objects
+    cutting_board_1 - cutting_board
+    cutting_board_2 - cutting_board
+    knife_1 - knife
+    olive_oil_1 - olive_oil
+    onion_1 - onion
+    pot_1 - pot
+    stove_1 - stove
+    stove_2 - stove
+    tomato_1 - tomato
+    tomato_soup_1 - tomato_soup
+    vegetable_broth_1 - vegetable_broth
+    wooden_spoon_1 - wooden_spoon
+    bottle_1 - bottle
+    carton_1 - carton
+  )
+  (:init
+    (in bottle_1 olive_oil_1)
+    (in carton_1 vegetable_broth_1)
+    (is bottle_1 bottle_contains_olive_oil)
+    (is carton_1 carton_contains_vegetable_broth)
+    (is cutting_board_1 cutting_board_empty)
+    (is cutting_board_2 cutting_board_empty)
+    (is knife_1 knife_plain)
+    (is olive_oil_1 olive_oil_in_bottle)
+    (is onion_1 onion_whole)
+    (is pot_1 pot_empty)
+    (is stove_1 stove_off)
+    (is stove_2 stove_off)
+    (is tomato_1 tomato_whole)
+    (is tomato_soup_1 not-yet-made)
+    (is vegetable_broth_1 vegetable_broth_in_carton)
+    (is wooden_spoon_1 wooden_spoon_plain)
+    (occupied knife_plain)
+    (occupied wooden_spoon_plain)
+  )
+  (:goal (and
+    (goal-reached)
+  ))
+)
