@@ -61,6 +61,23 @@ def test_holder_kinds_leave_out_the_binding_kinds():
     assert K.STATE_MISMATCH not in HOLDER_KINDS and K.MISPLACED in HOLDER_KINDS and len(HOLDER_KINDS) == 11
 
 
+def test_nested_contents_cover_the_list_and_mixtures_absorb_what_sat_on_them():
+    """The bowl lists carrot and dressing: the dressing is on the carrot in the bowl. Mixing consumes both;
+    the salad, made in the bowl, stands for the dressing too (it sat on the consumed carrot)."""
+    carrot, dressing = node("carrot", "grated", ("in", "bowl")), node("dressing", ("on", "carrot"))
+    w = World({"bowl_1": "bowl", "carrot_1": "carrot", "dressing_1": "dressing", "salad_1": "salad"},
+              {"bowl_1": ObjectState("bowl_1", contents("bowl", ["carrot", "dressing"])),
+               "carrot_1": ObjectState("carrot_1", carrot, "bowl_1", "in"),
+               "dressing_1": ObjectState("dressing_1", dressing, "carrot_1", "on")})
+    assert replay(w.trace()).ok
+    w.step("mix", [ObjectState("carrot_1", carrot, "bowl_1", "in", consumed=True),
+                   ObjectState("dressing_1", dressing, "carrot_1", "on", consumed=True),
+                   ObjectState("salad_1", node("salad", ("in", "bowl")), "bowl_1", "in"),
+                   ObjectState("bowl_1", contents("bowl", ["carrot", "dressing"]))])
+    report = replay(w.trace())
+    assert report.ok, [str(d) for d in report.disagreements]
+
+
 def test_holder_gone():
     t = with_initial(salsa_world().trace(), ObjectState("board_1", contents("cutting board", ["onion"]),
                                                         consumed=True))

@@ -24,20 +24,21 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   nodes never describe what is on them, may hold anything, and a `contains` list on a
   mixture nothing is put in names its ingredients): the labels a container's node lists
   (`contains {a, b}`, `contains [a]`) are exactly covered by the existing objects in or
-  on it. An ingredient list names what went into a mixture, so an object *stands for*
-  its label plus every object it absorbed: a consumed object is absorbed by the objects
-  its step changed that end up in the holder it was in (or, for a consumed object that
-  stood free, by the objects the step made), transitively. A listed label nothing in the
-  container stands for (nor the container itself, when it is a mixture that absorbed it)
-  is `MISSING_CONTENT`, or `STALE_SOURCE` when an object of that label left the
-  container in a step that gave the container no new node (FOON leaves a pour's source
-  out of the unit's outputs, so its list goes stale), or `CLAIMED_TWICE` when the only
-  objects of that label are in other containers that list it too (two bowls claim one
-  salmon). An object that stands for nothing the list names is `UNLISTED_CONTENT`, or
-  `HELD_BY_EMPTY` when the node lists nothing (emptied, or a board that "becomes dirty"
-  with the onion still on it). Only objects whose node names a place count as contents:
-  FOON lists what it places, and a placeless object with a holder is judged by the
-  placement rule above.
+  on it, directly or through others (the dressing on the carrot in the bowl). An
+  ingredient list names what went into a mixture, so an object *stands for* its label
+  plus every object it absorbed: a consumed object is absorbed by the objects its step
+  changed that end up in the holder it was in (or under the mixture it was on, consumed
+  too; or, for a consumed object that stood free, by the objects the step made),
+  transitively. A listed label nothing in the container stands for (nor the container
+  itself, when it is a mixture that absorbed it) is `MISSING_CONTENT`, or `STALE_SOURCE`
+  when an object of that label left the container in a step that gave the container no
+  new node (FOON leaves a pour's source out of the unit's outputs, so its list goes
+  stale), or `CLAIMED_TWICE` when the only objects of that label are in other containers
+  that list it too (two bowls claim one salmon). An object that stands for nothing the
+  list names is `UNLISTED_CONTENT`, or `HELD_BY_EMPTY` when the node lists nothing
+  (emptied, or a board that "becomes dirty" with the onion still on it). Only objects
+  whose node names a place count as contents: FOON lists what it places, and a placeless
+  object with a holder is judged by the placement rule above.
 
 **Steps**, for step k:
 
@@ -225,7 +226,8 @@ class _Replay:
                 claims.setdefault(x, []).append(h)
         for h in holders:
             node, items = states[h].node, self.listed(states[h].node)
-            covered = frozenset().union(self.absorbed.get(h, frozenset()), *map(self.stands_for, cover.get(h, ())))
+            covered = frozenset().union(self.absorbed.get(h, frozenset()),
+                                        *map(self.stands_for, _below(h, cover)))
             for x in sorted(items - covered):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
                 left = self.stale.get((h, x))
@@ -327,10 +329,22 @@ class _Replay:
             if not c.consumed or before[c.id].consumed:
                 continue
             h = before[c.id].holder
+            while h is not None and after[h].consumed:  # on a mixture consumed too: the holder under it
+                h = before[h].holder
             takers = [i for i in changed if i != c.id and after[i].holder is not None
                       and after[i].holder in (h, c.holder)] if h is not None else made
             for t in takers:
                 self.absorbed[t] = self.absorbed.get(t, frozenset()) | self.stands_for(c.id)
+
+
+def _below(h: str, cover: Mapping[str, list[str]]) -> list[str]:
+    """Everything in or on `h`, directly or through other objects (the dressing on the carrot in the bowl)."""
+    out, todo = [], list(cover.get(h, ()))
+    while todo:
+        o = todo.pop()
+        out.append(o)
+        todo += cover.get(o, ())
+    return out
 
 
 def _say(named: tuple[tuple[Relation, str], ...]) -> str:
