@@ -22,7 +22,7 @@ __version__ = "0.1.0"
 __all__ = ["ENCODINGS", "Compiled", "Constraints", "Foon", "Goal", "GoalPlan", "GoalRow", "Kitchen", "Network",
            "PlanOutcome", "Retrieval", "__version__", "compile_goal", "constraints_of", "kitchen_of", "load_kitchen",
            "load_network", "plan", "plan_goals", "render_tree", "resolve_goal", "retrieve", "retrieve_goals",
-           "run_experiment", "to_pddl", "to_up_problem"]
+           "run_experiment", "skill_plan", "to_pddl", "to_up_problem"]
 
 
 def __getattr__(name: str) -> object:

@@ -51,11 +51,12 @@ from .planners.solve import plan as _plan
 from .retrieval.api import retrieve as _retrieve
 from .retrieval.batch import GoalRow
 from .retrieval.result import Retrieval
+from .skills.run import SkillOutcome
 
 __all__ = ["ENCODINGS", "Compiled", "Constraints", "Foon", "Goal", "GoalPlan", "GoalRow", "Kitchen", "Network",
            "PlanOutcome", "Retrieval", "compile_goal", "constraints_of", "kitchen_of", "load_kitchen", "load_network",
            "plan", "plan_goals", "render_tree", "resolve_goal", "retrieve", "retrieve_goals", "run_experiment",
-           "to_pddl", "to_up_problem"]
+           "skill_plan", "to_pddl", "to_up_problem"]
 
 
 def _foon(network: Network | Foon, level: int) -> Foon:
@@ -346,3 +347,32 @@ def run_experiment(out_dir: str | Path, *paths: str | Path, networks: Iterable[s
     config = runner.Config(tuple(str(p) for p in paths), Protocol(**counts, **protocol), nets, chosen, Path(out_dir),
                            jobs, DEFAULT_TIME_LIMIT if time_limit is None else time_limit)
     return runner.run(config, progress=progress)
+
+
+def skill_plan(network: Network | Foon, kitchen: Kitchen, goal: Goal | str, *, skills: str | Path | None = None,
+               table: str | Path | None = None, hands: int = 1, without_skills: Iterable[str] = (),
+               skill_costs: dict[str, int] | None = None, constraints: Constraints | None = None,
+               encoding: str | None = None, level: int = 3, **options) -> SkillOutcome:
+    """Plan `goal` and decompose every macro step into robot skills, as `foon2pddl plan --skills` (docs/skills.md).
+
+    `skills`, `table`: a skill domain and a motion table instead of the shipped ones; the robot has
+    `hands`, lacks `without_skills` (their motions are banned for the macro planner) and pays
+    `skill_costs` (others cost 1). `options` as `planners.solve.plan` takes them. `.skills` is the
+    `skills.SkillPlan` (None without a plan), `.json()` the skill list `--format json` prints.
+
+    >>> net = load_network()
+    >>> done = skill_plan(net, load_kitchen(net), "whipped cream")
+    >>> done.skills.ok, [c.skill for c in done.skills.calls][:2]
+    (True, ['pick', 'pour'])
+    """
+    from .skills import Robot, read_domain, read_table, shipped_domain, shipped_table
+    from .skills.run import plan_skills
+
+    domain = read_domain(skills) if skills is not None else shipped_domain()
+    motions = read_table(table) if table is not None else shipped_table()
+    motions.check(domain)
+    cons = constraints if constraints is not None else Constraints()
+    robot = Robot.of(hands, (*cons.without_skills, *without_skills), {**dict(cons.skill_costs), **(skill_costs or {})})
+    goal = goal if isinstance(goal, Goal) else resolve_goal(network, goal, level)
+    return plan_skills(_foon(network, level), kitchen, goal, encoding=encoding, domain=domain, table=motions,
+                       robot=robot, constraints=cons, level=level, **options)

@@ -20,7 +20,7 @@ def net():
 def test_the_package_namespace_is_the_api():
     public = {n for n in dir(fp) if not n.startswith("_")}
     assert public <= set(fp.__all__) | {"analysis", "api", "cli", "errors", "experiment", "generalize", "io",
-                                        "model", "pddl", "planners", "retrieval", "status"}
+                                        "model", "pddl", "planners", "retrieval", "skills", "status"}
     assert not hasattr(fp, "Any") and not hasattr(fp, "annotations")
 
 

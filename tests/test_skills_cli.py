@@ -95,3 +95,13 @@ def test_skills_need_an_encoding_with_objects_and_one_goal():
     assert result.exit_code == 2 and "physical objects" in result.stderr
     result = run("--goals", "whipped cream,guacamole", "--skills")
     assert result.exit_code == 2
+
+
+def test_the_api_returns_the_skill_list_the_cli_prints():
+    import foon2pddl as fp
+
+    net = fp.load_network()
+    done = fp.skill_plan(net, fp.load_kitchen(net), "whipped cream")
+    cli = json.loads(run("--goal", "whipped cream", "--skills", "--format", "json").stdout)
+    assert done.json()["skills"] == cli["skills"] and done.json()["steps"][0]["unit"] == cli["steps"][0]["unit"]
+    assert done.trace is not None and len(done.trace.steps) == cli["macro_steps"]

@@ -41,6 +41,12 @@ class SkillOutcome:
     trace: PhysicalTrace | None
     skills: SkillPlan | None
 
+    def json(self) -> dict | None:
+        """The skill plan as `plan --skills --format json` gives it (None without a plan)."""
+        from .report import skill_plan_json
+
+        return skill_plan_json(self.skills) if self.skills is not None else None
+
 
 def robot_profile(constraints: Constraints | None, hands: int = 1, without: tuple[str, ...] = ()) -> Robot:
     """The robot of a constraints file's `without_skills`/`skill_costs` plus flags."""
