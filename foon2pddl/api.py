@@ -235,7 +235,7 @@ def plan(network: Network | Foon, kitchen: Kitchen, goal: Goal | str, encoding: 
     >>> net = load_network()
     >>> out = plan(net, load_kitchen(net), resolve_goal(net, "lemonade"), "gen-lifted")
     >>> out.status, len(out.tree)
-    (<PlanStatus.SOLVED: 'solved'>, 7)
+    (<PlanStatus.SOLVED: 'solved'>, 9)
     >>> plan(net, load_kitchen(net), "lemonade", network_kind="gen").status
     <PlanStatus.SOLVED: 'solved'>
     """

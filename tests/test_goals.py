@@ -85,11 +85,13 @@ def node(label, *states):
     return make_node(label, [make_state(*s) if isinstance(s, tuple) else make_state(s) for s in states])
 
 
-def test_label_goal_is_any_produced_node_with_that_label():
+def test_label_goal_is_the_final_products_with_that_label():
     goal = resolve_goal(parse_goal_spec("onion"), FOON)
-    assert set(goal.candidates) == {node("onion", "chopped"), node("onion", "chopped", ("in", "bowl")),
-                                    node("onion", "peeled", "whole")}
-    assert node("onion", "whole") not in goal.candidates  # only ever an input
+    # no onion node is a dish: the produced ones no unit consumes are meant; the others are named
+    assert set(goal.candidates) == {node("onion", "chopped", ("in", "bowl")), node("onion", "peeled", "whole")}
+    assert goal.others == (node("onion", "chopped"),) and goal.preferred == "final product"
+    assert "`onion (chopped)`" in goal.choice_note()
+    assert node("onion", "whole") not in goal.candidates + goal.others  # only ever an input
     assert list(goal.candidates) == sorted(goal.candidates)
 
 
@@ -140,8 +142,8 @@ def test_label_that_is_only_an_input_or_states_not_produced():
 def test_satisfied_by_returns_the_first_available_candidate():
     goal = resolve_goal(parse_goal_spec("onion"), FOON)
     assert goal.satisfied_by({node("onion", "whole")}) is None
-    have = {node("onion", "peeled", "whole"), node("onion", "chopped")}
-    assert goal.satisfied_by(have) == goal.candidates[0] == node("onion", "chopped")
+    have = {node("onion", "peeled", "whole"), node("onion", "chopped"), node("onion", "chopped", ("in", "bowl"))}
+    assert goal.satisfied_by(have) == goal.candidates[0] == node("onion", "chopped", ("in", "bowl"))
 
 
 def test_goal_file_holds_one_object_node(tmp_path):

@@ -221,3 +221,69 @@ def test_gen_goals_listed_are_goals_of_plan_network_gen(tmp_path):
     assert many.exit_code == 0 and (tmp_path / "d" / "beverages" / "domain.pddl").exists()
     unknown = run("plan", "--network", "gen", "--goal", "beveragez")
     assert unknown.exit_code == 2 and "unknown object label" in unknown.stderr
+
+
+# -- 6. a bare label means the dish ------------------------------------------------------------------
+
+#: Salmon thawed in a bowl (one unit) on the way to the recipe's dish, salmon baked on a plate.
+SALMON = """//
+O\tsalmon\t1
+S\tfrozen
+O\tbowl\t0
+S\tempty
+M\tplace
+O\tsalmon\t1
+S\tfrozen
+S\tin\t[bowl]
+//
+O\tsalmon\t1
+S\tfrozen
+S\tin\t[bowl]
+M\tthaw
+O\tsalmon\t1
+S\tthawed
+S\tin\t[bowl]
+//
+O\tsalmon\t1
+S\tthawed
+S\tin\t[bowl]
+O\tplate\t0
+S\tempty
+M\tbake
+O\tsalmon\t1\t0
+S\tbaked
+S\ton\t[plate]
+//
+"""
+
+
+def test_bare_label_is_the_dish_and_says_so(tmp_path):
+    foon = write(tmp_path / "salmon.txt", SALMON)
+    kit = write(tmp_path / "k.txt", "salmon: frozen\nbowl: empty\nplate: empty\n")
+    r = run("retrieve", foon, "--goal", "salmon", "--kitchen", kit)
+    assert r.exit_code == 0 and "3 units" in r.stderr
+    assert "salmon (baked, on [plate])" in r.stdout.splitlines()[0]
+    assert "note: goal 'salmon' read as the recipe's dish: `salmon (baked, on [plate])`" in r.stderr
+    assert "`salmon (frozen, in [bowl])`" in r.stderr  # the others are listed
+    # states still ask for a node exactly
+    exact = run("retrieve", foon, "--goal", "salmon: frozen, in [bowl]", "--kitchen", kit)
+    assert exact.exit_code == 0 and "1 units" in exact.stderr and "note:" not in exact.stderr
+
+
+def test_bare_label_on_the_corpus_picks_a_dish():
+    from conftest import SUBGRAPHS
+
+    r = run("retrieve", SUBGRAPHS, "--goal", "black bean")
+    assert r.exit_code == 0
+    assert "read as the recipes' dishes" in r.stderr
+    first = r.stdout.splitlines()[0]
+    assert "black bean (contains {" in first and "cooked, in [bowl]" in first
+
+
+def test_goals_dishes_lists_the_dishes_only():
+    r = run("goals", "--dishes")
+    rows = r.stdout.splitlines()[2:]
+    assert rows and all("  *  " in row for row in rows)
+    assert len(rows) == 9  # one dish per recipe of the example
+    every = run("goals").stdout.splitlines()[2:]
+    assert {row for row in every if "  *  " in row} == set(rows)

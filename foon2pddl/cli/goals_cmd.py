@@ -16,7 +16,7 @@ from .options import emit, kitchen_option, level_option, load_view, network_opti
 
 def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
     """One row per node some unit produces (sorted): reachable, its round, whether it is a recipe's dish."""
-    dishes = {n for u in foon.units for n in u.outputs if n.dish is not None}
+    dishes = foon.dishes
     rows = []
     for node in sorted(foon.producers):
         r = reach.round_of(node)
@@ -45,8 +45,9 @@ def format_rows(rows: list[dict], kitchen_source: str, network: str = DEFAULT_NE
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
 @click.option("--reachable", "only_reachable", is_flag=True,
               help="Only the goals the kitchen can make (pipe into `retrieve --goals -`).")
+@click.option("--dishes", "only_dishes", is_flag=True, help="Only the recipes' dishes (the * rows).")
 @output_option
-def goals(paths, kitchen, level, network, as_json, only_reachable, output) -> None:
+def goals(paths, kitchen, level, network, as_json, only_reachable, only_dishes, output) -> None:
     """List the goal candidates (nodes some unit produces) and whether the kitchen can make each.
 
     With --network exp or gen, the goals of FOON-EXP or FOON-GEN (GEN goals are category-level).
@@ -56,6 +57,8 @@ def goals(paths, kitchen, level, network, as_json, only_reachable, output) -> No
     rows = goal_rows(foon, reachable(foon, kit.nodes))
     if only_reachable:
         rows = [r for r in rows if r["reachable"]]
+    if only_dishes:
+        rows = [r for r in rows if r["dish"]]
     source = kit.source or "the kitchen"
     if as_json:
         data = {"level": level, "network": network, "kitchen": source,

@@ -256,9 +256,10 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
     loss = level_loss(spec, level)
     if loss:
         click.echo(f"warning: {loss}", err=True)
-    if encoding == "gen-lifted":
-        return lifted_goal(view, spec)
-    return view.goal(goal, goal_file)
+    found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file)
+    if found.preferred:
+        click.echo("note: " + found.choice_note(), err=True)
+    return found
 
 
 def lifted_goal(view, spec):

@@ -224,6 +224,11 @@ class Foon:
         return _index(self.units, lambda u: u.inputs)
 
     @cached_property
+    def dishes(self) -> frozenset[ObjectNode]:
+        """The nodes some unit outputs marked as its recipe's dish (the `O` line's 4th field)."""
+        return frozenset(n for u in self.units for n in u.outputs if n.dish is not None)
+
+    @cached_property
     def motions(self) -> tuple[str, ...]:
         """Distinct motion labels, sorted."""
         return tuple(sorted({u.motion.label for u in self.units}))

@@ -39,9 +39,25 @@ class Goal:
     spec: GoalSpec
     candidates: tuple[ObjectNode, ...]
     level: int = 3
+    preferred: str = ""  # why a bare label kept only these nodes: "dish", "final product" or "" (all kept)
+    others: tuple[ObjectNode, ...] = ()  # the label's other produced nodes, left out by that preference
 
     def describe(self) -> str:
         return self.spec.describe()
+
+    def choice_note(self, limit: int = 5) -> str:
+        """Which nodes a bare label was read as, and the others it could name ("" when nothing was left out)."""
+        if not self.preferred:
+            return ""
+        many = len(self.candidates) > 1
+        what = ("the recipes' dishes" if many else "the recipe's dish") if self.preferred == "dish" else \
+            ("the final products (no unit uses them)" if many else "the final product (no unit uses it)")
+        chosen = "; ".join(f"`{c.describe()}`" for c in self.candidates)
+        more = "; ".join(f"`{o.describe()}`" for o in self.others[:limit])
+        if len(self.others) > limit:
+            more += f"; ... ({len(self.others) - limit} more)"
+        return (f"goal {self.spec.label!r} read as {what}: {chosen}; other {self.spec.label!r} nodes "
+                f"(give the states to ask for one): {more}")
 
     def satisfied_by(self, available: set[ObjectNode] | frozenset[ObjectNode]) -> ObjectNode | None:
         """The first candidate present in `available`, else None."""
@@ -89,6 +105,23 @@ def spec_of_node(node: ObjectNode) -> GoalSpec:
 
 
 
+def prefer_dishes(goal: Goal, foon: Foon) -> Goal:
+    """A bare label means the dish: keep the candidates that are a recipe's dish, else those no unit
+    consumes (final products), else all; the ones left out are kept in `others` for the note.
+
+    A cook asking for `salmon` means the finished salmon, not the first state some recipe
+    passes through (the earliest-made node, which `complete` retrieval would pick). O(candidates).
+    """
+    for kind, keep in (("dish", [c for c in goal.candidates if c in foon.dishes]),
+                       ("final product", [c for c in goal.candidates if c not in foon.consumers])):
+        if keep and len(keep) < len(goal.candidates):
+            others = tuple(c for c in goal.candidates if c not in keep)
+            return Goal(goal.spec, tuple(keep), goal.level, kind, others)
+        if keep:
+            return goal
+    return goal
+
+
 def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
     """The produced nodes of `foon` (at its level) that match `spec`.
 
@@ -104,7 +137,7 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
             raise UsageError(f"no unit produces {spec.label!r} (it only occurs as an input){hint}")
         raise UsageError(f"unknown object label {spec.label!r}{hint}")
     if spec.states is None:
-        return Goal(spec, tuple(sorted(same_label)), level)
+        return prefer_dishes(Goal(spec, tuple(sorted(same_label)), level), foon)
     want = project_node(make_node(spec.label, spec.states), level).states
     found = [n for n in same_label if n.states == want]
     if not found:
