@@ -149,7 +149,7 @@ def test_the_limit_is_said_when_reached():
     less = Kitchen(frozenset(n for n in kit.nodes if n.label not in drop), 3)
     goal = resolve_goal(GoalSpec("guacamole"), net.at(3))
     text = explain_unreachable(net.at(3), less.nodes, goal, max_size=3)
-    assert "no set of up to 3 kitchen additions" in text
+    assert "it needs more than 3 kitchen additions (no set of up to 3 makes it)" in text
     assert "smallest kitchen additions" not in text
 
 
@@ -287,3 +287,57 @@ def test_goals_dishes_lists_the_dishes_only():
     assert len(rows) == 9  # one dish per recipe of the example
     every = run("goals").stdout.splitlines()[2:]
     assert {row for row in every if "  *  " in row} == set(rows)
+
+
+def test_more_than_the_limit_is_said_without_a_missing_list(tmp_path):
+    kit = write(tmp_path / "k.txt", "knife\n")
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", kit)
+    assert r.exit_code == 1
+    assert "it needs more than 6 kitchen additions" in r.stderr
+    assert "missing (no unit makes them)" not in r.stderr
+
+
+# -- 11. wrong inputs are named ------------------------------------------------------------------------
+
+
+def test_a_rates_file_as_kitchen_is_an_input_error():
+    from conftest import SEARCH_INPUTS
+
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", SEARCH_INPUTS / "motion.txt")
+    assert r.exit_code == 2
+    assert "motion.txt:1: error: this is a motion success-rates file" in r.stderr
+    assert "warning" not in r.stderr
+
+
+def test_stats_of_a_kitchen_json_says_it_is_a_kitchen():
+    from conftest import SEARCH_INPUTS
+
+    r = run("stats", SEARCH_INPUTS / "kitchen.json")
+    assert r.exit_code == 2 and "is a kitchen or a goal list" in r.stderr
+
+
+def test_stats_skips_plainly_non_foon_files_and_invalid_ones_on_request(tmp_path):
+    from conftest import SEARCH_INPUTS
+
+    (tmp_path / "net").mkdir()
+    (tmp_path / "net" / "a.foon").write_text((example_path() / "07-guacamole.foon").read_text())
+    (tmp_path / "net" / "rates.txt").write_text((SEARCH_INPUTS / "motion.txt").read_text())
+    (tmp_path / "net" / "notes.txt").write_text("shopping list\nlimes\n")
+    plain = run("stats", tmp_path / "net")
+    assert plain.exit_code == 0, plain.stderr
+    assert "rates.txt:0: warning: skipped: a motion success-rates file" in plain.output
+    assert "notes.txt:0: warning: skipped: no FOON text" in plain.output
+    (tmp_path / "net" / "broken.foon").write_text("O\tbowl\t0\nM\tmix\nX\tnonsense\n")
+    stops = run("stats", tmp_path / "net")
+    assert stops.exit_code == 2 and "broken.foon:3: error" in stops.stderr
+    skips = run("stats", tmp_path / "net", "--skip-invalid")
+    assert skips.exit_code == 0 and "broken.foon:3: warning: skipped (not a valid network)" in skips.output
+    assert "units" in skips.stdout
+
+
+def test_paths_accept_standard_input():
+    merged = run("merge")
+    assert merged.exit_code == 0
+    piped = run("stats", "-", stdin=merged.stdout)
+    assert piped.exit_code == 0, piped.stderr
+    assert piped.stdout.splitlines()[:4] == run("stats").stdout.splitlines()[:4]

@@ -15,9 +15,16 @@ from .options import emit, output_option, paths_argument
 @main.command("stats")
 @paths_argument
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable JSON output.")
+@click.option("--skip-invalid", "skip_invalid", is_flag=True,
+              help="Skip (with a warning) files that fail to parse instead of stopping at the first.")
 @output_option
-def stats(paths, as_json, output) -> None:
-    """Object and motion nodes at each hierarchy level, label counts, units per file, warnings."""
-    net = load_network(paths)
+def stats(paths, as_json, skip_invalid, output) -> None:
+    """Object and motion nodes at each hierarchy level, label counts, units per file, warnings.
+
+    PATHS are FOON files or directories (`-`: FOON text on standard input); files under a
+    directory that are plainly not FOON (a rates file, text without FOON lines) are skipped
+    with a warning.
+    """
+    net = load_network(paths, skip_invalid)
     data = network_stats(net.foon, net.warnings)
     emit(json.dumps(data, indent=2) + "\n" if as_json else format_stats(data), output)

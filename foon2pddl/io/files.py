@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+import sys
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -9,17 +11,25 @@ from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
 from ..model.bulk import full_gc_paused
 from ..model.foon import Foon
 from ..model.merge import merge
-from .parser import ParseResult, parse_file
+from .parser import ParseResult, parse_file, parse_text, read_text
 
 FOON_SUFFIXES = (".txt", ".foon")
 
 
+#: PATHS entry that reads one FOON text from standard input.
+STDIN = "-"
+_FOON_LINE = re.compile(r"(?:[OSM]\d*\t|//)")
+
+
 def expand_paths(paths: Iterable[str | Path]) -> list[Path]:
-    """Files named directly, plus FOON files (`*.txt`, `*.foon`) under directories, sorted."""
+    """Files named directly, plus FOON files (`*.txt`, `*.foon`) under directories, sorted; `-` (standard
+    input) is kept where it stands."""
     out: list[Path] = []
     for raw in paths:
         p = Path(raw)
-        if p.is_dir():
+        if str(raw) == STDIN:
+            out.append(p)
+        elif p.is_dir():
             found = sorted(f for f in p.rglob("*") if f.is_file() and f.suffix.lower() in FOON_SUFFIXES)
             if not found:
                 raise FoonSyntaxError(str(p), 0, "directory holds no FOON files (*.txt, *.foon)")
@@ -28,11 +38,25 @@ def expand_paths(paths: Iterable[str | Path]) -> list[Path]:
             out.append(p)
         else:
             raise FoonInputError(str(p), 0, "no such file or directory")
-    return sorted(dict.fromkeys(out))
+    return sorted(dict.fromkeys(out), key=lambda f: (str(f) != STDIN, f))
+
+
+def plainly_not_foon(text: str) -> str:
+    """What a text is when it is plainly no FOON file ("" when it may be one): a rates file, or
+    text without a single `O`, `S`, `M` or `//` line."""
+    from .rates import looks_like_rates
+
+    if looks_like_rates(text):
+        return "a motion success-rates file (`motion<TAB>rate` lines)"
+    if not any(_FOON_LINE.match(line.lstrip("\ufeff")) for line in text.split("\n")):
+        return "no FOON text (no `O`, `S`, `M` or `//` line)"
+    return ""
 
 
 def read_network(path: Path) -> ParseResult:
-    """One network file: FOON text, or the JSON export (`*.json`, see jsonio)."""
+    """One network file: FOON text, or the JSON export (`*.json`, see jsonio); `-`: FOON text on standard input."""
+    if str(path) == STDIN:
+        return parse_text(sys.stdin.read(), "<stdin>")
     if path.suffix.lower() == ".json":
         from .jsonio import read_json
 
@@ -40,10 +64,33 @@ def read_network(path: Path) -> ParseResult:
     return parse_file(path)
 
 
-def load(paths: Iterable[str | Path], level: int = 3) -> tuple[Foon, tuple[ParseWarning, ...]]:
-    """Parse and merge every FOON file under `paths` (JSON exports named directly too);
-    return the network and all warnings."""
+def _read_all(paths: Iterable[str | Path], skip_invalid: bool) -> tuple[list[ParseResult], list[ParseWarning]]:
+    """Every file's parse; files found under a directory that are plainly not FOON are skipped with a
+    warning, and with `skip_invalid` so is any file that fails to parse."""
+    named = {Path(p) for p in paths}
+    results, skipped = [], []
+    for f in expand_paths(paths):
+        if f not in named and f.suffix.lower() in FOON_SUFFIXES:
+            what = plainly_not_foon(read_text(f))
+            if what:
+                skipped.append(ParseWarning(str(f), 0, f"skipped: {what}"))
+                continue
+        try:
+            results.append(read_network(f))
+        except FoonSyntaxError as exc:
+            if not skip_invalid:
+                raise
+            skipped.append(ParseWarning(exc.path, exc.line, f"skipped (not a valid network): {exc.message}"))
+    if not results:
+        raise FoonSyntaxError(str(next(iter(named), "")), 0, "no FOON file to read: every file was skipped")
+    return results, skipped
+
+
+def load(paths: Iterable[str | Path], level: int = 3, skip_invalid: bool = False) -> tuple[Foon, tuple[ParseWarning, ...]]:
+    """Parse and merge every FOON file under `paths` (JSON exports named directly too, `-` for
+    standard input); return the network and all warnings (skipped files among them, see `_read_all`)."""
+    paths = list(paths)
     with full_gc_paused():
-        results: list[ParseResult] = [read_network(p) for p in expand_paths(paths)]
-        warnings = tuple(w for r in results for w in r.warnings)
+        results, skipped = _read_all(paths, skip_invalid)
+        warnings = tuple(skipped) + tuple(w for r in results for w in r.warnings)
         return merge((r.foon for r in results), level), warnings

@@ -37,12 +37,13 @@ class Network:
         return project(self.foon, check_level(level))
 
 
-def load_network(paths: Sequence[str | Path]) -> Network:
-    """Merge the FOON files under `paths`, or the embedded example when none is given."""
+def load_network(paths: Sequence[str | Path], skip_invalid: bool = False) -> Network:
+    """Merge the FOON files under `paths`, or the embedded example when none is given
+    (`skip_invalid`: files that fail to parse are skipped with a warning, see `files.load`)."""
     if not paths:
         foon, warnings = load([example_path()])
         return Network(foon, warnings, (str(example_path()),), True)
-    foon, warnings = load(paths)
+    foon, warnings = load(paths, skip_invalid=skip_invalid)
     return Network(foon, warnings, tuple(str(p) for p in paths))
 
 

@@ -235,6 +235,9 @@ def _unit(data: Any, where: tuple, level: int) -> FunctionalUnit:
 
 
 def _foon(data: Any) -> Foon:
+    if isinstance(data, list):
+        raise _Invalid((), "expected a FOON JSON document (a JSON object), found a list: a JSON list of objects "
+                           "is a kitchen or a goal list (docs/format.md), not a network")
     d = _fields(data, (), "FOON JSON document", ("format", "version", "units"), ("level",))
     if d["format"] != FORMAT:
         raise _Invalid(("format",), f"not a foon2pddl FOON (expected \"format\": \"{FORMAT}\", found {d['format']!r})")

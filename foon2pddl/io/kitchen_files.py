@@ -10,6 +10,7 @@ from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
 from .json_text import line_of, load_json, text_problem
 from .parser import parse_objects, read_text
+from .rates import looks_like_rates
 
 
 def json_node(item: object, path: str, index: int) -> ObjectNode:
@@ -104,6 +105,9 @@ def read_kitchen(path: str | Path) -> Kitchen:
         nodes = read_json_nodes(p)
     else:
         text = read_text(p)
+        if looks_like_rates(text):
+            raise FoonSyntaxError(str(p), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
+                                             "not a kitchen: a kitchen lists object nodes (docs/format.md)")
         if looks_like_foon(text):
             nodes = [n for n, _ in parse_objects(text, str(p))]
         else:

@@ -77,3 +77,20 @@ def read_rates(path: str | Path, default: float = DEFAULT_RATE) -> Rates:
     """Read a rates file (see the module doc)."""
     p = Path(path)
     return parse_rates(read_text(p), str(p), default)
+
+
+def looks_like_rates(text: str) -> bool:
+    """Whether `text` reads as a rates file: every line (blank and `#` lines aside) a label, a tab
+    and a number, and there is one. Used to say so when such a file is given as something else."""
+    lines = [line.strip() for line in text.split("\n") if line.strip() and not line.strip().startswith("#")]
+    if not lines:
+        return False
+    for line in lines:
+        label, tab, number = line.rpartition("\t")
+        try:
+            float(number)
+        except ValueError:
+            return False
+        if not tab or not label.strip():
+            return False
+    return True

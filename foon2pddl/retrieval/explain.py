@@ -9,11 +9,10 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from ..analysis.additions import smallest_additions
-from ..analysis.reachability import reachable
+from ..analysis.reachability import blockers, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import default_kitchen
-from .complete import unreachable_detail
 
 
 def additions_text(sets, shown: int = 3) -> str:
@@ -52,6 +51,9 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
         if fixes.smallest:
             return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
     if exact:
-        return unreachable_detail(reach, goal) + f" (no set of up to {max_size} kitchen additions makes it)"
+        leaves = blockers(reach, goal.candidates)
+        return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it)"
+                + ("; nodes no unit makes, each needed on some way to it: " + "; ".join(n.describe() for n in leaves)
+                   if leaves else " (every way to make it needs a node that itself needs it)"))
     return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
             "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
