@@ -80,11 +80,14 @@ def connect(jobs: int, scheduler: str | None):
 
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     # Forked workers inherit the network views this process built (`worker.view`): a local run builds
-    # each network once, not once per worker (a worker the nanny restarts later builds its own).
+    # each network once, not once per worker. Set for the whole run, not only while the cluster starts:
+    # a nanny reads it again whenever it restarts a worker, and a spawned one (the default) neither
+    # inherits the views nor the quiet signal handling of forked children (`io.interrupts`), so a
+    # SIGTERM while it started printed its traceback.
+    dask.config.set({"distributed.worker.multiprocessing-method": method})
     try:
-        with dask.config.set({"distributed.worker.multiprocessing-method": method}):
-            cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
-                                               dashboard_address=":0", silence_logs=logging.CRITICAL)
+        cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                           dashboard_address=":0", silence_logs=logging.CRITICAL)
         return distributed.Client(cluster), cluster
     except BaseException:  # an interrupt while starting: no cluster may outlive the run
         close_local_clusters()
