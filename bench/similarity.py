@@ -83,7 +83,7 @@ def run(ctx: Context) -> None:
         reader = sim.reader
         for split in SPLITS:
             chosen = [p for p in pairs if split == "all" or p.split == split]
-            s = score(chosen, lambda a, b: sim(a, b) >= DEFAULT_THRESHOLD)
+            s = score(chosen, lambda a, b, sim=sim: sim(a, b) >= DEFAULT_THRESHOLD)
             p, plo, phi = s.precision()
             r, rlo, rhi = s.recall()
             note = (f"{len(chosen)} pairs, {s.good} good, {s.accepted} accepted ({s.bad_accepted} bad)")

@@ -82,9 +82,8 @@ rates_option = click.option("--rates", "rates", type=click.Path(path_type=Path),
 
 def network_option(command):
     """`--network` with the registry's network kinds (imported when a command that takes it is defined)."""
-    from ..generalize.network import NETWORKS
-
     from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
+    from ..generalize.network import NETWORKS
 
     def remember(ctx, _param, value):
         ctx.meta["foon2pddl.similarity"] = value  # read by load_view and the substitution notes

@@ -11,8 +11,8 @@ the concrete REG network beside it (the lifted GEN planner plans over it).
 from __future__ import annotations
 
 from ..generalize.expand import DEFAULT_THRESHOLD
-from ..generalize.network import DEFAULT_NETWORK, NETWORKS, NetworkView, lifted_networks, network_view
 from ..generalize.modes import DEFAULT_MODE
+from ..generalize.network import DEFAULT_NETWORK, NETWORKS, NetworkView, lifted_networks, network_view
 from ..io.inputs import Network
 from ..model.kitchen import default_kitchen
 
