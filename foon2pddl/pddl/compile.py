@@ -32,7 +32,7 @@ from .relational_replay import RELATIONAL_VIEW, relational_trace
 from .task import PlanningTask
 
 __all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "as_compiled", "compile_goal", "compile_task",
-           "encoding_named"]
+           "encoding_named", "register"]
 
 
 def _registry(*encodings: Encoding) -> dict[str, Encoding]:
@@ -58,6 +58,12 @@ DEFAULT_ENCODING = next(iter(ENCODINGS))
 
 #: The encodings whose plan steps map back through `Action.unit` alone (the lifted one grounds categories).
 GROUND_ENCODINGS = tuple(name for name, e in ENCODINGS.items() if not e.lifted)
+
+
+def register(encoding: Encoding) -> Encoding:
+    """Add (or replace) an encoding; returns it (docs/extending.md)."""
+    ENCODINGS[encoding.name] = encoding
+    return encoding
 
 
 def encoding_named(name: str) -> Encoding:
