@@ -341,3 +341,46 @@ def test_paths_accept_standard_input():
     piped = run("stats", "-", stdin=merged.stdout)
     assert piped.exit_code == 0, piped.stderr
     assert piped.stdout.splitlines()[:4] == run("stats").stdout.splitlines()[:4]
+
+
+# -- 12. no silent waits ------------------------------------------------------------------------------
+
+
+def test_a_slow_step_says_what_it_does_and_a_fast_one_is_silent(capsys):
+    import time
+
+    from foon2pddl.cli.progress import slow_step
+
+    with slow_step("building something big", after=0.05):
+        time.sleep(0.3)
+    assert capsys.readouterr().err == "building something big ...\n"
+    with slow_step("quick", after=5):
+        pass
+    assert capsys.readouterr().err == ""
+
+
+def test_a_slow_plan_announces_itself(monkeypatch):
+    from foon2pddl.cli import progress
+
+    monkeypatch.setattr(progress, "AFTER", 0.0)  # every step counts as slow: each says what it is
+    r = run("plan", "--goal", "guacamole")
+    assert r.exit_code == 0
+    assert "planning 'guacamole' (fd, tree encoding, time limit 300 s) ..." in r.stderr
+    assert "reading the embedded example ..." in r.stderr
+    monkeypatch.setattr(progress, "AFTER", 60.0)
+    quiet = run("plan", "--goal", "guacamole")
+    assert r.stdout == quiet.stdout and "..." not in quiet.stderr  # only stderr changes
+
+
+def test_experiment_eta_waits_for_enough_cells():
+    from foon2pddl.experiment.progress import LINES, Progress
+
+    clock = iter([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]).__next__
+    p = Progress(100, LINES, clock=clock)
+    p.done = 1
+    assert "ETA after 5 cells" in p.line()
+    p.done = 5
+    assert "ETA after" not in p.line() and "ETA " in p.line()
+    big = Progress(1000, LINES, clock=iter([0.0, 10.0, 20.0]).__next__)
+    big.done = 20
+    assert "ETA after 50 cells" in big.line()

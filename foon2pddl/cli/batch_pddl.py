@@ -14,6 +14,7 @@ from ..pddl.compile import ENCODINGS
 from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
+from .progress import slow_step
 from .reasons import why_unsolvable
 
 
@@ -77,7 +78,8 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
             rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             trees.append(None)
             continue
-        outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
+        with slow_step(f"planning goal {len(rows) + 1} of {len(entries)}: {goal.describe()!r}"):
+            outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
         tree = outcome.tree if outcome.status == "solved" else None
         reason = "" if tree is not None else outcome.message or outcome.result.message
         if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:

@@ -47,8 +47,11 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
-    return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
-                        **encoder_options(encoding, instances, category_types, view.foon))
+    from .progress import slow_step
+
+    with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
+        return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
+                            **encoder_options(encoding, instances, category_types, view.foon))
 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:

@@ -212,14 +212,20 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     from ..io.kitchen_files import read_utensils
     from ..model.containment import with_containment
     from ..model.kitchen import with_utensils
+    from .progress import slow_step
 
-    net = load_network(paths)
+    with slow_step("reading " + (", ".join(str(p) for p in paths[:3]) + (" ..." if len(paths) > 3 else "")
+                                 if paths else "the embedded example")):
+        net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
     if constraints is not None and NETWORKS[network].substitutes is not Substitutes.NONE:
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    view = network_view(net, network, level, kit, similarity=chosen_similarity())
+    building = {"exp": f"building FOON-EXP of {len(net.foon.units):,} units (WordNet similarities: once, then "
+                       "cached)", "gen": f"building FOON-GEN of {len(net.foon.units):,} units"}
+    with slow_step(building.get(network, f"building the {network} network")):
+        view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
     if utensils is not None:

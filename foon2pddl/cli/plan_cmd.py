@@ -39,6 +39,7 @@ from .options import (
     single_goal,
     view_goal,
 )
+from .progress import slow_step
 from .reasons import networks_hint, why_unsolvable
 from .skills_cli import plan_with_skills, skill_encoding, skill_options
 
@@ -164,11 +165,12 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                                 rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
-    outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
-                   optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
-                   up_validate=up_validate, constraints=cons, search=config,
-                   instances=counts,
-                   categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
+    with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
+                   f"time limit {time_limit:g} s)"):
+        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+                       optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
+                       up_validate=up_validate, constraints=cons, search=config, instances=counts,
+                       categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None

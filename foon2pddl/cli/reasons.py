@@ -16,8 +16,6 @@ import click
 
 #: Seconds the lifted planner may take to confirm a `--network gen` hint.
 GEN_HINT_TIME_LIMIT = 30.0
-#: Networks (units) from which the hint checks announce themselves on stderr (they can take seconds).
-ANNOUNCE_UNITS = 600
 
 
 def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
@@ -59,13 +57,13 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     from ..generalize.hints import networks_that_reach
     from ..generalize.network import NETWORKS
     from ..io.inputs import goal_spec
+    from .progress import slow_step
 
     spec = goal_spec(goal, goal_file)
-    if len(net.foon.units) > ANNOUNCE_UNITS:
-        click.echo("checking whether FOON-EXP or FOON-GEN makes it ...", err=True)
-    kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
-                                confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
-                                         for k in NETWORKS.values() if k.encoding is not None})
+    with slow_step("checking which other network makes it (for a hint)"):
+        kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
+                                    confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
+                                             for k in NETWORKS.values() if k.encoding is not None})
     if kinds:
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)

@@ -32,6 +32,7 @@ from .options import (
     single_goal,
     view_goal,
 )
+from .progress import slow_step
 from .reasons import gen_reading_note, networks_hint
 
 
@@ -114,9 +115,12 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     kind = NETWORKS[network]
     if cons.items:
         if kind.substitutes is Substitutes.NONE:
-            done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
+            with slow_step(f"retrieving a tree for {target.describe()!r} under the constraints ({method})"):
+                done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)
         else:
-            done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates, limits)
+            with slow_step(f"retrieving a tree for {target.describe()!r} with substitutes for what is banned"):
+                done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates,
+                                    limits)
         for line in constraint_notes(done.removal):
             click.echo(line, err=True)
         result = done.result
@@ -124,7 +128,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
             for s in shaping(foon, kit, target, done, method, rates=motion_rates, **limits):
                 click.echo(explain_line(s), err=True)
     else:
-        result = retrieve(foon, kit, target, method, rates=motion_rates, **limits)
+        with slow_step(f"retrieving a tree for {target.describe()!r} ({method})"):
+            result = retrieve(foon, kit, target, method, rates=motion_rates, **limits)
         if explain:
             click.echo("explain: no constraints given", err=True)
     if result.tree is None:
@@ -176,8 +181,10 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
 
     if view.note:
         click.echo(view.note, err=True)
-    found = solve_goals(view.foon, view.kitchen.nodes, entries, lambda spec: resolve_goal(view.map_goal(spec), view.foon),
-                        method=method, rates=rates, **limits)
+    with slow_step(f"retrieving trees for {len(entries)} goals ({method})"):
+        found = solve_goals(view.foon, view.kitchen.nodes, entries,
+                            lambda spec: resolve_goal(view.map_goal(spec), view.foon),
+                            method=method, rates=rates, **limits)
     rows = [r.as_dict() for r in found]
     table_fmt = fmt if fmt in TABLE_FORMATS else "text"
     if output is not None:

@@ -19,6 +19,13 @@ OFF = "off"
 
 #: Seconds between two progress lines when stderr is not a terminal.
 LINE_INTERVAL = 30.0
+#: The estimated time left is shown once this share of the cells is done (and at least `ETA_MIN_CELLS`):
+#: the first cells include start-up (workers, networks built per trial), and a rate from them
+#: overstates the rest (an `ETA 2 h 01 min` for a run that took 80 s).
+ETA_MIN_SHARE = 0.05
+ETA_MIN_CELLS = 5
+#: The bar without its time-left field, until the estimate means something.
+_EARLY_BAR = "{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt} [{elapsed}, estimating time left]"
 
 
 def default_mode(stream: IO[str] | None = None) -> str:
@@ -55,20 +62,32 @@ class Progress:
             tqdm = require("tqdm", "experiment", "the experiment's progress bar").tqdm
             tqdm.monitor_interval = 0  # no monitor thread
             self.bar = tqdm(total=total, unit="cell", desc="experiment", file=self.stream, dynamic_ncols=True,
-                            smoothing=0.05)
+                            smoothing=0.05, bar_format=_EARLY_BAR)
+
+    @property
+    def eta_meaningful(self) -> bool:
+        """Whether enough cells are done for the rate to predict the rest (`ETA_MIN_SHARE`)."""
+        return self.done >= max(ETA_MIN_CELLS, ETA_MIN_SHARE * self.total)
 
     def line(self) -> str:
         """The progress line for the cells done so far."""
         elapsed = max(self.clock() - self.start, 1e-9)
         rate = self.done / elapsed
         pct = 100.0 * self.done / self.total if self.total else 100.0
-        eta = duration((self.total - self.done) / rate) if rate > 0 else "?"
+        if self.done >= self.total:
+            eta = "0 s"
+        elif rate > 0 and self.eta_meaningful:
+            eta = duration((self.total - self.done) / rate)
+        else:
+            eta = f"after {max(ETA_MIN_CELLS, int(ETA_MIN_SHARE * self.total + 0.999)):,} cells"
         return (f"experiment: {self.done:,}/{self.total:,} cells ({pct:.1f} %), {rate:,.1f} cells/s, "
                 f"elapsed {duration(elapsed)}, ETA {eta}")
 
     def update(self, n: int = 1) -> None:
         self.done += n
         if self.bar is not None:
+            if self.bar.bar_format == _EARLY_BAR and self.eta_meaningful:
+                self.bar.bar_format = None  # tqdm's own line, with the time left
             self.bar.update(n)
         elif self.mode == LINES and self.clock() - self.last >= self.interval:
             self.last = self.clock()

@@ -7,8 +7,8 @@ import io
 import statistics
 from collections.abc import Iterable, Sequence
 
-from .records import STATUSES, CellStatus, Record
 from .networks import DEFAULT_NETWORK
+from .records import STATUSES, CellStatus, Record
 from .solvers import SOLVERS, Role
 from .tables import (
     FD_TREE,

@@ -63,8 +63,9 @@ def _pick_engine(env: Any, name: str, optimal: bool) -> tuple[str, str | None]:
     return name, None
 
 
-def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tuple[str, ...], str]:
-    """Build the UP problem and solve it in this process: (status, steps, message)."""
+def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tuple[str, ...], str, str]:
+    """Build the UP problem and solve it in this process: (status, steps, message, engine used: `--optimal`
+    may pick `NAME-opt`)."""
     from unified_planning.shortcuts import OneshotPlanner
 
     from ..pddl.up_problem import build_up, quiet_environment
@@ -72,19 +73,20 @@ def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tupl
     env = quiet_environment()
     engine, problem_msg = _pick_engine(env, name, optimal)
     if problem_msg:
-        return "error", (), problem_msg
+        return "error", (), problem_msg, name
     up = build_up(task)
     problem = up.problem
     with OneshotPlanner(name=engine) as planner:
         if not planner.supports(problem.kind):
-            return "error", (), f"engine {engine!r} does not support this task's features"
+            return "error", (), f"engine {engine!r} does not support this task's features", engine
         res = planner.solve(problem)  # the parent enforces the time limit
     status = UP_STATUS.get(res.status.name, "error")
     steps: tuple[str, ...] = ()
     if res.plan is not None and status == "solved":
         steps = tuple(up.step(ai) for ai in res.plan.actions)
     log = " ".join(str(m.message) for m in (res.log_messages or []))[-500:]
-    return status, steps, f"{engine}: {res.status.name.lower()}" + (f" ({log})" if status == "error" and log else "")
+    return (status, steps, f"{engine}: {res.status.name.lower()}" + (f" ({log})" if status == "error" and log else ""),
+            engine)
 
 
 def _child(conn: Any, task: PlanningTask, name: str, optimal: bool, work: str, token: str) -> None:
@@ -94,7 +96,7 @@ def _child(conn: Any, task: PlanningTask, name: str, optimal: bool, work: str, t
         os.chdir(work)
         conn.send(_solve_here(task, name, optimal))
     except BaseException as exc:  # report, never hang the parent
-        conn.send(("error", (), f"{type(exc).__name__}: {exc}"))
+        conn.send(("error", (), f"{type(exc).__name__}: {exc}", name))
     finally:
         conn.close()
 
@@ -121,7 +123,7 @@ def solve(task: PlanningTask, engine: str, *, optimal: bool = False, time_limit:
             if recv.poll(bounded_timeout(time_limit)):
                 data = recv.recv()
         except EOFError:
-            data = ("error", (), f"engine process died (exit code {proc.exitcode})")
+            data = ("error", (), f"engine process died (exit code {proc.exitcode})", engine)
         finally:
             with signals_deferred():
                 if proc.is_alive():
@@ -136,5 +138,5 @@ def solve(task: PlanningTask, engine: str, *, optimal: bool = False, time_limit:
     seconds = time.perf_counter() - t0
     if data is None:
         return PlanResult("timeout", (), name, "time limit reached", {"search": seconds})
-    status, steps, message = data
-    return PlanResult(status, tuple(steps), name, message, {"search": seconds})
+    status, steps, message, used = data
+    return PlanResult(status, tuple(steps), f"up:{used}", message, {"search": seconds})
