@@ -384,3 +384,13 @@ def test_experiment_eta_waits_for_enough_cells():
     big = Progress(1000, LINES, clock=iter([0.0, 10.0, 20.0]).__next__)
     big.done = 20
     assert "ETA after 50 cells" in big.line()
+
+
+# -- 15. what the docs say about --optimal with a UP engine ---------------------------------------------
+
+
+def test_optimal_up_result_names_the_engine_that_ran():
+    r = run("plan", "--goal", "whipped cream", "--planner", "pyperplan", "--optimal", "--time-limit", "120")
+    assert r.exit_code == 0, r.stderr
+    assert "solved (up:pyperplan-opt)" in r.stderr
+    assert "`up:pyperplan-opt`" in (Path(__file__).resolve().parent.parent / "docs" / "planning.md").read_text()
