@@ -13,7 +13,7 @@ every precondition and, after every macro step, that the state is the trace's.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 
 from ..model.physical import PhysicalTrace
@@ -65,6 +65,7 @@ class MacroSkills:
     calls: tuple[SkillCall, ...]
     problem: MicroProblem | None
     seconds: float
+    what: str = ""  # the unit: `lime (whole), knife -> lime (halved)`
 
 
 @dataclass(frozen=True)
@@ -109,7 +110,8 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
     skill = table.skill_of(motion)
 
     def out(status, reason, problem=None, seconds=0.0, calls=()):
-        return MacroSkills(index, motion, step.source, skill, status, reason, (), problem, seconds), calls
+        what = step.unit.describe().split(": ", 1)[-1]
+        return MacroSkills(index, motion, step.source, skill, status, reason, (), problem, seconds, what), calls
 
     if skill is None:
         return out(StepStatus.ABSTRACT, f"motion {motion!r} has no skill in the motion table")
@@ -169,8 +171,7 @@ def decompose(trace: PhysicalTrace, table: MotionTable, domain: SkillDomain, rob
                     problems.append(f"after step {macro.index + 1} ({macro.source}): " + "; ".join(diff))
             else:
                 rep.reset_dynamic(expected)
-        steps.append(MacroSkills(macro.index, macro.motion, macro.source, macro.skill, macro.status, macro.reason,
-                                 tuple(done), macro.problem, macro.seconds))
+        steps.append(replace(macro, calls=tuple(done)))
     return SkillPlan(tuple(steps), Validation(not problems, tuple(problems)), domain)
 
 

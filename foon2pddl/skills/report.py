@@ -1,7 +1,7 @@
 """A skill plan as text for a reader, as JSON for a robot executive, and as PDDL files for other planners.
 
-Text: one line per macro step (`3. chop [chop] (recipe.txt:42)`), then its skills,
-indented, in words (`pick knife_1 from workspace`, `chop onion_1 with knife_1`).
+Text: one line per macro step (`3. chop [chop] (recipe.txt:42)`), the unit it stands
+for (`FOON: onion (whole), knife -> onion (chopped)`), then its skills, indented, in words (`pick knife_1 from workspace`, `chop onion_1 with knife_1`).
 JSON (`skill_plan_json`): the verdict, every macro step (1-based `step`, motion,
 `unit` file:line, skill, status, reason) and the flat `skills` list, one entry per
 skill: `skill`, `hand`, `objects` (trace ids; `workspace` for the table top),
@@ -72,6 +72,8 @@ def skill_plan_text(plan: SkillPlan, robot: Robot | None = None) -> str:
              f"skill replay {verdict}"]
     for step in plan.steps:
         lines.append(_header(step))
+        if step.what:
+            lines.append(f"   FOON: {step.what}")
         lines += [f"   {call_text(c, params.get(c.skill, ()))}" for c in step.calls]
     return "\n".join(lines) + "\n"
 
