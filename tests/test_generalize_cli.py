@@ -131,3 +131,5 @@ def test_exp_tree_names_its_substitutions_and_similarity_is_an_option(run):
     assert paper.stdout == cook.stdout  # the same tree: lime stands in for lemon either way
     plain = run("retrieve", "--goal", "guacamole")
     assert "substitution:" not in plain.stderr
+    planned = run("plan", "--goal", "lemonade", "--network", "exp")
+    assert planned.exit_code == 0 and "substitution: lemon juice -> lime juice" in planned.stderr

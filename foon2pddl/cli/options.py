@@ -42,6 +42,18 @@ def similarity_options(f):
                                                                for m in SIMILARITY_MODES.values()) + ".")(f)
 
 
+def expansion_notes(tree) -> None:
+    """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity."""
+    from ..generalize.modes import make_similarity
+    from ..generalize.substitution import expansion_substitutions
+
+    subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
+    for sub in subs:
+        click.echo(f"substitution: {sub.describe()}", err=True)
+    if not subs:
+        click.echo("substitution: none (the tree uses only units as read)", err=True)
+
+
 def load_overrides(path: Path | None):
     """The user's overrides file (`--overrides`), parsed (located errors), or None."""
     if path is None:

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
-from ..generalize.network import NETWORKS
+from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
@@ -31,6 +31,7 @@ from .options import (
     constraints_options,
     costs_option,
     emit,
+    expansion_notes,
     load_pddl_view,
     pddl_task_options,
     prune_option,
@@ -193,6 +194,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         click.echo(summary, err=True)
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
+        if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
+            expansion_notes(outcome.tree)
         if status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:
             reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
             click.echo("reason: " + reason, err=True)

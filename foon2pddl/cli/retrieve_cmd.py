@@ -24,6 +24,7 @@ from .options import (
     constraint_inputs,
     constraints_options,
     emit,
+    expansion_notes,
     goal_input_options,
     level_option,
     load_view,
@@ -160,18 +161,6 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if result.probability is not None:
         note += f", success probability {result.probability:.4g}"
     click.echo(note + (f" ({result.detail})" if result.detail else ""), err=True)
-
-
-def expansion_notes(tree) -> None:
-    """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity."""
-    from ..generalize.modes import make_similarity
-    from ..generalize.substitution import expansion_substitutions
-
-    subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
-    for sub in subs:
-        click.echo(f"substitution: {sub.describe()}", err=True)
-    if not subs:
-        click.echo("substitution: none (the tree uses only units as read)", err=True)
 
 
 def _batch(view, entries, method, rates, fmt, limits: dict, output, containment) -> None:
