@@ -7,6 +7,7 @@ import json
 
 import pytest
 from click.testing import CliRunner
+from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
@@ -15,6 +16,7 @@ from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity, mode_matrix
 from foon2pddl.generalize.senses import parse_overrides
 from foon2pddl.generalize.wup import WupTable
+from foon2pddl.io.inputs import load_network
 
 #: sha256 of `foon2pddl expand` on the example network before the cook mode existed (the paper's rule).
 PAPER_EXAMPLE_EXPAND = "651d5273a2c5aa7b76d1ebfb76e67e61c7e944f3a26b106a02ba34fce7197854"
@@ -131,3 +133,14 @@ def test_cook_expansion_is_smaller_and_keeps_lemon_lime(example):
     assert len(e.foon.units) < len(paper.foon.units)
     assert len(e.substitutions) < len(paper.substitutions)
     assert reference_vocabulary() and set(vocabulary(example.foon, kit)) <= set(reference_vocabulary())
+
+
+def test_shared_subgraphs_expansion_sizes_per_mode():
+    """The paper's rule keeps its published size on the shared subgraphs; the cook mode's is smaller."""
+    net = load_network([SUBGRAPHS])
+    paper = expand(net.foon, similarity="paper")
+    assert (paper.original_units, len(paper.foon.units)) == (1845, 19423)
+    cook = expand(net.foon)
+    assert (cook.original_units, len(cook.foon.units)) == (1845, 10544)
+    assert ("lemon", "lime") in cook.substitutions
+    assert not {("cilantro", "banana"), ("banana", "cilantro")} & set(cook.substitutions)
