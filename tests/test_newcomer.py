@@ -394,3 +394,55 @@ def test_optimal_up_result_names_the_engine_that_ran():
     assert r.exit_code == 0, r.stderr
     assert "solved (up:pyperplan-opt)" in r.stderr
     assert "`up:pyperplan-opt`" in (Path(__file__).resolve().parent.parent / "docs" / "planning.md").read_text()
+
+
+# -- 7. a kitchen from scratch ------------------------------------------------------------------------
+
+#: Lemonade from a pitcher of sweetened juice no unit makes (one recipe starts there) or from a lemon.
+LEMONADE = """//
+O\tpitcher\t0
+S\tcontains\t{lemon juice,sugar}
+O\twater\t1
+S\tcold
+M\tpour
+O\tlemonade\t0\t0
+S\tcontains\t{lemon juice,sugar,water}
+S\tin\t[pitcher]
+//
+O\tlemon\t1
+S\twhole
+O\tpitcher\t0
+S\tempty
+M\tsqueeze
+O\tpitcher\t0
+S\tcontains\t{lemon juice}
+//
+O\tpitcher\t0
+S\tcontains\t{lemon juice}
+O\twater\t1
+S\tcold
+M\tpour
+O\tlemonade\t0\t0
+S\tcontains\t{lemon juice,water}
+S\tin\t[pitcher]
+//
+"""
+
+
+def test_base_kitchen_starts_from_raw_ingredients(tmp_path):
+    foon = write(tmp_path / "lemonade.txt", LEMONADE)
+    default = run("retrieve", foon, "--goal", "lemonade")
+    assert default.exit_code == 0 and "complete: 1 units" in default.stderr
+    assert "note: kitchen: the network's default kitchen" in default.stderr and "--kitchen base" in default.stderr
+    base = run("retrieve", foon, "--goal", "lemonade", "--kitchen", "base")
+    assert base.exit_code == 0 and "complete: 2 units" in base.stderr
+    assert "pitcher (contains {lemon juice, sugar})" in default.stdout.splitlines()[1]
+    assert "pitcher (contains" not in base.stdout.splitlines()[1]  # no half-made dish on hand at the start
+    assert "note: kitchen" not in base.stderr
+    listed = run("goals", foon, "--kitchen", "base", "--json")
+    assert '"kitchen": "base kitchen"' in listed.stdout
+    # a file named `base` is still a file
+    (tmp_path / "base").write_text("lemon: whole\npitcher: empty\nwater: cold\n")
+    from_file = CliRunner().invoke(main, ["retrieve", str(foon), "--goal", "lemonade", "--kitchen", "base"],
+                                   catch_exceptions=False)
+    assert from_file.exit_code == 0

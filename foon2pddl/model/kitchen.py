@@ -88,6 +88,19 @@ def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kit
     return Kitchen(starting_nodes(foon) | frozenset(extra), foon.level, "default kitchen")
 
 
+#: `--kitchen` values naming a kitchen built from the network instead of a file.
+BASE_KITCHEN = "base"
+
+
+def base_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
+    """Raw ingredients and tools in their base states: the default kitchen's nodes whose states mention
+    no other object (no `in [x]`, no `contains {...}`), so no half-made dish (a pitcher of juice,
+    seasoned beans in a pot) is on hand at the start and retrieval starts from scratch."""
+    nodes = frozenset(n for n in default_kitchen(foon, base_states).nodes
+                      if all(not s.related and not s.ingredients for s in n.states))
+    return Kitchen(nodes, foon.level, "base kitchen")
+
+
 def _goal_syntax(node: ObjectNode) -> str:
     """`onion: whole`: how a user writes the node in a kitchen or goal line."""
     return node.label + (": " + ", ".join(s.describe() for s in node.states) if node.states else "")
