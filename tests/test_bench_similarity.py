@@ -1,0 +1,37 @@
+"""The labelled substitution pairs of bench/ and the interval bench/similarity.py reports."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import SUBGRAPHS
+
+from bench.similarity import Pair, read_pairs, score, wilson
+from foon2pddl.generalize.expand import vocabulary
+from foon2pddl.io.inputs import load_network
+
+
+def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs():
+    pairs = read_pairs()
+    assert len(pairs) >= 200
+    assert {p.label for p in pairs} == {"good", "marginal", "bad"}
+    assert {p.split for p in pairs} == {"independent", "tune", "fresh"}
+    assert {p.source for p in pairs} == {"paper-proposed", "cook-proposed", "random"}
+    keys = [frozenset((p.a, p.b)) for p in pairs]
+    assert len(set(keys)) == len(keys) and all(len(k) == 2 for k in keys)
+    labels = set(vocabulary(load_network([SUBGRAPHS]).foon))
+    assert all(p.a in labels and p.b in labels for p in pairs)
+
+
+def test_wilson_interval_matches_the_closed_form_values():
+    lo, hi = wilson(8, 10)  # textbook value: 0.4902 .. 0.9433
+    assert lo == pytest.approx(0.4902, abs=1e-4) and hi == pytest.approx(0.9433, abs=1e-4)
+    assert wilson(0, 10)[0] == 0.0 and wilson(10, 10)[1] == pytest.approx(1.0)
+    assert wilson(0, 0) == (0.0, 1.0)
+
+
+def test_score_counts_precision_and_recall_of_good_pairs():
+    pairs = [Pair("a", "b", "good", "random", "tune"), Pair("a", "c", "bad", "random", "tune"),
+             Pair("b", "c", "good", "random", "tune")]
+    s = score(pairs, lambda x, y: x == "a")
+    assert (s.accepted, s.good_accepted, s.good, s.bad_accepted) == (2, 1, 2, 1)
+    assert s.precision()[0] == 0.5 and s.recall()[0] == 0.5
