@@ -232,6 +232,7 @@ def test_places_and_listed_read_foon_words():
     assert set(places(n)) == {("on", "stove"), ("in", "oven")}
     assert listed(n) == {"oil"}
     assert listed(node("bowl", ("contains", "rice"))) == {"rice"}
+    assert listed(node("baking tray", ("with", "aluminium foil"))) == {"aluminium foil"}
 
 
 @st.composite

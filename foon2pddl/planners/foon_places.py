@@ -25,10 +25,12 @@ def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
 
 
 def listed(node: ObjectNode | None) -> frozenset[str]:
-    """The labels a container node lists: the ingredients and related objects of its `contains` states."""
+    """The labels a container node lists: the ingredients and related objects of its `contains` states, and
+    the related object of a `with` state (`baking tray (with [aluminium foil])`: the foil is on the tray)."""
     if node is None:
         return frozenset()
     items = {i for s in node.states if s.label == "contains" for i in (*s.ingredients, s.related) if i}
+    items |= {s.related for s in node.states if s.label == "with" and s.related}
     return frozenset(items - {node.label})
 
 
