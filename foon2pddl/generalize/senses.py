@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import json
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -45,6 +45,7 @@ class Overrides:
     pairs: dict[frozenset[str], float]
     text: str = ""  # the file's content, part of the similarity cache key
     forbidden: frozenset[frozenset[str]] = frozenset()  # pairs never substituted (similarity 0)
+    origin: dict[str, str] = field(default_factory=dict, compare=False)  # label -> file naming its senses
 
     def pair(self, a: str, b: str) -> float | None:
         return self.pairs.get(frozenset((a, b)))
@@ -55,7 +56,8 @@ class Overrides:
     def extended(self, other: Overrides) -> Overrides:
         """These overrides with `other`'s added (its senses and pair values win)."""
         return Overrides({**self.senses, **other.senses}, {**self.pairs, **other.pairs},
-                         self.text + "\n" + other.text, self.forbidden | other.forbidden)
+                         self.text + "\n" + other.text, self.forbidden | other.forbidden,
+                         {**self.origin, **other.origin})
 
 
 def parse_overrides(text: str, path: str) -> Overrides:
@@ -83,7 +85,8 @@ def parse_overrides(text: str, path: str) -> Overrides:
     if not isinstance(forbidden, list) or not all(
             isinstance(x, list) and len(x) == 2 and all(isinstance(y, str) and y.strip() for y in x) for x in forbidden):
         raise FoonInputError(path, 0, "forbidden: expected a list of [label, label] pairs")
-    return Overrides(senses, pairs, text, frozenset(frozenset((_key(a), _key(b))) for a, b in forbidden))
+    return Overrides(senses, pairs, text, frozenset(frozenset((_key(a), _key(b))) for a, b in forbidden),
+                     dict.fromkeys(senses, path))
 
 
 @lru_cache(maxsize=1)
@@ -128,13 +131,14 @@ def kitchen_senses(reader, term: str) -> dict[str, str]:
     return found
 
 
-def _override(reader, label: str, names: tuple[str, ...], term: str, modifier: str | None, source: str) -> Resolution:
+def _override(reader, label: str, names: tuple[str, ...], term: str, modifier: str | None, source: str,
+              path: str = "") -> Resolution:
     from nltk.corpus.reader.wordnet import WordNetError
 
     try:
         kinds = tuple(reader.synset(n).lexname() for n in names)
     except (WordNetError, ValueError) as exc:
-        raise FoonInputError(str(overrides_path()), 0, f"senses of {term!r}: {exc}") from None
+        raise FoonInputError(path or str(overrides_path()), 0, f"senses of {term!r}: {exc}") from None
     return Resolution(label, names, term, modifier, source, kinds)
 
 
@@ -145,7 +149,7 @@ def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses) 
     """
     key = _key(label)
     if key in overrides.senses:
-        return _override(reader, label, overrides.senses[key], key, None, "override")
+        return _override(reader, label, overrides.senses[key], key, None, "override", overrides.origin.get(key, ""))
     words = key.split()
     if not words:
         return Resolution(label, (), "", None, "none")
@@ -156,7 +160,8 @@ def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses) 
     for i in range(1, len(words)):
         head, modifier = " ".join(words[i:]), " ".join(words[:i])
         if head in overrides.senses:
-            return _override(reader, label, overrides.senses[head], head, modifier, "head")
+            return _override(reader, label, overrides.senses[head], head, modifier, "head",
+                             overrides.origin.get(head, ""))
         found = senses_of(reader, "_".join(words[i:]))
         if found:
             return Resolution(label, tuple(found), "_".join(words[i:]), modifier, "head", tuple(found.values()))
