@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from foon2pddl.cli import main
 from foon2pddl.io.files import load
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
@@ -74,6 +74,11 @@ def test_label_mismatches_are_reported_per_unit():
     oil = n("green olive oil", inside("bottle"))
     unit = FunctionalUnit((n("bowl", "empty"), oil), Motion("pour"), (n("bowl", contains("olive oil")),))
     assert mismatches(unit) == ("bowl lists olive oil, which no object of the unit is",)
+    unit = FunctionalUnit(unit.inputs, unit.motion, unit.outputs, (Source("salad.txt", 7),))
+    kitchen = Kitchen(frozenset({n("bowl", "empty"), oil, n("bottle", contains("green olive oil"))}))
+    compiled = compile_goal(Foon((unit,)), kitchen, Goal(GoalSpec("bowl"), unit.outputs), "relational")
+    assert compiled.notes == ("label mismatch: salad.txt:7: bowl lists olive oil, which no object of the unit is",)
+    assert "; label mismatch: salad.txt:7: bowl lists olive oil" in render(compiled.task)[0]
 
 
 POUR_FOON = Foon((POUR,))

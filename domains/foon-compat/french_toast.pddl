@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 15 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain universal_foon)
   (:requirements :strips :typing)
@@ -46,7 +46,6 @@
     vanilla_extract_in_bowl - object_node
     vanilla_extract_liquid - object_node
     whisk - object_node
-    goal_reached - object_node
   )
   (:predicates
     (is_available ?obj - object_node)  ; the object node is available
@@ -272,39 +271,6 @@
       (is_available french_toast_cooked_on_plate_topped_maple_syrup)
       (is_available maple_syrup_on_french_toast)
       (is_available plate_contains_french_toast_maple_syrup)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: french toast (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (is_available french_toast_cooked_in_frying_pan)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: french toast (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (is_available french_toast_cooked_on_plate)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: french toast (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (is_available french_toast_cooked_on_plate_topped_maple_syrup)
-    )
-    :effect (and
-      (is_available goal_reached)
     )
   )
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 29 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain universal_foon)
   (:requirements :strips :typing)
@@ -74,7 +74,6 @@
     whipped_cream_in_mixing_bowl_whipped - object_node
     whipped_cream_on_fruit_salad_whipped - object_node
     whisk - object_node
-    goal_reached - object_node
   )
   (:predicates
     (is_available ?obj - object_node)  ; the object node is available
@@ -511,28 +510,6 @@
       (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
       (is_available spoon)
       (is_available whipped_cream_on_fruit_salad_whipped)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl])
-    :parameters ()
-    :precondition (and
-      (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
-    :parameters ()
-    :precondition (and
-      (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
-    )
-    :effect (and
-      (is_available goal_reached)
     )
   )
 )

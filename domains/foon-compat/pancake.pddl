@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 16 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain universal_foon)
   (:requirements :strips :typing)
@@ -53,7 +53,6 @@
     sugar_granulated - object_node
     sugar_in_mixing_bowl - object_node
     whisk - object_node
-    goal_reached - object_node
   )
   (:predicates
     (is_available ?obj - object_node)  ; the object node is available
@@ -297,50 +296,6 @@
       (is_available maple_syrup_on_pancake)
       (is_available pancake_cooked_on_plate_topped_maple_syrup)
       (is_available plate_contains_maple_syrup_pancake)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: pancake (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (is_available pancake_cooked_in_frying_pan)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: pancake (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (is_available pancake_cooked_on_plate)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: pancake (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (is_available pancake_cooked_on_plate_topped_maple_syrup)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: pancake (half-cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (is_available pancake_half-cooked_in_frying_pan)
-    )
-    :effect (and
-      (is_available goal_reached)
     )
   )
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 32 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain universal_foon)
   (:requirements :strips :typing)
@@ -80,7 +80,6 @@
     tomato_on_cutting_board_whole - object_node
     tomato_whole - object_node
     whisk - object_node
-    goal_reached - object_node
   )
   (:predicates
     (is_available ?obj - object_node)  ; the object node is available
@@ -560,28 +559,6 @@
     :effect (and
       (is_available bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
       (is_available salt_in_bowl)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (is_available scrambled_eggs_cooked_in_frying_pan)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: scrambled eggs (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (is_available scrambled_eggs_cooked_on_plate)
-    )
-    :effect (and
-      (is_available goal_reached)
     )
   )
 )

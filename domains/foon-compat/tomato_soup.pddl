@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 17 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain universal_foon)
   (:requirements :strips :typing)
@@ -47,7 +47,6 @@
     vegetable_broth_in_carton - object_node
     vegetable_broth_in_pot - object_node
     wooden_spoon - object_node
-    goal_reached - object_node
   )
   (:predicates
     (is_available ?obj - object_node)  ; the object node is available
@@ -302,50 +301,6 @@
       (is_available basil_on_tomato_soup)
       (is_available bowl_contains_basil_tomato_soup)
       (is_available tomato_soup_garnished_basil_in_bowl_pureed)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: tomato soup (chunky, in [pot])
-    :parameters ()
-    :precondition (and
-      (is_available tomato_soup_chunky_in_pot)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: tomato soup (garnished {basil}, in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (is_available tomato_soup_garnished_basil_in_bowl_pureed)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: tomato soup (in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (is_available tomato_soup_in_bowl_pureed)
-    )
-    :effect (and
-      (is_available goal_reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: tomato soup (in [pot], pureed)
-    :parameters ()
-    :precondition (and
-      (is_available tomato_soup_in_pot_pureed)
-    )
-    :effect (and
-      (is_available goal_reached)
     )
   )
 )

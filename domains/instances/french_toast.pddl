@@ -1,7 +1,7 @@
-; foon2pddl, encoding instances, level 3: 12 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 14 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, milk 1, spatula 1, stove 2, vanilla extract 1)
+; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
@@ -16,7 +16,9 @@
     fork - physical-object
     french_toast - physical-object
     frying_pan - physical-object
+    maple_syrup - physical-object
     milk - physical-object
+    plate - physical-object
     spatula - physical-object
     stove - physical-object
     vanilla_extract - physical-object
@@ -49,8 +51,13 @@
     frying_pan_contains_french_toast_on_stove - object-state
     frying_pan_empty - object-state
     frying_pan_empty_on_stove - object-state
+    maple_syrup_in_bottle - object-state
+    maple_syrup_on_french_toast - object-state
     milk_in_bowl - object-state
     milk_in_carton - object-state
+    plate_contains_french_toast - object-state
+    plate_contains_french_toast_maple_syrup - object-state
+    plate_empty - object-state
     spatula_plain - object-state
     stove_off - object-state
     stove_on - object-state
@@ -263,36 +270,53 @@
       (is ?frying_pan frying_pan_contains_french_toast_on_stove)
       (occupied frying_pan_contains_french_toast_on_stove)
       (is ?french_toast french_toast_cooked_in_frying_pan)
-      (occupied french_toast_cooked_in_frying_pan)
       (not (is ?frying_pan frying_pan_contains_bread_butter_on_stove))
       (not (is ?french_toast not-yet-made))
     )
   )
 
+  (:action pick-and-place_u45
+    ; unit 45: pick-and-place from 05-french_toast.foon:158
+    ; pick-and-place: frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {french toast}), french toast (cooked, on [plate]), spatula
+    :parameters (?french_toast - french_toast ?plate - plate)
+    :precondition (and
+      (occupied frying_pan_contains_french_toast_on_stove)
+      (is ?french_toast french_toast_cooked_in_frying_pan)
+      (occupied spatula_plain)
+      (is ?plate plate_empty)
+    )
+    :effect (and
+      (is ?french_toast french_toast_cooked_on_plate)
+      (is ?plate plate_contains_french_toast)
+      (not (is ?french_toast french_toast_cooked_in_frying_pan))
+      (not (is ?plate plate_empty))
+    )
+  )
+
+  (:action pour_u46
+    ; unit 46: pour from 05-french_toast.foon:175
+    ; pour: plate (contains {french toast}), french toast (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {french toast, maple syrup}), french toast (cooked, on [plate], topped {maple syrup}), maple syrup (on [french toast])
+    :parameters (?plate - plate ?french_toast - french_toast ?maple_syrup - maple_syrup)
+    :precondition (and
+      (is ?plate plate_contains_french_toast)
+      (is ?french_toast french_toast_cooked_on_plate)
+      (is ?maple_syrup maple_syrup_in_bottle)
+    )
+    :effect (and
+      (is ?plate plate_contains_french_toast_maple_syrup)
+      (occupied plate_contains_french_toast_maple_syrup)
+      (is ?french_toast french_toast_cooked_on_plate_topped_maple_syrup)
+      (occupied french_toast_cooked_on_plate_topped_maple_syrup)
+      (is ?maple_syrup maple_syrup_on_french_toast)
+      (occupied maple_syrup_on_french_toast)
+      (not (is ?plate plate_contains_french_toast))
+      (not (is ?french_toast french_toast_cooked_on_plate))
+      (not (is ?maple_syrup maple_syrup_in_bottle))
+    )
+  )
+
   (:action reach-goal-1
-    ; goal candidate 1: french toast (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (occupied french_toast_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: french toast (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (occupied french_toast_cooked_on_plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: french toast (cooked, on [plate], topped {maple syrup})
+    ; goal candidate 1: french toast (cooked, on [plate], topped {maple syrup})
     :parameters ()
     :precondition (and
       (occupied french_toast_cooked_on_plate_topped_maple_syrup)

@@ -1,7 +1,7 @@
-; foon2pddl, encoding instances, level 3: 12 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; foon2pddl, encoding instances, level 3: 15 of 101 units after relevance pruning
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, salt 1, stove 2, sugar 1, whisk 1)
+; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
@@ -13,11 +13,14 @@
     flour - physical-object
     frying_pan - physical-object
     ladle - physical-object
+    maple_syrup - physical-object
     milk - physical-object
     mixing_bowl - physical-object
     pancake - physical-object
     pancake_batter - physical-object
+    plate - physical-object
     salt - physical-object
+    spatula - physical-object
     stove - physical-object
     sugar - physical-object
     whisk - physical-object
@@ -39,6 +42,8 @@
     frying_pan_empty - object-state
     frying_pan_empty_on_stove - object-state
     ladle_plain - object-state
+    maple_syrup_in_bottle - object-state
+    maple_syrup_on_pancake - object-state
     milk_in_carton - object-state
     milk_in_mixing_bowl - object-state
     mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar - object-state
@@ -55,8 +60,12 @@
     pancake_half-cooked_in_frying_pan - object-state
     pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan - object-state
     pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl - object-state
+    plate_contains_maple_syrup_pancake - object-state
+    plate_contains_pancake - object-state
+    plate_empty - object-state
     salt_granulated - object-state
     salt_in_mixing_bowl - object-state
+    spatula_plain - object-state
     stove_off - object-state
     stove_on - object-state
     sugar_granulated - object-state
@@ -280,50 +289,70 @@
       (is ?frying_pan frying_pan_contains_pancake_on_stove)
       (occupied frying_pan_contains_pancake_on_stove)
       (is ?pancake pancake_half-cooked_in_frying_pan)
-      (occupied pancake_half-cooked_in_frying_pan)
       (not (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove))
       (not (is ?pancake not-yet-made))
     )
   )
 
+  (:action flip_u36
+    ; unit 36: flip from 04-pancakes.foon:151
+    ; flip: pancake (half-cooked, in [frying pan]), spatula -> pancake (cooked, in [frying pan]), spatula
+    :parameters (?pancake - pancake)
+    :precondition (and
+      (is ?pancake pancake_half-cooked_in_frying_pan)
+      (occupied spatula_plain)
+    )
+    :effect (and
+      (is ?pancake pancake_cooked_in_frying_pan)
+      (not (is ?pancake pancake_half-cooked_in_frying_pan))
+    )
+  )
+
+  (:action pick-and-place_u37
+    ; unit 37: pick-and-place from 04-pancakes.foon:161
+    ; pick-and-place: frying pan (contains {pancake}, on [stove]), pancake (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {pancake}), pancake (cooked, on [plate]), spatula
+    :parameters (?pancake - pancake ?plate - plate)
+    :precondition (and
+      (occupied frying_pan_contains_pancake_on_stove)
+      (is ?pancake pancake_cooked_in_frying_pan)
+      (occupied spatula_plain)
+      (is ?plate plate_empty)
+    )
+    :effect (and
+      (is ?pancake pancake_cooked_on_plate)
+      (is ?plate plate_contains_pancake)
+      (not (is ?pancake pancake_cooked_in_frying_pan))
+      (not (is ?plate plate_empty))
+    )
+  )
+
+  (:action pour_u38
+    ; unit 38: pour from 04-pancakes.foon:178
+    ; pour: plate (contains {pancake}), pancake (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {maple syrup, pancake}), pancake (cooked, on [plate], topped {maple syrup}), maple syrup (on [pancake])
+    :parameters (?plate - plate ?pancake - pancake ?maple_syrup - maple_syrup)
+    :precondition (and
+      (is ?plate plate_contains_pancake)
+      (is ?pancake pancake_cooked_on_plate)
+      (is ?maple_syrup maple_syrup_in_bottle)
+    )
+    :effect (and
+      (is ?plate plate_contains_maple_syrup_pancake)
+      (occupied plate_contains_maple_syrup_pancake)
+      (is ?pancake pancake_cooked_on_plate_topped_maple_syrup)
+      (occupied pancake_cooked_on_plate_topped_maple_syrup)
+      (is ?maple_syrup maple_syrup_on_pancake)
+      (occupied maple_syrup_on_pancake)
+      (not (is ?plate plate_contains_pancake))
+      (not (is ?pancake pancake_cooked_on_plate))
+      (not (is ?maple_syrup maple_syrup_in_bottle))
+    )
+  )
+
   (:action reach-goal-1
-    ; goal candidate 1: pancake (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (occupied pancake_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: pancake (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (occupied pancake_cooked_on_plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: pancake (cooked, on [plate], topped {maple syrup})
+    ; goal candidate 1: pancake (cooked, on [plate], topped {maple syrup})
     :parameters ()
     :precondition (and
       (occupied pancake_cooked_on_plate_topped_maple_syrup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: pancake (half-cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (occupied pancake_half-cooked_in_frying_pan)
     )
     :effect (and
       (goal-reached)

@@ -1,7 +1,7 @@
-; foon2pddl, encoding instances, level 3: 13 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
+; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
 (define (domain foon-instances)
   (:requirements :strips :typing)
   (:types
@@ -15,6 +15,7 @@
     fork - physical-object
     frying_pan - physical-object
     milk - physical-object
+    plate - physical-object
     salt - physical-object
     scrambled_eggs - physical-object
     spatula - physical-object
@@ -48,6 +49,8 @@
     frying_pan_empty_on_stove - object-state
     milk_in_bowl - object-state
     milk_in_carton - object-state
+    plate_contains_scrambled_eggs - object-state
+    plate_empty - object-state
     salt_granulated - object-state
     salt_in_bowl - object-state
     scrambled_eggs_cooked_in_frying_pan - object-state
@@ -248,9 +251,28 @@
       (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
       (occupied frying_pan_contains_scrambled_eggs_on_stove)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
-      (occupied scrambled_eggs_cooked_in_frying_pan)
       (not (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove))
       (not (is ?scrambled_eggs not-yet-made))
+    )
+  )
+
+  (:action scoop_u28
+    ; unit 28: scoop from 03-scrambled_eggs.foon:146
+    ; scoop: frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {scrambled eggs}), scrambled eggs (cooked, on [plate]), spatula
+    :parameters (?scrambled_eggs - scrambled_eggs ?plate - plate)
+    :precondition (and
+      (occupied frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (occupied spatula_plain)
+      (is ?plate plate_empty)
+    )
+    :effect (and
+      (is ?scrambled_eggs scrambled_eggs_cooked_on_plate)
+      (occupied scrambled_eggs_cooked_on_plate)
+      (is ?plate plate_contains_scrambled_eggs)
+      (occupied plate_contains_scrambled_eggs)
+      (not (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan))
+      (not (is ?plate plate_empty))
     )
   )
 
@@ -288,18 +310,7 @@
   )
 
   (:action reach-goal-1
-    ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (occupied scrambled_eggs_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: scrambled eggs (cooked, on [plate])
+    ; goal candidate 1: scrambled eggs (cooked, on [plate])
     :parameters ()
     :precondition (and
       (occupied scrambled_eggs_cooked_on_plate)

@@ -1,7 +1,7 @@
-; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 13 (banana 1, bowl 1, cutting board 3, fruit salad 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, spoon 1, strawberry 1)
+; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 (define (domain foon-relational)
   (:requirements :strips :typing :conditional-effects)
   (:types
@@ -11,13 +11,19 @@
     bowl - physical-object
     cutting_board - physical-object
     fruit_salad - physical-object
+    heavy_cream - physical-object
     honey - physical-object
     juicer - physical-object
     knife - physical-object
     lime - physical-object
     lime_juice - physical-object
+    mixing_bowl - physical-object
     spoon - physical-object
     strawberry - physical-object
+    sugar - physical-object
+    whipped_cream - physical-object
+    whisk - physical-object
+    carton - physical-object
     jar - physical-object
   )
   (:constants
@@ -32,6 +38,7 @@
     bowl_contains_banana_lime_juice_strawberry - object-state
     bowl_contains_banana_strawberry - object-state
     bowl_contains_fruit_salad - object-state
+    bowl_contains_fruit_salad_whipped_cream - object-state
     bowl_contains_strawberry - object-state
     bowl_empty - object-state
     cutting_board_contains_banana - object-state
@@ -40,6 +47,8 @@
     cutting_board_empty - object-state
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl - object-state
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c - object-state
+    heavy_cream_in_carton - object-state
+    heavy_cream_in_mixing_bowl - object-state
     honey_in_bowl - object-state
     honey_in_fruit_salad - object-state
     honey_in_jar - object-state
@@ -53,12 +62,22 @@
     lime_juice_in_bowl - object-state
     lime_juice_in_fruit_salad - object-state
     lime_juice_in_juicer - object-state
+    mixing_bowl_contains_heavy_cream - object-state
+    mixing_bowl_contains_heavy_cream_sugar - object-state
+    mixing_bowl_contains_whipped_cream - object-state
+    mixing_bowl_empty - object-state
     spoon_plain - object-state
     strawberry_in_bowl_sliced - object-state
     strawberry_in_fruit_salad_sliced - object-state
     strawberry_on_cutting_board_sliced - object-state
     strawberry_on_cutting_board_whole - object-state
     strawberry_whole - object-state
+    sugar_granulated - object-state
+    sugar_in_mixing_bowl - object-state
+    whipped_cream_in_mixing_bowl_whipped - object-state
+    whipped_cream_on_fruit_salad_whipped - object-state
+    whisk_plain - object-state
+    carton_contains_heavy_cream - object-state
     jar_contains_honey - object-state
   )
   (:predicates
@@ -67,6 +86,43 @@
     (on ?h - physical-object ?x - physical-object)  ; ?x is on ?h
     (occupied ?s - object-state)  ; some object is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+  )
+
+  (:action pour_u9
+    ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
+    ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_empty)
+      (is ?heavy_cream heavy_cream_in_carton)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (occupied heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (not (is ?mixing_bowl mixing_bowl_empty))
+      (not (is ?heavy_cream heavy_cream_in_carton))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?heavy_cream) (not (in ?from_1 ?heavy_cream))))
+    )
+  )
+
+  (:action pour_u10
+    ; unit 10: pour from 02-whipped_cream.foon:13, 09-fruit_salad.foon:174
+    ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
+    :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
+    :precondition (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (is ?sugar sugar_granulated)
+    )
+    :effect (and
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?sugar sugar_in_mixing_bowl)
+      (occupied sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
+      (not (is ?sugar sugar_granulated))
+    )
   )
 
   (:action pick-and-place_u67
@@ -299,7 +355,6 @@
     )
     :effect (and
       (is ?bowl bowl_contains_fruit_salad)
-      (occupied bowl_contains_fruit_salad)
       (is ?strawberry strawberry_in_fruit_salad_sliced)
       (occupied strawberry_in_fruit_salad_sliced)
       (in ?fruit_salad ?strawberry)
@@ -313,7 +368,6 @@
       (occupied honey_in_fruit_salad)
       (in ?fruit_salad ?honey)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
-      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
       (in ?bowl ?fruit_salad)
       (not (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry))
       (not (is ?strawberry strawberry_in_bowl_sliced))
@@ -328,19 +382,58 @@
     )
   )
 
-  (:action reach-goal-1
-    ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl])
-    :parameters ()
+  (:action whisk_u99
+    ; unit 99: whisk from 09-fruit_salad.foon:184
+    ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream ?sugar - sugar ?whipped_cream - whipped_cream)
     :precondition (and
-      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
+      (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (occupied whisk_plain)
+      (is ?whipped_cream not-yet-made)
     )
     :effect (and
-      (goal-reached)
+      (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
+      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (in ?mixing_bowl ?whipped_cream)
+      (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?whipped_cream not-yet-made))
     )
   )
 
-  (:action reach-goal-2
-    ; goal candidate 2: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
+  (:action scoop_u100
+    ; unit 100: scoop from 09-fruit_salad.foon:199
+    ; scoop: bowl (contains {fruit salad}), fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl]), mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spoon -> bowl (contains {fruit salad, whi...
+    :parameters (?bowl - bowl ?fruit_salad - fruit_salad ?whipped_cream - whipped_cream)
+    :precondition (and
+      (is ?bowl bowl_contains_fruit_salad)
+      (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
+      (in ?bowl ?fruit_salad)
+      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (occupied spoon_plain)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_fruit_salad_whipped_cream)
+      (occupied bowl_contains_fruit_salad_whipped_cream)
+      (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (is ?whipped_cream whipped_cream_on_fruit_salad_whipped)
+      (occupied whipped_cream_on_fruit_salad_whipped)
+      (on ?fruit_salad ?whipped_cream)
+      (not (is ?bowl bowl_contains_fruit_salad))
+      (not (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl))
+      (not (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped))
+      (forall (?from_3 - physical-object) (when (in ?from_3 ?whipped_cream) (not (in ?from_3 ?whipped_cream))))
+    )
+  )
+
+  (:action reach-goal-1
+    ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
     :parameters ()
     :precondition (and
       (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)

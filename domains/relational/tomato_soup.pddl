@@ -1,14 +1,18 @@
-; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 12 (cutting board 2, knife 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
+; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 (define (domain foon-relational)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
+    basil - physical-object
+    bowl - physical-object
     cutting_board - physical-object
+    immersion_blender - physical-object
     knife - physical-object
+    ladle - physical-object
     olive_oil - physical-object
     onion - physical-object
     pot - physical-object
@@ -22,10 +26,18 @@
   )
   (:constants
     not-yet-made - object-state
+    basil_fresh - object-state
+    basil_on_tomato_soup - object-state
+    bowl_contains_basil_tomato_soup - object-state
+    bowl_contains_tomato_soup - object-state
+    bowl_empty - object-state
     cutting_board_contains_onion - object-state
     cutting_board_contains_tomato - object-state
     cutting_board_empty - object-state
+    immersion_blender_off - object-state
+    immersion_blender_on - object-state
     knife_plain - object-state
+    ladle_plain - object-state
     olive_oil_in_bottle - object-state
     olive_oil_in_pot - object-state
     onion_chopped_in_pot - object-state
@@ -294,51 +306,91 @@
       (is ?pot pot_contains_tomato_soup_on_stove)
       (occupied pot_contains_tomato_soup_on_stove)
       (is ?tomato_soup tomato_soup_chunky_in_pot)
-      (occupied tomato_soup_chunky_in_pot)
       (in ?pot ?tomato_soup)
       (not (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove))
       (not (is ?tomato_soup not-yet-made))
     )
   )
 
-  (:action reach-goal-1
-    ; goal candidate 1: tomato soup (chunky, in [pot])
-    :parameters ()
+  (:action turn_on_u59
+    ; unit 59: turn on from 06-tomato_soup.foon:174
+    ; turn on: immersion blender (off) -> immersion blender (on)
+    :parameters (?immersion_blender - immersion_blender)
     :precondition (and
-      (occupied tomato_soup_chunky_in_pot)
+      (is ?immersion_blender immersion_blender_off)
     )
     :effect (and
-      (goal-reached)
+      (is ?immersion_blender immersion_blender_on)
+      (occupied immersion_blender_on)
+      (not (is ?immersion_blender immersion_blender_off))
     )
   )
 
-  (:action reach-goal-2
-    ; goal candidate 2: tomato soup (garnished {basil}, in [bowl], pureed)
+  (:action blend_u60
+    ; unit 60: blend from 06-tomato_soup.foon:180
+    ; blend: immersion blender (on), pot (contains {tomato soup}, on [stove]), tomato soup (chunky, in [pot]) -> tomato soup (in [pot], pureed), immersion blender (on)
+    :parameters (?pot - pot ?tomato_soup - tomato_soup)
+    :precondition (and
+      (occupied immersion_blender_on)
+      (is ?pot pot_contains_tomato_soup_on_stove)
+      (is ?tomato_soup tomato_soup_chunky_in_pot)
+      (in ?pot ?tomato_soup)
+    )
+    :effect (and
+      (is ?tomato_soup tomato_soup_in_pot_pureed)
+      (not (is ?tomato_soup tomato_soup_chunky_in_pot))
+    )
+  )
+
+  (:action scoop_u61
+    ; unit 61: scoop from 06-tomato_soup.foon:195
+    ; scoop: pot (contains {tomato soup}, on [stove]), tomato soup (in [pot], pureed), ladle, bowl (empty) -> bowl (contains {tomato soup}), tomato soup (in [bowl], pureed), ladle
+    :parameters (?tomato_soup - tomato_soup ?bowl - bowl)
+    :precondition (and
+      (occupied pot_contains_tomato_soup_on_stove)
+      (is ?tomato_soup tomato_soup_in_pot_pureed)
+      (occupied ladle_plain)
+      (is ?bowl bowl_empty)
+    )
+    :effect (and
+      (is ?tomato_soup tomato_soup_in_bowl_pureed)
+      (in ?bowl ?tomato_soup)
+      (is ?bowl bowl_contains_tomato_soup)
+      (not (is ?tomato_soup tomato_soup_in_pot_pureed))
+      (not (is ?bowl bowl_empty))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?tomato_soup) (not (in ?from_1 ?tomato_soup))))
+    )
+  )
+
+  (:action sprinkle_u62
+    ; unit 62: sprinkle from 06-tomato_soup.foon:212
+    ; sprinkle: bowl (contains {tomato soup}), tomato soup (in [bowl], pureed), basil (fresh) -> bowl (contains {basil, tomato soup}), tomato soup (garnished {basil}, in [bowl], pureed), basil (on [tomato soup])
+    :parameters (?bowl - bowl ?tomato_soup - tomato_soup ?basil - basil)
+    :precondition (and
+      (is ?bowl bowl_contains_tomato_soup)
+      (is ?tomato_soup tomato_soup_in_bowl_pureed)
+      (in ?bowl ?tomato_soup)
+      (is ?basil basil_fresh)
+    )
+    :effect (and
+      (is ?bowl bowl_contains_basil_tomato_soup)
+      (occupied bowl_contains_basil_tomato_soup)
+      (is ?tomato_soup tomato_soup_garnished_basil_in_bowl_pureed)
+      (occupied tomato_soup_garnished_basil_in_bowl_pureed)
+      (is ?basil basil_on_tomato_soup)
+      (occupied basil_on_tomato_soup)
+      (on ?tomato_soup ?basil)
+      (not (is ?bowl bowl_contains_tomato_soup))
+      (not (is ?tomato_soup tomato_soup_in_bowl_pureed))
+      (not (is ?basil basil_fresh))
+    )
+  )
+
+  (:action reach-goal-1
+    ; goal candidate 1: tomato soup (garnished {basil}, in [bowl], pureed)
     :parameters ()
     :precondition (and
       (occupied tomato_soup_garnished_basil_in_bowl_pureed)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: tomato soup (in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (occupied tomato_soup_in_bowl_pureed)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: tomato soup (in [pot], pureed)
-    :parameters ()
-    :precondition (and
-      (occupied tomato_soup_in_pot_pureed)
     )
     :effect (and
       (goal-reached)

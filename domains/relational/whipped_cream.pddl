@@ -1,14 +1,16 @@
-; foon2pddl, encoding relational, level 3: 3 of 101 units after relevance pruning
-; goal: whipped cream (3 candidate nodes)
+; foon2pddl, encoding relational, level 3: 4 of 101 units after relevance pruning
+; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 5 (heavy cream 1, mixing bowl 1, sugar 1, whipped cream 1, whisk 1)
+; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 (define (domain foon-relational)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
+    bowl - physical-object
     heavy_cream - physical-object
     mixing_bowl - physical-object
+    spatula - physical-object
     sugar - physical-object
     whipped_cream - physical-object
     whisk - physical-object
@@ -16,17 +18,19 @@
   )
   (:constants
     not-yet-made - object-state
+    bowl_contains_whipped_cream - object-state
+    bowl_empty - object-state
     heavy_cream_in_carton - object-state
     heavy_cream_in_mixing_bowl - object-state
     mixing_bowl_contains_heavy_cream - object-state
     mixing_bowl_contains_heavy_cream_sugar - object-state
     mixing_bowl_contains_whipped_cream - object-state
     mixing_bowl_empty - object-state
+    spatula_plain - object-state
     sugar_granulated - object-state
     sugar_in_mixing_bowl - object-state
     whipped_cream_in_bowl_whipped - object-state
     whipped_cream_in_mixing_bowl_whipped - object-state
-    whipped_cream_on_fruit_salad_whipped - object-state
     whisk_plain - object-state
     carton_contains_heavy_cream - object-state
   )
@@ -75,6 +79,28 @@
     )
   )
 
+  (:action scoop_u16
+    ; unit 16: scoop from 02-whipped_cream.foon:84
+    ; scoop: mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spatula, bowl (empty) -> bowl (contains {whipped cream}), whipped cream (in [bowl], whipped), spatula
+    :parameters (?whipped_cream - whipped_cream ?bowl - bowl)
+    :precondition (and
+      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (occupied spatula_plain)
+      (is ?bowl bowl_empty)
+    )
+    :effect (and
+      (is ?whipped_cream whipped_cream_in_bowl_whipped)
+      (occupied whipped_cream_in_bowl_whipped)
+      (in ?bowl ?whipped_cream)
+      (is ?bowl bowl_contains_whipped_cream)
+      (occupied bowl_contains_whipped_cream)
+      (not (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped))
+      (not (is ?bowl bowl_empty))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?whipped_cream) (not (in ?from_1 ?whipped_cream))))
+    )
+  )
+
   (:action whisk_u99
     ; unit 99: whisk from 09-fruit_salad.foon:184
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
@@ -92,7 +118,6 @@
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
       (occupied mixing_bowl_contains_whipped_cream)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
-      (occupied whipped_cream_in_mixing_bowl_whipped)
       (in ?mixing_bowl ?whipped_cream)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
       (not (is ?whipped_cream not-yet-made))
@@ -104,28 +129,6 @@
     :parameters ()
     :precondition (and
       (occupied whipped_cream_in_bowl_whipped)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: whipped cream (in [mixing bowl], whipped)
-    :parameters ()
-    :precondition (and
-      (occupied whipped_cream_in_mixing_bowl_whipped)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: whipped cream (on [fruit salad], whipped)
-    :parameters ()
-    :precondition (and
-      (occupied whipped_cream_on_fruit_salad_whipped)
     )
     :effect (and
       (goal-reached)

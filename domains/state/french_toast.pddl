@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 20 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-state)
   (:requirements :strips)
@@ -31,7 +31,6 @@
   )
   (:predicates
     (available ?o)  ; the object is in the kitchen or was made
-    (goal-reached)  ; a goal candidate was made
     (is-beaten ?o)  ; ?o is beaten
     (is-cooked ?o)  ; ?o is cooked
     (is-cracked ?o)  ; ?o is cracked
@@ -458,46 +457,6 @@
       (on maple_syrup french_toast)
       (topped french_toast maple_syrup)
       (not (in maple_syrup bottle))
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: french toast (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (available french_toast)
-      (in french_toast frying_pan)
-      (is-cooked french_toast)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: french toast (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (available french_toast)
-      (is-cooked french_toast)
-      (on french_toast plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: french toast (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (available french_toast)
-      (is-cooked french_toast)
-      (on french_toast plate)
-      (topped french_toast maple_syrup)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 28 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-state)
   (:requirements :strips)
@@ -31,7 +31,6 @@
   )
   (:predicates
     (available ?o)  ; the object is in the kitchen or was made
-    (goal-reached)  ; a goal candidate was made
     (is-empty ?o)  ; ?o is empty
     (is-granulated ?o)  ; ?o is granulated
     (is-halved ?o)  ; ?o is halved
@@ -605,39 +604,6 @@
       (on whipped_cream fruit_salad)
       (topped fruit_salad whipped_cream)
       (not (in whipped_cream mixing_bowl))
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl])
-    :parameters ()
-    :precondition (and
-      (available fruit_salad)
-      (contains fruit_salad banana)
-      (contains fruit_salad honey)
-      (contains fruit_salad lime_juice)
-      (contains fruit_salad strawberry)
-      (in fruit_salad bowl)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
-    :parameters ()
-    :precondition (and
-      (available fruit_salad)
-      (contains fruit_salad banana)
-      (contains fruit_salad honey)
-      (contains fruit_salad lime_juice)
-      (contains fruit_salad strawberry)
-      (in fruit_salad bowl)
-      (topped fruit_salad whipped_cream)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-state)
   (:requirements :strips)
@@ -28,7 +28,6 @@
   )
   (:predicates
     (available ?o)  ; the object is in the kitchen or was made
-    (goal-reached)  ; a goal candidate was made
     (is-cooked ?o)  ; ?o is cooked
     (is-cracked ?o)  ; ?o is cracked
     (is-empty ?o)  ; ?o is empty
@@ -414,59 +413,6 @@
       (on maple_syrup pancake)
       (topped pancake maple_syrup)
       (not (in maple_syrup bottle))
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: pancake (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (available pancake)
-      (in pancake frying_pan)
-      (is-cooked pancake)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: pancake (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (available pancake)
-      (is-cooked pancake)
-      (on pancake plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: pancake (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (available pancake)
-      (is-cooked pancake)
-      (on pancake plate)
-      (topped pancake maple_syrup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: pancake (half-cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (available pancake)
-      (in pancake frying_pan)
-      (is-half-cooked pancake)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 51 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-state)
   (:requirements :strips)
@@ -40,7 +40,6 @@
   )
   (:predicates
     (available ?o)  ; the object is in the kitchen or was made
-    (goal-reached)  ; a goal candidate was made
     (is-beaten ?o)  ; ?o is beaten
     (is-chopped ?o)  ; ?o is chopped
     (is-cooked ?o)  ; ?o is cooked
@@ -1043,32 +1042,6 @@
       (contains bowl lime_juice)
       (in lime_juice bowl)
       (not (in lime_juice juicer))
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (available scrambled_eggs)
-      (in scrambled_eggs frying_pan)
-      (is-cooked scrambled_eggs)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: scrambled eggs (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (available scrambled_eggs)
-      (is-cooked scrambled_eggs)
-      (on scrambled_eggs plate)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

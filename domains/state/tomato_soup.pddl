@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-state)
   (:requirements :strips)
@@ -23,7 +23,6 @@
   )
   (:predicates
     (available ?o)  ; the object is in the kitchen or was made
-    (goal-reached)  ; a goal candidate was made
     (is-chopped ?o)  ; ?o is chopped
     (is-chunky ?o)  ; ?o is chunky
     (is-empty ?o)  ; ?o is empty
@@ -369,59 +368,6 @@
       (garnished tomato_soup basil)
       (on basil tomato_soup)
       (not (is-fresh basil))
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: tomato soup (chunky, in [pot])
-    :parameters ()
-    :precondition (and
-      (available tomato_soup)
-      (in tomato_soup pot)
-      (is-chunky tomato_soup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: tomato soup (garnished {basil}, in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (available tomato_soup)
-      (garnished tomato_soup basil)
-      (in tomato_soup bowl)
-      (is-pureed tomato_soup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: tomato soup (in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (available tomato_soup)
-      (in tomato_soup bowl)
-      (is-pureed tomato_soup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: tomato soup (in [pot], pureed)
-    :parameters ()
-    :precondition (and
-      (available tomato_soup)
-      (in tomato_soup pot)
-      (is-pureed tomato_soup)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

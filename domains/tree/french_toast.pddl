@@ -1,10 +1,9 @@
 ; foon2pddl, encoding tree, level 3: 15 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-tree)
   (:requirements :strips)
   (:predicates
-    (goal-reached)  ; a goal candidate was made
     (bowl_contains_cinnamon_egg_milk_vanilla_extract)  ; bowl (contains {cinnamon, egg, milk, vanilla extract})
     (bowl_contains_custard)  ; bowl (contains {custard})
     (bowl_contains_egg)  ; bowl (contains {egg})
@@ -266,39 +265,6 @@
       (french_toast_cooked_on_plate_topped_maple_syrup)
       (maple_syrup_on_french_toast)
       (plate_contains_french_toast_maple_syrup)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: french toast (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (french_toast_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: french toast (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (french_toast_cooked_on_plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: french toast (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (french_toast_cooked_on_plate_topped_maple_syrup)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,10 +1,9 @@
 ; foon2pddl, encoding tree, level 3: 29 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-tree)
   (:requirements :strips)
   (:predicates
-    (goal-reached)  ; a goal candidate was made
     (avocado_halved_on_cutting_board)  ; avocado (halved, on [cutting board])
     (avocado_in_bowl_mashed)  ; avocado (in [bowl], mashed)
     (avocado_in_bowl_scooped)  ; avocado (in [bowl], scooped)
@@ -505,28 +504,6 @@
       (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
       (spoon)
       (whipped_cream_on_fruit_salad_whipped)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl])
-    :parameters ()
-    :precondition (and
-      (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
-    :parameters ()
-    :precondition (and
-      (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,10 +1,9 @@
 ; foon2pddl, encoding tree, level 3: 16 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-tree)
   (:requirements :strips)
   (:predicates
-    (goal-reached)  ; a goal candidate was made
     (baking_powder_in_mixing_bowl)  ; baking powder (in [mixing bowl])
     (baking_powder_powder)  ; baking powder (powder)
     (butter_in_frying_pan_melted)  ; butter (in [frying pan], melted)
@@ -291,50 +290,6 @@
       (maple_syrup_on_pancake)
       (pancake_cooked_on_plate_topped_maple_syrup)
       (plate_contains_maple_syrup_pancake)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: pancake (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (pancake_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: pancake (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (pancake_cooked_on_plate)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: pancake (cooked, on [plate], topped {maple syrup})
-    :parameters ()
-    :precondition (and
-      (pancake_cooked_on_plate_topped_maple_syrup)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: pancake (half-cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (pancake_half-cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

@@ -1,10 +1,9 @@
 ; foon2pddl, encoding tree, level 3: 32 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-tree)
   (:requirements :strips)
   (:predicates
-    (goal-reached)  ; a goal candidate was made
     (avocado_halved_on_cutting_board)  ; avocado (halved, on [cutting board])
     (avocado_in_bowl_mashed)  ; avocado (in [bowl], mashed)
     (avocado_in_bowl_scooped)  ; avocado (in [bowl], scooped)
@@ -554,28 +553,6 @@
     :effect (and
       (bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
       (salt_in_bowl)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: scrambled eggs (cooked, in [frying pan])
-    :parameters ()
-    :precondition (and
-      (scrambled_eggs_cooked_in_frying_pan)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: scrambled eggs (cooked, on [plate])
-    :parameters ()
-    :precondition (and
-      (scrambled_eggs_cooked_on_plate)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

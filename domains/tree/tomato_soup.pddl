@@ -1,10 +1,9 @@
 ; foon2pddl, encoding tree, level 3: 17 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (domain foon-tree)
   (:requirements :strips)
   (:predicates
-    (goal-reached)  ; a goal candidate was made
     (basil_fresh)  ; basil (fresh)
     (basil_on_tomato_soup)  ; basil (on [tomato soup])
     (bowl_contains_basil_tomato_soup)  ; bowl (contains {basil, tomato soup})
@@ -296,50 +295,6 @@
       (basil_on_tomato_soup)
       (bowl_contains_basil_tomato_soup)
       (tomato_soup_garnished_basil_in_bowl_pureed)
-    )
-  )
-
-  (:action reach-goal-1
-    ; goal candidate 1: tomato soup (chunky, in [pot])
-    :parameters ()
-    :precondition (and
-      (tomato_soup_chunky_in_pot)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-2
-    ; goal candidate 2: tomato soup (garnished {basil}, in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (tomato_soup_garnished_basil_in_bowl_pureed)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-3
-    ; goal candidate 3: tomato soup (in [bowl], pureed)
-    :parameters ()
-    :precondition (and
-      (tomato_soup_in_bowl_pureed)
-    )
-    :effect (and
-      (goal-reached)
-    )
-  )
-
-  (:action reach-goal-4
-    ; goal candidate 4: tomato soup (in [pot], pureed)
-    :parameters ()
-    :precondition (and
-      (tomato_soup_in_pot_pureed)
-    )
-    :effect (and
-      (goal-reached)
     )
   )
 )

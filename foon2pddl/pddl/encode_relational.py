@@ -47,6 +47,7 @@ from .holders import Place, RelRole, listed, mismatches, place_of, relational_ro
 from .instance_counts import derive_counts
 from .names import NameTable
 from .prune import restoring_units
+from .registry import Compiled
 from .task import Action, Atom, Instance, PlanningTask, Predicate
 
 __all__ = ["IN", "ON", "encode_relational", "holder_init"]
@@ -93,8 +94,8 @@ def implied_holders(instances: list[Instance]) -> tuple[ObjectNode, ...]:
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
-                      options: EncodeOptions = DEFAULT_OPTIONS) -> PlanningTask:
-    """The relational task of `goal` over `foon` (see the module doc)."""
+                      options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
+    """The relational task of `goal` over `foon` (see the module doc), with its label mismatches as notes."""
     inp = at_level(foon, kitchen, goal, level)
     f = inp.foon
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
@@ -147,7 +148,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     notes = sorted({f"{_where(f.units[u])}: {m}" for u in units for m in mismatches(f.units[u])})
-    return PlanningTask(
+    task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
@@ -157,6 +158,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         + tuple(f"label mismatch: {m}" for m in notes),
         instances=tuple(instances),
     )
+    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes))
 
 
 def _where(unit) -> str:

@@ -58,6 +58,7 @@ class Compiled:
     #: substituted object made after it); None: the tree as decoded.
     finish: Callable[[TaskTree, Sequence[str], frozenset[ObjectNode]], TaskTree] | None = None
     every_step: bool = False
+    notes: tuple[str, ...] = ()  # what the encoder reports once per task (label mismatches)
     replay: Replay | None = None
     view: TraceView | None = None
     holders: bool = False

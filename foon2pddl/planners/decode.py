@@ -175,7 +175,7 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
                      "(no effect in this delete-free encoding)",)
     # a task compiled under --containment infer holds inference units: validate under the same rule
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
-                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, notes)
+                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes)
     if compiled.replay is None:  # an encoding with no physical objects
         return decoded
     try:

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 15 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
   (:domain universal_foon)
@@ -20,6 +20,6 @@
     (is_available whisk)
   )
   (:goal (and
-    (is_available goal_reached)
+    (is_available french_toast_cooked_on_plate_topped_maple_syrup)
   ))
 )

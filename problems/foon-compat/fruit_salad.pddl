@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 29 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
   (:domain universal_foon)
@@ -25,6 +25,6 @@
     (is_available whisk)
   )
   (:goal (and
-    (is_available goal_reached)
+    (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
   ))
 )

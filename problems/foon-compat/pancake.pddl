@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 16 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
   (:domain universal_foon)
@@ -22,6 +22,6 @@
     (is_available whisk)
   )
   (:goal (and
-    (is_available goal_reached)
+    (is_available pancake_cooked_on_plate_topped_maple_syrup)
   ))
 )

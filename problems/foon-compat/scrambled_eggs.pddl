@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 32 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
   (:domain universal_foon)
@@ -27,6 +27,6 @@
     (is_available whisk)
   )
   (:goal (and
-    (is_available goal_reached)
+    (is_available scrambled_eggs_cooked_on_plate)
   ))
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding foon-compat, level 3: 17 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
   (:domain universal_foon)
@@ -19,6 +19,6 @@
     (is_available wooden_spoon)
   )
   (:goal (and
-    (is_available goal_reached)
+    (is_available tomato_soup_garnished_basil_in_bowl_pureed)
   ))
 )

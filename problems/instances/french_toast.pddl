@@ -1,7 +1,7 @@
-; foon2pddl, encoding instances, level 3: 12 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 14 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, milk 1, spatula 1, stove 2, vanilla extract 1)
+; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
 (define (problem make_french_toast)
   (:domain foon-instances)
   (:objects
@@ -14,7 +14,9 @@
     fork_1 - fork
     french_toast_1 - french_toast
     frying_pan_1 - frying_pan
+    maple_syrup_1 - maple_syrup
     milk_1 - milk
+    plate_1 - plate
     spatula_1 - spatula
     stove_1 - stove
     stove_2 - stove
@@ -30,7 +32,9 @@
     (is fork_1 fork_plain)
     (is french_toast_1 not-yet-made)
     (is frying_pan_1 frying_pan_empty)
+    (is maple_syrup_1 maple_syrup_in_bottle)
     (is milk_1 milk_in_carton)
+    (is plate_1 plate_empty)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
     (is stove_2 stove_off)

@@ -1,7 +1,7 @@
-; foon2pddl, encoding instances, level 3: 13 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
+; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
 (define (problem make_scrambled_eggs)
   (:domain foon-instances)
   (:objects
@@ -13,6 +13,7 @@
     fork_1 - fork
     frying_pan_1 - frying_pan
     milk_1 - milk
+    plate_1 - plate
     salt_1 - salt
     scrambled_eggs_1 - scrambled_eggs
     spatula_1 - spatula
@@ -29,6 +30,7 @@
     (is fork_1 fork_plain)
     (is frying_pan_1 frying_pan_empty)
     (is milk_1 milk_in_carton)
+    (is plate_1 plate_empty)
     (is salt_1 salt_granulated)
     (is scrambled_eggs_1 not-yet-made)
     (is spatula_1 spatula_plain)

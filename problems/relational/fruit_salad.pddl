@@ -1,7 +1,7 @@
-; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 13 (banana 1, bowl 1, cutting board 3, fruit salad 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, spoon 1, strawberry 1)
+; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 (define (problem make_fruit_salad)
   (:domain foon-relational)
   (:objects
@@ -11,33 +11,47 @@
     cutting_board_2 - cutting_board
     cutting_board_3 - cutting_board
     fruit_salad_1 - fruit_salad
+    heavy_cream_1 - heavy_cream
     honey_1 - honey
     juicer_1 - juicer
     knife_1 - knife
     lime_1 - lime
     lime_juice_1 - lime_juice
+    mixing_bowl_1 - mixing_bowl
     spoon_1 - spoon
     strawberry_1 - strawberry
+    sugar_1 - sugar
+    whipped_cream_1 - whipped_cream
+    whisk_1 - whisk
+    carton_1 - carton
     jar_1 - jar
   )
   (:init
+    (in carton_1 heavy_cream_1)
     (in jar_1 honey_1)
     (is banana_1 banana_whole)
     (is bowl_1 bowl_empty)
+    (is carton_1 carton_contains_heavy_cream)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
     (is cutting_board_3 cutting_board_empty)
     (is fruit_salad_1 not-yet-made)
+    (is heavy_cream_1 heavy_cream_in_carton)
     (is honey_1 honey_in_jar)
     (is jar_1 jar_contains_honey)
     (is juicer_1 juicer_empty)
     (is knife_1 knife_plain)
     (is lime_1 lime_whole)
     (is lime_juice_1 not-yet-made)
+    (is mixing_bowl_1 mixing_bowl_empty)
     (is spoon_1 spoon_plain)
     (is strawberry_1 strawberry_whole)
+    (is sugar_1 sugar_granulated)
+    (is whipped_cream_1 not-yet-made)
+    (is whisk_1 whisk_plain)
     (occupied knife_plain)
     (occupied spoon_plain)
+    (occupied whisk_plain)
   )
   (:goal (and
     (goal-reached)

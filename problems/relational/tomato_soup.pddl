@@ -1,13 +1,17 @@
-; foon2pddl, encoding relational, level 3: 13 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 12 (cutting board 2, knife 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
+; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 (define (problem make_tomato_soup)
   (:domain foon-relational)
   (:objects
+    basil_1 - basil
+    bowl_1 - bowl
     cutting_board_1 - cutting_board
     cutting_board_2 - cutting_board
+    immersion_blender_1 - immersion_blender
     knife_1 - knife
+    ladle_1 - ladle
     olive_oil_1 - olive_oil
     onion_1 - onion
     pot_1 - pot
@@ -23,11 +27,15 @@
   (:init
     (in bottle_1 olive_oil_1)
     (in carton_1 vegetable_broth_1)
+    (is basil_1 basil_fresh)
     (is bottle_1 bottle_contains_olive_oil)
+    (is bowl_1 bowl_empty)
     (is carton_1 carton_contains_vegetable_broth)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
+    (is immersion_blender_1 immersion_blender_off)
     (is knife_1 knife_plain)
+    (is ladle_1 ladle_plain)
     (is olive_oil_1 olive_oil_in_bottle)
     (is onion_1 onion_whole)
     (is pot_1 pot_empty)
@@ -38,6 +46,7 @@
     (is vegetable_broth_1 vegetable_broth_in_carton)
     (is wooden_spoon_1 wooden_spoon_plain)
     (occupied knife_plain)
+    (occupied ladle_plain)
     (occupied wooden_spoon_plain)
   )
   (:goal (and

@@ -1,12 +1,14 @@
-; foon2pddl, encoding relational, level 3: 3 of 101 units after relevance pruning
-; goal: whipped cream (3 candidate nodes)
+; foon2pddl, encoding relational, level 3: 4 of 101 units after relevance pruning
+; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 5 (heavy cream 1, mixing bowl 1, sugar 1, whipped cream 1, whisk 1)
+; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 (define (problem make_whipped_cream)
   (:domain foon-relational)
   (:objects
+    bowl_1 - bowl
     heavy_cream_1 - heavy_cream
     mixing_bowl_1 - mixing_bowl
+    spatula_1 - spatula
     sugar_1 - sugar
     whipped_cream_1 - whipped_cream
     whisk_1 - whisk
@@ -14,12 +16,15 @@
   )
   (:init
     (in carton_1 heavy_cream_1)
+    (is bowl_1 bowl_empty)
     (is carton_1 carton_contains_heavy_cream)
     (is heavy_cream_1 heavy_cream_in_carton)
     (is mixing_bowl_1 mixing_bowl_empty)
+    (is spatula_1 spatula_plain)
     (is sugar_1 sugar_granulated)
     (is whipped_cream_1 not-yet-made)
     (is whisk_1 whisk_plain)
+    (occupied spatula_plain)
     (occupied whisk_plain)
   )
   (:goal (and

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 20 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
   (:domain foon-state)
@@ -43,6 +43,9 @@
     (is-whole egg)
   )
   (:goal (and
-    (goal-reached)
+    (available french_toast)
+    (is-cooked french_toast)
+    (on french_toast plate)
+    (topped french_toast maple_syrup)
   ))
 )

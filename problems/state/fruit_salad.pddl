@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 28 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
   (:domain foon-state)
@@ -40,6 +40,12 @@
     (is-whole strawberry)
   )
   (:goal (and
-    (goal-reached)
+    (available fruit_salad)
+    (contains fruit_salad banana)
+    (contains fruit_salad honey)
+    (contains fruit_salad lime_juice)
+    (contains fruit_salad strawberry)
+    (in fruit_salad bowl)
+    (topped fruit_salad whipped_cream)
   ))
 )

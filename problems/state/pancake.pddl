@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
   (:domain foon-state)
@@ -37,6 +37,9 @@
     (is-whole egg)
   )
   (:goal (and
-    (goal-reached)
+    (available pancake)
+    (is-cooked pancake)
+    (on pancake plate)
+    (topped pancake maple_syrup)
   ))
 )

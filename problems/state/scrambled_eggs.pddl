@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 51 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
   (:domain foon-state)
@@ -59,6 +59,8 @@
     (is-whole tomato)
   )
   (:goal (and
-    (goal-reached)
+    (available scrambled_eggs)
+    (is-cooked scrambled_eggs)
+    (on scrambled_eggs plate)
   ))
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
-; goal: tomato soup (4 candidate nodes)
+; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
   (:domain foon-state)
@@ -29,6 +29,9 @@
     (is-whole tomato)
   )
   (:goal (and
-    (goal-reached)
+    (available tomato_soup)
+    (garnished tomato_soup basil)
+    (in tomato_soup bowl)
+    (is-pureed tomato_soup)
   ))
 )

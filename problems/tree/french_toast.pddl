@@ -1,5 +1,5 @@
 ; foon2pddl, encoding tree, level 3: 15 of 101 units after relevance pruning
-; goal: french toast (3 candidate nodes)
+; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
   (:domain foon-tree)
@@ -20,6 +20,6 @@
     (whisk)
   )
   (:goal (and
-    (goal-reached)
+    (french_toast_cooked_on_plate_topped_maple_syrup)
   ))
 )

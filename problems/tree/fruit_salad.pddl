@@ -1,5 +1,5 @@
 ; foon2pddl, encoding tree, level 3: 29 of 101 units after relevance pruning
-; goal: fruit salad (2 candidate nodes)
+; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
   (:domain foon-tree)
@@ -25,6 +25,6 @@
     (whisk)
   )
   (:goal (and
-    (goal-reached)
+    (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
   ))
 )

@@ -1,5 +1,5 @@
 ; foon2pddl, encoding tree, level 3: 16 of 101 units after relevance pruning
-; goal: pancake (4 candidate nodes)
+; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
   (:domain foon-tree)
@@ -22,6 +22,6 @@
     (whisk)
   )
   (:goal (and
-    (goal-reached)
+    (pancake_cooked_on_plate_topped_maple_syrup)
   ))
 )

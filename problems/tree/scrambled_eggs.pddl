@@ -1,5 +1,5 @@
 ; foon2pddl, encoding tree, level 3: 32 of 101 units after relevance pruning
-; goal: scrambled eggs (2 candidate nodes)
+; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
   (:domain foon-tree)
@@ -27,6 +27,6 @@
     (whisk)
   )
   (:goal (and
-    (goal-reached)
+    (scrambled_eggs_cooked_on_plate)
   ))
 )
