@@ -92,11 +92,10 @@ def test_unsolvable_under_constraints_is_an_outcome(example):
 
 def test_batch_rows_use_the_status_vocabulary(example):
     from foon2pddl.io.goal_lists import GoalEntry
+    from foon2pddl.io.inputs import load_kitchen
     from foon2pddl.model.goal import GoalSpec, resolve_goal
     from foon2pddl.retrieval.batch import solve_goals
     from foon2pddl.status import BatchStatus
-
-    from foon2pddl.io.inputs import load_kitchen
 
     kitchen = load_kitchen(None, example, 3)
     entries = [GoalEntry(GoalSpec(x), "goals.txt", n) for n, x in enumerate(("guacamole", "lemonade", "unicorn"), 1)]

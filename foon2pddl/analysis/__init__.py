@@ -1,4 +1,5 @@
 """Graph analysis shared by retrieval and PDDL: the producer/consumer index, reachability, statistics."""
 
 #: The package's modules (import them by name).
-__all__ = ["additions", "blocking", "constraints", "index", "reachability", "stats"]
+__all__ = ["additions", "blocking", "check", "check_labels", "check_units", "constraints", "defects", "index",
+           "network", "network_report", "reachability", "stats"]

@@ -51,7 +51,7 @@ def format_defects(defects, total: dict[str, int]) -> str:
 def check_(paths, as_json, wordnet, output) -> None:
     """Find defects in FOON files: self-supporting producers, cycles with no entry, units that change
     nothing, contents lists that disagree with `in [c]` nodes, unknown objects, spelling variants,
-    state order and duplicated states (docs/check.md).
+    state order and duplicated states (docs/datasets.md).
 
     Exit status: 0 no error-class defect (warnings allowed), 1 some error-class defect, 2 bad input.
     """

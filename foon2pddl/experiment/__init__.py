@@ -13,5 +13,5 @@
 """
 
 #: The package's modules (import them by name).
-__all__ = ["engine", "networks", "params", "plots", "progress", "protocol", "records", "render", "report", "runner",
-           "solvers", "tables", "worker"]
+__all__ = ["bans", "collector", "engine", "networks", "params", "plots", "progress", "protocol", "records", "render",
+           "report", "runner", "solvers", "tables", "worker"]

@@ -5,7 +5,7 @@ which does the work shared by the goals of the batch (its time is the batch's
 `setup`), then answers goals one by one (`solve`). Native solvers share the
 reachability fixpoint (complete, optimal) or the network index (greedy);
 `fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once and
-swap goals in the translated task (`pddl.solve.GoalReplanner`); `fd-state`
+swap goals in the translated task (`planners.solve.GoalReplanner`); `fd-state`
 and `fd-instances` compile and plan each goal afresh (both are pruned per goal;
 `fd-instances` plans with physical objects, so it may need a wash or a second
 bowl where FOON's semantics does not, and solve fewer goals than `native-complete`);

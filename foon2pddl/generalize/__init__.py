@@ -11,5 +11,5 @@ See docs/generalization.md.
 
 #: The package's modules (import them by name).
 __all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "hints", "modes",
-           "network", "pairs", "senses",
-           "similarity", "stats", "substitute", "wordnet", "wup"]
+           "network", "pairs", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
+           "wup"]

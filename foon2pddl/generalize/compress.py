@@ -3,10 +3,10 @@
 Each label (node label, related object, ingredient) becomes the one category
 `CategoryIndex.choose` gives it (the most specific listing it, first in file
 order on ties); a label in no category stays as it is. Units that become
-identical are merged (`merge.dedupe_units`, provenance joined). A kitchen and a
+identical are merged (`model.foon.dedupe_units`, provenance joined). A kitchen and a
 goal are abstracted the same way, so native retrieval runs unchanged on GEN.
 Two objects of one category in one unit become one node or ingredient: the
-compression the seed paper reports, and why `lifted.py` keeps concrete
+compression the seed paper reports, and why `pddl/encode_lifted.py` keeps concrete
 objects as typed parameters instead.
 """
 

@@ -2,7 +2,7 @@
 
 `unit`: every functional unit costs 1, so a cost-optimal plan has the fewest units.
 `success-rate`: a unit costs `round(1000 * -ln(rate)) + 1` for its motion's
-success rate (`retrieval.rates`): minimizing the sum maximizes the product of
+success rate (`io.rates`): minimizing the sum maximizes the product of
 success rates up to rounding (0.001 in log space), and the `+ 1` keeps a
 motion that always succeeds (rate 1) from being free, so among equally likely
 plans the shortest wins. Auxiliary goal actions cost 0.

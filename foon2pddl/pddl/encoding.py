@@ -39,7 +39,7 @@ class EncodeOptions:
 
     The `instances` encoding also reads `instances` (label -> instances per starting place,
     overriding derived counts) and `categories` (label -> its category chain, most specific
-    first, for PDDL supertypes; given as data because `pddl/` does not import `generalize/`).
+    first, for PDDL supertypes; given as data, so the encoders need no category index).
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
     """

@@ -6,7 +6,7 @@ Two analyses, one per semantics, both solvability-preserving:
   that fire in the kitchen's fixpoint (forward) *and* make, without consuming
   it, a node needed for a goal candidate (backward: candidates, then the inputs
   of every kept unit that fires, stopping at kitchen nodes; tighter than
-  `retrieval.reachability.relevant_units`, which does not know what fires). Any sequence of units that
+  `analysis.reachability.relevant_units`, which does not know what fires). Any sequence of units that
   reaches a candidate has a sub-sequence made of such units only, and removing
   units never makes an unsolvable goal solvable, so the goal's solvability is
   unchanged.

@@ -10,7 +10,9 @@ from __future__ import annotations
 from ..pddl.task import PlanningTask
 from .result import STATUSES, PlanResult, parse_plan_text, step_action
 
-__all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action"]
+__all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action", "cleanup", "commands", "decode",
+           "executable", "external", "fd", "fd_reuse", "foon_places", "instance_physical", "physical_replay",
+           "process", "registry", "result", "solve", "trace_check", "translate_server", "translator", "up_engine"]
 
 #: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
 DEFAULT_PLANNER = "fd"

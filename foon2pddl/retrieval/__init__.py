@@ -1,9 +1,9 @@
 """Native task tree retrieval: FOON's own planner.
 
-- `reachability.reachable`: which nodes a kitchen can make (AND/OR fixpoint, linear time);
+- `analysis.reachability.reachable`: which nodes a kitchen can make (AND/OR fixpoint, linear time);
 - `complete`, `greedy`, `optimal` (fewest units, or `weighted`: highest success probability);
 - `retrieve`: one entry point returning a `Retrieval` (tree or reason), by a method of `methods.METHODS`;
-- `formats.render_tree`: steps, FOON text, JSON, DOT, SVG; `rates.read_rates`: motion success rates.
+- `io.tree_formats.render_tree`: steps, FOON text, JSON, DOT, SVG; `io.rates.read_rates`: motion success rates.
 See docs/retrieval.md for the algorithms, their complexity and tie-break orders.
 """
 
@@ -14,5 +14,6 @@ from .api import retrieve
 from .methods import METHODS
 from .result import Retrieval
 
-__all__ = ["DEFAULT_RATE", "FORMATS", "METHODS", "Rates", "Reachability", "Retrieval", "blockers",
-           "reachable", "read_rates", "render_tree", "retrieve"]
+__all__ = ["DEFAULT_RATE", "FORMATS", "METHODS", "Rates", "Reachability", "Retrieval", "blockers", "reachable",
+           "read_rates", "render_tree", "retrieve", "api", "batch", "branch", "complete", "constrained", "explain",
+           "extract", "greedy", "improve", "lmcut", "methods", "optimal", "result"]

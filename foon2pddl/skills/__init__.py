@@ -12,5 +12,6 @@ from .domain import SkillDomain, read_domain, shipped_domain
 from .profile import Robot, robot_constraints
 from .table import MotionTable, read_table, shipped_table
 
-__all__ = ["MacroSkills", "MotionTable", "Robot", "SkillCall", "SkillDomain", "SkillPlan", "StepStatus", "decompose",
-           "read_domain", "read_table", "robot_constraints", "shipped_domain", "shipped_table"]
+__all__ = ["MacroSkills", "MotionTable", "Robot", "SkillCall", "SkillDomain", "SkillPlan", "StepStatus",
+           "read_domain", "read_table", "robot_constraints", "shipped_domain", "shipped_table", "decompose", "domain",
+           "fd_micro", "micro", "profile", "replay", "sexpr", "source", "table"]
