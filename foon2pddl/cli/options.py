@@ -239,9 +239,8 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    building = {"exp": f"building FOON-EXP of {len(net.foon.units):,} units (WordNet similarities: once, then "
-                       "cached)", "gen": f"building FOON-GEN of {len(net.foon.units):,} units"}
-    with slow_step(building.get(network, f"building the {network} network")):
+    building = NETWORKS[network].building or "building the {name} network"
+    with slow_step(building.format(name=network, units=len(net.foon.units))):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))

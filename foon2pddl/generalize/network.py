@@ -128,6 +128,7 @@ class NetworkKind:
     most `hint_max_units` units; `slow_step(net, kitchen)`: a message to show before a
     build that will take seconds (None: it will not). `substitutes`: what stands in for
     banned objects. `schedule`: experiment batches on kinds with a lower value start first.
+    `building`: what the CLI says while a slow build runs (`{units}`: the network's units).
     """
 
     name: str
@@ -143,6 +144,7 @@ class NetworkKind:
     substitutes: Substitutes = Substitutes.NONE
     paper: PaperFigures | None = None
     schedule: int = 0
+    building: str = ""
 
 
 def _reg(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
@@ -186,11 +188,12 @@ NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
     NetworkKind(_EXP, "EXP", f"FOON-EXP (similar objects, threshold {DEFAULT_THRESHOLD})", _exp,
                 "FOON-EXP, Wu-Palmer similarity >= 0.89", hint="FOON-EXP (similar objects stand in)",
                 hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
-                paper=PaperFigures((14, 62), 15217.0), schedule=0),
+                paper=PaperFigures((14, 62), 15217.0), schedule=0,
+                building="building FOON-EXP of {units:,} units (WordNet similarities: once, then cached)"),
     NetworkKind(_GEN, "GEN", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen "
                 "objects)", _gen, "FOON-GEN, objects replaced by their categories", encoding="gen-lifted",
                 hint="FOON-GEN (object categories)", hint_max_units=2500, substitutes=Substitutes.CATEGORY,
-                paper=PaperFigures((66, 87), 1167.5), schedule=1),
+                paper=PaperFigures((66, 87), 1167.5), schedule=1, building="building FOON-GEN of {units:,} units"),
 )}
 
 
