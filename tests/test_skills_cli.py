@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 
 from click.testing import CliRunner
 
@@ -20,10 +21,12 @@ def test_skills_print_every_macro_step_with_its_skills():
     result = run("--goal", "whipped cream", "--skills")
     assert result.exit_code == 0, result.output
     out = result.stdout.splitlines()
-    assert out[0].startswith("skill plan (foon-skills, 1 hand): 3 macro steps, 3 decomposed")
-    assert out[0].endswith("skill replay valid")
-    assert [line.split(" [")[0] for line in out if line[:1].isdigit()] == ["1. pour", "2. pour", "3. whisk"]
+    m = re.match(r"skill plan \(foon-skills, 1 hand\): (\d+) macro steps, (\d+) decomposed", out[0])
+    assert m and m.group(1) == m.group(2) and out[0].endswith("skill replay valid")
+    heads = [line.split(" [")[0] for line in out if line[:1].isdigit()]
+    assert heads[:3] == ["1. pour", "2. pour", "3. whisk"] and len(heads) == int(m.group(1))
     assert "   pick whisk_1 from workspace" in out and "   place whisk_1 on workspace" in out
+    assert all(out[k + 1].startswith("   FOON: ") for k, line in enumerate(out) if line[:1].isdigit())
     assert "skills" in result.stderr.splitlines()[-1]
 
 
@@ -50,8 +53,9 @@ def test_output_dir_holds_the_domain_and_one_problem_per_step_that_other_parsers
     out = tmp_path / "micro"
     result = run("--goal", "whipped cream", "--skills", "-o", str(out))
     assert result.exit_code == 0, result.output
-    assert sorted(p.name for p in out.iterdir()) == ["domain.pddl", "skills.txt", "step-001.pddl", "step-002.pddl",
-                                                     "step-003.pddl"]
+    steps = int(re.search(r"(\d+) macro steps", (out / "skills.txt").read_text()).group(1))
+    assert sorted(p.name for p in out.iterdir()) == ["domain.pddl", "skills.txt",
+                                                     *(f"step-{k:03d}.pddl" for k in range(1, steps + 1))]
     assert result.stdout == ""
     for step in sorted(out.glob("step-*.pddl")):
         parse_domain(str(out / "domain.pddl"))

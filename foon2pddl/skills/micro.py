@@ -13,7 +13,8 @@ appear, where consumed objects were (the workspace only when nothing else is a
 site). A tool or hand skill brings the whole outcome in one application at any
 target; a transfer at the target its moved objects go to. Goal = the
 objects' facts after the step and every hand empty. Objects moved by a transport
-skill (pick-and-place) stay `graspable`; objects poured or scooped out of a holder
+skill (pick-and-place) stay `graspable`, and their phase changes are tagged with the
+skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
 are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
 puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is a step object the
 step leaves as it is and that holds nothing (knife, spoon, whisk).
@@ -173,7 +174,10 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
                 if b.holder is not None:
                     rigid.add(oid)
             if phase_of(b.node) != phase_of(a.node):
-                statics.add(Atom("changes", (tag, n[oid], naming.phase(b.node), naming.phase(a.node))))
+                how = tag
+                if skill in TRANSPORT and "put-in" in domain.by_name and "place" in domain.by_name:
+                    how = domain.constant("put-in" if a.relation is Relation.IN else "place")  # what sets it down
+                statics.add(Atom("changes", (how, n[oid], naming.phase(b.node), naming.phase(a.node))))
                 sites[0].append(n[oid])
     targets = list(dict.fromkeys(x for _, found in sorted(sites.items()) for x in found))
     if len(targets) > 1 and ws in targets:
