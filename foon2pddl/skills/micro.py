@@ -16,8 +16,8 @@ objects' facts after the step and every hand empty. Objects moved by a transport
 skill (pick-and-place) stay `graspable`, and their phase changes are tagged with the
 skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
 are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
-puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is a step object the
-step leaves as it is and that holds nothing (knife, spoon, whisk).
+puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is
+a step object that holds nothing and stays where it is (knife, spoon, whisk; it may get dirty).
 
 Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
 stay as they are), with the domain's constants, the workspace and the hands
@@ -191,7 +191,9 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
             statics.add(Atom("container", (n[oid],)))
         if oid in surfaces:
             statics.add(Atom("surface", (n[oid],)))
-        if oid in touched and before[oid] == after[oid] and before[oid].exists and oid not in holders:
+        b, a = before[oid], after[oid]
+        if (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
+                and (b.holder, b.relation) == (a.holder, a.relation)):
             statics.add(Atom("tool", (n[oid],)))
     hands = {Atom("hand-empty", (h,)) for h in naming.hands}
     init = tuple(sorted(dynamic_facts(naming, before, ids) | hands | statics | {Atom("placed", (ws,))}))
