@@ -255,6 +255,7 @@ def test_results_of_another_protocol_are_refused(tmp_path):
     assert CliRunner().invoke(main, args).exit_code == 0
     result = CliRunner().invoke(main, [*args, "--seed", "5"])
     assert result.exit_code == 2 and "another protocol" in result.output
+    assert ", 5 here" in result.output and "seed " in result.output and "{" not in result.output  # words, no dicts
     assert CliRunner().invoke(main, [*args, "--seed", "5", "--fresh"]).exit_code == 0
 
 

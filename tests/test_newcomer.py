@@ -446,3 +446,40 @@ def test_base_kitchen_starts_from_raw_ingredients(tmp_path):
     from_file = CliRunner().invoke(main, ["retrieve", str(foon), "--goal", "lemonade", "--kitchen", "base"],
                                    catch_exceptions=False)
     assert from_file.exit_code == 0
+
+
+# -- 13. what plan and the experiment leave out, said -------------------------------------------------
+
+
+def test_plan_names_the_steps_it_left_out():
+    r = run("plan", "--goal", "guacamole", "--plan-file", "/dev/null")
+    assert r.exit_code == 0
+    summary = next(line for line in r.stderr.splitlines() if line.startswith("solved"))
+    steps, units = int(summary.split(": ")[1].split()[0]), int(summary.split(", ")[1].split()[0])
+    assert steps > units  # lama-first's plan has detours here: they are named, with their step numbers
+    note = next(line for line in r.stderr.splitlines() if line.startswith("note: left out "))
+    assert 1 <= int(note.split()[3]) <= steps - units  # the rest: a goal's bookkeeping action, repeats
+    numbered = [part.split(" (")[0] for part in note.split(": ", 2)[2].split("; ")]
+    assert all(n.isdigit() and 1 <= int(n) <= steps for n in numbered)
+
+
+def test_another_protocol_is_said_in_words():
+    from foon2pddl.experiment.runner import identity_difference
+
+    old = {"seed": 0, "level": 3, "inputs": "ab12"}
+    new = {"seed": 5, "level": 3, "inputs": "cd34", "threshold": 0.8}
+    text = identity_difference(old, new)
+    assert text == ("the input files differ (other FOON files or other contents); seed 0 there, 5 here; "
+                    "threshold 0.8 here, not set there")
+    assert identity_difference(None, new) == "its protocol file names no identity"
+
+
+def test_a_cycle_points_to_check(tmp_path):
+    # dough needs starter, starter needs dough: nothing enters the cycle
+    cycle = write(tmp_path / "cycle.txt", "//\nO\tdough\t1\nS\tmixed\nM\tferment\nO\tstarter\t1\nS\tactive\n"
+                                          "//\nO\tstarter\t1\nS\tactive\nM\tmix\nO\tdough\t1\nS\tmixed\n//\n")
+    kit = write(tmp_path / "k.txt", "bowl: empty\n")
+    r = run("retrieve", cycle, "--goal", "dough", "--kitchen", kit)
+    assert r.exit_code == 1 and "`foon2pddl check` names the cycle" in r.stderr
+    checked = run("check", cycle)
+    assert "cycle" in checked.output

@@ -165,6 +165,27 @@ class OtherResults(FoonInputError):
     """The output directory holds results that cannot be matched to this run's protocol (start afresh or elsewhere)."""
 
 
+def identity_difference(old, new: dict) -> str:
+    """What differs between two protocol identities, in words (`seed 7 there, 8 here`; the inputs' hash
+    is named as input files, not shown)."""
+    if not isinstance(old, dict):
+        return "its protocol file names no identity"
+    words = []
+    for key in sorted(set(old) | set(new)):
+        if old.get(key) == new.get(key):
+            continue
+        name = key.replace("_", " ")
+        if key == "inputs":
+            words.append("the input files differ (other FOON files or other contents)")
+        elif key not in old:
+            words.append(f"{name} {new[key]} here, not set there")
+        elif key not in new:
+            words.append(f"{name} {old[key]} there, not set here")
+        else:
+            words.append(f"{name} {old[key]} there, {new[key]} here")
+    return "; ".join(words) or "the identities differ"
+
+
 def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
     """Write protocol.json, or refuse when the directory holds results of another (or an unknown) protocol."""
     path = config.out_dir / PROTOCOL
@@ -177,8 +198,9 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
             raise OtherResults(str(path), 0, f"{results} holds results but this protocol file is missing or "
                                              "unreadable, so they cannot be matched to a protocol") from None
         if old != identity:
-            raise OtherResults(str(path), 0, "this directory holds results of another protocol or input "
-                                             f"({old} != {identity})")
+            raise OtherResults(str(path), 0, "this directory holds results of another protocol or input: "
+                               + identity_difference(old, identity)
+                               + "; use another output directory, start afresh, or the same parameters and inputs")
     data = {
         "identity": identity,
         "trials": config.protocol.trials,

@@ -155,6 +155,28 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
     return tree if compiled.finish is None else compiled.finish(tree, steps, kitchen_nodes)
 
 
+def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree, shown: int = 8) -> tuple[str, ...]:
+    """A note naming the plan steps whose unit the task tree left out because the goal does not need
+    them (`tasktree.justify`; a satisficing plan may hold detours), numbered as in the plan; () when none."""
+    kept = set(tree.units)
+    seen: set = set()
+    out = []
+    for n, step in enumerate(steps, start=1):
+        name, *args = step.split()
+        action = compiled.task.action_for(name)
+        unit = None if action is None else compiled.unit_of(action, tuple(args))
+        if unit is None or unit in seen:
+            continue  # bookkeeping actions (goal reached) and repeats are not units of the plan's own
+        seen.add(unit)
+        if unit not in kept:
+            out.append(f"{n} ({unit.motion.label}: {', '.join(o.describe() for o in unit.outputs[:2])})")
+    if not out:
+        return ()
+    more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
+    return (f"left out {len(out)} plan step{'s' if len(out) != 1 else ''} the goal does not need: "
+            + "; ".join(out[:shown]) + more,)
+
+
 def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask | Compiled,
           steps: Sequence[str], *, up_validate: bool = False,
           candidates: Iterable[ObjectNode] | None = None) -> Decoded:
@@ -166,13 +188,15 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     up = None
     if up_validate and len(compiled.task.actions) <= UP_VALIDATE_MAX_ACTIONS:
         up = up_validation(compiled.task, steps)
-    notes = ()
+    notes: tuple[str, ...] = ()
     if delete_free(compiled.task):
         units = plan_units(compiled, steps)
         repeats = len(units) - len(first_occurrences(units))
         if repeats:
             notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
+    if compiled.foon_semantics and not compiled.every_step:
+        notes += unneeded_steps_note(compiled, steps, tree)
     # a task compiled under --containment infer holds inference units: validate under the same rule
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
                       simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes)

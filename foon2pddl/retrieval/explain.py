@@ -54,6 +54,7 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
         leaves = blockers(reach, goal.candidates)
         return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it)"
                 + ("; nodes no unit makes, each needed on some way to it: " + "; ".join(n.describe() for n in leaves)
-                   if leaves else " (every way to make it needs a node that itself needs it)"))
+                   if leaves else " (every way to make it needs a node that itself needs it: `foon2pddl check` names "
+                                  "the cycle)"))
     return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
             "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
