@@ -1,9 +1,12 @@
 """Generalization of a FOON to objects it never saw (the seed paper's FOON-EXP and FOON-GEN): FOON -> FOON.
 
 - `wordnet`: WordNet 3.0 through NLTK (an NLTK corpus, or Debian's files assembled once);
-- `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk;
+- `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk
+  (the seed paper's rule, mode `paper`); `cook`: the default mode (role senses, deepest common
+  ancestor, broad ancestors rejected); `modes`: the registry of modes; `pairs`: `expand --pairs`;
 - `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
-- `categories`: the shipped category index; `compress`: FOON-GEN, objects replaced by categories;
+- `categories`: the shipped category index; `extend`: `categories --extend`; `compress`: FOON-GEN,
+  objects replaced by categories;
 - `network`: the `--network reg|exp|gen` view used by retrieve, compile and plan; `stats`: tables.
 The lifted FOON-GEN PDDL encoding (categories as types) is `pddl.encode_lifted`.
 See docs/generalization.md.
