@@ -483,3 +483,32 @@ def test_a_cycle_points_to_check(tmp_path):
     assert r.exit_code == 1 and "`foon2pddl check` names the cycle" in r.stderr
     checked = run("check", cycle)
     assert "cycle" in checked.output
+
+
+# -- 14. steps in a cook's words ------------------------------------------------------------------------
+
+
+def test_recipe_format_says_what_moves_into_what():
+    r = run("plan", "--goal", "lemonade", "--network", "gen", "--format", "recipe")
+    assert r.exit_code == 0
+    lines = r.stdout.splitlines()
+    assert "pour sugar (granulated) into the pitcher (contains {lime juice})" in lines[7]
+    assert "pour lime juice from the juicer into the pitcher (empty)" in lines[6]
+    assert lines[4].endswith("cut lime (on [cutting board], whole), with the knife, on the cutting board "
+                             "(contains {lime})")
+    steps = run("plan", "--goal", "lemonade", "--network", "gen").stdout.splitlines()
+    assert lines[:2] == steps[:2] and len(lines) == len(steps)  # same tree, same numbering
+
+
+def test_recipe_text_on_every_unit_of_the_corpus_names_its_motion_and_movers(universal):
+    from foon2pddl.io.tree_formats import _place, recipe_text
+
+    foon, _ = universal
+    for unit in foon.units[:600]:
+        text = recipe_text(unit)
+        assert text.startswith(unit.motion.label + " ")
+        new = {o.label: o for o in unit.outputs if o not in unit.inputs}
+        for i in unit.inputs:
+            o = new.get(i.label)
+            if o is not None and _place(o) not in (None, _place(i)):
+                assert f" the {_place(o)[1]}" in text  # where a moved object goes is said

@@ -14,7 +14,7 @@ from ..io.goal_files import parse_goal_spec
 from ..io.goal_lists import GoalEntry, read_goal_list
 
 #: File name extension per task tree format.
-TREE_EXTENSIONS = {"steps": "txt", "foon": "foon", "json": "json", "dot": "dot", "svg": "svg"}
+TREE_EXTENSIONS = {"steps": "txt", "recipe": "txt", "foon": "foon", "json": "json", "dot": "dot", "svg": "svg"}
 
 
 def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Path | None,

@@ -21,7 +21,7 @@ from ..model.tasktree import TaskTree
 from .jsonio import node_to_dict
 from .writer import write_units
 
-FORMATS = ("steps", "foon", "json", "dot", "svg")
+FORMATS = ("steps", "recipe", "foon", "json", "dot", "svg")
 
 INPUT_COLOUR = "#8fd18f"    # green
 OUTPUT_COLOUR = "#8fb8ff"   # blue
@@ -102,6 +102,76 @@ def step_text(unit: FunctionalUnit) -> str:
     for word in sorted(places):
         text += f" {word} " + ", ".join(places[word])
     return text + " -> " + ", ".join(n.describe() for n in (new_outputs or unit.outputs))
+
+
+#: How a recipe says where an object goes, per place state.
+_INTO = {"in": "into", "inside": "into", "into": "into", "on": "onto", "onto": "onto", "under": "under",
+         "over": "over", "above": "above", "below": "below"}
+
+
+def _place(node: ObjectNode) -> tuple[str, str] | None:
+    """(place word, related object) of the node's first place state, or None."""
+    return next(((s.label, s.related) for s in node.states if s.label in PLACE_WORDS and s.related), None)
+
+
+def _unplaced(node: ObjectNode) -> str:
+    """The node in words without its place state (`lime juice`, `lime (whole)`)."""
+    states = [s.describe() for s in node.states if not (s.label in PLACE_WORDS and s.related)]
+    return node.label + (f" ({', '.join(states)})" if states else "")
+
+
+def recipe_text(unit: FunctionalUnit) -> str:
+    """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
+
+    `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
+    pitcher first as if it were poured. An input moves when its output of the same label is in a
+    place state (`in [pitcher]`) other than its own; the containers named so, and the contents of
+    moved objects, are not tools. Without a move: what changes, then the tools (`cut lime (whole)
+    with the knife, on the cutting board`). Labels no input has are what the step makes.
+    """
+    new = {o.label: o for o in unit.outputs if o not in unit.inputs}
+    by_label = {i.label: i for i in unit.inputs}
+    moves = [(i, _place(i), _place(new[i.label])) for i in unit.inputs
+             if i.label in new and _place(new[i.label]) not in (None, _place(i))]
+    named = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
+    if moves:
+        parts = []
+        for i, src, dst in moves:
+            phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
+            where = by_label.get(dst[1])
+            parts.append(f"{phrase} {_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}")
+        text = f"{unit.motion.label} " + "; ".join(parts)
+    else:
+        receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o))}
+        changed = ([i for i in unit.inputs if i.label in new and i.label not in receivers]
+                   or [i for i in unit.inputs if i.label in new] or list(unit.inputs))
+        named = {i.label for i in changed}
+        text = f"{unit.motion.label} " + ", ".join(i.describe() for i in changed)
+    holders = {i.label for i, _, _ in moves} | named
+    rest = [i for i in unit.inputs if i.label not in named
+            and not any(s.label in PLACE_WORDS and s.related in holders for s in i.states)]
+    places = [i for i in rest if any(_place(n) and _place(n)[1] == i.label for n in unit.inputs)]
+    tools = [i for i in rest if i not in places]
+    if tools:
+        text += ", with the " + ", ".join(t.describe() for t in tools)
+    if places:
+        text += ", on the " + ", ".join(p.describe() for p in places)
+    made = [o for label, o in sorted(new.items()) if label not in by_label]
+    if made:
+        text += ", making " + ", ".join(_unplaced(o) + (f" {p[0]} the {p[1]}" if (p := _place(o)) else "")
+                                        for o in made)
+    return text
+
+
+def _recipe(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    """The steps in a cook's words (`recipe_text`), numbered as `steps` numbers them."""
+    lines = [_header(tree)]
+    if used is not None:
+        lines.append("from the kitchen: " + ("; ".join(n.describe() for n in used) or "nothing"))
+    if not tree.units:
+        lines.append("nothing to do: the goal is already available")
+    lines += [f"{i}. {recipe_text(u)}" for i, u in enumerate(tree.units, start=1)]
+    return "\n".join(lines) + "\n"
 
 
 def _steps(tree: TaskTree, used: list[ObjectNode] | None) -> str:
@@ -235,4 +305,4 @@ def _svg(tree: TaskTree, used: list[ObjectNode] | None) -> str:
     return done.stdout
 
 
-_RENDER = {"steps": _steps, "foon": _foon, "json": _json, "dot": _dot, "svg": _svg}
+_RENDER = {"steps": _steps, "recipe": _recipe, "foon": _foon, "json": _json, "dot": _dot, "svg": _svg}
