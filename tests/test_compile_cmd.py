@@ -75,3 +75,37 @@ def test_cli_choices_are_the_encoders_and_cost_modes():
 
     choices = {p.name: tuple(p.type.choices) for p in probe.params}
     assert choices == {"encoding": tuple(ENCODINGS), "costs": COST_MODES}
+
+
+def _bare_kitchen(tmp_path):
+    path = tmp_path / "bare.json"
+    path.write_text('[{"label": "knife", "states": [], "ingredients": [], "container": null}]\n')
+    return path
+
+
+def test_unreachable_goal_exits_1_with_retrieves_reason_and_writes_nothing(tmp_path):
+    kitchen = _bare_kitchen(tmp_path)
+    for encoding in ("tree", "instances", "state", "foon-compat"):
+        out = tmp_path / encoding
+        result = _run(RECIPE, "--goal", "bloody mary", "--kitchen", str(kitchen), "--encoding", encoding,
+                      "-o", str(out))
+        assert result.exit_code == 1, (encoding, result.output)
+        assert "cannot compile: 'bloody mary' is unreachable: " in result.output
+        assert "nodes no unit makes" in result.output and "tomato juice" in result.output
+        assert not out.exists() or not list(out.iterdir())
+    retrieved = CliRunner().invoke(main, ["retrieve", RECIPE, "--goal", "bloody mary", "--kitchen", str(kitchen)])
+    reason = retrieved.output.split(": unreachable: ")[1].splitlines()[0]
+    assert reason in result.output
+
+
+def test_unreachable_goal_in_a_batch_is_an_unreachable_row_without_files(tmp_path):
+    import json
+
+    kitchen = _bare_kitchen(tmp_path)
+    result = _run(RECIPE, "--goal", "bloody mary", "--goal", "unicorn stew", "--kitchen", str(kitchen),
+                  "--format", "jsonl", "-o", str(tmp_path / "out"))
+    assert result.exit_code == 1, result.output
+    rows = [json.loads(line) for line in result.stdout.splitlines()]
+    assert [r["status"] for r in rows] == ["unreachable", "unmatched"]
+    assert "nodes no unit makes" in rows[0]["reason"]
+    assert not (tmp_path / "out" / "bloody_mary").exists()

@@ -15,7 +15,7 @@ from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
 from .progress import slow_step
-from .reasons import why_unsolvable
+from .reasons import unreachable_reason, why_unsolvable
 
 
 def _resolve(view, entry, encoding: str | None = None):
@@ -49,7 +49,13 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         if goal is None:
             rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             continue
-        task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
+        task = None
+        if (why := unreachable_reason(view.foon, view.kitchen, goal)) is None:
+            task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
+            why = unreachable_reason(view.foon, view.kitchen, goal, task)
+        if why is not None:
+            rows.append(_row(entry, goal, BatchStatus.UNREACHABLE, time.perf_counter() - t0, why))
+            continue
         domain, problem = render(task)
         files[output_dir / name / "domain.pddl"] = domain
         files[output_dir / name / "problem.pddl"] = problem

@@ -49,9 +49,16 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
     from .progress import slow_step
 
+    from .reasons import unreachable_reason
+
+    if (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
+        raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
-        return compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
+        task = compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
                             **encoder_options(encoding, instances, category_types, view.foon))
+    if (why := unreachable_reason(view.foon, view.kitchen, target, task)) is not None:
+        raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
+    return task
 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:
@@ -80,8 +87,9 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
 
     Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table.
 
-    Exit status: 0 written, 1 the constraints leave no way to make the goal (nothing written), or some goal
-    of a batch names no produced node, 2 bad input.
+    Exit status: 0 written, 1 nothing makes the goal from the kitchen or the constraints leave no way to it
+    (nothing written; the reason `retrieve` gives), or some goal of a batch names no produced node or is
+    unreachable, 2 bad input.
     """
     check_output(output_dir, directory=True)
     entries = batch_entries(goal, goals_file, goal_file)
