@@ -65,10 +65,6 @@ class FoonIndex:
         self._memo[name] = (key, value)
         return value
 
-    def unit_key(self, u: int) -> tuple:
-        """Content key of unit `u` (the tie-break order)."""
-        return (self.motions[u], self.inputs[u], self.outputs[u])
-
 
 def node_key(node: ObjectNode) -> tuple:
     """The nodes' sort order (that of the model's dataclass order) as plain tuples, compared in C."""

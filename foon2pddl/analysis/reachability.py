@@ -66,11 +66,6 @@ class Reachability:
             return None
         return self.achiever[i]
 
-    @property
-    def reachable_nodes(self) -> frozenset[ObjectNode]:
-        """Every network node that can be made or is in the kitchen."""
-        return frozenset(n for n, r in zip(self.index.nodes, self.node_round, strict=True) if r != UNREACHED)
-
 
 def relevant_units(ix: FoonIndex, targets: Iterable[int], in_kitchen: bytearray) -> list[int]:
     """The units that can contribute to the target node ids, in discovery order: backwards over

@@ -325,10 +325,3 @@ def views(config: Config, point: Point | None = None) -> list[NetworkView]:
     """The run's network views at `point` (the first of the sweep by default), built once per process."""
     point = config.points[0] if point is None else point
     return [view(config.paths, config.protocol, point, n) for n in config.networks]
-
-
-def describe_points(config: Config) -> Sequence[str]:
-    """Each point of the sweep as `name=value, ...`."""
-    from .params import label
-
-    return [label(p) for p in config.points]

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 import re
-import shlex
 import tempfile
 import time
 from pathlib import Path
@@ -31,14 +30,6 @@ from .result import PlanResult, parse_plan_text, tail
 #: What planners print when they conclude there is no plan (FD, pyperplan, common wordings).
 SAYS_UNSOLVABLE = re.compile(r"unsolvable|no solution|no plan (?:was |could be )?found|"
                              r"search stopped without finding a solution|goal (?:is )?unreachable", re.I)
-
-
-def split_command(cmd: str) -> list[str]:
-    """The command's words; raises ValueError for an empty or unbalanced command."""
-    words = shlex.split(cmd)
-    if not words:
-        raise ValueError("empty planner command")
-    return words
 
 
 def solve(cmd: str, domain_text: str, problem_text: str, *, time_limit: float | None = None) -> PlanResult:
