@@ -211,3 +211,58 @@ def test_control_characters_in_a_goal_list_file_are_located(tmp_path):
     f.write_text("guacamole\nlemon\x00ade\n")
     r = cli("retrieve", "--goals", f)
     assert r.exit_code == 2 and f"{f}:2: error: " in r.stderr and "control character" in r.stderr, r.output
+
+
+# ---------------------------------------------------------------- 12. a damaged WordNet corpus
+
+
+def _damage(corpus: Path, case: str) -> None:
+    data = corpus / "data.noun"
+    if case == "no data.noun":
+        data.unlink()
+    elif case == "truncated data.noun":
+        data.write_bytes(data.read_bytes()[: data.stat().st_size // 2])
+    elif case == "garbage data.noun":
+        data.write_bytes(os.urandom(100_000))
+    elif case == "truncated index.noun":
+        index = corpus / "index.noun"
+        index.write_bytes(index.read_bytes()[:100_000])
+    elif case == "bad lexnames":
+        (corpus / "lexnames").write_text("garbage\n")
+    elif case == "empty lexnames":
+        (corpus / "lexnames").write_text("")
+
+
+@pytest.mark.parametrize("case", ["no data.noun", "truncated data.noun", "garbage data.noun", "truncated index.noun",
+                                  "bad lexnames", "empty lexnames", "bad zip", "zip without data.noun"])
+def test_damaged_wordnet_is_a_located_error(tmp_path, case):
+    import shutil
+    import zipfile
+
+    from foon2pddl.generalize import wordnet
+
+    source = wordnet.locate()[1]
+    root = tmp_path / "nltk_data"
+    corpus = root / "corpora" / "wordnet"
+    if source.suffix == ".zip":
+        with zipfile.ZipFile(source) as zf:
+            zf.extractall(root / "corpora")
+    else:
+        shutil.copytree(source, corpus)
+    if case == "bad zip":
+        shutil.rmtree(corpus)
+        (root / "corpora" / "wordnet.zip").write_bytes(b"not a zip\n")
+    elif case == "zip without data.noun":
+        (corpus / "data.noun").unlink()
+        with zipfile.ZipFile(root / "corpora" / "wordnet.zip", "w") as zf:
+            for f in sorted(corpus.iterdir()):
+                zf.write(f, f"wordnet/{f.name}")
+        shutil.rmtree(corpus)
+    else:
+        _damage(corpus, case)
+    env = {"NLTK_DATA": str(root), "FOON2PDDL_CACHE": str(tmp_path / "cache")}
+    for args in (("similarity", "lemon", "lime"), ("expand", "-o", tmp_path / "x.txt")):
+        r = foon2pddl(*args, env=env)
+        assert r.returncode == 2 and "Traceback" not in r.stderr, r.stderr
+        assert ":0: error: damaged WordNet corpus" in r.stderr and "reinstall" in r.stderr, r.stderr
+    assert not (tmp_path / "x.txt").exists()

@@ -105,8 +105,8 @@ _FULL = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO})
 
 
 def output_failed(exc: OSError) -> None:
-    """Say that standard output could not be written, and send what is still buffered for it nowhere
-    (so the exit's flush does not fail again and print a traceback)."""
+    """Say that an output (standard output, or the file the error names) could not be written, and send
+    what is still buffered for standard output nowhere (so the exit's flush does not fail again)."""
     import os
 
     try:
@@ -115,8 +115,9 @@ def output_failed(exc: OSError) -> None:
         os.close(devnull)
     except (OSError, ValueError, AttributeError):
         pass
+    what = f"{exc.filename}:0: error: cannot write" if exc.filename else "Error: cannot write the output"
     try:
-        click.echo(f"Error: cannot write the output: {exc.strerror or exc}", err=True)
+        click.echo(f"{what}: {exc.strerror or exc}", err=True)
     except OSError:
         pass  # standard error is full too: the exit status says it
 

@@ -6,7 +6,8 @@ most what was being computed. `read_records` skips damaged lines (garbage, a
 truncated write, wrong field types, NUL bytes, invalid UTF-8), reporting each
 as `results.jsonl:N`, so their cells are simply recomputed; it keeps the last
 record of a key when a cell was run twice. Cells whose status is `error` or
-`lost` count as not done, so a rerun retries them.
+`lost` count as not done, so a rerun retries them; so do records of another
+goal or time limit than the run's (`reusable`).
 """
 
 from __future__ import annotations
@@ -49,7 +50,9 @@ class Record:
     Anytime optimal solvers fill `bound` (proven lower bound on units), `gap`
     ((units - bound) / units) and `proven_optimal`. `params` holds the values of
     the swept parameters (empty without sweeps); `worker` the engine's worker
-    that computed the cell (None in-process).
+    that computed the cell (None in-process); `time_limit` the planner time limit
+    it ran under (None in files written before cells recorded it: the run's
+    `protocol.json` says which).
     """
 
     trial: int
@@ -70,6 +73,7 @@ class Record:
     gap: float | None = None
     params: dict[str, Any] = field(default_factory=dict)
     worker: str | None = None
+    time_limit: float | None = None
 
     def __post_init__(self) -> None:
         try:
@@ -97,7 +101,7 @@ class Record:
         data["solved"] = self.solved
         data["times"] = {k: round(v, 6) for k, v in sorted(self.times.items())}
         data["setup"] = round(self.setup, 6)
-        for name in ("bound", "gap", "worker"):  # optional: absent when unset (old files have none)
+        for name in ("bound", "gap", "worker", "time_limit"):  # optional: absent when unset (old files have none)
             if data[name] is None:
                 del data[name]
         if not self.params:
@@ -124,7 +128,7 @@ _INT = ("trial", "goal")
 _STR = ("network", "solver", "goal_label")
 _OPT_INT = ("units", "plan_length")
 _OPT_BOOL = ("validated", "proven_optimal", "foon_valid")
-_OPT_NUM = ("bound", "gap")
+_OPT_NUM = ("bound", "gap", "time_limit")
 
 
 def _number(x: object) -> bool:
@@ -184,6 +188,8 @@ def read_records(path: Path, warnings: list[str] | None = None) -> dict[Key, Rec
             problem = "invalid UTF-8"
         except (ValueError, TypeError) as exc:
             problem = str(exc)
+        except RecursionError:
+            problem = "nested too deeply"
         else:
             out[record.key] = record
             continue
@@ -198,6 +204,16 @@ def read_records(path: Path, warnings: list[str] | None = None) -> dict[Key, Rec
 def done_keys(records: dict[Key, Record]) -> set[Key]:
     """Keys of cells that need no rerun (everything but errors and lost cells)."""
     return {k for k, r in records.items() if r.status not in RETRIED}
+
+
+def reusable(records: dict[Key, Record], labels: dict[Key, str], time_limit: float,
+             old_limit: float | None = None) -> set[Key]:
+    """Keys of the cells of this run (`labels`: key -> the goal's label as drawn now) whose record can
+    stand: done (`done_keys`), of the same goal (a record of another goal is recomputed), computed under
+    this `time_limit` (a record without one takes `old_limit`, the directory's previous limit). A
+    limit changes a cell's answer (a timeout, an anytime solver's bound), so any other limit is rerun."""
+    return {k for k in done_keys(records) if k in labels and records[k].goal_label == labels[k]
+            and (records[k].time_limit if records[k].time_limit is not None else old_limit) == time_limit}
 
 
 def open_for_append(path: Path) -> IO[str]:

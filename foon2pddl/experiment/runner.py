@@ -9,7 +9,14 @@ a LocalCluster of `jobs` workers, or an existing cluster's `scheduler`),
 costliest solvers and largest networks first; every finished cell is appended
 to the JSONL file at once in this process. A rerun reads the file and skips the
 cells already done: an interrupted run resumes, and cells that ended in an
-error or were lost with their worker are redone.
+error or were lost with their worker are redone, as are cells recorded for
+another goal or under another time limit (`records.reusable`).
+
+Before any work (no file written, no network built) `check_requirements` refuses a
+run whose networks or engine need something missing (WordNet for EXP, Dask for
+`jobs` > 1 or a scheduler) or whose scheduler is not one. A write that fails (a
+full disk, a read-only directory) is a `FoonInputError`; every record appended
+before it stays, so the same command resumes once there is room.
 """
 
 from __future__ import annotations
@@ -23,12 +30,12 @@ from pathlib import Path
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 from . import collector
-from .engine import run_dask, run_here
+from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
 from .networks import NETWORKS, NetworkView
 from .params import Point, points
 from .progress import OFF, Progress, default_mode
 from .protocol import Protocol, Trial
-from .records import Key, Record, append, done_keys, open_for_append, params_key, read_records
+from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
 from .worker import Batch, Job, draw_at, fingerprint, input_files, view
 
@@ -57,6 +64,7 @@ class Config:
     goal_limits: tuple[tuple[str, int], ...] = ()  # (solver, n): that solver gets the first n goals of a trial
     sweeps: tuple[tuple[str, tuple], ...] = ()  # (parameter, values): the grid is run at every combination
     scheduler: str | None = None  # a Dask scheduler's address: run there instead of locally
+    no_worker_limit: float = NO_WORKER_LIMIT  # seconds without a live Dask worker before pending cells are lost
 
     @property
     def results_path(self) -> Path:
@@ -130,8 +138,14 @@ def _params_keys(config: Config) -> dict[Point, tuple]:
 
 def cell_keys(config: Config, grid: Sequence[Cell] | None = None) -> set[Key]:
     """Every cell key of the run (of `grid`, the run's `cells`, when the caller has them)."""
+    return set(cell_labels(config, grid))
+
+
+def cell_labels(config: Config, grid: Sequence[Cell] | None = None) -> dict[Key, str]:
+    """Every cell key of the run -> the label of its goal as drawn now (`grid`: the run's `cells`)."""
     params = _params_keys(config)
-    return {(t.index, g, n, s, params[p]) for p, t, n, s, g in (cells(config) if grid is None else grid)}
+    return {(t.index, g, n, s, params[p]): t.goals[g - 1].describe()
+            for p, t, n, s, g in (cells(config) if grid is None else grid)}
 
 
 def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = None) -> list[Batch]:
@@ -186,15 +200,19 @@ def identity_difference(old, new: dict) -> str:
     return "; ".join(words) or "the identities differ"
 
 
-def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
-    """Write protocol.json, or refuse when the directory holds results of another (or an unknown) protocol."""
+def check_protocol(config: Config, trials: tuple[Trial, ...]) -> float | None:
+    """Write protocol.json, or refuse when the directory holds results of another (or an unknown) protocol;
+    return the time limit the previous protocol.json recorded (None without results)."""
     path = config.out_dir / PROTOCOL
     identity = config.identity()
     results = config.results_path
+    old_limit = None
     if results.is_file() and results.stat().st_size > 0:
         try:
-            old = json.loads(path.read_text(encoding="utf-8")).get("identity")
-        except (OSError, ValueError, AttributeError):
+            previous = json.loads(path.read_text(encoding="utf-8"))
+            old = previous.get("identity")
+            old_limit = previous.get("time_limit")
+        except (OSError, ValueError, AttributeError, RecursionError):
             raise OtherResults(str(path), 0, f"{results} holds results but this protocol file is missing or "
                                              "unreadable, so they cannot be matched to a protocol") from None
         if old != identity:
@@ -215,6 +233,18 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> None:
     if config.sweeps:
         data["sweeps"] = {name: list(values) for name, values in config.sweeps}
     atomic_write(path, json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False) + "\n")
+    return old_limit if isinstance(old_limit, int | float) and not isinstance(old_limit, bool) else None
+
+
+def check_requirements(config: Config) -> None:
+    """Refuse, before any work, a run that needs what is missing: a network kind's dependencies (WordNet for
+    EXP), Dask for a cluster, a scheduler that is not one (MissingDependencyError, UsageError, FoonError)."""
+    for name in config.networks:
+        NETWORKS[name].requires()
+    if config.scheduler is not None or config.jobs > 1:
+        require_dask()
+    if config.scheduler is not None:
+        check_scheduler(config.scheduler)
 
 
 # -- running -------------------------------------------------------------------------------------
@@ -236,7 +266,8 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
         if config.scheduler is None and config.jobs <= 1:
             run_here(batches, job, sink, progress)
         else:
-            run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler)
+            run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler,
+                     no_worker_limit=config.no_worker_limit)
     finally:
         progress.close()
 
@@ -255,6 +286,17 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
     for name in config.networks:
         if name not in NETWORKS:
             raise UsageError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
+    check_requirements(config)
+    try:
+        return _run_checked(config, progress, fresh, settle, t0)
+    except OSError as exc:  # a full disk, a read-only directory: what was appended stays, a rerun resumes
+        where = exc.filename or config.out_dir
+        raise FoonInputError(str(where), 0, f"cannot write: {exc.strerror or exc}; the cells recorded so far are "
+                                            "kept, and running the same command again resumes") from None
+
+
+def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None],
+                 t0: float) -> RunSummary:
     first = config.points[0]
     trials = trials_at(config, first)
     config.out_dir.mkdir(parents=True, exist_ok=True)
@@ -264,10 +306,11 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
     if fresh:
         config.results_path.unlink(missing_ok=True)
         (config.out_dir / RUNS).unlink(missing_ok=True)
-    check_protocol(config, trials)
+    old_limit = check_protocol(config, trials)
     warnings: list[str] = []
-    done = done_keys(read_records(config.results_path, warnings))
     grid = cells(config)
+    done = reusable(read_records(config.results_path, warnings), cell_labels(config, grid), config.time_limit,
+                    old_limit)
     batches = plan_batches(config, done, grid)
     planned = sum(len(b.goals) for b in batches)
     written = [0, 0]  # cells written, of which lost
@@ -291,8 +334,11 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
                    "seconds": round(time.perf_counter() - t_run, 3), "solvers": sorted({b.solver for b in batches})}
             if config.scheduler:
                 log["scheduler"] = config.scheduler
-            with open(config.out_dir / RUNS, "a", encoding="utf-8") as fh:
-                fh.write(json.dumps(log, sort_keys=True) + "\n")
+            try:
+                with open(config.out_dir / RUNS, "a", encoding="utf-8") as fh:
+                    fh.write(json.dumps(log, sort_keys=True) + "\n")
+            except OSError:
+                pass  # the log is informative only; a failed append of results is what is reported
     records = read_records(config.results_path)
     keys = cell_keys(config, grid)
     mine = tuple(records[k] for k in sorted(keys, key=_sortable) if k in records)
@@ -314,7 +360,7 @@ def read_runs(path: Path) -> tuple[dict, ...]:
     for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
         try:
             entry = json.loads(line)
-        except ValueError:
+        except (ValueError, RecursionError):
             continue
         if isinstance(entry, dict):
             out.append(entry)

@@ -83,9 +83,9 @@ class Batch:
         labels = tuple(self.trial.goals[g - 1].describe() for g in self.goals)
         return BatchRef(self.trial.index, self.network, self.solver, self.goals, labels, self.point)
 
-    def records(self, status: CellStatus, reason: str) -> list[Record]:
+    def records(self, status: CellStatus, reason: str, time_limit: float | None = None) -> list[Record]:
         """One record per goal with the same status and reason (a failed or lost task)."""
-        return self.ref().records(status, reason)
+        return self.ref().records(status, reason, time_limit)
 
 
 @dataclass(frozen=True)
@@ -109,11 +109,11 @@ class BatchRef:
                             "(another foon2pddl version?)")
         return batch
 
-    def records(self, status: CellStatus, reason: str) -> list[Record]:
+    def records(self, status: CellStatus, reason: str, time_limit: float | None = None) -> list[Record]:
         """One record per goal with the same status and reason (a failed or lost task)."""
         params = dict(self.point)
         return [Record(trial=self.trial, goal=g, network=self.network, solver=self.solver, goal_label=label,
-                       status=status, reason=_cut(reason), params=params)
+                       status=status, reason=_cut(reason), params=params, time_limit=time_limit)
                 for g, label in zip(self.goals, self.labels, strict=True)]
 
 
@@ -202,7 +202,7 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
         status, reason = CellStatus.ERROR, f"preparation failed: {type(exc).__name__}: {exc}"
         if network_hooks(batch.point) and not view(job.paths, job.protocol, batch.point, batch.network).foon.units:
             status, reason = CellStatus.UNSOLVABLE, f"no unit is left at {label(batch.point)}"
-        out = batch.records(status, reason)
+        out = batch.records(status, reason, job.time_limit)
         for r in out:
             (emit or _ignore)(r)
         return out
@@ -217,7 +217,8 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
                         times=outcome.times, setup=prepared.setup, units=outcome.units,
                         plan_length=outcome.plan_length, validated=outcome.validated,
                         proven_optimal=outcome.proven_optimal, foon_valid=outcome.foon_valid,
-                        bound=outcome.bound, gap=outcome.gap, params=batch.params, worker=worker)
+                        bound=outcome.bound, gap=outcome.gap, params=batch.params, worker=worker,
+                        time_limit=job.time_limit)
         out.append(record)
         (emit or _ignore)(record)
     return out

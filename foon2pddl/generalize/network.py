@@ -129,6 +129,9 @@ class NetworkKind:
     build that will take seconds (None: it will not). `substitutes`: what stands in for
     banned objects. `schedule`: experiment batches on kinds with a lower value start first.
     `building`: what the CLI says while a slow build runs (`{units}`: the network's units).
+    `requires()`: raises `MissingDependencyError` (with the install command) when what
+    building the kind needs is missing; called before long work (the experiment checks
+    every network of a run before its first cell).
     """
 
     name: str
@@ -145,6 +148,7 @@ class NetworkKind:
     paper: PaperFigures | None = None
     schedule: int = 0
     building: str = ""
+    requires: Callable[[], None] = lambda: None
 
 
 def _reg(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
@@ -168,6 +172,12 @@ def _exp_slow_step(net: Network, kitchen: Kitchen) -> str | None:
     return "checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)"
 
 
+def _wordnet() -> None:
+    from .wordnet import check_available
+
+    check_available()
+
+
 def _gen(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
     ix = options.index or load_index()
     c = compress(net.foon, ix)
@@ -188,7 +198,7 @@ NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
     NetworkKind(_EXP, "EXP", f"FOON-EXP (similar objects, threshold {DEFAULT_THRESHOLD})", _exp,
                 "FOON-EXP, Wu-Palmer similarity >= 0.89", hint="FOON-EXP (similar objects stand in)",
                 hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
-                paper=PaperFigures((14, 62), 15217.0), schedule=0,
+                paper=PaperFigures((14, 62), 15217.0), schedule=0, requires=_wordnet,
                 building="building FOON-EXP of {units:,} units (WordNet similarities: once, then cached)"),
     NetworkKind(_GEN, "GEN", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen "
                 "objects)", _gen, "FOON-GEN, objects replaced by their categories", encoding="gen-lifted",

@@ -11,6 +11,7 @@ does not ship. Locating the corpus and reading its version does not import NLTK
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
 import shutil
@@ -129,8 +130,43 @@ def locate(
     raise MissingDependencyError("WordNet not found", INSTALL_HINT)
 
 
+#: What reading a damaged corpus raises in NLTK or on the values it returns (a truncated data file gives
+#: None synsets, a truncated index StopIteration, a bad `lexnames` ValueError, a bad zip BadZipFile).
+_DAMAGE = (OSError, ValueError, LookupError, StopIteration, EOFError, AttributeError, TypeError, zipfile.BadZipFile)
+#: WordNet's parts of speech and their file suffixes.
+_POS = (("n", "noun"), ("v", "verb"), ("a", "adj"), ("r", "adv"))
+
+
+def damaged(corpus: Path, exc: BaseException) -> FoonInputError:
+    """The error for a corpus that cannot be read: what failed and how to reinstall it."""
+    detail = str(exc).strip().splitlines()
+    what = f"{type(exc).__name__}: {detail[0][:200]}" if detail and detail[0].strip("*") else type(exc).__name__
+    return FoonInputError(str(corpus), 0, f"damaged WordNet corpus ({what}); reinstall it: {INSTALL_HINT}")
+
+
+def check_corpus(wn) -> None:
+    """Fail on a corpus damaged where opening does not look: each data file must hold the synset at the
+    largest offset its index names (a truncated or replaced data file does not). One pass over the
+    lemma index (linear in its size, tens of milliseconds) and one synset read per part of speech."""
+    offsets = getattr(wn, "_lemma_pos_offset_map", None)
+    if not isinstance(offsets, dict):
+        return
+    for pos, name in _POS:
+        last = max((o for by_pos in offsets.values() for o in by_pos.get(pos, ())), default=None)
+        if last is not None and wn.synset_from_pos_and_offset(pos, last) is None:
+            raise EOFError(f"data.{name} lacks the synset at offset {last} that index.{name} names")
+
+
 def corpus_version(corpus: Path) -> str:
-    """WordNet version from the copyright header of `data.adj` (as NLTK's `get_version` reads it)."""
+    """WordNet version from the copyright header of `data.adj` (as NLTK's `get_version` reads it);
+    FoonInputError when the corpus cannot be read."""
+    try:
+        return _corpus_version(corpus)
+    except (OSError, zipfile.BadZipFile, KeyError) as exc:
+        raise damaged(corpus, exc) from None
+
+
+def _corpus_version(corpus: Path) -> str:
     if corpus.suffix == ".zip":
         with zipfile.ZipFile(corpus) as zf:
             name = next((n for n in zf.namelist() if n.endswith("/data.adj")), None)
@@ -142,6 +178,18 @@ def corpus_version(corpus: Path) -> str:
     return m.group(1) if m else "unknown"
 
 
+def check_available() -> None:
+    """Raise MissingDependencyError unless WordNet can be opened: a corpus (`locate`) and NLTK to read it.
+    Imports nothing (NLTK costs over a second): for checks before long work."""
+    locate()
+    try:
+        found = importlib.util.find_spec("nltk") is not None
+    except (ImportError, ValueError):
+        found = False
+    if not found:
+        raise MissingDependencyError("WordNet similarity (FOON-EXP, categories) needs nltk", "pip install 'foon2pddl[gen]'")
+
+
 @lru_cache(maxsize=1)
 def version() -> str:
     """Version of the WordNet `reader()` opens (e.g. "3.0"), read without importing NLTK."""
@@ -150,13 +198,14 @@ def version() -> str:
 
 @lru_cache(maxsize=1)
 def reader():
-    """NLTK's WordNetCorpusReader over the located corpus (no multilingual data)."""
+    """NLTK's WordNetCorpusReader over the located corpus (no multilingual data); FoonInputError naming
+    the corpus when it is damaged (`check_corpus`), never NLTK's own exception."""
     import warnings
 
     nltk_data = require("nltk.data", "gen", "WordNet similarity (FOON-EXP, categories)")
     WordNetCorpusReader = require("nltk.corpus.reader.wordnet", "gen", "WordNet").WordNetCorpusReader
 
-    root, _ = locate()
+    root, corpus = locate()
     if str(root) not in [str(p) for p in nltk_data.path]:
         nltk_data.path.append(str(root))  # authorizes the root in NLTK's path sandbox
     class Reader(WordNetCorpusReader):
@@ -166,7 +215,12 @@ def reader():
             # (no multilingual data is loaded, and the map is the identity for WordNet 3.0).
             return None
 
-    pointer = nltk_data.find("corpora/wordnet")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # "multilingual functions are not available"
-        return Reader(pointer, None)
+    try:
+        pointer = nltk_data.find("corpora/wordnet")
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # "multilingual functions are not available"
+            wn = Reader(pointer, None)
+            check_corpus(wn)
+    except _DAMAGE as exc:
+        raise damaged(corpus, exc) from None
+    return wn
