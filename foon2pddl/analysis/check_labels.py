@@ -7,13 +7,16 @@ one edit (insertion, deletion or substitution; both at least `MIN_EDIT_LENGTH`
 long: `raman` / `ramen`) unless the lexicon knows both as different words
 (`rice` / `mice`). The lexicon is WordNet when the CLI can open it; the
 pure-string fallback singularizes by English suffix rules and knows no words.
-Edit pairs are found with one-deletion neighbourhoods (O(labels x length)).
+Edit pairs are found with one-deletion neighbourhoods: O(length^2) characters per
+label, so only labels of at most `MAX_EDIT_LENGTH` characters are compared by one
+edit (a longer label is still compared by its normalized form); memory and time stay
+linear in the total label length however long one label is.
 """
 
 from __future__ import annotations
 
 import re
-from collections import defaultdict
+from collections import Counter, defaultdict
 from collections.abc import Callable, Iterable
 
 from ..io.raw_objects import RawObject
@@ -22,6 +25,8 @@ from .defects import Defect, DefectKind, Place, defect
 
 #: Shortest labels compared by edit distance (short words differ by one letter too often).
 MIN_EDIT_LENGTH = 5
+#: Longest labels compared by edit distance (a label's one-deletion neighbourhood holds length^2 characters).
+MAX_EDIT_LENGTH = 64
 
 #: `lemma(word)`: the dictionary form of a known word, or None for an unknown one.
 Lemma = Callable[[str], "str | None"]
@@ -45,9 +50,9 @@ def _key(label: str, lemma: Lemma | None) -> str:
 
 
 def _one_edit_pairs(keys: Iterable[str]) -> set[tuple[str, str]]:
-    """Pairs of keys at edit distance 1 (both at least MIN_EDIT_LENGTH long)."""
+    """Pairs of keys at edit distance 1 (both MIN_EDIT_LENGTH to MAX_EDIT_LENGTH long)."""
     by_deletion: dict[str, set[str]] = defaultdict(set)
-    keys = [k for k in set(keys) if len(k) >= MIN_EDIT_LENGTH]
+    keys = [k for k in set(keys) if MIN_EDIT_LENGTH <= len(k) <= MAX_EDIT_LENGTH]
     for k in keys:
         by_deletion[k].add(k)
         for i in range(len(k)):
@@ -66,7 +71,8 @@ def _distance_one(a: str, b: str) -> bool:
     if abs(len(a) - len(b)) != 1:
         return False
     short, long_ = sorted((a, b), key=len)
-    return any(long_[:i] + long_[i + 1:] == short for i in range(len(long_)))
+    i = next((j for j, (x, y) in enumerate(zip(short, long_)) if x != y), len(short))  # first difference
+    return long_[i + 1:] == short[i:]
 
 
 def spelling_variants(mentions: dict[str, list[Source]], lemma: Lemma | None = None) -> list[Defect]:
@@ -108,8 +114,8 @@ def written_form(objects: Iterable[RawObject]) -> list[Defect]:
                 duplicated[(o.label, s)].append(Place(o.path, o.line))
             seen.add(s)
             for body in re.findall(r"\{([^{}]*)\}", s):
-                items = [i.strip() for i in body.split(",") if i.strip()]
-                for item in sorted({i for i in items if items.count(i) > 1}):
+                counts = Counter(i.strip() for i in body.split(",") if i.strip())
+                for item in sorted(i for i, n in counts.items() if n > 1):
                     duplicated[(o.label, f"{s} (item {item!r} listed twice)")].append(Place(o.path, o.line))
         orders[(o.label, tuple(sorted(set(o.states))))][tuple(dict.fromkeys(o.states))].append(Place(o.path, o.line))
     out = []

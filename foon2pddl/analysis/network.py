@@ -10,8 +10,12 @@ label (level 1, as the paper ranks objects) unless `level` 3 keeps whole nodes.
 - degree centrality (networkx: degree / (n - 1)) and betweenness centrality
   (shortest paths, unweighted, normalized) of every node of each projection;
 - connected components of the bipartite graph (undirected).
-Betweenness is exact (Brandes, O(V E)); a few seconds on the universal FOON of
-the shared subgraphs. Ties in rankings break by label.
+Betweenness is exact (Brandes: one breadth-first search per source node, O(V (V + E)))
+while that work is at most `BETWEENNESS_WORK` (7.2e7 on the universal FOON of the
+shared subgraphs at level 3: exact, a few seconds); beyond it, it is estimated from
+k = max(`MIN_SOURCES`, BETWEENNESS_WORK / (V + E)) source nodes drawn with a fixed seed
+(networkx's `k` sampling, deterministic), so its cost stays bounded on any network,
+and the outputs say so (`Analysis.sampled`). Ties in rankings break by label.
 """
 
 from __future__ import annotations
@@ -23,6 +27,12 @@ from itertools import combinations
 import networkx as nx
 
 from ..model.foon import Foon, ObjectNode
+
+#: Most edge visits (V (V + E) for exact betweenness) spent on one projection's betweenness.
+BETWEENNESS_WORK = 100_000_000
+#: Fewest source nodes of a sampled estimate, and the seed that draws them.
+MIN_SOURCES = 10
+SAMPLE_SEED = 0
 
 
 def _object_key(node: ObjectNode, level: int) -> str:
@@ -98,6 +108,7 @@ class Analysis:
     object_count: int
     unit_count: int
     level: int
+    sampled: tuple[tuple[str, int], ...] = ()  # (projection, source nodes) of betweenness estimated by sampling
 
     def top(self, which: str, key: str, n: int) -> list[Ranked]:
         """The `n` highest of `which` (objects or motions) by `key` (degree_centrality or betweenness)."""
@@ -105,12 +116,21 @@ class Analysis:
         return sorted(items, key=lambda r: (-getattr(r, key), r.name))[:n]
 
 
+def sources(g: nx.Graph) -> int | None:
+    """Source nodes `rank` samples for the betweenness of `g`; None when it is exact (within BETWEENNESS_WORK)."""
+    v, size = g.number_of_nodes(), g.number_of_nodes() + g.number_of_edges()
+    if v * size <= BETWEENNESS_WORK:
+        return None
+    return min(v, max(MIN_SOURCES, BETWEENNESS_WORK // size))
+
+
 def rank(g: nx.Graph) -> tuple[Ranked, ...]:
-    """Degree and betweenness centrality of every node of `g`."""
+    """Degree and betweenness centrality of every node of `g` (betweenness sampled when `sources(g)` says so)."""
     if g.number_of_nodes() == 0:
         return ()
     deg = nx.degree_centrality(g)
-    btw = nx.betweenness_centrality(g, normalized=True)
+    k = sources(g)
+    btw = nx.betweenness_centrality(g, k=k, normalized=True, seed=SAMPLE_SEED if k else None)
     out = [Ranked(n, g.degree(n), deg[n], btw[n]) for n in g.nodes]
     return tuple(sorted(out, key=lambda r: (-r.degree_centrality, -r.betweenness, r.name)))
 
@@ -119,8 +139,10 @@ def analyze(foon: Foon, level: int = 1) -> Analysis:
     """Both projections ranked, and the connected components of the bipartite graph."""
     b = bipartite(foon, level)
     sizes = tuple(sorted((len(c) for c in nx.weakly_connected_components(b)), reverse=True))
-    objects = rank(object_projection(foon, level))
-    return Analysis(objects, rank(motion_projection(foon)), sizes, len(objects), len(foon.units), level)
+    og, mg = object_projection(foon, level), motion_projection(foon)
+    objects = rank(og)
+    estimated = tuple((name, k) for name, g in (("objects", og), ("motions", mg)) if (k := sources(g)) is not None)
+    return Analysis(objects, rank(mg), sizes, len(objects), len(foon.units), level, estimated)
 
 
 def graphml_graphs(foon: Foon, result: Analysis) -> dict[str, nx.Graph]:

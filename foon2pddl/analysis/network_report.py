@@ -10,7 +10,7 @@ from pathlib import Path
 import networkx as nx
 
 from ..io.atomic import atomic_write_many
-from .network import Analysis
+from .network import BETWEENNESS_WORK, Analysis
 
 KEYS = (("degree_centrality", "degree centrality"), ("betweenness", "betweenness centrality"))
 #: Characters XML 1.0 cannot hold even as references (controls but tab and newlines, surrogates, U+FFFE,
@@ -45,6 +45,8 @@ def format_text(a: Analysis, top: int) -> str:
     lines = [f"{a.object_count} {what}, {len(a.motions)} motions, {a.unit_count} units; "
              f"{len(a.components)} connected component(s), sizes {', '.join(map(str, a.components[:10]))}"
              + (" ..." if len(a.components) > 10 else "")]
+    lines += [f"betweenness of {which} estimated from {k} sampled source nodes (exact betweenness would exceed "
+              f"{BETWEENNESS_WORK:,} edge visits)" for which, k in a.sampled]
     for which in ("objects", "motions"):
         for key, title in KEYS:
             lines.append(f"\ntop {top} {which} by {title}:")
@@ -56,6 +58,7 @@ def format_text(a: Analysis, top: int) -> str:
 def to_json(a: Analysis, top: int) -> str:
     data = {"level": a.level, "objects": a.object_count, "motions": len(a.motions), "units": a.unit_count,
             "components": list(a.components),
+            **({"betweenness_sampled": dict(a.sampled)} if a.sampled else {}),
             "top": {which: {key: [r.as_dict() for r in a.top(which, key, top)] for key, _ in KEYS}
                     for which in ("objects", "motions")}}
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"

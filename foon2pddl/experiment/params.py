@@ -17,10 +17,12 @@ worker by value), `trial` parameters only redraw the trials.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
+from ..errors import UsageError
 from ..model.foon import Foon
 from ..model.kitchen import Kitchen
 from .bans import ban_motions, exclude_objects
@@ -91,6 +93,8 @@ assert all(p.field is None or p.field in _PROTOCOL_FIELDS for p in PARAMS.values
 
 #: A point of a sweep: swept parameter name -> value, in sweep order.
 Point = tuple[tuple[str, Any], ...]
+#: Most points a sweep's grid may have (each point is a whole run of the grid: trials, goals, networks).
+MAX_POINTS = 1000
 
 
 def get_param(name: str) -> Param:
@@ -117,8 +121,16 @@ def parse_sweep(text: str) -> tuple[str, tuple[Any, ...]]:
     return param.name, tuple(dict.fromkeys(parsed))
 
 
+def check_grid(sweeps: Sequence[tuple[str, tuple[Any, ...]]]) -> None:
+    """UsageError when the sweep's grid has more than MAX_POINTS points (counted, not built)."""
+    size = math.prod(len(v) for _, v in sweeps)
+    if size > MAX_POINTS:
+        shape = " x ".join(f"{len(v)} {n}" for n, v in sweeps)
+        raise UsageError(f"the sweep's grid has {size:,} points ({shape}); at most {MAX_POINTS:,} are run")
+
+
 def points(sweeps: Sequence[tuple[str, tuple[Any, ...]]]) -> tuple[Point, ...]:
-    """Every combination of the swept values (one empty point without sweeps)."""
+    """Every combination of the swept values (one empty point without sweeps); see `check_grid`."""
     names = [n for n, _ in sweeps]
     return tuple(tuple(zip(names, combo, strict=True)) for combo in itertools.product(*(v for _, v in sweeps)))
 

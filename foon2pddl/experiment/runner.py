@@ -32,7 +32,7 @@ from ..io.atomic import atomic_write
 from . import collector
 from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
 from .networks import NETWORKS, NetworkView
-from .params import Point, points
+from .params import Point, check_grid, points
 from .progress import OFF, Progress, default_mode
 from .protocol import Protocol, Trial
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
@@ -286,6 +286,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
     for name in config.networks:
         if name not in NETWORKS:
             raise UsageError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
+    check_grid(config.sweeps)
     check_requirements(config)
     try:
         return _run_checked(config, progress, fresh, settle, t0)
