@@ -185,3 +185,18 @@ def test_every_state_of_a_trace_has_one_holder_per_object(cartons, cups):
             holders[a.args[1]] = a.args[0]
     # every cream starts in a carton that lists it, each in its own carton
     assert sorted(holders.values()) == sorted(x.name for x in task.instances if x.label == "carton")
+
+
+def test_the_kitchen_is_completed_with_the_holders_and_contents_it_names():
+    pot, noodle = n("pot", contains("water"), make_state("on", "stove")), n("noodle", inside("pouch"))
+    cooked = n("pot", contains("noodle", "water"), make_state("on", "stove"))
+    boil = FunctionalUnit((pot, noodle), Motion("add"), (cooked,))
+    task = compile_task(Foon((boil,)), Kitchen(frozenset({pot, noodle})), Goal(GoalSpec("pot"), (cooked,)),
+                        "relational")
+    held = {(a.predicate, *a.args) for a in task.init if a.predicate in ("in", "on")}
+    # a pouch, a stove and the water FOON only names
+    assert held == {("in", "pouch_1", "noodle_1"), ("in", "pot_1", "water_1"), ("on", "stove_1", "pot_1")}
+    assert {x.label for x in task.instances} == {"pot", "noodle", "pouch", "stove", "water"}
+    outcome = plan(Foon((boil,)), Kitchen(frozenset({pot, noodle})), Goal(GoalSpec("pot"), (cooked,)), "relational")
+    assert outcome.status == "solved" and replay(outcome.trace).ok
+    assert outcome.trace.contents("pot_1") == ("noodle_1", "water_1")

@@ -27,7 +27,9 @@
   node names a place starts in an object of that label whose node lists it, else
   in the first of that label. A holder the kitchen names but the task has no
   object of (`heavy cream (in [carton])`, no carton in any unit) is added, listing
-  what starts in it (`implied_holders`).
+  what starts in it (`implied_holders`), and so is what a kitchen container lists
+  but the task has no object of (`pot (contains {water})`: `water (in [pot])`,
+  `implied_contents`).
 
 Not modelled: emptiness as a derived predicate (it stays a FOON state), quantities,
 scene kitchens with object ids, generic restoring actions. Requirements: `:strips
@@ -93,6 +95,17 @@ def implied_holders(instances: list[Instance]) -> tuple[ObjectNode, ...]:
     return tuple(make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items()))
 
 
+def implied_contents(instances: list[Instance]) -> tuple[ObjectNode, ...]:
+    """What a kitchen container lists but the task has no object of (`pot (contains {water})`, no water in any
+    unit): one object per label, `water (in [pot])`, sorted by label (the first container listing it)."""
+    have = {x.label for x in instances}
+    wanted: dict[str, ObjectNode] = {}
+    for x in sorted(instances, key=lambda x: x.name):
+        for item in sorted(listed(x.start) - have):
+            wanted.setdefault(item, make_node(item, [make_state("in", x.label)]))
+    return tuple(wanted[k] for k in sorted(wanted))
+
+
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
     """The relational task of `goal` over `foon` (see the module doc), with its label mismatches as notes."""
@@ -114,6 +127,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
     instances, init, precede = _instances(table, counts, const)
     extra = implied_holders(instances)
+    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)])
     for node in extra:
         const[node] = table.name(node.describe(), key=("node", node))
         if node.label not in type_of:
