@@ -48,7 +48,6 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
     from .progress import slow_step
-
     from .reasons import unreachable_reason
 
     if (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:

@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from ..model.constraints import node_labels
 from ..model.containment import is_auxiliary
 from ..model.foon import Foon, dedupe_units, make_state
 from ..model.goal import Goal, GoalSpec, spec_of_node
@@ -58,8 +59,7 @@ def compress(foon: Foon, index: CategoryIndex) -> Compression:
 
 def abstract_kitchen(kitchen: Kitchen, index: CategoryIndex) -> Kitchen:
     """The kitchen with every object replaced by its category (nodes that coincide merge)."""
-    labels = {n.label for n in kitchen.nodes} | {x for n in kitchen.nodes for s in n.states
-                                                 for x in (s.related, *s.ingredients) if x}
+    labels = set().union(*(node_labels(n) for n in kitchen.nodes)) - {""}
     mapping = category_map(sorted(labels), index)
     return Kitchen(frozenset(substitute_node(n, mapping) for n in kitchen.nodes), kitchen.level, kitchen.source)
 

@@ -24,6 +24,7 @@ from pathlib import Path
 
 from ..errors import UsageError
 from ..io.inputs import Network, goal_spec
+from ..model.constraints import node_labels
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from ..model.kitchen import Kitchen
@@ -182,7 +183,7 @@ def _gen(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> Ne
     ix = options.index or load_index()
     c = compress(net.foon, ix)
     note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units"
-    labels = {x for n in kitchen.nodes for x in (n.label, *(y for s in n.states for y in (s.related, *s.ingredients)))}
+    labels = set().union(*(node_labels(n) for n in kitchen.nodes))
     mapping = category_map(sorted(labels - {""}), ix)
     return NetworkView(_GEN, project(c.foon, level), abstract_kitchen(kitchen, ix),
                        lambda spec: abstract_goal(spec, ix), net.at(level), ix, note,

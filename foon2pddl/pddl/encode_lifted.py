@@ -50,6 +50,7 @@ from ..errors import UsageError
 from ..generalize.categories import CategoryIndex, load_index
 from ..generalize.relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
 from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
+from ..model.constraints import node_labels
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -321,8 +322,7 @@ def rename_made(lt: LiftedTask, tree: TaskTree, steps: Sequence[str], kitchen_no
     in every unit and in the goal node; when the renamed tree would not validate (a new name colliding
     with another object), the recipe's names are kept.
     """
-    fixed = frozenset(x for n in kitchen_nodes for x in (n.label, *(y for s in n.states
-                                                                    for y in (s.related, *s.ingredients))) if x)
+    fixed = frozenset().union(*(node_labels(n) for n in kitchen_nodes)) - {""}
     renames = rename_derived(tree.units, plan_bindings(lt, steps), fixed)
     if not renames:
         return tree
