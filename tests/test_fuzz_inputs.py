@@ -158,3 +158,102 @@ def test_hostile_file_names_in_every_writer(tmp_path):
         atomic_write(tmp_path / "out.json", write_json(foon))
         assert parse_json((tmp_path / "out.json").read_text(), "j").units == foon.units
         path.unlink()
+
+
+# ---------------------------------------------------------------- constraints files, scheduler addresses,
+# damaged dependencies, full disks, huge labels: the classes of the newer surfaces
+
+constraint_values = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | hostile_text,
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(hostile_text, inner, max_size=3), max_leaves=8)
+constraint_keys = st.sampled_from(["without_motions", "without", "must_use", "rates", "costs", "name", "x"])
+
+
+@FUZZ
+@given(st.lists(st.tuples(constraint_keys, constraint_values), max_size=5))
+def test_constraints_files(pairs):
+    from foon2pddl.io.constraints_file import parse_constraints
+
+    text = "{" + ",\n".join(f"{json.dumps(k)}: {json.dumps(v)}" for k, v in pairs) + "}"
+    try:
+        cons = parse_constraints(text, "c.json")
+    except FoonSyntaxError as exc:
+        _located(exc, "c.json", text)
+        return
+    assert all(0 < rate <= 1 for _, rate in cons.rates)
+    keys = [k for k, _ in pairs]
+    assert len(set(keys)) == len(keys)  # a key given twice never parses (it would drop a ban silently)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.one_of(hostile_text, st.builds(lambda h, p: f"tcp://{h}:{p}", hostile_text, st.integers(-5, 10**6)),
+                 st.sampled_from(["tcp://[::1", "tcp://127.0.0.1", "nothing", "tls://h:1", "tcp://[::1]:8786"])))
+def test_scheduler_addresses(address):
+    from foon2pddl.errors import UsageError
+    from foon2pddl.experiment.engine import parse_scheduler
+
+    try:
+        where = parse_scheduler(address)
+    except UsageError:
+        return
+    assert where is None or (where[0] and 0 < where[1] < 65536)
+
+
+@FUZZ
+@given(st.sampled_from(["lexnames", "index.noun", "data.noun", "index.sense"]), st.binary(max_size=400))
+def test_damaged_wordnet_files(tmp_path_factory, name, junk):
+    """The first stage of opening a damaged corpus: NLTK's reader over junk raises only what
+    `wordnet.reader` turns into a located error."""
+    from foon2pddl.generalize import wordnet
+
+    nltk_wn = pytest.importorskip("nltk.corpus.reader.wordnet")
+    source = wordnet.locate()[1]
+    base = tmp_path_factory.getbasetemp() / "wn-fuzz" / "corpora" / "wordnet"
+    if not base.is_dir():
+        import shutil
+
+        shutil.copytree(source, base)
+    original = (source / name).read_bytes()
+    try:
+        (base / name).write_bytes(junk + original[len(junk) * 97:][:200_000])
+        try:
+            wn = nltk_wn.WordNetCorpusReader(str(base), None)
+            wordnet.check_corpus(wn)
+        except wordnet._DAMAGE:
+            pass
+    finally:
+        (base / name).write_bytes(original)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 2000))
+def test_writes_on_a_full_disk_leave_the_old_file(tmp_path_factory, limit):
+    """`atomic_write` past the file-size limit (as a full disk) fails and keeps the previous content."""
+    import subprocess
+    import sys
+
+    from conftest import ROOT
+
+    target = tmp_path_factory.getbasetemp() / f"full-{limit}.txt"
+    target.write_text("old\n")
+    code = ("import resource, sys; from foon2pddl.io.atomic import atomic_write\n"
+            f"resource.setrlimit(resource.RLIMIT_FSIZE, ({limit}, {limit}))\n"
+            "try:\n    atomic_write(sys.argv[1], 'x' * 5000)\nexcept OSError:\n    sys.exit(3)\n")
+    proc = subprocess.run([sys.executable, "-c", code, str(target)], env=dict(os.environ, PYTHONPATH=str(ROOT)),
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 3 and "Traceback" not in proc.stderr
+    assert target.read_text() == "old\n"
+    assert sorted(p.name for p in target.parent.glob(f".full-{limit}.txt.*")) == []
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.integers(100, 40_000), hostile_text)
+def test_huge_labels_through_check(tmp_path_factory, length, extra):
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+
+    label = ("ab" * length)[:length] + extra.replace("\t", " ").replace("\n", " ")
+    path = _write(tmp_path_factory, "huge.txt", f"O\t{label}\t0\nS\traw\nM\tslice\nO\t{label}\t0\nS\tsliced\n//\n")
+    r = CliRunner().invoke(main, ["check", path])
+    assert r.exit_code in (0, 1, 2) and (r.exception is None or isinstance(r.exception, SystemExit)), repr(r.exception)

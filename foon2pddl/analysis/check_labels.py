@@ -71,7 +71,7 @@ def _distance_one(a: str, b: str) -> bool:
     if abs(len(a) - len(b)) != 1:
         return False
     short, long_ = sorted((a, b), key=len)
-    i = next((j for j, (x, y) in enumerate(zip(short, long_)) if x != y), len(short))  # first difference
+    i = next((j for j, (x, y) in enumerate(zip(short, long_, strict=False)) if x != y), len(short))  # first difference
     return long_[i + 1:] == short[i:]
 
 

@@ -34,7 +34,6 @@ import uuid
 from collections.abc import Callable, Sequence
 
 from ..errors import FoonError, MissingDependencyError, UsageError
-
 from .progress import Progress
 from .records import CellStatus, Record
 from .worker import Batch, Job, dask_task, run_batch
