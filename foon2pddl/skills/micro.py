@@ -17,7 +17,8 @@ skill (pick-and-place) stay `graspable`, and their phase changes are tagged with
 skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
 are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
 puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is
-a step object that holds nothing and stays where it is (knife, spoon, whisk; it may get dirty).
+a step object that holds nothing, stays where it is, and keeps its phase or becomes `dirty`
+(knife, spoon, whisk).
 
 Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
 stay as they are), with the domain's constants, the workspace and the hands
@@ -41,6 +42,8 @@ from .domain import TRANSPORT, SkillDomain
 __all__ = ["MicroProblem", "Naming", "dynamic_facts", "micro_problem", "phase_of", "step_objects"]
 
 WORKSPACE = "workspace"
+#: The phase FOON gives a utensil after use: a tool may end in it (a spoon gets dirty), not in any other.
+USED = "dirty"
 _RELATIONAL = {"contains", "empty"}
 
 
@@ -193,7 +196,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
             statics.add(Atom("surface", (n[oid],)))
         b, a = before[oid], after[oid]
         if (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
-                and (b.holder, b.relation) == (a.holder, a.relation)):
+                and (b.holder, b.relation) == (a.holder, a.relation)
+                and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node))):
             statics.add(Atom("tool", (n[oid],)))
     hands = {Atom("hand-empty", (h,)) for h in naming.hands}
     init = tuple(sorted(dynamic_facts(naming, before, ids) | hands | statics | {Atom("placed", (ws,))}))
