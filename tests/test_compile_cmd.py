@@ -109,3 +109,12 @@ def test_unreachable_goal_in_a_batch_is_an_unreachable_row_without_files(tmp_pat
     assert [r["status"] for r in rows] == ["unreachable", "unmatched"]
     assert "nodes no unit makes" in rows[0]["reason"]
     assert not (tmp_path / "out" / "bloody_mary").exists()
+
+
+def test_gen_header_names_the_kitchen_file_and_counts_in_the_singular(tmp_path):
+    result = _run("--network", "gen", "--encoding", "gen-lifted", "--goal", "guacamole", "-o", str(tmp_path))
+    assert result.exit_code == 0, result.output
+    lines = (tmp_path / "domain.pddl").read_text().splitlines()
+    assert "; goal: guacamole (1 candidate node)" in lines
+    kitchen = next(line for line in lines if line.startswith("; kitchen: "))
+    assert kitchen.startswith("; kitchen: example_kitchen.txt (") and "/" not in kitchen

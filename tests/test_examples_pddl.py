@@ -84,3 +84,26 @@ def test_instances_problems_solve_with_pyperplan_and_replay_at_the_instance_leve
     task = compile_task(net.at(3), load_kitchen(None, net, 3), target, "instances")
     trace = instance_trace(task, [op.name.strip("()") for op in plan])
     assert check_states(trace, target.candidates).ok
+
+
+def _committed_encodings():
+    return sorted(p.name for p in (ROOT / "domains").iterdir() if p.is_dir())
+
+
+def test_docs_state_the_committed_file_count():
+    count = sum(1 for top in ("domains", "problems") for _ in (ROOT / top).glob("*/*.pddl"))
+    text = " ".join((ROOT / "docs" / "pddl.md").read_text().split())
+    assert f"all {count} files parse" in text
+
+
+def test_domains_readme_lists_every_committed_encoding():
+    text = (ROOT / "domains" / "README.md").read_text()
+    assert [e for e in _committed_encodings() if f"`{e}`" not in text] == []
+
+
+def test_planning_usage_line_lists_every_encoding():
+    from foon2pddl.pddl.compile import ENCODINGS
+
+    usage = next(line for line in (ROOT / "docs" / "planning.md").read_text().splitlines()
+                 if line.startswith("foon2pddl plan --goal G"))
+    assert f"--encoding {'|'.join(ENCODINGS)}]" in usage

@@ -56,7 +56,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.tasktree import TaskTree, validate
-from .encoding import GOAL_REACHED, EncodeOptions, goal_actions, unit_comment
+from .encoding import GOAL_REACHED, EncodeOptions, goal_actions, goal_kitchen_lines, unit_comment
 from .lifted_atoms import Shape, node_atom_labels, representations, shape_label
 from .names import NameTable
 from .registry import Compiled, PlanDecodeError
@@ -275,8 +275,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         labels=names.table.labels,
         comments=(f"foon2pddl, lifted FOON-GEN (categories as types), level {level}: "
                   f"{len(lifted)} lifted units from {len(f.units)} units",
-                  f"goal: {goal.describe()} ({len(candidates)} candidate nodes)",
-                  f"kitchen: {kitchen.source or 'given'} ({len(kitchen_nodes)} nodes)"),
+                  *goal_kitchen_lines(goal.describe(), len(candidates), kitchen.source, len(kitchen_nodes))),
     )
     return LiftedTask(task, lifted, level, {n: s for s, n in names.shapes.items()},
                       {name: label for label, (name, _) in declared.items()})

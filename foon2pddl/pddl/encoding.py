@@ -137,15 +137,22 @@ def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     return (first, text)
 
 
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
+
+
+def goal_kitchen_lines(goal: str, candidates: int, kitchen_source: str | None, kitchen_nodes: int) -> tuple[str, str]:
+    """The header's goal and kitchen lines (every encoding's): file names only, counts with their noun."""
+    return (f"goal: {goal} ({_count(candidates, 'candidate node')})",
+            f"kitchen: {(short_path(kitchen_source) if kitchen_source else '') or 'given'} ({_count(kitchen_nodes, 'node')})")
+
+
 def header(encoding: str, inp: LevelInputs, options: EncodeOptions, kept: int) -> tuple[str, ...]:
     """Header comment lines shared by the domain and problem files."""
     total = len(inp.foon.units)
     pruning = f"{kept} of {total} units after relevance pruning" if options.prune else f"all {total} units"
-    lines = [
-        f"foon2pddl, encoding {encoding}, level {inp.level}: {pruning}",
-        f"goal: {inp.goal.describe()} ({len(inp.candidates)} candidate node{'s' if len(inp.candidates) != 1 else ''})",
-        f"kitchen: {short_path(inp.kitchen_source) or 'given'} ({len(inp.kitchen)} nodes)",
-    ]
+    lines = [f"foon2pddl, encoding {encoding}, level {inp.level}: {pruning}",
+             *goal_kitchen_lines(inp.goal.describe(), len(inp.candidates), inp.kitchen_source, len(inp.kitchen))]
     if options.costs:
         costs = options.costs
         if options.costs == "success-rate" and options.rates is not None:
