@@ -13,7 +13,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Sourc
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
-from foon2pddl.pddl.names import MAX_LENGTH, RESERVED, NameTable, comment, sanitize
+from foon2pddl.pddl.names import MAX_LENGTH, RESERVED, NameTable, comment, is_valid_name, sanitize
 from foon2pddl.pddl.render import render
 
 VALID = re.compile(r"[a-z][a-z0-9_-]*\Z")
@@ -118,3 +118,29 @@ def test_hostile_labels_render_to_pddl_that_parses_with_the_same_structure(case,
     for line in (domain_text + problem_text).splitlines():
         code = line.split(";", 1)[0]
         assert re.fullmatch(r"[a-z0-9_\-?:() =]*", code), line
+
+
+# labels whose names are cut: a long shared prefix (the collision case) or long random letters, then any text
+_LONG = st.tuples(st.one_of(st.just("bloody mary contains " + "celery salt lemon juice " * 3),
+                            st.text(alphabet="abcdefghij", min_size=85, max_size=120)),
+                  st.text(alphabet="abcdefghij ,()_-\u00e9", max_size=40)).map("".join)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(_LONG, min_size=2, max_size=8, unique=True), st.lists(_LONG, max_size=6))
+def test_truncated_names_are_distinct_and_independent_of_the_table(labels, others):
+    alone = {label: NameTable().name(label) for label in labels}
+    crowded = NameTable()
+    for other in others:
+        crowded.name(other)
+    names = {label: crowded.name(label) for label in labels}
+    assert len(set(alone.values())) == len(labels)
+    assert names == alone
+    assert all(len(n) <= 80 and is_valid_name(n) for n in alone.values())
+
+
+def test_truncated_name_ends_with_a_digest_of_the_whole_label():
+    stem = "stir-fried rice contains " + ", ".join(f"ingredient {i}" for i in range(12))
+    a, b = NameTable().name(stem + " to a"), NameTable().name(stem + " to b")
+    assert a != b and a[:60] == b[:60] and "-2" not in a + b
+    assert a.rsplit("__", 1)[1] != b.rsplit("__", 1)[1]

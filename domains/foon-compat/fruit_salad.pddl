@@ -40,7 +40,7 @@
     flour_powder - object_node
     fork - object_node
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl - object_node
-    fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c - object_node
+    fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d - object_node
     heavy_cream_in_carton - object_node
     heavy_cream_in_mixing_bowl - object_node
     honey_in_bowl - object_node
@@ -507,7 +507,7 @@
     )
     :effect (and
       (is_available bowl_contains_fruit_salad_whipped_cream)
-      (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
       (is_available spoon)
       (is_available whipped_cream_on_fruit_salad_whipped)
     )

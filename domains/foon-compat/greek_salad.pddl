@@ -18,8 +18,8 @@
     bowl_contains_avocado_lime_juice - object_node
     bowl_contains_avocado_lime_juice_onion - object_node
     bowl_contains_avocado_lime_juice_onion_tomato - object_node
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine - object_node
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar - object_node
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6 - object_node
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4 - object_node
     bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato - object_node
     bowl_contains_black_olive_cucumber_onion_tomato - object_node
     bowl_contains_cucumber - object_node
@@ -40,7 +40,7 @@
     feta_cheese_crumbled - object_node
     feta_cheese_crumbled_in_bowl - object_node
     fork - object_node
-    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re - object_node
+    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915 - object_node
     juicer_contains_lime_juice - object_node
     juicer_empty - object_node
     knife - object_node
@@ -425,7 +425,7 @@
       (is_available red_wine_vinegar_in_bottle)
     )
     :effect (and
-      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is_available olive_oil_in_bowl)
       (is_available red_wine_vinegar_in_bowl)
     )
@@ -436,11 +436,11 @@
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
     :parameters ()
     :precondition (and
-      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is_available oregano_dried)
     )
     :effect (and
-      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is_available oregano_in_bowl)
     )
   )
@@ -451,7 +451,7 @@
     :parameters ()
     :precondition (and
       (is_available black_olive_in_bowl_pitted)
-      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is_available bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is_available cucumber_in_bowl_sliced)
       (is_available feta_cheese_crumbled_in_bowl)
       (is_available olive_oil_in_bowl)
@@ -463,7 +463,7 @@
     )
     :effect (and
       (is_available bowl_contains_greek_salad)
-      (is_available greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+      (is_available greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
       (is_available salad_tongs)
     )
   )

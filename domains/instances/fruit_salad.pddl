@@ -43,7 +43,7 @@
     cutting_board_contains_strawberry - object-state
     cutting_board_empty - object-state
     fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl - object-state
-    fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c - object-state
+    fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d - object-state
     heavy_cream_in_carton - object-state
     heavy_cream_in_mixing_bowl - object-state
     honey_in_bowl - object-state
@@ -366,8 +366,8 @@
     :effect (and
       (is ?bowl bowl_contains_fruit_salad_whipped_cream)
       (occupied bowl_contains_fruit_salad_whipped_cream)
-      (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
-      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
+      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
       (is ?whipped_cream whipped_cream_on_fruit_salad_whipped)
       (occupied whipped_cream_on_fruit_salad_whipped)
       (not (is ?bowl bowl_contains_fruit_salad))
@@ -380,7 +380,7 @@
     ; goal candidate 1: fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
     :parameters ()
     :precondition (and
-      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
     )
     :effect (and
       (goal-reached)

@@ -28,8 +28,8 @@
     bowl_contains_avocado_lime_juice - object-state
     bowl_contains_avocado_lime_juice_onion - object-state
     bowl_contains_avocado_lime_juice_onion_tomato - object-state
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine - object-state
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar - object-state
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6 - object-state
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4 - object-state
     bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato - object-state
     bowl_contains_black_olive_cucumber_onion_tomato - object-state
     bowl_contains_cucumber - object-state
@@ -47,7 +47,7 @@
     cutting_board_empty - object-state
     feta_cheese_crumbled - object-state
     feta_cheese_crumbled_in_bowl - object-state
-    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re - object-state
+    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915 - object-state
     knife_plain - object-state
     olive_oil_in_bottle - object-state
     olive_oil_in_bowl - object-state
@@ -330,7 +330,7 @@
       (is ?red_wine_vinegar red_wine_vinegar_in_bottle)
     )
     :effect (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is ?olive_oil olive_oil_in_bowl)
       (occupied olive_oil_in_bowl)
       (is ?red_wine_vinegar red_wine_vinegar_in_bowl)
@@ -346,14 +346,14 @@
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
     :parameters (?bowl - bowl ?oregano - oregano)
     :precondition (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is ?oregano oregano_dried)
     )
     :effect (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is ?oregano oregano_in_bowl)
       (occupied oregano_in_bowl)
-      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar))
+      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4))
       (not (is ?oregano oregano_dried))
     )
   )
@@ -363,7 +363,7 @@
     ; toss: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), cucumber (in [bowl], sliced), tomato (chopped, in [bowl]), onion (in [bowl], sliced), black olive (in [bowl], pitted), feta ...
     :parameters (?bowl - bowl ?greek_salad - greek_salad)
     :precondition (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (occupied cucumber_in_bowl_sliced)
       (occupied tomato_chopped_in_bowl)
       (occupied onion_in_bowl_sliced)
@@ -378,9 +378,9 @@
     :effect (and
       (is ?bowl bowl_contains_greek_salad)
       (occupied bowl_contains_greek_salad)
-      (is ?greek_salad greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
-      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
-      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine))
+      (is ?greek_salad greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
+      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
+      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6))
       (not (is ?greek_salad not-yet-made))
     )
   )
@@ -389,7 +389,7 @@
     ; goal candidate 1: greek salad (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}, in [bowl])
     :parameters ()
     :precondition (and
-      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
     )
     :effect (and
       (goal-reached)

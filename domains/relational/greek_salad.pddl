@@ -30,8 +30,8 @@
     bowl_contains_avocado_lime_juice - object-state
     bowl_contains_avocado_lime_juice_onion - object-state
     bowl_contains_avocado_lime_juice_onion_tomato - object-state
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine - object-state
-    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar - object-state
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6 - object-state
+    bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4 - object-state
     bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato - object-state
     bowl_contains_black_olive_cucumber_onion_tomato - object-state
     bowl_contains_cucumber - object-state
@@ -51,7 +51,7 @@
     feta_cheese_crumbled - object-state
     feta_cheese_crumbled_in_bowl - object-state
     feta_cheese_crumbled_in_greek_salad - object-state
-    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re - object-state
+    greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915 - object-state
     knife_plain - object-state
     olive_oil_in_bottle - object-state
     olive_oil_in_bowl - object-state
@@ -356,7 +356,7 @@
       (is ?red_wine_vinegar red_wine_vinegar_in_bottle)
     )
     :effect (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is ?olive_oil olive_oil_in_bowl)
       (in ?bowl ?olive_oil)
       (is ?red_wine_vinegar red_wine_vinegar_in_bowl)
@@ -374,14 +374,14 @@
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
     :parameters (?bowl - bowl ?oregano - oregano)
     :precondition (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is ?oregano oregano_dried)
     )
     :effect (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is ?oregano oregano_in_bowl)
       (in ?bowl ?oregano)
-      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar))
+      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4))
       (not (is ?oregano oregano_dried))
     )
   )
@@ -391,7 +391,7 @@
     ; toss: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), cucumber (in [bowl], sliced), tomato (chopped, in [bowl]), onion (in [bowl], sliced), black olive (in [bowl], pitted), feta ...
     :parameters (?bowl - bowl ?cucumber - cucumber ?tomato - tomato ?onion - onion ?black_olive - black_olive ?feta_cheese - feta_cheese ?olive_oil - olive_oil ?red_wine_vinegar - red_wine_vinegar ?oregano - oregano ?greek_salad - greek_salad)
     :precondition (and
-      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is ?cucumber cucumber_in_bowl_sliced)
       (in ?bowl ?cucumber)
       (is ?tomato tomato_chopped_in_bowl)
@@ -438,10 +438,10 @@
       (is ?oregano oregano_in_greek_salad)
       (occupied oregano_in_greek_salad)
       (in ?greek_salad ?oregano)
-      (is ?greek_salad greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
-      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+      (is ?greek_salad greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
+      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
       (in ?bowl ?greek_salad)
-      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine))
+      (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6))
       (not (is ?cucumber cucumber_in_bowl_sliced))
       (not (in ?bowl ?cucumber))
       (not (is ?tomato tomato_chopped_in_bowl))
@@ -466,7 +466,7 @@
     ; goal candidate 1: greek salad (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}, in [bowl])
     :parameters ()
     :precondition (and
-      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+      (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
     )
     :effect (and
       (goal-reached)

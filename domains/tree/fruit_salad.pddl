@@ -37,7 +37,7 @@
     (flour_powder)  ; flour (powder)
     (fork)  ; fork
     (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)  ; fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl])
-    (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)  ; fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
+    (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)  ; fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl], topped {whipped cream})
     (heavy_cream_in_carton)  ; heavy cream (in [carton])
     (heavy_cream_in_mixing_bowl)  ; heavy cream (in [mixing bowl])
     (honey_in_bowl)  ; honey (in [bowl])
@@ -501,7 +501,7 @@
     )
     :effect (and
       (bowl_contains_fruit_salad_whipped_cream)
-      (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+      (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
       (spoon)
       (whipped_cream_on_fruit_salad_whipped)
     )

@@ -15,8 +15,8 @@
     (bowl_contains_avocado_lime_juice)  ; bowl (contains {avocado, lime juice})
     (bowl_contains_avocado_lime_juice_onion)  ; bowl (contains {avocado, lime juice, onion})
     (bowl_contains_avocado_lime_juice_onion_tomato)  ; bowl (contains {avocado, lime juice, onion, tomato})
-    (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)  ; bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato})
-    (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)  ; bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato})
+    (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)  ; bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato})
+    (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)  ; bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato})
     (bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)  ; bowl (contains {black olive, cucumber, feta cheese, onion, tomato})
     (bowl_contains_black_olive_cucumber_onion_tomato)  ; bowl (contains {black olive, cucumber, onion, tomato})
     (bowl_contains_cucumber)  ; bowl (contains {cucumber})
@@ -37,7 +37,7 @@
     (feta_cheese_crumbled)  ; feta cheese (crumbled)
     (feta_cheese_crumbled_in_bowl)  ; feta cheese (crumbled, in [bowl])
     (fork)  ; fork
-    (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)  ; greek salad (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}, in [bowl])
+    (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)  ; greek salad (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}, in [bowl])
     (juicer_contains_lime_juice)  ; juicer (contains {lime juice})
     (juicer_empty)  ; juicer (empty)
     (knife)  ; knife
@@ -419,7 +419,7 @@
       (red_wine_vinegar_in_bottle)
     )
     :effect (and
-      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (olive_oil_in_bowl)
       (red_wine_vinegar_in_bowl)
     )
@@ -430,11 +430,11 @@
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
     :parameters ()
     :precondition (and
-      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_wine_vinegar)
+      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (oregano_dried)
     )
     :effect (and
-      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (oregano_in_bowl)
     )
   )
@@ -445,7 +445,7 @@
     :parameters ()
     :precondition (and
       (black_olive_in_bowl_pitted)
-      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_red_wine)
+      (bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (cucumber_in_bowl_sliced)
       (feta_cheese_crumbled_in_bowl)
       (olive_oil_in_bowl)
@@ -457,7 +457,7 @@
     )
     :effect (and
       (bowl_contains_greek_salad)
-      (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+      (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
       (salad_tongs)
     )
   )

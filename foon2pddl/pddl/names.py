@@ -9,6 +9,7 @@ deterministic: the same calls in the same order give the same names.
 
 from __future__ import annotations
 
+import hashlib
 import re
 import unicodedata
 
@@ -29,6 +30,9 @@ RESERVED: frozenset[str] = frozenset(
 
 #: Longest base name kept before a collision suffix (labels with ingredient lists get long).
 MAX_LENGTH = 80
+
+#: Hex digits of the full label's digest that a truncated name ends with.
+DIGEST_LENGTH = 8
 
 _SEPARATORS = re.compile(r"[_-]{2,}")
 _VALID = re.compile(r"[a-z][a-z0-9_-]*\Z")
@@ -56,14 +60,19 @@ def _ascii_chars(text: str) -> str:
 
 
 def sanitize(label: str, max_length: int = MAX_LENGTH) -> str:
-    """A valid, readable PDDL name for `label` (`[a-z][a-z0-9_-]*`, never a reserved word); not unique."""
+    """A valid, readable PDDL name for `label` (`[a-z][a-z0-9_-]*`, never a reserved word); not unique.
+
+    A name longer than `max_length` is cut and ends with `__` and a digest of the whole label (SHA-256,
+    `DIGEST_LENGTH` hex digits), so long labels that share a prefix get different, order-independent names.
+    """
     name = _SEPARATORS.sub(lambda m: "-" if "-" in m.group() else "_", _ascii_chars(label)).strip("_-")
     if not name:
         name = "x"
     elif not name[0].isalpha():
         name = "x_" + name
     if len(name) > max_length:
-        name = name[:max_length].rstrip("_-")
+        digest = hashlib.sha256(label.encode("utf-8", "surrogatepass")).hexdigest()[:DIGEST_LENGTH]
+        name = name[: max(1, max_length - DIGEST_LENGTH - 2)].rstrip("_-") + "__" + digest
     if name in RESERVED:
         name += "_"
     return name
@@ -78,7 +87,9 @@ class NameTable:
     """Collision-free PDDL names for labels in one namespace, with the mapping kept.
 
     `name(key, label)` returns the same name for the same key every time; a new
-    key whose sanitized label is taken gets the first free `-2`, `-3`, ... suffix.
+    key whose sanitized label is taken gets the first free `-2`, `-3`, ... suffix
+    (a truncated label's name carries its digest, so only short labels that
+    sanitize alike, or a digest collision, get one).
     `key` defaults to the label; give another (hashable) key when different
     things can share a label (an object label and a state label, say).
     """

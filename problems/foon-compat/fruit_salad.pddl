@@ -25,6 +25,6 @@
     (is_available whisk)
   )
   (:goal (and
-    (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+    (is_available fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
   ))
 )

@@ -23,6 +23,6 @@
     (is_available tomato_whole)
   )
   (:goal (and
-    (is_available greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+    (is_available greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
   ))
 )

@@ -25,6 +25,6 @@
     (whisk)
   )
   (:goal (and
-    (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped_whipped_c)
+    (fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
   ))
 )

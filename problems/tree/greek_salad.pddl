@@ -23,6 +23,6 @@
     (tomato_whole)
   )
   (:goal (and
-    (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano_re)
+    (greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
   ))
 )
