@@ -38,7 +38,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
                   table_fmt: str, **encoder_options) -> None:
     """DIR/<goal>/domain.pddl and problem.pddl per goal (all written atomically at the end), and the table."""
     from ..io.atomic import atomic_write_many
-    from ..pddl.compile import compile_task
+    from ..pddl.compile import compile_task, encoding_named
     from ..pddl.render import render
 
     rows, files = [], {}
@@ -49,10 +49,10 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         if goal is None:
             rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             continue
-        task = None
-        if (why := unreachable_reason(view.foon, view.kitchen, goal)) is None:
+        task, fixpoint = None, not encoding_named(encoding).lifted  # (see `unreachable_reason`)
+        if (why := unreachable_reason(view.foon, view.kitchen, goal, fixpoint=fixpoint)) is None:
             task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
-            why = unreachable_reason(view.foon, view.kitchen, goal, task)
+            why = unreachable_reason(view.foon, view.kitchen, goal, task, fixpoint=fixpoint)
         if why is not None:
             rows.append(_row(entry, goal, BatchStatus.UNREACHABLE, time.perf_counter() - t0, why))
             continue

@@ -50,12 +50,13 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     from .progress import slow_step
     from .reasons import unreachable_reason
 
-    if (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
+    fixpoint = not encoding_named(encoding).lifted  # (see `unreachable_reason`)
+    if fixpoint and (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
         task = compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
                             **encoder_options(encoding, instances, category_types, view.foon))
-    if (why := unreachable_reason(view.foon, view.kitchen, target, task)) is not None:
+    if (why := unreachable_reason(view.foon, view.kitchen, target, task, fixpoint=fixpoint)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     return task
 

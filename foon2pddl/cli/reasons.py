@@ -52,16 +52,18 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
            "encoding (see its message)", True
 
 
-def unreachable_reason(foon, kitchen, goal, task=None) -> str | None:
+def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True) -> str | None:
     """Why nothing makes `goal` from `kitchen` (the words `retrieve` gives), or None when something may.
 
     FOON's fixpoint decides for a ground goal (O(network)); a compiled `task` with no unit action
     whose goal is not already true at the start is unsolvable too (constraints, the lifted encoding).
+    `fixpoint=False` skips the first test: a lifted encoding grounds categories to kitchen objects the
+    concrete network's fixpoint does not see (the recipe's lemon, the kitchen's lime).
     """
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
 
-    if hasattr(goal, "candidates") and not any(reachable(foon, kitchen.nodes).can_make(c) for c in goal.candidates):
+    if fixpoint and hasattr(goal, "candidates") and not any(reachable(foon, kitchen.nodes).can_make(c) for c in goal.candidates):
         return explain_unreachable(foon, kitchen.nodes, goal)
     if task is not None and not any(a.unit is not None for a in task.actions) and not set(task.goal) <= set(task.init):
         return "no unit of the network is left on a way to it, and the kitchen does not hold it"

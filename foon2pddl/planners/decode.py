@@ -195,7 +195,8 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
         if repeats:
             notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
-    if compiled.foon_semantics and not compiled.every_step:
+    # (not after a `finish` that renames the tree's units: its units are not the plan's any more)
+    if compiled.foon_semantics and not compiled.every_step and compiled.finish is None:
         notes += unneeded_steps_note(compiled, steps, tree)
     # a task compiled under --containment infer holds inference units: validate under the same rule
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
