@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import click
 import pddl.parser.domain
 from click.testing import CliRunner
@@ -26,7 +28,7 @@ def test_compile_writes_domain_and_problem_and_says_where(tmp_path):
     problem = (tmp_path / "out" / "problem.pddl").read_text()
     assert str(tmp_path / "out" / "domain.pddl") in result.output
     assert pddl.parser.domain.DomainParser()(domain).actions
-    assert "(:domain foon-tree)" in problem and "bloody_mary" in problem
+    assert re.search(r"\(:domain foon-tree-[0-9a-f]{8}\)", problem) and "bloody_mary" in problem
     assert not [p for p in (tmp_path / "out").iterdir() if p.name.startswith(".")]  # no temporary left
 
 
@@ -35,7 +37,7 @@ def test_options_reach_the_encoder(tmp_path):
                   "--costs", "success-rate", "--rates", str(SEARCH_INPUTS / "motion.txt"), "-o", str(tmp_path))
     assert result.exit_code == 0, result.output
     domain = (tmp_path / "domain.pddl").read_text()
-    assert "(define (domain foon-state)" in domain and "level 2: all " in domain
+    assert "(define (domain foon-state-" in domain and "level 2: all " in domain
     assert "(increase (total-cost) " in domain and "rates: motion.txt" in domain
 
 
@@ -118,3 +120,15 @@ def test_gen_header_names_the_kitchen_file_and_counts_in_the_singular(tmp_path):
     assert "; goal: guacamole (1 candidate node)" in lines
     kitchen = next(line for line in lines if line.startswith("; kitchen: "))
     assert kitchen.startswith("; kitchen: example_kitchen.txt (") and "/" not in kitchen
+
+
+def test_domain_name_identifies_the_domain_and_the_problem_names_it(tmp_path):
+    names = {}
+    for goal in ("guacamole", "whipped cream", "guacamole"):
+        out = tmp_path / goal
+        assert _run("--goal", goal, "--prune", "-o", str(out)).exit_code == 0
+        domain, problem = (out / "domain.pddl").read_text(), (out / "problem.pddl").read_text()
+        name = re.search(r"\(define \(domain (foon-tree-[0-9a-f]{8})\)", domain).group(1)
+        assert f"(:domain {name})" in problem
+        names.setdefault(goal, set()).add(name)
+    assert len(names["guacamole"]) == 1 and names["guacamole"] != names["whipped cream"]

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 15 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-b56ff802)
   (:requirements :strips :typing)
   (:types
     object_node - object

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 29 of 101 units after relevance pruning
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-3715f6aa)
   (:requirements :strips :typing)
   (:types
     object_node - object

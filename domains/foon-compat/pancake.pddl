@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 16 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-5c5f0a9f)
   (:requirements :strips :typing)
   (:types
     object_node - object

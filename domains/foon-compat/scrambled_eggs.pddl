@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 32 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-af98fa93)
   (:requirements :strips :typing)
   (:types
     object_node - object

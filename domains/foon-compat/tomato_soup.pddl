@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-2666a12f)
   (:requirements :strips :typing)
   (:types
     object_node - object

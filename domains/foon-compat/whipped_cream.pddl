@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 11 of 101 units after relevance pruning
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon)
+(define (domain universal_foon-ff25cfc1)
   (:requirements :strips :typing)
   (:types
     object_node - object

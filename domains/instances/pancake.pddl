@@ -2,7 +2,7 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-(define (domain foon-instances)
+(define (domain foon-instances-5358e0c9)
   (:requirements :strips :typing)
   (:types
     physical-object - object

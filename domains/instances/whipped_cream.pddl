@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-instances)
+(define (domain foon-instances-053cb20b)
   (:requirements :strips :typing)
   (:types
     physical-object - object

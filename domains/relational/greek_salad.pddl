@@ -2,7 +2,7 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
-(define (domain foon-relational)
+(define (domain foon-relational-12e73e08)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

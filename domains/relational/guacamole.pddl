@@ -2,7 +2,7 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-(define (domain foon-relational)
+(define (domain foon-relational-974229da)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

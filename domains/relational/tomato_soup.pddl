@@ -2,7 +2,7 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
-(define (domain foon-relational)
+(define (domain foon-relational-dfac1dd6)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-relational)
+(define (domain foon-relational-aa8008c1)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

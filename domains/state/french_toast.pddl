@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 20 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-0471a1d7)
   (:requirements :strips)
   (:constants
     baking_powder

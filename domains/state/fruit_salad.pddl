@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 28 of 101 units after relevance pruning
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-b8632e42)
   (:requirements :strips)
   (:constants
     avocado

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 34 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-3d9db31a)
   (:requirements :strips)
   (:constants
     avocado

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 44 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-50733d28)
   (:requirements :strips)
   (:constants
     avocado

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 51 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-205726d4)
   (:requirements :strips)
   (:constants
     avocado

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-2173096e)
   (:requirements :strips)
   (:constants
     basil

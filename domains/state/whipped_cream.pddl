@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 10 of 101 units after relevance pruning
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state)
+(define (domain foon-state-e6102523)
   (:requirements :strips)
   (:constants
     baking_powder

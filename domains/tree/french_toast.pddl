@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 15 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-67099421)
   (:requirements :strips)
   (:predicates
     (bowl_contains_cinnamon_egg_milk_vanilla_extract)  ; bowl (contains {cinnamon, egg, milk, vanilla extract})

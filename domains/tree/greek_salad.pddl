@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 26 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-9e756b3e)
   (:requirements :strips)
   (:predicates
     (avocado_halved_on_cutting_board)  ; avocado (halved, on [cutting board])

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 37 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-2ea69921)
   (:requirements :strips)
   (:predicates
     (avocado_halved_on_cutting_board)  ; avocado (halved, on [cutting board])

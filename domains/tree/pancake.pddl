@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 16 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-e21f0f4a)
   (:requirements :strips)
   (:predicates
     (baking_powder_in_mixing_bowl)  ; baking powder (in [mixing bowl])

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-5531a350)
   (:requirements :strips)
   (:predicates
     (basil_fresh)  ; basil (fresh)

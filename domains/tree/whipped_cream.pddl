@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 11 of 101 units after relevance pruning
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree)
+(define (domain foon-tree-19d2f7e4)
   (:requirements :strips)
   (:predicates
     (baking_powder_in_mixing_bowl)  ; baking powder (in [mixing bowl])

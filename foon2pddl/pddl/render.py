@@ -9,6 +9,9 @@ the task: same task, same bytes.
 
 from __future__ import annotations
 
+import hashlib
+from dataclasses import replace
+
 from functools import lru_cache
 
 import jinja2
@@ -63,10 +66,22 @@ def check_names(task: PlanningTask) -> None:
             raise ValueError(f"not a sanitized PDDL name in the planning task: {name!r}")
 
 
+#: Hex digits of the domain text's digest appended to the domain's name.
+DOMAIN_DIGEST_LENGTH = 8
+
+
 def render(task: PlanningTask) -> tuple[str, str]:
-    """(domain text, problem text) of `task`."""
+    """(domain text, problem text) of `task`.
+
+    The domain's name is the task's (`foon-tree`) plus `-` and a digest of the domain text written with
+    that name (SHA-256, 8 hex digits): domains that differ (pruning, goal actions) never share a name, so
+    tools that cache domains by name cannot mix them up; the problem's `:domain` names the same.
+    """
     check_names(task)
     env = _environment()
     context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
-    return (env.get_template("domain.pddl.j2").render(context),
-            env.get_template("problem.pddl.j2").render(context))
+    domain = env.get_template("domain.pddl.j2").render(context)
+    digest = hashlib.sha256(domain.encode()).hexdigest()[:DOMAIN_DIGEST_LENGTH]
+    named = replace(task, domain=f"{task.domain}-{digest}")
+    domain = domain.replace(f"(define (domain {task.domain})", f"(define (domain {named.domain})", 1)
+    return domain, env.get_template("problem.pddl.j2").render({**context, "task": named})

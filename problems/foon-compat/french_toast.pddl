@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain universal_foon)
+  (:domain universal_foon-b56ff802)
   (:init
     (is_available bowl_empty)
     (is_available bread_sliced)

@@ -2,7 +2,7 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
-  (:domain universal_foon)
+  (:domain universal_foon-3715f6aa)
   (:init
     (is_available avocado_whole)
     (is_available baking_powder_powder)

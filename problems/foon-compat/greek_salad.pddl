@@ -2,7 +2,7 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_greek_salad)
-  (:domain universal_foon)
+  (:domain universal_foon-c9a7e925)
   (:init
     (is_available avocado_whole)
     (is_available black_olive_pitted)

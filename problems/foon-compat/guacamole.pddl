@@ -2,7 +2,7 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_guacamole)
-  (:domain universal_foon)
+  (:domain universal_foon-d251c74d)
   (:init
     (is_available avocado_whole)
     (is_available banana_whole)

@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_whipped_cream)
-  (:domain universal_foon)
+  (:domain universal_foon-ff25cfc1)
   (:init
     (is_available baking_powder_powder)
     (is_available bowl_empty)

@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 (define (problem make_tomato_soup)
-  (:domain foon-instances)
+  (:domain foon-instances-4c2425ee)
   (:objects
     basil_1 - basil
     bowl_1 - bowl

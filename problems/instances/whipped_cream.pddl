@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 (define (problem make_whipped_cream)
-  (:domain foon-instances)
+  (:domain foon-instances-053cb20b)
   (:objects
     bowl_1 - bowl
     heavy_cream_1 - heavy_cream

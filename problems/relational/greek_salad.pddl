@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
 (define (problem make_greek_salad)
-  (:domain foon-relational)
+  (:domain foon-relational-12e73e08)
   (:objects
     black_olive_1 - black_olive
     bowl_1 - bowl

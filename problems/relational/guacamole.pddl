@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
 (define (problem make_guacamole)
-  (:domain foon-relational)
+  (:domain foon-relational-974229da)
   (:objects
     avocado_1 - avocado
     bowl_1 - bowl

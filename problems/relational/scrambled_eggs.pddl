@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
 (define (problem make_scrambled_eggs)
-  (:domain foon-relational)
+  (:domain foon-relational-edbf6050)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl

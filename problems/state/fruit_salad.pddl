@@ -2,7 +2,7 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
-  (:domain foon-state)
+  (:domain foon-state-b8632e42)
   (:init
     (available avocado)
     (available baking_powder)

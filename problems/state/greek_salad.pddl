@@ -2,7 +2,7 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_greek_salad)
-  (:domain foon-state)
+  (:domain foon-state-3d9db31a)
   (:init
     (available avocado)
     (available banana)

@@ -2,7 +2,7 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_guacamole)
-  (:domain foon-state)
+  (:domain foon-state-50733d28)
   (:init
     (available avocado)
     (available baking_powder)

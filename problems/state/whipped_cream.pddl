@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_whipped_cream)
-  (:domain foon-state)
+  (:domain foon-state-e6102523)
   (:init
     (available baking_powder)
     (available bowl)

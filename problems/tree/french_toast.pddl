@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain foon-tree)
+  (:domain foon-tree-67099421)
   (:init
     (bowl_empty)
     (bread_sliced)

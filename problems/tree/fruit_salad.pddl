@@ -2,7 +2,7 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
-  (:domain foon-tree)
+  (:domain foon-tree-3fdfcac0)
   (:init
     (avocado_whole)
     (baking_powder_powder)

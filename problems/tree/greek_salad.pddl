@@ -2,7 +2,7 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_greek_salad)
-  (:domain foon-tree)
+  (:domain foon-tree-9e756b3e)
   (:init
     (avocado_whole)
     (black_olive_pitted)

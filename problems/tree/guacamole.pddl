@@ -2,7 +2,7 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_guacamole)
-  (:domain foon-tree)
+  (:domain foon-tree-2ea69921)
   (:init
     (avocado_whole)
     (banana_whole)

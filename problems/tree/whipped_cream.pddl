@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_whipped_cream)
-  (:domain foon-tree)
+  (:domain foon-tree-19d2f7e4)
   (:init
     (baking_powder_powder)
     (bowl_empty)
