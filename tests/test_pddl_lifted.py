@@ -106,3 +106,12 @@ def test_bad_plan_step_is_a_decode_error(example, kitchen):
         plan_units(compiled, [squeeze.name + " no-such-object"])
     (unit,) = plan_units(compiled, [squeeze.name + " lime"])
     assert "lime" in {n.label for n in unit.inputs} and "lemon" not in {n.label for n in unit.inputs}
+
+
+def test_no_ground_precondition_is_true_from_the_start_and_never_deleted(example, kitchen):
+    for dish in ("lemonade", "guacamole", "whipped cream"):
+        lt = encode_lifted(example.foon, kitchen, resolve_goal(parse_goal_spec(dish), example.foon), INDEX)
+        init, deleted = set(lt.task.init), {d.predicate for a in lt.task.actions for d in a.delete}
+        static = [(a.name, p) for a in lt.task.actions for p in a.pre
+                  if not any(x.startswith("?") for x in p.args) and p in init and p.predicate not in deleted]
+        assert static == [], dish

@@ -43,7 +43,7 @@ differently from the action that needs the node.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..analysis.reachability import reachable
 from ..errors import UsageError
@@ -222,6 +222,21 @@ def _unit_actions(lifted: tuple[LiftedUnit, ...], names: _Names) -> tuple[list[A
     return actions, constants, pre_shapes
 
 
+def _drop_static(actions: list[Action], init: frozenset[Atom]) -> list[Action]:
+    """`actions` without ground preconditions true in `init` whose predicate no action deletes (O(atoms)).
+
+    They always hold, so plans and their map back are unchanged; some planners (ENHSP) mishandle a
+    parameterised action with such a variable-free precondition.
+    """
+    deleted = {d.predicate for a in actions for d in a.delete}
+
+    def static(p: Atom) -> bool:
+        return p in init and p.predicate not in deleted and not any(x.startswith("?") for x in p.args)
+
+    return [replace(a, pre=tuple(p for p in a.pre if not static(p))) if any(map(static, a.pre)) else a
+            for a in actions]
+
+
 def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
                   prune: bool = True, policy: str = "absent") -> LiftedTask:
     """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc)."""
@@ -244,6 +259,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     init_shapes = pre_shapes | {s for _, reps in goal_reps for s, _ in reps}
     init = sorted({names.ground_atom(s, labels)
                    for n in kitchen_nodes for s, labels in representations(n, ordering, init_shapes)})
+    actions = _drop_static(actions, frozenset(init))
     atoms = [(c, (names.ground_atom(s, labels),)) for c, reps in goal_reps for s, labels in reps]
     if len(atoms) == 1:
         goal_atoms: tuple[Atom, ...] = atoms[0][1]
