@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import replace
-
 from functools import lru_cache
 
 import jinja2
