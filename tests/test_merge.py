@@ -12,7 +12,7 @@ from conftest import SUBGRAPHS
 from foon_strategies import full
 
 from foon2pddl.cli import main
-from foon2pddl.errors import FoonSyntaxError
+from foon2pddl.errors import FoonInputError, FoonSyntaxError
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.io.jsonio import parse_json
 from foon2pddl.io.parser import parse_file, parse_text
@@ -145,7 +145,7 @@ def test_expand_paths_sorts_filters_and_reports_problems(tmp_path):
         (tmp_path / name).write_text("x")
     found = expand_paths([tmp_path / "e.data", tmp_path / "d"])
     assert found == sorted([tmp_path / "d/b.txt", tmp_path / "d/sub/a.FOON", tmp_path / "e.data"])
-    with pytest.raises(FoonSyntaxError, match="no such file"):
+    with pytest.raises(FoonInputError, match="no such file"):  # a missing path is an input error, not a syntax error
         expand_paths([tmp_path / "nope"])
     (tmp_path / "empty").mkdir()
     with pytest.raises(FoonSyntaxError, match="no FOON files"):
