@@ -109,3 +109,13 @@ def test_the_api_returns_the_skill_list_the_cli_prints():
     cli = json.loads(run("--goal", "whipped cream", "--skills", "--format", "json").stdout)
     assert done.json()["skills"] == cli["skills"] and done.json()["steps"][0]["unit"] == cli["steps"][0]["unit"]
     assert done.trace is not None and len(done.trace.steps) == cli["macro_steps"]
+
+
+def test_a_lacked_skill_the_domain_does_not_have_is_an_error_with_close_names(tmp_path):
+    typo = run("--goal", "whipped cream", "--skills", "--without-skill", "puor")
+    assert typo.exit_code == 2
+    assert "no such skill" in typo.stderr and "did you mean pour" in typo.stderr
+    profile = tmp_path / "robot.json"
+    profile.write_text('{"without_skills": ["stirr"]}')
+    in_file = run("--goal", "whipped cream", "--skills", "--constraints", str(profile))
+    assert in_file.exit_code == 2 and "'stirr'" in in_file.stderr

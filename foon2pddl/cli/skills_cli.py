@@ -59,6 +59,19 @@ def _inputs(skills: str, table_path: Path | None):
     return domain, table
 
 
+def _check_skill_names(domain, names) -> None:
+    """UsageError for a lacked skill the skill domain does not have (a typo would give a robot that can do
+    everything), with the closest names."""
+    import difflib
+
+    known = sorted(domain.by_name)
+    for name in names:
+        if name not in domain.by_name:
+            close = difflib.get_close_matches(name, known, n=3)
+            raise UsageError(f"--without-skill {name!r}: the skill domain has no such skill"
+                             + (f" (did you mean {', '.join(close)}?)" if close else ""))
+
+
 def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skills: str, table_path: Path | None,
                      without_skills: tuple[str, ...], hands: int, fmt: str, output: Path | None, timings: dict,
                      **options) -> None:
@@ -68,6 +81,7 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skills: str, t
     from ..skills.run import plan_skills, robot_profile
 
     domain, table = _inputs(skills, table_path)
+    _check_skill_names(domain, (*without_skills, *(cons.without_skills if cons is not None else ())))
     robot = robot_profile(cons, hands, without_skills)
     ctx = click.get_current_context()
     try:
