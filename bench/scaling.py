@@ -54,7 +54,7 @@ def exponent(sizes: list[int], times: list[float]) -> float:
     xs = [math.log(s) for s in sizes]
     ys = [math.log(t) for t in times]
     mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys, strict=True)) / sum((x - mx) ** 2 for x in xs)
 
 
 def run(ctx: Context) -> None:
