@@ -119,3 +119,11 @@ def test_a_lacked_skill_the_domain_does_not_have_is_an_error_with_close_names(tm
     profile.write_text('{"without_skills": ["stirr"]}')
     in_file = run("--goal", "whipped cream", "--skills", "--constraints", str(profile))
     assert in_file.exit_code == 2 and "'stirr'" in in_file.stderr
+
+
+def test_a_network_path_after_skills_is_not_read_as_a_skill_domain():
+    from conftest import SUBGRAPHS
+
+    result = run("--goal", "whipped cream", "--skills", str(SUBGRAPHS))
+    assert result.exit_code == 2
+    assert "give the network's PATHS before --skills" in result.stderr

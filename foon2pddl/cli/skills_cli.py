@@ -53,6 +53,10 @@ def _inputs(skills: str, table_path: Path | None):
     from ..skills.domain import read_domain, shipped_domain
     from ..skills.table import read_table, shipped_table
 
+    if skills and not skills.lower().endswith(".pddl"):
+        # `--skills` takes an optional FILE, so `plan --goal X --skills DIR` reads the network's DIR as one
+        raise UsageError(f"--skills {skills}: a skill domain is a .pddl file; to plan on {skills!r} with the "
+                         "shipped skills, give the network's PATHS before --skills (or write --skills= PATHS)")
     domain = read_domain(skills) if skills else shipped_domain()
     table = read_table(table_path) if table_path is not None else shipped_table()
     table.check(domain)

@@ -84,3 +84,11 @@ def render(task: PlanningTask) -> tuple[str, str]:
     named = replace(task, domain=f"{task.domain}-{digest}")
     domain = domain.replace(f"(define (domain {task.domain})", f"(define (domain {named.domain})", 1)
     return domain, env.get_template("problem.pddl.j2").render({**context, "task": named})
+
+
+def render_problem(task: PlanningTask) -> str:
+    """The problem text of `task` alone, its `:domain` the task's own name as given: for problems whose
+    domain is a file of its own (a robot's skill domain), not one `render` writes (and names by digest)."""
+    check_names(task)
+    context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
+    return _environment().get_template("problem.pddl.j2").render(context)

@@ -35,7 +35,7 @@ from functools import cached_property
 from ..model.foon import ObjectNode
 from ..model.physical import ObjectState, PhysicalTrace, Relation
 from ..pddl.names import NameTable
-from ..pddl.render import render
+from ..pddl.render import render_problem
 from ..pddl.task import Atom, PlanningTask
 from .domain import TRANSPORT, SkillDomain
 
@@ -122,7 +122,7 @@ class MicroProblem:
 
     @cached_property
     def text(self) -> str:
-        return render(self.task)[1]
+        return render_problem(self.task)
 
     @property
     def actions(self) -> frozenset[str]:
