@@ -123,11 +123,21 @@ def _kill(pids: list[int]) -> None:
 
 
 def kill_marked(token: str, name: str = MARK, rounds: int = 5) -> None:
-    """SIGKILL every process marked `name=token` (repeated: a dying process may have just forked)."""
-    for _ in range(rounds):
+    """SIGKILL every process marked `name=token` (repeated: a dying process may have just forked).
+
+    Done only after two scans in a row find none: a process in the middle of `execve` (a daemon's
+    `setsid sleep` starting) can have an unreadable environment for an instant, and one empty scan
+    let it survive on a loaded machine.
+    """
+    empty = 0
+    for _ in range(rounds + 1):
         pids = marked_pids(name, token)
         if not pids:
-            return
+            empty += 1
+            if empty == 2:
+                return
+            continue
+        empty = 0
         _kill(pids)
         time.sleep(0.01)
 
