@@ -149,17 +149,8 @@ def encode_instances(
             cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
             roles=tuple(zip(roles, bound, strict=True)),
         ))
-    for i, c in enumerate(inp.candidates, start=1):  # kept even when no instance can reach c
-        stable_goal = c in stable
-        actions.append(Action(
-            table.name(f"reach-goal-{i}", key=("goal-action", i)),
-            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
-            add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
-            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
-        ))
-    for label in sorted(precede):
-        mine = [x.name for x in instances if x.label == label]
-        init.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
+    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
+    init.extend(precedes_facts(precede, instances))
     predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
                   Predicate(OCCUPIED, (("?s", STATE_TYPE),), "some instance is in state ?s, which no action leaves"),
                   Predicate(GOAL_REACHED, comment="a goal candidate was made")]
@@ -207,3 +198,29 @@ def _count_lines(counts: InstanceCounts) -> tuple[str, ...]:
     shown = ", ".join(f"{label} {k}" for label, k in list(labels.items())[:HEADER_LABELS])
     more = f", +{len(labels) - HEADER_LABELS} more labels" if len(labels) > HEADER_LABELS else ""
     return (f"instances: {counts.total} ({shown}{more})",)
+
+
+def goal_actions_over_objects(candidates, stable, table: NameTable, const, type_of, options: EncodeOptions
+                              ) -> list[Action]:
+    """One `reach-goal-<i>` action per goal candidate: "some object is in the candidate's state" (through
+    `(occupied s)` when the candidate's node is stable, else a parameter). Shared by the encodings over
+    physical objects; kept even when no object can reach a candidate."""
+    out = []
+    for i, c in enumerate(candidates, start=1):
+        stable_goal = c in stable
+        out.append(Action(
+            table.name(f"reach-goal-{i}", key=("goal-action", i)),
+            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
+            add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
+            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
+        ))
+    return out
+
+
+def precedes_facts(labels, instances) -> list[Atom]:
+    """`(precedes a b)` for every ordered pair of objects of each label in `labels` (instance order)."""
+    out = []
+    for label in sorted(labels):
+        mine = [x.name for x in instances if x.label == label]
+        out.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
+    return out

@@ -42,8 +42,20 @@ from __future__ import annotations
 from ..model.foon import Foon, ObjectNode, make_node, make_state
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
-from .costs import goal_cost, unit_cost
-from .encode_instances import IS, NOT_MADE, OCCUPIED, PRECEDES, ROOT_TYPE, STATE_TYPE, _count_lines, _instances, _types
+from .costs import unit_cost
+from .encode_instances import (
+    IS,
+    NOT_MADE,
+    OCCUPIED,
+    PRECEDES,
+    ROOT_TYPE,
+    STATE_TYPE,
+    _count_lines,
+    _instances,
+    _types,
+    goal_actions_over_objects,
+    precedes_facts,
+)
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holders import Place, RelRole, listed, mismatches, place_of, relational_roles
 from .instance_counts import derive_counts
@@ -143,17 +155,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     init.extend(Atom(OCCUPIED, (const[n],)) for n, _ in counts.at_node if n in stable)
 
     actions = [_unit_action(u, f.units[u], table, const, stable, type_of, options, precede) for u in units]
-    for i, c in enumerate(inp.candidates, start=1):
-        stable_goal = c in stable
-        actions.append(Action(
-            table.name(f"reach-goal-{i}", key=("goal-action", i)),
-            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
-            add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
-            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
-        ))
-    for label in sorted(precede):
-        mine = [x.name for x in instances if x.label == label]
-        init.extend(Atom(PRECEDES, (a, b)) for k, a in enumerate(mine) for b in mine[k + 1:])
+    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
+    init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
     predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
                   Predicate(IN, hold, "?x is in ?h"), Predicate(ON, hold, "?x is on ?h"),
