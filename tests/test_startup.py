@@ -26,7 +26,8 @@ try:
 except SystemExit as exc:
     code = exc.code
 heavy = sorted({m.split(".")[0] for m in sys.modules} & set(json.loads(HEAVY)))
-print("\\nPROBE " + json.dumps({"code": code, "heavy": heavy}))
+ours = sorted(m for m in sys.modules if m.startswith("foon2pddl."))
+print("\\nPROBE " + json.dumps({"code": code, "heavy": heavy, "ours": ours}))
 """
 
 
@@ -45,7 +46,24 @@ EXAMPLE_FILE = ROOT / "foon2pddl" / "data" / "example" / "02-whipped_cream.foon"
                                   ("stats", "--json", str(EXAMPLE_FILE))], ids=" ".join)
 def test_light_commands_import_no_heavy_stack(args):
     out = _probe(*args)
-    assert out == {"code": 0, "heavy": []}
+    assert (out["code"], out["heavy"]) == (0, [])
+
+
+#: Package modules no light command needs (the planning, PDDL, search and experiment stacks).
+NOT_FOR_LIGHT = ("foon2pddl.pddl", "foon2pddl.retrieval", "foon2pddl.generalize", "foon2pddl.experiment",
+                 "foon2pddl.skills", "foon2pddl.api")
+
+
+@pytest.mark.parametrize("args", [("--version",), ("stats", str(EXAMPLE_FILE))], ids=" ".join)
+def test_light_commands_import_only_their_own_modules(args):
+    """`--version` loads no network model and `stats` no PDDL; of the planners only the process cleanup
+    every command runs in (its package `__init__` must not pull in the PDDL task model)."""
+    ours = _probe(*args)["ours"]
+    assert not [m for m in ours if m.startswith(NOT_FOR_LIGHT)], ours
+    assert [m for m in ours if m.startswith("foon2pddl.planners")] == ["foon2pddl.planners",
+                                                                      "foon2pddl.planners.cleanup"], ours
+    if args == ("--version",):
+        assert not [m for m in ours if m.startswith(("foon2pddl.model", "foon2pddl.analysis"))], ours
 
 
 def test_probe_sees_heavy_imports():

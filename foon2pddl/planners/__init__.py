@@ -3,12 +3,18 @@
 `run_planner` is the one entry point: it picks the planner and returns a
 `PlanResult` whatever happens (statuses `solved`, `unsolvable`, `timeout`,
 `error`); it never raises for a planner's failure.
+
+The package itself imports nothing: `planners.cleanup` (which every CLI call enters) must not pull in
+the PDDL task model, so `PlanResult` and friends load from `result` on first access.
 """
 
 from __future__ import annotations
 
-from ..pddl.task import PlanningTask
-from .result import STATUSES, PlanResult, parse_plan_text, step_action
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..pddl.task import PlanningTask
+    from .result import PlanResult
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action", "cleanup", "commands", "decode",
            "executable", "external", "fd", "fd_reuse", "foon_places", "instance_physical", "physical_replay",
@@ -16,6 +22,21 @@ __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_act
 
 #: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
 DEFAULT_PLANNER = "fd"
+
+#: Names re-exported from `result`, loaded on first access (module `__getattr__`).
+_FROM_RESULT = ("STATUSES", "PlanResult", "parse_plan_text", "step_action")
+
+
+def __getattr__(name: str) -> object:
+    if name in _FROM_RESULT:
+        from . import result
+
+        return getattr(result, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
 
 
 def run_planner(task: PlanningTask, domain_text: str, problem_text: str, *, planner: str = DEFAULT_PLANNER,
