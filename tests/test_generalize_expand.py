@@ -19,9 +19,11 @@ from foon2pddl.generalize.substitute import (
     substitute_unit,
     unit_labels,
 )
+from foon2pddl.generalize.substitution import Substitution, expansion_substitutions
 from foon2pddl.io.inputs import example_path
 from foon2pddl.io.kitchen_files import read_kitchen
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.model.tasktree import TaskTree
 
 
 def matrix(labels, pairs):
@@ -50,6 +52,8 @@ def test_substitution_is_consistent_and_whole_label():
     assert board.states[0].ingredients == ("lime", "salt")
     assert make_node("lime", [make_state("halved"), make_state("on", "cutting board")]) in new.outputs
     assert new.sources == (Source("r.foon", 3, None, "lemon"),)
+    assert substitute_unit(CUT, {"lemon": "lime"}, note="lemon", to="lime").sources == \
+        (Source("r.foon", 3, None, "lemon", "lime"),)
 
 
 def test_substitution_keeps_lists_sorted_and_merges_items():
@@ -105,10 +109,11 @@ def test_expansion_properties(foon, data):
             continue
         # every copy is an original with one similar object (or a derived product) substituted,
         # and the products it makes from that object renamed along
-        old = u.sources[0].expanded_from
+        old, new = u.sources[0].expanded_from, u.sources[0].expanded_to
         partners = {b for a, b in close if a == old} | {b for a, b in e.derived if a == old}
+        assert new in partners  # the replacement is recorded, and it is the one the copy was made with
         assert any(substitute_unit(o, {old: new, **product_renames(o, {old: new})}).key == u.key
-                   for o in foon.units for new in partners)
+                   for o in foon.units)
     assert {u.key for u in expand(foon, m, threshold=0.92).foon.units} <= set(keys)  # monotone in threshold
 
 
@@ -169,3 +174,21 @@ def test_rename_derived_follows_what_the_substituted_object_made():
     assert rename_derived(units, {"lemon": "lime"}) == {"lemon juice": "lime juice"}
     assert rename_derived(units, {"lemon": "lime"}, fixed=frozenset({"lemon juice"})) == {}
     assert rename_derived((SQUEEZE, POUR, STIR), {"lemon": "lime"}) == {}  # no lime was squeezed
+
+
+def test_an_exp_tree_names_the_replacement_recorded_at_expansion():
+    """The note names the label the copy was made with, even when another label of the copy is closer
+    to the original (reconstructing by similarity named `lemon juice`, which was there all along)."""
+    m = matrix(["lemon", "lime", "cutting board", "lemon juice", "bowl", "salt"], [("lemon", "lime", 0.93)])
+    e = expand(Foon((CUT,)), m)
+    copy = next(u for u in e.foon.units if is_expanded(u))
+    assert (copy.sources[0].expanded_from, copy.sources[0].expanded_to) == ("lemon", "lime")
+
+    def sim(a, b):  # a similarity under which the copy's other label looks closer
+        return {frozenset(("lemon", "lime")): 0.93, frozenset(("lemon", "lemon juice")): 0.99}.get(
+            frozenset((a, b)), 1.0 if a == b else 0.0)
+
+    tree = TaskTree((copy,), make_node("lime", [make_state("halved")]))
+    assert expansion_substitutions(tree, sim) == (Substitution("lemon", "lime", 0.93),)
+    unrecorded = FunctionalUnit(copy.inputs, copy.motion, copy.outputs, (Source("r.foon", 3, None, "lemon"),))
+    assert expansion_substitutions(TaskTree((unrecorded,), tree.goal), sim)[0].replacement == "lemon juice"

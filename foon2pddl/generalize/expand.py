@@ -5,7 +5,8 @@ vocabulary at least `threshold` similar (Wu-Palmer, `similarity.py`) gives one
 copy of the unit with that object substituted everywhere in the unit (node
 label, related objects, ingredient lists; `substitute.py`). A label the unit
 already mentions is not substituted in (two objects would become one). Copies
-mark their sources `expanded_from=<original label>`; duplicates (also of
+mark their sources `expanded_from=<original label>` and `expanded_to=<its replacement>`
+(so a tree can say which label replaced which); duplicates (also of
 original units) are removed with `merge.dedupe_units`, originals first, so an
 original unit keeps its unmarked provenance. One substitution per copy, as in
 the seed paper, with what the unit makes from the object renamed along
@@ -98,7 +99,7 @@ def expand(
 
     def add(unit: FunctionalUnit, old: str, new: str) -> None:
         extra = product_renames(unit, {old: new})
-        copy = substitute_unit(unit, {old: new, **extra}, note=old)
+        copy = substitute_unit(unit, {old: new, **extra}, note=old, to=new)
         copies.append(copy)
         keys.add(copy.key)
         for pair in extra.items():

@@ -43,13 +43,16 @@ def unit_labels(unit: FunctionalUnit) -> frozenset[str]:
     return frozenset().union(*(node_labels(n) for n in (*unit.inputs, *unit.outputs)))
 
 
-def substitute_unit(unit: FunctionalUnit, mapping: Mapping[str, str], note: str | None = None) -> FunctionalUnit:
-    """`unit` with labels replaced in every node; `note` marks its sources `expanded_from`."""
+def substitute_unit(unit: FunctionalUnit, mapping: Mapping[str, str], note: str | None = None,
+                    to: str | None = None) -> FunctionalUnit:
+    """`unit` with labels replaced in every node; `note` marks its sources `expanded_from` (and `to`,
+    the label that replaced it, `expanded_to`)."""
     ins = tuple(dict.fromkeys(substitute_node(n, mapping) for n in unit.inputs))
     outs = tuple(dict.fromkeys(substitute_node(n, mapping) for n in unit.outputs))
     sources = unit.sources
     if note is not None:
-        sources = tuple(Source(s.path, s.line, s.url, note) for s in unit.sources) or (Source("", 0, None, note),)
+        sources = tuple(Source(s.path, s.line, s.url, note, to) for s in unit.sources) \
+            or (Source("", 0, None, note, to),)
     return FunctionalUnit(ins, unit.motion, outs, sources)
 
 

@@ -60,7 +60,12 @@ def _copy_of(unit: FunctionalUnit, constraints: Constraints) -> str | None:
 
 
 def _substitute(unit: FunctionalUnit, original: str, sim: Callable[[str, str], float]) -> tuple[str, float]:
-    """The label an EXP copy of `original` holds instead: its label most similar to `original`."""
+    """The label an EXP copy of `original` holds instead, with its similarity: the replacement the expansion
+    recorded (`Source.expanded_to`); for a copy read from a file, which does not record it, the copy's
+    label most similar to `original`."""
+    recorded = unit.sources[0].expanded_to if unit.sources else None
+    if recorded is not None:
+        return recorded, sim(original, recorded)
     best = max(((label, sim(original, label)) for label in unit_labels(unit) if label != original),
                key=lambda x: (x[1], x[0]), default=("?", 0.0))
     return best
@@ -85,7 +90,7 @@ def prefer_most_similar(foon: Foon, constraints: Constraints, sim: Callable[[str
 
 def expansion_substitutions(tree: TaskTree, sim: Callable[[str, str], float]) -> tuple[Substitution, ...]:
     """The substitutions an EXP tree relies on: for each FOON-EXP copy among its units, the label it
-    replaced and the label standing in (the copy's label most similar to it), sorted."""
+    replaced and the label standing in (as recorded at expansion, `_substitute`), sorted."""
     found = set()
     for u in tree.units:
         original = u.sources[0].expanded_from if u.sources else None

@@ -124,6 +124,7 @@ class Source:
     line: int = 0
     url: str | None = None
     expanded_from: str | None = None
+    expanded_to: str | None = None  # the label that replaced `expanded_from` (set by FOON-EXP; not serialized)
 
 
 @dataclass(frozen=True)
