@@ -5,11 +5,11 @@ from __future__ import annotations
 import pytest
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
-from foon2pddl.model.goal import GoalSpec, resolve_goal
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal
 from foon2pddl.model.kitchen import Kitchen
-from foon2pddl.pddl.compile import compile_task
+from foon2pddl.pddl.compile import GROUND_ENCODINGS, compile_task
 from foon2pddl.pddl.render import render
-from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate
+from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate, candidate_atoms
 from foon2pddl.pddl.up_problem import build_up, to_up_problem
 from foon2pddl.planners import up_engine
 from foon2pddl.planners.decode import PlanDecodeError, decode, plan_units
@@ -106,6 +106,18 @@ def test_state_encoding_combines_facts_foon_does_not():
 def test_planner_error_and_timeout_statuses_come_through():
     assert plan(FOON, KITCHEN, goal("bowl"), planner_cmd="/nonexistent {domain}").status == "error"
     assert plan(FOON, KITCHEN, goal("bowl"), time_limit=0.001).status == "timeout"
+
+
+@pytest.mark.parametrize("encoding", GROUND_ENCODINGS)
+def test_every_goal_action_names_its_candidate(encoding):
+    nodes = tuple(sorted(FOON.nodes))
+    task = compile_task(FOON, KITCHEN, Goal(GoalSpec("any node"), nodes, 3), encoding, prune=False)
+    atoms = candidate_atoms(task, nodes)
+    assert list(atoms) == list(nodes)
+    for action in task.actions:
+        if action.candidate is not None:
+            assert action.unit is None and action.comment[0].endswith(action.candidate.describe())
+            assert atoms[action.candidate] == action.pre
 
 
 @pytest.mark.parametrize("encoding", ["tree", "state", "foon-compat"])

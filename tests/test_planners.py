@@ -10,10 +10,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from foon2pddl.model.foon import ObjectNode
 from foon2pddl.pddl.render import render
-from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate
+from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate, candidate_atoms
 from foon2pddl.planners import external, fd, run_planner
-from foon2pddl.planners.fd_reuse import TranslatedTask, goal_alternatives
+from foon2pddl.planners.fd_reuse import TranslatedTask
 from foon2pddl.planners.result import PlanResult, parse_plan_text
 
 
@@ -159,13 +160,22 @@ def test_reuse_sas_goal_swap_searches_each_goal():
     assert "begin_goal\n1\n" in sas
 
 
-def test_goal_alternatives_expand_auxiliary_goal_actions():
+def test_candidate_atoms_read_the_goal_actions_candidates():
     task = chain_task()
     reached = Atom("goal-reached")
-    aux = (Action("reach-goal-1", (Atom("b"),), (reached,)), Action("reach-goal-2", (Atom("c"),), (reached,)))
+    b, c = ObjectNode("b"), ObjectNode("c")
+    aux = (Action("reach-goal-1", (Atom("c"),), (reached,), candidate=c),
+           Action("reach-goal-2", (Atom("b"),), (reached,), candidate=b))
     task = PlanningTask(task.domain, task.problem, task.encoding, 3, task.predicates + (Predicate("goal-reached"),),
                         task.actions + aux, task.init, (reached,))
-    assert goal_alternatives(task) == ((Atom("b"),), (Atom("c"),))
+    assert candidate_atoms(task, (b, c)) == {b: (Atom("b"),), c: (Atom("c"),)}  # by candidate, not by position
+    assert list(candidate_atoms(task, (b, c))) == [b, c]
+    with pytest.raises(ValueError, match="one goal action per candidate"):
+        candidate_atoms(task, (b, c, ObjectNode("d")))
+    with pytest.raises(ValueError, match="one goal action per candidate"):
+        candidate_atoms(task, (b,))
+    single = chain_task()
+    assert candidate_atoms(single, (c,)) == {c: (Atom("c"),)}  # one candidate: the goal is its atoms
 
 
 # ------------------------------------------------------------------ external commands
@@ -229,7 +239,8 @@ def delete_free_tasks(draw):
     init = tuple(Atom(f) for f in draw(subsets))
     alternatives = draw(st.lists(subsets.filter(bool), min_size=1, max_size=3, unique=True))
     reached = Atom("goal-reached")
-    aux = [Action(f"reach-goal-{k}", tuple(Atom(f) for f in alt), (reached,)) for k, alt in enumerate(alternatives)]
+    aux = [Action(f"reach-goal-{k}", tuple(Atom(f) for f in alt), (reached,), candidate=ObjectNode(f"goal {k}"))
+           for k, alt in enumerate(alternatives)]
     task = PlanningTask("rnd", "p", "tree", 3, tuple(Predicate(f) for f in [*FACTS, "goal-reached"]),
                         tuple(actions + aux), tuple(sorted(init)), (reached,))
     return task, [tuple(Atom(f) for f in alt) for alt in alternatives]
@@ -253,7 +264,8 @@ def test_fd_fresh_and_reused_solve_exactly_the_reachable_goals(case):
     task, alternatives = case
     have = closure(task)
     expected = "solved" if any(set(alt) <= have for alt in alternatives) else "unsolvable"
-    assert sorted(goal_alternatives(task)) == sorted(tuple(sorted(a)) for a in alternatives)
+    nodes = tuple(ObjectNode(f"goal {k}") for k in range(len(alternatives)))
+    assert list(candidate_atoms(task, nodes).values()) == alternatives
     fresh = run_planner(task, *render(task))
     reused = TranslatedTask.build(task).solve(alternatives)
     assert fresh.status == reused.status == expected

@@ -212,7 +212,7 @@ def goal_actions_over_objects(candidates, stable, table: NameTable, const, type_
             table.name(f"reach-goal-{i}", key=("goal-action", i)),
             pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
             add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
-            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",),
+            cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",), candidate=c,
         ))
     return out
 

@@ -170,7 +170,7 @@ def goal_actions(
     for i, (node, atoms) in enumerate(candidate_atoms, start=1):
         name = table.name(f"reach-goal-{i}", key=("goal-action", i))
         actions.append(Action(name, atoms, (goal_atom,), cost=goal_cost(options.costs), unit=None,
-                              comment=(f"goal candidate {i}: {node.describe()}",)))
+                              comment=(f"goal candidate {i}: {node.describe()}",), candidate=node))
     return tuple(actions)
 
 

@@ -50,6 +50,8 @@ class Action:
     #: quantified deletes `(forall (?v - type) (when atom (not atom)))`, as (?v, type, atom): an object leaves
     #: whatever holds it without a parameter per possible holder (`relational`)
     release: tuple[tuple[str, str, Atom], ...] = ()
+    #: an auxiliary goal action (`reach-goal-<i>`): the goal candidate whose atoms are its precondition
+    candidate: ObjectNode | None = None
 
 
 @dataclass(frozen=True)
@@ -119,6 +121,24 @@ class PlanningTask:
     @cached_property
     def _by_name(self) -> dict[str, Action]:
         return {a.name.lower(): a for a in self.actions}
+
+
+def candidate_atoms(task: PlanningTask, nodes: tuple[ObjectNode, ...]) -> dict[ObjectNode, tuple[Atom, ...]]:
+    """Goal candidate -> its goal atoms, for a task compiled with `nodes` as the candidates.
+
+    Encodings add one auxiliary goal action per candidate (`Action.candidate` names it; its
+    precondition is the candidate's atoms); with a single candidate the task's goal is its
+    atoms. Raises ValueError when the goal actions are not exactly one per candidate.
+    O(actions).
+    """
+    aux = [a for a in task.actions if a.candidate is not None]
+    if len(nodes) == 1 and not aux:
+        return {nodes[0]: task.goal}
+    found = {a.candidate: a.pre for a in aux}
+    if len(found) != len(aux) or set(found) != set(nodes):
+        raise ValueError(f"{task.encoding} encoding: expected one goal action per candidate ({len(nodes)}), "
+                         f"found {len(aux)} for {len(set(found) & set(nodes))} of them")
+    return {node: found[node] for node in nodes}
 
 
 def released(state: set[Atom], release: tuple[tuple[str, str, Atom], ...], bind: dict[str, str]) -> set[Atom]:

@@ -241,38 +241,3 @@ class TranslatedTask:
             result = fd.search(Path(tmp), options, time_limit, self.name, sas_text=sas)
         plan = tuple(s for s in result.plan if not step_action(s).startswith(GOAL_OP))
         return replace(result, plan=plan).with_timings(translate=translate_s)
-
-
-def goal_alternatives(task: PlanningTask) -> tuple[tuple[Atom, ...], ...]:
-    """The task's goal as alternatives over atoms actions of units make true.
-
-    A goal atom that only auxiliary actions (unit None) make true stands for the
-    disjunction of those actions' preconditions (how encodings say "any of the
-    goal's candidate nodes").
-    """
-    aux: dict[Atom, list[Action]] = {}
-    real: set[Atom] = set()
-    for action in task.actions:
-        for atom in action.add:
-            if action.unit is None:
-                aux.setdefault(atom, []).append(action)
-            else:
-                real.add(atom)
-
-    def expand(atom: Atom, seen: frozenset[Atom]) -> list[tuple[Atom, ...]]:
-        if atom in real or atom not in aux or atom in seen or atom in task.init:
-            return [(atom,)]
-        out: list[tuple[Atom, ...]] = []
-        for action in aux[atom]:
-            out.extend(_conjoin(expand(p, seen | {atom}) for p in action.pre))
-        return out
-
-    return tuple(dict.fromkeys(_conjoin(expand(g, frozenset()) for g in task.goal)))
-
-
-def _conjoin(parts: Iterable[list[tuple[Atom, ...]]]) -> list[tuple[Atom, ...]]:
-    """Cross product of alternatives, each conjunction sorted and duplicate-free."""
-    acc: list[tuple[Atom, ...]] = [()]
-    for alts in parts:
-        acc = [tuple(sorted(set(a + b))) for a in acc for b in alts]
-    return acc

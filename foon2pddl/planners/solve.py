@@ -27,7 +27,7 @@ from ..pddl.compile import DEFAULT_ENCODING, as_compiled, compile_goal, compile_
 from ..pddl.constraints import GoalExcluded
 from ..pddl.registry import Compiled
 from ..pddl.render import render
-from ..pddl.task import Atom, PlanningTask
+from ..pddl.task import PlanningTask, candidate_atoms
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
@@ -167,7 +167,7 @@ class GoalReplanner:
         nodes = tuple(sorted(at_level.nodes))
         every = Goal(GoalSpec("any node"), nodes, level)
         task = compile_task(at_level, kitchen, every, encoding, level, False, costs, rates)
-        self.node_atoms = _candidate_atoms(task, nodes)
+        self.node_atoms = candidate_atoms(task, nodes)
         goal_atoms = set(task.goal)
         base = replace(task, actions=tuple(a for a in task.actions
                                            if not (a.unit is None and goal_atoms & set(a.add))))
@@ -192,20 +192,3 @@ class GoalReplanner:
         reached = next((a for a in alternatives if set(a) <= state), alternatives[0] if alternatives else ())
         return _finish(result, as_compiled(replace(self.task, goal=tuple(reached))), goal, self.kitchen_nodes,
                        timings, up_validate)
-
-
-def _candidate_atoms(task: PlanningTask, nodes: tuple[ObjectNode, ...]) -> dict[ObjectNode, tuple[Atom, ...]]:
-    """Node -> its goal atoms, read off a task compiled with `nodes` as goal candidates.
-
-    Encodings add one goal action per candidate, in candidate (sorted) order, whose
-    precondition is that candidate's atoms; with a single candidate the goal itself is.
-    """
-    aux = [a for a in task.actions if a.unit is None and set(a.add) & set(task.goal)]
-    if len(nodes) == 1 and not aux:
-        return {nodes[0]: task.goal}
-    if len(aux) != len(nodes):
-        raise ValueError(f"{task.encoding} encoding: expected {len(nodes)} goal actions, found {len(aux)}")
-    for node, action in zip(nodes, aux, strict=True):
-        if action.comment and not action.comment[0].endswith(node.describe()):
-            raise ValueError(f"{task.encoding} encoding: goal action {action.name} is not for {node.describe()}")
-    return {node: tuple(action.pre) for node, action in zip(nodes, aux, strict=True)}
