@@ -9,7 +9,7 @@ import networkx as nx
 
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import default_kitchen, is_base_node
-from .defects import Defect, DefectKind, defect
+from .defects import Defect, DefectKind, defect, mentions
 from .index import index_of
 from .reachability import UNREACHED, reachable
 
@@ -106,13 +106,7 @@ def ingredient_mismatches(foon: Foon) -> list[Defect]:
 def unknown_objects(foon: Foon) -> list[Defect]:
     """Related objects (`in [x]`) and ingredients (`{x}`) that are no object of the network."""
     labels = {n.label for n in foon.nodes}
-    found: dict[str, list] = defaultdict(list)
-    for unit in foon.units:
-        for node in (*unit.inputs, *unit.outputs):
-            for s in node.states:
-                for name in (s.related, *s.ingredients):
-                    if name and name not in labels:
-                        found[name].extend(unit.sources)
+    found = {name: sources for name, sources in mentions(foon).items() if name not in labels}
     return [defect(DefectKind.UNKNOWN_OBJECT, f"{name!r} is mentioned (as a related object or ingredient) but no "
                    "unit produces it and no starting node is one", sources, [name])
             for name, sources in sorted(found.items())]

@@ -7,6 +7,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 
+from ..model.constraints import node_labels
 from ..model.foon import FunctionalUnit, Source
 
 
@@ -101,7 +102,6 @@ def mentions(foon) -> dict[str, list[Source]]:
     found: dict[str, list[Source]] = {}
     for unit in foon.units:
         for node in (*unit.inputs, *unit.outputs):
-            names = {node.label} | {s.related for s in node.states if s.related} | set(node.ingredients)
-            for name in names:
+            for name in node_labels(node):
                 found.setdefault(name, []).extend(unit.sources)
     return found

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from ..analysis.reachability import UNREACHED, reachable
+from ..model.constraints import node_labels
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from .categories import CategoryIndex
 from .substitute import substitute_node, substitute_unit, unit_labels
@@ -43,12 +44,6 @@ class Ordering:
         return (self.root(label), label)
 
 
-def mentioned(node: ObjectNode) -> list[str]:
-    """Distinct labels a node's states mention, other than its own."""
-    out = dict.fromkeys(x for s in node.states for x in (s.related, *s.ingredients) if x and x != node.label)
-    return list(out)
-
-
 
 @dataclass(frozen=True)
 class Coarse:
@@ -69,7 +64,7 @@ def coarse_network(foon: Foon, kitchen: frozenset[ObjectNode], generalize: Calla
     roots = frozenset(ordering.root(x) for u in foon.units for x in input_labels(u)
                       if index.choose(x) is not None and generalize(x))
     coarse = Coarse(roots, None, {})
-    labels = {x for u in foon.units for x in unit_labels(u)} | {x for n in kitchen for x in (n.label, *mentioned(n))}
+    labels = {x for u in foon.units for x in unit_labels(u)} | {x for n in kitchen for x in node_labels(n)}
     mapping = {x: coarse.image(x, ordering) for x in labels}
     images = [substitute_unit(u, mapping) for u in foon.units]
     reach = reachable(Foon(tuple(images), foon.level), frozenset(substitute_node(n, mapping) for n in kitchen))
@@ -99,7 +94,7 @@ def relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Iterable[Ob
     candidates = tuple(candidates)
     coarse = coarse or coarse_network(foon, kitchen, generalize, index, ordering)
     ix = coarse.reach.index
-    mapping = {x: coarse.image(x, ordering) for n in candidates for x in (n.label, *mentioned(n))}
+    mapping = {x: coarse.image(x, ordering) for n in candidates for x in node_labels(n)}
     needed = set(ix.ids(substitute_node(c, mapping) for c in candidates))
     stack = list(needed)
     keep: set[int] = set()

@@ -48,7 +48,7 @@ from dataclasses import dataclass, replace
 from ..analysis.reachability import reachable
 from ..errors import UsageError
 from ..generalize.categories import CategoryIndex, load_index
-from ..generalize.relevance import Ordering, coarse_network, input_labels, mentioned, relevant, shared_coarse
+from ..generalize.relevance import Ordering, coarse_network, input_labels, relevant, shared_coarse
 from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
 from ..model.constraints import node_labels
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
@@ -269,7 +269,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         goal_atoms = (Atom(GOAL_REACHED),)
 
     labels = {x for lu in lifted for x in unit_labels(lu.unit)}
-    labels |= {x for n in (*kitchen_nodes, *candidates) for x in (n.label, *mentioned(n))}
+    labels |= {x for n in (*kitchen_nodes, *candidates) for x in node_labels(n)}
     declared = {label: (names.obj(label), names.type_of(index.choose(label))) for label in sorted(labels)}
     predicates = [Predicate(name, tuple((f"?x{k}", ROOT_TYPE) for k in range(shape[0])), comment=shape_label(shape))
                   for shape, name in sorted(names.shapes.items(), key=lambda x: x[1])]

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import itertools
 
-from ..generalize.relevance import Ordering, mentioned
+from ..generalize.relevance import Ordering
+from ..model.constraints import node_labels
 from ..model.foon import ObjectNode, make_node, make_state
 
 __all__ = ["MAX_REPRESENTATIONS", "Shape", "node_atom_labels", "node_of", "representations", "shape_label",
@@ -35,13 +36,13 @@ def shape_with(node: ObjectNode, order: list[str]) -> Shape:
 
 def node_atom_labels(node: ObjectNode, ordering: Ordering) -> tuple[Shape, tuple[str, ...]]:
     """The canonical (shape, argument labels) of `node`."""
-    order = sorted(mentioned(node), key=ordering.key)
+    order = sorted(node_labels(node) - {node.label}, key=ordering.key)
     return shape_with(node, order), (node.label, *order)
 
 
 def representations(node: ObjectNode, ordering: Ordering, shapes: set[Shape]) -> list[tuple[Shape, tuple[str, ...]]]:
     """Every (shape in `shapes`, argument labels) that reconstructs `node`, same-category objects in any order."""
-    order = sorted(mentioned(node), key=ordering.key)
+    order = sorted(node_labels(node) - {node.label}, key=ordering.key)
     groups = [list(g) for _, g in itertools.groupby(order, key=ordering.root)]
     out: list[tuple[Shape, tuple[str, ...]]] = []
     for combo in itertools.islice(itertools.product(*(itertools.permutations(g) for g in groups)),
