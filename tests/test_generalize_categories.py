@@ -6,7 +6,7 @@ import json
 
 import pytest
 from click.testing import CliRunner
-from conftest import SUBGRAPHS
+from conftest import SHARED, SUBGRAPHS
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
@@ -49,6 +49,10 @@ def test_coverage_of_the_shared_subgraphs_and_the_example(example):
     foon, _ = load([SUBGRAPHS])
     cov = coverage((n.label for n in foon.nodes), ix)
     assert len(cov.labels) > 400 and cov.percent >= 90.0
+    for path in sorted(SUBGRAPHS.glob("*.txt")) + sorted((SHARED / "foon_to_pddl-examples").glob("*.txt")):
+        one, _ = load([path])  # each recipe on its own, and the public converter's examples
+        assert coverage((n.label for n in one.nodes), ix).percent >= 95.0, path.name
+    assert ix.choose("hand") == "hands"  # the cook's hand, not a cutting tool
     kitchen = read_kitchen(example_path("example_kitchen.txt"))
     labels = {n.label for n in example.foon.nodes} | {n.label for n in kitchen.nodes}
     labels |= {x for n in kitchen.nodes for s in n.states for x in (s.related, *s.ingredients) if x}
@@ -89,9 +93,9 @@ def test_compress_merges_units_of_one_category():
 
 def test_abstract_kitchen_and_goal():
     ix = shipped_index()
-    k = Kitchen(frozenset({make_node("lime", [make_state("in", "bowl")]), make_node("hand")}))
+    k = Kitchen(frozenset({make_node("lime", [make_state("in", "bowl")]), make_node("xyzzy")}))
     ak = abstract_kitchen(k, ix)
-    assert make_node("citrus fruits", [make_state("in", "bowls")]) in ak and make_node("hand") in ak
+    assert make_node("citrus fruits", [make_state("in", "bowls")]) in ak and make_node("xyzzy") in ak
     spec = abstract_goal(parse_goal_spec("lemonade: contains {lemon juice, sugar}, in [pitcher]"), ix)
     assert spec.label == "beverages"
     assert {s.describe() for s in spec.states} == {"contains {juices, sugars}", "in [pitchers and jugs]"}
@@ -99,6 +103,10 @@ def test_abstract_kitchen_and_goal():
 
 def test_gen_retrieval_solves_the_example_goal_reg_cannot(example):
     ix = shipped_index()
+    for path in sorted(SUBGRAPHS.glob("*.txt")) + sorted((SHARED / "foon_to_pddl-examples").glob("*.txt")):
+        one, _ = load([path])  # each recipe on its own, and the public converter's examples
+        assert coverage((n.label for n in one.nodes), ix).percent >= 95.0, path.name
+    assert ix.choose("hand") == "hands"  # the cook's hand, not a cutting tool
     kitchen = read_kitchen(example_path("example_kitchen.txt"))
     goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
     assert retrieve(example.foon, kitchen, goal).tree is None
