@@ -11,7 +11,15 @@ from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
-from foon2pddl.generalize.cook import DEFAULT_BREADTH, CookSimilarity, cook_overrides, reference_vocabulary
+from foon2pddl.generalize.categories import Category, CategoryIndex, shipped_index
+from foon2pddl.generalize.cook import (
+    DEFAULT_BREADTH,
+    CookSimilarity,
+    cook_overrides,
+    kin,
+    kind_of,
+    reference_vocabulary,
+)
 from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity, mode_matrix
 from foon2pddl.generalize.senses import parse_overrides
@@ -95,6 +103,37 @@ def test_variants_are_not_substitutes(cook):
     assert cook("salt", "sea salt") >= 0.89
 
 
+def test_siblings_stand_only_as_kin_in_the_categories(cook, label_similarity):
+    """Rule 5: siblings (and compounds of one head sense) need FOON-GEN's categories to agree; a kind and a
+    more specific kind of it stand on WordNet alone."""
+    free = CookSimilarity(label_similarity.reader, categories=False)
+    index = shipped_index()
+    for a, b in [("microwave", "oven"), ("fork", "spoon"), ("bowl", "food processor bowl"), ("blender jar", "jar")]:
+        assert free(a, b) >= 0.89, (a, b)
+        assert not set(index.of(a)) & set(index.of(b))  # the oracle: no shared category
+        assert cook(a, b) == 0.0 and cook.explain(a, b).rejected == "category", (a, b)
+    pan = cook.explain("cooking pan", "saucepan")  # pans and pots: different categories, but a kind of pan
+    assert pan.similarity >= 0.89 and pan.ancestor == pan.sense_a == "pan.n.01" and kind_of(pan)
+    assert not kin(index, "cooking pan", "saucepan")
+    assert cook("lemon", "lime") >= 0.89 and kin(index, "lemon", "lime")  # siblings, both citrus fruits
+    words = ["lemon", "lime", "orange", "fork", "spoon", "oven", "toaster", "microwave", "pot", "saucepan",
+             "skillet", "cooking pan", "whisk", "egg beater", "mixer", "bowl", "mixing bowl", "cheese", "feta cheese"]
+    for i, a in enumerate(words):
+        for b in words[i + 1:]:
+            e = cook.explain(a, b)
+            if e.similarity > 0:
+                assert kind_of(e) or kin(index, a, b), (a, b)
+            elif e.rejected == "category":
+                assert free(a, b) > 0 and not kin(index, a, b)
+
+
+def test_kin_follows_refinements():
+    ix = CategoryIndex((Category("food", None, "", ("bread",)), Category("fruit", "food", "", ("apple",)),
+                        Category("tools", None, "", ("knife",))))
+    assert kin(ix, "apple", "bread") and kin(ix, "apple", "apple") and not kin(ix, "apple", "knife")
+    assert kin(ix, "apple", "unknown label")  # a label in no category is not constrained
+
+
 def test_values_are_symmetric_and_bounded(cook):
     words = ["lemon", "lime", "pot", "saucepan", "bowl", "mixing bowl", "sugar", "honey", "greek salad", "salad"]
     for a in words:
@@ -141,6 +180,6 @@ def test_shared_subgraphs_expansion_sizes_per_mode():
     paper = expand(net.foon, similarity="paper")
     assert (paper.original_units, len(paper.foon.units)) == (1845, 19423)
     cook = expand(net.foon)
-    assert (cook.original_units, len(cook.foon.units)) == (1845, 10544)
+    assert (cook.original_units, len(cook.foon.units)) == (1845, 8448)
     assert ("lemon", "lime") in cook.substitutions
     assert not {("cilantro", "banana"), ("banana", "cilantro")} & set(cook.substitutions)

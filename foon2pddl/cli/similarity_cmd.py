@@ -81,12 +81,14 @@ def _distinct_pairs(labels):
 def _why(a: str, b: str, ev) -> str:
     """One line: the sense pair and common ancestor a cook-mode value comes from, or why it is 0."""
     a, b = sorted((a, b))  # the evidence's sense order
-    if ev.rejected in ("same", "unknown", "fixed", "forbidden"):
+    if ev.rejected in ("same", "unknown", "fixed", "forbidden", "variant"):
         what = {"same": "the same label", "unknown": "a label has no sense", "fixed": "fixed by the overrides",
-                "forbidden": "forbidden by the overrides"}[ev.rejected]
+                "forbidden": "forbidden by the overrides",
+                "variant": "rejected: a recipe's own preparation of the other"}[ev.rejected]
         return f"{a} ~ {b}: {what}\n"
     if not ev.ancestor:
         return f"{a} ~ {b}: no common ancestor\n"
     verdict = f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary" if ev.rejected == "broad" \
-        else f"ancestor covers {ev.breadth:.1%} of the vocabulary"
+        else ("rejected: siblings in no common category" if ev.rejected == "category"
+              else f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -3,7 +3,7 @@
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
 Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
 0.9 through their plant senses. This rule keeps the paper's composition (overrides,
-head nouns and modifiers, see `similarity.py`) and changes three things:
+head nouns and modifiers, see `similarity.py`) and changes five things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -18,6 +18,16 @@ head nouns and modifiers, see `similarity.py`) and changes three things:
    is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
    labels of the 100 public FOON subgraphs and the example network) plus the labels of
    the matrix being computed, so a value does not depend on how small a network is.
+
+4. Variants (dish compounds) are not substitutes (`variant`).
+5. Kinds, or kin by the categories: a pair whose best sense pair is a kind and a
+   more specific kind of it (one sense the other's ancestor: pan~saucepan, mixer~egg
+   beater) stands; any other pair, siblings under a common ancestor (microwave~oven,
+   fork~spoon) or two compounds known by one head sense (bowl~food processor bowl),
+   stands only if FOON-GEN's category index (`categories.json`, hand-made) puts the two
+   labels in one category or one in a refinement of the other's (any of their
+   categories), and scores 0 otherwise (`category`). A label in no category is not
+   constrained.
 
 The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
 with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
@@ -34,6 +44,7 @@ from pathlib import Path
 
 from ..model.foon import normalize_label
 from .cache import digest
+from .categories import CategoryIndex, index_path, shipped_index
 from .senses import Overrides, Resolution, kitchen_senses, parse_overrides, resolve
 from .similarity import Evidence
 
@@ -100,10 +111,31 @@ def _under(reader, name: str, roots: frozenset[str]) -> bool:
     return False
 
 
+@lru_cache(maxsize=1)
+def _index_text() -> str:
+    return index_path().read_text(encoding="utf-8")
+
+
 def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -> str:
-    """What a cook matrix depends on beyond its labels, computable without WordNet."""
+    """What a cook matrix depends on beyond its labels (with the shipped category index), computable
+    without WordNet."""
     vocab = sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""})
-    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text)
+    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text())
+
+
+def kind_of(e: Evidence) -> bool:
+    """Whether the sense pair of `e` is a kind and a more specific kind of it (rule 5): two senses, one the
+    other's common ancestor."""
+    return e.sense_a != e.sense_b and e.ancestor in (e.sense_a, e.sense_b)
+
+
+def kin(index: CategoryIndex, a: str, b: str) -> bool:
+    """Whether `index` puts `a` and `b` in one category or one in a refinement of the other's (any of their
+    categories); True when either is in none (rule 5)."""
+    ca, cb = index.of(a), index.of(b)
+    if not ca or not cb:
+        return True
+    return any(x == y or x in index.ancestors(y) or y in index.ancestors(x) for x in ca for y in cb)
 
 
 class CookSimilarity:
@@ -112,7 +144,8 @@ class CookSimilarity:
     mode = "cook"
 
     def __init__(self, reader=None, overrides: Overrides | None = None, *, vocabulary: Iterable[str] = (),
-                 breadth: float = DEFAULT_BREADTH) -> None:
+                 breadth: float = DEFAULT_BREADTH, categories: bool = True) -> None:
+        """`categories=False` drops rule 5 (extending the category index must not read the index it extends)."""
         from . import wordnet
         from .wup import WupTable
 
@@ -124,7 +157,9 @@ class CookSimilarity:
         self._wup = WupTable(self.reader)
         self._resolved: dict[str, Resolution] = {}
         self._evidence: dict[tuple[str, str], Evidence] = {}
+        self._modifier_evidence: dict[tuple[str, str], Evidence] = {}
         self._cover: dict[str, int] | None = None
+        self.categories: CategoryIndex | None = shipped_index() if categories else None
 
     def resolution(self, label: str) -> Resolution:
         label = normalize_label(label)
@@ -166,7 +201,21 @@ class CookSimilarity:
             return Evidence(1.0, rejected="same")
         found = self._evidence.get((a, b))
         if found is None:
-            found = self._evidence[(a, b)] = self._compute(a, b)
+            found = self._compute(a, b)
+            if found.similarity and not found.rejected and self.categories is not None and not kind_of(found) \
+                    and not kin(self.categories, a, b):
+                found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
+            self._evidence[(a, b)] = found
+        return found
+
+    def _modifiers(self, a: str, b: str) -> Evidence:
+        """The similarity of two modifiers (rules 1-4: a modifier is no object label, so no categories)."""
+        a, b = sorted((a, b))
+        if a == b:
+            return Evidence(1.0, rejected="same")
+        found = self._modifier_evidence.get((a, b))
+        if found is None:
+            found = self._modifier_evidence[(a, b)] = self._compute(a, b)
         return found
 
     def _compute(self, a: str, b: str) -> Evidence:
@@ -184,7 +233,7 @@ class CookSimilarity:
             return Evidence(0.0, rejected="variant")
         if ra.modifier is not None and rb.modifier is not None:
             heads = self._best(ra.senses, rb.senses, 0)
-            mod = self.explain(ra.modifier, rb.modifier)
+            mod = self._modifiers(ra.modifier, rb.modifier)
             if mod.rejected and mod.rejected != "fixed" and heads.similarity:
                 return Evidence(0.0, mod.ancestor, mod.sense_a, mod.sense_b, mod.breadth, mod.rejected)
             return Evidence(heads.similarity * mod.similarity, heads.ancestor, heads.sense_a, heads.sense_b,

@@ -6,7 +6,7 @@ Each unknown object label joins the category of the known label it is nearest to
    that label's category (`zucchini bread` -> the category of `bread`);
 2. otherwise nearest member: the known label with the greatest Wu-Palmer value under
    the cook mode's senses (role senses, deepest common ancestor; no breadth rejection,
-   since a category is meant to be broad), at least `min_similarity` (default 0.65);
+   since a category is meant to be broad, and no category rule, which would read the index being extended), at least `min_similarity` (default 0.65);
    ties broken by label order.
 
 A label with no WordNet sense and no known head stays unassigned (listed as such).
@@ -57,7 +57,7 @@ def assign(labels: Iterable[str], index: CategoryIndex, sim=None,
     if sim is None:
         from .cook import CookSimilarity
 
-        sim = CookSimilarity(breadth=1.0, vocabulary=[*known, *todo])
+        sim = CookSimilarity(breadth=1.0, vocabulary=[*known, *todo], categories=False)
     out = []
     for label in todo:
         head = next((t for t in _tails(label) if index.choose(t) is not None), None)
