@@ -35,39 +35,58 @@ def _row(entry, goal, status: BatchStatus | PlanStatus, seconds: float, reason: 
 
 
 def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, rates, output_dir: Path,
-                  table_fmt: str, **encoder_options) -> None:
-    """DIR/<goal>/domain.pddl and problem.pddl per goal (all written atomically at the end), and the table."""
+                  table_fmt: str, shared: bool = False, **encoder_options) -> None:
+    """DIR/<goal>/domain.pddl and problem.pddl per goal (all written atomically at the end), and the table.
+
+    `shared`: every goal unpruned, DIR/domain.pddl once and DIR/<goal>.pddl per goal (`pddl.shared`)."""
     from ..io.atomic import atomic_write_many
     from ..pddl.compile import compile_task, encoding_named
     from ..pddl.render import render
 
-    rows, files = [], {}
-    dirs = [n[: -len(".d")] for n in file_names((e.spec.describe() for e in entries), "d")]
-    for entry, name in zip(entries, dirs, strict=True):
+    rows, files, compiled = [], {}, []
+    stems = [n[: -len(".d")] for n in file_names(["domain", *(e.spec.describe() for e in entries)], "d")][1:]
+    lifted = encoding_named(encoding).lifted
+    for entry, name in zip(entries, stems, strict=True):
         t0 = time.perf_counter()
         goal, why = _resolve(view, entry, encoding)
         if goal is None:
             rows.append(_row(entry, None, BatchStatus.UNMATCHED, time.perf_counter() - t0, why))
             continue
-        task, fixpoint = None, not encoding_named(encoding).lifted  # (see `unreachable_reason`)
-        if (why := unreachable_reason(view.foon, view.kitchen, goal, fixpoint=fixpoint)) is None:
-            task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune, costs, rates, **encoder_options)
-            why = unreachable_reason(view.foon, view.kitchen, goal, task, fixpoint=fixpoint)
+        task = None  # (the fixpoint: see `unreachable_reason`; unpruned, a lifted task is checked pruned)
+        if (why := unreachable_reason(view.foon, view.kitchen, goal, fixpoint=not lifted)) is None:
+            task = compile_task(view.foon, view.kitchen, goal, encoding, level, prune or (shared and lifted), costs,
+                                rates, **encoder_options)
+            why = unreachable_reason(view.foon, view.kitchen, goal, task, fixpoint=not lifted)
         if why is not None:
             rows.append(_row(entry, goal, BatchStatus.UNREACHABLE, time.perf_counter() - t0, why))
             continue
-        domain, problem = render(task)
-        files[output_dir / name / "domain.pddl"] = domain
-        files[output_dir / name / "problem.pddl"] = problem
+        if shared and lifted:
+            task = compile_task(view.foon, view.kitchen, goal, encoding, level, False, costs, rates, **encoder_options)
         row = _row(entry, goal, BatchStatus.COMPILED, time.perf_counter() - t0,
                    units=sum(a.unit is not None for a in task.actions))
-        row["file"] = str(output_dir / name)
+        if shared:
+            compiled.append((goal.describe(), task))
+            row["file"] = str(output_dir / f"{name}.pddl")
+        else:
+            files[output_dir / name / "domain.pddl"], files[output_dir / name / "problem.pddl"] = render(task)
+            row["file"] = str(output_dir / name)
         rows.append(row)
+    if compiled:
+        files = _shared_files(compiled, [r["file"] for r in rows if r["status"] == BatchStatus.COMPILED], output_dir)
     try:
         atomic_write_many(files)
     except OSError as exc:
         raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
-    finish(rows, table_fmt, f"{encoding} encoding", solved=lambda r: r["status"] == BatchStatus.COMPILED)
+    finish(rows, table_fmt, f"{encoding} encoding" + (", one shared domain" if shared else ""),
+           solved=lambda r: r["status"] == BatchStatus.COMPILED)
+
+
+def _shared_files(compiled, problem_files: list[str], output_dir: Path) -> dict[Path, str]:
+    """DIR/domain.pddl and each compiled goal's problem file (`pddl.shared`)."""
+    from ..pddl.shared import render_shared, share_domain
+
+    domain, problems = render_shared(share_domain(compiled))
+    return {output_dir / "domain.pddl": domain, **{Path(f): text for f, text in zip(problem_files, problems, strict=True)}}
 
 
 def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fmt: str, output: Path | None,

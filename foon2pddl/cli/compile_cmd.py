@@ -80,27 +80,32 @@ def encoder_options(encoding: str, instances: tuple[str, ...], category_types: b
               help="Directory for domain.pddl and problem.pddl (a batch: one subdirectory per goal).")
 @click.option("--format", "fmt", type=click.Choice(TABLE_FORMATS), default="text", show_default=True,
               help="Batch result table: text, csv or jsonl (one JSON object per goal).")
+@click.option("--shared-domain", "shared", is_flag=True, default=False,
+              help="One domain for every goal (DIR/domain.pddl, all units: no relevance pruning) and one problem "
+                   "per goal (DIR/<goal>.pddl), the goal in its :goal.")
 def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
              level, network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir,
-             fmt) -> None:
+             fmt, shared) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically).
 
-    Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table.
+    Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table;
+    with --shared-domain, into one domain and one problem per goal (a benchmark set).
 
     Exit status: 0 written, 1 nothing makes the goal from the kitchen or the constraints leave no way to it
     (nothing written; the reason `retrieve` gives), or some goal of a batch names no produced node or is
     unreachable, 2 bad input.
     """
     check_output(output_dir, directory=True)
-    entries = batch_entries(goal, goals_file, goal_file)
+    entries = batch_entries(goal, goals_file, goal_file, "text" if shared else None)
     if entries is not None:
         if constraints_files or without_motions or without or must_use:
             raise UsageError("constraints compile one goal at a time (not a batch)")
         if costs == "success-rate" and rates is None:
             raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
         _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
-        return compile_batch(view, entries, encoding, level, prune, costs, read_rates(rates) if rates else None,
-                             output_dir, fmt, **encoder_options(encoding, instances, category_types, view.foon))
+        return compile_batch(view, entries, encoding, level, prune and not shared, costs,
+                             read_rates(rates) if rates else None, output_dir, fmt, shared=shared,
+                             **encoder_options(encoding, instances, category_types, view.foon))
     try:
         task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
                           utensils, instances, category_types, (constraints_files, without_motions, without, must_use))

@@ -69,26 +69,32 @@ def check_names(task: PlanningTask) -> None:
 DOMAIN_DIGEST_LENGTH = 8
 
 
-def render(task: PlanningTask) -> tuple[str, str]:
-    """(domain text, problem text) of `task`.
-
-    The domain's name is the task's (`foon-tree`) plus `-` and a digest of the domain text written with
-    that name (SHA-256, 8 hex digits): domains that differ (pruning, goal actions) never share a name, so
-    tools that cache domains by name cannot mix them up; the problem's `:domain` names the same.
-    """
+def render_domain(task: PlanningTask) -> tuple[str, str]:
+    """(the domain's name, the domain text) of `task`: the name is the task's (`foon-tree`) plus `-` and a
+    digest of the domain text written with the task's name (SHA-256, `DOMAIN_DIGEST_LENGTH` hex digits), so
+    domains that differ (pruning, goal actions) never share a name and tools that cache domains by name
+    cannot mix them up."""
     check_names(task)
     env = _environment()
     context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
     domain = env.get_template("domain.pddl.j2").render(context)
-    digest = hashlib.sha256(domain.encode()).hexdigest()[:DOMAIN_DIGEST_LENGTH]
-    named = replace(task, domain=f"{task.domain}-{digest}")
-    domain = domain.replace(f"(define (domain {task.domain})", f"(define (domain {named.domain})", 1)
-    return domain, env.get_template("problem.pddl.j2").render({**context, "task": named})
+    name = f"{task.domain}-{hashlib.sha256(domain.encode()).hexdigest()[:DOMAIN_DIGEST_LENGTH]}"
+    return name, domain.replace(f"(define (domain {task.domain})", f"(define (domain {name})", 1)
+
+
+def render(task: PlanningTask) -> tuple[str, str]:
+    """(domain text, problem text) of `task`: the domain named by `render_domain`, the problem's `:domain` the same."""
+    name, domain = render_domain(task)
+    return domain, _problem_text(replace(task, domain=name))
 
 
 def render_problem(task: PlanningTask) -> str:
     """The problem text of `task` alone, its `:domain` the task's own name as given: for problems whose
     domain is a file of its own (a robot's skill domain), not one `render` writes (and names by digest)."""
     check_names(task)
+    return _problem_text(task)
+
+
+def _problem_text(task: PlanningTask) -> str:
     context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
     return _environment().get_template("problem.pddl.j2").render(context)
