@@ -18,7 +18,8 @@ from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
-from foon2pddl.pddl.holders import listed, mismatches, place_of, relational_roles, without
+from foon2pddl.model.places import listed, place_of
+from foon2pddl.pddl.holders import list_gaps, mismatches, relational_roles, task_aliases, unit_aliases, without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Atom
@@ -70,15 +71,57 @@ def test_two_bowls_the_ingredient_list_names_the_holder():
     assert roles[2].stays is not None and roles[2].stays.role == 1  # the bowl listing sugar, not the first bowl
 
 
+def test_a_list_names_an_object_by_its_head_noun():
+    # the bowl lists `salad` where the unit makes `carrot salad` in it; `oil` is in a `pan`, the unit's
+    # pan is a `cooking pan`: read as those objects (rule 0), reported, and read so by the replay
+    bowl, made = n("salad bowl", contains("salad")), n("carrot salad", inside("salad bowl"))
+    mix = FunctionalUnit((n("salad bowl", "empty"),), Motion("mix"), (bowl, made))
+    assert unit_aliases(mix) == (("salad", "carrot salad"),)
+    assert mismatches(mix) == ("salad bowl lists salad, read as carrot salad",)
+    assert list_gaps(mix) == ()  # read as the salad it is in the list
+    pan = n("cooking pan", make_state("on", "stove"))
+    fry = FunctionalUnit((pan, n("oil", inside("bottle"))), Motion("pour"), (pan, n("oil", inside("pan"))))
+    assert unit_aliases(fry) == (("pan", "cooking pan"),)
+    oil = next(r for r in relational_roles(fry) if r.role.label == "oil")
+    assert oil.target is not None and oil.target.holder == "cooking pan" and oil.target.role == 0
+    # two roles it could be the head of: no reading
+    two = FunctionalUnit((n("salad bowl", "empty"),), Motion("mix"),
+                         (bowl, made, n("potato salad", inside("salad bowl"))))
+    assert unit_aliases(two) == ()
+    # a task in which `salad` is itself an object's label reads no alias
+    assert task_aliases([mix], ["salad bowl", "carrot salad"]) == (("salad", "carrot salad"),)
+    assert task_aliases([mix], ["salad bowl", "carrot salad", "salad"]) == ()
+
+
+def test_contradicting_output_nodes_are_gaps():
+    # FOON makes `salad` and `carrot salad` in the bowl, whose node lists only `salad`
+    bowl = n("salad bowl", contains("salad"))
+    unit = FunctionalUnit((n("salad bowl", "empty"),), Motion("mix"),
+                          (bowl, n("salad", inside("salad bowl")), n("carrot salad", inside("salad bowl"))),
+                          (Source("salad.txt", 3),))
+    assert list_gaps(unit) == (("salad bowl", "carrot salad",
+                                "carrot salad is in [salad bowl], whose output node does not list it"),)
+    compiled = compile_goal(Foon((unit,)), Kitchen(frozenset({n("salad bowl", "empty")})),
+                            Goal(GoalSpec("carrot salad"), (unit.outputs[2],)), "relational")
+    assert "label mismatch: salad.txt:3: carrot salad is in [salad bowl], whose output node does not list it" \
+        in compiled.notes
+
+
 def test_label_mismatches_are_reported_per_unit():
     oil = n("green olive oil", inside("bottle"))
     unit = FunctionalUnit((n("bowl", "empty"), oil), Motion("pour"), (n("bowl", contains("olive oil")),))
-    assert mismatches(unit) == ("bowl lists olive oil, which no object of the unit is",)
+    assert mismatches(unit) == ("bowl lists olive oil, read as green olive oil",)
+    assert next(r for r in relational_roles(unit) if r.role.label == "green olive oil").target.role == 0
     unit = FunctionalUnit(unit.inputs, unit.motion, unit.outputs, (Source("salad.txt", 7),))
     kitchen = Kitchen(frozenset({n("bowl", "empty"), oil, n("bottle", contains("green olive oil"))}))
     compiled = compile_goal(Foon((unit,)), kitchen, Goal(GoalSpec("bowl"), unit.outputs), "relational")
-    assert compiled.notes == ("label mismatch: salad.txt:7: bowl lists olive oil, which no object of the unit is",)
+    assert compiled.notes == ("label mismatch: salad.txt:7: bowl lists olive oil, read as green olive oil",)
     assert "; label mismatch: salad.txt:7: bowl lists olive oil" in render(compiled.task)[0]
+    # a name no role is the head of stays a mismatch, and a gap the replay does not check
+    vinegar = FunctionalUnit((n("bowl", "empty"), oil), Motion("pour"), (n("bowl", contains("vinegar")),),
+                             (Source("salad.txt", 9),))
+    assert mismatches(vinegar) == ("bowl lists vinegar, which no object of the unit is",)
+    assert list_gaps(vinegar) == (("bowl", "vinegar", "bowl lists vinegar, which no object of the unit is"),)
 
 
 POUR_FOON = Foon((POUR,))

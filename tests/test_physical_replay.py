@@ -9,7 +9,8 @@ from hypothesis import strategies as st
 from physical_world import World, contents, node, random_world, salsa_world, with_change, with_initial
 
 from foon2pddl.model.physical import Binding, ObjectState
-from foon2pddl.planners.physical_replay import HOLDER_KINDS, listed, places, replay
+from foon2pddl.model.places import listed, places
+from foon2pddl.planners.physical_replay import HOLDER_KINDS, replay
 from foon2pddl.planners.physical_replay import DisagreementKind as K
 
 
@@ -159,6 +160,39 @@ def test_unlisted_content_and_held_by_empty():
     t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["pepper"])))
     t = with_initial(t, ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
     assert K.UNLISTED_CONTENT in kinds(t)
+
+
+def test_a_node_silent_about_its_contents_is_not_checked():
+    # `cutting board (dirty)` says nothing about what is on it: the onion still on it is no disagreement;
+    # `cutting board (empty)` says there is nothing, so the same onion is one
+    onion = ObjectState("onion_1", node("onion", "chopped", ("on", "cutting board")), "board_1", "on")
+    dirty = with_change(with_change(salsa_world().trace(), 0, onion), 0,
+                        ObjectState("board_1", node("cutting board", "dirty")))
+    assert not {K.HELD_BY_EMPTY, K.UNLISTED_CONTENT} & kinds(dirty)
+    empty = with_change(with_change(salsa_world().trace(), 0, onion), 0,
+                        ObjectState("board_1", node("cutting board", "empty")))
+    assert K.HELD_BY_EMPTY in kinds(empty)
+
+
+def test_reported_gaps_are_not_checked_but_only_for_their_pair():
+    def about_bowl_2(trace):
+        return {d.kind for d in replay(trace).disagreements if d.objects[0] == "bowl_2" and d.step < 0}
+
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["pepper"])))
+    t = with_initial(t, ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
+    assert {K.MISSING_CONTENT, K.UNLISTED_CONTENT} <= about_bowl_2(t)
+    assert not about_bowl_2(replace(t, gaps=(("bowl", "pepper"), ("bowl", "salt"))))
+    assert about_bowl_2(replace(t, gaps=(("bowl", "pepper"),))) == {K.UNLISTED_CONTENT}  # the salt still checked
+    assert about_bowl_2(replace(t, gaps=(("shaker", "pepper"), ("bowl", "salt")))) == {K.MISSING_CONTENT}
+
+
+def test_the_traces_own_aliases_are_read():
+    t = with_initial(salsa_world().trace(), ObjectState("bowl_2", contents("bowl", ["condiment"])))
+    t = with_initial(t, ObjectState("salt_1", node("salt", ("in", "bowl")), "bowl_2", "in"))
+    bowl_2 = [d.kind for d in replay(t).disagreements if d.objects[0] == "bowl_2" and d.step < 0]
+    assert K.MISSING_CONTENT in bowl_2
+    aliased = replay(replace(t, aliases=(("condiment", "salt"),))).disagreements
+    assert not [d for d in aliased if d.objects[0] == "bowl_2" and d.step < 0]
 
 
 def test_unbound_change():

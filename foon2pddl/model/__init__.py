@@ -1,4 +1,5 @@
 """The FOON model: immutable nodes, units, networks, hierarchy levels, goals, kitchens and task trees."""
 
 #: The package's modules (import them by name).
-__all__ = ["bulk", "constraints", "containment", "foon", "goal", "kitchen", "levels", "merge", "physical", "tasktree"]
+__all__ = ["bulk", "constraints", "containment", "foon", "goal", "kitchen", "levels", "merge", "physical", "places",
+           "tasktree"]

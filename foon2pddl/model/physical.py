@@ -116,6 +116,12 @@ class PhysicalTrace:
     objects: tuple[PhysicalObject, ...]
     initial: tuple[ObjectState, ...]
     steps: tuple[TraceStep, ...]
+    #: (name, label): names FOON's lists and places use for an object label, as the trace's builder read
+    #: them and reported them (`salad` for `carrot salad`); a replay reads FOON's words through them
+    aliases: tuple[tuple[str, str], ...] = ()
+    #: (container label, content label): pairs FOON's own nodes contradict each other about (a product
+    #: placed in a container whose node does not list it), as the builder reported them: not checked
+    gaps: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         ids = [o.id for o in self.objects]

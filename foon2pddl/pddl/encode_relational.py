@@ -56,8 +56,9 @@ from .encode_instances import (
     goal_actions_over_objects,
     precedes_facts,
 )
-from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .holders import Place, RelRole, listed, mismatches, place_of, relational_roles
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
+from ..model.places import describes_contents, listed, place_of
+from .holders import Place, RelRole, list_gaps, mismatches, relational_roles, task_aliases
 from .instance_counts import derive_counts
 from .names import NameTable
 from .prune import restoring_units
@@ -69,9 +70,11 @@ __all__ = ["IN", "ON", "encode_relational", "holder_init"]
 IN, ON = "in", "on"
 
 
-def holder_init(instances: list[Instance]) -> list[Instance]:
+def holder_init(instances: list[Instance], alias: dict[str, str] | None = None) -> list[Instance]:
     """Instances with their starting holders: an object whose node names `in [C]` goes into an object of label C
-    whose node lists its label (the first not yet given one of that label), else the first of label C."""
+    whose node lists its label (the first not yet given one of that label), else the first of label C (names
+    read through the task's `alias`es)."""
+    alias = alias or {}
     by_label: dict[str, list[Instance]] = {}
     for x in instances:
         by_label.setdefault(x.label, []).append(x)
@@ -79,14 +82,15 @@ def holder_init(instances: list[Instance]) -> list[Instance]:
     out = []
     for x in instances:
         place = place_of(x.start)
-        if place is None or place[1] not in by_label:
+        if place is None or alias.get(place[1], place[1]) not in by_label:
             out.append(x)
             continue
-        rel, label = place
+        rel, label = place[0], alias.get(place[1], place[1])
         pool = [h for h in by_label[label] if h.name != x.name]
-        listing = [h for h in pool if x.label in listed(h.start)]
+        listing = [h for h in pool if x.label in _read(listed(h.start), alias)]
         free = [h for h in listing if (h.name, x.label) not in used]
-        pick = (free or listing or pool or [None])[0]
+        silent = [h for h in pool if h.start is not None and not describes_contents(h.start)]
+        pick = (free or listing or silent or pool or [None])[0]
         if pick is None:
             out.append(x)
             continue
@@ -95,25 +99,40 @@ def holder_init(instances: list[Instance]) -> list[Instance]:
     return out
 
 
-def implied_holders(instances: list[Instance]) -> tuple[ObjectNode, ...]:
+def _read(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
+    return frozenset(alias.get(x, x) for x in names)
+
+
+def implied_holders(instances: list[Instance], alias: dict[str, str] | None = None) -> tuple[ObjectNode, ...]:
     """Holders the kitchen's objects start in but the task has no object of (`heavy cream (in [carton])` and no
-    carton): one per label, listing what starts in it (`carton (contains {heavy cream})`), sorted by label."""
-    have = {x.label for x in instances}
+    carton in any unit): one per label, listing what starts in it (`carton (contains {heavy cream})`), sorted by
+    label (names read through the task's `alias`es). A holder of the label whose node contradicts it (`egg (in
+    [bowl])` while the only bowl is `bowl (empty)`) is still used: a new bowl the units never name would leave
+    the egg where no unit can reach it (measured: four more unsolvable dishes of the shared subgraphs)."""
+    alias = alias or {}
+    by_label: dict[str, list[Instance]] = {}
+    for h in instances:
+        if h.start is not None:
+            by_label.setdefault(h.label, []).append(h)
     wanted: dict[str, set[str]] = {}
     for x in instances:
         place = place_of(x.start)
-        if place is not None and place[1] not in have:
-            wanted.setdefault(place[1], set()).add(x.label)
+        if place is None:
+            continue
+        label = alias.get(place[1], place[1])
+        pool = [h for h in by_label.get(label, ()) if h.name != x.name]
+        if not pool:
+            wanted.setdefault(label, set()).add(x.label)
     return tuple(make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items()))
 
 
-def implied_contents(instances: list[Instance]) -> tuple[ObjectNode, ...]:
+def implied_contents(instances: list[Instance], alias: dict[str, str] | None = None) -> tuple[ObjectNode, ...]:
     """What a kitchen container lists but the task has no object of (`pot (contains {water})`, no water in any
     unit): one object per label, `water (in [pot])`, sorted by label (the first container listing it)."""
     have = {x.label for x in instances}
     wanted: dict[str, ObjectNode] = {}
     for x in sorted(instances, key=lambda x: x.name):
-        for item in sorted(listed(x.start) - have):
+        for item in sorted(_read(listed(x.start), alias or {}) - have):
             wanted.setdefault(item, make_node(item, [make_state("in", x.label)]))
     return tuple(wanted[k] for k in sorted(wanted))
 
@@ -138,17 +157,19 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         nodes.update(x for r in relational_roles(f.units[u]) for x in (r.role.before, r.after) if x is not None)
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
     instances, init, precede = _instances(table, counts, const)
-    extra = implied_holders(instances)
-    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)])
+    alias = dict(task_aliases([f.units[u] for u in units], have))
+    extra = implied_holders(instances, alias)
+    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)], alias)
     for node in extra:
         const[node] = table.name(node.describe(), key=("node", node))
         if node.label not in type_of:
             type_of[node.label] = table.name(node.label, key=("type", node.label))
             types.append((type_of[node.label], ROOT_TYPE))
-        name = table.name(f"{node.label} 1", key=("instance", node.label, 1))
+        k = 1 + sum(x.label == node.label for x in instances)
+        name = table.name(f"{node.label} {k}", key=("instance", node.label, k))
         instances.append(Instance(name, node.label, node))
         init.append(Atom(IS, (name, const[node])))
-    instances = holder_init(instances)
+    instances = holder_init(instances, alias)
     init.extend(Atom(x.relation.value, (x.holder, x.name)) for x in instances if x.holder is not None)
     left = {r.role.before for u in units for r in relational_roles(f.units[u]) if r.changes}
     stable = {n for n in const if n not in left}
@@ -164,7 +185,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                   Predicate(GOAL_REACHED, comment="a goal candidate was made")]
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
-    notes = sorted({f"{_where(f.units[u])}: {m}" for u in units for m in mismatches(f.units[u])})
+    found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
+    notes = sorted({f"{_where(unit)}: {m}" for unit, m in found})
+    commented = sorted({f"{_where(unit, short_path)}: {m}" for unit, m in found})  # no checkout path in files
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),
@@ -172,15 +195,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
         comments=header("relational", inp, options, len(units)) + _count_lines(counts)
-        + tuple(f"label mismatch: {m}" for m in notes),
+        + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances),
     )
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes))
 
 
-def _where(unit) -> str:
+def _where(unit, path=str) -> str:
     src = unit.source
-    return f"{src.path}:{src.line}" if src is not None else "?"
+    return f"{path(src.path)}:{src.line}" if src is not None else "?"
 
 
 def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],

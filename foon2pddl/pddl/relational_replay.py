@@ -27,7 +27,8 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
-from .holders import listed, relational_roles, without
+from ..model.places import describes_contents, listed
+from .holders import list_gaps, relational_roles, task_aliases, without
 from .instance_replay import source_of
 from .registry import PlanDecodeError
 from .task import Atom, PlanningTask, released
@@ -36,10 +37,6 @@ from .trace_view import TraceView, changed, show_node
 __all__ = ["RELATIONAL_VIEW", "relational_json", "relational_text", "relational_trace", "step_words"]
 
 _RELATIONS = {r.value for r in Relation}
-
-
-def _describes_contents(node: ObjectNode | None) -> bool:
-    return node is not None and any(s.label in ("contains", "empty") for s in node.states)
 
 
 def _holders(facts: set[Atom]) -> dict[str, tuple[str, Relation]]:
@@ -60,6 +57,12 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
     node: dict[str, ObjectNode | None] = {x.name: x.start for x in task.instances}
     consumed: set[str] = set()
     holder = _holders(facts)
+    units = [task.units[a.unit] for a in task.actions if a.unit is not None]
+    aliases = task_aliases(units, label.values())
+    alias = dict(aliases)
+
+    def lists(node: ObjectNode | None) -> frozenset[str]:  # a list read through the task's aliases
+        return frozenset(alias.get(x, x) for x in listed(node))
     out = []
     for n, step in enumerate(steps, start=1):
         name, *args = step.split()
@@ -106,7 +109,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         for h in params:
             gone.setdefault(h, set())
         for h, labels in sorted(gone.items()):  # a read-only or late-bound source no longer holds what left it
-            empty = without(node[h], labels) if node[h] is not None and listed(node[h]) & labels else None
+            empty = without(node[h], labels, alias) if node[h] is not None and lists(node[h]) & labels else None
             if h in names:
                 k = names.index(h)
                 if empty is not None and bindings[k].after is None:
@@ -123,9 +126,9 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
             if r.role.after is None and r.changes and holder.get(x, ("",))[0] in made_in:
                 consumed.add(x)
         for c in sorted(bound):
-            if c in consumed or not _describes_contents(node[c]):
+            if c in consumed or not describes_contents(node[c]):
                 continue
-            keep, had = listed(node[c]), listed(was[c][0])
+            keep, had = lists(node[c]), lists(was[c][0])
             for y in sorted(y for y, (h, _) in holder.items() if h == c):
                 if (y not in consumed and y not in changed_now and node[y] is not None and label[y] not in keep
                         and (label[y] in had or y in read)):
@@ -147,7 +150,9 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         out.append(TraceStep(len(out), unit, tuple(bindings), tuple(changes), source_of(unit)))
     start = _holders(set(task.init))
     initial = tuple(ObjectState(x.name, x.start, *start.get(x.name, (None, None))) for x in task.instances)
-    return PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances), initial, tuple(out))
+    gaps = tuple(sorted({(c, x) for u in units for c, x, _ in list_gaps(u)}))
+    return PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances), initial, tuple(out),
+                         aliases, gaps)
 
 
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:

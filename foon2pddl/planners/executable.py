@@ -37,7 +37,8 @@ from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
 from ..model.tasktree import TaskTree
 from ..pddl.pairing import RoleKind, unit_roles
-from .foon_places import places, step_source
+from ..model.places import places
+from .foon_places import step_source
 
 __all__ = ["Executability", "Verdict", "needed", "schedule"]
 

@@ -50,7 +50,7 @@ from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
-from .foon_places import listed, places
+from ..model.places import listed, places
 from .physical_replay import replay
 
 __all__ = ["HolderEvidence", "InferredTrace", "physical_trace", "replay_note"]

@@ -20,9 +20,11 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   scene's placement FOON is silent about: the bowl on `counter_1`); any other holder
   is `UNEXPECTED_HOLDER` (a board that is cut on, then carried, still holding the onion);
 * contents, for holders of a *container label* (a label some node of the trace gives a
-  `contains` or `empty` state and some node names as a place; a stove or a table, whose
-  nodes never describe what is on them, may hold anything, and a `contains` list on a
-  mixture nothing is put in names its ingredients): the labels a container's node lists
+  `contains`, `empty` or `with` state and some node names as a place; a stove or a table,
+  whose nodes never describe what is on them, may hold anything, and a `contains` list on
+  a mixture nothing is put in names its ingredients), when its node describes its contents
+  (a `contains`, `empty` or `with` state: `cutting board (dirty)` with the bread still on it
+  says nothing about what is on the board, so nothing is checked): the labels a container's node lists
   (`contains {a, b}`, `contains [a]`) are exactly covered by the existing objects in or
   on it, directly or through others (the dressing on the carrot in the bowl). An
   ingredient list names what went into a mixture, so an object *stands for* its label
@@ -30,7 +32,9 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   changed that end up in the holder it was in (or under the mixture it was on, consumed
   too; or, for a consumed object that stood free, by the objects the step made),
   transitively. A listed label nothing in the container stands for (nor the container
-  itself, when it is a mixture that absorbed it) is `MISSING_CONTENT`, or `STALE_SOURCE`
+  itself, when it is a mixture that absorbed it) is `MISSING_CONTENT` (unless the trace's
+  builder reported that FOON's own nodes contradict each other about that container label
+  and content label, `PhysicalTrace.gaps`: then the pair is not checked), or `STALE_SOURCE`
   when an object of that label left the container in a step that gave the container no
   new node (FOON leaves a pour's source out of the unit's outputs, so its list goes
   stale), or `CLAIMED_TWICE` when the only objects of that label are in other containers
@@ -67,9 +71,10 @@ from enum import StrEnum
 
 from ..model.foon import ObjectNode
 from ..model.physical import ObjectState, PhysicalTrace, Relation, TraceStep
-from .foon_places import container_labels, listed, places, step_source
+from ..model.places import describes_contents, listed, places
+from .foon_places import container_labels, step_source
 
-__all__ = ["HOLDER_KINDS", "Disagreement", "DisagreementKind", "ReplayReport", "container_labels", "listed", "places", "replay"]
+__all__ = ["HOLDER_KINDS", "Disagreement", "DisagreementKind", "ReplayReport", "replay"]
 
 
 class DisagreementKind(StrEnum):
@@ -140,6 +145,7 @@ class _Replay:
         self.label = {o.id: o.label for o in trace.objects}
         self.initial = {s.id: s for s in trace.initial}
         self.containers = container_labels(trace, aliases)
+        self.gaps = frozenset((aliases.get(c, c), aliases.get(x, x)) for c, x in trace.gaps)
         self.absorbed: dict[str, frozenset[str]] = {}
         self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
@@ -226,9 +232,12 @@ class _Replay:
                 claims.setdefault(x, []).append(h)
         for h in holders:
             node, items = states[h].node, self.listed(states[h].node)
+            if not describes_contents(node):  # `cutting board (dirty)`: silent about what is on it
+                continue
             covered = frozenset().union(self.absorbed.get(h, frozenset()),
                                         *map(self.stands_for, _below(h, cover)))
-            for x in sorted(items - covered):
+            gap = {x for c, x in self.gaps if c == self.label[h]}
+            for x in sorted(items - covered - gap):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
                 left = self.stale.get((h, x))
                 if left is not None and left[0] == node:
@@ -242,7 +251,7 @@ class _Replay:
                     add(DisagreementKind.MISSING_CONTENT, (h,), f"{h} lists {x}, but nothing in it is {x} "
                         "or was made from it")
             for o in inside.get(h, ()):
-                if self.stands_for(o) & items:
+                if self.stands_for(o) & (items | gap):
                     continue
                 if items:
                     add(DisagreementKind.UNLISTED_CONTENT, (h, o),
@@ -356,9 +365,10 @@ def replay(trace: PhysicalTrace, aliases: Mapping[str, str] | None = None) -> Re
 
     `aliases` maps a name FOON writes in an ingredient list or a place to the object label it means
     (`olive oil` -> `green olive oil`, `muff` -> `muffin pan`): label mismatches the caller has reported,
-    so they are not reported again as missing or misplaced contents.
+    so they are not reported again as missing or misplaced contents. The trace's own `aliases` (those its
+    builder reported) are read too; `aliases` wins where both name one word.
     """
-    run = _Replay(trace, aliases or {})
+    run = _Replay(trace, {**dict(trace.aliases), **(aliases or {})})
     snapshots = iter(trace.states())
     before = next(snapshots)
     run.check_state(before, -1, "")

@@ -1,0 +1,56 @@
+"""What FOON's own words say about where an object is and what a container holds.
+
+FOON writes relations into states: `onion (chopped, in [bowl])` names the onion's
+place, `bowl (contains {onion, salt})` the bowl's contents. These readers are the
+one reading of those words, shared by the encodings that model holders and the
+independent replay that checks their plans (so both read FOON alike, and only the
+plan's facts can make them disagree).
+
+>>> from .foon import make_node, make_state
+>>> onion = make_node("onion", [make_state("chopped"), make_state("in", "bowl")])
+>>> places(onion), place_of(onion)
+(((<Relation.IN: 'in'>, 'bowl'),), (<Relation.IN: 'in'>, 'bowl'))
+>>> bowl = make_node("bowl", [make_state("contains", "", ["onion", "salt"])])
+>>> sorted(listed(bowl)), describes_contents(bowl), describes_contents(onion)
+(['onion', 'salt'], True, False)
+"""
+
+from __future__ import annotations
+
+from .foon import ObjectNode
+from .physical import Relation
+
+__all__ = ["CONTENT_STATES", "describes_contents", "listed", "place_of", "places"]
+
+#: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
+CONTENT_STATES = frozenset({"contains", "empty", "with"})
+
+
+def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
+    """The places a node names, in order: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]` (a bare
+    `on` is an appliance switched on, not a place)."""
+    if node is None:
+        return ()
+    return tuple((Relation(s.label), s.related) for s in node.states if s.label in ("in", "on") and s.related)
+
+
+def place_of(node: ObjectNode | None) -> tuple[Relation, str] | None:
+    """The node's first place (`(in, bowl)` for `in [bowl]`), None when it names none."""
+    named = places(node)
+    return named[0] if named else None
+
+
+def listed(node: ObjectNode | None) -> frozenset[str]:
+    """The labels a container node lists: the ingredients and related objects of its `contains` states, and
+    the related object of a `with` state (`baking tray (with [aluminium foil])`: the foil is on the tray)."""
+    if node is None:
+        return frozenset()
+    items = {i for s in node.states if s.label == "contains" for i in (*s.ingredients, s.related) if i}
+    items |= {s.related for s in node.states if s.label == "with" and s.related}
+    return frozenset(items - {node.label})
+
+
+def describes_contents(node: ObjectNode | None) -> bool:
+    """Whether the node says what is in or on the object (`contains`, `empty`, `with`): a node that does not
+    (`cutting board (dirty)`, `bowl (clean)`) is silent about its contents, and nothing is checked of them."""
+    return node is not None and any(s.label in CONTENT_STATES for s in node.states)
