@@ -8,7 +8,7 @@ import re
 import pytest
 from click.testing import CliRunner
 from conftest import SUBGRAPHS
-from foon_strategies import foons, full
+from foon_strategies import foons, full, full_unit
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -306,6 +306,52 @@ def test_mutated_subgraphs_parse_or_raise_syntax_error(text):
     assert all(u.inputs and u.outputs for u in res.foon.units)
     for with_ids in (False, True):  # whatever was accepted can be written and read back
         assert full(parse_text(write_foon(res.foon, with_ids=with_ids)).foon) == full(res.foon)
+
+
+#: A unit read after a block, so that a block holding none still reads as a file (and shows its warnings).
+_SENTINEL = ["//", "O\tsentinel", "M\tsentinel", "O\tsentinel done", ""]
+
+
+def _alone(rows: list[str], offset: int):
+    """One block read as a file of its own, lines renumbered as in the whole text: a list [units with
+    source lines, warnings], or the error as a tuple (path, line, message, text)."""
+    try:
+        res = parse_text("\n".join(rows + _SENTINEL), "m.txt")
+    except FoonSyntaxError as err:
+        return (err.path, err.line + offset, err.message, err.text)
+    units = [full_unit(u) + (tuple((s.path, s.line + offset) for s in u.sources),) for u in res.foon.units[:-1]]
+    return [units, [(w.path, w.line + offset, w.message) for w in res.warnings]]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(text=mutated())
+def test_a_text_reads_as_its_blocks_each_read_alone(text):
+    """The reader's caches (lines, states, motions and objects, shared by every block of a file) change
+    nothing: each `//`-separated block read alone, with cold caches, gives the same units (attributes and
+    source lines) and warnings, or the same first error, as the whole text (URLs carry across blocks:
+    `test_source_comment_is_provenance_and_other_comments_are_ignored`)."""
+    rows = text.split("\n")
+    ends = [i + 1 for i, row in enumerate(rows) if row.rstrip("\r").strip().startswith("//")] + [len(rows)]
+    units, warnings, error, start = [], [], None, 0
+    for end in ends:
+        got = _alone(rows[start:end], start)
+        if isinstance(got, tuple):
+            error = got
+            break
+        units += got[0]
+        warnings += got[1]
+        start = end
+    try:
+        res = parse_text(text, "m.txt")
+    except FoonSyntaxError as err:
+        if err.message == "no functional units in file":
+            assert error is None and not units
+        else:
+            assert (err.path, err.line, err.message, err.text) == error
+        return
+    assert error is None
+    assert [full_unit(u) + (tuple((s.path, s.line) for s in u.sources),) for u in res.foon.units] == units
+    assert [(w.path, w.line, w.message) for w in res.warnings] == warnings
 
 
 # ---------------------------------------------------------------- malformed input through the CLI

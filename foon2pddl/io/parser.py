@@ -71,22 +71,6 @@ def parse_file(path: str | Path) -> ParseResult:
     return parse_text(read_text(p), str(p))
 
 
-class _Block:
-    """The unit being read: objects before and after the motion line."""
-
-    __slots__ = ("start", "inputs", "motion", "outputs", "obj")
-
-    def __init__(self, start: int) -> None:
-        self.start = start
-        self.inputs: list[ObjectNode] = []
-        self.motion: Motion | None = None
-        self.outputs: list[ObjectNode] = []
-        self.obj: _PendingObject | None = None
-
-    def empty(self) -> bool:
-        return self.obj is None and self.motion is None and not self.inputs and not self.outputs
-
-
 class _PendingObject:
     __slots__ = ("label", "flag", "goal", "dish", "states", "keys")
 
@@ -107,19 +91,21 @@ class _PendingObject:
 
 def parse_text(text: str, path: str = "<string>") -> ParseResult:
     """Parse FOON text; `path` is used in errors, warnings and provenance."""
+    lines = text.split("\n")
     reader = _Reader(path)
-    lineno = 0
-    for lineno, raw in enumerate(text.split("\n"), start=1):
-        reader.line(lineno, raw)
-    return reader.finish(lineno, text.endswith("\n"))
+    reader.read(lines)
+    return reader.finish(len(lines), text.endswith("\n"))
 
 
 class _Reader:
-    """The state of one `parse_text` run: the open block, what was read so far, and caches.
+    """The state of one `parse_text` run: what was read so far, and caches.
 
     Lines recur verbatim (a unit's outputs are the next unit's inputs): each distinct
-    line is classified once, each state, motion and object built once and shared; what
-    depends on the surrounding block is checked per occurrence.
+    line is classified once, each state, motion and object built once and shared (an
+    object is looked up by its `O` line's fields and its states' raw fields, so a
+    recurring object costs one dictionary look-up per line); what depends on the
+    surrounding block is checked per occurrence. `read` is one loop over the lines
+    with the open block in local variables: O(lines) dictionary look-ups.
     """
 
     def __init__(self, path: str) -> None:
@@ -127,11 +113,13 @@ class _Reader:
         self.units: list[FunctionalUnit] = []
         self.warnings: list[ParseWarning] = []
         self.urls: list[str] = []
-        self.block = _Block(1)
         self.state_cache: dict[tuple[str, ...], State] = {}
         self.node_cache: dict[tuple, ObjectNode] = {}
+        self.raw_nodes: dict[tuple[str, ...], ObjectNode] = {}
         self.line_cache: dict[str, tuple] = {}
         self.motion_cache: dict[tuple[str, ...], Motion] = {}
+        #: The open block, once `read` has returned (`finish` closes it).
+        self.open: tuple = (1, [], None, [], [])
 
     def fail(self, lineno: int, message: str, line: str) -> FoonSyntaxError:
         return FoonSyntaxError(self.path, lineno, message, line)
@@ -140,77 +128,101 @@ class _Reader:
         """`fail` for one line: message -> error naming that line."""
         return lambda message: self.fail(lineno, message, raw.rstrip("\r"))
 
-    def close_object(self) -> None:
-        block = self.block
-        if block.obj is not None:
-            key = block.obj.cache_key()
+    def node(self, raws: tuple[str, ...]) -> ObjectNode:
+        """The object its raw `O` and `S` lines make (all classified and their states parsed), built once
+        per distinct spelling and shared by every spelling with the same fields."""
+        node = self.raw_nodes.get(raws)
+        if node is None:
+            head = self.line_cache[raws[0]]
+            keys = tuple(self.line_cache[raw][1] for raw in raws[1:])
+            key = (head, keys)
             node = self.node_cache.get(key)
             if node is None:
-                node = self.node_cache[key] = block.obj.build()
-            (block.inputs if block.motion is None else block.outputs).append(node)
-            block.obj = None
+                states = [self.state_cache[k] for k in keys]
+                node = self.node_cache[key] = make_node(head[1], states, motion_flag=head[2], goal=head[3],
+                                                        dish=head[4])
+            self.raw_nodes[raws] = node
+        return node
 
-    def close_block(self, lineno: int) -> None:
-        self.close_object()
-        block = self.block
-        if not block.empty():
-            problem = None
-            if block.motion is None:
-                problem = "block has no motion line ('M'); skipped"
-            elif not block.outputs:
-                problem = "unit has no output objects after its motion line; skipped"
-            elif not block.inputs:
-                problem = "unit has no input objects before its motion line; skipped"
-            if problem:
-                self.warnings.append(ParseWarning(self.path, block.start, problem))
-            else:
-                url = self.urls[-1] if self.urls else None
-                self.units.append(FunctionalUnit(tuple(block.inputs), block.motion, tuple(block.outputs),
-                                                 (Source(self.path, block.start, url),)))
-        self.block = _Block(lineno + 1)
-
-    def line(self, lineno: int, raw: str) -> None:
-        """Read one line into the open block."""
-        entry = self.line_cache.get(raw)
-        if entry is None:
-            entry = self.line_cache[raw] = _classify(raw, self.at(lineno, raw))
-        kind = entry[0]
-        if kind == "#":
+    def unit(self, start: int, inputs: list[ObjectNode], motion: Motion | None, outputs: list[ObjectNode]) -> None:
+        """Add the block read from line `start` as a unit, or warn why it is skipped (nothing for an empty one)."""
+        if motion is None and not inputs and not outputs:
             return
-        if kind == "url":
-            self.urls.append(entry[1])
-            return
-        if kind == "//":
-            self.close_block(lineno)
-            return
-        block = self.block
-        if block.empty():
-            block.start = lineno
-        if kind == "O":
-            self.close_object()
-            block.obj = _PendingObject(*entry[1:])
-        elif kind == "S":
-            if block.obj is None:
-                raise self.fail(lineno, "state line ('S') before any object line ('O') of its unit", raw.rstrip("\r"))
-            key = entry[1]
-            state = self.state_cache.get(key)
-            if state is None:
-                state = self.state_cache[key] = _parse_state(("S",) + key, self.at(lineno, raw))
-            block.obj.states.append(state)
-            block.obj.keys.append(key)
+        problem = None
+        if motion is None:
+            problem = "block has no motion line ('M'); skipped"
+        elif not outputs:
+            problem = "unit has no output objects after its motion line; skipped"
+        elif not inputs:
+            problem = "unit has no input objects before its motion line; skipped"
+        if problem:
+            self.warnings.append(ParseWarning(self.path, start, problem))
         else:
-            if block.motion is not None:
-                raise self.fail(lineno, "second motion line ('M') in one unit (missing '//'?)", raw.rstrip("\r"))
-            self.close_object()
-            key = entry[1]
-            motion = self.motion_cache.get(key)
-            if motion is None:
-                motion = self.motion_cache[key] = _parse_motion(key, self.at(lineno, raw))
-            block.motion = motion
+            url = self.urls[-1] if self.urls else None
+            self.units.append(FunctionalUnit(tuple(inputs), motion, tuple(outputs), (Source(self.path, start, url),)))
+
+    def read(self, lines: list[str]) -> None:
+        """Read `lines` (line 1 first); the last block stays open in `self.open`.
+
+        A line enters the line cache once it passed every check that does not depend on its block
+        (a state line: once its state is parsed), so a cached line needs only its block's checks.
+        """
+        line_cache, state_cache, raw_nodes, node = self.line_cache, self.state_cache, self.raw_nodes, self.node
+        start, inputs, motion, outputs = 1, [], None, []
+        raws: list[str] = []  # the open object's raw `O` line and state lines ([] when none is open)
+        for lineno, raw in enumerate(lines, start=1):
+            entry = line_cache.get(raw)
+            if entry is None:
+                entry = _classify(raw, self.at(lineno, raw))
+                if entry[0] == "S" and raws:
+                    key = entry[1]
+                    if key not in state_cache:
+                        state_cache[key] = _parse_state(("S",) + key, self.at(lineno, raw))
+                    line_cache[raw] = entry
+                elif entry[0] != "S":
+                    line_cache[raw] = entry
+            kind = entry[0]
+            if kind == "S":
+                if not raws:
+                    raise self.fail(lineno, "state line ('S') before any object line ('O') of its unit",
+                                    raw.rstrip("\r"))
+                raws.append(raw)
+            elif kind == "O":
+                if raws:
+                    made = raw_nodes.get(key := tuple(raws)) or node(key)
+                    (inputs if motion is None else outputs).append(made)
+                elif motion is None and not inputs and not outputs:
+                    start = lineno
+                raws = [raw]
+            elif kind == "//":
+                if raws:
+                    made = raw_nodes.get(key := tuple(raws)) or node(key)
+                    (inputs if motion is None else outputs).append(made)
+                    raws = []
+                self.unit(start, inputs, motion, outputs)
+                start, inputs, motion, outputs = lineno + 1, [], None, []
+            elif kind == "M":
+                if motion is not None:
+                    raise self.fail(lineno, "second motion line ('M') in one unit (missing '//'?)", raw.rstrip("\r"))
+                if raws:
+                    inputs.append(raw_nodes.get(key := tuple(raws)) or node(key))
+                    raws = []
+                elif not inputs and not outputs:
+                    start = lineno
+                key = entry[1]
+                motion = self.motion_cache.get(key)
+                if motion is None:
+                    motion = self.motion_cache[key] = _parse_motion(key, self.at(lineno, raw))
+            elif kind == "url":
+                self.urls.append(entry[1])
+        self.open = (start, inputs, motion, outputs, raws)
 
     def finish(self, lineno: int, final_newline: bool) -> ParseResult:
         """Close the last block; the result (FoonSyntaxError at the last line when no unit was read)."""
-        self.close_block(lineno)
+        start, inputs, motion, outputs, raws = self.open
+        if raws:
+            (inputs if motion is None else outputs).append(self.node(tuple(raws)))
+        self.unit(start, inputs, motion, outputs)
         if not self.units:  # reported at the last line of the file (1 when empty)
             raise FoonSyntaxError(self.path, max(lineno - final_newline, 1), "no functional units in file")
         return ParseResult(Foon(tuple(self.units)), tuple(self.warnings), tuple(dict.fromkeys(self.urls)))

@@ -12,6 +12,7 @@ import re
 from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
+from operator import attrgetter
 
 from .bulk import bulk
 
@@ -103,7 +104,11 @@ def make_node(
     dish: int | None = None,
 ) -> ObjectNode:
     """Build a normalized node: label normalized, states sorted and deduplicated."""
-    return ObjectNode(normalize_label(label), tuple(sorted(set(states))), motion_flag, goal, dish)
+    return ObjectNode(normalize_label(label), tuple(sorted(set(states), key=_STATE_ORDER)), motion_flag, goal, dish)
+
+
+#: `State`'s dataclass order as a key read in C (the generated `__lt__` builds two tuples per comparison).
+_STATE_ORDER = attrgetter("label", "related", "ingredients")
 
 
 @dataclass(frozen=True)
