@@ -8,7 +8,7 @@ from click.testing import CliRunner
 
 from foon2pddl.cli import main
 from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, parse_index, shipped_index
-from foon2pddl.generalize.extend import assign, extended_index, index_json
+from foon2pddl.generalize.extend import assign, by_name, extended_index, index_json
 
 FORGOTTEN = ("lime", "salad bowl", "cayenne pepper")
 
@@ -59,3 +59,19 @@ def test_a_hand_is_not_filed_with_the_tools(label_similarity):
     small = CategoryIndex(tuple(c for c in shipped_index().categories if "hand" not in c.members))
     (found,) = assign(["hand"], small)
     assert found.category is None and found.how == "none"
+
+
+def test_a_label_ending_in_a_category_name_joins_that_category():
+    ix = CategoryIndex((Category("sauces", None, "", ("ketchup",)),
+                        Category("pasta and pizza sauces", "sauces", "", ("marinara",)),
+                        Category("spices", None, "", ("cumin",)),
+                        Category("allium powders", "spices", "", ("garlic powder",)),
+                        Category("puddings and custards", None, "", ("flan",)),
+                        Category("berries", None, "", ("blueberry",))))
+    assert by_name("banana pudding", ix) == "puddings and custards"  # a part's head, singular
+    assert by_name("pizza sauce", ix) == "pasta and pizza sauces"  # the longest part it contains
+    assert by_name("enchilada sauce", ix) == "sauces"  # no evidence for a refinement: the general one
+    assert by_name("curry powder", ix) is None  # `allium powders` needs `allium`
+    assert by_name("wild berry", ix) == "berries" and by_name("sauce", ix) == "sauces"
+    (found,) = assign(["banana pudding"], ix, sim=lambda a, b: 0.0)
+    assert (found.category, found.how) == ("puddings and custards", "name")

@@ -55,8 +55,9 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
     or --extend it to a network's labels.
 
     With --check, exit status 1 when some object label has no category. With --extend, the
-    review list is TSV on stderr: label, category, the known label it was matched to,
-    similarity, and how (head noun, wordnet, or none when no category was found).
+    review list is TSV on stderr: label, category, the known label (or category name) it was
+    matched to, similarity, and how (head noun, category name, wordnet, or none when no
+    category was found).
     """
     from ..generalize.categories import coverage, load_index
 

@@ -4,12 +4,19 @@ Each unknown object label joins the category of the known label it is nearest to
 
 1. head noun: a compound whose head (or a shorter tail of it) is a known label joins
    that label's category (`zucchini bread` -> the category of `bread`);
-2. otherwise nearest member: the known label with the greatest Wu-Palmer value under
+2. otherwise category name: a label that ends with a part of a category's name (the
+   name split at " and ", words compared in the singular) and contains all its words
+   joins that category (`banana pudding` -> `puddings and custards`, `enchilada sauce`
+   -> `sauces`, `pizza sauce` -> `pasta and pizza sauces`, but `curry powder` not
+   `allium powders`); among several, the longest part, then the shallowest category,
+   then file order;
+3. otherwise nearest member: the known label with the greatest Wu-Palmer value under
    the cook mode's senses (role senses, deepest common ancestor; no breadth rejection,
    since a category is meant to be broad, and no category rule, which would read the index being extended), at least `min_similarity` (default 0.65);
    ties broken by label order.
 
-A label with no WordNet sense and no known head stays unassigned (listed as such).
+A label with no WordNet sense, no known head and no category-name head stays unassigned
+(listed as such).
 Every assignment is returned with its evidence for review (`Assignment`); the index
 is otherwise unchanged. Cost: per unknown label, one similarity per known label.
 """
@@ -34,7 +41,7 @@ class Assignment:
     category: str | None
     via: str = ""
     similarity: float = 0.0
-    how: str = ""  # head | wordnet | none
+    how: str = ""  # head | name | wordnet | none
 
     def describe(self) -> str:
         if self.category is None:
@@ -45,6 +52,43 @@ class Assignment:
 def _tails(label: str) -> list[str]:
     words = label.split()
     return [" ".join(words[i:]) for i in range(1, len(words))]
+
+
+def _singular(word: str) -> str:
+    """English plural to singular for category-name words (`puddings`, `sauces`, `berries`, `dishes`)."""
+    if word.endswith("ies") and len(word) > 4:
+        return word[:-3] + "y"
+    if word.endswith(("ches", "shes", "sses", "xes")):
+        return word[:-2]
+    if word.endswith("s") and not word.endswith("ss"):
+        return word[:-1]
+    return word
+
+
+def _name_parts(index: CategoryIndex) -> dict[str, list[tuple[str, frozenset[str]]]]:
+    """Singular head word -> (category, the singular words of its name part) in file order (rule 2)."""
+    out: dict[str, list[tuple[str, frozenset[str]]]] = {}
+    for c in index.categories:
+        for part in c.name.split(" and "):
+            words = [_singular(w) for w in part.split()]
+            if words:
+                out.setdefault(words[-1], []).append((c.name, frozenset(words)))
+    return out
+
+
+def by_name(label: str, index: CategoryIndex, parts: dict[str, list[tuple[str, frozenset[str]]]] | None = None
+            ) -> str | None:
+    """The category a part of whose name `label` ends with and contains every word of (rule 2 of the module
+    doc): the longest such part, then the shallowest category, then file order; None when there is none."""
+    words = [_singular(w) for w in label.split()]
+    if not words:
+        return None
+    candidates = [(name, part) for name, part in (parts if parts is not None else _name_parts(index)).get(words[-1], ())
+                  if part <= set(words)]
+    if not candidates:
+        return None
+    order = {name: i for i, name in enumerate(index.names)}
+    return min(candidates, key=lambda c: (-len(c[1]), index.depth(c[0]), order[c[0]]))[0]
 
 
 def assign(labels: Iterable[str], index: CategoryIndex, sim=None,
@@ -58,11 +102,16 @@ def assign(labels: Iterable[str], index: CategoryIndex, sim=None,
         from .cook import CookSimilarity
 
         sim = CookSimilarity(breadth=1.0, vocabulary=[*known, *todo], categories=False)
+    parts = _name_parts(index)
     out = []
     for label in todo:
         head = next((t for t in _tails(label) if index.choose(t) is not None), None)
         if head is not None:
             out.append(Assignment(label, index.choose(head), head, 1.0, "head"))
+            continue
+        named = by_name(label, index, parts)
+        if named is not None:
+            out.append(Assignment(label, named, named, 1.0, "name"))
             continue
         best, value = "", 0.0
         for m in known:
