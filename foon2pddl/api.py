@@ -103,8 +103,10 @@ def load_network(*paths: str | Path) -> Network:
 def load_kitchen(network: Network, path: str | Path | None = None, level: int = 3) -> Kitchen:
     """The kitchen file at `path` (JSON, FOON O/S lines, or one node per line) at `level`.
 
-    Without a path: the example kitchen for the example network, else the network's
-    default kitchen (every object that no unit makes, in its starting states).
+    Without a path: the example kitchen for the example network; else the base kitchen (raw
+    ingredients and tools) on a merge of recipes whose default kitchen holds half-made dishes,
+    else the network's default kitchen (every object that no unit makes, in its starting states).
+    `path` may be `"base"` or `"default"` to choose.
 
     >>> len(load_kitchen(load_network()).nodes)
     51

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
 from foon2pddl.io.inputs import example_path
@@ -271,9 +272,8 @@ def test_bare_label_is_the_dish_and_says_so(tmp_path):
 
 
 def test_bare_label_on_the_corpus_picks_a_dish():
-    from conftest import SUBGRAPHS
-
-    r = run("retrieve", SUBGRAPHS, "--goal", "black bean")
+    # both black-bean recipes start from half-made beans no unit makes: only the default kitchen has them
+    r = run("retrieve", SUBGRAPHS, "--goal", "black bean", "--kitchen", "default")
     assert r.exit_code == 0
     assert "read as the recipes' dishes" in r.stderr
     first = r.stdout.splitlines()[0]
@@ -416,6 +416,8 @@ S\tempty
 M\tsqueeze
 O\tpitcher\t0
 S\tcontains\t{lemon juice}
+O\tlemon juice\t1
+S\tin\t[pitcher]
 //
 O\tpitcher\t0
 S\tcontains\t{lemon juice}
@@ -431,21 +433,81 @@ S\tin\t[pitcher]
 
 def test_base_kitchen_starts_from_raw_ingredients(tmp_path):
     foon = write(tmp_path / "lemonade.txt", LEMONADE)
-    default = run("retrieve", foon, "--goal", "lemonade")
-    assert default.exit_code == 0 and "complete: 1 units" in default.stderr
-    assert "note: kitchen: the network's default kitchen" in default.stderr and "--kitchen base" in default.stderr
+    # two recipes merged, one starting from a pitcher of juice another squeezes: the base kitchen by default
+    chosen = run("retrieve", foon, "--goal", "lemonade")
+    assert chosen.exit_code == 0 and "complete: 2 units" in chosen.stderr
+    assert "note: kitchen: base (raw ingredients and tools in their base states, 3 nodes" in chosen.stderr
+    assert "`--kitchen default` for the network's default kitchen (4 nodes, 1 half-made dishes included)" \
+        in chosen.stderr
+    assert "pitcher (contains" not in chosen.stdout.splitlines()[1]  # no half-made dish on hand at the start
     base = run("retrieve", foon, "--goal", "lemonade", "--kitchen", "base")
-    assert base.exit_code == 0 and "complete: 2 units" in base.stderr
+    assert base.exit_code == 0 and base.stdout == chosen.stdout and "note: kitchen" not in base.stderr
+    default = run("retrieve", foon, "--goal", "lemonade", "--kitchen", "default")
+    assert default.exit_code == 0 and "complete: 1 units" in default.stderr and "note: kitchen" not in default.stderr
     assert "pitcher (contains {lemon juice, sugar})" in default.stdout.splitlines()[1]
-    assert "pitcher (contains" not in base.stdout.splitlines()[1]  # no half-made dish on hand at the start
-    assert "note: kitchen" not in base.stderr
-    listed = run("goals", foon, "--kitchen", "base", "--json")
+    listed = run("goals", foon, "--json")
     assert '"kitchen": "base kitchen"' in listed.stdout
     # a file named `base` is still a file
     (tmp_path / "base").write_text("lemon: whole\npitcher: empty\nwater: cold\n")
     from_file = CliRunner().invoke(main, ["retrieve", str(foon), "--goal", "lemonade", "--kitchen", "base"],
                                    catch_exceptions=False)
     assert from_file.exit_code == 0
+
+
+#: One recipe (one dish mark) that starts from a pitcher of lemon juice and also squeezes a lemon.
+ONE_RECIPE = LEMONADE.split("//\nO\tpitcher\t0\nS\tcontains\t{lemon juice}\n")[0].replace("\t0\t0\n", "\t0\n")
+ONE_RECIPE += "//\nO\tpitcher\t0\nS\tcontains\t{lemon juice}\nO\twater\t1\nS\tcold\nM\tpour\n" \
+              "O\tlemonade\t0\t0\nS\tcontains\t{lemon juice,water}\nS\tin\t[pitcher]\n//\n"
+
+
+def test_a_single_recipe_keeps_its_default_kitchen(tmp_path):
+    foon = write(tmp_path / "one.txt", ONE_RECIPE)
+    r = run("retrieve", foon, "--goal", "lemonade: contains {lemon juice, sugar, water}, in [pitcher]")
+    assert r.exit_code == 0 and "complete: 1 units" in r.stderr  # the recipe's own start, as written
+    assert "note: kitchen: default (the network's default kitchen, 4 nodes" in r.stderr
+    assert "`--kitchen base` leaves out its 1 half-made dishes" in r.stderr
+    # from the base kitchen nothing makes it; the hint names the kitchen that does
+    b = run("retrieve", foon, "--goal", "lemonade: contains {lemon juice, sugar, water}, in [pitcher]",
+            "--kitchen", "base")
+    assert b.exit_code == 1 and "hint: `--kitchen default` can make it" in b.stderr
+
+
+def test_half_made_dishes_are_what_a_unit_creates_not_packaging():
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.model.foon import make_node, make_state
+    from foon2pddl.model.kitchen import base_kitchen, chosen_kitchen, default_kitchen, half_made
+
+    foon = parse_text(LEMONADE, "lemonade.txt").foon
+    assert sorted(n.describe() for n in half_made(foon)) == ["pitcher (contains {lemon juice, sugar})"]
+    assert chosen_kitchen(foon) == base_kitchen(foon) != default_kitchen(foon)
+    # milk in its carton: no unit creates milk, so it stays in the base kitchen
+    carton = parse_text("//\nO\tmilk\t1\nS\tin\t[carton]\nO\tbowl\t0\nS\tempty\nM\tpour\n"
+                        "O\tmilk\t1\nS\tin\t[bowl]\nO\tbowl\t0\nS\tcontains\t{milk}\n//\n", "milk.txt").foon
+    assert half_made(carton) == frozenset() and base_kitchen(carton).nodes == default_kitchen(carton).nodes
+    # water a faucet gives is drawn, not made; a unit that outputs bread it never took in (a quirk of the
+    # public data) does not make the loose loaf's label half-made
+    tap = parse_text("//\nO\tfaucet\t0\nS\toff\nM\tturn on\nO\tfaucet\t0\nS\ton\nO\twater\t1\n"
+                     "S\tfrom\t[faucet]\n//\nO\tpitcher\t0\nS\tcontains\t{water}\nO\tbasket\t0\nS\tcontains\t{bread}\n"
+                     "O\tbread\t1\nS\tloaf\n"
+                     "M\tslice\nO\tbread\t1\nS\tsliced\nS\ton\t[plate]\nO\tpitcher\t0\nS\tcontains\t{water}\n"
+                     "//\nO\tplate\t0\nS\tempty\nM\tserve\nO\tbread\t1\nS\ton\t[plate]\n//\n", "tap.txt").foon
+    assert half_made(tap) == frozenset()
+    kept = base_kitchen(tap)
+    assert make_node("pitcher", [make_state("contains", "", ["water"])]) in kept
+    assert make_node("basket", [make_state("contains", "", ["bread"])]) in kept
+
+
+def test_the_kitchen_a_run_uses_on_the_corpus(universal):
+    from foon2pddl.io.files import load
+    from foon2pddl.model.kitchen import BASE_SOURCE, chosen_kitchen, default_kitchen
+
+    foon, _ = universal  # a merge of recipes whose default kitchen holds other recipes' half-made dishes
+    kit = chosen_kitchen(foon)
+    assert kit.source == BASE_SOURCE and len(kit.nodes) < len(default_kitchen(foon).nodes)
+    assert not any(n.label == "pitcher" and "lemon juice" in n.ingredients for n in kit.nodes)
+    for path in sorted(SUBGRAPHS.iterdir())[:20]:  # one recipe each: its default kitchen, as before
+        single, _ = load([path])
+        assert chosen_kitchen(single) == default_kitchen(single)
 
 
 # -- 13. what plan and the experiment leave out, said -------------------------------------------------

@@ -13,9 +13,11 @@ paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Pat
 level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
                             help="Hierarchy level: 1 object, 2 object+states, 3 object+states+ingredients.")
 kitchen_option = click.option("--kitchen", "kitchen", type=click.Path(path_type=Path), default=None,
-                              help="Kitchen file (.json, FOON-style O/S lines, or one node per line), or `base`: "
-                                   "raw ingredients and tools in base states. Default: the example kitchen, or "
-                                   "the network's default kitchen (what no unit makes and base-state inputs).")
+                              help="Kitchen file (.json, FOON-style O/S lines, or one node per line); `base`: raw ingredients "
+                                   "and tools in base states; `default`: the network's default kitchen (what no "
+                                   "unit makes and base-state inputs). Default: the example kitchen, `base` on a "
+                                   "merge of recipes whose default kitchen holds half-made dishes, else `default` "
+                                   "(said on stderr).")
 goal_option = click.option("--goal", "goal", multiple=True,
                            help="Goal: 'label', 'label: state, state [obj]' or 'label: contains {a, b}'. "
                                 "Repeat for a batch of goals.")
@@ -232,9 +234,9 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         net = load_network(paths)
     kit = load_kitchen(kitchen, net, level)
     if kitchen is None and not net.is_example:
-        click.echo(f"note: kitchen: the network's default kitchen ({len(kit.nodes):,} nodes: what no unit makes, "
-                   "and inputs in base states, half-made dishes included); `--kitchen base` starts from raw "
-                   "ingredients and tools", err=True)
+        from .kitchen_note import kitchen_note
+
+        click.echo(kitchen_note(kit, net.at(level)), err=True)
     if constraints is not None and NETWORKS[network].substitutes is not Substitutes.NONE:
         from ..generalize.substitution import without_banned
 

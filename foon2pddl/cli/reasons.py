@@ -78,6 +78,7 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     from .progress import slow_step
 
     spec = goal_spec(goal, goal_file)
+    _default_kitchen_hint(net, kitchen, spec, level)
     with slow_step("checking which other network makes it (for a hint)"):
         kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
                                     confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
@@ -85,6 +86,26 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     if kinds:
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
+
+
+def _default_kitchen_hint(net, kitchen, spec, level: int) -> None:
+    """From the base kitchen: say (stderr) when the network's default kitchen makes the goal (FOON's fixpoint)."""
+    from ..analysis.reachability import reachable
+    from ..errors import FoonError
+    from ..model.goal import resolve_goal
+    from ..model.kitchen import BASE_SOURCE, default_kitchen
+
+    if kitchen.source != BASE_SOURCE:
+        return
+    foon = net.at(level)
+    try:
+        goal = resolve_goal(spec, foon)
+    except FoonError:
+        return
+    reach = reachable(foon, default_kitchen(foon).nodes)
+    if any(reach.can_make(c) for c in goal.candidates):
+        click.echo("hint: `--kitchen default` can make it: the network's default kitchen holds the half-made "
+                   "dishes the base kitchen leaves out", err=True)
 
 
 def _lifted_solves(net, kitchen, spec, level: int, encoding: str) -> bool:

@@ -48,17 +48,19 @@ def load_network(paths: Sequence[str | Path], skip_invalid: bool = False) -> Net
 
 
 def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitchen:
-    """The kitchen file given, `base` (raw ingredients and tools, `model.kitchen.base_kitchen`), the example
-    kitchen for the example network, else the default kitchen."""
-    from ..model.kitchen import BASE_KITCHEN, base_kitchen, default_kitchen
+    """The kitchen file given; `base` (raw ingredients and tools, `model.kitchen.base_kitchen`) or `default`
+    (`default_kitchen`) when no such file exists; the example kitchen for the example network; else the
+    kitchen `model.kitchen.chosen_kitchen` picks (base on a merge of recipes with half-made dishes)."""
+    from ..model.kitchen import BASE_KITCHEN, DEFAULT_KITCHEN, base_kitchen, chosen_kitchen, default_kitchen
     from .kitchen_files import read_kitchen
 
-    if path is not None and str(path) == BASE_KITCHEN and not Path(path).exists():
-        return base_kitchen(network.at(level))
+    named = {BASE_KITCHEN: base_kitchen, DEFAULT_KITCHEN: default_kitchen}
+    if path is not None and str(path) in named and not Path(path).exists():
+        return named[str(path)](network.at(level))
     if path is None and network.is_example:
         path = example_path("example_kitchen.txt")
     if path is None:
-        return default_kitchen(network.at(level))
+        return chosen_kitchen(network.at(level))
     return read_kitchen(path).project(level)
 
 

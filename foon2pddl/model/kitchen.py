@@ -90,15 +90,70 @@ def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kit
 
 #: `--kitchen` values naming a kitchen built from the network instead of a file.
 BASE_KITCHEN = "base"
+DEFAULT_KITCHEN = "default"
+#: `Kitchen.source` of a base kitchen.
+BASE_SOURCE = "base kitchen"
+
+
+def _placed(node: ObjectNode) -> bool:
+    """Whether the node sits in or holds something: a state naming another object, or an ingredient set."""
+    return any(s.related or s.ingredients for s in node.states)
+
+
+def _drawn(node: ObjectNode) -> bool:
+    """Whether a state says where the node was drawn from (`from [faucet]`, `from faucet`)."""
+    return any(s.label == "from" or s.label.startswith("from ") for s in node.states)
+
+
+def created_labels(foon: Foon, kitchen: Kitchen | None = None) -> frozenset[str]:
+    """Labels some unit makes out of other objects: an output's label that none of the unit's inputs has
+    as label or as ingredient (the lemon juice a squeeze outputs, a mixture; not the beans a pan of beans
+    turns into) and not drawn from something (`water (from [faucet])`), less the labels `kitchen`
+    (default: the default kitchen) holds loose, in no container and holding nothing: the public data
+    has units that output bread or a measuring cup without listing it as an input, and a loose loaf is
+    a raw ingredient. Ingredient sets of outputs are not read for the same reason (salt listed with no
+    input carrying it). One pass over the units."""
+    kitchen = kitchen if kitchen is not None else default_kitchen(foon)
+    loose = {n.label for n in kitchen.nodes if not _placed(n)}
+    made: set[str] = set()
+    for u in foon.units:
+        have = {x for i in u.inputs for x in (i.label, *i.ingredients)}
+        made.update(o.label for o in u.outputs if o.label not in have and not _drawn(o))
+    return frozenset(made - loose)
+
+
+def half_made(foon: Foon, base_states: Iterable[str] = BASE_STATES,
+              kitchen: Kitchen | None = None) -> frozenset[ObjectNode]:
+    """The default kitchen's half-made dishes: nodes that sit in or hold something (a state naming another
+    object, or an ingredient set) and that are, or hold, an object some unit of the network creates
+    (`created_labels`).
+
+    `pitcher (contains {lemon juice, water})` and `lemon juice (in [pitcher])` are half-made where a unit
+    squeezes lemon juice; `milk (in [carton])` is a raw ingredient in its packaging where no unit creates
+    milk. `kitchen`: the default kitchen when already built. One pass over the units, one over the kitchen.
+    """
+    kitchen = kitchen if kitchen is not None else default_kitchen(foon, base_states)
+    made = created_labels(foon, kitchen)
+    return frozenset(n for n in kitchen.nodes
+                     if _placed(n) and (n.label in made or any(x in made for x in n.ingredients)))
 
 
 def base_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
-    """Raw ingredients and tools in their base states: the default kitchen's nodes whose states mention
-    no other object (no `in [x]`, no `contains {...}`), so no half-made dish (a pitcher of juice,
-    seasoned beans in a pot) is on hand at the start and retrieval starts from scratch."""
-    nodes = frozenset(n for n in default_kitchen(foon, base_states).nodes
-                      if all(not s.related and not s.ingredients for s in n.states))
-    return Kitchen(nodes, foon.level, "base kitchen")
+    """Raw ingredients and tools in their base states: the default kitchen without its half-made
+    dishes (`half_made`), so retrieval on a merged network starts from scratch rather than from
+    another recipe's pitcher of juice."""
+    full = default_kitchen(foon, base_states)
+    return Kitchen(full.nodes - half_made(foon, base_states, full), foon.level, BASE_SOURCE)
+
+
+def chosen_kitchen(foon: Foon) -> Kitchen:
+    """The kitchen of a run that names none: the base kitchen on a network of several recipes (its
+    units mark more than one dish; a FOON recipe file marks one) whose default kitchen holds half-made
+    dishes, else the default kitchen. In a merge one recipe's starting point is another's middle; a
+    single recipe's starting nodes are what its author started from, so there nothing changes."""
+    full = default_kitchen(foon)
+    half = half_made(foon, kitchen=full) if len(foon.dishes) > 1 else frozenset()
+    return Kitchen(full.nodes - half, foon.level, BASE_SOURCE) if half else full
 
 
 def _goal_syntax(node: ObjectNode) -> str:

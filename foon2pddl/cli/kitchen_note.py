@@ -1,0 +1,21 @@
+"""The stderr line naming the kitchen a run without `--kitchen` uses, and the other one."""
+
+from __future__ import annotations
+
+from ..model.foon import Foon
+from ..model.kitchen import Kitchen, default_kitchen, half_made
+
+
+def kitchen_note(kitchen: Kitchen, foon: Foon) -> str:
+    """`note: kitchen: base (...)` or `note: kitchen: default (...)`: which kitchen `model.kitchen.chosen_kitchen`
+    gave (`kitchen`), its size, and how to get the other one with its count of half-made dishes."""
+    full = default_kitchen(foon)
+    half = len(half_made(foon, kitchen=full))
+    if kitchen.nodes != full.nodes:
+        return (f"note: kitchen: base (raw ingredients and tools in their base states, {len(kitchen.nodes):,} nodes: "
+                f"this network merges recipes, and one recipe's start is another's middle); `--kitchen default` "
+                f"for the network's default kitchen ({len(full.nodes):,} nodes, {half:,} half-made dishes included)")
+    base = (f"`--kitchen base` leaves out its {half:,} half-made dishes" if half
+            else "the same as `--kitchen base`: no half-made dishes")
+    return (f"note: kitchen: default (the network's default kitchen, {len(kitchen.nodes):,} nodes: what no unit "
+            f"makes, and inputs in base states); {base}")
