@@ -115,3 +115,46 @@ def test_no_ground_precondition_is_true_from_the_start_and_never_deleted(example
         static = [(a.name, p) for a in lt.task.actions for p in a.pre
                   if not any(x.startswith("?") for x in p.args) and p in init and p.predicate not in deleted]
         assert static == [], dish
+
+
+def test_a_predicate_keeps_as_arguments_only_positions_some_action_binds_to_a_parameter(example, kitchen):
+    arities = []
+    for dish in ("lemonade", "guacamole", "fruit salad"):
+        lt = encode_lifted(example.foon, kitchen, resolve_goal(parse_goal_spec(dish), example.foon), INDEX)
+        shape = {name: family[0] for name, family in lt.families.items()}
+        bound = {(shape[x.predicate], k) for a in lt.task.actions for x in (*a.pre, *a.add) if x.predicate in shape
+                 for k, arg in enumerate(x.args) if arg.startswith("?")}
+        for p in lt.task.predicates:  # (the same position of every predicate of one node shape)
+            assert all((shape[p.name], k) in bound for k in range(len(p.params))), (dish, p.name)
+        arities.extend(len(p.params) for p in lt.task.predicates)
+    assert max(arities) <= 3  # the objects at the other positions are part of the predicate
+    task = encode_lifted(example.foon, kitchen, resolve_goal(parse_goal_spec("lemonade"), example.foon), INDEX).task
+    squeeze = next(a for a in task.actions if a.name.startswith("squeeze") and a.params)
+    assert any(x.args == (squeeze.params[0][0],) for x in squeeze.add)  # the lemon's squeezed node: one argument
+
+
+def test_action_costs_are_the_units_costs_and_fast_downward_plans_with_them(example, kitchen):
+    from foon2pddl.pddl.render import render
+
+    goal = resolve_goal(parse_goal_spec("guacamole"), example.foon)
+    compiled = compile_goal(example.foon, kitchen, goal, "gen-lifted", category_index=INDEX, costs="unit")
+    units = [a for a in compiled.task.actions if a.unit is not None]
+    assert units and all(a.cost == 1 for a in units)
+    assert all(a.cost == 0 for a in compiled.task.actions if a.unit is None)
+    domain, problem = render(compiled.task)
+    assert ":action-costs" in domain and "(:metric minimize (total-cost))" in problem
+    out = plan(example.foon, kitchen, goal, "gen-lifted", category_index=INDEX, costs="unit", time_limit=60)
+    assert out.status == "solved" and validate(out.tree, kitchen.nodes).ok, out.message
+
+
+@pytest.mark.parametrize("dish", ["lemonade", "whipped cream", "fruit salad", "greek salad"])
+def test_pruning_keeps_fewer_units_and_the_same_answer(example, kitchen, dish):
+    from foon2pddl.pddl.render import render
+    from foon2pddl.planners import fd
+
+    goal = resolve_goal(parse_goal_spec(dish), example.foon)
+    pruned, whole = (encode_lifted(example.foon, kitchen, goal, INDEX, prune=p).task for p in (True, False))
+    units = [sum(a.unit is not None for a in t.actions) for t in (pruned, whole)]
+    assert units[0] < units[1]
+    answers = [fd.solve(*render(t), time_limit=60).status for t in (pruned, whole)]
+    assert answers[0] == answers[1] == "solved", (dish, answers)

@@ -105,7 +105,7 @@ def hostile_tasks(draw):
 @given(hostile_tasks(), st.sampled_from(list(ENCODINGS)), st.sampled_from([None, "unit"]))
 def test_hostile_labels_render_to_pddl_that_parses_with_the_same_structure(case, encoding, costs):
     foon, kitchen, goal = case
-    costs = costs if ENCODINGS[encoding].costs else None  # the lifted encoding has no action costs
+    costs = costs if ENCODINGS[encoding].costs else None  # (an encoding may not support action costs)
     task = compile_task(foon, kitchen, goal, encoding, 3, prune=False, costs=costs)
     domain_text, problem_text = render(task)
     domain = PARSE_DOMAIN(domain_text)

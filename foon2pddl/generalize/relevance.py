@@ -68,9 +68,10 @@ def coarse_network(foon: Foon, kitchen: frozenset[ObjectNode], generalize: Calla
     mapping = {x: coarse.image(x, ordering) for x in labels}
     images = [substitute_unit(u, mapping) for u in foon.units]
     reach = reachable(Foon(tuple(images), foon.level), frozenset(substitute_node(n, mapping) for n in kitchen))
-    producers: dict[int, list[int]] = {}  # every unit with the node among its outputs: an image unit that
-    for u in range(len(images)):         # outputs one of its inputs may still make a new concrete node
-        for n in reach.index.outputs[u]:
+    producers: dict[int, list[int]] = {}  # image node -> units making a concrete node of that image: an image
+    for u, unit in enumerate(foon.units):  # unit that outputs one of its inputs may still make a new concrete node
+        made = {substitute_node(n, mapping) for n in unit.outputs if n not in unit.inputs}
+        for n in sorted(reach.index.ids(made)):
             producers.setdefault(n, []).append(u)
     return Coarse(roots, reach, producers)
 
@@ -86,8 +87,13 @@ def relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Iterable[Ob
     category, so its nodes have the image of its unit's nodes, and the image network
     over-approximates the lifted task: a unit whose image does not fire from the
     kitchen's image, or outputs no image needed for a candidate's image, is never
-    part of a plan. (An image unit may output one of its own inputs and still make a
-    new concrete node, so every unit outputting a needed image counts.) The image
+    part of a plan. A unit counts as a maker of the images of the concrete nodes it
+    makes (outputs that are not among its inputs): an image unit may output one of its
+    own inputs and still make a new concrete node, but an object the unit keeps (the
+    same node in and out, a knife) stays the same node under every binding, since a
+    binding substitutes inputs and outputs alike, so the unit is never the first to
+    add its atom and is not kept for it (in a delete-free plan, what a step adds
+    that its precondition already holds is no help). The image
     network (`coarse`) depends on the goal only through the candidates' images, so
     it is built once per network, kitchen and policy and shared by every goal.
     """

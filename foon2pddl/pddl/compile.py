@@ -50,8 +50,7 @@ ENCODINGS: dict[str, Encoding] = _registry(
              foon_semantics=False, every_step=True, complete=False),
     Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),
     Encoding("gen-lifted", compile_lifted,
-             "FOON-GEN: categories as types, the planner grounds them to kitchen objects",
-             costs=False, lifted=True),
+             "FOON-GEN: categories as types, the planner grounds them to kitchen objects", lifted=True),
 )
 
 DEFAULT_ENCODING = next(iter(ENCODINGS))

@@ -56,8 +56,17 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.tasktree import TaskTree, validate
-from .encoding import GOAL_REACHED, EncodeOptions, goal_actions, goal_kitchen_lines, unit_comment
-from .lifted_atoms import Shape, node_atom_labels, representations, shape_label
+from .costs import unit_cost
+from .encoding import (
+    DEFAULT_OPTIONS,
+    GOAL_REACHED,
+    EncodeOptions,
+    cost_lines,
+    goal_actions,
+    goal_kitchen_lines,
+    unit_comment,
+)
+from .lifted_atoms import Family, Shape, family_label, node_atom_labels, representations, shape_label
 from .names import NameTable
 from .registry import Compiled, PlanDecodeError
 from .task import Action, Atom, PlanningTask, Predicate
@@ -113,7 +122,7 @@ class LiftedTask:
     task: PlanningTask
     lifted: tuple[LiftedUnit, ...]  # Action.unit indexes this
     level: int
-    shapes: dict[str, Shape]  # predicate name -> shape
+    families: dict[str, Family]  # predicate name -> (shape, objects folded in at fixed positions)
     objects: dict[str, str]  # PDDL object/constant name -> label
 
 
@@ -159,7 +168,10 @@ def generalizer(policy: str, foon: Foon, kitchen_nodes: frozenset[ObjectNode]) -
 
 
 class _Names:
-    """PDDL names of the lifted task: types (categories), objects (labels) and predicates (shapes)."""
+    """PDDL names of the lifted task: types (categories), objects (labels) and predicates (families).
+
+    A node atom's predicate is its shape with the objects at the positions no action binds to a
+    parameter (`free`) folded in, so it keeps only the parameter positions as arguments."""
 
     def __init__(self, index: CategoryIndex, ordering: Ordering) -> None:
         self.index = index
@@ -168,7 +180,8 @@ class _Names:
         self.table.reserve(GOAL_REACHED, "goal reached")
         self.table.reserve(ROOT_TYPE, "any kitchen object")
         self.types: dict[str, str] = {}  # category -> type name
-        self.shapes: dict[Shape, str] = {}  # shape -> predicate name
+        self.families: dict[Family, str] = {}  # (shape, fixed objects) -> predicate name
+        self.free: dict[Shape, tuple[int, ...]] = {}  # shape -> positions some action binds to a parameter
 
     def type_of(self, cat: str | None) -> str:
         """The type of a category (its ancestors named first), ROOT_TYPE for none."""
@@ -183,18 +196,23 @@ class _Names:
     def obj(self, label: str) -> str:
         return self.table.name(label, key=("object", label))
 
-    def predicate(self, shape: Shape) -> str:
-        if shape not in self.shapes:
-            self.shapes[shape] = self.table.name(shape_label(shape), key=("shape", shape))
-        return self.shapes[shape]
+    def predicate(self, shape: Shape, labels: tuple[str, ...]) -> tuple[str, tuple[int, ...]]:
+        """The predicate of an atom of `shape` over `labels`, and the positions it keeps as arguments."""
+        free = self.free.get(shape, ())
+        family = (shape, tuple((i, x) for i, x in enumerate(labels) if i not in free))
+        if family not in self.families:
+            self.families[family] = self.table.name(family_label(*family), key=("shape", family))
+        return self.families[family], free
 
     def atom(self, node: ObjectNode, var: dict[str, str]) -> Atom:
         """The atom of a unit's node: parameters for the labels in `var`, constants for the others."""
         shape, labels = node_atom_labels(node, self.ordering)
-        return Atom(self.predicate(shape), tuple(var.get(x) or self.obj(x) for x in labels))
+        name, free = self.predicate(shape, labels)
+        return Atom(name, tuple(var.get(labels[i]) or self.obj(labels[i]) for i in free))
 
     def ground_atom(self, shape: Shape, labels: tuple[str, ...]) -> Atom:
-        return Atom(self.predicate(shape), tuple(self.obj(x) for x in labels))
+        name, free = self.predicate(shape, labels)
+        return Atom(name, tuple(self.obj(labels[i]) for i in free))
 
     def type_pairs(self) -> tuple[tuple[str, str], ...]:
         """(type, parent type) of every declared type, the root first."""
@@ -203,11 +221,19 @@ class _Names:
         return ((ROOT_TYPE, "object"), *parent.items())
 
 
-def _unit_actions(lifted: tuple[LiftedUnit, ...], names: _Names) -> tuple[list[Action], set[str], set[Shape]]:
+def _unit_actions(lifted: tuple[LiftedUnit, ...], names: _Names, options: EncodeOptions
+                  ) -> tuple[list[Action], set[str], set[Shape]]:
     """One action per lifted unit; the labels actions name as constants; the shapes preconditions use."""
     actions: list[Action] = []
     constants: set[str] = set()
     pre_shapes: set[Shape] = set()
+    free: dict[Shape, set[int]] = {}
+    for lu in lifted:
+        bound = {label for label, _ in lu.params}
+        for n in (*lu.unit.inputs, *lu.unit.outputs):
+            shape, labels = node_atom_labels(n, names.ordering)
+            free.setdefault(shape, set()).update(k for k, x in enumerate(labels) if x in bound)
+    names.free = {shape: tuple(sorted(ks)) for shape, ks in free.items()}
     for i, lu in enumerate(lifted):
         vars_ = NameTable()
         var = {label: "?" + vars_.name(f"{cat} {k}", key=label) for k, (label, cat) in enumerate(lu.params, start=1)}
@@ -218,7 +244,7 @@ def _unit_actions(lifted: tuple[LiftedUnit, ...], names: _Names) -> tuple[list[A
         actions.append(Action(
             names.table.name(f"{lu.unit.motion.label} g{i}", key=("unit", i)), pre, add,
             params=tuple((var[label], names.type_of(cat)) for label, cat in lu.params),
-            unit=i, comment=unit_comment(lu.unit, i)))
+            cost=unit_cost(lu.unit, options.costs, options.rates), unit=i, comment=unit_comment(lu.unit, i)))
     return actions, constants, pre_shapes
 
 
@@ -238,8 +264,9 @@ def _drop_static(actions: list[Action], init: frozenset[Atom]) -> list[Action]:
 
 
 def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex, level: int = 3, *,
-                  prune: bool = True, policy: str = "absent") -> LiftedTask:
-    """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc)."""
+                  prune: bool = True, policy: str = "absent", options: EncodeOptions = DEFAULT_OPTIONS) -> LiftedTask:
+    """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc);
+    `options` gives the action costs (`costs.unit_cost` of each lifted unit's first unit, goal actions 0)."""
     f = project(foon, level)
     kitchen_nodes = kitchen.project(level).nodes
     candidates = tuple(sorted({project_node(c, level) for c in goal.candidates}))
@@ -252,27 +279,30 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
                                                      coarse)), level)
     lifted = lift(Foon(dedupe_units(f.units), level), index, generalize)
     names = _Names(index, ordering)
-    actions, constants, pre_shapes = _unit_actions(lifted, names)
+    actions, constants, pre_shapes = _unit_actions(lifted, names, options)
     add_shapes = {node_atom_labels(n, ordering)[0] for lu in lifted for n in lu.unit.outputs}
 
     goal_reps = [(c, representations(c, ordering, add_shapes | pre_shapes)) for c in candidates]
     init_shapes = pre_shapes | {s for _, reps in goal_reps for s, _ in reps}
-    init = sorted({names.ground_atom(s, labels)
-                   for n in kitchen_nodes for s, labels in representations(n, ordering, init_shapes)})
-    actions = _drop_static(actions, frozenset(init))
     atoms = [(c, (names.ground_atom(s, labels),)) for c, reps in goal_reps for s, labels in reps]
+    wanted = {p.predicate for a in actions for p in a.pre} | {x.predicate for _, xs in atoms for x in xs}
+    init = sorted(x for x in {names.ground_atom(s, labels) for n in kitchen_nodes
+                              for s, labels in representations(n, ordering, init_shapes)} if x.predicate in wanted)
+    actions = _drop_static(actions, frozenset(init))
     if len(atoms) == 1:
         goal_atoms: tuple[Atom, ...] = atoms[0][1]
     else:  # goal actions live in the domain: the objects they name must be constants
         constants |= {x for c, reps in goal_reps for _, labels in reps for x in labels}
-        actions.extend(goal_actions(names.table, atoms, Atom(GOAL_REACHED), EncodeOptions(prune=False)))
+        actions.extend(goal_actions(names.table, atoms, Atom(GOAL_REACHED), options))
         goal_atoms = (Atom(GOAL_REACHED),)
 
     labels = {x for lu in lifted for x in unit_labels(lu.unit)}
     labels |= {x for n in (*kitchen_nodes, *candidates) for x in node_labels(n)}
     declared = {label: (names.obj(label), names.type_of(index.choose(label))) for label in sorted(labels)}
-    predicates = [Predicate(name, tuple((f"?x{k}", ROOT_TYPE) for k in range(shape[0])), comment=shape_label(shape))
-                  for shape, name in sorted(names.shapes.items(), key=lambda x: x[1])]
+    used = {x.predicate for x in (*init, *goal_atoms)} | {x.predicate for a in actions for x in (*a.pre, *a.add)}
+    predicates = [Predicate(name, tuple((f"?x{k}", ROOT_TYPE) for k in names.free.get(family[0], ())),
+                            comment=shape_label(family[0]))
+                  for family, name in sorted(names.families.items(), key=lambda x: x[1]) if name in used]
     if len(atoms) != 1:
         predicates.insert(0, Predicate(GOAL_REACHED, comment="a goal candidate was made"))
     task = PlanningTask(
@@ -291,9 +321,10 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         labels=names.table.labels,
         comments=(f"foon2pddl, lifted FOON-GEN (categories as types), level {level}: "
                   f"{len(lifted)} lifted units from {len(f.units)} units",
-                  *goal_kitchen_lines(goal.describe(), len(candidates), kitchen.source, len(kitchen_nodes))),
+                  *goal_kitchen_lines(goal.describe(), len(candidates), kitchen.source, len(kitchen_nodes)),
+                  *cost_lines(options)),
     )
-    return LiftedTask(task, lifted, level, {n: s for s, n in names.shapes.items()},
+    return LiftedTask(task, lifted, level, {n: s for s, n in names.families.items()},
                       {name: label for label, (name, _) in declared.items()})
 
 
@@ -349,6 +380,6 @@ def rename_made(lt: LiftedTask, tree: TaskTree, steps: Sequence[str], kitchen_no
 def compile_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
     """The registered `gen-lifted` encoder: `encode_lifted` with the options' category index (default: shipped)."""
     index = options.category_index if options.category_index is not None else load_index()
-    lt = encode_lifted(foon, kitchen, goal, index, level, prune=options.prune, policy=options.policy)
+    lt = encode_lifted(foon, kitchen, goal, index, level, prune=options.prune, policy=options.policy, options=options)
     return Compiled(lt.task, True, lambda unit, args: ground_unit(lt, unit, args),
                     lambda tree, steps, kitchen_nodes: rename_made(lt, tree, steps, kitchen_nodes))

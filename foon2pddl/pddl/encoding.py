@@ -153,12 +153,17 @@ def header(encoding: str, inp: LevelInputs, options: EncodeOptions, kept: int) -
     pruning = f"{kept} of {total} units after relevance pruning" if options.prune else f"all {total} units"
     lines = [f"foon2pddl, encoding {encoding}, level {inp.level}: {pruning}",
              *goal_kitchen_lines(inp.goal.describe(), len(inp.candidates), inp.kitchen_source, len(inp.kitchen))]
-    if options.costs:
-        costs = options.costs
-        if options.costs == "success-rate" and options.rates is not None:
-            costs += f" (rates: {short_path(options.rates.source) or 'given'})"
-        lines.append(f"action costs: {costs}")
-    return tuple(lines)
+    return (*lines, *cost_lines(options))
+
+
+def cost_lines(options: EncodeOptions) -> tuple[str, ...]:
+    """The header's action-costs line (none without costs), the rates file by its name."""
+    if not options.costs:
+        return ()
+    costs = options.costs
+    if options.costs == "success-rate" and options.rates is not None:
+        costs += f" (rates: {short_path(options.rates.source) or 'given'})"
+    return (f"action costs: {costs}",)
 
 
 def goal_actions(

@@ -16,7 +16,7 @@ from ..generalize.relevance import Ordering
 from ..model.constraints import node_labels
 from ..model.foon import ObjectNode, make_node, make_state
 
-__all__ = ["MAX_REPRESENTATIONS", "Shape", "node_atom_labels", "node_of", "representations", "shape_label",
+__all__ = ["MAX_REPRESENTATIONS", "Family", "Shape", "family_label", "node_atom_labels", "node_of", "representations", "shape_label",
            "shape_with"]
 
 #: Most atoms written for one kitchen node or goal candidate (orderings of same-category objects).
@@ -24,6 +24,9 @@ MAX_REPRESENTATIONS = 24
 
 # A node shape: arity, then per state (label, related position or -1, ingredient positions).
 Shape = tuple[int, tuple[tuple[str, int, tuple[int, ...]], ...]]
+
+#: A predicate of node atoms: a shape and the objects at its fixed positions ((position, label), sorted).
+Family = tuple[Shape, tuple[tuple[int, str], ...]]
 
 
 def shape_with(node: ObjectNode, order: list[str]) -> Shape:
@@ -67,3 +70,16 @@ def shape_label(shape: Shape) -> str:
         text = s + (f" [{r}]" if r >= 0 else "") + (" {" + " ".join(map(str, ings)) + "}" if ings else "")
         parts.append(text)
     return "node " + (", ".join(parts) if parts else "plain") + f" /{shape[0]}"
+
+
+def family_label(shape: Shape, fixed: tuple[tuple[int, str], ...]) -> str:
+    """Readable text naming a predicate: the node with its fixed objects, `x<k>` at argument positions
+    (`x0 contains {salt x2} in [bowl]`), the base of its predicate name."""
+    at = dict(fixed)
+
+    def name(i: int) -> str:
+        return at.get(i, f"x{i}")
+
+    parts = [s + (f" [{name(r)}]" if r >= 0 else "") + (" {" + " ".join(map(name, ings)) + "}" if ings else "")
+             for s, r, ings in shape[1]]
+    return f"{name(0)} " + (", ".join(parts) if parts else "plain")

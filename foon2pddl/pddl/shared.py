@@ -3,8 +3,9 @@
 Every goal is compiled without relevance pruning, so the domains differ only in
 their goal actions (a goal with several candidate nodes, or an encoding that
 reaches goals through an action, adds `reach-goal-<i>` actions making
-`(goal-reached)`). `share_domain` keeps one copy of the rest, checks it is the
-same for every goal (else the encoding's domain depends on the goal, and a
+`(goal-reached)`). `share_domain` keeps one copy of the rest (predicates: their
+union, as a lifted task declares those its kitchen and goal atoms need), checks the
+types and unit actions are the same for every goal (else the encoding's domain depends on the goal, and a
 shared domain would be wrong: UsageError), and renames each goal's goal
 actions and goal predicate after the goal (`reach-<goal>-<i>` making
 `(reached-<goal>)`), so they coexist in the one domain and each problem's
@@ -37,13 +38,23 @@ class SharedSet:
 
 
 def _domain_part(task: PlanningTask) -> tuple:
-    """What must be the same in every goal's task: types, predicates and unit actions (not goal actions)."""
-    return (task.encoding, task.level, task.types, tuple(p for p in task.predicates if p.name != GOAL_REACHED),
-            tuple(a for a in task.actions if a.unit is not None))
+    """What must be the same in every goal's task: types and unit actions (not goal actions)."""
+    return (task.encoding, task.level, task.types, tuple(a for a in task.actions if a.unit is not None))
+
+
+def _predicates(tasks: Sequence[PlanningTask]) -> dict[str, Predicate]:
+    """Every predicate some task declares (a lifted task declares those its kitchen and goal need), by name, in
+    order of first declaration; UsageError when two declare one name differently."""
+    out: dict[str, Predicate] = {}
+    for t in tasks:
+        for p in t.predicates:
+            if p.name != GOAL_REACHED and out.setdefault(p.name, p) != p:
+                raise UsageError(f"the {t.encoding} encoding declares predicate {p.name!r} differently for two goals")
+    return out
 
 
 def _first_difference(a: tuple, b: tuple) -> str:
-    what = ("encoding", "level", "types", "predicates", "unit actions")
+    what = ("encoding", "level", "types", "unit actions")
     return next(w for w, x, y in zip(what, a, b, strict=True) if x != y)
 
 
@@ -72,8 +83,8 @@ def share_domain(goals: Sequence[tuple[str, PlanningTask]]) -> SharedSet:
                              f"({_first_difference(base, part)}): a shared domain needs an encoding whose "
                              f"unpruned domain is the same for every goal")
     table = NameTable(_reserved(tasks))
-    actions: list[Action] = list(base[4])
-    predicates: list[Predicate] = list(base[3])
+    actions: list[Action] = list(base[3])
+    predicates: list[Predicate] = list(_predicates(tasks).values())
     goal_atoms: list[tuple[Atom, ...]] = []
     for text, t in goals:
         aux = [a for a in t.actions if a.unit is None]
