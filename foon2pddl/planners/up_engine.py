@@ -63,9 +63,18 @@ def _pick_engine(env: Any, name: str, optimal: bool) -> tuple[str, str | None]:
     return name, None
 
 
-def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tuple[str, ...], str, str]:
-    """Build the UP problem and solve it in this process: (status, steps, message, engine used: `--optimal`
-    may pick `NAME-opt`)."""
+def _read_pddl(texts: tuple[str, str]) -> tuple[Any, Any]:
+    """(UP problem, plan step of an action instance) of PDDL (domain, problem) text, as UP's reader reads it."""
+    from unified_planning.io import PDDLReader
+
+    problem = PDDLReader().parse_problem_string(*texts)
+    return problem, lambda ai: " ".join((ai.action.name, *map(str, ai.actual_parameters))).lower()
+
+
+def _solve_here(task: PlanningTask | tuple[str, str], name: str, optimal: bool
+                ) -> tuple[str, tuple[str, ...], str, str]:
+    """Build the UP problem (from the task, or read from PDDL (domain, problem) text) and solve it in this
+    process: (status, steps, message, engine used: `--optimal` may pick `NAME-opt`)."""
     from unified_planning.shortcuts import OneshotPlanner
 
     from ..pddl.up_problem import build_up, quiet_environment
@@ -74,8 +83,11 @@ def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tupl
     engine, problem_msg = _pick_engine(env, name, optimal)
     if problem_msg:
         return "error", (), problem_msg, name
-    up = build_up(task)
-    problem = up.problem
+    if isinstance(task, tuple):
+        problem, step = _read_pddl(task)
+    else:
+        up = build_up(task)
+        problem, step = up.problem, up.step
     with OneshotPlanner(name=engine) as planner:
         if not planner.supports(problem.kind):
             return "error", (), f"engine {engine!r} does not support this task's features", engine
@@ -83,13 +95,13 @@ def _solve_here(task: PlanningTask, name: str, optimal: bool) -> tuple[str, tupl
     status = UP_STATUS.get(res.status.name, "error")
     steps: tuple[str, ...] = ()
     if res.plan is not None and status == "solved":
-        steps = tuple(up.step(ai) for ai in res.plan.actions)
+        steps = tuple(step(ai) for ai in res.plan.actions)
     log = " ".join(str(m.message) for m in (res.log_messages or []))[-500:]
     return (status, steps, f"{engine}: {res.status.name.lower()}" + (f" ({log})" if status == "error" and log else ""),
             engine)
 
 
-def _child(conn: Any, task: PlanningTask, name: str, optimal: bool, work: str, token: str) -> None:
+def _child(conn: Any, task: PlanningTask | tuple[str, str], name: str, optimal: bool, work: str, token: str) -> None:
     os.setsid()
     os.environ[MARK] = token  # processes the engine starts inherit the mark
     try:
@@ -106,9 +118,11 @@ def _context() -> Any:
     return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
 
 
-def solve(task: PlanningTask, engine: str, *, optimal: bool = False, time_limit: float | None = None) -> PlanResult:
+def solve(task: PlanningTask | tuple[str, str], engine: str, *, optimal: bool = False,
+          time_limit: float | None = None) -> PlanResult:
     """Plan with a UP engine in a child process, killed (with its process group and every process
-    carrying its mark) when it answers or at the time limit; its work directory is removed here."""
+    carrying its mark) when it answers or at the time limit; its work directory is removed here.
+    `task` may be PDDL (domain, problem) text, read by UP's PDDL reader in the child (as a user's files)."""
     name = f"up:{engine}"
     ctx = _context()
     token = new_token()
