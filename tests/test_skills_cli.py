@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import re
 
+import pytest
 from click.testing import CliRunner
 
 from foon2pddl.cli import main
@@ -89,7 +90,7 @@ def test_bad_skill_domain_is_a_located_error_and_no_output_is_written(tmp_path):
     bad = tmp_path / "mine.pddl"
     bad.write_text(shipped_domain().text.replace("(unmade ?o - thing)", ""))
     out = tmp_path / "dir"
-    result = run("--goal", "whipped cream", "--skills", str(bad), "-o", str(out))
+    result = run("--goal", "whipped cream", "--skills", "--skill-domain", str(bad), "-o", str(out))
     assert result.exit_code == 2 and f"{bad}:" in result.stderr and "error: " in result.stderr
     assert "Traceback" not in result.output and not out.exists()
 
@@ -121,9 +122,61 @@ def test_a_lacked_skill_the_domain_does_not_have_is_an_error_with_close_names(tm
     assert in_file.exit_code == 2 and "'stirr'" in in_file.stderr
 
 
-def test_a_network_path_after_skills_is_not_read_as_a_skill_domain():
-    from conftest import SUBGRAPHS
+def test_skills_is_a_flag_so_paths_after_it_are_the_network():
+    from conftest import ROOT
 
-    result = run("--goal", "whipped cream", "--skills", str(SUBGRAPHS))
-    assert result.exit_code == 2
-    assert "give the network's PATHS before --skills" in result.stderr
+    example = ROOT / "foon2pddl" / "data" / "example"
+    after = run("--goal", "whipped cream", "--skills", str(example), "--format", "json")
+    before = run(str(example), "--goal", "whipped cream", "--skills", "--format", "json")
+    assert after.exit_code == 0, after.output
+    assert json.loads(after.stdout)["skills"] == json.loads(before.stdout)["skills"]
+
+
+def test_a_skill_domain_after_skills_is_a_usage_error_naming_skill_domain(tmp_path):
+    mine = tmp_path / "mine.pddl"
+    mine.write_text(shipped_domain().text)
+    result = run("--goal", "whipped cream", "--skills", str(mine))
+    assert result.exit_code == 2 and "--skill-domain FILE" in result.stderr and str(mine) in result.stderr
+    assert "Traceback" not in result.output
+    ok = run("--goal", "whipped cream", "--skills", "--skill-domain", str(mine), "--format", "json")
+    assert ok.exit_code == 0 and json.loads(ok.stdout)["domain"] == str(mine)
+
+
+def test_skill_options_without_skills_are_usage_errors_not_ignored(tmp_path):
+    mine = tmp_path / "mine.pddl"
+    mine.write_text(shipped_domain().text)
+    for extra in (("--skill-domain", str(mine)), ("--hands", "2")):
+        result = run("--goal", "whipped cream", *extra)
+        assert result.exit_code == 2 and extra[0] in result.stderr and "with --skills" in result.stderr
+
+
+@pytest.mark.parametrize("fmt", ["dot", "svg", "foon", "csv"])
+def test_a_format_the_skill_plan_has_no_form_in_is_a_usage_error_naming_the_supported_ones(fmt, tmp_path):
+    out = tmp_path / "dir"
+    result = run("--goal", "whipped cream", "--skills", "--format", fmt, "-o", str(out))
+    assert result.exit_code == 2 and f"--format {fmt}" in result.stderr
+    assert "steps, recipe or json" in result.stderr and not out.exists()
+
+
+def test_recipe_says_each_step_then_the_robot_skills_in_words():
+    result = run("--goal", "whipped cream", "--skills", "--format", "recipe")
+    assert result.exit_code == 0, result.output
+    out = result.stdout.splitlines()
+    data = json.loads(run("--goal", "whipped cream", "--skills", "--format", "json").stdout)
+    assert out[0].startswith("skill plan (foon-skills, 1 hand): ") and out[0].endswith("skill replay valid")
+    steps, robot = out[1::2], out[2::2]
+    assert len(steps) == len(robot) == data["macro_steps"]
+    assert steps[0] == "1. pour heavy cream from the carton into the mixing bowl (empty)"
+    assert robot[0] == ("   robot: pick up the carton from the workspace; pour from the carton into the mixing bowl; "
+                        "put the carton on the workspace")
+    assert robot[1].endswith("pour the sugar into the mixing bowl")  # sugar stands free: it is itself poured
+    per_step = [sum(s["macro_step"] == k for s in data["skills"]) for k in range(1, data["macro_steps"] + 1)]
+    assert [line.count("; ") + 1 for line in robot] == per_step
+    assert "_1" not in result.stdout  # labels, not trace ids, where no label is shared
+
+
+def test_recipe_numbers_objects_that_share_a_label():
+    result = run("--goal", "guacamole", "--skills", "--format", "recipe")
+    assert result.exit_code == 0, result.output
+    assert "put the lime on the cutting board 1" in result.stdout
+    assert "pick up the onion from the cutting board 4; put the onion into the bowl" in result.stdout

@@ -42,7 +42,7 @@ from .options import (
 )
 from .progress import slow_step
 from .reasons import networks_hint, why_unsolvable
-from .skills_cli import plan_with_skills, skill_encoding, skill_options
+from .skills_cli import check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 #: Exit status per outcome status.
 EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.GAVE_UP: 1, PlanStatus.TIMEOUT: 1,
@@ -119,16 +119,17 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
           level, network, planner,
           planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
-          constraints_files, without_motions, without, must_use, up_validate, fmt, output, skills, skill_table,
-          without_skills, hands) -> None:
+          constraints_files, without_motions, without, must_use, up_validate, fmt, output, skills, skill_domain,
+          skill_table, without_skills, hands) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable, search gave up or time limit (reason on stderr), 2 bad input or planner error.
     """
+    check_skill_usage(skills, skill_domain, paths, fmt)
     entries = batch_entries(goal, goals_file, goal_file, fmt)
-    if skills is not None and entries is not None:
+    if skills and entries is not None:
         raise UsageError("--skills plans one goal at a time (not a batch)")
-    check_output(output, directory=entries is not None or skills is not None)
+    check_output(output, directory=entries is not None or skills)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
     try:  # before anything is loaded or timed
@@ -153,15 +154,15 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
                           instances=checked_instances(instances, encoding, view.foon))
-    if skills is not None:
+    if skills:
         source = click.get_current_context().get_parameter_source("encoding")
         encoding = skill_encoding(encoding, source is not click.core.ParameterSource.DEFAULT)
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
-    if skills is not None:
-        return plan_with_skills(foon, kit, target, encoding, cons, skills=skills, table_path=skill_table,
+    if skills:
+        return plan_with_skills(foon, kit, target, encoding, cons, skill_domain=skill_domain, table_path=skill_table,
                                 without_skills=without_skills, hands=hands, fmt=fmt, output=output,
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,

@@ -14,15 +14,20 @@ from ..status import PlanStatus
 from .options import emit
 from .reasons import why_unsolvable
 
-__all__ = ["plan_with_skills", "skill_encoding", "skill_options"]
+__all__ = ["SKILL_FORMATS", "check_skill_usage", "plan_with_skills", "skill_encoding", "skill_options"]
+
+#: The `--format`s of a skill plan: the steps with their skills, a cook's sentences, the executive's JSON.
+SKILL_FORMATS = ("steps", "recipe", "json")
 
 
 def skill_options(command):
-    """`--skills [FILE]`, `--skill-table FILE`, `--without-skill SKILL`, `--hands N`."""
+    """`--skills`, `--skill-domain FILE`, `--skill-table FILE`, `--without-skill SKILL`, `--hands N`."""
     options = [
-        click.option("--skills", "skills", is_flag=False, flag_value="", default=None, metavar="[FILE]",
-                     help="Decompose every step into robot skills (pick, place, pour, stir, cut ...): with the "
-                          "shipped skill domain, or a PDDL skill domain FILE (docs/skills.md)."),
+        click.option("--skills", "skills", is_flag=True, default=False,
+                     help="Decompose every step into robot skills (pick, place, pour, stir, cut ...) with the "
+                          "shipped skill domain, or the one of --skill-domain (docs/skills.md)."),
+        click.option("--skill-domain", "skill_domain", type=click.Path(path_type=Path), default=None,
+                     metavar="FILE", help="A PDDL skill domain instead of the shipped one (with --skills)."),
         click.option("--skill-table", "skill_table", type=click.Path(path_type=Path), default=None,
                      help="Motion-to-skill table (JSON, docs/skills.md) instead of the shipped one."),
         click.option("--without-skill", "without_skills", multiple=True, metavar="SKILL",
@@ -49,15 +54,32 @@ def skill_encoding(encoding: str, explicit: bool) -> str:
     return encoding
 
 
-def _inputs(skills: str, table_path: Path | None):
+def check_skill_usage(skills: bool, skill_domain: Path | None, paths, fmt: str) -> None:
+    """UsageError, before anything is loaded, for skill options that would be ignored or misread: a skill
+    domain among the network's PATHS (`--skills FILE`: `--skills` takes no value), `--skill-domain` or
+    `--hands` without `--skills`, and a `--format` the skill plan has no form in."""
+    ctx = click.get_current_context()
+    given = {name for name in ("skill_domain", "hands")
+             if ctx.get_parameter_source(name) is not click.core.ParameterSource.DEFAULT}
+    if not skills:
+        if given:
+            flag = "--skill-domain" if "skill_domain" in given else "--hands"
+            raise UsageError(f"{flag} is used with --skills (add --skills to decompose the plan into robot skills)")
+        return
+    domains = [str(p) for p in paths if str(p).lower().endswith(".pddl")]
+    if domains:
+        raise UsageError(f"{domains[0]}: a skill domain is given with --skill-domain FILE (--skills takes no "
+                         "value; the PATHS are FOON files)")
+    if fmt not in SKILL_FORMATS:
+        raise UsageError(f"--skills prints the skill plan as {', '.join(SKILL_FORMATS[:-1])} or "
+                         f"{SKILL_FORMATS[-1]}, not --format {fmt}")
+
+
+def _inputs(skill_domain: Path | None, table_path: Path | None):
     from ..skills.domain import read_domain, shipped_domain
     from ..skills.table import read_table, shipped_table
 
-    if skills and not skills.lower().endswith(".pddl"):
-        # `--skills` takes an optional FILE, so `plan --goal X --skills DIR` reads the network's DIR as one
-        raise UsageError(f"--skills {skills}: a skill domain is a .pddl file; to plan on {skills!r} with the "
-                         "shipped skills, give the network's PATHS before --skills (or write --skills= PATHS)")
-    domain = read_domain(skills) if skills else shipped_domain()
+    domain = read_domain(skill_domain) if skill_domain is not None else shipped_domain()
     table = read_table(table_path) if table_path is not None else shipped_table()
     table.check(domain)
     return domain, table
@@ -76,15 +98,16 @@ def _check_skill_names(domain, names) -> None:
                              + (f" (did you mean {', '.join(close)}?)" if close else ""))
 
 
-def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skills: str, table_path: Path | None,
+def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: Path | None, table_path: Path | None,
                      without_skills: tuple[str, ...], hands: int, fmt: str, output: Path | None, timings: dict,
                      **options) -> None:
     """Plan, decompose, print (or write `-o DIR`); exits 1 when there is no plan, 2 when the skill replay fails."""
     from ..io.atomic import atomic_write_many
+    from ..skills.recipe import skill_plan_recipe
     from ..skills.report import micro_files, skill_plan_json, skill_plan_text
     from ..skills.run import plan_skills, robot_profile
 
-    domain, table = _inputs(skills, table_path)
+    domain, table = _inputs(skill_domain, table_path)
     _check_skill_names(domain, (*without_skills, *(cons.without_skills if cons is not None else ())))
     robot = robot_profile(cons, hands, without_skills)
     ctx = click.get_current_context()
@@ -108,6 +131,8 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skills: str, t
     if fmt == "json":
         text = json.dumps({"status": outcome.status, "encoding": outcome.task.encoding,
                            "plan": list(outcome.result.plan), **skill_plan_json(plan)}, indent=2) + "\n"
+    elif fmt == "recipe":
+        text = skill_plan_recipe(plan, done.trace, robot.hands)
     else:
         text = skill_plan_text(plan, robot)
     click.echo(f"solved ({outcome.result.planner}): {len(plan.steps)} macro steps under the {encoding} encoding, "

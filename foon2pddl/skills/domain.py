@@ -153,7 +153,7 @@ def parse_domain(text: str, path: str = "<skills>") -> SkillDomain:
 
 
 def read_domain(path: str | Path) -> SkillDomain:
-    """Read a skill domain file (`--skills FILE`)."""
+    """Read a skill domain file (`--skill-domain FILE`)."""
     return parse_domain(read_text(Path(path)), str(path))
 
 
