@@ -26,6 +26,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from ..analysis.check_labels import naive_singular
 from ..model.foon import normalize_label
 from .categories import Category, CategoryIndex
 
@@ -54,23 +55,12 @@ def _tails(label: str) -> list[str]:
     return [" ".join(words[i:]) for i in range(1, len(words))]
 
 
-def _singular(word: str) -> str:
-    """English plural to singular for category-name words (`puddings`, `sauces`, `berries`, `dishes`)."""
-    if word.endswith("ies") and len(word) > 4:
-        return word[:-3] + "y"
-    if word.endswith(("ches", "shes", "sses", "xes")):
-        return word[:-2]
-    if word.endswith("s") and not word.endswith("ss"):
-        return word[:-1]
-    return word
-
-
 def _name_parts(index: CategoryIndex) -> dict[str, list[tuple[str, frozenset[str]]]]:
     """Singular head word -> (category, the singular words of its name part) in file order (rule 2)."""
     out: dict[str, list[tuple[str, frozenset[str]]]] = {}
     for c in index.categories:
         for part in c.name.split(" and "):
-            words = [_singular(w) for w in part.split()]
+            words = [naive_singular(w) for w in part.split()]
             if words:
                 out.setdefault(words[-1], []).append((c.name, frozenset(words)))
     return out
@@ -80,7 +70,7 @@ def by_name(label: str, index: CategoryIndex, parts: dict[str, list[tuple[str, f
             ) -> str | None:
     """The category a part of whose name `label` ends with and contains every word of (rule 2 of the module
     doc): the longest such part, then the shallowest category, then file order; None when there is none."""
-    words = [_singular(w) for w in label.split()]
+    words = [naive_singular(w) for w in label.split()]
     if not words:
         return None
     candidates = [(name, part) for name, part in (parts if parts is not None else _name_parts(index)).get(words[-1], ())
