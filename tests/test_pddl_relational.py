@@ -243,3 +243,35 @@ def test_the_kitchen_is_completed_with_the_holders_and_contents_it_names():
     outcome = plan(Foon((boil,)), Kitchen(frozenset({pot, noodle})), Goal(GoalSpec("pot"), (cooked,)), "relational")
     assert outcome.status == "solved" and replay(outcome.trace).ok
     assert outcome.trace.contents("pot_1") == ("noodle_1", "water_1")
+
+
+def test_every_kitchen_container_listing_an_item_holds_one():
+    # two bowls of water and a single `water (in [bowl])` node: a second water, one in each bowl
+    water, bowl = n("water", inside("bowl")), n("bowl", contains("water"))
+    other = n("bowl", contains("water"), make_state("chilled"))
+    both = n("pot", contains("water"))
+    pour = FunctionalUnit((bowl, other, water, n("pot", "empty")), Motion("pour"), (both, n("water", inside("pot"))))
+    kitchen = Kitchen(frozenset({water, bowl, other, n("pot", "empty")}))
+    task = compile_task(Foon((pour,)), kitchen, Goal(GoalSpec("pot"), (both,)), "relational")
+    held = sorted(a.args for a in task.init if a.predicate == "in")
+    assert [h for h, _ in held] == ["bowl_1", "bowl_2"] and len({x for _, x in held}) == 2
+
+
+def test_what_sits_where_a_mixture_is_made_with_no_output_node_is_absorbed():
+    # FOON's mix lists the meat mix as the bowl's only output object: the garlic and the beef in the bowl
+    # became part of it (the bowl's list still names them: they stand for the mixture's ingredients)
+    bowl = n("bowl", contains("garlic", "ground beef"))
+    garlic, beef = n("garlic", inside("bowl")), n("ground beef", inside("bowl"))
+    mix = FunctionalUnit((bowl, garlic, beef), Motion("mix"), (n("meat mix", inside("bowl")),))
+    outcome = plan(Foon((mix,)), Kitchen(frozenset({bowl, garlic, beef})),
+                   Goal(GoalSpec("meat mix"), (mix.outputs[0],)), "relational")
+    assert outcome.status == "solved"
+    final = outcome.trace.final
+    assert final["garlic_1"].consumed and final["ground_beef_1"].consumed and not final["meat_mix_1"].consumed
+    assert replay(outcome.trace).ok
+
+
+def test_a_kitchen_list_names_an_object_by_its_head_noun():
+    starts = [n("bowl", contains("rice")), n("white rice", inside("bowl"))]
+    assert task_aliases([], ["bowl", "white rice"], starts) == (("rice", "white rice"),)
+    assert task_aliases([], ["bowl", "white rice", "brown rice"], starts) == ()  # two it could be

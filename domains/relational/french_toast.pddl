@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-(define (domain foon-relational-64906b32)
+(define (domain foon-relational-84721294)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -42,6 +42,7 @@
     cinnamon_in_bowl - object-state
     cinnamon_in_custard - object-state
     custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl - object-state
+    custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread - object-state
     egg_beaten_in_bowl - object-state
     egg_beaten_in_custard - object-state
     egg_cracked_in_bowl - object-state
@@ -246,7 +247,6 @@
       (occupied vanilla_extract_in_custard)
       (in ?custard ?vanilla_extract)
       (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
-      (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (in ?bowl ?custard)
       (not (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract))
       (not (is ?egg egg_beaten_in_bowl))
@@ -264,15 +264,20 @@
   (:action dip_u42
     ; unit 42: dip from 05-french_toast.foon:71
     ; dip: bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla extract}, in [bowl]), bread (sliced) -> bread (sliced, soaked {custard})
-    :parameters (?bread - bread)
+    :parameters (?custard - custard ?bread - bread)
     :precondition (and
       (occupied bowl_contains_custard)
-      (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
+      (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (is ?bread bread_sliced)
     )
     :effect (and
+      (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)
+      (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)
+      (in ?bread ?custard)
       (is ?bread bread_sliced_soaked_custard)
+      (not (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl))
       (not (is ?bread bread_sliced))
+      (forall (?from_1 - physical-object) (when (in ?from_1 ?custard) (not (in ?from_1 ?custard))))
     )
   )
 

@@ -2,8 +2,7 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
-; label mismatch: 09-fruit_salad.foon:199: whipped cream is on [fruit salad], whose output node does not list it
-(define (domain foon-relational-26424642)
+(define (domain foon-relational-7911b43b)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

@@ -41,12 +41,15 @@ def place_of(node: ObjectNode | None) -> tuple[Relation, str] | None:
 
 
 def listed(node: ObjectNode | None) -> frozenset[str]:
-    """The labels a container node lists: the ingredients and related objects of its `contains` states, and
-    the related object of a `with` state (`baking tray (with [aluminium foil])`: the foil is on the tray)."""
+    """The labels a node lists: the ingredients and related objects of its `contains` states, the related
+    object of a `with` state (`baking tray (with [aluminium foil])`: the foil is on the tray), and the
+    ingredients of any other state (`cooking pan (greased {butter})`: the butter is in the pan; the next
+    node that lists only the pork chop says the butter went into it)."""
     if node is None:
         return frozenset()
     items = {i for s in node.states if s.label == "contains" for i in (*s.ingredients, s.related) if i}
     items |= {s.related for s in node.states if s.label == "with" and s.related}
+    items |= {i for s in node.states if s.label not in ("in", "on") for i in s.ingredients}
     return frozenset(items - {node.label})
 
 

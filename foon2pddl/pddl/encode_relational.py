@@ -57,7 +57,7 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from ..model.places import describes_contents, listed, place_of
+from ..model.places import describes_contents, listed, place_of, places
 from .holders import Place, RelRole, list_gaps, mismatches, relational_roles, task_aliases
 from .instance_counts import derive_counts
 from .names import NameTable
@@ -126,15 +126,31 @@ def implied_holders(instances: list[Instance], alias: dict[str, str] | None = No
     return tuple(make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items()))
 
 
-def implied_contents(instances: list[Instance], alias: dict[str, str] | None = None) -> tuple[ObjectNode, ...]:
-    """What a kitchen container lists but the task has no object of (`pot (contains {water})`, no water in any
-    unit): one object per label, `water (in [pot])`, sorted by label (the first container listing it)."""
-    have = {x.label for x in instances}
-    wanted: dict[str, ObjectNode] = {}
-    for x in sorted(instances, key=lambda x: x.name):
-        for item in sorted(_read(listed(x.start), alias or {}) - have):
-            wanted.setdefault(item, make_node(item, [make_state("in", x.label)]))
-    return tuple(wanted[k] for k in sorted(wanted))
+def implied_contents(instances: list[Instance], alias: dict[str, str] | None = None,
+                     placed: frozenset[str] = frozenset()) -> tuple[ObjectNode, ...]:
+    """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
+    any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
+    `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
+    in it, counting the task's objects that start placed in a container of that label first. A new object
+    starts in the node of such an object, else `water (in [pot])`. In container-name order; O(n^2)."""
+    alias = alias or {}
+    out = []
+    fits: dict[tuple[str, str], list[ObjectNode]] = {}  # (item, container label) -> start nodes placed there
+    for x in instances:
+        place = place_of(x.start)
+        if place is not None:
+            fits.setdefault((x.label, alias.get(place[1], place[1])), []).append(x.start)
+    spare = {k: len(v) for k, v in fits.items()}
+    for h in sorted(instances, key=lambda x: x.name):
+        if h.start is None or h.label not in placed:
+            continue
+        for item in sorted(_read(listed(h.start), alias)):
+            if spare.get((item, h.label), 0) > 0:
+                spare[(item, h.label)] -= 1
+                continue
+            known = fits.get((item, h.label))
+            out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
+    return tuple(out)
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
@@ -157,11 +173,13 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         nodes.update(x for r in relational_roles(f.units[u]) for x in (r.role.before, r.after) if x is not None)
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
     instances, init, precede = _instances(table, counts, const)
-    alias = dict(task_aliases([f.units[u] for u in units], have))
+    alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
     extra = implied_holders(instances, alias)
-    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)], alias)
+    placed = frozenset(alias.get(c, c) for n in nodes | {x.start for x in instances} for _, c in places(n))
+    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)], alias, placed)
     for node in extra:
-        const[node] = table.name(node.describe(), key=("node", node))
+        if node not in const:
+            const[node] = table.name(node.describe(), key=("node", node))
         if node.label not in type_of:
             type_of[node.label] = table.name(node.label, key=("type", node.label))
             types.append((type_of[node.label], ROOT_TYPE))

@@ -238,12 +238,20 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     return tuple(dict.fromkeys(out))
 
 
-def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str]) -> tuple[tuple[str, str], ...]:
-    """The units' aliases (rule 0) for a whole task, for its replay: a name that is itself the label of an
-    object of the task (`labels`), or that units read as different labels, is no alias. Sorted pairs."""
+def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
+                 starts: Iterable[ObjectNode | None] = ()) -> tuple[tuple[str, str], ...]:
+    """The units' aliases (rule 0) for a whole task, for its replay, plus those of the objects' start nodes
+    (`starts`: `bowl (contains {rice})` in a kitchen whose only rice is `white rice`, read against all the
+    task's `labels`). A name that is itself the label of an object of the task, or that is read as different
+    labels, is no alias. Sorted pairs."""
     have = set(labels)
     seen: dict[str, set[str]] = {}
     for u in units:
         for name, label in unit_aliases(u):
             seen.setdefault(name, set()).add(label)
+    for node in starts:
+        for name in (*listed(node), *(c for _, c in places(node))):
+            match = [lab for lab in sorted(have) if _head_of(name, lab)]
+            if name not in have and len(match) == 1:
+                seen.setdefault(name, set()).add(match[0])
     return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)

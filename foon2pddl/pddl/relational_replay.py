@@ -15,9 +15,12 @@ and marked consumed), and so did everything in or on a consumed object. An objec
 holders is a PlanDecodeError (the encoding promises at most one). Two more
 FOON completions happen here, where the plan says which objects: a late-bound
 source holder no longer lists what left it (its PDDL state is unchanged, so a
-later step that needs its old node shows as a state mismatch), and a read-only
-object moved by an implied move into the holder where the step makes a new
-object became part of it (`rib` picked onto the tray where `barbecued ribs` appear).
+later step that needs its old node shows as a state mismatch), and an object
+the unit gives no output node, that names a place (or was moved there by an
+implied move) and sits in the holder where the step makes a new object, became
+part of it (`garlic (in [bowl])` and `ground beef (in [bowl])` where the mix
+makes `meat mix (in [bowl])`; `rib` picked onto the tray where `barbecued ribs`
+appear).
 O(steps x (facts + objects)).
 """
 
@@ -27,7 +30,7 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
-from ..model.places import describes_contents, listed
+from ..model.places import describes_contents, listed, place_of
 from .holders import list_gaps, relational_roles, task_aliases, without
 from .instance_replay import source_of
 from .registry import PlanDecodeError
@@ -58,7 +61,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
     consumed: set[str] = set()
     holder = _holders(facts)
     units = [task.units[a.unit] for a in task.actions if a.unit is not None]
-    aliases = task_aliases(units, label.values())
+    aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
     alias = dict(aliases)
 
     def lists(node: ObjectNode | None) -> frozenset[str]:  # a list read through the task's aliases
@@ -122,8 +125,9 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         changed_now = {x for r, x in zip(rels, names, strict=True) if r.changes}
         read = {x for r, x in zip(rels, names, strict=True) if r.after is None}
         made_in = {holder[x][0] for r, x in zip(rels, names, strict=True) if r.role.before is None and x in holder}
-        for r, x in zip(rels, names, strict=True):  # an implied move into where a product is made: absorbed
-            if r.role.after is None and r.changes and holder.get(x, ("",))[0] in made_in:
+        for r, x in zip(rels, names, strict=True):  # in where a product is made, with no output node: absorbed
+            if (r.role.after is None and (r.changes or place_of(r.role.before) is not None)
+                    and holder.get(x, ("",))[0] in made_in):
                 consumed.add(x)
         for c in sorted(bound):
             if c in consumed or not describes_contents(node[c]):

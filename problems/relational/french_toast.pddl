@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
 (define (problem make_french_toast)
-  (:domain foon-relational-64906b32)
+  (:domain foon-relational-84721294)
   (:objects
     bowl_1 - bowl
     bread_1 - bread
