@@ -43,8 +43,8 @@ def test_optimal_reuse_with_relevance_and_stubborn_sets_finds_native_optima(sett
             assert len(outcome.tree) == len(native.tree), goal.describe()  # both optimal: same size
             assert outcome.validation.ok
             solved += 1
-            facts = [sas.facts[fd_reuse.sas_fact_name(a)] for a in replanner.node_atoms[outcome.tree.goal]
-                     if fd_reuse.sas_fact_name(a) in sas.facts]
+            (atoms,) = replanner.node_atoms[outcome.tree.goal]  # one writing per node in the tree encoding
+            facts = [sas.facts[fd_reuse.sas_fact_name(a)] for a in atoms if fd_reuse.sas_fact_name(a) in sas.facts]
             kept.append(len(sas.relevant(facts)))
     assert solved >= 5 and max(kept) < len(sas.operators)  # the goals' parts are strictly smaller
 

@@ -61,6 +61,7 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
     parts = ["foon2pddl", "experiment", *(str(p) for p in paths), "--trials", str(protocol.trials),
              "--goals", str(protocol.goals), "--kitchen-fraction", f"{protocol.kitchen_fraction:g}",
              "--seed", str(protocol.seed), "--level", str(protocol.level), "--similarity", protocol.similarity,
+             *(("--objects-per-item", str(protocol.objects_per_item)) if protocol.objects_per_item != 1 else ()),
              "--networks", ",".join(networks),
              "--solvers", ",".join(solvers), "--time-limit", f"{time_limit:g}", "--jobs", str(jobs),
              *(x for s, n in limits for x in ("--goal-limit", f"{s}={n}")),
@@ -85,6 +86,9 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
 @level_option
 @click.option("--similarity", type=click.Choice(list(SIMILARITY_MODES)), default=DEFAULT_MODE, show_default=True,
               help="FOON-EXP's similarity mode (docs/generalization.md); recorded in the protocol.")
+@click.option("--objects-per-item", "per_item", type=click.IntRange(1), default=1, show_default=True,
+              help="Physical objects per kitchen item when returned trees are scheduled (docs/experiment.md); "
+                   "recorded in the protocol.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
               help="Workers: 1 runs the cells in this process; N > 1 starts a local Dask cluster of N workers.")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
@@ -104,7 +108,8 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
 @click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
 @click.option("--progress/--no-progress", default=True, show_default=True,
               help="Progress on stderr: a bar on a terminal, otherwise a line every 30 s (cells done, rate, ETA).")
-def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, similarity, jobs, scheduler, time_limit, out_dir,
+def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, similarity, per_item, jobs, scheduler,
+               time_limit, out_dir,
                report, sweeps, sensitivity, goal_limits, fresh, progress) -> None:
     """Run the REG/EXP/GEN experiment and write results (JSONL, CSV), a Markdown report and plots.
 
@@ -125,7 +130,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     swept = _sweeps(sweeps)
     if sensitivity.strip().lower() not in ("", "none", "off"):
         click.echo("warning: --sensitivity is replaced by --sweep kitchen-fraction=V1,V2,...; ignored", err=True)
-    protocol = Protocol(trials, goals, fraction, seed, level, similarity=similarity)
+    protocol = Protocol(trials, goals, fraction, seed, level, similarity=similarity, objects_per_item=per_item)
     report = report or out_dir / "report.md"
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)
@@ -144,7 +149,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         "files": len(runner.input_files(config.paths)),
         "fingerprint": runner.fingerprint(config.paths),
         "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
-        "similarity": similarity,
+        "similarity": similarity, "objects_per_item": per_item,
         "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
         "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
                            "what": NETWORKS[v.name].summary} for v in views],

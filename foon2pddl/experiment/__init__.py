@@ -9,9 +9,10 @@
 - `engine`: where tasks run (this process, or Dask: a LocalCluster or a cluster's scheduler);
 - `runner`: the grid, what is already done, resumable runs;
 - `progress`: a bar on a terminal, periodic lines otherwise;
-- `tables`, `render`, `plots`, `report`: report rows, Markdown and CSV, PNG plots, the written report.
+- `tables`, `render`, `plots`, `report`: report rows, Markdown and CSV, PNG plots, the written report;
+- `physical`: report rows for success as physical execution (schedule verdicts of the trees).
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bans", "collector", "engine", "networks", "params", "plots", "progress", "protocol", "records", "render",
-           "report", "runner", "solvers", "tables", "worker"]
+__all__ = ["bans", "collector", "engine", "networks", "params", "physical", "plots", "progress", "protocol", "records",
+           "render", "report", "runner", "solvers", "tables", "worker"]

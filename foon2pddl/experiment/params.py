@@ -46,6 +46,13 @@ def _count(text: str) -> int:
     return value
 
 
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise ValueError("must be 1 or more")
+    return value
+
+
 def _mode(text: str) -> str:
     from ..errors import UsageError
     from ..generalize.modes import check_mode
@@ -82,6 +89,8 @@ PARAMS: dict[str, Param] = {p.name: p for p in (
     Param("threshold", _fraction, NETWORK, "FOON-EXP Wu-Palmer similarity threshold", field="threshold"),
     Param("similarity", _mode, NETWORK, "FOON-EXP similarity mode (cook, paper)", field="similarity"),
     Param("level", _level, NETWORK, "hierarchy level of goals, kitchens and networks", field="level"),
+    Param("objects-per-item", _positive, TRIAL, "physical objects per kitchen item when trees are scheduled",
+          field="objects_per_item"),
     Param("banned-motions", _count, NETWORK, "motions the robot cannot perform (drawn at random, bans.py)",
           network=ban_motions),
     Param("excluded-objects", _count, NETWORK, "kitchen objects that must not appear (drawn at random, bans.py)",

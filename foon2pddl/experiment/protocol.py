@@ -37,8 +37,9 @@ DEFAULT_SEED = 0
 
 @dataclass(frozen=True)
 class Protocol:
-    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level, EXP threshold
-    and EXP's similarity mode (`generalize.modes`)."""
+    """What varies between experiments: counts, kitchen fraction, master seed, hierarchy level, EXP threshold,
+    EXP's similarity mode (`generalize.modes`) and the physical objects per kitchen item with which returned
+    trees are scheduled (`planners.executable.schedule`)."""
 
     trials: int = DEFAULT_TRIALS
     goals: int = DEFAULT_GOALS
@@ -47,9 +48,12 @@ class Protocol:
     level: int = 3
     threshold: float = DEFAULT_THRESHOLD
     similarity: str = DEFAULT_MODE
+    objects_per_item: int = 1
 
     def __post_init__(self) -> None:
         check_mode(self.similarity)
+        if self.objects_per_item < 1:
+            raise UsageError(f"objects per kitchen item must be at least 1, not {self.objects_per_item!r}")
         if self.trials < 1 or self.goals < 1:
             raise UsageError("trials and goals must be at least 1")
         if not 0.0 < self.kitchen_fraction <= 1.0:
@@ -61,14 +65,16 @@ class Protocol:
         """The parameters results depend on (counts excluded: more trials or goals extend a run).
 
         The threshold appears only when it is not the default, and the similarity mode
-        only when it is not `paper` (the only rule before it was a parameter), so results
-        written before either was a parameter keep their identity.
+        only when it is not `paper` (the only rule before it was a parameter), and the objects
+        per item only when not 1, so results written before either was a parameter keep their identity.
         """
         out = {"kitchen_fraction": self.kitchen_fraction, "seed": self.seed, "level": self.level}
         if self.threshold != DEFAULT_THRESHOLD:
             out["threshold"] = self.threshold
         if self.similarity != "paper":
             out["similarity"] = self.similarity
+        if self.objects_per_item != 1:
+            out["objects_per_item"] = self.objects_per_item
         return out
 
 

@@ -52,7 +52,11 @@ class Record:
     the swept parameters (empty without sweeps); `worker` the engine's worker
     that computed the cell (None in-process); `time_limit` the planner time limit
     it ran under (None in files written before cells recorded it: the run's
-    `protocol.json` says which).
+    `protocol.json` says which). A returned tree is also scheduled over the
+    kitchen's physical objects (`planners.executable.schedule`): `executable`
+    is the verdict, `executable_reason` names the label and step that failed,
+    `extra_objects` how many objects more a tree that ran `short` needs (None
+    when no number of objects would do: a unit must fire again).
     """
 
     trial: int
@@ -74,6 +78,9 @@ class Record:
     params: dict[str, Any] = field(default_factory=dict)
     worker: str | None = None
     time_limit: float | None = None
+    executable: str | None = None  # planners.executable.Verdict of the tree over the kitchen's objects
+    executable_reason: str | None = None  # why not (the label and step that failed)
+    extra_objects: int | None = None  # a `short` tree: objects beyond the kitchen's it needs (None: more do not help)
 
     def __post_init__(self) -> None:
         try:
@@ -101,7 +108,7 @@ class Record:
         data["solved"] = self.solved
         data["times"] = {k: round(v, 6) for k, v in sorted(self.times.items())}
         data["setup"] = round(self.setup, 6)
-        for name in ("bound", "gap", "worker", "time_limit"):  # optional: absent when unset (old files have none)
+        for name in _OPTIONAL:  # optional: absent when unset (old files have none)
             if data[name] is None:
                 del data[name]
         if not self.params:
@@ -126,8 +133,11 @@ _ENCODER = json.JSONEncoder(sort_keys=True, ensure_ascii=False)
 
 _INT = ("trial", "goal")
 _STR = ("network", "solver", "goal_label")
-_OPT_INT = ("units", "plan_length")
+_OPT_INT = ("units", "plan_length", "extra_objects")
+_OPT_STR = ("executable", "executable_reason")
 _OPT_BOOL = ("validated", "proven_optimal", "foon_valid")
+#: Fields left out of a line when unset (added after the first version).
+_OPTIONAL = ("bound", "gap", "worker", "time_limit", "executable", "executable_reason", "extra_objects")
 _OPT_NUM = ("bound", "gap", "time_limit")
 
 
@@ -142,6 +152,7 @@ def _check_types(data: dict) -> None:
     problems += [k for k in _OPT_INT if data.get(k) is not None and not (
         isinstance(data[k], int) and not isinstance(data[k], bool))]
     problems += [k for k in _OPT_BOOL if data.get(k) is not None and not isinstance(data[k], bool)]
+    problems += [k for k in _OPT_STR if data.get(k) is not None and not isinstance(data[k], str)]
     problems += [k for k in _OPT_NUM if data.get(k) is not None and not _number(data[k])]
     times = data.get("times", {})
     if not isinstance(times, dict) or not all(isinstance(k, str) and _number(v) for k, v in times.items()):

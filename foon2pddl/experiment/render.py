@@ -36,17 +36,20 @@ def to_csv(records: Iterable[Record]) -> str:
     """One row per cell, sorted by key; times in milliseconds, one column per phase.
 
     Columns added since the first version come last, and only when some record has them:
-    `bound` and `gap` (anytime optimal solvers), then one column per swept parameter.
+    `bound` and `gap` (anytime optimal solvers), the physical schedule's `executable`, `executable_reason`
+    and `extra_objects` (trees scheduled over the kitchen's objects), then one column per swept parameter.
     """
     records = sorted(records, key=lambda r: (*r.key[:4], repr(r.key[4])))
     phases = sorted({p for r in records for p in r.times})
     anytime = any(r.bound is not None or r.gap is not None for r in records)
     params = list(dict.fromkeys(p for r in records for p in r.params))
+    physical = any(r.executable is not None for r in records)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["trial", "goal", "network", "solver", "goal_label", "status", "solved", "validated", "foon_valid",
                 "units", "plan_length", "proven_optimal", "time_ms", "setup_ms", *(f"{p}_ms" for p in phases), "reason",
-                *(("bound", "gap") if anytime else ()), *params])
+                *(("bound", "gap") if anytime else ()),
+                *(("executable", "executable_reason", "extra_objects") if physical else ()), *params])
 
     def opt(v):
         return "" if v is None else v
@@ -55,7 +58,9 @@ def to_csv(records: Iterable[Record]) -> str:
         w.writerow([r.trial, r.goal, r.network, r.solver, r.goal_label, r.status, r.solved, opt(r.validated),
                     opt(r.foon_valid), opt(r.units), opt(r.plan_length), opt(r.proven_optimal), f"{solve_time(r) * 1000:.3f}",
                     f"{r.setup * 1000:.3f}", *(f"{r.times[p] * 1000:.3f}" if p in r.times else "" for p in phases),
-                    r.reason, *((opt(r.bound), opt(r.gap)) if anytime else ()), *(opt(r.params.get(p)) for p in params)])
+                    r.reason, *((opt(r.bound), opt(r.gap)) if anytime else ()),
+                    *((opt(r.executable), opt(r.executable_reason), opt(r.extra_objects)) if physical else ()),
+                    *(opt(r.params.get(p)) for p in params)])
     return buf.getvalue()
 
 
@@ -281,3 +286,90 @@ def errors_md(data: ReportData, limit: int = 15) -> str:
         return ""
     rows = [(r.solver, net_name(r.network), r.trial, r.goal, r.goal_label, r.reason[:160]) for r in errs[:limit]]
     return md_table(["solver", "network", "trial", "goal", "goal node", "reason"], rows, "llrrll")
+
+
+# -- physical execution (`physical.py`) ----------------------------------------------------------
+
+def verdicts_md(data: ReportData) -> str:
+    """Schedule verdicts of every solver's trees, per network."""
+    from .physical import VERDICTS, verdict_rows
+
+    rows = [[v.solver, net_name(v.network), v.trees, *(v.counts.get(x, 0) for x in VERDICTS),
+             f"{100.0 * v.share:.1f} %"] for v in verdict_rows(data)]
+    return md_table(["solver", "network", "trees", *VERDICTS, "share executable"], rows,
+                    "ll" + "r" * (len(VERDICTS) + 2)) if rows else ""
+
+
+def table2_physical(data: ReportData) -> str:
+    """The paper's Table 2 again, each count beside the trees the trial's objects carry out (`solved / executable`)."""
+    from .physical import physical_successes
+
+    ref = reference_solver(data)
+    per = physical_successes(data, ref) if ref else {}
+    nets = [n for n in data.networks if n in per]
+    if not nets:
+        return ""
+    rows = [[t["trial"], *(f"{per[n][t['trial']][1]} of {per[n][t['trial']][0]}" for n in nets)] for t in data.trials]
+    executable = {n: [per[n][t["trial"]][1] for t in data.trials] for n in nets}
+    rows.append(["min-max", *(_span(executable[n]) for n in nets)])
+    rows.append(["mean", *(f"{statistics.fmean(executable[n]):.1f}" for n in nets)])
+    rows.append(["paper (min-max, not physical)", *(_paper_span(n) for n in nets)])
+    goals = len(data.trials[0]["goals"]) if data.trials else 0
+    return md_table(["trial", *(f"{net_name(n)} executable (of {goals})" for n in nets)], rows)
+
+
+def short_md(data: ReportData) -> str:
+    """Trees the kitchen runs short for: how many more objects they need, and those more objects cannot fix."""
+    from .physical import short_rows
+
+    rows = [[r.solver, net_name(r.network), r.short, r.more_suffice, r.mean_extra, r.max_extra, r.used_up]
+            for r in short_rows(data)]
+    return md_table(["solver", "network", "short", "more objects suffice", "mean extra objects",
+                     "max extra objects", "used-up (a unit must fire again)"], rows, "llrrrrr") if rows else ""
+
+
+def short_labels_md(data: ReportData) -> str:
+    """The labels that stop the reference's trees most often, with the median step they stop at."""
+    from .physical import short_labels
+
+    rows = [[net_name(n), label, count, step] for n, label, count, step in short_labels(data)]
+    return md_table(["network", "label", "trees it stops", "median step"], rows, "llrr") if rows else ""
+
+
+def failures_md(data: ReportData) -> str:
+    """The first trees of the reference that are not executable, each with its verdict, label and step."""
+    from .physical import failures
+
+    rows = [(net_name(r.network), r.trial, r.goal, r.goal_label, r.executable, r.executable_reason or "")
+            for r in failures(data)]
+    return md_table(["network", "trial", "goal", "goal node", "verdict", "why (label and step)"], rows,
+                    "lrrlll") if rows else ""
+
+
+def gen_md(data: ReportData) -> str:
+    """GEN per trial: category-level successes against concrete (object-fillable) ones, beside the paper's range."""
+    from .physical import gen_rows
+
+    found = gen_rows(data)
+    if found is None:
+        return ""
+    network, solver, rows = found
+    table = [[g.trial, g.category, g.concrete, g.concrete_executable] for g in rows]
+    for name, fn in (("min-max", _span), ("mean", lambda v: f"{statistics.fmean(v):.1f}")):
+        table.append([name, *(fn([getattr(g, f) for g in rows]) for f in ("category", "concrete",
+                                                                            "concrete_executable"))])
+    table.append(["paper (min-max)", _paper_span(network), "-", "-"])
+    goals = len(data.trials[0]["goals"]) if data.trials else 0
+    return md_table(["trial", f"category-level ({REFERENCE}, of {goals})", f"concrete ({solver})",
+                     "concrete and executable"], table)
+
+
+def physical_planners_md(data: ReportData) -> str:
+    """Planners over physical objects: goals solved, plans replayed, against the reference's executable trees."""
+    from .physical import physical_planners
+
+    rows = [[p.solver, net_name(p.network), p.solved, p.replayed, p.reference_executable, p.mean_steps, p.mean_units]
+            for p in physical_planners(data)]
+    return md_table(["solver", "network", "goals solved", "plans replayed object by object",
+                     f"{REFERENCE} trees executable", "mean plan steps", f"mean {REFERENCE} tree units"], rows,
+                    "llrrrrr") if rows else ""

@@ -21,16 +21,23 @@ from .render import (
     agreement_matrix,
     agreement_md,
     errors_md,
+    failures_md,
+    gen_md,
     lifted_md,
     optimality_md,
+    physical_planners_md,
     quality_md,
+    short_labels_md,
+    short_md,
     statuses_md,
     sweep_md,
     table2,
     table2_by_solver,
+    table2_physical,
     table3,
     table3_per_goal,
     to_csv,
+    verdicts_md,
 )
 from .solvers import Role
 from .tables import (
@@ -111,6 +118,36 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
         "paper_solver": paper,
         "plots": plot_links,
         "paper_cpu": PAPER_CPU,
+        **physical_context(data, summary),
+    }
+
+
+def physical_context(data: ReportData, summary: dict) -> dict:
+    """The physical-execution sections (`physical.py`); `summary` gains each network's executable mean."""
+    from .physical import gen_rows, physical_successes, scheduled, short_labels
+
+    ref = reference_solver(data)
+    per = physical_successes(data, ref) if ref else {}
+    for n, trials in per.items():
+        if n in summary:
+            done = [b for _, b in trials.values()]
+            solved = sum(a for a, _ in trials.values())
+            summary[n]["executable_mean"] = statistics.fmean(done) if done else math.nan
+            summary[n]["executable_share"] = 100.0 * sum(done) / solved if solved else math.nan
+    gen = gen_rows(data)
+    return {
+        "physical": scheduled(data),
+        "per_item": data.meta.get("objects_per_item", 1),
+        "verdicts": verdicts_md(data),
+        "table2_physical": table2_physical(data),
+        "short": short_md(data),
+        "short_labels": short_labels_md(data),
+        "failures": failures_md(data),
+        "concrete_table": gen_md(data),
+        "gen_means": None if gen is None else {
+            f: statistics.fmean(getattr(g, f) for g in gen[2]) for f in ("category", "concrete", "concrete_executable")},
+        "physical_planners": physical_planners_md(data),
+        "top_short": list(dict.fromkeys(f"`{label}`" for _, label, _, _ in short_labels(data, ref or REFERENCE, 6)))[:3],
     }
 
 

@@ -22,6 +22,8 @@ before it stays, so the same command resumes once there is room.
 from __future__ import annotations
 
 import json
+import shutil
+import tempfile
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -254,7 +256,10 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
     """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives.
     A local run builds the networks the batches need first (local workers are forked: they inherit
     them, each built once), then calls `settle` (`collector.building`) before the first cell."""
-    job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit)
+    # Translations are shared through a private directory on this machine (fd-tree and fd-tree-opt translate
+    # the same task; local workers see the directory, a remote cluster's may not).
+    cache = tempfile.mkdtemp(prefix="foon2pddl-sas-") if config.scheduler is None else None
+    job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit, cache)
     try:
         if config.scheduler is None:
             for point, network in dict.fromkeys((b.point, b.network) for b in batches):
@@ -270,6 +275,8 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
                      no_worker_limit=config.no_worker_limit)
     finally:
         progress.close()
+        if cache is not None:
+            shutil.rmtree(cache, ignore_errors=True)
 
 
 def run(config: Config, progress: bool | str = True, fresh: bool = False) -> RunSummary:

@@ -56,12 +56,15 @@ def fingerprint(paths: Sequence[str]) -> str:
 
 @dataclass(frozen=True)
 class Job:
-    """What every task of a run shares: the inputs (paths and their fingerprint), protocol and time limit."""
+    """What every task of a run shares: the inputs (paths and their fingerprint), protocol and time limit;
+    `cache`, a directory of Fast Downward translations the run's processes share (local runs only:
+    `solvers.Setting`)."""
 
     paths: tuple[str, ...]
     fingerprint: str
     protocol: Protocol
     time_limit: float
+    cache: str | None = None
 
 
 @dataclass(frozen=True)
@@ -176,7 +179,9 @@ def _prepared(batch: Batch, job: Job):
         return cache[key]
     v = view(job.paths, job.protocol, batch.point, batch.network)
     kitchen = transform_kitchen(batch.trial.kitchen, batch.point)
-    prepared = get_solver(batch.solver).prepare(Setting(v, kitchen, job.time_limit))
+    shared = Path(job.cache) if job.cache is not None else None
+    per_item = protocol_at(job.protocol, batch.point).objects_per_item
+    prepared = get_solver(batch.solver).prepare(Setting(v, kitchen, job.time_limit, shared, per_item))
     cache[key] = prepared
     while len(cache) > PREPARED_KEPT:
         cache.popitem(last=False)
@@ -218,7 +223,8 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
                         plan_length=outcome.plan_length, validated=outcome.validated,
                         proven_optimal=outcome.proven_optimal, foon_valid=outcome.foon_valid,
                         bound=outcome.bound, gap=outcome.gap, params=batch.params, worker=worker,
-                        time_limit=job.time_limit)
+                        time_limit=job.time_limit, executable=outcome.executable,
+                        executable_reason=outcome.executable_reason, extra_objects=outcome.extra_objects)
         out.append(record)
         (emit or _ignore)(record)
     return out

@@ -141,6 +141,26 @@ def candidate_atoms(task: PlanningTask, nodes: tuple[ObjectNode, ...]) -> dict[O
     return {node: found[node] for node in nodes}
 
 
+def candidate_alternatives(task: PlanningTask, nodes: tuple[ObjectNode, ...]
+                           ) -> dict[ObjectNode, tuple[tuple[Atom, ...], ...]]:
+    """Goal candidate -> every way of having it: the preconditions of its goal actions, in task order.
+
+    As `candidate_atoms`, for encodings that may give a candidate several goal actions (the lifted
+    one: one per way its atom can be written, `pddl.lifted_atoms.representations`). Raises ValueError
+    unless every candidate, and nothing else, has one or more. O(actions).
+    """
+    aux = [a for a in task.actions if a.candidate is not None]
+    if len(nodes) == 1 and not aux:
+        return {nodes[0]: (task.goal,)}
+    found: dict[ObjectNode, list[tuple[Atom, ...]]] = {}
+    for a in aux:
+        found.setdefault(a.candidate, []).append(a.pre)
+    if set(found) != set(nodes):
+        raise ValueError(f"{task.encoding} encoding: expected goal actions for each of {len(nodes)} candidates, "
+                         f"found them for {len(set(found) & set(nodes))} (and {len(set(found) - set(nodes))} others)")
+    return {node: tuple(found[node]) for node in nodes}
+
+
 def released(state: set[Atom], release: tuple[tuple[str, str, Atom], ...], bind: dict[str, str]) -> set[Atom]:
     """The atoms of `state` an action's quantified deletes remove (`Action.release`), under the binding `bind`.
 

@@ -25,6 +25,8 @@ wrongly come out unsolvable.
 
 from __future__ import annotations
 
+import hashlib
+import os
 import tempfile
 import time
 from collections.abc import Iterable, Sequence
@@ -176,22 +178,33 @@ class TranslatedTask:
 
     @classmethod
     def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
-              search: tuple[str, ...] | None = None) -> TranslatedTask:
-        """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails."""
+              search: tuple[str, ...] | None = None, cache: Path | None = None) -> TranslatedTask:
+        """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails.
+
+        `cache`: a directory of translations by the SHA-256 of the PDDL text and translator options
+        (`cached_sas`); a task translated before, by this process or another, is read, not translated.
+        """
         from ..pddl.render import render
 
         domain_text, problem_text = render(_anchored(task))
+        options = ("--keep-unimportant-variables", *fd.translate_options_for(task))
+        t0 = time.perf_counter()
+        text = cached_sas(cache, domain_text, problem_text, options) if cache is not None else None
+        if text is not None:
+            return cls(task, _parse_sas(text), time.perf_counter() - t0, optimal, search)
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
             work = Path(tmp)
             (work / "domain.pddl").write_text(domain_text)
             (work / "problem.pddl").write_text(problem_text)
             run = fd.translate(work / "domain.pddl", work / "problem.pddl", work / "output.sas", work, time_limit,
-                               ("--keep-unimportant-variables", *fd.translate_options_for(task)))
+                               options)
             failed = fd.translation_failure(run, "fd-reuse")
             if failed is not None:
                 raise RuntimeError(f"translation for reuse failed ({failed.status}): {failed.message}")
-            sas = _parse_sas((work / "output.sas").read_text())
-        return cls(task, sas, run.seconds, optimal, search)
+            text = (work / "output.sas").read_text()
+        if cache is not None:
+            store_sas(cache, domain_text, problem_text, options, text)
+        return cls(task, _parse_sas(text), run.seconds, optimal, search)
 
     def goal_sas(self, alternatives: Sequence[Sequence[Atom]]) -> str | PlanResult:
         """SAS text for a goal, or the result when no search is needed (goal true at start or unreachable)."""
@@ -241,3 +254,32 @@ class TranslatedTask:
             result = fd.search(Path(tmp), options, time_limit, self.name, sas_text=sas)
         plan = tuple(s for s in result.plan if not step_action(s).startswith(GOAL_OP))
         return replace(result, plan=plan).with_timings(translate=translate_s)
+
+
+def sas_key(domain_text: str, problem_text: str, options: Sequence[str]) -> str:
+    """The cache name of a translation: SHA-256 over the PDDL texts and the translator options."""
+    h = hashlib.sha256()
+    for part in (domain_text, problem_text, *options):
+        h.update(part.encode() + b"\0")
+    return h.hexdigest() + ".sas"
+
+
+def cached_sas(cache: Path, domain_text: str, problem_text: str, options: Sequence[str]) -> str | None:
+    """The SAS text `store_sas` kept for these inputs, or None."""
+    try:
+        return (cache / sas_key(domain_text, problem_text, options)).read_text()
+    except OSError:
+        return None
+
+
+def store_sas(cache: Path, domain_text: str, problem_text: str, options: Sequence[str], text: str) -> None:
+    """Keep a translation in `cache` (written whole under a private name, then renamed: a reader in
+    another process never sees half a file); a failed write only loses the reuse."""
+    path = cache / sas_key(domain_text, problem_text, options)
+    part = path.with_name(f"{path.name}.{os.getpid()}.part")
+    try:
+        part.write_text(text)
+        os.replace(part, path)
+    except OSError:
+        part.unlink(missing_ok=True)
+

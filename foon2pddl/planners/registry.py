@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from ..errors import UsageError
@@ -75,10 +76,10 @@ def _fd_solve(request: PlanRequest) -> PlanResult:
 
 
 def _fd_translate_once(task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
-                       search: tuple[str, ...] | None = None) -> Any:
+                       search: tuple[str, ...] | None = None, cache: Path | None = None) -> Any:
     from .fd_reuse import TranslatedTask
 
-    return TranslatedTask.build(task, optimal=optimal, time_limit=time_limit, search=search)
+    return TranslatedTask.build(task, optimal=optimal, time_limit=time_limit, search=search, cache=cache)
 
 
 def _no_check(name: str) -> None:

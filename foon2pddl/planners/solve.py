@@ -11,8 +11,10 @@ the goal.
 
 from __future__ import annotations
 
+import copy
 import time
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 
 from ..generalize.categories import CategoryIndex
 from ..io.rates import Rates
@@ -23,11 +25,11 @@ from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
-from ..pddl.compile import DEFAULT_ENCODING, as_compiled, compile_goal, compile_task
+from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.registry import Compiled
 from ..pddl.render import render
-from ..pddl.task import PlanningTask, candidate_atoms
+from ..pddl.task import PlanningTask, candidate_alternatives
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
@@ -150,12 +152,20 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 
 class GoalReplanner:
     """Many goals on one network and kitchen: a planner that can reuse a translation (`Planner.translate_once`;
-    Fast Downward's) translates once, then searches per goal."""
+    Fast Downward's) translates once, then searches per goal.
+
+    Any registered encoding whose goal is one goal action per candidate works, the lifted
+    `gen-lifted` one included (give its `category_index`; a candidate may have several goal
+    actions there, one per way its atom can be written). `with_search` gives a replanner on
+    the same translation with other search options (an optimal search beside a satisficing one).
+    `cache`: a directory of translations shared by processes (`fd_reuse.TranslatedTask.build`).
+    """
 
     def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
                  time_limit: float | None = None, search: tuple[str, ...] | None = None,
-                 planner: str = DEFAULT_PLANNER) -> None:
+                 planner: str = DEFAULT_PLANNER, category_index: CategoryIndex | None = None,
+                 cache: Path | None = None) -> None:
         from ..errors import UsageError
         from .registry import lookup
 
@@ -166,29 +176,39 @@ class GoalReplanner:
         at_level = project(foon, level)
         nodes = tuple(sorted(at_level.nodes))
         every = Goal(GoalSpec("any node"), nodes, level)
-        task = compile_task(at_level, kitchen, every, encoding, level, False, costs, rates)
-        self.node_atoms = candidate_atoms(task, nodes)
+        compiled = compile_goal(at_level, kitchen, every, encoding, level, prune=False, costs=costs, rates=rates,
+                                category_index=category_index)
+        task = compiled.task
+        self.node_atoms = candidate_alternatives(task, nodes)
         goal_atoms = set(task.goal)
         base = replace(task, actions=tuple(a for a in task.actions
                                            if not (a.unit is None and goal_atoms & set(a.add))))
+        self.compiled = replace(compiled, task=base)
         self.encode_seconds = time.perf_counter() - t0
         self.level = level
         self.kitchen_nodes = kitchen.project(level).nodes
-        self.translated = translate_once(base, optimal=optimal, time_limit=time_limit, search=search)
+        kw = {"cache": cache} if cache is not None else {}
+        self.translated = translate_once(base, optimal=optimal, time_limit=time_limit, search=search, **kw)
 
     @property
     def task(self) -> PlanningTask:
         return self.translated.task
 
+    def with_search(self, *, optimal: bool = False, search: tuple[str, ...] | None = None) -> GoalReplanner:
+        """This replanner searching with other options, on the same translation (nothing is translated again)."""
+        other = copy.copy(self)
+        other.translated = replace(self.translated, optimal=optimal, search=search)
+        return other
+
     def plan(self, goal: Goal, time_limit: float | None = None, up_validate: bool = False) -> PlanOutcome:
         """Plan for one goal on the shared translation."""
         t0 = time.perf_counter()
         candidates = sorted({project_node(c, self.level) for c in goal.candidates})
-        alternatives = [self.node_atoms[c] for c in candidates if c in self.node_atoms]
+        alternatives = [alt for c in candidates for alt in self.node_atoms.get(c, ())]
         timings = {"encode": time.perf_counter() - t0}
         result = self.translated.solve(alternatives, time_limit)
         # Check the plan against the alternative it reaches, as the goal of the task.
         state, _ = run_plan(self.task, result.plan)
         reached = next((a for a in alternatives if set(a) <= state), alternatives[0] if alternatives else ())
-        return _finish(result, as_compiled(replace(self.task, goal=tuple(reached))), goal, self.kitchen_nodes,
-                       timings, up_validate)
+        compiled = replace(self.compiled, task=replace(self.task, goal=tuple(reached)))
+        return _finish(result, compiled, goal, self.kitchen_nodes, timings, up_validate)

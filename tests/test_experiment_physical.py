@@ -1,0 +1,167 @@
+"""Success as physical execution in the experiment: schedule verdicts in records, the report's physical tables.
+
+Oracles: `planners.executable.schedule` run directly on the trees native retrieval returns, and counts
+of hand-built records.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from foon2pddl.experiment import physical, runner
+from foon2pddl.experiment.protocol import Protocol
+from foon2pddl.experiment.records import CellStatus, Record
+from foon2pddl.experiment.render import table2_physical, verdicts_md
+from foon2pddl.experiment.tables import ReportData
+from foon2pddl.planners.executable import Verdict, schedule
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """One trial of 40 goals on REG and GEN, with one and with two objects per kitchen item."""
+    out = {}
+    for per_item in (1, 2):
+        config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=40, objects_per_item=per_item),
+                               networks=("reg", "gen"), solvers=("native-complete", "fd-lifted-gen"),
+                               out_dir=tmp_path_factory.mktemp(f"per{per_item}"))
+        out[per_item] = (config, runner.run(config, progress=False))
+    return out
+
+
+def test_every_tree_gets_the_verdict_schedule_gives_it(runs):
+    from foon2pddl.retrieval.api import retrieve
+
+    config, summary = runs[1]
+    trial = summary.trials[0]
+    view = runner.views(config)[0]
+    nodes = view.map_kitchen(trial.kitchen).project(view.foon.level).nodes
+    checked = 0
+    for r in summary.records:
+        if r.network != "reg" or r.solver != "native-complete":
+            continue
+        assert (r.executable is not None) == r.solved
+        if not r.solved:
+            continue
+        tree = retrieve(view.foon, nodes, view.goal_of(trial.goals[r.goal - 1]), "complete").tree
+        verdict = schedule(tree, nodes)
+        assert r.executable == verdict.verdict
+        assert (r.executable_reason or "") == verdict.message
+        checked += 1
+    assert checked >= 5
+
+
+def test_every_tree_that_is_not_executable_names_its_label_and_step(runs):
+    _, summary = runs[1]
+    bad = [r for r in summary.records if r.solved and r.executable != Verdict.EXECUTABLE]
+    assert bad  # the example kitchen has one cutting board: some trees need two
+    for r in bad:
+        step, label = physical.failure_of(r.executable_reason)
+        assert step >= 1 and label and label != r.executable_reason
+        assert f"step {step} " in r.executable_reason and label in r.executable_reason
+        if r.executable == Verdict.SHORT and r.extra_objects is not None:
+            assert r.extra_objects >= 1
+
+
+def test_more_objects_per_item_never_make_a_tree_less_executable(runs):
+    one = {r.key[:4]: r for r in runs[1][1].records}
+    two = {r.key[:4]: r for r in runs[2][1].records}
+    assert one.keys() == two.keys()
+    assert all(a.solved == two[k].solved for k, a in one.items())  # FOON's answer does not depend on objects
+    gained = 0
+    for k, a in one.items():
+        if a.solved and a.executable == Verdict.EXECUTABLE:
+            assert two[k].executable == Verdict.EXECUTABLE
+        if a.executable == Verdict.SHORT and a.extra_objects is not None and a.extra_objects <= 1:
+            assert two[k].executable == Verdict.EXECUTABLE  # one more object per label was all it needed
+            gained += 1
+    assert gained >= 1
+
+
+def test_objects_per_item_is_in_the_identity_only_when_not_one(runs):
+    assert "objects_per_item" not in Protocol().identity()
+    assert Protocol(objects_per_item=3).identity()["objects_per_item"] == 3
+    with pytest.raises(Exception, match="at least 1"):
+        Protocol(objects_per_item=0)
+
+
+def _rec(trial, goal, network, solver, verdict, reason=None, extra=None, solved=True):
+    return Record(trial=trial, goal=goal, network=network, solver=solver, goal_label=f"g{goal}",
+                  status=CellStatus.SOLVED if solved else CellStatus.UNSOLVABLE, validated=solved or None,
+                  units=3 if solved else None, executable=verdict if solved else None, executable_reason=reason,
+                  extra_objects=extra)
+
+
+def _data(records):
+    trials = tuple({"trial": t, "goals": ["a", "b", "c"], "kitchen_nodes": 5} for t in (1, 2))
+    return ReportData(tuple(records), ("reg", "gen"), ("native-complete", "fd-lifted-gen"), trials)
+
+
+SHORT = "step 3 (pick-and-place) needs one more bowl in 'bowl (empty)': the kitchen has 1 there, none free"
+USED = ("step 4 (pour) needs 'milk (in [cup])' again, but step 2 moved the milk on (in this order of the units "
+        "the unit making it must fire again)")
+
+
+def test_counts_of_hand_built_records():
+    records = [_rec(1, 1, "reg", "native-complete", "executable"), _rec(1, 2, "reg", "native-complete", "short",
+               SHORT, 1), _rec(1, 3, "reg", "native-complete", None, solved=False),
+               _rec(2, 1, "reg", "native-complete", "used-up", USED), _rec(2, 2, "reg", "native-complete", "executable"),
+               _rec(1, 1, "gen", "native-complete", "executable"), _rec(1, 1, "gen", "fd-lifted-gen", "short", SHORT),
+               _rec(2, 1, "gen", "native-complete", "executable"), _rec(2, 2, "gen", "fd-lifted-gen", "executable")]
+    data = _data(records)
+    assert physical.physical_successes(data)["reg"] == {1: (2, 1), 2: (2, 1)}
+    rows = {(v.solver, v.network): v for v in physical.verdict_rows(data)}
+    assert rows[("native-complete", "reg")].trees == 4 and rows[("native-complete", "reg")].share == 0.5
+    short = {(s.solver, s.network): s for s in physical.short_rows(data)}
+    assert short[("native-complete", "reg")] == physical.ShortRow("native-complete", "reg", 1, 1, 1.0, 1, 1)
+    assert short[("fd-lifted-gen", "gen")].more_suffice == 0  # more objects would not do: no number given
+    assert physical.short_labels(data) == [("reg", "bowl", 1, 3), ("reg", "milk", 1, 4)]
+    network, solver, gen = physical.gen_rows(data)
+    assert (network, solver) == ("gen", "fd-lifted-gen")
+    assert [(g.category, g.concrete, g.concrete_executable) for g in gen] == [(1, 1, 0), (1, 1, 1)]
+    assert "| 1 | 1 of 2 | 1 of 1 |" in table2_physical(data)
+    assert "50.0 %" in verdicts_md(data)
+
+
+def test_a_reason_naming_neither_label_nor_step_is_kept_whole():
+    assert physical.failure_of("something else") == (0, "something else")
+    assert physical.failure_of("step 2 (chop) needs 'onion (chopped)', which no earlier step makes") == (
+        2, "onion (chopped)")
+
+
+def test_the_report_has_the_physical_sections_and_the_comparison_says_what_changes(runs, tmp_path):
+    from foon2pddl.experiment.report import render_markdown
+
+    config, summary = runs[1]
+    data = ReportData(summary.records, config.networks, config.solvers, tuple(t.summary() for t in summary.trials),
+                      _meta(config, summary))
+    text = render_markdown(data, {"successes.png": "s.png", "times.png": "t.png"})
+    for heading in ("## Physical execution", "## GEN: concrete against category-level success",
+                    "The paper's Table 2 under physical execution", "**Physical execution.**"):
+        assert heading in text
+
+
+def _meta(config, summary):
+    from foon2pddl.experiment.networks import NETWORKS
+
+    return {"command": "foon2pddl experiment", "goal_limits": {}, "inputs": "the example", "files": 1,
+            "fingerprint": "0" * 64, "trials": 1, "goals": 40, "level": 3, "seed": 0, "kitchen_fraction": "0.9",
+            "similarity": "cook", "objects_per_item": 1, "default_kitchen": summary.default_kitchen,
+            "goal_pool": summary.goal_pool,
+            "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
+                               "what": ""} for v in runner.views(config)],
+            "solver_descriptions": [], "time_limit": "60", "jobs": 1, "scheduler": None, "wall": "1 s", "ran": 1,
+            "skipped": 0, "history": [], "machine": "test"}
+
+
+def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(tmp_path):
+    config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=12), networks=("reg",),
+                           solvers=("native-complete", "fd-relational"), out_dir=tmp_path)
+    summary = runner.run(config, progress=False)
+    relational = [r for r in summary.records if r.solver == "fd-relational"]
+    assert relational and not [r for r in relational if r.status == CellStatus.ERROR]
+    solved = [r for r in relational if r.solved]
+    assert solved and all(r.executable == Verdict.EXECUTABLE for r in solved)  # decoding replayed each plan
+    data = ReportData(summary.records, config.networks, config.solvers, tuple(t.summary() for t in summary.trials))
+    (row,) = physical.physical_planners(data)
+    assert (row.solver, row.solved, row.replayed) == ("fd-relational", len(solved), len(solved))
+    assert row.mean_steps is not None and row.mean_units is not None
