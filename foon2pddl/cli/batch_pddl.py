@@ -35,13 +35,15 @@ def _row(entry, goal, status: BatchStatus | PlanStatus, seconds: float, reason: 
 
 
 def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, rates, output_dir: Path,
-                  table_fmt: str, shared: bool = False, **encoder_options) -> None:
+                  table_fmt: str, shared: bool = False, untype: bool = False, **encoder_options) -> None:
     """DIR/<goal>/domain.pddl and problem.pddl per goal (all written atomically at the end), and the table.
 
-    `shared`: every goal unpruned, DIR/domain.pddl once and DIR/<goal>.pddl per goal (`pddl.shared`)."""
+    `shared`: every goal unpruned, DIR/domain.pddl once and DIR/<goal>.pddl per goal (`pddl.shared`);
+    `untype`: types written as predicates (`pddl.untyped`)."""
     from ..io.atomic import atomic_write_many
     from ..pddl.compile import compile_task, encoding_named
     from ..pddl.render import render
+    from ..pddl.untyped import untyped
 
     rows, files, compiled = [], {}, []
     stems = [n[: -len(".d")] for n in file_names(["domain", *(e.spec.describe() for e in entries)], "d")][1:]
@@ -64,6 +66,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
             task = compile_task(view.foon, view.kitchen, goal, encoding, level, False, costs, rates, **encoder_options)
         row = _row(entry, goal, BatchStatus.COMPILED, time.perf_counter() - t0,
                    units=sum(a.unit is not None for a in task.actions))
+        task = untyped(task) if untype else task
         if shared:
             compiled.append((goal.describe(), task))
             row["file"] = str(output_dir / f"{name}.pddl")

@@ -15,6 +15,7 @@ from ..pddl.compile import compile_task, encoding_named
 from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
 from ..pddl.task import PlanningTask
+from ..pddl.untyped import untyped
 from . import main
 from .batch import batch_entries
 from .batch_pddl import compile_batch
@@ -83,9 +84,11 @@ def encoder_options(encoding: str, instances: tuple[str, ...], category_types: b
 @click.option("--shared-domain", "shared", is_flag=True, default=False,
               help="One domain for every goal (DIR/domain.pddl, all units: no relevance pruning) and one problem "
                    "per goal (DIR/<goal>.pddl), the goal in its :goal.")
+@click.option("--untyped", "untype", is_flag=True, default=False,
+              help="No :typing: each type a static predicate type_<T> (for planners without subtypes, Tamer).")
 def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
              level, network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir,
-             fmt, shared) -> None:
+             fmt, shared, untype) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically).
 
     Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table;
@@ -104,7 +107,7 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
             raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
         _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
         return compile_batch(view, entries, encoding, level, prune and not shared, costs,
-                             read_rates(rates) if rates else None, output_dir, fmt, shared=shared,
+                             read_rates(rates) if rates else None, output_dir, fmt, shared=shared, untype=untype,
                              **encoder_options(encoding, instances, category_types, view.foon))
     try:
         task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
@@ -112,6 +115,7 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
     except GoalExcluded as exc:
         click.echo(f"cannot compile: {exc}", err=True)
         click.get_current_context().exit(1)
+    task = untyped(task) if untype else task
     domain, problem = render(task)
     files = {output_dir / "domain.pddl": domain, output_dir / "problem.pddl": problem}
     try:

@@ -77,6 +77,7 @@ def _solve_here(task: PlanningTask | tuple[str, str], name: str, optimal: bool
     process: (status, steps, message, engine used: `--optimal` may pick `NAME-opt`)."""
     from unified_planning.shortcuts import OneshotPlanner
 
+    from ..pddl.untyped import untyped
     from ..pddl.up_problem import build_up, quiet_environment
 
     env = quiet_environment()
@@ -89,6 +90,9 @@ def _solve_here(task: PlanningTask | tuple[str, str], name: str, optimal: bool
         up = build_up(task)
         problem, step = up.problem, up.step
     with OneshotPlanner(name=engine) as planner:
+        if not planner.supports(problem.kind) and not isinstance(task, tuple) and task.uses_types:
+            up = build_up(untyped(task))  # an engine without subtypes (Tamer): the same task, types as predicates
+            problem, step = up.problem, up.step
         if not planner.supports(problem.kind):
             return "error", (), f"engine {engine!r} does not support this task's features", engine
         res = planner.solve(problem)  # the parent enforces the time limit
