@@ -152,3 +152,38 @@ def test_an_impossible_step_is_reported_failed_not_dropped():
     plan = decompose(kitchen_trace(jump), shipped_table(), shipped_domain())
     assert plan.steps[0].status is StepStatus.FAILED and "micro task" in plan.steps[0].reason
     assert plan.replay.ok  # kept as an abstract step: the replay jumps to the trace's state
+
+
+ONION_PEELED = node("onion", "peeled")
+PEEL_BY_HAND = ("peel", [ObjectState("onion_1", ONION_PEELED, "board_1", ON)], ["onion_1", "board_1"])
+PEEL_WITH_KNIFE = ("peel", [ObjectState("onion_1", ONION_PEELED, "board_1", ON)], ["onion_1", "knife_1", "board_1"])
+MIX_BY_HAND = (MIX[0], MIX[1], ["onion_1", "water_1", "bowl_1", "salad_1"])
+
+
+def test_a_step_that_lists_no_tool_takes_the_motions_hand_skill():
+    plan = decompose(kitchen_trace(PEEL_BY_HAND), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("peel-by-hand", ("onion_1",))] and plan.steps[0].skill == "peel-by-hand"
+    with_knife = decompose(kitchen_trace(PEEL_WITH_KNIFE), shipped_table(), shipped_domain())
+    assert with_knife.ok and [s for s, _ in skills(with_knife)] == ["pick", "peel", "place"]  # a listed tool is used
+    mixed = decompose(kitchen_trace(CHOP, MOVE, POUR, MIX_BY_HAND), shipped_table(), shipped_domain())
+    assert mixed.ok and [c.skill for c in mixed.calls if c.macro == 3] == ["mix-by-hand"]
+
+
+def test_without_a_hand_variant_a_tool_less_tool_step_fails_and_a_lacked_one_says_so():
+    table = parse_table('{"motions": {"peel": "peel"}}', "t.json")
+    plan = decompose(kitchen_trace(PEEL_BY_HAND), table, shipped_domain())
+    assert plan.steps[0].status is StepStatus.FAILED  # a knife skill with no knife: no plan
+    lacking = decompose(kitchen_trace(PEEL_BY_HAND), shipped_table(), shipped_domain(), Robot.of(without=["peel-by-hand"]))
+    assert lacking.steps[0].status is StepStatus.FAILED and "no peel-by-hand skill" in lacking.steps[0].reason
+
+
+def test_by_hand_entries_are_checked():
+    assert parse_table('{"motions": {"peel": "peel"}, "by_hand": {"Peel": "peel-by-hand"}}').hand_skill_of("peel") \
+        == "peel-by-hand"
+    from foon2pddl.errors import FoonSyntaxError
+
+    with pytest.raises(FoonSyntaxError, match="not in"):
+        parse_table('{"motions": {"peel": "peel"}, "by_hand": {"mix": "mix-by-hand"}}', "t.json")
+    with pytest.raises(FoonSyntaxError, match="does not define"):
+        parse_table('{"motions": {"peel": "peel"}, "by_hand": {"peel": "nail"}}', "t.json").check(shipped_domain())

@@ -1,6 +1,6 @@
 """A plan's macro steps decomposed into robot skills, solved per step, then replayed end to end.
 
-For each step of a `PhysicalTrace`: the motion's skill (`skills.table`); none,
+For each step of a `PhysicalTrace`: the motion's skill (`skills.table`; its `by_hand` skill when the step lists no tool); none,
 and the step stays **abstract** (reported by its motion, kept in place). Otherwise
 its micro problem (`skills.micro`) is solved with Fast Downward on the skill
 domain pruned to the transport skills and the step's own (`skills.fd_micro`); a
@@ -120,12 +120,22 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
     if skill not in domain.by_name:
         return out(StepStatus.FAILED, f"skill {skill!r} is not defined in {domain.path}")
     problem = micro_problem(trace, index, skill, naming, domain, roles)
+    hand = table.hand_skill_of(motion)
+    if hand is not None and hand in domain.by_name and not _has_tool(problem):
+        if robot.lacks(hand):
+            return out(StepStatus.FAILED, f"the step lists no tool and the robot has no {hand} skill (motion {motion!r})")
+        skill = hand
+        problem = micro_problem(trace, index, skill, naming, domain, roles)
     keep = {a for a in problem.actions if not robot.lacks(a)}
     status, plan, message, seconds = solver(domain.pruned(keep, robot.cost_table), problem.text)
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, seconds)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)
     return out(StepStatus.DECOMPOSED, "", problem, seconds, calls)
+
+
+def _has_tool(problem: MicroProblem) -> bool:
+    return any(a.predicate == "tool" for a in problem.statics)
 
 
 def decompose(trace: PhysicalTrace, table: MotionTable, domain: SkillDomain, robot: Robot | None = None,

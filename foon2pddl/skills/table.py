@@ -3,7 +3,10 @@
 A JSON file `{"motions": {"pour": "pour", "pick-and-place": "place", ...}}`
 (shipped: `foon2pddl/data/skills/motions.json`; `--skill-table FILE` replaces it).
 Motion labels are compared normalized (lower case, spaces collapsed) with a
-composite `*` suffix dropped. A motion the table does not list has no skill: its
+composite `*` suffix dropped. An optional `"by_hand": {motion: skill}` names the skill
+that carries out a motion when its step lists no tool (FOON's `peel` of an avocado
+without a knife: `peel-by-hand`; `fold` of a tortilla without a spoon: `shape`).
+A motion the table does not list has no skill: its
 steps stay abstract (reported by name, never dropped). `coverage` counts, per
 motion, the units (of a network) or firings (of plans) whose motion maps.
 """
@@ -24,7 +27,7 @@ from .domain import SkillDomain
 
 __all__ = ["Coverage", "MotionTable", "coverage", "parse_table", "read_table", "shipped_table"]
 
-KEYS = ("motions", "description", "$schema")
+KEYS = ("motions", "by_hand", "description", "$schema")
 
 
 def motion_key(label: str) -> str:
@@ -33,10 +36,12 @@ def motion_key(label: str) -> str:
 
 @dataclass(frozen=True)
 class MotionTable:
-    """Motion label -> skill name (sorted pairs), and where the table was read from."""
+    """Motion label -> skill name (sorted pairs), motion -> the skill of a step without a tool (sorted
+    pairs, a motion of `pairs` each), and where the table was read from."""
 
     pairs: tuple[tuple[str, str], ...]
     source: str = ""
+    hand_pairs: tuple[tuple[str, str], ...] = ()
 
     @property
     def table(self) -> dict[str, str]:
@@ -46,6 +51,10 @@ class MotionTable:
         """The skill of a motion label, or None when the table does not list it."""
         return self.table.get(motion_key(motion))
 
+    def hand_skill_of(self, motion: str) -> str | None:
+        """The skill of a motion's steps that list no tool, or None (then the motion's own skill)."""
+        return dict(self.hand_pairs).get(motion_key(motion))
+
     def motions_of(self, skills: Iterable[str]) -> tuple[str, ...]:
         """The motions that map to any of `skills`, sorted (what a robot without those skills cannot do)."""
         wanted = set(skills)
@@ -54,7 +63,7 @@ class MotionTable:
     def check(self, domain: SkillDomain) -> None:
         """FoonSyntaxError when the table names a skill the domain does not define."""
         names = set(domain.by_name)
-        for motion, skill in self.pairs:
+        for motion, skill in (*self.pairs, *self.hand_pairs):
             if skill not in names:
                 raise FoonSyntaxError(self.source or "<motions>", 0,
                                       f"motion {motion!r} maps to skill {skill!r}, which {domain.path} does not define")
@@ -68,8 +77,20 @@ def parse_table(text: str, path: str = "<motions>") -> MotionTable:
     for key in data:
         if key not in KEYS:
             raise FoonSyntaxError(path, _line(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
+    pairs = _pairs(data["motions"], text, path)
+    hand = data.get("by_hand", {})
+    if not isinstance(hand, dict):
+        raise FoonSyntaxError(path, _line(text, "by_hand"), '"by_hand" is a JSON object {motion: skill}')
+    hand_pairs = _pairs(hand, text, path)
+    for motion in hand_pairs:
+        if motion not in pairs:
+            raise FoonSyntaxError(path, _line(text, motion), f"by_hand motion {motion!r} is not in \"motions\"")
+    return MotionTable(tuple(sorted(pairs.items())), path, tuple(sorted(hand_pairs.items())))
+
+
+def _pairs(entries: dict, text: str, path: str) -> dict[str, str]:
     pairs: dict[str, str] = {}
-    for motion, skill in data["motions"].items():
+    for motion, skill in entries.items():
         line = _line(text, motion)
         if not isinstance(skill, str) or not skill.strip() or CONTROL_CHARS.search(motion + skill):
             raise FoonSyntaxError(path, line, f"motion {motion!r}: the skill must be a non-empty name")
@@ -77,7 +98,7 @@ def parse_table(text: str, path: str = "<motions>") -> MotionTable:
         if key in pairs and pairs[key] != skill.strip().lower():
             raise FoonSyntaxError(path, line, f"motion {key!r} is mapped twice")
         pairs[key] = skill.strip().lower()
-    return MotionTable(tuple(sorted(pairs.items())), path)
+    return pairs
 
 
 def _line(text: str, key: str) -> int:
