@@ -17,8 +17,8 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
-from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
 from foon2pddl.model.places import listed, place_of
+from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
 from foon2pddl.pddl.holders import list_gaps, mismatches, relational_roles, task_aliases, unit_aliases, without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render

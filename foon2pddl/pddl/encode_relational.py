@@ -42,6 +42,7 @@ from __future__ import annotations
 from ..model.foon import Foon, ObjectNode, make_node, make_state
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.places import describes_contents, listed, place_of, places
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -57,7 +58,6 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from ..model.places import describes_contents, listed, place_of, places
 from .holders import Place, RelRole, list_gaps, mismatches, relational_roles, task_aliases
 from .instance_counts import derive_counts
 from .names import NameTable

@@ -35,9 +35,9 @@ from enum import StrEnum
 from ..model.containment import is_inference
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
+from ..model.places import places
 from ..model.tasktree import TaskTree
 from ..pddl.pairing import RoleKind, unit_roles
-from ..model.places import places
 from .foon_places import step_source
 
 __all__ = ["Executability", "Verdict", "needed", "schedule"]

@@ -48,9 +48,9 @@ from enum import StrEnum
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
+from ..model.places import listed, places
 from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
-from ..model.places import listed, places
 from .physical_replay import replay
 
 __all__ = ["HolderEvidence", "InferredTrace", "physical_trace", "replay_note"]
