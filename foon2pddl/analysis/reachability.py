@@ -1,9 +1,8 @@
 """Complete solvability: which nodes a kitchen can make, by an AND/OR fixpoint.
 
-A unit fires when all its inputs are available; its outputs become available.
-Each unit keeps a counter of inputs still missing; a node becoming available
-decrements the counters of its consumers, and a unit whose counter reaches 0
-fires. Every node and unit is handled once: O(nodes + sum of unit sizes).
+A unit fires when all its inputs are available; its outputs become available
+(the counter fixpoint of `fixpoint.fire`). Every node and unit is handled once:
+O(nodes + sum of unit sizes).
 
 The fixpoint runs in rounds (round 0 = the kitchen; a unit fires in round
 1 + the latest round of its inputs) and, within a round, in the units' content
@@ -16,13 +15,18 @@ fewest sequential rounds that can make it.
 from __future__ import annotations
 
 import weakref
+from collections import deque
 from collections.abc import Container, Iterable, Sequence
 from dataclasses import dataclass
+from functools import partial
+from itertools import chain, repeat
 
 from ..model.foon import Foon, ObjectNode
+from .fixpoint import UNREACHED, fire
 from .index import FoonIndex, index_of
 
-UNREACHED = -1
+#: Runs an iterator to its end, keeping nothing.
+drain = partial(deque, maxlen=0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -128,27 +132,12 @@ def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
     for k in kitchen_ids:
         node_round[k] = 0
     achiever = [-1] * len(ix.nodes)
+    rounds = fire(ready, missing, ix.outputs, ix.consumers, node_round, achiever, ix.rank)
     unit_round = [UNREACHED] * len(inputs)
-    rank, consumers, outputs = ix.rank, ix.consumers, ix.outputs
-    fired: list[int] = []
-    rnd = 0
-    while ready:
-        rnd += 1
-        ready.sort(key=rank.__getitem__)
-        nxt: list[int] = []
-        for u in ready:
-            unit_round[u] = rnd
-            fired.append(u)
-            for n in outputs[u]:
-                if node_round[n] == UNREACHED:
-                    node_round[n] = rnd
-                    achiever[n] = u
-                    for c in consumers[n]:
-                        missing[c] -= 1
-                        if missing[c] == 0:
-                            nxt.append(c)
-        ready = nxt
-    return Reachability(foon, ix, kitchen, tuple(node_round), tuple(achiever), tuple(fired), tuple(unit_round),
+    for rnd, now in enumerate(rounds, start=1):
+        drain(map(unit_round.__setitem__, now, repeat(rnd)))  # a C-level loop
+    fired = tuple(chain.from_iterable(rounds))
+    return Reachability(foon, ix, kitchen, tuple(node_round), tuple(achiever), fired, tuple(unit_round),
                         scope)
 
 

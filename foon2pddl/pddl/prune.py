@@ -21,7 +21,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import replace
+from itertools import chain
 
+from ..analysis.fixpoint import fire
 from ..analysis.reachability import UNREACHED, reachable
 from ..model.foon import Foon, ObjectNode
 from .task import Atom, PlanningTask
@@ -97,25 +99,28 @@ def prune_task(task: PlanningTask) -> PlanningTask:
     if any(a.params for a in task.actions):
         return task
     actions = task.actions
-    # Forward: delete-relaxed reachability with a missing-precondition counter per action.
-    missing = [len(set(a.pre)) for a in actions]
-    waiting: dict[Atom, list[int]] = {}
-    for i, a in enumerate(actions):
-        for atom in set(a.pre):
-            waiting.setdefault(atom, []).append(i)
-    applicable: set[int] = {i for i, m in enumerate(missing) if m == 0}
-    queue = list(task.init) + [x for i in sorted(applicable) for x in actions[i].add]
-    reached: set[Atom] = set()
-    while queue:
-        atom = queue.pop()
-        if atom in reached:
-            continue
-        reached.add(atom)
-        for i in waiting.get(atom, ()):
-            missing[i] -= 1
-            if missing[i] == 0:
-                applicable.add(i)
-                queue.extend(actions[i].add)
+    # Forward: delete-relaxed reachability, the counter fixpoint (`fixpoint.fire`) over dense atom ids
+    # (an atom is hashed once per occurrence; the fixpoint then indexes lists).
+    ids: dict[Atom, int] = {}
+    number = ids.setdefault
+    init = {number(a, len(ids)) for a in task.init}
+    pres = [{number(p, len(ids)) for p in a.pre} for a in actions]
+    adds = [[number(x, len(ids)) for x in a.add] for a in actions]
+    consumers: list[list[int]] = [[] for _ in range(len(ids))]
+    missing: list[int] = []
+    for i, pre in enumerate(pres):
+        left = 0
+        for p in pre:
+            if p not in init:
+                consumers[p].append(i)
+                left += 1
+        missing.append(left)
+    ready = [i for i, m in enumerate(missing) if not m]
+    node_round = [UNREACHED] * len(ids)
+    for i in init:
+        node_round[i] = 0
+    rounds = fire(ready, missing, adds, consumers, node_round, [-1] * len(ids))
+    applicable = set(chain.from_iterable(rounds))
     # Backward: atoms needed for the goal, over the applicable actions that add them.
     adders: dict[Atom, list[int]] = {}
     for i in applicable:

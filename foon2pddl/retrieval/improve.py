@@ -3,7 +3,8 @@
 Works on a `lmcut.Cone` (dense local ids). For each unit x of the incumbent
 (dearest first, then content order), x is forbidden, the other units of the
 incumbent cost nothing, and a relaxed plan for the goal is extracted from the
-h_add best supporters (Dijkstra, stopped at the first candidate settled);
+h_add best supporters (`analysis.fixpoint.cheapest`, stopped at the first
+candidate settled);
 units the plan does not need are dropped (`prune`). A cheaper plan replaces
 the incumbent and the pass starts again. Every plan is executable: a node's
 best supporter fired after all its inputs were settled, so supporters never
@@ -17,11 +18,12 @@ Tie-breaks: heap order (cost, node id), consumers in the cone's unit order
 
 from __future__ import annotations
 
-import heapq
 import math
 import time
 from collections.abc import Sequence
+from itertools import chain
 
+from ..analysis.fixpoint import UNREACHED, cheapest, fire
 from .lmcut import Cone
 
 INF = math.inf
@@ -29,41 +31,8 @@ INF = math.inf
 
 def relaxed_plan(cone: Cone, rc: Sequence[float], goals: set[int]) -> tuple[int, list[int]] | None:
     """(candidate reached, units of a relaxed plan for it) by h_add best supporters; None if unreachable."""
-    deps, outs, consumers = cone.deps, cone.outs, cone.consumers
-    cost = [INF] * len(cone.node_ids)
-    sup = [-1] * len(cone.node_ids)
-    acc = [0.0] * len(deps)
-    missing = list(cone.dep_counts)
-    heap: list[tuple[float, int]] = []
-    push, pop = heapq.heappush, heapq.heappop
-
-    for u in cone.seeds:
-        uc = rc[u]
-        if uc < INF:
-            for o in outs[u]:
-                if uc < cost[o]:
-                    cost[o] = uc
-                    sup[o] = u
-                    push(heap, (uc, o))
-    settled = bytearray(len(cone.node_ids))
-    while heap:
-        c, n = pop(heap)
-        if settled[n] or c > cost[n]:
-            continue
-        settled[n] = 1
-        if n in goals:
-            return n, _extract(cone, sup, n)
-        for u in consumers[n]:
-            acc[u] += c
-            missing[u] -= 1
-            if not missing[u] and rc[u] < INF:
-                uc = acc[u] + rc[u]
-                for o in outs[u]:
-                    if not settled[o] and uc < cost[o]:
-                        cost[o] = uc
-                        sup[o] = u
-                        push(heap, (uc, o))
-    return None
+    _, _, sup, goal = cheapest(cone.seeds, cone.dep_counts, cone.outs, cone.consumers, rc, True, goals)
+    return None if goal < 0 else (goal, _extract(cone, sup, goal))
 
 
 def _extract(cone: Cone, sup: list[int], goal: int) -> list[int]:
@@ -79,49 +48,37 @@ def _extract(cone: Cone, sup: list[int], goal: int) -> list[int]:
     return plan
 
 
-def _fire(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]], counts: dict[int, int],
+def _fire(cone: Cone, goal: int, users: Sequence[list[int]], counts: dict[int, int], dropped: dict[int, int],
           seeds: list[int], stop_at_goal: bool) -> list[int] | None:
-    """The units of `members` that fire from the kitchen, in firing order (the `seeds` in their order, then
-    breadth-first), if `goal` gets made; else None. With `stop_at_goal` it returns as soon as the goal is
-    made (the order then stops there). `users`: node -> the units (a superset of `members`) that consume
-    it; `counts`: their input counts; `seeds`: those without inputs. O(members + their edges)."""
-    outs = cone.outs
+    """The units of `counts` not `dropped` that fire from the kitchen, in firing order (the `seeds` in their
+    order, then breadth-first), if `goal` gets made; else None. With `stop_at_goal` it stops as soon as the
+    goal is made (the order then stops there). `users`: node -> the units (all in `counts`) that consume it;
+    `counts`: their input counts; `dropped`: unit -> -1 for the units left out; `seeds`: those without
+    inputs. O(units + their edges), plus marks as large as the cone (C loops)."""
     missing = counts.copy()
-    ready = [u for u in seeds if u in members]
-    have: set[int] = set()
-    k = 0
-    while k < len(ready):
-        u = ready[k]
-        k += 1
-        for o in outs[u]:
-            if o not in have:
-                if stop_at_goal and o == goal:
-                    return ready
-                have.add(o)
-                for v in users.get(o, ()):
-                    if v in members:
-                        missing[v] -= 1
-                        if not missing[v]:
-                            ready.append(v)
-    return ready if goal in have else None
+    missing.update(dropped)
+    made = [UNREACHED] * len(cone.node_ids)
+    rounds = fire([u for u in seeds if u not in dropped], missing, cone.outs, users, made, [-1] * len(made),
+                  stop=goal if stop_at_goal else -1)
+    return list(chain.from_iterable(rounds)) if made[goal] != UNREACHED else None
 
 
 def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> list[int]:
     """Drop units the goal does not need (dearest, then last in unit order, first); firing order.
 
-    One fixpoint per unit tried, O(plan size x plan edges)."""
-    users: dict[int, list[int]] = {}
+    One fixpoint per unit tried, O(plan size x (plan edges + cone nodes)), the cone's part in C loops."""
+    users: list[list[int]] = [[] for _ in cone.node_ids]
     for u in dict.fromkeys(units):
         for i in cone.deps[u]:
-            users.setdefault(i, []).append(u)
-    keep = set(units)
-    counts = {u: cone.dep_counts[u] for u in keep}
-    seeds = sorted(u for u in keep if not counts[u])
+            users[i].append(u)
+    counts = {u: cone.dep_counts[u] for u in units}
+    seeds = sorted(u for u in counts if not counts[u])
+    dropped: dict[int, int] = {}
     for u in sorted(units, key=lambda u: (-weight[u], -u)):
-        keep.discard(u)
-        if _fire(cone, keep, goal, users, counts, seeds, True) is None:
-            keep.add(u)
-    order = _fire(cone, keep, goal, users, counts, seeds, False)
+        dropped[u] = -1
+        if _fire(cone, goal, users, counts, dropped, seeds, True) is None:
+            del dropped[u]
+    order = _fire(cone, goal, users, counts, dropped, seeds, False)
     if order is None:  # `units` must make the goal; never silently return a broken plan
         raise ValueError("prune: the units do not make the goal")
     return order

@@ -40,6 +40,7 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass
 from itertools import compress
 
+from ..analysis.fixpoint import cheapest
 from ..analysis.reachability import walk_back
 
 INF = math.inf
@@ -123,37 +124,8 @@ class Cone:
     # -- h_max ------------------------------------------------------------------------------------
 
     def _hmax(self, rc: list[float]) -> tuple[list[float], list[float]]:
-        """Node costs and unit costs (max over inputs) by Dijkstra over the cone.
-
-        A node is pushed only when its cost strictly drops, so a popped entry dearer
-        than the node's cost is stale (lazy deletion: no settled set).
-        """
-        outs, consumers = self.outs, self.consumers
-        push, pop = heapq.heappush, heapq.heappop
-        cost = [INF] * len(self.node_ids)
-        ucost = [INF] * len(self.unit_ids)
-        heap: list[tuple[float, int]] = []
-        for u in self.seeds:
-            ucost[u] = 0.0
-            c = rc[u]
-            for o in outs[u]:
-                if c < cost[o]:
-                    cost[o] = c
-                    push(heap, (c, o))
-        missing = list(self.dep_counts)
-        while heap:
-            c, n = pop(heap)
-            if c > cost[n]:
-                continue
-            for u in consumers[n]:
-                missing[u] -= 1
-                if not missing[u]:
-                    ucost[u] = c
-                    uc = c + rc[u]
-                    for o in outs[u]:
-                        if uc < cost[o]:
-                            cost[o] = uc
-                            push(heap, (uc, o))
+        """Node costs and unit costs (max over inputs) by Dijkstra over the cone (`fixpoint.cheapest`)."""
+        cost, ucost, _, _ = cheapest(self.seeds, self.dep_counts, self.outs, self.consumers, rc, False)
         return cost, ucost
 
     def _decrease(self, rc: list[float], cost: list[float], ucost: list[float], pcf: list[int],
