@@ -550,16 +550,34 @@ def test_a_cycle_points_to_check(tmp_path):
 # -- 14. steps in a cook's words ------------------------------------------------------------------------
 
 
-def test_recipe_format_says_what_moves_into_what():
-    r = run("plan", "--goal", "lemonade", "--network", "gen", "--format", "recipe")
+def test_plan_prints_steps_in_recipe_words_by_default():
+    r = run("plan", "--goal", "lemonade", "--network", "gen")
     assert r.exit_code == 0
     lines = r.stdout.splitlines()
     assert "pour sugar (granulated) into the pitcher (contains {lime juice})" in lines[7]
     assert "pour lime juice from the juicer into the pitcher (empty)" in lines[6]
-    assert lines[4].endswith("cut lime (on [cutting board], whole), with the knife, on the cutting board "
-                             "(contains {lime})")
-    steps = run("plan", "--goal", "lemonade", "--network", "gen").stdout.splitlines()
-    assert lines[:2] == steps[:2] and len(lines) == len(steps)  # same tree, same numbering
+    assert lines[4].endswith("cut lime (whole), with the knife, on the cutting board")  # the place said once
+    assert run("plan", "--goal", "lemonade", "--network", "gen", "--format", "recipe").stdout == r.stdout
+    # the FOON node form stays one option away, same tree, same numbering
+    steps = run("plan", "--goal", "lemonade", "--network", "gen", "--format", "steps").stdout.splitlines()
+    assert lines[:2] == steps[:2] and len(lines) == len(steps)
+    assert steps[7].startswith("6. pour pitcher (contains {lime juice}), sugar (granulated) -> ")
+
+
+def test_retrieve_prints_steps_in_recipe_words_by_default():
+    r = run("retrieve", "--goal", "guacamole")
+    assert r.exit_code == 0
+    assert "3. scoop avocado (halved) from the cutting board into the bowl (empty), with the spoon" in r.stdout
+    assert " -> " not in r.stdout
+    assert " -> " in run("retrieve", "--goal", "guacamole", "--format", "steps").stdout
+
+
+def test_a_plans_physical_objects_follow_its_recipe_steps():
+    r = run("plan", "--goal", "guacamole", "--encoding", "instances")
+    assert r.exit_code == 0
+    out = r.stdout
+    assert "physical objects, step by step (instances encoding):" in out
+    assert out.index("20. mix bowl (contains") < out.index("physical objects, step by step")
 
 
 def test_recipe_text_on_every_unit_of_the_corpus_names_its_motion_and_movers(universal):

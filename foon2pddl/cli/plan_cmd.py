@@ -11,7 +11,7 @@ import click
 from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
-from ..io.tree_formats import FORMATS, render_tree
+from ..io.tree_formats import DEFAULT_FORMAT, FORMATS, STEP_FORMATS, render_tree
 from ..pddl.compile import ENCODINGS
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
@@ -109,8 +109,9 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @constraints_options
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
-@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
-              help="How to print the task tree; for a batch, the table (text, csv, jsonl) or the tree files' format.")
+@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default=DEFAULT_FORMAT, show_default=True,
+              help="How to print the task tree (recipe: steps in a cook's words; steps: each unit's FOON "
+                   "nodes); for a batch, the table (text, csv, jsonl) or the tree files' format.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
                    "a directory receiving one tree file per solved goal; with --skills, a directory receiving "
@@ -150,13 +151,15 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             raise UsageError("constraints plan one goal at a time (not a batch)")
         _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
         return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
-                          fmt if fmt in TREE_EXTENSIONS else "steps", output, planner=planner,
+                          fmt if fmt in TREE_EXTENSIONS else DEFAULT_FORMAT, output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
                           instances=checked_instances(instances, encoding, view.foon))
     if skills:
         source = click.get_current_context().get_parameter_source("encoding")
         encoding = skill_encoding(encoding, source is not click.core.ParameterSource.DEFAULT)
+        if click.get_current_context().get_parameter_source("fmt") is click.core.ParameterSource.DEFAULT:
+            fmt = "steps"  # a skill plan's own default: each FOON unit with its skill calls (docs/skills.md)
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
@@ -179,7 +182,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
         view = outcome.compiled.view
-        if fmt == "steps" and view is not None and outcome.trace is not None:
+        if fmt in STEP_FORMATS and view is not None and outcome.trace is not None:
             data += view.text(outcome.task, outcome.trace)
     if fmt == "json":
         data = outcome_json(outcome, timings, data)

@@ -9,6 +9,7 @@ import click
 from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
+from ..io.tree_formats import DEFAULT_FORMAT
 from ..model.containment import count_inference, inferred_nodes
 from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
@@ -67,8 +68,9 @@ class Limit(click.ParamType):
               help="; ".join(f"{m.name}: {m.description}" + (" (needs --rates)" if m.needs_rates else "")
                              for m in METHODS.values()) + ".")
 @rates_option
-@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default="steps", show_default=True,
-              help="How to print the task tree (svg needs Graphviz); for a batch, the table (text, csv, jsonl) "
+@click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default=DEFAULT_FORMAT, show_default=True,
+              help="How to print the task tree: recipe, steps in a cook's words; steps, each unit's FOON nodes "
+                   "(svg needs Graphviz); for a batch, the table (text, csv, jsonl) "
                    "or the format of the tree files in -o DIR.")
 @click.option("--budget", type=Limit(float, "SECONDS|none"), default=str(DEFAULT_TIME_LIMIT), show_default=True,
               help="optimal/weighted: seconds per goal before returning the best tree found and its proven "
@@ -177,7 +179,7 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
     rows = [r.as_dict() for r in found]
     table_fmt = fmt if fmt in TABLE_FORMATS else "text"
     if output is not None:
-        tree_fmt = fmt if fmt in FORMATS else "steps"
+        tree_fmt = fmt if fmt in FORMATS else DEFAULT_FORMAT
         texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
         write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
     finish(rows, table_fmt, f"{method}, containment {containment}")

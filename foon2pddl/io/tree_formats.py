@@ -1,4 +1,5 @@
-"""Task tree outputs: numbered steps, FOON text, JSON, Graphviz DOT and SVG.
+"""Task tree outputs: steps in a cook's words (the default), numbered FOON steps, FOON text, JSON,
+Graphviz DOT and SVG.
 
 Every format is deterministic (units in the tree's order, nodes numbered in
 sorted order). Diagrams use the public FOON viewer's colours: object nodes
@@ -21,7 +22,12 @@ from ..model.tasktree import TaskTree
 from .jsonio import node_to_dict
 from .writer import write_units
 
-FORMATS = ("steps", "recipe", "foon", "json", "dot", "svg")
+FORMATS = ("recipe", "steps", "foon", "json", "dot", "svg")
+#: What `retrieve` and `plan` print: steps in a cook's words (what moves, from where, into what, with
+#: which tool); `steps` lists each unit's FOON nodes, `foon` and `json` the units themselves.
+DEFAULT_FORMAT = "recipe"
+#: The formats that print numbered steps (a plan's physical objects follow them).
+STEP_FORMATS = ("recipe", "steps")
 
 INPUT_COLOUR = "#8fd18f"    # green
 OUTPUT_COLOUR = "#8fb8ff"   # blue
@@ -120,14 +126,21 @@ def _unplaced(node: ObjectNode) -> str:
     return node.label + (f" ({', '.join(states)})" if states else "")
 
 
+def _without_contents(node: ObjectNode, contents: set[str]) -> str:
+    """The node in words without an ingredient set listing only `contents` (said already)."""
+    states = [s.describe() for s in node.states if not (s.ingredients and set(s.ingredients) <= contents)]
+    return node.label + (f" ({', '.join(states)})" if states else "")
+
+
 def recipe_text(unit: FunctionalUnit) -> str:
     """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
 
     `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
     pitcher first as if it were poured. An input moves when its output of the same label is in a
     place state (`in [pitcher]`) other than its own; the containers named so, and the contents of
-    moved objects, are not tools. Without a move: what changes, then the tools (`cut lime (whole)
-    with the knife, on the cutting board`). Labels no input has are what the step makes.
+    moved objects, are not tools. Without a move: what changes, then the tools and the place, said
+    once (`cut lime (whole), with the knife, on the cutting board`). Labels no input has are what the
+    step makes.
     """
     new = {o.label: o for o in unit.outputs if o not in unit.inputs}
     by_label = {i.label: i for i in unit.inputs}
@@ -146,16 +159,19 @@ def recipe_text(unit: FunctionalUnit) -> str:
         changed = ([i for i in unit.inputs if i.label in new and i.label not in receivers]
                    or [i for i in unit.inputs if i.label in new] or list(unit.inputs))
         named = {i.label for i in changed}
-        text = f"{unit.motion.label} " + ", ".join(i.describe() for i in changed)
     holders = {i.label for i, _, _ in moves} | named
     rest = [i for i in unit.inputs if i.label not in named
             and not any(s.label in PLACE_WORDS and s.related in holders for s in i.states)]
     places = [i for i in rest if any(_place(n) and _place(n)[1] == i.label for n in unit.inputs)]
     tools = [i for i in rest if i not in places]
+    if not moves:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
+        at = {p.label for p in places}
+        text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i) or ("", ""))[1] in at
+                                                   else i.describe() for i in changed)
     if tools:
         text += ", with the " + ", ".join(t.describe() for t in tools)
     if places:
-        text += ", on the " + ", ".join(p.describe() for p in places)
+        text += ", on the " + ", ".join(_without_contents(p, holders) for p in places)
     made = [o for label, o in sorted(new.items()) if label not in by_label]
     if made:
         text += ", making " + ", ".join(_unplaced(o) + (f" {p[0]} the {p[1]}" if (p := _place(o)) else "")
