@@ -64,16 +64,71 @@ def test_output_dir_holds_the_domain_and_one_problem_per_step_that_other_parsers
         assert PDDLReader().parse_problem(str(out / "domain.pddl"), str(step)) is not None
 
 
-def test_a_robot_without_pour_gets_no_pour_or_the_blocking_motion_like_native_retrieval():
-    native = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole", "--without-motion", "pour"])
-    result = run("--goal", "guacamole", "--skills", "--without-skill", "pour", "--format", "json")
-    if native.exit_code == 0:
-        assert result.exit_code == 0, result.output
-        data = json.loads(result.stdout)
-        assert not [s for s in data["skills"] if s["skill"] == "pour"]
-        assert not [s for s in data["steps"] if s["skill"] == "pour"]
-    else:
-        assert result.exit_code == 1 and "pour" in result.stderr
+def _pourless(paths, goal, *network):
+    """(native retrieval under --without-motion pour, plan --skills --without-skill pour --format json)."""
+    native = CliRunner().invoke(main, ["retrieve", *paths, "--goal", goal, *network, "--without-motion", "pour"])
+    return native, run(*paths, "--goal", goal, *network, "--skills", "--without-skill", "pour", "--format", "json")
+
+
+def _blocking(text):
+    return re.search(r"every way to make '[^']+' needs `without-motion pour`", text)
+
+
+@pytest.mark.parametrize(("goal", "network"), [("whipped cream", ()), ("guacamole", ()),
+                                               ("lemonade", ("--network", "exp"))])
+def test_a_robot_without_pour_gets_the_blocking_motion_native_retrieval_names(goal, network):
+    native, result = _pourless((), goal, *network)
+    assert native.exit_code == 1 and _blocking(native.stderr), native.output  # every example dish pours
+    assert result.exit_code == 1 and result.stdout == ""
+    assert _blocking(result.stderr).group() == _blocking(native.stderr).group()
+
+
+MELT = """O	bowl	0
+S	empty
+O	water	1
+S	in	[cup]
+M	pour
+O	bowl	0
+S	contains	{water}
+O	water	1
+S	in	[bowl]
+//
+O	bowl	0
+S	empty
+O	ice	1
+S	frozen
+M	pick-and-place
+O	bowl	0
+S	contains	{ice}
+O	ice	1
+S	in	[bowl]
+S	frozen
+//
+O	bowl	0
+S	contains	{ice}
+O	ice	1
+S	in	[bowl]
+S	frozen
+M	sit
+O	bowl	0
+S	contains	{water}
+O	water	1
+S	in	[bowl]
+//
+"""
+
+
+def test_a_robot_without_pour_gets_a_plan_without_pour_where_native_retrieval_finds_one(tmp_path):
+    net = tmp_path / "melt.txt"
+    net.write_text(MELT)
+    native, result = _pourless((str(net),), "water (in [bowl])")
+    assert native.exit_code == 0 and "pour" not in native.stdout and "sit " in native.stdout
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["ok"] and [s["motion"] for s in data["steps"]] == ["pick-and-place", "sit"]
+    assert not [s for s in data["skills"] if s["skill"] == "pour"] and data["skills"]
+    with_pour = json.loads(run(str(net), "--goal", "water (in [bowl])", "--skills", "--format", "json").stdout)
+    assert "pour" in [s["skill"] for s in with_pour["skills"]]  # the ban, not the network, removes the pour
 
 
 def test_without_skills_in_a_constraints_file_ban_the_motions_of_plain_plans(tmp_path):
