@@ -1,7 +1,7 @@
 """Planner compatibility: which planners read and solve which encoding's PDDL (the table in docs/planning.md).
 
     python -m bench.planner_compat [--planners fd up:pyperplan ...] [--encodings tree ...] [--goals G ...]
-                                   [--time-limit 60] [--cmd NAME=TEMPLATE ...] [--markdown]
+                                   [--time-limit 60] [--cmd NAME=TEMPLATE ...] [--untyped]
 
 For every encoding and goal (default: the dishes of `domains/`, on the embedded example network and
 kitchen; `lemonade` too for `gen-lifted`, whose lifted actions stand a lime in for the recipe's lemon),
@@ -31,6 +31,7 @@ from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
 from foon2pddl.pddl.compile import ENCODINGS, compile_task
 from foon2pddl.pddl.examples import GOALS, LEVEL
 from foon2pddl.pddl.render import render
+from foon2pddl.pddl.untyped import untyped
 from foon2pddl.planners import external, fd, up_engine
 from foon2pddl.planners.result import PlanResult
 
@@ -55,15 +56,15 @@ class Cell:
         return f"{self.parsed}/{self.tried}", f"{self.solved}/{self.tried}", notes
 
 
-def tasks(encodings, goals) -> list[tuple[str, str, str, str]]:
-    """(encoding, goal, domain text, problem text) of every task, as `compile` writes them."""
+def tasks(encodings, goals, flat: bool = False) -> list[tuple[str, str, str, str]]:
+    """(encoding, goal, domain text, problem text) of every task, as `compile` writes them (`flat`: `--untyped`)."""
     net = load_network([])
     foon, kitchen = net.at(LEVEL), load_kitchen(None, net, LEVEL)
     out = []
     for enc in encodings:
         for goal in (*goals, *EXTRA_GOALS.get(enc, ())):
             task = compile_task(foon, kitchen, load_goal(goal, None, foon), enc, LEVEL)
-            out.append((enc, goal, *render(task)))
+            out.append((enc, goal, *render(untyped(task) if flat else task)))
     return out
 
 
@@ -102,9 +103,10 @@ def short(message: str) -> str:
     return (text[:90] + "...") if len(text) > 93 else text
 
 
-def measure(planners, commands, encodings, goals, limit: float, log=sys.stderr) -> dict[tuple[str, str], Cell]:
+def measure(planners, commands, encodings, goals, limit: float, log=sys.stderr, flat: bool = False
+            ) -> dict[tuple[str, str], Cell]:
     cells = {(p, e): Cell() for p in planners for e in encodings}
-    for enc, goal, domain, problem in tasks(encodings, goals):
+    for enc, goal, domain, problem in tasks(encodings, goals, flat):
         for p in planners:
             cell = cells[(p, enc)]
             cell.tried += 1
@@ -121,13 +123,13 @@ def measure(planners, commands, encodings, goals, limit: float, log=sys.stderr) 
     return cells
 
 
-def table(cells, planners, encodings, limit: float) -> str:
-    """The markdown table: one row per planner and encoding."""
+def table(cells, planners, encodings, limit: float, mark: str = "") -> str:
+    """The markdown table: one row per planner and encoding (`mark` after the encoding's name)."""
     lines = ["| planner | encoding | parses | solves | notes |", "|---|---|---|---|---|"]
     for p in planners:
         for e in encodings:
             parsed, solved, notes = cells[(p, e)].text()
-            lines.append(f"| {p} | {e} | {parsed} | {solved} | {notes} |")
+            lines.append(f"| {p} | {e}{mark} | {parsed} | {solved} | {notes} |")
     day = datetime.datetime.now(datetime.UTC).date().isoformat()
     return "\n".join(lines) + f"\n\n({day}, {limit:g} s per task; planners available: {', '.join(planners)})\n"
 
@@ -145,6 +147,7 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--encodings", nargs="*", default=list(ENCODINGS), choices=list(ENCODINGS))
     ap.add_argument("--goals", nargs="*", default=list(GOALS))
     ap.add_argument("--time-limit", type=float, default=60.0)
+    ap.add_argument("--untyped", action="store_true", help="compile --untyped: types as static predicates")
     ap.add_argument("--cmd", action="append", default=[], metavar="NAME=TEMPLATE",
                     help="a planner command (as plan --planner-cmd), tried as planner NAME")
     args = ap.parse_args(argv)
@@ -153,8 +156,8 @@ def main(argv: list[str] | None = None) -> None:
     planners += list(commands)
     if missing:
         print(f"not installed here: {', '.join(missing)}", file=sys.stderr)
-    cells = measure(planners, commands, args.encodings, args.goals, args.time_limit)
-    print(table(cells, planners, args.encodings, args.time_limit))
+    cells = measure(planners, commands, args.encodings, args.goals, args.time_limit, flat=args.untyped)
+    print(table(cells, planners, args.encodings, args.time_limit, " (--untyped)" if args.untyped else ""))
 
 
 if __name__ == "__main__":
