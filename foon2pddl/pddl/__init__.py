@@ -4,4 +4,4 @@
 __all__ = ["compile", "constraints", "costs", "encode_compat", "encode_instances", "encode_lifted",
            "encode_relational", "encode_state", "encode_tree", "encoding", "examples", "holders", "instance_counts",
            "instance_replay", "lifted_atoms", "names", "pairing", "prune", "registry", "relational_replay", "render",
-           "task", "trace_view", "up_problem"]
+           "shared", "task", "trace_view", "untyped", "up_problem"]

@@ -14,4 +14,4 @@ from .table import MotionTable, read_table, shipped_table
 
 __all__ = ["MacroSkills", "MotionTable", "Robot", "SkillCall", "SkillDomain", "SkillPlan", "StepStatus",
            "read_domain", "read_table", "robot_constraints", "shipped_domain", "shipped_table", "decompose", "domain",
-           "fd_micro", "micro", "profile", "replay", "report", "run", "sexpr", "source", "table"]
+           "fd_micro", "micro", "profile", "recipe", "replay", "report", "run", "sexpr", "source", "table"]
