@@ -84,24 +84,6 @@ def test_fire_matches_synchronous_rounds(graph, data):
             assert all(node_round[j] < node_round[i] for j in units[achiever[i]][0])
 
 
-@settings(max_examples=200, deadline=None)
-@given(graphs(), st.data())
-def test_fire_stops_once_the_stop_node_is_made(graph, data):
-    n, units = graph
-    stop = data.draw(st.integers(0, n - 1), label="stop")
-    missing = [len(ins) for ins, _ in units]
-    node_round, achiever = [UNREACHED] * n, [-1] * n
-    fire([u for u, m in enumerate(missing) if not m], missing, [o for _, o in units], consumers_of(n, units),
-         node_round, achiever, stop=stop)
-    scope = set(range(len(units)))
-    _, want_round, _ = synchronous_rounds(n, units, frozenset(), scope, list(range(len(units))))
-    assert (node_round[stop] != UNREACHED) == (want_round[stop] != UNREACHED)
-    for i in range(n):  # what it made before stopping, it made in the right round
-        assert node_round[i] in (UNREACHED, want_round[i])
-    if node_round[stop] != UNREACHED:
-        assert max(node_round) == node_round[stop]  # nothing of a later round fired
-
-
 def bellman_ford(n, units, rc, additive):
     """Oracle: node costs by relaxing every unit until nothing changes (costs only decrease)."""
     cost = [INF] * n

@@ -10,9 +10,8 @@ plan's cone) and read the answers; the loops are here:
 * `fire`, unweighted: which units fire and which nodes get made, in rounds
   (round 1 fires the units ready at the start; a unit fires in the round after
   the one that made its last missing input), with each node's first achiever.
-  Used by `reachability.reachable` (rounds sorted by content rank), the STRIPS
-  relaxed reachability of `pddl.prune.prune_task`, and the plan-pruning test of
-  `retrieval.improve` (discovery order, stopping once the goal is made).
+  Used by `reachability.reachable` (rounds sorted by content rank) and the STRIPS
+  relaxed reachability of `pddl.prune.prune_task` (discovery order).
 * `cheapest`, costed: Knuth's generalization of Dijkstra's algorithm (superior
   functions) over the same counters: a unit's cost is its own `rc` plus the
   max (h_max) or the sum (h_add) of its inputs' costs, a node's cost the
@@ -24,7 +23,10 @@ loop for both would put a heap, and its log factor, under the unweighted
 callers, whose answers (firing order, first achievers) are defined by rounds.
 The demand-driven counters of `retrieval.greedy` (counters only for the units
 its queue looks at, updated as a side effect of its search) are not a forward
-fixpoint and stay there.
+fixpoint and stay there; so does the plan-pruning test of `retrieval.improve`,
+run once per unit of a plan inside a much larger cone, whose marks are sparse
+sets over the plan where `fire`'s are arrays over all nodes (measured slower
+there).
 """
 
 from __future__ import annotations
@@ -41,8 +43,8 @@ UNREACHED = -1
 
 def fire(ready: list[int], missing: list[int] | dict[int, int], outputs: Sequence[Sequence[int]],
          consumers: Sequence[Sequence[int]], node_round: list[int], achiever: list[int],
-         rank: Sequence[int] | None = None, stop: int = -1) -> list[list[int]]:
-    """Fire units forward from `ready` until nothing more fires (or `stop` is made); the rounds, in firing order.
+         rank: Sequence[int] | None = None) -> list[list[int]]:
+    """Fire units forward from `ready` until nothing more fires; the rounds, in firing order.
 
     Nodes and units are ids: `outputs[u]` the nodes unit u makes, `consumers[n]` the units with input n
     (each once per counted input). `ready`: the units whose inputs are all available (round 1; the list
@@ -50,8 +52,7 @@ def fire(ready: list[int], missing: list[int] | dict[int, int], outputs: Sequenc
     whose count starts below 0 never fires (a unit outside the scope). `node_round[n]`: `UNREACHED` for
     a node not available yet, 0 for one available beforehand (the kitchen, the initial state); set in
     place to the round that makes it, and `achiever[n]` to the unit that first made it. `rank[u]`: with
-    it, each round fires in increasing rank, else in the order its units became ready. `stop`: return
-    as soon as a unit makes this node.
+    it, each round fires in increasing rank, else in the order its units became ready.
 
     Tie-breaks: a node's first achiever is the first unit in firing order that outputs it, so following
     first achievers back never meets a cycle and a node's round is the fewest sequential rounds that make
@@ -70,8 +71,6 @@ def fire(ready: list[int], missing: list[int] | dict[int, int], outputs: Sequenc
                 if node_round[n] == UNREACHED:
                     node_round[n] = rnd
                     achiever[n] = u
-                    if n == stop:
-                        return rounds
                     for c in consumers[n]:
                         missing[c] -= 1
                         if not missing[c]:

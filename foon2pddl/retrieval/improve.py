@@ -21,9 +21,8 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Sequence
-from itertools import chain
 
-from ..analysis.fixpoint import UNREACHED, cheapest, fire
+from ..analysis.fixpoint import cheapest
 from .lmcut import Cone
 
 INF = math.inf
@@ -48,37 +47,49 @@ def _extract(cone: Cone, sup: list[int], goal: int) -> list[int]:
     return plan
 
 
-def _fire(cone: Cone, goal: int, users: Sequence[list[int]], counts: dict[int, int], dropped: dict[int, int],
+def _fire(cone: Cone, members: set[int], goal: int, users: dict[int, list[int]], counts: dict[int, int],
           seeds: list[int], stop_at_goal: bool) -> list[int] | None:
-    """The units of `counts` not `dropped` that fire from the kitchen, in firing order (the `seeds` in their
-    order, then breadth-first), if `goal` gets made; else None. With `stop_at_goal` it stops as soon as the
-    goal is made (the order then stops there). `users`: node -> the units (all in `counts`) that consume it;
-    `counts`: their input counts; `dropped`: unit -> -1 for the units left out; `seeds`: those without
-    inputs. O(units + their edges), plus marks as large as the cone (C loops)."""
+    """The units of `members` that fire from the kitchen, in firing order (the `seeds` in their order, then
+    breadth-first), if `goal` gets made; else None. With `stop_at_goal` it returns as soon as the goal is
+    made (the order then stops there). `users`: node -> the units (a superset of `members`) that consume
+    it; `counts`: their input counts; `seeds`: those without inputs. O(members + their edges)."""
+    outs = cone.outs
     missing = counts.copy()
-    missing.update(dropped)
-    made = [UNREACHED] * len(cone.node_ids)
-    rounds = fire([u for u in seeds if u not in dropped], missing, cone.outs, users, made, [-1] * len(made),
-                  stop=goal if stop_at_goal else -1)
-    return list(chain.from_iterable(rounds)) if made[goal] != UNREACHED else None
+    ready = [u for u in seeds if u in members]
+    have: set[int] = set()
+    k = 0
+    while k < len(ready):
+        u = ready[k]
+        k += 1
+        for o in outs[u]:
+            if o not in have:
+                if stop_at_goal and o == goal:
+                    return ready
+                have.add(o)
+                for v in users.get(o, ()):
+                    if v in members:
+                        missing[v] -= 1
+                        if not missing[v]:
+                            ready.append(v)
+    return ready if goal in have else None
 
 
 def prune(cone: Cone, units: list[int], goal: int, weight: Sequence[float]) -> list[int]:
     """Drop units the goal does not need (dearest, then last in unit order, first); firing order.
 
-    One fixpoint per unit tried, O(plan size x (plan edges + cone nodes)), the cone's part in C loops."""
-    users: list[list[int]] = [[] for _ in cone.node_ids]
+    One fixpoint per unit tried, O(plan size x plan edges)."""
+    users: dict[int, list[int]] = {}
     for u in dict.fromkeys(units):
         for i in cone.deps[u]:
-            users[i].append(u)
-    counts = {u: cone.dep_counts[u] for u in units}
-    seeds = sorted(u for u in counts if not counts[u])
-    dropped: dict[int, int] = {}
+            users.setdefault(i, []).append(u)
+    keep = set(units)
+    counts = {u: cone.dep_counts[u] for u in keep}
+    seeds = sorted(u for u in keep if not counts[u])
     for u in sorted(units, key=lambda u: (-weight[u], -u)):
-        dropped[u] = -1
-        if _fire(cone, goal, users, counts, dropped, seeds, True) is None:
-            del dropped[u]
-    order = _fire(cone, goal, users, counts, dropped, seeds, False)
+        keep.discard(u)
+        if _fire(cone, keep, goal, users, counts, seeds, True) is None:
+            keep.add(u)
+    order = _fire(cone, keep, goal, users, counts, seeds, False)
     if order is None:  # `units` must make the goal; never silently return a broken plan
         raise ValueError("prune: the units do not make the goal")
     return order
