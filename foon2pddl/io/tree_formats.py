@@ -179,25 +179,25 @@ def recipe_text(unit: FunctionalUnit) -> str:
     return text
 
 
-def _recipe(tree: TaskTree, used: list[ObjectNode] | None) -> str:
-    """The steps in a cook's words (`recipe_text`), numbered as `steps` numbers them."""
+def _numbered(tree: TaskTree, used: list[ObjectNode] | None, say) -> str:
+    """The header, the kitchen nodes used, then each unit as `say` words it, numbered from 1."""
     lines = [_header(tree)]
     if used is not None:
         lines.append("from the kitchen: " + ("; ".join(n.describe() for n in used) or "nothing"))
     if not tree.units:
         lines.append("nothing to do: the goal is already available")
-    lines += [f"{i}. {recipe_text(u)}" for i, u in enumerate(tree.units, start=1)]
+    lines += [f"{i}. {say(u)}" for i, u in enumerate(tree.units, start=1)]
     return "\n".join(lines) + "\n"
+
+
+def _recipe(tree: TaskTree, used: list[ObjectNode] | None) -> str:
+    """The steps in a cook's words (`recipe_text`), numbered as `steps` numbers them."""
+    return _numbered(tree, used, recipe_text)
 
 
 def _steps(tree: TaskTree, used: list[ObjectNode] | None) -> str:
-    lines = [_header(tree)]
-    if used is not None:
-        lines.append("from the kitchen: " + ("; ".join(n.describe() for n in used) or "nothing"))
-    if not tree.units:
-        lines.append("nothing to do: the goal is already available")
-    lines += [f"{i}. {step_text(u)}" for i, u in enumerate(tree.units, start=1)]
-    return "\n".join(lines) + "\n"
+    """The steps as FOON nodes (`step_text`)."""
+    return _numbered(tree, used, step_text)
 
 
 # -- FOON text ------------------------------------------------------------------------------------

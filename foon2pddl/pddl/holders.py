@@ -139,9 +139,7 @@ def _aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | Non
         return node
     states = []
     for st in node.states:
-        if st.label in ("in", "on") and st.related in alias:
-            st = make_state(st.label, alias[st.related], list(st.ingredients))
-        elif st.label == "with" and st.related in alias:
+        if st.label in ("in", "on", "with") and st.related in alias:
             st = make_state(st.label, alias[st.related], list(st.ingredients))
         elif st.label == "contains" and any(i in alias for i in (*st.ingredients, st.related)):
             st = make_state(st.label, alias.get(st.related, st.related),

@@ -145,7 +145,10 @@ class _Replay:
         self.label = {o.id: o.label for o in trace.objects}
         self.initial = {s.id: s for s in trace.initial}
         self.containers = container_labels(trace, aliases)
-        self.gaps = frozenset((aliases.get(c, c), aliases.get(x, x)) for c, x in trace.gaps)
+        self.gaps: dict[str, frozenset[str]] = {}  # container label -> content labels not checked in it
+        for c, x in trace.gaps:
+            c = aliases.get(c, c)
+            self.gaps[c] = self.gaps.get(c, frozenset()) | {aliases.get(x, x)}
         self.absorbed: dict[str, frozenset[str]] = {}
         self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
@@ -236,7 +239,7 @@ class _Replay:
                 continue
             covered = frozenset().union(self.absorbed.get(h, frozenset()),
                                         *map(self.stands_for, _below(h, cover)))
-            gap = {x for c, x in self.gaps if c == self.label[h]}
+            gap = self.gaps.get(self.label[h], frozenset())
             for x in sorted(items - covered - gap):
                 others = [o for o in existing if self.label[o] == x and states[o].holder in claims.get(x, ())]
                 left = self.stale.get((h, x))
