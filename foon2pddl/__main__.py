@@ -7,11 +7,16 @@ import sys
 
 def run() -> None:
     """Exit 130/143 on SIGINT/SIGTERM even while the CLI's modules load, then run the CLI."""
+    import time
+
+    started = time.monotonic()  # no command may stay silent long, counted from here (cli.progress)
     from .io.interrupts import exit_on_signals
 
     exit_on_signals()
-    from .cli import main
+    from .cli import main, progress
     from .planners import cleanup
+
+    progress.process_started(started)
 
     cleanup.SPARE_HELPERS = False  # this process ends with the command: nothing it started may stay
     try:

@@ -13,6 +13,16 @@ SUBGRAPHS = SHARED / "foon-subgraphs"
 SEARCH_INPUTS = SHARED / "foon-search-inputs"
 
 
+@pytest.fixture(autouse=True)
+def _quiet_slow_steps(monkeypatch):
+    """A slow step's line (`cli.progress`) depends on the machine's speed and load: none in tests, so
+    their stderr is deterministic; a test about the lines sets `progress.AFTER` itself (0: every step)."""
+    from foon2pddl.cli import progress
+
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    monkeypatch.setattr(progress, "_quiet_since", None)
+
+
 @pytest.fixture(scope="session")
 def universal():
     """The universal FOON of the shared subgraphs at level 3 (with parse warnings)."""

@@ -17,27 +17,9 @@ import pytest
 from click.testing import CliRunner
 from conftest import ROOT
 
+from bench.doc_commands import PAGES as DOCS
+from bench.doc_commands import documented_commands, is_synopsis, missing_inputs, transcripts
 from foon2pddl.cli import main
-
-DOCS = (ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")))
-
-
-def transcripts(text: str) -> list[tuple[str, list[str]]]:
-    """(command, documented output lines) for every `$ foon2pddl` line in fenced blocks."""
-    out: list[tuple[str, list[str]]] = []
-    fenced, transcript = False, False
-    for line in text.splitlines():
-        if line.startswith("```"):
-            fenced, transcript = not fenced, False
-        elif fenced and line.startswith("$ foon2pddl "):
-            command = line[len("$ foon2pddl "):]
-            transcript = "../" not in command  # the embedded example and the shipped test corpus
-            if transcript:
-                out.append((command, []))
-        elif fenced and transcript and line:
-            out[-1][1].append(line)
-    return out
-
 
 CASES = [case for doc in DOCS for case in transcripts(doc.read_text())]
 
@@ -46,6 +28,41 @@ def test_the_document_has_transcripts():
     commands = [c for c, _ in CASES]
     assert "retrieve --goal lemonade --network exp" in commands
     assert commands.count("plan --goal lemonade --network gen") == 2  # the README shows it too
+
+
+def test_every_form_of_a_documented_command_is_read():
+    """What `python -m bench.silence` runs: transcripts, command lines of fenced blocks (continuations
+    joined), inline commands of prose; synopses and a bare command name are no command."""
+    shown = {c.text: c for c in documented_commands()}
+    assert shown["foon2pddl plan --goal lemonade --network gen"].form == "transcript"
+    excerpt = shown["foon2pddl compile --goal lemonade --network gen -o out/"]  # a `; $` block of file excerpts
+    assert excerpt.page == "README.md" and excerpt.form == "transcript"
+    sweep = next(c for c in shown if c.startswith("foon2pddl experiment --trials 2 --goals 10"))
+    assert sweep.endswith("--sweep level=2,3 -o out/sweep")  # the `\\` continuation joined
+    assert shown["foon2pddl expand --pairs"].form == "inline"
+    assert "foon2pddl plan" not in shown and not any(c.startswith("foon2pddl compile --goal G") for c in shown)
+
+
+@pytest.mark.parametrize(("command", "synopsis"), [
+    ("foon2pddl retrieve --goal G [--method greedy|complete]", True),
+    ("foon2pddl similarity A B [...]", True),
+    ("foon2pddl retrieve --goals FILE|- --format csv", True),
+    ("foon2pddl experiment /shared/x --scheduler tcp://HEAD:8786", True),
+    ("foon2pddl experiment --sweep NAME=V1,V2", True),
+    ('foon2pddl plan --goal "tomato soup: pureed, garnished {basil}, in [bowl]"', False),
+    ('foon2pddl plan --goal guacamole --search "lazy_greedy([h], preferred=[h])"', False),
+    ("foon2pddl retrieve --goal lemonade  # exit 1: FOON-EXP, G", False),
+])
+def test_a_synopsis_is_told_from_a_command(command, synopsis):
+    assert is_synopsis(command) is synopsis
+
+
+def test_a_command_naming_the_readers_own_files_is_told(tmp_path):
+    (tmp_path / "have.json").write_text("{}")
+    assert missing_inputs("foon2pddl generalize my_recipes/ --categories index.json -o out.txt", tmp_path) == [
+        "my_recipes/", "index.json"]
+    assert missing_inputs("foon2pddl retrieve --kitchen have.json -o new/dir/x.txt --plot p.png", tmp_path) == []
+    assert missing_inputs("foon2pddl plan --planner-cmd './my/planner {domain} {problem}'", tmp_path) == ["./my/planner"]
 
 
 def matches(documented: str, printed: str) -> bool:

@@ -303,14 +303,17 @@ def test_progress_lines_without_a_terminal_say_done_rate_and_eta():
     now = [0.0]
     out = io.StringIO()
     progress = Progress(100, LINES, out, interval=30.0, clock=lambda: now[0])
+    start = ["experiment: 100 cells to run; a progress line every 30 s"]  # at once: what the run does
+    assert out.getvalue().splitlines() == start
     for _ in range(10):
         now[0] += 2.0
         progress.update()
-    assert out.getvalue() == ""  # 20 s: not yet
+    assert out.getvalue().splitlines() == start  # 20 s: no progress line yet
     for _ in range(10):
         now[0] += 2.0
         progress.update()
-    assert out.getvalue().splitlines() == ["experiment: 15/100 cells (15.0 %), 0.5 cells/s, elapsed 30 s, ETA 2 min 50 s"]
+    assert out.getvalue().splitlines() == [*start,
+                                           "experiment: 15/100 cells (15.0 %), 0.5 cells/s, elapsed 30 s, ETA 2 min 50 s"]
     progress.close()
     assert out.getvalue().splitlines()[-1] == "experiment: 20/100 cells (20.0 %), 0.5 cells/s, elapsed 40 s, ETA 2 min 40 s"
 

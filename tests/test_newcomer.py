@@ -592,3 +592,33 @@ def test_recipe_text_on_every_unit_of_the_corpus_names_its_motion_and_movers(uni
             o = new.get(i.label)
             if o is not None and _place(o) not in (None, _place(i)):
                 assert f" the {_place(o)[1]}" in text  # where a moved object goes is said
+
+
+# -- -o: one convention for every output ---------------------------------------------------------------
+
+#: Every command's output options, each with its kind: a file, or a directory of files.
+OUTPUTS = [
+    (("stats", "-o"), "file"), (("merge", "-o"), "file"), (("goals", "-o"), "file"), (("check", "-o"), "file"),
+    (("analyze", "-o"), "file"), (("analyze", "--plot"), "file"), (("analyze", "--graphml"), "dir"),
+    (("similarity", "lemon", "lime", "-o"), "file"), (("generalize", "-o"), "file"),
+    (("categories", "--extend", SUBGRAPHS / "0001-whipped_cream.txt", "-o"), "file"),
+    (("retrieve", "--goal", "guacamole", "-o"), "file"), (("retrieve", "--goal", "guacamole", "--goal", "pancake", "-o"),
+                                                         "dir"),
+    (("compile", "--goal", "guacamole", "-o"), "dir"), (("plan", "--goal", "guacamole", "-o"), "file"),
+    (("plan", "--goal", "guacamole", "--plan-file"), "file"), (("plan", "--goal", "whipped cream", "--skills", "-o"),
+                                                               "dir"),
+    (("experiment", "--trials", "1", "--goals", "1", "--networks", "reg", "--solvers", "native-greedy",
+      "--no-progress", "-o"), "dir"),
+]
+
+
+@pytest.mark.parametrize(("args", "kind"), OUTPUTS, ids=[" ".join(map(str, a)) for a, _ in OUTPUTS])
+def test_every_output_option_creates_its_missing_parent_directories(tmp_path, args, kind):
+    """`plan -o missing/dir/file` creates `missing/dir`: so does every other output of every command
+    (README, common options), as `compile -o DIR` and `experiment -o DIR` must."""
+    target = tmp_path / "missing" / "dir" / ("out" if kind == "dir" else "out.txt")
+    r = run(*args, target)
+    assert r.exit_code == 0, r.stderr
+    assert target.is_dir() if kind == "dir" else target.is_file()
+    if kind == "dir":
+        assert any(target.iterdir())

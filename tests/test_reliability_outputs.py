@@ -141,3 +141,19 @@ def test_concurrent_compile_runs_end_with_one_goals_pair(tmp_path):
     goal_of = [line for line in domain.decode().splitlines() if line.startswith("; goal: ")]
     assert goal_of and goal_of[0].encode() in problem
     assert sorted(x.name for x in out.iterdir()) == ["domain.pddl", "problem.pddl"]
+
+
+@pytest.mark.parametrize("many", [False, True], ids=["one file", "a set"])
+def test_a_failed_write_removes_the_directories_it_made(tmp_path, monkeypatch, many):
+    target = tmp_path / "new" / "dir" / "tree.txt"
+
+    def full(src, dst):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(atomic.os, "replace", full)
+    with pytest.raises(OSError):
+        atomic_write_many({target: "x"}) if many else atomic_write(target, "x")
+    assert list(tmp_path.iterdir()) == []
+    monkeypatch.undo()
+    atomic_write(target, "x")  # and a write that succeeds keeps them
+    assert target.read_text() == "x"

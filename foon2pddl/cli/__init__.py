@@ -22,6 +22,7 @@ from ..errors import FoonError, UsageError
 from ..io.atomic import discard_staged
 from ..io.interrupts import Terminated, sigterm_raises
 from ..planners.cleanup import command_scope
+from . import progress
 
 __all__ = ["COMMANDS", "main", "analyze_cmd", "batch", "batch_pddl", "check_cmd", "compile_cmd", "expand_cmd",
            "experiment_cmd", "generalize_cmd", "goals_cmd", "kitchen_note", "merge_cmd", "options", "plan_cmd",
@@ -73,6 +74,7 @@ class _Group(click.Group):
 
     def invoke(self, ctx: click.Context):
         _escape_unencodable_output()
+        progress.begin()
         try:
             with sigterm_raises():
                 try:

@@ -8,7 +8,8 @@ import click
 
 from ..errors import FoonInputError
 from . import main
-from .options import emit, output_option, paths_argument
+from .options import emit, output_option, paths_argument, read_network
+from .progress import slow_step
 
 
 @main.command("analyze")
@@ -29,16 +30,18 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     from ..analysis.network import analyze, graphml_graphs  # networkx: imported only when needed
     from ..analysis.network_report import MAX_PLOT_BARS, format_text, plot_png, to_json, write_graphml
     from ..io.atomic import atomic_write
-    from ..io.inputs import load_network
 
-    net = load_network(paths)
-    result = analyze(net.foon, int(level))
+    net = read_network(paths)
+    with slow_step(f"analysing {len(net.foon.units):,} units (projections, centrality, components)"):
+        result = analyze(net.foon, int(level))
     try:
         if graphml is not None:
             for p in write_graphml(graphml, graphml_graphs(net.foon, result)):
                 click.echo(f"wrote {p}", err=True)
         if plot is not None:
-            atomic_write(plot, plot_png(result, top))
+            with slow_step(f"drawing {plot}"):
+                png = plot_png(result, top)
+            atomic_write(plot, png)
             shown = f" (the top {MAX_PLOT_BARS} of each ranking)" if top > MAX_PLOT_BARS else ""
             click.echo(f"wrote {plot}{shown}", err=True)
     except OSError as exc:

@@ -11,6 +11,7 @@ from ..io.files import load
 from ..io.raw_objects import scan_paths
 from . import main
 from .options import emit, output_option, paths_argument
+from .progress import inputs, slow_step
 
 
 def wordnet_lemma():
@@ -60,8 +61,9 @@ def check_(paths, as_json, wordnet, output) -> None:
         from ..io.inputs import example_path
 
         net_paths = (example_path(),)
-    foon, _ = load(net_paths)
-    defects = check(foon, scan_paths(net_paths), wordnet_lemma() if wordnet else None)
+    with slow_step(f"checking {inputs(paths)} for defects"):
+        foon, _ = load(net_paths)
+        defects = check(foon, scan_paths(net_paths), wordnet_lemma() if wordnet else None)
     total = counts(defects)
     if as_json:
         data = {"counts": total, "errors": sum(d.severity == "error" for d in defects),

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import click
 
-from ..io.inputs import load_network
 from . import main
 from .options import (
     emit,
@@ -13,8 +12,10 @@ from .options import (
     load_overrides,
     output_option,
     paths_argument,
+    read_network,
     similarity_options,
 )
+from .progress import slow_step
 
 
 @main.command("expand")
@@ -43,14 +44,16 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     """
     from ..generalize.expand import expand, vocabulary
     from ..generalize.modes import mode_matrix
+    from ..generalize.network import NETWORKS
     from ..generalize.stats import format_levels_table, levels_table
     from ..io.inputs import load_kitchen
 
-    net = load_network(paths)
+    net = read_network(paths)
     kit = load_kitchen(kitchen, net, 3)
     extra = load_overrides(overrides)
-    matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
-    e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
+    with slow_step(NETWORKS["exp"].building.format(units=len(net.foon.units))):
+        matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
+        e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 

@@ -123,6 +123,9 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     from ..experiment import runner
     from ..experiment.networks import NETWORKS
     from ..experiment.report import ReportData, agreement, invalid_trees, write_report
+    from .progress import slow_step
+
+    step = slow_step if progress else runner.silent_step  # --no-progress: no line at all
 
     nets = _names(networks, NETWORKS, "networks")
     chosen = _names(solvers, tuple(SOLVERS), "solvers")
@@ -135,7 +138,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)
     try:
-        summary = runner.run(config, progress=progress, fresh=fresh)
+        summary = runner.run(config, progress=progress, fresh=fresh, step=step)
     except runner.OtherResults as exc:
         raise FoonInputError(exc.path, exc.line, exc.message + "; use another -o directory, or --fresh to discard "
                                                                "them") from None
@@ -162,7 +165,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,
                       tuple(t.summary() for t in summary.trials), meta, swept, summary.records)
     try:
-        written = write_report(data, out_dir, report)
+        with step(f"writing the report and plots ({report})"):
+            written = write_report(data, out_dir, report)
     except OSError as exc:
         raise FoonInputError(str(report), 0, f"cannot write the report: {exc.strerror or exc}") from None
     solved = sum(r.solved for r in summary.records)

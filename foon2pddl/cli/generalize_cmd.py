@@ -6,9 +6,8 @@ from pathlib import Path
 
 import click
 
-from ..io.inputs import load_network
 from . import main
-from .options import emit, emit_network, output_option, paths_argument
+from .options import emit, emit_network, output_option, paths_argument, read_network
 
 categories_option = click.option("--categories", "categories", type=click.Path(path_type=Path), default=None,
                                  help="Category index (JSON, see docs/generalization.md). Default: the shipped one.")
@@ -32,7 +31,7 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
     from ..generalize.stats import format_levels_table, levels_table
 
     index = load_index(categories)
-    net = load_network(paths)
+    net = read_network(paths)
     c = compress(net.foon, index)
     header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
               f"{c.original_units} -> {len(c.foon.units)} units")
@@ -65,7 +64,7 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
     if extend:
         from ..generalize.extend import assign, extended_index, index_json
 
-        net = load_network(paths)
+        net = read_network(paths)
         labels = [n.label for n in net.foon.nodes]
         found = assign(labels, index, min_similarity=min_similarity)
         bigger = extended_index(index, found)
@@ -81,7 +80,7 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
         lines = [f"{'  ' * index.depth(c.name)}{c.name} ({len(c.members)}): {c.description}" for c in _tree(index)]
         emit("\n".join(lines) + "\n", output)
         return
-    net = load_network(paths)
+    net = read_network(paths)
     cov = coverage((n.label for n in net.foon.nodes), index)
     text = "".join(f"{label}\n" for label in cov.missing)
     emit(text, output)

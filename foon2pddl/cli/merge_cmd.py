@@ -4,11 +4,10 @@ from __future__ import annotations
 
 import click
 
-from ..io.inputs import load_network
 from ..io.jsonio import write_json
 from ..io.writer import write_foon
 from . import main
-from .options import emit, level_option, output_option, paths_argument
+from .options import emit, level_option, output_option, paths_argument, read_network
 
 
 @main.command("merge")
@@ -29,7 +28,7 @@ def merge(paths, level, with_ids, provenance, fmt, output) -> None:
     their provenance joined. Writes the id-less FOON text by default. Skipped
     blocks are reported on standard error as warnings.
     """
-    net = load_network(paths)
+    net = read_network(paths)
     for w in net.warnings:
         click.echo(str(w), err=True)
     foon = net.at(level)

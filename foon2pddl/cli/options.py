@@ -210,6 +210,15 @@ def single_goal(goal: tuple[str, ...]) -> str | None:
     return goal[0] if goal else None
 
 
+def read_network(paths, skip_invalid: bool = False):
+    """`io.inputs.load_network(paths)`, said on stderr when it takes a while (a universal FOON)."""
+    from ..io.inputs import load_network
+    from .progress import inputs, slow_step
+
+    with slow_step("reading " + inputs(paths)):
+        return load_network(paths, skip_invalid)
+
+
 def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",
               utensils: Path | None = None, constraints=None):
     """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
@@ -223,15 +232,13 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     from dataclasses import replace
 
     from ..generalize.network import NETWORKS, Substitutes, network_view
-    from ..io.inputs import load_kitchen, load_network
+    from ..io.inputs import load_kitchen
     from ..io.kitchen_files import read_utensils
     from ..model.containment import with_containment
     from ..model.kitchen import with_utensils
     from .progress import slow_step
 
-    with slow_step("reading " + (", ".join(str(p) for p in paths[:3]) + (" ..." if len(paths) > 3 else "")
-                                 if paths else "the embedded example")):
-        net = load_network(paths)
+    net = read_network(paths)
     kit = load_kitchen(kitchen, net, level)
     if kitchen is None and not net.is_example:
         from .kitchen_note import kitchen_note

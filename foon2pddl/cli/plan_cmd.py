@@ -133,8 +133,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     check_output(output, directory=entries is not None or skills)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
-    try:  # before anything is loaded or timed
-        lookup(planner, planner_cmd).check(planner if planner_cmd is None else planner_cmd)
+    try:  # before anything is loaded or timed (a unified-planning engine: UP's import takes seconds)
+        with slow_step(f"looking up planner {planner_cmd or planner!r}"):
+            lookup(planner, planner_cmd).check(planner if planner_cmd is None else planner_cmd)
     except UnknownPlanner as exc:
         raise click.BadParameter(f"{exc} (or --planner-cmd with a command or a preset: {', '.join(PRESETS)})",
                                  param_hint="--planner") from None

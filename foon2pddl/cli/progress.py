@@ -1,10 +1,19 @@
-"""No silent waits: a step that takes longer than `AFTER` seconds says on stderr what it is doing.
+"""No silent waits: no command goes `AFTER` seconds without a line on stderr saying what it does.
 
-`slow_step(what)` wraps a step. A watcher thread waits `AFTER` seconds for it; a
-step done by then prints nothing (fast runs keep their output). Otherwise it
-prints `what ...` at once; on a terminal the line then counts the seconds and ends
-with the step's time, and in a log it is one line. Only the message goes to stderr,
-never to stdout, so outputs stay byte-identical however slow the machine is.
+`slow_step(what)` wraps a step. A watcher thread waits until the command has been
+silent for `AFTER` seconds: counted from the command's start (the process's, when
+run as `foon2pddl`), or from the end of the last step that said what it did, so
+that several short steps in a row cannot add up to a long silence. A step done by
+then prints nothing (fast runs keep their output). Otherwise it prints `what ...`
+at once; on a terminal the line then counts the seconds and ends with the step's
+time, and in a log it is one line. Only the message goes to stderr, never to
+stdout, so outputs stay byte-identical however slow the machine is. A line printed
+by other means (a note) is not seen here: after one, a step may speak up early.
+
+Work outside every step is silent: a slow stretch gets its own step (`python -m
+bench.silence` measures every documented command). Lower layers that have slow
+steps take a `step` callable (this one, passed down by the command) rather than
+printing themselves.
 """
 
 from __future__ import annotations
@@ -17,29 +26,57 @@ from contextlib import contextmanager
 
 import click
 
-#: Seconds a step may run silently.
-AFTER = 2.0
+#: Seconds a command may stay silent before the step it is in says what it is.
+AFTER = 1.5
+#: On a terminal: back to the start of the line and clear it (a shorter text leaves nothing behind).
+_REDRAW = "\r\x1b[K"
+
+#: Since when (time.monotonic) the running command has said nothing a step knows of; None: a step is
+#: saying what it does now, or no command runs (a step then counts from its own start).
+_quiet_since: float | None = None
+#: When this process started the command-line interface (set by the console script), for its first command.
+_process_start: float | None = None
+
+
+def process_started(at: float) -> None:
+    """Record the process's start (the console script's first line), so the first command counts from it."""
+    global _process_start
+    _process_start = at
+
+
+def begin() -> None:
+    """A command starts: its silence counts from now (from the process's start for the first one)."""
+    global _quiet_since, _process_start
+    _quiet_since = time.monotonic() if _process_start is None else _process_start
+    _process_start = None
 
 
 @contextmanager
 def slow_step(what: str, after: float | None = None) -> Iterator[None]:
-    """Say `what ...` on stderr if the wrapped step is still running after `after` seconds (default
-    `AFTER`; 0: always, at once) (module doc)."""
-    after = AFTER if after is None else after
-    done = threading.Event()
+    """Say `what ...` on stderr if the wrapped step is still running once the command has been silent
+    for `AFTER` seconds, or (when given) after `after` seconds of the step (0: always, at once)
+    (module doc)."""
+    global _quiet_since
+    start = time.monotonic()
+    if after is None:
+        since = start if _quiet_since is None else _quiet_since
+        after = max(0.0, since + AFTER - start)
+    done, said = threading.Event(), threading.Event()
     tty = sys.stderr.isatty()
 
     def watch() -> None:
+        global _quiet_since
         if after > 0 and done.wait(after):
             return
-        start = time.monotonic() - after
+        said.set()
+        _quiet_since = None
         if not tty:
             click.echo(f"{what} ...", err=True)
             return
         click.echo(f"{what} ...", err=True, nl=False)
         while not done.wait(1.0):
-            click.echo(f"\r{what} ... {time.monotonic() - start:.0f} s", err=True, nl=False)
-        click.echo(f"\r{what}: {time.monotonic() - start:.1f} s", err=True)
+            click.echo(f"{_REDRAW}{what} ... {time.monotonic() - start:.0f} s", err=True, nl=False)
+        click.echo(f"{_REDRAW}{what}: {time.monotonic() - start:.1f} s", err=True)
 
     watcher = threading.Thread(target=watch, name="slow-step", daemon=True)
     watcher.start()
@@ -48,3 +85,12 @@ def slow_step(what: str, after: float | None = None) -> Iterator[None]:
     finally:
         done.set()
         watcher.join()
+        if said.is_set():
+            _quiet_since = time.monotonic()  # its line no longer says what the command does
+
+
+def inputs(paths) -> str:
+    """What a step reads, for its message: up to three PATHS, or the embedded example."""
+    if not paths:
+        return "the embedded example"
+    return ", ".join(str(p) for p in paths[:3]) + (" ..." if len(paths) > 3 else "")

@@ -10,6 +10,7 @@ from ..errors import UsageError
 from ..model.foon import normalize_label
 from . import main
 from .options import emit, load_overrides, output_option, similarity_options
+from .progress import slow_step
 
 
 @main.command("similarity")
@@ -39,10 +40,14 @@ def similarity(labels, as_pairs, senses, as_json, similarity, overrides, output)
         raise UsageError(f"--pairs needs an even number of labels, got {len(labels)}")
     if len(labels) < 2:
         raise UsageError("give at least two labels")
-    sim = make_similarity(similarity, extra=load_overrides(overrides))
-    if as_pairs or len(labels) == 2:
-        pairs = list(zip(labels[::2], labels[1::2], strict=True))
-        values = [(a, b, sim(a, b)) for a, b in pairs]
+    extra = load_overrides(overrides)
+    names = list(dict.fromkeys(labels))
+    pairs = list(zip(labels[::2], labels[1::2], strict=True)) if as_pairs or len(labels) == 2 else None
+    with slow_step(f"comparing {len(names)} labels in WordNet ({similarity} similarity)"):
+        sim = make_similarity(similarity, extra=extra)
+        values = [(a, b, sim(a, b)) for a, b in pairs] if pairs is not None else None
+        rows = [[sim(a, b) for b in names] for a in names] if pairs is None else None
+    if values is not None:
         if as_json:
             text = json.dumps([{"a": a, "b": b, "similarity": round(v, 6)} for a, b, v in values], indent=2) + "\n"
         elif len(values) == 1:
@@ -50,8 +55,6 @@ def similarity(labels, as_pairs, senses, as_json, similarity, overrides, output)
         else:
             text = "".join(f"{v:.4f}\t{a}\t{b}\n" for a, b, v in values)
     else:
-        names = list(dict.fromkeys(labels))
-        rows = [[sim(a, b) for b in names] for a in names]
         if as_json:
             text = json.dumps({"labels": names, "matrix": [[round(v, 6) for v in r] for r in rows]}, indent=2) + "\n"
         else:
@@ -69,7 +72,7 @@ def similarity(labels, as_pairs, senses, as_json, similarity, overrides, output)
         text += "".join(sim.resolution(x).describe() + "\n" for x in dict.fromkeys(labels))
         if similarity != "paper":
             text += "".join(_why(a, b, sim.explain(a, b)) for a, b in
-                            (pairs if as_pairs or len(labels) == 2 else _distinct_pairs(labels)))
+                            (pairs if pairs is not None else _distinct_pairs(labels)))
     emit(text, output)
 
 

@@ -12,6 +12,7 @@ from ..pddl.compile import ENCODINGS
 from ..pddl.constraints import GoalExcluded
 from ..status import PlanStatus
 from .options import emit
+from .progress import slow_step
 from .reasons import why_unsolvable
 
 __all__ = ["SKILL_FORMATS", "check_skill_usage", "plan_with_skills", "skill_encoding", "skill_options"]
@@ -112,8 +113,9 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: 
     robot = robot_profile(cons, hands, without_skills)
     ctx = click.get_current_context()
     try:
-        done = plan_skills(foon, kitchen, goal, encoding=encoding, domain=domain, table=table, robot=robot,
-                           constraints=cons, **options)
+        with slow_step(f"planning {goal.describe()!r} ({encoding} encoding) and each step's robot skills"):
+            done = plan_skills(foon, kitchen, goal, encoding=encoding, domain=domain, table=table, robot=robot,
+                               constraints=cons, **options)
     except GoalExcluded as exc:
         click.echo(f"unsolvable (robot and constraints): {exc}", err=True)
         ctx.exit(1)

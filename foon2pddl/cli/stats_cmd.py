@@ -7,9 +7,8 @@ import json
 import click
 
 from ..analysis.stats import format_stats, network_stats
-from ..io.inputs import load_network
 from . import main
-from .options import emit, output_option, paths_argument
+from .options import emit, output_option, paths_argument, read_network
 
 
 @main.command("stats")
@@ -25,6 +24,6 @@ def stats(paths, as_json, skip_invalid, output) -> None:
     directory that are plainly not FOON (a rates file, text without FOON lines) are skipped
     with a warning.
     """
-    net = load_network(paths, skip_invalid)
+    net = read_network(paths, skip_invalid)
     data = network_stats(net.foon, net.warnings)
     emit(json.dumps(data, indent=2) + "\n" if as_json else format_stats(data), output)

@@ -1,13 +1,15 @@
 """Progress of a long run: a tqdm bar on a terminal, a periodic line otherwise (logs, CI, nohup).
 
-The line says cells done of planned, the rate since the start and the
-estimated time left, every `interval` seconds and once at the end:
-`experiment: 1,200/3,000 cells (40.0 %), 85.3 cells/s, ETA 21 s`.
+The bar is redrawn every second (its elapsed time counts while a slow cell runs). In
+a log, a first line says how many cells will run; then a line says cells done of
+planned, the rate since the start and the estimated time left, every `interval`
+seconds and once at the end: `experiment: 1,200/3,000 cells (40.0 %), 85.3 cells/s, ETA 21 s`.
 """
 
 from __future__ import annotations
 
 import sys
+import threading
 import time
 from typing import IO
 
@@ -63,6 +65,17 @@ class Progress:
             tqdm.monitor_interval = 0  # no monitor thread
             self.bar = tqdm(total=total, unit="cell", desc="experiment", file=self.stream, dynamic_ncols=True,
                             smoothing=0.05, bar_format=_EARLY_BAR)
+            self._stop = threading.Event()
+            self._ticker = threading.Thread(target=self._tick, name="experiment-bar", daemon=True)
+            self._ticker.start()
+        elif self.mode == LINES:
+            print(f"experiment: {total:,} cells to run; a progress line every {interval:g} s", file=self.stream,
+                  flush=True)
+
+    def _tick(self) -> None:
+        """Redraw the bar every second until it closes."""
+        while not self._stop.wait(1.0):
+            self.bar.refresh()
 
     @property
     def eta_meaningful(self) -> bool:
@@ -102,6 +115,8 @@ class Progress:
 
     def close(self) -> None:
         if self.bar is not None:
+            self._stop.set()
+            self._ticker.join()
             self.bar.close()
         elif self.mode == LINES:
             print(self.line(), file=self.stream, flush=True)

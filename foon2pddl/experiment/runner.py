@@ -26,6 +26,7 @@ import shutil
 import tempfile
 import time
 from collections.abc import Callable, Sequence
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -40,6 +41,14 @@ from .protocol import Protocol, Trial
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
 from .worker import Batch, Job, draw_at, fingerprint, input_files, view
+
+#: A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`).
+Step = Callable[[str], AbstractContextManager[None]]
+
+
+def silent_step(what: str) -> AbstractContextManager[None]:
+    """No message (`--no-progress`, the Python API)."""
+    return nullcontext()
 
 __all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]
 
@@ -251,22 +260,26 @@ def check_requirements(config: Config) -> None:
 
 # -- running -------------------------------------------------------------------------------------
 
+def build_networks(config: Config, batches: list[Batch]) -> None:
+    """Build (and cache in this process) the network views `batches` need: a local run does it before the
+    first cell, so local workers, forked, inherit them (each built once). A view that fails to build is not
+    cached: its batches try again and record the error."""
+    for point, network in dict.fromkeys((b.point, b.network) for b in batches):
+        try:
+            view(config.paths, config.protocol, point, network)
+        except Exception:  # noqa: BLE001 - recorded by the batches that need it
+            pass
+
+
 def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress,
               settle: Callable[[], None] = lambda: None) -> None:
-    """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives.
-    A local run builds the networks the batches need first (local workers are forked: they inherit
-    them, each built once), then calls `settle` (`collector.building`) before the first cell."""
+    """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives; `settle`
+    (`collector.building`) is called before the first cell (a local run has built its networks by then)."""
     # Translations are shared through a private directory on this machine (fd-tree and fd-tree-opt translate
     # the same task; local workers see the directory, a remote cluster's may not).
     cache = tempfile.mkdtemp(prefix="foon2pddl-sas-") if config.scheduler is None else None
     job = Job(config.paths, fingerprint(config.paths), config.protocol, config.time_limit, cache)
     try:
-        if config.scheduler is None:
-            for point, network in dict.fromkeys((b.point, b.network) for b in batches):
-                try:
-                    view(config.paths, config.protocol, point, network)
-                except Exception:  # noqa: BLE001 - not cached: its batches try again and record the error
-                    pass
         settle()
         if config.scheduler is None and config.jobs <= 1:
             run_here(batches, job, sink, progress)
@@ -279,14 +292,15 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
             shutil.rmtree(cache, ignore_errors=True)
 
 
-def run(config: Config, progress: bool | str = True, fresh: bool = False) -> RunSummary:
+def run(config: Config, progress: bool | str = True, fresh: bool = False, step: Step = silent_step) -> RunSummary:
     """Run every cell of `config` not already in its results file (all of them when `fresh`);
-    return all records of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode."""
+    return all records of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode;
+    `step(what)`: a context manager around each slow set-up step (the CLI's `slow_step` says what it is)."""
     with collector.building() as settle:  # no garbage collection while the networks are built
-        return _run(config, progress, fresh, settle)
+        return _run(config, progress, fresh, settle, step)
 
 
-def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None]) -> RunSummary:
+def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None], step: Step) -> RunSummary:
     t0 = time.perf_counter()
     for name in config.solvers:
         get_solver(name)
@@ -296,7 +310,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
     check_grid(config.sweeps)
     check_requirements(config)
     try:
-        return _run_checked(config, progress, fresh, settle, t0)
+        return _run_checked(config, progress, fresh, settle, t0, step)
     except OSError as exc:  # a full disk, a read-only directory: what was appended stays, a rerun resumes
         where = exc.filename or config.out_dir
         raise FoonInputError(str(where), 0, f"cannot write: {exc.strerror or exc}; the cells recorded so far are "
@@ -304,7 +318,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
 
 
 def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None],
-                 t0: float) -> RunSummary:
+                 t0: float, step: Step) -> RunSummary:
     first = config.points[0]
     trials = trials_at(config, first)
     config.out_dir.mkdir(parents=True, exist_ok=True)
@@ -323,6 +337,10 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
     planned = sum(len(b.goals) for b in batches)
     written = [0, 0]  # cells written, of which lost
     if batches:
+        if config.scheduler is None:
+            kinds = ", ".join(NETWORKS[n].label for n in config.networks if n in {b.network for b in batches})
+            with step(f"building the networks ({kinds}) before the first of {planned:,} cells"):
+                build_networks(config, batches)
         mode = (default_mode() if progress else OFF) if isinstance(progress, bool) else progress
         bar = Progress(planned, mode)
         for w in warnings:

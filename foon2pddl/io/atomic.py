@@ -8,6 +8,9 @@ pipe) cannot be replaced atomically and must not be: they are written through.
 Text is encoded as UTF-8, lone surrogates (undecodable bytes of file names) as
 `\\udcff` escapes, so no output ever fails to encode.
 
+Missing parent directories are created (every `-o` of the CLI works so); those a failed
+write created are removed again.
+
 Several files written as a unit (`atomic_write_many`, compile's domain/problem
 pair, a batch's `-o DIR`) are all staged before any is renamed (a target that is a
 directory fails the staging; directories made for the set are removed again when it
@@ -133,13 +136,15 @@ def atomic_write(path: str | Path, data: str | bytes) -> None:
         _write_through(Path(path), encode(data))
         return
     tmp = None
+    created: list[Path] = []  # directories made for the file: removed again when the write fails
     try:
-        tmp = _stage(target, encode(data), info)
+        tmp = _stage(target, encode(data), info, created)
         os.replace(tmp, target)
         _STAGED.discard(tmp)
     except BaseException:
         if tmp is not None:
             _discard(tmp)
+        _remove_dirs(created)
         raise
 
 

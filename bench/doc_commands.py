@@ -1,0 +1,118 @@
+"""The commands README.md and docs/*.md show: one reading of the pages for the docs tests and benchmarks.
+
+Three forms are read, in page order:
+- transcripts: a `$ foon2pddl ...` line in a fenced block, the lines under it its documented output
+  (`; $ foon2pddl ...` opens a block of file excerpts: the command is read, its lines are not output);
+- command lines: a line of a fenced block starting `foon2pddl ` (a `\\` continuation joined, a trailing
+  `# comment` kept: the shell drops it);
+- inline commands: a `` `foon2pddl ...` `` span of prose with options or arguments (`` `foon2pddl plan` ``
+  names the command).
+A synopsis (`[--option ...]`, an upper-case placeholder such as `G`, `FILE|-`, `PATHS`) is no command.
+"""
+
+from __future__ import annotations
+
+import re
+import shlex
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+PAGES = (ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")))
+
+#: A placeholder word of a synopsis: `G`, `FILE|-`, `PATHS`, `HEAD` in `tcp://HEAD:8786`.
+_PLACEHOLDER = re.compile(r"(?:^|[/:=])[A-Z][A-Z|\-]*(?:$|[:/=])|^\[|^\.\.\.$")
+_INLINE = re.compile(r"`(foon2pddl [^`]+)`")
+#: Options whose value is a file the command writes (so it need not exist beforehand).
+_OUTPUTS = {"-o", "--output", "--plot", "--graphml", "--plan-file", "--report"}
+
+
+@dataclass(frozen=True)
+class DocCommand:
+    """One documented command: where it is shown and its shell text."""
+
+    page: str  # README.md, docs/x.md
+    line: int
+    text: str  # the shell command line, `foon2pddl` first
+    form: str  # transcript | block | inline
+
+    @property
+    def where(self) -> str:
+        return f"{self.page}:{self.line}"
+
+
+def transcripts(text: str) -> list[tuple[str, list[str]]]:
+    """(command, documented output lines) for every `$ foon2pddl` line in fenced blocks whose command
+    reads only the checkout (the embedded example and the shipped test corpus, not `../`)."""
+    out: list[tuple[str, list[str]]] = []
+    fenced, transcript = False, False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            fenced, transcript = not fenced, False
+        elif fenced and line.startswith("$ foon2pddl "):
+            command = line[len("$ foon2pddl "):]
+            transcript = "../" not in command
+            if transcript:
+                out.append((command, []))
+        elif fenced and transcript and line:
+            out[-1][1].append(line)
+    return out
+
+
+def _shown(text: str) -> Iterator[tuple[int, str, str]]:
+    """(line number, command text, form) of every command a page shows, synopses included."""
+    fenced, pending = False, ""
+    for number, line in enumerate(text.splitlines(), start=1):
+        if line.startswith("```"):
+            fenced, pending = not fenced, ""
+            continue
+        if not fenced:
+            for m in _INLINE.finditer(line):
+                if " " in m.group(1).strip()[len("foon2pddl "):]:  # `foon2pddl plan` names the command
+                    yield number, m.group(1), "inline"
+            continue
+        for prompt in ("$ ", "; $ "):
+            if line.startswith(prompt + "foon2pddl "):
+                yield number, line[len(prompt):], "transcript"
+        if pending:
+            line = pending + " " + line.strip()
+        if line.endswith("\\"):
+            pending = line[:-1].rstrip()
+            continue
+        pending = ""
+        if line.startswith("foon2pddl "):
+            yield number, line, "block"
+
+
+def is_synopsis(command: str) -> bool:
+    """Whether `command` is a synopsis (placeholders, optional parts) rather than a command to run."""
+    try:
+        words = shlex.split(command, comments=True)
+    except ValueError:
+        return True
+    return any(_PLACEHOLDER.search(w) for w in words if not w.startswith("-") or w.startswith("[-"))
+
+
+def missing_inputs(command: str, root: Path = ROOT) -> list[str]:
+    """The files `command` reads that `root` does not hold (the reader's own files: `my_recipes/`)."""
+    words = shlex.split(command, comments=True)
+    out = []
+    for before, word in zip(["", *words], words, strict=False):
+        if before in _OUTPUTS or word.startswith("-"):
+            continue
+        path = word.split()[0] if " " in word else word  # a --planner-cmd: its program
+        if ("/" in path or re.search(r"\.(json|pddl|txt|foon)$", path)) and not (root / path).exists():
+            out.append(path)
+    return out
+
+
+def documented_commands(pages: tuple[Path, ...] = PAGES) -> list[DocCommand]:
+    """Every runnable command the pages show, once each (where first shown), in page order."""
+    seen: dict[str, DocCommand] = {}
+    for page in pages:
+        for number, text, form in _shown(page.read_text()):
+            text = text.strip()
+            if text not in seen and not is_synopsis(text):
+                seen[text] = DocCommand(str(page.relative_to(ROOT)), number, text, form)
+    return list(seen.values())

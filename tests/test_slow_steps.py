@@ -1,0 +1,120 @@
+"""No command is silent for long (issue 24): the slow-step mechanism (`cli.progress`) and the commands
+`python -m bench.silence` found silent. Nothing here depends on the machine's speed: a threshold of 0
+makes every step say what it is, a command's silence budget is set by hand, and a threshold of an
+hour keeps every step quiet."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from click.testing import CliRunner
+from conftest import SUBGRAPHS
+
+from foon2pddl.cli import main, progress
+
+
+def run(*args):
+    return CliRunner().invoke(main, [str(a) for a in args])
+
+
+@pytest.fixture
+def every_step_speaks(monkeypatch):
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+
+
+# -- the mechanism -------------------------------------------------------------------------------
+
+
+def steps_said(capsys, *names) -> str:
+    for name in names:
+        with progress.slow_step(name):
+            pass
+    return capsys.readouterr().err
+
+
+def test_a_command_silent_past_its_budget_says_its_next_step_at_once(monkeypatch, capsys):
+    monkeypatch.setattr(progress, "AFTER", 1.5)
+    monkeypatch.setattr(progress, "_process_start", time.monotonic() - 60)  # the first command: since the process
+    progress.begin()
+    assert steps_said(capsys, "late step") == "late step ...\n"
+
+
+def test_a_command_within_its_budget_stays_quiet(monkeypatch, capsys):
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    progress.begin()
+    assert steps_said(capsys, "one", "two") == ""
+
+
+def test_short_steps_in_a_row_cannot_add_up_to_a_long_silence(monkeypatch, capsys):
+    """The budget counts from the command's start, not from each step's: a step that begins once the
+    command has been quiet for AFTER seconds speaks however short it is."""
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    progress.begin()
+    monkeypatch.setattr(progress, "_quiet_since", time.monotonic() - 3600.0)  # an hour of short silent steps
+    assert steps_said(capsys, "the next one") == "the next one ...\n"
+
+
+def test_a_step_that_spoke_restarts_the_budget(monkeypatch, capsys):
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    progress.begin()
+    with progress.slow_step("announced", after=0):
+        pass
+    assert progress._quiet_since is not None and time.monotonic() - progress._quiet_since < 60
+    assert steps_said(capsys, "after it") == "announced ...\n"
+
+
+def test_a_step_inside_an_announced_one_counts_from_its_own_start(monkeypatch, capsys):
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    monkeypatch.setattr(progress, "_quiet_since", time.monotonic() - 7200.0)
+    with progress.slow_step("outer"):
+        with progress.slow_step("inner"):
+            pass
+    assert capsys.readouterr().err == "outer ...\n"
+
+
+def test_each_command_invocation_starts_its_own_budget(monkeypatch):
+    monkeypatch.setattr(progress, "_quiet_since", time.monotonic() - 7200.0)
+    monkeypatch.setattr(progress, "AFTER", 3600.0)
+    assert run("plan", "--goal", "guacamole").stderr.count(" ...") == 0
+
+
+# -- the commands found silent for seconds --------------------------------------------------------
+
+
+@pytest.mark.parametrize(("args", "said"), [
+    (("similarity", "cilantro", "banana"), "comparing 2 labels in WordNet (cook similarity) ..."),
+    (("expand", "--pairs"), "building FOON-EXP of 101 units (WordNet similarities: once, then cached) ..."),
+    (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
+    (("plan", "--goal", "whipped cream", "--planner", "pyperplan"), "looking up planner 'pyperplan' ..."),
+    (("plan", "--goal", "whipped cream", "--skills"),
+     "planning 'whipped cream' (relational encoding) and each step's robot skills ..."),
+    (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
+    (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
+], ids=["similarity", "expand --pairs", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
+        "check", "stats"])
+def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
+    r = run(*args)
+    assert r.exit_code in (0, 1), r.stderr
+    assert any(line.startswith(said) for line in r.stderr.splitlines()), r.stderr
+
+
+def test_analyze_says_it_draws_the_plot(every_step_speaks, tmp_path):
+    r = run("analyze", "--plot", tmp_path / "central.png")
+    assert r.exit_code == 0, r.stderr
+    assert f"drawing {tmp_path / 'central.png'} ..." in r.stderr.splitlines()
+    assert any(line.startswith("analysing 101 units") for line in r.stderr.splitlines())
+
+
+def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_path):
+    args = ("experiment", "--trials", "1", "--goals", "2", "--networks", "reg,gen", "--solvers", "native-greedy",
+            "-o", tmp_path)
+    r = run(*args)
+    assert r.exit_code == 0, r.stderr
+    lines = r.stderr.splitlines()
+    assert "building the networks (REG, GEN) before the first of 4 cells ..." in lines
+    assert f"writing the report and plots ({tmp_path / 'report.md'}) ..." in lines
+    assert lines.index("building the networks (REG, GEN) before the first of 4 cells ...") < next(
+        k for k, line in enumerate(lines) if line.startswith("experiment: "))  # before the progress line
+    quiet = run(*args, "--no-progress", "--fresh")
+    assert quiet.exit_code == 0 and " ..." not in quiet.stderr  # --no-progress: no line at all
