@@ -1,0 +1,101 @@
+"""Draw the third labelled batch of substitution pairs (splits `outside` and `unsampled`), blind.
+
+`python -m bench.similarity_sample [--shared DIR] BLIND KEY` writes BLIND, the candidate
+pairs in a seeded shuffle with an empty `label` column and nothing else (no score, no
+source), and KEY, each pair's split and source, which the labeller does not open until
+the labels are committed. The populations (all pairs, not samples, so precision and
+recall need no weights):
+
+- `outside`: pairs of the labels of `foon-search-inputs/kitchen.json` and `goal_nodes.json`
+  (object labels, ingredients and containers) with at least one label outside the shared
+  subgraphs' vocabulary (`cook.reference_vocabulary`), that the paper's rule or the cook
+  mode accepts (>= 0.89; the cook mode's breadth vocabulary joined by those labels, as a
+  user's run on them would), plus `RANDOM_OUTSIDE` seeded pairs from the rest (`random`);
+- `unsampled`: pairs of the shared vocabulary that either mode accepts and that
+  `similarity_pairs.tsv` does not yet hold.
+
+The sources (`paper+cook`, `paper`, `cook`, `random`) name the modes at the commit the
+batch was drawn on (see `similarity_rubric.md`); rerun there to reproduce the file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import itertools
+import json
+import random
+from pathlib import Path
+
+from foon2pddl.generalize.cook import reference_vocabulary
+from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
+from foon2pddl.generalize.modes import make_similarity
+from foon2pddl.model.foon import normalize_label
+
+from .similarity import read_pairs
+
+SEED, RANDOM_OUTSIDE = 23, 36
+
+
+def search_labels(shared: Path) -> list[str]:
+    """Object, ingredient and container labels of the search inputs, normalized and sorted."""
+    out: set[str] = set()
+    for name in ("kitchen.json", "goal_nodes.json"):
+        for item in json.loads((shared / "foon-search-inputs" / name).read_text(encoding="utf-8")):
+            out.update(normalize_label(x) for x in [item["label"], *(item.get("ingredients") or []),
+                                                     item.get("container") or ""])
+    return sorted(out - {""})
+
+
+def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
+    """(label_a, label_b, split, source) of the batch (module doc), in no particular order."""
+    reference = sorted(reference_vocabulary())
+    search = search_labels(shared)
+    paper = make_similarity("paper")
+    cook_outside = make_similarity("cook", search, reader=paper.reader)
+    cook_shared = make_similarity("cook", reader=paper.reader)
+    have = {frozenset((p.a, p.b)) for p in read_pairs()}
+    out, rest = [], []
+
+    def source(a: str, b: str, cook) -> str | None:
+        modes = [m for m, sim in (("paper", paper), ("cook", cook)) if sim(a, b) >= DEFAULT_THRESHOLD]
+        return "+".join(modes) or None
+
+    known = set(reference)
+    for a, b in itertools.combinations(search, 2):
+        if a in known and b in known:
+            continue
+        found = source(a, b, cook_outside)
+        if found:
+            out.append((a, b, "outside", found))
+        else:
+            rest.append((a, b))
+    out += [(a, b, "outside", "random") for a, b in random.Random(SEED).sample(rest, RANDOM_OUTSIDE)]
+    for a, b in itertools.combinations(reference, 2):
+        found = source(a, b, cook_shared) if frozenset((a, b)) not in have else None
+        if found:
+            out.append((a, b, "unsampled", found))
+    return out
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(prog="python -m bench.similarity_sample", description=__doc__)
+    ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
+    ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
+    ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
+    args = ap.parse_args()
+    rows = sorted(candidates(args.shared))
+    random.Random(SEED).shuffle(rows)
+    with open(args.blind, "w", encoding="utf-8", newline="") as fh:
+        w = csv.writer(fh, delimiter="\t", lineterminator="\n")
+        w.writerow(["label_a", "label_b", "label"])
+        w.writerows((a, b, "") for a, b, _, _ in rows)
+    with open(args.key, "w", encoding="utf-8", newline="") as fh:
+        w = csv.writer(fh, delimiter="\t", lineterminator="\n")
+        w.writerow(["label_a", "label_b", "split", "source"])
+        w.writerows(rows)
+    print(f"{len(rows)} pairs -> {args.blind}; key -> {args.key}")
+
+
+if __name__ == "__main__":
+    main()
