@@ -5,27 +5,33 @@ come from the shared subgraphs. A mode accepts a pair when its similarity is at
 least the FOON-EXP threshold (0.89). Per mode and split (`independent`, `tune`, all):
 precision = good accepted / accepted, recall = good accepted / good, each with a
 Wilson 95 % score interval (`fresh`: a second batch labelled after tuning; `held-out`:
-it and `independent`). The cook mode's breadth vocabulary is the shipped
-reference vocabulary (the shared subgraphs' labels), so no network is read.
+it and `independent`; `outside` and `unsampled`: a third batch, every pair either mode
+accepts on the search inputs' labels outside the shared subgraphs and on the shared
+labels not sampled before, see `similarity_sample.py`; `unseen`: both). The cook mode's
+breadth vocabulary is the shipped reference vocabulary (the shared subgraphs' labels)
+joined, for `outside`, by the search inputs' labels as a user's run on them would.
 Also reported per mode: the share of accepted pairs labelled bad.
 """
 
 from __future__ import annotations
 
 import csv
+import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
 
 from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
 from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity
+from foon2pddl.model.foon import normalize_label
 
 from .harness import Context
 
 AREA = "similarity"
 PAIRS = Path(__file__).with_name("similarity_pairs.tsv")
-SPLITS = ("independent", "fresh", "held-out", "tune", "all")
-HELD_OUT = ("independent", "fresh")
+SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "tune", "all")
+#: Groups of splits reported together: the held-out batches, and the third batch (`similarity_sample`).
+GROUPS = {"held-out": ("independent", "fresh"), "unseen": ("outside", "unsampled")}
 Z95 = 1.959963984540054
 
 
@@ -77,16 +83,35 @@ def score(pairs: list[Pair], accepts) -> Scores:
                   sum(p.label == "bad" for p in acc))
 
 
+def search_labels(shared: Path) -> list[str]:
+    """Object, ingredient and container labels of the search inputs (`foon-search-inputs/kitchen.json`
+    and `goal_nodes.json`), normalized and sorted: the outside vocabulary of the `outside` split."""
+    out: set[str] = set()
+    for name in ("kitchen.json", "goal_nodes.json"):
+        for item in json.loads((shared / "foon-search-inputs" / name).read_text(encoding="utf-8")):
+            out.update(normalize_label(x) for x in [item["label"], *(item.get("ingredients") or []),
+                                                     item.get("container") or ""])
+    return sorted(out - {""})
+
+
+def accepted(pairs: list[Pair], mode: str, outside: list[str], reader=None):
+    """Keys (frozensets) of the pairs `mode` accepts; an `outside` pair is scored with the labels
+    `outside` joining the cook mode's breadth vocabulary. Returns the keys and the WordNet reader."""
+    sims = {False: make_similarity(mode, reader=reader)}
+    sims[True] = make_similarity(mode, outside, reader=sims[False].reader)
+    keys = {frozenset((p.a, p.b)) for p in pairs if sims[p.split == "outside"](p.a, p.b) >= DEFAULT_THRESHOLD}
+    return keys, sims[False].reader
+
+
 def run(ctx: Context) -> None:
     pairs = read_pairs()
+    outside = search_labels(ctx.shared)
     reader = None
     for mode in SIMILARITY_MODES:
-        sim = make_similarity(mode, reader=reader)
-        reader = sim.reader
+        keys, reader = accepted(pairs, mode, outside, reader)
         for split in SPLITS:
-            chosen = [p for p in pairs if split == "all" or p.split == split
-                      or (split == "held-out" and p.split in HELD_OUT)]
-            s = score(chosen, lambda a, b, sim=sim: sim(a, b) >= DEFAULT_THRESHOLD)
+            chosen = [p for p in pairs if split == "all" or p.split == split or p.split in GROUPS.get(split, ())]
+            s = score(chosen, lambda a, b, keys=keys: frozenset((a, b)) in keys)
             p, plo, phi = s.precision()
             r, rlo, rhi = s.recall()
             note = (f"{len(chosen)} pairs, {s.good} good, {s.accepted} accepted ({s.bad_accepted} bad)")

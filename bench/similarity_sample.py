@@ -23,28 +23,16 @@ from __future__ import annotations
 import argparse
 import csv
 import itertools
-import json
 import random
 from pathlib import Path
 
 from foon2pddl.generalize.cook import reference_vocabulary
 from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
 from foon2pddl.generalize.modes import make_similarity
-from foon2pddl.model.foon import normalize_label
 
-from .similarity import read_pairs
+from .similarity import read_pairs, search_labels
 
 SEED, RANDOM_OUTSIDE = 23, 36
-
-
-def search_labels(shared: Path) -> list[str]:
-    """Object, ingredient and container labels of the search inputs, normalized and sorted."""
-    out: set[str] = set()
-    for name in ("kitchen.json", "goal_nodes.json"):
-        for item in json.loads((shared / "foon-search-inputs" / name).read_text(encoding="utf-8")):
-            out.update(normalize_label(x) for x in [item["label"], *(item.get("ingredients") or []),
-                                                     item.get("container") or ""])
-    return sorted(out - {""})
 
 
 def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
