@@ -7,11 +7,12 @@ the labels are committed. The populations (all pairs, not samples, so precision 
 recall need no weights):
 
 - `outside`: pairs of the labels of `foon-search-inputs/kitchen.json` and `goal_nodes.json`
-  (object labels, ingredients and containers) with at least one label outside the shared
-  subgraphs' vocabulary (`cook.reference_vocabulary`), that the paper's rule or the cook
+  (object labels, ingredients and containers) with at least one label outside the
+  reference vocabulary (`cook.reference_vocabulary`: the shared subgraphs' and the
+  example's labels), that the paper's rule or the cook
   mode accepts (>= 0.89; the cook mode's breadth vocabulary joined by those labels, as a
   user's run on them would), plus `RANDOM_OUTSIDE` seeded pairs from the rest (`random`);
-- `unsampled`: pairs of the shared vocabulary that either mode accepts and that
+- `unsampled`: pairs of the reference vocabulary that either mode accepts and that
   `similarity_pairs.tsv` does not yet hold.
 
 The sources (`paper+cook`, `paper`, `cook`, `random`) name the modes at the commit the

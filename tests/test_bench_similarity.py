@@ -3,23 +3,35 @@
 from __future__ import annotations
 
 import pytest
-from conftest import SUBGRAPHS
+from conftest import SEARCH_INPUTS, SUBGRAPHS
 
-from bench.similarity import Pair, read_pairs, score, wilson
+from bench.similarity import Pair, read_pairs, score, search_labels, wilson
+from foon2pddl.generalize.cook import reference_vocabulary
 from foon2pddl.generalize.expand import vocabulary
 from foon2pddl.io.inputs import load_network
 
 
-def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs():
+def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_search_inputs():
     pairs = read_pairs()
-    assert len(pairs) >= 200
+    assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
-    assert {p.split for p in pairs} == {"independent", "tune", "fresh"}
-    assert {p.source for p in pairs} == {"paper-proposed", "cook-proposed", "random"}
+    assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled"}
+    third = {"paper+cook", "paper", "cook", "random"}
+    assert {p.source for p in pairs if p.split in ("outside", "unsampled")} <= third
+    assert {p.source for p in pairs if p.split not in ("outside", "unsampled")} == {
+        "paper-proposed", "cook-proposed", "random"}
     keys = [frozenset((p.a, p.b)) for p in pairs]
     assert len(set(keys)) == len(keys) and all(len(k) == 2 for k in keys)
-    labels = set(vocabulary(load_network([SUBGRAPHS]).foon))
-    assert all(p.a in labels and p.b in labels for p in pairs)
+    shared = set(vocabulary(load_network([SUBGRAPHS]).foon))
+    search = set(search_labels(SEARCH_INPUTS.parent))
+    reference = set(reference_vocabulary())  # the shared subgraphs' labels and the example's
+    for p in pairs:
+        if p.split == "outside":  # search-input labels, at least one not in the reference vocabulary
+            assert {p.a, p.b} <= search and not {p.a, p.b} <= reference, p
+        elif p.split == "unsampled":
+            assert {p.a, p.b} <= reference, p
+        else:
+            assert {p.a, p.b} <= shared, p
 
 
 def test_wilson_interval_matches_the_closed_form_values():

@@ -37,11 +37,12 @@ def test_shipped_index_size_and_shape():
             assert m in ix.get(ix.choose(m)).members
 
 
-def test_lemon_and_lime_share_citrus():
+def test_lemon_and_lime_share_sour_citrus():
     ix = shipped_index()
-    assert "citrus fruits" in ix.of("lemon") and "citrus fruits" in ix.of("lime")
-    assert ix.choose("lemon") == ix.choose("lime") == "citrus fruits"
-    assert ix.ancestors("citrus fruits") == ("fruits",)
+    assert ix.of("lemon") == ix.of("lime") == ("lemons and limes",)
+    assert ix.choose("lemon") == ix.choose("lime") == "lemons and limes" != ix.choose("orange") == "oranges"
+    assert ix.ancestors("lemons and limes") == ix.ancestors("oranges") == ("citrus fruits", "fruits")
+    assert {"lemon", "orange"} <= ix.members_of("citrus fruits")
 
 
 def test_coverage_of_the_shared_subgraphs_and_the_example(example):
@@ -85,17 +86,18 @@ def test_compress_merges_units_of_one_category():
                                  (make_node(f, [make_state("halved")]),), (Source(f"{f}.foon", 1),))
                   for f in ("lemon", "lime", "orange"))
     c = compress(Foon(units), ix)
-    assert len(c.foon.units) == 1 and c.removed_units == 2
-    (u,) = c.foon.units
-    assert {n.label for n in u.inputs} == {"citrus fruits", "cutting tools"}
-    assert [s.path for s in u.sources] == ["lemon.foon", "lime.foon", "orange.foon"]  # provenance joined
+    assert len(c.foon.units) == 2 and c.removed_units == 1  # lemon and lime merge; orange is sweet citrus
+    u, o = c.foon.units
+    assert {n.label for n in u.inputs} == {"lemons and limes", "cutting tools"}
+    assert [s.path for s in u.sources] == ["lemon.foon", "lime.foon"]  # provenance joined
+    assert {n.label for n in o.inputs} == {"oranges", "cutting tools"}
 
 
 def test_abstract_kitchen_and_goal():
     ix = shipped_index()
     k = Kitchen(frozenset({make_node("lime", [make_state("in", "bowl")]), make_node("xyzzy")}))
     ak = abstract_kitchen(k, ix)
-    assert make_node("citrus fruits", [make_state("in", "bowls")]) in ak and make_node("xyzzy") in ak
+    assert make_node("lemons and limes", [make_state("in", "bowls")]) in ak and make_node("xyzzy") in ak
     spec = abstract_goal(parse_goal_spec("lemonade: contains {lemon juice, sugar}, in [pitcher]"), ix)
     assert spec.label == "beverages"
     assert {s.describe() for s in spec.states} == {"contains {juices, sugars}", "in [pitchers and jugs]"}

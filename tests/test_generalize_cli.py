@@ -90,7 +90,7 @@ def test_generalize_writes_category_network(run, tmp_path):
     r = run("generalize", "-o", str(out))
     assert r.exit_code == 0, r.stderr
     labels = {n.label for u in parse_file(out).foon.units for n in u.inputs}
-    assert "citrus fruits" in labels and "lemon" not in labels
+    assert "lemons and limes" in labels and "lemon" not in labels
 
 
 def test_network_option_on_retrieve(run):
@@ -98,7 +98,7 @@ def test_network_option_on_retrieve(run):
     exp = run("retrieve", "--goal", "lemonade", "--network", "exp")
     assert exp.exit_code == 0 and "lime (whole)" in exp.stdout
     gen = run("retrieve", "--goal", "lemonade", "--network", "gen")
-    assert gen.exit_code == 0 and "citrus fruits (whole)" in gen.stdout
+    assert gen.exit_code == 0 and "lemons and limes (whole)" in gen.stdout
 
 
 def test_network_option_on_plan(run):
@@ -119,10 +119,10 @@ def test_compile_gen_writes_typed_pddl_that_parses(run, tmp_path):
     assert r.exit_code == 0, r.stderr
     domain = parse_domain(tmp_path / "domain.pddl")
     problem = parse_problem(tmp_path / "problem.pddl")
-    assert any(t == "citrus_fruits" for t in domain.types)
+    assert any(t == "lemons_and_limes" for t in domain.types)
     assert any(a.parameters for a in domain.actions)
     declared = {o.name: o.type_tag for o in (*problem.objects, *domain.constants)}
-    assert declared["lime"] == declared["lemon"] == "citrus_fruits"
+    assert declared["lime"] == declared["lemon"] == "lemons_and_limes"
 
 
 def test_exp_tree_names_its_substitutions_and_similarity_is_an_option(run):

@@ -87,11 +87,12 @@ def test_lifted_task_types_and_objects(example, kitchen):
     goal = resolve_goal(parse_goal_spec("lemonade"), example.foon)
     lt = encode_lifted(example.foon, kitchen, goal, INDEX)
     types = dict(lt.task.types)
-    assert types["citrus_fruits"] == "fruits" and types["fruits"] == "kitchen-object"
+    assert types["lemons_and_limes"] == "citrus_fruits" and types["citrus_fruits"] == "fruits"
+    assert types["fruits"] == "kitchen-object"
     declared = dict(lt.task.objects + lt.task.constants)
-    assert declared["lime"] == "citrus_fruits" and declared["lemon"] == "citrus_fruits"
+    assert declared["lime"] == "lemons_and_limes" and declared["lemon"] == "lemons_and_limes"
     squeeze = next(a for a in lt.task.actions if a.name.startswith("squeeze"))
-    assert [t for _, t in squeeze.params] == ["citrus_fruits"]  # only the missing lemon is a parameter
+    assert [t for _, t in squeeze.params] == ["lemons_and_limes"]  # only the missing lemon is a parameter
 
 
 def test_bad_plan_step_is_a_decode_error(example, kitchen):

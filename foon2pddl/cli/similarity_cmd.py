@@ -92,6 +92,6 @@ def _why(a: str, b: str, ev) -> str:
     if not ev.ancestor:
         return f"{a} ~ {b}: no common ancestor\n"
     verdict = f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary" if ev.rejected == "broad" \
-        else ("rejected: siblings in no common category" if ev.rejected == "category"
+        else ("rejected: the categories do not group them" if ev.rejected == "category"
               else f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -19,15 +19,17 @@ head nouns and modifiers, see `similarity.py`) and changes five things:
    labels of the 100 public FOON subgraphs and the example network) plus the labels of
    the matrix being computed, so a value does not depend on how small a network is.
 
-4. Variants (dish compounds) are not substitutes (`variant`).
-5. Kinds, or kin by the categories: a pair whose best sense pair is a kind and a
-   more specific kind of it (one sense the other's ancestor: pan~saucepan, mixer~egg
-   beater) stands; any other pair, siblings under a common ancestor (microwave~oven,
-   fork~spoon) or two compounds known by one head sense (bowl~food processor bowl),
-   stands only if FOON-GEN's category index (`categories.json`, hand-made) puts the two
-   labels in one category or one in a refinement of the other's (any of their
-   categories), and scores 0 otherwise (`category`). A label in no category is not
-   constrained.
+4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
+   `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
+   sauces are made from) is an ingredient, so vegetable broth~broth stands.
+5. Kin by the categories: a pair stands only if FOON-GEN's category index
+   (`categories.json`, hand-made) puts the two labels in one category or one in a
+   refinement of the other's (any of their categories), and scores 0 otherwise
+   (`category`): siblings (microwave~oven, fork~spoon), two compounds of one head sense
+   (bowl~food processor bowl) and a kind with a narrower kind alike (cheese~parmesan,
+   melting and hard cheeses; frying pan~muffin pan). A label in no category is not
+   constrained. WordNet says how close two things are; the categories say which of
+   them a cook swaps.
 
 The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
 with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
@@ -61,6 +63,9 @@ KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
 
 #: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
 PREPARED: frozenset[str] = frozenset({"dish.n.02", "baked_goods.n.01", "beverage.n.01"})
+
+#: Prepared foods that recipes use as ingredients (rule 4): stock and broth (under soup in WordNet).
+INGREDIENTS: frozenset[str] = frozenset({"broth.n.01"})
 
 
 def _data(name: str) -> Path:
@@ -123,12 +128,6 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
     return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text())
 
 
-def kind_of(e: Evidence) -> bool:
-    """Whether the sense pair of `e` is a kind and a more specific kind of it (rule 5): two senses, one the
-    other's common ancestor."""
-    return e.sense_a != e.sense_b and e.ancestor in (e.sense_a, e.sense_b)
-
-
 def kin(index: CategoryIndex, a: str, b: str) -> bool:
     """Whether `index` puts `a` and `b` in one category or one in a refinement of the other's (any of their
     categories); True when either is in none (rule 5)."""
@@ -181,8 +180,10 @@ class CookSimilarity:
     def variant(self, r: Resolution) -> bool:
         """Whether a label known by its head noun is a recipe's preparation (rule 4): a food whose head is a
         prepared food (`PREPARED`), or whose modifier ends in a food (garlic-parmesan chicken) or a past
-        participle (barbecued ribs)."""
+        participle (barbecued ribs); never a stock or broth (`INGREDIENTS`: vegetable broth)."""
         if not r.senses or not all(k == "noun.food" for k in r.lexnames):
+            return False
+        if any(self._wup.ancestors(x) & INGREDIENTS for x in r.senses):
             return False
         last = (r.modifier or "").split()[-1:]
         if last and last[0].endswith("ed") and self.reader.morphy(last[0], "v") not in (None, last[0]):
@@ -202,7 +203,7 @@ class CookSimilarity:
         found = self._evidence.get((a, b))
         if found is None:
             found = self._compute(a, b)
-            if found.similarity and not found.rejected and self.categories is not None and not kind_of(found) \
+            if found.similarity and not found.rejected and self.categories is not None \
                     and not kin(self.categories, a, b):
                 found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
             self._evidence[(a, b)] = found
@@ -234,7 +235,7 @@ class CookSimilarity:
         if ra.modifier is not None and rb.modifier is not None:
             heads = self._best(ra.senses, rb.senses, 0)
             mod = self._modifiers(ra.modifier, rb.modifier)
-            if mod.rejected and mod.rejected != "fixed" and heads.similarity:
+            if mod.rejected not in ("", "fixed", "same") and heads.similarity:  # same modifier: the heads decide
                 return Evidence(0.0, mod.ancestor, mod.sense_a, mod.sense_b, mod.breadth, mod.rejected)
             return Evidence(heads.similarity * mod.similarity, heads.ancestor, heads.sense_a, heads.sense_b,
                             heads.breadth, heads.rejected)

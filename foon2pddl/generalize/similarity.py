@@ -39,7 +39,7 @@ class Evidence:
     `rejected`: "" (accepted), "broad" (the best sense pair's ancestor is too broad, `cook.py`),
     "forbidden" (in the overrides), "fixed" (value from the overrides), "unknown" (a label
     without sense), "same" (a label and itself), "variant" (a dish compound and a label, `cook.py`
-    rule 4), "category" (siblings FOON-GEN's categories do not group, rule 5).
+    rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5).
     """
 
     similarity: float
