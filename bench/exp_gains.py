@@ -62,7 +62,9 @@ def run(ctx: Context) -> None:
         found = gains(net, mode, protocol)
         unlabelled = sorted({" ~ ".join(sorted(p)) for g in found for p in g if p not in known})
         good = sum(all(known.get(p) == "good" for p in g) for g in found)
+        usable = sum(all(known.get(p) in ("good", "marginal") for p in g) for g in found)
+        bad = sum(any(known.get(p) == "bad" for p in g) for g in found)
         share = good / len(found) if found else 0.0
         ctx.report(AREA, f"{mode}: EXP gains on good substitutions alone", share, "",
-                   f"{good} of {len(found)} gains; {len(unlabelled)} unlabelled pairs"
-                   + (f": {', '.join(unlabelled[:10])}" if unlabelled else ""))
+                   f"{good} of {len(found)} gains; {usable} on good or marginal ones, {bad} need a bad one; "
+                   f"{len(unlabelled)} unlabelled pairs" + (f": {', '.join(unlabelled[:10])}" if unlabelled else ""))
