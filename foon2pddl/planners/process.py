@@ -34,6 +34,12 @@ TAIL_BYTES = 256 * 1024
 MAX_TIMEOUT = 1e6
 
 
+def cpu_seconds() -> float:
+    """CPU time (user + system) of this process and of the child processes it has waited for (planner runs)."""
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + kids.ru_utime + kids.ru_stime
+
+
 @dataclass(frozen=True)
 class ProcessRun:
     """How a process ended: exit code (None when killed at the time limit), its output

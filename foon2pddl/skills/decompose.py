@@ -3,8 +3,9 @@
 For each step of a `PhysicalTrace`: the motion's skill (`skills.table`; its `by_hand` skill when the step lists no tool); none,
 and the step stays **abstract** (reported by its motion, kept in place). Otherwise
 its micro problem (`skills.micro`) is solved with Fast Downward on the skill
-domain pruned to the transport skills and the step's own (`skills.fd_micro`); a
-step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
+domain pruned to the transport skills and the step's own (`skills.fd_micro`), once
+per shape (`skills.memo`: a task equal to an earlier step's up to renaming objects
+takes its plan, renamed back); a step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
 with the planner's reason, and kept as an abstract step too. The skill sequences
 are concatenated and replayed from the start by `skills.replay`, which checks
 every precondition and, after every macro step, that the state is the trace's.
@@ -12,6 +13,7 @@ every precondition and, after every macro step, that the state is the trace's.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from enum import StrEnum
@@ -19,8 +21,10 @@ from enum import StrEnum
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import Validation
 from ..pddl.task import Atom
+from ..planners.process import cpu_seconds
 from .domain import SkillDomain
 from .fd_micro import solve_micro
+from .memo import MicroMemo
 from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem
 from .profile import Robot
 from .replay import Replayer, SkillError, check
@@ -64,8 +68,10 @@ class MacroSkills:
     reason: str
     calls: tuple[SkillCall, ...]
     problem: MicroProblem | None
-    seconds: float
+    seconds: float  # planning this step (micro problem, memo lookup, translate + search): wall
     what: str = ""  # the unit: `lime (whole), knife -> lime (halved)`
+    cpu: float = 0.0  # the same, CPU of this process and of the planner processes it waited for
+    reused: bool = False  # the plan of an earlier step's equal micro task, renamed (`skills.memo`)
 
 
 @dataclass(frozen=True)
@@ -104,14 +110,16 @@ def _fd(domain_text: str, problem_text: str) -> tuple[str, tuple[str, ...], str,
 
 
 def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: SkillDomain, robot: Robot,
-               naming: Naming, roles, solver: Solver) -> tuple[MacroSkills, tuple[tuple[str, tuple[str, ...]], ...]]:
+               naming: Naming, roles, solver: Solver, memo: MicroMemo) -> tuple[MacroSkills, tuple[tuple[str, tuple[str, ...]], ...]]:
+    wall0, cpu0 = time.perf_counter(), cpu_seconds()
     step = trace.steps[index]
     motion = step.unit.motion.label
     skill = table.skill_of(motion)
 
-    def out(status, reason, problem=None, seconds=0.0, calls=()):
+    def out(status, reason, problem=None, calls=(), reused=False):
         what = step.unit.describe().split(": ", 1)[-1]
-        return MacroSkills(index, motion, step.source, skill, status, reason, (), problem, seconds, what), calls
+        return MacroSkills(index, motion, step.source, skill, status, reason, (), problem,
+                           time.perf_counter() - wall0, what, cpu_seconds() - cpu0, reused), calls
 
     if skill is None:
         return out(StepStatus.ABSTRACT, f"motion {motion!r} has no skill in the motion table")
@@ -127,11 +135,12 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
         skill = hand
         problem = micro_problem(trace, index, skill, naming, domain, roles)
     keep = {a for a in problem.actions if not robot.lacks(a)}
-    status, plan, message, seconds = solver(domain.pruned(keep, robot.cost_table), problem.text)
+    (status, plan, message, _), reused = memo.solve(solver, domain.pruned(keep, robot.cost_table, problem.init), problem,
+                                                    (*naming.hands, naming.workspace))
     if status != "solved":
-        return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, seconds)
+        return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)
-    return out(StepStatus.DECOMPOSED, "", problem, seconds, calls)
+    return out(StepStatus.DECOMPOSED, "", problem, calls, reused)
 
 
 def _has_tool(problem: MicroProblem) -> bool:
@@ -139,19 +148,23 @@ def _has_tool(problem: MicroProblem) -> bool:
 
 
 def decompose(trace: PhysicalTrace, table: MotionTable, domain: SkillDomain, robot: Robot | None = None,
-              solver: Solver = _fd) -> SkillPlan:
-    """Decompose and replay (see the module doc). One micro task per step; the replay is linear in the skills.
+              solver: Solver = _fd, memo: MicroMemo | None = None) -> SkillPlan:
+    """Decompose and replay (see the module doc). One micro task per step, solved once per shape (`skills.memo`:
+    a step whose task equals an earlier one's up to renaming objects takes its plan, renamed); the replay is
+    linear in the skills.
 
     `robot`: default one hand, every skill, each costing 1. `solver(domain text, problem text)` returns
-    (status, plan lines, message, seconds); default Fast Downward (`fd_micro`).
+    (status, plan lines, message, seconds); default Fast Downward (`fd_micro`). `memo`: default a fresh one
+    (the result depends on this trace alone); pass one to share solved shapes between plans.
     """
     robot = robot if robot is not None else Robot()
+    memo = memo if memo is not None else MicroMemo()
     naming = Naming(trace, domain, robot.hands)
     roles = _roles(trace)
     everyone = tuple(o.id for o in trace.objects)
     types = {**{h: "hand" for h in naming.hands}, naming.workspace: "thing", **{n: "thing" for n in naming.ids.values()}}
     base = {Atom("placed", (naming.workspace,))} | {Atom("hand-empty", (h,)) for h in naming.hands}
-    planned = [_plan_step(trace, k, table, domain, robot, naming, roles, solver) for k in range(len(trace.steps))]
+    planned = [_plan_step(trace, k, table, domain, robot, naming, roles, solver, memo) for k in range(len(trace.steps))]
     for states in trace.states():  # name every phase before the replay's universe is fixed
         dynamic_facts(naming, states, everyone)
     phases = {n: "phase" for (key, n) in _phase_names(naming)}

@@ -7,12 +7,17 @@ hand), a `skill` constant `sk-K` that tags the step facts K carries out. A domai
 lacks any of them is rejected with the file and line, before anything is planned.
 `pruned` gives the domain text with only some actions (their exact text), so a micro
 task is translated with the few skills its step can use, and with a robot's per-skill
-costs written into each kept action's `(increase (total-cost) N)`.
+costs written into each kept action's `(increase (total-cost) N)`. Given the task's
+initial facts, it also cuts every effect conjunct of a kept action that is guarded by a
+static atom no initial fact matches (`(forall (?x ?w ?d - thing) (when (and (moves-in
+sk-cut ?x ?d) ...) ...))` in a step that moves nothing): a static predicate (one no
+action's effect names) false in the initial state stays false, so the conjunct never
+fires, and the translator need not ground it (an n^3 forall for nothing).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from importlib import resources
@@ -20,6 +25,7 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..io.parser import read_text
+from ..pddl.task import Atom
 from .sexpr import SexprError, SList, parse, typed_list
 
 __all__ = ["DEFAULT_DOMAIN", "PREDICATES", "SKILL_PREFIX", "TRANSPORT", "ActionSchema", "SkillDomain", "parse_domain",
@@ -53,6 +59,49 @@ class ActionSchema:
     cost_span: tuple[int, int] | None = None  # the `(increase (total-cost) N)` effect
 
 
+Pattern = tuple[str, tuple[str | None, ...]]  # a static atom: predicate, constants (None: a variable)
+
+
+def _effect_atoms(node, out: set[str]) -> None:
+    """Heads of the atoms `node` (an effect) adds or deletes (not those its `when` conditions test)."""
+    if not isinstance(node, SList) or not node.items:
+        return
+    if node.head in ("and", "not"):
+        for x in node.items[1:]:
+            _effect_atoms(x, out)
+    elif node.head == "forall" and len(node) > 2:
+        _effect_atoms(node.items[2], out)
+    elif node.head == "when" and len(node) > 2:
+        _effect_atoms(node.items[2], out)
+    elif node.head not in ("increase", "decrease", "assign", "scale-up", "scale-down", None):
+        out.add(node.head)
+
+
+def _guards(part, static: frozenset[str]) -> tuple[Pattern, ...]:
+    """The static atoms a top-level effect conjunct `(when C E)` or `(forall V (when C E))` needs: C's
+    positive atoms (through `and`) whose predicate is static."""
+    if isinstance(part, SList) and part.head == "forall" and len(part) > 2:
+        part = part.items[2]
+    if not (isinstance(part, SList) and part.head == "when" and len(part) > 2):
+        return ()
+    out, todo = [], [part.items[1]]
+    while todo:
+        c = todo.pop()
+        if not isinstance(c, SList) or not c.items:
+            continue
+        if c.head == "and":
+            todo += c.items[1:]
+        elif c.head in static and all(isinstance(x, str) for x in c.items):
+            out.append((c.head, tuple(None if x.startswith("?") else x for x in c.items[1:])))
+    return tuple(out)
+
+
+def _matched(pattern: Pattern, facts: Mapping[str, list[tuple[str, ...]]]) -> bool:
+    pred, args = pattern
+    return any(len(f) == len(args) and all(a is None or a == x for a, x in zip(args, f, strict=True))
+               for f in facts.get(pred, ()))
+
+
 @dataclass(frozen=True)
 class SkillDomain:
     """A checked skill domain: its text and path, name, `skill` constants (sorted) and actions (in file order)."""
@@ -67,10 +116,36 @@ class SkillDomain:
     def by_name(self) -> dict[str, ActionSchema]:
         return {a.name: a for a in self.actions}
 
-    def pruned(self, keep: set[str] | frozenset[str], costs: Mapping[str, int] | None = None) -> str:
+    @cached_property
+    def static(self) -> frozenset[str]:
+        """Predicates no action's effect adds or deletes: true or false for a whole task, as its init says."""
+        changed: set[str] = set()
+        for a in self.actions:
+            _effect_atoms(a.effect, changed)
+        return frozenset(PREDICATES) - changed
+
+    @cached_property
+    def guarded(self) -> dict[str, tuple[tuple[tuple[int, int], tuple[Pattern, ...]], ...]]:
+        """Per action, the (span, static guards) of each top-level effect conjunct that has guards."""
+        out = {}
+        for a in self.actions:
+            parts = a.effect.items[1:] if a.effect is not None and a.effect.head == "and" else ()
+            out[a.name] = tuple(((p.start, p.end), g) for p in parts if isinstance(p, SList) and (g := _guards(p, self.static)))
+        return out
+
+    def pruned(self, keep: set[str] | frozenset[str], costs: Mapping[str, int] | None = None,
+               init: Iterable[Atom] | None = None) -> str:
         """The domain text with only the actions named in `keep` (the others cut out), and the cost of
-        each kept action in `costs` written into its `(increase (total-cost) N)`; nothing else changed."""
+        each kept action in `costs` written into its `(increase (total-cost) N)`; given a task's `init`,
+        the kept actions' effect conjuncts with a static guard no init fact matches cut out too (see the
+        module doc). Nothing else changed. O(domain text + guards x matching facts)."""
         cuts = [(a.span, "") for a in self.actions if a.name not in keep]
+        if init is not None:
+            facts: dict[str, list[tuple[str, ...]]] = {}
+            for atom in init:
+                facts.setdefault(atom.predicate, []).append(atom.args)
+            cuts += [(span, "") for a in self.actions if a.name in keep for span, guards in self.guarded[a.name]
+                     if not all(_matched(g, facts) for g in guards)]
         cuts += [(a.cost_span, f"(increase (total-cost) {int(costs[a.name])})") for a in self.actions
                  if a.name in keep and costs and a.name in costs and a.cost_span is not None]
         out, at = [], 0
