@@ -11,11 +11,12 @@ from ..model.constraints import Constraints
 from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
 from ..pddl.compile import ENCODINGS
+from ..pddl.task import goal_at_start
 from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
 from .progress import slow_step
-from .reasons import unreachable_reason, why_unsolvable
+from .reasons import ALREADY_HELD, unreachable_reason, why_unsolvable
 
 
 def _resolve(view, entry, encoding: str | None = None):
@@ -65,7 +66,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         if shared and lifted:
             task = compile_task(view.foon, view.kitchen, goal, encoding, level, False, costs, rates, **encoder_options)
         row = _row(entry, goal, BatchStatus.COMPILED, time.perf_counter() - t0,
-                   units=sum(a.unit is not None for a in task.actions))
+                   ALREADY_HELD if goal_at_start(task) else "", units=sum(a.unit is not None for a in task.actions))
         task = untyped(task) if untype else task
         if shared:
             compiled.append((goal.describe(), task))

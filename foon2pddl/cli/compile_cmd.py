@@ -14,7 +14,7 @@ from ..io.rates import read_rates
 from ..pddl.compile import compile_task, encoding_named
 from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
-from ..pddl.task import PlanningTask
+from ..pddl.task import PlanningTask, goal_at_start
 from ..pddl.untyped import untyped
 from . import main
 from .batch import batch_entries
@@ -34,6 +34,7 @@ from .options import (
     single_goal,
     view_goal,
 )
+from .reasons import ALREADY_HELD
 
 
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
@@ -126,3 +127,5 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
     click.echo(f"wrote {output_dir / 'domain.pddl'} and {output_dir / 'problem.pddl'} "
                f"({task.encoding} encoding, level {task.level}: {units} unit actions, "
                f"{len(task.predicates)} predicates)")
+    if goal_at_start(task):
+        click.echo(f"note: {ALREADY_HELD}")

@@ -183,7 +183,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
         view = outcome.compiled.view
-        if fmt in STEP_FORMATS and view is not None and outcome.trace is not None:
+        if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
     if fmt == "json":
         data = outcome_json(outcome, timings, data)

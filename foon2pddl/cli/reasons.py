@@ -14,6 +14,9 @@ from pathlib import Path
 
 import click
 
+#: What `compile` says of a task whose goal holds in its initial state (`pddl.task.goal_at_start`).
+ALREADY_HELD = "the goal already holds in the kitchen: the plan is empty"
+
 #: Seconds the lifted planner may take to confirm a `--network gen` hint.
 GEN_HINT_TIME_LIMIT = 30.0
 

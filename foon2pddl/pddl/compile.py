@@ -29,7 +29,7 @@ from .encoding import EncodeOptions
 from .instance_replay import INSTANCE_VIEW, instance_trace
 from .registry import Compiled, Encoding
 from .relational_replay import RELATIONAL_VIEW, relational_trace
-from .task import PlanningTask
+from .task import PlanningTask, settle_goal
 
 __all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "as_compiled", "compile_goal", "compile_task",
            "encoding_named", "register"]
@@ -84,7 +84,8 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
     `category_index` and `policy` by lifted ones (default: the shipped category index).
     With `constraints`, the one place they apply to every encoding (`constraints.py`): the network,
     kitchen and goal are filtered before encoding (GoalExcluded when no candidate remains) and
-    must-use objects join the goal after.
+    must-use objects join the goal after. A goal the kitchen already holds is put in the initial
+    state (`task.settle_goal`), so that every encoding's plan for it is empty.
 
     >>> from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
     >>> from foon2pddl.model.goal import Goal, GoalSpec
@@ -110,7 +111,8 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
     compiled = enc.compile(foon, kitchen, goal, level, options)
     if constraints:
         compiled = replace(compiled, task=add_must_use(compiled.task, constraints.must_use))
-    return compiled
+    settled = settle_goal(compiled.task)
+    return compiled if settled is compiled.task else replace(compiled, task=settled)
 
 
 def as_compiled(task: PlanningTask | Compiled) -> Compiled:

@@ -282,7 +282,8 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     actions, constants, pre_shapes = _unit_actions(lifted, names, options)
     add_shapes = {node_atom_labels(n, ordering)[0] for lu in lifted for n in lu.unit.outputs}
 
-    goal_reps = [(c, representations(c, ordering, add_shapes | pre_shapes)) for c in candidates]
+    held = {node_atom_labels(c, ordering)[0] for c in candidates if c in kitchen_nodes}  # no action need make them
+    goal_reps = [(c, representations(c, ordering, add_shapes | pre_shapes | held)) for c in candidates]
     init_shapes = pre_shapes | {s for _, reps in goal_reps for s, _ in reps}
     atoms = [(c, (names.ground_atom(s, labels),)) for c, reps in goal_reps for s, labels in reps]
     wanted = {p.predicate for a in actions for p in a.pre} | {x.predicate for _, xs in atoms for x in xs}

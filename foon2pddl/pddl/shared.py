@@ -86,10 +86,12 @@ def share_domain(goals: Sequence[tuple[str, PlanningTask]]) -> SharedSet:
     actions: list[Action] = list(base[3])
     predicates: list[Predicate] = list(_predicates(tasks).values())
     goal_atoms: list[tuple[Atom, ...]] = []
+    inits: list[tuple[Atom, ...]] = []  # a goal the kitchen holds starts reached (`task.settle_goal`)
     for text, t in goals:
         aux = [a for a in t.actions if a.unit is None]
         if not aux:
             goal_atoms.append(t.goal)
+            inits.append(t.init)
             continue
         reached = Atom(table.name(f"reached {text}", key=("reached", len(goal_atoms))))
         predicates.append(Predicate(reached.predicate, comment=f"goal {text} was made"))
@@ -99,6 +101,7 @@ def share_domain(goals: Sequence[tuple[str, PlanningTask]]) -> SharedSet:
                 add=tuple(reached if x == Atom(GOAL_REACHED) else x for x in a.add),
                 comment=(f"goal {text}", *a.comment)))
         goal_atoms.append(tuple(reached if x == Atom(GOAL_REACHED) else x for x in t.goal))
+        inits.append(tuple(reached if x == Atom(GOAL_REACHED) else x for x in t.init))
     constants = dict(c for t in tasks for c in t.constants)
     shared_comments = tuple(line for line in tasks[0].comments if all(line in t.comments for t in tasks[1:]))
     domain = replace(tasks[0], actions=tuple(actions), predicates=tuple(predicates),
@@ -106,8 +109,8 @@ def share_domain(goals: Sequence[tuple[str, PlanningTask]]) -> SharedSet:
                      comments=(*shared_comments, f"shared domain of {len(goals)} problems, one per goal"),
                      objects=(), init=(), goal=())
     problems = tuple(replace(domain, problem=t.problem, comments=t.comments, labels=t.labels, instances=t.instances,
-                             objects=tuple(o for o in t.objects if o[0] not in constants), init=t.init, goal=g)
-                     for t, g in zip(tasks, goal_atoms, strict=True))
+                             objects=tuple(o for o in t.objects if o[0] not in constants), init=i, goal=g)
+                     for t, i, g in zip(tasks, inits, goal_atoms, strict=True))
     return SharedSet(domain, problems)
 
 

@@ -8,7 +8,7 @@ through `Action.unit`. All names here are already sanitized PDDL identifiers
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from ..model.foon import ObjectNode
@@ -173,3 +173,60 @@ def released(state: set[Atom], release: tuple[tuple[str, str, Atom], ...], bind:
                     a == var or bind.get(a, a) == f for a, f in zip(atom.args, fact.args, strict=True)):
                 out.add(fact)
     return out
+
+
+def goal_at_start(task: PlanningTask) -> bool:
+    """Whether the task's goal holds in its initial state (its plan is empty)."""
+    return set(task.goal) <= set(task.init)
+
+
+def _bindings(pre: tuple[Atom, ...], facts: dict[str, list[Atom]], bind: dict[str, str]):
+    """Every binding of the `?variables` of `pre` (extending `bind`) under which each atom is in `facts`."""
+    if not pre:
+        yield bind
+        return
+    first, rest = pre[0], pre[1:]
+    for fact in facts.get(first.predicate, ()):
+        if len(fact.args) != len(first.args):
+            continue
+        new = dict(bind)
+        if all(new.setdefault(a, f) == f if a.startswith("?") else a == f
+               for a, f in zip(first.args, fact.args, strict=True)):
+            yield from _bindings(rest, facts, new)
+
+
+def settle_goal(task: PlanningTask) -> PlanningTask:
+    """`task` with its goal in its initial state when a goal action already applies there.
+
+    An encoding whose goal is `(goal-reached)` reaches it by a goal action (`Action.candidate`,
+    cost 0) from a candidate's atoms; when the kitchen already holds a candidate, that action
+    applies in the initial state, so the goal holds there: adding its atoms to `init` changes no
+    plan's validity, and planners and readers then see the empty plan every other encoding gives.
+    A parameterised goal action needs a binding whose objects have the parameters' types (subtypes
+    count). O(goal actions x init) for the one-atom preconditions the encodings write.
+    """
+    if goal_at_start(task):
+        return task
+    facts: dict[str, list[Atom]] = {}
+    for fact in task.init:
+        facts.setdefault(fact.predicate, []).append(fact)
+    parent = dict(task.types)
+    kind = dict(task.objects + task.constants)
+
+    def fits(obj: str, typ: str) -> bool:
+        t, seen = kind.get(obj, "object"), set()
+        while t not in seen:
+            if t == typ:
+                return True
+            seen.add(t)
+            t = parent.get(t, "object")
+        return typ == "object"
+
+    for action in task.actions:
+        if action.candidate is None or action.delete or not set(task.goal) <= set(action.add) | set(task.init):
+            continue
+        for bind in _bindings(action.pre, facts, {}):
+            if all(v in bind and fits(bind[v], t) for v, t in action.params):
+                held = set(task.init)
+                return replace(task, init=(*task.init, *(g for g in task.goal if g not in held)))
+    return task
