@@ -2,14 +2,17 @@
 
 Runs every command README.md and docs/*.md show (`bench/doc_commands.py`; commands that need
 the reader's own files are listed as skipped), plus `EXTRA`, the planner and network variants
-the docs name in prose, each from a scratch directory with `tests/` and `docs/` linked in and
-an empty `FOON2PDDL_CACHE` and `XDG_CACHE_HOME` (each command as a new user's first run). Its
+the docs name in prose, each from a scratch directory with `tests/` and `docs/` linked in:
+first with an empty `FOON2PDDL_CACHE` and `XDG_CACHE_HOME` (a new user's first run), then
+again with the cache that run left and its outputs removed (a warm cache moves the slow part:
+with the similarity matrix cached, `expand --pairs` opens WordNet in another step). Its
 stderr is a pseudo-terminal, as at a user's terminal: a step `slow_step` announces then
 counts its seconds on the line. Every write to stderr is timestamped; the silent gaps are
-start -> first output, output -> output, last output -> exit. A command still running after
-`--cap` seconds is interrupted (SIGINT) and its gaps counted up to then.
+start -> first output, output -> output, last output -> exit; a command's figure is the
+longest gap of its two runs. A command still running after `--cap` seconds is interrupted
+(SIGINT) and its gaps counted up to then.
 
-    python -m bench.silence [--only TEXT ...] [--limit 2] [--cap 180] [--list]
+    python -m bench.silence [--only TEXT ...] [--limit 2] [--cap 180] [--caches empty warm] [--list]
     python -m bench --only silence
 
 Exit status of `python -m bench.silence`: 0 when no gap exceeds `--limit`, 1 otherwise.
@@ -22,6 +25,7 @@ import fcntl
 import os
 import pty
 import re
+import shutil
 import signal
 import struct
 import subprocess
@@ -41,6 +45,7 @@ AREA = "silence"
 _ESCAPE = re.compile(r"\x1b\[[0-9;?]*[A-Za-z]")
 LIMIT = 2.0
 CAP = 180.0
+CACHES = ("empty", "warm")
 
 #: Commands the docs describe in prose (an option named on a page, not a full line): page, command.
 EXTRA = (
@@ -63,6 +68,7 @@ class Silence:
     """The outputs of one run: when (seconds from the start) and what was printed, and how it ended."""
 
     command: str
+    cache: str  # empty | warm
     events: tuple[tuple[float, str], ...]
     end: float
     exit_status: int | None  # None: interrupted at the cap
@@ -77,6 +83,10 @@ class Silence:
         return max(self.gaps())
 
 
+#: What a scratch directory keeps between a command's runs: the inputs and the caches.
+_KEPT = ("tests", "docs", "cache", "xdg")
+
+
 def _scratch(base: Path) -> Path:
     """A working directory where the documented relative paths (tests/data, docs/examples) resolve."""
     for name in ("tests", "docs"):
@@ -84,50 +94,70 @@ def _scratch(base: Path) -> Path:
     return base
 
 
-def run_one(command: str, cap: float = CAP) -> Silence:
-    """Run `command` (shell text) with stderr on a pseudo-terminal; timestamp every write to it."""
+def _clear_outputs(work: Path) -> None:
+    """Remove what a run wrote (out/, trees/, a plot), keeping the inputs and the caches."""
+    for entry in work.iterdir():
+        if entry.name not in _KEPT:
+            shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
+
+
+def run_cached(command: str, cap: float = CAP, caches: tuple[str, ...] = CACHES) -> list[Silence]:
+    """Run `command` once per entry of `caches`, in order, in one scratch directory: `empty` first
+    (its caches are fresh), `warm` with the caches the runs before it left."""
     with tempfile.TemporaryDirectory(prefix="silence-") as tmp:
         work = _scratch(Path(tmp))
-        env = dict(os.environ, FOON2PDDL_CACHE=str(work / "cache"), XDG_CACHE_HOME=str(work / "xdg"),
-                   PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}")
-        master, slave = pty.openpty()
-        fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 120, 0, 0))  # a terminal's size: tqdm needs one
-        events: list[tuple[float, str]] = []
-        start = time.monotonic()
-        proc = subprocess.Popen(["bash", "-c", command], cwd=work, env=env, stdin=subprocess.DEVNULL,
-                                stdout=subprocess.DEVNULL, stderr=slave, start_new_session=True)
-        os.close(slave)
+        out = []
+        for cache in caches:
+            _clear_outputs(work)
+            if cache == "empty":
+                for name in ("cache", "xdg"):
+                    shutil.rmtree(work / name, ignore_errors=True)
+            out.append(run_one(command, work, cache, cap))
+        return out
 
-        def read() -> None:
-            while True:
-                try:
-                    chunk = os.read(master, 65536)
-                except OSError:  # EIO: every writer closed
-                    return
-                if not chunk:
-                    return
-                text = _ESCAPE.sub("", chunk.decode(errors="replace")).replace("\r", "\n")
-                shown = [line.strip() for line in text.split("\n") if line.strip()]
-                if shown:
-                    events.append((time.monotonic() - start, shown[-1]))
 
-        reader = threading.Thread(target=read, daemon=True)
-        reader.start()
-        try:
-            status: int | None = proc.wait(timeout=cap)
-        except subprocess.TimeoutExpired:
-            status = None
-            os.killpg(proc.pid, signal.SIGINT)
+def run_one(command: str, work: Path, cache: str = "empty", cap: float = CAP) -> Silence:
+    """Run `command` (shell text) in `work` with stderr on a pseudo-terminal; timestamp every write to it."""
+    env = dict(os.environ, FOON2PDDL_CACHE=str(work / "cache"), XDG_CACHE_HOME=str(work / "xdg"),
+               PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}")
+    master, slave = pty.openpty()
+    fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 120, 0, 0))  # a terminal's size: tqdm needs one
+    events: list[tuple[float, str]] = []
+    start = time.monotonic()
+    proc = subprocess.Popen(["bash", "-c", command], cwd=work, env=env, stdin=subprocess.DEVNULL,
+                            stdout=subprocess.DEVNULL, stderr=slave, start_new_session=True)
+    os.close(slave)
+
+    def read() -> None:
+        while True:
             try:
-                proc.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                os.killpg(proc.pid, signal.SIGKILL)
-                proc.wait()
-        end = time.monotonic() - start
-        reader.join(timeout=5)
-        os.close(master)
-        kept = tuple((t, text) for t, text in events if t <= end)
-        return Silence(command, kept, min(end, cap) if status is None else end, status)
+                chunk = os.read(master, 65536)
+            except OSError:  # EIO: every writer closed
+                return
+            if not chunk:
+                return
+            text = _ESCAPE.sub("", chunk.decode(errors="replace")).replace("\r", "\n")
+            shown = [line.strip() for line in text.split("\n") if line.strip()]
+            if shown:
+                events.append((time.monotonic() - start, shown[-1]))
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    try:
+        status: int | None = proc.wait(timeout=cap)
+    except subprocess.TimeoutExpired:
+        status = None
+        os.killpg(proc.pid, signal.SIGINT)
+        try:
+            proc.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    end = time.monotonic() - start
+    reader.join(timeout=5)
+    os.close(master)
+    kept = tuple((t, text) for t, text in events if t <= end)
+    return Silence(command, cache, kept, min(end, cap) if status is None else end, status)
 
 
 def commands() -> tuple[list[DocCommand], list[tuple[DocCommand, list[str]]]]:
@@ -140,8 +170,10 @@ def commands() -> tuple[list[DocCommand], list[tuple[DocCommand, list[str]]]]:
     return runnable, skipped
 
 
-def measure(only: list[str] | None = None, cap: float = CAP, echo=print) -> list[tuple[DocCommand, Silence]]:
-    """Run every runnable command (those containing one of `only`, when given); echo one line each."""
+def measure(only: list[str] | None = None, cap: float = CAP, caches: tuple[str, ...] = CACHES,
+            echo=print) -> list[tuple[DocCommand, Silence]]:
+    """Run every runnable command (those containing one of `only`, when given) with each cache state;
+    echo one line each; return each command's run with the longest gap."""
     runnable, skipped = commands()
     for c, missing in skipped:
         echo(f"skipped {c.where}: {c.text} (needs the reader's {', '.join(missing)})")
@@ -149,11 +181,14 @@ def measure(only: list[str] | None = None, cap: float = CAP, echo=print) -> list
     for c in runnable:
         if only and not any(o in c.text for o in only):
             continue
-        s = run_one(c.text, cap)
-        gap, where = s.longest()
-        ended = f"exit {s.exit_status}" if s.exit_status is not None else f"interrupted at {cap:.0f} s"
-        echo(f"{gap:6.1f} s  {c.text}  [{where}; {ended}, {s.end:.1f} s; {c.where}]")
-        out.append((c, s))
+        runs = run_cached(c.text, cap, caches)
+        worst = max(runs, key=lambda r: r.longest()[0])
+        gap, where = worst.longest()
+        each = ", ".join(f"{r.cache} {r.longest()[0]:.1f} s of {r.end:.1f} s "
+                         + (f"exit {r.exit_status}" if r.exit_status is not None else f"cut at {cap:.0f} s")
+                         for r in runs)
+        echo(f"{gap:6.1f} s  {c.text}  [{worst.cache} cache, {where}; {each}; {c.where}]")
+        out.append((c, worst))
     return out
 
 
@@ -161,7 +196,7 @@ def run(ctx: Context) -> None:
     """`python -m bench` area: the longest silent gap of each documented command."""
     for c, s in measure(cap=60.0 if ctx.quick else CAP, echo=lambda _line: None):
         gap, where = s.longest()
-        ctx.report(AREA, c.text.removeprefix("foon2pddl "), gap, "s", f"{where}; {c.where}")
+        ctx.report(AREA, c.text.removeprefix("foon2pddl "), gap, "s", f"{s.cache} cache, {where}; {c.where}")
 
 
 def main() -> int:
@@ -170,6 +205,8 @@ def main() -> int:
     ap.add_argument("--only", nargs="*", help="run only the commands containing one of these texts")
     ap.add_argument("--limit", type=float, default=LIMIT, help="longest allowed silent gap, seconds")
     ap.add_argument("--cap", type=float, default=CAP, help="interrupt a command after this many seconds")
+    ap.add_argument("--caches", nargs="+", choices=CACHES, default=list(CACHES),
+                    help="cache states to run each command with, in order (warm: what the runs before left)")
     ap.add_argument("--list", action="store_true", help="list the commands, run none")
     args = ap.parse_args()
     if args.list:
@@ -180,7 +217,7 @@ def main() -> int:
             print(f"{c.where}\tskipped (needs {', '.join(missing)})\t{c.text}")
         return 0
     print(f"load: {os.getloadavg()[0]:.2f} (1 min)", flush=True)
-    results = measure(args.only, args.cap, echo=lambda line: print(line, flush=True))
+    results = measure(args.only, args.cap, tuple(args.caches), echo=lambda line: print(line, flush=True))
     over = [(c, s) for c, s in results if s.longest()[0] > args.limit]
     print(f"{len(results)} commands, {len(over)} silent for more than {args.limit:g} s; "
           f"load: {os.getloadavg()[0]:.2f} (1 min)")

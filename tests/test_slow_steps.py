@@ -85,13 +85,14 @@ def test_each_command_invocation_starts_its_own_budget(monkeypatch):
 @pytest.mark.parametrize(("args", "said"), [
     (("similarity", "cilantro", "banana"), "comparing 2 labels in WordNet (cook similarity) ..."),
     (("expand", "--pairs"), "building FOON-EXP of 101 units (WordNet similarities: once, then cached) ..."),
+    (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("plan", "--goal", "whipped cream", "--planner", "pyperplan"), "looking up planner 'pyperplan' ..."),
     (("plan", "--goal", "whipped cream", "--skills"),
      "planning 'whipped cream' (relational encoding) and each step's robot skills ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
-], ids=["similarity", "expand --pairs", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
+], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
         "check", "stats"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     r = run(*args)

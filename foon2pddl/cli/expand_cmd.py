@@ -57,7 +57,9 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 
-        emit(format_pairs(substitution_pairs(e, vocabulary(net.foon, kit), extra), fmt), output)
+        with slow_step(f"listing the {len(e.substitutions)} substitutions with their WordNet senses"):
+            text = format_pairs(substitution_pairs(e, vocabulary(net.foon, kit), extra), fmt)
+        emit(text, output)
         return
     header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "
               f"{len(e.substitutions)} label substitutions")

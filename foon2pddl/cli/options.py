@@ -248,8 +248,8 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    building = NETWORKS[network].building or "building the {name} network"
-    with slow_step(building.format(name=network, units=len(net.foon.units))):
+    building = NETWORKS[network].building or "preparing the {label} network of {units:,} units at level {level}"
+    with slow_step(building.format(label=NETWORKS[network].label, units=len(net.foon.units), level=level)):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
