@@ -84,7 +84,7 @@ def test_each_command_invocation_starts_its_own_budget(monkeypatch):
 
 @pytest.mark.parametrize(("args", "said"), [
     (("similarity", "cilantro", "banana"), "comparing 2 labels in WordNet (cook similarity) ..."),
-    (("expand", "--pairs"), "building FOON-EXP of 101 units (WordNet similarities: once, then cached) ..."),
+    (("expand", "--pairs"), "expanding 101 units onto similar objects (WordNet similarities: once, then cached) ..."),
     (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("plan", "--goal", "whipped cream", "--planner", "pyperplan"), "looking up planner 'pyperplan' ..."),

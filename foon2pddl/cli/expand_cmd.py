@@ -44,14 +44,14 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     """
     from ..generalize.expand import expand, vocabulary
     from ..generalize.modes import mode_matrix
-    from ..generalize.network import NETWORKS
     from ..generalize.stats import format_levels_table, levels_table
     from ..io.inputs import load_kitchen
 
     net = read_network(paths)
     kit = load_kitchen(kitchen, net, 3)
     extra = load_overrides(overrides)
-    with slow_step(NETWORKS["exp"].building.format(units=len(net.foon.units))):
+    with slow_step(f"expanding {len(net.foon.units):,} units onto similar objects (WordNet similarities: once, "
+                   "then cached)"):
         matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
         e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
     if as_pairs:
