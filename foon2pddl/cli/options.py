@@ -49,8 +49,10 @@ def expansion_notes(tree) -> None:
     """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity."""
     from ..generalize.modes import make_similarity
     from ..generalize.substitution import expansion_substitutions
+    from .progress import slow_step
 
-    subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
+    with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
+        subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
     for sub in subs:
         click.echo(f"substitution: {sub.describe()}", err=True)
     if not subs:
