@@ -50,13 +50,10 @@ def expansion_notes(tree) -> None:
     from ..generalize.modes import make_similarity
     from ..generalize.substitution import expansion_substitutions
     from .progress import slow_step
-
     with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
         subs = expansion_substitutions(tree, make_similarity(chosen_similarity())) if tree.units else ()
-    for sub in subs:
-        click.echo(f"substitution: {sub.describe()}", err=True)
-    if not subs:
-        click.echo("substitution: none (the tree uses only units as read)", err=True)
+    for line in [sub.describe() for sub in subs] or ["none (the tree uses only units as read)"]:
+        click.echo(f"substitution: {line}", err=True)
 
 
 def load_overrides(path: Path | None):
