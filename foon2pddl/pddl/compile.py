@@ -22,6 +22,7 @@ from .constraints import add_must_use, constrained_inputs, must_use_cone
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
 from .encode_lifted import compile_lifted
+from .encode_ocp import encode_ocp
 from .encode_relational import encode_relational
 from .encode_state import encode_state
 from .encode_tree import encode_tree
@@ -49,6 +50,8 @@ ENCODINGS: dict[str, Encoding] = _registry(
     Encoding("state", encode_state, "object-centred STRIPS: facts per object and state, with deletes",
              foon_semantics=False, every_step=True, complete=False),
     Encoding("foon-compat", encode_compat, "the public foon_to_pddl converter's format, with a goal"),
+    Encoding("ocp", encode_ocp, "the public foon_to_pddl converter's object-centred format: (in cup water), air, table",
+             foon_semantics=False, every_step=True, complete=False),
     Encoding("gen-lifted", compile_lifted,
              "FOON-GEN: categories as types, the planner grounds them to kitchen objects", lifted=True),
 )
