@@ -5,40 +5,54 @@ al. (2021): `(R a b)` reads "R a is b", so `(in cup water)` is water in the cup,
 `(under water cup)` the cup under the water, `(on table cup)` the cup on the
 table, `(in cup air)` an empty cup. Every object label is a domain constant, with
 `air` and `table`; a unit is a parameterless action named after its motion and
-focal object (`pour_water_1`). A node's facts, about its object `o`:
+focal object (`pour_water_1`). A node's facts, about its object `o`, as the
+converter reads it:
 
 * `in [h]` / `on [h]` -> `(in h o)` / `(on h o)` and `(under o h)`; `under [h]` -> `(under h o)`;
-* `contains {a, b}` -> `(in o a)`, `(in o b)`; `empty` -> `(in o air)` (`on` for the surfaces
-  `plate`, `pizza pan`, `cutting board`);
+* `empty` -> `(in o air)` (`(on o air)` for the surfaces `plate`, `pizza pan`, `cutting board`);
 * the physical states `whole diced chopped sliced mixed ground juiced spread` -> `(is-<s> o)`
   (`mixed` is said of the object's holder, where the stirring happens: `(is-mixed bowl)`);
-* a node with no `in`/`on`/`under` state is on the table: `(under o table)`, `(on table o)`
-  (except what a `scoop` outputs: it is in the spoon).
+* a node with no `in`/`on`/`under` place is on the table: `(under o table)`, `(on table o)`
+  (not among the outputs of a `scoop`: they are in the spoon);
+* nothing else: `contains {a, b}` writes no fact (what is in a container is said by the
+  contents' own `in [h]`), nor do `liquid`, `clean`, ...
 
-An action's precondition is its inputs' facts. Its effect, as the converter
-writes it: the outputs' facts that are new; the preconditions it keeps (those
-no output fact speaks of with the same predicate and first object, and those
-the outputs repeat), re-added; and deletes:
+An action's precondition is its inputs' facts, and its effect, as the converter
+writes it:
 
-* **contents**: an output container node that says what it holds (`contains`,
-  `empty`) replaces what the preconditions had in or on it (`(in cup water)`
-  is deleted when the cup comes out `empty`, `(in bowl air)` when it comes out
-  holding water);
-* **table**: an output object placed in, on or under something leaves the table;
-* **states**: a new `(is-<s> o)` deletes `o`'s other `is-` facts.
+* **new**: the outputs' facts that are not preconditions;
+* **kept** (re-added): the preconditions that no output fact speaks of (same
+  predicate and first argument; any `is-` fact speaks of every `is-` fact), and
+  those the outputs repeat;
+* **deleted**: a precondition not kept that a new fact replaces: the same
+  predicate and first argument with `air` on either side (`(in cup air)` when
+  water comes in, `(in cup water)` when the cup comes out `empty`), or the same
+  arguments under another predicate (`(is-whole onion)` when it comes out
+  `chopped`).
 
-`under` facts between objects are never deleted, as in the converter's
-reference output: after its pour_water example, `(under water cup)` and
-`(under water bowl)` both hold. The kitchen's facts (of objects the network
-mentions) are the initial state; the goal is the facts of the goal node
-(several candidates: auxiliary actions to `(goal-reached)`).
+So nothing leaves the table or its old holder unless air says so: after the
+converter's pour_water example, `(under water cup)` and `(under water bowl)`
+both hold, and an object put into a bowl is still `(on table o)`, exactly as in
+the converter's reference output (`tests/data/foon_to_pddl-examples/`). The
+kitchen's facts (of objects the network mentions) are the initial state.
 
-Unlike the converter: names are sanitized and unique (the converter writes `_`
-for `-`), untyped (it declares `(:types object - object)`, which parsers
-reject), `:requirements` lists what is used (`:strips`, not `:adl`), and the
-problem's goal is the goal asked for (the converter's is every goal-marked
-node of the file). Not FOON's semantics: facts of different nodes combine and
-deletes make order matter, as in `state`; pruning is on the STRIPS task.
+Unlike the converter: the goal is the goal asked for, not every goal-marked node
+of the file. Its facts are the node's in the converter's goal reading (`in [h]`
+without `(under o h)`), plus `(in o a)` for each `a` of its `contains {...}`
+that the kitchen or an action writes: the fact the converter's goal gets from
+the contents' own node (for pour_water, `bowl: contains {water}, on [table]`
+gives exactly the converter's goal). Several candidates: auxiliary actions to
+`(goal-reached)`. Names are sanitized and unique (the
+converter writes `_` for ` ` and `-`); untyped (it declares `(:types object -
+object)`, which parsers reject); `:requirements` lists what is used; `mixed` is
+said of the node's own holder (the converter's placeholder takes the next place
+written in the file, whose state order foon2pddl does not keep) or of the object
+when it has none (the converter would write the placeholder `LOC`); an empty
+surface is `(on o air)` in goals too (the converter writes `on` there for the
+cutting board only, so a goal of an empty plate was unreachable). Not FOON's
+semantics: facts of different nodes combine and deletes make order matter, as in
+`state`; pruning is on the STRIPS task. Not modelled, as in the converter:
+consumption, quantities, and object identity beyond the label (one `cup`).
 """
 
 from __future__ import annotations
@@ -48,13 +62,14 @@ from dataclasses import replace
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.places import place_of
 from .costs import unit_cost
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, goal_actions, header, unit_comment
 from .names import NameTable
 from .prune import prune_task
 from .task import Action, Atom, PlanningTask, Predicate
 
-__all__ = ["AIR", "TABLE", "encode_ocp", "node_facts", "unit_effects"]
+__all__ = ["AIR", "TABLE", "action_name", "encode_ocp", "goal_facts_of", "node_facts", "unit_effects"]
 
 #: The converter's relation predicates: `(R a b)` reads "R a is b".
 RELATIONS = ("in", "on", "under")
@@ -72,66 +87,74 @@ AIR, TABLE = "air", "table"
 Fact = tuple[str, ...]
 
 
-def _holder(node: ObjectNode) -> str | None:
-    """What the node's object is in or on (its first such state), None when it says nothing."""
-    return next((s.related for s in node.states if s.label in ("in", "on") and s.related), None)
-
-
-def node_facts(node: ObjectNode, on_table: bool = True) -> tuple[Fact, ...]:
+def node_facts(node: ObjectNode, on_table: bool = True, goal: bool = False) -> tuple[Fact, ...]:
     """The facts of `node` in the converter's reading (see the module doc), without repeats.
 
     `on_table=False`: a node with no place is not put on the table (what `scoop` outputs).
+    `goal=True`: the converter's goal reading (`in [h]` writes no `under` fact).
     """
     o = node.label
-    inside = "on" if o in SURFACES else "in"
     out: list[Fact] = []
     placed = False
     for s in node.states:
         if s.label in RELATIONS and s.related:
             placed = True
             out.append((s.label, s.related, o))
-            if s.label != "under":
+            if s.label == "on" or (s.label == "in" and not goal):
                 out.append(("under", o, s.related))
         elif s.label == "empty":
-            out.append((inside, o, AIR))
+            out.append(("on" if o in SURFACES else "in", o, AIR))
         elif s.label in PHYSICAL_STATES:
-            out.append((f"is-{s.label}", (_holder(node) or o) if s.label == "mixed" else o))
-        out.extend((inside, o, i) for i in s.ingredients)
+            holder = place_of(node) if s.label == "mixed" else None
+            out.append((f"is-{s.label}", holder[1] if holder else o))
     if not placed and on_table:
         out.extend((("under", o, TABLE), ("on", TABLE, o)))
     return tuple(dict.fromkeys(out))
 
 
-def _describes_contents(node: ObjectNode) -> bool:
-    """Whether the node says everything its object holds (`empty`, or a state listing ingredients)."""
-    return any(s.label == "empty" or s.ingredients for s in node.states)
+def goal_facts_of(node: ObjectNode, made: set[Fact]) -> tuple[Fact, ...]:
+    """The goal facts of `node`: its facts in the converter's goal reading, and what it contains.
+
+    The converter's goal is every final product of the file, so a bowl of water comes with the water's
+    `(in bowl water)`; one goal node gives the same through its `contains {water}`, for each listed
+    item whose fact the kitchen or an action writes (`bloody mary (contains {vodka})` is never written:
+    the vodka is `in [drinking glass]`). O(states).
+    """
+    inside = "on" if node.label in SURFACES else "in"
+    listed = (f for s in node.states if s.label == "contains" for f in ((inside, node.label, i) for i in s.ingredients))
+    return tuple(dict.fromkeys((*node_facts(node, goal=True), *(f for f in listed if f in made))))
+
+
+def _speaks_of(pre: Fact, post: Fact) -> bool:
+    """Whether an output fact says something about a precondition (the converter's test for keeping it):
+    both are `is-` facts, or they share predicate and first argument."""
+    if pre[0] not in RELATIONS and post[0] not in RELATIONS:
+        return True
+    return pre[:2] == post[:2]
+
+
+def _replaces(new: Fact, old: Fact) -> bool:
+    """Whether a new fact negates a precondition (the converter's two tests): same predicate and first
+    argument with `air` on either side, or the same arguments under another predicate."""
+    if new[:2] == old[:2] and new[2:] != old[2:]:
+        return AIR in (*new[2:], *old[2:])
+    return new[0] != old[0] and new[1:] == old[1:]
 
 
 def unit_effects(unit: FunctionalUnit) -> tuple[tuple[Fact, ...], tuple[Fact, ...], tuple[Fact, ...]]:
     """(precondition, add, delete) facts of `unit` (see the module doc), each in first-seen order.
 
-    O(facts^2) per unit; units have a handful of nodes.
+    O(facts^2) per unit; units have a handful of nodes. The add and delete lists are disjoint.
     """
     pre = tuple(dict.fromkeys(f for n in unit.inputs for f in node_facts(n)))
     scoop = unit.motion.label == "scoop"
     out = tuple(dict.fromkeys(f for n in unit.outputs for f in node_facts(n, on_table=not scoop)))
-    outs = set(out)
-    new = [f for f in out if f not in pre]
-    holders = {n.label for n in unit.outputs if _describes_contents(n)}
-    moved = {n.label for n in unit.outputs if any(s.label in RELATIONS and s.related for s in n.states)}
-    states = {f[1]: f for f in new if f[0].startswith("is-")}
-
-    def deleted(f: Fact) -> bool:
-        if f in outs:
-            return False
-        if f[0] in ("in", "on") and f[1] in holders:  # contents replaced
-            return True
-        if (f[0] == "on" and f[1] == TABLE and f[2] in moved) or (f[0] == "under" and f[2] == TABLE and f[1] in moved):
-            return True
-        return f[0].startswith("is-") and f[1] in states  # another physical state
-
-    delete = tuple(f for f in pre if deleted(f))
-    kept = [f for f in pre if f not in delete and (f in outs or not any(g[:2] == f[:2] for g in out))]
+    before = set(pre)
+    new = tuple(f for f in out if f not in before)
+    kept = tuple(dict.fromkeys((*(p for p in pre if not any(_speaks_of(p, q) for q in out)),
+                                *(q for q in out if q in before))))
+    changed = [p for p in pre if p not in set(kept)]
+    delete = tuple(dict.fromkeys(p for f in new for p in changed if _replaces(f, p)))
     return pre, tuple(dict.fromkeys((*new, *kept))), delete
 
 
@@ -144,8 +167,7 @@ def action_name(unit: FunctionalUnit) -> str:
     """
     motion = unit.motion.label
     for n in unit.inputs:
-        has_ingredients = any(s.ingredients for s in n.states)
-        if not has_ingredients:
+        if not n.ingredients:
             if (motion in ("pick-and-place", "pour", "sprinkle", "insert") and n.motion_flag == 1) or (
                     motion in ("slice", "dice", "chop", "cut", "scoop", "scoop and pour") and n.motion_flag == 0):
                 return f"{motion} {n.label}"
@@ -163,7 +185,8 @@ def encode_ocp(
     effects = [unit_effects(u) for u in f.units]
     mentioned = {x for fs in effects for part in fs for fact in part for x in fact[1:]}
     init_facts = tuple(dict.fromkeys(x for n in sorted(inp.kitchen) if n.label in mentioned for x in node_facts(n)))
-    goal_facts = [(c, node_facts(c)) for c in inp.candidates]
+    made = {*init_facts, *(x for _, add, _ in effects for x in add)}
+    goal_facts = [(c, goal_facts_of(c, made)) for c in inp.candidates]
 
     table = NameTable()
     for name in RELATIONS:

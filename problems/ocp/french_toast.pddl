@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain foon-ocp-267c4aa6)
+  (:domain foon-ocp-7c011c83)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -120,6 +120,5 @@
   (:goal (and
     (on plate french_toast)
     (under french_toast plate)
-    (in french_toast maple_syrup)
   ))
 )

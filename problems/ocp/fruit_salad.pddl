@@ -2,7 +2,7 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_fruit_salad)
-  (:domain foon-ocp-28d04249)
+  (:domain foon-ocp-7c4b5788)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -118,12 +118,6 @@
     (on table wooden_spoon)
   )
   (:goal (and
-    (in fruit_salad banana)
-    (in fruit_salad honey)
-    (in fruit_salad lime_juice)
-    (in fruit_salad strawberry)
     (in bowl fruit_salad)
-    (under fruit_salad bowl)
-    (in fruit_salad whipped_cream)
   ))
 )

@@ -2,7 +2,7 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_guacamole)
-  (:domain foon-ocp-a03044ac)
+  (:domain foon-ocp-6399742f)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -118,13 +118,6 @@
     (on table wooden_spoon)
   )
   (:goal (and
-    (in guacamole avocado)
-    (in guacamole cilantro)
-    (in guacamole lime_juice)
-    (in guacamole onion)
-    (in guacamole salt)
-    (in guacamole tomato)
     (in bowl guacamole)
-    (under guacamole bowl)
   ))
 )

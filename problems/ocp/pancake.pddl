@@ -2,7 +2,7 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
-  (:domain foon-ocp-d822a792)
+  (:domain foon-ocp-948d367f)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -120,6 +120,5 @@
   (:goal (and
     (on plate pancake)
     (under pancake plate)
-    (in pancake maple_syrup)
   ))
 )

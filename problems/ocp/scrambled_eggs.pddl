@@ -2,7 +2,7 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
-  (:domain foon-ocp-4b745ab7)
+  (:domain foon-ocp-0f102b38)
   (:init
     (is-whole avocado)
     (under avocado table)

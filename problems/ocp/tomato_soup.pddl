@@ -2,7 +2,7 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
-  (:domain foon-ocp-a409d497)
+  (:domain foon-ocp-fdaf26f6)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -118,8 +118,6 @@
     (on table wooden_spoon)
   )
   (:goal (and
-    (in tomato_soup basil)
     (in bowl tomato_soup)
-    (under tomato_soup bowl)
   ))
 )

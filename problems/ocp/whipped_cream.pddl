@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_whipped_cream)
-  (:domain foon-ocp-d0e05614)
+  (:domain foon-ocp-a5325ece)
   (:init
     (is-whole avocado)
     (under avocado table)
@@ -119,6 +119,5 @@
   )
   (:goal (and
     (in bowl whipped_cream)
-    (under whipped_cream bowl)
   ))
 )
