@@ -14,6 +14,8 @@ from foon2pddl.skills.decompose import StepStatus, decompose
 from foon2pddl.skills.domain import shipped_domain
 from foon2pddl.skills.micro import Naming, micro_problem
 from foon2pddl.skills.profile import Robot, robot_constraints
+from foon2pddl.skills.recipe import object_names, skill_sentence
+from foon2pddl.skills.report import call_text
 from foon2pddl.skills.table import parse_table, shipped_table
 
 IN, ON = Relation.IN, Relation.ON
@@ -187,3 +189,77 @@ def test_by_hand_entries_are_checked():
         parse_table('{"motions": {"peel": "peel"}, "by_hand": {"mix": "mix-by-hand"}}', "t.json")
     with pytest.raises(FoonSyntaxError, match="does not define"):
         parse_table('{"motions": {"peel": "peel"}, "by_hand": {"peel": "nail"}}', "t.json").check(shipped_domain())
+
+
+LIME_HALVED, LIME_SQUEEZED, JUICER = node("lime", "halved"), node("lime", "squeezed"), node("juicer")
+
+
+def juicer_trace(lime_changes=True):
+    objects = {"lime_1": "lime", "juicer_1": "juicer", "board_1": "cutting board", "juice_1": "lime juice"}
+    initial = [ObjectState("lime_1", LIME_HALVED, "board_1", ON), ObjectState("juicer_1", JUICER),
+               ObjectState("board_1", BOARD), ObjectState("juice_1")]
+    lime = LIME_SQUEEZED if lime_changes else LIME_HALVED
+    return trace(objects, initial, [("squeeze", [ObjectState("lime_1", lime, "board_1", ON),
+                                                 ObjectState("juice_1", node("lime juice", "liquid"), "juicer_1", IN)],
+                                     ["lime_1", "juicer_1", "juice_1"])])
+
+
+def targets(t, skill):
+    problem = micro_problem(t, 0, skill, Naming(t, shipped_domain(), 1), shipped_domain())
+    return sorted(a.args[1] for a in problem.init if a.predicate == "target")
+
+
+def test_a_hand_or_tool_skill_works_on_what_the_step_changes_not_where_its_product_appears():
+    assert targets(juicer_trace(), "squeeze") == ["lime_1"]  # not the juicer the juice appears in
+    plan = decompose(juicer_trace(), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("squeeze", ("lime_1",))]
+    assert targets(juicer_trace(lime_changes=False), "squeeze") == ["juicer_1"]  # nothing changes: the product's site
+    assert targets(kitchen_trace(CHOP), "chop") == ["onion_1"]
+    assert targets(kitchen_trace(POUR), "pour") == ["bowl_1"]  # a transfer: where the poured water goes
+
+
+def test_a_grind_with_no_tool_holds_the_mill_over_the_bowl():
+    # FOON (ACT-0061 matzo brei): bowl, grinder (contains {salt}), salt (in [grinder]) -grind->
+    # salt (granulated, in [bowl]); the grinder is no tool (it holds the salt): the hand holds it over the bowl
+    objects = {"grinder_1": "grinder", "salt_1": "salt", "bowl_1": "bowl"}
+    initial = [ObjectState("grinder_1", node("grinder")), ObjectState("salt_1", node("salt"), "grinder_1", IN),
+               ObjectState("bowl_1", BOWL)]
+    t = trace(objects, initial, [("grind", [ObjectState("salt_1", node("salt", "granulated"), "bowl_1", IN)],
+                                  ["bowl_1", "grinder_1", "salt_1"])])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("grinder_1", "workspace")), ("grind", ("grinder_1", "bowl_1")),
+                            ("place", ("grinder_1", "workspace"))]
+    mash = decompose(t, parse_table('{"motions": {"grind": "mash"}}', "t.json"), shipped_domain())
+    assert mash.steps[0].status is StepStatus.FAILED  # the old mapping: a mash with no masher cannot move the salt
+
+
+def test_a_scoop_into_a_spoon_holds_the_spoon_and_dips_it_into_the_source():
+    # FOON (0080 virgin mojito): container (contains {sugar}), sugar (in [container]), spoon -scoop->
+    # spoon (contains {sugar}), sugar (in [spoon]); the spoon holds the sugar after: where it goes, not a tool
+    objects = {"container_1": "container", "sugar_1": "sugar", "spoon_1": "spoon"}
+    sugar = node("refined sugar", "granulated")
+    initial = [ObjectState("container_1", node("container")), ObjectState("sugar_1", sugar, "container_1", IN),
+               ObjectState("spoon_1", SPOON)]
+    t = trace(objects, initial, [("scoop", [ObjectState("sugar_1", sugar, "spoon_1", IN)],
+                                  ["container_1", "sugar_1", "spoon_1"])])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("spoon_1", "workspace")), ("scoop-up", ("container_1", "spoon_1")),
+                            ("place", ("spoon_1", "workspace"))]
+    params = tuple(v for v, _ in shipped_domain().by_name["scoop-up"].params)
+    assert call_text(plan.calls[1], params) == "scoop-up from container_1 into spoon_1"
+    assert skill_sentence(plan.calls[1], params, object_names(t)) == "scoop up from the container into the spoon"
+
+
+def test_a_scrape_with_no_tool_tips_the_board_over_the_bowl():
+    # FOON (0033 miso soup): tofu (diced, on [cutting board]), bowl (empty) -scrape-> tofu (diced, in [bowl])
+    objects = {"tofu_1": "tofu", "board_1": "cutting board", "bowl_1": "bowl"}
+    tofu = node("tofu", "diced")
+    initial = [ObjectState("tofu_1", tofu, "board_1", ON), ObjectState("board_1", BOARD), ObjectState("bowl_1", BOWL)]
+    t = trace(objects, initial, [("scrape", [ObjectState("tofu_1", tofu, "bowl_1", IN)], ["tofu_1", "bowl_1"])])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("board_1", "workspace")), ("scrape-by-hand", ("board_1", "bowl_1")),
+                            ("place", ("board_1", "workspace"))]

@@ -2,7 +2,8 @@
 
 Pipeline: `domain` (the skill domain, a PDDL file) and `table` (motion -> skill),
 `micro` (one micro problem per macro step of a `model.physical.PhysicalTrace`),
-`fd_micro` (Fast Downward on it), `memo` (each shape of micro task solved once),
+`fd_micro` (Fast Downward on it), `memo` (each shape of micro task solved once), `shorten`
+(skills a micro plan does not need dropped),
 `replay` (an independent skill-level simulator), `decompose` (all of it for one plan), `profile` (robot profiles), `trace_of`
 (a trace from an `instances` plan), `report` (text and JSON). docs/skills.md.
 """
@@ -14,4 +15,4 @@ from .table import MotionTable, read_table, shipped_table
 
 __all__ = ["MacroSkills", "MotionTable", "Robot", "SkillCall", "SkillDomain", "SkillPlan", "StepStatus",
            "read_domain", "read_table", "robot_constraints", "shipped_domain", "shipped_table", "decompose", "domain",
-           "fd_micro", "memo", "micro", "profile", "recipe", "replay", "report", "run", "sexpr", "source", "table"]
+           "fd_micro", "memo", "micro", "profile", "recipe", "replay", "report", "run", "sexpr", "shorten", "source", "table"]

@@ -5,7 +5,8 @@ and the step stays **abstract** (reported by its motion, kept in place). Otherwi
 its micro problem (`skills.micro`) is solved with Fast Downward on the skill
 domain pruned to the transport skills and the step's own (`skills.fd_micro`), once
 per shape (`skills.memo`: a task equal to an earlier step's up to renaming objects
-takes its plan, renamed back); a step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
+takes its plan, renamed back), the plan rid of skills the step does not need
+(`skills.shorten`); a step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
 with the planner's reason, and kept as an abstract step too. The skill sequences
 are concatenated and replayed from the start by `skills.replay`, which checks
 every precondition and, after every macro step, that the state is the trace's.
@@ -20,7 +21,7 @@ from enum import StrEnum
 
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import Validation
-from ..pddl.task import Atom
+from ..pddl.task import Atom, PlanningTask
 from ..planners.process import cpu_seconds
 from .domain import SkillDomain
 from .fd_micro import solve_micro
@@ -28,6 +29,7 @@ from .memo import MicroMemo
 from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem
 from .profile import Robot
 from .replay import Replayer, SkillError, check
+from .shorten import irredundant
 from .table import MotionTable
 
 __all__ = ["MacroSkills", "SkillCall", "SkillPlan", "StepStatus", "decompose"]
@@ -135,8 +137,12 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
         skill = hand
         problem = micro_problem(trace, index, skill, naming, domain, roles)
     keep = {a for a in problem.actions if not robot.lacks(a)}
+
+    def finish(found: tuple[str, ...], task: PlanningTask) -> tuple[str, ...]:
+        return irredundant(found, domain, dict(task.objects), task.init, task.goal)
+
     (status, plan, message, _), reused = memo.solve(solver, domain.pruned(keep, robot.cost_table, problem.init), problem,
-                                                    (*naming.hands, naming.workspace))
+                                                    (*naming.hands, naming.workspace), finish)
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)

@@ -18,8 +18,9 @@ between objects that are not symmetric only costs a miss, never a wrong plan). S
 the planner only ever sees canonical text, a step's skills are the same whether its
 shape was solved before or not: sharing a memo between plans changes no output.
 `MicroMemo` keeps, per (solver, domain text, canonical text), the first settled result
-(solved, unsolvable; not a timeout or an error); the skill-level replay still checks
-every renamed skill.
+(solved, unsolvable; not a timeout or an error), a found plan post-processed once by the
+caller's `finish` (`decompose` drops the skills it does not need: `skills.shorten`); the
+skill-level replay still checks every renamed skill.
 """
 
 from __future__ import annotations
@@ -115,9 +116,11 @@ class MicroMemo:
     misses: int = 0
 
     def solve(self, solver: Callable[[str, str], Result], domain_text: str, problem: MicroProblem,
-              fixed: Iterable[str]) -> tuple[Result, bool]:
+              fixed: Iterable[str], finish: Callable[[tuple[str, ...], object], tuple[str, ...]] | None = None
+              ) -> tuple[Result, bool]:
         """(result, reused): `solver` run on the canonical form of `problem`, its plan renamed back; from the
-        memo when this canonical form was solved before (seconds then 0.0), else solved now and kept."""
+        memo when this canonical form was solved before (seconds then 0.0), else solved now and kept.
+        `finish(plan, canonical task)` post-processes a found plan once per shape (`shorten.irredundant`)."""
         canon = canonical(problem, fixed)
         key = (solver, domain_text, canon.text)
         found = self.table.get(key)
@@ -127,6 +130,8 @@ class MicroMemo:
             return (status, canon.decode(plan), message, 0.0), True
         self.misses += 1
         status, plan, message, seconds = solver(domain_text, canon.text)
+        if status == "solved" and finish is not None:
+            plan = finish(tuple(plan), canon.task)
         if status not in UNSETTLED:
             self.table[key] = (status, tuple(plan), message)
         return (status, canon.decode(plan), message, seconds), False

@@ -10,8 +10,11 @@ non-transport skill: poured, scooped, spread), `makes-in`/`makes-on` (a product
 appears), `uses-up` (an ingredient is consumed), and the `target`s, the sites the
 skill may work on: the changed objects, where moved objects go, where products
 appear, where consumed objects were (the workspace only when nothing else is a
-site). A tool or hand skill brings the whole outcome in one application at any
-target; a transfer at the target its moved objects go to. Goal = the
+site). A tool or hand skill (one that works on one object: `?h ?o`, `?h ?t ?o`)
+brings the whole outcome in one application at any target, and its targets are
+only the changed objects other than tools when there are any (squeeze the lime,
+not the juicer its juice appears in); a transfer works at the target its moved
+objects go to. Goal = the
 objects' facts after the step and every hand empty. Objects moved by a transport
 skill (pick-and-place) stay `graspable`, and their phase changes are tagged with the
 skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
@@ -142,6 +145,19 @@ def _roles(trace: PhysicalTrace) -> tuple[set[str], set[str]]:
     return containers, surfaces
 
 
+def works_on(domain: SkillDomain, skill: str) -> bool:
+    """Whether `skill` works on one placed object (`?h ?o`, or `?h ?t ?o` with a tool), not a transfer."""
+    schema = domain.by_name.get(skill)
+    return schema is not None and tuple(v for v, _ in schema.params[1:]) in (("?o",), ("?t", "?o"))
+
+
+def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid: set[str], holders: set) -> bool:
+    """A step object that holds nothing, stays where it is, and keeps its phase or becomes `dirty`."""
+    return (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
+            and (b.holder, b.relation) == (a.holder, a.relation)
+            and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node)))
+
+
 def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, domain: SkillDomain,
                   roles: tuple[set[str], set[str]] | None = None) -> MicroProblem:
     """The micro problem of step `index` carried out by `skill` (see the module doc). O(objects of the step)."""
@@ -182,11 +198,16 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
                     how = domain.constant("put-in" if a.relation is Relation.IN else "place")  # what sets it down
                 statics.add(Atom("changes", (how, n[oid], naming.phase(b.node), naming.phase(a.node))))
                 sites[0].append(n[oid])
-    targets = list(dict.fromkeys(x for _, found in sorted(sites.items()) for x in found))
+    holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
+    tools = {oid for oid in ids if _is_tool(oid, before[oid], after[oid], touched, rigid, holders)}
+    worked = [x for x in sites[0] if naming.back.get(x) not in tools]
+    if worked and works_on(domain, skill):
+        targets = list(dict.fromkeys(worked))  # squeeze the lime, not the juicer its juice appears in
+    else:
+        targets = list(dict.fromkeys(x for _, found in sorted(sites.items()) for x in found))
     if len(targets) > 1 and ws in targets:
         targets.remove(ws)
     statics |= {Atom("target", (tag, x)) for x in targets}
-    holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
     for oid in ids:
         if oid not in rigid:
             statics.add(Atom("graspable", (n[oid],)))
@@ -194,10 +215,7 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
             statics.add(Atom("container", (n[oid],)))
         if oid in surfaces:
             statics.add(Atom("surface", (n[oid],)))
-        b, a = before[oid], after[oid]
-        if (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
-                and (b.holder, b.relation) == (a.holder, a.relation)
-                and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node))):
+        if oid in tools:
             statics.add(Atom("tool", (n[oid],)))
     hands = {Atom("hand-empty", (h,)) for h in naming.hands}
     init = tuple(sorted(dynamic_facts(naming, before, ids) | hands | statics | {Atom("placed", (ws,))}))

@@ -52,6 +52,8 @@ def skill_sentence(call: SkillCall, params: tuple[str, ...], names: dict[str, st
     if shape == ("?src", "?dst"):
         source = f"from {objs[0]}" if holds else objs[0]
         return f"{verb} {source} {_ONTO.get(call.skill, 'into')} {objs[1]}"
+    if shape == ("?src", "?into"):
+        return f"{verb} from {objs[0]} into {objs[1]}"
     if shape == ("?t", "?src", "?dst"):
         return f"{verb} from {objs[1]} {_ONTO.get(call.skill, 'into')} {objs[2]} with {objs[0]}"
     return " ".join([verb, *objs])

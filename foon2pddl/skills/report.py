@@ -35,6 +35,8 @@ def call_text(call: SkillCall, params: tuple[str, ...] = ()) -> str:
         text = f"{call.skill} from {objs[1]} into {objs[2]} with {objs[0]}"
     elif shape == ("?src", "?dst"):
         text = f"{call.skill} from {objs[0]} over {objs[1]}"
+    elif shape == ("?src", "?into"):
+        text = f"{call.skill} from {objs[0]} into {objs[1]}"
     elif shape == ("?o", "?s"):
         text = f"{call.skill} {objs[0]} {_REL.get(call.skill, 'at')} {objs[1]}"
     else:
