@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 from collections import deque
+from dataclasses import replace
 
 import pddl.parser.domain
 import pddl.parser.problem
@@ -17,7 +18,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_s
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_task
-from foon2pddl.pddl.encode_instances import IS, NOT_MADE, encode_instances
+from foon2pddl.pddl.encode_instances import IS, LANE, NOT_MADE, TOGETHER, encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
 from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts, unfold
 from foon2pddl.pddl.instance_replay import InstancePlanError, instance_trace, trace_lines
@@ -251,6 +252,64 @@ def test_derived_counts_solve_exactly_what_foon_solves(foon, data):
     if verdict is None:
         return
     assert verdict == reachable(foon, kitchen.nodes).can_make(target)
+
+
+def _ground_count(task: PlanningTask) -> int:
+    """Groundings of the task's actions whose static preconditions (`lane`, `together`, `precedes`) hold."""
+    static_names = (LANE, TOGETHER, "precedes")
+    static = {a for a in task.init if a.predicate in static_names}
+    by_type: dict[str, list[str]] = {}
+    for name, typ in task.objects:
+        by_type.setdefault(typ, []).append(name)
+    total = 0
+    for a in task.actions:
+        for args in itertools.product(*(by_type.get(t, []) for _, t in a.params)):
+            bind = dict(zip((v for v, _ in a.params), args, strict=True))
+            pre = [Atom(x.predicate, tuple(bind.get(y, y) for y in x.args)) for x in a.pre]
+            total += all(x in static for x in pre if x.predicate in static_names)
+    return total
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(foons(max_units=5), st.data())
+def test_lanes_keep_the_task_solvable_and_shrink_its_groundings(foon, data):
+    """With derived counts, each instance may change state only as the unfolded plan changes it, and only with
+    instances it changed state with there: the task
+    is still solvable exactly when FOON makes the goal (brute force), never has more groundings than
+    without lanes (their only effect is to rule bindings out), and has lanes whenever FOON makes the goal
+    with at least one unit."""
+    target = data.draw(st.sampled_from(sorted(foon.producers)))
+    inputs = sorted({x for u in foon.units for x in u.inputs})
+    kitchen = Kitchen(frozenset(data.draw(st.lists(st.sampled_from(inputs), max_size=5))))
+    goal = Goal(GoalSpec(target.label), (target,))
+    task = encode_instances(foon, kitchen, goal)
+    makes = reachable(foon, kitchen.nodes).can_make(target)
+    has_lanes = any(p.name == LANE for p in task.predicates)
+    plan = delete_free_plan(foon, kitchen.nodes, (target,))
+    assert has_lanes == bool(makes and plan[0])  # an empty plan (the goal is in the kitchen) needs no lanes
+    verdict = brute_force_solvable(task)
+    if verdict is not None:
+        assert verdict == makes
+    if has_lanes:
+        plain = replace(task, actions=tuple(replace(a, pre=tuple(x for x in a.pre if x.predicate not in (LANE, TOGETHER)))
+                                            for a in task.actions))
+        assert _ground_count(task) <= _ground_count(plain)
+
+
+def test_lanes_only_for_derived_counts():
+    """A stated or overridden count may ask for a wash or a spare: then instances move freely, as before."""
+    derived = compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances")
+    assert LANE in {p.name for p in derived.predicates}
+    assert ("lanes: each instance changes state only as in the unfolded plan",) == derived.comments[-1:]
+    lanes = {a.args for a in derived.init if a.predicate == LANE}
+    assert {("knife_1", "knife_clean", "knife_dirty"), ("knife_2", "knife_clean", "knife_dirty")} <= lanes
+    together = {a.args for a in derived.init if a.predicate == TOGETHER}
+    assert ("knife_1", "bread_1") in together and ("knife_1", "knife_2") not in together  # cut moves both
+    for task in (compile_task(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, "instances", instances=(("knife", 1),)),
+                 encode_instances(KNIFE_FOON, Kitchen(KNIFE_KITCHEN.nodes, 3, "k", ((CLEAN, 3),)), KNIFE_GOAL),
+                 encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL, extra=1)):
+        assert not {LANE, TOGETHER} & {p.name for p in task.predicates}
+        assert not any(x.predicate in (LANE, TOGETHER) for a in task.actions for x in a.pre)
 
 
 def test_no_instance_state_goes_unmentioned():

@@ -2,7 +2,8 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-(define (domain foon-instances-2f5b7067)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-71e0ea1c)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -68,6 +69,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action crack_u17
@@ -75,8 +78,11 @@
     ; crack: bowl (empty), egg (whole) -> bowl (contains {egg}), egg (cracked, in [bowl])
     :parameters (?bowl - bowl ?egg - egg)
     :precondition (and
+      (together ?bowl ?egg)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_egg)
       (is ?egg egg_whole)
+      (lane ?egg egg_whole egg_cracked_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_egg)
@@ -91,9 +97,12 @@
     ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
     :parameters (?bowl - bowl ?milk - milk)
     :precondition (and
+      (together ?bowl ?milk)
       (is ?bowl bowl_contains_egg)
+      (lane ?bowl bowl_contains_egg bowl_contains_egg_milk)
       (occupied egg_beaten_in_bowl)
       (is ?milk milk_in_carton)
+      (lane ?milk milk_in_carton milk_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_milk)
@@ -110,7 +119,9 @@
     :parameters (?frying_pan - frying_pan ?stove - stove)
     :precondition (and
       (is ?frying_pan frying_pan_empty)
+      (lane ?frying_pan frying_pan_empty frying_pan_empty_on_stove)
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_off)
     )
     :effect (and
       (is ?frying_pan frying_pan_empty_on_stove)
@@ -124,6 +135,7 @@
     :parameters (?stove - stove)
     :precondition (and
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_on)
     )
     :effect (and
       (is ?stove stove_on)
@@ -137,8 +149,11 @@
     ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
     :parameters (?frying_pan - frying_pan ?butter - butter)
     :precondition (and
+      (together ?frying_pan ?butter)
       (is ?frying_pan frying_pan_empty_on_stove)
+      (lane ?frying_pan frying_pan_empty_on_stove frying_pan_contains_butter_on_stove)
       (is ?butter butter_solid)
+      (lane ?butter butter_solid butter_in_frying_pan_solid)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_butter_on_stove)
@@ -155,6 +170,7 @@
     :precondition (and
       (occupied stove_on)
       (is ?butter butter_in_frying_pan_solid)
+      (lane ?butter butter_in_frying_pan_solid butter_in_frying_pan_melted)
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
@@ -169,6 +185,7 @@
     :parameters (?egg - egg)
     :precondition (and
       (is ?egg egg_cracked_in_bowl)
+      (lane ?egg egg_cracked_in_bowl egg_beaten_in_bowl)
       (occupied fork_plain)
     )
     :effect (and
@@ -183,9 +200,14 @@
     ; pour: bowl (contains {egg, milk}), cinnamon (ground), vanilla extract (liquid) -> bowl (contains {cinnamon, egg, milk, vanilla extract}), cinnamon (in [bowl]), vanilla extract (in [bowl])
     :parameters (?bowl - bowl ?cinnamon - cinnamon ?vanilla_extract - vanilla_extract)
     :precondition (and
+      (together ?bowl ?cinnamon)
+      (together ?cinnamon ?vanilla_extract)
       (is ?bowl bowl_contains_egg_milk)
+      (lane ?bowl bowl_contains_egg_milk bowl_contains_cinnamon_egg_milk_vanilla_extract)
       (is ?cinnamon cinnamon_ground)
+      (lane ?cinnamon cinnamon_ground cinnamon_in_bowl)
       (is ?vanilla_extract vanilla_extract_liquid)
+      (lane ?vanilla_extract vanilla_extract_liquid vanilla_extract_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract)
@@ -204,13 +226,16 @@
     ; mix: bowl (contains {cinnamon, egg, milk, vanilla extract}), egg (beaten, in [bowl]), milk (in [bowl]), cinnamon (in [bowl]), vanilla extract (in [bowl]), fork -> bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla...
     :parameters (?bowl - bowl ?custard - custard)
     :precondition (and
+      (together ?bowl ?custard)
       (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract)
+      (lane ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract bowl_contains_custard)
       (occupied egg_beaten_in_bowl)
       (occupied milk_in_bowl)
       (occupied cinnamon_in_bowl)
       (occupied vanilla_extract_in_bowl)
       (occupied fork_plain)
       (is ?custard not-yet-made)
+      (lane ?custard not-yet-made custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_custard)
@@ -230,6 +255,7 @@
       (occupied bowl_contains_custard)
       (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (is ?bread bread_sliced)
+      (lane ?bread bread_sliced bread_sliced_soaked_custard)
     )
     :effect (and
       (is ?bread bread_sliced_soaked_custard)
@@ -242,9 +268,12 @@
     ; pick-and-place: frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted), bread (sliced, soaked {custard}) -> frying pan (contains {bread, butter}, on [stove]), bread (in [frying pan], sliced, soaked {custard})
     :parameters (?frying_pan - frying_pan ?bread - bread)
     :precondition (and
+      (together ?frying_pan ?bread)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (lane ?frying_pan frying_pan_contains_butter_on_stove frying_pan_contains_bread_butter_on_stove)
       (occupied butter_in_frying_pan_melted)
       (is ?bread bread_sliced_soaked_custard)
+      (lane ?bread bread_sliced_soaked_custard bread_in_frying_pan_sliced_soaked_custard)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_bread_butter_on_stove)
@@ -260,11 +289,14 @@
     ; fry: stove (on), frying pan (contains {bread, butter}, on [stove]), bread (in [frying pan], sliced, soaked {custard}), spatula -> frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula
     :parameters (?frying_pan - frying_pan ?french_toast - french_toast)
     :precondition (and
+      (together ?frying_pan ?french_toast)
       (occupied stove_on)
       (is ?frying_pan frying_pan_contains_bread_butter_on_stove)
+      (lane ?frying_pan frying_pan_contains_bread_butter_on_stove frying_pan_contains_french_toast_on_stove)
       (occupied bread_in_frying_pan_sliced_soaked_custard)
       (occupied spatula_plain)
       (is ?french_toast not-yet-made)
+      (lane ?french_toast not-yet-made french_toast_cooked_in_frying_pan)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_french_toast_on_stove)
@@ -280,10 +312,13 @@
     ; pick-and-place: frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {french toast}), french toast (cooked, on [plate]), spatula
     :parameters (?french_toast - french_toast ?plate - plate)
     :precondition (and
+      (together ?french_toast ?plate)
       (occupied frying_pan_contains_french_toast_on_stove)
       (is ?french_toast french_toast_cooked_in_frying_pan)
+      (lane ?french_toast french_toast_cooked_in_frying_pan french_toast_cooked_on_plate)
       (occupied spatula_plain)
       (is ?plate plate_empty)
+      (lane ?plate plate_empty plate_contains_french_toast)
     )
     :effect (and
       (is ?french_toast french_toast_cooked_on_plate)
@@ -298,9 +333,14 @@
     ; pour: plate (contains {french toast}), french toast (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {french toast, maple syrup}), french toast (cooked, on [plate], topped {maple syrup}), maple syrup (on [french toast])
     :parameters (?plate - plate ?french_toast - french_toast ?maple_syrup - maple_syrup)
     :precondition (and
+      (together ?plate ?french_toast)
+      (together ?french_toast ?maple_syrup)
       (is ?plate plate_contains_french_toast)
+      (lane ?plate plate_contains_french_toast plate_contains_french_toast_maple_syrup)
       (is ?french_toast french_toast_cooked_on_plate)
+      (lane ?french_toast french_toast_cooked_on_plate french_toast_cooked_on_plate_topped_maple_syrup)
       (is ?maple_syrup maple_syrup_in_bottle)
+      (lane ?maple_syrup maple_syrup_in_bottle maple_syrup_on_french_toast)
     )
     :effect (and
       (is ?plate plate_contains_french_toast_maple_syrup)

@@ -2,7 +2,8 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-instances-86f448b1)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-2d389070)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -76,6 +77,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action pour_u9
@@ -83,8 +86,11 @@
     ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
     :precondition (and
+      (together ?mixing_bowl ?heavy_cream)
       (is ?mixing_bowl mixing_bowl_empty)
+      (lane ?mixing_bowl mixing_bowl_empty mixing_bowl_contains_heavy_cream)
       (is ?heavy_cream heavy_cream_in_carton)
+      (lane ?heavy_cream heavy_cream_in_carton heavy_cream_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
@@ -100,8 +106,11 @@
     ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
     :precondition (and
+      (together ?mixing_bowl ?sugar)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (lane ?mixing_bowl mixing_bowl_contains_heavy_cream mixing_bowl_contains_heavy_cream_sugar)
       (is ?sugar sugar_granulated)
+      (lane ?sugar sugar_granulated sugar_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
@@ -117,8 +126,11 @@
     ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?lime - lime)
     :precondition (and
+      (together ?cutting_board ?lime)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_lime)
       (is ?lime lime_whole)
+      (lane ?lime lime_whole lime_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_lime)
@@ -136,6 +148,7 @@
     :precondition (and
       (occupied cutting_board_contains_lime)
       (is ?lime lime_on_cutting_board_whole)
+      (lane ?lime lime_on_cutting_board_whole lime_halved_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -149,9 +162,14 @@
     ; squeeze: lime (halved, on [cutting board]), juicer (empty) -> lime (squeezed), juicer (contains {lime juice}), lime juice (in [juicer])
     :parameters (?lime - lime ?juicer - juicer ?lime_juice - lime_juice)
     :precondition (and
+      (together ?lime ?juicer)
+      (together ?juicer ?lime_juice)
       (is ?lime lime_halved_on_cutting_board)
+      (lane ?lime lime_halved_on_cutting_board lime_squeezed)
       (is ?juicer juicer_empty)
+      (lane ?juicer juicer_empty juicer_contains_lime_juice)
       (is ?lime_juice not-yet-made)
+      (lane ?lime_juice not-yet-made lime_juice_in_juicer)
     )
     :effect (and
       (is ?lime lime_squeezed)
@@ -170,8 +188,11 @@
     ; pick-and-place: cutting board (empty), strawberry (whole) -> cutting board (contains {strawberry}), strawberry (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?strawberry - strawberry)
     :precondition (and
+      (together ?cutting_board ?strawberry)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_strawberry)
       (is ?strawberry strawberry_whole)
+      (lane ?strawberry strawberry_whole strawberry_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_strawberry)
@@ -189,6 +210,7 @@
     :precondition (and
       (occupied cutting_board_contains_strawberry)
       (is ?strawberry strawberry_on_cutting_board_whole)
+      (lane ?strawberry strawberry_on_cutting_board_whole strawberry_on_cutting_board_sliced)
       (occupied knife_plain)
     )
     :effect (and
@@ -203,6 +225,7 @@
     :parameters (?banana - banana)
     :precondition (and
       (is ?banana banana_whole)
+      (lane ?banana banana_whole banana_peeled)
     )
     :effect (and
       (is ?banana banana_peeled)
@@ -215,8 +238,11 @@
     ; pick-and-place: cutting board (empty), banana (peeled) -> cutting board (contains {banana}), banana (on [cutting board], peeled)
     :parameters (?cutting_board - cutting_board ?banana - banana)
     :precondition (and
+      (together ?cutting_board ?banana)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_banana)
       (is ?banana banana_peeled)
+      (lane ?banana banana_peeled banana_on_cutting_board_peeled)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_banana)
@@ -234,6 +260,7 @@
     :precondition (and
       (occupied cutting_board_contains_banana)
       (is ?banana banana_on_cutting_board_peeled)
+      (lane ?banana banana_on_cutting_board_peeled banana_on_cutting_board_sliced)
       (occupied knife_plain)
     )
     :effect (and
@@ -247,8 +274,11 @@
     ; pick-and-place: bowl (empty), strawberry (on [cutting board], sliced) -> bowl (contains {strawberry}), strawberry (in [bowl], sliced)
     :parameters (?bowl - bowl ?strawberry - strawberry)
     :precondition (and
+      (together ?bowl ?strawberry)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_strawberry)
       (is ?strawberry strawberry_on_cutting_board_sliced)
+      (lane ?strawberry strawberry_on_cutting_board_sliced strawberry_in_bowl_sliced)
     )
     :effect (and
       (is ?bowl bowl_contains_strawberry)
@@ -264,8 +294,11 @@
     ; pick-and-place: bowl (contains {strawberry}), banana (on [cutting board], sliced) -> bowl (contains {banana, strawberry}), banana (in [bowl], sliced)
     :parameters (?bowl - bowl ?banana - banana)
     :precondition (and
+      (together ?bowl ?banana)
       (is ?bowl bowl_contains_strawberry)
+      (lane ?bowl bowl_contains_strawberry bowl_contains_banana_strawberry)
       (is ?banana banana_on_cutting_board_sliced)
+      (lane ?banana banana_on_cutting_board_sliced banana_in_bowl_sliced)
     )
     :effect (and
       (is ?bowl bowl_contains_banana_strawberry)
@@ -281,9 +314,12 @@
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {banana, strawberry}) -> bowl (contains {banana, lime juice, strawberry}), lime juice (in [bowl])
     :parameters (?lime_juice - lime_juice ?bowl - bowl)
     :precondition (and
+      (together ?lime_juice ?bowl)
       (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (lane ?lime_juice lime_juice_in_juicer lime_juice_in_bowl)
       (is ?bowl bowl_contains_banana_strawberry)
+      (lane ?bowl bowl_contains_banana_strawberry bowl_contains_banana_lime_juice_strawberry)
     )
     :effect (and
       (is ?lime_juice lime_juice_in_bowl)
@@ -299,8 +335,11 @@
     ; pour: bowl (contains {banana, lime juice, strawberry}), honey (in [jar]) -> bowl (contains {banana, honey, lime juice, strawberry}), honey (in [bowl])
     :parameters (?bowl - bowl ?honey - honey)
     :precondition (and
+      (together ?bowl ?honey)
       (is ?bowl bowl_contains_banana_lime_juice_strawberry)
+      (lane ?bowl bowl_contains_banana_lime_juice_strawberry bowl_contains_banana_honey_lime_juice_strawberry)
       (is ?honey honey_in_jar)
+      (lane ?honey honey_in_jar honey_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry)
@@ -316,13 +355,16 @@
     ; mix: bowl (contains {banana, honey, lime juice, strawberry}), strawberry (in [bowl], sliced), banana (in [bowl], sliced), lime juice (in [bowl]), honey (in [bowl]), spoon -> bowl (contains {fruit salad}), fruit salad (contains {banana, h...
     :parameters (?bowl - bowl ?fruit_salad - fruit_salad)
     :precondition (and
+      (together ?bowl ?fruit_salad)
       (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry)
+      (lane ?bowl bowl_contains_banana_honey_lime_juice_strawberry bowl_contains_fruit_salad)
       (occupied strawberry_in_bowl_sliced)
       (occupied banana_in_bowl_sliced)
       (occupied lime_juice_in_bowl)
       (occupied honey_in_bowl)
       (occupied spoon_plain)
       (is ?fruit_salad not-yet-made)
+      (lane ?fruit_salad not-yet-made fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_fruit_salad)
@@ -337,11 +379,14 @@
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
     :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
     :precondition (and
+      (together ?mixing_bowl ?whipped_cream)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (lane ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar mixing_bowl_contains_whipped_cream)
       (occupied heavy_cream_in_mixing_bowl)
       (occupied sugar_in_mixing_bowl)
       (occupied whisk_plain)
       (is ?whipped_cream not-yet-made)
+      (lane ?whipped_cream not-yet-made whipped_cream_in_mixing_bowl_whipped)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
@@ -357,10 +402,15 @@
     ; scoop: bowl (contains {fruit salad}), fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl]), mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spoon -> bowl (contains {fruit salad, whi...
     :parameters (?bowl - bowl ?fruit_salad - fruit_salad ?whipped_cream - whipped_cream)
     :precondition (and
+      (together ?bowl ?fruit_salad)
+      (together ?fruit_salad ?whipped_cream)
       (is ?bowl bowl_contains_fruit_salad)
+      (lane ?bowl bowl_contains_fruit_salad bowl_contains_fruit_salad_whipped_cream)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
+      (lane ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
       (occupied mixing_bowl_contains_whipped_cream)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (lane ?whipped_cream whipped_cream_in_mixing_bowl_whipped whipped_cream_on_fruit_salad_whipped)
       (occupied spoon_plain)
     )
     :effect (and

@@ -2,7 +2,8 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
-(define (domain foon-instances-d4cff180)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-a72d58d5)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -72,6 +73,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action pick-and-place_u47
@@ -79,8 +82,11 @@
     ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?onion - onion)
     :precondition (and
+      (together ?cutting_board ?onion)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_onion)
       (is ?onion onion_whole)
+      (lane ?onion onion_whole onion_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
@@ -98,6 +104,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
+      (lane ?onion onion_on_cutting_board_whole onion_on_cutting_board_peeled)
       (occupied knife_plain)
     )
     :effect (and
@@ -113,6 +120,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
+      (lane ?onion onion_on_cutting_board_peeled onion_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -126,8 +134,11 @@
     ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?tomato - tomato)
     :precondition (and
+      (together ?cutting_board ?tomato)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_tomato)
       (is ?tomato tomato_whole)
+      (lane ?tomato tomato_whole tomato_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
@@ -145,6 +156,7 @@
     :precondition (and
       (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
+      (lane ?tomato tomato_on_cutting_board_whole tomato_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -158,8 +170,11 @@
     ; pick-and-place: bowl (contains {avocado, lime juice}), onion (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion}), onion (chopped, in [bowl])
     :parameters (?bowl - bowl ?onion - onion)
     :precondition (and
+      (together ?bowl ?onion)
       (is ?bowl bowl_contains_avocado_lime_juice)
+      (lane ?bowl bowl_contains_avocado_lime_juice bowl_contains_avocado_lime_juice_onion)
       (is ?onion onion_chopped_on_cutting_board)
+      (lane ?onion onion_chopped_on_cutting_board onion_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
@@ -175,8 +190,11 @@
     ; pick-and-place: bowl (contains {avocado, lime juice, onion}), tomato (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion, tomato}), tomato (chopped, in [bowl])
     :parameters (?bowl - bowl ?tomato - tomato)
     :precondition (and
+      (together ?bowl ?tomato)
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
+      (lane ?bowl bowl_contains_avocado_lime_juice_onion bowl_contains_avocado_lime_juice_onion_tomato)
       (is ?tomato tomato_chopped_on_cutting_board)
+      (lane ?tomato tomato_chopped_on_cutting_board tomato_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
@@ -193,8 +211,11 @@
     ; pick-and-place: cutting board (empty), cucumber (whole) -> cutting board (contains {cucumber}), cucumber (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?cucumber - cucumber)
     :precondition (and
+      (together ?cutting_board ?cucumber)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_cucumber)
       (is ?cucumber cucumber_whole)
+      (lane ?cucumber cucumber_whole cucumber_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_cucumber)
@@ -212,6 +233,7 @@
     :precondition (and
       (occupied cutting_board_contains_cucumber)
       (is ?cucumber cucumber_on_cutting_board_whole)
+      (lane ?cucumber cucumber_on_cutting_board_whole cucumber_on_cutting_board_sliced)
       (occupied knife_plain)
     )
     :effect (and
@@ -227,6 +249,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
+      (lane ?onion onion_on_cutting_board_peeled onion_on_cutting_board_sliced)
       (occupied knife_plain)
     )
     :effect (and
@@ -240,8 +263,11 @@
     ; pick-and-place: bowl (empty), cucumber (on [cutting board], sliced) -> bowl (contains {cucumber}), cucumber (in [bowl], sliced)
     :parameters (?bowl - bowl ?cucumber - cucumber)
     :precondition (and
+      (together ?bowl ?cucumber)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_cucumber)
       (is ?cucumber cucumber_on_cutting_board_sliced)
+      (lane ?cucumber cucumber_on_cutting_board_sliced cucumber_in_bowl_sliced)
     )
     :effect (and
       (is ?bowl bowl_contains_cucumber)
@@ -257,8 +283,11 @@
     ; pick-and-place: bowl (contains {cucumber}), tomato (chopped, on [cutting board]) -> bowl (contains {cucumber, tomato}), tomato (chopped, in [bowl])
     :parameters (?bowl - bowl ?tomato - tomato)
     :precondition (and
+      (together ?bowl ?tomato)
       (is ?bowl bowl_contains_cucumber)
+      (lane ?bowl bowl_contains_cucumber bowl_contains_cucumber_tomato)
       (is ?tomato tomato_chopped_on_cutting_board)
+      (lane ?tomato tomato_chopped_on_cutting_board tomato_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_cucumber_tomato)
@@ -274,8 +303,11 @@
     ; pick-and-place: bowl (contains {cucumber, tomato}), onion (on [cutting board], sliced) -> bowl (contains {cucumber, onion, tomato}), onion (in [bowl], sliced)
     :parameters (?bowl - bowl ?onion - onion)
     :precondition (and
+      (together ?bowl ?onion)
       (is ?bowl bowl_contains_cucumber_tomato)
+      (lane ?bowl bowl_contains_cucumber_tomato bowl_contains_cucumber_onion_tomato)
       (is ?onion onion_on_cutting_board_sliced)
+      (lane ?onion onion_on_cutting_board_sliced onion_in_bowl_sliced)
     )
     :effect (and
       (is ?bowl bowl_contains_cucumber_onion_tomato)
@@ -291,8 +323,11 @@
     ; pick-and-place: bowl (contains {cucumber, onion, tomato}), black olive (pitted) -> bowl (contains {black olive, cucumber, onion, tomato}), black olive (in [bowl], pitted)
     :parameters (?bowl - bowl ?black_olive - black_olive)
     :precondition (and
+      (together ?bowl ?black_olive)
       (is ?bowl bowl_contains_cucumber_onion_tomato)
+      (lane ?bowl bowl_contains_cucumber_onion_tomato bowl_contains_black_olive_cucumber_onion_tomato)
       (is ?black_olive black_olive_pitted)
+      (lane ?black_olive black_olive_pitted black_olive_in_bowl_pitted)
     )
     :effect (and
       (is ?bowl bowl_contains_black_olive_cucumber_onion_tomato)
@@ -308,8 +343,11 @@
     ; sprinkle: bowl (contains {black olive, cucumber, onion, tomato}), feta cheese (crumbled) -> bowl (contains {black olive, cucumber, feta cheese, onion, tomato}), feta cheese (crumbled, in [bowl])
     :parameters (?bowl - bowl ?feta_cheese - feta_cheese)
     :precondition (and
+      (together ?bowl ?feta_cheese)
       (is ?bowl bowl_contains_black_olive_cucumber_onion_tomato)
+      (lane ?bowl bowl_contains_black_olive_cucumber_onion_tomato bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
       (is ?feta_cheese feta_cheese_crumbled)
+      (lane ?feta_cheese feta_cheese_crumbled feta_cheese_crumbled_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
@@ -325,9 +363,14 @@
     ; pour: bowl (contains {black olive, cucumber, feta cheese, onion, tomato}), olive oil (in [bottle]), red wine vinegar (in [bottle]) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), olive...
     :parameters (?bowl - bowl ?olive_oil - olive_oil ?red_wine_vinegar - red_wine_vinegar)
     :precondition (and
+      (together ?bowl ?olive_oil)
+      (together ?olive_oil ?red_wine_vinegar)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
+      (lane ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (is ?olive_oil olive_oil_in_bottle)
+      (lane ?olive_oil olive_oil_in_bottle olive_oil_in_bowl)
       (is ?red_wine_vinegar red_wine_vinegar_in_bottle)
+      (lane ?red_wine_vinegar red_wine_vinegar_in_bottle red_wine_vinegar_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
@@ -346,8 +389,11 @@
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
     :parameters (?bowl - bowl ?oregano - oregano)
     :precondition (and
+      (together ?bowl ?oregano)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
+      (lane ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4 bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (is ?oregano oregano_dried)
+      (lane ?oregano oregano_dried oregano_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
@@ -363,7 +409,9 @@
     ; toss: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), cucumber (in [bowl], sliced), tomato (chopped, in [bowl]), onion (in [bowl], sliced), black olive (in [bowl], pitted), feta ...
     :parameters (?bowl - bowl ?greek_salad - greek_salad)
     :precondition (and
+      (together ?bowl ?greek_salad)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
+      (lane ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6 bowl_contains_greek_salad)
       (occupied cucumber_in_bowl_sliced)
       (occupied tomato_chopped_in_bowl)
       (occupied onion_in_bowl_sliced)
@@ -374,6 +422,7 @@
       (occupied oregano_in_bowl)
       (occupied salad_tongs_plain)
       (is ?greek_salad not-yet-made)
+      (lane ?greek_salad not-yet-made greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
     )
     :effect (and
       (is ?bowl bowl_contains_greek_salad)

@@ -2,7 +2,8 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-(define (domain foon-instances-f71def01)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-b4c74de7)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -79,6 +80,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action pick-and-place_u47
@@ -86,8 +89,11 @@
     ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?onion - onion)
     :precondition (and
+      (together ?cutting_board ?onion)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_onion)
       (is ?onion onion_whole)
+      (lane ?onion onion_whole onion_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
@@ -105,6 +111,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
+      (lane ?onion onion_on_cutting_board_whole onion_on_cutting_board_peeled)
       (occupied knife_plain)
     )
     :effect (and
@@ -120,6 +127,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
+      (lane ?onion onion_on_cutting_board_peeled onion_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -133,8 +141,11 @@
     ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?tomato - tomato)
     :precondition (and
+      (together ?cutting_board ?tomato)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_tomato)
       (is ?tomato tomato_whole)
+      (lane ?tomato tomato_whole tomato_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
@@ -152,6 +163,7 @@
     :precondition (and
       (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
+      (lane ?tomato tomato_on_cutting_board_whole tomato_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -165,8 +177,11 @@
     ; pick-and-place: cutting board (empty), avocado (whole) -> cutting board (contains {avocado}), avocado (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?avocado - avocado)
     :precondition (and
+      (together ?cutting_board ?avocado)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_avocado)
       (is ?avocado avocado_whole)
+      (lane ?avocado avocado_whole avocado_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_avocado)
@@ -184,6 +199,7 @@
     :precondition (and
       (occupied cutting_board_contains_avocado)
       (is ?avocado avocado_on_cutting_board_whole)
+      (lane ?avocado avocado_on_cutting_board_whole avocado_halved_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -197,9 +213,12 @@
     ; scoop: avocado (halved, on [cutting board]), spoon, bowl (empty) -> bowl (contains {avocado}), avocado (in [bowl], scooped), spoon
     :parameters (?avocado - avocado ?bowl - bowl)
     :precondition (and
+      (together ?avocado ?bowl)
       (is ?avocado avocado_halved_on_cutting_board)
+      (lane ?avocado avocado_halved_on_cutting_board avocado_in_bowl_scooped)
       (occupied spoon_plain)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_avocado)
     )
     :effect (and
       (is ?avocado avocado_in_bowl_scooped)
@@ -215,6 +234,7 @@
     :parameters (?avocado - avocado)
     :precondition (and
       (is ?avocado avocado_in_bowl_scooped)
+      (lane ?avocado avocado_in_bowl_scooped avocado_in_bowl_mashed)
       (occupied fork_plain)
     )
     :effect (and
@@ -229,8 +249,11 @@
     ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?lime - lime)
     :precondition (and
+      (together ?cutting_board ?lime)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_lime)
       (is ?lime lime_whole)
+      (lane ?lime lime_whole lime_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_lime)
@@ -248,6 +271,7 @@
     :precondition (and
       (occupied cutting_board_contains_lime)
       (is ?lime lime_on_cutting_board_whole)
+      (lane ?lime lime_on_cutting_board_whole lime_halved_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -261,9 +285,14 @@
     ; squeeze: lime (halved, on [cutting board]), juicer (empty) -> lime (squeezed), juicer (contains {lime juice}), lime juice (in [juicer])
     :parameters (?lime - lime ?juicer - juicer ?lime_juice - lime_juice)
     :precondition (and
+      (together ?lime ?juicer)
+      (together ?juicer ?lime_juice)
       (is ?lime lime_halved_on_cutting_board)
+      (lane ?lime lime_halved_on_cutting_board lime_squeezed)
       (is ?juicer juicer_empty)
+      (lane ?juicer juicer_empty juicer_contains_lime_juice)
       (is ?lime_juice not-yet-made)
+      (lane ?lime_juice not-yet-made lime_juice_in_juicer)
     )
     :effect (and
       (is ?lime lime_squeezed)
@@ -282,9 +311,12 @@
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {avocado}), avocado (in [bowl], mashed) -> bowl (contains {avocado, lime juice}), lime juice (in [bowl])
     :parameters (?lime_juice - lime_juice ?bowl - bowl)
     :precondition (and
+      (together ?lime_juice ?bowl)
       (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (lane ?lime_juice lime_juice_in_juicer lime_juice_in_bowl)
       (is ?bowl bowl_contains_avocado)
+      (lane ?bowl bowl_contains_avocado bowl_contains_avocado_lime_juice)
       (occupied avocado_in_bowl_mashed)
     )
     :effect (and
@@ -301,8 +333,11 @@
     ; pick-and-place: bowl (contains {avocado, lime juice}), onion (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion}), onion (chopped, in [bowl])
     :parameters (?bowl - bowl ?onion - onion)
     :precondition (and
+      (together ?bowl ?onion)
       (is ?bowl bowl_contains_avocado_lime_juice)
+      (lane ?bowl bowl_contains_avocado_lime_juice bowl_contains_avocado_lime_juice_onion)
       (is ?onion onion_chopped_on_cutting_board)
+      (lane ?onion onion_chopped_on_cutting_board onion_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
@@ -318,8 +353,11 @@
     ; pick-and-place: bowl (contains {avocado, lime juice, onion}), tomato (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion, tomato}), tomato (chopped, in [bowl])
     :parameters (?bowl - bowl ?tomato - tomato)
     :precondition (and
+      (together ?bowl ?tomato)
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
+      (lane ?bowl bowl_contains_avocado_lime_juice_onion bowl_contains_avocado_lime_juice_onion_tomato)
       (is ?tomato tomato_chopped_on_cutting_board)
+      (lane ?tomato tomato_chopped_on_cutting_board tomato_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
@@ -335,8 +373,11 @@
     ; pick-and-place: cutting board (empty), cilantro (fresh) -> cutting board (contains {cilantro}), cilantro (fresh, on [cutting board])
     :parameters (?cutting_board - cutting_board ?cilantro - cilantro)
     :precondition (and
+      (together ?cutting_board ?cilantro)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_cilantro)
       (is ?cilantro cilantro_fresh)
+      (lane ?cilantro cilantro_fresh cilantro_fresh_on_cutting_board)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_cilantro)
@@ -354,6 +395,7 @@
     :precondition (and
       (occupied cutting_board_contains_cilantro)
       (is ?cilantro cilantro_fresh_on_cutting_board)
+      (lane ?cilantro cilantro_fresh_on_cutting_board cilantro_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -367,8 +409,11 @@
     ; pick-and-place: bowl (contains {avocado, lime juice, onion, tomato}), cilantro (chopped, on [cutting board]) -> bowl (contains {avocado, cilantro, lime juice, onion, tomato}), cilantro (chopped, in [bowl])
     :parameters (?bowl - bowl ?cilantro - cilantro)
     :precondition (and
+      (together ?bowl ?cilantro)
       (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato)
+      (lane ?bowl bowl_contains_avocado_lime_juice_onion_tomato bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
       (is ?cilantro cilantro_chopped_on_cutting_board)
+      (lane ?cilantro cilantro_chopped_on_cutting_board cilantro_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
@@ -384,8 +429,11 @@
     ; sprinkle: bowl (contains {avocado, cilantro, lime juice, onion, tomato}), salt (granulated) -> bowl (contains {avocado, cilantro, lime juice, onion, salt, tomato}), salt (in [bowl])
     :parameters (?bowl - bowl ?salt - salt)
     :precondition (and
+      (together ?bowl ?salt)
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
+      (lane ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
       (is ?salt salt_granulated)
+      (lane ?salt salt_granulated salt_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
@@ -401,7 +449,9 @@
     ; mix: bowl (contains {avocado, cilantro, lime juice, onion, salt, tomato}), avocado (in [bowl], mashed), lime juice (in [bowl]), onion (chopped, in [bowl]), tomato (chopped, in [bowl]), cilantro (chopped, in [bowl]), salt (in [bowl]), for...
     :parameters (?bowl - bowl ?guacamole - guacamole)
     :precondition (and
+      (together ?bowl ?guacamole)
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
+      (lane ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato bowl_contains_guacamole)
       (occupied avocado_in_bowl_mashed)
       (occupied lime_juice_in_bowl)
       (occupied onion_chopped_in_bowl)
@@ -410,6 +460,7 @@
       (occupied salt_in_bowl)
       (occupied fork_plain)
       (is ?guacamole not-yet-made)
+      (lane ?guacamole not-yet-made guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_guacamole)
@@ -426,8 +477,11 @@
     ; pick-and-place: bowl (contains {cucumber}), tomato (chopped, on [cutting board]) -> bowl (contains {cucumber, tomato}), tomato (chopped, in [bowl])
     :parameters (?bowl - bowl ?tomato - tomato)
     :precondition (and
+      (together ?bowl ?tomato)
       (is ?bowl bowl_contains_cucumber)
+      (lane ?bowl bowl_contains_cucumber bowl_contains_cucumber_tomato)
       (is ?tomato tomato_chopped_on_cutting_board)
+      (lane ?tomato tomato_chopped_on_cutting_board tomato_chopped_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_cucumber_tomato)
@@ -444,9 +498,12 @@
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {banana, strawberry}) -> bowl (contains {banana, lime juice, strawberry}), lime juice (in [bowl])
     :parameters (?lime_juice - lime_juice ?bowl - bowl)
     :precondition (and
+      (together ?lime_juice ?bowl)
       (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (lane ?lime_juice lime_juice_in_juicer lime_juice_in_bowl)
       (is ?bowl bowl_contains_banana_strawberry)
+      (lane ?bowl bowl_contains_banana_strawberry bowl_contains_banana_lime_juice_strawberry)
     )
     :effect (and
       (is ?lime_juice lime_juice_in_bowl)

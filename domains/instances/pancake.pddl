@@ -2,7 +2,8 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-(define (domain foon-instances-5358e0c9)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-dead29b0)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -76,6 +77,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action pour_u10
@@ -83,8 +86,11 @@
     ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
     :precondition (and
+      (together ?mixing_bowl ?sugar)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (lane ?mixing_bowl mixing_bowl_contains_heavy_cream mixing_bowl_contains_heavy_cream_sugar)
       (is ?sugar sugar_granulated)
+      (lane ?sugar sugar_granulated sugar_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
@@ -102,7 +108,9 @@
     :parameters (?frying_pan - frying_pan ?stove - stove)
     :precondition (and
       (is ?frying_pan frying_pan_empty)
+      (lane ?frying_pan frying_pan_empty frying_pan_empty_on_stove)
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_off)
     )
     :effect (and
       (is ?frying_pan frying_pan_empty_on_stove)
@@ -116,6 +124,7 @@
     :parameters (?stove - stove)
     :precondition (and
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_on)
     )
     :effect (and
       (is ?stove stove_on)
@@ -129,8 +138,11 @@
     ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
     :parameters (?frying_pan - frying_pan ?butter - butter)
     :precondition (and
+      (together ?frying_pan ?butter)
       (is ?frying_pan frying_pan_empty_on_stove)
+      (lane ?frying_pan frying_pan_empty_on_stove frying_pan_contains_butter_on_stove)
       (is ?butter butter_solid)
+      (lane ?butter butter_solid butter_in_frying_pan_solid)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_butter_on_stove)
@@ -147,6 +159,7 @@
     :precondition (and
       (occupied stove_on)
       (is ?butter butter_in_frying_pan_solid)
+      (lane ?butter butter_in_frying_pan_solid butter_in_frying_pan_melted)
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
@@ -160,8 +173,11 @@
     ; pour: mixing bowl (empty), flour (powder) -> mixing bowl (contains {flour}), flour (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?flour - flour)
     :precondition (and
+      (together ?mixing_bowl ?flour)
       (is ?mixing_bowl mixing_bowl_empty)
+      (lane ?mixing_bowl mixing_bowl_empty mixing_bowl_contains_flour)
       (is ?flour flour_powder)
+      (lane ?flour flour_powder flour_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_flour)
@@ -177,10 +193,17 @@
     ; pour: mixing bowl (contains {flour}), baking powder (powder), sugar (granulated), salt (granulated) -> mixing bowl (contains {baking powder, flour, salt, sugar}), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixi...
     :parameters (?mixing_bowl - mixing_bowl ?baking_powder - baking_powder ?sugar - sugar ?salt - salt)
     :precondition (and
+      (together ?mixing_bowl ?baking_powder)
+      (together ?baking_powder ?sugar)
+      (together ?sugar ?salt)
       (is ?mixing_bowl mixing_bowl_contains_flour)
+      (lane ?mixing_bowl mixing_bowl_contains_flour mixing_bowl_contains_baking_powder_flour_salt_sugar)
       (is ?baking_powder baking_powder_powder)
+      (lane ?baking_powder baking_powder_powder baking_powder_in_mixing_bowl)
       (is ?sugar sugar_granulated)
+      (lane ?sugar sugar_granulated sugar_in_mixing_bowl)
       (is ?salt salt_granulated)
+      (lane ?salt salt_granulated salt_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar)
@@ -202,8 +225,11 @@
     ; crack: mixing bowl (contains {baking powder, flour, salt, sugar}), egg (whole) -> mixing bowl (contains {baking powder, egg, flour, salt, sugar}), egg (cracked, in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?egg - egg)
     :precondition (and
+      (together ?mixing_bowl ?egg)
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar)
+      (lane ?mixing_bowl mixing_bowl_contains_baking_powder_flour_salt_sugar mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
       (is ?egg egg_whole)
+      (lane ?egg egg_whole egg_cracked_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
@@ -219,8 +245,11 @@
     ; pour: mixing bowl (contains {baking powder, egg, flour, salt, sugar}), milk (in [carton]) -> mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), milk (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?milk - milk)
     :precondition (and
+      (together ?mixing_bowl ?milk)
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
+      (lane ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
       (is ?milk milk_in_carton)
+      (lane ?milk milk_in_carton milk_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
@@ -236,7 +265,9 @@
     ; whisk: mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), flour (in [mixing bowl]), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixing bowl]), egg (cracked, in [mixing bowl]), milk (in [mixin...
     :parameters (?mixing_bowl - mixing_bowl ?pancake_batter - pancake_batter)
     :precondition (and
+      (together ?mixing_bowl ?pancake_batter)
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
+      (lane ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar mixing_bowl_contains_pancake_batter)
       (occupied flour_in_mixing_bowl)
       (occupied baking_powder_in_mixing_bowl)
       (occupied sugar_in_mixing_bowl)
@@ -245,6 +276,7 @@
       (occupied milk_in_mixing_bowl)
       (occupied whisk_plain)
       (is ?pancake_batter not-yet-made)
+      (lane ?pancake_batter not-yet-made pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_pancake_batter)
@@ -260,10 +292,13 @@
     ; pour: mixing bowl (contains {pancake batter}), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [mixing bowl]), ladle, frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan ...
     :parameters (?pancake_batter - pancake_batter ?frying_pan - frying_pan)
     :precondition (and
+      (together ?pancake_batter ?frying_pan)
       (occupied mixing_bowl_contains_pancake_batter)
       (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
+      (lane ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
       (occupied ladle_plain)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (lane ?frying_pan frying_pan_contains_butter_on_stove frying_pan_contains_butter_pancake_batter_on_stove)
       (occupied butter_in_frying_pan_melted)
     )
     :effect (and
@@ -280,10 +315,13 @@
     ; cook: stove (on), frying pan (contains {butter, pancake batter}, on [stove]), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [frying pan]) -> frying pan (contains {pancake}, on [stove]), pancake (half-cooked,...
     :parameters (?frying_pan - frying_pan ?pancake - pancake)
     :precondition (and
+      (together ?frying_pan ?pancake)
       (occupied stove_on)
       (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove)
+      (lane ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove frying_pan_contains_pancake_on_stove)
       (occupied pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
       (is ?pancake not-yet-made)
+      (lane ?pancake not-yet-made pancake_half-cooked_in_frying_pan)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_pancake_on_stove)
@@ -300,6 +338,7 @@
     :parameters (?pancake - pancake)
     :precondition (and
       (is ?pancake pancake_half-cooked_in_frying_pan)
+      (lane ?pancake pancake_half-cooked_in_frying_pan pancake_cooked_in_frying_pan)
       (occupied spatula_plain)
     )
     :effect (and
@@ -313,10 +352,13 @@
     ; pick-and-place: frying pan (contains {pancake}, on [stove]), pancake (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {pancake}), pancake (cooked, on [plate]), spatula
     :parameters (?pancake - pancake ?plate - plate)
     :precondition (and
+      (together ?pancake ?plate)
       (occupied frying_pan_contains_pancake_on_stove)
       (is ?pancake pancake_cooked_in_frying_pan)
+      (lane ?pancake pancake_cooked_in_frying_pan pancake_cooked_on_plate)
       (occupied spatula_plain)
       (is ?plate plate_empty)
+      (lane ?plate plate_empty plate_contains_pancake)
     )
     :effect (and
       (is ?pancake pancake_cooked_on_plate)
@@ -331,9 +373,14 @@
     ; pour: plate (contains {pancake}), pancake (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {maple syrup, pancake}), pancake (cooked, on [plate], topped {maple syrup}), maple syrup (on [pancake])
     :parameters (?plate - plate ?pancake - pancake ?maple_syrup - maple_syrup)
     :precondition (and
+      (together ?plate ?pancake)
+      (together ?pancake ?maple_syrup)
       (is ?plate plate_contains_pancake)
+      (lane ?plate plate_contains_pancake plate_contains_maple_syrup_pancake)
       (is ?pancake pancake_cooked_on_plate)
+      (lane ?pancake pancake_cooked_on_plate pancake_cooked_on_plate_topped_maple_syrup)
       (is ?maple_syrup maple_syrup_in_bottle)
+      (lane ?maple_syrup maple_syrup_in_bottle maple_syrup_on_pancake)
     )
     :effect (and
       (is ?plate plate_contains_maple_syrup_pancake)

@@ -2,7 +2,8 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-(define (domain foon-instances-7af98adb)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-daca8552)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -64,6 +65,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action crack_u17
@@ -71,8 +74,11 @@
     ; crack: bowl (empty), egg (whole) -> bowl (contains {egg}), egg (cracked, in [bowl])
     :parameters (?bowl - bowl ?egg - egg)
     :precondition (and
+      (together ?bowl ?egg)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_egg)
       (is ?egg egg_whole)
+      (lane ?egg egg_whole egg_cracked_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_egg)
@@ -88,6 +94,7 @@
     :parameters (?egg - egg)
     :precondition (and
       (is ?egg egg_cracked_in_bowl)
+      (lane ?egg egg_cracked_in_bowl egg_beaten_in_bowl)
       (occupied whisk_plain)
     )
     :effect (and
@@ -102,9 +109,12 @@
     ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
     :parameters (?bowl - bowl ?milk - milk)
     :precondition (and
+      (together ?bowl ?milk)
       (is ?bowl bowl_contains_egg)
+      (lane ?bowl bowl_contains_egg bowl_contains_egg_milk)
       (occupied egg_beaten_in_bowl)
       (is ?milk milk_in_carton)
+      (lane ?milk milk_in_carton milk_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_milk)
@@ -120,9 +130,14 @@
     ; sprinkle: bowl (contains {egg, milk}), salt (granulated), black pepper (ground) -> bowl (contains {black pepper, egg, milk, salt}), salt (in [bowl]), black pepper (in [bowl])
     :parameters (?bowl - bowl ?salt - salt ?black_pepper - black_pepper)
     :precondition (and
+      (together ?bowl ?salt)
+      (together ?salt ?black_pepper)
       (is ?bowl bowl_contains_egg_milk)
+      (lane ?bowl bowl_contains_egg_milk bowl_contains_black_pepper_egg_milk_salt)
       (is ?salt salt_granulated)
+      (lane ?salt salt_granulated salt_in_bowl)
       (is ?black_pepper black_pepper_ground)
+      (lane ?black_pepper black_pepper_ground black_pepper_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
@@ -141,13 +156,16 @@
     ; mix: bowl (contains {black pepper, egg, milk, salt}), egg (beaten, in [bowl]), milk (in [bowl]), salt (in [bowl]), black pepper (in [bowl]), whisk -> bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, i...
     :parameters (?bowl - bowl ?egg_mixture - egg_mixture)
     :precondition (and
+      (together ?bowl ?egg_mixture)
       (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
+      (lane ?bowl bowl_contains_black_pepper_egg_milk_salt bowl_contains_egg_mixture)
       (occupied egg_beaten_in_bowl)
       (occupied milk_in_bowl)
       (occupied salt_in_bowl)
       (occupied black_pepper_in_bowl)
       (occupied whisk_plain)
       (is ?egg_mixture not-yet-made)
+      (lane ?egg_mixture not-yet-made egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_mixture)
@@ -164,7 +182,9 @@
     :parameters (?frying_pan - frying_pan ?stove - stove)
     :precondition (and
       (is ?frying_pan frying_pan_empty)
+      (lane ?frying_pan frying_pan_empty frying_pan_empty_on_stove)
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_off)
     )
     :effect (and
       (is ?frying_pan frying_pan_empty_on_stove)
@@ -178,6 +198,7 @@
     :parameters (?stove - stove)
     :precondition (and
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_on)
     )
     :effect (and
       (is ?stove stove_on)
@@ -191,8 +212,11 @@
     ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
     :parameters (?frying_pan - frying_pan ?butter - butter)
     :precondition (and
+      (together ?frying_pan ?butter)
       (is ?frying_pan frying_pan_empty_on_stove)
+      (lane ?frying_pan frying_pan_empty_on_stove frying_pan_contains_butter_on_stove)
       (is ?butter butter_solid)
+      (lane ?butter butter_solid butter_in_frying_pan_solid)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_butter_on_stove)
@@ -209,6 +233,7 @@
     :precondition (and
       (occupied stove_on)
       (is ?butter butter_in_frying_pan_solid)
+      (lane ?butter butter_in_frying_pan_solid butter_in_frying_pan_melted)
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
@@ -222,9 +247,12 @@
     ; pour: bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, in [bowl]), frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan (contains {butter, egg mixture}, on [stove...
     :parameters (?egg_mixture - egg_mixture ?frying_pan - frying_pan)
     :precondition (and
+      (together ?egg_mixture ?frying_pan)
       (occupied bowl_contains_egg_mixture)
       (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
+      (lane ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
+      (lane ?frying_pan frying_pan_contains_butter_on_stove frying_pan_contains_butter_egg_mixture_on_stove)
       (occupied butter_in_frying_pan_melted)
     )
     :effect (and
@@ -241,11 +269,14 @@
     ; stir: stove (on), frying pan (contains {butter, egg mixture}, on [stove]), egg mixture (contains {black pepper, egg, milk, salt}, in [frying pan]), spatula -> frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in...
     :parameters (?frying_pan - frying_pan ?scrambled_eggs - scrambled_eggs)
     :precondition (and
+      (together ?frying_pan ?scrambled_eggs)
       (occupied stove_on)
       (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove)
+      (lane ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove frying_pan_contains_scrambled_eggs_on_stove)
       (occupied egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
       (occupied spatula_plain)
       (is ?scrambled_eggs not-yet-made)
+      (lane ?scrambled_eggs not-yet-made scrambled_eggs_cooked_in_frying_pan)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
@@ -261,10 +292,13 @@
     ; scoop: frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {scrambled eggs}), scrambled eggs (cooked, on [plate]), spatula
     :parameters (?scrambled_eggs - scrambled_eggs ?plate - plate)
     :precondition (and
+      (together ?scrambled_eggs ?plate)
       (occupied frying_pan_contains_scrambled_eggs_on_stove)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (lane ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan scrambled_eggs_cooked_on_plate)
       (occupied spatula_plain)
       (is ?plate plate_empty)
+      (lane ?plate plate_empty plate_contains_scrambled_eggs)
     )
     :effect (and
       (is ?scrambled_eggs scrambled_eggs_cooked_on_plate)
@@ -282,6 +316,7 @@
     :parameters (?egg - egg)
     :precondition (and
       (is ?egg egg_cracked_in_bowl)
+      (lane ?egg egg_cracked_in_bowl egg_beaten_in_bowl)
       (occupied fork_plain)
     )
     :effect (and
@@ -296,8 +331,11 @@
     ; sprinkle: bowl (contains {avocado, cilantro, lime juice, onion, tomato}), salt (granulated) -> bowl (contains {avocado, cilantro, lime juice, onion, salt, tomato}), salt (in [bowl])
     :parameters (?bowl - bowl ?salt - salt)
     :precondition (and
+      (together ?bowl ?salt)
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato)
+      (lane ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_tomato bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
       (is ?salt salt_granulated)
+      (lane ?salt salt_granulated salt_in_bowl)
     )
     :effect (and
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)

@@ -2,7 +2,8 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
-(define (domain foon-instances-4c2425ee)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-83c546f8)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -69,6 +70,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action turn_on_u23
@@ -77,6 +80,7 @@
     :parameters (?stove - stove)
     :precondition (and
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_on)
     )
     :effect (and
       (is ?stove stove_on)
@@ -90,8 +94,11 @@
     ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?onion - onion)
     :precondition (and
+      (together ?cutting_board ?onion)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_onion)
       (is ?onion onion_whole)
+      (lane ?onion onion_whole onion_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
@@ -109,6 +116,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
+      (lane ?onion onion_on_cutting_board_whole onion_on_cutting_board_peeled)
       (occupied knife_plain)
     )
     :effect (and
@@ -124,6 +132,7 @@
     :precondition (and
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
+      (lane ?onion onion_on_cutting_board_peeled onion_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -137,8 +146,11 @@
     ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
     :parameters (?cutting_board - cutting_board ?tomato - tomato)
     :precondition (and
+      (together ?cutting_board ?tomato)
       (is ?cutting_board cutting_board_empty)
+      (lane ?cutting_board cutting_board_empty cutting_board_contains_tomato)
       (is ?tomato tomato_whole)
+      (lane ?tomato tomato_whole tomato_on_cutting_board_whole)
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
@@ -156,6 +168,7 @@
     :precondition (and
       (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
+      (lane ?tomato tomato_on_cutting_board_whole tomato_chopped_on_cutting_board)
       (occupied knife_plain)
     )
     :effect (and
@@ -170,7 +183,9 @@
     :parameters (?pot - pot ?stove - stove)
     :precondition (and
       (is ?pot pot_empty)
+      (lane ?pot pot_empty pot_empty_on_stove)
       (is ?stove stove_off)
+      (lane ?stove stove_off stove_off)
     )
     :effect (and
       (is ?pot pot_empty_on_stove)
@@ -183,8 +198,11 @@
     ; pour: pot (empty, on [stove]), olive oil (in [bottle]) -> pot (contains {olive oil}, on [stove]), olive oil (in [pot])
     :parameters (?pot - pot ?olive_oil - olive_oil)
     :precondition (and
+      (together ?pot ?olive_oil)
       (is ?pot pot_empty_on_stove)
+      (lane ?pot pot_empty_on_stove pot_contains_olive_oil_on_stove)
       (is ?olive_oil olive_oil_in_bottle)
+      (lane ?olive_oil olive_oil_in_bottle olive_oil_in_pot)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_on_stove)
@@ -200,8 +218,11 @@
     ; pick-and-place: pot (contains {olive oil}, on [stove]), onion (chopped, on [cutting board]) -> pot (contains {olive oil, onion}, on [stove]), onion (chopped, in [pot])
     :parameters (?pot - pot ?onion - onion)
     :precondition (and
+      (together ?pot ?onion)
       (is ?pot pot_contains_olive_oil_on_stove)
+      (lane ?pot pot_contains_olive_oil_on_stove pot_contains_olive_oil_onion_on_stove)
       (is ?onion onion_chopped_on_cutting_board)
+      (lane ?onion onion_chopped_on_cutting_board onion_chopped_in_pot)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_onion_on_stove)
@@ -219,6 +240,7 @@
       (occupied stove_on)
       (occupied olive_oil_in_pot)
       (is ?onion onion_chopped_in_pot)
+      (lane ?onion onion_chopped_in_pot onion_in_pot_sauteed)
       (occupied wooden_spoon_plain)
     )
     :effect (and
@@ -233,9 +255,12 @@
     ; pick-and-place: pot (contains {olive oil, onion}, on [stove]), onion (in [pot], sauteed), tomato (chopped, on [cutting board]) -> pot (contains {olive oil, onion, tomato}, on [stove]), tomato (chopped, in [pot])
     :parameters (?pot - pot ?tomato - tomato)
     :precondition (and
+      (together ?pot ?tomato)
       (is ?pot pot_contains_olive_oil_onion_on_stove)
+      (lane ?pot pot_contains_olive_oil_onion_on_stove pot_contains_olive_oil_onion_tomato_on_stove)
       (occupied onion_in_pot_sauteed)
       (is ?tomato tomato_chopped_on_cutting_board)
+      (lane ?tomato tomato_chopped_on_cutting_board tomato_chopped_in_pot)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_onion_tomato_on_stove)
@@ -251,8 +276,11 @@
     ; pour: pot (contains {olive oil, onion, tomato}, on [stove]), vegetable broth (in [carton]) -> pot (contains {olive oil, onion, tomato, vegetable broth}, on [stove]), vegetable broth (in [pot])
     :parameters (?pot - pot ?vegetable_broth - vegetable_broth)
     :precondition (and
+      (together ?pot ?vegetable_broth)
       (is ?pot pot_contains_olive_oil_onion_tomato_on_stove)
+      (lane ?pot pot_contains_olive_oil_onion_tomato_on_stove pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove)
       (is ?vegetable_broth vegetable_broth_in_carton)
+      (lane ?vegetable_broth vegetable_broth_in_carton vegetable_broth_in_pot)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove)
@@ -268,13 +296,16 @@
     ; simmer: stove (on), pot (contains {olive oil, onion, tomato, vegetable broth}, on [stove]), olive oil (in [pot]), onion (in [pot], sauteed), tomato (chopped, in [pot]), vegetable broth (in [pot]) -> pot (contains {tomato soup}, on [stove...
     :parameters (?pot - pot ?tomato_soup - tomato_soup)
     :precondition (and
+      (together ?pot ?tomato_soup)
       (occupied stove_on)
       (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove)
+      (lane ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove pot_contains_tomato_soup_on_stove)
       (occupied olive_oil_in_pot)
       (occupied onion_in_pot_sauteed)
       (occupied tomato_chopped_in_pot)
       (occupied vegetable_broth_in_pot)
       (is ?tomato_soup not-yet-made)
+      (lane ?tomato_soup not-yet-made tomato_soup_chunky_in_pot)
     )
     :effect (and
       (is ?pot pot_contains_tomato_soup_on_stove)
@@ -291,6 +322,7 @@
     :parameters (?immersion_blender - immersion_blender)
     :precondition (and
       (is ?immersion_blender immersion_blender_off)
+      (lane ?immersion_blender immersion_blender_off immersion_blender_on)
     )
     :effect (and
       (is ?immersion_blender immersion_blender_on)
@@ -307,6 +339,7 @@
       (occupied immersion_blender_on)
       (occupied pot_contains_tomato_soup_on_stove)
       (is ?tomato_soup tomato_soup_chunky_in_pot)
+      (lane ?tomato_soup tomato_soup_chunky_in_pot tomato_soup_in_pot_pureed)
     )
     :effect (and
       (is ?tomato_soup tomato_soup_in_pot_pureed)
@@ -319,10 +352,13 @@
     ; scoop: pot (contains {tomato soup}, on [stove]), tomato soup (in [pot], pureed), ladle, bowl (empty) -> bowl (contains {tomato soup}), tomato soup (in [bowl], pureed), ladle
     :parameters (?tomato_soup - tomato_soup ?bowl - bowl)
     :precondition (and
+      (together ?tomato_soup ?bowl)
       (occupied pot_contains_tomato_soup_on_stove)
       (is ?tomato_soup tomato_soup_in_pot_pureed)
+      (lane ?tomato_soup tomato_soup_in_pot_pureed tomato_soup_in_bowl_pureed)
       (occupied ladle_plain)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_tomato_soup)
     )
     :effect (and
       (is ?tomato_soup tomato_soup_in_bowl_pureed)
@@ -337,9 +373,14 @@
     ; sprinkle: bowl (contains {tomato soup}), tomato soup (in [bowl], pureed), basil (fresh) -> bowl (contains {basil, tomato soup}), tomato soup (garnished {basil}, in [bowl], pureed), basil (on [tomato soup])
     :parameters (?bowl - bowl ?tomato_soup - tomato_soup ?basil - basil)
     :precondition (and
+      (together ?bowl ?tomato_soup)
+      (together ?tomato_soup ?basil)
       (is ?bowl bowl_contains_tomato_soup)
+      (lane ?bowl bowl_contains_tomato_soup bowl_contains_basil_tomato_soup)
       (is ?tomato_soup tomato_soup_in_bowl_pureed)
+      (lane ?tomato_soup tomato_soup_in_bowl_pureed tomato_soup_garnished_basil_in_bowl_pureed)
       (is ?basil basil_fresh)
+      (lane ?basil basil_fresh basil_on_tomato_soup)
     )
     :effect (and
       (is ?bowl bowl_contains_basil_tomato_soup)

@@ -2,7 +2,8 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-instances-053cb20b)
+; lanes: each instance changes state only as in the unfolded plan
+(define (domain foon-instances-fb378d59)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -36,6 +37,8 @@
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
     (occupied ?s - object-state)  ; some instance is in state ?s, which no action leaves
     (goal-reached)  ; a goal candidate was made
+    (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
+    (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
   )
 
   (:action pour_u9
@@ -43,8 +46,11 @@
     ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
     :precondition (and
+      (together ?mixing_bowl ?heavy_cream)
       (is ?mixing_bowl mixing_bowl_empty)
+      (lane ?mixing_bowl mixing_bowl_empty mixing_bowl_contains_heavy_cream)
       (is ?heavy_cream heavy_cream_in_carton)
+      (lane ?heavy_cream heavy_cream_in_carton heavy_cream_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
@@ -60,8 +66,11 @@
     ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
     :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
     :precondition (and
+      (together ?mixing_bowl ?sugar)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
+      (lane ?mixing_bowl mixing_bowl_contains_heavy_cream mixing_bowl_contains_heavy_cream_sugar)
       (is ?sugar sugar_granulated)
+      (lane ?sugar sugar_granulated sugar_in_mixing_bowl)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
@@ -77,10 +86,13 @@
     ; scoop: mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spatula, bowl (empty) -> bowl (contains {whipped cream}), whipped cream (in [bowl], whipped), spatula
     :parameters (?whipped_cream - whipped_cream ?bowl - bowl)
     :precondition (and
+      (together ?whipped_cream ?bowl)
       (occupied mixing_bowl_contains_whipped_cream)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (lane ?whipped_cream whipped_cream_in_mixing_bowl_whipped whipped_cream_in_bowl_whipped)
       (occupied spatula_plain)
       (is ?bowl bowl_empty)
+      (lane ?bowl bowl_empty bowl_contains_whipped_cream)
     )
     :effect (and
       (is ?whipped_cream whipped_cream_in_bowl_whipped)
@@ -97,11 +109,14 @@
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
     :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
     :precondition (and
+      (together ?mixing_bowl ?whipped_cream)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (lane ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar mixing_bowl_contains_whipped_cream)
       (occupied heavy_cream_in_mixing_bowl)
       (occupied sugar_in_mixing_bowl)
       (occupied whisk_plain)
       (is ?whipped_cream not-yet-made)
+      (lane ?whipped_cream not-yet-made whipped_cream_in_mixing_bowl_whipped)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
