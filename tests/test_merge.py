@@ -2,22 +2,37 @@
 
 from __future__ import annotations
 
+import gc
 import random
 import shutil
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 from conftest import SUBGRAPHS
-from foon_strategies import full
+from foon_strategies import foons, full, full_node
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError, FoonSyntaxError
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.io.jsonio import parse_json
 from foon2pddl.io.parser import parse_file, parse_text
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, dedupe_units, make_node, make_state
+from foon2pddl.model.foon import (
+    Foon,
+    FunctionalUnit,
+    Motion,
+    Source,
+    dedupe_units,
+    deduped,
+    make_node,
+    make_state,
+    node_table,
+)
 from foon2pddl.model.levels import project
+from foon2pddl.model.memo import per_network
 from foon2pddl.model.merge import merge
 
 FILES = expand_paths([SUBGRAPHS])
@@ -217,3 +232,63 @@ def test_merge_help_lists_every_option():
     for word in ("PATHS", "--level", "--ids", "--provenance", "--format", "--output"):
         assert word in text
     assert "merge" in CliRunner().invoke(main, ["--help"]).stdout
+
+
+# -- node numbers (`Foon.table`) and the passes built on them, against plain definitions over the units --
+
+
+def _first_seen(units, sides=("inputs", "outputs")) -> dict:
+    """Node -> the first object listed for it (on the given sides, unit by unit): what a dict of nodes keeps."""
+    seen: dict = {}
+    for u in units:
+        for side in sides:
+            for n in getattr(u, side):
+                seen.setdefault(n, n)
+    return seen
+
+
+@settings(max_examples=80, deadline=None)
+@given(foon=foons(max_units=8), flags=st.lists(st.integers(0, 1), min_size=40, max_size=40))
+def test_node_table_and_network_indexes_match_their_definitions(foon, flags):
+    """Nodes equal in identity but not in attributes (motion flags differ here) keep the first object listed,
+    per side for producers and consumers; the numbering, duplicate removal and dictionaries agree with
+    plain passes over the units."""
+    marks = iter(flags)
+    units = tuple(FunctionalUnit(tuple(replace(n, motion_flag=next(marks, 0)) for n in u.inputs), u.motion,
+                                 tuple(replace(n, motion_flag=next(marks, 0)) for n in u.outputs), u.sources)
+                  for u in foon.units)
+    table = node_table(units)
+    first = _first_seen(units)
+    assert table.nodes == tuple(first)
+    assert [[n is first[n] for n in table.nodes]] == [[True] * len(table.nodes)]
+    assert [[table.nodes[i] for i in ids] for ids in table.inputs] == [list(u.inputs) for u in units]
+    assert [[table.nodes[i] for i in ids] for ids in table.outputs] == [list(u.outputs) for u in units]
+    net = deduped(units + units[:2])  # duplicates join their sources into the first unit
+    assert [u.key for u in net.units] == [u.key for u in dedupe_units(units + units[:2])]
+    assert full(net, sources=True) == full(Foon(dedupe_units(units + units[:2])), sources=True)
+    for name, side in (("producers", "outputs"), ("consumers", "inputs")):
+        got = getattr(Foon(units), name)
+        want = _first_seen(units, (side,))
+        assert [(full_node(n), v) for n, v in got.items()] == [
+            (full_node(want[n]), tuple(i for i, u in enumerate(units) if n in getattr(u, side))) for n in want]
+    by_label: dict = {}
+    for n in _first_seen(units, ("outputs",)).values():
+        by_label.setdefault(n.label, []).append(full_node(n))
+    assert {k: [full_node(n) for n in v] for k, v in Foon(units).produced_by_label.items()} == by_label
+
+
+def test_results_per_network_object_are_built_once_and_dropped_with_it():
+    calls = []
+
+    @per_network
+    def count(foon, extra=0):
+        calls.append(foon)
+        return len(foon.units) + extra
+
+    foon = parse_text("O\ta\nM\tm\nO\tb\n").foon
+    assert count(foon) == count(foon) == 1 and len(calls) == 1
+    assert count(foon, 1) == 2 and count(foon, 1) == 2 and len(calls) == 3  # more arguments: not remembered
+    key = id(foon)
+    del foon, calls[:]
+    gc.collect()
+    assert key not in count.cache

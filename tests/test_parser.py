@@ -15,9 +15,10 @@ from hypothesis import strategies as st
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonSyntaxError
 from foon2pddl.io.files import expand_paths
-from foon2pddl.io.parser import parse_file, parse_objects, parse_text
+from foon2pddl.io.foon_lines import parse_objects
+from foon2pddl.io.parser import _comment_head, _plain, _Reader, parse_file, parse_text
 from foon2pddl.io.writer import write_foon
-from foon2pddl.model.foon import State, make_node, make_state
+from foon2pddl.model.foon import State, make_node, make_state, node_table
 
 UNIT = "O1\tbowl\t1\nS1\tempty\nO2\tegg\t1\nS2\twhole\nM1\tcrack\t0:01\t0:05\nO1\tbowl\t0\nS3\tcontains\t{egg}\n"
 
@@ -352,6 +353,70 @@ def test_a_text_reads_as_its_blocks_each_read_alone(text):
     assert error is None
     assert [full_unit(u) + (tuple((s.path, s.line) for s in u.sources),) for u in res.foon.units] == units
     assert [(w.path, w.line, w.message) for w in res.warnings] == warnings
+
+
+def _line_reader(text: str):
+    """What the line reader alone makes of `text`: the parse result, or the error as a tuple."""
+    lines = text.split("\n")
+    reader = _Reader("m.txt")
+    try:
+        reader.read(lines)
+        return reader.finish(len(lines), text.endswith("\n"))
+    except FoonSyntaxError as err:
+        return (err.path, err.line, err.message, err.text)
+
+
+@st.composite
+def plain_mutated(draw):
+    """A mutated subgraph without its comment and blank lines and carriage returns: often plain text
+    (`parser._plain`), often with an error or a block that is no unit."""
+    rows = [r.rstrip("\r") for r in draw(mutated()).split("\n")]
+    keep = [r for r in rows if r.strip() and not r.lstrip().startswith("#")]
+    return "\n".join(keep) + draw(st.sampled_from(["", "\n", "\n//", "\n//\n"]))
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(text=plain_mutated())
+def test_block_reader_reads_what_the_line_reader_reads(text):
+    """Plain text read block by block gives the line reader's network exactly (attributes, source lines), with
+    the node numbering `node_table` gives; or it hands the text over (None) and `parse_text` is the line reader."""
+    slow = _line_reader(text)
+    fast = _Reader("m.txt").read_plain(text) if _plain(text) else None
+    if fast is None:
+        try:
+            got = parse_text(text, "m.txt")
+        except FoonSyntaxError as err:
+            got = (err.path, err.line, err.message, err.text)
+        if isinstance(slow, tuple):
+            assert got == slow
+        else:
+            assert (full(got.foon, sources=True), got.warnings) == (full(slow.foon, sources=True), slow.warnings)
+        return
+    assert not isinstance(slow, tuple) and slow.warnings == () and slow.urls == ()
+    assert full(fast.foon, sources=True) == full(slow.foon, sources=True)
+    table, expected = fast.foon.table, node_table(slow.foon.units)
+    assert (table.nodes, table.inputs, table.outputs) == (expected.nodes, expected.inputs, expected.outputs)
+    assert [[table.nodes[i] for i in ids] for ids in table.inputs] == [list(u.inputs) for u in fast.foon.units]
+
+
+def test_block_reader_takes_exported_networks_and_leaves_the_rest():
+    """Written networks are plain and read block by block; comments, blank lines, CRs and indentation are not."""
+    text = write_foon(parse_text(UNIT + "//\n" + UNIT.replace("crack", "break")).foon)
+    skip, first = _comment_head(text)  # its header comment is skipped, its lines still counted
+    assert text.startswith("#") and _plain(text, skip)
+    fast = _Reader("m.txt").read_plain(text[skip:], first)
+    assert full(fast.foon, sources=True) == full(_line_reader(text).foon, sources=True)
+    assert _comment_head("# Source: x\n" + text) == (0, 1)  # a URL line: the line reader keeps it
+    for other in ("# note\n" + text, text.replace("//\n", "//\n\n", 1), text.replace("\n", "\r\n"),
+                  text.replace("\nS", "\n S", 1)):
+        assert not _plain(other)
+        assert full(parse_text(other).foon) == full(parse_text(text).foon)
+    # a block the line reader warns about (no outputs) sends plain text to it: the warning is kept
+    bad = text + "O\tbowl\nS\tempty\nM\tstir\n//\n"
+    skip, first = _comment_head(bad)
+    assert _plain(bad, skip) and _Reader("w").read_plain(bad[skip:], first) is None
+    res = parse_text(bad, "w")
+    assert [w.message for w in res.warnings] == ["unit has no output objects after its motion line; skipped"]
 
 
 # ---------------------------------------------------------------- malformed input through the CLI

@@ -9,13 +9,16 @@ built once per `Foon` object and cached while that object lives.
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Callable, Hashable, Iterable
 from dataclasses import dataclass, field
+from functools import partial
+from itertools import chain, repeat
+from operator import attrgetter, itemgetter
 from typing import TypeVar
 
-from ..model.bulk import bulk
+from ..model.bulk import bulk, drain
 from ..model.foon import Foon, ObjectNode
+from ..model.memo import per_network
 
 T = TypeVar("T")
 
@@ -66,45 +69,61 @@ class FoonIndex:
         return value
 
 
+#: A state's sort key, read in C (the dataclass order of `State`).
+_STATE_KEY = attrgetter("label", "related", "ingredients")
+
+
 def node_key(node: ObjectNode) -> tuple:
     """The nodes' sort order (that of the model's dataclass order) as plain tuples, compared in C."""
-    return (node.label, tuple((s.label, s.related, s.ingredients) for s in node.states))
+    return (node.label, tuple(map(_STATE_KEY, node.states)))
+
+
+def _sorted_ids(look: Callable[[int], int], side: tuple[tuple[int, ...], ...]) -> tuple[tuple[int, ...], ...]:
+    """Each unit's node numbers on one side mapped by `look`, deduplicated and sorted (C-level loops)."""
+    return tuple(map(tuple, map(sorted, map(set, map(partial(map, look), side)))))
+
+
+def _listing(size: int, owners: Iterable[int], members: Iterable[Iterable[int]]) -> tuple[tuple[int, ...], ...]:
+    """Per node id (0 .. size-1), the owners listing it among their members, in `owners` order."""
+    lists: list[list[int]] = [[] for _ in range(size)]
+    members = list(members)
+    drain(map(list.append, map(lists.__getitem__, chain.from_iterable(members)),
+              chain.from_iterable(map(repeat, owners, map(len, members)))))
+    return tuple(map(tuple, lists))
 
 
 @bulk
 def build_index(foon: Foon) -> FoonIndex:
-    """Build the index (linear after one sort of nodes and one of units)."""
-    nodes = tuple(sorted(foon.nodes, key=node_key))
-    node_id = {n: i for i, n in enumerate(nodes)}
-    inputs = tuple(tuple(sorted({node_id[n] for n in u.inputs})) for u in foon.units)
-    outputs = tuple(tuple(sorted({node_id[n] for n in u.outputs})) for u in foon.units)
-    motions = [u.motion.label for u in foon.units]
-    order = tuple(sorted(range(len(foon.units)), key=lambda u: (motions[u], inputs[u], outputs[u], u)))
+    """Build the index: one sort of nodes (by `node_key`) and one of units, the rest linear, on the
+    network's node numbers (`Foon.table`) renumbered in sorted order; no node is hashed per occurrence,
+    and the loops over units and nodes run in C (`map`)."""
+    table = foon.table
+    first = table.nodes
+    keys = list(map(node_key, first))
+    by_key = sorted(range(len(first)), key=keys.__getitem__)
+    del keys
+    nodes = tuple(map(first.__getitem__, by_key))
+    renumber = [0] * len(first)
+    drain(map(renumber.__setitem__, by_key, range(len(by_key))))
+    del by_key
+    node_id = dict(zip(nodes, range(len(nodes)), strict=True))
+    inputs = _sorted_ids(renumber.__getitem__, table.inputs)
+    outputs = _sorted_ids(renumber.__getitem__, table.outputs)
+    motions = tuple(map(_MOTION_LABEL, foon.units))
+    order = tuple(map(itemgetter(3), sorted(zip(motions, inputs, outputs, range(len(motions)), strict=True))))
     rank = [0] * len(order)
-    for r, u in enumerate(order):
-        rank[u] = r
-    consumers: list[list[int]] = [[] for _ in nodes]
-    makers: list[list[int]] = [[] for _ in nodes]
-    for u in order:
-        ins = inputs[u]
-        for n in ins:
-            consumers[n].append(u)
-        for n in outputs[u]:
-            if n not in ins:
-                makers[n].append(u)
-    return FoonIndex(nodes, node_id, inputs, outputs, tuple(map(tuple, consumers)),
-                     tuple(map(tuple, makers)), tuple(rank), order, tuple(motions))
+    drain(map(rank.__setitem__, order, range(len(order))))
+    consumers = _listing(len(nodes), order, map(inputs.__getitem__, order))
+    # a unit makes the outputs it does not also take as inputs
+    makes = map(set.difference, map(set, map(outputs.__getitem__, order)), map(inputs.__getitem__, order))
+    makers = _listing(len(nodes), order, makes)
+    return FoonIndex(nodes, node_id, inputs, outputs, consumers, makers, tuple(rank), order, motions)
 
 
-_CACHE: dict[int, tuple[weakref.ref, FoonIndex]] = {}
+_MOTION_LABEL = attrgetter("motion.label")
 
 
+@per_network
 def index_of(foon: Foon) -> FoonIndex:
     """The cached index of `foon`; the entry is dropped when `foon` is garbage-collected."""
-    hit = _CACHE.get(id(foon))
-    if hit is not None and hit[0]() is foon:
-        return hit[1]
-    ix = build_index(foon)
-    key = id(foon)
-    _CACHE[key] = (weakref.ref(foon, lambda _r, key=key: _CACHE.pop(key, None)), ix)
-    return ix
+    return build_index(foon)

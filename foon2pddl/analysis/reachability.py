@@ -15,18 +15,14 @@ fewest sequential rounds that can make it.
 from __future__ import annotations
 
 import weakref
-from collections import deque
 from collections.abc import Container, Iterable, Sequence
 from dataclasses import dataclass
-from functools import partial
 from itertools import chain, repeat
 
+from ..model.bulk import drain
 from ..model.foon import Foon, ObjectNode
 from .fixpoint import UNREACHED, fire
 from .index import FoonIndex, index_of
-
-#: Runs an iterator to its end, keeping nothing.
-drain = partial(deque, maxlen=0)
 
 
 @dataclass(frozen=True, eq=False)

@@ -58,7 +58,7 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
 def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True) -> str | None:
     """Why nothing makes `goal` from `kitchen` (the words `retrieve` gives), or None when something may.
 
-    FOON's fixpoint decides for a ground goal (O(network)); a compiled `task` with no unit action
+    FOON's fixpoint decides for a ground goal (O(the goal's relevant units)); a compiled `task` with no unit action
     whose goal is not already true at the start is unsolvable too (constraints, the lifted encoding).
     `fixpoint=False` skips the first test: a lifted encoding grounds categories to kitchen objects the
     concrete network's fixpoint does not see (the recipe's lemon, the kitchen's lime).
@@ -66,7 +66,9 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
 
-    if fixpoint and hasattr(goal, "candidates") and not any(reachable(foon, kitchen.nodes).can_make(c) for c in goal.candidates):
+    # the fixpoint over the units that can contribute to the candidates: the same answer for them (`reachable`)
+    if fixpoint and hasattr(goal, "candidates") and not any(
+            reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates):
         return explain_unreachable(foon, kitchen.nodes, goal)
     if task is not None and not any(a.unit is not None for a in task.actions) and not set(task.goal) <= set(task.init):
         return "no unit of the network is left on a way to it, and the kitchen does not hold it"

@@ -25,8 +25,9 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError, UsageError
 from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
+from .foon_lines import CONTROL_CHARS
 from .json_text import load_json
-from .parser import CONTROL_CHARS, read_text
+from .parser import read_text
 from .rates import Rates
 
 #: File key -> constraint kind of its list of labels.

@@ -8,8 +8,9 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import State, make_state, normalize_label
 from ..model.goal import GoalSpec, spec_of_node
+from .foon_lines import parse_objects
 from .json_text import text_problem
-from .parser import parse_objects, read_text
+from .parser import read_text
 
 _EXPECTED = "(expected 'state', 'state [object]' or 'state {a, b}')"
 

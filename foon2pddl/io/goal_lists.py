@@ -21,11 +21,12 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import make_node
 from ..model.goal import GoalSpec, spec_of_node
+from .foon_lines import parse_objects
 from .goal_files import parse_goal_spec
 from .json_text import load_json
 from .jsonio import item_lines, node_from_dict
 from .kitchen_files import json_node, looks_like_foon
-from .parser import parse_objects, read_text
+from .parser import read_text
 
 #: A row of the `goals` text table: made (5 columns), round (5), 2 spaces, dish mark (5), node.
 _TABLE_ROW = re.compile(r"^(?:yes  |no   )[ \d]{5}  [* ] {4}(?P<node>\S.*)$")

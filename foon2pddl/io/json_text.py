@@ -20,7 +20,7 @@ import re
 from typing import Any
 
 from ..errors import FoonSyntaxError
-from .parser import CONTROL_CHARS, MAX_INT_DIGITS
+from .foon_lines import CONTROL_CHARS, MAX_INT_DIGITS
 
 _SURROGATE = re.compile(r"[\ud800-\udfff]")
 _KEY_OR_BRACKET = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\]]')

@@ -8,8 +8,9 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
+from .foon_lines import parse_objects
 from .json_text import line_of, load_json, text_problem
-from .parser import parse_objects, read_text
+from .parser import read_text
 from .rates import looks_like_rates
 
 
@@ -131,7 +132,7 @@ def write_kitchen(kitchen: Kitchen) -> str:
 def parse_utensils(text: str, path: str = "<utensils>") -> frozenset[str]:
     """Utensil labels, one a line (`utensils.txt`); blank lines and `#` comments skipped, labels normalized."""
     from ..model.foon import normalize_label
-    from .parser import CONTROL_CHARS
+    from .foon_lines import CONTROL_CHARS
 
     labels = set()
     for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only, as every reader

@@ -9,19 +9,24 @@ are skipped with a `ParseWarning`, never half-added.
 from __future__ import annotations
 
 import os
-import re
 import stat
 from dataclasses import dataclass
+from operator import itemgetter
 from pathlib import Path
 
 from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
-from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
-
-_ID = re.compile(r"[OSM]\d*")
-CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
-_INT = re.compile(r"\d+")
-#: Longest integer read (Python's default int-string limit): longer ones are errors, never ValueError.
-MAX_INT_DIGITS = 4300
+from ..model.foon import (
+    Foon,
+    FunctionalUnit,
+    Motion,
+    NodeTable,
+    ObjectNode,
+    Source,
+    State,
+    make_node,
+    network_with_table,
+)
+from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state
 
 
 @dataclass(frozen=True)
@@ -71,30 +76,55 @@ def parse_file(path: str | Path) -> ParseResult:
     return parse_text(read_text(p), str(p))
 
 
-class _PendingObject:
-    __slots__ = ("label", "flag", "goal", "dish", "states", "keys")
-
-    def __init__(self, label: str, flag: int, goal: bool, dish: int | None) -> None:
-        self.label = label
-        self.flag = flag
-        self.goal = goal
-        self.dish = dish
-        self.states: list[State] = []
-        self.keys: list[tuple[str, ...]] = []  # raw state fields, for the node cache
-
-    def cache_key(self) -> tuple:
-        return (self.label, self.flag, self.goal, self.dish, tuple(self.keys))
-
-    def build(self) -> ObjectNode:
-        return make_node(self.label, self.states, motion_flag=self.flag, goal=self.goal, dish=self.dish)
-
-
 def parse_text(text: str, path: str = "<string>") -> ParseResult:
-    """Parse FOON text; `path` is used in errors, warnings and provenance."""
+    """Parse FOON text; `path` is used in errors, warnings and provenance.
+
+    Plain text (`_plain`: every line an `O`, `S`, `M` or `//` line, as exported networks are) is read
+    block by block (`_Reader.read_plain`); anything else, and any plain text that turns out to hold an
+    error or a block that is not a unit, is read line by line (`_Reader.read`), which gives the same
+    network and says where the problem is.
+    """
+    skip, first = _comment_head(text)
+    if _plain(text, skip):
+        found = _Reader(path).read_plain(text[skip:], first)
+        if found is not None:
+            return found
     lines = text.split("\n")
     reader = _Reader(path)
     reader.read(lines)
     return reader.finish(len(lines), text.endswith("\n"))
+
+
+#: A classified line's kind and fields (`_classify`), read in C.
+_KIND, _FIELDS = itemgetter(0), itemgetter(1)
+
+#: How a line of plain text starts, after the newline before it.
+_PLAIN_HEADS = ("\nO", "\nS", "\nM", "\n//")
+
+
+def _plain(text: str, skip: int = 0) -> bool:
+    """Whether every line of `text` from offset `skip` starts with `O`, `S`, `M` or `//` (a final newline
+    allowed): no comment, blank or indented line, no carriage return. A few passes of `str.count`."""
+    if not text.startswith(("O", "S", "M", "//"), skip) or "\r" in text:
+        return False
+    return sum(text.count(head, skip) for head in _PLAIN_HEADS) == text.count("\n", skip) - text.endswith("\n")
+
+
+def _comment_head(text: str) -> tuple[int, int]:
+    """(offset, line number) where `text` goes on after its leading comment lines (a written network's
+    header); (0, 1) when one of them is a `# Source:` line, which the line reader keeps."""
+    skip = line = 0
+    while text.startswith("#", skip):
+        end = text.find("\n", skip)
+        end = len(text) if end < 0 else end + 1
+        if _classify(text[skip:end].rstrip("\n"), None) != _SKIP:
+            return 0, 1
+        skip, line = end, line + 1
+    return skip, line + 1
+
+
+class _NotPlain(Exception):
+    """Raised inside `_Reader.read_plain`: this text needs the line reader."""
 
 
 class _Reader:
@@ -160,6 +190,93 @@ class _Reader:
         else:
             url = self.urls[-1] if self.urls else None
             self.units.append(FunctionalUnit(tuple(inputs), motion, tuple(outputs), (Source(self.path, start, url),)))
+
+    def read_plain(self, text: str, first: int = 1) -> ParseResult | None:
+        """The network of plain text (`_plain`; its line 1 is line `first` of the file) read block by block,
+        or None when a block is not a well-formed
+        unit (no motion or two, no inputs or outputs, a state line first) or a line has an error: the line
+        reader then reads the text again and warns or fails where it should.
+
+        A block is cut at its motion line and each side at its `O` lines with `str.split`; each object's
+        text (its `O` line and state lines) is looked up whole, so a recurring object costs one dictionary
+        look-up, and a new one is read with the line reader's own checks and caches. The node numbers of
+        `Foon.table` are assigned on the way (objects in order of first appearance).
+        """
+        objects: dict[str, tuple[ObjectNode, int]] = {}  # object text without its leading `O` -> node, number
+        numbers: dict[ObjectNode, int] = {}
+        motions: dict[str, Motion] = {}
+        units, ins_ids, outs_ids = self.units, [], []
+        path = self.path
+
+        line_cache, state_cache, node_cache = self.line_cache, self.state_cache, self.node_cache
+
+        def new_object(chunk: str) -> tuple[ObjectNode, int]:
+            raws = ("O" + chunk).split("\n")
+            entries = list(map(line_cache.get, raws))
+            if None in entries:
+                for k, raw in enumerate(raws):
+                    if entries[k] is None:
+                        entry = entries[k] = line_cache[raw] = _classify(raw, _not_plain)
+                        if entry[0] == "S" and entry[1] not in state_cache:
+                            state_cache[entry[1]] = _parse_state(("S",) + entry[1], _not_plain)
+            kinds = list(map(_KIND, entries))
+            if kinds[0] != "O" or kinds.count("S") != len(kinds) - 1:
+                raise _NotPlain
+            head = entries[0]
+            keys = tuple(map(_FIELDS, entries[1:]))
+            node = node_cache.get(key := (head, keys))  # shared with the line reader's objects
+            if node is None:
+                node = node_cache[key] = make_node(head[1], list(map(state_cache.__getitem__, keys)),
+                                                   motion_flag=head[2], goal=head[3], dish=head[4])
+            found = objects[chunk] = (node, numbers.setdefault(node, len(numbers)))
+            return found
+
+        def new_motion(raw: str) -> Motion:
+            entry = _classify(raw, _not_plain)
+            if entry[0] != "M":
+                raise _NotPlain
+            motion = self.motion_cache.get(entry[1])
+            if motion is None:
+                motion = self.motion_cache[entry[1]] = _parse_motion(entry[1], _not_plain)
+            motions[raw] = motion
+            return motion
+
+        get, get_motion = objects.get, motions.get
+        pieces = ("\n" + text).split("\n//")
+        line = first + pieces[0].count("\n")  # the line of the separator that opens the next piece
+        try:
+            for k, piece in enumerate(pieces):
+                if k:
+                    cut = piece.find("\n")
+                    block = piece[cut + 1:] if cut >= 0 else ""
+                    start, line = line + 1, line + piece.count("\n") + 1
+                else:
+                    block, start = piece[1:], first
+                if not block:
+                    continue
+                if block[-1] == "\n":  # the last block, before the final newline
+                    block = block[:-1]
+                m = block.find("\nM")
+                if block[0] != "O" or m < 0 or block.find("\nM", m + 2) >= 0:
+                    raise _NotPlain
+                cut = block.find("\n", m + 1)
+                if cut < 0 or not block.startswith("O", cut + 1):
+                    raise _NotPlain
+                ins = [get(c) or new_object(c) for c in block[1:m].split("\nO")]
+                outs = [get(c) or new_object(c) for c in block[cut + 2:].split("\nO")]
+                raw = block[m + 1:cut]
+                motion = get_motion(raw) or new_motion(raw)
+                in_nodes, in_ids = zip(*ins, strict=True)
+                out_nodes, out_ids = zip(*outs, strict=True)
+                units.append(FunctionalUnit(in_nodes, motion, out_nodes, (Source(path, start, None),)))
+                ins_ids.append(in_ids)
+                outs_ids.append(out_ids)
+        except (_NotPlain, FoonSyntaxError):
+            return None
+        if not units:
+            return None
+        table = NodeTable(tuple(numbers), tuple(ins_ids), tuple(outs_ids))
+        return ParseResult(network_with_table(tuple(units), 3, table))
 
     def read(self, lines: list[str]) -> None:
         """Read `lines` (line 1 first); the last block stays open in `self.open`.
@@ -228,168 +345,8 @@ class _Reader:
         return ParseResult(Foon(tuple(self.units)), tuple(self.warnings), tuple(dict.fromkeys(self.urls)))
 
 
-_SKIP = ("#",)
-_SEPARATOR = ("//",)
+def _not_plain(message: str) -> _NotPlain:
+    """The `fail` of `_Reader.read_plain`: an error there sends the text to the line reader."""
+    return _NotPlain(message)
 
 
-def _classify(raw: str, fail) -> tuple:
-    """What one raw line is, independent of its block: `("#",)`, `("url", url)`, `("//",)`,
-    `("O", label, flag, goal, dish)`, `("S", fields after the head)` or `("M", all fields)`."""
-    line = raw.rstrip("\r")
-    stripped = line.strip()
-    if not stripped:
-        return _SKIP
-    if stripped.startswith("#"):
-        comment = stripped[1:].lstrip()
-        if comment.lower().startswith("source:"):
-            url = comment[len("source:"):].strip()
-            if url:
-                return ("url", url)
-        return _SKIP
-    if stripped.startswith("//"):
-        return _SEPARATOR
-    if CONTROL_CHARS.search(line):
-        raise fail("control character in line (garbage bytes?)")
-    fields = [f.strip() for f in stripped.split("\t")]
-    head = fields[0]
-    kind = head[:1]
-    if kind not in "OSM" or not _ID.fullmatch(head):
-        raise fail("expected an 'O', 'S' or 'M' line, '//' or a '#' comment")
-    if len(fields) < 2 or not fields[1]:
-        raise fail(f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')")
-    if kind == "O":
-        obj = _parse_object(fields, fail)
-        return ("O", obj.label, obj.flag, obj.goal, obj.dish)
-    if kind == "S":
-        return ("S", tuple(fields[1:]))
-    return ("M", tuple(fields))
-
-
-def _parse_object(fields: list[str] | tuple[str, ...], fail) -> _PendingObject:
-    """`O<id> label [flag] [dish|!]`: flag 0/1 (`00` seen), dish an integer, `!` a goal mark."""
-    label = fields[1]
-    if CONTROL_CHARS.search(label):
-        raise fail("control character in object label")
-    flag, goal, dish = 0, False, None
-    rest = [f for f in fields[2:] if f]
-    for i, value in enumerate(rest):
-        if value == "!":
-            goal = True
-        elif value.endswith("!") and _INT.fullmatch(value[:-1]):
-            goal = True
-            value = value[:-1]
-            if i == 0:
-                flag = _int(value, fail)
-            else:
-                dish = _int(value, fail)
-        elif _INT.fullmatch(value):
-            if i == 0:
-                flag = _int(value, fail)
-            elif dish is None:
-                dish = _int(value, fail)
-            else:
-                raise fail(f"unexpected extra field {value!r} on object line")
-        else:
-            what = "motion identifier 0/1" if i == 0 else "dish marker (integer) or '!'"
-            raise fail(f"expected {what}, found {value!r}")
-    return _PendingObject(label, flag, goal, dish)
-
-
-def _int(digits: str, fail) -> int:
-    """A field of digits as an int; more than MAX_INT_DIGITS significant digits is an error."""
-    significant = digits.lstrip("0") or "0"
-    if len(significant) > MAX_INT_DIGITS:
-        raise fail(f"integer field with {len(significant)} digits (at most {MAX_INT_DIGITS} are read)")
-    return int(significant)
-
-
-def _split_list(body: str) -> list[str]:
-    return [item.strip() for item in body.split(",") if item.strip()]
-
-
-def _parse_state(fields: list[str] | tuple[str, ...], fail) -> State:
-    """`S<id> label [ [related] | {ingredients} ]...`; `[a,b]` lists are read as ingredients."""
-    label = fields[1]
-    related = ""
-    ingredients: list[str] = []
-    for extra in fields[2:]:
-        if not extra:
-            continue
-        if extra.startswith("[") and extra.endswith("]"):
-            items = _split_list(extra[1:-1])
-            if len(items) == 1:
-                if related:
-                    raise fail("state has two related objects")
-                related = items[0]
-            else:
-                ingredients.extend(items)
-        elif extra.startswith("{") and extra.endswith("}"):
-            ingredients.extend(_split_list(extra[1:-1]))
-        else:
-            raise fail(f"expected '[related object]' or '{{ingredient, ...}}' after the state label, found {extra!r}")
-    return make_state(label, related, ingredients)
-
-
-def _parse_motion(fields: list[str] | tuple[str, ...], fail) -> Motion:
-    """`M<id> label [start end]` or `<start,end>` / `<Assumed>`; `label*` marks a composite unit."""
-    label = fields[1]
-    composite = label.endswith("*")
-    label = label.rstrip("*").strip()
-    if not label:
-        raise fail("motion line has no label before '*'")
-    times = [f for f in fields[2:] if f]
-    start = end = None
-    if len(times) == 1 and times[0].startswith("<") and times[0].endswith(">"):
-        parts = re.split(r"[,\-]", times[0][1:-1], maxsplit=1)
-        start = parts[0].strip() or None
-        end = parts[1].strip() if len(parts) > 1 else start
-    elif times:
-        start = times[0]
-        end = times[1] if len(times) > 1 else start
-    return Motion(normalize_label(label), start, end, composite)
-
-
-def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, int]]:
-    """Object nodes written as O/S lines (kitchen and goal files), with their line numbers.
-
-    Objects end at the next `O` line or at `//`; motion lines are an error here.
-    """
-    nodes: list[tuple[ObjectNode, int]] = []
-    obj: _PendingObject | None = None
-    start = 0
-
-    def close() -> None:
-        nonlocal obj
-        if obj is not None:
-            nodes.append((obj.build(), start))
-            obj = None
-
-    for lineno, raw in enumerate(text.split("\n"), start=1):
-        line = raw.rstrip("\r")
-        stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if stripped.startswith("//"):
-            close()
-            continue
-        if CONTROL_CHARS.search(line):
-            raise FoonSyntaxError(path, lineno, "control character in line (garbage bytes?)", line)
-        fields = [f.strip() for f in stripped.split("\t")]
-        head = fields[0]
-        if head[:1] not in "OS" or not _ID.fullmatch(head):
-            raise FoonSyntaxError(path, lineno, "expected an 'O' or 'S' line, '//' or a '#' comment", line)
-        if len(fields) < 2 or not fields[1]:
-            raise FoonSyntaxError(path, lineno, f"'{head[0]}' line has no label", line)
-
-        def fail(message: str, lineno: int = lineno, line: str = line) -> FoonSyntaxError:
-            return FoonSyntaxError(path, lineno, message, line)
-
-        if head[0] == "O":
-            close()
-            obj, start = _parse_object(fields, fail), lineno
-        else:
-            if obj is None:
-                raise fail("state line ('S') before any object line ('O')")
-            obj.states.append(_parse_state(fields, fail))
-    close()
-    return nodes

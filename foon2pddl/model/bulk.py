@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import functools
 import gc
+from collections import deque
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TypeVar
@@ -22,6 +23,9 @@ from typing import TypeVar
 F = TypeVar("F", bound=Callable)
 
 _NEVER = 1 << 30
+
+#: Run an iterator to its end, keeping nothing: `drain(map(f, xs))` is a loop calling `f` in C.
+drain = functools.partial(deque, maxlen=0)
 
 
 @contextmanager

@@ -9,10 +9,11 @@ provenance) are excluded from equality and hashing.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Hashable, Iterable, Iterator
+from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
-from operator import attrgetter
+from itertools import chain, compress
+from operator import attrgetter, ne
 
 from .bulk import bulk
 
@@ -91,8 +92,9 @@ class ObjectNode:
 
 def make_state(label: str, related: str = "", ingredients: Iterable[str] = ()) -> State:
     """Build a normalized state: ingredient list deduplicated and sorted, "" = no related object."""
-    items = sorted({normalize_label(i) for i in ingredients} - {""})
-    return State(normalize_label(label), normalize_label(related), tuple(items))
+    items = set(map(normalize_label, ingredients))
+    items.discard("")
+    return State(normalize_label(label), normalize_label(related), tuple(sorted(items)))
 
 
 def make_node(
@@ -106,6 +108,8 @@ def make_node(
     """Build a normalized node: label normalized, states sorted and deduplicated."""
     return ObjectNode(normalize_label(label), tuple(sorted(set(states), key=_STATE_ORDER)), motion_flag, goal, dish)
 
+
+_MOTION_LABEL = attrgetter("motion.label")
 
 #: `State`'s dataclass order as a key read in C (the generated `__lt__` builds two tuples per comparison).
 _STATE_ORDER = attrgetter("label", "related", "ingredients")
@@ -198,28 +202,27 @@ class Foon:
 
     @cached_property
     @bulk
+    def table(self) -> NodeTable:
+        """The network's nodes numbered (`NodeTable`): what network-sized passes work on instead of hashing nodes."""
+        return node_table(self.units)
+
+    @property
     def nodes(self) -> tuple[ObjectNode, ...]:
         """Every distinct object node, in order of first appearance."""
-        seen: dict[ObjectNode, None] = {}
-        for u in self.units:
-            for n in u.inputs:
-                seen.setdefault(n, None)
-            for n in u.outputs:
-                seen.setdefault(n, None)
-        return tuple(seen)
+        return self.table.nodes
 
     @cached_property
     @bulk
     def producers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that output it."""
-        return _index(self.units, lambda u: u.outputs)
+        return _index(self.table.outputs, first_objects(self.units, self.table.outputs, "outputs"))
 
     @cached_property
     @bulk
     def produced_by_label(self) -> dict[str, tuple[ObjectNode, ...]]:
         """Object label -> the produced nodes with that label, in `producers` order (goal lookup by label)."""
         acc: dict[str, list[ObjectNode]] = {}
-        for n in self.producers:
+        for n in first_objects(self.units, self.table.outputs, "outputs").values():
             acc.setdefault(n.label, []).append(n)
         return {k: tuple(v) for k, v in acc.items()}
 
@@ -227,7 +230,7 @@ class Foon:
     @bulk
     def consumers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that take it as input."""
-        return _index(self.units, lambda u: u.inputs)
+        return _index(self.table.inputs, first_objects(self.units, self.table.inputs, "inputs"))
 
     @cached_property
     def dishes(self) -> frozenset[ObjectNode]:
@@ -240,23 +243,107 @@ class Foon:
         return tuple(sorted({u.motion.label for u in self.units}))
 
 
-def _index(units: tuple[FunctionalUnit, ...], side) -> dict[ObjectNode, tuple[int, ...]]:
-    acc: dict[ObjectNode, list[int]] = {}
-    for i, u in enumerate(units):
-        for n in dict.fromkeys(side(u)):
-            acc.setdefault(n, []).append(i)
-    return {n: tuple(v) for n, v in acc.items()}
+@dataclass(frozen=True, eq=False)
+class NodeTable:
+    """A network's distinct nodes numbered 0.. in order of first appearance (inputs, then outputs, unit by
+    unit), and each unit's inputs and outputs as those numbers, in the order the unit lists them.
+
+    Network-sized passes (indexes, kitchens, duplicate units) look nodes up by number instead of
+    hashing them: an `ObjectNode`'s hash is a Python-level call, a number's is not.
+    """
+
+    nodes: tuple[ObjectNode, ...]
+    inputs: tuple[tuple[int, ...], ...]
+    outputs: tuple[tuple[int, ...], ...]
+
+
+def node_table(units: Iterable[FunctionalUnit]) -> NodeTable:
+    """Number the nodes of `units` (`NodeTable`). Linear: node objects recur across units (a parser shares
+    them), so each distinct object is hashed once and every occurrence is found by identity, in C loops."""
+    units = tuple(units)
+    objects: dict[int, ObjectNode] = {}  # id(object) -> object, in order of first appearance
+    for u in units:
+        objects.update(zip(map(id, u.inputs), u.inputs, strict=True))
+        objects.update(zip(map(id, u.outputs), u.outputs, strict=True))
+    number: dict[ObjectNode, int] = {}  # equal objects share a number: the first one seen stands for them
+    setdefault = number.setdefault
+    by_object = dict(zip(objects, [setdefault(n, len(number)) for n in objects.values()], strict=True))
+    look = by_object.__getitem__
+    return NodeTable(tuple(number),
+                     tuple(tuple(map(look, map(id, u.inputs))) for u in units),
+                     tuple(tuple(map(look, map(id, u.outputs))) for u in units))
+
+
+def first_objects(units: Sequence[FunctionalUnit], ids: tuple[tuple[int, ...], ...],
+                  side: str) -> dict[int, ObjectNode]:
+    """Node number -> the first object listed for it on `side` (`inputs` or `outputs`, with `ids` the table's
+    numbers of that side), in order of first appearance there. Equal nodes may differ in what is not their
+    identity (motion flag, goal and dish marks); the first one listed stands for them, as in a set or dict of
+    nodes built by going through the units. C-level loops."""
+    objects = list(chain.from_iterable(map(attrgetter(side), units)))
+    numbers = list(chain.from_iterable(ids))
+    order = dict.fromkeys(numbers)
+    objects.reverse()
+    numbers.reverse()
+    first = dict(zip(numbers, objects, strict=True))  # the last write, i.e. the first occurrence, wins
+    return {n: first[n] for n in order}
+
+
+def _index(side: tuple[tuple[int, ...], ...], objects: dict[int, ObjectNode]) -> dict[ObjectNode, tuple[int, ...]]:
+    """Node -> indexes of the units listing it on `side`, for the nodes some unit lists there (first appearance;
+    `objects`: `first_objects` of that side)."""
+    acc: dict[int, list[int]] = {}
+    for i, ids in enumerate(side):
+        for n in ids:
+            got = acc.get(n)
+            if got is None:
+                acc[n] = [i]
+            elif got[-1] != i:  # a node listed twice on one side counts once
+                got.append(i)
+    return {objects[n]: tuple(v) for n, v in acc.items()}
 
 
 def dedupe_units(units: Iterable[FunctionalUnit],
                  key: Callable[[FunctionalUnit], Hashable] | None = None) -> tuple[FunctionalUnit, ...]:
     """Keep the first of each group of units with the same key (default `FunctionalUnit.key`); join their sources."""
+    if key is None:
+        return deduped(units).units
     kept: dict[Hashable, FunctionalUnit] = {}
     for u in units:
-        k = u.key if key is None else key(u)
+        k = key(u)
         first = kept.get(k)
         if first is None:
             kept[k] = u
         else:
             kept[k] = FunctionalUnit(first.inputs, first.motion, first.outputs, first.sources + u.sources)
     return tuple(kept.values())
+
+
+@bulk
+def deduped(units: Iterable[FunctionalUnit], level: int = 3, table: NodeTable | None = None) -> Foon:
+    """The network of `units` without duplicates (`dedupe_units` with `FunctionalUnit.key`), with its `table`
+    (`table`: `node_table(units)` when already known): units are compared by motion label and node numbers,
+    in C-level loops (no node is hashed per occurrence)."""
+    units = tuple(units)
+    table = table if table is not None else node_table(units)
+    kept: dict[Hashable, int] = {}
+    keys = zip(map(_MOTION_LABEL, units), map(frozenset, table.inputs), map(frozenset, table.outputs), strict=True)
+    first = list(map(kept.setdefault, keys, range(len(units))))
+    joined: dict[int, FunctionalUnit] = {}
+    for i in compress(range(len(units)), map(ne, first, range(len(units)))):  # the duplicates
+        base = joined.get(first[i], units[first[i]])
+        joined[first[i]] = FunctionalUnit(base.inputs, base.motion, base.outputs, base.sources + units[i].sources)
+    order = list(kept.values())
+    if len(order) == len(units):
+        return network_with_table(units, level, table)
+    # a duplicate lists the same nodes as the unit kept before it, so the numbering does not change
+    return network_with_table(tuple(joined.get(i) or units[i] for i in order), level,
+                              NodeTable(table.nodes, tuple(map(table.inputs.__getitem__, order)),
+                                        tuple(map(table.outputs.__getitem__, order))))
+
+
+def network_with_table(units: tuple[FunctionalUnit, ...], level: int, table: NodeTable) -> Foon:
+    """`Foon(units, level)` whose `table` is already known (it must be `node_table(units)`)."""
+    foon = Foon(units, level)
+    foon.__dict__["table"] = table  # what the cached property would store
+    return foon

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from itertools import chain
 
 from .bulk import bulk
-from .foon import Foon, ObjectNode
+from .foon import Foon, NodeTable, ObjectNode, first_objects
 from .levels import project_node
+from .memo import per_network
 
 #: States an object is in before anyone touches it. An input node whose states
 #: are all base states is in the default kitchen even if some unit also produces
@@ -72,20 +74,45 @@ class Kitchen:
 @bulk
 def starting_nodes(foon: Foon) -> frozenset[ObjectNode]:
     """Input nodes that no unit creates (a unit that passes a node through unchanged does not create it)."""
-    # `u.key[1]` is the unit's input set (hashed, cached by the merge): membership without
-    # comparing the output with every input field by field
-    created = {n for u in foon.units for n in u.outputs if n not in u.key[1]}
-    return frozenset(n for u in foon.units for n in u.inputs if n not in created)
+    table = foon.table
+    return frozenset(map(_input_objects(foon).__getitem__, _input_ids(table) - _created_ids(table)))
+
+
+def _input_objects(foon: Foon) -> dict[int, ObjectNode]:
+    """Node number -> the first object a unit lists for it as input (the one a set of input nodes keeps)."""
+    return first_objects(foon.units, foon.table.inputs, "inputs")
+
+
+def _input_ids(table: NodeTable) -> set[int]:
+    return set(chain.from_iterable(table.inputs))
+
+
+def _created_ids(table: NodeTable) -> set[int]:
+    """Numbers of the nodes some unit outputs without having it among its inputs."""
+    return {o for ins, outs in zip(table.inputs, table.outputs, strict=True) for o in outs if o not in ins}
+
+
+def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
+    """Starting nodes plus every input node whose states are all base states (built once per network
+    for the default base states)."""
+    if base_states is BASE_STATES:
+        return _default_kitchen(foon)
+    return _kitchen_of(foon, frozenset(base_states))
+
+
+@per_network
+def _default_kitchen(foon: Foon) -> Kitchen:
+    return _kitchen_of(foon, BASE_STATES)
 
 
 @bulk
-def default_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:
-    """Starting nodes plus every input node whose states are all base states."""
-    base = frozenset(base_states)
-    inputs = {n for u in foon.units for n in u.inputs}  # each distinct node checked once
-    extra = {n for n in inputs if n.states and all(s.label in base and not s.related and not s.ingredients
-                                                   for s in n.states)}
-    return Kitchen(starting_nodes(foon) | frozenset(extra), foon.level, "default kitchen")
+def _kitchen_of(foon: Foon, base: frozenset[str]) -> Kitchen:
+    table = foon.table
+    nodes = _input_objects(foon)
+    inputs = _input_ids(table)  # each distinct node checked once
+    extra = {i for i in inputs if nodes[i].states and is_base_node(nodes[i], base)}
+    ids = (inputs - _created_ids(table)) | extra
+    return Kitchen(frozenset(map(nodes.__getitem__, ids)), foon.level, "default kitchen")
 
 
 #: `--kitchen` values naming a kitchen built from the network instead of a file.
@@ -112,13 +139,21 @@ def created_labels(foon: Foon, kitchen: Kitchen | None = None) -> frozenset[str]
     (default: the default kitchen) holds loose, in no container and holding nothing: the public data
     has units that output bread or a measuring cup without listing it as an input, and a loose loaf is
     a raw ingredient. Ingredient sets of outputs are not read for the same reason (salt listed with no
-    input carrying it). One pass over the units."""
+    input carrying it). One pass over the units (node numbers; a unit's ingredients are read only when
+    an output's label is not among its inputs' labels)."""
     kitchen = kitchen if kitchen is not None else default_kitchen(foon)
     loose = {n.label for n in kitchen.nodes if not _placed(n)}
+    table = foon.table
+    nodes = table.nodes
+    labels = [n.label for n in nodes]
     made: set[str] = set()
-    for u in foon.units:
-        have = {x for i in u.inputs for x in (i.label, *i.ingredients)}
-        made.update(o.label for o in u.outputs if o.label not in have and not _drawn(o))
+    for ins, outs in zip(table.inputs, table.outputs, strict=True):
+        have = {labels[i] for i in ins}
+        for o in outs:
+            label = labels[o]
+            if label not in have and label not in made and not _drawn(nodes[o]) \
+                    and not any(label in s.ingredients for i in ins for s in nodes[i].states):
+                made.add(label)
     return frozenset(made - loose)
 
 
@@ -130,12 +165,23 @@ def half_made(foon: Foon, base_states: Iterable[str] = BASE_STATES,
 
     `pitcher (contains {lemon juice, water})` and `lemon juice (in [pitcher])` are half-made where a unit
     squeezes lemon juice; `milk (in [carton])` is a raw ingredient in its packaging where no unit creates
-    milk. `kitchen`: the default kitchen when already built. One pass over the units, one over the kitchen.
+    milk. `kitchen`: the default kitchen when already built. One pass over the units, one over the kitchen;
+    once per network for the default base states and kitchen.
     """
-    kitchen = kitchen if kitchen is not None else default_kitchen(foon, base_states)
+    if base_states is BASE_STATES and (kitchen is None or kitchen is _default_kitchen(foon)):
+        return _default_half_made(foon)
+    return _half_made(foon, kitchen if kitchen is not None else default_kitchen(foon, base_states))
+
+
+@per_network
+def _default_half_made(foon: Foon) -> frozenset[ObjectNode]:
+    return _half_made(foon, _default_kitchen(foon))
+
+
+def _half_made(foon: Foon, kitchen: Kitchen) -> frozenset[ObjectNode]:
     made = created_labels(foon, kitchen)
     return frozenset(n for n in kitchen.nodes
-                     if _placed(n) and (n.label in made or any(x in made for x in n.ingredients)))
+                     if _placed(n) and (n.label in made or any(x in made for s in n.states for x in s.ingredients)))
 
 
 def base_kitchen(foon: Foon, base_states: Iterable[str] = BASE_STATES) -> Kitchen:

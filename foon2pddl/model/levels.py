@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ..errors import UsageError
 from .bulk import bulk
-from .foon import Foon, FunctionalUnit, ObjectNode, State, dedupe_units
+from .foon import Foon, FunctionalUnit, ObjectNode, State, deduped
 
 LEVELS = (1, 2, 3)
 
@@ -62,4 +62,4 @@ def project(foon: Foon, level: int) -> Foon:
             p = memo[id(n)] = project_node(n, level)
         return p
 
-    return Foon(dedupe_units(project_unit(u, level, node) for u in foon.units), level)
+    return deduped((project_unit(u, level, node) for u in foon.units), level)

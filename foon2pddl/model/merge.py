@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from .foon import Foon, dedupe_units
+from .foon import Foon, deduped
 from .levels import project
 
 
@@ -20,4 +20,7 @@ def merge(foons: Iterable[Foon], level: int = 3) -> Foon:
     """
     foons = list(foons)
     level = min([level, *(f.level for f in foons)])
-    return Foon(dedupe_units(u for f in foons for u in project(f, level).units), level)
+    if len(foons) == 1:  # its node numbering carries over (a parser's, or built once here)
+        one = project(foons[0], level)
+        return deduped(one.units, level, one.table)
+    return deduped((u for f in foons for u in project(f, level).units), level)

@@ -20,8 +20,9 @@ from importlib import resources
 from pathlib import Path
 
 from ..errors import FoonSyntaxError
+from ..io.foon_lines import CONTROL_CHARS
 from ..io.json_text import load_json
-from ..io.parser import CONTROL_CHARS, read_text
+from ..io.parser import read_text
 from ..model.foon import normalize_label
 from .domain import SkillDomain
 
