@@ -13,7 +13,8 @@ Two analyses, one per semantics, both solvability-preserving:
 * `prune_task` (STRIPS semantics, used by `state`, whose atoms combine across
   nodes so FOON reachability does not bound it): the ground actions reachable
   in the delete relaxation from the initial state and relevant backwards from
-  the goal atoms over adders. Sound for STRIPS with positive preconditions;
+  the goal atoms over achievers (adders that do not require what they add). Sound for STRIPS with
+  positive preconditions;
   init atoms, predicates and constants no kept part mentions are dropped too.
 """
 
@@ -121,11 +122,16 @@ def prune_task(task: PlanningTask) -> PlanningTask:
         node_round[i] = 0
     rounds = fire(ready, missing, adds, consumers, node_round, [-1] * len(ids))
     applicable = set(chain.from_iterable(rounds))
-    # Backward: atoms needed for the goal, over the applicable actions that add them.
+    # Backward: atoms needed for the goal, over the applicable actions that make them true. An action that
+    # requires the atom it adds (the `state` and `ocp` encodings re-add what a unit leaves as it was) never
+    # makes it true, so it is not one of its achievers: every action of a plan with no useless step adds an
+    # atom that was false before it.
     adders: dict[Atom, list[int]] = {}
     for i in applicable:
+        pre = actions[i].pre
         for atom in actions[i].add:
-            adders.setdefault(atom, []).append(i)
+            if atom not in pre:
+                adders.setdefault(atom, []).append(i)
     needed: set[Atom] = set()
     keep: set[int] = set()
     stack = list(task.goal)
