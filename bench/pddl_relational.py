@@ -1,6 +1,6 @@
 """The `relational` encoding against `instances` and `tree` on each subgraph alone (dish goal, default kitchen).
 
-`python -m bench.pddl_relational [--shared DIR] [--time-limit S] [--limit N] [-v]`
+`python -m bench.pddl_relational [--shared DIR] [--time-limit S] [--limit N] [--encodings E,E] [-v]`
 plans every subgraph with `tree`, `instances` and `relational` (`planners.solve.plan`,
 Fast Downward lama-first) and reports per encoding: solved, plans whose trace
 passes the relational replay (`planners.physical_replay`, zero disagreements;
@@ -43,7 +43,7 @@ class Row:
     message: str = ""
 
 
-def check_file(path: Path, time_limit: float) -> list[Row]:
+def check_file(path: Path, time_limit: float, encodings: tuple[str, ...] = ENCODINGS) -> list[Row]:
     foon, _ = load([path])
     dishes = sorted(n for n in foon.nodes if n.dish is not None)
     if not dishes:
@@ -54,7 +54,7 @@ def check_file(path: Path, time_limit: float) -> list[Row]:
         return []
     kitchen = default_kitchen(foon)
     rows = []
-    for enc in ENCODINGS:
+    for enc in encodings:
         out = plan(foon, kitchen, goal, enc, time_limit=time_limit)
         seconds = out.timings.get("translate", 0.0) + out.timings.get("search", 0.0)
         kinds: tuple[str, ...] = ()
@@ -66,9 +66,9 @@ def check_file(path: Path, time_limit: float) -> list[Row]:
     return rows
 
 
-def summary(rows: list[Row]) -> str:
+def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
     lines = []
-    for enc in ENCODINGS:
+    for enc in encodings:
         mine = [r for r in rows if r.encoding == enc]
         solved = [r for r in mine if r.status == "solved"]
         line = f"{enc}: {len(solved)}/{len(mine)} solved"
@@ -107,17 +107,19 @@ def main() -> None:
     ap.add_argument("--shared", type=Path, default=Path(__file__).resolve().parent.parent / "tests" / "data")
     ap.add_argument("--time-limit", type=float, default=60.0)
     ap.add_argument("--limit", type=int, default=None)
+    ap.add_argument("--encodings", default=",".join(ENCODINGS), help="comma-separated, of " + ", ".join(ENCODINGS))
     ap.add_argument("-v", "--verbose", action="store_true")
     args = ap.parse_args()
+    encodings = tuple(e for e in args.encodings.split(",") if e)
     rows = []
     for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]:
-        for r in check_file(f, args.time_limit):
+        for r in check_file(f, args.time_limit, encodings):
             rows.append(r)
             if args.verbose:
                 kinds = collections.Counter(r.kinds)
                 print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\t"
                       f"{r.seconds:.2f}s\t{dict(kinds)}\t{r.message}", flush=True)
-    print(summary(rows))
+    print(summary(rows, encodings))
 
 
 if __name__ == "__main__":

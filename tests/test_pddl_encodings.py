@@ -314,7 +314,7 @@ def test_rendered_pddl_parses_and_round_trips_the_actions(case, encoding, costs)
     physical = ENCODINGS[encoding].physical
     assert set(task.requirements) == {":strips"} | ({":typing"} if encoding == "foon-compat" or physical else set()) | (
         {":action-costs"} if costed else set()) | (
-        {":conditional-effects"} if any(a.release for a in task.actions) else set())
+        {":conditional-effects"} if any(a.conditional for a in task.actions) else set())
 
 
 def test_empty_precondition_is_written_as_an_empty_and():

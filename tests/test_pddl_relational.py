@@ -19,7 +19,8 @@ from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.model.places import listed, place_of
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
-from foon2pddl.pddl.holders import list_gaps, mismatches, relational_roles, task_aliases, unit_aliases, without
+from foon2pddl.pddl.holders import Fate, list_gaps, mismatches, relational_roles, task_aliases, unit_aliases
+from foon2pddl.pddl.relational_plan import without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Atom
@@ -55,12 +56,16 @@ def test_places_and_lists_read_foon_states():
     assert without(CARTON, {"heavy cream"}) == n("carton", "empty")
 
 
-def test_an_ingredient_listed_only_as_input_moves_into_the_receiving_container():
+def test_an_ingredient_listed_only_as_input_splits_a_portion_into_the_receiving_container():
     carton, cream, cup = relational_roles(POUR)
-    assert cream.after == n("heavy cream", inside("cup")) and cream.changes
+    # FOON leaves the carton out of the outputs: it still lists the cream, so a portion goes into the cup
+    assert cream.fate is Fate.SPLITS and cream.after == n("heavy cream", inside("cup")) and not cream.changes
     assert cream.source.role == 0 and cream.target.role == 2  # the carton and the cup of this unit
-    assert carton.after is None  # a read-only source keeps its node in the task; the replay empties it
+    assert carton.after is None and carton.fate is Fate.STAYS
     assert cup.after == FULL_CUP and cup.source is None and cup.target is None
+    # with the carton emptied in the outputs, the cream itself moves
+    moved = FunctionalUnit(POUR.inputs, POUR.motion, (FULL_CUP, n("carton", "empty")))
+    assert relational_roles(moved)[1].fate is Fate.MOVES and relational_roles(moved)[1].changes
 
 
 def test_two_bowls_the_ingredient_list_names_the_holder():
@@ -68,7 +73,8 @@ def test_two_bowls_the_ingredient_list_names_the_holder():
     sugar = n("sugar", inside("bowl"))
     stir = FunctionalUnit((a, b, sugar), Motion("stir"), (a, b, n("sugar", inside("bowl"), make_state("stirred"))))
     roles = relational_roles(stir)
-    assert roles[2].stays is not None and roles[2].stays.role == 1  # the bowl listing sugar, not the first bowl
+    assert roles[2].fate is Fate.STAYS and roles[2].source == roles[2].target  # stirred where it is
+    assert roles[2].source.role == 1  # the bowl listing sugar, not the first bowl
 
 
 def test_a_list_names_an_object_by_its_head_noun():
@@ -100,10 +106,10 @@ def test_contradicting_output_nodes_are_gaps():
                           (bowl, n("salad", inside("salad bowl")), n("carrot salad", inside("salad bowl"))),
                           (Source("salad.txt", 3),))
     assert list_gaps(unit) == (("salad bowl", "carrot salad",
-                                "carrot salad is in [salad bowl], whose output node does not list it"),)
+                                "carrot salad is in [salad bowl], whose node after the unit does not list it"),)
     compiled = compile_goal(Foon((unit,)), Kitchen(frozenset({n("salad bowl", "empty")})),
                             Goal(GoalSpec("carrot salad"), (unit.outputs[2],)), "relational")
-    assert "label mismatch: salad.txt:3: carrot salad is in [salad bowl], whose output node does not list it" \
+    assert "label mismatch: salad.txt:3: carrot salad is in [salad bowl], whose node after the unit does not list it" \
         in compiled.notes
 
 
@@ -132,18 +138,31 @@ POUR_GOAL = Goal(GoalSpec("cup"), (FULL_CUP,))
 def test_the_task_moves_the_holder_fact_and_requires_the_real_source():
     task = compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")
     assert Atom("in", ("carton_1", "heavy_cream_1")) in task.init  # holder first, as the converter writes it
-    (pour,) = [a for a in task.actions if a.unit is not None]
-    # The cream leaves whatever holds it (a quantified delete, no parameter per carton) and goes into the cup.
-    assert task.requirements == (":strips", ":typing", ":conditional-effects")
-    assert [(t, a) for _, t, a in pour.release] == [("physical-object", Atom("in", ("?from_1", "?heavy_cream")))]
-    assert Atom("in", ("?cup", "?heavy_cream")) in pour.add
-    good = [f"{pour.name} heavy_cream_1 cup_1", "reach-goal-1"]
+    # a carton FOON leaves unchanged keeps its cream: a portion (a not-yet-made object) goes into the cup
+    good = ["pour_u0 cup_1 heavy_cream_2", "reach-goal-1"]
     assert simulate_plan(task, good).ok
-    # With the cream already poured, a second carton cannot give it again: it is not in that carton.
     trace = relational_trace(task, good)
-    assert trace.holder_of("heavy_cream_1") == "cup_1" and trace.contents("cup_1") == ("heavy_cream_1",)
-    assert trace.final["carton_1"].node == n("carton", "empty")
+    assert trace.contents("cup_1") == ("heavy_cream_2",) and trace.contents("carton_1") == ("heavy_cream_1",)
     assert replay(trace).ok
+    # poured on from the cup by a unit that names no cup: the cream leaves whatever holds it (a quantified
+    # conditional delete, no parameter per cup), and the cup that held it is emptied
+    fill = FunctionalUnit(POUR.inputs, POUR.motion, (FULL_CUP, n("heavy cream", inside("cup")), n("carton", "empty")))
+    on = FunctionalUnit((n("heavy cream", inside("cup")), n("bowl", "empty")), Motion("pour"),
+                        (n("bowl", contains("heavy cream")),))
+    task = compile_task(Foon((fill, on)), Kitchen(POUR_KITCHEN.nodes | {n("bowl", "empty")}),
+                        Goal(GoalSpec("bowl"), on.outputs), "relational")
+    assert task.requirements == (":strips", ":typing", ":conditional-effects")
+    pour = next(a for a in task.actions if a.name == "pour_u1")
+    assert [(c.var, c.type, c.delete) for c in pour.conditional][0] == (
+        "?from_0", "physical-object", (Atom("in", ("?from_0", "?heavy_cream")),))
+    good = ["pour_u0 carton_1 heavy_cream_1 cup_1", "pour_u1 heavy_cream_1 bowl_1", "reach-goal-1"]
+    assert simulate_plan(task, good).ok
+    trace = relational_trace(task, good)
+    assert trace.holder_of("heavy_cream_1") == "bowl_1" and trace.contents("cup_1") == ()
+    assert trace.final["cup_1"].node == n("cup", "empty") and trace.final["carton_1"].node == n("carton", "empty")
+    assert replay(trace).ok
+    # the second pour before the first: the cream is not in a cup yet
+    assert not simulate_plan(task, [good[1], good[0], good[2]]).ok
 
 
 def test_a_plan_that_beats_an_egg_in_another_bowl_fails_the_task_semantics():
@@ -191,12 +210,15 @@ def test_whipped_cream_plan_has_real_holders_and_passes_the_relational_replay():
     assert replay(trace).ok and outcome.decoded.trace_check.ok and outcome.validation.ok
     assert trace.contents("bowl_1") == ("whipped_cream_1",) and trace.contents("mixing_bowl_1") == ()
     assert trace.final["mixing_bowl_1"].node.describe() == "mixing bowl (empty)"  # scraped out (FOON omits it)
-    assert trace.final["heavy_cream_1"].consumed and trace.final["refined_sugar_1"].consumed
+    # FOON leaves the carton and the spoon out of the pours' outputs: they keep what they held, and a
+    # portion (a new object of the label) is what moves
+    assert trace.final["heavy_cream_2"].consumed and trace.final["refined_sugar_2"].consumed
+    assert trace.contents("carton_1") == ("heavy_cream_1",) and not trace.final["heavy_cream_1"].consumed
     first = trace.after(0)
-    assert first["heavy_cream_1"].holder == "measuring_cup_1"
+    assert first["heavy_cream_2"].holder == "measuring_cup_1" and first["heavy_cream_1"].holder == "carton_1"
     text = outcome.compiled.view.text(outcome.task, trace)
-    assert "pour heavy_cream_1 from carton_1 into measuring_cup_1" in text
-    assert "mix in mixing_bowl_1: heavy_cream_1, refined_sugar_1 -> whipped_cream_1 with mixer_1" in text
+    assert "pour heavy_cream_2 (a portion of heavy_cream_1) from carton_1 into measuring_cup_1" in text
+    assert "mix in mixing_bowl_1: heavy_cream_2, refined_sugar_2 -> whipped_cream_1 with mixer_1" in text
     assert ENCODINGS["relational"].holders and not ENCODINGS["instances"].holders
 
 
@@ -208,8 +230,8 @@ def test_plan_cli_json_gives_every_objects_holder_and_consumed_flag():
     assert data["validation"]["relational"]["ok"]
     steps = data["relational"]["steps"]
     assert steps[0]["source"].endswith("0001-whipped_cream.txt:27")
-    cream = next(o for o in steps[0]["objects"] if o["id"] == "heavy_cream_1")
-    assert cream == {"id": "heavy_cream_1", "label": "heavy cream", "state": "heavy cream (in [measuring cup])",
+    cream = next(o for o in steps[0]["objects"] if o["id"] == "heavy_cream_2")
+    assert cream == {"id": "heavy_cream_2", "label": "heavy cream", "state": "heavy cream (in [measuring cup])",
                      "holder": "measuring_cup_1", "relation": "in", "consumed": False}
     assert all({"holder", "consumed", "state"} <= set(o) for s in steps for o in s["objects"])
     text = CliRunner().invoke(main, ["plan", "--goal", "whipped cream", "--encoding", "relational", str(WHIPPED)])
@@ -242,7 +264,9 @@ def test_the_kitchen_is_completed_with_the_holders_and_contents_it_names():
     assert {x.label for x in task.instances} == {"pot", "noodle", "pouch", "stove", "water"}
     outcome = plan(Foon((boil,)), Kitchen(frozenset({pot, noodle})), Goal(GoalSpec("pot"), (cooked,)), "relational")
     assert outcome.status == "solved" and replay(outcome.trace).ok
-    assert outcome.trace.contents("pot_1") == ("noodle_1", "water_1")
+    # the pouch FOON does not show emptied keeps its noodles: a portion goes into the pot
+    assert outcome.trace.contents("pot_1") == ("noodle_2", "water_1")
+    assert outcome.trace.contents("pouch_1") == ("noodle_1",) and outcome.trace.holder_of("pot_1") == "stove_1"
 
 
 def test_every_kitchen_container_listing_an_item_holds_one():
@@ -275,3 +299,40 @@ def test_a_kitchen_list_names_an_object_by_its_head_noun():
     starts = [n("bowl", contains("rice")), n("white rice", inside("bowl"))]
     assert task_aliases([], ["bowl", "white rice"], starts) == (("rice", "white rice"),)
     assert task_aliases([], ["bowl", "white rice", "brown rice"], starts) == ()  # two it could be
+
+
+def test_ingredients_listed_by_the_product_a_unit_makes_are_consumed_not_placed_in_it():
+    # custard (contains {egg, milk}) is made in the bowl: the egg is part of it, not an object inside it
+    bowl = n("bowl", contains("egg", "milk"))
+    egg, milk = n("egg", inside("bowl")), n("milk", inside("bowl"))
+    custard = n("custard", contains("egg", "milk"), inside("bowl"))
+    mix = FunctionalUnit((bowl, egg, milk), Motion("mix"), (n("bowl", contains("custard")), custard))
+    fates = {r.role.label: r.fate for r in relational_roles(mix)}
+    assert fates == {"bowl": Fate.STAYS, "egg": Fate.CONSUMED, "milk": Fate.CONSUMED, "custard": Fate.NEW}
+    outcome = plan(Foon((mix,)), Kitchen(frozenset({bowl, egg, milk})), Goal(GoalSpec("custard"), (custard,)),
+                   "relational")
+    assert outcome.status == "solved" and replay(outcome.trace).ok
+    assert outcome.trace.contents("bowl_1") == ("custard_1",) and outcome.trace.final["egg_1"].consumed
+    # a kitchen bowl that still lists what went into the product keeps its object: only some went in
+    seeds, seed = n("bowl", contains("sesame seed")), n("sesame seed", inside("bowl"))
+    salad = n("salad", contains("custard", "sesame seed"), inside("bowl"))
+    sprinkle = FunctionalUnit((n("bowl", contains("custard")), custard, seeds, seed), Motion("sprinkle"),
+                              (n("bowl", contains("salad")), salad))
+    kitchen = Kitchen(frozenset({bowl, egg, milk, seeds, seed}))
+    outcome = plan(Foon((mix, sprinkle)), kitchen, Goal(GoalSpec("salad"), (salad,)), "relational")
+    assert outcome.status == "solved" and replay(outcome.trace).ok, outcome.message
+    holder = outcome.trace.holder_of("sesame_seed_1")
+    assert holder is not None and outcome.trace.contents(holder) == ("sesame_seed_1",)
+    assert outcome.trace.final["custard_1"].consumed
+
+
+def test_every_example_dish_has_a_relational_plan_that_passes_the_replay():
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.pddl.examples import GOALS, LEVEL
+
+    net = load_network([])
+    foon, kitchen = net.at(LEVEL), load_kitchen(None, net, LEVEL)
+    for text in GOALS:
+        outcome = plan(foon, kitchen, load_goal(text, None, foon), "relational")
+        assert outcome.status == "solved", (text, outcome.message)
+        assert replay(outcome.trace).ok and outcome.validation.ok, text

@@ -233,5 +233,5 @@ def test_recipe_says_each_step_then_the_robot_skills_in_words():
 def test_recipe_numbers_objects_that_share_a_label():
     result = run("--goal", "guacamole", "--skills", "--format", "recipe")
     assert result.exit_code == 0, result.output
-    assert "put the lime on the cutting board 1" in result.stdout
-    assert "pick up the onion from the cutting board 4; put the onion into the bowl" in result.stdout
+    assert "put the lime on the cutting board 2" in result.stdout  # board 1 holds the cilantro
+    assert "pick up the onion from the cutting board 2; put the onion into the bowl 1" in result.stdout

@@ -1,15 +1,18 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-(define (domain foon-relational-84721294)
+; instances: 20 (bowl 2, bread 1, butter 1, cinnamon 1, custard 1, egg 2, fork 1, french toast 1, frying pan 1, maple syrup 2, milk 2, plate 1, spatula 1, stove 2, vanilla extract 1)
+; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
+(define (domain foon-relational-bc1be367)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
+    bottle - physical-object
     bowl - physical-object
     bread - physical-object
     butter - physical-object
+    carton - physical-object
     cinnamon - physical-object
     custard - physical-object
     egg - physical-object
@@ -22,11 +25,11 @@
     spatula - physical-object
     stove - physical-object
     vanilla_extract - physical-object
-    bottle - physical-object
-    carton - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
+    bottle_contains_maple_syrup - object-state
     bowl_contains_cinnamon_egg_milk_vanilla_extract - object-state
     bowl_contains_custard - object-state
     bowl_contains_egg - object-state
@@ -38,13 +41,12 @@
     butter_in_frying_pan_melted - object-state
     butter_in_frying_pan_solid - object-state
     butter_solid - object-state
+    carton_contains_milk - object-state
     cinnamon_ground - object-state
     cinnamon_in_bowl - object-state
-    cinnamon_in_custard - object-state
     custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl - object-state
     custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread - object-state
     egg_beaten_in_bowl - object-state
-    egg_beaten_in_custard - object-state
     egg_cracked_in_bowl - object-state
     egg_whole - object-state
     fork_plain - object-state
@@ -60,7 +62,6 @@
     maple_syrup_on_french_toast - object-state
     milk_in_bowl - object-state
     milk_in_carton - object-state
-    milk_in_custard - object-state
     plate_contains_french_toast - object-state
     plate_contains_french_toast_maple_syrup - object-state
     plate_empty - object-state
@@ -68,10 +69,7 @@
     stove_off - object-state
     stove_on - object-state
     vanilla_extract_in_bowl - object-state
-    vanilla_extract_in_custard - object-state
     vanilla_extract_liquid - object-state
-    bottle_contains_maple_syrup - object-state
-    carton_contains_milk - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -101,20 +99,20 @@
   (:action pour_u19
     ; unit 19: pour from 03-scrambled_eggs.foon:24, 05-french_toast.foon:24
     ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
-    :parameters (?bowl - bowl ?egg - egg ?milk - milk)
+    :parameters (?bowl - bowl ?egg - egg ?milk_portion - milk)
     :precondition (and
       (is ?bowl bowl_contains_egg)
       (is ?egg egg_beaten_in_bowl)
       (in ?bowl ?egg)
-      (is ?milk milk_in_carton)
+      (is ?milk_portion not-yet-made)
+      (occupied milk_in_carton)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_milk)
-      (is ?milk milk_in_bowl)
-      (in ?bowl ?milk)
+      (is ?milk_portion milk_in_bowl)
+      (in ?bowl ?milk_portion)
       (not (is ?bowl bowl_contains_egg))
-      (not (is ?milk milk_in_carton))
-      (forall (?from_2 - physical-object) (when (in ?from_2 ?milk) (not (in ?from_2 ?milk))))
+      (not (is ?milk_portion not-yet-made))
     )
   )
 
@@ -174,7 +172,6 @@
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
-      (occupied butter_in_frying_pan_melted)
       (not (is ?butter butter_in_frying_pan_solid))
     )
   )
@@ -233,19 +230,10 @@
     )
     :effect (and
       (is ?bowl bowl_contains_custard)
-      (occupied bowl_contains_custard)
-      (is ?egg egg_beaten_in_custard)
-      (occupied egg_beaten_in_custard)
-      (in ?custard ?egg)
-      (is ?milk milk_in_custard)
-      (occupied milk_in_custard)
-      (in ?custard ?milk)
-      (is ?cinnamon cinnamon_in_custard)
-      (occupied cinnamon_in_custard)
-      (in ?custard ?cinnamon)
-      (is ?vanilla_extract vanilla_extract_in_custard)
-      (occupied vanilla_extract_in_custard)
-      (in ?custard ?vanilla_extract)
+      (is ?egg consumed)
+      (is ?milk consumed)
+      (is ?cinnamon consumed)
+      (is ?vanilla_extract consumed)
       (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (in ?bowl ?custard)
       (not (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract))
@@ -264,20 +252,22 @@
   (:action dip_u42
     ; unit 42: dip from 05-french_toast.foon:71
     ; dip: bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla extract}, in [bowl]), bread (sliced) -> bread (sliced, soaked {custard})
-    :parameters (?custard - custard ?bread - bread)
+    :parameters (?bowl - bowl ?custard - custard ?bread - bread)
     :precondition (and
-      (occupied bowl_contains_custard)
+      (is ?bowl bowl_contains_custard)
       (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
+      (in ?bowl ?custard)
       (is ?bread bread_sliced)
     )
     :effect (and
+      (is ?bowl bowl_empty)
       (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)
-      (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)
       (in ?bread ?custard)
       (is ?bread bread_sliced_soaked_custard)
+      (not (is ?bowl bowl_contains_custard))
       (not (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl))
+      (not (in ?bowl ?custard))
       (not (is ?bread bread_sliced))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?custard) (not (in ?from_1 ?custard))))
     )
   )
 
@@ -294,7 +284,6 @@
     :effect (and
       (is ?frying_pan frying_pan_contains_bread_butter_on_stove)
       (is ?bread bread_in_frying_pan_sliced_soaked_custard)
-      (occupied bread_in_frying_pan_sliced_soaked_custard)
       (in ?frying_pan ?bread)
       (not (is ?frying_pan frying_pan_contains_butter_on_stove))
       (not (is ?bread bread_sliced_soaked_custard))
@@ -316,56 +305,64 @@
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_french_toast_on_stove)
-      (occupied frying_pan_contains_french_toast_on_stove)
+      (is ?bread consumed)
       (is ?french_toast french_toast_cooked_in_frying_pan)
       (in ?frying_pan ?french_toast)
       (not (is ?frying_pan frying_pan_contains_bread_butter_on_stove))
+      (not (is ?bread bread_in_frying_pan_sliced_soaked_custard))
+      (not (in ?frying_pan ?bread))
       (not (is ?french_toast not-yet-made))
+      (forall (?custard_in_bread - custard) (when (and (in ?bread ?custard_in_bread) (is ?custard_in_bread custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)) (and (is ?custard_in_bread consumed) (not (in ?bread ?custard_in_bread)) (not (is ?custard_in_bread custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)))))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )
   )
 
   (:action pick-and-place_u45
     ; unit 45: pick-and-place from 05-french_toast.foon:158
     ; pick-and-place: frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {french toast}), french toast (cooked, on [plate]), spatula
-    :parameters (?french_toast - french_toast ?plate - plate)
+    :parameters (?frying_pan - frying_pan ?french_toast - french_toast ?plate - plate)
     :precondition (and
-      (occupied frying_pan_contains_french_toast_on_stove)
+      (is ?frying_pan frying_pan_contains_french_toast_on_stove)
       (is ?french_toast french_toast_cooked_in_frying_pan)
+      (in ?frying_pan ?french_toast)
       (occupied spatula_plain)
       (is ?plate plate_empty)
     )
     :effect (and
+      (is ?frying_pan frying_pan_empty_on_stove)
       (is ?french_toast french_toast_cooked_on_plate)
       (on ?plate ?french_toast)
       (is ?plate plate_contains_french_toast)
+      (not (is ?frying_pan frying_pan_contains_french_toast_on_stove))
       (not (is ?french_toast french_toast_cooked_in_frying_pan))
+      (not (in ?frying_pan ?french_toast))
       (not (is ?plate plate_empty))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?french_toast) (not (in ?from_1 ?french_toast))))
     )
   )
 
   (:action pour_u46
     ; unit 46: pour from 05-french_toast.foon:175
     ; pour: plate (contains {french toast}), french toast (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {french toast, maple syrup}), french toast (cooked, on [plate], topped {maple syrup}), maple syrup (on [french toast])
-    :parameters (?plate - plate ?french_toast - french_toast ?maple_syrup - maple_syrup)
+    :parameters (?plate - plate ?french_toast - french_toast ?maple_syrup_portion - maple_syrup)
     :precondition (and
       (is ?plate plate_contains_french_toast)
       (is ?french_toast french_toast_cooked_on_plate)
       (on ?plate ?french_toast)
-      (is ?maple_syrup maple_syrup_in_bottle)
+      (is ?maple_syrup_portion not-yet-made)
+      (occupied maple_syrup_in_bottle)
     )
     :effect (and
       (is ?plate plate_contains_french_toast_maple_syrup)
       (occupied plate_contains_french_toast_maple_syrup)
       (is ?french_toast french_toast_cooked_on_plate_topped_maple_syrup)
       (occupied french_toast_cooked_on_plate_topped_maple_syrup)
-      (is ?maple_syrup maple_syrup_on_french_toast)
+      (is ?maple_syrup_portion maple_syrup_on_french_toast)
       (occupied maple_syrup_on_french_toast)
-      (on ?french_toast ?maple_syrup)
+      (on ?french_toast ?maple_syrup_portion)
       (not (is ?plate plate_contains_french_toast))
       (not (is ?french_toast french_toast_cooked_on_plate))
-      (not (is ?maple_syrup maple_syrup_in_bottle))
-      (forall (?from_2 - physical-object) (when (in ?from_2 ?maple_syrup) (not (in ?from_2 ?maple_syrup))))
+      (not (is ?maple_syrup_portion not-yet-made))
     )
   )
 

@@ -1,18 +1,21 @@
 ; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-relational-7911b43b)
+; instances: 20 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 2, honey 2, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
+; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
+(define (domain foon-relational-d518426a)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
     banana - physical-object
     bowl - physical-object
+    carton - physical-object
     cutting_board - physical-object
     fruit_salad - physical-object
     heavy_cream - physical-object
     honey - physical-object
+    jar - physical-object
     juicer - physical-object
     knife - physical-object
     lime - physical-object
@@ -23,13 +26,11 @@
     sugar - physical-object
     whipped_cream - physical-object
     whisk - physical-object
-    carton - physical-object
-    jar - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     banana_in_bowl_sliced - object-state
-    banana_in_fruit_salad_sliced - object-state
     banana_on_cutting_board_peeled - object-state
     banana_on_cutting_board_sliced - object-state
     banana_peeled - object-state
@@ -41,6 +42,7 @@
     bowl_contains_fruit_salad_whipped_cream - object-state
     bowl_contains_strawberry - object-state
     bowl_empty - object-state
+    carton_contains_heavy_cream - object-state
     cutting_board_contains_banana - object-state
     cutting_board_contains_lime - object-state
     cutting_board_contains_strawberry - object-state
@@ -50,8 +52,8 @@
     heavy_cream_in_carton - object-state
     heavy_cream_in_mixing_bowl - object-state
     honey_in_bowl - object-state
-    honey_in_fruit_salad - object-state
     honey_in_jar - object-state
+    jar_contains_honey - object-state
     juicer_contains_lime_juice - object-state
     juicer_empty - object-state
     knife_plain - object-state
@@ -60,7 +62,6 @@
     lime_squeezed - object-state
     lime_whole - object-state
     lime_juice_in_bowl - object-state
-    lime_juice_in_fruit_salad - object-state
     lime_juice_in_juicer - object-state
     mixing_bowl_contains_heavy_cream - object-state
     mixing_bowl_contains_heavy_cream_sugar - object-state
@@ -68,7 +69,6 @@
     mixing_bowl_empty - object-state
     spoon_plain - object-state
     strawberry_in_bowl_sliced - object-state
-    strawberry_in_fruit_salad_sliced - object-state
     strawberry_on_cutting_board_sliced - object-state
     strawberry_on_cutting_board_whole - object-state
     strawberry_whole - object-state
@@ -77,8 +77,6 @@
     whipped_cream_in_mixing_bowl_whipped - object-state
     whipped_cream_on_fruit_salad_whipped - object-state
     whisk_plain - object-state
-    carton_contains_heavy_cream - object-state
-    jar_contains_honey - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -91,19 +89,18 @@
   (:action pour_u9
     ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
     ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream_portion - heavy_cream)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_empty)
-      (is ?heavy_cream heavy_cream_in_carton)
+      (is ?heavy_cream_portion not-yet-made)
+      (occupied heavy_cream_in_carton)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
-      (is ?heavy_cream heavy_cream_in_mixing_bowl)
-      (occupied heavy_cream_in_mixing_bowl)
-      (in ?mixing_bowl ?heavy_cream)
+      (is ?heavy_cream_portion heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream_portion)
       (not (is ?mixing_bowl mixing_bowl_empty))
-      (not (is ?heavy_cream heavy_cream_in_carton))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?heavy_cream) (not (in ?from_1 ?heavy_cream))))
+      (not (is ?heavy_cream_portion not-yet-made))
     )
   )
 
@@ -118,7 +115,6 @@
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
       (is ?sugar sugar_in_mixing_bowl)
-      (occupied sugar_in_mixing_bowl)
       (in ?mixing_bowl ?sugar)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
       (not (is ?sugar sugar_granulated))
@@ -135,7 +131,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_lime)
-      (occupied cutting_board_contains_lime)
       (is ?lime lime_on_cutting_board_whole)
       (on ?cutting_board ?lime)
       (not (is ?cutting_board cutting_board_empty))
@@ -172,13 +167,13 @@
       (is ?lime lime_squeezed)
       (occupied lime_squeezed)
       (is ?juicer juicer_contains_lime_juice)
-      (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
       (in ?juicer ?lime_juice)
       (not (is ?lime lime_halved_on_cutting_board))
       (not (is ?juicer juicer_empty))
       (not (is ?lime_juice not-yet-made))
       (forall (?from_0 - physical-object) (when (on ?from_0 ?lime) (not (on ?from_0 ?lime))))
+      (forall (?from_0 - physical-object) (when (and (on ?from_0 ?lime) (is ?from_0 cutting_board_contains_lime)) (and (is ?from_0 cutting_board_empty) (not (is ?from_0 cutting_board_contains_lime)))))
     )
   )
 
@@ -192,7 +187,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_strawberry)
-      (occupied cutting_board_contains_strawberry)
       (is ?strawberry strawberry_on_cutting_board_whole)
       (on ?cutting_board ?strawberry)
       (not (is ?cutting_board cutting_board_empty))
@@ -239,7 +233,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_banana)
-      (occupied cutting_board_contains_banana)
       (is ?banana banana_on_cutting_board_peeled)
       (on ?cutting_board ?banana)
       (not (is ?cutting_board cutting_board_empty))
@@ -278,6 +271,7 @@
       (not (is ?bowl bowl_empty))
       (not (is ?strawberry strawberry_on_cutting_board_sliced))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?strawberry) (not (on ?from_1 ?strawberry))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?strawberry) (is ?from_1 cutting_board_contains_strawberry)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_strawberry)))))
     )
   )
 
@@ -296,43 +290,47 @@
       (not (is ?bowl bowl_contains_strawberry))
       (not (is ?banana banana_on_cutting_board_sliced))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?banana) (not (on ?from_1 ?banana))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?banana) (is ?from_1 cutting_board_contains_banana)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_banana)))))
     )
   )
 
   (:action pour_u96
     ; unit 96: pour from 09-fruit_salad.foon:121
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {banana, strawberry}) -> bowl (contains {banana, lime juice, strawberry}), lime juice (in [bowl])
-    :parameters (?lime_juice - lime_juice ?bowl - bowl)
+    :parameters (?juicer - juicer ?lime_juice - lime_juice ?bowl - bowl)
     :precondition (and
-      (occupied juicer_contains_lime_juice)
+      (is ?juicer juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (in ?juicer ?lime_juice)
       (is ?bowl bowl_contains_banana_strawberry)
     )
     :effect (and
+      (is ?juicer juicer_empty)
       (is ?lime_juice lime_juice_in_bowl)
       (in ?bowl ?lime_juice)
       (is ?bowl bowl_contains_banana_lime_juice_strawberry)
+      (not (is ?juicer juicer_contains_lime_juice))
       (not (is ?lime_juice lime_juice_in_juicer))
+      (not (in ?juicer ?lime_juice))
       (not (is ?bowl bowl_contains_banana_strawberry))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?lime_juice) (not (in ?from_1 ?lime_juice))))
     )
   )
 
   (:action pour_u97
     ; unit 97: pour from 09-fruit_salad.foon:133
     ; pour: bowl (contains {banana, lime juice, strawberry}), honey (in [jar]) -> bowl (contains {banana, honey, lime juice, strawberry}), honey (in [bowl])
-    :parameters (?bowl - bowl ?honey - honey)
+    :parameters (?bowl - bowl ?honey_portion - honey)
     :precondition (and
       (is ?bowl bowl_contains_banana_lime_juice_strawberry)
-      (is ?honey honey_in_jar)
+      (is ?honey_portion not-yet-made)
+      (occupied honey_in_jar)
     )
     :effect (and
       (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry)
-      (is ?honey honey_in_bowl)
-      (in ?bowl ?honey)
+      (is ?honey_portion honey_in_bowl)
+      (in ?bowl ?honey_portion)
       (not (is ?bowl bowl_contains_banana_lime_juice_strawberry))
-      (not (is ?honey honey_in_jar))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?honey) (not (in ?from_1 ?honey))))
+      (not (is ?honey_portion not-yet-made))
     )
   )
 
@@ -355,18 +353,10 @@
     )
     :effect (and
       (is ?bowl bowl_contains_fruit_salad)
-      (is ?strawberry strawberry_in_fruit_salad_sliced)
-      (occupied strawberry_in_fruit_salad_sliced)
-      (in ?fruit_salad ?strawberry)
-      (is ?banana banana_in_fruit_salad_sliced)
-      (occupied banana_in_fruit_salad_sliced)
-      (in ?fruit_salad ?banana)
-      (is ?lime_juice lime_juice_in_fruit_salad)
-      (occupied lime_juice_in_fruit_salad)
-      (in ?fruit_salad ?lime_juice)
-      (is ?honey honey_in_fruit_salad)
-      (occupied honey_in_fruit_salad)
-      (in ?fruit_salad ?honey)
+      (is ?strawberry consumed)
+      (is ?banana consumed)
+      (is ?lime_juice consumed)
+      (is ?honey consumed)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
       (in ?bowl ?fruit_salad)
       (not (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry))
@@ -397,10 +387,15 @@
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
-      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?heavy_cream consumed)
+      (is ?sugar consumed)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
       (in ?mixing_bowl ?whipped_cream)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?heavy_cream heavy_cream_in_mixing_bowl))
+      (not (in ?mixing_bowl ?heavy_cream))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
     )
   )
@@ -408,13 +403,14 @@
   (:action scoop_u100
     ; unit 100: scoop from 09-fruit_salad.foon:199
     ; scoop: bowl (contains {fruit salad}), fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl]), mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spoon -> bowl (contains {fruit salad, whi...
-    :parameters (?bowl - bowl ?fruit_salad - fruit_salad ?whipped_cream - whipped_cream)
+    :parameters (?bowl - bowl ?fruit_salad - fruit_salad ?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
     :precondition (and
       (is ?bowl bowl_contains_fruit_salad)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
       (in ?bowl ?fruit_salad)
-      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (in ?mixing_bowl ?whipped_cream)
       (occupied spoon_plain)
     )
     :effect (and
@@ -422,13 +418,15 @@
       (occupied bowl_contains_fruit_salad_whipped_cream)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
       (occupied fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl_topped__831a7d6d)
+      (is ?mixing_bowl mixing_bowl_empty)
       (is ?whipped_cream whipped_cream_on_fruit_salad_whipped)
       (occupied whipped_cream_on_fruit_salad_whipped)
       (on ?fruit_salad ?whipped_cream)
       (not (is ?bowl bowl_contains_fruit_salad))
       (not (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl))
+      (not (is ?mixing_bowl mixing_bowl_contains_whipped_cream))
       (not (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped))
-      (forall (?from_3 - physical-object) (when (in ?from_3 ?whipped_cream) (not (in ?from_3 ?whipped_cream))))
+      (not (in ?mixing_bowl ?whipped_cream))
     )
   )
 

@@ -1,13 +1,14 @@
 ; foon2pddl, encoding relational, level 3: 18 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
-(define (domain foon-relational-12e73e08)
+; instances: 17 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 2, onion 1, oregano 1, red wine vinegar 2, salad tongs 1, tomato 1)
+(define (domain foon-relational-cd1efca2)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
     black_olive - physical-object
+    bottle - physical-object
     bowl - physical-object
     cucumber - physical-object
     cutting_board - physical-object
@@ -20,13 +21,13 @@
     red_wine_vinegar - physical-object
     salad_tongs - physical-object
     tomato - physical-object
-    bottle - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     black_olive_in_bowl_pitted - object-state
-    black_olive_in_greek_salad_pitted - object-state
     black_olive_pitted - object-state
+    bottle_contains_olive_oil_red_wine_vinegar - object-state
     bowl_contains_avocado_lime_juice - object-state
     bowl_contains_avocado_lime_juice_onion - object-state
     bowl_contains_avocado_lime_juice_onion_tomato - object-state
@@ -40,7 +41,6 @@
     bowl_contains_greek_salad - object-state
     bowl_empty - object-state
     cucumber_in_bowl_sliced - object-state
-    cucumber_in_greek_salad_sliced - object-state
     cucumber_on_cutting_board_sliced - object-state
     cucumber_on_cutting_board_whole - object-state
     cucumber_whole - object-state
@@ -50,33 +50,26 @@
     cutting_board_empty - object-state
     feta_cheese_crumbled - object-state
     feta_cheese_crumbled_in_bowl - object-state
-    feta_cheese_crumbled_in_greek_salad - object-state
     greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915 - object-state
     knife_plain - object-state
     olive_oil_in_bottle - object-state
     olive_oil_in_bowl - object-state
-    olive_oil_in_greek_salad - object-state
     onion_chopped_in_bowl - object-state
     onion_chopped_on_cutting_board - object-state
     onion_in_bowl_sliced - object-state
-    onion_in_greek_salad_sliced - object-state
     onion_on_cutting_board_peeled - object-state
     onion_on_cutting_board_sliced - object-state
     onion_on_cutting_board_whole - object-state
     onion_whole - object-state
     oregano_dried - object-state
     oregano_in_bowl - object-state
-    oregano_in_greek_salad - object-state
     red_wine_vinegar_in_bottle - object-state
     red_wine_vinegar_in_bowl - object-state
-    red_wine_vinegar_in_greek_salad - object-state
     salad_tongs_plain - object-state
     tomato_chopped_in_bowl - object-state
-    tomato_chopped_in_greek_salad - object-state
     tomato_chopped_on_cutting_board - object-state
     tomato_on_cutting_board_whole - object-state
     tomato_whole - object-state
-    bottle_contains_olive_oil_red_wine_vinegar - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -96,7 +89,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
-      (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
       (on ?cutting_board ?onion)
       (not (is ?cutting_board cutting_board_empty))
@@ -146,7 +138,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
-      (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
       (on ?cutting_board ?tomato)
       (not (is ?cutting_board cutting_board_empty))
@@ -186,6 +177,7 @@
       (not (is ?bowl bowl_contains_avocado_lime_juice))
       (not (is ?onion onion_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?onion) (not (on ?from_1 ?onion))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?onion) (is ?from_1 cutting_board_contains_onion)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_onion)))))
     )
   )
 
@@ -205,6 +197,7 @@
       (not (is ?bowl bowl_contains_avocado_lime_juice_onion))
       (not (is ?tomato tomato_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?tomato) (not (on ?from_1 ?tomato))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?tomato) (is ?from_1 cutting_board_contains_tomato)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_tomato)))))
     )
   )
 
@@ -218,7 +211,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_cucumber)
-      (occupied cutting_board_contains_cucumber)
       (is ?cucumber cucumber_on_cutting_board_whole)
       (on ?cutting_board ?cucumber)
       (not (is ?cutting_board cutting_board_empty))
@@ -273,6 +265,7 @@
       (not (is ?bowl bowl_empty))
       (not (is ?cucumber cucumber_on_cutting_board_sliced))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?cucumber) (not (on ?from_1 ?cucumber))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?cucumber) (is ?from_1 cutting_board_contains_cucumber)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_cucumber)))))
     )
   )
 
@@ -291,6 +284,7 @@
       (not (is ?bowl bowl_contains_cucumber))
       (not (is ?tomato tomato_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?tomato) (not (on ?from_1 ?tomato))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?tomato) (is ?from_1 cutting_board_contains_tomato)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_tomato)))))
     )
   )
 
@@ -309,6 +303,7 @@
       (not (is ?bowl bowl_contains_cucumber_tomato))
       (not (is ?onion onion_on_cutting_board_sliced))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?onion) (not (on ?from_1 ?onion))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?onion) (is ?from_1 cutting_board_contains_onion)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_onion)))))
     )
   )
 
@@ -349,23 +344,23 @@
   (:action pour_u86
     ; unit 86: pour* from 08-greek_salad.foon:150
     ; pour: bowl (contains {black olive, cucumber, feta cheese, onion, tomato}), olive oil (in [bottle]), red wine vinegar (in [bottle]) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), olive...
-    :parameters (?bowl - bowl ?olive_oil - olive_oil ?red_wine_vinegar - red_wine_vinegar)
+    :parameters (?bowl - bowl ?olive_oil_portion - olive_oil ?red_wine_vinegar_portion - red_wine_vinegar)
     :precondition (and
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
-      (is ?olive_oil olive_oil_in_bottle)
-      (is ?red_wine_vinegar red_wine_vinegar_in_bottle)
+      (is ?olive_oil_portion not-yet-made)
+      (occupied olive_oil_in_bottle)
+      (is ?red_wine_vinegar_portion not-yet-made)
+      (occupied red_wine_vinegar_in_bottle)
     )
     :effect (and
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
-      (is ?olive_oil olive_oil_in_bowl)
-      (in ?bowl ?olive_oil)
-      (is ?red_wine_vinegar red_wine_vinegar_in_bowl)
-      (in ?bowl ?red_wine_vinegar)
+      (is ?olive_oil_portion olive_oil_in_bowl)
+      (in ?bowl ?olive_oil_portion)
+      (is ?red_wine_vinegar_portion red_wine_vinegar_in_bowl)
+      (in ?bowl ?red_wine_vinegar_portion)
       (not (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato))
-      (not (is ?olive_oil olive_oil_in_bottle))
-      (not (is ?red_wine_vinegar red_wine_vinegar_in_bottle))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?olive_oil) (not (in ?from_1 ?olive_oil))))
-      (forall (?from_2 - physical-object) (when (in ?from_2 ?red_wine_vinegar) (not (in ?from_2 ?red_wine_vinegar))))
+      (not (is ?olive_oil_portion not-yet-made))
+      (not (is ?red_wine_vinegar_portion not-yet-made))
     )
   )
 
@@ -414,30 +409,14 @@
     :effect (and
       (is ?bowl bowl_contains_greek_salad)
       (occupied bowl_contains_greek_salad)
-      (is ?cucumber cucumber_in_greek_salad_sliced)
-      (occupied cucumber_in_greek_salad_sliced)
-      (in ?greek_salad ?cucumber)
-      (is ?tomato tomato_chopped_in_greek_salad)
-      (occupied tomato_chopped_in_greek_salad)
-      (in ?greek_salad ?tomato)
-      (is ?onion onion_in_greek_salad_sliced)
-      (occupied onion_in_greek_salad_sliced)
-      (in ?greek_salad ?onion)
-      (is ?black_olive black_olive_in_greek_salad_pitted)
-      (occupied black_olive_in_greek_salad_pitted)
-      (in ?greek_salad ?black_olive)
-      (is ?feta_cheese feta_cheese_crumbled_in_greek_salad)
-      (occupied feta_cheese_crumbled_in_greek_salad)
-      (in ?greek_salad ?feta_cheese)
-      (is ?olive_oil olive_oil_in_greek_salad)
-      (occupied olive_oil_in_greek_salad)
-      (in ?greek_salad ?olive_oil)
-      (is ?red_wine_vinegar red_wine_vinegar_in_greek_salad)
-      (occupied red_wine_vinegar_in_greek_salad)
-      (in ?greek_salad ?red_wine_vinegar)
-      (is ?oregano oregano_in_greek_salad)
-      (occupied oregano_in_greek_salad)
-      (in ?greek_salad ?oregano)
+      (is ?cucumber consumed)
+      (is ?tomato consumed)
+      (is ?onion consumed)
+      (is ?black_olive consumed)
+      (is ?feta_cheese consumed)
+      (is ?olive_oil consumed)
+      (is ?red_wine_vinegar consumed)
+      (is ?oregano consumed)
       (is ?greek_salad greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
       (occupied greek_salad_contains_black_olive_cucumber_feta_cheese_olive_oil_onion__afe10915)
       (in ?bowl ?greek_salad)

@@ -1,8 +1,8 @@
 ; foon2pddl, encoding relational, level 3: 22 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-(define (domain foon-relational-974229da)
+; instances: 21 (avocado 2, bowl 2, cilantro 1, cutting board 6, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
+(define (domain foon-relational-1df78ec6)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -24,10 +24,10 @@
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     avocado_halved_on_cutting_board - object-state
     avocado_in_bowl_mashed - object-state
     avocado_in_bowl_scooped - object-state
-    avocado_in_guacamole_mashed - object-state
     avocado_on_cutting_board_whole - object-state
     avocado_whole - object-state
     bowl_contains_avocado - object-state
@@ -43,7 +43,6 @@
     bowl_contains_guacamole - object-state
     bowl_empty - object-state
     cilantro_chopped_in_bowl - object-state
-    cilantro_chopped_in_guacamole - object-state
     cilantro_chopped_on_cutting_board - object-state
     cilantro_fresh - object-state
     cilantro_fresh_on_cutting_board - object-state
@@ -63,20 +62,16 @@
     lime_squeezed - object-state
     lime_whole - object-state
     lime_juice_in_bowl - object-state
-    lime_juice_in_guacamole - object-state
     lime_juice_in_juicer - object-state
     onion_chopped_in_bowl - object-state
-    onion_chopped_in_guacamole - object-state
     onion_chopped_on_cutting_board - object-state
     onion_on_cutting_board_peeled - object-state
     onion_on_cutting_board_whole - object-state
     onion_whole - object-state
     salt_granulated - object-state
     salt_in_bowl - object-state
-    salt_in_guacamole - object-state
     spoon_plain - object-state
     tomato_chopped_in_bowl - object-state
-    tomato_chopped_in_guacamole - object-state
     tomato_chopped_on_cutting_board - object-state
     tomato_on_cutting_board_whole - object-state
     tomato_whole - object-state
@@ -99,7 +94,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
-      (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
       (on ?cutting_board ?onion)
       (not (is ?cutting_board cutting_board_empty))
@@ -149,7 +143,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
-      (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
       (on ?cutting_board ?tomato)
       (not (is ?cutting_board cutting_board_empty))
@@ -183,7 +176,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_avocado)
-      (occupied cutting_board_contains_avocado)
       (is ?avocado avocado_on_cutting_board_whole)
       (on ?cutting_board ?avocado)
       (not (is ?cutting_board cutting_board_empty))
@@ -223,6 +215,7 @@
       (not (is ?avocado avocado_halved_on_cutting_board))
       (not (is ?bowl bowl_empty))
       (forall (?from_0 - physical-object) (when (on ?from_0 ?avocado) (not (on ?from_0 ?avocado))))
+      (forall (?from_0 - physical-object) (when (and (on ?from_0 ?avocado) (is ?from_0 cutting_board_contains_avocado)) (and (is ?from_0 cutting_board_empty) (not (is ?from_0 cutting_board_contains_avocado)))))
     )
   )
 
@@ -250,7 +243,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_lime)
-      (occupied cutting_board_contains_lime)
       (is ?lime lime_on_cutting_board_whole)
       (on ?cutting_board ?lime)
       (not (is ?cutting_board cutting_board_empty))
@@ -287,34 +279,37 @@
       (is ?lime lime_squeezed)
       (occupied lime_squeezed)
       (is ?juicer juicer_contains_lime_juice)
-      (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
       (in ?juicer ?lime_juice)
       (not (is ?lime lime_halved_on_cutting_board))
       (not (is ?juicer juicer_empty))
       (not (is ?lime_juice not-yet-made))
       (forall (?from_0 - physical-object) (when (on ?from_0 ?lime) (not (on ?from_0 ?lime))))
+      (forall (?from_0 - physical-object) (when (and (on ?from_0 ?lime) (is ?from_0 cutting_board_contains_lime)) (and (is ?from_0 cutting_board_empty) (not (is ?from_0 cutting_board_contains_lime)))))
     )
   )
 
   (:action pour_u70
     ; unit 70: pour from 07-guacamole.foon:90
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {avocado}), avocado (in [bowl], mashed) -> bowl (contains {avocado, lime juice}), lime juice (in [bowl])
-    :parameters (?lime_juice - lime_juice ?bowl - bowl ?avocado - avocado)
+    :parameters (?juicer - juicer ?lime_juice - lime_juice ?bowl - bowl ?avocado - avocado)
     :precondition (and
-      (occupied juicer_contains_lime_juice)
+      (is ?juicer juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (in ?juicer ?lime_juice)
       (is ?bowl bowl_contains_avocado)
       (is ?avocado avocado_in_bowl_mashed)
       (in ?bowl ?avocado)
     )
     :effect (and
+      (is ?juicer juicer_empty)
       (is ?lime_juice lime_juice_in_bowl)
       (in ?bowl ?lime_juice)
       (is ?bowl bowl_contains_avocado_lime_juice)
+      (not (is ?juicer juicer_contains_lime_juice))
       (not (is ?lime_juice lime_juice_in_juicer))
+      (not (in ?juicer ?lime_juice))
       (not (is ?bowl bowl_contains_avocado))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?lime_juice) (not (in ?from_1 ?lime_juice))))
     )
   )
 
@@ -333,6 +328,7 @@
       (not (is ?bowl bowl_contains_avocado_lime_juice))
       (not (is ?onion onion_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?onion) (not (on ?from_1 ?onion))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?onion) (is ?from_1 cutting_board_contains_onion)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_onion)))))
     )
   )
 
@@ -351,6 +347,7 @@
       (not (is ?bowl bowl_contains_avocado_lime_juice_onion))
       (not (is ?tomato tomato_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?tomato) (not (on ?from_1 ?tomato))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?tomato) (is ?from_1 cutting_board_contains_tomato)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_tomato)))))
     )
   )
 
@@ -364,7 +361,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_cilantro)
-      (occupied cutting_board_contains_cilantro)
       (is ?cilantro cilantro_fresh_on_cutting_board)
       (on ?cutting_board ?cilantro)
       (not (is ?cutting_board cutting_board_empty))
@@ -403,6 +399,7 @@
       (not (is ?bowl bowl_contains_avocado_lime_juice_onion_tomato))
       (not (is ?cilantro cilantro_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?cilantro) (not (on ?from_1 ?cilantro))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?cilantro) (is ?from_1 cutting_board_contains_cilantro)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_cilantro)))))
     )
   )
 
@@ -447,24 +444,12 @@
     :effect (and
       (is ?bowl bowl_contains_guacamole)
       (occupied bowl_contains_guacamole)
-      (is ?avocado avocado_in_guacamole_mashed)
-      (occupied avocado_in_guacamole_mashed)
-      (in ?guacamole ?avocado)
-      (is ?lime_juice lime_juice_in_guacamole)
-      (occupied lime_juice_in_guacamole)
-      (in ?guacamole ?lime_juice)
-      (is ?onion onion_chopped_in_guacamole)
-      (occupied onion_chopped_in_guacamole)
-      (in ?guacamole ?onion)
-      (is ?tomato tomato_chopped_in_guacamole)
-      (occupied tomato_chopped_in_guacamole)
-      (in ?guacamole ?tomato)
-      (is ?cilantro cilantro_chopped_in_guacamole)
-      (occupied cilantro_chopped_in_guacamole)
-      (in ?guacamole ?cilantro)
-      (is ?salt salt_in_guacamole)
-      (occupied salt_in_guacamole)
-      (in ?guacamole ?salt)
+      (is ?avocado consumed)
+      (is ?lime_juice consumed)
+      (is ?onion consumed)
+      (is ?tomato consumed)
+      (is ?cilantro consumed)
+      (is ?salt consumed)
       (is ?guacamole guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl)
       (occupied guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl)
       (in ?bowl ?guacamole)
@@ -501,26 +486,30 @@
       (not (is ?bowl bowl_contains_cucumber))
       (not (is ?tomato tomato_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?tomato) (not (on ?from_1 ?tomato))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?tomato) (is ?from_1 cutting_board_contains_tomato)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_tomato)))))
     )
   )
 
   (:action pour_u96
     ; unit 96: pour from 09-fruit_salad.foon:121
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {banana, strawberry}) -> bowl (contains {banana, lime juice, strawberry}), lime juice (in [bowl])
-    :parameters (?lime_juice - lime_juice ?bowl - bowl)
+    :parameters (?juicer - juicer ?lime_juice - lime_juice ?bowl - bowl)
     :precondition (and
-      (occupied juicer_contains_lime_juice)
+      (is ?juicer juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
+      (in ?juicer ?lime_juice)
       (is ?bowl bowl_contains_banana_strawberry)
     )
     :effect (and
+      (is ?juicer juicer_empty)
       (is ?lime_juice lime_juice_in_bowl)
       (in ?bowl ?lime_juice)
       (is ?bowl bowl_contains_banana_lime_juice_strawberry)
       (occupied bowl_contains_banana_lime_juice_strawberry)
+      (not (is ?juicer juicer_contains_lime_juice))
       (not (is ?lime_juice lime_juice_in_juicer))
+      (not (in ?juicer ?lime_juice))
       (not (is ?bowl bowl_contains_banana_strawberry))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?lime_juice) (not (in ?from_1 ?lime_juice))))
     )
   )
 

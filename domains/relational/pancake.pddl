@@ -1,14 +1,17 @@
 ; foon2pddl, encoding relational, level 3: 15 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-(define (domain foon-relational-70133908)
+; instances: 20 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
+; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
+(define (domain foon-relational-596dfbe7)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
     baking_powder - physical-object
+    bottle - physical-object
     butter - physical-object
+    carton - physical-object
     egg - physical-object
     flour - physical-object
     frying_pan - physical-object
@@ -24,22 +27,20 @@
     stove - physical-object
     sugar - physical-object
     whisk - physical-object
-    bottle - physical-object
-    carton - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     baking_powder_in_mixing_bowl - object-state
-    baking_powder_in_pancake_batter - object-state
     baking_powder_powder - object-state
+    bottle_contains_maple_syrup - object-state
     butter_in_frying_pan_melted - object-state
     butter_in_frying_pan_solid - object-state
     butter_solid - object-state
+    carton_contains_milk - object-state
     egg_cracked_in_mixing_bowl - object-state
-    egg_cracked_in_pancake_batter - object-state
     egg_whole - object-state
     flour_in_mixing_bowl - object-state
-    flour_in_pancake_batter - object-state
     flour_powder - object-state
     frying_pan_contains_butter_on_stove - object-state
     frying_pan_contains_butter_pancake_batter_on_stove - object-state
@@ -51,7 +52,6 @@
     maple_syrup_on_pancake - object-state
     milk_in_carton - object-state
     milk_in_mixing_bowl - object-state
-    milk_in_pancake_batter - object-state
     mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar - object-state
     mixing_bowl_contains_baking_powder_egg_flour_salt_sugar - object-state
     mixing_bowl_contains_baking_powder_flour_salt_sugar - object-state
@@ -71,16 +71,12 @@
     plate_empty - object-state
     salt_granulated - object-state
     salt_in_mixing_bowl - object-state
-    salt_in_pancake_batter - object-state
     spatula_plain - object-state
     stove_off - object-state
     stove_on - object-state
     sugar_granulated - object-state
     sugar_in_mixing_bowl - object-state
-    sugar_in_pancake_batter - object-state
     whisk_plain - object-state
-    bottle_contains_maple_syrup - object-state
-    carton_contains_milk - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -164,7 +160,6 @@
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
-      (occupied butter_in_frying_pan_melted)
       (not (is ?butter butter_in_frying_pan_solid))
     )
   )
@@ -231,18 +226,18 @@
   (:action pour_u32
     ; unit 32: pour from 04-pancakes.foon:42
     ; pour: mixing bowl (contains {baking powder, egg, flour, salt, sugar}), milk (in [carton]) -> mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), milk (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?milk - milk)
+    :parameters (?mixing_bowl - mixing_bowl ?milk_portion - milk)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar)
-      (is ?milk milk_in_carton)
+      (is ?milk_portion not-yet-made)
+      (occupied milk_in_carton)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
-      (is ?milk milk_in_mixing_bowl)
-      (in ?mixing_bowl ?milk)
+      (is ?milk_portion milk_in_mixing_bowl)
+      (in ?mixing_bowl ?milk_portion)
       (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_salt_sugar))
-      (not (is ?milk milk_in_carton))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?milk) (not (in ?from_1 ?milk))))
+      (not (is ?milk_portion not-yet-made))
     )
   )
 
@@ -269,25 +264,12 @@
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_pancake_batter)
-      (occupied mixing_bowl_contains_pancake_batter)
-      (is ?flour flour_in_pancake_batter)
-      (occupied flour_in_pancake_batter)
-      (in ?pancake_batter ?flour)
-      (is ?baking_powder baking_powder_in_pancake_batter)
-      (occupied baking_powder_in_pancake_batter)
-      (in ?pancake_batter ?baking_powder)
-      (is ?sugar sugar_in_pancake_batter)
-      (occupied sugar_in_pancake_batter)
-      (in ?pancake_batter ?sugar)
-      (is ?salt salt_in_pancake_batter)
-      (occupied salt_in_pancake_batter)
-      (in ?pancake_batter ?salt)
-      (is ?egg egg_cracked_in_pancake_batter)
-      (occupied egg_cracked_in_pancake_batter)
-      (in ?pancake_batter ?egg)
-      (is ?milk milk_in_pancake_batter)
-      (occupied milk_in_pancake_batter)
-      (in ?pancake_batter ?milk)
+      (is ?flour consumed)
+      (is ?baking_powder consumed)
+      (is ?sugar consumed)
+      (is ?salt consumed)
+      (is ?egg consumed)
+      (is ?milk consumed)
       (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
       (in ?mixing_bowl ?pancake_batter)
       (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar))
@@ -310,23 +292,25 @@
   (:action pour_u34
     ; unit 34: pour from 04-pancakes.foon:114
     ; pour: mixing bowl (contains {pancake batter}), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [mixing bowl]), ladle, frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan ...
-    :parameters (?pancake_batter - pancake_batter ?frying_pan - frying_pan ?butter - butter)
+    :parameters (?mixing_bowl - mixing_bowl ?pancake_batter - pancake_batter ?frying_pan - frying_pan ?butter - butter)
     :precondition (and
-      (occupied mixing_bowl_contains_pancake_batter)
+      (is ?mixing_bowl mixing_bowl_contains_pancake_batter)
       (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?pancake_batter)
       (occupied ladle_plain)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
       (is ?butter butter_in_frying_pan_melted)
       (in ?frying_pan ?butter)
     )
     :effect (and
+      (is ?mixing_bowl mixing_bowl_empty)
       (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
-      (occupied pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
       (in ?frying_pan ?pancake_batter)
       (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove)
+      (not (is ?mixing_bowl mixing_bowl_contains_pancake_batter))
       (not (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?pancake_batter))
       (not (is ?frying_pan frying_pan_contains_butter_on_stove))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?pancake_batter) (not (in ?from_1 ?pancake_batter))))
     )
   )
 
@@ -344,11 +328,15 @@
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_pancake_on_stove)
-      (occupied frying_pan_contains_pancake_on_stove)
+      (is ?pancake_batter consumed)
       (is ?pancake pancake_half-cooked_in_frying_pan)
       (in ?frying_pan ?pancake)
       (not (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove))
+      (not (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan))
+      (not (in ?frying_pan ?pancake_batter))
       (not (is ?pancake not-yet-made))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )
   )
 
@@ -369,45 +357,48 @@
   (:action pick-and-place_u37
     ; unit 37: pick-and-place from 04-pancakes.foon:161
     ; pick-and-place: frying pan (contains {pancake}, on [stove]), pancake (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {pancake}), pancake (cooked, on [plate]), spatula
-    :parameters (?pancake - pancake ?plate - plate)
+    :parameters (?frying_pan - frying_pan ?pancake - pancake ?plate - plate)
     :precondition (and
-      (occupied frying_pan_contains_pancake_on_stove)
+      (is ?frying_pan frying_pan_contains_pancake_on_stove)
       (is ?pancake pancake_cooked_in_frying_pan)
+      (in ?frying_pan ?pancake)
       (occupied spatula_plain)
       (is ?plate plate_empty)
     )
     :effect (and
+      (is ?frying_pan frying_pan_empty_on_stove)
       (is ?pancake pancake_cooked_on_plate)
       (on ?plate ?pancake)
       (is ?plate plate_contains_pancake)
+      (not (is ?frying_pan frying_pan_contains_pancake_on_stove))
       (not (is ?pancake pancake_cooked_in_frying_pan))
+      (not (in ?frying_pan ?pancake))
       (not (is ?plate plate_empty))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?pancake) (not (in ?from_1 ?pancake))))
     )
   )
 
   (:action pour_u38
     ; unit 38: pour from 04-pancakes.foon:178
     ; pour: plate (contains {pancake}), pancake (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {maple syrup, pancake}), pancake (cooked, on [plate], topped {maple syrup}), maple syrup (on [pancake])
-    :parameters (?plate - plate ?pancake - pancake ?maple_syrup - maple_syrup)
+    :parameters (?plate - plate ?pancake - pancake ?maple_syrup_portion - maple_syrup)
     :precondition (and
       (is ?plate plate_contains_pancake)
       (is ?pancake pancake_cooked_on_plate)
       (on ?plate ?pancake)
-      (is ?maple_syrup maple_syrup_in_bottle)
+      (is ?maple_syrup_portion not-yet-made)
+      (occupied maple_syrup_in_bottle)
     )
     :effect (and
       (is ?plate plate_contains_maple_syrup_pancake)
       (occupied plate_contains_maple_syrup_pancake)
       (is ?pancake pancake_cooked_on_plate_topped_maple_syrup)
       (occupied pancake_cooked_on_plate_topped_maple_syrup)
-      (is ?maple_syrup maple_syrup_on_pancake)
+      (is ?maple_syrup_portion maple_syrup_on_pancake)
       (occupied maple_syrup_on_pancake)
-      (on ?pancake ?maple_syrup)
+      (on ?pancake ?maple_syrup_portion)
       (not (is ?plate plate_contains_pancake))
       (not (is ?pancake pancake_cooked_on_plate))
-      (not (is ?maple_syrup maple_syrup_in_bottle))
-      (forall (?from_2 - physical-object) (when (in ?from_2 ?maple_syrup) (not (in ?from_2 ?maple_syrup))))
+      (not (is ?maple_syrup_portion not-yet-made))
     )
   )
 

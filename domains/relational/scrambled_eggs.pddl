@@ -1,8 +1,8 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-(define (domain foon-relational-edbf6050)
+; instances: 18 (black pepper 1, bowl 2, butter 1, egg 2, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
+(define (domain foon-relational-733ffa87)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -10,6 +10,7 @@
     black_pepper - physical-object
     bowl - physical-object
     butter - physical-object
+    carton - physical-object
     egg - physical-object
     egg_mixture - physical-object
     fork - physical-object
@@ -21,13 +22,12 @@
     spatula - physical-object
     stove - physical-object
     whisk - physical-object
-    carton - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     black_pepper_ground - object-state
     black_pepper_in_bowl - object-state
-    black_pepper_in_egg_mixture - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato - object-state
     bowl_contains_avocado_cilantro_lime_juice_onion_tomato - object-state
     bowl_contains_black_pepper_egg_milk_salt - object-state
@@ -38,8 +38,8 @@
     butter_in_frying_pan_melted - object-state
     butter_in_frying_pan_solid - object-state
     butter_solid - object-state
+    carton_contains_milk - object-state
     egg_beaten_in_bowl - object-state
-    egg_beaten_in_egg_mixture - object-state
     egg_cracked_in_bowl - object-state
     egg_whole - object-state
     egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl - object-state
@@ -52,19 +52,16 @@
     frying_pan_empty_on_stove - object-state
     milk_in_bowl - object-state
     milk_in_carton - object-state
-    milk_in_egg_mixture - object-state
     plate_contains_scrambled_eggs - object-state
     plate_empty - object-state
     salt_granulated - object-state
     salt_in_bowl - object-state
-    salt_in_egg_mixture - object-state
     scrambled_eggs_cooked_in_frying_pan - object-state
     scrambled_eggs_cooked_on_plate - object-state
     spatula_plain - object-state
     stove_off - object-state
     stove_on - object-state
     whisk_plain - object-state
-    carton_contains_milk - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -108,20 +105,20 @@
   (:action pour_u19
     ; unit 19: pour from 03-scrambled_eggs.foon:24, 05-french_toast.foon:24
     ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
-    :parameters (?bowl - bowl ?egg - egg ?milk - milk)
+    :parameters (?bowl - bowl ?egg - egg ?milk_portion - milk)
     :precondition (and
       (is ?bowl bowl_contains_egg)
       (is ?egg egg_beaten_in_bowl)
       (in ?bowl ?egg)
-      (is ?milk milk_in_carton)
+      (is ?milk_portion not-yet-made)
+      (occupied milk_in_carton)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_milk)
-      (is ?milk milk_in_bowl)
-      (in ?bowl ?milk)
+      (is ?milk_portion milk_in_bowl)
+      (in ?bowl ?milk_portion)
       (not (is ?bowl bowl_contains_egg))
-      (not (is ?milk milk_in_carton))
-      (forall (?from_2 - physical-object) (when (in ?from_2 ?milk) (not (in ?from_2 ?milk))))
+      (not (is ?milk_portion not-yet-made))
     )
   )
 
@@ -165,19 +162,10 @@
     )
     :effect (and
       (is ?bowl bowl_contains_egg_mixture)
-      (occupied bowl_contains_egg_mixture)
-      (is ?egg egg_beaten_in_egg_mixture)
-      (occupied egg_beaten_in_egg_mixture)
-      (in ?egg_mixture ?egg)
-      (is ?milk milk_in_egg_mixture)
-      (occupied milk_in_egg_mixture)
-      (in ?egg_mixture ?milk)
-      (is ?salt salt_in_egg_mixture)
-      (occupied salt_in_egg_mixture)
-      (in ?egg_mixture ?salt)
-      (is ?black_pepper black_pepper_in_egg_mixture)
-      (occupied black_pepper_in_egg_mixture)
-      (in ?egg_mixture ?black_pepper)
+      (is ?egg consumed)
+      (is ?milk consumed)
+      (is ?salt consumed)
+      (is ?black_pepper consumed)
       (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
       (in ?bowl ?egg_mixture)
       (not (is ?bowl bowl_contains_black_pepper_egg_milk_salt))
@@ -249,7 +237,6 @@
     )
     :effect (and
       (is ?butter butter_in_frying_pan_melted)
-      (occupied butter_in_frying_pan_melted)
       (not (is ?butter butter_in_frying_pan_solid))
     )
   )
@@ -257,22 +244,24 @@
   (:action pour_u26
     ; unit 26: pour from 03-scrambled_eggs.foon:109
     ; pour: bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, in [bowl]), frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted) -> frying pan (contains {butter, egg mixture}, on [stove...
-    :parameters (?egg_mixture - egg_mixture ?frying_pan - frying_pan ?butter - butter)
+    :parameters (?bowl - bowl ?egg_mixture - egg_mixture ?frying_pan - frying_pan ?butter - butter)
     :precondition (and
-      (occupied bowl_contains_egg_mixture)
+      (is ?bowl bowl_contains_egg_mixture)
       (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
+      (in ?bowl ?egg_mixture)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
       (is ?butter butter_in_frying_pan_melted)
       (in ?frying_pan ?butter)
     )
     :effect (and
+      (is ?bowl bowl_empty)
       (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
-      (occupied egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
       (in ?frying_pan ?egg_mixture)
       (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove)
+      (not (is ?bowl bowl_contains_egg_mixture))
       (not (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl))
+      (not (in ?bowl ?egg_mixture))
       (not (is ?frying_pan frying_pan_contains_butter_on_stove))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?egg_mixture) (not (in ?from_1 ?egg_mixture))))
     )
   )
 
@@ -291,33 +280,40 @@
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
-      (occupied frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?egg_mixture consumed)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
       (in ?frying_pan ?scrambled_eggs)
       (not (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove))
+      (not (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan))
+      (not (in ?frying_pan ?egg_mixture))
       (not (is ?scrambled_eggs not-yet-made))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
+      (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )
   )
 
   (:action scoop_u28
     ; unit 28: scoop from 03-scrambled_eggs.foon:146
     ; scoop: frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {scrambled eggs}), scrambled eggs (cooked, on [plate]), spatula
-    :parameters (?scrambled_eggs - scrambled_eggs ?plate - plate)
+    :parameters (?frying_pan - frying_pan ?scrambled_eggs - scrambled_eggs ?plate - plate)
     :precondition (and
-      (occupied frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
+      (in ?frying_pan ?scrambled_eggs)
       (occupied spatula_plain)
       (is ?plate plate_empty)
     )
     :effect (and
+      (is ?frying_pan frying_pan_empty_on_stove)
       (is ?scrambled_eggs scrambled_eggs_cooked_on_plate)
       (occupied scrambled_eggs_cooked_on_plate)
       (on ?plate ?scrambled_eggs)
       (is ?plate plate_contains_scrambled_eggs)
       (occupied plate_contains_scrambled_eggs)
+      (not (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove))
       (not (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan))
+      (not (in ?frying_pan ?scrambled_eggs))
       (not (is ?plate plate_empty))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?scrambled_eggs) (not (in ?from_1 ?scrambled_eggs))))
     )
   )
 

@@ -1,14 +1,17 @@
 ; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
-(define (domain foon-relational-dfac1dd6)
+; instances: 30 (basil 1, bowl 1, cutting board 5, immersion blender 1, knife 1, ladle 1, olive oil 4, onion 3, pot 3, stove 2, tomato 2, tomato soup 2, vegetable broth 3, wooden spoon 1)
+; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
+(define (domain foon-relational-602c1fba)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
     basil - physical-object
+    bottle - physical-object
     bowl - physical-object
+    carton - physical-object
     cutting_board - physical-object
     immersion_blender - physical-object
     knife - physical-object
@@ -21,16 +24,17 @@
     tomato_soup - physical-object
     vegetable_broth - physical-object
     wooden_spoon - physical-object
-    bottle - physical-object
-    carton - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     basil_fresh - object-state
     basil_on_tomato_soup - object-state
+    bottle_contains_olive_oil - object-state
     bowl_contains_basil_tomato_soup - object-state
     bowl_contains_tomato_soup - object-state
     bowl_empty - object-state
+    carton_contains_vegetable_broth - object-state
     cutting_board_contains_onion - object-state
     cutting_board_contains_tomato - object-state
     cutting_board_empty - object-state
@@ -66,8 +70,6 @@
     vegetable_broth_in_carton - object-state
     vegetable_broth_in_pot - object-state
     wooden_spoon_plain - object-state
-    bottle_contains_olive_oil - object-state
-    carton_contains_vegetable_broth - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -101,7 +103,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_onion)
-      (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
       (on ?cutting_board ?onion)
       (not (is ?cutting_board cutting_board_empty))
@@ -151,7 +152,6 @@
     )
     :effect (and
       (is ?cutting_board cutting_board_contains_tomato)
-      (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
       (on ?cutting_board ?tomato)
       (not (is ?cutting_board cutting_board_empty))
@@ -193,19 +193,18 @@
   (:action pour_u53
     ; unit 53: pour from 06-tomato_soup.foon:82
     ; pour: pot (empty, on [stove]), olive oil (in [bottle]) -> pot (contains {olive oil}, on [stove]), olive oil (in [pot])
-    :parameters (?pot - pot ?olive_oil - olive_oil)
+    :parameters (?pot - pot ?olive_oil_portion - olive_oil)
     :precondition (and
       (is ?pot pot_empty_on_stove)
-      (is ?olive_oil olive_oil_in_bottle)
+      (is ?olive_oil_portion not-yet-made)
+      (occupied olive_oil_in_bottle)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_on_stove)
-      (is ?olive_oil olive_oil_in_pot)
-      (occupied olive_oil_in_pot)
-      (in ?pot ?olive_oil)
+      (is ?olive_oil_portion olive_oil_in_pot)
+      (in ?pot ?olive_oil_portion)
       (not (is ?pot pot_empty_on_stove))
-      (not (is ?olive_oil olive_oil_in_bottle))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?olive_oil) (not (in ?from_1 ?olive_oil))))
+      (not (is ?olive_oil_portion not-yet-made))
     )
   )
 
@@ -224,22 +223,22 @@
       (not (is ?pot pot_contains_olive_oil_on_stove))
       (not (is ?onion onion_chopped_on_cutting_board))
       (forall (?from_1 - physical-object) (when (on ?from_1 ?onion) (not (on ?from_1 ?onion))))
+      (forall (?from_1 - physical-object) (when (and (on ?from_1 ?onion) (is ?from_1 cutting_board_contains_onion)) (and (is ?from_1 cutting_board_empty) (not (is ?from_1 cutting_board_contains_onion)))))
     )
   )
 
   (:action saute_u55
     ; unit 55: saute from 06-tomato_soup.foon:108
     ; saute: stove (on), olive oil (in [pot]), onion (chopped, in [pot]), wooden spoon -> onion (in [pot], sauteed), wooden spoon
-    :parameters (?onion - onion)
+    :parameters (?olive_oil - olive_oil ?onion - onion)
     :precondition (and
       (occupied stove_on)
-      (occupied olive_oil_in_pot)
+      (is ?olive_oil olive_oil_in_pot)
       (is ?onion onion_chopped_in_pot)
       (occupied wooden_spoon_plain)
     )
     :effect (and
       (is ?onion onion_in_pot_sauteed)
-      (occupied onion_in_pot_sauteed)
       (not (is ?onion onion_chopped_in_pot))
     )
   )
@@ -257,30 +256,29 @@
     :effect (and
       (is ?pot pot_contains_olive_oil_onion_tomato_on_stove)
       (is ?tomato tomato_chopped_in_pot)
-      (occupied tomato_chopped_in_pot)
       (in ?pot ?tomato)
       (not (is ?pot pot_contains_olive_oil_onion_on_stove))
       (not (is ?tomato tomato_chopped_on_cutting_board))
       (forall (?from_2 - physical-object) (when (on ?from_2 ?tomato) (not (on ?from_2 ?tomato))))
+      (forall (?from_2 - physical-object) (when (and (on ?from_2 ?tomato) (is ?from_2 cutting_board_contains_tomato)) (and (is ?from_2 cutting_board_empty) (not (is ?from_2 cutting_board_contains_tomato)))))
     )
   )
 
   (:action pour_u57
     ; unit 57: pour from 06-tomato_soup.foon:139
     ; pour: pot (contains {olive oil, onion, tomato}, on [stove]), vegetable broth (in [carton]) -> pot (contains {olive oil, onion, tomato, vegetable broth}, on [stove]), vegetable broth (in [pot])
-    :parameters (?pot - pot ?vegetable_broth - vegetable_broth)
+    :parameters (?pot - pot ?vegetable_broth_portion - vegetable_broth)
     :precondition (and
       (is ?pot pot_contains_olive_oil_onion_tomato_on_stove)
-      (is ?vegetable_broth vegetable_broth_in_carton)
+      (is ?vegetable_broth_portion not-yet-made)
+      (occupied vegetable_broth_in_carton)
     )
     :effect (and
       (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove)
-      (is ?vegetable_broth vegetable_broth_in_pot)
-      (occupied vegetable_broth_in_pot)
-      (in ?pot ?vegetable_broth)
+      (is ?vegetable_broth_portion vegetable_broth_in_pot)
+      (in ?pot ?vegetable_broth_portion)
       (not (is ?pot pot_contains_olive_oil_onion_tomato_on_stove))
-      (not (is ?vegetable_broth vegetable_broth_in_carton))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?vegetable_broth) (not (in ?from_1 ?vegetable_broth))))
+      (not (is ?vegetable_broth_portion not-yet-made))
     )
   )
 
@@ -304,10 +302,21 @@
     )
     :effect (and
       (is ?pot pot_contains_tomato_soup_on_stove)
-      (occupied pot_contains_tomato_soup_on_stove)
+      (is ?olive_oil consumed)
+      (is ?onion consumed)
+      (is ?tomato consumed)
+      (is ?vegetable_broth consumed)
       (is ?tomato_soup tomato_soup_chunky_in_pot)
       (in ?pot ?tomato_soup)
       (not (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove))
+      (not (is ?olive_oil olive_oil_in_pot))
+      (not (in ?pot ?olive_oil))
+      (not (is ?onion onion_in_pot_sauteed))
+      (not (in ?pot ?onion))
+      (not (is ?tomato tomato_chopped_in_pot))
+      (not (in ?pot ?tomato))
+      (not (is ?vegetable_broth vegetable_broth_in_pot))
+      (not (in ?pot ?vegetable_broth))
       (not (is ?tomato_soup not-yet-made))
     )
   )
@@ -345,20 +354,23 @@
   (:action scoop_u61
     ; unit 61: scoop from 06-tomato_soup.foon:195
     ; scoop: pot (contains {tomato soup}, on [stove]), tomato soup (in [pot], pureed), ladle, bowl (empty) -> bowl (contains {tomato soup}), tomato soup (in [bowl], pureed), ladle
-    :parameters (?tomato_soup - tomato_soup ?bowl - bowl)
+    :parameters (?pot - pot ?tomato_soup - tomato_soup ?bowl - bowl)
     :precondition (and
-      (occupied pot_contains_tomato_soup_on_stove)
+      (is ?pot pot_contains_tomato_soup_on_stove)
       (is ?tomato_soup tomato_soup_in_pot_pureed)
+      (in ?pot ?tomato_soup)
       (occupied ladle_plain)
       (is ?bowl bowl_empty)
     )
     :effect (and
+      (is ?pot pot_empty_on_stove)
       (is ?tomato_soup tomato_soup_in_bowl_pureed)
       (in ?bowl ?tomato_soup)
       (is ?bowl bowl_contains_tomato_soup)
+      (not (is ?pot pot_contains_tomato_soup_on_stove))
       (not (is ?tomato_soup tomato_soup_in_pot_pureed))
+      (not (in ?pot ?tomato_soup))
       (not (is ?bowl bowl_empty))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?tomato_soup) (not (in ?from_1 ?tomato_soup))))
     )
   )
 

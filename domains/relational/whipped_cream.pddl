@@ -1,25 +1,27 @@
 ; foon2pddl, encoding relational, level 3: 4 of 101 units after relevance pruning
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-relational-aa8008c1)
-  (:requirements :strips :typing :conditional-effects)
+; instances: 8 (bowl 1, heavy cream 2, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
+(define (domain foon-relational-a6d76673)
+  (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
     bowl - physical-object
+    carton - physical-object
     heavy_cream - physical-object
     mixing_bowl - physical-object
     spatula - physical-object
     sugar - physical-object
     whipped_cream - physical-object
     whisk - physical-object
-    carton - physical-object
   )
   (:constants
     not-yet-made - object-state
+    consumed - object-state
     bowl_contains_whipped_cream - object-state
     bowl_empty - object-state
+    carton_contains_heavy_cream - object-state
     heavy_cream_in_carton - object-state
     heavy_cream_in_mixing_bowl - object-state
     mixing_bowl_contains_heavy_cream - object-state
@@ -32,7 +34,6 @@
     whipped_cream_in_bowl_whipped - object-state
     whipped_cream_in_mixing_bowl_whipped - object-state
     whisk_plain - object-state
-    carton_contains_heavy_cream - object-state
   )
   (:predicates
     (is ?x - physical-object ?s - object-state)  ; ?x is in the state of FOON node ?s
@@ -45,19 +46,18 @@
   (:action pour_u9
     ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
     ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream_portion - heavy_cream)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_empty)
-      (is ?heavy_cream heavy_cream_in_carton)
+      (is ?heavy_cream_portion not-yet-made)
+      (occupied heavy_cream_in_carton)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
-      (is ?heavy_cream heavy_cream_in_mixing_bowl)
-      (occupied heavy_cream_in_mixing_bowl)
-      (in ?mixing_bowl ?heavy_cream)
+      (is ?heavy_cream_portion heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream_portion)
       (not (is ?mixing_bowl mixing_bowl_empty))
-      (not (is ?heavy_cream heavy_cream_in_carton))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?heavy_cream) (not (in ?from_1 ?heavy_cream))))
+      (not (is ?heavy_cream_portion not-yet-made))
     )
   )
 
@@ -72,7 +72,6 @@
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
       (is ?sugar sugar_in_mixing_bowl)
-      (occupied sugar_in_mixing_bowl)
       (in ?mixing_bowl ?sugar)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream))
       (not (is ?sugar sugar_granulated))
@@ -82,22 +81,25 @@
   (:action scoop_u16
     ; unit 16: scoop from 02-whipped_cream.foon:84
     ; scoop: mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spatula, bowl (empty) -> bowl (contains {whipped cream}), whipped cream (in [bowl], whipped), spatula
-    :parameters (?whipped_cream - whipped_cream ?bowl - bowl)
+    :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream ?bowl - bowl)
     :precondition (and
-      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
+      (in ?mixing_bowl ?whipped_cream)
       (occupied spatula_plain)
       (is ?bowl bowl_empty)
     )
     :effect (and
+      (is ?mixing_bowl mixing_bowl_empty)
       (is ?whipped_cream whipped_cream_in_bowl_whipped)
       (occupied whipped_cream_in_bowl_whipped)
       (in ?bowl ?whipped_cream)
       (is ?bowl bowl_contains_whipped_cream)
       (occupied bowl_contains_whipped_cream)
+      (not (is ?mixing_bowl mixing_bowl_contains_whipped_cream))
       (not (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped))
+      (not (in ?mixing_bowl ?whipped_cream))
       (not (is ?bowl bowl_empty))
-      (forall (?from_1 - physical-object) (when (in ?from_1 ?whipped_cream) (not (in ?from_1 ?whipped_cream))))
     )
   )
 
@@ -116,10 +118,15 @@
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
-      (occupied mixing_bowl_contains_whipped_cream)
+      (is ?heavy_cream consumed)
+      (is ?sugar consumed)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
       (in ?mixing_bowl ?whipped_cream)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?heavy_cream heavy_cream_in_mixing_bowl))
+      (not (in ?mixing_bowl ?heavy_cream))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
     )
   )

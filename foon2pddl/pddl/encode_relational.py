@@ -1,48 +1,57 @@
 """The `relational` encoding: physical objects as in `instances`, plus which object holds which.
 
 * **Objects and states** as in `encode_instances`: one PDDL object per physical
-  object (counts from `instance_counts`), `(is ?x ?s)` for its FOON node,
-  `(occupied s)` for stable nodes, `(precedes ?a ?b)` to bind two roles of one
-  state to two objects.
+  object, `(is ?x ?s)` for its FOON node (`not-yet-made` before it exists,
+  `consumed` after it became part of a mixture), `(occupied s)` for stable nodes,
+  `(precedes ?a ?b)` to bind two roles of one state to two objects. Counts are
+  derived as for `instances`, from the roles this encoding gives each unit
+  (`relational_plan.count_roles`: a portion poured off is a new object).
 * **Relations** as facts between objects, holder first (the public converter's
   order): `(in ?holder ?obj)`, `(on ?surface ?obj)`. A container's contents are
-  the objects in it; an object is in or on at most one holder (init gives one,
-  every action that adds a holder fact deletes the old one).
-* **Actions.** One schema per unit. Per role (`holders.relational_roles`): the
-  state change of `instances`; an object that stays at a place whose holder the
-  unit names must be there (`(in ?bowl ?onion)`: nothing is cut on another board);
-  an object that moves must be in its source holder (deleted) and goes into its
-  target holder (added). A holder FOON does not identify is bound late: one
-  parameter of the holder's label per moving object (the planner picks the bowl),
-  never one per read-only object; an object leaving a holder the unit does not
-  change leaves whatever holds it, by a quantified delete `(forall (?h -
-  physical-object) (when (in ?h ?x) (not (in ?h ?x))))` instead of one parameter
-  per possible source. Products are new objects in the holder FOON
-  names; FOON's implied moves (an ingredient listed only as an input, whose
-  receiving container lists it after) are completed with an implied node.
-* **Consumption** is read from the containers' lists when the plan is replayed
-  (`relational_replay`): an object in a container whose new node no longer lists
-  its label became part of the mixture.
-* **Init.** Kitchen objects start in the state of their node; an object whose
-  node names a place starts in an object of that label whose node lists it, else
-  in the first of that label. A holder the kitchen names but the task has no
-  object of (`heavy cream (in [carton])`, no carton in any unit) is added, listing
-  what starts in it (`implied_holders`), and so is what a kitchen container lists
-  but the task has no object of (`pot (contains {water})`: `water (in [pot])`,
-  `implied_contents`).
+  the objects in it; every action that puts an object somewhere removes it from
+  where it was, so an object is in or on at most one holder.
+* **Actions.** One schema per unit, from the unit's reading in the task
+  (`relational_plan.plan_unit`, `holders.relational_roles`). Per role:
+  - an object that stays where it is while it or its holder changes must be there:
+    `(in ?bowl ?onion)` (nothing is cut on another board);
+  - an object that moves must be in its source holder (deleted) and goes into its
+    target (added); a source the unit does not name is left by a quantified delete
+    `(forall (?h - physical-object) (when (in ?h ?x) (not (in ?h ?x))))`, never by one
+    parameter per possible source (seven read-only bowls poured from are not 9^7
+    groundings); a target the unit does not name is one parameter of its label
+    per unit (the planner picks the oven);
+  - a portion (`SPLITS`) is a not-yet-made object that arrives at the target in
+    the role's output node, while the object it was taken from stays;
+  - a container FOON filled earlier and leaves out of the outputs is emptied of
+    what leaves it (`relational_plan.without`);
+  - a consumed object goes to `consumed` and leaves its holder; contents that are
+    no role of the unit follow their container's list (`holders.Flow`), by one
+    quantified conditional effect per node they can be in.
+* **Init.** Kitchen objects start in the state of their node; an object whose node
+  names a place starts in an object of that label whose node lists it (else one
+  silent about its contents); when there is none, a holder of that label is added,
+  listing what starts in it (`heavy cream (in [carton])` and no carton in any unit,
+  or `egg (in [bowl])` while every bowl of the kitchen is `bowl (empty)`), and a
+  kitchen container that lists an item holds one object of it.
+* **Reports.** Label readings and contradictions (`holders.mismatches`,
+  `holders.list_gaps`), and every object the unit puts where its node does not say
+  what the holder holds (a target the unit does not name: `sandwich (on [plate])`
+  with no plate in the unit), once per task with the unit's file:line; the last two
+  are the (container, content) pairs the replay does not check.
 
-Not modelled: emptiness as a derived predicate (it stays a FOON state), quantities,
-scene kitchens with object ids, generic restoring actions. Requirements: `:strips
-:typing`, `:conditional-effects` when some object leaves a holder by a quantified
-delete, `:action-costs` with costs.
+Requirements: `:strips :typing`, `:conditional-effects` when an action has a
+quantified or conditional effect, `:action-costs` with costs.
 """
 
 from __future__ import annotations
 
-from ..model.foon import Foon, ObjectNode, make_node, make_state
+from collections.abc import Iterable
+
+from ..model.foon import Foon, ObjectNode, make_node
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
-from ..model.places import describes_contents, listed, place_of, places
+from ..model.physical import Relation
+from ..model.places import describes_contents, listed, places
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -52,148 +61,134 @@ from .encode_instances import (
     ROOT_TYPE,
     STATE_TYPE,
     _count_lines,
-    _instances,
     _types,
     goal_actions_over_objects,
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from .holders import Place, RelRole, list_gaps, mismatches, relational_roles, task_aliases
+from .holders import Fate, gained, list_gaps, mismatches, moved_into, task_aliases
 from .instance_counts import derive_counts
 from .names import NameTable
+from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .task import Action, Atom, Instance, PlanningTask, Predicate
+from .relational_init import counted_objects, holder_init, implied_contents, named_objects, read_names
+from .relational_plan import UnitPlan, count_roles, plan_unit, silent_labels, without
+from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
-__all__ = ["IN", "ON", "encode_relational", "holder_init"]
+__all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 
 IN, ON = "in", "on"
+#: The state constant of an object that became part of a mixture.
+CONSUMED = "consumed"
 
 
-def holder_init(instances: list[Instance], alias: dict[str, str] | None = None) -> list[Instance]:
-    """Instances with their starting holders: an object whose node names `in [C]` goes into an object of label C
-    whose node lists its label (the first not yet given one of that label), else the first of label C (names
-    read through the task's `alias`es)."""
-    alias = alias or {}
-    by_label: dict[str, list[Instance]] = {}
-    for x in instances:
-        by_label.setdefault(x.label, []).append(x)
-    used: set[tuple[str, str]] = set()
-    out = []
-    for x in instances:
-        place = place_of(x.start)
-        if place is None or alias.get(place[1], place[1]) not in by_label:
-            out.append(x)
-            continue
-        rel, label = place[0], alias.get(place[1], place[1])
-        pool = [h for h in by_label[label] if h.name != x.name]
-        listing = [h for h in pool if x.label in _read(listed(h.start), alias)]
-        free = [h for h in listing if (h.name, x.label) not in used]
-        silent = [h for h in pool if h.start is not None and not describes_contents(h.start)]
-        pick = (free or listing or silent or pool or [None])[0]
-        if pick is None:
-            out.append(x)
-            continue
-        used.add((pick.name, x.label))
-        out.append(Instance(x.name, x.label, x.start, pick.name, rel))
+#: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
+#: (None: consumed).
+Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
+
+
+def _flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]) -> dict[int, list[Way]]:
+    """Per flow of the unit (by position): every node of its label placed in a container of the holder's label,
+    with the node it ends in (moved into the flow's target, or None: consumed)."""
+    out: dict[int, list[Way]] = {}
+    labels = [s.rel.role.label for s in plan.slots]
+    for i, flow in enumerate(plan.flows):
+        ways = []
+        for n in sorted(x for x in nodes if x.label == flow.label):
+            for rel, c in places(n)[:1]:
+                if alias.get(c, c) == labels[flow.holder]:
+                    ways.append((n, rel, moved_into(n, labels[flow.into]) if flow.into is not None else None))
+        out[i] = ways
     return out
 
 
-def _read(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
-    return frozenset(alias.get(x, x) for x in names)
-
-
-def implied_holders(instances: list[Instance], alias: dict[str, str] | None = None) -> tuple[ObjectNode, ...]:
-    """Holders the kitchen's objects start in but the task has no object of (`heavy cream (in [carton])` and no
-    carton in any unit): one per label, listing what starts in it (`carton (contains {heavy cream})`), sorted by
-    label (names read through the task's `alias`es). A holder of the label whose node contradicts it (`egg (in
-    [bowl])` while the only bowl is `bowl (empty)`) is still used: a new bowl the units never name would leave
-    the egg where no unit can reach it (measured: four more unsolvable dishes of the shared subgraphs)."""
-    alias = alias or {}
-    by_label: dict[str, list[Instance]] = {}
-    for h in instances:
-        if h.start is not None:
-            by_label.setdefault(h.label, []).append(h)
-    wanted: dict[str, set[str]] = {}
-    for x in instances:
-        place = place_of(x.start)
-        if place is None:
-            continue
-        label = alias.get(place[1], place[1])
-        pool = [h for h in by_label.get(label, ()) if h.name != x.name]
-        if not pool:
-            wanted.setdefault(label, set()).add(x.label)
-    return tuple(make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items()))
-
-
-def implied_contents(instances: list[Instance], alias: dict[str, str] | None = None,
-                     placed: frozenset[str] = frozenset()) -> tuple[ObjectNode, ...]:
-    """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
-    any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
-    `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
-    in it, counting the task's objects that start placed in a container of that label first. A new object
-    starts in the node of such an object, else `water (in [pot])`. In container-name order; O(n^2)."""
-    alias = alias or {}
-    out = []
-    fits: dict[tuple[str, str], list[ObjectNode]] = {}  # (item, container label) -> start nodes placed there
-    for x in instances:
-        place = place_of(x.start)
-        if place is not None:
-            fits.setdefault((x.label, alias.get(place[1], place[1])), []).append(x.start)
-    spare = {k: len(v) for k, v in fits.items()}
-    for h in sorted(instances, key=lambda x: x.name):
-        if h.start is None or h.label not in placed:
-            continue
-        for item in sorted(_read(listed(h.start), alias)):
-            if spare.get((item, h.label), 0) > 0:
-                spare[(item, h.label)] -= 1
-                continue
-            known = fits.get((item, h.label))
-            out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
-    return tuple(out)
+def _late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
+                  alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
+    """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
+    label that lists the object's label, with the node it becomes (`relational_plan.without`)."""
+    out = {}
+    for k, s in enumerate(plan.slots):
+        if s.late_empties:
+            label, holder = s.rel.role.label, s.rel.source.holder
+            out[k] = [(n, without(n, {label}, alias)) for n in sorted(nodes)
+                      if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
+    return out
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
-    """The relational task of `goal` over `foon` (see the module doc), with its label mismatches as notes."""
+    """The relational task of `goal` over `foon` (see the module doc), with its reports as notes."""
     inp = at_level(foon, kitchen, goal, level)
     f = inp.foon
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
+    task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
+    filled = frozenset().union(*(gained(f.units[u]) for u in units))
+    plans = {u: plan_unit(f.units[u], inp.kitchen, silent_labels(task_nodes), filled) for u in units}
+    by_unit = {f.units[u]: p for u, p in plans.items()}
     counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
-                           overrides=dict(options.instances))
+                           overrides=dict(options.instances),
+                           roles_of=lambda unit: count_roles(by_unit[unit]) if unit in by_unit else ())
     have = counts.labels()
-    units = tuple(u for u in units if all(r.role.label in have for r in relational_roles(f.units[u])))
+    units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
 
     table = NameTable()
-    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, PRECEDES, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
+    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
         table.reserve(name)
-    type_of, types = _types(table, sorted(set(have) | {c.label for c in inp.candidates}), dict(options.categories))
     nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
     for u in units:
-        nodes.update(x for r in relational_roles(f.units[u]) for x in (r.role.before, r.after) if x is not None)
-    const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
-    instances, init, precede = _instances(table, counts, const)
+        p = plans[u]
+        nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
+        nodes.update(n for _, n in p.emptied)
+    instances = counted_objects(table, counts)
     alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
-    extra = implied_holders(instances, alias)
-    placed = frozenset(alias.get(c, c) for n in nodes | {x.start for x in instances} for _, c in places(n))
-    extra += implied_contents([*instances, *(Instance("", x.label, x) for x in extra)], alias, placed)
-    for node in extra:
-        if node not in const:
-            const[node] = table.name(node.describe(), key=("node", node))
-        if node.label not in type_of:
-            type_of[node.label] = table.name(node.label, key=("type", node.label))
-            types.append((type_of[node.label], ROOT_TYPE))
-        k = 1 + sum(x.label == node.label for x in instances)
-        name = table.name(f"{node.label} {k}", key=("instance", node.label, k))
-        instances.append(Instance(name, node.label, node))
-        init.append(Atom(IS, (name, const[node])))
-    instances = holder_init(instances, alias)
-    init.extend(Atom(x.relation.value, (x.holder, x.name)) for x in instances if x.holder is not None)
-    left = {r.role.before for u in units for r in relational_roles(f.units[u]) if r.changes}
-    stable = {n for n in const if n not in left}
-    init.extend(Atom(OCCUPIED, (const[n],)) for n, _ in counts.at_node if n in stable)
 
-    actions = [_unit_action(u, f.units[u], table, const, stable, type_of, options, precede) for u in units]
+    # The kitchen completed: contents its containers list, holders its objects and the units name.
+    placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
+    instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes))
+    named_places = {alias.get(c, c) for u in units for s in plans[u].slots
+                    for n in (s.after, s.portion) for _, c in places(n)}
+    missing = sorted(named_places - {x.label for x in instances})
+    instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON names only
+    quiet = silent_labels(task_nodes) | frozenset(missing)  # a place only FOON names says nothing it holds
+    instances, implied = holder_init(instances, alias, quiet)
+    if implied:
+        instances, again = holder_init(named_objects(table, instances, implied), alias, quiet)
+        assert not again, again
+    nodes.update(x.start for x in instances if x.start is not None)
+    ways = {u: _flow_ways(plans[u], nodes, alias) for u in units}
+    nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
+    empties = {u: _late_empties(plans[u], nodes, alias) for u in units}
+    nodes.update(n for e in empties.values() for lst in e.values() for _, n in lst)
+    type_of, types = _types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
+                            dict(options.categories))
+    const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
+    init = [Atom(IS, (x.name, const[x.start] if x.start is not None else NOT_MADE)) for x in instances]
+    init.extend(Atom(x.relation.value, (x.holder, x.name)) for x in instances if x.holder is not None)
+
+    inside: dict[str, list[tuple[ObjectNode, Relation]]] = {}  # label -> nodes placed in or on one
+    for n in sorted(nodes):
+        for rel, c in places(n)[:1]:
+            inside.setdefault(alias.get(c, c), []).append((n, rel))
+    left: set[ObjectNode] = set()  # nodes some action moves an object out of
+    for u in units:
+        p = plans[u]
+        for k, s in enumerate(p.slots):
+            after = p.after_of(k) if s.fate is not Fate.CONSUMED else None
+            if s.rel.role.before is not None and (s.fate is Fate.CONSUMED or (after is not None
+                                                                              and after != s.rel.role.before)):
+                left.add(s.rel.role.before)
+        left.update(n for lst in ways[u].values() for n, _, _ in lst)
+        left.update(n for lst in empties[u].values() for n, _ in lst)
+        left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
+    stable = {n for n in const if n not in left}
+    init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
+
+    gaps: list[tuple[str, str, str, object]] = []  # (container, content, message, unit)
+    precede: set[str] = set()
+    container_labels = {n.label for n in nodes if describes_contents(n)} & placed
+    actions = [_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
+                            container_labels, inside, empties[u]) for u in units]
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
@@ -204,17 +199,20 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
+    found += [(unit, msg) for _, _, msg, unit in gaps]
     notes = sorted({f"{_where(unit)}: {m}" for unit, m in found})
     commented = sorted({f"{_where(unit, short_path)}: {m}" for unit, m in found})  # no checkout path in files
+    pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
-        constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, *const.values())),
+        constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
         comments=header("relational", inp, options, len(units)) + _count_lines(counts)
         + tuple(f"label mismatch: {m}" for m in commented),
-        instances=tuple(instances),
+        instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
+        gaps=tuple(sorted(pairs)),
     )
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes))
 
@@ -224,70 +222,164 @@ def _where(unit, path=str) -> str:
     return f"{path(src.path)}:{src.line}" if src is not None else "?"
 
 
-def _unit_action(u: int, unit, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
-                 type_of: dict[str, str], options: EncodeOptions, precede: set[str]) -> Action:
+def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
+                 type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[Way]],
+                 gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
+                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]]) -> Action:
     """One unit's schema (see the module doc): per role its state change and its holder facts."""
-    rels = relational_roles(unit)
-    # A source holder is a parameter only when the unit changes it; else the object leaves whatever holds it
-    # (a quantified delete): seven read-only bowls poured from are no 9^7 groundings.
-    held = [p for r in rels for p in (r.target, _checked(r, rels)) + ((r.source,) if r.moves else ())
-            if p is not None and p.role is not None and (p is not r.source or rels[p.role].changes)]
-    holders = {p.role for p in held}
-    bound = tuple(r.changes or r.moves or k in holders or r.role.before not in stable
-                  or _checked(r, rels) is not None for k, r in enumerate(rels))
+    slots, unit = plan.slots, plan.unit
+    # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
+    # label is a parameter (it must be in its node); several of one label (seven bowls poured into the salad
+    # bowl) are emptied by a conditional effect on whichever holds the object, else 9^7 groundings.
+    emptied = dict(plan.emptied)
+    per_label: dict[str, int] = {}
+    for k in emptied:
+        per_label[slots[k].rel.role.label] = per_label.get(slots[k].rel.role.label, 0) + 1
+    emptied = {k: n for k, n in emptied.items() if per_label[slots[k].rel.role.label] > 1}
+    bound = [s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
+             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied)
+             for k, s in enumerate(slots)]
+    for f in plan.flows:
+        bound[f.holder] = True
+        if f.into is not None:
+            bound[f.into] = True
+    changes = [plan.after_of(k) not in (None, s.rel.role.before) or s.fate is not Fate.STAYS
+               for k, s in enumerate(slots)]
+    grew = True
+    while grew:  # the holders a bound object's facts name are parameters; so is what sits in a changing holder
+        grew = False
+        for k, s in enumerate(slots):
+            src, dst = s.rel.source, s.rel.target
+            need = []
+            if bound[k] and src is not None and src.role is not None and src.role not in emptied:
+                need.append(src.role)
+            if dst is not None and dst.role is not None and (bound[k] or s.fate is Fate.SPLITS):
+                need.append(dst.role)
+            if (s.fate is Fate.STAYS and src is not None and src.role is not None and changes[src.role]
+                    and not bound[k]):
+                need.append(k)
+            for j in need:
+                if not bound[j]:
+                    bound[j] = grew = True
     names = NameTable()
-    var = [f"?{names.name(r.role.label, key=k)}" for k, r in enumerate(rels)]
-    params = [(v, type_of[r.role.label]) for v, r, b in zip(var, rels, bound, strict=True) if b]
-    pre, add, delete, release = [], [], [], []
+    var = [f"?{names.name(s.rel.role.label, key=k)}" for k, s in enumerate(slots)]
+    params = [(var[k], type_of[s.rel.role.label]) for k, s in enumerate(slots) if bound[k]]
+    pre: list[Atom] = []
+    add: list[Atom] = []
+    delete: list[Atom] = []
+    cond: list[Conditional] = []
     first: dict[tuple[str, str], str] = {}
-    for k, (v, r, b) in enumerate(zip(var, rels, bound, strict=True)):
-        state = const[r.role.before] if r.role.before is not None else NOT_MADE
-        if not b:
-            pre.append(Atom(OCCUPIED, (state,)))
-            continue
-        pre.append(Atom(IS, (v, state)))
-        if r.changes:
-            delete.append(Atom(IS, (v, state)))
-            add.append(Atom(IS, (v, const[r.after])))
-            if r.after in stable:
-                add.append(Atom(OCCUPIED, (const[r.after],)))
-        same = (r.role.label, state)
+    late: dict[tuple[Relation, str], str] = {}
+
+    def fresh(label: str, key, word: str = "") -> str:
+        v = f"?{names.name(f'{label} {word}'.strip(), key=key)}"
+        params.append((v, type_of[label]))
+        return v
+
+    def state(v: str, label: str, node: ObjectNode | None) -> None:
+        s_ = const[node] if node is not None else NOT_MADE
+        pre.append(Atom(IS, (v, s_)))
+        same = (label, s_)
         if same in first:
             pre.append(Atom(PRECEDES, (first[same], v)))
-            precede.add(r.role.label)
+            precede.add(label)
         first[same] = v
-        if (place := _checked(r, rels)) is not None:
-            pre.append(Atom(place.relation.value, (var[place.role], v)))
-        for place, side in ((r.source, "from"), (r.target, "into")):
-            if place is None or not r.moves:
-                continue
-            if side == "from" and (place.role is None or not rels[place.role].changes):
-                release.append((f"?{names.name(f'from {k}', key=('from', k))}", ROOT_TYPE, None, place.relation, v))
-                continue
-            if place.role is not None:
-                h = var[place.role]
-            elif place.holder in type_of:
-                h = f"?{names.name(f'{side} {place.holder} {k}', key=(side, k))}"
-                params.append((h, type_of[place.holder]))
-            else:
-                continue
-            fact = Atom(place.relation.value, (h, v))
-            if side == "from":
+
+    def becomes(v: str, old: ObjectNode | None, new: ObjectNode | str) -> None:
+        delete.append(Atom(IS, (v, const[old] if old is not None else NOT_MADE)))
+        add.append(Atom(IS, (v, CONSUMED if isinstance(new, str) else const[new])))
+        if not isinstance(new, str) and new in stable:
+            add.append(Atom(OCCUPIED, (const[new],)))
+
+    def holder_var(place, label: str, k: int) -> str | None:
+        if place.role is not None:
+            return var[place.role]
+        key = (place.relation, place.holder)
+        if key not in late:
+            if place.holder not in type_of:
+                return None
+            late[key] = fresh(place.holder, ("late", key), "here")
+        if place.holder in containers:
+            gaps.append((place.holder, label, f"{label} is {place.relation} [{place.holder}], a {place.holder} "
+                         "the unit does not name: nothing says that it lists it", unit))
+        return late[key]
+
+    for k, s in enumerate(slots):
+        r = s.rel
+        label, before = r.role.label, r.role.before
+        v = var[k]
+        if s.fate is Fate.SPLITS:  # the portion: a new object where the role's output node says
+            portion = fresh(label, ("portion", k), "portion")
+            state(portion, label, None)
+            becomes(portion, None, s.portion)
+            if r.target is not None and (h := holder_var(r.target, label, k)) is not None:
+                add.append(Atom(r.target.relation.value, (h, portion)))
+        if not bound[k]:
+            if before in stable:  # else a container emptied by a conditional effect: whichever holds the object
+                pre.append(Atom(OCCUPIED, (const[before],)))
+            continue
+        state(v, label, before)
+        after = plan.after_of(k) if bound[k] else s.after
+        if s.fate is Fate.CONSUMED:
+            becomes(v, before, CONSUMED)
+            for node, rel in inside.get(label, ()):  # what is in or on it became part of the mixture too
+                if node.label in type_of:
+                    c = f"?{names.name(f'{node.label} in {label}', key=('inside', k, node.label))}"
+                    there, was = Atom(rel.value, (v, c)), Atom(IS, (c, const[node]))
+                    cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
+                                            var=c, type=type_of[node.label]))
+        elif after is not None and after != before:
+            becomes(v, before, after)
+        src, dst = r.source, r.target
+        if s.fate in (Fate.STAYS, Fate.SPLITS) and src is not None and src.role is not None and bound[src.role]:
+            pre.append(Atom(src.relation.value, (var[src.role], v)))
+            if s.fate is Fate.STAYS and dst is not None and dst.relation != src.relation:
+                delete.append(Atom(src.relation.value, (var[src.role], v)))
+                add.append(Atom(dst.relation.value, (var[src.role], v)))
+        if s.fate in (Fate.MOVES, Fate.CONSUMED) and src is not None:
+            h = None
+            if (src.role is not None and bound[src.role]) or (src.role is None and s.fate is Fate.CONSUMED):
+                h = holder_var(src, label, k)
+            fact = Atom(src.relation.value, (h, v)) if h is not None else None
+            if fact is not None:
                 pre.append(fact)
                 delete.append(fact)
             else:
-                add.append(fact)
-    return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(pre), add=tuple(add),
-                  delete=tuple(d for d in delete if d not in add), params=tuple(params),
-                  release=tuple((h, t, Atom(rel.value, (h, x))) for h, t, _, rel, x in release),
+                if src.role in emptied:  # a container FOON filled earlier: emptied of it, whichever it is
+                    f_ = f"?{names.name(f'{src.holder} {k}', key=('emptied', k))}"
+                    there = Atom(src.relation.value, (f_, v))
+                    old, new = slots[src.role].rel.role.before, emptied[src.role]
+                    was = Atom(IS, (f_, const[old]))
+                    now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
+                    cond.append(Conditional((there, was), add=tuple(now), delete=(was,), var=f_,
+                                            type=type_of[slots[src.role].rel.role.label]))
+                f_ = f"?{names.name(f'from {k}', key=('from', k))}"
+                leave = Atom(src.relation.value, (f_, v))
+                cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
+                for old, new in empties.get(k, ()):  # whichever holder the units filled with it: emptied of it
+                    was = Atom(IS, (f_, const[old]))
+                    now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
+                    cond.append(Conditional((leave, was), add=tuple(now), delete=(was,), var=f_, type=ROOT_TYPE))
+        if s.fate in (Fate.MOVES, Fate.NEW) and dst is not None:
+            h = holder_var(dst, label, k)
+            if h is not None:
+                add.append(Atom(dst.relation.value, (h, v)))
+    for i, flow in enumerate(plan.flows):
+        if flow.label not in type_of:
+            continue
+        y = f"?{names.name(f'{flow.label} in it', key=('flow', i))}"
+        for node, rel, new in ways.get(i, ()):
+            there, was = Atom(rel.value, (var[flow.holder], y)), Atom(IS, (y, const[node]))
+            now = [Atom(IS, (y, CONSUMED if new is None else const[new]))]
+            if flow.into is not None:
+                now.append(Atom(IN, (var[flow.into], y)))
+            cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y,
+                                    type=type_of[flow.label]))
+    expected = [Role(s.rel.role.label, s.rel.role.before,
+                     None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else plan.after_of(k))
+                for k, s in enumerate(slots)]
+    return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(dict.fromkeys(pre)),
+                  add=tuple(dict.fromkeys(add)), delete=tuple(d for d in dict.fromkeys(delete) if d not in add),
+                  params=tuple(params), conditional=tuple(cond),
                   cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
-                  roles=tuple((r.role, b) for r, b in zip(rels, bound, strict=True)))
-
-
-def _checked(r: RelRole, rels: tuple[RelRole, ...]) -> Place | None:
-    """Where an unmoved object must be, checked by a precondition: its holder is a role of the unit and the
-    unit changes the object or the holder (a read-only salt in a read-only bowl is checked by neither)."""
-    place = r.stays
-    if place is None or place.role is None or not (r.changes or rels[place.role].changes):
-        return None
-    return place
+                  roles=tuple(zip(expected, bound, strict=True)))

@@ -1,11 +1,14 @@
 """Which object holds which in one functional unit: the FOON evidence the `relational` encoding reads.
 
-FOON writes relations into states: `onion (chopped, in [bowl])`, `bowl (contains
-{onion, salt})`. Per unit, for every role (`pairing.unit_roles`) this module says
-where the object is before the unit (`source`) and after it (`target`), as a
-`Place`: the relation (`in`/`on`), the holder's label, and the unit's role that is
-the holder, or None when FOON does not say which object it is (the encoding then
-binds it late: a parameter the planner chooses).
+FOON writes relations into states: `onion (chopped, in [bowl])` names the onion's
+place, `bowl (contains {onion, salt})` the bowl's contents. Per unit, for every
+role (`pairing.unit_roles`) this module says what becomes of the object (its
+`Fate`), where it is before the unit (`source`) and after it (`target`), as a
+`Place`: the relation (`in`/`on`), the holder's label, and the unit's role that
+is the holder, or None when the unit does not name it (the encoding binds it
+late). FOON's explicit nodes are never rewritten: an object the unit gives an
+output node ends in that node, and a container the unit leaves out of its
+outputs keeps the node it has (FOON says nothing else of it).
 
 Rules, in order (each reads only the unit itself):
 
@@ -13,43 +16,54 @@ Rules, in order (each reads only the unit itself):
    its label: `salad bowl (contains {salad})` beside `carrot salad (in [salad
    bowl])`, `oil (in [pan])` where the pan is a `cooking pan`. A name no role of
    the unit has is read as the one role whose label it is the head of, or whose
-   head it is (last words: `salad` / `carrot salad`, `black pepper` / `pepper`;
-   `unit_aliases`); every such reading is reported (rule 5), and the replay reads
-   the task's lists through the same readings (`task_aliases`).
+   head it is (last words; `unit_aliases`); every such reading is reported
+   (`mismatches`), and the replay reads the task's lists through the same
+   readings (`task_aliases`).
 1. **Places.** A node's place is its first `in [C]` / `on [C]` state (a bare `on`
-   is an appliance switched on, not a place); a read-only or kept role keeps its
-   input node, so its place.
-2. **Completion.** FOON often lists an ingredient only as an input: the pour of
-   heavy cream into a bowl gives `bowl (contains {heavy cream})` as output but not
-   the cream. A read-only role of label L moves when some other role's output
-   node lists L and its input node does not: its output node is its input node
-   with the place replaced by `in [that role's label]` (a node FOON implies,
-   marked in the trace by the state `in [C]`). Likewise a source container that
-   the unit changes and that the moving object leaves, but whose output node
-   still lists it: its output node lists the rest, or is `empty` (2b). A read-only
-   source keeps its node here; the plan's replay empties it (`relational_replay`).
-3. **Holder binding.** The holder of an object of label L at a place of label C
-   (before: from the input nodes, after: from the output nodes) is, among the
-   unit's other roles of label C: the one whose node on that side lists L; else
-   the only one; else (none, or several and none lists L) the first one that lists
-   it, else none: bound late. Ambiguous cases are rare (under 0.2 % of arriving
-   objects in the shared data).
-4. **Moves.** An object moves when its place changes (another label or relation,
-   or another role of the same label), or it leaves a place, or arrives at one.
-5. **Label mismatches.** A label listed by an output node's `contains` that no
-   role of the unit has and that was not listed before is reported (`mismatches`):
-   with its reading by rule 0 (`olive oil` listed, read as the object `green olive
-   oil`), else as a name no object of the unit is (no object moves for it).
+   is an appliance switched on, not a place).
+2. **Holder binding.** The holder of an object of label L at a place of label C
+   (before the unit: read from the input nodes; after it: from the output nodes,
+   or the input node of a role the unit leaves unchanged) is, among the unit's
+   other roles of label C: the first whose node on that side lists L; else the
+   only one; else none: bound late (the planner chooses which C).
+3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of
+   heavy cream gives `mixing bowl (contains {heavy cream})` as output but not the
+   cream. A role of label L with no output node moves when another role's output
+   node lists L and its input node does not: it arrives `in` that role (an implied
+   node: its input node with the place replaced, `heavy cream (in [mixing bowl])`),
+   unless that role is a product the unit makes (`custard (contains {egg, milk})`):
+   then it is an ingredient of it, `CONSUMED` (as in rule 5).
+4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves
+   still lists L afterwards (its output node does, or the unit gives it none and
+   its node does): FOON then says the holder keeps what it holds, so a portion
+   `SPLITS` off: a new object of label L arrives where the role's output node says,
+   and the object in the holder stays (the carton still holds cream after some is
+   poured; the measuring cup FOON never empties keeps its cream too). A role with no
+   output node whose holder's output node no longer lists L is `CONSUMED`: it
+   became part of the mixture made there (the lettuce of a salad), and so is one
+   sitting, with no output node, where the unit makes a new object (`garlic (in
+   [bowl])` where `meat mix (in [bowl])` is made). A source the unit does not name
+   is decided by the encoding, which knows the task's nodes (`Fate.MOVES` here).
+5. **Contents that are not roles.** A container whose output node drops a label its
+   input node lists, with no role of that label: what is of that label in it
+   follows into the role whose output node newly lists it (`Flow.into`), or became
+   part of the mixture (`Flow.into` None; also when that role is a product the unit makes).
+6. **Contradictions** (`list_gaps`): a product placed in a container whose output
+   node describes its contents and does not list it, and a label an output node
+   newly lists that no role of the unit is. No plan can satisfy both words, so the
+   task reports them and its replay does not check that pair.
 
 What stays ambiguous: several holders of one label that all list L (the first
-is taken), and a place FOON never names (the object then stands free).
-O(r^2) for r roles; cached per unit.
+is taken), a place FOON never names (the object stands free), and whether a
+container FOON leaves out of the outputs was emptied (it is taken to keep what it
+lists). O(r^2) for r roles; cached per unit.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from enum import StrEnum
 from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
@@ -57,7 +71,18 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
 from .pairing import Role, unit_roles
 
-__all__ = ["Place", "RelRole", "list_gaps", "mismatches", "relational_roles", "task_aliases", "unit_aliases", "without"]
+__all__ = ["Fate", "Flow", "Place", "RelRole", "gained", "list_gaps", "mismatches", "moved_into", "relational_roles",
+           "task_aliases", "unit_aliases", "unit_flows"]
+
+
+class Fate(StrEnum):
+    """What a unit does to one of its objects (rule 4)."""
+
+    STAYS = "stays"  # where it was (its state may change)
+    MOVES = "moves"  # it leaves its holder, arrives at another, or both
+    SPLITS = "splits"  # a portion of it goes to the target as a new object; it stays in its holder
+    CONSUMED = "consumed"  # it became part of a mixture
+    NEW = "new"  # the unit makes it
 
 
 @dataclass(frozen=True)
@@ -71,40 +96,37 @@ class Place:
 
 @dataclass(frozen=True)
 class RelRole:
-    """A role with its holders: `after` is the completed output node (None: unchanged), `source`/`target` the
-    place it leaves / arrives at (None: it does not move; `stays` is where an unmoved object must be)."""
+    """A role with what becomes of it: `after` is its node after the unit (None: unchanged; for `SPLITS` the
+    new portion's node, the role's own object keeping its input node), `source`/`target` where it is before
+    and after (the same Place, or both None, when it stays)."""
 
     role: Role
     after: ObjectNode | None
+    fate: Fate
     source: Place | None = None
     target: Place | None = None
-    stays: Place | None = None
 
     @property
     def changes(self) -> bool:
-        return self.after is not None and self.after != self.role.before
-
-    @property
-    def moves(self) -> bool:
-        return self.source != self.target
+        """The role's own object leaves its input node (a new object is made, or moved, or consumed)."""
+        return self.fate in (Fate.NEW, Fate.CONSUMED) or (
+            self.fate is not Fate.SPLITS and self.after is not None and self.after != self.role.before)
 
 
-def _moved_into(node: ObjectNode, holder: str) -> ObjectNode:
-    """`node` with its place replaced by `in [holder]` (rule 2)."""
+@dataclass(frozen=True)
+class Flow:
+    """Rule 5: what is of `label` in the container role `holder` (and is no role of the unit) goes into role
+    `into`, or is consumed (`into` None)."""
+
+    label: str
+    holder: int
+    into: int | None
+
+
+def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:
+    """`node` with its place replaced by `in [holder]` (an implied node, rule 3)."""
     kept = [s for s in node.states if not (s.label in ("in", "on") and s.related)]
-    return make_node(node.label, [*kept, make_state("in", holder)])
-
-
-def _holder(roles: tuple[Role, ...], nodes: list[ObjectNode | None], me: int, label: str,
-            place: tuple[Relation, str] | None) -> Place | None:
-    """Rule 3: the role holding role `me` (of `label`) at `place`, read from `nodes` (one side of the unit)."""
-    if place is None:
-        return None
-    rel, holder = place
-    mine = [k for k, r in enumerate(roles) if k != me and r.label == holder and nodes[k] is not None]
-    listing = [k for k in mine if label in listed(nodes[k])]
-    pick = listing[0] if listing else (mine[0] if len(mine) == 1 else None)
-    return Place(rel, holder, pick)
+    return make_node(node.label, [*kept, make_state(relation.value, holder)])
 
 
 def _head_of(name: str, label: str) -> bool:
@@ -148,52 +170,116 @@ def _aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | Non
     return make_node(node.label, states)
 
 
+def _holder(labels: list[str], nodes: list[ObjectNode | None], me: int, label: str,
+            place: tuple[Relation, str] | None) -> Place | None:
+    """Rule 2: the role holding role `me` (of `label`) at `place`, read from `nodes` (one side of the unit)."""
+    if place is None:
+        return None
+    rel, holder = place
+    mine = [k for k, lab in enumerate(labels) if k != me and lab == holder and nodes[k] is not None]
+    listing = [k for k in mine if label in listed(nodes[k])]
+    pick = listing[0] if listing else (mine[0] if len(mine) == 1 else None)
+    return Place(rel, holder, pick)
+
+
+@dataclass(frozen=True)
+class _Reading:
+    roles: tuple[Role, ...]
+    before: tuple[ObjectNode | None, ...]  # input nodes read through the unit's aliases
+    after: tuple[ObjectNode | None, ...]  # output nodes (input node when the unit gives none), read likewise
+
+
 @lru_cache(maxsize=1 << 14)
-def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
-    """The unit's roles with their completed output nodes and holders (see the module doc)."""
+def _reading(unit: FunctionalUnit) -> _Reading:
     roles = unit_roles(unit)
     alias = dict(unit_aliases(unit))
-    read = [(_aliased(r.before, alias), _aliased(r.after, alias)) for r in roles]
-    before = [b for b, _ in read]
-    after = [a if a is not None else b for b, a in read]
-    gained = {lab for k, r in enumerate(roles) for lab in listed(after[k]) - listed(before[k])}
-    out_nodes = list(after)
-    for k, r in enumerate(roles):
-        if r.after is None and r.label in gained:
-            into = [j for j, x in enumerate(roles) if j != k and r.label in listed(after[j]) - listed(before[j])]
-            out_nodes[k] = _moved_into(r.before, roles[into[0]].label)
-    places_ = [(_holder(roles, before, k, r.label, place_of(before[k])),
-                _holder(roles, out_nodes, k, r.label, place_of(out_nodes[k]))) for k, r in enumerate(roles)]
-    leaving: dict[int, set[str]] = {}
-    for k, (src, dst) in enumerate(places_):
-        if src is not None and src.role is not None and src != dst:
-            leaving.setdefault(src.role, set()).add(roles[k].label)
-    for j, labels in leaving.items():
-        if roles[j].changes and listed(out_nodes[j]) & labels:
-            out_nodes[j] = without(out_nodes[j], labels, alias)
+    before = tuple(_aliased(r.before, alias) for r in roles)
+    after = tuple(_aliased(r.after, alias) if r.after is not None else before[k] for k, r in enumerate(roles))
+    return _Reading(roles, before, after)
+
+
+def _keeps(node: ObjectNode | None, label: str) -> bool:
+    """Whether a holder in `node` still holds something of `label` by FOON's words (rule 4)."""
+    return node is not None and describes_contents(node) and label in listed(node)
+
+
+@lru_cache(maxsize=1 << 14)
+def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
+    """The unit's roles with their fates, output nodes and holders (see the module doc)."""
+    read = _reading(unit)
+    roles, before, after = read.roles, read.before, read.after
+    labels = [r.label for r in roles]
+    gained = [listed(after[k]) - listed(before[k]) if roles[k].after is not None else frozenset()
+              for k in range(len(roles))]
+    out_nodes: list[ObjectNode | None] = [r.after for r in roles]
+    implied: dict[int, int] = {}
+    mixed: set[int] = set()  # roles listed by a product the unit makes: ingredients of it
+    for k, r in enumerate(roles):  # rule 3
+        if r.after is None and r.before is not None:
+            into = [j for j in range(len(roles)) if j != k and r.label in gained[j]]
+            if into and roles[into[0]].before is None:
+                mixed.add(k)
+            elif into:
+                implied[k] = into[0]
+                out_nodes[k] = moved_into(r.before, labels[into[0]])
+    read_after = [moved_into(before[k], labels[implied[k]]) if k in implied else after[k] for k in range(len(roles))]
+    made_in = {place_of(after[k]) for k, r in enumerate(roles) if r.before is None and place_of(after[k])}
     result = []
     for k, r in enumerate(roles):
-        src, dst = places_[k]
-        if out_nodes[k] == after[k]:  # nothing completed: FOON's own output node
-            done = r.after
-        else:
-            done = out_nodes[k] if out_nodes[k] != before[k] else r.after
-        result.append(RelRole(r, done, stays=src) if src == dst else RelRole(r, done, src, dst))
+        src = _holder(labels, list(before), k, r.label, place_of(before[k])) if r.before is not None else None
+        dst = _holder(labels, read_after, k, r.label, place_of(read_after[k]))
+        if r.before is None:
+            result.append(RelRole(r, r.after, Fate.NEW, None, dst))
+            continue
+        if r.after is None and k not in implied:
+            holder_drops = (src is not None and src.role is not None and roles[src.role].after is not None
+                            and describes_contents(after[src.role]) and r.label not in listed(after[src.role]))
+            absorbed = k in mixed or (src is not None and (src.relation, src.holder) in made_in)
+            if holder_drops or absorbed:
+                result.append(RelRole(r, None, Fate.CONSUMED, src, None))
+            else:
+                result.append(RelRole(r, None, Fate.STAYS, src, src))
+            continue
+        same = (src == dst) or (src is not None and dst is not None and src.holder == dst.holder
+                                and src.role is not None and src.role == dst.role)
+        if same:
+            result.append(RelRole(r, out_nodes[k], Fate.STAYS, src, dst))
+            continue
+        keeps = src is not None and src.role is not None and _keeps(after[src.role], r.label)
+        result.append(RelRole(r, out_nodes[k], Fate.SPLITS if keeps else Fate.MOVES, src, dst))
     return tuple(result)
 
 
-def without(node: ObjectNode, labels: set[str], alias: dict[str, str] | None = None) -> ObjectNode:
-    """Rule 2b: a source container after what left it (`contains` without `labels`, or `empty`); a name
-    the list uses for one of `labels` (`alias`) leaves with it."""
-    alias = alias or {}
-    rest = sorted(x for x in listed(node) if x not in labels and alias.get(x) not in labels)
-    kept = [s for s in node.states if s.label not in ("contains", "empty")]
-    return make_node(node.label, [*kept, make_state("contains", "", rest) if rest else make_state("empty")])
+@lru_cache(maxsize=1 << 14)
+def gained(unit: FunctionalUnit) -> frozenset[tuple[str, str]]:
+    """(holder label, content label) for every label a role's output node lists and its input node does not:
+    what the unit puts into something (names read through the unit's aliases)."""
+    read = _reading(unit)
+    return frozenset((r.label, x) for k, r in enumerate(read.roles) if r.after is not None
+                     for x in listed(read.after[k]) - listed(read.before[k]))
+
+
+@lru_cache(maxsize=1 << 14)
+def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
+    """Rule 5: for every container role whose output node drops a label no role of the unit has, where what is
+    of that label in it goes. O(r^2)."""
+    read = _reading(unit)
+    roles, before, after = read.roles, read.before, read.after
+    labels = {r.label for r in roles}
+    out = []
+    for h, r in enumerate(roles):
+        if r.after is None or r.before is None or not describes_contents(after[h]):
+            continue
+        for lab in sorted(listed(before[h]) - listed(after[h]) - labels):
+            into = [j for j, x in enumerate(roles) if j != h and x.after is not None
+                    and lab in listed(after[j]) - listed(before[j])]
+            out.append(Flow(lab, h, into[0] if into and roles[into[0]].before is not None else None))
+    return tuple(out)
 
 
 def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
-    """Rule 5: names an output node newly lists that no role of the unit has: `bowl lists olive oil, read as
-    green olive oil` when rule 0 reads it as a role (`unit_aliases`), else `..., which no object of the unit is`."""
+    """Names an output node newly lists that no role of the unit has: `bowl lists olive oil, read as green
+    olive oil` when rule 0 reads it as a role (`unit_aliases`), else `..., which no object of the unit is`."""
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
     alias = dict(unit_aliases(unit))
@@ -216,23 +302,29 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     unit is, nor is read as (rule 0). No plan can satisfy both words, so the task reports them and its replay
     does not check that pair. Names read through the unit's aliases; O(r^2) for r roles.
     """
-    roles = unit_roles(unit)
-    alias = dict(unit_aliases(unit))
+    read = _reading(unit)
+    roles = read.roles
     labels = {r.label for r in roles}
     out = []
-    outs = [(r.label, _aliased(r.after, alias)) for r in roles if r.after is not None]
+    outs = [(r.label, read.after[k]) for k, r in enumerate(roles) if r.after is not None]
+    sides = [(r.label, read.after[k]) for k, r in enumerate(roles)]  # every role after the unit
     for label, node in outs:
         place = place_of(node)
         if place is None:
             continue
-        holders = [n for lab, n in outs if lab == place[1] and describes_contents(n)]
+        holders = [n for lab, n in sides if lab == place[1] and describes_contents(n)]
         if holders and not any(label in listed(n) for n in holders):
-            out.append((place[1], label, f"{label} is {place[0]} [{place[1]}], whose output node does not list it"))
-    for r in roles:
+            out.append((place[1], label, f"{label} is {place[0]} [{place[1]}], whose node after the unit does not "
+                        "list it"))
+    for k, r in enumerate(roles):
         if r.after is None:
             continue
-        new = listed(_aliased(r.after, alias)) - listed(_aliased(r.before, alias))
+        new = listed(read.after[k]) - listed(read.before[k])
         out += [(r.label, x, f"{r.label} lists {x}, which no object of the unit is") for x in sorted(new - labels)]
+        for label, node in outs:
+            place = place_of(node)
+            if label in new and place is not None and place[1] != r.label:
+                out.append((r.label, label, f"{r.label} lists {label}, which the unit puts {place[0]} [{place[1]}]"))
     return tuple(dict.fromkeys(out))
 
 

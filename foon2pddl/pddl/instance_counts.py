@@ -35,12 +35,15 @@ semantics there is no plan to unfold, and every place gets one instance.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from ..analysis.reachability import reachable
-from ..model.foon import Foon, ObjectNode
-from .pairing import RoleKind, unit_roles
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from .pairing import Role, RoleKind, unit_roles
+
+#: A unit's object roles, for counting what passes through each node.
+RolesOf = Callable[[FunctionalUnit], tuple[Role, ...]]
 
 
 @dataclass(frozen=True)
@@ -100,9 +103,10 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode],
     return tuple(u for u in reach.fired if u in chosen), target
 
 
-def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode],
-           target: ObjectNode) -> tuple[Counter[ObjectNode], Counter[str], dict[int, int]]:
-    """(demand per kitchen node, not-yet-made instances per label, firings per unit) of `plan` (module doc)."""
+def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], target: ObjectNode,
+           roles_of: RolesOf = unit_roles) -> tuple[Counter[ObjectNode], Counter[str], dict[int, int]]:
+    """(demand per kitchen node, not-yet-made instances per label, firings per unit) of `plan` (module doc);
+    `roles_of` gives a unit's object roles (an encoding with other rules of what becomes of objects)."""
     consumed: Counter[ObjectNode] = Counter()
     read: set[ObjectNode] = {target}
     created: Counter[str] = Counter()
@@ -112,7 +116,7 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode],
         return consumed[node] + (node in read)
 
     for u in reversed(plan):
-        roles = unit_roles(foon.units[u])
+        roles = roles_of(foon.units[u])
         makes = [r.after for r in roles if r.changes and r.after not in kitchen]
         times = max((demand(n) for n in makes), default=0)
         if times == 0:
@@ -133,12 +137,12 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode],
 
 
 def start_places(foon: Foon, units: Iterable[int], kitchen: frozenset[ObjectNode],
-                 candidates: Iterable[ObjectNode]) -> tuple[set[ObjectNode], set[str]]:
+                 candidates: Iterable[ObjectNode], roles_of: RolesOf = unit_roles) -> tuple[set[ObjectNode], set[str]]:
     """Kitchen nodes the units (or the goal) use, and labels the units create: where instances can start."""
     nodes: set[ObjectNode] = {c for c in candidates if c in kitchen}
     labels: set[str] = set()
     for u in units:
-        for r in unit_roles(foon.units[u]):
+        for r in roles_of(foon.units[u]):
             if r.before is None:
                 labels.add(r.label)
             elif r.before in kitchen:
@@ -148,22 +152,24 @@ def start_places(foon: Foon, units: Iterable[int], kitchen: frozenset[ObjectNode
 
 def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNode],
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
-                  overrides: Mapping[str, int] | None = None, extra: int = 0) -> InstanceCounts:
+                  overrides: Mapping[str, int] | None = None, extra: int = 0,
+                  roles_of: RolesOf = unit_roles) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
-    `extra`: instances added to every place (for measuring the cost of too many).
+    `extra`: instances added to every place (for measuring the cost of too many); `roles_of`: a unit's
+    object roles (default `pairing.unit_roles`, the `instances` encoding's).
     """
     stated = stated or {}
     overrides = overrides or {}
-    nodes, labels = start_places(foon, units, kitchen, candidates)
+    nodes, labels = start_places(foon, units, kitchen, candidates, roles_of)
     found = delete_free_plan(foon, kitchen, candidates)
     if found is None:
         at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
-        at_kitchen, created, firings = unfold(foon, found[0], kitchen, found[1])
+        at_kitchen, created, firings = unfold(foon, found[0], kitchen, found[1], roles_of)
         nodes |= set(at_kitchen)
         labels |= set(created)
 

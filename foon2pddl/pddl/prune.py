@@ -147,7 +147,7 @@ def prune_task(task: PlanningTask) -> PlanningTask:
     kept = tuple(a for i, a in enumerate(actions) if i in keep)
     init = tuple(a for a in task.init if a in needed)
     used_atoms = [*init, *task.goal, *(x for a in kept for x in (*a.pre, *a.add, *a.delete)),
-                  *(x for a in kept for _, _, x in a.release)]
+                  *(x for a in kept for c in a.conditional for x in c.atoms())]
     used_preds = {a.predicate for a in used_atoms}
     used_args = {arg for a in used_atoms for arg in a.args}
     return replace(

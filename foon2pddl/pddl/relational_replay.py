@@ -2,25 +2,19 @@
 
 `relational_trace` applies each plan step to the task's facts (ground
 preconditions are not checked here: `planners.decode.simulate_plan` does that)
-and records, per unit step, the object bound to each role (parameters first;
-read-only objects checked by `(occupied s)` take the first object, by name, in
-the role's node), the late-bound holders (the remaining parameters, and the
-holders objects were released from by a quantified delete), and the
-new node, holder and consumed flag of every object the step changes.
-Consumption is read from FOON's lists: after the step, an object in a container
-whose new node describes its contents (`contains`, `empty`) but no longer lists
-the object's label, that the step did not change, and that the container listed
-before or the step reads, became part of the mixture (it is bound to the step
-and marked consumed), and so did everything in or on a consumed object. An object with two
-holders is a PlanDecodeError (the encoding promises at most one). Two more
-FOON completions happen here, where the plan says which objects: a late-bound
-source holder no longer lists what left it (its PDDL state is unchanged, so a
-later step that needs its old node shows as a state mismatch), and an object
-the unit gives no output node, that names a place (or was moved there by an
-implied move) and sits in the holder where the step makes a new object, became
-part of it (`garlic (in [bowl])` and `ground beef (in [bowl])` where the mix
-makes `meat mix (in [bowl])`; `rib` picked onto the tray where `barbecued ribs`
-appear).
+and reads the trace off the facts alone: an object's node is the FOON node of its
+`(is ?x ?s)` fact (`task.nodes`; `not-yet-made`: not made, `consumed`: consumed),
+its holder the object of its `(in ?h ?x)` or `(on ?h ?x)` fact. Nothing the
+encoding decides is redone here, so the trace is exactly what the PDDL says, and
+the independent replay (`planners.physical_replay`) judges the encoding itself.
+Per unit step, each role is bound to the parameter the action gives it, or (a
+role checked by `(occupied s)`) to the object in the role's node that holds, or
+is held by, a bound object where the unit says so, else the first such object by
+name; the binding says what the unit requires of it (`Action.roles`: its node
+before, and the node it must end in). Every other object the step changes or
+names (a portion poured off, a holder the unit does not name, contents that
+followed their container) is bound with its node before and after the step. An
+object with two holders is a PlanDecodeError (the encoding promises at most one).
 O(steps x (facts + objects)).
 """
 
@@ -30,16 +24,17 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
-from ..model.places import describes_contents, listed, place_of
-from .holders import list_gaps, relational_roles, task_aliases, without
+from .holders import relational_roles, task_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
-from .task import Atom, PlanningTask, released
+from .task import Atom, PlanningTask, apply_action, type_closure
 from .trace_view import TraceView, changed, show_node
 
 __all__ = ["RELATIONAL_VIEW", "relational_json", "relational_text", "relational_trace", "step_words"]
 
 _RELATIONS = {r.value for r in Relation}
+#: The state constants that are no FOON node.
+_NOT_MADE, _CONSUMED = "not-yet-made", "consumed"
 
 
 def _holders(facts: set[Atom]) -> dict[str, tuple[str, Relation]]:
@@ -53,19 +48,29 @@ def _holders(facts: set[Atom]) -> dict[str, tuple[str, Relation]]:
     return out
 
 
+def _states(task: PlanningTask, facts: set[Atom], last: dict[str, ObjectNode | None]) -> dict[str, ObjectState]:
+    """Every object's state in `facts`; a consumed object keeps the node it had (`last`)."""
+    nodes = dict(task.nodes)
+    holder = _holders(facts)
+    node: dict[str, ObjectNode | None] = {x.name: None for x in task.instances}
+    consumed: set[str] = set()
+    for a in facts:
+        if a.predicate == "is" and len(a.args) == 2 and a.args[0] in node:
+            if a.args[1] == _CONSUMED:
+                consumed.add(a.args[0])
+            elif a.args[1] != _NOT_MADE:
+                node[a.args[0]] = nodes[a.args[1]]
+    return {x: ObjectState(x, last.get(x) if x in consumed else node[x], *holder.get(x, (None, None)),
+                           x in consumed) for x in node}
+
+
 def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
     """The plan as a trace with holders (see the module doc)."""
     facts = set(task.init)
+    types = type_closure(task)
     label = {x.name: x.label for x in task.instances}
-    node: dict[str, ObjectNode | None] = {x.name: x.start for x in task.instances}
-    consumed: set[str] = set()
-    holder = _holders(facts)
+    now = _states(task, facts, {})
     units = [task.units[a.unit] for a in task.actions if a.unit is not None]
-    aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
-    alias = dict(aliases)
-
-    def lists(node: ObjectNode | None) -> frozenset[str]:  # a list read through the task's aliases
-        return frozenset(alias.get(x, x) for x in listed(node))
     out = []
     for n, step in enumerate(steps, start=1):
         name, *args = step.split()
@@ -74,89 +79,95 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
             raise PlanDecodeError(f"plan step {n} ({step}) names no action of the task")
         if len(args) != len(action.params):
             raise PlanDecodeError(f"plan step {n} ({step}): {len(action.params)} arguments expected, got {len(args)}")
-        unknown = [a for a in args if a not in node]
+        unknown = [a for a in args if a not in label]
         if unknown:
             raise PlanDecodeError(f"plan step {n} ({step}): {unknown[0]} is not an object of the task")
         bind = {v: a for (v, _), a in zip(action.params, args, strict=True)}
-        facts -= {Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in action.delete}
-        facts -= released(facts, action.release, bind)
-        facts |= {Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in action.add}
+        facts = apply_action(facts, action, bind, types)
+        was, now = now, _states(task, facts, {x: s.node for x, s in now.items()})
         if action.unit is None:
-            holder = _holders(facts)
             continue
         unit = task.units[action.unit]
-        rels = relational_roles(unit)
-        given = iter(args)
-        names: list[str | None] = [next(given) if bound else None for _, bound in action.roles]
-        for j, r in enumerate(rels):  # a read-only source holder is the one the moving object is in
-            src = r.source.role if r.source is not None and r.moves else None
-            if src is not None and names[src] is None and names[j] in holder:
-                names[src] = holder[names[j]][0]
-        for k, (role, _) in enumerate(action.roles):
-            if names[k] is None:
-                names[k] = next((x for x in sorted(node) if label[x] == role.label and node[x] == role.before
-                                 and x not in consumed and x not in names), None)
-                if names[k] is None:
-                    raise PlanDecodeError(f"plan step {n} ({step}): no {role.label} is {show_node(role.before)}")
-        params = [h for h in given if h not in names]
-        was = {x: (node[x], holder.get(x), x in consumed) for x in node}
-        bindings = [Binding(x, r.role.before, r.after) for r, x in zip(rels, names, strict=True)]
-        for r, x in zip(rels, names, strict=True):
-            if r.changes:
-                node[x] = r.after
-        old_holder, holder = holder, _holders(facts)
-        gone: dict[str, set[str]] = {}
-        for x in names:
-            if x in old_holder and holder.get(x) != old_holder[x]:
-                gone.setdefault(old_holder[x][0], set()).add(label[x])
-        for h in params:
-            gone.setdefault(h, set())
-        for h, labels in sorted(gone.items()):  # a read-only or late-bound source no longer holds what left it
-            empty = without(node[h], labels, alias) if node[h] is not None and lists(node[h]) & labels else None
-            if h in names:
-                k = names.index(h)
-                if empty is not None and bindings[k].after is None:
-                    bindings[k] = Binding(h, bindings[k].before, empty)
-                    node[h] = empty
+        names = _role_objects(unit, action, args, was, now, label, step, n)
+        bindings = [Binding(x, role.before, role.after) for (role, _), x in zip(action.roles, names, strict=True)]
+        named = set(names)
+        moved = sorted(x for x in now if now[x] != was[x])
+        ends = [h for x in moved for h in (was[x].holder, now[x].holder) if h is not None and was[x].holder != now[x].holder]
+        for x in (*args, *moved, *sorted(set(ends))):
+            if x not in named:
+                named.add(x)
+                after = now[x].node if now[x].node != was[x].node and not now[x].consumed else None
+                bindings.append(Binding(x, was[x].node if was[x].exists else None, after))
+        changes = tuple(now[x] for x in sorted(now) if now[x] != was[x])
+        out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit)))
+    start = _states(task, set(task.init), {})
+    aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
+    return PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances),
+                         tuple(start[x.name] for x in task.instances), tuple(out), aliases, task.gaps)
+
+
+def _role_objects(unit, action, args, was, now, label, step, n) -> list[str]:
+    """The object bound to each role: its parameter, or for a role checked by `(occupied s)` an object in its
+    node, chosen so that holders agree with the unit: the holder of a named object the unit places in that role,
+    or an object held by a named role the unit places it in (else the first such by name). Roles linked to a
+    named one are chosen first, then the rest in role order. O(roles^2 x objects)."""
+    given = iter(args)
+    names: list[str | None] = [next(given) if bound else None for _, bound in action.roles]
+    rels = relational_roles(unit)
+    roles = [role for role, _ in action.roles]
+
+    def fits(k: int) -> list[str]:
+        return [x for x in sorted(was) if label[x] == roles[k].label and was[x].node == roles[k].before
+                and was[x].exists and x not in names]
+
+    def linked(k: int, pool: list[str]) -> list[str]:
+        out = []
+        for j, r in enumerate(rels):
+            if names[j] is None or j == k:
                 continue
-            bindings.append(Binding(h, node[h], empty))
-            node[h] = empty or node[h]
-        bound = {b.object for b in bindings}
-        changed_now = {x for r, x in zip(rels, names, strict=True) if r.changes}
-        read = {x for r, x in zip(rels, names, strict=True) if r.after is None}
-        made_in = {holder[x][0] for r, x in zip(rels, names, strict=True) if r.role.before is None and x in holder}
-        for r, x in zip(rels, names, strict=True):  # in where a product is made, with no output node: absorbed
-            if (r.role.after is None and (r.changes or place_of(r.role.before) is not None)
-                    and holder.get(x, ("",))[0] in made_in):
-                consumed.add(x)
-        for c in sorted(bound):
-            if c in consumed or not describes_contents(node[c]):
-                continue
-            keep, had = lists(node[c]), lists(was[c][0])
-            for y in sorted(y for y, (h, _) in holder.items() if h == c):
-                if (y not in consumed and y not in changed_now and node[y] is not None and label[y] not in keep
-                        and (label[y] in had or y in read)):
-                    consumed.add(y)
-                    if y not in bound:
-                        bindings.append(Binding(y, node[y], None))
-        inner = True
-        while inner:  # what is in a consumed object went with it
-            inner = [y for y, (h, _) in sorted(holder.items()) if h in consumed and y not in consumed
-                     and node[y] is not None]
-            consumed.update(inner)
-            bindings += [Binding(y, node[y], None) for y in inner if y not in {b.object for b in bindings}]
-        changes = []
-        for x in sorted(node):
-            now = (node[x], holder.get(x), x in consumed)
-            if now != was[x]:
-                h, rel = holder.get(x, (None, None))
-                changes.append(ObjectState(x, node[x], h, rel, x in consumed))
-        out.append(TraceStep(len(out), unit, tuple(bindings), tuple(changes), source_of(unit)))
-    start = _holders(set(task.init))
-    initial = tuple(ObjectState(x.name, x.start, *start.get(x.name, (None, None))) for x in task.instances)
-    gaps = tuple(sorted({(c, x) for u in units for c, x, _ in list_gaps(u)}))
-    return PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances), initial, tuple(out),
-                         aliases, gaps)
+            for place, states in ((r.source, was), (r.target, now)):
+                if place is not None and place.role == k and states[names[j]].holder in pool:
+                    out.append(states[names[j]].holder)
+            place = rels[k].source
+            if place is not None and place.role == j:
+                out += [x for x in pool if was[x].holder == names[j]]
+        return out
+
+    while None in names:
+        todo = [k for k, x in enumerate(names) if x is None]
+        picked = False
+        for k in todo:
+            found = linked(k, fits(k))
+            if found:
+                names[k], picked = found[0], True
+        if picked:
+            continue
+        k = todo[0]
+        pool = fits(k)
+        # an unnamed holder and what it holds: a pair that agrees, if the state has one
+        inner = [j for j in todo if j != k and rels[j].source is not None and rels[j].source.role == k]
+        pairs = [h for h in pool if any(was[x].holder == h for j in inner for x in fits(j))]
+        pick = (pairs or pool or [None])[0]
+        if pick is None:
+            raise PlanDecodeError(f"plan step {n} ({step}): no {roles[k].label} is {show_node(roles[k].before)}")
+        names[k] = pick
+    return names
+
+
+def _portions(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState],
+              made: list[str]) -> list[tuple[str, str]]:
+    """(portion, source) for each object a step makes of a label that a bound, surviving object already has:
+    a part poured or scooped out of what stays behind (a carton keeps its cream)."""
+    def label(s: ObjectState) -> str | None:
+        return s.node.label if s.node is not None else None
+
+    sources = [b.object for b in step.bindings if b.before is not None and not after[b.object].consumed]
+    out = []
+    for m in made:
+        src = next((x for x in sources if label(before[x]) == label(after[m]) and before[x].holder), None)
+        if src is not None:
+            out.append((m, src))
+    return out
 
 
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
@@ -169,6 +180,11 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
     moves, holders = [], set()
+    for m, src in _portions(step, before, after, made):
+        moves.append(f"{m} (a portion of {src})" + (f" from {before[src].holder}" if before[src].holder else "")
+                     + (f" into {after[m].holder}" if after[m].holder else ""))
+        holders.update({src, m} | {h for h in (before[src].holder, after[m].holder) if h})
+        made.remove(m)
     for b in step.bindings:
         x, was, now = b.object, before[b.object], after[b.object]
         if b.before is not None and was.holder != now.holder and not now.consumed:

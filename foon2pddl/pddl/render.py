@@ -16,7 +16,7 @@ from functools import lru_cache
 import jinja2
 
 from .names import comment, is_valid_name
-from .task import Atom, PlanningTask
+from .task import Atom, Conditional, PlanningTask
 
 
 def _atom(atom: Atom) -> str:
@@ -27,6 +27,16 @@ def _params(params: tuple[tuple[str, str], ...], typed: bool) -> str:
     if typed:
         return "".join(f" {var} - {typ}" for var, typ in params)
     return "".join(f" {var}" for var, _ in params)
+
+
+def _conditional(c: Conditional, typed: bool) -> str:
+    """`(when (c) (e))`, `(and ...)` around several conditions or effects; `(forall (?v - t) ...)` around it."""
+    def conj(parts: list[str]) -> str:
+        return parts[0] if len(parts) == 1 else f"(and {' '.join(parts)})"
+
+    text = (f"(when {conj([_atom(a) for a in c.when])} "
+            f"{conj([_atom(a) for a in c.add] + [f'(not {_atom(a)})' for a in c.delete])})")
+    return text if c.var is None else f"(forall ({_params(((c.var, c.type),), typed).strip()}) {text})"
 
 
 @lru_cache(maxsize=1)
@@ -41,6 +51,7 @@ def _environment() -> jinja2.Environment:
     )
     env.filters["atom"] = _atom
     env.filters["params"] = _params
+    env.filters["conditional"] = _conditional
     env.filters["comment"] = comment
     return env
 
@@ -56,8 +67,8 @@ def check_names(task: PlanningTask) -> None:
     for a in task.actions:
         names.append(a.name)
         names += [n.removeprefix("?") for pair in a.params for n in pair]
-        released = tuple(atom for _, _, atom in a.release)
-        names += [n.removeprefix("?") for var, typ, _ in a.release for n in (var, typ)]
+        released = tuple(atom for c in a.conditional for atom in c.atoms())
+        names += [n.removeprefix("?") for c in a.conditional if c.var for n in (c.var, c.type)]
         names += [x for atom in (*a.pre, *a.add, *a.delete, *released) for x in (atom.predicate, *atom.args)]
     names += [x for atom in (*task.init, *task.goal) for x in (atom.predicate, *atom.args)]
     for name in set(names):

@@ -34,6 +34,25 @@ class Predicate:
 
 
 @dataclass(frozen=True)
+class Conditional:
+    """A conditional effect `(when (and when...) (and add... (not delete)...))`, quantified over `var` of `type`
+    when `var` is set: `(forall (?v - type) (when ...))`. Conditions are read in the state before the action."""
+
+    when: tuple[Atom, ...]
+    add: tuple[Atom, ...] = ()
+    delete: tuple[Atom, ...] = ()
+    var: str | None = None
+    type: str | None = None
+
+    def __post_init__(self) -> None:
+        if (self.var is None) != (self.type is None):
+            raise ValueError("a quantified conditional effect needs both a variable and its type")
+
+    def atoms(self) -> tuple[Atom, ...]:
+        return (*self.when, *self.add, *self.delete)
+
+
+@dataclass(frozen=True)
 class Action:
     """A (possibly parameterised) action; `unit` indexes `PlanningTask.units` (None for auxiliary actions)."""
 
@@ -47,9 +66,9 @@ class Action:
     comment: tuple[str, ...] = ()
     #: encodings over physical objects: per object of the unit, its `pairing.Role` and whether a parameter binds it
     roles: tuple[tuple[Role, bool], ...] = ()
-    #: quantified deletes `(forall (?v - type) (when atom (not atom)))`, as (?v, type, atom): an object leaves
-    #: whatever holds it without a parameter per possible holder (`relational`)
-    release: tuple[tuple[str, str, Atom], ...] = ()
+    #: conditional effects, each possibly quantified (`Conditional`): an object leaves whatever holds it
+    #: without a parameter per possible holder, the contents of a container go with it (`relational`)
+    conditional: tuple[Conditional, ...] = ()
     #: an auxiliary goal action (`reach-goal-<i>`): the goal candidate whose atoms are its precondition
     candidate: ObjectNode | None = None
 
@@ -86,6 +105,11 @@ class PlanningTask:
     labels: dict[str, str] = field(default_factory=dict, compare=False)  # PDDL name -> original label
     comments: tuple[str, ...] = ()  # header lines for both files
     instances: tuple[Instance, ...] = ()  # encodings over physical objects: every object and where it starts
+    #: encodings over physical objects: state constant -> the FOON node it stands for (`(is ?x <constant>)`)
+    nodes: tuple[tuple[str, ObjectNode], ...] = ()
+    #: encodings that model holders: (container label, content label) pairs FOON's own words contradict each
+    #: other about in this task (a product placed in a container whose node does not list it): not checked
+    gaps: tuple[tuple[str, str], ...] = ()
     metric: bool = False  # minimize total-cost although no action here has a cost (the domain comes from a file)
 
     @property
@@ -99,7 +123,7 @@ class PlanningTask:
             return True
         typed = [t for _, t in self.objects + self.constants]
         typed += [t for p in self.predicates for _, t in p.params]
-        typed += [t for a in self.actions for _, t in (*a.params, *((v, t) for v, t, _ in a.release))]
+        typed += [t for a in self.actions for _, t in (*a.params, *((c.var, c.type) for c in a.conditional if c.var))]
         return any(t != "object" for t in typed)
 
     @property
@@ -108,7 +132,7 @@ class PlanningTask:
         req = [":strips"]
         if self.uses_types:
             req.append(":typing")
-        if any(a.release for a in self.actions):
+        if any(a.conditional for a in self.actions):
             req.append(":conditional-effects")
         if self.uses_costs:
             req.append(":action-costs")
@@ -161,17 +185,16 @@ def candidate_alternatives(task: PlanningTask, nodes: tuple[ObjectNode, ...]
     return {node: tuple(found[node]) for node in nodes}
 
 
-def released(state: set[Atom], release: tuple[tuple[str, str, Atom], ...], bind: dict[str, str]) -> set[Atom]:
-    """The atoms of `state` an action's quantified deletes remove (`Action.release`), under the binding `bind`.
-
-    Types are not checked: encodings quantify over the root type (O(|release| x |state|)).
-    """
-    out = set()
-    for var, _, atom in release:
-        for fact in state:
-            if fact.predicate == atom.predicate and len(fact.args) == len(atom.args) and all(
-                    a == var or bind.get(a, a) == f for a, f in zip(atom.args, fact.args, strict=True)):
-                out.add(fact)
+def type_closure(task: PlanningTask) -> dict[str, frozenset[str]]:
+    """Object or constant name -> every type it has (its declared type and the ancestors of it)."""
+    parent = dict(task.types)
+    out = {}
+    for name, t in (*task.objects, *task.constants):
+        chain, at = {"object"}, t
+        while at is not None and at not in chain:
+            chain.add(at)
+            at = parent.get(at)
+        out[name] = frozenset(chain)
     return out
 
 
@@ -230,3 +253,23 @@ def settle_goal(task: PlanningTask) -> PlanningTask:
                 held = set(task.init)
                 return replace(task, init=(*task.init, *(g for g in task.goal if g not in held)))
     return task
+
+
+def apply_action(state: set[Atom], action: Action, bind: dict[str, str],
+                 types: dict[str, frozenset[str]]) -> set[Atom]:
+    """The state after `action` under `bind` (its preconditions are not checked): conditional effects read the
+    state before the action, then every delete, then every add (PDDL: an add wins over a delete of one atom).
+
+    `types` (`type_closure`) says which objects a quantified effect ranges over. O(|effects| x |objects|).
+    """
+    def ground(atoms: tuple[Atom, ...], b: dict[str, str]) -> list[Atom]:
+        return [Atom(a.predicate, tuple(b.get(x, x) for x in a.args)) for a in atoms]
+
+    add, delete = ground(action.add, bind), ground(action.delete, bind)
+    for c in action.conditional:
+        scopes = [bind] if c.var is None else [{**bind, c.var: o} for o, ts in types.items() if c.type in ts]
+        for b in scopes:
+            if all(a in state for a in ground(c.when, b)):
+                add += ground(c.add, b)
+                delete += ground(c.delete, b)
+    return (state - set(delete)) | set(add)

@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from .names import NameTable
-from .task import Atom, PlanningTask, Predicate
+from .task import Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["untyped"]
 
@@ -41,6 +41,7 @@ def untyped(task: PlanningTask) -> PlanningTask:
                       | {n for pair in (*task.types, *task.objects, *task.constants) for n in pair})
     used = {t for _, t in (*task.objects, *task.constants)}
     used |= {t for a in task.actions for _, t in a.params}
+    used |= {c.type for a in task.actions for c in a.conditional if c.var is not None}
     names: dict[str, str] = {}
     for typ in sorted({a for t in used for a in _ancestors(parent, t)}):
         names[typ] = table.name(f"type {typ}", key=typ)
@@ -48,8 +49,13 @@ def untyped(task: PlanningTask) -> PlanningTask:
     def guard(params: tuple[tuple[str, str], ...]) -> tuple[Atom, ...]:
         return tuple(Atom(names[t], (v,)) for v, t in params if t != ROOT)
 
+    def unguarded(c: Conditional) -> Conditional:
+        if c.var is None or c.type == ROOT:
+            return c
+        return replace(c, when=(Atom(names[c.type], (c.var,)), *c.when), type=ROOT)
+
     actions = tuple(replace(a, pre=(*guard(a.params), *a.pre), params=tuple((v, ROOT) for v, _ in a.params),
-                            release=tuple((v, ROOT, x) for v, _, x in a.release)) for a in task.actions)
+                            conditional=tuple(map(unguarded, a.conditional))) for a in task.actions)
     facts = {Atom(names[a], (o,)) for o, t in (*task.objects, *task.constants) for a in _ancestors(parent, t)}
     predicates = (*(replace(p, params=tuple((v, ROOT) for v, _ in p.params)) for p in task.predicates),
                   *(Predicate(n, (("?x", ROOT),), f"?x is of type {t}") for t, n in names.items()))

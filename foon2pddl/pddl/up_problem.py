@@ -80,7 +80,7 @@ def build_up(task: PlanningTask) -> UpTask:
     quiet_environment()
     from unified_planning.model import Fluent, InstantaneousAction, Object, Variable
     from unified_planning.model.metrics import MinimizeActionCosts
-    from unified_planning.shortcuts import BoolType, Int, UserType
+    from unified_planning.shortcuts import And, BoolType, Int, UserType
 
     problem = _problem_class()(task.problem)
     used: set[str] = set()
@@ -129,11 +129,20 @@ def build_up(task: PlanningTask) -> UpTask:
                 ua.add_effect(expr(atom), False)
         for atom in action.add:
             ua.add_effect(expr(atom), True)
-        for var, t, atom in action.release:
-            v = Variable(_param(var), up_type(t))
-            scope = {**params, var: v}
-            cond = fluents[atom.predicate](*(scope[a] if a.startswith("?") else objects[a] for a in atom.args))
-            ua.add_effect(cond, False, cond, forall=(v,))
+        for c in action.conditional:
+            scope, bound = dict(params), ()
+            if c.var is not None:
+                scope[c.var] = Variable(_param(c.var), up_type(c.type))
+                bound = (scope[c.var],)
+
+            def fact(atom: Atom, scope=scope) -> Any:
+                return fluents[atom.predicate](*(scope[a] if a.startswith("?") else objects[a] for a in atom.args))
+            cond = And(*map(fact, c.when)) if len(c.when) > 1 else fact(c.when[0])
+            for atom in c.delete:
+                if atom not in c.add:
+                    ua.add_effect(fact(atom), False, cond, forall=bound)
+            for atom in c.add:
+                ua.add_effect(fact(atom), True, cond, forall=bound)
         problem.add_action(ua)
         if action.cost is not None:
             costs[ua] = Int(action.cost)

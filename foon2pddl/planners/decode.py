@@ -33,7 +33,7 @@ from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation, justify, validate
 from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
-from ..pddl.task import Atom, PlanningTask, released
+from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
 from .result import step_action
 from .trace_check import check_states
 
@@ -98,7 +98,7 @@ def plan_units(task: PlanningTask | Compiled, steps: Sequence[str]) -> tuple[Fun
 
 def delete_free(task: PlanningTask) -> bool:
     """No action deletes anything: applying a unit's action again changes nothing."""
-    return not any(a.delete or a.release for a in task.actions)
+    return not any(a.delete or a.conditional for a in task.actions)
 
 
 def first_occurrences(units: Sequence[FunctionalUnit]) -> tuple[FunctionalUnit, ...]:
@@ -237,7 +237,7 @@ def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitc
 
 def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:
     """Apply the plan to the task's initial state: (final state, or the state before the first failing step; problem)."""
-    state = set(task.init)
+    state, types = set(task.init), type_closure(task)
     for n, step in enumerate(steps, start=1):
         action = task.action_for(step_action(step))
         if action is None:
@@ -253,9 +253,7 @@ def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str |
         missing = [a for a in ground(action.pre) if a not in state]
         if missing:
             return state, f"plan step {n} ({step}): precondition false: " + ", ".join(map(_show, missing[:3]))
-        state.difference_update(ground(action.delete))
-        state.difference_update(released(state, action.release, bind))
-        state.update(ground(action.add))
+        state = apply_action(state, action, bind, types)
     return state, None
 
 

@@ -149,7 +149,7 @@ DELETE_FREE_OPTIONS = ("--invariant-generation-max-candidates", "0")
 
 def translate_options_for(task) -> tuple[str, ...]:
     """Translator options suited to a PlanningTask."""
-    return DELETE_FREE_OPTIONS if not any(a.delete or a.release for a in task.actions) else ()
+    return DELETE_FREE_OPTIONS if not any(a.delete or a.conditional for a in task.actions) else ()
 
 
 def search_options(optimal: bool = False) -> tuple[str, ...]:

@@ -1,9 +1,10 @@
 ; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
+; instances: 20 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 2, honey 2, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
+; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
 (define (problem make_fruit_salad)
-  (:domain foon-relational-7911b43b)
+  (:domain foon-relational-d518426a)
   (:objects
     banana_1 - banana
     bowl_1 - bowl
@@ -12,7 +13,9 @@
     cutting_board_3 - cutting_board
     fruit_salad_1 - fruit_salad
     heavy_cream_1 - heavy_cream
+    heavy_cream_2 - heavy_cream
     honey_1 - honey
+    honey_2 - honey
     juicer_1 - juicer
     knife_1 - knife
     lime_1 - lime
@@ -37,7 +40,9 @@
     (is cutting_board_3 cutting_board_empty)
     (is fruit_salad_1 not-yet-made)
     (is heavy_cream_1 heavy_cream_in_carton)
+    (is heavy_cream_2 not-yet-made)
     (is honey_1 honey_in_jar)
+    (is honey_2 not-yet-made)
     (is jar_1 jar_contains_honey)
     (is juicer_1 juicer_empty)
     (is knife_1 knife_plain)
@@ -49,6 +54,10 @@
     (is sugar_1 sugar_granulated)
     (is whipped_cream_1 not-yet-made)
     (is whisk_1 whisk_plain)
+    (occupied carton_contains_heavy_cream)
+    (occupied heavy_cream_in_carton)
+    (occupied honey_in_jar)
+    (occupied jar_contains_honey)
     (occupied knife_plain)
     (occupied spoon_plain)
     (occupied whisk_plain)

@@ -1,9 +1,9 @@
 ; foon2pddl, encoding relational, level 3: 18 of 101 units after relevance pruning
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
+; instances: 17 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 2, onion 1, oregano 1, red wine vinegar 2, salad tongs 1, tomato 1)
 (define (problem make_greek_salad)
-  (:domain foon-relational-12e73e08)
+  (:domain foon-relational-cd1efca2)
   (:objects
     black_olive_1 - black_olive
     bowl_1 - bowl
@@ -15,9 +15,11 @@
     greek_salad_1 - greek_salad
     knife_1 - knife
     olive_oil_1 - olive_oil
+    olive_oil_2 - olive_oil
     onion_1 - onion
     oregano_1 - oregano
     red_wine_vinegar_1 - red_wine_vinegar
+    red_wine_vinegar_2 - red_wine_vinegar
     salad_tongs_1 - salad_tongs
     tomato_1 - tomato
     bottle_1 - bottle
@@ -36,12 +38,17 @@
     (is greek_salad_1 not-yet-made)
     (is knife_1 knife_plain)
     (is olive_oil_1 olive_oil_in_bottle)
+    (is olive_oil_2 not-yet-made)
     (is onion_1 onion_whole)
     (is oregano_1 oregano_dried)
     (is red_wine_vinegar_1 red_wine_vinegar_in_bottle)
+    (is red_wine_vinegar_2 not-yet-made)
     (is salad_tongs_1 salad_tongs_plain)
     (is tomato_1 tomato_whole)
+    (occupied bottle_contains_olive_oil_red_wine_vinegar)
     (occupied knife_plain)
+    (occupied olive_oil_in_bottle)
+    (occupied red_wine_vinegar_in_bottle)
     (occupied salad_tongs_plain)
   )
   (:goal (and

@@ -1,9 +1,10 @@
 ; foon2pddl, encoding relational, level 3: 15 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
+; instances: 20 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
+; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
 (define (problem make_pancake)
-  (:domain foon-relational-70133908)
+  (:domain foon-relational-596dfbe7)
   (:objects
     baking_powder_1 - baking_powder
     butter_1 - butter
@@ -12,7 +13,9 @@
     frying_pan_1 - frying_pan
     ladle_1 - ladle
     maple_syrup_1 - maple_syrup
+    maple_syrup_2 - maple_syrup
     milk_1 - milk
+    milk_2 - milk
     mixing_bowl_1 - mixing_bowl
     pancake_1 - pancake
     pancake_batter_1 - pancake_batter
@@ -38,7 +41,9 @@
     (is frying_pan_1 frying_pan_empty)
     (is ladle_1 ladle_plain)
     (is maple_syrup_1 maple_syrup_in_bottle)
+    (is maple_syrup_2 not-yet-made)
     (is milk_1 milk_in_carton)
+    (is milk_2 not-yet-made)
     (is mixing_bowl_1 mixing_bowl_empty)
     (is pancake_1 not-yet-made)
     (is pancake_batter_1 not-yet-made)
@@ -49,7 +54,11 @@
     (is stove_2 stove_off)
     (is sugar_1 sugar_granulated)
     (is whisk_1 whisk_plain)
+    (occupied bottle_contains_maple_syrup)
+    (occupied carton_contains_milk)
     (occupied ladle_plain)
+    (occupied maple_syrup_in_bottle)
+    (occupied milk_in_carton)
     (occupied spatula_plain)
     (occupied whisk_plain)
   )

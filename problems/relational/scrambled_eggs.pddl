@@ -1,18 +1,21 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
+; instances: 18 (black pepper 1, bowl 2, butter 1, egg 2, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
 (define (problem make_scrambled_eggs)
-  (:domain foon-relational-edbf6050)
+  (:domain foon-relational-733ffa87)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl
+    bowl_2 - bowl
     butter_1 - butter
     egg_1 - egg
+    egg_2 - egg
     egg_mixture_1 - egg_mixture
     fork_1 - fork
     frying_pan_1 - frying_pan
     milk_1 - milk
+    milk_2 - milk
     plate_1 - plate
     salt_1 - salt
     scrambled_eggs_1 - scrambled_eggs
@@ -26,13 +29,16 @@
     (in carton_1 milk_1)
     (is black_pepper_1 black_pepper_ground)
     (is bowl_1 bowl_empty)
+    (is bowl_2 bowl_empty)
     (is butter_1 butter_solid)
     (is carton_1 carton_contains_milk)
     (is egg_1 egg_whole)
+    (is egg_2 egg_whole)
     (is egg_mixture_1 not-yet-made)
     (is fork_1 fork_plain)
     (is frying_pan_1 frying_pan_empty)
     (is milk_1 milk_in_carton)
+    (is milk_2 not-yet-made)
     (is plate_1 plate_empty)
     (is salt_1 salt_granulated)
     (is scrambled_eggs_1 not-yet-made)
@@ -40,7 +46,9 @@
     (is stove_1 stove_off)
     (is stove_2 stove_off)
     (is whisk_1 whisk_plain)
+    (occupied carton_contains_milk)
     (occupied fork_plain)
+    (occupied milk_in_carton)
     (occupied spatula_plain)
     (occupied whisk_plain)
   )

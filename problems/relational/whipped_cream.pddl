@@ -1,12 +1,13 @@
 ; foon2pddl, encoding relational, level 3: 4 of 101 units after relevance pruning
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
+; instances: 8 (bowl 1, heavy cream 2, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 (define (problem make_whipped_cream)
-  (:domain foon-relational-aa8008c1)
+  (:domain foon-relational-a6d76673)
   (:objects
     bowl_1 - bowl
     heavy_cream_1 - heavy_cream
+    heavy_cream_2 - heavy_cream
     mixing_bowl_1 - mixing_bowl
     spatula_1 - spatula
     sugar_1 - sugar
@@ -19,11 +20,14 @@
     (is bowl_1 bowl_empty)
     (is carton_1 carton_contains_heavy_cream)
     (is heavy_cream_1 heavy_cream_in_carton)
+    (is heavy_cream_2 not-yet-made)
     (is mixing_bowl_1 mixing_bowl_empty)
     (is spatula_1 spatula_plain)
     (is sugar_1 sugar_granulated)
     (is whipped_cream_1 not-yet-made)
     (is whisk_1 whisk_plain)
+    (occupied carton_contains_heavy_cream)
+    (occupied heavy_cream_in_carton)
     (occupied spatula_plain)
     (occupied whisk_plain)
   )

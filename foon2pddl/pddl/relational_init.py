@@ -1,0 +1,110 @@
+"""The relational task's objects and where each starts: the kitchen completed with the holders and contents
+its nodes name (module doc of `encode_relational`, "Init")."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from ..model.foon import ObjectNode, make_node, make_state
+from ..model.physical import Relation
+from ..model.places import describes_contents, listed, place_of
+from .names import NameTable
+from .task import Instance
+
+__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names"]
+
+
+def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
+    return frozenset(alias.get(x, x) for x in names)
+
+
+def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
+                silent: frozenset[str] = frozenset()) -> tuple[list[Instance], list[ObjectNode]]:
+    """Instances with their starting holders, and the holders to add (module doc, "Init").
+
+    An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
+    first not yet given one of that label), else, when no node of the task says what a C holds (`silent`:
+    a stove, a table), into the first C; with none, into a holder to add: one per label C, listing
+    everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
+    avocado the kitchen has on a board). Names are read through the task's `alias`es. O(n^2) for n objects.
+    """
+    alias = alias or {}
+    by_label: dict[str, list[Instance]] = {}
+    for x in instances:
+        if x.start is not None:
+            by_label.setdefault(x.label, []).append(x)
+    used: set[tuple[str, str]] = set()
+    wanted: dict[str, set[str]] = {}
+    picks: dict[str, tuple[str, Relation] | tuple[str, None]] = {}
+    for x in instances:
+        place = place_of(x.start)
+        if place is None:
+            continue
+        rel, label = place[0], alias.get(place[1], place[1])
+        pool = [h for h in by_label.get(label, ()) if h.name != x.name]
+        listing = [h for h in pool if x.label in read_names(listed(h.start), alias)]
+        free = [h for h in listing if (h.name, x.label) not in used]
+        quiet = [h for h in pool if not describes_contents(h.start)] if label in silent else []
+        pick = (free or listing or quiet or [None])[0]
+        if pick is None:
+            wanted.setdefault(label, set()).add(x.label)
+            picks[x.name] = (label, None)
+            continue
+        used.add((pick.name, x.label))
+        picks[x.name] = (pick.name, rel)
+    implied = [make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items())]
+    return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None
+            else x for x in instances], implied
+
+
+def implied_contents(instances: list[Instance], alias: dict[str, str], placed: frozenset[str],
+                     nodes: Iterable[ObjectNode]) -> tuple[ObjectNode, ...]:
+    """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
+    any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
+    `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
+    in it, counting the task's objects that start placed in a container of that label first. A new object
+    starts in a node of the task that places its label there (a kitchen one first), else `water (in [pot])`.
+    In container-name order; O(n^2)."""
+    out = []
+    fits: dict[tuple[str, str], list[ObjectNode]] = {}
+    for n in sorted(nodes):
+        place = place_of(n)
+        if place is not None:
+            fits.setdefault((n.label, alias.get(place[1], place[1])), []).append(n)
+    spare: dict[tuple[str, str], int] = {}
+    for x in instances:
+        place = place_of(x.start)
+        if place is not None:
+            key = (x.label, alias.get(place[1], place[1]))
+            spare[key] = spare.get(key, 0) + 1
+    starts = {x.start for x in instances}
+    for h in sorted(instances, key=lambda x: x.name):
+        if h.start is None or h.label not in placed or not describes_contents(h.start):
+            continue
+        for item in sorted(read_names(listed(h.start), alias)):
+            if spare.get((item, h.label), 0) > 0:
+                spare[(item, h.label)] -= 1
+                continue
+            known = sorted(fits.get((item, h.label), ()), key=lambda n: (n not in starts, n))
+            out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
+    return tuple(out)
+
+
+def named_objects(table: NameTable, instances: list[Instance], nodes: Iterable[ObjectNode]) -> list[Instance]:
+    """`instances` plus one object per node of `nodes`, numbered after its label's last one."""
+    out = list(instances)
+    for node in nodes:
+        k = 1 + sum(x.label == node.label for x in out)
+        out.append(Instance(table.name(f"{node.label} {k}", key=("instance", node.label, k)), node.label, node))
+    return out
+
+
+def counted_objects(table: NameTable, counts) -> list[Instance]:
+    """The counted objects, numbered per label: kitchen ones in their nodes, then the not yet made."""
+    starts: dict[str, list[ObjectNode | None]] = {}
+    for node, k in counts.at_node:
+        starts.setdefault(node.label, []).extend([node] * k)
+    for label, k in counts.unmade:
+        starts.setdefault(label, []).extend([None] * k)
+    return [Instance(table.name(f"{label} {k}", key=("instance", label, k)), label, node)
+            for label in sorted(starts) for k, node in enumerate(starts[label], start=1)]

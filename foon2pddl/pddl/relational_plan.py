@@ -1,0 +1,155 @@
+"""What a unit does to each object in a given task: `holders.relational_roles` plus the task-level decisions.
+
+`holders` reads one unit; two questions need the task too:
+
+* **A portion or the whole?** An object leaving a container that keeps what it
+  lists `SPLITS` (a new object of its label arrives at the target; the one in the
+  container stays). The task says which containers keep: a container FOON changes
+  keeps what its output node lists. One FOON leaves out of the outputs is emptied of
+  what leaves it (its node drops the label, `without`) when the task's units fill
+  containers of its label with that label (`holders.gained`: the measuring cup the
+  cream was poured into) and its node is no kitchen node; else it keeps its contents
+  (a carton, a bag, a packet: the kitchen stocks them). A holder the unit does not
+  name is emptied likewise when the units fill its label with the object's (whichever
+  holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
+  carton; the kitchen adds one listing what it holds when the task has none), and
+  the object simply moves when no node of the task says what a holder of its label
+  holds (a stove, a table). An ingredient consumed into a product made elsewhere,
+  out of a kitchen container FOON leaves listing it, was only partly used: it stays
+  (the bowl of sesame seeds sprinkled over the salad).
+* **Counts.** `count_roles` turns the decisions into the object roles that
+  `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
+  object leaves its node, an emptied container changes node.
+
+Pure; O(r^2) per unit for r roles.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.places import describes_contents, listed
+from .holders import Fate, Flow, RelRole, relational_roles, unit_aliases, unit_flows
+from .pairing import Role
+
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "consumed_node", "count_roles", "silent_labels", "plan_unit",
+           "without"]
+
+#: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
+CONSUMED_STATE = "consumed into a mixture"
+
+
+def consumed_node(label: str) -> ObjectNode:
+    """The node `instance_counts` sees a consumed object of `label` go to (nothing demands it)."""
+    return make_node(label, [make_state(CONSUMED_STATE)])
+
+
+def without(node: ObjectNode, labels: Iterable[str], alias: dict[str, str] | None = None) -> ObjectNode:
+    """A container after what left it: its `contains` list without `labels` (`empty` when nothing is left) and
+    no `with [x]` of them (a name the node uses for one of `labels` through `alias` leaves with it)."""
+    alias, labels = alias or {}, set(labels)
+
+    def gone(x: str) -> bool:
+        return x in labels or alias.get(x) in labels
+
+    listing = any(s.label in ("contains", "empty") for s in node.states)
+    rest = sorted(x for x in listed(node) if not gone(x) and any(
+        s.label == "contains" and x in (*s.ingredients, s.related) for s in node.states))
+    kept = [s for s in node.states if s.label not in ("contains", "empty") and not (s.label == "with" and gone(s.related))]
+    if listing:
+        kept.append(make_state("contains", "", rest) if rest else make_state("empty"))
+    return make_node(node.label, kept)
+
+
+@dataclass(frozen=True)
+class Slot:
+    """One role in a task: its reading (`rel`), its fate, the node its own object ends in (None: unchanged),
+    and for `SPLITS` the new portion's node."""
+
+    rel: RelRole
+    fate: Fate
+    after: ObjectNode | None
+    portion: ObjectNode | None = None
+    #: `MOVES` out of a holder the unit does not name, which the task's units fill with it: whichever holds
+    #: it no longer lists it
+    late_empties: bool = False
+
+
+@dataclass(frozen=True)
+class UnitPlan:
+    """A unit in a task: its slots (one per role), the read-only holders it empties (role index -> their new
+    node), and the contents that are no role (`holders.Flow`)."""
+
+    unit: FunctionalUnit
+    slots: tuple[Slot, ...]
+    emptied: tuple[tuple[int, ObjectNode], ...] = ()
+    flows: tuple[Flow, ...] = field(default=())
+
+    def after_of(self, k: int) -> ObjectNode | None:
+        """The node role `k`'s object ends in (None: unchanged)."""
+        return dict(self.emptied).get(k, self.slots[k].after)
+
+
+def silent_labels(nodes: Iterable[ObjectNode]) -> frozenset[str]:
+    """Labels whose nodes (among `nodes`) never say what they hold: a stove, a table, `oven (on)`."""
+    nodes = list(nodes)
+    describing = {n.label for n in nodes if describes_contents(n)}
+    return frozenset(n.label for n in nodes) - describing
+
+
+def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
+              filled: frozenset[tuple[str, str]]) -> UnitPlan:
+    """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
+    no node says the contents of (`silent_labels`), and whose units put contents into holders as `filled`
+    says ((holder label, content label), `holders.gained`; module doc)."""
+    rels = relational_roles(unit)
+    alias = dict(unit_aliases(unit))
+    slots: list[Slot] = []
+    drops: dict[int, set[str]] = {}
+    for r in rels:
+        fate, after, portion, late_empties = r.fate, r.after, None, False
+        src = r.source
+        if fate in (Fate.SPLITS, Fate.CONSUMED) and src is not None and src.role is not None:
+            holder = rels[src.role].role
+            if (fate is Fate.SPLITS and holder.after is None and holder.before not in kitchen
+                    and (holder.label, r.role.label) in filled):
+                fate = Fate.MOVES  # a container an earlier unit filled, which FOON never empties
+                drops.setdefault(src.role, set()).add(r.role.label)
+            elif (fate is Fate.CONSUMED and holder.after is None and holder.before in kitchen
+                  and r.role.label in listed(holder.before)
+                  and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
+                              for x in rels)):
+                fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
+        elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
+            if (src.holder, r.role.label) in filled:
+                late_empties = True  # whichever container holds it is emptied of it
+            else:
+                fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
+        if fate is Fate.SPLITS:
+            after, portion = None, r.after
+        elif fate is Fate.CONSUMED:
+            after = None
+        slots.append(Slot(r, fate, after, portion, late_empties))
+    emptied = tuple((k, without(rels[k].role.before, labels, alias)) for k, labels in sorted(drops.items()))
+    return UnitPlan(unit, tuple(slots), emptied, unit_flows(unit))
+
+
+def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
+    """The object roles `instance_counts.derive_counts` unfolds for this unit (module doc)."""
+    out: list[Role] = []
+    emptied = dict(plan.emptied)
+    for k, s in enumerate(plan.slots):
+        label, before = s.rel.role.label, s.rel.role.before
+        if s.fate is Fate.NEW:
+            out.append(Role(label, None, s.rel.after))
+        elif s.fate is Fate.CONSUMED:
+            out.append(Role(label, before, consumed_node(label)))
+        elif s.fate is Fate.SPLITS:
+            out += [Role(label, before, None), Role(label, None, s.portion)]
+        elif k in emptied:
+            out.append(Role(label, before, emptied[k]))
+        else:
+            out.append(Role(label, before, s.after))
+    return tuple(out)
