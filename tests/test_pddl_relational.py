@@ -336,3 +336,25 @@ def test_every_example_dish_has_a_relational_plan_that_passes_the_replay():
         outcome = plan(foon, kitchen, load_goal(text, None, foon), "relational")
         assert outcome.status == "solved", (text, outcome.message)
         assert replay(outcome.trace).ok and outcome.validation.ok, text
+
+
+def test_the_task_says_why_it_has_several_objects_of_a_label():
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.pddl.instance_counts import count_reasons, derive_counts
+
+    net = load_network([])
+    foon, kitchen = net.at(3), load_kitchen(None, net, 3)
+    compiled = compile_goal(foon, kitchen, load_goal("guacamole", None, foon), "relational")
+    boards = sum(x.label == "cutting board" for x in compiled.task.instances)
+    assert boards > 1
+    (line,) = [n for n in compiled.notes if n.startswith(f"objects: {boards} x cutting board (empty): each of ")]
+    assert "pick-and-place at 07-guacamole.foon:52" in line and "takes one out of that state" in line
+    assert "; " + line in render(compiled.task)[1]  # in the problem file's header too
+    # one line per kitchen state holding several objects; a stated count is said to be one
+    units = tuple(range(len(foon.units)))
+    goal = load_goal("guacamole", None, foon)
+    counts = derive_counts(foon, units, kitchen.nodes, goal.candidates, overrides={"bowl": 3})
+    reasons = count_reasons(foon, counts, kitchen.nodes)
+    many = [(n, k) for n, k in counts.at_node if k > 1]
+    assert len(reasons) == len(many)
+    assert any(r.startswith("3 x bowl (empty): the count stated for it") for r in reasons)

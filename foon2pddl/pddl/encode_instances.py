@@ -64,7 +64,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from .costs import goal_cost, unit_cost
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .instance_counts import InstanceCounts, derive_counts, lanes
+from .instance_counts import InstanceCounts, count_reasons, derive_counts, lanes
 from .names import NameTable
 from .pairing import unit_roles
 from .prune import restoring_units
@@ -200,6 +200,7 @@ def encode_instances(
         units=f.units,
         labels=table.labels,
         comments=header("instances", inp, options, len(units)) + _count_lines(counts)
+        + tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen))
         + (("lanes: each instance changes state only as in the unfolded plan",) if lane is not None else ()),
         instances=tuple(instances),
     )

@@ -67,7 +67,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
 from .holders import Fate, gained, list_gaps, mismatches, moved_into, task_aliases
-from .instance_counts import derive_counts
+from .instance_counts import count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
@@ -126,9 +126,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
     plans = {u: plan_unit(f.units[u], inp.kitchen, silent_labels(task_nodes), filled) for u in units}
     by_unit = {f.units[u]: p for u, p in plans.items()}
+    def roles_of(unit):
+        return count_roles(by_unit[unit]) if unit in by_unit else ()
+
     counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
-                           overrides=dict(options.instances),
-                           roles_of=lambda unit: count_roles(by_unit[unit]) if unit in by_unit else ())
+                           overrides=dict(options.instances), roles_of=roles_of)
+    why = tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen, roles_of))
     have = counts.labels()
     units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
 
@@ -209,12 +212,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
-        comments=header("relational", inp, options, len(units)) + _count_lines(counts)
+        comments=header("relational", inp, options, len(units)) + _count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
-    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes))
+    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why)
 
 
 def _where(unit, path=str) -> str:

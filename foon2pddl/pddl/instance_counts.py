@@ -188,6 +188,44 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded)
 
 
+def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectNode],
+                  roles_of: RolesOf = unit_roles, shown: int = 4) -> tuple[str, ...]:
+    """Why the task has several objects in one kitchen state: per kitchen node given k > 1 objects, the
+    units of the unfolded plan that take one out of that state (file:line, x firings), and whether a
+    unit that only reads the state keeps one there. FOON's units never return an object to a kitchen
+    state unless the network has a unit that does (a wash, an emptying): each taking needs its own object.
+    O(units x roles). Stated and overridden counts are said to be so."""
+    given = dict(counts.at_node)
+    takers: dict[ObjectNode, list[tuple[int, int]]] = {}
+    readers: set[ObjectNode] = set()
+    for u, times in counts.firings:
+        for r in roles_of(foon.units[u]):
+            if r.before is None or r.before not in kitchen:
+                continue
+            if r.changes:
+                takers.setdefault(r.before, []).append((u, times))
+            else:
+                readers.add(r.before)
+    out = []
+    for node, k in sorted(given.items(), key=lambda x: (x[0].label, x[0])):
+        if k < 2:
+            continue
+        taken = sum(t for _, t in takers.get(node, ()))
+        if taken + (node in readers) != k:
+            out.append(f"{k} x {node.describe()}: the count stated for it")
+            continue
+        where = []
+        for u, t in takers.get(node, ())[:shown]:
+            unit = foon.units[u]
+            src = f" at {unit.source.path.rsplit('/', 1)[-1]}:{unit.source.line}" if unit.source else ""
+            where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
+        more = len(takers.get(node, ())) - shown
+        out.append(f"{k} x {node.describe()}: each of " + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
+                   + " takes one out of that state and no unit of the plan puts one back"
+                   + ("; one stays for a unit that only reads it" if node in readers else ""))
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class Lanes:
     """What the unfolded plan does with each instance (`lanes`): `steps`, its state changes `(name, before,
