@@ -358,3 +358,17 @@ def test_the_task_says_why_it_has_several_objects_of_a_label():
     many = [(n, k) for n, k in counts.at_node if k > 1]
     assert len(reasons) == len(many)
     assert any(r.startswith("3 x bowl (empty): the count stated for it") for r in reasons)
+
+
+def test_the_tree_of_a_relational_plan_is_checked_from_the_kitchen_its_containers_complete():
+    # dalgona coffee: the kitchen's mixing bowl lists instant coffee, water and sugar, which no kitchen node
+    # places in it; the task adds them, the plan beats them there, and its FOON tree (which reads
+    # `instant coffee (in [mixing bowl], powder)`) validates from the kitchen the task starts from
+    foon, _ = load([SUBGRAPHS / "0079-dalgona_coffee.txt"])
+    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+    kitchen = default_kitchen(foon)
+    outcome = plan(foon, kitchen, resolve_goal(spec_of_node(dish), foon), "relational")
+    assert outcome.status == "solved", outcome.message
+    extra = {x.start for x in outcome.task.instances if x.start is not None} - set(kitchen.nodes)
+    assert any(x.label == "instant coffee" for x in extra)
+    assert outcome.decoded.validation.ok and replay(outcome.trace).ok
