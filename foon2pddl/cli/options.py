@@ -251,7 +251,8 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     with slow_step(building.format(label=NETWORKS[network].label, units=len(net.foon.units), level=level)):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
-        warn_kitchen(kit, net.at(level), view.kitchen_strays(kit.nodes, net.at(level)))
+        places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name
+        warn_kitchen(kit, net.at(level), [n for n in view.kitchen_strays(kit.nodes, net.at(level)) if n not in places])
     if utensils is not None:
         view = replace(view, kitchen=with_utensils(view.kitchen, view.foon, read_utensils(utensils)))
     if containment != "strict":

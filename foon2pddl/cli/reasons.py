@@ -42,6 +42,10 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
     reach = reachable(foon, kitchen.nodes)
     if not any(reach.can_make(c) for c in goal.candidates):
         return explain_unreachable(foon, kitchen.nodes, goal), False
+    if kitchen.scene:
+        short = short_step(foon, kitchen, goal)
+        if short:
+            return f"FOON's semantics makes the goal, but the scene has too few objects: {short}", True
     if encoding == "instances":
         from ..pddl.instance_counts import count_shortfalls
 
@@ -53,6 +57,19 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
                     + " (raise the count, or drop it to let the count be derived)"), True
     return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
            "encoding (see its message)", True
+
+
+def short_step(foon, kitchen, goal) -> str | None:
+    """Which step of FOON's task tree runs out of a kitchen's counted objects (`planners.executable.schedule`:
+    `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree."""
+    from ..planners.executable import Verdict, schedule
+    from ..retrieval.api import retrieve
+
+    tree = retrieve(foon, kitchen, goal).tree
+    if tree is None:
+        return None
+    done = schedule(tree, kitchen.nodes, stated=kitchen.stated_counts())
+    return done.message if done.verdict is Verdict.SHORT else None
 
 
 def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True) -> str | None:

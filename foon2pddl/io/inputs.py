@@ -61,7 +61,12 @@ def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitch
         path = example_path("example_kitchen.txt")
     if path is None:
         return chosen_kitchen(network.at(level))
-    return read_kitchen(path).project(level)
+    kitchen = read_kitchen(path)
+    if kitchen.scene:  # a scene's nodes are completed against the network (`model.scene`)
+        from .scene_file import placed_scene
+
+        kitchen = placed_scene(kitchen, network.foon)
+    return kitchen.project(level)
 
 
 def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:

@@ -51,9 +51,14 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
 def read_json_nodes(path: Path) -> list[ObjectNode]:
     """Nodes of a JSON list in the public search projects' convention."""
     text = read_text(path)
-    data = load_json(text, str(path))
+    return json_nodes(load_json(text, str(path)), text, path)
+
+
+def json_nodes(data: object, text: str, path: Path) -> list[ObjectNode]:
+    """Nodes of decoded JSON in the public search projects' convention (`text` locates problems)."""
     if not isinstance(data, list):
-        raise FoonSyntaxError(str(path), 1, "expected a JSON list of objects")
+        raise FoonSyntaxError(str(path), 1, 'expected a JSON list of objects, or a scene: {"objects": [...]} '
+                                            "(docs/scene.md)")
     nodes = []
     for i, item in enumerate(data):
         try:
@@ -99,11 +104,18 @@ def looks_like_foon(text: str) -> bool:
 
 
 def read_kitchen(path: str | Path) -> Kitchen:
-    """Read a kitchen file: `.json`, FOON-style O/S lines, or one goal-syntax node per line."""
+    """Read a kitchen file: `.json` (a scene, `io.scene_file`, or the search projects' list of nodes),
+    FOON-style O/S lines, or one goal-syntax node per line."""
     p = Path(path)
     counts: dict[ObjectNode, int] = {}
     if p.suffix.lower() == ".json":
-        nodes = read_json_nodes(p)
+        from .scene_file import is_scene, scene_of
+
+        text = read_text(p)
+        data = load_json(text, str(p))
+        if is_scene(data):
+            return scene_of(data, text, str(p))
+        nodes = json_nodes(data, text, p)
     else:
         text = read_text(p)
         if looks_like_rates(text):

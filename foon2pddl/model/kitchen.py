@@ -8,13 +8,14 @@ default kitchen is derived by the rule documented in `default_kitchen`.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import chain
 
 from .bulk import bulk
 from .foon import Foon, NodeTable, ObjectNode, first_objects
 from .levels import project_node
 from .memo import per_network
+from .scene import SceneObject
 
 #: States an object is in before anyone touches it. An input node whose states
 #: are all base states is in the default kitchen even if some unit also produces
@@ -36,6 +37,8 @@ class Kitchen:
     level: int = 3
     source: str = ""
     counts: tuple[tuple[ObjectNode, int], ...] = ()  # stated instance counts (`2 x bowl (empty)`), sorted
+    #: a scene kitchen's objects with ids (`model.scene`; their nodes and counts are `nodes` and `counts`)
+    scene: tuple[SceneObject, ...] = ()
 
     def __contains__(self, node: object) -> bool:
         return node in self.nodes
@@ -59,6 +62,9 @@ class Kitchen:
         for n, k in self.counts:  # nodes that become one at `level` add up their counts
             p = project_node(n, level)
             counts[p] = counts.get(p, 0) + k
+        if self.scene:
+            return scene_kitchen([replace(o, node=project_node(o.node, level)) for o in self.scene], self.source,
+                                 level)
         return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source,
                        tuple(sorted(counts.items())))
 
@@ -66,9 +72,23 @@ class Kitchen:
         """Node -> instance count for the nodes whose count the kitchen states."""
         return dict(self.counts)
 
+    def holder_nodes(self) -> frozenset[ObjectNode]:
+        """The nodes of a scene's objects that hold something (the fridge, the counter); empty for other kitchens."""
+        held = {o.holder for o in self.scene}
+        return frozenset(o.node for o in self.scene if o.id in held)
+
     def sorted_nodes(self) -> list[ObjectNode]:
         """Nodes in a stable order (for writing and display)."""
         return sorted(self.nodes)
+
+
+def scene_kitchen(objects: Iterable[SceneObject], source: str = "", level: int = 3) -> Kitchen:
+    """The kitchen of a scene's objects: their nodes, each counted by how many objects are in it."""
+    objs = tuple(sorted(objects))
+    counts: dict[ObjectNode, int] = {}
+    for o in objs:
+        counts[o.node] = counts.get(o.node, 0) + 1
+    return Kitchen(frozenset(counts), level, source, tuple(sorted(counts.items())), objs)
 
 
 @bulk
@@ -254,4 +274,4 @@ def with_utensils(kitchen: Kitchen, foon: Foon, utensils: Iterable[str]) -> Kitc
     if not labels:
         return kitchen
     extra = {project_node(n, kitchen.level) for n in foon.nodes if n.label in labels and is_base_node(n)}
-    return Kitchen(kitchen.nodes | extra, kitchen.level, kitchen.source, kitchen.counts)
+    return Kitchen(kitchen.nodes | extra, kitchen.level, kitchen.source, kitchen.counts, kitchen.scene)

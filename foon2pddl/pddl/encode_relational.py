@@ -45,13 +45,11 @@ quantified or conditional effect, `:action-costs` with costs.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-
 from ..model.foon import Foon, ObjectNode, make_node
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, places
+from ..model.places import describes_contents, place_of, places
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -66,14 +64,20 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from .holders import Fate, gained, list_gaps, mismatches, moved_into, task_aliases
+from .holders import Fate, gained, list_gaps, mismatches, task_aliases
 from .instance_counts import count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import counted_objects, holder_init, implied_contents, named_objects, read_names
-from .relational_plan import UnitPlan, count_roles, plan_unit, silent_labels, without
+from .relational_init import (
+    counted_objects,
+    holder_init,
+    implied_contents,
+    named_objects,
+    scene_instances,
+)
+from .relational_plan import UnitPlan, Way, count_roles, flow_ways, late_empties, plan_unit, silent_labels
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
@@ -81,39 +85,6 @@ __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 IN, ON = "in", "on"
 #: The state constant of an object that became part of a mixture.
 CONSUMED = "consumed"
-
-
-#: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
-#: (None: consumed).
-Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
-
-
-def _flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]) -> dict[int, list[Way]]:
-    """Per flow of the unit (by position): every node of its label placed in a container of the holder's label,
-    with the node it ends in (moved into the flow's target, or None: consumed)."""
-    out: dict[int, list[Way]] = {}
-    labels = [s.rel.role.label for s in plan.slots]
-    for i, flow in enumerate(plan.flows):
-        ways = []
-        for n in sorted(x for x in nodes if x.label == flow.label):
-            for rel, c in places(n)[:1]:
-                if alias.get(c, c) == labels[flow.holder]:
-                    ways.append((n, rel, moved_into(n, labels[flow.into]) if flow.into is not None else None))
-        out[i] = ways
-    return out
-
-
-def _late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
-                  alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
-    """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
-    label that lists the object's label, with the node it becomes (`relational_plan.without`)."""
-    out = {}
-    for k, s in enumerate(plan.slots):
-        if s.late_empties:
-            label, holder = s.rel.role.label, s.rel.source.holder
-            out[k] = [(n, without(n, {label}, alias)) for n in sorted(nodes)
-                      if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
-    return out
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
@@ -132,7 +103,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
                            overrides=dict(options.instances), roles_of=roles_of)
     why = tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen, roles_of))
-    have = counts.labels()
+    scene = kitchen.project(level).scene
+    have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
     units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
 
     table = NameTable()
@@ -143,25 +115,32 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         p = plans[u]
         nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
         nodes.update(n for _, n in p.emptied)
-    instances = counted_objects(table, counts)
-    alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
-
-    # The kitchen completed: contents its containers list, holders its objects and the units name.
-    placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
-    instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes))
-    named_places = {alias.get(c, c) for u in units for s in plans[u].slots
-                    for n in (s.after, s.portion) for _, c in places(n)}
-    missing = sorted(named_places - {x.label for x in instances})
-    instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON names only
-    quiet = silent_labels(task_nodes) | frozenset(missing)  # a place only FOON names says nothing it holds
-    instances, implied = holder_init(instances, alias, quiet)
-    if implied:
-        instances, again = holder_init(named_objects(table, instances, implied), alias, quiet)
-        assert not again, again
+    if scene:  # the scene is the init: its objects, where they are, and the objects units make
+        instances = scene_instances(table, scene, counts.unmade)
+        alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
+        placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
+    else:
+        instances = counted_objects(table, counts)
+        alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
+        # The kitchen completed: contents its containers list, holders its objects and the units name.
+        placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
+        instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes))
+        named_places = {alias.get(c, c) for u in units for s in plans[u].slots
+                        for n in (s.after, s.portion) for _, c in places(n)}
+        missing = sorted(named_places - {x.label for x in instances})
+        instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
+        quiet = silent_labels(task_nodes) | frozenset(missing)  # a place only FOON names says nothing it holds
+        instances, implied = holder_init(instances, alias, quiet)
+        if implied:
+            instances, again = holder_init(named_objects(table, instances, implied), alias, quiet)
+            assert not again, again
+    # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
+    # leaves whatever holds it
+    loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
     nodes.update(x.start for x in instances if x.start is not None)
-    ways = {u: _flow_ways(plans[u], nodes, alias) for u in units}
+    ways = {u: flow_ways(plans[u], nodes, alias) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
-    empties = {u: _late_empties(plans[u], nodes, alias) for u in units}
+    empties = {u: late_empties(plans[u], nodes, alias) for u in units}
     nodes.update(n for e in empties.values() for lst in e.values() for _, n in lst)
     type_of, types = _types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
@@ -191,7 +170,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
     actions = [_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
-                            container_labels, inside, empties[u]) for u in units]
+                            container_labels, inside, empties[u], loose) for u in units]
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
@@ -228,7 +207,7 @@ def _where(unit, path=str) -> str:
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
                  type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[Way]],
                  gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
-                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]]) -> Action:
+                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str]) -> Action:
     """One unit's schema (see the module doc): per role its state change and its holder facts."""
     slots, unit = plan.slots, plan.unit
     # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
@@ -363,6 +342,11 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                     was = Atom(IS, (f_, const[old]))
                     now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
                     cond.append(Conditional((leave, was), add=tuple(now), delete=(was,), var=f_, type=ROOT_TYPE))
+        elif s.fate in (Fate.MOVES, Fate.CONSUMED) and label in loose:  # it leaves the holder FOON does not name
+            f_ = f"?{names.name(f'from {k}', key=('from', k))}"
+            for rel in Relation:
+                leave = Atom(rel.value, (f_, v))
+                cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
         if s.fate in (Fate.MOVES, Fate.NEW) and dst is not None:
             h = holder_var(dst, label, k)
             if h is not None:

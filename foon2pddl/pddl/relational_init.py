@@ -8,10 +8,11 @@ from collections.abc import Iterable
 from ..model.foon import ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of
+from ..model.scene import SceneObject
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names"]
+__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names", "scene_instances"]
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
@@ -108,3 +109,18 @@ def counted_objects(table: NameTable, counts) -> list[Instance]:
         starts.setdefault(label, []).extend([None] * k)
     return [Instance(table.name(f"{label} {k}", key=("instance", label, k)), label, node)
             for label in sorted(starts) for k, node in enumerate(starts[label], start=1)]
+
+
+def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iterable[tuple[str, int]]) -> list[Instance]:
+    """A scene's objects as the task's objects (`model.scene`): named by their ids (through `table`, so no id
+    can break or inject into PDDL), in their nodes, in or on their holders; then the `unmade` objects (label,
+    count) the units make, numbered per label after the scene's objects of that label (`vinegar_2`)."""
+    objs = sorted(scene)
+    name = {o.id: table.name(o.id, key=("scene", o.id)) for o in objs}
+    out = [Instance(name[o.id], o.label, o.node, name[o.holder] if o.holder is not None else None, o.relation)
+           for o in objs]
+    for label, k in unmade:
+        first = 1 + sum(o.label == label for o in objs)
+        out += [Instance(table.name(f"{label} {i}", key=("instance", label, i)), label)
+                for i in range(first, first + k)]
+    return out

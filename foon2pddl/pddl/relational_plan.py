@@ -30,12 +30,14 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
-from ..model.places import describes_contents, listed
-from .holders import Fate, Flow, RelRole, relational_roles, unit_aliases, unit_flows
+from ..model.physical import Relation
+from ..model.places import describes_contents, listed, places
+from .holders import Fate, Flow, RelRole, moved_into, relational_roles, unit_aliases, unit_flows
 from .pairing import Role
+from .relational_init import read_names
 
-__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "consumed_node", "count_roles", "silent_labels", "plan_unit",
-           "without"]
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "consumed_node", "count_roles", "flow_ways", "late_empties",
+           "silent_labels", "plan_unit", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -153,3 +155,36 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
         else:
             out.append(Role(label, before, s.after))
     return tuple(out)
+
+
+#: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
+#: (None: consumed).
+Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
+
+
+def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]) -> dict[int, list[Way]]:
+    """Per flow of the unit (by position): every node of its label placed in a container of the holder's label,
+    with the node it ends in (moved into the flow's target, or None: consumed)."""
+    out: dict[int, list[Way]] = {}
+    labels = [s.rel.role.label for s in plan.slots]
+    for i, flow in enumerate(plan.flows):
+        ways = []
+        for n in sorted(x for x in nodes if x.label == flow.label):
+            for rel, c in places(n)[:1]:
+                if alias.get(c, c) == labels[flow.holder]:
+                    ways.append((n, rel, moved_into(n, labels[flow.into]) if flow.into is not None else None))
+        out[i] = ways
+    return out
+
+
+def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
+                 alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
+    """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
+    label that lists the object's label, with the node it becomes (`without`)."""
+    out = {}
+    for k, s in enumerate(plan.slots):
+        if s.late_empties:
+            label, holder = s.rel.role.label, s.rel.source.holder
+            out[k] = [(n, without(n, {label}, alias)) for n in sorted(nodes)
+                      if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
+    return out

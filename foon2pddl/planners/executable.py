@@ -71,10 +71,13 @@ class Executability:
 
 
 def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mapping[str, int] | None = None,
-             per_item: int = 1, *, unlimited: bool = False) -> Executability:
-    """Run `tree`'s units in order over the kitchen's objects (see the module doc)."""
+             per_item: int = 1, *, unlimited: bool = False,
+             stated: Mapping[ObjectNode, int] | None = None) -> Executability:
+    """Run `tree`'s units in order over the kitchen's objects (see the module doc); `stated`: objects per
+    kitchen node where the kitchen says how many (a scene's), before `counts` per label."""
     kitchen = frozenset(kitchen_nodes)
     counts = counts or {}
+    stated = stated or {}
     objects: list[PhysicalObject] = []
     start: dict[str, ObjectNode | None] = {}
     now: dict[str, ObjectState] = {}
@@ -111,7 +114,7 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
                 continue
             what = role.before.describe()
             if role.before in kitchen:
-                limit = counts.get(role.label, 1) * per_item
+                limit = stated.get(role.before, counts.get(role.label, 1) * per_item)
                 if unlimited or drawn.get(role.before, 0) < limit:
                     drawn[role.before] = drawn.get(role.before, 0) + 1
                     names.append(new_object(role.label, role.before))
