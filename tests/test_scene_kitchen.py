@@ -77,6 +77,27 @@ def test_plan_cli_names_the_scene_ids_in_text_and_json():
         "id": "knife_1", "label": "knife", "state": "knife", "holder": "board_1", "relation": "on", "consumed": False}
 
 
+def test_ids_that_are_no_pddl_names_are_sanitized_in_pddl_and_shown_as_given(tmp_path):
+    objects = json.loads(WHIPPED_SCENE.read_text())["objects"]
+    rename = {"bowl_1": "Bowl #1", "fridge_1": "(define fridge)", "sugar_1": "sucre \u00e9 1"}
+    for o in objects:
+        for key in ("id", "in", "on"):
+            if o.get(key) in rename:
+                o[key] = rename[o[key]]
+    path = _scene(tmp_path, objects)
+    result = CliRunner().invoke(main, ["plan", "--kitchen", str(path), "--encoding", "relational", "--goal",
+                                       WHIPPED_GOAL, "--format", "json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["validation"]["relational"]["ok"]
+    texts = [s["text"] for s in data["relational"]["steps"]]
+    assert "pour sucre \u00e9 1 from (define fridge) into mixing_bowl_1" in texts
+    assert "scoop whipped_cream_1 from mixing_bowl_1 into Bowl #1 with spatula_1" in texts
+    assert {o["id"] for o in data["relational"]["initial"]} >= set(rename.values())
+    assert any(a.split()[1:] and "bowl_1" in a for a in data["plan"])  # the raw plan: PDDL names
+    assert not any(x in " ".join(data["plan"]) for x in rename.values())
+
+
 @pytest.mark.parametrize("encoding", ["tree", "instances", "relational", "state", "foon-compat", "ocp"])
 def test_every_encoding_accepts_a_scene(encoding, tmp_path):
     result = CliRunner().invoke(main, ["compile", "--kitchen", str(WHIPPED_SCENE), "--encoding", encoding,

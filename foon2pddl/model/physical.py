@@ -26,13 +26,13 @@ True
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 from functools import cached_property
 
 from .foon import FunctionalUnit, ObjectNode
 
-__all__ = ["Binding", "ObjectState", "PhysicalObject", "PhysicalTrace", "Relation", "TraceError", "TraceStep"]
+__all__ = ["Binding", "ObjectState", "PhysicalObject", "PhysicalTrace", "Relation", "TraceError", "TraceStep", "renamed"]
 
 
 class TraceError(ValueError):
@@ -186,3 +186,17 @@ def _check_holders(states: Mapping[str, ObjectState], known: set[str], when: str
                 raise TraceError(f"{when}: the holders of {start} loop through {at}")
             seen.add(at)
             at = states[at].holder
+
+
+def renamed(trace: PhysicalTrace, names: Mapping[str, str]) -> PhysicalTrace:
+    """`trace` with object ids renamed (`names`: old -> new, others kept): PDDL names back to a scene's ids."""
+    def new(x: str | None) -> str | None:
+        return names.get(x, x) if x is not None else None
+
+    def state(s: ObjectState) -> ObjectState:
+        return replace(s, id=new(s.id), holder=new(s.holder))
+
+    steps = tuple(replace(k, bindings=tuple(replace(b, object=new(b.object)) for b in k.bindings),
+                          changes=tuple(map(state, k.changes))) for k in trace.steps)
+    return replace(trace, objects=tuple(replace(o, id=new(o.id)) for o in trace.objects),
+                   initial=tuple(map(state, trace.initial)), steps=steps)

@@ -117,8 +117,8 @@ def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iter
     count) the units make, numbered per label after the scene's objects of that label (`vinegar_2`)."""
     objs = sorted(scene)
     name = {o.id: table.name(o.id, key=("scene", o.id)) for o in objs}
-    out = [Instance(name[o.id], o.label, o.node, name[o.holder] if o.holder is not None else None, o.relation)
-           for o in objs]
+    out = [Instance(name[o.id], o.label, o.node, name[o.holder] if o.holder is not None else None, o.relation,
+                    o.id) for o in objs]
     for label, k in unmade:
         first = 1 + sum(o.label == label for o in objs)
         out += [Instance(table.name(f"{label} {i}", key=("instance", label, i)), label)

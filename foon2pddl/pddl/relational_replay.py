@@ -14,7 +14,8 @@ name; the binding says what the unit requires of it (`Action.roles`: its node
 before, and the node it must end in). Every other object the step changes or
 names (a portion poured off, a holder the unit does not name, contents that
 followed their container) is bound with its node before and after the step. An
-object with two holders is a PlanDecodeError (the encoding promises at most one).
+object with two holders is a PlanDecodeError (the encoding promises at most one). A scene's
+objects are named by their scene ids (`Instance.scene_id`), not their PDDL names.
 O(steps x (facts + objects)).
 """
 
@@ -23,7 +24,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
-from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
+from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
 from .holders import relational_roles, task_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
@@ -102,8 +103,10 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit)))
     start = _states(task, set(task.init), {})
     aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
-    return PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances),
-                         tuple(start[x.name] for x in task.instances), tuple(out), aliases, task.gaps)
+    trace = PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances),
+                          tuple(start[x.name] for x in task.instances), tuple(out), aliases, task.gaps)
+    shown = {x.name: x.scene_id for x in task.instances if x.scene_id not in (None, x.name)}
+    return renamed(trace, shown) if shown else trace  # a scene's objects by their ids
 
 
 def _role_objects(unit, action, args, was, now, label, step, n) -> list[str]:

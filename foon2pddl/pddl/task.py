@@ -77,13 +77,15 @@ class Action:
 class Instance:
     """A physical object of a task: PDDL name, FOON label, the node it starts in (None: not yet made), and
     what it starts in or on (`holder`, another instance's name, with its `relation`; None: it stands free
-    or the encoding does not model holders)."""
+    or the encoding does not model holders), and its scene id."""
 
     name: str
     label: str
     start: ObjectNode | None = None
     holder: str | None = None
     relation: Relation | None = None
+    #: the object's id in a scene kitchen (`model.scene`), which plans' text and JSON show for `name`
+    scene_id: str | None = None
 
 
 @dataclass(frozen=True)
