@@ -263,3 +263,17 @@ def test_a_scrape_with_no_tool_tips_the_board_over_the_bowl():
     assert plan.ok, plan.replay.problems
     assert skills(plan) == [("pick", ("board_1", "workspace")), ("scrape-by-hand", ("board_1", "bowl_1")),
                             ("place", ("board_1", "workspace"))]
+
+
+def test_a_portion_a_transport_step_moves_is_picked_up_where_its_source_is():
+    # the relational encoding's portion: some of the chopped onion on the board (onion_2, not yet an object
+    # before the step) goes into the bowl while onion_1 stays on the board: the robot picks it from the board
+    objects = {"onion_1": "onion", "onion_2": "onion", "board_1": "cutting board", "bowl_1": "bowl"}
+    initial = [ObjectState("onion_1", ONION_CHOPPED, "board_1", ON), ObjectState("onion_2"),
+               ObjectState("board_1", BOARD), ObjectState("bowl_1", BOWL)]
+    step = ("pick-and-place", [ObjectState("onion_2", ONION_CHOPPED, "bowl_1", IN)], ["onion_2", "onion_1", "bowl_1"])
+    plan = decompose(trace(objects, initial, [step]), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert [s.status for s in plan.steps] == [StepStatus.DECOMPOSED]
+    assert [(c.skill, c.objects[0]) for c in plan.calls] == [("pick", "onion_2"), ("put-in", "onion_2")]
+    assert plan.calls[0].holders[0] == "board_1"  # picked where the onion it was part of lies

@@ -132,8 +132,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         quiet = silent_labels(task_nodes) | frozenset(missing)  # a place only FOON names says nothing it holds
         instances, implied = holder_init(instances, alias, quiet)
         if implied:
-            instances, again = holder_init(named_objects(table, instances, implied), alias, quiet)
-            assert not again, again
+            # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
+            # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
+            instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)

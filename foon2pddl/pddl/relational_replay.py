@@ -185,7 +185,8 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     moves, holders = [], set()
     for m, src in _portions(step, before, after, made):
         moves.append(f"{m} (a portion of {src})" + (f" from {before[src].holder}" if before[src].holder else "")
-                     + (f" into {after[m].holder}" if after[m].holder else ""))
+                     + (f" {'into' if after[m].relation is Relation.IN else 'onto'} {after[m].holder}"
+                        if after[m].holder else ""))
         holders.update({src, m} | {h for h in (before[src].holder, after[m].holder) if h})
         made.remove(m)
     for b in step.bindings:

@@ -198,11 +198,10 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     # (not after a `finish` that renames the tree's units: its units are not the plan's any more)
     if compiled.foon_semantics and not compiled.every_step and compiled.finish is None:
         notes += unneeded_steps_note(compiled, steps, tree)
-    # the tree is checked from the kitchen the task starts from: an encoding over physical objects completes
-    # it with what its containers list (`pepper (in [bowl])` for a `bowl (contains {pepper})`)
-    start = frozenset(kitchen_nodes) | {x.start for x in compiled.task.instances if x.start is not None}
-    # a task compiled under --containment infer holds inference units: validate under the same rule
-    decoded = Decoded(tree, validate(tree, start, containment_of(compiled.task.units)),
+    # a task compiled under --containment infer holds inference units: validate under the same rule. The tree is
+    # checked from the kitchen as given, not as an encoding completes it: an object the completion starts in a
+    # state some unit makes (`macaroni (cooked, in [pot])`) must not let a plan skip the cooking
+    decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
                       simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes)
     if compiled.replay is None:  # an encoding with no physical objects
         return decoded

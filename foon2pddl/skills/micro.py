@@ -32,7 +32,7 @@ for the whole trace, so the replay compares facts across steps.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 from ..model.foon import ObjectNode
@@ -42,7 +42,7 @@ from ..pddl.render import render_problem
 from ..pddl.task import Atom, PlanningTask
 from .domain import TRANSPORT, SkillDomain
 
-__all__ = ["MicroProblem", "Naming", "dynamic_facts", "micro_problem", "phase_of", "step_objects"]
+__all__ = ["MicroProblem", "Naming", "dynamic_facts", "micro_problem", "phase_of", "portions", "step_objects"]
 
 WORKSPACE = "workspace"
 #: The phase FOON gives a utensil after use: a tool may end in it (a spoon gets dirty), not in any other.
@@ -122,6 +122,9 @@ class MicroProblem:
     init: tuple[Atom, ...]
     goal: tuple[Atom, ...]
     task: PlanningTask
+    #: Facts of the portions a transport step moves, where they stand before it (`portions`): the replay
+    #: adds them before the step's skills, as the portion is separated from what it was part of.
+    split: frozenset[Atom] = frozenset()
 
     @cached_property
     def text(self) -> str:
@@ -158,11 +161,31 @@ def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid:
             and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node)))
 
 
+def portions(trace: PhysicalTrace, index: int, ids: Iterable[str]) -> dict[str, ObjectState]:
+    """The portions step `index` makes (the relational encoding's `SPLITS`: some of the diced avocado on the
+    board, ground beef out of its packet), as they stand before the step: where the object they are taken
+    from is, in its state. A portion is an object of `ids` the step makes of a label that an object of
+    `ids` already has, in a holder, and keeps after the step (first by id). O(|ids|^2)."""
+    before, after = trace.after(index - 1), trace.after(index)
+    ids = sorted(ids)
+    sources = [x for x in ids if before[x].exists and after[x].exists and before[x].holder is not None]
+    out = {}
+    for oid in ids:
+        if before[oid].exists or not after[oid].exists:
+            continue
+        src = next((x for x in sources if before[x].node.label == after[oid].node.label), None)
+        if src is not None:
+            out[oid] = replace(before[src], id=oid)
+    return out
+
+
 def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, domain: SkillDomain,
                   roles: tuple[set[str], set[str]] | None = None) -> MicroProblem:
     """The micro problem of step `index` carried out by `skill` (see the module doc). O(objects of the step)."""
     before, after = trace.after(index - 1), trace.after(index)
     ids = step_objects(trace, index)
+    split = portions(trace, index, ids) if skill in TRANSPORT else {}  # picked up as the objects they are part of
+    before = {**before, **split}
     containers, surfaces = roles if roles is not None else _roles(trace)
     n = naming.ids
     ws = naming.workspace
@@ -228,4 +251,5 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     task = PlanningTask(domain.name, f"step-{index + 1}", "skills", 3, (), (), init, goal, objects=objects,
                         metric=True, comments=(f"step {index + 1}: {trace.steps[index].unit.describe()}",
                                                    f"skill {skill}"))
-    return MicroProblem(index, skill, ids, frozenset(statics), init, goal, task)
+    return MicroProblem(index, skill, ids, frozenset(statics), init, goal, task,
+                        frozenset(dynamic_facts(naming, split, split)))
