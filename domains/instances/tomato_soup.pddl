@@ -2,10 +2,10 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
-; objects: 2 x cutting board (empty): each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit of the plan puts one back
-; objects: 2 x stove (off): each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit of the plan puts one back; one stays for a unit that only reads it
+; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
+; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-ed37a0ce)
+(define (domain foon-instances-46b26792)
   (:requirements :strips :typing)
   (:types
     physical-object - object

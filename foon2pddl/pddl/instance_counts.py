@@ -220,8 +220,9 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
             src = f" at {unit.source.path.rsplit('/', 1)[-1]}:{unit.source.line}" if unit.source else ""
             where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
         more = len(takers.get(node, ())) - shown
-        out.append(f"{k} x {node.describe()}: each of " + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
-                   + " takes one out of that state and no unit of the plan puts one back"
+        out.append(f"{k} x {node.describe()}: in the plan the counts are derived from (FOON's, unfolded), each of "
+                   + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
+                   + " takes one out of that state and no unit puts one back"
                    + ("; one stays for a unit that only reads it" if node in readers else ""))
     return tuple(out)
 

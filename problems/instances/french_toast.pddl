@@ -2,10 +2,10 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-; objects: 2 x stove (off): each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit of the plan puts one back; one stays for a unit that only reads it
+; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_french_toast)
-  (:domain foon-instances-458e37b2)
+  (:domain foon-instances-6425bd86)
   (:objects
     bowl_1 - bowl
     bread_1 - bread

@@ -2,10 +2,10 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-; objects: 2 x stove (off): each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit of the plan puts one back; one stays for a unit that only reads it
+; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_scrambled_eggs)
-  (:domain foon-instances-df739dbe)
+  (:domain foon-instances-31abdd56)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl

@@ -2,11 +2,11 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 21 (avocado 2, bowl 2, cilantro 1, cutting board 6, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-; objects: 2 x avocado (whole): each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit of the plan puts one back
-; objects: 2 x bowl (empty): each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit of the plan puts one back
-; objects: 6 x cutting board (empty): each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit of the plan puts one back
+; objects: 2 x avocado (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit puts one back
+; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
+; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
 (define (problem make_guacamole)
-  (:domain foon-relational-c26d01df)
+  (:domain foon-relational-1ce9e543)
   (:objects
     avocado_1 - avocado
     avocado_2 - avocado

@@ -2,14 +2,14 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 30 (basil 1, bowl 1, cutting board 5, immersion blender 1, knife 1, ladle 1, olive oil 4, onion 3, pot 3, stove 2, tomato 2, tomato soup 2, vegetable broth 3, wooden spoon 1)
-; objects: 5 x cutting board (empty): each of pick-and-place at 06-tomato_soup.foon:3 x3, pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit of the plan puts one back
-; objects: 3 x onion (whole): each of pick-and-place at 06-tomato_soup.foon:3 x3 takes one out of that state and no unit of the plan puts one back
-; objects: 3 x pot (empty): each of pick-and-place at 06-tomato_soup.foon:67 x3 takes one out of that state and no unit of the plan puts one back
-; objects: 2 x stove (off): each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit of the plan puts one back; one stays for a unit that only reads it
-; objects: 2 x tomato (whole): each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit of the plan puts one back
+; objects: 5 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3 x3, pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
+; objects: 3 x onion (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3 x3 takes one out of that state and no unit puts one back
+; objects: 3 x pot (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:67 x3 takes one out of that state and no unit puts one back
+; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; objects: 2 x tomato (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
 (define (problem make_tomato_soup)
-  (:domain foon-relational-b2dbe9f5)
+  (:domain foon-relational-92581e52)
   (:objects
     basil_1 - basil
     bowl_1 - bowl
