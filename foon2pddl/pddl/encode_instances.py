@@ -83,7 +83,7 @@ ROOT_TYPE = "physical-object"
 HEADER_LABELS = 40
 
 
-def _types(table: NameTable, labels: list[str], categories: Mapping[str, tuple[str, ...]]) -> tuple[dict, list]:
+def object_types(table: NameTable, labels: list[str], categories: Mapping[str, tuple[str, ...]]) -> tuple[dict, list]:
     """Label -> type name, and the (type, parent) declarations (categories first, then labels)."""
     decl: dict[str, str] = {}
     cat_name: dict[str, str] = {}
@@ -117,7 +117,7 @@ def encode_instances(
     table = NameTable()
     for name in (IS, OCCUPIED, NOT_MADE, PRECEDES, LANE, TOGETHER, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
         table.reserve(name)
-    type_of, types = _types(table, sorted(set(have) | {c.label for c in inp.candidates}), dict(options.categories))
+    type_of, types = object_types(table, sorted(set(have) | {c.label for c in inp.candidates}), dict(options.categories))
     nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
     for u in units:
         nodes.update(x for r in unit_roles(f.units[u]) for x in (r.before, r.after) if x is not None)
@@ -199,7 +199,7 @@ def encode_instances(
         objects=tuple((x.name, type_of[x.label]) for x in instances),
         units=f.units,
         labels=table.labels,
-        comments=header("instances", inp, options, len(units)) + _count_lines(counts)
+        comments=header("instances", inp, options, len(units)) + count_lines(counts)
         + tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen))
         + (("lanes: each instance changes state only as in the unfolded plan",) if lane is not None else ()),
         instances=tuple(instances),
@@ -223,7 +223,7 @@ def _instances(table: NameTable, counts: InstanceCounts,
     return instances, init, set()
 
 
-def _count_lines(counts: InstanceCounts) -> tuple[str, ...]:
+def count_lines(counts: InstanceCounts) -> tuple[str, ...]:
     labels = counts.labels()
     shown = ", ".join(f"{label} {k}" for label, k in list(labels.items())[:HEADER_LABELS])
     more = f", +{len(labels) - HEADER_LABELS} more labels" if len(labels) > HEADER_LABELS else ""

@@ -57,16 +57,14 @@ consumption, quantities, and object identity beyond the label (one `cup`).
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.places import place_of
 from .costs import unit_cost
-from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, goal_actions, header, unit_comment
+from .encode_state import fact_task
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, unit_comment
 from .names import NameTable
-from .prune import prune_task
 from .task import Action, Atom, PlanningTask, Predicate
 
 __all__ = ["AIR", "TABLE", "action_name", "encode_ocp", "goal_facts_of", "node_facts", "unit_effects"]
@@ -211,28 +209,6 @@ def encode_ocp(
                   Predicate("on", (("?h", "object"), ("?x", "object")), "on ?h is ?x (?x is on ?h)"),
                   Predicate("under", (("?x", "object"), ("?h", "object")), "under ?x is ?h (?x is on or in ?h)"),
                   *(Predicate(pred[s], (("?o", "object"),), f"?o is {s[3:]}") for s in states)]
-    if several:
-        goal_atom = Atom(GOAL_REACHED)
-        predicates.append(Predicate(GOAL_REACHED, comment="a goal candidate was made"))
-        actions.extend(goal_actions(table, [(c, atoms(fs)) for c, fs in goal_facts], goal_atom, options))
-        goal_atoms: tuple[Atom, ...] = (goal_atom,)
-    else:
-        goal_atoms = atoms(goal_facts[0][1])
-
-    task = PlanningTask(
-        domain="foon-ocp",
-        problem=table.name(f"make {goal.describe()}", key=("problem",)),
-        encoding="ocp",
-        level=inp.level,
-        predicates=tuple(predicates),
-        actions=tuple(actions),
-        init=atoms(init_facts),
-        goal=goal_atoms,
-        constants=tuple((obj[label], "object") for label in labels),
-        units=f.units,
-        labels=table.labels,
-    )
-    if options.prune:
-        task = prune_task(task)
-    kept = sum(a.unit is not None for a in task.actions)
-    return replace(task, comments=header("ocp", inp, options, kept))
+    return fact_task("ocp", inp, goal, table, options, predicates, actions, [(c, atoms(fs)) for c, fs in goal_facts],
+                     atoms(init_facts), tuple((obj[label], "object") for label in labels),
+                     goal_predicate_at=len(predicates))

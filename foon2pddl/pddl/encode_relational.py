@@ -58,9 +58,9 @@ from .encode_instances import (
     PRECEDES,
     ROOT_TYPE,
     STATE_TYPE,
-    _count_lines,
-    _types,
+    count_lines,
     goal_actions_over_objects,
+    object_types,
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
@@ -95,7 +95,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
-    plans = {u: plan_unit(f.units[u], inp.kitchen, silent_labels(task_nodes), filled) for u in units}
+    silent = silent_labels(task_nodes)  # once: the comprehension below read it per unit
+    plans = {u: plan_unit(f.units[u], inp.kitchen, silent, filled) for u in units}
     by_unit = {f.units[u]: p for u, p in plans.items()}
     def roles_of(unit):
         return count_roles(by_unit[unit]) if unit in by_unit else ()
@@ -129,7 +130,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                         for n in (s.after, s.portion) for _, c in places(n)}
         missing = sorted(named_places - {x.label for x in instances})
         instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
-        quiet = silent_labels(task_nodes) | frozenset(missing)  # a place only FOON names says nothing it holds
+        quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
         instances, implied = holder_init(instances, alias, quiet)
         if implied:
             # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
@@ -143,7 +144,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
     empties = {u: late_empties(plans[u], nodes, alias) for u in units}
     nodes.update(n for e in empties.values() for lst in e.values() for _, n in lst)
-    type_of, types = _types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
+    type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
     init = [Atom(IS, (x.name, const[x.start] if x.start is not None else NOT_MADE)) for x in instances]
@@ -192,7 +193,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
-        comments=header("relational", inp, options, len(units)) + _count_lines(counts) + why
+        comments=header("relational", inp, options, len(units)) + count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),

@@ -143,28 +143,39 @@ def encode_state(
                       pre=atoms(pre), add=atoms(add), delete=atoms(delete),
                       cost=unit_cost(u, options.costs, options.rates), unit=i, comment=unit_comment(u, i))
                for i, (u, (pre, add, delete)) in enumerate(zip(f.units, changes, strict=True))]
-    if several:
-        goal_atom = Atom(GOAL_REACHED)
-        predicates.insert(1, Predicate(GOAL_REACHED, comment="a goal candidate was made"))
-        actions.extend(goal_actions(table, [(c, atoms(fs)) for c, fs in goal_facts], goal_atom, options))
-        goal_atoms: tuple[Atom, ...] = (goal_atom,)
-    else:
-        goal_atoms = atoms(goal_facts[0][1])
+    return fact_task("state", inp, goal, table, options, predicates, actions, [(c, atoms(fs)) for c, fs in goal_facts],
+                     atoms(init_facts), tuple((obj[label], "object") for label in labels), goal_predicate_at=1)
 
+
+def fact_task(encoding: str, inp, goal: Goal, table: NameTable, options: EncodeOptions,
+              predicates: list[Predicate], actions: list[Action], goal_atoms: list[tuple[ObjectNode, tuple[Atom, ...]]],
+              init: tuple[Atom, ...], constants: tuple[tuple[str, str], ...], goal_predicate_at: int) -> PlanningTask:
+    """The task of a one-object-per-label fact encoding (`state`, `ocp`) from its unit actions: the goal is the
+    one candidate's atoms, or `(goal-reached)` reached by a goal action per candidate (its predicate inserted at
+    `goal_predicate_at`); relevance-pruned when the options ask; the header counts the unit actions kept."""
+    actions = list(actions)
+    if len(goal_atoms) > 1:
+        reached = Atom(GOAL_REACHED)
+        predicates = [*predicates[:goal_predicate_at], Predicate(GOAL_REACHED, comment="a goal candidate was made"),
+                      *predicates[goal_predicate_at:]]
+        actions.extend(goal_actions(table, goal_atoms, reached, options))
+        goal_atom: tuple[Atom, ...] = (reached,)
+    else:
+        goal_atom = goal_atoms[0][1]
     task = PlanningTask(
-        domain="foon-state",
+        domain=f"foon-{encoding}",
         problem=table.name(f"make {goal.describe()}", key=("problem",)),
-        encoding="state",
+        encoding=encoding,
         level=inp.level,
         predicates=tuple(predicates),
         actions=tuple(actions),
-        init=atoms(init_facts),
-        goal=goal_atoms,
-        constants=tuple((obj[label], "object") for label in labels),
-        units=f.units,
+        init=init,
+        goal=goal_atom,
+        constants=constants,
+        units=inp.foon.units,
         labels=table.labels,
     )
     if options.prune:
         task = prune_task(task)
     kept = sum(a.unit is not None for a in task.actions)
-    return replace(task, comments=header("state", inp, options, kept))
+    return replace(task, comments=header(encoding, inp, options, kept))

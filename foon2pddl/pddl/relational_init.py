@@ -16,6 +16,7 @@ __all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects"
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
+    """`names` read through the task's aliases (`holders.task_aliases`): `salad` as `carrot salad`."""
     return frozenset(alias.get(x, x) for x in names)
 
 
