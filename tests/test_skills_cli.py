@@ -70,17 +70,27 @@ def _pourless(paths, goal, *network):
     return native, run(*paths, "--goal", goal, *network, "--skills", "--without-skill", "pour", "--format", "json")
 
 
-def _blocking(text):
-    return re.search(r"every way to make '[^']+' needs `without-motion pour`", text)
+def _blocking(text, option="without-motion pour"):
+    return re.search(rf"every way to make ('[^']+') needs `{option}`", text)
 
 
 @pytest.mark.parametrize(("goal", "network"), [("whipped cream", ()), ("guacamole", ()),
                                                ("lemonade", ("--network", "exp"))])
-def test_a_robot_without_pour_gets_the_blocking_motion_native_retrieval_names(goal, network):
+def test_a_robot_without_pour_gets_the_blocking_node_native_retrieval_names_under_the_option_given(goal, network):
     native, result = _pourless((), goal, *network)
     assert native.exit_code == 1 and _blocking(native.stderr), native.output  # every example dish pours
     assert result.exit_code == 1 and result.stdout == ""
-    assert _blocking(result.stderr).group() == _blocking(native.stderr).group()
+    assert _blocking(result.stderr, "without-skill pour").group(1) == _blocking(native.stderr).group(1)
+    assert "without-motion" not in result.stderr  # the user gave --without-skill, not --without-motion
+    assert "constraints to relax: `without-skill pour`\n" in result.stderr
+
+
+def test_a_skill_ban_with_no_way_left_names_the_skill_once():
+    result = run("--goal", "french toast", "--skills", "--without-skill", "pour")
+    assert result.exit_code == 1, result.output
+    excluded = [line for line in result.stderr.splitlines() if "left by the constraints" in line]
+    assert not excluded or excluded[0].endswith("(without-skill pour)"), excluded
+    assert "without-motion" not in result.stderr, result.stderr
 
 
 MELT = """O	bowl	0

@@ -21,7 +21,7 @@ import itertools
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
-from ..model.constraints import Constraint, Kind, mentions
+from ..model.constraints import Constraint, Kind, describe_all, mentions
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from .constraints import Removal
@@ -139,6 +139,6 @@ def explain_blocked(rm: Removal, kitchen: Iterable[ObjectNode], goal: Goal,
             node = blocked_node(rm, kitchen, c, relax, tree(relax))
             target = repr(node.describe()) if node is not None else what
             parts.append(f"every way to make {target} needs `{c.describe()}`")
-    names = " + ".join(f"`{c.describe()}`" for c in relax)
+    names = " + ".join(f"`{d}`" for d in describe_all(relax))
     size = "smallest" if minimum else "an irredundant"
     return Blocking(relax, "; ".join(parts) + f"; {size} set of constraints to relax: {names}", minimum, checks)

@@ -44,10 +44,21 @@ class Constraint:
     kind: Kind
     value: str
     source: str = field(default="", compare=False)
+    skill: str = field(default="", compare=False)  # the lacking robot skill this motion ban stands for
 
     def describe(self) -> str:
-        """`without-motion pour`: how the constraint is spelled on the command line."""
-        return f"{self.kind.value} {self.value}"
+        """`without-motion pour` as the user spelled it: `without-skill pour` for a ban a lacking skill made."""
+        return f"without-skill {self.skill}" if self.skill else f"{self.kind.value} {self.value}"
+
+    def detail(self) -> str:
+        """`describe()`, naming the banned motion when a skill's ban is another motion (`without-skill pour
+        (motion fill)`), for lines that list each ban."""
+        return self.describe() + (f" (motion {self.value})" if self.skill and self.skill != self.value else "")
+
+
+def describe_all(constraints: Iterable[Constraint]) -> tuple[str, ...]:
+    """Each constraint's `describe()` once, in order: a skill's several motion bans read as one option."""
+    return tuple(dict.fromkeys(c.describe() for c in constraints))
 
 
 @dataclass(frozen=True)
@@ -93,7 +104,7 @@ def make_constraints(items: Iterable[Constraint] = (), rates: Iterable[tuple[str
         if value.endswith("*") and c.kind is Kind.WITHOUT_MOTION:
             value = value.removesuffix("*").strip()
         if value:
-            found.setdefault((c.kind, value), Constraint(c.kind, value, c.source))
+            found.setdefault((c.kind, value), replace(c, value=value))
     table: dict[str, float] = {}
     for motion, rate in rates:
         motion = normalize_label(motion).removesuffix("*").strip()

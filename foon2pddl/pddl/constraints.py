@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..analysis.constraints import Filtered, removal
-from ..model.constraints import Constraints, unit_uses
+from ..model.constraints import Constraints, describe_all, unit_uses
 from ..model.foon import Foon
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -37,7 +37,7 @@ def constrained_inputs(foon: Foon, kitchen: Kitchen, goal: Goal, constraints: Co
     cands = tuple(c for c in f.candidates if c in present)
     if not cands:
         raise GoalExcluded(f"no way to make {goal.describe()!r} is left by the constraints "
-                           f"({', '.join(c.describe() for c in constraints.bans) or 'none'})")
+                           f"({', '.join(describe_all(constraints.bans)) or 'none'})")
     return f.foon, Kitchen(f.kitchen, kitchen.level, kitchen.source), Goal(goal.spec, cands, goal.level)
 
 

@@ -149,7 +149,7 @@ def shaping(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, don
     base = retrieve(foon, kitchen_nodes(kitchen, foon.level), goal, method, rates=rates, **limits)
     index = {u.key: i for i, u in enumerate(foon.units)}
     units = base.tree.units if base.tree is not None else ()
-    return tuple(Shaping(c.describe(), len(gone), tuple(u for u in units if index[u.key] in gone))
+    return tuple(Shaping(c.detail(), len(gone), tuple(u for u in units if index[u.key] in gone))
                  for c, gone in sorted(done.removal.removed.items()))
 
 
@@ -163,9 +163,9 @@ def constraint_notes(removal: Removal) -> list[str]:
             parts.append(f"`{c.describe()}`: {n} units use it")
         else:
             n = len(removal.removed.get(c, ()))
-            parts.append(f"`{c.describe()}` removes {n} of {total} units")
+            parts.append(f"`{c.detail()}` removes {n} of {total} units")
         if not n:
-            warnings.append(f"warning: no unit of the network mentions {c.value!r} (`{c.describe()}`, "
+            warnings.append(f"warning: no unit of the network mentions {c.value!r} (`{c.detail()}`, "
                             f"from {c.source or 'the options'})")
     return (["constraints: " + "; ".join(parts)] if parts else []) + warnings
 

@@ -47,5 +47,7 @@ class Robot:
 
 
 def robot_constraints(table: MotionTable, robot: Robot, source: str = "<robot>") -> Constraints:
-    """`without-motion M` for every motion whose skill the robot lacks."""
-    return make_constraints(Constraint(Kind.WITHOUT_MOTION, m, source) for m in table.motions_of(robot.without))
+    """`without-motion M` for every motion whose skill the robot lacks, marked with the skill so that
+    messages name the option the user gave (`without-skill pour`)."""
+    return make_constraints(Constraint(Kind.WITHOUT_MOTION, m, source, s) for m, s in sorted(table.pairs)
+                            if robot.lacks(s))

@@ -56,11 +56,6 @@ class MotionTable:
         """The skill of a motion's steps that list no tool, or None (then the motion's own skill)."""
         return dict(self.hand_pairs).get(motion_key(motion))
 
-    def motions_of(self, skills: Iterable[str]) -> tuple[str, ...]:
-        """The motions that map to any of `skills`, sorted (what a robot without those skills cannot do)."""
-        wanted = set(skills)
-        return tuple(sorted(m for m, s in self.pairs if s in wanted))
-
     def check(self, domain: SkillDomain) -> None:
         """FoonSyntaxError when the table names a skill the domain does not define."""
         names = set(domain.by_name)
