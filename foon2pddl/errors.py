@@ -3,7 +3,8 @@
 - `FoonError`: every error reported to users (the CLI exits with status 2);
   it has a location (`path`, `line`) only when the problem is in a file.
 - `FoonSyntaxError`, `FoonInputError`: a file that breaks its format, input that
-  parses but cannot be used; both name `path:line` (line 0: not on a line).
+  parses but cannot be used; both name `path:line`, or `path` alone for the file as a whole
+  (line 0: missing, unreadable, of the wrong kind).
 - `UsageError` (also a `ValueError`): a bad argument or option value, no file.
 - `MissingDependencyError`: an optional part that is not installed (Fast
   Downward, WordNet, Graphviz, an extra), with the command that installs it.
@@ -21,7 +22,12 @@ from dataclasses import dataclass
 from types import ModuleType
 
 __all__ = ["FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
-           "PlanDecodeError", "UsageError", "require"]
+           "PlanDecodeError", "UsageError", "place", "require"]
+
+
+def place(path: str, line: int) -> str:
+    """`path:line`, or `path` alone for line 0 (the file as a whole: a missing file has no line)."""
+    return f"{path}:{line}" if line else path
 
 
 class FoonError(Exception):
@@ -39,8 +45,8 @@ class FoonError(Exception):
         super().__init__(message)
 
     def location(self) -> str | None:
-        """`path:line` (line 0 when the problem is not on a line), None when not in a file."""
-        return None if self.path is None else f"{self.path}:{self.line}"
+        """`path:line`, `path` when the problem is the file as a whole (line 0), None when not in a file."""
+        return None if self.path is None else place(self.path, self.line)
 
     def __str__(self) -> str:
         where = self.location()
@@ -112,4 +118,4 @@ class ParseWarning:
     message: str
 
     def __str__(self) -> str:
-        return f"{self.path}:{self.line}: warning: {self.message}"
+        return f"{place(self.path, self.line)}: warning: {self.message}"

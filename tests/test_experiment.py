@@ -138,7 +138,7 @@ def test_results_path_that_is_a_directory_is_a_clear_error(tmp_path):
     args = ["experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-complete",
             "-o", str(tmp_path), "--no-progress"]
     result = CliRunner().invoke(main, args)
-    assert result.exit_code == 2 and "results.jsonl:0: error:" in result.output and "Traceback" not in result.output
+    assert result.exit_code == 2 and "results.jsonl: error:" in result.output and "Traceback" not in result.output
     assert result.exception is None or isinstance(result.exception, SystemExit)
 
 
@@ -152,7 +152,7 @@ def test_results_without_a_readable_protocol_are_refused_unless_fresh(tmp_path):
         else:
             (tmp_path / "protocol.json").write_text("{not json")
         result = CliRunner().invoke(main, [*args, "--seed", "3"])
-        assert result.exit_code == 2 and "protocol.json:0: error:" in result.output and "--fresh" in result.output
+        assert result.exit_code == 2 and "protocol.json: error:" in result.output and "--fresh" in result.output
     result = CliRunner().invoke(main, [*args, "--seed", "3", "--fresh"])
     assert result.exit_code == 0 and "2 cells run, 0 reused" in result.output
 

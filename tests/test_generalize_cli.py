@@ -39,7 +39,7 @@ def test_user_overrides_extend_the_table(run, tmp_path):
     assert run("similarity", "cilantro", "banana", "--overrides", str(extra)).stdout == "0.5000\n"
     extra.write_text('{"senses": {"lemon": ["nope.n.01"]}}')
     wrong = run("similarity", "lemon", "lime", "--overrides", str(extra))
-    assert wrong.exit_code == 2 and wrong.stderr.startswith(f"{extra}:0: error: senses of 'lemon'")
+    assert wrong.exit_code == 2 and wrong.stderr.startswith(f"{extra}: error: senses of 'lemon'")
     extra.write_text('{"forbidden": [["lemon"]]}')
     bad = run("similarity", "lemon", "lime", "--overrides", str(extra))
     assert bad.exit_code == 2 and f"{extra}:" in bad.stderr and "forbidden" in bad.stderr

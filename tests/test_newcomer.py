@@ -325,8 +325,8 @@ def test_stats_skips_plainly_non_foon_files_and_invalid_ones_on_request(tmp_path
     (tmp_path / "net" / "notes.txt").write_text("shopping list\nlimes\n")
     plain = run("stats", tmp_path / "net")
     assert plain.exit_code == 0, plain.stderr
-    assert "rates.txt:0: warning: skipped: a motion success-rates file" in plain.output
-    assert "notes.txt:0: warning: skipped: no FOON text" in plain.output
+    assert "rates.txt: warning: skipped: a motion success-rates file" in plain.output
+    assert "notes.txt: warning: skipped: no FOON text" in plain.output
     (tmp_path / "net" / "broken.foon").write_text("O\tbowl\t0\nM\tmix\nX\tnonsense\n")
     stops = run("stats", tmp_path / "net")
     assert stops.exit_code == 2 and "broken.foon:3: error" in stops.stderr
@@ -622,3 +622,17 @@ def test_every_output_option_creates_its_missing_parent_directories(tmp_path, ar
     assert target.is_dir() if kind == "dir" else target.is_file()
     if kind == "dir":
         assert any(target.iterdir())
+
+
+@pytest.mark.parametrize("option", ["--kitchen", "--constraints", "--rates", "--goals"])
+def test_a_missing_input_file_is_named_without_a_line(tmp_path, option):
+    missing = tmp_path / "nope.json"
+    r = run("plan", "--goal", "guacamole", option, missing) if option != "--goals" else run("plan", option, missing)
+    assert r.exit_code == 2 and r.stderr == f"{missing}: error: no such file\n", r.output
+
+
+def test_a_missing_network_path_and_a_whole_file_problem_have_no_line(tmp_path):
+    r = run("stats", tmp_path / "nope.txt")
+    assert r.exit_code == 2 and r.stderr == f"{tmp_path / 'nope.txt'}: error: no such file or directory\n", r.output
+    r = run("plan", "--goal", "guacamole", "--kitchen", tmp_path)
+    assert r.exit_code == 2 and r.stderr == f"{tmp_path}: error: cannot read file: Is a directory\n", r.output

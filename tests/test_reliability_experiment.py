@@ -108,7 +108,7 @@ def test_deeply_nested_protocol_file_is_an_error_not_a_traceback(tmp_path):
     assert cli("experiment", *SMALL, "-o", tmp_path).exit_code == 0
     (tmp_path / "protocol.json").write_text("[" * 200_000)
     r = cli("experiment", *SMALL, "-o", tmp_path)
-    assert r.exit_code == 2 and f"{tmp_path / 'protocol.json'}:0: error: " in r.stderr, r.output
+    assert r.exit_code == 2 and f"{tmp_path / 'protocol.json'}: error: " in r.stderr, r.output
 
 
 # ---------------------------------------------------------------- 11, 15. missing extras: refused before any work

@@ -234,7 +234,7 @@ def test_fifo_is_refused_not_waited_on(tmp_path, where):
     proc = subprocess.run([sys.executable, "-m", "foon2pddl", *args], capture_output=True, text=True,
                           timeout=120, env=env)
     assert proc.returncode == 2, proc.stderr
-    assert f"{fifo}:0: error: not a regular file" in proc.stderr
+    assert f"{fifo}: error: not a regular file" in proc.stderr
     assert "Traceback" not in proc.stderr
 
 

@@ -151,7 +151,7 @@ def test_unwritable_output_fails_before_planning(tmp_path, command):
     for bad in ("/proc/nope/x.txt", str(blocker / "x.txt"), str(tmp_path)):
         r = run(*command, "-o", bad)
         assert r.exit_code == 2, (bad, r.output)
-        assert f"{bad}:0: error: cannot write" in r.stderr
+        assert f"{bad}: error: cannot write" in r.stderr
         assert "phases:" not in r.stderr and "units" not in r.stderr  # nothing ran
     ok = tmp_path / "new" / "dir" / "tree.txt"
     assert run(*command, "-o", str(ok)).exit_code == 0 and ok.is_file()

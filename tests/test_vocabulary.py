@@ -65,7 +65,7 @@ def test_error_hierarchy():
     assert usage.location() is None and str(usage) == "bad value"
     file_error = FoonSyntaxError("k.txt", 3, "expected a node", "O1 x")
     assert file_error.location() == "k.txt:3" and str(file_error) == "k.txt:3: expected a node\n    'O1 x'"
-    assert FoonInputError("dir", 0, "no files").location() == "dir:0"
+    assert FoonInputError("dir", 0, "no files").location() == "dir"  # the file as a whole: no line
     missing = MissingDependencyError("Graphviz 'dot' is not installed", "apt-get install graphviz")
     assert missing.hint == "apt-get install graphviz" and "apt-get install graphviz" in missing.message
     assert missing.location() is None
@@ -132,7 +132,7 @@ def test_option_errors_print_in_click_usage_style(args):
     result = run(*args)
     assert result.exit_code == 2
     assert "Traceback" not in result.output
-    assert ":0: error" not in result.stderr and "<" not in result.stderr.split("Error:")[-1][:1]
+    assert ": error" not in result.stderr and "<" not in result.stderr.split("Error:")[-1][:1]
     assert result.stderr.startswith("Usage: ") and "\nError: " in result.stderr, result.stderr
 
 
@@ -143,7 +143,7 @@ def test_file_errors_still_name_path_and_line(tmp_path):
     assert result.exit_code == 2
     assert result.stderr.startswith(f"{bad}:2: error: "), result.stderr
     result = run("stats", str(tmp_path / "missing"))
-    assert result.exit_code == 2 and result.stderr.startswith(f"{tmp_path / 'missing'}:0: error: ")
+    assert result.exit_code == 2 and result.stderr.startswith(f"{tmp_path / 'missing'}: error: ")
 
 
 @pytest.mark.parametrize(("module", "call", "extra"), [

@@ -117,7 +117,7 @@ def output_failed(exc: OSError) -> None:
         os.close(devnull)
     except (OSError, ValueError, AttributeError):
         pass
-    what = f"{exc.filename}:0: error: cannot write" if exc.filename else "Error: cannot write the output"
+    what = f"{exc.filename}: error: cannot write" if exc.filename else "Error: cannot write the output"
     try:
         click.echo(f"{what}: {exc.strerror or exc}", err=True)
     except OSError:

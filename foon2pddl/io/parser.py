@@ -43,6 +43,8 @@ def read_bytes(path: Path) -> bytes:
     (opened non-blocking, checked with fstat), so a FIFO never hangs a command."""
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except FileNotFoundError:
+        raise FoonInputError(str(path), 0, "no such file") from None
     except OSError as exc:
         raise FoonInputError(str(path), 0, f"cannot read file: {exc.strerror or exc}") from None
     try:
