@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonSyntaxError
 from foon2pddl.io.files import expand_paths
-from foon2pddl.io.foon_lines import parse_objects
+from foon2pddl.io.foon_lines import _classify, _parse_state, parse_objects, plain_state
 from foon2pddl.io.parser import _comment_head, _plain, _Reader, parse_file, parse_text
 from foon2pddl.io.writer import write_foon
 from foon2pddl.model.foon import State, make_node, make_state, node_table
@@ -397,6 +397,58 @@ def test_block_reader_reads_what_the_line_reader_reads(text):
     table, expected = fast.foon.table, node_table(slow.foon.units)
     assert (table.nodes, table.inputs, table.outputs) == (expected.nodes, expected.inputs, expected.outputs)
     assert [[table.nodes[i] for i in ids] for ids in table.inputs] == [list(u.inputs) for u in fast.foon.units]
+
+
+#: Fields of state lines: the usual shapes, and what sends a line to the field-by-field reader or makes it an error.
+_STATE_LABELS = st.sampled_from(["in", "Chopped", "a  b", " x ", "", " ", "\u00a0", "é", "İ", "x\x01", "[a]", "{a}", "#"])
+_STATE_EXTRAS = st.sampled_from(["[bowl]", "[ Bowl ]", "[ ]", "[]", "[a,b]", "[a,]", "{salt, Pepper,}", "{}", "{ , }",
+                                 "{a}x", "x", "", " {a}", "[bowl", "{a\x0bb}", "[\u00a0]", "{İ}"])
+
+
+@st.composite
+def state_lines(draw):
+    """`S<id>`, a label and up to three extra fields; sometimes a character inserted anywhere."""
+    raw = "\t".join([draw(st.sampled_from(["S", "S12", "S ", "s", "O"])), draw(_STATE_LABELS),
+                     *draw(st.lists(_STATE_EXTRAS, max_size=3))])
+    if draw(st.booleans()):
+        at = draw(st.integers(0, len(raw)))
+        raw = raw[:at] + draw(st.sampled_from(["\t", " ", ",", "[", "}", "\x1f", "\u2028"])) + raw[at:]
+    return raw
+
+
+@settings(max_examples=1000, deadline=None)
+@given(raw=state_lines())
+def test_plain_state_reads_what_the_field_reader_reads(raw):
+    """A state line `plain_state` reads is one the field-by-field reader (`_classify`, `_parse_state`) reads
+    without error, to the same state; any other line it leaves to that reader (None)."""
+    fast = plain_state(raw)
+
+    def fail(message):
+        return ValueError(message)
+
+    try:
+        entry = _classify(raw, fail)
+        slow = _parse_state(("S",) + entry[1], fail) if entry[0] == "S" else None
+    except ValueError:
+        slow = None
+    assert fast is None or (fast.label, fast.related, fast.ingredients) == (slow.label, slow.related, slow.ingredients)
+    if re.fullmatch(r"S\d*\t[a-z ]*[a-z][a-z ]*(\t\[ ?[a-z]+ ?\])?(\t\{[a-z ,]*\})?", raw):  # usual shapes are read
+        assert fast is not None
+
+
+def test_states_and_nodes_keep_their_hashes_across_pickling():
+    """States and nodes cache their hash; a pickle carries no hash (string hashes differ per process) and the
+    copy hashes and compares as the original."""
+    import pickle
+
+    state = make_state("Contains", "", ["b", "a"])
+    node = make_node("Bowl", [state, make_state("in", "sink")], motion_flag=1)
+    assert hash(state) == hash((state.label, state.related, state.ingredients))
+    assert hash(node) == hash((node.label, node.states))
+    for x in (state, node):
+        copy = pickle.loads(pickle.dumps(x))
+        assert b"_hash" not in pickle.dumps(x)
+        assert copy == x and hash(copy) == hash(x) and {copy: 1}[x] == 1
 
 
 def test_block_reader_takes_exported_networks_and_leaves_the_rest():

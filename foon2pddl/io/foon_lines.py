@@ -142,6 +142,25 @@ def _parse_state(fields: list[str] | tuple[str, ...], fail) -> State:
     return make_state(label, related, ingredients)
 
 
+#: A state line of the usual shapes (`S<id>`, a label, then at most a `[related]` and an `{ingredient, ...}`
+#: field, in that order, with no control character, stray space, bracket or brace): label, related, ingredients.
+_PLAIN_STATE = re.compile(r"S\d*\t([^\t\[\]{}\x00-\x1f\x7f]+)(?:\t\[([^\t\[\]{},\x00-\x1f\x7f]*)\])?"
+                          r"(?:\t\{([^\t\[\]{}\x00-\x1f\x7f]*)\})?")
+
+
+def plain_state(raw: str) -> State | None:
+    """The state of a state line of the usual shapes (`_PLAIN_STATE`), or None for any other line (which
+    `_classify` and `_parse_state` then read, or reject with their messages). One regular expression instead of
+    their field-by-field checks; the same state they make (`make_state` normalizes and sorts)."""
+    match = _PLAIN_STATE.fullmatch(raw)
+    if match is None:
+        return None
+    label, related, body = match.groups()
+    if not label.strip() or (related is not None and not related.strip()):
+        return None  # no label, or `[ ]`: the field-by-field reader says what it is
+    return make_state(label, related or "", body.split(",") if body else ())
+
+
 def _parse_motion(fields: list[str] | tuple[str, ...], fail) -> Motion:
     """`M<id> label [start end]` or `<start,end>` / `<Assumed>`; `label*` marks a composite unit."""
     label = fields[1]

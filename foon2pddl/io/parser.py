@@ -11,7 +11,6 @@ from __future__ import annotations
 import os
 import stat
 from dataclasses import dataclass
-from operator import itemgetter
 from pathlib import Path
 
 from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
@@ -26,7 +25,7 @@ from ..model.foon import (
     make_node,
     network_with_table,
 )
-from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state
+from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state, plain_state
 
 
 @dataclass(frozen=True)
@@ -96,9 +95,6 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
     reader.read(lines)
     return reader.finish(len(lines), text.endswith("\n"))
 
-
-#: A classified line's kind and fields (`_classify`), read in C.
-_KIND, _FIELDS = itemgetter(0), itemgetter(1)
 
 #: How a line of plain text starts, after the newline before it.
 _PLAIN_HEADS = ("\nO", "\nS", "\nM", "\n//")
@@ -201,35 +197,40 @@ class _Reader:
 
         A block is cut at its motion line and each side at its `O` lines with `str.split`; each object's
         text (its `O` line and state lines) is looked up whole, so a recurring object costs one dictionary
-        look-up, and a new one is read with the line reader's own checks and caches. The node numbers of
+        look-up; a new one looks its lines up, and a new state line is read by one regular expression
+        (`plain_state`) or, in an unusual shape, with the line reader's checks. The node numbers of
         `Foon.table` are assigned on the way (objects in order of first appearance).
         """
         objects: dict[str, tuple[ObjectNode, int]] = {}  # object text without its leading `O` -> node, number
         numbers: dict[ObjectNode, int] = {}
         motions: dict[str, Motion] = {}
+        heads: dict[str, tuple] = {}  # `O` line without its `O` -> its fields (`_classify`)
+        states: dict[str, State] = {}  # state line -> its state
+        nodes: dict[tuple, ObjectNode] = {}  # (`O` line fields, states) -> node
         units, ins_ids, outs_ids = self.units, [], []
         path = self.path
 
-        line_cache, state_cache, node_cache = self.line_cache, self.state_cache, self.node_cache
+        def new_state(raw: str) -> State:
+            state = plain_state(raw)
+            if state is None:  # an unusual shape: read field by field, with the line reader's checks
+                entry = _classify(raw, _not_plain)
+                if entry[0] != "S":
+                    raise _NotPlain
+                state = _parse_state(("S",) + entry[1], _not_plain)
+            states[raw] = state
+            return state
 
         def new_object(chunk: str) -> tuple[ObjectNode, int]:
-            raws = ("O" + chunk).split("\n")
-            entries = list(map(line_cache.get, raws))
-            if None in entries:
-                for k, raw in enumerate(raws):
-                    if entries[k] is None:
-                        entry = entries[k] = line_cache[raw] = _classify(raw, _not_plain)
-                        if entry[0] == "S" and entry[1] not in state_cache:
-                            state_cache[entry[1]] = _parse_state(("S",) + entry[1], _not_plain)
-            kinds = list(map(_KIND, entries))
-            if kinds[0] != "O" or kinds.count("S") != len(kinds) - 1:
-                raise _NotPlain
-            head = entries[0]
-            keys = tuple(map(_FIELDS, entries[1:]))
-            node = node_cache.get(key := (head, keys))  # shared with the line reader's objects
+            raws = chunk.split("\n")
+            head = heads.get(raws[0])
+            if head is None:
+                head = heads[raws[0]] = _classify("O" + raws[0], _not_plain)
+                if head[0] != "O":
+                    raise _NotPlain
+            made = tuple([states.get(raw) or new_state(raw) for raw in raws[1:]])
+            node = nodes.get(key := (head, made))  # one node per spelling of the same fields and states
             if node is None:
-                node = node_cache[key] = make_node(head[1], list(map(state_cache.__getitem__, keys)),
-                                                   motion_flag=head[2], goal=head[3], dish=head[4])
+                node = nodes[key] = make_node(head[1], made, motion_flag=head[2], goal=head[3], dish=head[4])
             found = objects[chunk] = (node, numbers.setdefault(node, len(numbers)))
             return found
 

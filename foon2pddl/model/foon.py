@@ -29,13 +29,41 @@ def normalize_label(text: str) -> str:
     return _WS.sub(" ", text).strip().lower()
 
 
+class _HashOnce:
+    """Base of the frozen dataclasses hashed constantly (states, nodes: sets, dict keys, unit keys): the hash of
+    `_identity()` (the generated dataclass hash's value) is computed once and kept as an attribute (set as one,
+    not through `__dict__`, which would materialize a dict per object); a pickle drops it (string hashes differ
+    per process). A dataclass replaces an inherited `__hash__`, so each class names this one in its body."""
+
+    def _identity(self) -> tuple:
+        raise NotImplementedError
+
+    def __hash__(self) -> int:
+        try:
+            return self._hash
+        except AttributeError:
+            value = hash(self._identity())
+            object.__setattr__(self, "_hash", value)
+            return value
+
+    def __getstate__(self) -> dict:
+        state = self.__dict__.copy()
+        state.pop("_hash", None)
+        return state
+
+
 @dataclass(frozen=True, order=True)
-class State:
+class State(_HashOnce):
     """A state of an object: `chopped`, `in [bowl]`, `contains {salt, water}`."""
 
     label: str
     related: str = ""
     ingredients: tuple[str, ...] = ()
+
+    __hash__ = _HashOnce.__hash__
+
+    def _identity(self) -> tuple:
+        return (self.label, self.related, self.ingredients)
 
     def describe(self) -> str:
         """Human-readable form, also the goal syntax for one state."""
@@ -48,7 +76,7 @@ class State:
 
 
 @dataclass(frozen=True, order=True)
-class ObjectNode:
+class ObjectNode(_HashOnce):
     """An object in a set of states. Equality is level-3 identity.
 
     `states` is kept sorted and duplicate-free by the constructors in this
@@ -62,21 +90,10 @@ class ObjectNode:
     goal: bool = field(default=False, compare=False)
     dish: int | None = field(default=None, compare=False)
 
-    def __hash__(self) -> int:
-        # Cached: nodes are hashed constantly (sets, dict keys, unit keys). Same value as
-        # the generated dataclass hash; dropped when pickling (string hashes differ per process).
-        # Set as an attribute, not through `self.__dict__`, which would materialize a dict per node.
-        try:
-            return self._hash
-        except AttributeError:
-            value = hash((self.label, self.states))
-            object.__setattr__(self, "_hash", value)
-            return value
+    __hash__ = _HashOnce.__hash__
 
-    def __getstate__(self) -> dict:
-        state = self.__dict__.copy()
-        state.pop("_hash", None)
-        return state
+    def _identity(self) -> tuple:
+        return (self.label, self.states)
 
     @cached_property
     def ingredients(self) -> frozenset[str]:
@@ -105,8 +122,15 @@ def make_node(
     goal: bool = False,
     dish: int | None = None,
 ) -> ObjectNode:
-    """Build a normalized node: label normalized, states sorted and deduplicated."""
-    return ObjectNode(normalize_label(label), tuple(sorted(set(states), key=_STATE_ORDER)), motion_flag, goal, dish)
+    """Build a normalized node: label normalized, states sorted and deduplicated. Its hash is computed here
+    (every node is hashed: in a network's table, sets, dict keys), which costs less than on first use."""
+    states = tuple(states)
+    if len(states) > 1:
+        states = tuple(sorted(set(states), key=_STATE_ORDER))
+    label = normalize_label(label)
+    node = ObjectNode(label, states, motion_flag, goal, dish)
+    object.__setattr__(node, "_hash", hash((label, states)))
+    return node
 
 
 _MOTION_LABEL = attrgetter("motion.label")
