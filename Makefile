@@ -23,6 +23,7 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q -e '.[test,gen,experiment]'
+	$(PY) -m compileall -q foon2pddl  # bytecode, as a wheel install writes it (PYTHONDONTWRITEBYTECODE would leave none)
 	touch $(STAMP)
 
 test: $(STAMP)

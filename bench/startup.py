@@ -7,10 +7,14 @@ Figures (medians over `ctx.repeat` interleaved runs of a fresh interpreter each)
   the CLI registered all commands eagerly), and the ratio eager / lazy;
 - the import time `-X importtime` reports for each (sum of the modules' own times), and how
   many modules each imports.
+The package's bytecode is written first, as installing a wheel or `make install` does: where
+PYTHONDONTWRITEBYTECODE is set and nothing compiled the package, every call compiles each module
+from source (stats FILE: 0.154 s CPU instead of 0.131 s, medians of 11 interleaved runs).
 """
 
 from __future__ import annotations
 
+import compileall
 import os
 import resource
 import statistics
@@ -63,6 +67,8 @@ def _import_time(argv: list[str]) -> tuple[float, int]:
 def run(ctx: Context) -> None:
     sample = sorted((ctx.shared / "foon-subgraphs").glob("*.txt"))[0]
     py = sys.executable
+    package = Path(__file__).resolve().parent.parent / "foon2pddl"
+    compileall.compile_dir(package, quiet=1)  # what an installed package has
     cases = {
         "python -c pass": [py, "-c", "pass"],
         "--version": [py, "-c", _RUN, "lazy", "--version"],
