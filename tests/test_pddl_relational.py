@@ -388,3 +388,90 @@ def test_an_object_in_a_holder_of_its_own_label_compiles_at_every_level():
         task = compile_goal(Foon((unit,)), Kitchen(frozenset({inner, n("spoon")})),
                             Goal(GoalSpec("bowl"), unit.outputs), "relational", level).task
         assert "bowl" in {x.label for x in task.instances}
+
+
+def _solve(units, kitchen_nodes, goal_node):
+    outcome = plan(Foon(tuple(units)), Kitchen(frozenset(kitchen_nodes)), Goal(GoalSpec(goal_node.label), (goal_node,)),
+                   "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    return outcome
+
+
+def test_an_object_its_only_holder_does_not_list_is_bound_late_and_reported():
+    # pancake batter: the bowl lists egg white and egg yolk, the mix takes `egg white and yolk (in [bowl])`,
+    # which no unit put into that bowl: FOON's words disagree, so the planner may take it from its own bowl
+    bowl = n("bowl", contains("egg white", "egg yolk", "flour"))
+    eggs, flour = n("egg white and yolk", inside("bowl")), n("flour", inside("bowl"))
+    white, yolk = n("egg white", inside("bowl")), n("egg yolk", inside("bowl"))
+    batter = n("pancake batter", inside("bowl"), make_state("raw"))
+    mix = FunctionalUnit((bowl, eggs, flour, white, yolk), Motion("mix"),
+                         (n("bowl", contains("pancake batter")), batter))
+    roles = relational_roles(mix)
+    assert roles[1].source.role is None and roles[2].source.role == 0  # flour is listed: its bowl is bound
+    assert ("bowl", "egg white and yolk") in {(c, x) for c, x, _ in list_gaps(mix)}
+    outcome = _solve([mix], [bowl, eggs, flour, white, yolk], batter)
+    assert outcome.trace.final["egg_white_and_yolk_1"].consumed
+    assert any("egg white and yolk is in [bowl], whose node before the unit does not list it" in x
+               for x in outcome.compiled.notes)
+
+
+def test_a_container_left_out_of_the_outputs_is_poured_out_whole():
+    # tuna sandwich: the bowl of tuna is poured into the bowl of mayonnaise; FOON gives one bowl as output
+    mayo_bowl, tuna_bowl = n("bowl", contains("mayonnaise")), n("bowl", contains("tuna"))
+    mayo, tuna = n("mayonnaise", inside("bowl")), n("tuna", inside("bowl"))
+    pour = FunctionalUnit((mayo_bowl, mayo, tuna_bowl), Motion("pour"), (n("bowl", contains("mayonnaise", "tuna")),))
+    spread = n("tuna spread", inside("bowl"))
+    mix = FunctionalUnit((n("bowl", contains("mayonnaise", "tuna")), mayo, tuna), Motion("mix"),
+                         (n("bowl", contains("tuna spread")), spread))
+    outcome = _solve([pour, mix], [mayo_bowl, tuna_bowl, mayo, tuna], spread)
+    final = outcome.trace.final
+    assert final["tuna_1"].consumed and final["mayonnaise_1"].consumed
+    empty = [b for b in ("bowl_1", "bowl_2") if final[b].node.describe() == "bowl (empty)"]
+    assert len(empty) == 1 and outcome.trace.contents(empty[0]) == ()
+
+
+def test_a_tool_leaving_an_unnamed_holder_for_no_place_moves_whole():
+    # orange juice: the squeezer on the surface ends `dirty`, a node with no place: it is the same squeezer
+    squeezer = n("squeezer", contains("orange juice"), make_state("on", "surface"))
+    juice, glass = n("orange juice", inside("squeezer")), n("drinking glass", "empty")
+    served = n("orange juice", inside("drinking glass"))
+    pour = FunctionalUnit((squeezer, juice, glass), Motion("pour"),
+                          (n("squeezer", "dirty"), n("drinking glass", contains("orange juice")), served))
+    squeeze = FunctionalUnit((n("squeezer", "clean", make_state("on", "surface")), n("orange", "halved")),
+                             Motion("squeeze"), (squeezer, juice, n("orange", "squeezed")))
+    surface = n("surface", contains("cutting board"))  # a node that says what a surface holds
+    outcome = _solve([squeeze, pour], [squeeze.inputs[0], squeeze.inputs[1], surface, glass], served)
+    ids = [o.id for o in outcome.trace.objects if o.label == "squeezer"]
+    assert ids == ["squeezer_1"] and outcome.trace.final["squeezer_1"].node == n("squeezer", "dirty")
+
+
+def test_all_that_leaves_a_pan_at_once_empties_it_of_all():
+    # beef enchiladas: the beef and the onion in the pan (which the unit does not name) become the filling
+    pan = n("cooking pan", contains("ground beef", "onion"))
+    beef, onion = n("ground beef", "cooked", inside("pan")), n("onion", "chopped", inside("pan"))
+    fill = n("meat mix", contains("ground beef", "onion"), make_state("on", "tortilla"))
+    put = FunctionalUnit((n("cooking pan", "empty"), n("ground beef", "raw")), Motion("pick-and-place"),
+                         (n("cooking pan", contains("ground beef")), n("ground beef", inside("pan"))))
+    fry = FunctionalUnit((n("cooking pan", contains("ground beef")), n("ground beef", inside("pan")),
+                          n("onion", "chopped")), Motion("fry"), (pan, beef, onion))
+    place_ = FunctionalUnit((n("tortilla", "plain"), beef, onion), Motion("pick-and-place"),
+                            (n("tortilla", contains("meat mix")), fill))
+    start = [*put.inputs, fry.inputs[2], place_.inputs[0]]
+    outcome = _solve([put, fry, place_], start, fill)
+    assert outcome.trace.final["cooking_pan_1"].node.describe() == "cooking pan (empty)"
+
+
+def test_everything_of_a_label_in_the_mixing_bowl_goes_into_the_mixture():
+    # coleslaw dressing: two sugars in the bowl (FOON's counts), the mix lists the dressing alone after it
+    bowl = n("bowl", contains("sugar", "vinegar"))
+    sugar, vinegar = n("sugar", inside("bowl")), n("vinegar", inside("bowl"))
+    dressing = n("salad dressing", inside("bowl"))
+    mix = FunctionalUnit((bowl, sugar, vinegar), Motion("mix"), (n("bowl", contains("salad dressing")), dressing))
+    stir = FunctionalUnit((bowl, sugar), Motion("stir"), (bowl, sugar))
+    outcome = plan(Foon((stir, mix)), Kitchen(frozenset({bowl, sugar, vinegar}), counts=((sugar, 2),)),
+                   Goal(GoalSpec("salad dressing"), (dressing,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok
+    assert all(s.consumed for i, s in outcome.trace.final.items() if i.startswith("sugar_"))

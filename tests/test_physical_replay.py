@@ -252,6 +252,9 @@ def test_holder_not_bound():
     report = replay(w.trace())
     assert [d.kind for d in report.disagreements] == [K.HOLDER_NOT_BOUND]
     assert report.disagreements[0].objects == ("onion_1", "bowl_1", "bowl_2")
+    # a pair the task reports as FOON contradicting itself (the unit's only bowl lists no onion) is not owed
+    assert replay(replace(w.trace(), gaps=(("bowl", "onion"),))).ok
+    assert not replay(replace(w.trace(), gaps=(("bowl", "salt"),))).ok
 
 
 def test_persisting_disagreement_reported_once_but_counted_per_step():

@@ -6,7 +6,7 @@
 ; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
-(define (domain foon-relational-49314cd0)
+(define (domain foon-relational-6d0af126)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -249,6 +249,11 @@
       (not (is ?vanilla_extract vanilla_extract_in_bowl))
       (not (in ?bowl ?vanilla_extract))
       (not (is ?custard not-yet-made))
+      (forall (?egg_alike - egg) (when (and (in ?bowl ?egg_alike) (is ?egg_alike egg_beaten_in_bowl)) (and (is ?egg_alike consumed) (not (in ?bowl ?egg_alike)) (not (is ?egg_alike egg_beaten_in_bowl)))))
+      (forall (?egg_alike-2 - egg) (when (and (in ?bowl ?egg_alike-2) (is ?egg_alike-2 egg_cracked_in_bowl)) (and (is ?egg_alike-2 consumed) (not (in ?bowl ?egg_alike-2)) (not (is ?egg_alike-2 egg_cracked_in_bowl)))))
+      (forall (?milk_alike - milk) (when (and (in ?bowl ?milk_alike) (is ?milk_alike milk_in_bowl)) (and (is ?milk_alike consumed) (not (in ?bowl ?milk_alike)) (not (is ?milk_alike milk_in_bowl)))))
+      (forall (?cinnamon_alike - cinnamon) (when (and (in ?bowl ?cinnamon_alike) (is ?cinnamon_alike cinnamon_in_bowl)) (and (is ?cinnamon_alike consumed) (not (in ?bowl ?cinnamon_alike)) (not (is ?cinnamon_alike cinnamon_in_bowl)))))
+      (forall (?vanilla_extract_alike - vanilla_extract) (when (and (in ?bowl ?vanilla_extract_alike) (is ?vanilla_extract_alike vanilla_extract_in_bowl)) (and (is ?vanilla_extract_alike consumed) (not (in ?bowl ?vanilla_extract_alike)) (not (is ?vanilla_extract_alike vanilla_extract_in_bowl)))))
     )
   )
 
@@ -316,6 +321,7 @@
       (not (in ?frying_pan ?bread))
       (not (is ?french_toast not-yet-made))
       (forall (?custard_in_bread - custard) (when (and (in ?bread ?custard_in_bread) (is ?custard_in_bread custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)) (and (is ?custard_in_bread consumed) (not (in ?bread ?custard_in_bread)) (not (is ?custard_in_bread custard_contains_cinnamon_egg_milk_vanilla_extract_in_bread)))))
+      (forall (?bread_alike - bread) (when (and (in ?frying_pan ?bread_alike) (is ?bread_alike bread_in_frying_pan_sliced_soaked_custard)) (and (is ?bread_alike consumed) (not (in ?frying_pan ?bread_alike)) (not (is ?bread_alike bread_in_frying_pan_sliced_soaked_custard)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )

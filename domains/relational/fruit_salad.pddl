@@ -4,7 +4,7 @@
 ; instances: 20 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 2, honey 2, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
 ; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
-(define (domain foon-relational-888549f3)
+(define (domain foon-relational-f9d848dc)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -370,6 +370,10 @@
       (not (is ?honey honey_in_bowl))
       (not (in ?bowl ?honey))
       (not (is ?fruit_salad not-yet-made))
+      (forall (?strawberry_alike - strawberry) (when (and (in ?bowl ?strawberry_alike) (is ?strawberry_alike strawberry_in_bowl_sliced)) (and (is ?strawberry_alike consumed) (not (in ?bowl ?strawberry_alike)) (not (is ?strawberry_alike strawberry_in_bowl_sliced)))))
+      (forall (?banana_alike - banana) (when (and (in ?bowl ?banana_alike) (is ?banana_alike banana_in_bowl_sliced)) (and (is ?banana_alike consumed) (not (in ?bowl ?banana_alike)) (not (is ?banana_alike banana_in_bowl_sliced)))))
+      (forall (?lime_juice_alike - lime_juice) (when (and (in ?bowl ?lime_juice_alike) (is ?lime_juice_alike lime_juice_in_bowl)) (and (is ?lime_juice_alike consumed) (not (in ?bowl ?lime_juice_alike)) (not (is ?lime_juice_alike lime_juice_in_bowl)))))
+      (forall (?honey_alike - honey) (when (and (in ?bowl ?honey_alike) (is ?honey_alike honey_in_bowl)) (and (is ?honey_alike consumed) (not (in ?bowl ?honey_alike)) (not (is ?honey_alike honey_in_bowl)))))
     )
   )
 
@@ -398,6 +402,8 @@
       (not (is ?sugar sugar_in_mixing_bowl))
       (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
+      (forall (?heavy_cream_alike - heavy_cream) (when (and (in ?mixing_bowl ?heavy_cream_alike) (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)) (and (is ?heavy_cream_alike consumed) (not (in ?mixing_bowl ?heavy_cream_alike)) (not (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)))))
+      (forall (?sugar_alike - sugar) (when (and (in ?mixing_bowl ?sugar_alike) (is ?sugar_alike sugar_in_mixing_bowl)) (and (is ?sugar_alike consumed) (not (in ?mixing_bowl ?sugar_alike)) (not (is ?sugar_alike sugar_in_mixing_bowl)))))
     )
   )
 

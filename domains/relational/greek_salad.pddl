@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 17 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 2, onion 1, oregano 1, red wine vinegar 2, salad tongs 1, tomato 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3 takes one out of that state and no unit puts one back
-(define (domain foon-relational-90565df4)
+(define (domain foon-relational-963d113e)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -173,7 +173,6 @@
     :effect (and
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
       (is ?onion onion_chopped_in_bowl)
-      (occupied onion_chopped_in_bowl)
       (in ?bowl ?onion)
       (not (is ?bowl bowl_contains_avocado_lime_juice))
       (not (is ?onion onion_chopped_on_cutting_board))
@@ -439,6 +438,15 @@
       (not (is ?oregano oregano_in_bowl))
       (not (in ?bowl ?oregano))
       (not (is ?greek_salad not-yet-made))
+      (forall (?cucumber_alike - cucumber) (when (and (in ?bowl ?cucumber_alike) (is ?cucumber_alike cucumber_in_bowl_sliced)) (and (is ?cucumber_alike consumed) (not (in ?bowl ?cucumber_alike)) (not (is ?cucumber_alike cucumber_in_bowl_sliced)))))
+      (forall (?tomato_alike - tomato) (when (and (in ?bowl ?tomato_alike) (is ?tomato_alike tomato_chopped_in_bowl)) (and (is ?tomato_alike consumed) (not (in ?bowl ?tomato_alike)) (not (is ?tomato_alike tomato_chopped_in_bowl)))))
+      (forall (?onion_alike - onion) (when (and (in ?bowl ?onion_alike) (is ?onion_alike onion_chopped_in_bowl)) (and (is ?onion_alike consumed) (not (in ?bowl ?onion_alike)) (not (is ?onion_alike onion_chopped_in_bowl)))))
+      (forall (?onion_alike-2 - onion) (when (and (in ?bowl ?onion_alike-2) (is ?onion_alike-2 onion_in_bowl_sliced)) (and (is ?onion_alike-2 consumed) (not (in ?bowl ?onion_alike-2)) (not (is ?onion_alike-2 onion_in_bowl_sliced)))))
+      (forall (?black_olive_alike - black_olive) (when (and (in ?bowl ?black_olive_alike) (is ?black_olive_alike black_olive_in_bowl_pitted)) (and (is ?black_olive_alike consumed) (not (in ?bowl ?black_olive_alike)) (not (is ?black_olive_alike black_olive_in_bowl_pitted)))))
+      (forall (?feta_cheese_alike - feta_cheese) (when (and (in ?bowl ?feta_cheese_alike) (is ?feta_cheese_alike feta_cheese_crumbled_in_bowl)) (and (is ?feta_cheese_alike consumed) (not (in ?bowl ?feta_cheese_alike)) (not (is ?feta_cheese_alike feta_cheese_crumbled_in_bowl)))))
+      (forall (?olive_oil_alike - olive_oil) (when (and (in ?bowl ?olive_oil_alike) (is ?olive_oil_alike olive_oil_in_bowl)) (and (is ?olive_oil_alike consumed) (not (in ?bowl ?olive_oil_alike)) (not (is ?olive_oil_alike olive_oil_in_bowl)))))
+      (forall (?red_wine_vinegar_alike - red_wine_vinegar) (when (and (in ?bowl ?red_wine_vinegar_alike) (is ?red_wine_vinegar_alike red_wine_vinegar_in_bowl)) (and (is ?red_wine_vinegar_alike consumed) (not (in ?bowl ?red_wine_vinegar_alike)) (not (is ?red_wine_vinegar_alike red_wine_vinegar_in_bowl)))))
+      (forall (?oregano_alike - oregano) (when (and (in ?bowl ?oregano_alike) (is ?oregano_alike oregano_in_bowl)) (and (is ?oregano_alike consumed) (not (in ?bowl ?oregano_alike)) (not (is ?oregano_alike oregano_in_bowl)))))
     )
   )
 

@@ -5,7 +5,7 @@
 ; objects: 2 x avocado (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
 ; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
-(define (domain foon-relational-1ce9e543)
+(define (domain foon-relational-a7a81448)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -470,6 +470,13 @@
       (not (is ?salt salt_in_bowl))
       (not (in ?bowl ?salt))
       (not (is ?guacamole not-yet-made))
+      (forall (?avocado_alike - avocado) (when (and (in ?bowl ?avocado_alike) (is ?avocado_alike avocado_in_bowl_mashed)) (and (is ?avocado_alike consumed) (not (in ?bowl ?avocado_alike)) (not (is ?avocado_alike avocado_in_bowl_mashed)))))
+      (forall (?avocado_alike-2 - avocado) (when (and (in ?bowl ?avocado_alike-2) (is ?avocado_alike-2 avocado_in_bowl_scooped)) (and (is ?avocado_alike-2 consumed) (not (in ?bowl ?avocado_alike-2)) (not (is ?avocado_alike-2 avocado_in_bowl_scooped)))))
+      (forall (?lime_juice_alike - lime_juice) (when (and (in ?bowl ?lime_juice_alike) (is ?lime_juice_alike lime_juice_in_bowl)) (and (is ?lime_juice_alike consumed) (not (in ?bowl ?lime_juice_alike)) (not (is ?lime_juice_alike lime_juice_in_bowl)))))
+      (forall (?onion_alike - onion) (when (and (in ?bowl ?onion_alike) (is ?onion_alike onion_chopped_in_bowl)) (and (is ?onion_alike consumed) (not (in ?bowl ?onion_alike)) (not (is ?onion_alike onion_chopped_in_bowl)))))
+      (forall (?tomato_alike - tomato) (when (and (in ?bowl ?tomato_alike) (is ?tomato_alike tomato_chopped_in_bowl)) (and (is ?tomato_alike consumed) (not (in ?bowl ?tomato_alike)) (not (is ?tomato_alike tomato_chopped_in_bowl)))))
+      (forall (?cilantro_alike - cilantro) (when (and (in ?bowl ?cilantro_alike) (is ?cilantro_alike cilantro_chopped_in_bowl)) (and (is ?cilantro_alike consumed) (not (in ?bowl ?cilantro_alike)) (not (is ?cilantro_alike cilantro_chopped_in_bowl)))))
+      (forall (?salt_alike - salt) (when (and (in ?bowl ?salt_alike) (is ?salt_alike salt_in_bowl)) (and (is ?salt_alike consumed) (not (in ?bowl ?salt_alike)) (not (is ?salt_alike salt_in_bowl)))))
     )
   )
 

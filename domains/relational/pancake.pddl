@@ -4,7 +4,7 @@
 ; instances: 20 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
-(define (domain foon-relational-81f11047)
+(define (domain foon-relational-c742d0e1)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -287,6 +287,12 @@
       (not (is ?milk milk_in_mixing_bowl))
       (not (in ?mixing_bowl ?milk))
       (not (is ?pancake_batter not-yet-made))
+      (forall (?flour_alike - flour) (when (and (in ?mixing_bowl ?flour_alike) (is ?flour_alike flour_in_mixing_bowl)) (and (is ?flour_alike consumed) (not (in ?mixing_bowl ?flour_alike)) (not (is ?flour_alike flour_in_mixing_bowl)))))
+      (forall (?baking_powder_alike - baking_powder) (when (and (in ?mixing_bowl ?baking_powder_alike) (is ?baking_powder_alike baking_powder_in_mixing_bowl)) (and (is ?baking_powder_alike consumed) (not (in ?mixing_bowl ?baking_powder_alike)) (not (is ?baking_powder_alike baking_powder_in_mixing_bowl)))))
+      (forall (?sugar_alike - sugar) (when (and (in ?mixing_bowl ?sugar_alike) (is ?sugar_alike sugar_in_mixing_bowl)) (and (is ?sugar_alike consumed) (not (in ?mixing_bowl ?sugar_alike)) (not (is ?sugar_alike sugar_in_mixing_bowl)))))
+      (forall (?salt_alike - salt) (when (and (in ?mixing_bowl ?salt_alike) (is ?salt_alike salt_in_mixing_bowl)) (and (is ?salt_alike consumed) (not (in ?mixing_bowl ?salt_alike)) (not (is ?salt_alike salt_in_mixing_bowl)))))
+      (forall (?egg_alike - egg) (when (and (in ?mixing_bowl ?egg_alike) (is ?egg_alike egg_cracked_in_mixing_bowl)) (and (is ?egg_alike consumed) (not (in ?mixing_bowl ?egg_alike)) (not (is ?egg_alike egg_cracked_in_mixing_bowl)))))
+      (forall (?milk_alike - milk) (when (and (in ?mixing_bowl ?milk_alike) (is ?milk_alike milk_in_mixing_bowl)) (and (is ?milk_alike consumed) (not (in ?mixing_bowl ?milk_alike)) (not (is ?milk_alike milk_in_mixing_bowl)))))
     )
   )
 
@@ -336,6 +342,7 @@
       (not (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan))
       (not (in ?frying_pan ?pancake_batter))
       (not (is ?pancake not-yet-made))
+      (forall (?pancake_batter_alike - pancake_batter) (when (and (in ?frying_pan ?pancake_batter_alike) (is ?pancake_batter_alike pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)) (and (is ?pancake_batter_alike consumed) (not (in ?frying_pan ?pancake_batter_alike)) (not (is ?pancake_batter_alike pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )

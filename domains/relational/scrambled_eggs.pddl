@@ -5,7 +5,7 @@
 ; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
-(define (domain foon-relational-5d4ffbe2)
+(define (domain foon-relational-4c06a5ab)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -181,6 +181,11 @@
       (not (is ?black_pepper black_pepper_in_bowl))
       (not (in ?bowl ?black_pepper))
       (not (is ?egg_mixture not-yet-made))
+      (forall (?egg_alike - egg) (when (and (in ?bowl ?egg_alike) (is ?egg_alike egg_beaten_in_bowl)) (and (is ?egg_alike consumed) (not (in ?bowl ?egg_alike)) (not (is ?egg_alike egg_beaten_in_bowl)))))
+      (forall (?egg_alike-2 - egg) (when (and (in ?bowl ?egg_alike-2) (is ?egg_alike-2 egg_cracked_in_bowl)) (and (is ?egg_alike-2 consumed) (not (in ?bowl ?egg_alike-2)) (not (is ?egg_alike-2 egg_cracked_in_bowl)))))
+      (forall (?milk_alike - milk) (when (and (in ?bowl ?milk_alike) (is ?milk_alike milk_in_bowl)) (and (is ?milk_alike consumed) (not (in ?bowl ?milk_alike)) (not (is ?milk_alike milk_in_bowl)))))
+      (forall (?salt_alike - salt) (when (and (in ?bowl ?salt_alike) (is ?salt_alike salt_in_bowl)) (and (is ?salt_alike consumed) (not (in ?bowl ?salt_alike)) (not (is ?salt_alike salt_in_bowl)))))
+      (forall (?black_pepper_alike - black_pepper) (when (and (in ?bowl ?black_pepper_alike) (is ?black_pepper_alike black_pepper_in_bowl)) (and (is ?black_pepper_alike consumed) (not (in ?bowl ?black_pepper_alike)) (not (is ?black_pepper_alike black_pepper_in_bowl)))))
     )
   )
 
@@ -290,6 +295,7 @@
       (not (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan))
       (not (in ?frying_pan ?egg_mixture))
       (not (is ?scrambled_eggs not-yet-made))
+      (forall (?egg_mixture_alike - egg_mixture) (when (and (in ?frying_pan ?egg_mixture_alike) (is ?egg_mixture_alike egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)) (and (is ?egg_mixture_alike consumed) (not (in ?frying_pan ?egg_mixture_alike)) (not (is ?egg_mixture_alike egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_solid)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_solid)))))
     )

@@ -8,7 +8,7 @@
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; objects: 2 x tomato (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
-(define (domain foon-relational-92581e52)
+(define (domain foon-relational-2483e756)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -323,6 +323,11 @@
       (not (is ?vegetable_broth vegetable_broth_in_pot))
       (not (in ?pot ?vegetable_broth))
       (not (is ?tomato_soup not-yet-made))
+      (forall (?olive_oil_alike - olive_oil) (when (and (in ?pot ?olive_oil_alike) (is ?olive_oil_alike olive_oil_in_pot)) (and (is ?olive_oil_alike consumed) (not (in ?pot ?olive_oil_alike)) (not (is ?olive_oil_alike olive_oil_in_pot)))))
+      (forall (?onion_alike - onion) (when (and (in ?pot ?onion_alike) (is ?onion_alike onion_chopped_in_pot)) (and (is ?onion_alike consumed) (not (in ?pot ?onion_alike)) (not (is ?onion_alike onion_chopped_in_pot)))))
+      (forall (?onion_alike-2 - onion) (when (and (in ?pot ?onion_alike-2) (is ?onion_alike-2 onion_in_pot_sauteed)) (and (is ?onion_alike-2 consumed) (not (in ?pot ?onion_alike-2)) (not (is ?onion_alike-2 onion_in_pot_sauteed)))))
+      (forall (?tomato_alike - tomato) (when (and (in ?pot ?tomato_alike) (is ?tomato_alike tomato_chopped_in_pot)) (and (is ?tomato_alike consumed) (not (in ?pot ?tomato_alike)) (not (is ?tomato_alike tomato_chopped_in_pot)))))
+      (forall (?vegetable_broth_alike - vegetable_broth) (when (and (in ?pot ?vegetable_broth_alike) (is ?vegetable_broth_alike vegetable_broth_in_pot)) (and (is ?vegetable_broth_alike consumed) (not (in ?pot ?vegetable_broth_alike)) (not (is ?vegetable_broth_alike vegetable_broth_in_pot)))))
     )
   )
 

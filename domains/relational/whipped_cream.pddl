@@ -2,8 +2,8 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 8 (bowl 1, heavy cream 2, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-relational-a6d76673)
-  (:requirements :strips :typing)
+(define (domain foon-relational-733e9be4)
+  (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
     object-state - object
@@ -128,6 +128,8 @@
       (not (is ?sugar sugar_in_mixing_bowl))
       (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
+      (forall (?heavy_cream_alike - heavy_cream) (when (and (in ?mixing_bowl ?heavy_cream_alike) (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)) (and (is ?heavy_cream_alike consumed) (not (in ?mixing_bowl ?heavy_cream_alike)) (not (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)))))
+      (forall (?sugar_alike - sugar) (when (and (in ?mixing_bowl ?sugar_alike) (is ?sugar_alike sugar_in_mixing_bowl)) (and (is ?sugar_alike consumed) (not (in ?mixing_bowl ?sugar_alike)) (not (is ?sugar_alike sugar_in_mixing_bowl)))))
     )
   )
 

@@ -49,7 +49,7 @@ from ..model.foon import Foon, ObjectNode, make_node
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
-from ..model.places import describes_contents, place_of, places
+from ..model.places import describes_contents, listed, place_of, places
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -142,8 +142,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     nodes.update(x.start for x in instances if x.start is not None)
     ways = {u: flow_ways(plans[u], nodes, alias) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
-    empties = {u: late_empties(plans[u], nodes, alias) for u in units}
-    nodes.update(n for e in empties.values() for lst in e.values() for _, n in lst)
+    while True:  # to a fixpoint: a holder emptied of one thing (salt) may be emptied of the next (pepper)
+        empties = {u: late_empties(plans[u], nodes, alias) for u in units}
+        grown = {n for e in empties.values() for lst in e.values() for _, n in lst} - nodes
+        if not grown:
+            break
+        nodes.update(grown)
     type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
@@ -165,6 +169,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         left.update(n for lst in ways[u].values() for n, _, _ in lst)
         left.update(n for lst in empties[u].values() for n, _ in lst)
         left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
+        left.update(n for s in p.slots for n, _ in _alike(p, s, inside))
     stable = {n for n in const if n not in left}
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
@@ -199,6 +204,19 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         gaps=tuple(sorted(pairs)),
     )
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why)
+
+
+def _alike(plan: UnitPlan, s, inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
+    """For a slot consumed out of a holder role whose node after the unit no longer lists its label: the nodes
+    of that label placed in holders of that label (any other such object in that holder is consumed too)."""
+    src = s.rel.source
+    if s.fate is not Fate.CONSUMED or src is None or src.role is None:
+        return []
+    after = plan.after_of(src.role)
+    label = s.rel.role.label
+    if after is None or not describes_contents(after) or label in listed(after):
+        return []
+    return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
 
 
 def _where(unit, path=str) -> str:
@@ -312,6 +330,12 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                     there, was = Atom(rel.value, (v, c)), Atom(IS, (c, const[node]))
                     cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
                                             var=c, type=type_of[node.label]))
+            for node, rel in _alike(plan, s, inside):  # all of its label in that holder went into the mixture
+                if node.label in type_of and bound[r.source.role]:
+                    c = f"?{names.name(f'{label} alike', key=('alike', k, node))}"
+                    there, was = Atom(rel.value, (var[r.source.role], c)), Atom(IS, (c, const[node]))
+                    cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
+                                            var=c, type=type_of[label]))
         elif after is not None and after != before:
             becomes(v, before, after)
         src, dst = r.source, r.target
@@ -322,7 +346,8 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 add.append(Atom(dst.relation.value, (var[src.role], v)))
         if s.fate in (Fate.MOVES, Fate.CONSUMED) and src is not None:
             h = None
-            if (src.role is not None and bound[src.role]) or (src.role is None and s.fate is Fate.CONSUMED):
+            if (src.role is not None and bound[src.role]) or (src.role is None and s.fate is Fate.CONSUMED
+                                                               and not s.late_empties):
                 h = holder_var(src, label, k)
             fact = Atom(src.relation.value, (h, v)) if h is not None else None
             if fact is not None:

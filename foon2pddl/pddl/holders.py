@@ -25,7 +25,10 @@ Rules, in order (each reads only the unit itself):
    (before the unit: read from the input nodes; after it: from the output nodes,
    or the input node of a role the unit leaves unchanged) is, among the unit's
    other roles of label C: the first whose node on that side lists L; else the
-   only one; else none: bound late (the planner chooses which C).
+   only one; else none: bound late (the planner chooses which C). Before the unit,
+   a C whose node lists its contents without L is no candidate: FOON's words
+   disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains
+   {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
 3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of
    heavy cream gives `mixing bowl (contains {heavy cream})` as output but not the
    cream. A role of label L with no output node moves when another role's output
@@ -48,9 +51,13 @@ Rules, in order (each reads only the unit itself):
    input node lists, with no role of that label: what is of that label in it
    follows into the role whose output node newly lists it (`Flow.into`), or became
    part of the mixture (`Flow.into` None; also when that role is a product the unit makes).
-6. **Contradictions** (`list_gaps`): a product placed in a container whose output
-   node describes its contents and does not list it, and a label an output node
-   newly lists that no role of the unit is. No plan can satisfy both words, so the
+   A container FOON leaves out of the outputs, whose contents another role's output
+   node newly lists, was poured out whole (`bowl (contains {tuna})` into the bowl of
+   mayonnaise): its contents follow, and the task empties it.
+6. **Contradictions** (`list_gaps`): an object in a C whose only C does not list it
+   (rule 2), a product placed in a container whose output node describes its
+   contents and does not list it, and a label an output node newly lists that no
+   role of the unit is. No plan can satisfy both words, so the
    task reports them and its replay does not check that pair.
 
 What stays ambiguous: several holders of one label that all list L (the first
@@ -171,13 +178,15 @@ def _aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | Non
 
 
 def _holder(labels: list[str], nodes: list[ObjectNode | None], me: int, label: str,
-            place: tuple[Relation, str] | None) -> Place | None:
+            place: tuple[Relation, str] | None, strict: bool = False) -> Place | None:
     """Rule 2: the role holding role `me` (of `label`) at `place`, read from `nodes` (one side of the unit)."""
     if place is None:
         return None
     rel, holder = place
     mine = [k for k, lab in enumerate(labels) if k != me and lab == holder and nodes[k] is not None]
     listing = [k for k in mine if label in listed(nodes[k])]
+    if not listing and strict:  # the only holder of its label lists what it holds, and not this: FOON's words
+        mine = [k for k in mine if not describes_contents(nodes[k])]  # disagree, so bind it late
     pick = listing[0] if listing else (mine[0] if len(mine) == 1 else None)
     return Place(rel, holder, pick)
 
@@ -226,7 +235,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
     made_in = {place_of(after[k]) for k, r in enumerate(roles) if r.before is None and place_of(after[k])}
     result = []
     for k, r in enumerate(roles):
-        src = _holder(labels, list(before), k, r.label, place_of(before[k])) if r.before is not None else None
+        src = _holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None
         dst = _holder(labels, read_after, k, r.label, place_of(read_after[k]))
         if r.before is None:
             result.append(RelRole(r, r.after, Fate.NEW, None, dst))
@@ -268,7 +277,14 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
     labels = {r.label for r in roles}
     out = []
     for h, r in enumerate(roles):
-        if r.after is None or r.before is None or not describes_contents(after[h]):
+        if r.before is None or not describes_contents(after[h]):
+            continue
+        if r.after is None:  # a container poured out whole: what another role's output node newly lists follows
+            for lab in sorted(listed(before[h]) - labels):
+                into = [j for j, x in enumerate(roles) if j != h and x.after is not None and x.before is not None
+                        and lab in listed(after[j]) - listed(before[j])]
+                if into:
+                    out.append(Flow(lab, h, into[0]))
             continue
         for lab in sorted(listed(before[h]) - listed(after[h]) - labels):
             into = [j for j, x in enumerate(roles) if j != h and x.after is not None
@@ -296,7 +312,8 @@ def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
 def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     """Rule 6: where the unit's own output nodes contradict each other about a container's contents.
 
-    (container label, content label, message) for: an output node placed `in [C]`/`on [C]` while C's output
+    (container label, content label, message) for: an input node placed `in [C]` whose only C lists its
+    contents without it (rule 2 binds it late); an output node placed `in [C]`/`on [C]` while C's output
     node describes its contents and does not list it (`salad (in [salad bowl])` and `carrot salad (in [salad
     bowl])` made, the bowl `contains {salad}`); and a label C's output node newly lists that no role of the
     unit is, nor is read as (rule 0). No plan can satisfy both words, so the task reports them and its replay
@@ -316,6 +333,14 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
         if holders and not any(label in listed(n) for n in holders):
             out.append((place[1], label, f"{label} is {place[0]} [{place[1]}], whose node after the unit does not "
                         "list it"))
+    for k, r in enumerate(roles):  # rule 2: the only holder the unit has lists its contents without it
+        src = _holder([x.label for x in roles], list(read.before), k, r.label, place_of(read.before[k]), True)
+        mine = [j for j, x in enumerate(roles) if j != k and src is not None and x.label == src.holder
+                and read.before[j] is not None]
+        if r.before is not None and src is not None and src.role is None and mine and all(
+                describes_contents(read.before[j]) for j in mine):
+            out.append((src.holder, r.label, f"{r.label} is {src.relation} [{src.holder}], whose node before the "
+                        "unit does not list it: which one holds it is left to the plan"))
     for k, r in enumerate(roles):
         if r.after is None:
             continue

@@ -14,7 +14,12 @@
   holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
   carton; the kitchen adds one listing what it holds when the task has none), and
   the object simply moves when no node of the task says what a holder of its label
-  holds (a stove, a table). An ingredient consumed into a product made elsewhere,
+  holds (a stove, a table), or when its node names no place after the unit (the
+  squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of
+  a holder the unit does not name empties it likewise; all that leaves holders of one
+  label in a unit leaves at once (the beef and the onion leave the pan together).
+  A container poured out whole (`holders.unit_flows`) is emptied of what it held.
+  An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
   (the bowl of sesame seeds sprinkled over the salad).
 * **Counts.** `count_roles` turns the decisions into the object roles that
@@ -101,6 +106,12 @@ def silent_labels(nodes: Iterable[ObjectNode]) -> frozenset[str]:
     return frozenset(n.label for n in nodes) - describing
 
 
+def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]]) -> bool:
+    """Whether the task's units fill holders named `holder` (or a label it is the head of: `pan`, `cooking
+    pan`) with `label`."""
+    return any(x == label and (h == holder or h.endswith(" " + holder)) for h, x in filled)
+
+
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]]) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
@@ -124,18 +135,24 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
                               for x in rels)):
                 fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
+        elif fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled):
+            late_empties = True  # consumed out of a container the unit does not name: emptied of it
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
-            if (src.holder, r.role.label) in filled:
+            if _fills(src.holder, r.role.label, filled):
                 late_empties = True  # whichever container holds it is emptied of it
-            else:
+            elif r.target is not None:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
         if fate is Fate.SPLITS:
             after, portion = None, r.after
         elif fate is Fate.CONSUMED:
             after = None
         slots.append(Slot(r, fate, after, portion, late_empties))
+    flows = unit_flows(unit)
+    for f in flows:  # a container FOON leaves out of the outputs, poured out whole, is emptied of what left it
+        if rels[f.holder].role.after is None:
+            drops.setdefault(f.holder, set()).add(f.label)
     emptied = tuple((k, without(rels[k].role.before, labels, alias)) for k, labels in sorted(drops.items()))
-    return UnitPlan(unit, tuple(slots), emptied, unit_flows(unit))
+    return UnitPlan(unit, tuple(slots), emptied, flows)
 
 
 def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
@@ -180,11 +197,16 @@ def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]
 def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
                  alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
     """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
-    label that lists the object's label, with the node it becomes (`without`)."""
+    label that lists the object's label, with the node it becomes (`without` all that leaves holders of that
+    label in the unit: the beef and the onion leave the pan at once)."""
     out = {}
+    group: dict[str, set[str]] = {}  # holder label -> what leaves holders of it in this unit (all at once)
+    for s in plan.slots:
+        if s.late_empties:
+            group.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).add(s.rel.role.label)
     for k, s in enumerate(plan.slots):
         if s.late_empties:
-            label, holder = s.rel.role.label, s.rel.source.holder
-            out[k] = [(n, without(n, {label}, alias)) for n in sorted(nodes)
+            label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
+            out[k] = [(n, without(n, group[holder], alias)) for n in sorted(nodes)
                       if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
     return out

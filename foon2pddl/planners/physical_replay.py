@@ -56,7 +56,8 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   the fridge a scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
 * a bound object whose node (before or after) names `in [C]` while the step binds
   objects labelled C is in one of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in
-  the microwave while the salmon sits in bowl_2).
+  the microwave while the salmon sits in bowl_2), unless the task reports that pair as one
+  FOON's words contradict (`trace.gaps`: the unit's only bowl lists its contents without the onion).
 
 A state disagreement is reported at the state where it arises and not again while it
 persists (`ReplayReport.affected_steps` still counts every step after which one holds).
@@ -328,6 +329,8 @@ class _Replay:
                 if not state.exists or state.holder is None:
                     continue
                 for rel, c in self.places(node):
+                    if self.stands_for(b.object) & self.gaps.get(c, frozenset()):
+                        continue  # FOON's words contradict each other here: reported, and bound late
                     ours = by_label.get(c, set()) - {b.object}
                     if ours and rel == state.relation and state.holder not in ours and (b.object, c) not in seen:
                         seen.add((b.object, c))
