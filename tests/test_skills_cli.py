@@ -245,3 +245,13 @@ def test_recipe_numbers_objects_that_share_a_label():
     assert result.exit_code == 0, result.output
     assert "put the lime on the cutting board 2" in result.stdout  # board 1 holds the cilantro
     assert "pick up the onion from the cutting board 2; put the onion into the bowl 1" in result.stdout
+
+
+@pytest.mark.parametrize("encoding", ["relational", "instances"])
+def test_french_toast_dips_the_bread_into_the_custard_not_the_custard_into_the_bread(encoding):
+    result = run("--goal", "french toast", "--skills", "--encoding", encoding, "--format", "recipe")
+    assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
+    lines = result.stdout.splitlines()
+    robot = lines[next(k for k, line in enumerate(lines) if re.match(r"\d+\. dip bread", line)) + 1]
+    assert re.fullmatch(r"   robot: pick up the bread from the workspace; dip the bread into the bowl( \d+)?; "
+                        r"put the bread on the workspace", robot), robot

@@ -253,6 +253,38 @@ def test_a_scoop_into_a_spoon_holds_the_spoon_and_dips_it_into_the_source():
     assert skill_sentence(plan.calls[1], params, object_names(t)) == "scoop up from the container into the spoon"
 
 
+def test_a_dip_holds_the_object_dipped_and_dips_it_into_the_dips_container():
+    # FOON (05 french toast): bowl (contains {custard}), custard (in [bowl]), bread (sliced) -dip->
+    # bread (sliced, soaked {custard}); the holders' reading puts the custard it soaks up in the bread
+    objects = {"bowl_1": "bowl", "custard_1": "custard", "bread_1": "bread"}
+    custard = node("custard", "liquid")
+    initial = [ObjectState("bowl_1", node("bowl")), ObjectState("custard_1", custard, "bowl_1", IN),
+               ObjectState("bread_1", node("bread", "sliced"))]
+    t = trace(objects, initial, [("dip", [ObjectState("bread_1", node("bread", "sliced", "soaked")),
+                                          ObjectState("custard_1", custard, "bread_1", IN)],
+                                  ["bowl_1", "custard_1", "bread_1"])])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("bread_1", "workspace")), ("dip", ("bowl_1", "bread_1")),
+                            ("place", ("bread_1", "workspace"))]  # the custard is never taken out of its bowl
+    params = tuple(v for v, _ in shipped_domain().by_name["dip"].params)
+    assert skill_sentence(plan.calls[1], params, object_names(t)) == "dip the bread into the bowl"
+
+
+def test_a_dip_with_nothing_in_its_source_to_take_is_carried_out_by_transport():
+    # FOON (0032 cheeseburger): bowl (contains {ground beef}), onion (chopped, on [cutting board]) -dip->
+    # bowl (contains {ground beef, onion}): the onion is put into the bowl, the bowl is not dipped into the board
+    objects = {"bowl_1": "bowl", "onion_1": "onion", "board_1": "cutting board"}
+    initial = [ObjectState("bowl_1", node("bowl")), ObjectState("onion_1", ONION_CHOPPED, "board_1", ON),
+               ObjectState("board_1", node("cutting board", "contains {onion}"))]
+    t = trace(objects, initial, [("dip", [ObjectState("onion_1", ONION_CHOPPED, "bowl_1", IN)],
+                                  ["bowl_1", "onion_1", "board_1"])])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert plan.steps[0].skill == "put-in"
+    assert skills(plan) == [("pick", ("onion_1", "board_1")), ("put-in", ("onion_1", "bowl_1"))]
+
+
 def test_a_scrape_with_no_tool_tips_the_board_over_the_bowl():
     # FOON (0033 miso soup): tofu (diced, on [cutting board]), bowl (empty) -scrape-> tofu (diced, in [bowl])
     objects = {"tofu_1": "tofu", "board_1": "cutting board", "bowl_1": "bowl"}

@@ -6,7 +6,8 @@ its micro problem (`skills.micro`) is solved with Fast Downward on the skill
 domain pruned to the transport skills and the step's own (`skills.fd_micro`), once
 per shape (`skills.memo`: a task equal to an earlier step's up to renaming objects
 takes its plan, renamed back), the plan rid of skills the step does not need
-(`skills.shorten`); a step whose micro task has no plan (or whose skill the robot lacks) is **failed**,
+(`skills.shorten`); a step whose micro task has no plan (or whose skill the robot lacks) is **failed**
+(a `dip` with nothing in its source to take is first tried as transport, `FALLBACK`),
 with the planner's reason, and kept as an abstract step too. The skill sequences
 are concatenated and replayed from the start by `skills.replay`, which checks
 every precondition and, after every macro step, that the state is the trace's.
@@ -103,6 +104,11 @@ class SkillPlan:
         return self.replay.ok and self.decomposed == len(self.steps)
 
 
+#: A skill whose step, when it finds no plan, is carried out by transport: a FOON `dip` whose source holds
+#: nothing to take (chopped onion and garlic on a board "dipped" into a bowl of ground beef, 0032
+#: cheeseburger) moves them with pick and put-in.
+FALLBACK = {"dip": "put-in"}
+
 Solver = Callable[[str, str], tuple[str, tuple[str, ...], str, float]]
 
 
@@ -136,13 +142,22 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
             return out(StepStatus.FAILED, f"the step lists no tool and the robot has no {hand} skill (motion {motion!r})")
         skill = hand
         problem = micro_problem(trace, index, skill, naming, domain, roles)
-    keep = {a for a in problem.actions if not robot.lacks(a)}
 
     def finish(found: tuple[str, ...], task: PlanningTask) -> tuple[str, ...]:
         return irredundant(found, domain, dict(task.objects), task.init, task.goal)
 
-    (status, plan, message, _), reused = memo.solve(solver, domain.pruned(keep, robot.cost_table, problem.init), problem,
-                                                    (*naming.hands, naming.workspace), finish)
+    def attempt(problem: MicroProblem):
+        keep = {a for a in problem.actions if not robot.lacks(a)}
+        return memo.solve(solver, domain.pruned(keep, robot.cost_table, problem.init), problem,
+                          (*naming.hands, naming.workspace), finish)
+
+    (status, plan, message, _), reused = attempt(problem)
+    other = FALLBACK.get(skill)
+    if status != "solved" and other in domain.by_name and not robot.lacks(other):
+        moved = micro_problem(trace, index, other, naming, domain, roles)
+        (status2, plan2, message2, _), reused2 = attempt(moved)
+        if status2 == "solved":
+            skill, problem, status, plan, reused = other, moved, status2, plan2, reused2
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)

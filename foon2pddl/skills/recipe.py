@@ -52,6 +52,8 @@ def skill_sentence(call: SkillCall, params: tuple[str, ...], names: dict[str, st
     if shape == ("?src", "?dst"):
         source = f"from {objs[0]}" if holds else objs[0]
         return f"{verb} {source} {_ONTO.get(call.skill, 'into')} {objs[1]}"
+    if shape == ("?src", "?into") and call.skill == "dip":  # the held object is what is dipped
+        return f"{verb} {objs[1]} into {objs[0]}"
     if shape == ("?src", "?into"):
         return f"{verb} from {objs[0]} into {objs[1]}"
     if shape == ("?t", "?src", "?dst"):
