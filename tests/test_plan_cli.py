@@ -73,6 +73,34 @@ def test_bad_input_exits_2_without_traceback():
     assert "Error: unknown object label" in result.stderr and "Traceback" not in result.output
 
 
+def test_instances_encoding_does_not_tie_a_read_stove_to_the_pan_on_it(tmp_path):
+    # docs/pddl.md, instances, "Not modelled": which object holds which. A step that only reads the stove
+    # (melt: `stove (on)`) takes any stove in that state, not the one the pan stands on.
+    from foon2pddl.cli import main as cli
+
+    out = tmp_path / "ft"
+    done = CliRunner().invoke(cli, ["compile", "--goal", "french toast", "--encoding", "instances", "-o", str(out)])
+    assert done.exit_code == 0, done.output
+    domain = (out / "domain.pddl").read_text()
+    melt = domain[domain.index("(:action melt_"):]
+    melt = melt[:melt.index("(:action", 1)]
+    assert ":parameters (?butter - butter)" in melt and "(occupied stove_on)" in melt  # no stove, no pan
+    assert "stove_1 - stove" in (out / "problem.pddl").read_text() and "stove_2 - stove" in (out / "problem.pddl").read_text()
+    result = run("--goal", "french toast", "--encoding", "instances", "--format", "json")
+    assert result.exit_code == 0, result.output
+    steps = json.loads(result.stdout)["instances"]
+    stove_of = {s["motion"] + (" pan" if s["text"].startswith("pick-and-place frying_pan_1 with") else ""):
+                [b["instance"] for b in s["bindings"] if b["instance"].startswith("stove")] for s in steps}
+    # the plan docs/pddl.md quotes: the pan goes onto stove_2, the butter melts with stove_1
+    assert stove_of["pick-and-place pan"] == ["stove_2"] and stove_of["melt"] == ["stove_1"], stove_of
+    text = run("--goal", "french toast", "--encoding", "instances")
+    assert "note: not checked physically by the encoding" in text.stderr
+    from pathlib import Path
+
+    docs = " ".join((Path(__file__).parents[1] / "docs" / "pddl.md").read_text().split())
+    assert "places the pan on `stove_2` (a `stove (off)`) and melts the butter with `stove_1`" in docs
+
+
 def test_instances_encoding_prints_the_objects_step_by_step_and_json_bindings():
     result = run("--goal", "whipped cream", "--encoding", "instances", WHIPPED)
     assert result.exit_code == 0, result.output
