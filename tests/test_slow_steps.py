@@ -79,6 +79,23 @@ def test_each_command_invocation_starts_its_own_budget(monkeypatch):
     assert run("plan", "--goal", "guacamole").stderr.count(" ...") == 0
 
 
+@pytest.mark.parametrize(("args", "said"), [
+    (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
+    (("retrieve", "--goal", "lemonade"), "checking whether FOON-EXP can make it: computing its WordNet similarity"),
+    (("expand",), "expanding 101 units onto similar objects"),
+], ids=["build FOON-EXP", "hint check", "expand"])
+def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, said):
+    """With an empty cache, FOON-EXP's WordNet matrix takes seconds: the step says so when it starts, not
+    once the command's silence budget is spent (under load, that came 2.1-2.2 s after the start)."""
+    monkeypatch.setattr(progress, "AFTER", 3600.0)  # no step may speak for having been quiet
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cold"))
+    cold = run(*args)
+    assert cold.exit_code in (0, 1), cold.stderr
+    assert any(line.startswith(said) and line.endswith(" ...") for line in cold.stderr.splitlines()), cold.stderr
+    warm = run(*args)  # the matrix is cached now: the step is quick and says nothing
+    assert not any(line.startswith(said) for line in warm.stderr.splitlines()), warm.stderr
+
+
 # -- the commands found silent for seconds --------------------------------------------------------
 
 

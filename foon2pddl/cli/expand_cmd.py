@@ -43,15 +43,16 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     senses, and the kind (`similar`, or `derived` for a product renamed along, e.g. lemon juice -> lime juice).
     """
     from ..generalize.expand import expand, vocabulary
-    from ..generalize.modes import mode_matrix
+    from ..generalize.modes import mode_matrix, mode_matrix_is_cached
     from ..generalize.stats import format_levels_table, levels_table
     from ..io.inputs import load_kitchen
 
     net = read_network(paths)
     kit = load_kitchen(kitchen, net, 3)
     extra = load_overrides(overrides)
+    cold = not mode_matrix_is_cached(vocabulary(net.foon, kit), similarity, extra)  # seconds: said at once
     with slow_step(f"expanding {len(net.foon.units):,} units onto similar objects (WordNet similarities: once, "
-                   "then cached)"):
+                   "then cached)", after=0 if cold else None):
         matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
         e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
     if as_pairs:

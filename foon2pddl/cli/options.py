@@ -247,8 +247,10 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    building = NETWORKS[network].building or "preparing the {label} network of {units:,} units at level {level}"
-    with slow_step(building.format(label=NETWORKS[network].label, units=len(net.foon.units), level=level)):
+    kind = NETWORKS[network]
+    building = kind.building or "preparing the {label} network of {units:,} units at level {level}"
+    slow = kind.slow_step is not None and kind.slow_step(net, kit) is not None  # seconds: said at once
+    with slow_step(building.format(label=kind.label, units=len(net.foon.units), level=level), after=0 if slow else None):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name

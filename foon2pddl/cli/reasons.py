@@ -94,15 +94,16 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
 
 def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan."""
-    from ..generalize.hints import networks_that_reach
+    from ..generalize.hints import networks_that_reach, slow_hint
     from ..generalize.network import NETWORKS
     from ..io.inputs import goal_spec
     from .progress import slow_step
 
     spec = goal_spec(goal, goal_file)
     _default_kitchen_hint(net, kitchen, spec, level)
-    with slow_step("checking which other network makes it (for a hint)"):
-        kinds = networks_that_reach(net, kitchen, spec, level, notify=lambda message: click.echo(message, err=True),
+    slow = slow_hint(net, kitchen)  # known to take seconds: said at once, not after the silence budget
+    with slow_step(slow or "checking which other network makes it (for a hint)", after=0 if slow else None):
+        kinds = networks_that_reach(net, kitchen, spec, level,
                                     confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
                                              for k in NETWORKS.values() if k.encoding is not None})
     if kinds:

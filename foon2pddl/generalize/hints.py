@@ -6,8 +6,8 @@ GEN up to 2,500 units (compress, index, fixpoint: 0.15 s for both checks on the
 101-unit example, 0.9 s for GEN on the 1,845-unit universal FOON, medians of 5), EXP
 up to 600 (EXP of the universal FOON takes ~3 s even cached). The answer never depends
 on what the disk cache holds: when a build will be slow (EXP's similarity matrix not
-cached yet: WordNet opens, a few seconds, once) `notify` is told first
-(`NetworkKind.slow_step`), so the wait is not silent.
+cached yet: WordNet opens, a few seconds, once) `slow_hint` says what it will do,
+for the caller to say when the check starts (`NetworkKind.slow_step`), so the wait is not silent.
 The check is reachability (the linear fixpoint) on each network, with the kitchen
 and goal mapped as `--network` maps them; a caller's `confirm` check (the CLI runs
 the lifted planner for GEN) must pass too, since the category-level fixpoint also
@@ -26,12 +26,24 @@ from ..model.kitchen import Kitchen
 from .network import NETWORKS, network_view
 
 
+def slow_hint(net: Network, kitchen: Kitchen) -> str | None:
+    """What the first slow build of a hint check will do (`NetworkKind.slow_step`), None when every
+    hinted network is quick to build (EXP's matrix cached): the caller says it when the check starts."""
+    for kind in (k for k in NETWORKS.values() if k.hint and k.slow_step is not None):
+        if len(net.foon.units) <= kind.hint_max_units:
+            try:
+                slow = kind.slow_step(net, kitchen)
+            except (FoonError, OSError):
+                continue
+            if slow is not None:
+                return slow
+    return None
+
+
 def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: int,
-                        notify: Callable[[str], None] | None = None,
                         confirm: Mapping[str, Callable[[], bool]] | None = None) -> list[str]:
     """Which hinted kinds (EXP, GEN) make the goal `spec` from `kitchen` (only the networks cheap to build).
 
-    `notify(message)` is called before a slow step (building EXP's similarity matrix);
     `confirm[kind]()`, when given, must also hold (called only once the fixpoint reaches the goal).
     """
     confirm = confirm or {}
@@ -40,9 +52,6 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
         if len(net.foon.units) > kind.hint_max_units:
             continue
         try:  # a hint is optional: nothing here (a missing WordNet or extra included) may become an error
-            slow = kind.slow_step(net, kitchen) if kind.slow_step is not None and notify is not None else None
-            if slow is not None:
-                notify(slow)
             view = network_view(net, kind.name, level, kitchen)
             goal = view.resolve(spec)
         except (FoonError, OSError):
