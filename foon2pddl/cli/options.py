@@ -235,22 +235,20 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     from ..io.kitchen_files import read_utensils
     from ..model.containment import with_containment
     from ..model.kitchen import with_utensils
+    from .kitchen_note import kitchen_note
     from .progress import slow_step
 
-    net = read_network(paths)
+    net, kind = read_network(paths), NETWORKS[network]
     kit = load_kitchen(kitchen, net, level)
     if kitchen is None and not net.is_example:
-        from .kitchen_note import kitchen_note
-
         click.echo(kitchen_note(kit, net.at(level)), err=True)
-    if constraints is not None and NETWORKS[network].substitutes is not Substitutes.NONE:
+    if constraints is not None and kind.substitutes is not Substitutes.NONE:
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    kind = NETWORKS[network]
     building = kind.building or "preparing the {label} network of {units:,} units at level {level}"
-    slow = kind.slow_step is not None and kind.slow_step(net, kit) is not None  # seconds: said at once
-    with slow_step(building.format(label=kind.label, units=len(net.foon.units), level=level), after=0 if slow else None):
+    after = 0 if kind.slow_step is not None and kind.slow_step(net, kit) is not None else None  # seconds: at once
+    with slow_step(building.format(label=kind.label, units=len(net.foon.units), level=level), after=after):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name
