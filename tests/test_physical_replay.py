@@ -255,6 +255,10 @@ def test_holder_not_bound():
     # a pair the task reports as FOON contradicting itself (the unit's only bowl lists no onion) is not owed
     assert replay(replace(w.trace(), gaps=(("bowl", "onion"),))).ok
     assert not replay(replace(w.trace(), gaps=(("bowl", "salt"),))).ok
+    # a bowl the step touches without it being a role (an effect emptied it) owes the onion nothing
+    last = w.steps[-1]
+    w.steps[-1] = replace(last, bindings=tuple(replace(b, role=b.object != "bowl_2") for b in last.bindings))
+    assert replay(w.trace()).ok
 
 
 def test_persisting_disagreement_reported_once_but_counted_per_step():

@@ -90,6 +90,8 @@ class Binding:
     object: str
     before: ObjectNode | None
     after: ObjectNode | None
+    #: False for an object the step touches that is no role of the unit (a holder an effect emptied)
+    role: bool = True
 
 
 @dataclass(frozen=True)

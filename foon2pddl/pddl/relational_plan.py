@@ -121,6 +121,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
     drops: dict[int, set[str]] = {}
+    made_at = {(x.target.relation, x.target.holder) for x in rels
+               if x.fate is Fate.NEW and x.target is not None and x.target.role is None}
     for r in rels:
         fate, after, portion, late_empties = r.fate, r.after, None, False
         src = r.source
@@ -135,8 +137,9 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
                               for x in rels)):
                 fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
-        elif fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled):
-            late_empties = True  # consumed out of a container the unit does not name: emptied of it
+        elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled)
+              and (src.relation, src.holder) not in made_at):
+            late_empties = True  # consumed out of a container the unit does not name (and makes nothing in)
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
             if _fills(src.holder, r.role.label, filled):
                 late_empties = True  # whichever container holds it is emptied of it

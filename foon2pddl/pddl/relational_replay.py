@@ -98,7 +98,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
             if x not in named:
                 named.add(x)
                 after = now[x].node if now[x].node != was[x].node and not now[x].consumed else None
-                bindings.append(Binding(x, was[x].node if was[x].exists else None, after))
+                bindings.append(Binding(x, was[x].node if was[x].exists else None, after, role=x in args))
         changes = tuple(now[x] for x in sorted(now) if now[x] != was[x])
         out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit)))
     start = _states(task, set(task.init), {})

@@ -55,7 +55,7 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder,
   the fridge a scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
 * a bound object whose node (before or after) names `in [C]` while the step binds
-  objects labelled C is in one of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in
+  objects labelled C as roles or chosen holders (not a board an effect emptied) is in one of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in
   the microwave while the salmon sits in bowl_2), unless the task reports that pair as one
   FOON's words contradict (`trace.gaps`: the unit's only bowl lists its contents without the onion).
 
@@ -321,8 +321,9 @@ class _Replay:
 
     def _holders_bound(self, step: TraceStep, before, after, add) -> None:
         by_label: dict[str, set[str]] = {}
-        for oid in step.objects:
-            by_label.setdefault(self.label[oid], set()).add(oid)
+        for b in step.bindings:  # the unit's objects and the holders it chose, not what an effect emptied
+            if b.role:
+                by_label.setdefault(self.label[b.object], set()).add(b.object)
         seen = set()
         for b in step.bindings:
             for node, state in ((b.before, before[b.object]), (b.after or b.before, after[b.object])):
