@@ -24,7 +24,9 @@
     the role's output node, while the object it was taken from stays;
   - a container FOON filled earlier and leaves out of the outputs is emptied of
     what leaves it (`relational_plan.without`);
-  - a consumed object goes to `consumed` and leaves its holder; contents that are
+  - a consumed object goes to `consumed` and leaves its holder, with all of its
+    label there when the holder's node no longer lists it (then it needs no
+    parameter: one conditional effect per node it can be in); contents that are
     no role of the unit follow their container's list (`holders.Flow`), by one
     quantified conditional effect per node they can be in.
 * **Init.** Kitchen objects start in the state of their node; an object whose node
@@ -49,7 +51,7 @@ from ..model.foon import Foon, ObjectNode, make_node
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of, places
+from ..model.places import describes_contents, place_of, places
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -77,7 +79,16 @@ from .relational_init import (
     named_objects,
     scene_instances,
 )
-from .relational_plan import UnitPlan, Way, count_roles, flow_ways, late_empties, plan_unit, silent_labels
+from .relational_plan import (
+    UnitPlan,
+    Way,
+    alike_nodes,
+    count_roles,
+    every_late_empty,
+    flow_ways,
+    plan_unit,
+    silent_labels,
+)
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
@@ -142,12 +153,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     nodes.update(x.start for x in instances if x.start is not None)
     ways = {u: flow_ways(plans[u], nodes, alias) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
-    while True:  # to a fixpoint: a holder emptied of one thing (salt) may be emptied of the next (pepper)
-        empties = {u: late_empties(plans[u], nodes, alias) for u in units}
-        grown = {n for e in empties.values() for lst in e.values() for _, n in lst} - nodes
-        if not grown:
-            break
-        nodes.update(grown)
+    empties = every_late_empty({u: plans[u] for u in units}, nodes, alias)
     type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
@@ -169,7 +175,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         left.update(n for lst in ways[u].values() for n, _, _ in lst)
         left.update(n for lst in empties[u].values() for n, _ in lst)
         left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
-        left.update(n for s in p.slots for n, _ in _alike(p, s, inside))
+        left.update(n for s in p.slots for n, _ in alike_nodes(p, s, inside))
     stable = {n for n in const if n not in left}
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
@@ -206,17 +212,14 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why)
 
 
-def _alike(plan: UnitPlan, s, inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
-    """For a slot consumed out of a holder role whose node after the unit no longer lists its label: the nodes
-    of that label placed in holders of that label (any other such object in that holder is consumed too)."""
-    src = s.rel.source
-    if s.fate is not Fate.CONSUMED or src is None or src.role is None:
-        return []
-    after = plan.after_of(src.role)
+def _consume_alike(plan, s, inside, names, var, const, type_of, cond, k) -> None:
+    """Conditional effects: every object of the slot's label in its holder, in a node of it, is consumed."""
     label = s.rel.role.label
-    if after is None or not describes_contents(after) or label in listed(after):
-        return []
-    return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
+    for node, rel in alike_nodes(plan, s, inside):
+        c = f"?{names.name(f'{label} alike', key=('alike', k, node))}"
+        there, was = Atom(rel.value, (var[s.rel.source.role], c)), Atom(IS, (c, const[node]))
+        cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
+                                var=c, type=type_of[label]))
 
 
 def _where(unit, path=str) -> str:
@@ -238,9 +241,17 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
     for k in emptied:
         per_label[slots[k].rel.role.label] = per_label.get(slots[k].rel.role.label, 0) + 1
     emptied = {k: n for k, n in emptied.items() if per_label[slots[k].rel.role.label] > 1}
-    bound = [s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
-             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied)
+    # An ingredient consumed with all of its label in the holder needs no parameter: a conditional effect
+    # consumes what is there (else 4^10 groundings of a blend). Not when something is in or on it, or a flow.
+    pooled = [bool(alike_nodes(plan, s, inside)) and not inside.get(s.rel.role.label)
+              and s.rel.role.label in type_of and s.rel.role.before not in stable
+              and all(k not in (f.holder, f.into) for f in plan.flows) for k, s in enumerate(slots)]
+    bound = [not pooled[k] and (s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
+             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied))
              for k, s in enumerate(slots)]
+    for k, s in enumerate(slots):
+        if pooled[k]:
+            bound[s.rel.source.role] = True
     for f in plan.flows:
         bound[f.holder] = True
         if f.into is not None:
@@ -316,6 +327,9 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             becomes(portion, None, s.portion)
             if r.target is not None and (h := holder_var(r.target, label, k)) is not None:
                 add.append(Atom(r.target.relation.value, (h, portion)))
+        if pooled[k]:
+            _consume_alike(plan, s, inside, names, var, const, type_of, cond, k)
+            continue
         if not bound[k]:
             if before in stable:  # else a container emptied by a conditional effect: whichever holds the object
                 pre.append(Atom(OCCUPIED, (const[before],)))
@@ -330,12 +344,8 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                     there, was = Atom(rel.value, (v, c)), Atom(IS, (c, const[node]))
                     cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
                                             var=c, type=type_of[node.label]))
-            for node, rel in _alike(plan, s, inside):  # all of its label in that holder went into the mixture
-                if node.label in type_of and bound[r.source.role]:
-                    c = f"?{names.name(f'{label} alike', key=('alike', k, node))}"
-                    there, was = Atom(rel.value, (var[r.source.role], c)), Atom(IS, (c, const[node]))
-                    cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
-                                            var=c, type=type_of[label]))
+            if r.source is not None and r.source.role is not None and bound[r.source.role]:
+                _consume_alike(plan, s, inside, names, var, const, type_of, cond, k)
         elif after is not None and after != before:
             becomes(v, before, after)
         src, dst = r.source, r.target

@@ -41,7 +41,7 @@ from .holders import Fate, Flow, RelRole, moved_into, relational_roles, unit_ali
 from .pairing import Role
 from .relational_init import read_names
 
-__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "consumed_node", "count_roles", "flow_ways", "late_empties",
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
            "silent_labels", "plan_unit", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
@@ -213,3 +213,29 @@ def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
             out[k] = [(n, without(n, group[holder], alias)) for n in sorted(nodes)
                       if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
     return out
+
+
+def every_late_empty(plans: dict[int, UnitPlan], nodes: set[ObjectNode],
+                     alias: dict[str, str]) -> dict[int, dict[int, list[tuple[ObjectNode, ObjectNode]]]]:
+    """`late_empties` of every unit, to a fixpoint: a holder emptied of one thing (salt) may then be emptied
+    of the next (pepper). Adds the nodes holders become to `nodes`."""
+    while True:
+        empties = {u: late_empties(p, nodes, alias) for u, p in plans.items()}
+        grown = {n for e in empties.values() for lst in e.values() for _, n in lst} - nodes
+        if not grown:
+            return empties
+        nodes.update(grown)
+
+
+def alike_nodes(plan: UnitPlan, s: Slot,
+                inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
+    """For a slot consumed out of a holder role whose node after the unit no longer lists its label: the nodes
+    of that label placed in holders of that label (any other such object in that holder is consumed too)."""
+    src = s.rel.source
+    if s.fate is not Fate.CONSUMED or src is None or src.role is None:
+        return []
+    after = plan.after_of(src.role)
+    label = s.rel.role.label
+    if after is None or not describes_contents(after) or label in listed(after):
+        return []
+    return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
