@@ -52,6 +52,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
+from . import relational_plan
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -72,23 +73,8 @@ from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import (
-    counted_objects,
-    holder_init,
-    implied_contents,
-    named_objects,
-    scene_instances,
-)
-from .relational_plan import (
-    UnitPlan,
-    Way,
-    alike_nodes,
-    count_roles,
-    every_late_empty,
-    flow_ways,
-    plan_unit,
-    silent_labels,
-)
+from .relational_init import counted_objects, holder_init, implied_contents, named_objects, scene_instances
+from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
@@ -153,7 +139,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     nodes.update(x.start for x in instances if x.start is not None)
     ways = {u: flow_ways(plans[u], nodes, alias) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
-    empties = every_late_empty({u: plans[u] for u in units}, nodes, alias)
+    empties = relational_plan.every_late_empty({u: plans[u] for u in units}, nodes, alias)
     type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
@@ -175,7 +161,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         left.update(n for lst in ways[u].values() for n, _, _ in lst)
         left.update(n for lst in empties[u].values() for n, _ in lst)
         left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
-        left.update(n for s in p.slots for n, _ in alike_nodes(p, s, inside))
+        left.update(n for s in p.slots for n, _ in relational_plan.alike_nodes(p, s, inside))
     stable = {n for n in const if n not in left}
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
@@ -215,7 +201,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
 def _consume_alike(plan, s, inside, names, var, const, type_of, cond, k) -> None:
     """Conditional effects: every object of the slot's label in its holder, in a node of it, is consumed."""
     label = s.rel.role.label
-    for node, rel in alike_nodes(plan, s, inside):
+    for node, rel in relational_plan.alike_nodes(plan, s, inside):
         c = f"?{names.name(f'{label} alike', key=('alike', k, node))}"
         there, was = Atom(rel.value, (var[s.rel.source.role], c)), Atom(IS, (c, const[node]))
         cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
@@ -243,7 +229,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
     emptied = {k: n for k, n in emptied.items() if per_label[slots[k].rel.role.label] > 1}
     # An ingredient consumed with all of its label in the holder needs no parameter: a conditional effect
     # consumes what is there (else 4^10 groundings of a blend). Not when something is in or on it, or a flow.
-    pooled = [bool(alike_nodes(plan, s, inside)) and not inside.get(s.rel.role.label)
+    pooled = [bool(relational_plan.alike_nodes(plan, s, inside)) and not inside.get(s.rel.role.label)
               and s.rel.role.label in type_of and s.rel.role.before not in stable
               and all(k not in (f.holder, f.into) for f in plan.flows) for k, s in enumerate(slots)]
     bound = [not pooled[k] and (s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
