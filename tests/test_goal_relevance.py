@@ -66,11 +66,11 @@ def test_relevance_keeps_exactly_the_operators_that_lead_to_the_goal():
     assert conditional.conditional and conditional.needs == ((3, 0),)
 
 
-def test_lifted_tasks_are_the_same_with_the_shared_image_network(setting, monkeypatch):
+def test_lifted_tasks_are_the_same_with_the_shared_ground_instances(setting, monkeypatch):
     foon, kitchen, goals = setting
     index = load_index()
     shared = [render(encode_lifted(foon, kitchen, g, index).task) for g in goals[:6]]
-    assert relevance._COARSE  # the image network was kept
+    assert relevance._GROUNDED  # the ground instances were kept
     for goal, text in zip(goals[:6], shared, strict=True):
-        relevance._COARSE.clear()  # rebuilt from scratch for this goal alone
+        relevance._GROUNDED.clear()  # rebuilt from scratch for this goal alone
         assert render(encode_lifted(foon, kitchen, goal, index).task) == text

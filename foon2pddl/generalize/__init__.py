@@ -13,6 +13,6 @@ See docs/generalization.md.
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "hints", "modes",
+__all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "grounding", "hints", "modes",
            "network", "pairs", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
            "wup"]

@@ -1,28 +1,22 @@
-"""Which units of the concrete network can matter for a lifted FOON-GEN goal: the image network.
+"""Which units of the concrete network can matter for a lifted FOON-GEN goal, and the atoms' argument order.
 
-`relevant` judges on an image of the network in which every object of a top-level
-category that some parameter belongs to is replaced by that category (see its
-doc). The image network and its reachability from the kitchen's image depend on
-the network, kitchen and generalization policy only, so `coarse_network` builds
-them once and `shared_coarse` keeps the last few: every goal of an experiment
-trial shares one (the lifted encoding spent ~90 % of its time rebuilding it).
+`relevant` walks back from a goal over the lifted network's reachable ground instances
+(`grounding.ground`; on an image network, `image_relevant`, when they are too many to
+find). Those depend on the network, kitchen and generalization policy only, so
+`shared_grounding` keeps the last few: every goal of an experiment trial shares one
+(rebuilding them per goal would dominate the lifted encoding's time).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
 
-from ..analysis.reachability import UNREACHED, reachable
+from ..analysis.reachability import UNREACHED, reachable, walk_back
 from ..model.constraints import node_labels
-from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.foon import Foon, ObjectNode
 from .categories import CategoryIndex
+from .grounding import Grounded, unit_params
 from .substitute import substitute_node, substitute_unit, unit_labels
-
-
-def input_labels(unit: FunctionalUnit) -> frozenset[str]:
-    """Labels mentioned by the unit's input nodes (labels, related objects, ingredients)."""
-    return unit_labels(FunctionalUnit(unit.inputs, unit.motion, ()))
 
 
 class Ordering:
@@ -45,92 +39,75 @@ class Ordering:
 
 
 
-@dataclass(frozen=True)
-class Coarse:
-    """The image network of `relevant` for one network, kitchen and policy: what every goal shares."""
-
-    roots: frozenset[str]
-    reach: object  # analysis.reachability result on the image network
-    producers: dict[int, list[int]]  # image node id -> units with it among their outputs
-
-    def image(self, label: str, ordering: Ordering) -> str:
-        root = ordering.root(label)
-        return root if root in self.roots else label
-
-
-def coarse_network(foon: Foon, kitchen: frozenset[ObjectNode], generalize: Callable[[str], bool],
-                   index: CategoryIndex, ordering: Ordering) -> Coarse:
-    """The image network and its reachability from the kitchen's image (see `relevant`); O(network)."""
-    roots = frozenset(ordering.root(x) for u in foon.units for x in input_labels(u)
-                      if index.choose(x) is not None and generalize(x))
-    coarse = Coarse(roots, None, {})
-    labels = {x for u in foon.units for x in unit_labels(u)} | {x for n in kitchen for x in node_labels(n)}
-    mapping = {x: coarse.image(x, ordering) for x in labels}
-    images = [substitute_unit(u, mapping) for u in foon.units]
-    reach = reachable(Foon(tuple(images), foon.level), frozenset(substitute_node(n, mapping) for n in kitchen))
-    producers: dict[int, list[int]] = {}  # image node -> units making a concrete node of that image: an image
-    for u, unit in enumerate(foon.units):  # unit that outputs one of its inputs may still make a new concrete node
-        made = {substitute_node(n, mapping) for n in unit.outputs if n not in unit.inputs}
-        for n in sorted(reach.index.ids(made)):
-            producers.setdefault(n, []).append(u)
-    return Coarse(roots, reach, producers)
-
-
 def relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Iterable[ObjectNode],
-             generalize: Callable[[str], bool], index: CategoryIndex, ordering: Ordering,
-             coarse: Coarse | None = None) -> list[int]:
-    """Indexes of the units that can matter for making a candidate from the kitchen.
+             generalize: Callable[[str], bool], index: CategoryIndex, grounded: Grounded | None) -> list[int]:
+    """Indexes of the units that can matter for making a candidate from the kitchen, sorted.
 
-    Judged on an image of the network: every object of a top-level category that some
-    parameter belongs to is replaced by that category. A grounded action binds a
-    parameter to an object of a subtype of its type, hence of the same top-level
-    category, so its nodes have the image of its unit's nodes, and the image network
-    over-approximates the lifted task: a unit whose image does not fire from the
-    kitchen's image, or outputs no image needed for a candidate's image, is never
-    part of a plan. A unit counts as a maker of the images of the concrete nodes it
-    makes (outputs that are not among its inputs): an image unit may output one of its
-    own inputs and still make a new concrete node, but an object the unit keeps (the
-    same node in and out, a knife) stays the same node under every binding, since a
-    binding substitutes inputs and outputs alike, so the unit is never the first to
-    add its atom and is not kept for it (in a delete-free plan, what a step adds
-    that its precondition already holds is no help). The image
-    network (`coarse`) depends on the goal only through the candidates' images, so
-    it is built once per network, kitchen and policy and shared by every goal.
+    Relevance over the lifted task's reachable ground instances `grounded` (`grounding.ground`, built
+    once per network, kitchen and policy and shared by every goal: `shared_grounding`), as
+    `pddl.prune.prune_task` prunes a ground task: backwards from the candidates over the instances that
+    make a node (an output that is not among their inputs: what a step keeps is no help in a delete-free
+    plan), their inputs needed in turn, not past kitchen nodes (`reachability.walk_back`). A unit is kept
+    when one of its instances is. Sound: every step of a plan is a reachable instance, and a plan keeps
+    a valid sub-plan made of relevant ones. O(instances + their nodes) per goal. When there were too
+    many instances to find (`grounded` is None), `image_relevant` decides.
     """
     candidates = tuple(candidates)
-    coarse = coarse or coarse_network(foon, kitchen, generalize, index, ordering)
-    ix = coarse.reach.index
-    mapping = {x: coarse.image(x, ordering) for n in candidates for x in node_labels(n)}
-    needed = set(ix.ids(substitute_node(c, mapping) for c in candidates))
-    stack = list(needed)
-    keep: set[int] = set()
-    while stack:
-        n = stack.pop()
-        for u in coarse.producers.get(n, ()):
-            if coarse.reach.unit_round[u] != UNREACHED and u not in keep:
-                keep.add(u)
-                for i in ix.inputs[u]:
-                    if i not in needed:
-                        needed.add(i)
-                        stack.append(i)
-    return sorted(keep)
+    if grounded is None:
+        return image_relevant(foon, kitchen, candidates, generalize, index)
+    ids = [grounded.node_id[c] for c in candidates if c in grounded.node_id]
+    instances = walk_back(grounded.makers, grounded.inputs, ids, bytearray(grounded.kitchen))
+    return sorted({grounded.units[i] for i in instances})
 
 
-#: Image networks of the last few (network, level, kitchen, policy, index): every goal of a trial shares one.
-_COARSE: dict[tuple, tuple[Foon, CategoryIndex, Coarse]] = {}
+def image_relevant(foon: Foon, kitchen: frozenset[ObjectNode], candidates: tuple[ObjectNode, ...],
+                   generalize: Callable[[str], bool], index: CategoryIndex) -> list[int]:
+    """The units `relevant` keeps judged on an image of the network, for policies whose instances are too many.
+
+    Each object whose category is, or refines, a parameter's category is replaced by the outermost such
+    category. A parameter binds objects of its category or of one refining it, all with the parameter's
+    own image, so every ground instance has its unit's image, and a unit whose image does not fire from
+    the kitchen's image, or makes no image needed for a candidate's, is in no plan. Needed images are not
+    cut at the kitchen's (a needed node may share its image with a kitchen node without being one).
+    Weaker than the ground relevance; O(network) per goal.
+    """
+    params = {cat for u in foon.units for cat in unit_params(u, generalize, index).values()}
+
+    def image(label: str) -> str:
+        cat = index.choose(label)
+        return label if cat is None else next((c for c in (*reversed(index.ancestors(cat)), cat) if c in params),
+                                              label)
+
+    labels = set().union(*map(unit_labels, foon.units), *map(node_labels, (*kitchen, *candidates)))
+    mapping = {x: y for x in labels if (y := image(x)) != x}
+    reach = reachable(Foon(tuple(substitute_unit(u, mapping) for u in foon.units), foon.level),
+                      frozenset(substitute_node(n, mapping) for n in kitchen))
+    ix = reach.index
+    makers: list[list[int]] = [[] for _ in ix.nodes]
+    for u, unit in enumerate(foon.units):
+        if reach.unit_round[u] != UNREACHED:
+            for n in ix.ids({substitute_node(n, mapping) for n in unit.outputs if n not in unit.inputs}):
+                makers[n].append(u)
+    targets = ix.ids(substitute_node(c, mapping) for c in candidates)
+    return sorted(walk_back(makers, ix.inputs, targets, bytearray(len(ix.nodes))))
 
 
-_COARSE_KEPT = 4
+#: Ground instances of the last few (network, level, kitchen, policy, index): every goal of a trial shares one.
+_GROUNDED: dict[tuple, tuple[Foon, CategoryIndex, Grounded | None]] = {}
 
 
-def shared_coarse(foon: Foon, level: int, kitchen: frozenset[ObjectNode], policy: str, index: CategoryIndex,
-                   build: Callable[[], Coarse]) -> Coarse:
+_GROUNDED_KEPT = 4
+
+
+def shared_grounding(foon: Foon, level: int, kitchen: frozenset[ObjectNode], policy: str, index: CategoryIndex,
+                     build: Callable[[], Grounded | None]) -> Grounded | None:
+    """`build()`, or the instances built last time for the same network object, level, kitchen, policy and index."""
     key = (id(foon), level, kitchen, policy, id(index))
-    hit = _COARSE.get(key)
+    hit = _GROUNDED.get(key)
     if hit is not None and hit[0] is foon and hit[1] is index:
         return hit[2]
-    coarse = build()
-    if len(_COARSE) >= _COARSE_KEPT:
-        _COARSE.pop(next(iter(_COARSE)))
-    _COARSE[key] = (foon, index, coarse)
-    return coarse
+    grounded = build()
+    if len(_GROUNDED) >= _GROUNDED_KEPT:
+        _GROUNDED.pop(next(iter(_GROUNDED)))
+    _GROUNDED[key] = (foon, index, grounded)
+    return grounded

@@ -1,7 +1,7 @@
 """FOON to PDDL: planning-task IR, the registry of encodings (`compile.ENCODINGS`), rendering, UP problems."""
 
 #: The package's modules (import them by name).
-__all__ = ["compile", "constraints", "costs", "encode_compat", "encode_instances", "encode_lifted", "encode_ocp",
+__all__ = ["arg_types", "compile", "constraints", "costs", "encode_compat", "encode_instances", "encode_lifted", "encode_ocp",
            "encode_relational", "encode_state", "encode_tree", "encoding", "examples", "holders", "instance_counts",
            "instance_replay", "lifted_atoms", "names", "pairing", "prune", "registry", "relational_init",
            "relational_plan", "relational_replay", "render", "shared", "task", "trace_view", "untyped", "up_problem"]

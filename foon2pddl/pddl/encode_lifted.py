@@ -48,7 +48,8 @@ from dataclasses import dataclass, replace
 from ..analysis.reachability import reachable
 from ..errors import UsageError
 from ..generalize.categories import CategoryIndex, load_index
-from ..generalize.relevance import Ordering, coarse_network, input_labels, relevant, shared_coarse
+from ..generalize.grounding import ground, input_labels
+from ..generalize.relevance import Ordering, relevant, shared_grounding
 from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
 from ..model.constraints import node_labels
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
@@ -56,6 +57,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.tasktree import TaskTree, validate
+from .arg_types import narrow_arguments
 from .costs import unit_cost
 from .encoding import (
     DEFAULT_OPTIONS,
@@ -273,10 +275,10 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     ordering = Ordering(index)
     generalize = generalizer(policy, f, kitchen_nodes)
     if prune:
-        coarse = shared_coarse(foon, level, kitchen_nodes, policy, index,
-                                lambda: coarse_network(f, kitchen_nodes, generalize, index, ordering))
-        f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, ordering,
-                                                     coarse)), level)
+        grounded = shared_grounding(foon, level, kitchen_nodes, policy, index,
+                                    lambda: ground(f, kitchen_nodes, generalize, index))
+        f = Foon(tuple(f.units[i] for i in relevant(f, kitchen_nodes, candidates, generalize, index, grounded)),
+                 level)
     lifted = lift(Foon(dedupe_units(f.units), level), index, generalize)
     names = _Names(index, ordering)
     actions, constants, pre_shapes = _unit_actions(lifted, names, options)
@@ -325,7 +327,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
                   *goal_kitchen_lines(goal.describe(), len(candidates), kitchen.source, len(kitchen_nodes)),
                   *cost_lines(options)),
     )
-    return LiftedTask(task, lifted, level, {n: s for s, n in names.families.items()},
+    return LiftedTask(narrow_arguments(task), lifted, level, {n: s for s, n in names.families.items()},
                       {name: label for label, (name, _) in declared.items()})
 
 

@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from ..errors import UsageError
+from .arg_types import common_type
 from .encoding import GOAL_REACHED
 from .names import NameTable
 from .render import render_domain, render_problem
@@ -44,12 +45,19 @@ def _domain_part(task: PlanningTask) -> tuple:
 
 def _predicates(tasks: Sequence[PlanningTask]) -> dict[str, Predicate]:
     """Every predicate some task declares (a lifted task declares those its kitchen and goal need), by name, in
-    order of first declaration; UsageError when two declare one name differently."""
+    order of first declaration; argument types that differ between goals (`arg_types.narrow_arguments` types an
+    argument by its uses, goal atoms included) widen to their common type; UsageError when two declare one name
+    otherwise differently."""
     out: dict[str, Predicate] = {}
     for t in tasks:
         for p in t.predicates:
-            if p.name != GOAL_REACHED and out.setdefault(p.name, p) != p:
+            if p.name == GOAL_REACHED or out.setdefault(p.name, p) == p:
+                continue
+            q = out[p.name]
+            if [v for v, _ in q.params] != [v for v, _ in p.params] or q.comment != p.comment:
                 raise UsageError(f"the {t.encoding} encoding declares predicate {p.name!r} differently for two goals")
+            out[p.name] = replace(q, params=tuple((v, common_type(dict(t.types), (a, b)))
+                                                  for (v, a), (_, b) in zip(q.params, p.params, strict=True)))
     return out
 
 
