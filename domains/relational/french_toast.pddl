@@ -6,7 +6,7 @@
 ; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
-(define (domain foon-relational-8b630d3b)
+(define (domain foon-relational-6d0af126)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -217,17 +217,37 @@
   (:action mix_u41
     ; unit 41: mix from 05-french_toast.foon:51
     ; mix: bowl (contains {cinnamon, egg, milk, vanilla extract}), egg (beaten, in [bowl]), milk (in [bowl]), cinnamon (in [bowl]), vanilla extract (in [bowl]), fork -> bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla...
-    :parameters (?bowl - bowl ?custard - custard)
+    :parameters (?bowl - bowl ?egg - egg ?milk - milk ?cinnamon - cinnamon ?vanilla_extract - vanilla_extract ?custard - custard)
     :precondition (and
       (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract)
+      (is ?egg egg_beaten_in_bowl)
+      (in ?bowl ?egg)
+      (is ?milk milk_in_bowl)
+      (in ?bowl ?milk)
+      (is ?cinnamon cinnamon_in_bowl)
+      (in ?bowl ?cinnamon)
+      (is ?vanilla_extract vanilla_extract_in_bowl)
+      (in ?bowl ?vanilla_extract)
       (occupied fork_plain)
       (is ?custard not-yet-made)
     )
     :effect (and
       (is ?bowl bowl_contains_custard)
+      (is ?egg consumed)
+      (is ?milk consumed)
+      (is ?cinnamon consumed)
+      (is ?vanilla_extract consumed)
       (is ?custard custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (in ?bowl ?custard)
       (not (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract))
+      (not (is ?egg egg_beaten_in_bowl))
+      (not (in ?bowl ?egg))
+      (not (is ?milk milk_in_bowl))
+      (not (in ?bowl ?milk))
+      (not (is ?cinnamon cinnamon_in_bowl))
+      (not (in ?bowl ?cinnamon))
+      (not (is ?vanilla_extract vanilla_extract_in_bowl))
+      (not (in ?bowl ?vanilla_extract))
       (not (is ?custard not-yet-made))
       (forall (?egg_alike - egg) (when (and (in ?bowl ?egg_alike) (is ?egg_alike egg_beaten_in_bowl)) (and (is ?egg_alike consumed) (not (in ?bowl ?egg_alike)) (not (is ?egg_alike egg_beaten_in_bowl)))))
       (forall (?egg_alike-2 - egg) (when (and (in ?bowl ?egg_alike-2) (is ?egg_alike-2 egg_cracked_in_bowl)) (and (is ?egg_alike-2 consumed) (not (in ?bowl ?egg_alike-2)) (not (is ?egg_alike-2 egg_cracked_in_bowl)))))

@@ -4,7 +4,7 @@
 ; instances: 20 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 2, honey 2, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
 ; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
-(define (domain foon-relational-e3222b94)
+(define (domain foon-relational-f9d848dc)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -338,17 +338,37 @@
   (:action mix_u98
     ; unit 98: mix from 09-fruit_salad.foon:143
     ; mix: bowl (contains {banana, honey, lime juice, strawberry}), strawberry (in [bowl], sliced), banana (in [bowl], sliced), lime juice (in [bowl]), honey (in [bowl]), spoon -> bowl (contains {fruit salad}), fruit salad (contains {banana, h...
-    :parameters (?bowl - bowl ?fruit_salad - fruit_salad)
+    :parameters (?bowl - bowl ?strawberry - strawberry ?banana - banana ?lime_juice - lime_juice ?honey - honey ?fruit_salad - fruit_salad)
     :precondition (and
       (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry)
+      (is ?strawberry strawberry_in_bowl_sliced)
+      (in ?bowl ?strawberry)
+      (is ?banana banana_in_bowl_sliced)
+      (in ?bowl ?banana)
+      (is ?lime_juice lime_juice_in_bowl)
+      (in ?bowl ?lime_juice)
+      (is ?honey honey_in_bowl)
+      (in ?bowl ?honey)
       (occupied spoon_plain)
       (is ?fruit_salad not-yet-made)
     )
     :effect (and
       (is ?bowl bowl_contains_fruit_salad)
+      (is ?strawberry consumed)
+      (is ?banana consumed)
+      (is ?lime_juice consumed)
+      (is ?honey consumed)
       (is ?fruit_salad fruit_salad_contains_banana_honey_lime_juice_strawberry_in_bowl)
       (in ?bowl ?fruit_salad)
       (not (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry))
+      (not (is ?strawberry strawberry_in_bowl_sliced))
+      (not (in ?bowl ?strawberry))
+      (not (is ?banana banana_in_bowl_sliced))
+      (not (in ?bowl ?banana))
+      (not (is ?lime_juice lime_juice_in_bowl))
+      (not (in ?bowl ?lime_juice))
+      (not (is ?honey honey_in_bowl))
+      (not (in ?bowl ?honey))
       (not (is ?fruit_salad not-yet-made))
       (forall (?strawberry_alike - strawberry) (when (and (in ?bowl ?strawberry_alike) (is ?strawberry_alike strawberry_in_bowl_sliced)) (and (is ?strawberry_alike consumed) (not (in ?bowl ?strawberry_alike)) (not (is ?strawberry_alike strawberry_in_bowl_sliced)))))
       (forall (?banana_alike - banana) (when (and (in ?bowl ?banana_alike) (is ?banana_alike banana_in_bowl_sliced)) (and (is ?banana_alike consumed) (not (in ?bowl ?banana_alike)) (not (is ?banana_alike banana_in_bowl_sliced)))))
@@ -360,17 +380,27 @@
   (:action whisk_u99
     ; unit 99: whisk from 09-fruit_salad.foon:184
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
-    :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream ?sugar - sugar ?whipped_cream - whipped_cream)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
       (occupied whisk_plain)
       (is ?whipped_cream not-yet-made)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
+      (is ?heavy_cream consumed)
+      (is ?sugar consumed)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
       (in ?mixing_bowl ?whipped_cream)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?heavy_cream heavy_cream_in_mixing_bowl))
+      (not (in ?mixing_bowl ?heavy_cream))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
       (forall (?heavy_cream_alike - heavy_cream) (when (and (in ?mixing_bowl ?heavy_cream_alike) (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)) (and (is ?heavy_cream_alike consumed) (not (in ?mixing_bowl ?heavy_cream_alike)) (not (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)))))
       (forall (?sugar_alike - sugar) (when (and (in ?mixing_bowl ?sugar_alike) (is ?sugar_alike sugar_in_mixing_bowl)) (and (is ?sugar_alike consumed) (not (in ?mixing_bowl ?sugar_alike)) (not (is ?sugar_alike sugar_in_mixing_bowl)))))

@@ -5,7 +5,7 @@
 ; objects: 2 x avocado (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
 ; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
-(define (domain foon-relational-efd2c7e2)
+(define (domain foon-relational-a7a81448)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -426,19 +426,49 @@
   (:action mix_u77
     ; unit 77: mix from 07-guacamole.foon:240
     ; mix: bowl (contains {avocado, cilantro, lime juice, onion, salt, tomato}), avocado (in [bowl], mashed), lime juice (in [bowl]), onion (chopped, in [bowl]), tomato (chopped, in [bowl]), cilantro (chopped, in [bowl]), salt (in [bowl]), for...
-    :parameters (?bowl - bowl ?guacamole - guacamole)
+    :parameters (?bowl - bowl ?avocado - avocado ?lime_juice - lime_juice ?onion - onion ?tomato - tomato ?cilantro - cilantro ?salt - salt ?guacamole - guacamole)
     :precondition (and
       (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato)
+      (is ?avocado avocado_in_bowl_mashed)
+      (in ?bowl ?avocado)
+      (is ?lime_juice lime_juice_in_bowl)
+      (in ?bowl ?lime_juice)
+      (is ?onion onion_chopped_in_bowl)
+      (in ?bowl ?onion)
+      (is ?tomato tomato_chopped_in_bowl)
+      (in ?bowl ?tomato)
+      (is ?cilantro cilantro_chopped_in_bowl)
+      (in ?bowl ?cilantro)
+      (is ?salt salt_in_bowl)
+      (in ?bowl ?salt)
       (occupied fork_plain)
       (is ?guacamole not-yet-made)
     )
     :effect (and
       (is ?bowl bowl_contains_guacamole)
       (occupied bowl_contains_guacamole)
+      (is ?avocado consumed)
+      (is ?lime_juice consumed)
+      (is ?onion consumed)
+      (is ?tomato consumed)
+      (is ?cilantro consumed)
+      (is ?salt consumed)
       (is ?guacamole guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl)
       (occupied guacamole_contains_avocado_cilantro_lime_juice_onion_salt_tomato_in_bowl)
       (in ?bowl ?guacamole)
       (not (is ?bowl bowl_contains_avocado_cilantro_lime_juice_onion_salt_tomato))
+      (not (is ?avocado avocado_in_bowl_mashed))
+      (not (in ?bowl ?avocado))
+      (not (is ?lime_juice lime_juice_in_bowl))
+      (not (in ?bowl ?lime_juice))
+      (not (is ?onion onion_chopped_in_bowl))
+      (not (in ?bowl ?onion))
+      (not (is ?tomato tomato_chopped_in_bowl))
+      (not (in ?bowl ?tomato))
+      (not (is ?cilantro cilantro_chopped_in_bowl))
+      (not (in ?bowl ?cilantro))
+      (not (is ?salt salt_in_bowl))
+      (not (in ?bowl ?salt))
       (not (is ?guacamole not-yet-made))
       (forall (?avocado_alike - avocado) (when (and (in ?bowl ?avocado_alike) (is ?avocado_alike avocado_in_bowl_mashed)) (and (is ?avocado_alike consumed) (not (in ?bowl ?avocado_alike)) (not (is ?avocado_alike avocado_in_bowl_mashed)))))
       (forall (?avocado_alike-2 - avocado) (when (and (in ?bowl ?avocado_alike-2) (is ?avocado_alike-2 avocado_in_bowl_scooped)) (and (is ?avocado_alike-2 consumed) (not (in ?bowl ?avocado_alike-2)) (not (is ?avocado_alike-2 avocado_in_bowl_scooped)))))

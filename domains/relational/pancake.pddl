@@ -4,7 +4,7 @@
 ; instances: 20 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
-(define (domain foon-relational-5eb0b81c)
+(define (domain foon-relational-c742d0e1)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -245,17 +245,47 @@
   (:action whisk_u33
     ; unit 33: whisk from 04-pancakes.foon:52
     ; whisk: mixing bowl (contains {baking powder, egg, flour, milk, salt, sugar}), flour (in [mixing bowl]), baking powder (in [mixing bowl]), sugar (in [mixing bowl]), salt (in [mixing bowl]), egg (cracked, in [mixing bowl]), milk (in [mixin...
-    :parameters (?mixing_bowl - mixing_bowl ?pancake_batter - pancake_batter)
+    :parameters (?mixing_bowl - mixing_bowl ?flour - flour ?baking_powder - baking_powder ?sugar - sugar ?salt - salt ?egg - egg ?milk - milk ?pancake_batter - pancake_batter)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar)
+      (is ?flour flour_in_mixing_bowl)
+      (in ?mixing_bowl ?flour)
+      (is ?baking_powder baking_powder_in_mixing_bowl)
+      (in ?mixing_bowl ?baking_powder)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
+      (is ?salt salt_in_mixing_bowl)
+      (in ?mixing_bowl ?salt)
+      (is ?egg egg_cracked_in_mixing_bowl)
+      (in ?mixing_bowl ?egg)
+      (is ?milk milk_in_mixing_bowl)
+      (in ?mixing_bowl ?milk)
       (occupied whisk_plain)
       (is ?pancake_batter not-yet-made)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_pancake_batter)
+      (is ?flour consumed)
+      (is ?baking_powder consumed)
+      (is ?sugar consumed)
+      (is ?salt consumed)
+      (is ?egg consumed)
+      (is ?milk consumed)
       (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_mixing_bowl)
       (in ?mixing_bowl ?pancake_batter)
       (not (is ?mixing_bowl mixing_bowl_contains_baking_powder_egg_flour_milk_salt_sugar))
+      (not (is ?flour flour_in_mixing_bowl))
+      (not (in ?mixing_bowl ?flour))
+      (not (is ?baking_powder baking_powder_in_mixing_bowl))
+      (not (in ?mixing_bowl ?baking_powder))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
+      (not (is ?salt salt_in_mixing_bowl))
+      (not (in ?mixing_bowl ?salt))
+      (not (is ?egg egg_cracked_in_mixing_bowl))
+      (not (in ?mixing_bowl ?egg))
+      (not (is ?milk milk_in_mixing_bowl))
+      (not (in ?mixing_bowl ?milk))
       (not (is ?pancake_batter not-yet-made))
       (forall (?flour_alike - flour) (when (and (in ?mixing_bowl ?flour_alike) (is ?flour_alike flour_in_mixing_bowl)) (and (is ?flour_alike consumed) (not (in ?mixing_bowl ?flour_alike)) (not (is ?flour_alike flour_in_mixing_bowl)))))
       (forall (?baking_powder_alike - baking_powder) (when (and (in ?mixing_bowl ?baking_powder_alike) (is ?baking_powder_alike baking_powder_in_mixing_bowl)) (and (is ?baking_powder_alike consumed) (not (in ?mixing_bowl ?baking_powder_alike)) (not (is ?baking_powder_alike baking_powder_in_mixing_bowl)))))
@@ -294,18 +324,23 @@
   (:action cook_u35
     ; unit 35: cook from 04-pancakes.foon:135
     ; cook: stove (on), frying pan (contains {butter, pancake batter}, on [stove]), pancake batter (contains {baking powder, egg, flour, milk, salt, sugar}, in [frying pan]) -> frying pan (contains {pancake}, on [stove]), pancake (half-cooked,...
-    :parameters (?stove - stove ?frying_pan - frying_pan ?pancake - pancake)
+    :parameters (?stove - stove ?frying_pan - frying_pan ?pancake_batter - pancake_batter ?pancake - pancake)
     :precondition (and
       (is ?stove stove_on)
       (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove)
       (on ?stove ?frying_pan)
+      (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)
+      (in ?frying_pan ?pancake_batter)
       (is ?pancake not-yet-made)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_pancake_on_stove)
+      (is ?pancake_batter consumed)
       (is ?pancake pancake_half-cooked_in_frying_pan)
       (in ?frying_pan ?pancake)
       (not (is ?frying_pan frying_pan_contains_butter_pancake_batter_on_stove))
+      (not (is ?pancake_batter pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan))
+      (not (in ?frying_pan ?pancake_batter))
       (not (is ?pancake not-yet-made))
       (forall (?pancake_batter_alike - pancake_batter) (when (and (in ?frying_pan ?pancake_batter_alike) (is ?pancake_batter_alike pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)) (and (is ?pancake_batter_alike consumed) (not (in ?frying_pan ?pancake_batter_alike)) (not (is ?pancake_batter_alike pancake_batter_contains_baking_powder_egg_flour_milk_salt_sugar_in_frying_pan)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))

@@ -5,7 +5,7 @@
 ; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
-(define (domain foon-relational-51dfb79a)
+(define (domain foon-relational-4c06a5ab)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -149,17 +149,37 @@
   (:action mix_u21
     ; unit 21: mix from 03-scrambled_eggs.foon:51
     ; mix: bowl (contains {black pepper, egg, milk, salt}), egg (beaten, in [bowl]), milk (in [bowl]), salt (in [bowl]), black pepper (in [bowl]), whisk -> bowl (contains {egg mixture}), egg mixture (contains {black pepper, egg, milk, salt}, i...
-    :parameters (?bowl - bowl ?egg_mixture - egg_mixture)
+    :parameters (?bowl - bowl ?egg - egg ?milk - milk ?salt - salt ?black_pepper - black_pepper ?egg_mixture - egg_mixture)
     :precondition (and
       (is ?bowl bowl_contains_black_pepper_egg_milk_salt)
+      (is ?egg egg_beaten_in_bowl)
+      (in ?bowl ?egg)
+      (is ?milk milk_in_bowl)
+      (in ?bowl ?milk)
+      (is ?salt salt_in_bowl)
+      (in ?bowl ?salt)
+      (is ?black_pepper black_pepper_in_bowl)
+      (in ?bowl ?black_pepper)
       (occupied whisk_plain)
       (is ?egg_mixture not-yet-made)
     )
     :effect (and
       (is ?bowl bowl_contains_egg_mixture)
+      (is ?egg consumed)
+      (is ?milk consumed)
+      (is ?salt consumed)
+      (is ?black_pepper consumed)
       (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_bowl)
       (in ?bowl ?egg_mixture)
       (not (is ?bowl bowl_contains_black_pepper_egg_milk_salt))
+      (not (is ?egg egg_beaten_in_bowl))
+      (not (in ?bowl ?egg))
+      (not (is ?milk milk_in_bowl))
+      (not (in ?bowl ?milk))
+      (not (is ?salt salt_in_bowl))
+      (not (in ?bowl ?salt))
+      (not (is ?black_pepper black_pepper_in_bowl))
+      (not (in ?bowl ?black_pepper))
       (not (is ?egg_mixture not-yet-made))
       (forall (?egg_alike - egg) (when (and (in ?bowl ?egg_alike) (is ?egg_alike egg_beaten_in_bowl)) (and (is ?egg_alike consumed) (not (in ?bowl ?egg_alike)) (not (is ?egg_alike egg_beaten_in_bowl)))))
       (forall (?egg_alike-2 - egg) (when (and (in ?bowl ?egg_alike-2) (is ?egg_alike-2 egg_cracked_in_bowl)) (and (is ?egg_alike-2 consumed) (not (in ?bowl ?egg_alike-2)) (not (is ?egg_alike-2 egg_cracked_in_bowl)))))
@@ -256,19 +276,24 @@
   (:action stir_u27
     ; unit 27: stir from 03-scrambled_eggs.foon:128
     ; stir: stove (on), frying pan (contains {butter, egg mixture}, on [stove]), egg mixture (contains {black pepper, egg, milk, salt}, in [frying pan]), spatula -> frying pan (contains {scrambled eggs}, on [stove]), scrambled eggs (cooked, in...
-    :parameters (?stove - stove ?frying_pan - frying_pan ?scrambled_eggs - scrambled_eggs)
+    :parameters (?stove - stove ?frying_pan - frying_pan ?egg_mixture - egg_mixture ?scrambled_eggs - scrambled_eggs)
     :precondition (and
       (is ?stove stove_on)
       (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove)
       (on ?stove ?frying_pan)
+      (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)
+      (in ?frying_pan ?egg_mixture)
       (occupied spatula_plain)
       (is ?scrambled_eggs not-yet-made)
     )
     :effect (and
       (is ?frying_pan frying_pan_contains_scrambled_eggs_on_stove)
+      (is ?egg_mixture consumed)
       (is ?scrambled_eggs scrambled_eggs_cooked_in_frying_pan)
       (in ?frying_pan ?scrambled_eggs)
       (not (is ?frying_pan frying_pan_contains_butter_egg_mixture_on_stove))
+      (not (is ?egg_mixture egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan))
+      (not (in ?frying_pan ?egg_mixture))
       (not (is ?scrambled_eggs not-yet-made))
       (forall (?egg_mixture_alike - egg_mixture) (when (and (in ?frying_pan ?egg_mixture_alike) (is ?egg_mixture_alike egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)) (and (is ?egg_mixture_alike consumed) (not (in ?frying_pan ?egg_mixture_alike)) (not (is ?egg_mixture_alike egg_mixture_contains_black_pepper_egg_milk_salt_in_frying_pan)))))
       (forall (?butter_in_it - butter) (when (and (in ?frying_pan ?butter_in_it) (is ?butter_in_it butter_in_frying_pan_melted)) (and (is ?butter_in_it consumed) (not (in ?frying_pan ?butter_in_it)) (not (is ?butter_in_it butter_in_frying_pan_melted)))))

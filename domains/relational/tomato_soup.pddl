@@ -8,7 +8,7 @@
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; objects: 2 x tomato (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
-(define (domain foon-relational-0f70d804)
+(define (domain foon-relational-2483e756)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -290,18 +290,38 @@
   (:action simmer_u58
     ; unit 58: simmer from 06-tomato_soup.foon:151
     ; simmer: stove (on), pot (contains {olive oil, onion, tomato, vegetable broth}, on [stove]), olive oil (in [pot]), onion (in [pot], sauteed), tomato (chopped, in [pot]), vegetable broth (in [pot]) -> pot (contains {tomato soup}, on [stove...
-    :parameters (?stove - stove ?pot - pot ?tomato_soup - tomato_soup)
+    :parameters (?stove - stove ?pot - pot ?olive_oil - olive_oil ?onion - onion ?tomato - tomato ?vegetable_broth - vegetable_broth ?tomato_soup - tomato_soup)
     :precondition (and
       (is ?stove stove_on)
       (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove)
       (on ?stove ?pot)
+      (is ?olive_oil olive_oil_in_pot)
+      (in ?pot ?olive_oil)
+      (is ?onion onion_in_pot_sauteed)
+      (in ?pot ?onion)
+      (is ?tomato tomato_chopped_in_pot)
+      (in ?pot ?tomato)
+      (is ?vegetable_broth vegetable_broth_in_pot)
+      (in ?pot ?vegetable_broth)
       (is ?tomato_soup not-yet-made)
     )
     :effect (and
       (is ?pot pot_contains_tomato_soup_on_stove)
+      (is ?olive_oil consumed)
+      (is ?onion consumed)
+      (is ?tomato consumed)
+      (is ?vegetable_broth consumed)
       (is ?tomato_soup tomato_soup_chunky_in_pot)
       (in ?pot ?tomato_soup)
       (not (is ?pot pot_contains_olive_oil_onion_tomato_vegetable_broth_on_stove))
+      (not (is ?olive_oil olive_oil_in_pot))
+      (not (in ?pot ?olive_oil))
+      (not (is ?onion onion_in_pot_sauteed))
+      (not (in ?pot ?onion))
+      (not (is ?tomato tomato_chopped_in_pot))
+      (not (in ?pot ?tomato))
+      (not (is ?vegetable_broth vegetable_broth_in_pot))
+      (not (in ?pot ?vegetable_broth))
       (not (is ?tomato_soup not-yet-made))
       (forall (?olive_oil_alike - olive_oil) (when (and (in ?pot ?olive_oil_alike) (is ?olive_oil_alike olive_oil_in_pot)) (and (is ?olive_oil_alike consumed) (not (in ?pot ?olive_oil_alike)) (not (is ?olive_oil_alike olive_oil_in_pot)))))
       (forall (?onion_alike - onion) (when (and (in ?pot ?onion_alike) (is ?onion_alike onion_chopped_in_pot)) (and (is ?onion_alike consumed) (not (in ?pot ?onion_alike)) (not (is ?onion_alike onion_chopped_in_pot)))))

@@ -2,7 +2,7 @@
 ; goal: whipped cream (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 8 (bowl 1, heavy cream 2, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
-(define (domain foon-relational-ad010dd8)
+(define (domain foon-relational-733e9be4)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -106,17 +106,27 @@
   (:action whisk_u99
     ; unit 99: whisk from 09-fruit_salad.foon:184
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
-    :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
+    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream ?sugar - sugar ?whipped_cream - whipped_cream)
     :precondition (and
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
+      (is ?heavy_cream heavy_cream_in_mixing_bowl)
+      (in ?mixing_bowl ?heavy_cream)
+      (is ?sugar sugar_in_mixing_bowl)
+      (in ?mixing_bowl ?sugar)
       (occupied whisk_plain)
       (is ?whipped_cream not-yet-made)
     )
     :effect (and
       (is ?mixing_bowl mixing_bowl_contains_whipped_cream)
+      (is ?heavy_cream consumed)
+      (is ?sugar consumed)
       (is ?whipped_cream whipped_cream_in_mixing_bowl_whipped)
       (in ?mixing_bowl ?whipped_cream)
       (not (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar))
+      (not (is ?heavy_cream heavy_cream_in_mixing_bowl))
+      (not (in ?mixing_bowl ?heavy_cream))
+      (not (is ?sugar sugar_in_mixing_bowl))
+      (not (in ?mixing_bowl ?sugar))
       (not (is ?whipped_cream not-yet-made))
       (forall (?heavy_cream_alike - heavy_cream) (when (and (in ?mixing_bowl ?heavy_cream_alike) (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)) (and (is ?heavy_cream_alike consumed) (not (in ?mixing_bowl ?heavy_cream_alike)) (not (is ?heavy_cream_alike heavy_cream_in_mixing_bowl)))))
       (forall (?sugar_alike - sugar) (when (and (in ?mixing_bowl ?sugar_alike) (is ?sugar_alike sugar_in_mixing_bowl)) (and (is ?sugar_alike consumed) (not (in ?mixing_bowl ?sugar_alike)) (not (is ?sugar_alike sugar_in_mixing_bowl)))))

@@ -25,8 +25,7 @@
   - a container FOON filled earlier and leaves out of the outputs is emptied of
     what leaves it (`relational_plan.without`);
   - a consumed object goes to `consumed` and leaves its holder, with all of its
-    label there when the holder's node no longer lists it (then it needs no
-    parameter: one conditional effect per node it can be in); contents that are
+    label there when the holder's node no longer lists it; contents that are
     no role of the unit follow their container's list (`holders.Flow`), by one
     quantified conditional effect per node they can be in.
 * **Init.** Kitchen objects start in the state of their node; an object whose node
@@ -227,17 +226,9 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
     for k in emptied:
         per_label[slots[k].rel.role.label] = per_label.get(slots[k].rel.role.label, 0) + 1
     emptied = {k: n for k, n in emptied.items() if per_label[slots[k].rel.role.label] > 1}
-    # An ingredient consumed with all of its label in the holder needs no parameter: a conditional effect
-    # consumes what is there (else 4^10 groundings of a blend). Not when something is in or on it, or a flow.
-    pooled = [bool(relational_plan.alike_nodes(plan, s, inside)) and not inside.get(s.rel.role.label)
-              and s.rel.role.label in type_of and s.rel.role.before not in stable
-              and all(k not in (f.holder, f.into) for f in plan.flows) for k, s in enumerate(slots)]
-    bound = [not pooled[k] and (s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
-             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied))
+    bound = [s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
+             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied)
              for k, s in enumerate(slots)]
-    for k, s in enumerate(slots):
-        if pooled[k]:
-            bound[s.rel.source.role] = True
     for f in plan.flows:
         bound[f.holder] = True
         if f.into is not None:
@@ -313,9 +304,6 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             becomes(portion, None, s.portion)
             if r.target is not None and (h := holder_var(r.target, label, k)) is not None:
                 add.append(Atom(r.target.relation.value, (h, portion)))
-        if pooled[k]:
-            _consume_alike(plan, s, inside, names, var, const, type_of, cond, k)
-            continue
         if not bound[k]:
             if before in stable:  # else a container emptied by a conditional effect: whichever holds the object
                 pre.append(Atom(OCCUPIED, (const[before],)))

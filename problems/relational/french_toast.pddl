@@ -7,7 +7,7 @@
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
 (define (problem make_french_toast)
-  (:domain foon-relational-8b630d3b)
+  (:domain foon-relational-6d0af126)
   (:objects
     bowl_1 - bowl
     bowl_2 - bowl

@@ -5,7 +5,7 @@
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
 ; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
 (define (problem make_fruit_salad)
-  (:domain foon-relational-e3222b94)
+  (:domain foon-relational-f9d848dc)
   (:objects
     banana_1 - banana
     bowl_1 - bowl

@@ -6,7 +6,7 @@
 ; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
 ; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
 (define (problem make_guacamole)
-  (:domain foon-relational-efd2c7e2)
+  (:domain foon-relational-a7a81448)
   (:objects
     avocado_1 - avocado
     avocado_2 - avocado

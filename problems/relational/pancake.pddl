@@ -5,7 +5,7 @@
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
 (define (problem make_pancake)
-  (:domain foon-relational-5eb0b81c)
+  (:domain foon-relational-c742d0e1)
   (:objects
     baking_powder_1 - baking_powder
     butter_1 - butter

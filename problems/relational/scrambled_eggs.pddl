@@ -6,7 +6,7 @@
 ; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
 ; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 (define (problem make_scrambled_eggs)
-  (:domain foon-relational-51dfb79a)
+  (:domain foon-relational-4c06a5ab)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl

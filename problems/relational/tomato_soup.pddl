@@ -9,7 +9,7 @@
 ; objects: 2 x tomato (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
 (define (problem make_tomato_soup)
-  (:domain foon-relational-0f70d804)
+  (:domain foon-relational-2483e756)
   (:objects
     basil_1 - basil
     bowl_1 - bowl

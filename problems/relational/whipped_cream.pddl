@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 8 (bowl 1, heavy cream 2, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 (define (problem make_whipped_cream)
-  (:domain foon-relational-ad010dd8)
+  (:domain foon-relational-733e9be4)
   (:objects
     bowl_1 - bowl
     heavy_cream_1 - heavy_cream
