@@ -636,3 +636,14 @@ def test_a_missing_network_path_and_a_whole_file_problem_have_no_line(tmp_path):
     assert r.exit_code == 2 and r.stderr == f"{tmp_path / 'nope.txt'}: error: no such file or directory\n", r.output
     r = run("plan", "--goal", "guacamole", "--kitchen", tmp_path)
     assert r.exit_code == 2 and r.stderr == f"{tmp_path}: error: cannot read file: Is a directory\n", r.output
+
+
+def test_a_batch_table_at_a_terminal_gives_its_total_once(monkeypatch):
+    from foon2pddl.cli import batch
+
+    piped = run("retrieve", "--goal", "guacamole", "--goal", "lemonade")
+    assert piped.exit_code == 1 and piped.stdout.splitlines()[-1] == "2 goals: 1 solved, 1 unreachable"  # for files
+    monkeypatch.setattr(batch, "_stdout_is_terminal", lambda: True)
+    shown = run("retrieve", "--goal", "guacamole", "--goal", "lemonade")
+    assert shown.exit_code == 1 and "goals:" not in shown.stdout, shown.stdout
+    assert shown.stderr.count("2 goals: 1 solved, 1 unreachable") == 1, shown.stderr

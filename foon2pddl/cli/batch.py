@@ -55,9 +55,14 @@ def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None
 
 
 def finish(rows: list[dict], table_fmt: str, note: str, solved: Callable[[dict], bool] | None = None) -> None:
-    """Print the table (stdout) and the summary (stderr); exit 1 unless every goal was solved."""
-    click.echo(format_table(rows, table_fmt), nl=False)
+    """Print the table (stdout) and the summary (stderr; at a terminal the text table leaves it out, so it is
+    said once); exit 1 unless every goal was solved."""
+    click.echo(format_table(rows, table_fmt, total=not (table_fmt == "text" and _stdout_is_terminal())), nl=False)
     click.echo(f"{summary(rows)} ({note})", err=True)
     ok = solved or (lambda r: r["status"] == "solved")
     if not all(ok(r) for r in rows):
         click.get_current_context().exit(1)
+
+
+def _stdout_is_terminal() -> bool:
+    return click.get_text_stream("stdout").isatty()

@@ -23,8 +23,9 @@ def summary(rows: Sequence[dict]) -> str:
     return f"{len(rows)} goals: {parts}" if rows else "0 goals"
 
 
-def format_table(rows: Sequence[dict], fmt: str) -> str:
-    """Rows (`GoalRow.as_dict()`, optionally with `file`) as `text`, `csv` or `jsonl` (one JSON object a line)."""
+def format_table(rows: Sequence[dict], fmt: str, total: bool = True) -> str:
+    """Rows (`GoalRow.as_dict()`, optionally with `file`) as `text`, `csv` or `jsonl` (one JSON object a line);
+    `text` ends with the `summary` line unless `total` is false."""
     if fmt == "jsonl":
         return "".join(json.dumps(r, ensure_ascii=False) + "\n" for r in rows)
     if fmt == "csv":
@@ -45,7 +46,8 @@ def format_table(rows: Sequence[dict], fmt: str) -> str:
             lines.append(f"{'':<43}{r['reason']}")
         for node in r["inferred"]:
             lines.append(f"{'':<43}inferred: {node}")
-    lines.append(summary(rows))
+    if total:
+        lines.append(summary(rows))
     return "\n".join(lines) + "\n"
 
 
