@@ -255,3 +255,6 @@ def test_french_toast_dips_the_bread_into_the_custard_not_the_custard_into_the_b
     robot = lines[next(k for k, line in enumerate(lines) if re.match(r"\d+\. dip bread", line)) + 1]
     assert re.fullmatch(r"   robot: pick up the bread from the workspace; dip the bread into the bowl( \d+)?; "
                         r"put the bread on the workspace", robot), robot
+    assert "abstract" not in result.stderr, result.stderr  # every step has a skill: melt heats the butter
+    melt = lines[next(k for k, line in enumerate(lines) if re.match(r"\d+\. melt butter", line)) + 1]
+    assert melt == "   robot: heat the butter", melt
