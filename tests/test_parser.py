@@ -510,9 +510,9 @@ def _check_one_error(result, path, line):
     assert result.exit_code == 2
     assert "Traceback" not in result.output + result.stderr
     assert result.stdout == ""
-    located = [r for r in result.stderr.splitlines() if re.match(r"\S.*?:\d+: error: ", r)]
+    located = [r for r in result.stderr.splitlines() if re.match(r"\S.*?: error: ", r)]
     assert len(located) == 1, result.stderr
-    prefix = f"{path}:{line if line is not None else 0}: error: "
+    prefix = f"{path}:{line}: error: " if line is not None else f"{path}: error: "  # the file as a whole: no line
     assert located[0].startswith(prefix), (located, prefix)
 
 
