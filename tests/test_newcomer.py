@@ -647,3 +647,14 @@ def test_a_batch_table_at_a_terminal_gives_its_total_once(monkeypatch):
     shown = run("retrieve", "--goal", "guacamole", "--goal", "lemonade")
     assert shown.exit_code == 1 and "goals:" not in shown.stdout, shown.stdout
     assert shown.stderr.count("2 goals: 1 solved, 1 unreachable") == 1, shown.stderr
+
+
+def test_batch_retrieve_and_batch_plan_say_what_an_unreachable_goal_needs_in_the_same_words():
+    # one wording for one fact: the smallest kitchen additions, as the single-goal commands give them
+    words = "smallest kitchen additions that make it: add `lemon (whole)`"
+    for command in ("retrieve", "plan"):
+        r = run(command, "--goal", "guacamole", "--goal", "lemonade")
+        assert r.exit_code == 1 and words in r.stdout, (command, r.stdout)
+        assert "missing (no unit makes them)" not in r.stdout
+    single = run("retrieve", "--goal", "lemonade")
+    assert words in single.stderr

@@ -4,7 +4,9 @@ The network, its index and the reachability fixpoint from the kitchen are built
 once and shared by every goal (the fixpoint answers unreachable goals and seeds
 every method), so a goal costs its own search only: the 25 goals of the search
 inputs take milliseconds, where one process per goal spent ~0.85 s loading.
-Each found tree is validated by simulation under the same containment rule.
+Each found tree is validated by simulation under the same containment rule. An
+unreachable goal's reason names the smallest kitchen additions that make it
+(`explain.explain_unreachable`): the words `retrieve` and `plan` give one goal.
 """
 
 from __future__ import annotations
@@ -23,8 +25,10 @@ from ..model.goal import Goal, GoalSpec
 from ..model.tasktree import TaskTree, validate
 from ..status import BatchStatus, batch_status
 from .api import retrieve
+from .explain import explain_unreachable
 from .greedy import DEFAULT_BUDGET
 from .optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
+from .result import UNREACHABLE
 
 
 @dataclass(frozen=True)
@@ -77,9 +81,10 @@ def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, met
     except FoonError as exc:  # no node matches the goal
         return GoalRow(entry.spec.describe(), where, BatchStatus.UNMATCHED, clock() - t0, exc.message)
     result = retrieve(foon, kitchen, goal, method, rates=rates, reach=reach, **limits)
-    if result.tree is None:
+    if result.tree is None:  # unreachable: the smallest kitchen additions, in the words `retrieve` gives one goal
+        detail = explain_unreachable(foon, kitchen, goal) if result.reason == UNREACHABLE else result.detail
         return GoalRow(goal.describe(), where, batch_status(result.reason), clock() - t0,
-                       f"{result.reason}: {result.detail}")
+                       f"{result.reason}: {detail}")
     check = validate(result.tree, kitchen, mode)
     units = len(result.tree.units) - count_inference(result.tree.units)
     inferred = tuple(n.describe() for n in check.inferred)
