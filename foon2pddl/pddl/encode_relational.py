@@ -197,16 +197,6 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why)
 
 
-def _consume_alike(plan, s, inside, names, var, const, type_of, cond, k) -> None:
-    """Conditional effects: every object of the slot's label in its holder, in a node of it, is consumed."""
-    label = s.rel.role.label
-    for node, rel in relational_plan.alike_nodes(plan, s, inside):
-        c = f"?{names.name(f'{label} alike', key=('alike', k, node))}"
-        there, was = Atom(rel.value, (var[s.rel.source.role], c)), Atom(IS, (c, const[node]))
-        cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
-                                var=c, type=type_of[label]))
-
-
 def _where(unit, path=str) -> str:
     src = unit.source
     return f"{path(src.path)}:{src.line}" if src is not None else "?"
@@ -312,14 +302,18 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
         after = plan.after_of(k) if bound[k] else s.after
         if s.fate is Fate.CONSUMED:
             becomes(v, before, CONSUMED)
-            for node, rel in inside.get(label, ()):  # what is in or on it became part of the mixture too
+            # what is in or on it became part of the mixture too, and so did all of its label in its holder
+            sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label))
+                     for node, rel in inside.get(label, ())]
+            if r.source is not None and r.source.role is not None and bound[r.source.role]:
+                sweep += [(var[r.source.role], node, rel, f"{label} alike", ("alike", k, node))
+                          for node, rel in relational_plan.alike_nodes(plan, s, inside)]
+            for h, node, rel, word, key in sweep:
                 if node.label in type_of:
-                    c = f"?{names.name(f'{node.label} in {label}', key=('inside', k, node.label))}"
-                    there, was = Atom(rel.value, (v, c)), Atom(IS, (c, const[node]))
+                    c = f"?{names.name(word, key=key)}"
+                    there, was = Atom(rel.value, (h, c)), Atom(IS, (c, const[node]))
                     cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
                                             var=c, type=type_of[node.label]))
-            if r.source is not None and r.source.role is not None and bound[r.source.role]:
-                _consume_alike(plan, s, inside, names, var, const, type_of, cond, k)
         elif after is not None and after != before:
             becomes(v, before, after)
         src, dst = r.source, r.target

@@ -333,8 +333,9 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
         if holders and not any(label in listed(n) for n in holders):
             out.append((place[1], label, f"{label} is {place[0]} [{place[1]}], whose node after the unit does not "
                         "list it"))
+    rels = relational_roles(unit)
     for k, r in enumerate(roles):  # rule 2: the only holder the unit has lists its contents without it
-        src = _holder([x.label for x in roles], list(read.before), k, r.label, place_of(read.before[k]), True)
+        src = rels[k].source
         mine = [j for j, x in enumerate(roles) if j != k and src is not None and x.label == src.holder
                 and read.before[j] is not None]
         if r.before is not None and src is not None and src.role is None and mine and all(
