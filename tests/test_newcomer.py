@@ -513,16 +513,37 @@ def test_the_kitchen_a_run_uses_on_the_corpus(universal):
 # -- 13. what plan and the experiment leave out, said -------------------------------------------------
 
 
-def test_plan_names_the_steps_it_left_out():
-    r = run("plan", "--goal", "guacamole", "--plan-file", "/dev/null")
+def _summary_counts(stderr: str) -> tuple[int, int]:
+    summary = next(line for line in stderr.splitlines() if line.startswith("solved"))
+    return int(summary.split(": ")[1].split()[0]), int(summary.split(", ")[1].split()[0])
+
+
+def test_plan_names_the_steps_it_left_out(tmp_path):
+    import json
+
+    r = run("plan", "--goal", "guacamole", "--format", "json", "--plan-file", tmp_path / "sas_plan")
     assert r.exit_code == 0
-    summary = next(line for line in r.stderr.splitlines() if line.startswith("solved"))
-    steps, units = int(summary.split(": ")[1].split()[0]), int(summary.split(", ")[1].split()[0])
-    assert steps > units  # lama-first's plan has detours here: they are named, with their step numbers
-    note = next(line for line in r.stderr.splitlines() if line.startswith("note: left out "))
-    assert 1 <= int(note.split()[3]) <= steps - units  # the rest: a goal's bookkeeping action, repeats
-    numbered = [part.split(" (")[0] for part in note.split(": ", 2)[2].split("; ")]
-    assert all(n.isdigit() and 1 <= int(n) <= steps for n in numbered)
+    data = json.loads(r.stdout)
+    raw, used = data["planner_plan"], data["plan"]
+    assert len(raw) > len(used)  # lama-first's plan has detours here: they are named, with their step numbers
+    note = next(n for n in data["validation"]["notes"] if n.startswith("left out "))
+    assert f"of the planner's {len(raw)}" in note
+    numbered = [int(part.split(" (")[0]) for part in note.split(": ", 1)[1].split("; ")]
+    assert len(numbered) == int(note.split()[2]) == len(raw) - len(used)
+    assert all(raw[n - 1] not in used for n in numbered)
+    assert (tmp_path / "sas_plan").read_text().splitlines()[:-1] == [f"({s})" for s in used]
+
+
+def test_plan_steps_printed_are_the_ones_that_make_the_goal():
+    # lama-first fires both the lemon-juice chain (a lime squeezed where the recipe squeezed a lemon) and
+    # guacamole's lime-juice chain; the tree uses one: the plan printed, counted and written is that one
+    r = run("plan", "--goal", "lemonade", "--network", "gen")
+    assert r.exit_code == 0, r.output
+    steps, units = _summary_counts(r.stderr)
+    assert steps == units == 9, r.stderr
+    assert "note: left out 5 of the planner's 14 plan steps the goal does not need: 4 (squeeze: " in r.stderr
+    # the lifted plan names what the squeezed lime made as the recipe does; the tree renames it, and says so
+    assert "lemon juice -> lime juice" in r.stderr and "lemon juice" not in r.stdout
 
 
 def test_another_protocol_is_said_in_words():

@@ -199,3 +199,27 @@ def test_doubled_plan_decodes_to_the_same_tree_and_says_so():
     # the steps the goal does not need are named once, at their first position, either way
     left_out = tuple(n for n in once.decoded.notes if n.startswith("left out "))
     assert once.decoded.notes == left_out and len(twice.decoded.notes) == 1 + len(left_out)
+
+
+@pytest.mark.parametrize(("encoding", "dish"), [("tree", "guacamole"), ("foon-compat", "guacamole"), ("ocp", "pancake"),
+                                               ("state", "pancake"), ("instances", "guacamole")])
+def test_the_plan_reported_is_a_valid_subplan_of_the_planners_that_makes_the_tree(encoding, dish):
+    """Issue 24: the steps a plan reports are the ones the tree needs, in the planner's order, and still a plan."""
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.planners.decode import simulate_plan
+
+    net = load_network([])
+    foon = net.at(3)
+    kitchen, goal = load_kitchen(None, net, 3), load_goal(dish, None, foon)
+    out = plan(foon, kitchen, goal, encoding)
+    assert out.status == "solved", out.message
+    raw, used = out.result.plan, out.steps
+    assert simulate_plan(out.task, used).ok
+    walk = iter(raw)
+    assert all(step in walk for step in used)  # a subsequence of the planner's plan
+    if out.compiled.every_step or not out.compiled.foon_semantics:
+        assert used == tuple(raw)  # every step is a firing (or the tree is no FOON tree): nothing left out
+    else:
+        units = [out.compiled.unit_of(out.task.action_for(s.split()[0]), tuple(s.split()[1:])) for s in used]
+        assert len([u for u in units if u is not None]) == len(out.decoded.tree.units)
+        assert len(used) < len(raw)  # lama-first's guacamole plan has detours (named in a note)

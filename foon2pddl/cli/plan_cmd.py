@@ -71,7 +71,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "message": outcome.message or outcome.result.message,
         "encoding": outcome.task.encoding,
         "level": outcome.task.level,
-        "plan": list(outcome.result.plan),
+        "plan": list(outcome.steps),
+        "planner_plan": list(outcome.result.plan),
         "timings": {p: round(timings[p], 6) for p in PHASES if p in timings},
         "validation": validation,
         "tree": json.loads(tree_json) if tree_json is not None else None,
@@ -190,7 +191,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     else:
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
-            summary += f": {len(outcome.result.plan)} plan steps, {len(outcome.tree)} units, valid"
+            summary += f": {len(outcome.steps)} plan steps, {len(outcome.tree)} units, valid"
             if not outcome.validation.ok:  # state encoding: its semantics are not FOON's
                 summary += (f" under the {encoding} encoding; as a FOON task tree it is not executable: "
                             + "; ".join(outcome.validation.problems[:2]))
@@ -210,7 +211,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     if data is not None:
         emit(data, output)
     if plan_file is not None and status == "solved":  # only a plan that decoded and validated (atomically)
-        emit(sas_plan_text(outcome.result.plan, plan_cost(outcome.task, outcome.result.plan)), plan_file)
+        emit(sas_plan_text(outcome.steps, plan_cost(outcome.task, outcome.steps)), plan_file)
     if EXIT[status]:
         click.get_current_context().exit(EXIT[status])
 

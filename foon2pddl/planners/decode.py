@@ -37,8 +37,8 @@ from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
 from .result import step_action
 from .trace_check import check_states
 
-__all__ = ["Decoded", "PlanDecodeError", "check", "decode", "goal_node", "plan_units", "run_plan", "simulate_plan",
-           "to_tree", "up_validation"]
+__all__ = ["Decoded", "PlanDecodeError", "check", "decode", "finished", "goal_node", "plan_tree", "plan_units",
+           "run_plan", "simulate_plan", "to_tree", "up_validation", "used_steps"]
 
 #: Largest task (actions) checked with UP's validator: its cost grows fast with size.
 UP_VALIDATE_MAX_ACTIONS = 300
@@ -52,7 +52,8 @@ class Decoded:
     task's STRIPS semantics; `up_validation`: UP's verdict (None when not run);
     `foon_semantics`: whether the encoding promises FOON's semantics (then
     `validation` must pass too); `trace`: the plan object by object (None for
-    encodings with no physical objects) and `trace_check` its replay.
+    encodings with no physical objects) and `trace_check` its replay; `steps`: the plan as reported,
+    the planner's steps the tree does not use left out (`used_steps`, named in `notes`).
     """
 
     tree: TaskTree
@@ -63,6 +64,7 @@ class Decoded:
     notes: tuple[str, ...] = ()
     trace: PhysicalTrace | None = None
     trace_check: Validation | None = None
+    steps: tuple[str, ...] = ()  # the plan's steps the tree uses (`used_steps`), a valid plan of the task
 
     @property
     def ok(self) -> bool:
@@ -135,9 +137,10 @@ def goal_adders(task: PlanningTask, steps: Sequence[str]) -> frozenset[int]:
     return frozenset(found)
 
 
-def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
-            kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
-    """The task tree of a plan (kitchen nodes at the task's level); PlanDecodeError for a step that maps to no unit.
+def plan_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
+              kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
+    """The task tree of the plan's own units (before `Compiled.finish`); PlanDecodeError for a step that maps
+    to no unit.
 
     For encodings with FOON's semantics, steps the goal does not need are dropped
     (`tasktree.justify`); in delete-free tasks so are repeats of a unit already applied
@@ -151,20 +154,67 @@ def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
     target = goal_node(goal, compiled.task.level, kitchen_nodes, units)
     if compiled.foon_semantics and not compiled.every_step:
         units = justify(units, kitchen_nodes, target, goal_adders(compiled.task, steps))
-    tree = TaskTree(units, target, compiled.task.level)
-    return tree if compiled.finish is None else compiled.finish(tree, steps, kitchen_nodes)
+    return TaskTree(units, target, compiled.task.level)
+
+
+def finished(compiled: Compiled, plain: TaskTree, steps: Sequence[str], kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
+    """The tree to report for the plan tree `plain`: the encoding's `Compiled.finish` of it (the lifted encoding
+    renames what a substituted object made), else `plain`."""
+    return plain if compiled.finish is None else compiled.finish(plain, steps, frozenset(kitchen_nodes))
+
+
+def to_tree(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal,
+            kitchen_nodes: Iterable[ObjectNode]) -> TaskTree:
+    """The task tree of a plan, as reported (`plan_tree`, then `finished`)."""
+    compiled = as_compiled(task)
+    return finished(compiled, plan_tree(compiled, steps, goal, kitchen_nodes), steps, kitchen_nodes)
+
+
+def _step_units(compiled: Compiled, steps: Sequence[str]) -> list[FunctionalUnit | None]:
+    """The unit of each plan step (None for auxiliary actions such as goal actions, and unknown actions)."""
+    out = []
+    for step in steps:
+        name, *args = step.split()
+        action = compiled.task.action_for(name)
+        out.append(None if action is None else compiled.unit_of(action, tuple(args)))
+    return out
+
+
+def used_steps(compiled: Compiled, steps: Sequence[str], plain: TaskTree) -> tuple[str, ...]:
+    """The plan's steps the tree `plain` (`plan_tree`) uses, in order: the first step of each of its units,
+    and the auxiliary steps (goal actions) that still apply without the others.
+
+    A satisficing planner may fire steps no goal needs (lama-first on a lifted FOON-GEN task fires a second
+    juice chain); the plan reported, counted and written is the one the tree stands for. Checked by
+    simulation (O(steps x effects)): when the kept steps are not a valid plan of the task (an encoding with
+    deletes), or every step is a real firing (`every_step`), or the encoding lacks FOON's semantics, the
+    plan as found.
+    """
+    if compiled.every_step or not compiled.foon_semantics:
+        return tuple(steps)
+    task, kept, seen = compiled.task, set(plain.units), set()
+    state, types, out = set(task.init), type_closure(task), []
+    for n, (step, unit) in enumerate(zip(steps, _step_units(compiled, steps), strict=True), start=1):
+        if unit is not None and (unit not in kept or unit in seen):
+            continue
+        after, problem = apply_step(task, state, step, n, types)
+        if problem is not None:
+            if unit is None:
+                continue  # a goal action for a node only left-out steps made
+            return tuple(steps)
+        seen.add(unit)
+        state = after
+        out.append(step)
+    return tuple(out) if set(task.goal) <= state else tuple(steps)
 
 
 def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree, shown: int = 8) -> tuple[str, ...]:
-    """A note naming the plan steps whose unit the task tree left out because the goal does not need
-    them (`tasktree.justify`; a satisficing plan may hold detours), numbered as in the plan; () when none."""
+    """A note naming the plan steps whose unit the task tree (`plan_tree`) left out because the goal does not
+    need them (`tasktree.justify`; a satisficing plan may hold detours), numbered as in the plan; () when none."""
     kept = set(tree.units)
     seen: set = set()
     out = []
-    for n, step in enumerate(steps, start=1):
-        name, *args = step.split()
-        action = compiled.task.action_for(name)
-        unit = None if action is None else compiled.unit_of(action, tuple(args))
+    for n, unit in enumerate(_step_units(compiled, steps), start=1):
         if unit is None or unit in seen:
             continue  # bookkeeping actions (goal reached) and repeats are not units of the plan's own
         seen.add(unit)
@@ -173,18 +223,33 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
     if not out:
         return ()
     more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
-    return (f"left out {len(out)} plan step{'s' if len(out) != 1 else ''} the goal does not need: "
+    return (f"left out {len(out)} of the planner's {len(steps)} plan steps the goal does not need: "
             + "; ".join(out[:shown]) + more,)
+
+
+def renamed_note(plain: TaskTree, tree: TaskTree) -> tuple[str, ...]:
+    """A note naming the objects `Compiled.finish` renamed between the plan's tree `plain` and the tree reported
+    (the plan's steps keep the task's names: a lifted plan's `lemon_juice` squeezed from a lime is the tree's
+    `lime juice`); () when none. Node by node: a renamed object is made by a unit, so some node has its label."""
+    pairs = {(a.label, b.label) for u, v in zip(plain.units, tree.units, strict=True)
+             for a, b in zip((*u.inputs, *u.outputs), (*v.inputs, *v.outputs), strict=True) if a.label != b.label}
+    if not pairs:
+        return ()
+    return ("the plan's steps keep the recipe's name for what a kitchen object standing in made; the task tree "
+            "renames it: " + ", ".join(f"{a} -> {b}" for a, b in sorted(pairs)),)
 
 
 def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTask | Compiled,
           steps: Sequence[str], *, up_validate: bool = False,
-          candidates: Iterable[ObjectNode] | None = None) -> Decoded:
+          candidates: Iterable[ObjectNode] | None = None, plain: TaskTree | None = None) -> Decoded:
     """Validate a decoded tree by simulation, and the plan with UP when asked and the task is small.
 
     `candidates`: the goal's nodes at the task's level (default: the tree's goal), for the instance check.
+    `plain`: the plan's own tree before `Compiled.finish` (`plan_tree`; default: `tree`), which says the
+    steps the tree uses.
     """
     compiled = as_compiled(task)
+    plain = tree if plain is None else plain
     up = None
     if up_validate and len(compiled.task.actions) <= UP_VALIDATE_MAX_ACTIONS:
         up = up_validation(compiled.task, steps)
@@ -195,14 +260,14 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
         if repeats:
             notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
-    # (not after a `finish` that renames the tree's units: its units are not the plan's any more)
-    if compiled.foon_semantics and not compiled.every_step and compiled.finish is None:
-        notes += unneeded_steps_note(compiled, steps, tree)
+    if compiled.foon_semantics and not compiled.every_step:
+        notes += unneeded_steps_note(compiled, steps, plain) + renamed_note(plain, tree)
     # a task compiled under --containment infer holds inference units: validate under the same rule. The tree is
     # checked from the kitchen as given, not as an encoding completes it: an object the completion starts in a
     # state some unit makes (`macaroni (cooked, in [pot])`) must not let a plan skip the cooking
     decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
-                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes)
+                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes,
+                      steps=used_steps(compiled, steps, plain))
     if compiled.replay is None:  # an encoding with no physical objects
         return decoded
     try:
@@ -232,31 +297,38 @@ def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitc
            up_validate: bool = False) -> Decoded:
     """The plan's task tree (kitchen nodes at the task's level) with its checks (see the module doc)."""
     compiled = as_compiled(task)
-    return check(to_tree(compiled, steps, goal, kitchen_nodes), kitchen_nodes, compiled, steps,
+    plain = plan_tree(compiled, steps, goal, kitchen_nodes)
+    return check(finished(compiled, plain, steps, kitchen_nodes), kitchen_nodes, compiled, steps,
                  up_validate=up_validate,
-                 candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}))
+                 candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}), plain=plain)
 
 
 def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:
     """Apply the plan to the task's initial state: (final state, or the state before the first failing step; problem)."""
     state, types = set(task.init), type_closure(task)
     for n, step in enumerate(steps, start=1):
-        action = task.action_for(step_action(step))
-        if action is None:
-            return state, f"plan step {n} ({step}) names no action of the task"
-        args = step.split()[1:]
-        if len(args) != len(action.params):
-            return state, f"plan step {n} ({step}): {len(action.params)} arguments expected"
-        bind = {var: arg for (var, _), arg in zip(action.params, args, strict=True)}
-
-        def ground(atoms, bind=bind):
-            return [Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) for a in atoms]
-
-        missing = [a for a in ground(action.pre) if a not in state]
-        if missing:
-            return state, f"plan step {n} ({step}): precondition false: " + ", ".join(map(_show, missing[:3]))
-        state = apply_action(state, action, bind, types)
+        after, problem = apply_step(task, state, step, n, types)
+        if problem is not None:
+            return state, problem
+        state = after
     return state, None
+
+
+def apply_step(task: PlanningTask, state: set[Atom], step: str, n: int,
+               types: dict[str, frozenset[str]]) -> tuple[set[Atom], str | None]:
+    """The state after plan step number `n`, or (`state`, why it does not apply)."""
+    action = task.action_for(step_action(step))
+    if action is None:
+        return state, f"plan step {n} ({step}) names no action of the task"
+    args = step.split()[1:]
+    if len(args) != len(action.params):
+        return state, f"plan step {n} ({step}): {len(action.params)} arguments expected"
+    bind = {var: arg for (var, _), arg in zip(action.params, args, strict=True)}
+    missing = [a for a in (Atom(p.predicate, tuple(bind.get(x, x) for x in p.args)) for p in action.pre)
+               if a not in state]
+    if missing:
+        return state, f"plan step {n} ({step}): precondition false: " + ", ".join(map(_show, missing[:3]))
+    return apply_action(state, action, bind, types), None
 
 
 def simulate_plan(task: PlanningTask, steps: Sequence[str]) -> Validation:

@@ -32,7 +32,7 @@ from ..pddl.render import render
 from ..pddl.task import PlanningTask, candidate_alternatives
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
-from .decode import Decoded, PlanDecodeError, check, run_plan, to_tree
+from .decode import Decoded, PlanDecodeError, check, finished, plan_tree, run_plan
 
 __all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan"]
 
@@ -69,6 +69,11 @@ class PlanOutcome:
         return self.decoded.tree if self.decoded is not None else None
 
     @property
+    def steps(self) -> tuple[str, ...]:
+        """The plan as reported: the planner's steps the tree uses (`decode.used_steps`), or all of them."""
+        return self.decoded.steps if self.decoded is not None and self.decoded.steps else tuple(self.result.plan)
+
+    @property
     def trace(self) -> PhysicalTrace | None:
         """The plan object by object (encodings over physical objects; None otherwise or without a plan)."""
         return self.decoded.trace if self.decoded is not None else None
@@ -97,14 +102,15 @@ def _finish(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes: f
         return PlanOutcome(result, compiled, timings=timings)
     t0 = time.perf_counter()
     try:
-        tree = to_tree(compiled, result.plan, goal, kitchen_nodes)
+        plain = plan_tree(compiled, result.plan, goal, kitchen_nodes)
+        tree = finished(compiled, plain, result.plan, kitchen_nodes)
     except PlanDecodeError as exc:
         timings["decode"] = time.perf_counter() - t0
         return PlanOutcome(result, compiled, decode_error=str(exc), timings=timings)
     timings["decode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     decoded = check(tree, kitchen_nodes, compiled, result.plan, up_validate=up_validate,
-                    candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}))
+                    candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}), plain=plain)
     timings["validate"] = time.perf_counter() - t0
     return PlanOutcome(result, compiled, decoded, timings=timings)
 
