@@ -1,10 +1,9 @@
 ; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 15 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-6425bd86)
+(define (domain foon-instances-e44264a9)
   (:requirements :strips :typing)
   (:types
     physical-object - object

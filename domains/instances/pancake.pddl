@@ -1,10 +1,9 @@
 ; foon2pddl, encoding instances, level 3: 15 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 17 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-d7bb6860)
+(define (domain foon-instances-4dae660d)
   (:requirements :strips :typing)
   (:types
     physical-object - object

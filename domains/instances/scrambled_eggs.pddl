@@ -1,10 +1,9 @@
 ; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-31abdd56)
+(define (domain foon-instances-dce879d1)
   (:requirements :strips :typing)
   (:types
     physical-object - object

@@ -1,11 +1,10 @@
 ; foon2pddl, encoding instances, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
+; instances: 15 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 ; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-46b26792)
+(define (domain foon-instances-e9a37ed8)
   (:requirements :strips :typing)
   (:types
     physical-object - object

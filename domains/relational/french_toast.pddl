@@ -1,12 +1,9 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 20 (bowl 2, bread 1, butter 1, cinnamon 1, custard 1, egg 2, fork 1, french toast 1, frying pan 1, maple syrup 2, milk 2, plate 1, spatula 1, stove 2, vanilla extract 1)
-; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 17 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 2, milk 2, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
-(define (domain foon-relational-6d0af126)
+(define (domain foon-relational-ea4fe03a)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

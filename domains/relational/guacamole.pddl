@@ -1,11 +1,9 @@
 ; foon2pddl, encoding relational, level 3: 22 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 21 (avocado 2, bowl 2, cilantro 1, cutting board 6, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-; objects: 2 x avocado (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
-; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
-(define (domain foon-relational-a7a81448)
+; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
+; objects: 5 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
+(define (domain foon-relational-43b97bfb)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

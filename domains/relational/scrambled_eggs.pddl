@@ -1,11 +1,8 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (black pepper 1, bowl 2, butter 1, egg 2, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
-(define (domain foon-relational-4c06a5ab)
+; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
+(define (domain foon-relational-b5990441)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

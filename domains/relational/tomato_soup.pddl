@@ -1,14 +1,10 @@
 ; foon2pddl, encoding relational, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 30 (basil 1, bowl 1, cutting board 5, immersion blender 1, knife 1, ladle 1, olive oil 4, onion 3, pot 3, stove 2, tomato 2, tomato soup 2, vegetable broth 3, wooden spoon 1)
-; objects: 5 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3 x3, pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
-; objects: 3 x onion (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3 x3 takes one out of that state and no unit puts one back
-; objects: 3 x pot (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:67 x3 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
-; objects: 2 x tomato (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:42 x2 takes one out of that state and no unit puts one back
+; instances: 17 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 2, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 2, wooden spoon 1)
+; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
-(define (domain foon-relational-2483e756)
+(define (domain foon-relational-7e96853b)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

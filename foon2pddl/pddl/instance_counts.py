@@ -9,8 +9,9 @@ unfolding a delete-free plan backwards:
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
-   one when some unit only reads it (read-only and kept roles, the goal) and so
-   needs one instance to stay. A unit fires F times, F being the largest
+   one when some unit only reads it (read-only and kept roles, the goal) after
+   every unit that moves one out of it, and so needs one instance to stay (a
+   reader before a mover reads the instance the mover takes later). A unit fires F times, F being the largest
    demand among the nodes it is credited with making (moved and new roles);
    each firing moves one instance per moved role and needs one not-yet-made
    instance per new role. Kitchen nodes are never credited to a unit: their
@@ -130,7 +131,7 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
                 created[r.label] += times
             elif r.kind is RoleKind.MOVED:
                 consumed[r.before] += times
-            else:
+            elif not consumed[r.before]:  # a later unit moves one out of that state: read it before
                 read.add(r.before)
     at_kitchen = Counter({n: demand(n) for n in set(consumed) | read if n in kitchen and demand(n) > 0})
     return at_kitchen, created, firings

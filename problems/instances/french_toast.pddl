@@ -1,11 +1,10 @@
 ; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 2, vanilla extract 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 15 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_french_toast)
-  (:domain foon-instances-6425bd86)
+  (:domain foon-instances-e44264a9)
   (:objects
     bowl_1 - bowl
     bread_1 - bread
@@ -21,7 +20,6 @@
     plate_1 - plate
     spatula_1 - spatula
     stove_1 - stove
-    stove_2 - stove
     vanilla_extract_1 - vanilla_extract
   )
   (:init
@@ -39,7 +37,6 @@
     (is plate_1 plate_empty)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is vanilla_extract_1 vanilla_extract_liquid)
     (lane bowl_1 bowl_contains_cinnamon_egg_milk_vanilla_extract bowl_contains_cinnamon_egg_milk_vanilla_extract)
     (lane bowl_1 bowl_contains_cinnamon_egg_milk_vanilla_extract bowl_contains_custard)
@@ -101,7 +98,6 @@
     (lane stove_1 stove_off stove_off)
     (lane stove_1 stove_off stove_on)
     (lane stove_1 stove_on stove_on)
-    (lane stove_2 stove_off stove_off)
     (lane vanilla_extract_1 vanilla_extract_in_bowl vanilla_extract_in_bowl)
     (lane vanilla_extract_1 vanilla_extract_liquid vanilla_extract_in_bowl)
     (lane vanilla_extract_1 vanilla_extract_liquid vanilla_extract_liquid)

@@ -1,11 +1,10 @@
 ; foon2pddl, encoding instances, level 3: 15 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 17 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_pancake)
-  (:domain foon-instances-d7bb6860)
+  (:domain foon-instances-4dae660d)
   (:objects
     baking_powder_1 - baking_powder
     butter_1 - butter
@@ -22,7 +21,6 @@
     salt_1 - salt
     spatula_1 - spatula
     stove_1 - stove
-    stove_2 - stove
     sugar_1 - sugar
     whisk_1 - whisk
   )
@@ -42,7 +40,6 @@
     (is salt_1 salt_granulated)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is sugar_1 sugar_granulated)
     (is whisk_1 whisk_plain)
     (lane baking_powder_1 baking_powder_in_mixing_bowl baking_powder_in_mixing_bowl)
@@ -110,7 +107,6 @@
     (lane stove_1 stove_off stove_off)
     (lane stove_1 stove_off stove_on)
     (lane stove_1 stove_on stove_on)
-    (lane stove_2 stove_off stove_off)
     (lane sugar_1 sugar_granulated sugar_granulated)
     (lane sugar_1 sugar_granulated sugar_in_mixing_bowl)
     (lane sugar_1 sugar_in_mixing_bowl sugar_in_mixing_bowl)

@@ -1,11 +1,10 @@
 ; foon2pddl, encoding instances, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_scrambled_eggs)
-  (:domain foon-instances-31abdd56)
+  (:domain foon-instances-dce879d1)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl
@@ -20,7 +19,6 @@
     scrambled_eggs_1 - scrambled_eggs
     spatula_1 - spatula
     stove_1 - stove
-    stove_2 - stove
     whisk_1 - whisk
   )
   (:init
@@ -37,7 +35,6 @@
     (is scrambled_eggs_1 not-yet-made)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is whisk_1 whisk_plain)
     (lane black_pepper_1 black_pepper_ground black_pepper_ground)
     (lane black_pepper_1 black_pepper_ground black_pepper_in_bowl)
@@ -92,7 +89,6 @@
     (lane stove_1 stove_off stove_off)
     (lane stove_1 stove_off stove_on)
     (lane stove_1 stove_on stove_on)
-    (lane stove_2 stove_off stove_off)
     (lane whisk_1 whisk_plain whisk_plain)
     (occupied fork_plain)
     (occupied spatula_plain)

@@ -1,12 +1,11 @@
 ; foon2pddl, encoding instances, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 16 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 2, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
+; instances: 15 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 ; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
 ; lanes: each instance changes state only as in the unfolded plan
 (define (problem make_tomato_soup)
-  (:domain foon-instances-46b26792)
+  (:domain foon-instances-e9a37ed8)
   (:objects
     basil_1 - basil
     bowl_1 - bowl
@@ -19,7 +18,6 @@
     onion_1 - onion
     pot_1 - pot
     stove_1 - stove
-    stove_2 - stove
     tomato_1 - tomato
     tomato_soup_1 - tomato_soup
     vegetable_broth_1 - vegetable_broth
@@ -37,7 +35,6 @@
     (is onion_1 onion_whole)
     (is pot_1 pot_empty)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is tomato_1 tomato_whole)
     (is tomato_soup_1 not-yet-made)
     (is vegetable_broth_1 vegetable_broth_in_carton)
@@ -91,7 +88,6 @@
     (lane stove_1 stove_off stove_off)
     (lane stove_1 stove_off stove_on)
     (lane stove_1 stove_on stove_on)
-    (lane stove_2 stove_off stove_off)
     (lane tomato_1 tomato_chopped_in_pot tomato_chopped_in_pot)
     (lane tomato_1 tomato_chopped_on_cutting_board tomato_chopped_in_pot)
     (lane tomato_1 tomato_chopped_on_cutting_board tomato_chopped_on_cutting_board)

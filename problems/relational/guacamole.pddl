@@ -1,24 +1,19 @@
 ; foon2pddl, encoding relational, level 3: 22 of 101 units after relevance pruning
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 21 (avocado 2, bowl 2, cilantro 1, cutting board 6, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-; objects: 2 x avocado (whole): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop at 07-guacamole.foon:28 x2 takes one out of that state and no unit puts one back
-; objects: 6 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3 x2, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
+; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
+; objects: 5 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
 (define (problem make_guacamole)
-  (:domain foon-relational-a7a81448)
+  (:domain foon-relational-43b97bfb)
   (:objects
     avocado_1 - avocado
-    avocado_2 - avocado
     bowl_1 - bowl
-    bowl_2 - bowl
     cilantro_1 - cilantro
     cutting_board_1 - cutting_board
     cutting_board_2 - cutting_board
     cutting_board_3 - cutting_board
     cutting_board_4 - cutting_board
     cutting_board_5 - cutting_board
-    cutting_board_6 - cutting_board
     fork_1 - fork
     guacamole_1 - guacamole
     juicer_1 - juicer
@@ -32,16 +27,13 @@
   )
   (:init
     (is avocado_1 avocado_whole)
-    (is avocado_2 avocado_whole)
     (is bowl_1 bowl_empty)
-    (is bowl_2 bowl_empty)
     (is cilantro_1 cilantro_fresh)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
     (is cutting_board_3 cutting_board_empty)
     (is cutting_board_4 cutting_board_empty)
     (is cutting_board_5 cutting_board_empty)
-    (is cutting_board_6 cutting_board_empty)
     (is fork_1 fork_plain)
     (is guacamole_1 not-yet-made)
     (is juicer_1 juicer_empty)

@@ -1,11 +1,10 @@
 ; foon2pddl, encoding relational, level 3: 15 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 20 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 2, sugar 1, whisk 1)
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 19 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
 (define (problem make_pancake)
-  (:domain foon-relational-c742d0e1)
+  (:domain foon-relational-5a1a3fb3)
   (:objects
     baking_powder_1 - baking_powder
     butter_1 - butter
@@ -24,7 +23,6 @@
     salt_1 - salt
     spatula_1 - spatula
     stove_1 - stove
-    stove_2 - stove
     sugar_1 - sugar
     whisk_1 - whisk
     bottle_1 - bottle
@@ -52,7 +50,6 @@
     (is salt_1 salt_granulated)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is sugar_1 sugar_granulated)
     (is whisk_1 whisk_plain)
     (occupied bottle_contains_maple_syrup)

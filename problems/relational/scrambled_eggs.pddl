@@ -1,19 +1,14 @@
 ; foon2pddl, encoding relational, level 3: 14 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-; instances: 18 (black pepper 1, bowl 2, butter 1, egg 2, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 2, whisk 1)
-; objects: 2 x bowl (empty): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x egg (whole): in the plan the counts are derived from (FOON's, unfolded), each of crack at 03-scrambled_eggs.foon:3 x2 takes one out of that state and no unit puts one back
-; objects: 2 x stove (off): in the plan the counts are derived from (FOON's, unfolded), each of turn on at 03-scrambled_eggs.foon:80 takes one out of that state and no unit puts one back; one stays for a unit that only reads it
+; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 (define (problem make_scrambled_eggs)
-  (:domain foon-relational-4c06a5ab)
+  (:domain foon-relational-b5990441)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl
-    bowl_2 - bowl
     butter_1 - butter
     egg_1 - egg
-    egg_2 - egg
     egg_mixture_1 - egg_mixture
     fork_1 - fork
     frying_pan_1 - frying_pan
@@ -24,7 +19,6 @@
     scrambled_eggs_1 - scrambled_eggs
     spatula_1 - spatula
     stove_1 - stove
-    stove_2 - stove
     whisk_1 - whisk
     carton_1 - carton
   )
@@ -32,11 +26,9 @@
     (in carton_1 milk_1)
     (is black_pepper_1 black_pepper_ground)
     (is bowl_1 bowl_empty)
-    (is bowl_2 bowl_empty)
     (is butter_1 butter_solid)
     (is carton_1 carton_contains_milk)
     (is egg_1 egg_whole)
-    (is egg_2 egg_whole)
     (is egg_mixture_1 not-yet-made)
     (is fork_1 fork_plain)
     (is frying_pan_1 frying_pan_empty)
@@ -47,7 +39,6 @@
     (is scrambled_eggs_1 not-yet-made)
     (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is stove_2 stove_off)
     (is whisk_1 whisk_plain)
     (occupied carton_contains_milk)
     (occupied fork_plain)
