@@ -309,3 +309,28 @@ def test_a_portion_a_transport_step_moves_is_picked_up_where_its_source_is():
     assert [s.status for s in plan.steps] == [StepStatus.DECOMPOSED]
     assert [(c.skill, c.objects[0]) for c in plan.calls] == [("pick", "onion_2"), ("put-in", "onion_2")]
     assert plan.calls[0].holders[0] == "board_1"  # picked where the onion it was part of lies
+
+
+def test_a_transport_step_moves_what_it_sets_down_and_never_picks_up_and_puts_back_what_stays():
+    # FOON restates a pan the butter goes into (`skillet (heated, on [stove])` -> `skillet (contains {butter},
+    # on [stove])`): the pan stays on the stove and no transport skill changes an object it does not set down,
+    # so the robot moves the butter only (it used to pick the skillet up from the stove and put it back)
+    objects = {"butter_1": "butter", "skillet_1": "skillet", "stove_1": "stove"}
+    initial = [ObjectState("butter_1", node("butter", "cubed")), ObjectState("skillet_1", node("skillet", "heated"),
+               "stove_1", ON), ObjectState("stove_1", node("stove", "on"))]
+    step = ("pick-and-place", [ObjectState("butter_1", node("butter", "cubed"), "skillet_1", IN),
+                               ObjectState("skillet_1", node("skillet"), "stove_1", ON)],
+            ["butter_1", "skillet_1", "stove_1"])
+    plan = decompose(trace(objects, initial, [step, CHECK_STOVE]), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert [(c.skill, c.objects[0]) for c in plan.calls if c.macro == 0] == [("pick", "butter_1"),
+                                                                              ("put-in", "butter_1")]
+    # a transport step that moves nothing else still sets its changed object down: that is the step
+    alone = ("pick-and-place", [ObjectState("skillet_1", node("skillet"), "stove_1", ON)], ["skillet_1", "stove_1"])
+    plan = decompose(trace(objects, initial, [alone]), shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert [(c.skill, c.objects[0]) for c in plan.calls] == [("pick", "skillet_1"), ("place", "skillet_1")]
+
+
+#: A later step that reads the skillet's restated phase (the replay carries it on).
+CHECK_STOVE = ("turn off", [ObjectState("stove_1", node("stove", "off"))], ["stove_1"])

@@ -198,6 +198,8 @@ def decompose(trace: PhysicalTrace, table: MotionTable, domain: SkillDomain, rob
         if not problems and macro.status is StepStatus.DECOMPOSED:
             rep.add(macro.problem.statics | macro.problem.split)  # a portion now stands where its source is
             rep.remove({Atom("unmade", (a.args[0],)) for a in macro.problem.split if a.predicate == "placed"})
+            rep.remove({old for old, _ in macro.problem.restated})  # FOON restates what the step does not move
+            rep.add({new for _, new in macro.problem.restated})
             for name, args in calls:
                 things = args[1:]
                 holders = tuple(None if h == naming.workspace else _back(naming, h) for h in map(rep.holder, things))

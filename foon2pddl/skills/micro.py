@@ -21,7 +21,8 @@ skill that sets them down (`put-in` into a container, `place` onto a surface); o
 are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
 puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is
 a step object that holds nothing, stays where it is, and keeps its phase or becomes `dirty`
-(knife, spoon, whisk).
+(knife, spoon, whisk). What a transport step that moves something leaves in place starts in the phase FOON
+restates it in (`_restated`: no transport skill changes an object it does not set down).
 
 Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
 stay as they are), with the domain's constants, the workspace and the hands
@@ -125,6 +126,9 @@ class MicroProblem:
     #: Facts of the portions a transport step moves, where they stand before it (`portions`): the replay
     #: adds them before the step's skills, as the portion is separated from what it was part of.
     split: frozenset[Atom] = frozenset()
+    #: (phase fact before, after) of the objects a transport step restates without moving them (`_restated`):
+    #: the step starts with them in their new phase, in its init and in the replay.
+    restated: tuple[tuple[Atom, Atom], ...] = ()
 
     @cached_property
     def text(self) -> str:
@@ -161,6 +165,23 @@ def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid:
             and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node)))
 
 
+def _restated(before: Mapping[str, ObjectState], after: Mapping[str, ObjectState],
+              ids: Iterable[str]) -> dict[str, ObjectState]:
+    """The objects of a transport step whose phase FOON restates though they stay where they are, in their state
+    after it (`skillet (heated, on [stove])` -> `skillet (contains {butter}, on [stove])`): transport skills change
+    only what they set down, so setting such an object down again would be a pick and a place that do nothing.
+    Only when the step moves some other object (else setting the changed object down is the step); {} otherwise."""
+    ids = tuple(ids)
+
+    def stays(oid: str) -> bool:
+        b, a = before[oid], after[oid]
+        return b.exists and a.exists and (b.holder, b.relation) == (a.holder, a.relation)
+
+    if all(stays(oid) or not before[oid].exists or not after[oid].exists for oid in ids):
+        return {}
+    return {oid: after[oid] for oid in ids if stays(oid) and phase_of(before[oid].node) != phase_of(after[oid].node)}
+
+
 def portions(trace: PhysicalTrace, index: int, ids: Iterable[str]) -> dict[str, ObjectState]:
     """The portions step `index` makes (the relational encoding's `SPLITS`: some of the diced avocado on the
     board, ground beef out of its packet), as they stand before the step: where the object they are taken
@@ -186,6 +207,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     ids = step_objects(trace, index)
     split = portions(trace, index, ids) if skill in TRANSPORT else {}  # picked up as the objects they are part of
     before = {**before, **split}
+    restated = _restated(before, after, ids) if skill in TRANSPORT else {}
+    found_before, before = before, {**before, **restated}  # no transport skill changes what it does not set down
     containers, surfaces = roles if roles is not None else _roles(trace)
     n = naming.ids
     ws = naming.workspace
@@ -222,7 +245,7 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
                 statics.add(Atom("changes", (how, n[oid], naming.phase(b.node), naming.phase(a.node))))
                 sites[0].append(n[oid])
     holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
-    tools = {oid for oid in ids if _is_tool(oid, before[oid], after[oid], touched, rigid, holders)}
+    tools = {oid for oid in ids if _is_tool(oid, found_before[oid], after[oid], touched, rigid, holders)}
     worked = [x for x in sites[0] if naming.back.get(x) not in tools]
     if worked and works_on(domain, skill):
         targets = list(dict.fromkeys(worked))  # squeeze the lime, not the juicer its juice appears in
@@ -252,4 +275,6 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
                         metric=True, comments=(f"step {index + 1}: {trace.steps[index].unit.describe()}",
                                                    f"skill {skill}"))
     return MicroProblem(index, skill, ids, frozenset(statics), init, goal, task,
-                        frozenset(dynamic_facts(naming, split, split)))
+                        frozenset(dynamic_facts(naming, split, split)),
+                        tuple((Atom("state", (n[oid], naming.phase(found_before[oid].node))),
+                               Atom("state", (n[oid], naming.phase(s.node)))) for oid, s in sorted(restated.items())))

@@ -10,7 +10,8 @@ state (not over every tuple of objects), so a step costs about (atoms matched)
 per action.
 
 The replay starts from the trace's initial state (every object, all hands
-empty); per macro step it adds the step's facts (`MicroProblem.statics`), runs
+empty); per macro step it adds the step's facts (`MicroProblem.statics`; the portions it splits off and the
+phases FOON restates, `split`, `restated`), runs
 the step's skills, drops the step's facts, and then requires the changing facts
 (`domain.DYNAMIC`) to be exactly those the trace gives after the step. An
 abstract step (no skills) jumps to the trace's state. It stops at the first
