@@ -109,6 +109,27 @@ def test_unfolding_fires_a_producer_once_per_consumer():
     assert dict(counts.at_node) == {raw: 2, pan: 3, toast: 5}
 
 
+def test_a_unit_that_only_reads_a_kitchen_state_shares_the_object_a_later_unit_takes():
+    """Issue 24: the french toast counted two stoves. The pan goes onto a `stove (off)` (read only) and
+    `turn on` takes a `stove (off)`: one stove does both when the pan goes on first. Objects needed at
+    once, not per use; a reader that needs what the taker makes cannot go first, and then it is two."""
+    off, on, butter, melted = n("stove", "off"), n("stove", "on"), n("butter", "solid"), n("butter", "melted")
+    pan, pan_on = n("pan", "empty"), n("pan", "empty", ("on", "stove"))
+    turn_on, place = unit("turn on", [off], [on]), unit("pick-and-place", [pan, off], [pan_on])
+    melt = unit("melt", [on, pan_on, butter], [melted])
+    foon, kitchen = Foon((turn_on, place, melt)), frozenset({off, pan, butter})
+    counts = derive_counts(foon, range(3), kitchen, (melted,))
+    assert dict(counts.at_node) == {off: 1, pan: 1, butter: 1}
+    motions = [foon.units[u].motion.label for u in counts.unfolded]
+    assert motions.index("pick-and-place") < motions.index("turn on")  # the plan the counts are made for
+    task = encode_instances(foon, Kitchen(kitchen), Goal(GoalSpec("butter"), (melted,)))
+    assert brute_force_solvable(task) is True
+    # the same read after the stove is on (the pan goes on a cold stove beside a hot one): two at once
+    check = unit("pick-and-place", [pan, off, on], [pan_on])
+    foon = Foon((turn_on, check, melt))
+    assert dict(derive_counts(foon, range(3), kitchen, (melted,)).at_node)[off] == 2
+
+
 def test_encoding_structure_and_one_state_per_instance():
     task = encode_instances(KNIFE_FOON, KNIFE_KITCHEN, KNIFE_GOAL)
     assert task.encoding == "instances" and task.goal == (Atom("goal-reached"),)
