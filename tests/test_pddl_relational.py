@@ -475,3 +475,53 @@ def test_everything_of_a_label_in_the_mixing_bowl_goes_into_the_mixture():
     assert outcome.status == "solved", outcome.message
     assert replay(outcome.trace).ok
     assert all(s.consumed for i, s in outcome.trace.final.items() if i.startswith("sugar_"))
+
+
+def test_what_a_kitchen_holder_holds_starts_as_the_unit_that_uses_the_pair_takes_it():
+    # roux: the kitchen's `stove (off, with [skillet])` holds a skillet no kitchen node describes; the heat
+    # unit takes that stove with `skillet (empty, on [stove])`, so the skillet starts empty, not with butter
+    on_stove = make_state("on", "stove")
+    stove = n("stove", "off", make_state("with", "skillet"))
+    ready, ready_with = n("stove", "off (ready)"), n("stove", "off (ready)", make_state("with", "skillet"))
+    empty, hot = n("skillet", "empty", on_stove), n("skillet", "hot", "empty", on_stove)
+    place_ = FunctionalUnit((ready, n("skillet", "empty")), Motion("pick-and-place"), (ready_with, empty))
+    heat = FunctionalUnit((stove, empty), Motion("heat"), (hot,))
+    bowl, butter = n("bowl", contains("butter")), n("butter", "cube", inside("bowl"))
+    in_skillet = n("butter", "cube", inside("skillet"))
+    pour = FunctionalUnit((bowl, butter, hot), Motion("pour"),
+                          (n("skillet", "hot", contains("butter"), on_stove), in_skillet))
+    outcome = _solve([place_, heat, pour], [ready, n("skillet", "empty"), stove, bowl, butter], in_skillet)
+    first = next(iter(outcome.trace.states()))
+    held = [i for i, s in first.items() if s.holder is not None and s.node.label == "skillet"]
+    assert [first[i].node for i in held] == [empty]
+
+
+def test_a_holder_the_kitchen_implies_starts_in_a_node_of_the_network_that_lists_what_it_holds():
+    # potato croquette: the kitchen's `pot (heated, on [stove])` sits on a stove no kitchen node names; the
+    # cook takes `stove (on, with [pot])`, the network's node of a stove holding a pot, so the stove is that
+    on_stove = make_state("on", "stove")
+    heated, bottle, oil = n("pot", "heated", on_stove), n("bottle", contains("oil")), n("oil", inside("bottle"))
+    oiled, oil_in = n("pot", contains("oil"), on_stove), n("oil", inside("pot"))
+    pour = FunctionalUnit((heated, bottle, oil), Motion("pour"), (oiled, oil_in, n("bottle", "empty")))
+    hot = n("oil", "hot", inside("pot"))
+    with_pot = n("stove", "on", make_state("with", "pot"))
+    cook = FunctionalUnit((with_pot, oiled, oil_in), Motion("heat"), (hot,))
+    water_pot, water = n("pot", contains("water")), n("water", inside("pot"))
+    boil = FunctionalUnit((n("stove", "on"), water_pot), Motion("pick-and-place"),
+                          (with_pot, n("pot", contains("water"), on_stove)))
+    outcome = _solve([boil, pour, cook], [heated, bottle, oil, n("stove", "on"), water_pot, water], hot)
+    first = outcome.trace.after(-1)
+    stove = first[next(o.id for o in outcome.trace.objects if o.label == "pot" and first[o.id].node == heated)].holder
+    assert first[stove].node == with_pot
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour", "heat"]  # no need to place the water
+
+
+def test_an_object_that_leaves_an_unnamed_holder_for_no_place_empties_it():
+    # crayfish wrap: the squeeze takes the sliced lemon off a board it does not name; the squeezed lemon is
+    # nowhere, so the board (which the kitchen lists it on) no longer lists it
+    board, lemon = n("cutting board", contains("lemon")), n("lemon", "sliced", make_state("on", "cutting board"))
+    glass, juice = n("glass", "empty"), n("lemon juice", inside("glass"))
+    squeeze = FunctionalUnit((lemon, glass), Motion("squeeze"),
+                             (n("glass", contains("lemon juice")), juice, n("lemon", "squeezed")))
+    outcome = _solve([squeeze], [board, lemon, glass], juice)
+    assert outcome.trace.final["cutting_board_1"].node == n("cutting board", "empty")

@@ -72,7 +72,7 @@ from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import counted_objects, holder_init, implied_contents, named_objects, scene_instances
+from .relational_init import counted_objects, holder_init, implied_contents, named_objects, scene_instances, unplaced
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
@@ -112,6 +112,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         p = plans[u]
         nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
         nodes.update(n for _, n in p.emptied)
+    held_by: frozenset[ObjectNode] = frozenset()  # network nodes the holders the kitchen implies start in
     if scene:  # the scene is the init: its objects, where they are, and the objects units make
         instances = scene_instances(table, scene, counts.unmade)
         alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
@@ -121,13 +122,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
         # The kitchen completed: contents its containers list, holders its objects and the units name.
         placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
-        instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes))
+        paired = frozenset((a, b) for u in units for a in f.units[u].inputs for b in f.units[u].inputs)
+        instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired))
         named_places = {alias.get(c, c) for u in units for s in plans[u].slots
                         for n in (s.after, s.portion) for _, c in places(n)}
         missing = sorted(named_places - {x.label for x in instances})
         instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
         quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
-        instances, implied = holder_init(instances, alias, quiet)
+        instances, implied = holder_init(instances, alias, quiet, nodes)
+        held_by = frozenset(implied) & nodes
         if implied:
             # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
             # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
@@ -194,7 +197,10 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
-    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why)
+    # kitchen nodes the completion put where a kitchen holder says they are: the tree check's kitchen too
+    moved = frozenset(x.start for x in instances if x.start is not None and x.start not in inp.kitchen
+                      and unplaced(x.start) in inp.kitchen) | held_by
+    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 
 def _where(unit, path=str) -> str:

@@ -12,7 +12,7 @@ from ..model.scene import SceneObject
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names", "scene_instances"]
+__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names", "scene_instances", "unplaced"]
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
@@ -21,14 +21,17 @@ def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
 
 
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
-                silent: frozenset[str] = frozenset()) -> tuple[list[Instance], list[ObjectNode]]:
+                silent: frozenset[str] = frozenset(), nodes: Iterable[ObjectNode] = (),
+                ) -> tuple[list[Instance], list[ObjectNode]]:
     """Instances with their starting holders, and the holders to add (module doc, "Init").
 
     An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
     first not yet given one of that label), else, when no node of the task says what a C holds (`silent`:
     a stove, a table), into the first C; with none, into a holder to add: one per label C, listing
     everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
-    avocado the kitchen has on a board). Names are read through the task's `alias`es. O(n^2) for n objects.
+    avocado the kitchen has on a board). An added holder starts in a node of `nodes` that lists exactly that
+    and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
+    [pot])`), else in a node made of the list. Names are read through the task's `alias`es. O(n^2) for n objects.
     """
     alias = alias or {}
     by_label: dict[str, list[Instance]] = {}
@@ -54,19 +57,27 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
             continue
         used.add((pick.name, x.label))
         picks[x.name] = (pick.name, rel)
-    implied = [make_node(label, [make_state("contains", "", sorted(items))]) for label, items in sorted(wanted.items())]
+    listing_nodes = {}
+    for n in sorted(nodes):
+        if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
+            listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
+    implied = [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
+               for label, items in sorted(wanted.items())]
     return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None
             else x for x in instances], implied
 
 
 def implied_contents(instances: list[Instance], alias: dict[str, str], placed: frozenset[str],
-                     nodes: Iterable[ObjectNode]) -> tuple[ObjectNode, ...]:
+                     nodes: Iterable[ObjectNode], paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
+                     ) -> tuple[ObjectNode, ...]:
     """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
     any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
     `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
     in it, counting the task's objects that start placed in a container of that label first. A new object
-    starts in a node of the task that places its label there (a kitchen one first), else `water (in [pot])`.
-    In container-name order; O(n^2)."""
+    starts in a node of the task that places its label there: a kitchen one first, then one that only places
+    a kitchen node there (`skillet (empty, on [stove])` from the kitchen's `skillet (empty)`: the kitchen's
+    `stove (off, with [skillet])` says it was put there), one a unit takes with the container's own node
+    first (`paired`); else `water (in [pot])`. In container-name order; O(n^2)."""
     out = []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
@@ -87,9 +98,15 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             if spare.get((item, h.label), 0) > 0:
                 spare[(item, h.label)] -= 1
                 continue
-            known = sorted(fits.get((item, h.label), ()), key=lambda n: (n not in starts, n))
+            known = sorted(fits.get((item, h.label), ()), key=lambda n: (
+                n not in starts, unplaced(n) not in starts, (h.start, n) not in paired, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
     return tuple(out)
+
+
+def unplaced(node: ObjectNode) -> ObjectNode:
+    """`node` with its places dropped: `skillet (empty)` for `skillet (empty, on [stove])`."""
+    return make_node(node.label, [s for s in node.states if not (s.label in ("in", "on") and s.related)])
 
 
 def named_objects(table: NameTable, instances: list[Instance], nodes: Iterable[ObjectNode]) -> list[Instance]:

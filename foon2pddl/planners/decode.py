@@ -264,8 +264,9 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
         notes += unneeded_steps_note(compiled, steps, plain) + renamed_note(plain, tree)
     # a task compiled under --containment infer holds inference units: validate under the same rule. The tree is
     # checked from the kitchen as given, not as an encoding completes it: an object the completion starts in a
-    # state some unit makes (`macaroni (cooked, in [pot])`) must not let a plan skip the cooking
-    decoded = Decoded(tree, validate(tree, kitchen_nodes, containment_of(compiled.task.units)),
+    # state some unit makes (`macaroni (cooked, in [pot])`) must not let a plan skip the cooking; only what the
+    # kitchen's own nodes say is where they say (`Compiled.placed`) is added
+    decoded = Decoded(tree, validate(tree, kitchen_nodes | compiled.placed, containment_of(compiled.task.units)),
                       simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes,
                       steps=used_steps(compiled, steps, plain))
     if compiled.replay is None:  # an encoding with no physical objects
