@@ -218,8 +218,9 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
         if unit is None or unit in seen:
             continue  # bookkeeping actions (goal reached) and repeats are not units of the plan's own
         seen.add(unit)
-        if unit not in kept:
-            out.append(f"{n} ({unit.motion.label}: {', '.join(o.describe() for o in unit.outputs[:2])})")
+        if unit not in kept:  # where it was read: a left-out unit may look like a kept one renamed (gen-lifted)
+            src = f" at {unit.source.path.rsplit('/', 1)[-1]}:{unit.source.line}" if unit.source else ""
+            out.append(f"{n} ({unit.motion.label}{src}: {', '.join(o.describe() for o in unit.outputs[:2])})")
     if not out:
         return ()
     more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
