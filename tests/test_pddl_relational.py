@@ -525,3 +525,36 @@ def test_an_object_that_leaves_an_unnamed_holder_for_no_place_empties_it():
                              (n("glass", contains("lemon juice")), juice, n("lemon", "squeezed")))
     outcome = _solve([squeeze], [board, lemon, glass], juice)
     assert outcome.trace.final["cutting_board_1"].node == n("cutting board", "empty")
+
+
+def test_a_second_object_of_a_label_in_one_holder_is_bound_late():
+    # turkey sandwich: the stacking unit takes two breads `on [cutting board]` under a board that lists
+    # `{bread}` once; each bread was put on an empty board, so the second comes from its own board
+    on_board = make_state("on", "cutting board")
+    board, bread = n("cutting board", "empty"), n("bread", "plain")
+    plain, buttered = n("bread", "plain", on_board), n("bread", make_state("buttered", "", ["butter"]), on_board)
+    topped = n("bread", contains("butter", "turkey"), on_board)
+    put = FunctionalUnit((board, bread), Motion("pick-and-place"), (n("cutting board", contains("bread")), plain))
+    spread = FunctionalUnit((plain, n("butter", "soft")), Motion("spread"), (buttered,))
+    top = FunctionalUnit((buttered, n("turkey", "sliced")), Motion("pick-and-place"), (topped,))
+    sandwich = n("sandwich", contains("bread", "butter", "turkey"), on_board)
+    stack = FunctionalUnit((n("cutting board", contains("bread")), topped, buttered), Motion("pick-and-place"),
+                           (n("cutting board", contains("sandwich")), sandwich))
+    roles = relational_roles(stack)
+    assert roles[1].source.role == 0 and roles[2].source.role is None
+    outcome = _solve([put, spread, top, stack], [board, bread, n("butter", "soft"), n("turkey", "sliced")], sandwich)
+    assert sum(s.unit is put for s in outcome.trace.steps) == 2
+
+
+def test_the_milk_a_kitchen_bowl_lists_is_the_kitchens_milk_in_that_bowl():
+    # chocolate sandwich: the kitchen has `bowl (contains {milk})` and `milk (in [carton])`; the milk the
+    # completion puts in that bowl is `milk (in [bowl])`, the kitchen's milk in another place, so a plan that
+    # mixes it without pouring milk first is a valid FOON tree from that kitchen
+    carton, milk = n("carton", contains("milk")), n("milk", inside("carton"))
+    bowl, in_bowl = n("bowl", contains("milk")), n("milk", inside("bowl"))
+    pour = FunctionalUnit((carton, milk, n("bowl", "empty")), Motion("pour"), (bowl, in_bowl))
+    mixed = n("egg mixture", inside("bowl"))
+    mix = FunctionalUnit((bowl, in_bowl, n("egg", "beaten")), Motion("mix"), (n("bowl", contains("egg mixture")), mixed))
+    outcome = _solve([pour, mix], [carton, milk, bowl, n("bowl", "empty"), n("egg", "beaten")], mixed)
+    assert [s.unit for s in outcome.trace.steps] == [mix]
+    assert in_bowl in outcome.compiled.placed

@@ -72,7 +72,14 @@ from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import counted_objects, holder_init, implied_contents, named_objects, scene_instances, unplaced
+from .relational_init import (
+    counted_objects,
+    holder_init,
+    implied_contents,
+    kitchen_placed,
+    named_objects,
+    scene_instances,
+)
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
@@ -198,8 +205,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         gaps=tuple(sorted(pairs)),
     )
     # kitchen nodes the completion put where a kitchen holder says they are: the tree check's kitchen too
-    moved = frozenset(x.start for x in instances if x.start is not None and x.start not in inp.kitchen
-                      and unplaced(x.start) in inp.kitchen) | held_by
+    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 

@@ -29,6 +29,9 @@ Rules, in order (each reads only the unit itself):
    a C whose node lists its contents without L is no candidate: FOON's words
    disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains
    {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
+   A second role of one label in the same holder is bound late too: a list names
+   a label once (`plate (contains {bread})` under the sandwich's two breads, each
+   brought on its own plate: the planner takes the second from where it is).
 3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of
    heavy cream gives `mixing bowl (contains {heavy cream})` as output but not the
    cream. A role of label L with no output node moves when another role's output
@@ -234,8 +237,13 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
     read_after = [moved_into(before[k], labels[implied[k]]) if k in implied else after[k] for k in range(len(roles))]
     made_in = {place_of(after[k]) for k, r in enumerate(roles) if r.before is None and place_of(after[k])}
     result = []
+    sources = [_holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None
+               for k, r in enumerate(roles)]
     for k, r in enumerate(roles):
-        src = _holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None
+        src = sources[k]
+        if src is not None and src.role is not None and any(
+                labels[j] == r.label and sources[j] == src for j in range(k)):
+            src = Place(src.relation, src.holder)  # a list names a label once: the second is bound late (rule 2)
         dst = _holder(labels, read_after, k, r.label, place_of(read_after[k]))
         if r.before is None:
             result.append(RelRole(r, r.after, Fate.NEW, None, dst))

@@ -12,7 +12,8 @@ from ..model.scene import SceneObject
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["counted_objects", "holder_init", "implied_contents", "named_objects", "read_names", "scene_instances", "unplaced"]
+__all__ = ["counted_objects", "holder_init", "implied_contents", "kitchen_placed", "named_objects", "read_names",
+           "scene_instances", "unplaced"]
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
@@ -74,10 +75,11 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
     `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
     in it, counting the task's objects that start placed in a container of that label first. A new object
-    starts in a node of the task that places its label there: a kitchen one first, then one that only places
-    a kitchen node there (`skillet (empty, on [stove])` from the kitchen's `skillet (empty)`: the kitchen's
-    `stove (off, with [skillet])` says it was put there), one a unit takes with the container's own node
-    first (`paired`); else `water (in [pot])`. In container-name order; O(n^2)."""
+    starts in a node of the task that places its label there: a kitchen one first, then one that is a kitchen
+    node in another place (`skillet (empty, on [stove])` for the kitchen's `skillet (empty)`, `milk (in
+    [bowl])` for its `milk (in [carton])`: the kitchen's `stove (off, with [skillet])` and `bowl (contains
+    {milk})` say they are there: `kitchen_placed`), one a unit takes with the container's own node first
+    (`paired`); else `water (in [pot])`. In container-name order; O(n^2)."""
     out = []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
@@ -91,6 +93,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             key = (x.label, alias.get(place[1], place[1]))
             spare[key] = spare.get(key, 0) + 1
     starts = {x.start for x in instances}
+    loose = {unplaced(n) for n in starts if n is not None}
     for h in sorted(instances, key=lambda x: x.name):
         if h.start is None or h.label not in placed or not describes_contents(h.start):
             continue
@@ -99,7 +102,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
                 spare[(item, h.label)] -= 1
                 continue
             known = sorted(fits.get((item, h.label), ()), key=lambda n: (
-                n not in starts, unplaced(n) not in starts, (h.start, n) not in paired, n))
+                n not in starts, unplaced(n) not in loose, (h.start, n) not in paired, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
     return tuple(out)
 
@@ -107,6 +110,14 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
 def unplaced(node: ObjectNode) -> ObjectNode:
     """`node` with its places dropped: `skillet (empty)` for `skillet (empty, on [stove])`."""
     return make_node(node.label, [s for s in node.states if not (s.label in ("in", "on") and s.related)])
+
+
+def kitchen_placed(nodes: Iterable[ObjectNode | None], kitchen: Iterable[ObjectNode]) -> frozenset[ObjectNode]:
+    """The `nodes` not in `kitchen` that are a kitchen node in another place (`milk (in [bowl])` for `milk (in
+    [carton])`): where the kitchen completion starts an object a kitchen container lists, the kitchen says so."""
+    loose = {unplaced(k) for k in kitchen}
+    given = set(kitchen)
+    return frozenset(n for n in nodes if n is not None and n not in given and unplaced(n) in loose)
 
 
 def named_objects(table: NameTable, instances: list[Instance], nodes: Iterable[ObjectNode]) -> list[Instance]:
