@@ -14,11 +14,13 @@ def run() -> None:
 
     exit_on_signals()
     from .cli import main, progress
+    from .model import bulk
     from .planners import cleanup
 
     progress.process_started(started)
 
     cleanup.SPARE_HELPERS = False  # this process ends with the command: nothing it started may stay
+    bulk.KEEP_BUILDS = True  # ... and keeps its network until then: no collection rescans it
     try:
         main()
     except SystemExit as exc:
