@@ -19,7 +19,7 @@ from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.model.places import listed, place_of
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
-from foon2pddl.pddl.holders import Fate, list_gaps, mismatches, relational_roles, task_aliases, unit_aliases
+from foon2pddl.pddl.holders import Fate, list_gaps, mismatches, relational_roles, task_aliases, unit_aliases, unit_flows
 from foon2pddl.pddl.relational_plan import without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render
@@ -558,3 +558,44 @@ def test_the_milk_a_kitchen_bowl_lists_is_the_kitchens_milk_in_that_bowl():
     outcome = _solve([pour, mix], [carton, milk, bowl, n("bowl", "empty"), n("egg", "beaten")], mixed)
     assert [s.unit for s in outcome.trace.steps] == [mix]
     assert in_bowl in outcome.compiled.placed
+
+
+def test_what_a_list_names_by_another_word_follows_the_list():
+    # greek salad dressing: the grind lists `pepper` in the cup for the black pepper; the stir that makes the
+    # dressing in the cup takes what the cup lists, so the black pepper goes into the dressing too
+    cup, oil = n("cup", contains("oil")), n("oil", inside("cup"))
+    grinder, pepper = n("grinder", contains("black pepper")), n("black pepper", "ground", inside("grinder"))
+    peppered = n("cup", contains("oil", "pepper"))
+    grind = FunctionalUnit((cup, grinder, pepper), Motion("grind"), (peppered, n("black pepper", "ground", inside("cup"))))
+    dressing = n("dressing", inside("cup"))
+    stir = FunctionalUnit((peppered, oil, n("whisk")), Motion("stir"), (n("cup", contains("dressing")), dressing))
+    outcome = _solve([grind, stir], [cup, oil, grinder, pepper, n("whisk")], dressing)
+    assert [o for o, s in outcome.trace.final.items() if o.startswith("black_pepper") and s.consumed]
+
+
+def test_what_a_container_drops_goes_even_when_the_unit_takes_that_label_from_elsewhere():
+    # mushroom soup: the mix takes `flour (in [bowl])` while the measuring cup lists the flour that was poured
+    # into it; the cup's new node lists only the stock, so its flour is in the stock too
+    cup = n("measuring cup", contains("broth", "flour"))
+    broth, cup_flour = n("broth", inside("measuring cup")), n("flour", inside("measuring cup"))
+    bowl, bowl_flour = n("bowl", contains("flour")), n("flour", inside("bowl"))
+    pour = FunctionalUnit((n("measuring cup", contains("broth")), broth, bowl, bowl_flour), Motion("pour"),
+                          (cup, cup_flour))
+    stock = n("soup stock", inside("measuring cup"))
+    mix = FunctionalUnit((cup, bowl_flour, broth, n("whisk")), Motion("mix"),
+                         (n("measuring cup", contains("soup stock")), stock))
+    assert any(f.label == "flour" for f in unit_flows(mix))
+    outcome = _solve([pour, mix], [n("measuring cup", contains("broth")), broth, bowl, bowl_flour, n("whisk")], stock)
+    assert all(s.consumed or s.holder != "measuring_cup_1" for o, s in outcome.trace.final.items()
+               if o.startswith("flour"))
+
+
+def test_what_a_glass_drops_goes_into_the_drink_beside_an_object_of_its_label_from_no_place():
+    # bloody mary: a lemon was rolled into the glass; the squeeze of another lemon (no place) makes the drink,
+    # whose glass lists only the drink: the lemon in the glass is in the drink too
+    glass, rolled = n("glass", contains("lemon")), n("lemon", "halved", inside("glass"))
+    roll = FunctionalUnit((n("glass", "empty"), n("lemon", "halved")), Motion("roll"), (glass, rolled))
+    drink = n("drink", contains("lemon", "lemon juice"), inside("glass"))
+    squeeze = FunctionalUnit((glass, n("lemon", "halved")), Motion("squeeze"), (n("glass", contains("drink")), drink))
+    outcome = _solve([roll, squeeze], [n("glass", "empty"), n("lemon", "halved")], drink)
+    assert all(s.consumed for o, s in outcome.trace.final.items() if o.startswith("lemon"))

@@ -369,16 +369,16 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             if h is not None:
                 add.append(Atom(dst.relation.value, (h, v)))
     for i, flow in enumerate(plan.flows):
-        if flow.label not in type_of:
+        label = ways[i][0][0].label if ways.get(i) else flow.label  # the object label the list's name reads as
+        if label not in type_of:
             continue
-        y = f"?{names.name(f'{flow.label} in it', key=('flow', i))}"
+        y = f"?{names.name(f'{label} in it', key=('flow', i))}"
         for node, rel, new in ways.get(i, ()):
             there, was = Atom(rel.value, (var[flow.holder], y)), Atom(IS, (y, const[node]))
             now = [Atom(IS, (y, CONSUMED if new is None else const[new]))]
             if flow.into is not None:
                 now.append(Atom(IN, (var[flow.into], y)))
-            cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y,
-                                    type=type_of[flow.label]))
+            cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y, type=type_of[label]))
     expected = [Role(s.rel.role.label, s.rel.role.before,
                      None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else plan.after_of(k))
                 for k, s in enumerate(slots)]

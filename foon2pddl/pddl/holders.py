@@ -51,7 +51,9 @@ Rules, in order (each reads only the unit itself):
    [bowl])` where `meat mix (in [bowl])` is made). A source the unit does not name
    is decided by the encoding, which knows the task's nodes (`Fate.MOVES` here).
 5. **Contents that are not roles.** A container whose output node drops a label its
-   input node lists, with no role of that label: what is of that label in it
+   input node lists, with no role of that label that may be in it (a role of the
+   label taken from a holder of another label, or consumed from no place, is another
+   object: the flour the cup lists beside the mix's `flour (in [bowl])`): what is of that label in it
    follows into the role whose output node newly lists it (`Flow.into`), or became
    part of the mixture (`Flow.into` None; also when that role is a product the unit makes).
    A container FOON leaves out of the outputs, whose contents another role's output
@@ -283,6 +285,7 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
     read = _reading(unit)
     roles, before, after = read.roles, read.before, read.after
     labels = {r.label for r in roles}
+    rels = relational_roles(unit)
     out = []
     for h, r in enumerate(roles):
         if r.before is None or not describes_contents(after[h]):
@@ -294,7 +297,12 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
                 if into:
                     out.append(Flow(lab, h, into[0]))
             continue
-        for lab in sorted(listed(before[h]) - listed(after[h]) - labels):
+        # a role of the label taken from a holder of another label, or consumed from no place, is another
+        # object: what is of that label in this one goes too (the flour the cup lists, beside the mix's `flour
+        # (in [bowl])`; the lemon in the glass, beside the lemon squeezed into it)
+        elsewhere = {x.role.label for x in rels if (x.source.holder != r.label if x.source is not None
+                                                     else x.fate is Fate.CONSUMED)}
+        for lab in sorted(listed(before[h]) - listed(after[h]) - (labels - elsewhere)):
             into = [j for j, x in enumerate(roles) if j != h and x.after is not None
                     and lab in listed(after[j]) - listed(before[j])]
             out.append(Flow(lab, h, into[0] if into and roles[into[0]].before is not None else None))
