@@ -1,6 +1,7 @@
 """The `instances` encoding against `tree`: each shared subgraph alone, and the universal FOON per goal.
 
-`python -m bench.pddl_instances [--shared DIR] [--universal] [--extra N] [--limit N] [--time-limit S] [-v]`
+`python -m bench.pddl_instances [--shared DIR] [--universal] [--extra N] [--limit N] [--time-limit S]
+                                [--planner lama|fd-opt|symk-opt] [-v]`
 
 Per subgraph (its dish as the goal, its default kitchen, level 3, pruned):
 Fast Downward (lama-first) on `tree` and on `instances`; every `instances`
@@ -9,7 +10,9 @@ in plan order, are validated as a FOON task tree from the kitchen. Reports
 solved counts, plan lengths (units; repeated firings) and the median and
 worst time (translate + search). `--universal`: the merge of all subgraphs,
 each subgraph's dish a goal, per-goal relevance pruning. `--extra N` adds N
-instances to every starting place (too many instances).
+instances to every starting place (too many instances). `--planner` runs the
+`instances` task with an optimal planner instead of lama-first (`fd-opt`: FD
+seq-opt-lmcut; `symk-opt`: SymK through unified-planning, `pip install up-symk`).
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ from foon2pddl.pddl.encode_instances import encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
 from foon2pddl.pddl.instance_replay import instance_trace
 from foon2pddl.pddl.render import render
-from foon2pddl.planners import fd
+from foon2pddl.planners import fd, up_engine
 from foon2pddl.planners.trace_check import check_states
 
 from .harness import Context
@@ -61,7 +64,16 @@ def _seconds(res) -> float:
     return res.timings.get("translate", 0.0) + res.timings.get("search", 0.0)
 
 
-def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_limit: float, extra: int = 0) -> Row:
+#: `--planner`: how the instances task is solved (PDDL text, time limit) -> PlanResult.
+PLANNERS = {
+    "lama": lambda d, p, t: fd.solve(d, p, time_limit=t),
+    "fd-opt": lambda d, p, t: fd.solve(d, p, optimal=True, time_limit=t),
+    "symk-opt": lambda d, p, t: up_engine.solve((d, p), "symk", optimal=True, time_limit=t),
+}
+
+
+def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_limit: float, extra: int = 0,
+               planner: str = "lama") -> Row:
     goal = resolve_goal(spec_of_node(dish), foon)
     native = any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates)
     tree_task = compile_task(foon, kitchen, goal, "tree")
@@ -69,7 +81,7 @@ def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_l
     tree_units = sum(tree_task.action_for(s.split()[0]).unit is not None for s in tree.plan)
     t0 = time.perf_counter()
     task = encode_instances(foon, kitchen, goal, 3, EncodeOptions(), extra=extra)
-    res = fd.solve(*render(task), time_limit=time_limit)
+    res = PLANNERS[planner](*render(task), time_limit)
     seconds = _seconds(res) or (time.perf_counter() - t0)
     if not res.solved:
         return Row(name, native, tree.status, tree_units, res.status, 0, 0, len(task.instances), False,
@@ -85,22 +97,24 @@ def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_l
                len(task.instances), not problems, problems[0] if problems else "", seconds, _seconds(tree))
 
 
-def subgraph_rows(shared: Path, time_limit: float, limit: int | None, extra: int = 0) -> list[Row]:
+def subgraph_rows(shared: Path, time_limit: float, limit: int | None, extra: int = 0, planner: str = "lama"
+                  ) -> list[Row]:
     rows = []
     for path in expand_paths([shared / "foon-subgraphs"])[:limit]:
         foon, _ = load([path])
         dishes = sorted(n for n in foon.nodes if n.dish is not None)
         if dishes and dishes[0] in foon.producers:
-            rows.append(check_goal(path.name, foon, default_kitchen(foon), dishes[0], time_limit, extra))
+            rows.append(check_goal(path.name, foon, default_kitchen(foon), dishes[0], time_limit, extra, planner))
     return rows
 
 
-def universal_rows(shared: Path, time_limit: float, limit: int | None, extra: int = 0) -> list[Row]:
+def universal_rows(shared: Path, time_limit: float, limit: int | None, extra: int = 0, planner: str = "lama"
+                   ) -> list[Row]:
     foon, _ = load([shared / "foon-subgraphs"])
     kitchen = default_kitchen(foon)
     reach = reachable(foon, kitchen.nodes)
     dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
-    return [check_goal(d.describe(), foon, kitchen, d, time_limit, extra) for d in dishes[:limit]]
+    return [check_goal(d.describe(), foon, kitchen, d, time_limit, extra, planner) for d in dishes[:limit]]
 
 
 def summary(rows: list[Row]) -> str:
@@ -141,9 +155,11 @@ def main() -> None:
     ap.add_argument("--extra", type=int, default=0, help="instances added to every starting place")
     ap.add_argument("--time-limit", type=float, default=60.0, help="seconds per FD run")
     ap.add_argument("--limit", type=int, default=None, help="only the first N files or goals")
+    ap.add_argument("--planner", choices=sorted(PLANNERS), default="lama", help="planner for the instances task")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per goal")
     args = ap.parse_args()
-    rows = (universal_rows if args.universal else subgraph_rows)(args.shared, args.time_limit, args.limit, args.extra)
+    rows = (universal_rows if args.universal else subgraph_rows)(args.shared, args.time_limit, args.limit, args.extra,
+                                                                 args.planner)
     if args.verbose:
         for r in rows:
             print(f"{r.name}\ttree={r.tree}/{r.tree_units}\tinstances={r.status}/{r.steps}/{r.distinct_units}"

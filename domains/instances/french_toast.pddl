@@ -3,26 +3,12 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-e44264a9)
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
+(define (domain foon-instances-9f85c715)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    bowl - physical-object
-    bread - physical-object
-    butter - physical-object
-    cinnamon - physical-object
-    custard - physical-object
-    egg - physical-object
-    fork - physical-object
-    french_toast - physical-object
-    frying_pan - physical-object
-    maple_syrup - physical-object
-    milk - physical-object
-    plate - physical-object
-    spatula - physical-object
-    stove - physical-object
-    vanilla_extract - physical-object
   )
   (:constants
     not-yet-made - object-state
@@ -71,13 +57,30 @@
     (goal-reached)  ; a goal candidate was made
     (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
     (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
+    (type_bowl ?x - physical-object)  ; ?x is of type bowl
+    (type_bread ?x - physical-object)  ; ?x is of type bread
+    (type_butter ?x - physical-object)  ; ?x is of type butter
+    (type_cinnamon ?x - physical-object)  ; ?x is of type cinnamon
+    (type_custard ?x - physical-object)  ; ?x is of type custard
+    (type_egg ?x - physical-object)  ; ?x is of type egg
+    (type_fork ?x - physical-object)  ; ?x is of type fork
+    (type_french_toast ?x - physical-object)  ; ?x is of type french_toast
+    (type_frying_pan ?x - physical-object)  ; ?x is of type frying_pan
+    (type_maple_syrup ?x - physical-object)  ; ?x is of type maple_syrup
+    (type_milk ?x - physical-object)  ; ?x is of type milk
+    (type_plate ?x - physical-object)  ; ?x is of type plate
+    (type_spatula ?x - physical-object)  ; ?x is of type spatula
+    (type_stove ?x - physical-object)  ; ?x is of type stove
+    (type_vanilla_extract ?x - physical-object)  ; ?x is of type vanilla_extract
   )
 
   (:action crack_u17
     ; unit 17: crack from 03-scrambled_eggs.foon:3, 05-french_toast.foon:3
     ; crack: bowl (empty), egg (whole) -> bowl (contains {egg}), egg (cracked, in [bowl])
-    :parameters (?bowl - bowl ?egg - egg)
+    :parameters (?bowl - physical-object ?egg - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_egg ?egg)
       (together ?bowl ?egg)
       (is ?bowl bowl_empty)
       (lane ?bowl bowl_empty bowl_contains_egg)
@@ -95,8 +98,10 @@
   (:action pour_u19
     ; unit 19: pour from 03-scrambled_eggs.foon:24, 05-french_toast.foon:24
     ; pour: bowl (contains {egg}), egg (beaten, in [bowl]), milk (in [carton]) -> bowl (contains {egg, milk}), milk (in [bowl])
-    :parameters (?bowl - bowl ?milk - milk)
+    :parameters (?bowl - physical-object ?milk - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_milk ?milk)
       (together ?bowl ?milk)
       (is ?bowl bowl_contains_egg)
       (lane ?bowl bowl_contains_egg bowl_contains_egg_milk)
@@ -116,8 +121,10 @@
   (:action pick-and-place_u22
     ; unit 22: pick-and-place from 03-scrambled_eggs.foon:71, 04-pancakes.foon:76, 05-french_toast.foon:83
     ; pick-and-place: frying pan (empty), stove (off) -> frying pan (empty, on [stove])
-    :parameters (?frying_pan - frying_pan ?stove - stove)
+    :parameters (?frying_pan - physical-object ?stove - physical-object)
     :precondition (and
+      (type_frying_pan ?frying_pan)
+      (type_stove ?stove)
       (is ?frying_pan frying_pan_empty)
       (lane ?frying_pan frying_pan_empty frying_pan_empty_on_stove)
       (is ?stove stove_off)
@@ -132,8 +139,9 @@
   (:action turn_on_u23
     ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
     ; turn on: stove (off) -> stove (on)
-    :parameters (?stove - stove)
+    :parameters (?stove - physical-object)
     :precondition (and
+      (type_stove ?stove)
       (is ?stove stove_off)
       (lane ?stove stove_off stove_on)
     )
@@ -147,8 +155,10 @@
   (:action pick-and-place_u24
     ; unit 24: pick-and-place from 03-scrambled_eggs.foon:86, 04-pancakes.foon:91, 05-french_toast.foon:98
     ; pick-and-place: frying pan (empty, on [stove]), butter (solid) -> frying pan (contains {butter}, on [stove]), butter (in [frying pan], solid)
-    :parameters (?frying_pan - frying_pan ?butter - butter)
+    :parameters (?frying_pan - physical-object ?butter - physical-object)
     :precondition (and
+      (type_frying_pan ?frying_pan)
+      (type_butter ?butter)
       (together ?frying_pan ?butter)
       (is ?frying_pan frying_pan_empty_on_stove)
       (lane ?frying_pan frying_pan_empty_on_stove frying_pan_contains_butter_on_stove)
@@ -166,8 +176,9 @@
   (:action melt_u25
     ; unit 25: melt from 03-scrambled_eggs.foon:99, 04-pancakes.foon:104, 05-french_toast.foon:111
     ; melt: stove (on), butter (in [frying pan], solid) -> butter (in [frying pan], melted)
-    :parameters (?butter - butter)
+    :parameters (?butter - physical-object)
     :precondition (and
+      (type_butter ?butter)
       (occupied stove_on)
       (is ?butter butter_in_frying_pan_solid)
       (lane ?butter butter_in_frying_pan_solid butter_in_frying_pan_melted)
@@ -182,8 +193,9 @@
   (:action beat_u39
     ; unit 39: beat from 05-french_toast.foon:14
     ; beat: egg (cracked, in [bowl]), fork -> egg (beaten, in [bowl]), fork
-    :parameters (?egg - egg)
+    :parameters (?egg - physical-object)
     :precondition (and
+      (type_egg ?egg)
       (is ?egg egg_cracked_in_bowl)
       (lane ?egg egg_cracked_in_bowl egg_beaten_in_bowl)
       (occupied fork_plain)
@@ -198,8 +210,11 @@
   (:action pour_u40
     ; unit 40: pour* from 05-french_toast.foon:37
     ; pour: bowl (contains {egg, milk}), cinnamon (ground), vanilla extract (liquid) -> bowl (contains {cinnamon, egg, milk, vanilla extract}), cinnamon (in [bowl]), vanilla extract (in [bowl])
-    :parameters (?bowl - bowl ?cinnamon - cinnamon ?vanilla_extract - vanilla_extract)
+    :parameters (?bowl - physical-object ?cinnamon - physical-object ?vanilla_extract - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_cinnamon ?cinnamon)
+      (type_vanilla_extract ?vanilla_extract)
       (together ?bowl ?cinnamon)
       (together ?cinnamon ?vanilla_extract)
       (is ?bowl bowl_contains_egg_milk)
@@ -224,8 +239,10 @@
   (:action mix_u41
     ; unit 41: mix from 05-french_toast.foon:51
     ; mix: bowl (contains {cinnamon, egg, milk, vanilla extract}), egg (beaten, in [bowl]), milk (in [bowl]), cinnamon (in [bowl]), vanilla extract (in [bowl]), fork -> bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla...
-    :parameters (?bowl - bowl ?custard - custard)
+    :parameters (?bowl - physical-object ?custard - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_custard ?custard)
       (together ?bowl ?custard)
       (is ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract)
       (lane ?bowl bowl_contains_cinnamon_egg_milk_vanilla_extract bowl_contains_custard)
@@ -250,8 +267,9 @@
   (:action dip_u42
     ; unit 42: dip from 05-french_toast.foon:71
     ; dip: bowl (contains {custard}), custard (contains {cinnamon, egg, milk, vanilla extract}, in [bowl]), bread (sliced) -> bread (sliced, soaked {custard})
-    :parameters (?bread - bread)
+    :parameters (?bread - physical-object)
     :precondition (and
+      (type_bread ?bread)
       (occupied bowl_contains_custard)
       (occupied custard_contains_cinnamon_egg_milk_vanilla_extract_in_bowl)
       (is ?bread bread_sliced)
@@ -266,8 +284,10 @@
   (:action pick-and-place_u43
     ; unit 43: pick-and-place from 05-french_toast.foon:121
     ; pick-and-place: frying pan (contains {butter}, on [stove]), butter (in [frying pan], melted), bread (sliced, soaked {custard}) -> frying pan (contains {bread, butter}, on [stove]), bread (in [frying pan], sliced, soaked {custard})
-    :parameters (?frying_pan - frying_pan ?bread - bread)
+    :parameters (?frying_pan - physical-object ?bread - physical-object)
     :precondition (and
+      (type_frying_pan ?frying_pan)
+      (type_bread ?bread)
       (together ?frying_pan ?bread)
       (is ?frying_pan frying_pan_contains_butter_on_stove)
       (lane ?frying_pan frying_pan_contains_butter_on_stove frying_pan_contains_bread_butter_on_stove)
@@ -287,8 +307,10 @@
   (:action fry_u44
     ; unit 44: fry from 05-french_toast.foon:139
     ; fry: stove (on), frying pan (contains {bread, butter}, on [stove]), bread (in [frying pan], sliced, soaked {custard}), spatula -> frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula
-    :parameters (?frying_pan - frying_pan ?french_toast - french_toast)
+    :parameters (?frying_pan - physical-object ?french_toast - physical-object)
     :precondition (and
+      (type_frying_pan ?frying_pan)
+      (type_french_toast ?french_toast)
       (together ?frying_pan ?french_toast)
       (occupied stove_on)
       (is ?frying_pan frying_pan_contains_bread_butter_on_stove)
@@ -310,8 +332,10 @@
   (:action pick-and-place_u45
     ; unit 45: pick-and-place from 05-french_toast.foon:158
     ; pick-and-place: frying pan (contains {french toast}, on [stove]), french toast (cooked, in [frying pan]), spatula, plate (empty) -> plate (contains {french toast}), french toast (cooked, on [plate]), spatula
-    :parameters (?french_toast - french_toast ?plate - plate)
+    :parameters (?french_toast - physical-object ?plate - physical-object)
     :precondition (and
+      (type_french_toast ?french_toast)
+      (type_plate ?plate)
       (together ?french_toast ?plate)
       (occupied frying_pan_contains_french_toast_on_stove)
       (is ?french_toast french_toast_cooked_in_frying_pan)
@@ -331,8 +355,11 @@
   (:action pour_u46
     ; unit 46: pour from 05-french_toast.foon:175
     ; pour: plate (contains {french toast}), french toast (cooked, on [plate]), maple syrup (in [bottle]) -> plate (contains {french toast, maple syrup}), french toast (cooked, on [plate], topped {maple syrup}), maple syrup (on [french toast])
-    :parameters (?plate - plate ?french_toast - french_toast ?maple_syrup - maple_syrup)
+    :parameters (?plate - physical-object ?french_toast - physical-object ?maple_syrup - physical-object)
     :precondition (and
+      (type_plate ?plate)
+      (type_french_toast ?french_toast)
+      (type_maple_syrup ?maple_syrup)
       (together ?plate ?french_toast)
       (together ?french_toast ?maple_syrup)
       (is ?plate plate_contains_french_toast)

@@ -4,27 +4,12 @@
 ; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-5f7b7b26)
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
+(define (domain foon-instances-88940453)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    banana - physical-object
-    bowl - physical-object
-    cutting_board - physical-object
-    fruit_salad - physical-object
-    heavy_cream - physical-object
-    honey - physical-object
-    juicer - physical-object
-    knife - physical-object
-    lime - physical-object
-    lime_juice - physical-object
-    mixing_bowl - physical-object
-    spoon - physical-object
-    strawberry - physical-object
-    sugar - physical-object
-    whipped_cream - physical-object
-    whisk - physical-object
   )
   (:constants
     not-yet-made - object-state
@@ -80,13 +65,31 @@
     (goal-reached)  ; a goal candidate was made
     (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
     (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
+    (type_banana ?x - physical-object)  ; ?x is of type banana
+    (type_bowl ?x - physical-object)  ; ?x is of type bowl
+    (type_cutting_board ?x - physical-object)  ; ?x is of type cutting_board
+    (type_fruit_salad ?x - physical-object)  ; ?x is of type fruit_salad
+    (type_heavy_cream ?x - physical-object)  ; ?x is of type heavy_cream
+    (type_honey ?x - physical-object)  ; ?x is of type honey
+    (type_juicer ?x - physical-object)  ; ?x is of type juicer
+    (type_knife ?x - physical-object)  ; ?x is of type knife
+    (type_lime ?x - physical-object)  ; ?x is of type lime
+    (type_lime_juice ?x - physical-object)  ; ?x is of type lime_juice
+    (type_mixing_bowl ?x - physical-object)  ; ?x is of type mixing_bowl
+    (type_spoon ?x - physical-object)  ; ?x is of type spoon
+    (type_strawberry ?x - physical-object)  ; ?x is of type strawberry
+    (type_sugar ?x - physical-object)  ; ?x is of type sugar
+    (type_whipped_cream ?x - physical-object)  ; ?x is of type whipped_cream
+    (type_whisk ?x - physical-object)  ; ?x is of type whisk
   )
 
   (:action pour_u9
     ; unit 9: pour from 02-whipped_cream.foon:3, 09-fruit_salad.foon:164
     ; pour: mixing bowl (empty), heavy cream (in [carton]) -> mixing bowl (contains {heavy cream}), heavy cream (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?heavy_cream - heavy_cream)
+    :parameters (?mixing_bowl - physical-object ?heavy_cream - physical-object)
     :precondition (and
+      (type_mixing_bowl ?mixing_bowl)
+      (type_heavy_cream ?heavy_cream)
       (together ?mixing_bowl ?heavy_cream)
       (is ?mixing_bowl mixing_bowl_empty)
       (lane ?mixing_bowl mixing_bowl_empty mixing_bowl_contains_heavy_cream)
@@ -105,8 +108,10 @@
   (:action pour_u10
     ; unit 10: pour from 02-whipped_cream.foon:13, 09-fruit_salad.foon:174
     ; pour: mixing bowl (contains {heavy cream}), sugar (granulated) -> mixing bowl (contains {heavy cream, sugar}), sugar (in [mixing bowl])
-    :parameters (?mixing_bowl - mixing_bowl ?sugar - sugar)
+    :parameters (?mixing_bowl - physical-object ?sugar - physical-object)
     :precondition (and
+      (type_mixing_bowl ?mixing_bowl)
+      (type_sugar ?sugar)
       (together ?mixing_bowl ?sugar)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream)
       (lane ?mixing_bowl mixing_bowl_contains_heavy_cream mixing_bowl_contains_heavy_cream_sugar)
@@ -125,8 +130,10 @@
   (:action pick-and-place_u67
     ; unit 67: pick-and-place from 07-guacamole.foon:52, 09-fruit_salad.foon:83
     ; pick-and-place: cutting board (empty), lime (whole) -> cutting board (contains {lime}), lime (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?lime - lime)
+    :parameters (?cutting_board - physical-object ?lime - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_lime ?lime)
       (together ?cutting_board ?lime)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_lime)
@@ -145,8 +152,9 @@
   (:action cut_u68
     ; unit 68: cut from 07-guacamole.foon:63, 09-fruit_salad.foon:94
     ; cut: cutting board (contains {lime}), lime (on [cutting board], whole), knife -> cutting board (contains {lime}), lime (halved, on [cutting board]), knife
-    :parameters (?lime - lime)
+    :parameters (?lime - physical-object)
     :precondition (and
+      (type_lime ?lime)
       (occupied cutting_board_contains_lime)
       (is ?lime lime_on_cutting_board_whole)
       (lane ?lime lime_on_cutting_board_whole lime_halved_on_cutting_board)
@@ -161,8 +169,11 @@
   (:action squeeze_u69
     ; unit 69: squeeze from 07-guacamole.foon:77, 09-fruit_salad.foon:108
     ; squeeze: lime (halved, on [cutting board]), juicer (empty) -> lime (squeezed), juicer (contains {lime juice}), lime juice (in [juicer])
-    :parameters (?lime - lime ?juicer - juicer ?lime_juice - lime_juice)
+    :parameters (?lime - physical-object ?juicer - physical-object ?lime_juice - physical-object)
     :precondition (and
+      (type_lime ?lime)
+      (type_juicer ?juicer)
+      (type_lime_juice ?lime_juice)
       (together ?lime ?juicer)
       (together ?juicer ?lime_juice)
       (is ?lime lime_halved_on_cutting_board)
@@ -187,8 +198,10 @@
   (:action pick-and-place_u89
     ; unit 89: pick-and-place from 09-fruit_salad.foon:3
     ; pick-and-place: cutting board (empty), strawberry (whole) -> cutting board (contains {strawberry}), strawberry (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?strawberry - strawberry)
+    :parameters (?cutting_board - physical-object ?strawberry - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_strawberry ?strawberry)
       (together ?cutting_board ?strawberry)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_strawberry)
@@ -207,8 +220,9 @@
   (:action slice_u90
     ; unit 90: slice from 09-fruit_salad.foon:14
     ; slice: cutting board (contains {strawberry}), strawberry (on [cutting board], whole), knife -> cutting board (contains {strawberry}), strawberry (on [cutting board], sliced), knife
-    :parameters (?strawberry - strawberry)
+    :parameters (?strawberry - physical-object)
     :precondition (and
+      (type_strawberry ?strawberry)
       (occupied cutting_board_contains_strawberry)
       (is ?strawberry strawberry_on_cutting_board_whole)
       (lane ?strawberry strawberry_on_cutting_board_whole strawberry_on_cutting_board_sliced)
@@ -223,8 +237,9 @@
   (:action peel_u91
     ; unit 91: peel from 09-fruit_salad.foon:28
     ; peel: banana (whole) -> banana (peeled)
-    :parameters (?banana - banana)
+    :parameters (?banana - physical-object)
     :precondition (and
+      (type_banana ?banana)
       (is ?banana banana_whole)
       (lane ?banana banana_whole banana_peeled)
     )
@@ -237,8 +252,10 @@
   (:action pick-and-place_u92
     ; unit 92: pick-and-place from 09-fruit_salad.foon:34
     ; pick-and-place: cutting board (empty), banana (peeled) -> cutting board (contains {banana}), banana (on [cutting board], peeled)
-    :parameters (?cutting_board - cutting_board ?banana - banana)
+    :parameters (?cutting_board - physical-object ?banana - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_banana ?banana)
       (together ?cutting_board ?banana)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_banana)
@@ -257,8 +274,9 @@
   (:action slice_u93
     ; unit 93: slice from 09-fruit_salad.foon:45
     ; slice: cutting board (contains {banana}), banana (on [cutting board], peeled), knife -> cutting board (contains {banana}), banana (on [cutting board], sliced), knife
-    :parameters (?banana - banana)
+    :parameters (?banana - physical-object)
     :precondition (and
+      (type_banana ?banana)
       (occupied cutting_board_contains_banana)
       (is ?banana banana_on_cutting_board_peeled)
       (lane ?banana banana_on_cutting_board_peeled banana_on_cutting_board_sliced)
@@ -273,8 +291,10 @@
   (:action pick-and-place_u94
     ; unit 94: pick-and-place from 09-fruit_salad.foon:59
     ; pick-and-place: bowl (empty), strawberry (on [cutting board], sliced) -> bowl (contains {strawberry}), strawberry (in [bowl], sliced)
-    :parameters (?bowl - bowl ?strawberry - strawberry)
+    :parameters (?bowl - physical-object ?strawberry - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_strawberry ?strawberry)
       (together ?bowl ?strawberry)
       (is ?bowl bowl_empty)
       (lane ?bowl bowl_empty bowl_contains_strawberry)
@@ -293,8 +313,10 @@
   (:action pick-and-place_u95
     ; unit 95: pick-and-place from 09-fruit_salad.foon:71
     ; pick-and-place: bowl (contains {strawberry}), banana (on [cutting board], sliced) -> bowl (contains {banana, strawberry}), banana (in [bowl], sliced)
-    :parameters (?bowl - bowl ?banana - banana)
+    :parameters (?bowl - physical-object ?banana - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_banana ?banana)
       (together ?bowl ?banana)
       (is ?bowl bowl_contains_strawberry)
       (lane ?bowl bowl_contains_strawberry bowl_contains_banana_strawberry)
@@ -313,8 +335,10 @@
   (:action pour_u96
     ; unit 96: pour from 09-fruit_salad.foon:121
     ; pour: juicer (contains {lime juice}), lime juice (in [juicer]), bowl (contains {banana, strawberry}) -> bowl (contains {banana, lime juice, strawberry}), lime juice (in [bowl])
-    :parameters (?lime_juice - lime_juice ?bowl - bowl)
+    :parameters (?lime_juice - physical-object ?bowl - physical-object)
     :precondition (and
+      (type_lime_juice ?lime_juice)
+      (type_bowl ?bowl)
       (together ?lime_juice ?bowl)
       (occupied juicer_contains_lime_juice)
       (is ?lime_juice lime_juice_in_juicer)
@@ -334,8 +358,10 @@
   (:action pour_u97
     ; unit 97: pour from 09-fruit_salad.foon:133
     ; pour: bowl (contains {banana, lime juice, strawberry}), honey (in [jar]) -> bowl (contains {banana, honey, lime juice, strawberry}), honey (in [bowl])
-    :parameters (?bowl - bowl ?honey - honey)
+    :parameters (?bowl - physical-object ?honey - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_honey ?honey)
       (together ?bowl ?honey)
       (is ?bowl bowl_contains_banana_lime_juice_strawberry)
       (lane ?bowl bowl_contains_banana_lime_juice_strawberry bowl_contains_banana_honey_lime_juice_strawberry)
@@ -354,8 +380,10 @@
   (:action mix_u98
     ; unit 98: mix from 09-fruit_salad.foon:143
     ; mix: bowl (contains {banana, honey, lime juice, strawberry}), strawberry (in [bowl], sliced), banana (in [bowl], sliced), lime juice (in [bowl]), honey (in [bowl]), spoon -> bowl (contains {fruit salad}), fruit salad (contains {banana, h...
-    :parameters (?bowl - bowl ?fruit_salad - fruit_salad)
+    :parameters (?bowl - physical-object ?fruit_salad - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_fruit_salad ?fruit_salad)
       (together ?bowl ?fruit_salad)
       (is ?bowl bowl_contains_banana_honey_lime_juice_strawberry)
       (lane ?bowl bowl_contains_banana_honey_lime_juice_strawberry bowl_contains_fruit_salad)
@@ -378,8 +406,10 @@
   (:action whisk_u99
     ; unit 99: whisk from 09-fruit_salad.foon:184
     ; whisk: mixing bowl (contains {heavy cream, sugar}), heavy cream (in [mixing bowl]), sugar (in [mixing bowl]), whisk -> mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), whisk
-    :parameters (?mixing_bowl - mixing_bowl ?whipped_cream - whipped_cream)
+    :parameters (?mixing_bowl - physical-object ?whipped_cream - physical-object)
     :precondition (and
+      (type_mixing_bowl ?mixing_bowl)
+      (type_whipped_cream ?whipped_cream)
       (together ?mixing_bowl ?whipped_cream)
       (is ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar)
       (lane ?mixing_bowl mixing_bowl_contains_heavy_cream_sugar mixing_bowl_contains_whipped_cream)
@@ -401,8 +431,11 @@
   (:action scoop_u100
     ; unit 100: scoop from 09-fruit_salad.foon:199
     ; scoop: bowl (contains {fruit salad}), fruit salad (contains {banana, honey, lime juice, strawberry}, in [bowl]), mixing bowl (contains {whipped cream}), whipped cream (in [mixing bowl], whipped), spoon -> bowl (contains {fruit salad, whi...
-    :parameters (?bowl - bowl ?fruit_salad - fruit_salad ?whipped_cream - whipped_cream)
+    :parameters (?bowl - physical-object ?fruit_salad - physical-object ?whipped_cream - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_fruit_salad ?fruit_salad)
+      (type_whipped_cream ?whipped_cream)
       (together ?bowl ?fruit_salad)
       (together ?fruit_salad ?whipped_cream)
       (is ?bowl bowl_contains_fruit_salad)

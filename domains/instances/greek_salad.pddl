@@ -4,24 +4,12 @@
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3 takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
-(define (domain foon-instances-df88af15)
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
+(define (domain foon-instances-fe3e4f62)
   (:requirements :strips :typing)
   (:types
     physical-object - object
     object-state - object
-    black_olive - physical-object
-    bowl - physical-object
-    cucumber - physical-object
-    cutting_board - physical-object
-    feta_cheese - physical-object
-    greek_salad - physical-object
-    knife - physical-object
-    olive_oil - physical-object
-    onion - physical-object
-    oregano - physical-object
-    red_wine_vinegar - physical-object
-    salad_tongs - physical-object
-    tomato - physical-object
   )
   (:constants
     not-yet-made - object-state
@@ -76,13 +64,28 @@
     (goal-reached)  ; a goal candidate was made
     (lane ?x - physical-object ?s - object-state ?t - object-state)  ; static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)
     (together ?a - physical-object ?b - physical-object)  ; static: ?a and ?b change state in one firing of the unfolded plan
+    (type_black_olive ?x - physical-object)  ; ?x is of type black_olive
+    (type_bowl ?x - physical-object)  ; ?x is of type bowl
+    (type_cucumber ?x - physical-object)  ; ?x is of type cucumber
+    (type_cutting_board ?x - physical-object)  ; ?x is of type cutting_board
+    (type_feta_cheese ?x - physical-object)  ; ?x is of type feta_cheese
+    (type_greek_salad ?x - physical-object)  ; ?x is of type greek_salad
+    (type_knife ?x - physical-object)  ; ?x is of type knife
+    (type_olive_oil ?x - physical-object)  ; ?x is of type olive_oil
+    (type_onion ?x - physical-object)  ; ?x is of type onion
+    (type_oregano ?x - physical-object)  ; ?x is of type oregano
+    (type_red_wine_vinegar ?x - physical-object)  ; ?x is of type red_wine_vinegar
+    (type_salad_tongs ?x - physical-object)  ; ?x is of type salad_tongs
+    (type_tomato ?x - physical-object)  ; ?x is of type tomato
   )
 
   (:action pick-and-place_u47
     ; unit 47: pick-and-place from 06-tomato_soup.foon:3, 07-guacamole.foon:105, 08-greek_salad.foon:53
     ; pick-and-place: cutting board (empty), onion (whole) -> cutting board (contains {onion}), onion (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?onion - onion)
+    :parameters (?cutting_board - physical-object ?onion - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_onion ?onion)
       (together ?cutting_board ?onion)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_onion)
@@ -101,8 +104,9 @@
   (:action peel_u48
     ; unit 48: peel from 06-tomato_soup.foon:14, 07-guacamole.foon:116, 08-greek_salad.foon:64
     ; peel: cutting board (contains {onion}), onion (on [cutting board], whole), knife -> cutting board (contains {onion}), onion (on [cutting board], peeled), knife
-    :parameters (?onion - onion)
+    :parameters (?onion - physical-object)
     :precondition (and
+      (type_onion ?onion)
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_whole)
       (lane ?onion onion_on_cutting_board_whole onion_on_cutting_board_peeled)
@@ -117,8 +121,9 @@
   (:action chop_u49
     ; unit 49: chop from 06-tomato_soup.foon:28, 07-guacamole.foon:130
     ; chop: cutting board (contains {onion}), onion (on [cutting board], peeled), knife -> cutting board (contains {onion}), onion (chopped, on [cutting board]), knife
-    :parameters (?onion - onion)
+    :parameters (?onion - physical-object)
     :precondition (and
+      (type_onion ?onion)
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
       (lane ?onion onion_on_cutting_board_peeled onion_chopped_on_cutting_board)
@@ -133,8 +138,10 @@
   (:action pick-and-place_u50
     ; unit 50: pick-and-place from 06-tomato_soup.foon:42, 07-guacamole.foon:156, 08-greek_salad.foon:28
     ; pick-and-place: cutting board (empty), tomato (whole) -> cutting board (contains {tomato}), tomato (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?tomato - tomato)
+    :parameters (?cutting_board - physical-object ?tomato - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_tomato ?tomato)
       (together ?cutting_board ?tomato)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_tomato)
@@ -153,8 +160,9 @@
   (:action chop_u51
     ; unit 51: chop from 06-tomato_soup.foon:53, 07-guacamole.foon:167, 08-greek_salad.foon:39
     ; chop: cutting board (contains {tomato}), tomato (on [cutting board], whole), knife -> cutting board (contains {tomato}), tomato (chopped, on [cutting board]), knife
-    :parameters (?tomato - tomato)
+    :parameters (?tomato - physical-object)
     :precondition (and
+      (type_tomato ?tomato)
       (occupied cutting_board_contains_tomato)
       (is ?tomato tomato_on_cutting_board_whole)
       (lane ?tomato tomato_on_cutting_board_whole tomato_chopped_on_cutting_board)
@@ -169,8 +177,10 @@
   (:action pick-and-place_u71
     ; unit 71: pick-and-place from 07-guacamole.foon:144
     ; pick-and-place: bowl (contains {avocado, lime juice}), onion (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion}), onion (chopped, in [bowl])
-    :parameters (?bowl - bowl ?onion - onion)
+    :parameters (?bowl - physical-object ?onion - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_onion ?onion)
       (together ?bowl ?onion)
       (is ?bowl bowl_contains_avocado_lime_juice)
       (lane ?bowl bowl_contains_avocado_lime_juice bowl_contains_avocado_lime_juice_onion)
@@ -189,8 +199,10 @@
   (:action pick-and-place_u72
     ; unit 72: pick-and-place from 07-guacamole.foon:181
     ; pick-and-place: bowl (contains {avocado, lime juice, onion}), tomato (chopped, on [cutting board]) -> bowl (contains {avocado, lime juice, onion, tomato}), tomato (chopped, in [bowl])
-    :parameters (?bowl - bowl ?tomato - tomato)
+    :parameters (?bowl - physical-object ?tomato - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_tomato ?tomato)
       (together ?bowl ?tomato)
       (is ?bowl bowl_contains_avocado_lime_juice_onion)
       (lane ?bowl bowl_contains_avocado_lime_juice_onion bowl_contains_avocado_lime_juice_onion_tomato)
@@ -210,8 +222,10 @@
   (:action pick-and-place_u78
     ; unit 78: pick-and-place from 08-greek_salad.foon:3
     ; pick-and-place: cutting board (empty), cucumber (whole) -> cutting board (contains {cucumber}), cucumber (on [cutting board], whole)
-    :parameters (?cutting_board - cutting_board ?cucumber - cucumber)
+    :parameters (?cutting_board - physical-object ?cucumber - physical-object)
     :precondition (and
+      (type_cutting_board ?cutting_board)
+      (type_cucumber ?cucumber)
       (together ?cutting_board ?cucumber)
       (is ?cutting_board cutting_board_empty)
       (lane ?cutting_board cutting_board_empty cutting_board_contains_cucumber)
@@ -230,8 +244,9 @@
   (:action slice_u79
     ; unit 79: slice from 08-greek_salad.foon:14
     ; slice: cutting board (contains {cucumber}), cucumber (on [cutting board], whole), knife -> cutting board (contains {cucumber}), cucumber (on [cutting board], sliced), knife
-    :parameters (?cucumber - cucumber)
+    :parameters (?cucumber - physical-object)
     :precondition (and
+      (type_cucumber ?cucumber)
       (occupied cutting_board_contains_cucumber)
       (is ?cucumber cucumber_on_cutting_board_whole)
       (lane ?cucumber cucumber_on_cutting_board_whole cucumber_on_cutting_board_sliced)
@@ -246,8 +261,9 @@
   (:action slice_u80
     ; unit 80: slice from 08-greek_salad.foon:78
     ; slice: cutting board (contains {onion}), onion (on [cutting board], peeled), knife -> cutting board (contains {onion}), onion (on [cutting board], sliced), knife
-    :parameters (?onion - onion)
+    :parameters (?onion - physical-object)
     :precondition (and
+      (type_onion ?onion)
       (occupied cutting_board_contains_onion)
       (is ?onion onion_on_cutting_board_peeled)
       (lane ?onion onion_on_cutting_board_peeled onion_on_cutting_board_sliced)
@@ -262,8 +278,10 @@
   (:action pick-and-place_u81
     ; unit 81: pick-and-place from 08-greek_salad.foon:92
     ; pick-and-place: bowl (empty), cucumber (on [cutting board], sliced) -> bowl (contains {cucumber}), cucumber (in [bowl], sliced)
-    :parameters (?bowl - bowl ?cucumber - cucumber)
+    :parameters (?bowl - physical-object ?cucumber - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_cucumber ?cucumber)
       (together ?bowl ?cucumber)
       (is ?bowl bowl_empty)
       (lane ?bowl bowl_empty bowl_contains_cucumber)
@@ -282,8 +300,10 @@
   (:action pick-and-place_u82
     ; unit 82: pick-and-place from 08-greek_salad.foon:104
     ; pick-and-place: bowl (contains {cucumber}), tomato (chopped, on [cutting board]) -> bowl (contains {cucumber, tomato}), tomato (chopped, in [bowl])
-    :parameters (?bowl - bowl ?tomato - tomato)
+    :parameters (?bowl - physical-object ?tomato - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_tomato ?tomato)
       (together ?bowl ?tomato)
       (is ?bowl bowl_contains_cucumber)
       (lane ?bowl bowl_contains_cucumber bowl_contains_cucumber_tomato)
@@ -302,8 +322,10 @@
   (:action pick-and-place_u83
     ; unit 83: pick-and-place from 08-greek_salad.foon:116
     ; pick-and-place: bowl (contains {cucumber, tomato}), onion (on [cutting board], sliced) -> bowl (contains {cucumber, onion, tomato}), onion (in [bowl], sliced)
-    :parameters (?bowl - bowl ?onion - onion)
+    :parameters (?bowl - physical-object ?onion - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_onion ?onion)
       (together ?bowl ?onion)
       (is ?bowl bowl_contains_cucumber_tomato)
       (lane ?bowl bowl_contains_cucumber_tomato bowl_contains_cucumber_onion_tomato)
@@ -322,8 +344,10 @@
   (:action pick-and-place_u84
     ; unit 84: pick-and-place from 08-greek_salad.foon:128
     ; pick-and-place: bowl (contains {cucumber, onion, tomato}), black olive (pitted) -> bowl (contains {black olive, cucumber, onion, tomato}), black olive (in [bowl], pitted)
-    :parameters (?bowl - bowl ?black_olive - black_olive)
+    :parameters (?bowl - physical-object ?black_olive - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_black_olive ?black_olive)
       (together ?bowl ?black_olive)
       (is ?bowl bowl_contains_cucumber_onion_tomato)
       (lane ?bowl bowl_contains_cucumber_onion_tomato bowl_contains_black_olive_cucumber_onion_tomato)
@@ -342,8 +366,10 @@
   (:action sprinkle_u85
     ; unit 85: sprinkle from 08-greek_salad.foon:139
     ; sprinkle: bowl (contains {black olive, cucumber, onion, tomato}), feta cheese (crumbled) -> bowl (contains {black olive, cucumber, feta cheese, onion, tomato}), feta cheese (crumbled, in [bowl])
-    :parameters (?bowl - bowl ?feta_cheese - feta_cheese)
+    :parameters (?bowl - physical-object ?feta_cheese - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_feta_cheese ?feta_cheese)
       (together ?bowl ?feta_cheese)
       (is ?bowl bowl_contains_black_olive_cucumber_onion_tomato)
       (lane ?bowl bowl_contains_black_olive_cucumber_onion_tomato bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
@@ -362,8 +388,11 @@
   (:action pour_u86
     ; unit 86: pour* from 08-greek_salad.foon:150
     ; pour: bowl (contains {black olive, cucumber, feta cheese, onion, tomato}), olive oil (in [bottle]), red wine vinegar (in [bottle]) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), olive...
-    :parameters (?bowl - bowl ?olive_oil - olive_oil ?red_wine_vinegar - red_wine_vinegar)
+    :parameters (?bowl - physical-object ?olive_oil - physical-object ?red_wine_vinegar - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_olive_oil ?olive_oil)
+      (type_red_wine_vinegar ?red_wine_vinegar)
       (together ?bowl ?olive_oil)
       (together ?olive_oil ?red_wine_vinegar)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_onion_tomato)
@@ -388,8 +417,10 @@
   (:action sprinkle_u87
     ; unit 87: sprinkle from 08-greek_salad.foon:164
     ; sprinkle: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, red wine vinegar, tomato}), oregano (dried) -> bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), ore...
-    :parameters (?bowl - bowl ?oregano - oregano)
+    :parameters (?bowl - physical-object ?oregano - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_oregano ?oregano)
       (together ?bowl ?oregano)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4)
       (lane ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_red_win__cb6a28c4 bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
@@ -408,8 +439,10 @@
   (:action toss_u88
     ; unit 88: toss from 08-greek_salad.foon:174
     ; toss: bowl (contains {black olive, cucumber, feta cheese, olive oil, onion, oregano, red wine vinegar, tomato}), cucumber (in [bowl], sliced), tomato (chopped, in [bowl]), onion (in [bowl], sliced), black olive (in [bowl], pitted), feta ...
-    :parameters (?bowl - bowl ?greek_salad - greek_salad)
+    :parameters (?bowl - physical-object ?greek_salad - physical-object)
     :precondition (and
+      (type_bowl ?bowl)
+      (type_greek_salad ?greek_salad)
       (together ?bowl ?greek_salad)
       (is ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6)
       (lane ?bowl bowl_contains_black_olive_cucumber_feta_cheese_olive_oil_onion_oregano__c6f423c6 bowl_contains_greek_salad)

@@ -1,10 +1,14 @@
 """The `instances` encoding: physical object instances whose states change.
 
-* **Types.** One PDDL type per object label (`bowl`), under its category chain
-  when one is given (`EncodeOptions.categories`, e.g. `lemon - citrus_fruits -
-  fruit`), under `physical-object`. Categories only group types: an action's
-  parameter has its label's type, so a lemon never stands in for a lime.
-* **Instances.** `bowl_1 ... bowl_k`, typed `bowl`, with counts from
+* **Types.** Flat: `physical-object` and `object-state` (UP's FLAT_TYPING, the
+  only typing Tamer reads: a label type under `physical-object` as the argument
+  of `(is ?x - physical-object ...)` is a TypeCheckingError there). An object's
+  label (`bowl`), and its category chain when one is given
+  (`EncodeOptions.categories`, e.g. `lemon - citrus_fruits - fruit`), are static
+  unary predicates (`(type_bowl bowl_1)`, `untyped.flat_typed`), and a role's
+  parameter requires its label's (`(type_lemon ?lemon)`), so a lemon never stands
+  in for a lime; categories only group.
+* **Instances.** `bowl_1 ... bowl_k`, of label `bowl`, with counts from
   `instance_counts` (derived per goal, stated by the kitchen, or overridden).
 * **State.** Every FOON node of a label is a domain constant of type
   `object-state`; `(is ?x ?s)` says instance `?x` is in the state of node `?s`,
@@ -69,6 +73,7 @@ from .names import NameTable
 from .pairing import unit_roles
 from .prune import restoring_units
 from .task import Action, Atom, Instance, PlanningTask, Predicate
+from .untyped import flat_typed
 
 IS = "is"
 OCCUPIED = "occupied"
@@ -185,7 +190,7 @@ def encode_instances(
                                     "static: ?x's path in the unfolded plan goes from state ?s to ?t (or is in ?s=?t)"))
         predicates.append(Predicate(TOGETHER, (("?a", ROOT_TYPE), ("?b", ROOT_TYPE)),
                                     "static: ?a and ?b change state in one firing of the unfolded plan"))
-    return PlanningTask(
+    return flat_typed(PlanningTask(
         domain="foon-instances",
         problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="instances",
@@ -203,7 +208,7 @@ def encode_instances(
         + tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen))
         + (("lanes: each instance changes state only as in the unfolded plan",) if lane is not None else ()),
         instances=tuple(instances),
-    )
+    ))
 
 
 def _instances(table: NameTable, counts: InstanceCounts,

@@ -91,14 +91,21 @@ def build_up(task: PlanningTask) -> UpTask:
     object_names = [_unique(name, used) for name, _ in typed_objects]
 
     declared = dict(task.types)
-    needed = {"object"} | {t for _, t in typed_objects} | set(declared) | set(declared.values())
-    needed |= {t for p in task.predicates for _, t in p.params} | {t for a in task.actions for _, t in a.params}
+    used_types = {t for _, t in typed_objects} | {t for p in task.predicates for _, t in p.params}
+    used_types |= {t for a in task.actions for _, t in (*a.params, *((c.var, c.type) for c in a.conditional
+                                                                     if c.var is not None))}
+    # `object` is PDDL's implicit root: a type declared under it has no father unless `object` itself
+    # types something (as UP's PDDL reader does), so flat typing stays flat (Tamer reads only that)
+    root = "object" in used_types or not task.uses_types
+    needed = used_types | set(declared) | {t for t in declared.values() if t != "object" or root}
+    needed |= {"object"} if root else set()
     types: dict[str, Any] = {}
 
     def up_type(name: str) -> Any:
         if name not in types:
             parent = declared.get(name)
-            father = up_type(parent) if parent and parent != name and name != "object" else None
+            father = up_type(parent) if parent and parent != name and name != "object" and parent in needed \
+                else None
             types[name] = UserType(_unique(name, used), father)
         return types[name]
 

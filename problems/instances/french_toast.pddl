@@ -3,24 +3,25 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 1, milk 1, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_french_toast)
-  (:domain foon-instances-e44264a9)
+  (:domain foon-instances-9f85c715)
   (:objects
-    bowl_1 - bowl
-    bread_1 - bread
-    butter_1 - butter
-    cinnamon_1 - cinnamon
-    custard_1 - custard
-    egg_1 - egg
-    fork_1 - fork
-    french_toast_1 - french_toast
-    frying_pan_1 - frying_pan
-    maple_syrup_1 - maple_syrup
-    milk_1 - milk
-    plate_1 - plate
-    spatula_1 - spatula
-    stove_1 - stove
-    vanilla_extract_1 - vanilla_extract
+    bowl_1 - physical-object
+    bread_1 - physical-object
+    butter_1 - physical-object
+    cinnamon_1 - physical-object
+    custard_1 - physical-object
+    egg_1 - physical-object
+    fork_1 - physical-object
+    french_toast_1 - physical-object
+    frying_pan_1 - physical-object
+    maple_syrup_1 - physical-object
+    milk_1 - physical-object
+    plate_1 - physical-object
+    spatula_1 - physical-object
+    stove_1 - physical-object
+    vanilla_extract_1 - physical-object
   )
   (:init
     (is bowl_1 bowl_empty)
@@ -127,6 +128,21 @@
     (together plate_1 maple_syrup_1)
     (together vanilla_extract_1 bowl_1)
     (together vanilla_extract_1 cinnamon_1)
+    (type_bowl bowl_1)
+    (type_bread bread_1)
+    (type_butter butter_1)
+    (type_cinnamon cinnamon_1)
+    (type_custard custard_1)
+    (type_egg egg_1)
+    (type_fork fork_1)
+    (type_french_toast french_toast_1)
+    (type_frying_pan frying_pan_1)
+    (type_maple_syrup maple_syrup_1)
+    (type_milk milk_1)
+    (type_plate plate_1)
+    (type_spatula spatula_1)
+    (type_stove stove_1)
+    (type_vanilla_extract vanilla_extract_1)
   )
   (:goal (and
     (goal-reached)

@@ -4,27 +4,28 @@
 ; instances: 18 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 1, honey 1, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_fruit_salad)
-  (:domain foon-instances-5f7b7b26)
+  (:domain foon-instances-88940453)
   (:objects
-    banana_1 - banana
-    bowl_1 - bowl
-    cutting_board_1 - cutting_board
-    cutting_board_2 - cutting_board
-    cutting_board_3 - cutting_board
-    fruit_salad_1 - fruit_salad
-    heavy_cream_1 - heavy_cream
-    honey_1 - honey
-    juicer_1 - juicer
-    knife_1 - knife
-    lime_1 - lime
-    lime_juice_1 - lime_juice
-    mixing_bowl_1 - mixing_bowl
-    spoon_1 - spoon
-    strawberry_1 - strawberry
-    sugar_1 - sugar
-    whipped_cream_1 - whipped_cream
-    whisk_1 - whisk
+    banana_1 - physical-object
+    bowl_1 - physical-object
+    cutting_board_1 - physical-object
+    cutting_board_2 - physical-object
+    cutting_board_3 - physical-object
+    fruit_salad_1 - physical-object
+    heavy_cream_1 - physical-object
+    honey_1 - physical-object
+    juicer_1 - physical-object
+    knife_1 - physical-object
+    lime_1 - physical-object
+    lime_juice_1 - physical-object
+    mixing_bowl_1 - physical-object
+    spoon_1 - physical-object
+    strawberry_1 - physical-object
+    sugar_1 - physical-object
+    whipped_cream_1 - physical-object
+    whisk_1 - physical-object
   )
   (:init
     (is banana_1 banana_whole)
@@ -159,6 +160,24 @@
     (together whipped_cream_1 bowl_1)
     (together whipped_cream_1 fruit_salad_1)
     (together whipped_cream_1 mixing_bowl_1)
+    (type_banana banana_1)
+    (type_bowl bowl_1)
+    (type_cutting_board cutting_board_1)
+    (type_cutting_board cutting_board_2)
+    (type_cutting_board cutting_board_3)
+    (type_fruit_salad fruit_salad_1)
+    (type_heavy_cream heavy_cream_1)
+    (type_honey honey_1)
+    (type_juicer juicer_1)
+    (type_knife knife_1)
+    (type_lime lime_1)
+    (type_lime_juice lime_juice_1)
+    (type_mixing_bowl mixing_bowl_1)
+    (type_spoon spoon_1)
+    (type_strawberry strawberry_1)
+    (type_sugar sugar_1)
+    (type_whipped_cream whipped_cream_1)
+    (type_whisk whisk_1)
   )
   (:goal (and
     (goal-reached)

@@ -4,24 +4,25 @@
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
 ; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3 takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_greek_salad)
-  (:domain foon-instances-df88af15)
+  (:domain foon-instances-fe3e4f62)
   (:objects
-    black_olive_1 - black_olive
-    bowl_1 - bowl
-    cucumber_1 - cucumber
-    cutting_board_1 - cutting_board
-    cutting_board_2 - cutting_board
-    cutting_board_3 - cutting_board
-    feta_cheese_1 - feta_cheese
-    greek_salad_1 - greek_salad
-    knife_1 - knife
-    olive_oil_1 - olive_oil
-    onion_1 - onion
-    oregano_1 - oregano
-    red_wine_vinegar_1 - red_wine_vinegar
-    salad_tongs_1 - salad_tongs
-    tomato_1 - tomato
+    black_olive_1 - physical-object
+    bowl_1 - physical-object
+    cucumber_1 - physical-object
+    cutting_board_1 - physical-object
+    cutting_board_2 - physical-object
+    cutting_board_3 - physical-object
+    feta_cheese_1 - physical-object
+    greek_salad_1 - physical-object
+    knife_1 - physical-object
+    olive_oil_1 - physical-object
+    onion_1 - physical-object
+    oregano_1 - physical-object
+    red_wine_vinegar_1 - physical-object
+    salad_tongs_1 - physical-object
+    tomato_1 - physical-object
   )
   (:init
     (is black_olive_1 black_olive_pitted)
@@ -135,6 +136,21 @@
     (together red_wine_vinegar_1 olive_oil_1)
     (together tomato_1 bowl_1)
     (together tomato_1 cutting_board_3)
+    (type_black_olive black_olive_1)
+    (type_bowl bowl_1)
+    (type_cucumber cucumber_1)
+    (type_cutting_board cutting_board_1)
+    (type_cutting_board cutting_board_2)
+    (type_cutting_board cutting_board_3)
+    (type_feta_cheese feta_cheese_1)
+    (type_greek_salad greek_salad_1)
+    (type_knife knife_1)
+    (type_olive_oil olive_oil_1)
+    (type_onion onion_1)
+    (type_oregano oregano_1)
+    (type_red_wine_vinegar red_wine_vinegar_1)
+    (type_salad_tongs salad_tongs_1)
+    (type_tomato tomato_1)
   )
   (:goal (and
     (goal-reached)

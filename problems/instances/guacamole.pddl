@@ -4,27 +4,28 @@
 ; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
 ; objects: 5 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3, pick-and-place at 07-guacamole.foon:52 (+1 more) takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_guacamole)
-  (:domain foon-instances-4a97a0d3)
+  (:domain foon-instances-e59cb521)
   (:objects
-    avocado_1 - avocado
-    bowl_1 - bowl
-    cilantro_1 - cilantro
-    cutting_board_1 - cutting_board
-    cutting_board_2 - cutting_board
-    cutting_board_3 - cutting_board
-    cutting_board_4 - cutting_board
-    cutting_board_5 - cutting_board
-    fork_1 - fork
-    guacamole_1 - guacamole
-    juicer_1 - juicer
-    knife_1 - knife
-    lime_1 - lime
-    lime_juice_1 - lime_juice
-    onion_1 - onion
-    salt_1 - salt
-    spoon_1 - spoon
-    tomato_1 - tomato
+    avocado_1 - physical-object
+    bowl_1 - physical-object
+    cilantro_1 - physical-object
+    cutting_board_1 - physical-object
+    cutting_board_2 - physical-object
+    cutting_board_3 - physical-object
+    cutting_board_4 - physical-object
+    cutting_board_5 - physical-object
+    fork_1 - physical-object
+    guacamole_1 - physical-object
+    juicer_1 - physical-object
+    knife_1 - physical-object
+    lime_1 - physical-object
+    lime_juice_1 - physical-object
+    onion_1 - physical-object
+    salt_1 - physical-object
+    spoon_1 - physical-object
+    tomato_1 - physical-object
   )
   (:init
     (is avocado_1 avocado_whole)
@@ -162,6 +163,24 @@
     (together salt_1 bowl_1)
     (together tomato_1 bowl_1)
     (together tomato_1 cutting_board_5)
+    (type_avocado avocado_1)
+    (type_bowl bowl_1)
+    (type_cilantro cilantro_1)
+    (type_cutting_board cutting_board_1)
+    (type_cutting_board cutting_board_2)
+    (type_cutting_board cutting_board_3)
+    (type_cutting_board cutting_board_4)
+    (type_cutting_board cutting_board_5)
+    (type_fork fork_1)
+    (type_guacamole guacamole_1)
+    (type_juicer juicer_1)
+    (type_knife knife_1)
+    (type_lime lime_1)
+    (type_lime_juice lime_juice_1)
+    (type_onion onion_1)
+    (type_salt salt_1)
+    (type_spoon spoon_1)
+    (type_tomato tomato_1)
   )
   (:goal (and
     (goal-reached)

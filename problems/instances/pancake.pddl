@@ -3,26 +3,27 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 17 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_pancake)
-  (:domain foon-instances-4dae660d)
+  (:domain foon-instances-0b67f835)
   (:objects
-    baking_powder_1 - baking_powder
-    butter_1 - butter
-    egg_1 - egg
-    flour_1 - flour
-    frying_pan_1 - frying_pan
-    ladle_1 - ladle
-    maple_syrup_1 - maple_syrup
-    milk_1 - milk
-    mixing_bowl_1 - mixing_bowl
-    pancake_1 - pancake
-    pancake_batter_1 - pancake_batter
-    plate_1 - plate
-    salt_1 - salt
-    spatula_1 - spatula
-    stove_1 - stove
-    sugar_1 - sugar
-    whisk_1 - whisk
+    baking_powder_1 - physical-object
+    butter_1 - physical-object
+    egg_1 - physical-object
+    flour_1 - physical-object
+    frying_pan_1 - physical-object
+    ladle_1 - physical-object
+    maple_syrup_1 - physical-object
+    milk_1 - physical-object
+    mixing_bowl_1 - physical-object
+    pancake_1 - physical-object
+    pancake_batter_1 - physical-object
+    plate_1 - physical-object
+    salt_1 - physical-object
+    spatula_1 - physical-object
+    stove_1 - physical-object
+    sugar_1 - physical-object
+    whisk_1 - physical-object
   )
   (:init
     (is baking_powder_1 baking_powder_powder)
@@ -146,6 +147,23 @@
     (together sugar_1 baking_powder_1)
     (together sugar_1 mixing_bowl_1)
     (together sugar_1 salt_1)
+    (type_baking_powder baking_powder_1)
+    (type_butter butter_1)
+    (type_egg egg_1)
+    (type_flour flour_1)
+    (type_frying_pan frying_pan_1)
+    (type_ladle ladle_1)
+    (type_maple_syrup maple_syrup_1)
+    (type_milk milk_1)
+    (type_mixing_bowl mixing_bowl_1)
+    (type_pancake pancake_1)
+    (type_pancake_batter pancake_batter_1)
+    (type_plate plate_1)
+    (type_salt salt_1)
+    (type_spatula spatula_1)
+    (type_stove stove_1)
+    (type_sugar sugar_1)
+    (type_whisk whisk_1)
   )
   (:goal (and
     (goal-reached)

@@ -3,23 +3,24 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_scrambled_eggs)
-  (:domain foon-instances-dce879d1)
+  (:domain foon-instances-7b7ae683)
   (:objects
-    black_pepper_1 - black_pepper
-    bowl_1 - bowl
-    butter_1 - butter
-    egg_1 - egg
-    egg_mixture_1 - egg_mixture
-    fork_1 - fork
-    frying_pan_1 - frying_pan
-    milk_1 - milk
-    plate_1 - plate
-    salt_1 - salt
-    scrambled_eggs_1 - scrambled_eggs
-    spatula_1 - spatula
-    stove_1 - stove
-    whisk_1 - whisk
+    black_pepper_1 - physical-object
+    bowl_1 - physical-object
+    butter_1 - physical-object
+    egg_1 - physical-object
+    egg_mixture_1 - physical-object
+    fork_1 - physical-object
+    frying_pan_1 - physical-object
+    milk_1 - physical-object
+    plate_1 - physical-object
+    salt_1 - physical-object
+    scrambled_eggs_1 - physical-object
+    spatula_1 - physical-object
+    stove_1 - physical-object
+    whisk_1 - physical-object
   )
   (:init
     (is black_pepper_1 black_pepper_ground)
@@ -113,6 +114,20 @@
     (together salt_1 bowl_1)
     (together scrambled_eggs_1 frying_pan_1)
     (together scrambled_eggs_1 plate_1)
+    (type_black_pepper black_pepper_1)
+    (type_bowl bowl_1)
+    (type_butter butter_1)
+    (type_egg egg_1)
+    (type_egg_mixture egg_mixture_1)
+    (type_fork fork_1)
+    (type_frying_pan frying_pan_1)
+    (type_milk milk_1)
+    (type_plate plate_1)
+    (type_salt salt_1)
+    (type_scrambled_eggs scrambled_eggs_1)
+    (type_spatula spatula_1)
+    (type_stove stove_1)
+    (type_whisk whisk_1)
   )
   (:goal (and
     (goal-reached)

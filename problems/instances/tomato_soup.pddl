@@ -4,24 +4,25 @@
 ; instances: 15 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
 ; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_tomato_soup)
-  (:domain foon-instances-e9a37ed8)
+  (:domain foon-instances-197ad87f)
   (:objects
-    basil_1 - basil
-    bowl_1 - bowl
-    cutting_board_1 - cutting_board
-    cutting_board_2 - cutting_board
-    immersion_blender_1 - immersion_blender
-    knife_1 - knife
-    ladle_1 - ladle
-    olive_oil_1 - olive_oil
-    onion_1 - onion
-    pot_1 - pot
-    stove_1 - stove
-    tomato_1 - tomato
-    tomato_soup_1 - tomato_soup
-    vegetable_broth_1 - vegetable_broth
-    wooden_spoon_1 - wooden_spoon
+    basil_1 - physical-object
+    bowl_1 - physical-object
+    cutting_board_1 - physical-object
+    cutting_board_2 - physical-object
+    immersion_blender_1 - physical-object
+    knife_1 - physical-object
+    ladle_1 - physical-object
+    olive_oil_1 - physical-object
+    onion_1 - physical-object
+    pot_1 - physical-object
+    stove_1 - physical-object
+    tomato_1 - physical-object
+    tomato_soup_1 - physical-object
+    vegetable_broth_1 - physical-object
+    wooden_spoon_1 - physical-object
   )
   (:init
     (is basil_1 basil_fresh)
@@ -130,6 +131,21 @@
     (together tomato_soup_1 bowl_1)
     (together tomato_soup_1 pot_1)
     (together vegetable_broth_1 pot_1)
+    (type_basil basil_1)
+    (type_bowl bowl_1)
+    (type_cutting_board cutting_board_1)
+    (type_cutting_board cutting_board_2)
+    (type_immersion_blender immersion_blender_1)
+    (type_knife knife_1)
+    (type_ladle ladle_1)
+    (type_olive_oil olive_oil_1)
+    (type_onion onion_1)
+    (type_pot pot_1)
+    (type_stove stove_1)
+    (type_tomato tomato_1)
+    (type_tomato_soup tomato_soup_1)
+    (type_vegetable_broth vegetable_broth_1)
+    (type_wooden_spoon wooden_spoon_1)
   )
   (:goal (and
     (goal-reached)

@@ -3,16 +3,17 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 7 (bowl 1, heavy cream 1, mixing bowl 1, spatula 1, sugar 1, whipped cream 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
+; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_whipped_cream)
-  (:domain foon-instances-fb378d59)
+  (:domain foon-instances-5a49eecd)
   (:objects
-    bowl_1 - bowl
-    heavy_cream_1 - heavy_cream
-    mixing_bowl_1 - mixing_bowl
-    spatula_1 - spatula
-    sugar_1 - sugar
-    whipped_cream_1 - whipped_cream
-    whisk_1 - whisk
+    bowl_1 - physical-object
+    heavy_cream_1 - physical-object
+    mixing_bowl_1 - physical-object
+    spatula_1 - physical-object
+    sugar_1 - physical-object
+    whipped_cream_1 - physical-object
+    whisk_1 - physical-object
   )
   (:init
     (is bowl_1 bowl_empty)
@@ -54,6 +55,13 @@
     (together sugar_1 mixing_bowl_1)
     (together whipped_cream_1 bowl_1)
     (together whipped_cream_1 mixing_bowl_1)
+    (type_bowl bowl_1)
+    (type_heavy_cream heavy_cream_1)
+    (type_mixing_bowl mixing_bowl_1)
+    (type_spatula spatula_1)
+    (type_sugar sugar_1)
+    (type_whipped_cream whipped_cream_1)
+    (type_whisk whisk_1)
   )
   (:goal (and
     (goal-reached)
