@@ -599,3 +599,18 @@ def test_what_a_glass_drops_goes_into_the_drink_beside_an_object_of_its_label_fr
     squeeze = FunctionalUnit((glass, n("lemon", "halved")), Motion("squeeze"), (n("glass", contains("drink")), drink))
     outcome = _solve([roll, squeeze], [n("glass", "empty"), n("lemon", "halved")], drink)
     assert all(s.consumed for o, s in outcome.trace.final.items() if o.startswith("lemon"))
+
+
+def test_an_ingredient_listed_only_as_input_goes_into_the_container_that_newly_lists_it():
+    # chocolate cake: `bowl (contains {cocoa powder})`, `bowl (contains {flour, sugar})` and `cocoa powder (in
+    # [bowl])` in, only `bowl (contains {cocoa powder, flour, sugar})` out: the cocoa goes into the flour's bowl, although its
+    # implied node `cocoa powder (in [bowl])` is the one it had
+    cocoa_bowl, cocoa = n("bowl", contains("cocoa powder")), n("cocoa powder", inside("bowl"))
+    flour_bowl, both = n("bowl", contains("flour", "sugar")), n("bowl", contains("cocoa powder", "flour", "sugar"))
+    pour = FunctionalUnit((cocoa_bowl, flour_bowl, cocoa), Motion("pour"), (both,))
+    assert relational_roles(pour)[2].target.role == 1
+    mix = n("cake mix", inside("bowl"))
+    stir = FunctionalUnit((both, cocoa, n("whisk")), Motion("stir"), (n("bowl", contains("cake mix")), mix))
+    start = [cocoa_bowl, flour_bowl, cocoa, n("flour", inside("bowl")), n("sugar", inside("bowl")), n("whisk")]
+    outcome = _solve([pour, stir], start, mix)
+    assert outcome.trace.final["cake_mix_1"].holder == outcome.trace.steps[0].bindings[1].object

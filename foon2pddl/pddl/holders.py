@@ -246,7 +246,8 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         if src is not None and src.role is not None and any(
                 labels[j] == r.label and sources[j] == src for j in range(k)):
             src = Place(src.relation, src.holder)  # a list names a label once: the second is bound late (rule 2)
-        dst = _holder(labels, read_after, k, r.label, place_of(read_after[k]))
+        dst = (Place(Relation.IN, labels[implied[k]], implied[k]) if k in implied  # the role it moves into
+               else _holder(labels, read_after, k, r.label, place_of(read_after[k])))
         if r.before is None:
             result.append(RelRole(r, r.after, Fate.NEW, None, dst))
             continue
