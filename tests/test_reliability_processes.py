@@ -200,3 +200,17 @@ def test_sigterm_during_fd_translation_kills_the_translator(tmp_path):
     assert proc.returncode in (0, 143), err  # 0 when the plan was already done
     assert "Traceback" not in err
     assert running_with(str(tmp_path)) == [] and list(tmp_path.iterdir()) == []
+
+
+def test_a_planner_whose_caller_is_killed_ends_at_its_cpu_limit(tmp_path):
+    # a pool worker killed with SIGKILL cannot kill its planner: the run's CPU limit ends it
+    mark = f"busy_{uuid.uuid4().hex}"
+    child = f"{mark} = 1\nwhile True: pass"
+    caller = ("import sys; from pathlib import Path; from foon2pddl.planners.process import run_process; "
+              f"run_process([sys.executable, '-c', {child!r}], Path({str(tmp_path)!r}), timeout=3)")
+    proc = subprocess.Popen([sys.executable, "-c", caller], env=ENV)
+    assert _wait_for(lambda: bool(running_with(mark)))
+    proc.kill()
+    proc.wait()
+    assert running_with(mark), "the child ended with its caller: nothing was tested"
+    assert _wait_for(lambda: not running_with(mark), timeout=120)  # 2 x 3 + 1 s of CPU at most

@@ -7,7 +7,8 @@ to a pipe: memory stays bounded whatever it prints (`ProcessRun.output` keeps
 the head and the tail), and a daemon child that inherited the output cannot
 make us wait for it. When the run ends (exit, time limit or interrupt) its
 process group and every process carrying its mark (`cleanup.MARK`, inherited
-even across `setsid`) are killed.
+even across `setsid`) are killed; should the caller die before it can, a CPU
+limit (`CPU_LIMIT_FACTOR`) still ends a run that has a time limit.
 """
 
 from __future__ import annotations
@@ -32,6 +33,11 @@ HEAD_BYTES = 64 * 1024
 TAIL_BYTES = 256 * 1024
 #: Longer time limits (seconds, ~11 days) mean no limit: waits take them as C ints of milliseconds.
 MAX_TIMEOUT = 1e6
+#: A run with a time limit of t seconds may use at most CPU_LIMIT_FACTOR * t seconds of CPU (RLIMIT_CPU):
+#: never reached by a run the time limit ends (the planners use one core), it ends a planner whose caller
+#: was killed before it could kill the run (a pool worker sent SIGKILL left Fast Downward searching for
+#: 90 minutes past its 30 s limit).
+CPU_LIMIT_FACTOR = 2
 
 
 def cpu_seconds() -> float:
@@ -113,10 +119,12 @@ def run_process(
         with open(log, "wb") as out, open(stdin_path or os.devnull, "rb") as stdin:
             proc = subprocess.Popen(list(cmd), cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
                                     env=run_env, start_new_session=True)
-        if memory_limit_mb is not None:
-            limit = memory_limit_mb * 1024 * 1024
+        limits = [(resource.RLIMIT_AS, memory_limit_mb * 1024 * 1024)] if memory_limit_mb is not None else []
+        if timeout is not None:  # a backstop should this process die uncleaned (SIGKILL): see CPU_LIMIT_FACTOR
+            limits.append((resource.RLIMIT_CPU, math.ceil(CPU_LIMIT_FACTOR * timeout) + 1))
+        for kind, limit in limits:
             try:
-                resource.prlimit(proc.pid, resource.RLIMIT_AS, (limit, limit))
+                resource.prlimit(proc.pid, kind, (limit, limit))
             except (OSError, ValueError):
                 pass
         try:
