@@ -204,7 +204,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
-    # kitchen nodes the completion put where a kitchen holder says they are: the tree check's kitchen too
+    # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
+    # check's kitchen too
     moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 

@@ -62,9 +62,10 @@ class Compiled:
     replay: Replay | None = None
     view: TraceView | None = None
     holders: bool = False
-    #: nodes the encoding starts objects in that only place a kitchen node where a kitchen holder says it is
-    #: (`skillet (empty, on [stove])` for `skillet (empty)` and `stove (off, with [skillet])`): the kitchen
-    #: the tree is checked from includes them
+    #: nodes the encoding starts objects in that the kitchen's own nodes imply: a kitchen node where a kitchen
+    #: holder says it is (`skillet (empty, on [stove])` for `skillet (empty)` and `stove (off, with
+    #: [skillet])`), and a holder a kitchen node is in (`stove (on, with [pot])` under `pot (heated, on
+    #: [stove])`); the kitchen the tree is checked from includes them
     placed: frozenset[ObjectNode] = frozenset()
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:

@@ -92,8 +92,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
         if place is not None:
             key = (x.label, alias.get(place[1], place[1]))
             spare[key] = spare.get(key, 0) + 1
-    starts = {x.start for x in instances}
-    loose = {unplaced(n) for n in starts if n is not None}
+    starts = {x.start for x in instances if x.start is not None}
     for h in sorted(instances, key=lambda x: x.name):
         if h.start is None or h.label not in placed or not describes_contents(h.start):
             continue
@@ -101,8 +100,9 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             if spare.get((item, h.label), 0) > 0:
                 spare[(item, h.label)] -= 1
                 continue
-            known = sorted(fits.get((item, h.label), ()), key=lambda n: (
-                n not in starts, unplaced(n) not in loose, (h.start, n) not in paired, n))
+            found = fits.get((item, h.label), ())
+            moved = kitchen_placed(found, starts)
+            known = sorted(found, key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
     return tuple(out)
 

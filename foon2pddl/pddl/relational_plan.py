@@ -143,7 +143,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
             if _fills(src.holder, r.role.label, filled) or r.target is None:
                 late_empties = True  # whichever container holds it is emptied of it (it ends in no place)
-            elif r.target is not None:
+            else:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
         if fate is Fate.SPLITS:
             after, portion = None, r.after
