@@ -19,11 +19,14 @@ from __future__ import annotations
 
 import os
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
 _HELD = {signal.SIGINT, signal.SIGTERM}
+#: Seconds after which an interrupt raised where it could not propagate is sent again (`_redeliver`).
+REDELIVERY_DELAY = 0.05
 
 
 class Terminated(KeyboardInterrupt):
@@ -38,18 +41,35 @@ def _main_thread() -> bool:
     return threading.current_thread() is threading.main_thread()
 
 
+def _redeliver(unraisable) -> None:
+    """`sys.unraisablehook` while `sigterm_raises` is on: an interrupt raised inside a weak-reference callback
+    or a finalizer (the garbage collector ran one just as the signal came) cannot propagate; Python would print
+    it and lose it. It is sent again from another thread a moment later, so its handler runs once the callback
+    has returned (should it land in another callback, this repeats), and the command ends as for any interrupt."""
+    if isinstance(unraisable.exc_value, KeyboardInterrupt):
+        signum = signal.SIGTERM if isinstance(unraisable.exc_value, Terminated) else signal.SIGINT
+        again = threading.Timer(REDELIVERY_DELAY, os.kill, (os.getpid(), signum))
+        again.daemon = True
+        again.start()
+        return
+    sys.__unraisablehook__(unraisable)
+
+
 @contextmanager
 def sigterm_raises() -> Iterator[None]:
     """While inside, SIGINT raises KeyboardInterrupt and SIGTERM `Terminated` in the main thread
-    (the previous handlers are restored on the way out)."""
+    (the previous handlers are restored on the way out); one raised where it cannot propagate is sent again
+    (`_redeliver`)."""
     if not _main_thread():
         yield
         return
     previous = {signal.SIGINT: signal.signal(signal.SIGINT, signal.default_int_handler),
                 signal.SIGTERM: signal.signal(signal.SIGTERM, _raise_terminated)}
+    hook, sys.unraisablehook = sys.unraisablehook, _redeliver
     try:
         yield
     finally:
+        sys.unraisablehook = hook
         for signum, handler in previous.items():
             signal.signal(signum, handler)
 
