@@ -125,9 +125,9 @@ def _kill(pids: list[int]) -> None:
 def kill_marked(token: str, name: str = MARK, rounds: int = 5) -> None:
     """SIGKILL every process marked `name=token` (repeated: a dying process may have just forked).
 
-    Done only after two scans in a row find none: a process in the middle of `execve` (a daemon's
-    `setsid sleep` starting) can have an unreadable environment for an instant, and one empty scan
-    let it survive on a loaded machine.
+    Done only after two scans in a row, 5 ms apart, find none: a process in the middle of `execve` (a
+    daemon's `setsid sleep` starting) can have an unreadable environment for an instant, and one empty
+    scan (or two back to back) let it survive on a loaded machine.
     """
     empty = 0
     for _ in range(rounds + 1):
@@ -136,6 +136,7 @@ def kill_marked(token: str, name: str = MARK, rounds: int = 5) -> None:
             empty += 1
             if empty == 2:
                 return
+            time.sleep(0.005)  # the second scan a moment later: back to back, both fell in one execve
             continue
         empty = 0
         _kill(pids)
