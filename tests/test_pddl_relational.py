@@ -614,3 +614,21 @@ def test_an_ingredient_listed_only_as_input_goes_into_the_container_that_newly_l
     start = [cocoa_bowl, flour_bowl, cocoa, n("flour", inside("bowl")), n("sugar", inside("bowl")), n("whisk")]
     outcome = _solve([pour, stir], start, mix)
     assert outcome.trace.final["cake_mix_1"].holder == outcome.trace.steps[0].bindings[1].object
+
+
+def test_a_place_a_unit_names_by_another_objects_label_is_read_as_that_units_holder():
+    # protein shake: the pour leaves `strawberry (in [cup])` in the blender cup, in a task with a cup too;
+    # the blend that empties the blender cup's list into the shake consumes that strawberry
+    cup, yogurt = n("cup", contains("yogurt")), n("yogurt", inside("cup"))
+    blender_cup, with_yogurt = n("blender cup", "empty"), n("blender cup", contains("yogurt"))
+    pour_yogurt = FunctionalUnit((cup, yogurt, blender_cup), Motion("pour"),
+                                 (with_yogurt, n("yogurt", inside("blender cup"))))
+    bowl, berry = n("bowl", contains("strawberry")), n("strawberry", inside("bowl"))
+    both = n("blender cup", contains("strawberry", "yogurt"))
+    pour_berry = FunctionalUnit((with_yogurt, bowl, berry), Motion("pour"), (both, n("strawberry", inside("cup"))))
+    shake = n("shake", contains("strawberry", "yogurt"), inside("blender cup"))
+    blend = FunctionalUnit((both,), Motion("blend"), (n("blender cup", contains("shake")), shake))
+    outcome = _solve([pour_yogurt, pour_berry, blend], [cup, yogurt, blender_cup, bowl, berry], shake)
+    final = outcome.trace.final
+    berries = [o.id for o in outcome.trace.objects if o.label == "strawberry"]
+    assert [b for b in berries if final[b].consumed] and not [b for b in berries if final[b].holder == "blender_cup_1"]

@@ -195,6 +195,22 @@ def test_the_traces_own_aliases_are_read():
     assert not [d for d in aliased if d.objects[0] == "bowl_2" and d.step < 0]
 
 
+def test_a_node_is_read_through_the_aliases_of_the_step_that_set_it():
+    """`salt (in [dish])` from a pour whose unit reads `dish` as its bowl: placed, though no task-wide alias
+    says so; the same words from a step that does not read them so are misplaced."""
+    t = with_change(salsa_world().trace(), 1, ObjectState("salt_1", node("salt", ("in", "dish")), "bowl_1", "in"))
+
+    def misplaced(trace) -> list[int]:
+        return [d.step for d in replay(trace).disagreements if d.kind is K.MISPLACED]
+
+    assert misplaced(t) == [1]
+    steps = list(t.steps)
+    assert misplaced(replace(t, steps=tuple(replace(s, aliases=(("dish", "bowl"),)) if s.index == 1 else s
+                                            for s in steps))) == []
+    assert misplaced(replace(t, steps=tuple(replace(s, aliases=(("dish", "bowl"),)) if s.index == 0 else s
+                                            for s in steps))) == [1]
+
+
 def test_unbound_change():
     t = with_change(salsa_world().trace(), 0, ObjectState("bowl_2", contents("bowl", ["onion"])))
     d = next(d for d in replay(t).disagreements if d.kind is K.UNBOUND_CHANGE)

@@ -104,6 +104,10 @@ class TraceStep:
     bindings: tuple[Binding, ...]
     changes: tuple[ObjectState, ...]
     source: str = ""
+    #: (name, label): names this unit's own words use for one of its objects (`sandwich` for the step's
+    #: `club sandwich`), as the builder read them; a replay reads the nodes this step sets through them,
+    #: also where the name is another object's label elsewhere in the task
+    aliases: tuple[tuple[str, str], ...] = ()
 
     @property
     def objects(self) -> tuple[str, ...]:

@@ -66,7 +66,7 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from .holders import Fate, gained, list_gaps, mismatches, task_aliases
+from .holders import Fate, gained, list_gaps, mismatches, task_aliases, unit_aliases
 from .instance_counts import count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role
@@ -146,7 +146,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
     nodes.update(x.start for x in instances if x.start is not None)
-    ways = {u: flow_ways(plans[u], nodes, alias) for u in units}
+    readings = frozenset(pair for u in units for pair in unit_aliases(f.units[u]))
+    ways = {u: flow_ways(plans[u], nodes, alias, readings) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
     empties = relational_plan.every_late_empty({u: plans[u] for u in units}, nodes, alias)
     type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),

@@ -182,17 +182,20 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
 Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
 
 
-def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]) -> dict[int, list[Way]]:
+def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str],
+              readings: frozenset[tuple[str, str]] = frozenset()) -> dict[int, list[Way]]:
     """Per flow of the unit (by position): every node of its label (read through the task's `alias`: the
     measuring cup's `pepper` is the black pepper ground into it) placed in a container of the holder's label,
-    with the node it ends in (moved into the flow's target, or None: consumed)."""
+    or of a name some unit of the task reads as that label (`readings`, its units' `unit_aliases`:
+    `strawberry (in [cup])` poured into the blender cup, in a task that has a cup too), with the node it
+    ends in (moved into the flow's target, or None: consumed)."""
     out: dict[int, list[Way]] = {}
     labels = [s.rel.role.label for s in plan.slots]
     for i, flow in enumerate(plan.flows):
         ways = []
         for n in sorted(x for x in nodes if x.label == alias.get(flow.label, flow.label)):
             for rel, c in places(n)[:1]:
-                if alias.get(c, c) == labels[flow.holder]:
+                if alias.get(c, c) == labels[flow.holder] or (c, labels[flow.holder]) in readings:
                     ways.append((n, rel, moved_into(n, labels[flow.into]) if flow.into is not None else None))
         out[i] = ways
     return out

@@ -25,7 +25,7 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
-from .holders import relational_roles, task_aliases
+from .holders import relational_roles, task_aliases, unit_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
 from .task import Atom, PlanningTask, apply_action, type_closure
@@ -100,7 +100,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
                 after = now[x].node if now[x].node != was[x].node and not now[x].consumed else None
                 bindings.append(Binding(x, was[x].node if was[x].exists else None, after, role=x in args))
         changes = tuple(now[x] for x in sorted(now) if now[x] != was[x])
-        out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit)))
+        out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit), unit_aliases(unit)))
     start = _states(task, set(task.init), {})
     aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
     trace = PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances),

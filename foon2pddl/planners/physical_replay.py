@@ -59,6 +59,9 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   the microwave while the salmon sits in bowl_2), unless the task reports that pair as one
   FOON's words contradict (`trace.gaps`: the unit's only bowl lists its contents without the onion).
 
+FOON's names are read through the trace's aliases (`salad` for `carrot salad`), and a node a step sets also
+through that step's own (`TraceStep.aliases`: the club sandwich's `toothpick (in [sandwich])`).
+
 A state disagreement is reported at the state where it arises and not again while it
 persists (`ReplayReport.affected_steps` still counts every step after which one holds).
 Order: by step, then checks in the order above, objects by id. Time: O(steps x objects).
@@ -147,14 +150,14 @@ class _Replay:
         self.initial = {s.id: s for s in trace.initial}
         self.containers = container_labels(trace, aliases)
         self.gaps: dict[str, frozenset[str]] = {}  # container label -> content labels not checked in it
-        for c, x in trace.gaps:
-            c = aliases.get(c, c)
-            self.gaps[c] = self.gaps.get(c, frozenset()) | {aliases.get(x, x)}
+        for c, x in ((aliases.get(c, c), aliases.get(x, x)) for c, x in trace.gaps):
+            self.gaps[c] = self.gaps.get(c, frozenset()) | {x}
         self.absorbed: dict[str, frozenset[str]] = {}
         self.stale: dict[tuple[str, str], tuple[ObjectNode, int]] = {}  # (holder, label) -> (its node, step)
         self.found: list[Disagreement] = []
         self.active: set[tuple] = set()
         self.seen: set[str] = set()  # objects that have existed: with no node later, they are undescribed
+        self.read: dict[str | None, Mapping[str, str]] = {}  # object -> the aliases of the step that set its node
 
     def present(self, state: ObjectState) -> bool:
         """Physically there: existing, or made earlier and not consumed, with no FOON node any more."""
@@ -164,11 +167,16 @@ class _Replay:
         return ("consumed" if state.consumed else "described by no FOON node" if self.present(state)
                 else "not made yet")
 
-    def places(self, node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
-        return tuple((r, self.aliases.get(c, c)) for r, c in places(node))
+    def reading(self, oid: str | None) -> Mapping[str, str]:
+        """The names `oid`'s node is read through: the task's aliases, and those of the step that set it."""
+        own = self.read.get(oid)
+        return {**self.aliases, **own} if own else self.aliases
 
-    def listed(self, node: ObjectNode | None) -> frozenset[str]:
-        return frozenset(self.aliases.get(x, x) for x in listed(node))
+    def places(self, node: ObjectNode | None, oid: str | None = None) -> tuple[tuple[Relation, str], ...]:
+        return tuple((r, self.reading(oid).get(c, c)) for r, c in places(node))
+
+    def listed(self, node: ObjectNode | None, oid: str | None = None) -> frozenset[str]:
+        return frozenset(self.reading(oid).get(x, x) for x in listed(node))
 
     def stands_for(self, oid: str) -> frozenset[str]:
         return self.absorbed.get(oid, frozenset()) | {self.label[oid]}
@@ -194,13 +202,13 @@ class _Replay:
 
     def _placement(self, states: Mapping[str, ObjectState], oid: str, add) -> None:
         s = states[oid]
-        named = self.places(s.node)
+        named = self.places(s.node, oid)
         if s.holder is not None and not self.present(states[s.holder]):
             add(DisagreementKind.HOLDER_GONE, (oid, s.holder), f"{oid} is {s.relation} {s.holder}, which "
                 f"is {self.status(states[s.holder])}")
         if not named:
             first = self.initial[oid]
-            if s.holder is not None and not (s.holder == first.holder and not self.places(first.node)):
+            if s.holder is not None and not (s.holder == first.holder and not self.places(first.node, oid)):
                 add(DisagreementKind.UNEXPECTED_HOLDER, (oid, s.holder),
                     f"{oid} is {s.relation} {s.holder}, but its node {s.node.describe()!r} names no place")
             return
@@ -225,17 +233,17 @@ class _Replay:
         inside: dict[str, list[str]] = {}
         cover: dict[str, list[str]] = {}  # also undescribed objects: they still stand for what they are
         for oid, st in states.items():
-            if st.holder is not None and self.present(st) and (st.node is None or self.places(st.node)):
+            if st.holder is not None and self.present(st) and (st.node is None or self.places(st.node, oid)):
                 cover.setdefault(st.holder, []).append(oid)
                 if st.node is not None:
                     inside.setdefault(st.holder, []).append(oid)
         holders = [h for h in existing if self.label[h] in self.containers]
         claims: dict[str, list[str]] = {}
         for h in holders:
-            for x in self.listed(states[h].node):
+            for x in self.listed(states[h].node, h):
                 claims.setdefault(x, []).append(h)
         for h in holders:
-            node, items = states[h].node, self.listed(states[h].node)
+            node, items = states[h].node, self.listed(states[h].node, h)
             if not describes_contents(node):  # `cutting board (dirty)`: silent about what is on it
                 continue
             covered = frozenset().union(self.absorbed.get(h, frozenset()),
@@ -273,6 +281,9 @@ class _Replay:
         def add(kind: DisagreementKind, objects: tuple[str, ...], message: str) -> None:
             self.found.append(Disagreement(kind, k, objects, source, f"{motion}: {message}"))
 
+        for b in step.bindings:  # a node the step sets is the unit's words: read through its own aliases
+            if after[b.object].node not in (None, before[b.object].node):
+                self.read[b.object] = dict(step.aliases)
         for c in sorted(step.changes, key=lambda c: c.id):
             if c.id not in bound and c != before[c.id]:
                 add(DisagreementKind.UNBOUND_CHANGE, (c.id,), f"{c.id} changes, but the step does not use it")
@@ -296,7 +307,7 @@ class _Replay:
         for b in step.bindings:
             self._moves(b.object, b.before, before, after, bound, add)
             h = before[b.object].holder
-            if h is not None and after[b.object].holder != h and self.label[b.object] in self.listed(after[h].node):
+            if h is not None and after[b.object].holder != h and self.label[b.object] in self.listed(after[h].node, h):
                 self.stale[(h, self.label[b.object])] = (after[h].node, k)
         self._holders_bound(step, before, after, add)
         self._absorb(step, before, after)
@@ -306,9 +317,9 @@ class _Replay:
         if was.holder == now.holder:
             return
         first = self.initial[oid]
-        scene = was.holder == first.holder and not self.places(first.node)
+        scene = was.holder == first.holder and not self.places(first.node, oid)
         if was.holder is not None and not scene:
-            named = {c for _, c in self.places(node_before or was.node)}
+            named = {c for _, c in self.places(node_before or was.node, oid)}
             if self.label[was.holder] not in named:
                 add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
                     f"{oid} leaves {was.holder}, a {self.label[was.holder]} its input node does not name")
