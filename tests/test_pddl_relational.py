@@ -99,6 +99,29 @@ def test_a_list_names_an_object_by_its_head_noun():
     assert task_aliases([mix], ["salad bowl", "carrot salad", "salad"]) == ()
 
 
+def test_a_place_no_label_matches_is_the_one_role_listing_what_is_there():
+    # watermelon lemonade: poured `in [cup]`, while the unit's only receiver is the drinking glass that lists it
+    glass, pitcher = n("drinking glass", contains("water ice")), n("pitcher", contains("lemonade"))
+    pour = FunctionalUnit((glass, pitcher, n("lemonade", inside("pitcher"))), Motion("pour"),
+                          (n("drinking glass", contains("water ice", "lemonade")), n("lemonade", inside("cup"))))
+    assert unit_aliases(pour) == (("cup", "drinking glass"),)
+    assert mismatches(pour) == ("lemonade is in [cup], read as drinking glass",)
+    # french toast: `bread (in [pan])` in the skillet that lists it, the toast made `in [pan]` too
+    skillet = n("skillet", contains("bread"))
+    flip = FunctionalUnit((n("bread", inside("pan")), skillet), Motion("flip"), (n("french toast", inside("pan")),))
+    assert unit_aliases(flip) == (("pan", "skillet"),)
+    # no reading: the place is named only before the unit (the bulgur's bowl the pot already lists), a name
+    # an ingredient list uses too, or two roles list what is there
+    stir = FunctionalUnit((n("pot", contains("bulgur")), n("bulgur", inside("bowl"))), Motion("stir"),
+                          (n("pot", contains("kofta mix")),))
+    assert unit_aliases(stir) == ()
+    listed_too = FunctionalUnit(flip.inputs, flip.motion, (n("french toast", inside("pan"), contains("pan")),))
+    assert unit_aliases(listed_too) == ()
+    two = FunctionalUnit((n("bread", inside("pan")), skillet, n("wok", contains("bread"))), Motion("flip"),
+                         flip.outputs)
+    assert unit_aliases(two) == ()
+
+
 def test_contradicting_output_nodes_are_gaps():
     # FOON makes `salad` and `carrot salad` in the bowl, whose node lists only `salad`
     bowl = n("salad bowl", contains("salad"))

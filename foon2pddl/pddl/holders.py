@@ -154,17 +154,26 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     A name a `contains`/`with` list or an `in [C]`/`on [C]` place of the unit uses that is the label of no
     role of the unit, and that exactly one role's label matches by the head-noun rule (`_head_of`), means
     that role: `salad bowl (contains {salad})` beside `carrot salad (in [salad bowl])`, `oil (in [pan])` in a
-    unit whose pan is `cooking pan`. Sorted (name, label) pairs; O(n r) for n names and r roles.
+    unit whose pan is `cooking pan`. A name only places use (an output node's among them), matching no label
+    so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
+    drinking glass that lists the lemonade `in [cup]`; the skillet of `bread (in [pan])`). Sorted; O(n r^2).
     """
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
     names = {x for r in roles for n in (r.before, r.after) for x in (*listed(n), *(c for _, c in places(n)))}
-    out = []
+    out = {}
     for name in sorted(names - labels):
-        match = [lab for lab in sorted(labels) if _head_of(name, lab)]
-        if len(match) == 1:
-            out.append((name, match[0]))
-    return tuple(out)
+        if len(match := [lab for lab in sorted(labels) if _head_of(name, lab)]) == 1:
+            out[name] = match[0]
+    lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
+             for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
+    for name in sorted(names - labels - lists - set(out)):  # a place only: the one role listing what is there
+        takers, put = set(), set()
+        for side in [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]:
+            put = {r.label for n, r in side if name in (c for _, c in places(n))}
+            takers |= {r.label for n, r in side if r.label not in put and listed(n) & put}
+        out.update({name: takers.pop()} if len(takers) == 1 and put else {})  # `put`: some output node's place
+    return tuple(sorted(out.items()))
 
 
 def _aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None:
@@ -311,8 +320,8 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
 
 
 def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
-    """Names an output node newly lists that no role of the unit has: `bowl lists olive oil, read as green
-    olive oil` when rule 0 reads it as a role (`unit_aliases`), else `..., which no object of the unit is`."""
+    """Names an output node newly lists that no role has (`bowl lists olive oil, read as green olive oil` by
+    rule 0, else `..., which no object of the unit is`), or places by another: `oil is in [pan], read as ...`."""
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
     alias = dict(unit_aliases(unit))
@@ -323,6 +332,7 @@ def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
         new = listed(r.after) - (listed(r.before) if r.before is not None else frozenset())
         out += [f"{r.label} lists {x}, " + (f"read as {alias[x]}" if x in alias else "which no object of the unit is")
                 for x in sorted(new - labels)]
+        out += [f"{r.label} is {rel} [{c}], read as {alias[c]}" for rel, c in places(r.after) if c in alias]
     return tuple(dict.fromkeys(out))
 
 
