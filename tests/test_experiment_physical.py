@@ -160,8 +160,50 @@ def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(t
     relational = [r for r in summary.records if r.solver == "fd-relational"]
     assert relational and not [r for r in relational if r.status == CellStatus.ERROR]
     solved = [r for r in relational if r.solved]
-    assert solved and all(r.executable == Verdict.EXECUTABLE for r in solved)  # decoding replayed each plan
+    assert solved and all(r.executable in (Verdict.EXECUTABLE, Verdict.SHORT) for r in solved)  # each replayed
     data = ReportData(summary.records, config.networks, config.solvers, tuple(t.summary() for t in summary.trials))
     (row,) = physical.physical_planners(data)
-    assert (row.solver, row.solved, row.replayed) == ("fd-relational", len(solved), len(solved))
+    assert (row.solver, row.solved) == ("fd-relational", len(solved)) and row.replayed + row.more_objects == len(solved)
     assert row.mean_steps is not None and row.mean_units is not None
+
+
+def test_a_physical_plan_fits_the_kitchen_exactly_when_scheduling_its_tree_does(example):
+    """`drawn_by_plan` on the trace of a tree scheduled over an unlimited kitchen gives the verdict and words
+    `schedule` gives the same tree over one object per item (the same objects, bound in the same order)."""
+    import random
+
+    from foon2pddl.model.goal import Goal, spec_of_node
+    from foon2pddl.model.kitchen import default_kitchen
+    from foon2pddl.planners.executable import drawn_by_plan, needed
+    from foon2pddl.retrieval.api import retrieve
+
+    foon = example.foon
+    nodes = default_kitchen(foon).nodes
+    seen = set()
+    for node in random.Random(7).sample(sorted(foon.producers), 60):
+        tree = retrieve(foon, nodes, Goal(spec_of_node(node), (node,), foon.level), "complete").tree
+        unlimited = needed(tree, nodes) if tree is not None else None
+        if unlimited is None or not unlimited.ok:
+            continue
+        for per_item in (1, 2):
+            plan, tree_verdict = drawn_by_plan(unlimited.trace, nodes, per_item), schedule(tree, nodes, per_item=per_item)
+            assert (plan.verdict, plan.message) == (tree_verdict.verdict, tree_verdict.message), node.describe()
+            assert plan.drawn == unlimited.drawn
+            seen.add((per_item, plan.verdict))
+    assert {(1, Verdict.SHORT), (1, Verdict.EXECUTABLE), (2, Verdict.EXECUTABLE)} <= seen
+
+
+def test_fd_instances_plans_that_need_more_objects_say_how_many_and_where(tmp_path):
+    config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=40), networks=("reg",),
+                           solvers=("native-complete", "fd-instances"), out_dir=tmp_path)
+    summary = runner.run(config, progress=False)
+    plans = [r for r in summary.records if r.solver == "fd-instances" and r.solved]
+    assert plans and all(r.repeated is not None and r.plan_length >= r.units for r in plans)
+    short = [r for r in plans if r.executable == Verdict.SHORT]
+    assert short and len(short) < len(plans)  # the example kitchen has one cutting board; some plans take two
+    for r in short:
+        step, label = physical.failure_of(r.executable_reason)
+        assert r.extra_objects >= 1 and step >= 1 and f"one more {label} in " in r.executable_reason
+    data = ReportData(summary.records, config.networks, config.solvers, tuple(t.summary() for t in summary.trials))
+    (row,) = physical.physical_planners(data)
+    assert (row.solved, row.replayed, row.more_objects) == (len(plans), len(plans) - len(short), len(short))

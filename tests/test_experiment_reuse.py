@@ -21,6 +21,7 @@ from foon2pddl.model.goal import Goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.model.tasktree import validate
 from foon2pddl.planners import fd_reuse
+from foon2pddl.planners.sas import parse_sas
 from foon2pddl.planners.solve import GoalReplanner, plan
 
 INDEX = shipped_index()
@@ -122,3 +123,80 @@ def test_a_local_run_shares_a_private_cache_and_removes_it(tmp_path, monkeypatch
     from pathlib import Path
 
     assert not Path(seen[0]).exists()
+
+
+@pytest.mark.parametrize("seed", [4, 5])
+def test_one_translation_from_the_default_kitchen_serves_a_kitchen_within_it_as_its_own_would(example, seed):
+    """`for_kitchen` (every experiment trial on one translation): the task is the one compiled from the smaller
+    kitchen, the translation keeps the operators the translator keeps for it, and every goal gets the status
+    that planning it afresh (pruned per goal, its own translation) gives."""
+    foon = example.foon
+    whole = default_kitchen(foon)
+    base = GoalReplanner(foon, whole, kitchens=True)
+    kitchen = sample_kitchen(whole, 0.9, seed)
+    derived, own = base.for_kitchen(kitchen), GoalReplanner(foon, kitchen)
+    assert derived.task.init == own.task.init != base.task.init
+    assert derived.task.actions == own.task.actions
+    ops = derived.translated.sas.operators
+    assert len(ops) == len(own.translated.sas.operators) < len(base.translated.sas.operators)
+    assert sorted(o.split("\n")[1] for o in ops) == sorted(o.split("\n")[1] for o in own.translated.sas.operators)
+    atoms = {f for f in derived.translated.sas.facts if f.startswith("atom ")}
+    owned = {f for f in own.translated.sas.facts if f.startswith("atom ")}
+    assert atoms - owned == {fd_reuse.sas_fact_name(a) for a in own.task.init}  # kitchen atoms: not static here
+    statuses = set()
+    for goal in _goals(foon, 20, seed, kitchen):
+        reused, fresh = derived.plan(goal, time_limit=60), plan(foon, kitchen, goal, time_limit=60)
+        assert reused.status == fresh.status, goal.describe()
+        if reused.tree is not None:
+            assert validate(reused.tree, kitchen.nodes).ok
+        statuses.add(str(reused.status))
+    assert statuses == {"solved", "unsolvable"}
+
+
+def test_only_a_kitchen_within_the_translated_one_is_served(example):
+    from foon2pddl.model.kitchen import Kitchen
+
+    foon = example.foon
+    whole = default_kitchen(foon)
+    made = next(n for n in sorted(foon.producers) if n not in whole.nodes)
+    with pytest.raises(ValueError):
+        GoalReplanner(foon, whole, kitchens=True).for_kitchen(Kitchen(whole.nodes | {made}))
+    with pytest.raises(ValueError):  # not built to serve other kitchens
+        GoalReplanner(foon, whole).for_kitchen(sample_kitchen(whole, 0.5, 1))
+    with pytest.raises(ValueError):  # the lifted encoding's domain depends on the kitchen
+        GoalReplanner(foon, whole, "gen-lifted", category_index=INDEX, kitchens=True).for_kitchen(
+            sample_kitchen(whole, 0.5, 1))
+
+
+_SAS = ("begin_version\n3\nend_version\nbegin_metric\n0\nend_metric\n3\n"
+        "begin_variable\nvar0\n-1\n2\nAtom a()\nNegatedAtom a()\nend_variable\n"
+        "begin_variable\nvar1\n-1\n2\nAtom b()\nNegatedAtom b()\nend_variable\n"
+        f"begin_variable\nvar2\n-1\n2\nAtom {fd_reuse.ANCHOR}()\nNegatedAtom {fd_reuse.ANCHOR}()\nend_variable\n"
+        "0\nbegin_state\n0\n1\n1\nend_state\nbegin_goal\n1\n2 0\nend_goal\n3\n"
+        "begin_operator\nmake-b \n1\n0 0\n1\n0 1 -1 0\n1\nend_operator\n"
+        f"begin_operator\n{fd_reuse.ANCHOR} \n0\n1\n0 2 -1 0\n0\nend_operator\n"
+        f"begin_operator\n{fd_reuse.FORGET_OP}0 \n0\n1\n0 0 -1 1\n0\nend_operator\n0\n")
+
+
+def test_a_new_initial_state_drops_what_it_cannot_reach():
+    sas = parse_sas(_SAS, f"atom {fd_reuse.ANCHOR}()", (fd_reuse.ANCHOR, fd_reuse.FORGET_OP))
+    assert [o.split("\n")[1] for o in sas.operators] == ["make-b "]  # the anchor and forget operators go
+    kept = sas.at_init({"atom a()"})
+    assert kept.state == (0, 1, 1) and "begin_state\n0\n1\n1\nend_state\n" in kept.head and len(kept.operators) == 1
+    assert {"atom a()", "atom b()"} <= set(kept.facts)
+    bare = sas.at_init(set())
+    assert bare.state == (1, 1, 1) and bare.operators == ()
+    assert "atom a()" not in bare.facts and "atom b()" not in bare.facts  # goals on them: unsolvable, no search
+    assert bare.relevant([(1, 0)]) == []
+    with pytest.raises(ValueError):
+        sas.at_init({"atom c()"})  # a fact the translation does not have
+
+
+def test_a_goal_task_holds_only_the_variables_its_operators_and_goal_mention():
+    sas = parse_sas(_SAS, f"atom {fd_reuse.ANCHOR}()", (fd_reuse.ANCHOR, fd_reuse.FORGET_OP))
+    text = sas.task_text([(1, 0)], list(sas.operators), {0, 1})
+    assert text.count("begin_variable") == 2 and "begin_state\n0\n1\nend_state" in text
+    assert "begin_goal\n1\n1 0\nend_goal" in text and "1\n0 0\n1\n0 1 -1 0\n" in text
+    alone = sas.task_text([(1, 0)], [], set())  # var1 alone is renumbered 0
+    assert alone.count("begin_variable") == 1 and "begin_goal\n1\n0 0\nend_goal" in alone
+    assert "NegatedAtom b()" in alone and "Atom a()" not in alone and "begin_state\n1\nend_state" in alone

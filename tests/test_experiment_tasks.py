@@ -84,7 +84,8 @@ def _old_to_json(record: Record) -> str:
     data["solved"] = record.solved
     data["times"] = {k: round(v, 6) for k, v in sorted(record.times.items())}
     data["setup"] = round(record.setup, 6)
-    for name in ("bound", "gap", "worker", "time_limit", "executable", "executable_reason", "extra_objects"):
+    for name in ("bound", "gap", "worker", "time_limit", "executable", "executable_reason", "extra_objects",
+                 "repeated"):
         if data[name] is None:
             del data[name]
     if not record.params:
@@ -105,7 +106,8 @@ _opt_bool = st.none() | st.booleans()
     validated=_opt_bool, proven_optimal=_opt_bool, foon_valid=_opt_bool, bound=st.none() | _num,
     gap=st.none() | _num, params=st.dictionaries(_text, st.integers() | _num | _text, max_size=3),
     worker=st.none() | _text, time_limit=st.none() | _num, executable=st.none() | _text,
-    executable_reason=st.none() | _text, extra_objects=st.none() | st.integers(0, 100)))
+    executable_reason=st.none() | _text, extra_objects=st.none() | st.integers(0, 100),
+    repeated=st.none() | st.integers(0, 100)))
 def test_record_lines_are_byte_identical_to_the_asdict_format(record):
     line = record.to_json()
     assert line == _old_to_json(record)

@@ -16,6 +16,7 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.encode_lifted import encode_lifted
 from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd_reuse
+from foon2pddl.planners import sas as sas_text
 from foon2pddl.planners.solve import GoalReplanner
 from foon2pddl.retrieval.optimal import optimal
 
@@ -53,16 +54,16 @@ def test_relevance_keeps_exactly_the_operators_that_lead_to_the_goal():
     ops = ("begin_operator\na\n0\n1\n0 0 -1 1\n1\nend_operator\n",      # makes v0=1
            "begin_operator\nb\n1\n0 1\n1\n0 1 -1 1\n1\nend_operator\n",  # needs v0=1, makes v1=1
            "begin_operator\nc\n0\n1\n0 2 -1 1\n1\nend_operator\n")      # makes v2=1: irrelevant to v1
-    parsed = tuple(fd_reuse._parse_op(op) for op in ops)
+    parsed = tuple(sas_text.parse_op(op) for op in ops)
     makers = {}
     for k, op in enumerate(parsed):
         for f in op.makes:
             makers.setdefault(f, []).append(k)
-    sas = fd_reuse._Sas("", ops, "0\n", {}, (9, 0), parsed, {f: tuple(v) for f, v in makers.items()}, True)
+    sas = sas_text.Sas("", (), "0\n", (), ops, "0\n", {}, (9, 0), parsed, {f: tuple(v) for f, v in makers.items()}, True)
     assert sas.relevant([(1, 1)]) == [0, 1]
     assert sas.relevant([(2, 1)]) == [2]
     assert sas.relevant([(0, 1), (2, 1)]) == [0, 2]
-    conditional = fd_reuse._parse_op("begin_operator\nd\n0\n1\n1 3 0 0 -1 1\n1\nend_operator\n")
+    conditional = sas_text.parse_op("begin_operator\nd\n0\n1\n1 3 0 0 -1 1\n1\nend_operator\n")
     assert conditional.conditional and conditional.needs == ((3, 0),)
 
 

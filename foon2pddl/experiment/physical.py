@@ -184,9 +184,12 @@ class PhysicalPlannerRow:
     solver: str
     network: str
     solved: int
-    replayed: int  # plans carried out object by object (decoding replays them)
+    replayed: int  # plans the trial's objects carry out (replayed object by object, within the kitchen's counts)
+    more_objects: int  # plans that use more objects of some kitchen node than the kitchen has
+    mean_extra: float | None  # objects beyond the kitchen's, mean over `more_objects`
     reference_executable: int  # the reference's trees of the same goals the kitchen's objects carry out
     mean_steps: float | None  # plan steps (repeated firings, washes and restoring steps included)
+    mean_repeated: float | None  # of those, unit steps firing a unit the plan fired before
     mean_units: float | None  # the reference's tree units, on the goals both solved
 
 
@@ -205,11 +208,15 @@ def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
             if not cells:
                 continue
             ref = [index.get((r.trial, r.goal, n, REFERENCE)) for r in asked]
-            pairs = [(r.plan_length, x.units) for r in cells
-                     if (x := index.get((r.trial, r.goal, n, REFERENCE))) is not None and x.solved
-                     and r.plan_length is not None and x.units is not None]
-            out.append(PhysicalPlannerRow(s, n, len(cells), sum(executable(r) for r in cells),
+            both = [(r, x) for r in cells
+                    if (x := index.get((r.trial, r.goal, n, REFERENCE))) is not None and x.solved
+                    and r.plan_length is not None and x.units is not None]
+            more = [r.extra_objects for r in cells if r.executable == Verdict.SHORT and r.extra_objects is not None]
+            repeated = [r.repeated for r, _ in both if r.repeated is not None]
+            out.append(PhysicalPlannerRow(s, n, len(cells), sum(executable(r) for r in cells), len(more),
+                                          statistics.fmean(more) if more else None,
                                           sum(x is not None and executable(x) for x in ref),
-                                          statistics.fmean(p for p, _ in pairs) if pairs else None,
-                                          statistics.fmean(u for _, u in pairs) if pairs else None))
+                                          statistics.fmean(r.plan_length for r, _ in both) if both else None,
+                                          statistics.fmean(repeated) if repeated else None,
+                                          statistics.fmean(x.units for _, x in both) if both else None))
     return out

@@ -56,7 +56,8 @@ class Record:
     kitchen's physical objects (`planners.executable.schedule`): `executable`
     is the verdict, `executable_reason` names the label and step that failed,
     `extra_objects` how many objects more a tree that ran `short` needs (None
-    when no number of objects would do: a unit must fire again).
+    when no number of objects would do: a unit must fire again); for a physical plan,
+    `repeated` counts its unit steps that fire a unit it fired before.
     """
 
     trial: int
@@ -81,6 +82,7 @@ class Record:
     executable: str | None = None  # planners.executable.Verdict of the tree over the kitchen's objects
     executable_reason: str | None = None  # why not (the label and step that failed)
     extra_objects: int | None = None  # a `short` tree: objects beyond the kitchen's it needs (None: more do not help)
+    repeated: int | None = None  # a physical plan: its unit steps that fire a unit it fired before
 
     def __post_init__(self) -> None:
         try:
@@ -133,11 +135,12 @@ _ENCODER = json.JSONEncoder(sort_keys=True, ensure_ascii=False)
 
 _INT = ("trial", "goal")
 _STR = ("network", "solver", "goal_label")
-_OPT_INT = ("units", "plan_length", "extra_objects")
+_OPT_INT = ("units", "plan_length", "extra_objects", "repeated")
 _OPT_STR = ("executable", "executable_reason")
 _OPT_BOOL = ("validated", "proven_optimal", "foon_valid")
 #: Fields left out of a line when unset (added after the first version).
-_OPTIONAL = ("bound", "gap", "worker", "time_limit", "executable", "executable_reason", "extra_objects")
+_OPTIONAL = ("bound", "gap", "worker", "time_limit", "executable", "executable_reason", "extra_objects",
+             "repeated")
 _OPT_NUM = ("bound", "gap", "time_limit")
 
 

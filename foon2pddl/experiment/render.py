@@ -365,11 +365,13 @@ def gen_md(data: ReportData) -> str:
 
 
 def physical_planners_md(data: ReportData) -> str:
-    """Planners over physical objects: goals solved, plans replayed, against the reference's executable trees."""
+    """Planners over physical objects: goals solved, plans the trial's objects carry out, plans that need more
+    objects (how many), against the reference's executable trees; plan length against the reference's tree."""
     from .physical import physical_planners
 
-    rows = [[p.solver, net_name(p.network), p.solved, p.replayed, p.reference_executable, p.mean_steps, p.mean_units]
-            for p in physical_planners(data)]
-    return md_table(["solver", "network", "goals solved", "plans replayed object by object",
-                     f"{REFERENCE} trees executable", "mean plan steps", f"mean {REFERENCE} tree units"], rows,
-                    "llrrrrr") if rows else ""
+    rows = [[p.solver, net_name(p.network), p.solved, p.replayed, p.more_objects, p.mean_extra,
+             p.reference_executable, p.mean_steps, p.mean_repeated, p.mean_units] for p in physical_planners(data)]
+    return md_table(["solver", "network", "goals solved", "carried out with the trial's objects",
+                     "only with more objects", "mean extra objects", f"{REFERENCE} trees executable",
+                     "mean plan steps", "of them repeated firings", f"mean {REFERENCE} tree units"], rows,
+                    "llrrrrrrrr") if rows else ""

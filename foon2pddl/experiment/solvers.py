@@ -4,8 +4,9 @@ A solver is prepared for one network view and one trial kitchen (`prepare`),
 which does the work shared by the goals of the batch (its time is the batch's
 `setup`), then answers goals one by one (`solve`). Native solvers share the
 reachability fixpoint (complete, optimal) or the network index (greedy);
-`fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once and
-swap goals in the translated task (`planners.solve.GoalReplanner`); `fd-state`
+`fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once per run
+from the default kitchen, start each trial from its kitchen and swap goals in
+the translated task (`planners.solve.GoalReplanner`); `fd-state`
 and `fd-instances` compile and plan each goal afresh (both are pruned per goal;
 `fd-instances` plans with physical objects, so it may need a wash or a second
 bowl where FOON's semantics does not, and solve fewer goals than `native-complete`);
@@ -17,6 +18,7 @@ the kitchen the solver was given; a tree that fails is an `error`.
 from __future__ import annotations
 
 import time
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import StrEnum
@@ -66,6 +68,7 @@ class Outcome:
     executable: str | None = None  # the tree scheduled over the kitchen's objects (`physical`)
     executable_reason: str | None = None
     extra_objects: int | None = None
+    repeated: int | None = None  # a physical plan: unit steps firing a unit it fired before
 
 
 @dataclass(frozen=True)
@@ -142,6 +145,26 @@ def physical(tree, kitchen_nodes, per_item: int, times: dict[str, float]) -> dic
     return {"executable": str(verdict.verdict), "executable_reason": verdict.message or None, "extra_objects": extra}
 
 
+def physical_plan(trace, kitchen_nodes, per_item: int, times: dict[str, float]) -> dict:
+    """The Outcome fields of a physical plan (its `trace`, replayed when decoded) against `per_item` objects
+    per kitchen node (`planners.executable.drawn_by_plan`, its time in `times["schedule"]`): `short` when
+    the planner, given as many objects as the goal may need, used more than the kitchen has (how many more),
+    and how many of its unit steps fire a unit the plan fired before."""
+    from ..planners.executable import Verdict, drawn_by_plan
+
+    t0 = time.perf_counter()
+    verdict = drawn_by_plan(trace, kitchen_nodes, per_item)
+    extra = sum(max(0, n - per_item) for _, n in verdict.drawn) if verdict.verdict is Verdict.SHORT else None
+    fired: set = set()
+    repeated = 0
+    for step in trace.steps:
+        repeated += step.unit in fired
+        fired.add(step.unit)
+    times["schedule"] = time.perf_counter() - t0
+    return {"executable": str(verdict.verdict), "executable_reason": verdict.message or None, "extra_objects": extra,
+            "repeated": repeated}
+
+
 def _bound(result) -> tuple[float | None, float | None]:
     """(bound, gap) of an anytime retrieval that reports a lower bound (None, None otherwise)."""
     bound = getattr(result, "bound", None)
@@ -191,7 +214,7 @@ def _plan_outcome(outcome, steps: tuple[str, ...], kitchen_nodes=None, per_item:
         reason = "" if foon_valid is not False else "tree fails FOON simulation: " + "; ".join(
             outcome.validation.problems[:2])
         if outcome.trace is not None:  # a plan over physical objects: decoding replayed it object by object
-            scheduled: dict = {"executable": "executable"}
+            scheduled: dict = physical_plan(outcome.trace, kitchen_nodes or frozenset(), per_item, times)
         elif kitchen_nodes is not None and foon_valid:
             scheduled = physical(tree, kitchen_nodes, per_item, times)
         else:
@@ -201,8 +224,21 @@ def _plan_outcome(outcome, steps: tuple[str, ...], kitchen_nodes=None, per_item:
                    foon_valid)
 
 
+#: Replanners from a view's default kitchen a process keeps, by view (`_FdReuse`): (view, replanner).
+_FROM_DEFAULT: OrderedDict[int, tuple[NetworkView, object]] = OrderedDict()
+#: Views whose replanner `_FROM_DEFAULT` keeps (an EXP one holds a compiled task and its translation).
+DEFAULT_KEPT = 3
+
+
 class _FdReuse(Prepared):
-    """Fast Downward on the unpruned `tree` encoding, translated once, goals swapped in."""
+    """Fast Downward on the unpruned `tree` encoding, translated once, goals swapped in.
+
+    One compilation and translation from the view's default kitchen serves every trial (a trial's kitchen
+    is drawn from it): the trial's kitchen only cuts down the initial state (`GoalReplanner.for_kitchen`),
+    so a run translates each network once per process instead of once per trial. A kitchen not within
+    the default one (a sweep's kitchen hook) gets its own translation. `setup` includes the default
+    kitchen's compilation and translation in the batch that made them.
+    """
 
     def __init__(self, setting: Setting, optimal: bool) -> None:
         from ..planners.solve import GoalReplanner
@@ -213,14 +249,34 @@ class _FdReuse(Prepared):
         self.per_item = setting.per_item
         t0 = time.perf_counter()
         kitchen = view.map_kitchen(setting.kitchen)
-        self.replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, optimal=optimal,
-                                       time_limit=setting.time_limit, search=OPTIMAL_SEARCH if optimal else None,
-                                       cache=setting.cache)
+        try:
+            replanner = _from_default(setting).for_kitchen(kitchen)
+        except ValueError:
+            replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, time_limit=setting.time_limit,
+                                      cache=setting.cache)
+        self.replanner = replanner.with_search(optimal=True, search=OPTIMAL_SEARCH) if optimal else replanner
         self.setup = time.perf_counter() - t0
 
     def solve(self, node: ObjectNode) -> Outcome:
         outcome = self.replanner.plan(self.view.goal_of(node), time_limit=self.time_limit)
         return _plan_outcome(outcome, outcome.result.plan, self.replanner.kitchen_nodes, self.per_item)
+
+
+def _from_default(setting: Setting):
+    """The `tree` replanner from the view's default kitchen serving kitchens within it, built once per process."""
+    from ..planners.solve import GoalReplanner
+
+    view = setting.view
+    key = id(view)
+    if key in _FROM_DEFAULT and _FROM_DEFAULT[key][0] is view:
+        _FROM_DEFAULT.move_to_end(key)
+        return _FROM_DEFAULT[key][1]
+    replanner = GoalReplanner(view.foon, view.kitchen, "tree", view.foon.level, time_limit=setting.time_limit,
+                              cache=setting.cache, kitchens=True)
+    _FROM_DEFAULT[key] = (view, replanner)
+    while len(_FROM_DEFAULT) > DEFAULT_KEPT:
+        _FROM_DEFAULT.popitem(last=False)
+    return replanner
 
 
 class _FdFresh(Prepared):
@@ -297,11 +353,12 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
            role=Role.REFERENCE, cost=0),
     Solver("native-optimal", "fewest distinct units (branch and bound)", lambda s: _Native(s, "optimal"),
            role=Role.OPTIMUM, cost=2),
-    Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per trial, each goal's relevant "
-                      "operators only",
+    Solver("fd-tree", "Fast Downward lama-first, tree encoding, one translation per run (a trial's kitchen is "
+                      "its initial state), each goal's relevant operators only",
            lambda s: _FdReuse(s, False), planner=True, role=Role.AGREEMENT, cost=3, whole_batches=True),
     Solver("fd-tree-opt", "Fast Downward A* with LM-cut and atom-centric stubborn sets (optimal), tree encoding, "
-                          "one translation per trial, each goal's relevant operators only",
+                          "one translation per run (a trial's kitchen is its initial state), each goal's relevant "
+                          "operators only",
            lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5, whole_batches=True),
     Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
                        "encoding's STRIPS semantics; FOON simulation reported apart)",

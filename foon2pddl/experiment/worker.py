@@ -224,7 +224,8 @@ def run_batch(batch: Batch, job: Job, emit: Callable[[Record], None] | None = No
                         proven_optimal=outcome.proven_optimal, foon_valid=outcome.foon_valid,
                         bound=outcome.bound, gap=outcome.gap, params=batch.params, worker=worker,
                         time_limit=job.time_limit, executable=outcome.executable,
-                        executable_reason=outcome.executable_reason, extra_objects=outcome.extra_objects)
+                        executable_reason=outcome.executable_reason, extra_objects=outcome.extra_objects,
+                        repeated=outcome.repeated)
         out.append(record)
         (emit or _ignore)(record)
     return out

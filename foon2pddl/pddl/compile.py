@@ -42,7 +42,8 @@ def _registry(*encodings: Encoding) -> dict[str, Encoding]:
 
 #: Encoding name -> encoding, the default first.
 ENCODINGS: dict[str, Encoding] = _registry(
-    Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit"),
+    Encoding("tree", encode_tree, "FOON's semantics, delete-free: one proposition per node, one action per unit",
+             kitchen_init=True),
     Encoding("instances", encode_instances, "physical object instances whose states change", every_step=True,
              replay=instance_trace, view=INSTANCE_VIEW),
     Encoding("relational", encode_relational, "physical objects and which object holds which: (in ?holder ?obj)",

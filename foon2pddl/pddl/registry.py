@@ -94,6 +94,9 @@ class Encoding:
     trace is printed; `holders`: the trace's holders are modelled (not all None), so the
     relational replay applies to it. `complete`: it solves every goal FOON's delete-free
     semantics solves (an encoding with more physical rules can fail where FOON's data has gaps).
+    `kitchen_init`: unpruned, the kitchen changes only the initial state, which holds each kitchen
+    node's goal atoms (so a task compiled from one kitchen serves any kitchen within it with its
+    initial state cut down: `planners.solve.GoalReplanner.for_kitchen`).
     """
 
     name: str
@@ -107,6 +110,7 @@ class Encoding:
     view: TraceView | None = None
     holders: bool = False
     complete: bool = True
+    kitchen_init: bool = False
 
     @property
     def physical(self) -> bool:

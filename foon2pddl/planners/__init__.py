@@ -18,7 +18,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action", "cleanup", "commands", "decode",
            "executable", "external", "fd", "fd_reuse", "foon_places", "instance_physical", "physical_replay",
-           "process", "registry", "result", "solve", "trace_check", "translate_server", "translator", "up_engine"]
+           "process", "registry", "result", "sas", "solve", "trace_check", "translate_server", "translator", "up_engine"]
 
 #: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
 DEFAULT_PLANNER = "fd"

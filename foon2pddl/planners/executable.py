@@ -40,7 +40,7 @@ from ..model.tasktree import TaskTree
 from ..pddl.pairing import RoleKind, unit_roles
 from .foon_places import step_source
 
-__all__ = ["Executability", "Verdict", "needed", "schedule"]
+__all__ = ["Executability", "Verdict", "drawn_by_plan", "needed", "schedule"]
 
 
 class Verdict(StrEnum):
@@ -146,6 +146,34 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
         steps.append(TraceStep(k, unit, bindings, tuple(changes), step_source(TraceStep(k, unit, (), ()))))
         now.update((c.id, c) for c in changes)
     return result(Verdict.EXECUTABLE)
+
+
+def drawn_by_plan(trace: PhysicalTrace, kitchen_nodes: Iterable[ObjectNode], per_item: int = 1) -> Executability:
+    """Whether a physical plan (a planner's `trace`, already replayed) fits a kitchen of `per_item` objects per
+    kitchen node: the objects it draws per kitchen node are those starting in that node that some step binds.
+    `short` at the first step binding one object more than the kitchen has there (its label and node, in
+    `schedule`'s words), with `drawn` over the whole plan (the objects it needs; beyond `per_item`, more).
+    A planner given derived counts (`instances`) may use a second bowl where the kitchen has one. O(steps)."""
+    kitchen = frozenset(kitchen_nodes)
+    start = {s.id: s.node for s in trace.initial}
+    labels = trace.by_id
+    drawn: dict[ObjectNode, set[str]] = {}
+    first: tuple[int, str, ObjectNode, str] | None = None
+    for step in trace.steps:
+        for b in step.bindings:
+            node = start.get(b.object)
+            if node is None or node not in kitchen or b.object in drawn.get(node, ()):
+                continue
+            drawn.setdefault(node, set()).add(b.object)
+            if first is None and len(drawn[node]) > per_item:
+                first = (step.index, labels[b.object].label, node, step.unit.motion.label)
+    counts = tuple(sorted((n, len(o)) for n, o in drawn.items()))
+    if first is None:
+        return Executability(Verdict.EXECUTABLE, drawn=counts, trace=trace)
+    k, label, node, motion = first
+    return Executability(Verdict.SHORT, k, label, node,
+                         f"step {k + 1} ({motion}) needs one more {label} in {node.describe()!r}: "
+                         f"the kitchen has {per_item} there, none free", counts, trace)
 
 
 def needed(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode]) -> Executability:

@@ -17,10 +17,17 @@ the returned plan). A goal atom absent from the SAS text is either always true
 the delete-free `tree` encoding) or unreachable: the task's initial state
 decides which.
 
-Only the goal may change: the translator prunes by reachability from the
-initial state, so a new kitchen needs a new translation. Build from a task
-compiled without goal-directed pruning, or goals outside its pruned part will
-wrongly come out unsolvable.
+The translator prunes by reachability from the initial state, so a new
+kitchen would need a new translation, unless the task was translated with its
+initial atoms made forgettable (`build(..., forgettable=True)`: one auxiliary
+operator per initial atom deletes it, so no initial atom is compiled away as
+static). Such a translation serves any initial state that is a subset of the
+one translated (`TranslatedTask.at_init`: the SAS initial state is rewritten,
+the auxiliary operators dropped, and the operators and facts a relaxed
+reachability fixpoint from the new state cannot reach are dropped too, as the
+translator would: goals out of reach are answered without a search). Build from
+a task compiled without goal-directed pruning, or goals outside its pruned part
+will wrongly come out unsolvable.
 """
 
 from __future__ import annotations
@@ -29,16 +36,18 @@ import hashlib
 import os
 import tempfile
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..pddl.task import Action, Atom, PlanningTask, Predicate
 from . import fd
 from .result import PlanResult, step_action
+from .sas import Sas, parse_sas
 
 ANCHOR = "foon2pddl-reuse-anchor"
 GOAL_OP = "foon2pddl-reuse-goal-"
+FORGET_OP = "foon2pddl-reuse-forget-"
 
 
 def sas_fact_name(atom: Atom) -> str:
@@ -46,124 +55,22 @@ def sas_fact_name(atom: Atom) -> str:
     return f"Atom {atom.predicate}({', '.join(atom.args)})".lower()
 
 
-def _anchored(task: PlanningTask) -> PlanningTask:
-    """The task with its goal replaced by a fresh anchor atom one auxiliary action makes true."""
+def _anchored(task: PlanningTask, forgettable: bool = False) -> PlanningTask:
+    """The task with its goal replaced by a fresh anchor atom one auxiliary action makes true; `forgettable`:
+    and one auxiliary action per initial atom that deletes it (see the module doc)."""
     taken = {p.name.lower() for p in task.predicates} | {a.name.lower() for a in task.actions}
-    if ANCHOR in taken:
-        raise ValueError(f"task already uses the name {ANCHOR!r}")
+    if ANCHOR in taken or any(n.startswith(FORGET_OP) for n in taken):
+        raise ValueError(f"task already uses the name {ANCHOR!r} or {FORGET_OP}N")
     anchor = Atom(ANCHOR)
+    cost = 0 if task.uses_costs else None
+    forget = tuple(Action(f"{FORGET_OP}{k}", (), (), (a,), cost=cost) for k, a in enumerate(task.init)) \
+        if forgettable else ()
     return replace(
         task,
         predicates=(*task.predicates, Predicate(ANCHOR)),
-        actions=(*task.actions, Action(ANCHOR, (), (anchor,), cost=0 if task.uses_costs else None)),
+        actions=(*task.actions, Action(ANCHOR, (), (anchor,), cost=cost), *forget),
         goal=(anchor,),
     )
-
-
-Fact = tuple[int, int]
-
-
-@dataclass(frozen=True)
-class _Op:
-    """What backward relevance needs of an operator: the facts it needs and the facts it makes."""
-
-    needs: tuple[Fact, ...]  # prevail conditions and effect preconditions (value != -1)
-    makes: tuple[Fact, ...]  # effect values
-    conditional: bool  # some effect has a condition
-
-
-def _parse_op(block: str) -> _Op:
-    lines = block.split("\n")
-    i = 2
-    n_prevail = int(lines[i])
-    needs = [tuple(map(int, lines[i + 1 + k].split())) for k in range(n_prevail)]
-    i += 1 + n_prevail
-    n_effects = int(lines[i])
-    makes, conditional = [], False
-    for k in range(n_effects):
-        parts = list(map(int, lines[i + 1 + k].split()))
-        n_cond = parts[0]
-        conditional = conditional or n_cond > 0
-        needs.extend((parts[1 + 2 * c], parts[2 + 2 * c]) for c in range(n_cond))
-        var, pre, post = parts[1 + 2 * n_cond:4 + 2 * n_cond]
-        if pre != -1:
-            needs.append((var, pre))
-        makes.append((var, post))
-    return _Op(tuple(needs), tuple(makes), conditional)
-
-
-@dataclass(frozen=True)
-class _Sas:
-    """A translated SAS task cut into the parts a goal swap keeps."""
-
-    head: str  # version .. end_state (variables, mutexes, initial state)
-    operators: tuple[str, ...]  # operator blocks without the anchor's
-    tail: str  # axioms section
-    facts: dict[str, tuple[int, int]]  # "Atom p(a)" -> (variable, value)
-    anchor: tuple[int, int]
-    parsed: tuple[_Op, ...] = ()  # `operators`, parsed for relevance
-    makers: dict[Fact, tuple[int, ...]] | None = None  # fact -> indexes of the operators that make it
-    prunable: bool = False  # no conditional effects, no axioms: backward relevance is exact
-
-    def relevant(self, goal_facts: Iterable[Fact]) -> list[int]:
-        """Indexes of the operators that can contribute to making `goal_facts` (backward relevance, O(task)).
-
-        An operator none of whose effects is a relevant fact never helps: dropping it from a plan
-        leaves every later precondition and the goal satisfied (no conditional effects, no axioms),
-        so optimal plan costs are unchanged and the search sees only the goal's part of the network.
-        """
-        if not self.prunable or self.makers is None:
-            return list(range(len(self.operators)))
-        needed = set(goal_facts)
-        stack = list(needed)
-        keep: set[int] = set()
-        while stack:
-            fact = stack.pop()
-            for op in self.makers.get(fact, ()):
-                if op not in keep:
-                    keep.add(op)
-                    for f in self.parsed[op].needs:
-                        if f not in needed:
-                            needed.add(f)
-                            stack.append(f)
-        return sorted(keep)
-
-
-def _parse_sas(text: str) -> _Sas:
-    lines = text.split("\n")
-    facts: dict[str, tuple[int, int]] = {}
-    i = 0
-    var = -1
-    while lines[i] != "begin_goal":
-        if lines[i] == "begin_variable":
-            var += 1
-            count = int(lines[i + 3])
-            for value in range(count):
-                facts.setdefault(lines[i + 4 + value].lower(), (var, value))
-            i += 4 + count
-        else:
-            i += 1
-    head = "\n".join(lines[:i]) + "\n"
-    while lines[i] != "end_goal":
-        i += 1
-    i += 1
-    n_ops = int(lines[i])
-    i += 1
-    ops = []
-    for _ in range(n_ops):
-        j = lines.index("end_operator", i)
-        if lines[i + 1].strip().lower() != ANCHOR:
-            ops.append("\n".join(lines[i:j + 1]) + "\n")
-        i = j + 1
-    tail = "\n".join(lines[i:])
-    anchor = facts[sas_fact_name(Atom(ANCHOR))]
-    parsed = tuple(_parse_op(op) for op in ops)
-    makers: dict[Fact, list[int]] = {}
-    for k, op in enumerate(parsed):
-        for fact in op.makes:
-            makers.setdefault(fact, []).append(k)
-    prunable = not any(op.conditional for op in parsed) and tail.strip().split("\n")[0].strip() == "0"
-    return _Sas(head, tuple(ops), tail, facts, anchor, parsed, {f: tuple(v) for f, v in makers.items()}, prunable)
 
 
 @dataclass(frozen=True)
@@ -171,27 +78,29 @@ class TranslatedTask:
     """A task translated once; `solve` searches it for any goal over its atoms."""
 
     task: PlanningTask
-    sas: _Sas
+    sas: Sas
     translate_seconds: float
     optimal: bool = False
     search: tuple[str, ...] | None = None  # search options (default: the alias for `optimal`)
 
     @classmethod
     def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
-              search: tuple[str, ...] | None = None, cache: Path | None = None) -> TranslatedTask:
+              search: tuple[str, ...] | None = None, cache: Path | None = None,
+              forgettable: bool = False) -> TranslatedTask:
         """Translate `task` (its goal is ignored). Raises RuntimeError when the translator fails.
 
         `cache`: a directory of translations by the SHA-256 of the PDDL text and translator options
         (`cached_sas`); a task translated before, by this process or another, is read, not translated.
+        `forgettable`: translate so that `at_init` can start from any subset of the task's initial state.
         """
         from ..pddl.render import render
 
-        domain_text, problem_text = render(_anchored(task))
+        domain_text, problem_text = render(_anchored(task, forgettable))
         options = ("--keep-unimportant-variables", *fd.translate_options_for(task))
         t0 = time.perf_counter()
         text = cached_sas(cache, domain_text, problem_text, options) if cache is not None else None
         if text is not None:
-            return cls(task, _parse_sas(text), time.perf_counter() - t0, optimal, search)
+            return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), time.perf_counter() - t0, optimal, search)
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
             work = Path(tmp)
             (work / "domain.pddl").write_text(domain_text)
@@ -204,7 +113,13 @@ class TranslatedTask:
             text = (work / "output.sas").read_text()
         if cache is not None:
             store_sas(cache, domain_text, problem_text, options, text)
-        return cls(task, _parse_sas(text), run.seconds, optimal, search)
+        return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), run.seconds, optimal, search)
+
+    def at_init(self, task: PlanningTask) -> TranslatedTask:
+        """This translation for `task`, the translated task with another initial state (built `forgettable`,
+        see the module doc; ValueError when its state cannot be written here)."""
+        sas = self.sas.at_init(sas_fact_name(a) for a in task.init)
+        return replace(self, task=task, sas=sas)
 
     def goal_sas(self, alternatives: Sequence[Sequence[Atom]]) -> str | PlanResult:
         """SAS text for a goal, or the result when no search is needed (goal true at start or unreachable)."""
@@ -219,12 +134,14 @@ class TranslatedTask:
                 elif atom not in init:
                     break  # never reachable from this initial state
             else:
-                if not facts:
+                if all(self.sas.state[v] == x for v, x in facts):
                     return PlanResult("solved", (), self.name, "goal holds in the initial state")
                 reachable.append(sorted(set(facts)))
         if not reachable:
             return PlanResult("unsolvable", (), self.name, "no goal atom is reachable from the initial state")
-        ops = [self.sas.operators[k] for k in self.sas.relevant(f for alt in reachable for f in alt)]
+        kept = self.sas.relevant(f for alt in reachable for f in alt)
+        ops = [self.sas.operators[k] for k in kept]
+        used = {v for k in kept for v, _ in (*self.sas.parsed[k].needs, *self.sas.parsed[k].makes)}
         if len(reachable) == 1:
             goal = reachable[0]
         else:
@@ -232,9 +149,9 @@ class TranslatedTask:
             for k, facts in enumerate(reachable):
                 prevail = "".join(f"{v} {x}\n" for v, x in facts)
                 ops.append(f"begin_operator\n{GOAL_OP}{k}\n{len(facts)}\n{prevail}1\n0 {var} -1 {val}\n0\nend_operator\n")
+                used.update(v for v, _ in facts)
             goal = [self.sas.anchor]
-        goal_text = f"begin_goal\n{len(goal)}\n" + "".join(f"{v} {x}\n" for v, x in goal) + "end_goal\n"
-        return self.sas.head + goal_text + f"{len(ops)}\n" + "".join(ops) + self.sas.tail
+        return self.sas.task_text(goal, ops, used)
 
     @property
     def name(self) -> str:

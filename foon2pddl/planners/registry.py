@@ -55,8 +55,9 @@ class Planner:
     `check(name)` (raises UsageError when `name` cannot run here: unknown, not installed).
 
     `configurable`: it takes a search configuration (`PlanRequest.search`);
-    `translate_once`: None, or `(task, optimal, time_limit, search) -> ` a translated task whose
-    `solve(alternatives, time_limit)` plans for any of many goals (reuse across goals).
+    `translate_once`: None, or `(task, optimal, time_limit, search, cache, forgettable) -> ` a translated
+    task whose `solve(alternatives, time_limit)` plans for any of many goals (reuse across goals) and, built
+    `forgettable`, whose `at_init(task)` starts from any subset of its initial state (reuse across kitchens).
     """
 
     name: str
@@ -76,10 +77,12 @@ def _fd_solve(request: PlanRequest) -> PlanResult:
 
 
 def _fd_translate_once(task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
-                       search: tuple[str, ...] | None = None, cache: Path | None = None) -> Any:
+                       search: tuple[str, ...] | None = None, cache: Path | None = None,
+                       forgettable: bool = False) -> Any:
     from .fd_reuse import TranslatedTask
 
-    return TranslatedTask.build(task, optimal=optimal, time_limit=time_limit, search=search, cache=cache)
+    return TranslatedTask.build(task, optimal=optimal, time_limit=time_limit, search=search, cache=cache,
+                                forgettable=forgettable)
 
 
 def _no_check(name: str) -> None:

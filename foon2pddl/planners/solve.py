@@ -165,14 +165,18 @@ class GoalReplanner:
     actions there, one per way its atom can be written). `with_search` gives a replanner on
     the same translation with other search options (an optimal search beside a satisficing one).
     `cache`: a directory of translations shared by processes (`fd_reuse.TranslatedTask.build`).
+    `kitchens`: also serve kitchens within `kitchen` (`for_kitchen`) on an encoding whose kitchen sets only
+    the initial state (`Encoding.kitchen_init`; ignored on others): one compilation and translation then
+    serve every trial of an experiment, each drawn from one default kitchen.
     """
 
     def __init__(self, foon: Foon, kitchen: Kitchen, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
                  optimal: bool = False, costs: str | None = None, rates: Rates | None = None,
                  time_limit: float | None = None, search: tuple[str, ...] | None = None,
                  planner: str = DEFAULT_PLANNER, category_index: CategoryIndex | None = None,
-                 cache: Path | None = None) -> None:
+                 cache: Path | None = None, kitchens: bool = False) -> None:
         from ..errors import UsageError
+        from ..pddl.compile import encoding_named
         from .registry import lookup
 
         translate_once = lookup(planner).translate_once
@@ -193,7 +197,10 @@ class GoalReplanner:
         self.encode_seconds = time.perf_counter() - t0
         self.level = level
         self.kitchen_nodes = kitchen.project(level).nodes
+        self.kitchens = kitchens and encoding_named(encoding).kitchen_init
         kw = {"cache": cache} if cache is not None else {}
+        if self.kitchens:
+            kw["forgettable"] = True
         self.translated = translate_once(base, optimal=optimal, time_limit=time_limit, search=search, **kw)
 
     @property
@@ -204,6 +211,25 @@ class GoalReplanner:
         """This replanner searching with other options, on the same translation (nothing is translated again)."""
         other = copy.copy(self)
         other.translated = replace(self.translated, optimal=optimal, search=search)
+        return other
+
+    def for_kitchen(self, kitchen: Kitchen) -> GoalReplanner:
+        """This replanner from `kitchen`, whose nodes are among the kitchen it was built from, with nothing
+        compiled or translated again: the initial state loses the goal atoms of the nodes `kitchen` lacks
+        (`Encoding.kitchen_init`) and the translation starts from it (`TranslatedTask.at_init`). ValueError
+        unless built with `kitchens` on such an encoding and `kitchen` is within it. O(task)."""
+        nodes = kitchen.project(self.level).nodes
+        if not self.kitchens or not nodes <= self.kitchen_nodes:
+            raise ValueError("this replanner serves only kitchens within the one it was built from, on an "
+                             "encoding whose kitchen sets only the initial state")
+        atoms = self.node_atoms
+        kept = {a for n in nodes for alt in atoms.get(n, ()) for a in alt}
+        gone = {a for n in self.kitchen_nodes - nodes for alt in atoms.get(n, ()) for a in alt} - kept
+        task = replace(self.task, init=tuple(a for a in self.task.init if a not in gone))
+        other = copy.copy(self)
+        other.compiled = replace(self.compiled, task=task)
+        other.kitchen_nodes = nodes
+        other.translated = self.translated.at_init(task)
         return other
 
     def plan(self, goal: Goal, time_limit: float | None = None, up_validate: bool = False) -> PlanOutcome:
