@@ -207,3 +207,9 @@ def test_fd_instances_plans_that_need_more_objects_say_how_many_and_where(tmp_pa
     data = ReportData(summary.records, config.networks, config.solvers, tuple(t.summary() for t in summary.trials))
     (row,) = physical.physical_planners(data)
     assert (row.solved, row.replayed, row.more_objects) == (len(plans), len(plans) - len(short), len(short))
+    from foon2pddl.experiment.report import render_markdown
+
+    data = ReportData(summary.records, config.networks, config.solvers, data.trials, _meta(config, summary))
+    text = render_markdown(data, {"successes.png": "s.png", "times.png": "t.png"})
+    assert "| fd-instances | REG |" in text and "only with more objects" in text
+    assert f"`fd-instances` REG {row.replayed:.1f}." in text  # the comparison with the paper says it too

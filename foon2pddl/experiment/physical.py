@@ -220,3 +220,10 @@ def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
                                           statistics.fmean(repeated) if repeated else None,
                                           statistics.fmean(x.units for _, x in both) if both else None))
     return out
+
+
+def planner_means(data: ReportData) -> list[tuple[str, str, float]]:
+    """(solver, network, mean goals per trial its plans carry out with the trial's objects) for the rows of
+    `physical_planners`, in their order."""
+    trials = len(data.trials) or 1
+    return [(p.solver, p.network, p.replayed / trials) for p in physical_planners(data)]
