@@ -399,6 +399,18 @@ def test_block_reader_reads_what_the_line_reader_reads(text):
     assert [[table.nodes[i] for i in ids] for ids in table.inputs] == [list(u.inputs) for u in fast.foon.units]
 
 
+@settings(max_examples=1000, deadline=None)
+@given(text=st.text(alphabet="OSM/#\n\r \tx", max_size=30), skip=st.integers(0, 4))
+def test_plain_means_every_line_is_an_object_state_motion_or_separator_line(text, skip):
+    """`_plain` against its definition, line by line: from offset `skip` every line starts with `O`, `S`, `M` or
+    `//` (a final newline ends the last line) and the text holds no carriage return."""
+    rows = text[skip:].split("\n")
+    if len(rows) > 1 and rows[-1] == "":
+        rows.pop()
+    expected = "\r" not in text and all(row.startswith(("O", "S", "M", "//")) for row in rows)
+    assert _plain(text, skip) == expected
+
+
 #: Fields of state lines: the usual shapes, and what sends a line to the field-by-field reader or makes it an error.
 _STATE_LABELS = st.sampled_from(["in", "Chopped", "a  b", " x ", "", " ", "\u00a0", "é", "İ", "x\x01", "[a]", "{a}", "#"])
 _STATE_EXTRAS = st.sampled_from(["[bowl]", "[ Bowl ]", "[ ]", "[]", "[a,b]", "[a,]", "{salt, Pepper,}", "{}", "{ , }",

@@ -9,6 +9,7 @@ are skipped with a `ParseWarning`, never half-added.
 from __future__ import annotations
 
 import os
+import re
 import stat
 from dataclasses import dataclass
 from pathlib import Path
@@ -23,6 +24,8 @@ from ..model.foon import (
     Source,
     State,
     make_node,
+    make_source,
+    make_unit,
     network_with_table,
 )
 from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state, plain_state
@@ -96,16 +99,17 @@ def parse_text(text: str, path: str = "<string>") -> ParseResult:
     return reader.finish(len(lines), text.endswith("\n"))
 
 
-#: How a line of plain text starts, after the newline before it.
-_PLAIN_HEADS = ("\nO", "\nS", "\nM", "\n//")
+#: A newline that starts a line of no plain text (`_plain`): one not starting with `O`, `S`, `M` or `//`
+#: (a final newline starts no line).
+_NOT_PLAIN_LINE = re.compile(r"\n(?:[^OSM/]|/(?!/))")
 
 
 def _plain(text: str, skip: int = 0) -> bool:
     """Whether every line of `text` from offset `skip` starts with `O`, `S`, `M` or `//` (a final newline
-    allowed): no comment, blank or indented line, no carriage return. A few passes of `str.count`."""
+    allowed): no comment, blank or indented line, no carriage return. One regular-expression scan."""
     if not text.startswith(("O", "S", "M", "//"), skip) or "\r" in text:
         return False
-    return sum(text.count(head, skip) for head in _PLAIN_HEADS) == text.count("\n", skip) - text.endswith("\n")
+    return _NOT_PLAIN_LINE.search(text, skip) is None
 
 
 def _comment_head(text: str) -> tuple[int, int]:
@@ -119,6 +123,21 @@ def _comment_head(text: str) -> tuple[int, int]:
             return 0, 1
         skip, line = end, line + 1
     return skip, line + 1
+
+
+class _Made(dict):
+    """A dictionary that makes a missing value with `make(key)` and keeps it; a hit is looked up in C, also
+    through `map(made.__getitem__, keys)`."""
+
+    __slots__ = ("make",)
+
+    def __init__(self, make) -> None:
+        super().__init__()
+        self.make = make
+
+    def __missing__(self, key):
+        value = self[key] = self.make(key)
+        return value
 
 
 class _NotPlain(Exception):
@@ -196,16 +215,13 @@ class _Reader:
         reader then reads the text again and warns or fails where it should.
 
         A block is cut at its motion line and each side at its `O` lines with `str.split`; each object's
-        text (its `O` line and state lines) is looked up whole, so a recurring object costs one dictionary
-        look-up; a new one looks its lines up, and a new state line is read by one regular expression
-        (`plain_state`) or, in an unusual shape, with the line reader's checks. The node numbers of
-        `Foon.table` are assigned on the way (objects in order of first appearance).
+        text (its `O` line and state lines) is looked up whole, in C (`map` over a `_Made` dictionary), so a
+        recurring object costs one dictionary look-up; a new one looks its lines up, and a new state line is
+        read by one regular expression (`plain_state`) or, in an unusual shape, with the line reader's checks.
+        The node numbers of `Foon.table` are assigned on the way (objects in order of first appearance).
         """
-        objects: dict[str, tuple[ObjectNode, int]] = {}  # object text without its leading `O` -> node, number
         numbers: dict[ObjectNode, int] = {}
-        motions: dict[str, Motion] = {}
-        heads: dict[str, tuple] = {}  # `O` line without its `O` -> its fields (`_classify`)
-        states: dict[str, State] = {}  # state line -> its state
+        number_of: dict[str, int] = {}  # object text without its leading `O` -> node number
         nodes: dict[tuple, ObjectNode] = {}  # (`O` line fields, states) -> node
         units, ins_ids, outs_ids = self.units, [], []
         path = self.path
@@ -217,63 +233,58 @@ class _Reader:
                 if entry[0] != "S":
                     raise _NotPlain
                 state = _parse_state(("S",) + entry[1], _not_plain)
-            states[raw] = state
             return state
 
-        def new_object(chunk: str) -> tuple[ObjectNode, int]:
+        def new_head(raw: str) -> tuple:
+            head = _classify("O" + raw, _not_plain)
+            if head[0] != "O":
+                raise _NotPlain
+            return head
+
+        state_of, head_of = _Made(new_state).__getitem__, _Made(new_head).__getitem__
+
+        def new_object(chunk: str) -> ObjectNode:
             raws = chunk.split("\n")
-            head = heads.get(raws[0])
-            if head is None:
-                head = heads[raws[0]] = _classify("O" + raws[0], _not_plain)
-                if head[0] != "O":
-                    raise _NotPlain
-            made = tuple([states.get(raw) or new_state(raw) for raw in raws[1:]])
+            head = head_of(raws[0])
+            made = tuple(map(state_of, raws[1:])) if len(raws) > 1 else ()
             node = nodes.get(key := (head, made))  # one node per spelling of the same fields and states
             if node is None:
                 node = nodes[key] = make_node(head[1], made, motion_flag=head[2], goal=head[3], dish=head[4])
-            found = objects[chunk] = (node, numbers.setdefault(node, len(numbers)))
-            return found
+            number_of[chunk] = numbers.setdefault(node, len(numbers))
+            return node
 
         def new_motion(raw: str) -> Motion:
-            entry = _classify(raw, _not_plain)
+            entry = _classify("M" + raw, _not_plain)
             if entry[0] != "M":
                 raise _NotPlain
             motion = self.motion_cache.get(entry[1])
             if motion is None:
                 motion = self.motion_cache[entry[1]] = _parse_motion(entry[1], _not_plain)
-            motions[raw] = motion
             return motion
 
-        get, get_motion = objects.get, motions.get
+        node_of, motion_of, number = _Made(new_object).__getitem__, _Made(new_motion).__getitem__, number_of.__getitem__
+        # each piece: the rest of a separator line (of a virtual one before line `first`), then its block's lines
         pieces = ("\n" + text).split("\n//")
-        line = first + pieces[0].count("\n")  # the line of the separator that opens the next piece
+        pieces[-1] = pieces[-1].removesuffix("\n")  # the final newline
+        line = first - 1  # the line of the separator that opens the piece
         try:
-            for k, piece in enumerate(pieces):
-                if k:
-                    cut = piece.find("\n")
-                    block = piece[cut + 1:] if cut >= 0 else ""
-                    start, line = line + 1, line + piece.count("\n") + 1
-                else:
-                    block, start = piece[1:], first
-                if not block:
-                    continue
-                if block[-1] == "\n":  # the last block, before the final newline
-                    block = block[:-1]
-                m = block.find("\nM")
-                if block[0] != "O" or m < 0 or block.find("\nM", m + 2) >= 0:
-                    raise _NotPlain
-                cut = block.find("\n", m + 1)
-                if cut < 0 or not block.startswith("O", cut + 1):
-                    raise _NotPlain
-                ins = [get(c) or new_object(c) for c in block[1:m].split("\nO")]
-                outs = [get(c) or new_object(c) for c in block[cut + 2:].split("\nO")]
-                raw = block[m + 1:cut]
-                motion = get_motion(raw) or new_motion(raw)
-                in_nodes, in_ids = zip(*ins, strict=True)
-                out_nodes, out_ids = zip(*outs, strict=True)
-                units.append(FunctionalUnit(in_nodes, motion, out_nodes, (Source(path, start, None),)))
-                ins_ids.append(in_ids)
-                outs_ids.append(out_ids)
+            for piece in pieces:
+                start = line + 1
+                line = start + piece.count("\n")
+                before, motion_line, after = piece.partition("\nM")
+                if not motion_line:
+                    if "\n" in piece:  # a block without a motion line
+                        raise _NotPlain
+                    continue  # an empty block
+                ins, outs = before.split("\nO"), after.split("\nO")
+                if len(ins) < 2 or len(outs) < 2 or "\n" in ins[0] or "\n" in outs[0] or "\nM" in after:
+                    raise _NotPlain  # a block starting with a state line, no inputs or outputs, two motions
+                motion = motion_of(outs[0])
+                del ins[0], outs[0]
+                units.append(make_unit(tuple(map(node_of, ins)), motion, tuple(map(node_of, outs)),
+                                       (make_source(path, start),)))
+                ins_ids.append(tuple(map(number, ins)))
+                outs_ids.append(tuple(map(number, outs)))
         except (_NotPlain, FoonSyntaxError):
             return None
         if not units:

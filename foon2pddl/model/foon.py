@@ -109,34 +109,60 @@ class ObjectNode(_HashOnce):
 
 def make_state(label: str, related: str = "", ingredients: Iterable[str] = ()) -> State:
     """Build a normalized state: ingredient list deduplicated and sorted, "" = no related object."""
-    items = set(map(normalize_label, ingredients))
-    items.discard("")
-    return State(normalize_label(label), normalize_label(related), tuple(sorted(items)))
+    items = set(map(normalize_label, ingredients)) - {""}
+    fields = (state := _new(State)).__dict__  # the fields set directly, then the hash (as `make_node` does)
+    fields["label"], fields["related"], fields["ingredients"] = identity = (
+        normalize_label(label), normalize_label(related), tuple(sorted(items)))
+    fields["_hash"] = hash(identity)
+    return state
 
 
-def make_node(
-    label: str,
-    states: Iterable[State] = (),
-    *,
-    motion_flag: int = 0,
-    goal: bool = False,
-    dish: int | None = None,
-) -> ObjectNode:
+def make_node(label: str, states: Iterable[State] = (), *, motion_flag: int = 0, goal: bool = False,
+              dish: int | None = None) -> ObjectNode:
     """Build a normalized node: label normalized, states sorted and deduplicated. Its hash is computed here
     (every node is hashed: in a network's table, sets, dict keys), which costs less than on first use."""
-    states = tuple(states)
-    if len(states) > 1:
-        states = tuple(sorted(set(states), key=_STATE_ORDER))
+    states = _sorted_states(tuple(states))
     label = normalize_label(label)
-    node = ObjectNode(label, states, motion_flag, goal, dish)
-    object.__setattr__(node, "_hash", hash((label, states)))
+    # the frozen dataclass's fields set directly: its `__init__` calls `object.__setattr__` once per field,
+    fields = (node := _new(ObjectNode)).__dict__  # which costs twice as much
+    fields["label"], fields["states"], fields["motion_flag"], fields["goal"], fields["dish"] = (
+        label, states, motion_flag, goal, dish)
+    fields["_hash"] = hash((label, states))
     return node
 
 
+def make_unit(inputs: tuple[ObjectNode, ...], motion: Motion, outputs: tuple[ObjectNode, ...],
+              sources: tuple[Source, ...]) -> FunctionalUnit:
+    """`FunctionalUnit(inputs, motion, outputs, sources)` built as `make_node` builds nodes (a reader's units)."""
+    fields = (unit := _new(FunctionalUnit)).__dict__
+    fields["inputs"], fields["motion"], fields["outputs"], fields["sources"] = inputs, motion, outputs, sources
+    return unit
+
+
+def make_source(path: str, line: int) -> Source:
+    """`Source(path, line)` built as `make_node` builds nodes (one per unit read)."""
+    fields = (source := _new(Source)).__dict__
+    fields["path"], fields["line"], fields["url"], fields["expanded_from"], fields["expanded_to"] = path, line, None, None, None
+    return source
+
+
+_new = object.__new__  # with the fields set in `__dict__`: what `make_node` and its kin build
 _MOTION_LABEL = attrgetter("motion.label")
 
 #: `State`'s dataclass order as a key read in C (the generated `__lt__` builds two tuples per comparison).
 _STATE_ORDER = attrgetter("label", "related", "ingredients")
+
+
+def _sorted_states(states: tuple[State, ...]) -> tuple[State, ...]:
+    """`states` in `State` order without repeats (the first of equal states kept), compared by their fields
+    (`_STATE_ORDER`, read in C) rather than hashed by `State.__hash__`, a Python call per state."""
+    if len(states) < 2:
+        return states
+    if len(states) == 2:  # the usual case
+        one, two = map(_STATE_ORDER, states)
+        return states if one < two else states[::-1] if two < one else states[:1]
+    by_fields = dict(zip(map(_STATE_ORDER, reversed(states)), reversed(states), strict=True))  # the first last
+    return tuple(map(by_fields.__getitem__, sorted(by_fields)))
 
 
 @dataclass(frozen=True)
