@@ -19,7 +19,8 @@ from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.model.places import listed, place_of
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
-from foon2pddl.pddl.holders import Fate, list_gaps, mismatches, relational_roles, task_aliases, unit_aliases, unit_flows
+from foon2pddl.pddl.holder_words import mismatches, task_aliases
+from foon2pddl.pddl.holders import Fate, list_gaps, relational_roles, unit_aliases, unit_flows
 from foon2pddl.pddl.relational_plan import without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render
@@ -655,3 +656,43 @@ def test_a_place_a_unit_names_by_another_objects_label_is_read_as_that_units_hol
     final = outcome.trace.final
     berries = [o.id for o in outcome.trace.objects if o.label == "strawberry"]
     assert [b for b in berries if final[b].consumed] and not [b for b in berries if final[b].holder == "blender_cup_1"]
+
+
+def test_what_goes_onto_an_object_in_its_container_is_still_in_that_container():
+    # carrot salad: the lemon juice poured into the salad bowl seasons the carrot there; the bowl, which FOON
+    # leaves out of the mix's outputs, still lists it, and the next unit takes the bowl in that state
+    cup, carrot = n("measuring cup", contains("carrot")), n("carrot", inside("measuring cup"))
+    bowl, juice = n("bowl", contains("lemon juice")), n("lemon juice", inside("bowl"))
+    salad_bowl = n("salad bowl", contains("carrot", "lemon juice"))
+    in_bowl, juiced = n("carrot", inside("salad bowl")), n("lemon juice", inside("salad bowl"))
+    pour = FunctionalUnit((cup, carrot, bowl, juice, n("salad bowl", "empty")), Motion("pour"),
+                          (salad_bowl, in_bowl, juiced))
+    seasoned = n("carrot", make_state("seasoned", "", ["lemon juice"]), inside("salad bowl"))
+    mix = FunctionalUnit((salad_bowl, in_bowl, juiced), Motion("mix"), (seasoned,))
+    jar, dressing = n("jar", contains("dressing")), n("dressing", inside("jar"))
+    done = n("salad bowl", contains("carrot", "dressing", "lemon juice"))
+    scoop = FunctionalUnit((salad_bowl, seasoned, jar, dressing), Motion("scoop"),
+                           (done, n("dressing", inside("salad bowl"))))
+    outcome = _solve([pour, mix, scoop], [cup, carrot, bowl, juice, n("salad bowl", "empty"), jar, dressing], done)
+    final = outcome.trace.final
+    label = {o.id: o.label for o in outcome.trace.objects}
+    on_carrot = [x for x, lab in label.items() if lab == "lemon juice" and label.get(final[x].holder) == "carrot"]
+    assert len(on_carrot) == 1 and label[final[final[on_carrot[0]].holder].holder] == "salad bowl"
+
+
+def test_an_object_in_the_units_one_holder_of_its_place_before_and_after_stays_there():
+    # garlic rice: `white rice (in [pot])` before and after, beside the unit's one `pot (contains {rice})`
+    # (`rice` is no alias: the unit makes `garlic rice` too)
+    pot, rice = n("pot", contains("rice")), n("white rice", inside("pot"))
+    plate, garlic = n("plate", contains("garlic")), n("garlic", make_state("on", "plate"))
+    done = n("white rice", make_state("garnished", "", ["garlic"]), inside("pot"))
+    pour = FunctionalUnit((pot, garlic, plate, rice), Motion("pour"),
+                          (done, n("garlic rice", contains("garlic"), inside("pot"))))
+    rice_role = relational_roles(pour)[3]
+    assert rice_role.fate is Fate.STAYS and rice_role.source == rice_role.target and rice_role.source.role == 0
+    bowl, raw = n("bowl", contains("white rice")), n("white rice", inside("bowl"))
+    fill = FunctionalUnit((n("pot", "empty"), bowl, raw), Motion("pour"), (pot, rice))
+    outcome = _solve([fill, pour], [n("pot", "empty"), bowl, raw, plate, garlic], done)
+    final = outcome.trace.final
+    garnished = [x for x, st in final.items() if st.node == done]
+    assert final["pot_1"].node == pot and len(garnished) == 1 and final[garnished[0]].holder == "pot_1"

@@ -34,7 +34,7 @@
   listing what starts in it (`heavy cream (in [carton])` and no carton in any unit,
   or `egg (in [bowl])` while every bowl of the kitchen is `bowl (empty)`), and a
   kitchen container that lists an item holds one object of it.
-* **Reports.** Label readings and contradictions (`holders.mismatches`,
+* **Reports.** Label readings and contradictions (`holder_words.mismatches`,
   `holders.list_gaps`), and every object the unit puts where its node does not say
   what the holder holds (a target the unit does not name: `sandwich (on [plate])`
   with no plate in the unit), once per task with the unit's file:line; the last two
@@ -66,7 +66,8 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from .holders import Fate, gained, list_gaps, mismatches, task_aliases, unit_aliases
+from .holder_words import mismatches, task_aliases
+from .holders import Fate, gained, list_gaps, unit_aliases
 from .instance_counts import count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role

@@ -17,8 +17,8 @@ Rules, in order (each reads only the unit itself):
    bowl])`, `oil (in [pan])` where the pan is a `cooking pan`. A name no role of
    the unit has is read as the one role whose label it is the head of, or whose
    head it is (last words; `unit_aliases`); every such reading is reported
-   (`mismatches`), and the replay reads the task's lists through the same
-   readings (`task_aliases`).
+   (`holder_words.mismatches`), and the replay reads the task's lists through the same
+   readings (`holder_words.task_aliases`).
 1. **Places.** A node's place is its first `in [C]` / `on [C]` state (a bare `on`
    is an appliance switched on, not a place).
 2. **Holder binding.** The holder of an object of label L at a place of label C
@@ -29,6 +29,8 @@ Rules, in order (each reads only the unit itself):
    a C whose node lists its contents without L is no candidate: FOON's words
    disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains
    {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
+   An object `in [C]` before and after a unit with one C that does not list it
+   stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`).
    A second role of one label in the same holder is bound late too: a list names
    a label once (`plate (contains {bread})` under the sandwich's two breads, each
    brought on its own plate: the planner takes the second from where it is).
@@ -73,7 +75,6 @@ lists). O(r^2) for r roles; cached per unit.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
@@ -83,8 +84,8 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
 from .pairing import Role, unit_roles
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "gained", "list_gaps", "mismatches", "moved_into", "relational_roles",
-           "task_aliases", "unit_aliases", "unit_flows"]
+__all__ = ["Fate", "Flow", "Place", "RelRole", "gained", "head_of", "list_gaps", "moved_into", "relational_roles",
+           "unit_aliases", "unit_flows"]
 
 
 class Fate(StrEnum):
@@ -141,7 +142,7 @@ def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) 
     return make_node(node.label, [*kept, make_state(relation.value, holder)])
 
 
-def _head_of(name: str, label: str) -> bool:
+def head_of(name: str, label: str) -> bool:
     """`name` and `label` name one thing by the head-noun rule: one is the other's last words (`salad` /
     `carrot salad`, `pan` / `cooking pan`, `black pepper` / `pepper`)."""
     return label != name and (label.endswith(" " + name) or name.endswith(" " + label))
@@ -152,7 +153,7 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     """Rule 0: names the unit's lists and places use for one of its objects under another label.
 
     A name a `contains`/`with` list or an `in [C]`/`on [C]` place of the unit uses that is the label of no
-    role of the unit, and that exactly one role's label matches by the head-noun rule (`_head_of`), means
+    role of the unit, and that exactly one role's label matches by the head-noun rule (`head_of`), means
     that role: `salad bowl (contains {salad})` beside `carrot salad (in [salad bowl])`, `oil (in [pan])` in a
     unit whose pan is `cooking pan`. A name only places use (an output node's among them), matching no label
     so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
@@ -163,7 +164,7 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     names = {x for r in roles for n in (r.before, r.after) for x in (*listed(n), *(c for _, c in places(n)))}
     out = {}
     for name in sorted(names - labels):
-        if len(match := [lab for lab in sorted(labels) if _head_of(name, lab)]) == 1:
+        if len(match := [lab for lab in sorted(labels) if head_of(name, lab)]) == 1:
             out[name] = match[0]
     lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
              for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
@@ -269,6 +270,9 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
             else:
                 result.append(RelRole(r, None, Fate.STAYS, src, src))
             continue
+        if src is not None and dst is not None and src.role is None and (src.relation, src.holder) == (
+                dst.relation, dst.holder) and dst.role is not None and labels.count(dst.holder) == 1:
+            src = dst  # in [pot] before and after, the unit's one pot not listing it: it stays in that pot
         same = (src == dst) or (src is not None and dst is not None and src.holder == dst.holder
                                 and src.role is not None and src.role == dst.role)
         if same:
@@ -319,23 +323,6 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
     return tuple(out)
 
 
-def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
-    """Names an output node newly lists that no role has (`bowl lists olive oil, read as green olive oil` by
-    rule 0, else `..., which no object of the unit is`), or places by another: `oil is in [pan], read as ...`."""
-    roles = unit_roles(unit)
-    labels = {r.label for r in roles}
-    alias = dict(unit_aliases(unit))
-    out = []
-    for r in roles:
-        if r.after is None:
-            continue
-        new = listed(r.after) - (listed(r.before) if r.before is not None else frozenset())
-        out += [f"{r.label} lists {x}, " + (f"read as {alias[x]}" if x in alias else "which no object of the unit is")
-                for x in sorted(new - labels)]
-        out += [f"{r.label} is {rel} [{c}], read as {alias[c]}" for rel, c in places(r.after) if c in alias]
-    return tuple(dict.fromkeys(out))
-
-
 def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     """Rule 6: where the unit's own output nodes contradict each other about a container's contents.
 
@@ -379,22 +366,3 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
             if label in new and place is not None and place[1] != r.label:
                 out.append((r.label, label, f"{r.label} lists {label}, which the unit puts {place[0]} [{place[1]}]"))
     return tuple(dict.fromkeys(out))
-
-
-def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
-                 starts: Iterable[ObjectNode | None] = ()) -> tuple[tuple[str, str], ...]:
-    """The units' aliases (rule 0) for a whole task, for its replay, plus those of the objects' start nodes
-    (`starts`: `bowl (contains {rice})` in a kitchen whose only rice is `white rice`, read against all the
-    task's `labels`). A name that is itself the label of an object of the task, or that is read as different
-    labels, is no alias. Sorted pairs."""
-    have = set(labels)
-    seen: dict[str, set[str]] = {}
-    for u in units:
-        for name, label in unit_aliases(u):
-            seen.setdefault(name, set()).add(label)
-    for node in starts:
-        for name in (*listed(node), *(c for _, c in places(node))):
-            match = [lab for lab in sorted(have) if _head_of(name, lab)]
-            if name not in have and len(match) == 1:
-                seen.setdefault(name, set()).add(match[0])
-    return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)

@@ -17,7 +17,7 @@ __all__ = ["counted_objects", "holder_init", "implied_contents", "kitchen_placed
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
-    """`names` read through the task's aliases (`holders.task_aliases`): `salad` as `carrot salad`."""
+    """`names` read through the task's aliases (`holder_words.task_aliases`): `salad` as `carrot salad`."""
     return frozenset(alias.get(x, x) for x in names)
 
 

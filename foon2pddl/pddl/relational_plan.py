@@ -8,7 +8,9 @@
   keeps what its output node lists. One FOON leaves out of the outputs is emptied of
   what leaves it (its node drops the label, `without`) when the task's units fill
   containers of its label with that label (`holders.gained`: the measuring cup the
-  cream was poured into) and its node is no kitchen node; else it keeps its contents
+  cream was poured into) and its node is no kitchen node, unless it goes onto an object
+  in that container (the lemon juice the carrot in the salad bowl is seasoned with: it
+  is still in the bowl, and the bowl still lists it); else it keeps its contents
   (a carton, a bag, a packet: the kitchen stocks them). A holder the unit does not
   name is emptied likewise when the units fill its label with the object's (whichever
   holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
@@ -131,7 +133,9 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
             if (fate is Fate.SPLITS and holder.after is None and holder.before not in kitchen
                     and (holder.label, r.role.label) in filled):
                 fate = Fate.MOVES  # a container an earlier unit filled, which FOON never empties
-                drops.setdefault(src.role, set()).add(r.role.label)
+                into = rels[r.target.role].target if r.target is not None and r.target.role is not None else None
+                if into is None or into.role != src.role:  # onto the carrot in that bowl: still in it
+                    drops.setdefault(src.role, set()).add(r.role.label)
             elif (fate is Fate.CONSUMED and holder.after is None and holder.before in kitchen
                   and r.role.label in listed(holder.before)
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role

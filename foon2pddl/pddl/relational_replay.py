@@ -25,7 +25,8 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
-from .holders import relational_roles, task_aliases, unit_aliases
+from .holder_words import task_aliases
+from .holders import relational_roles, unit_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
 from .task import Atom, PlanningTask, apply_action, type_closure
