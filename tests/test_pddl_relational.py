@@ -690,6 +690,11 @@ def test_an_object_in_the_units_one_holder_of_its_place_before_and_after_stays_t
                           (done, n("garlic rice", contains("garlic"), inside("pot"))))
     rice_role = relational_roles(pour)[3]
     assert rice_role.fate is Fate.STAYS and rice_role.source == rice_role.target and rice_role.source.role == 0
+    # the chocolate sandwich put onto the plate of egg mixture came from another plate: it moves
+    sandwich, egg_plate = n("sandwich", make_state("on", "plate")), n("plate", contains("egg mixture"))
+    place = FunctionalUnit((egg_plate, sandwich), Motion("pick-and-place"),
+                           (n("plate", contains("egg mixture", "sandwich")), n("sandwich", "soaked", make_state("on", "plate"))))
+    assert relational_roles(place)[1].fate is Fate.MOVES and relational_roles(place)[1].source.role is None
     bowl, raw = n("bowl", contains("white rice")), n("white rice", inside("bowl"))
     fill = FunctionalUnit((n("pot", "empty"), bowl, raw), Motion("pour"), (pot, rice))
     outcome = _solve([fill, pour], [n("pot", "empty"), bowl, raw, plate, garlic], done)

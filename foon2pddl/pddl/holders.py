@@ -30,7 +30,8 @@ Rules, in order (each reads only the unit itself):
    disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains
    {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
    An object `in [C]` before and after a unit with one C that does not list it
-   stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`).
+   stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`),
+   unless that C's output node newly lists it (it came from another C).
    A second role of one label in the same holder is bound late too: a list names
    a label once (`plate (contains {bread})` under the sandwich's two breads, each
    brought on its own plate: the planner takes the second from where it is).
@@ -271,8 +272,9 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                 result.append(RelRole(r, None, Fate.STAYS, src, src))
             continue
         if src is not None and dst is not None and src.role is None and (src.relation, src.holder) == (
-                dst.relation, dst.holder) and dst.role is not None and labels.count(dst.holder) == 1:
-            src = dst  # in [pot] before and after, the unit's one pot not listing it: it stays in that pot
+                dst.relation, dst.holder) and dst.role is not None and labels.count(dst.holder) == 1 \
+                and r.label not in gained[dst.role]:
+            src = dst  # in [pot] before and after, the unit's one pot not taking it in: it stays there
         same = (src == dst) or (src is not None and dst is not None and src.holder == dst.holder
                                 and src.role is not None and src.role == dst.role)
         if same:
