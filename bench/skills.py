@@ -10,7 +10,7 @@ median of the R runs), and per macro step with a micro task its planning time
 search binary's, the child time). Reports the share of macro steps that decompose
 (floor 90 %), the median micro time per step (floor < 0.1 s) over every such step and
 over the steps solved afresh (not taken from an equal earlier task), the median
-whole-dish skill time (floor < 5 s), motion coverage of the files' units and of the
+whole-dish skill time (floor < 5 s), the objects a skill moves without holding them (`uncarried`: floor 0), motion coverage of the files' units and of the
 plans' firings, every step that did not decompose with its motion and reason, and
 the load average (wall times on a shared host mean little without it). As a bench
 area (`run(ctx)`) it reports the same figures.
@@ -34,6 +34,7 @@ from foon2pddl.planners.process import cpu_seconds
 from foon2pddl.planners.solve import plan
 from foon2pddl.skills import decompose, shipped_domain, shipped_table
 from foon2pddl.skills.decompose import StepStatus
+from foon2pddl.skills.domain import TRANSPORT
 from foon2pddl.skills.run import skills_encoding
 from foon2pddl.skills.source import trace_of
 from foon2pddl.skills.table import coverage
@@ -60,6 +61,23 @@ class Row:
     reused: int = 0  # steps (of one run) that took an equal earlier task's plan
     firings: list[str] = field(default_factory=list)
     misses: list[tuple[str, str, str]] = field(default_factory=list)  # (motion, status, reason)
+    uncarried: list[str] = field(default_factory=list)  # `step N: object (motion)` moved with no transport skill
+
+
+def uncarried(skills, trace) -> list[tuple[int, str]]:
+    """(step index, object id) of every object that stands free before a decomposed step (the robot can grasp
+    it), is in or on something else after it, and is named by no transport skill of that step: moved by a
+    skill that does not hold it. Read from the trace and the skill calls alone, not from the micro problems."""
+    out = []
+    for s in skills.steps:
+        if s.status is not StepStatus.DECOMPOSED:
+            continue
+        before, after = trace.after(s.index - 1), trace.after(s.index)
+        carried = {c.objects[0] for c in s.calls if c.skill in TRANSPORT}
+        out += [(s.index, oid) for oid, b in sorted(before.items())
+                if b.exists and after[oid].exists and b.holder is None and after[oid].holder is not None
+                and oid not in carried]
+    return out
 
 
 def check_file(path: Path, time_limit: float, encoding: str | None = None, repeat: int = 1) -> Row | None:
@@ -94,6 +112,7 @@ def check_file(path: Path, time_limit: float, encoding: str | None = None, repea
     row.firings = [s.unit.motion.label for s in trace.steps]
     row.misses = [(s.motion, str(s.status), s.reason.splitlines()[0][:160]) for s in skills.steps
                   if s.status is not StepStatus.DECOMPOSED]
+    row.uncarried = [f"step {k + 1}: {oid} ({skills.steps[k].motion})" for k, oid in uncarried(skills, trace)]
     return row
 
 
@@ -117,6 +136,7 @@ def summary(rows: list[Row]) -> list[tuple[str, float, str]]:
             ("macro steps", steps, "steps"), ("macro steps decomposed", 100.0 * done / steps if steps else 0.0, "%"),
             ("files at or above 90 % decomposed", sum(r.decomposed >= 0.9 * r.steps for r in planned), "files"),
             ("skill replay valid", sum(r.replay_ok for r in planned), "files"),
+            ("objects moved by a skill that does not hold them", sum(len(r.uncarried) for r in planned), "objects"),
             ("steps reusing an equal earlier micro task", sum(r.reused for r in planned), "steps"),
             ("micro time per step, median wall", _median(x for r in planned for x in r.micro_wall), "s"),
             ("micro time per step, median CPU", _median(x for r in planned for x in r.micro_cpu), "s"),
@@ -166,6 +186,8 @@ def main() -> None:
                   f"motions={','.join(row.firings)}", flush=True)
             for m in row.misses:
                 print("\t" + " | ".join(m), flush=True)
+            for m in row.uncarried:
+                print("\tmoved with no transport skill: " + m, flush=True)
     print(f"end: {load_text()}")
     for name, value, unit in summary(rows):
         print(f"{name}: {value:.4g} {unit}" if isinstance(value, float) else f"{name}: {value} {unit}")

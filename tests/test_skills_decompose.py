@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from bench.skills import uncarried
 from foon2pddl.model.foon import FunctionalUnit, Motion, Source, make_node, make_state
 from foon2pddl.model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep
 from foon2pddl.skills.decompose import StepStatus, decompose
@@ -148,11 +149,11 @@ def test_the_replay_rejects_a_plan_that_does_not_reach_the_step_effects():
 
 
 def test_an_impossible_step_is_reported_failed_not_dropped():
-    # the water jumps from the cup into the bowl by "chop": no chop can move it
+    # the water jumps from the cup into the bowl by a "chop" with no knife: no plan, and the reason names the tool
     jump = ("chop", [ObjectState("water_1", WATER, "bowl_1", IN), ObjectState("onion_1", ONION_CHOPPED, "board_1", ON)],
             ["water_1", "onion_1", "bowl_1"])
     plan = decompose(kitchen_trace(jump), shipped_table(), shipped_domain())
-    assert plan.steps[0].status is StepStatus.FAILED and "micro task" in plan.steps[0].reason
+    assert plan.steps[0].status is StepStatus.FAILED and "no tool to chop with" in plan.steps[0].reason
     assert plan.replay.ok  # kept as an abstract step: the replay jumps to the trace's state
 
 
@@ -175,7 +176,8 @@ def test_a_step_that_lists_no_tool_takes_the_motions_hand_skill():
 def test_without_a_hand_variant_a_tool_less_tool_step_fails_and_a_lacked_one_says_so():
     table = parse_table('{"motions": {"peel": "peel"}}', "t.json")
     plan = decompose(kitchen_trace(PEEL_BY_HAND), table, shipped_domain())
-    assert plan.steps[0].status is StepStatus.FAILED  # a knife skill with no knife: no plan
+    assert plan.steps[0].status is StepStatus.FAILED  # a knife skill with no knife: no plan, and the reason says so
+    assert plan.steps[0].reason.startswith("the step lists no tool to peel with"), plan.steps[0].reason
     lacking = decompose(kitchen_trace(PEEL_BY_HAND), shipped_table(), shipped_domain(), Robot.of(without=["peel-by-hand"]))
     assert lacking.steps[0].status is StepStatus.FAILED and "no peel-by-hand skill" in lacking.steps[0].reason
 
@@ -334,3 +336,72 @@ def test_a_transport_step_moves_what_it_sets_down_and_never_picks_up_and_puts_ba
 
 #: A later step that reads the skillet's restated phase (the replay carries it on).
 CHECK_STOVE = ("turn off", [ObjectState("stove_1", node("stove", "off"))], ["stove_1"])
+
+
+def test_food_in_a_container_or_a_pan_on_the_stove_is_no_tool():
+    # FOON (0045 pork chops): spread: cooking pan (contains {butter, vegetable oil}, on [stove]) -> cooking pan
+    # (greased {...}): no spatula listed; the oil in the pan held nothing and stayed, so it was taken for a tool
+    # (`take-out vegetable_oil_2, spread vegetable_oil_2 ...`); a tool stands free on the table
+    objects = {"oil_1": "vegetable oil", "pan_1": "cooking pan", "stove_1": "stove"}
+    initial = [ObjectState("oil_1", node("vegetable oil"), "pan_1", IN), ObjectState("pan_1", node("cooking pan"),
+               "stove_1", ON), ObjectState("stove_1", node("stove", "on"))]
+    step = ("spread", [ObjectState("pan_1", node("cooking pan", "greased"), "stove_1", ON)], ["oil_1", "pan_1"])
+    t = trace(objects, initial, [step])
+    problem = micro_problem(t, 0, "spread", Naming(t, shipped_domain(), 1), shipped_domain())
+    assert not any(a.predicate == "tool" for a in problem.init)
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.steps[0].status is StepStatus.FAILED and "no tool to spread with" in plan.steps[0].reason
+
+
+def test_a_hand_skill_never_carries_an_object_the_robot_picks_and_places_it():
+    # FOON (0037 french toast): heat: skillet (empty), stove (on) -> skillet (heated, on [stove]): the skillet goes
+    # onto the stove; a hand skill holds nothing, so the robot picks the skillet up and places it (was: `heat
+    # stove_1`, the skillet moving onto the stove by itself)
+    objects = {"skillet_1": "skillet", "stove_1": "stove"}
+    initial = [ObjectState("skillet_1", node("skillet", "empty")), ObjectState("stove_1", node("stove", "on"))]
+    step = ("heat", [ObjectState("skillet_1", node("skillet", "heated"), "stove_1", ON),
+                     ObjectState("stove_1", node("stove", "on"))], ["skillet_1", "stove_1"])
+    t = trace(objects, initial, [step])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert uncarried(plan, t) == []
+    assert [(c.skill, c.objects[0]) for c in plan.calls if c.skill != "heat"] == [("pick", "skillet_1"),
+                                                                                  ("place", "skillet_1")]
+    assert [c.skill for c in plan.calls].count("heat") == 1
+
+
+def test_a_tool_skill_that_moves_a_free_standing_object_has_it_set_down_by_the_robot():
+    # FOON (0013 creamy potato soup): grate: grater, bowl (empty), cheese (block) -> cheese (grated, in [bowl]):
+    # the block stood on the table; the robot puts it in the bowl and grates it there (was: grating it made the
+    # block appear in the bowl)
+    objects = {"cheese_1": "cheese", "grater_1": "grater", "bowl_1": "bowl"}
+    initial = [ObjectState("cheese_1", node("cheese", "block")), ObjectState("grater_1", node("grater", "clean")),
+               ObjectState("bowl_1", node("bowl", "empty"))]
+    step = ("grate", [ObjectState("cheese_1", node("cheese", "grated"), "bowl_1", IN)],
+            ["grater_1", "bowl_1", "cheese_1"])
+    t = trace(objects, initial, [step])
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert uncarried(plan, t) == []
+    assert ("grate", ("grater_1", "cheese_1")) in skills(plan)
+
+
+def test_a_portion_a_pour_moves_is_poured_from_the_holder_of_what_it_is_part_of():
+    # the relational encoding's portion in a pour (0037 french toast: some of the cubed butter in the bowl goes
+    # into the pan): the robot pours from the bowl the butter is in (was: `pick stove_1, pour from stove_1 over
+    # pan_1`, since the portion only appeared in the pan, whatever the robot held)
+    objects = {"butter_1": "butter", "butter_2": "butter", "tub_1": "bowl", "pan_1": "pan", "stove_1": "stove"}
+    cubed = node("butter", "cubed")
+    initial = [ObjectState("butter_1", cubed, "tub_1", IN), ObjectState("butter_2"),
+               ObjectState("tub_1", BOWL), ObjectState("pan_1", node("pan")), ObjectState("stove_1", node("stove"))]
+    step = ("pour", [ObjectState("butter_2", cubed, "pan_1", IN)], ["butter_1", "butter_2", "tub_1", "pan_1",
+                                                                       "stove_1"])
+    t = trace(objects, initial, [step])
+    problem = micro_problem(t, 0, "pour", Naming(t, shipped_domain(), 1), shipped_domain())
+    facts = {f"({a.predicate} {' '.join(a.args)})" for a in problem.init}
+    assert {"(in tub_1 butter_2)", "(moves-in sk-pour butter_2 pan_1)"} <= facts  # it stands where its source is
+    assert not any(a.predicate == "makes-in" for a in problem.init)  # not made in the pan by any pour
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("pick", ("tub_1", "workspace")), ("pour", ("tub_1", "pan_1")),
+                            ("place", ("tub_1", "workspace"))]

@@ -158,6 +158,9 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
         (status2, plan2, message2, _), reused2 = attempt(moved)
         if status2 == "solved":
             skill, problem, status, plan, reused = other, moved, status2, plan2, reused2
+    if status != "solved" and "?t" in {v for v, _ in domain.by_name[skill].params} and not _has_tool(problem):
+        return out(StepStatus.FAILED, f"the step lists no tool to {skill} with (none stands free on the table) and "
+                   f"the motion table gives {motion!r} no by-hand skill", problem, reused=reused)
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)

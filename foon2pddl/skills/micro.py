@@ -20,9 +20,13 @@ skill (pick-and-place) stay `graspable`, and their phase changes are tagged with
 skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
 are not (a robot pours water, it does not grasp it); one that stands free (salt FOON
 puts in no container) is, and is moved by holding it (its container, unnamed). A `tool` is
-a step object that holds nothing, stays where it is, and keeps its phase or becomes `dirty`
+a step object that stands free, holds nothing, stays where it is, and keeps its phase or becomes `dirty`
 (knife, spoon, whisk). What a transport step that moves something leaves in place starts in the phase FOON
-restates it in (`_restated`: no transport skill changes an object it does not set down).
+restates it in (`_restated`: no transport skill changes an object it does not set down). A tool or hand skill
+carries nothing that stands free: such an object that the step moves (the skillet a `heat` puts on the stove, the
+block of cheese grated into a bowl) gets no `moves-*` fact and is picked and set down by transport skills; a tool
+skill still moves what lies in or on a holder (the sauce a brush coats the rib with). A portion (`portions`) stands
+where its source is before every step but a tool or hand skill's: picked up there, or poured from its holder.
 
 Names: trace ids become PDDL names through one `NameTable` per trace (valid ids
 stay as they are), with the domain's constants, the workspace and the hands
@@ -123,7 +127,7 @@ class MicroProblem:
     init: tuple[Atom, ...]
     goal: tuple[Atom, ...]
     task: PlanningTask
-    #: Facts of the portions a transport step moves, where they stand before it (`portions`): the replay
+    #: Facts of the portions a transport or transfer step moves, where they stand before it (`portions`): the replay
     #: adds them before the step's skills, as the portion is separated from what it was part of.
     split: frozenset[Atom] = frozenset()
     #: (phase fact before, after) of the objects a transport step restates without moving them (`_restated`):
@@ -159,9 +163,10 @@ def works_on(domain: SkillDomain, skill: str) -> bool:
 
 
 def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid: set[str], holders: set) -> bool:
-    """A step object that holds nothing, stays where it is, and keeps its phase or becomes `dirty`."""
+    """A step object that stands free (on the workspace: the pepper in a bowl, the pan on the stove are no tools),
+    holds nothing, stays where it is, and keeps its phase or becomes `dirty`."""
     return (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
-            and (b.holder, b.relation) == (a.holder, a.relation)
+            and b.holder is None and a.holder is None
             and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node)))
 
 
@@ -205,7 +210,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     """The micro problem of step `index` carried out by `skill` (see the module doc). O(objects of the step)."""
     before, after = trace.after(index - 1), trace.after(index)
     ids = step_objects(trace, index)
-    split = portions(trace, index, ids) if skill in TRANSPORT else {}  # picked up as the objects they are part of
+    carries = works_on(domain, skill)  # a tool or hand skill: what stands free and moves, the robot carries
+    split = {} if carries else portions(trace, index, ids)  # picked up, or poured, from where their source is
     before = {**before, **split}
     restated = _restated(before, after, ids) if skill in TRANSPORT else {}
     found_before, before = before, {**before, **restated}  # no transport skill changes what it does not set down
@@ -233,7 +239,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
             statics.add(Atom("uses-up", (tag, n[oid])))
             sites[3].append(where(b))
         elif b.exists:
-            if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT:
+            if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT and not (
+                    carries and b.holder is None):
                 statics.add(Atom(f"moves-{rel(a)}", (tag, n[oid], where(a))))
                 sites[1].append(where(a))
                 if b.holder is not None:
@@ -247,7 +254,7 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
     tools = {oid for oid in ids if _is_tool(oid, found_before[oid], after[oid], touched, rigid, holders)}
     worked = [x for x in sites[0] if naming.back.get(x) not in tools]
-    if worked and works_on(domain, skill):
+    if worked and carries:
         targets = list(dict.fromkeys(worked))  # squeeze the lime, not the juicer its juice appears in
     else:
         targets = list(dict.fromkeys(x for _, found in sorted(sites.items()) for x in found))
