@@ -17,7 +17,7 @@ from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
 from ..planners.registry import UnknownPlanner, lookup
 from ..planners.result import plan_cost, sas_plan_text
-from ..planners.solve import PHASES, PlanOutcome, plan
+from ..planners.solve import PHASES, PlanOutcome, plan, plan_restoring
 from ..status import PlanStatus
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
@@ -108,6 +108,9 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 @costs_option
 @rates_option
 @constraints_options
+@click.option("--restore", is_flag=True,
+              help="Physical encodings: add generic restoring units (wash, empty, switch off; an assumption beyond "
+                   "FOON, see docs/pddl.md) and plan with the fewer objects they allow.")
 @click.option("--up-validate", is_flag=True,
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default=DEFAULT_FORMAT, show_default=True,
@@ -121,8 +124,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
           level, network, planner,
           planner_cmd, optimal, alias, search, evaluators, plan_file, time_limit, prune, costs, rates,
-          constraints_files, without_motions, without, must_use, up_validate, fmt, output, skills, skill_domain,
-          skill_table, without_skills, hands) -> None:
+          constraints_files, without_motions, without, must_use, restore, up_validate, fmt, output, skills,
+          skill_domain, skill_table, without_skills, hands) -> None:
     """Plan for a goal and print the task tree; the time of each phase goes to stderr (or into --format json).
 
     Exit status: 0 solved, 1 unsolvable, search gave up or time limit (reason on stderr), 2 bad input or planner error.
@@ -148,6 +151,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
+    if restore and (entries is not None or skills):
+        raise UsageError("--restore plans one goal at a time, without --skills")
     if entries is not None:
         if cons.items:
             raise UsageError("constraints plan one goal at a time (not a batch)")
@@ -172,9 +177,12 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                                 rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
+    if restore and not ENCODINGS[encoding].physical:
+        raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
     with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
                    f"time limit {time_limit:g} s)"):
-        outcome = plan(foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
+        outcome = (plan_restoring if restore else plan)(
+                       foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
                        up_validate=up_validate, constraints=cons, search=config, instances=counts,
                        categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())

@@ -82,6 +82,7 @@ from .relational_init import (
     scene_instances,
 )
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
+from .restore import discards
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
@@ -315,22 +316,23 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             continue
         state(v, label, before)
         after = plan.after_of(k) if bound[k] else s.after
+        # what is in or on a consumed object became part of the mixture too, and so did all of its label in its
+        # holder; what is in or on a container `--restore` empties is thrown away
+        sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label)) for node, rel in
+                 inside.get(label, ())] if s.fate is Fate.CONSUMED or (k == 0 and discards(unit)) else []
         if s.fate is Fate.CONSUMED:
             becomes(v, before, CONSUMED)
-            # what is in or on it became part of the mixture too, and so did all of its label in its holder
-            sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label))
-                     for node, rel in inside.get(label, ())]
             if r.source is not None and r.source.role is not None and bound[r.source.role]:
                 sweep += [(var[r.source.role], node, rel, f"{label} alike", ("alike", k, node))
                           for node, rel in relational_plan.alike_nodes(plan, s, inside)]
-            for h, node, rel, word, key in sweep:
-                if node.label in type_of:
-                    c = f"?{names.name(word, key=key)}"
-                    there, was = Atom(rel.value, (h, c)), Atom(IS, (c, const[node]))
-                    cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
-                                            var=c, type=type_of[node.label]))
         elif after is not None and after != before:
             becomes(v, before, after)
+        for h, node, rel, word, key in sweep:
+            if node.label in type_of:
+                c = f"?{names.name(word, key=key)}"
+                there, was = Atom(rel.value, (h, c)), Atom(IS, (c, const[node]))
+                cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
+                                        var=c, type=type_of[node.label]))
         src, dst = r.source, r.target
         if s.fate in (Fate.STAYS, Fate.SPLITS) and src is not None and src.role is not None and bound[src.role]:
             pre.append(Atom(src.relation.value, (var[src.role], v)))

@@ -29,12 +29,13 @@ from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.registry import Compiled
 from ..pddl.render import render
+from ..pddl.restore import with_restore
 from ..pddl.task import PlanningTask, candidate_alternatives
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .decode import Decoded, PlanDecodeError, check, finished, plan_tree, run_plan
 
-__all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan"]
+__all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan", "plan_restoring"]
 
 #: The planner named by the outcome of a goal that constraints exclude (nothing was planned).
 EXCLUDED = "constraints"
@@ -154,6 +155,25 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     result = run_planner(compiled.task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
                          optimal=optimal, time_limit=time_limit, search=search)
     return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
+
+
+def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
+                   instances: tuple[tuple[str, int], ...] = (), **options) -> PlanOutcome:
+    """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they allow.
+    When no plan is found at those counts (the encoding needs two of a label at once where the unfolded plan
+    reuses one), it plans again at the derived counts. A note gives the counts and which were used."""
+    augmented, counts = with_restore(foon, kitchen, goal, level, instances)
+    lowered = ", ".join(f"{label} {k}" for label, k in counts if (label, k) not in instances)
+    outcome = plan(augmented, kitchen, goal, encoding, level, instances=counts, **options)
+    note = ("restore: restoring units added (an assumption beyond FOON); objects of the labels they reuse: "
+            + (lowered or "none"))
+    if outcome.status != PlanStatus.SOLVED and lowered:
+        again = plan(augmented, kitchen, goal, encoding, level, instances=instances, **options)
+        if again.status == PlanStatus.SOLVED:
+            outcome, note = again, note + f" gave no plan ({outcome.status}): planned at the derived counts"
+    if outcome.decoded is None:
+        return outcome
+    return replace(outcome, decoded=replace(outcome.decoded, notes=(*outcome.decoded.notes, note)))
 
 
 class GoalReplanner:

@@ -1,0 +1,127 @@
+"""Generic restoring units (`plan`'s restore option) a cook may accept beyond FOON (wash, empty, switch off), and the
+object counts they allow.
+
+FOON has a unit for what its videos show; it rarely washes the knife or empties the bowl, so a plan over
+physical objects takes a fresh clean knife for every cut (`instance_counts`: one object per use). With
+the restore option, an assumption beyond FOON, the network gains restoring units: per label whose kitchen state
+`S` is a *ready* state (no place, every state one of `READY`: `knife (clean)`, `bowl (clean, empty)`,
+`stove (off)`), one unit per node `N` a unit of the network leaves an object of that label in (no place,
+not a kitchen node, not `S`), turning `N` back into `S`. Its motion says what it does (`restore_motion`):
+`wash` a node with `dirty`, `empty` a node that lists contents (they are thrown away), `turn off` a node
+that is `on`, else `restore`. Its source is `assumed-restore:K` (K numbers them), so every note and plan step
+says it is an assumption.
+
+The counts: the plan `instance_counts.derive_counts` unfolds is replayed object by object in firing
+order (`restore_counts`); a unit that needs an object in a ready kitchen state takes one there, else
+restores one of that label that sits in a node it can restore and that no later firing needs, else the
+kitchen needs one more. Each label with one ready kitchen state gets that peak as its count (an
+`--instances` override the caller's own overrides win over). O(firings x roles x nodes of the label).
+
+>>> from foon2pddl.model.foon import make_node, make_state
+>>> restore_motion(make_node("knife", [make_state("dirty")]))
+'wash'
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterable, Mapping
+
+from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source
+from ..model.goal import Goal
+from ..model.kitchen import Kitchen
+from ..model.places import listed, places
+from .encoding import at_level
+from .instance_counts import InstanceCounts, derive_counts
+from .pairing import RoleKind, unit_roles
+
+__all__ = ["READY", "RESTORE_SOURCE", "discards", "ready_states", "restore_counts", "restore_motion", "restoring_network",
+           "with_restore"]
+
+#: States a ready kitchen state may have (and nothing else).
+READY = frozenset({"clean", "empty", "off", "washed", "dry", "closed"})
+#: The source path of every restoring unit (`assumed-restore:K`).
+RESTORE_SOURCE = "assumed-restore"
+
+
+def ready_states(kitchen: Iterable[ObjectNode]) -> dict[str, ObjectNode]:
+    """Label -> its one ready kitchen state (labels with none, or several, are left out)."""
+    found: dict[str, list[ObjectNode]] = {}
+    for n in kitchen:
+        if not places(n) and n.states and all(s.label in READY for s in n.states):
+            found.setdefault(n.label, []).append(n)
+    return {label: ns[0] for label, ns in sorted(found.items()) if len(ns) == 1}
+
+
+def restore_motion(node: ObjectNode) -> str:
+    """What turns `node` back into a ready state: `wash`, `empty`, `turn off`, or `restore`."""
+    labels = {s.label for s in node.states}
+    if "dirty" in labels:
+        return "wash"
+    if listed(node):
+        return "empty"
+    return "turn off" if "on" in labels else "restore"
+
+
+def discards(unit: FunctionalUnit) -> bool:
+    """Whether `unit` is a restoring unit that empties a container: what is in or on it is thrown away."""
+    return bool(unit.sources) and unit.sources[0].path == RESTORE_SOURCE and unit.motion.label == "empty"
+
+
+def restoring_network(foon: Foon, kitchen: Iterable[ObjectNode]) -> tuple[Foon, dict[str, ObjectNode]]:
+    """`foon` with the restoring units (module doc) appended, and the ready state of each label they restore."""
+    kitchen = frozenset(kitchen)
+    ready = ready_states(kitchen)
+    targets = sorted({n for u in foon.units for n in u.outputs
+                      if n.label in ready and n not in kitchen and n != ready[n.label] and not places(n)})
+    units = tuple(FunctionalUnit((n,), Motion(restore_motion(n)), (ready[n.label],), (Source(RESTORE_SOURCE, k),))
+                  for k, n in enumerate(targets, start=1))
+    return Foon(foon.units + units), {label: ready[label] for label in sorted({n.label for n in targets})}
+
+
+def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, ObjectNode]) -> dict[str, int]:
+    """Label -> objects the unfolded plan of `counts` needs when restoring units reuse them (module doc);
+    only labels in `ready`, and only when `counts` has the unfolded plan ({} otherwise)."""
+    if not counts.unfolded:
+        return {}
+    firings = dict(counts.firings)
+    order = [u for u in counts.unfolded for _ in range(firings.get(u, 1))]
+    restorable = {u.inputs[0] for u in foon.units
+                  if u.sources and u.sources[0].path == RESTORE_SOURCE and u.outputs[0] == ready.get(u.inputs[0].label)}
+    ahead: Counter[ObjectNode] = Counter(r.before for u in order for r in unit_roles(foon.units[u]) if r.before)
+    at: Counter[ObjectNode] = Counter()
+    need: Counter[str] = Counter()
+    for u in order:
+        roles = unit_roles(foon.units[u])
+        ahead.subtract(r.before for r in roles if r.before)
+        for r in roles:
+            if r.before is None:
+                at[r.after] += 1
+                continue
+            if at[r.before] == 0:
+                free = [n for n in sorted(restorable) if n.label == r.label and at[n] > max(ahead[n], 0)]
+                if free and ready.get(r.label) == r.before:
+                    at[free[0]] -= 1  # restored: washed, emptied or switched off
+                else:
+                    need[r.label] += ready.get(r.label) == r.before
+                at[r.before] += 1
+            if r.kind is RoleKind.MOVED:
+                at[r.before] -= 1
+                at[r.after] += 1
+    placed = Counter(n.label for n, _ in counts.at_node)
+    alone = {label for label, node in ready.items() if placed[label] == 1 and (node, ) == tuple(
+        n for n, _ in counts.at_node if n.label == label)} - {label for label, _ in counts.unmade}
+    return {label: max(need[label], 1) for label in sorted(alone)}
+
+
+def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
+                 instances: tuple[tuple[str, int], ...] = ()) -> tuple[Foon, tuple[tuple[str, int], ...]]:
+    """`foon` with its restoring units, and the per-label counts they allow (`restore_counts`, at `level`),
+    `instances` (the caller's overrides) winning: what `plan` and `compile_goal` take to restore."""
+    augmented, ready = restoring_network(foon, kitchen.nodes)
+    inp = at_level(augmented, kitchen, goal, level)
+    original = range(len(foon.units))
+    counts = derive_counts(inp.foon, tuple(original), inp.kitchen, inp.candidates)
+    mine = restore_counts(inp.foon, counts, {n.label: n for n in ready_states(inp.kitchen).values()
+                                             if n.label in ready})
+    return augmented, tuple(sorted({**mine, **dict(instances)}.items()))

@@ -1,0 +1,89 @@
+"""`--restore`: restoring units beyond FOON (wash, empty, switch off) and the fewer objects they allow."""
+
+from __future__ import annotations
+
+from click.testing import CliRunner
+
+from foon2pddl.cli import main
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.restore import RESTORE_SOURCE, ready_states, restore_motion, restoring_network, with_restore
+from foon2pddl.planners import solve
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan, plan_restoring
+
+
+def n(label, *states):
+    return make_node(label, [s if not isinstance(s, str) else make_state(s) for s in states])
+
+
+CLEAN, DIRTY = n("knife", "clean"), n("knife", "dirty")
+FOODS = ("onion", "carrot", "celery")
+
+
+def _cuts() -> Foon:
+    """Three cuts in a row, each with a clean knife it leaves dirty; a mix of the three at the end."""
+    units = [FunctionalUnit((n(f, "whole"), CLEAN), Motion("chop"), (n(f, "chopped"), DIRTY)) for f in FOODS]
+    units.append(FunctionalUnit(tuple(n(f, "chopped") for f in FOODS), Motion("mix"), (n("soup", "mixed"),)))
+    return Foon(tuple(units))
+
+
+KITCHEN = Kitchen(frozenset({CLEAN, *(n(f, "whole") for f in FOODS)}))
+GOAL = Goal(GoalSpec("soup"), (n("soup", "mixed"),))
+
+
+def test_restore_motion_says_what_the_unit_does():
+    assert restore_motion(DIRTY) == "wash"
+    assert restore_motion(n("bowl", make_state("contains", "", ["salad"]))) == "empty"
+    assert restore_motion(n("stove", "on")) == "turn off"
+    assert restore_motion(n("pan", "heated")) == "restore"
+
+
+def test_ready_states_are_placeless_kitchen_states_of_ready_words_one_per_label():
+    kitchen = {CLEAN, n("bowl", "empty"), n("bowl", "clean", "empty"), n("pan", "clean", make_state("on", "stove")),
+               n("stove", "off")}
+    assert ready_states(kitchen) == {"knife": CLEAN, "stove": n("stove", "off")}  # two bowls; the pan has a place
+
+
+def test_the_network_gains_one_restoring_unit_per_node_it_leaves_a_ready_label_in():
+    augmented, ready = restoring_network(_cuts(), KITCHEN.nodes)
+    added = augmented.units[len(_cuts().units):]
+    assert ready == {"knife": CLEAN}
+    assert [(u.inputs, u.motion.label, u.outputs) for u in added] == [((DIRTY,), "wash", (CLEAN,))]
+    assert added[0].sources[0].path == RESTORE_SOURCE
+
+
+def test_one_knife_does_all_three_cuts_and_the_replay_holds():
+    without = plan(_cuts(), KITCHEN, GOAL, "relational")
+    assert [o.label for o in without.trace.objects].count("knife") == 3  # FOON's: a clean knife per cut
+    _, counts = with_restore(_cuts(), KITCHEN, GOAL)
+    assert dict(counts)["knife"] == 1
+    outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational")
+    assert outcome.status == "solved" and replay(outcome.trace).ok
+    assert [o.label for o in outcome.trace.objects].count("knife") == 1
+    assert [s.unit.motion.label for s in outcome.trace.steps].count("wash") == 2
+    assert any(x.startswith("restore: restoring units added") and "knife 1" in x for x in outcome.decoded.notes)
+    assert dict(with_restore(_cuts(), KITCHEN, GOAL, instances=(("knife", 2),))[1])["knife"] == 2  # the caller's wins
+
+
+def test_counts_too_low_for_the_encoding_fall_back_to_the_derived_ones(monkeypatch):
+    # the three knives are needed at once (the mix takes them dirty): one knife cannot do, the derived three can
+    smeared = [n("knife", "dirty", make_state("smeared", "", [f])) for f in FOODS]
+    units = [FunctionalUnit((n(f, "whole"), CLEAN), Motion("chop"), (n(f, "chopped"), knife))
+             for f, knife in zip(FOODS, smeared, strict=True)]
+    units.append(FunctionalUnit((*(n(f, "chopped") for f in FOODS), *smeared), Motion("mix"), (n("soup", "mixed"),)))
+    foon = Foon(tuple(units))
+    augmented, _ = with_restore(foon, KITCHEN, GOAL)
+    monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, (("knife", 1),)))
+    outcome = plan_restoring(foon, KITCHEN, GOAL, "instances", time_limit=30)
+    assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 3
+    assert any("knife 1 gave no plan" in x and "planned at the derived counts" in x for x in outcome.decoded.notes)
+
+
+def test_plan_cli_restore_needs_a_physical_encoding_and_one_goal():
+    runner = CliRunner()
+    result = runner.invoke(main, ["plan", "--goal", "guacamole", "--encoding", "tree", "--restore"])
+    assert result.exit_code == 2 and "--restore needs a physical encoding" in result.output
+    result = runner.invoke(main, ["plan", "--goal", "guacamole", "--encoding", "relational", "--restore"])
+    assert result.exit_code == 0 and "note: restore: restoring units added" in result.output
