@@ -12,10 +12,10 @@ import re
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
-from itertools import chain, compress
-from operator import attrgetter, ne
+from itertools import chain, compress, repeat
+from operator import attrgetter, is_not, ne
 
-from .bulk import bulk
+from .bulk import bulk, drain
 
 _WS = re.compile(r"\s+")
 
@@ -284,8 +284,9 @@ class Foon:
 
     @cached_property
     def dishes(self) -> frozenset[ObjectNode]:
-        """The nodes some unit outputs marked as its recipe's dish (the `O` line's 4th field)."""
-        return frozenset(n for u in self.units for n in u.outputs if n.dish is not None)
+        """The nodes some unit outputs marked as its recipe's dish (the `O` line's 4th field). C-level loops."""
+        outputs = list(chain.from_iterable(map(attrgetter("outputs"), self.units)))
+        return frozenset(compress(outputs, map(is_not, map(attrgetter("dish"), outputs), repeat(None))))
 
     @cached_property
     def motions(self) -> tuple[str, ...]:
@@ -329,14 +330,10 @@ def first_objects(units: Sequence[FunctionalUnit], ids: tuple[tuple[int, ...], .
     """Node number -> the first object listed for it on `side` (`inputs` or `outputs`, with `ids` the table's
     numbers of that side), in order of first appearance there. Equal nodes may differ in what is not their
     identity (motion flag, goal and dish marks); the first one listed stands for them, as in a set or dict of
-    nodes built by going through the units. C-level loops."""
-    objects = list(chain.from_iterable(map(attrgetter(side), units)))
-    numbers = list(chain.from_iterable(ids))
-    order = dict.fromkeys(numbers)
-    objects.reverse()
-    numbers.reverse()
-    first = dict(zip(numbers, objects, strict=True))  # the last write, i.e. the first occurrence, wins
-    return {n: first[n] for n in order}
+    nodes built by going through the units. One C-level pass of `dict.setdefault` (the first write wins)."""
+    first: dict[int, ObjectNode] = {}
+    drain(map(first.setdefault, chain.from_iterable(ids), chain.from_iterable(map(attrgetter(side), units))))
+    return first
 
 
 def _index(side: tuple[tuple[int, ...], ...], objects: dict[int, ObjectNode]) -> dict[ObjectNode, tuple[int, ...]]:
