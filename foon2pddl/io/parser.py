@@ -264,7 +264,8 @@ class _Reader:
 
         node_of, motion_of, number = _Made(new_object).__getitem__, _Made(new_motion).__getitem__, number_of.__getitem__
         # each piece: the rest of a separator line (of a virtual one before line `first`), then its block's lines
-        pieces = ("\n" + text).split("\n//")
+        pieces = text.split("\n//")  # as `("\n" + text).split("\n//")` gives them, without copying the text:
+        pieces[:1] = ["", pieces[0][2:]] if text.startswith("//") else ["\n" + pieces[0]]
         pieces[-1] = pieces[-1].removesuffix("\n")  # the final newline
         line = first - 1  # the line of the separator that opens the piece
         try:
