@@ -79,8 +79,10 @@ def _blocking(text, option="without-motion pour"):
 def test_a_robot_without_pour_gets_the_blocking_node_native_retrieval_names_under_the_option_given(goal, network):
     native, result = _pourless((), goal, *network)
     assert native.exit_code == 1 and _blocking(native.stderr), native.output  # every example dish pours
-    assert result.exit_code == 1 and result.stdout == ""
+    assert result.exit_code == 1 and json.loads(result.stdout)["status"] == "unsolvable"  # one JSON document
     assert _blocking(result.stderr, "without-skill pour").group(1) == _blocking(native.stderr).group(1)
+    assert _blocking(json.loads(result.stdout)["reason"], "without-skill pour").group(1) == _blocking(
+        native.stderr).group(1)
     assert "without-motion" not in result.stderr  # the user gave --without-skill, not --without-motion
     assert "constraints to relax: `without-skill pour`\n" in result.stderr
 

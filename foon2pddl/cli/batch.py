@@ -18,13 +18,20 @@ TREE_EXTENSIONS = {"steps": "txt", "recipe": "txt", "foon": "foon", "json": "jso
 
 
 def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Path | None,
-                  fmt: str | None = None) -> list[GoalEntry] | None:
+                  fmt: str | None = None, output: Path | None = None) -> list[GoalEntry] | None:
     """The goals of a batch run, or None for a single-goal run (one `--goal` or `--goal-file`, no
-    `--goals`, not a table format): single-goal runs behave exactly as before batches existed."""
+    `--goals`, not a table format): single-goal runs behave exactly as before batches existed.
+    A tree format given with `--format` (json, svg, ...) and no `-o DIR` is a usage error: a batch prints
+    its table, and the tree format would be ignored."""
     if goals_file is None and len(goal) <= 1 and fmt not in TABLE_FORMATS:
         return None
     if goal_file is not None:
         raise UsageError("--goal-file names one goal; use --goals FILE for a batch")
+    ctx = click.get_current_context(silent=True)
+    if (fmt is not None and fmt not in TABLE_FORMATS and output is None and ctx is not None
+            and ctx.get_parameter_source("fmt") is not click.core.ParameterSource.DEFAULT):
+        raise UsageError(f"--format {fmt}: a batch of goals prints one table (--format text, csv, or jsonl: one "
+                         f"JSON object per goal); {fmt} is the format of the tree files it writes with -o DIR")
     entries = []
     for text in goal:
         try:

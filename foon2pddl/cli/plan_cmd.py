@@ -54,8 +54,10 @@ def timing_line(timings: dict[str, float]) -> str:
     return ", ".join(f"{p} {timings[p]:.3f} s" for p in PHASES if p in timings)
 
 
-def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str | None) -> str:
-    """The outcome as one JSON document (status, plan, phases, validation, tree)."""
+def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str | None,
+                 reason: str | None = None) -> str:
+    """The outcome as one JSON document (status, plan, phases, validation, tree; `reason`: why there is no plan,
+    the words the text output's `reason:` line gives)."""
     d = outcome.decoded
 
     def check(v):
@@ -69,6 +71,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "status": outcome.status,
         "planner": outcome.result.planner,
         "message": outcome.message or outcome.result.message,
+        "reason": reason,
         "encoding": outcome.task.encoding,
         "level": outcome.task.level,
         "plan": list(outcome.steps),
@@ -131,7 +134,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     Exit status: 0 solved, 1 unsolvable, search gave up or time limit (reason on stderr), 2 bad input or planner error.
     """
     check_skill_usage(skills, skill_domain, paths, fmt)
-    entries = batch_entries(goal, goals_file, goal_file, fmt)
+    entries = batch_entries(goal, goals_file, goal_file, fmt, output)
     if skills and entries is not None:
         raise UsageError("--skills plans one goal at a time (not a batch)")
     check_output(output, directory=entries is not None or skills)
@@ -194,8 +197,10 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         view = outcome.compiled.view
         if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
+    explain = status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics
     if fmt == "json":
-        data = outcome_json(outcome, timings, data)
+        data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]
+                            if explain else None)
     else:
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
@@ -210,7 +215,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             click.echo("note: " + note, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
             expansion_notes(outcome.tree)
-        if status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:
+        if explain:
             reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
             click.echo("reason: " + reason, err=True)
             if NETWORKS[network].as_read and not cons.items and not makes:

@@ -103,7 +103,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     cons, motion_rates, _ = constraint_inputs(constraints_files, without_motions, without, must_use, rates)
     if METHODS[method].needs_rates and motion_rates is None:
         raise UsageError(f"--method {method} needs --rates FILE (motion<TAB>rate) or rates in a --constraints file")
-    entries = batch_entries(goal, goals_file, goal_file, fmt)
+    entries = batch_entries(goal, goals_file, goal_file, fmt, output)
     if entries is not None and cons.items:
         raise UsageError("constraints apply to one goal at a time (not with a batch of goals)")
     net, view = load_view(paths, kitchen, level, network, containment, utensils,

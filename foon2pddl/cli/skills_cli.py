@@ -118,17 +118,20 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: 
                                constraints=cons, **options)
     except GoalExcluded as exc:
         click.echo(f"unsolvable (robot and constraints): {exc}", err=True)
+        _failed_json(fmt, output, PlanStatus.UNSOLVABLE, encoding, "robot and constraints", str(exc))
         ctx.exit(1)
     outcome, plan = done.outcome, done.skills
     if plan is None:
-        click.echo(f"{outcome.status} ({outcome.result.planner}): {outcome.message or outcome.result.message}",
-                   err=True)
+        message = outcome.message or outcome.result.message
+        click.echo(f"{outcome.status} ({outcome.result.planner}): {message}", err=True)
+        reason = None
         if outcome.status == PlanStatus.UNSOLVABLE:
             from ..model.constraints import combine
             from ..skills.profile import robot_constraints
 
             reason, _ = why_unsolvable(foon, kitchen, goal, combine(cons, robot_constraints(table, robot)), encoding)
             click.echo("reason: " + reason, err=True)
+        _failed_json(fmt, output, outcome.status, encoding, message, reason)
         ctx.exit(1 if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.TIMEOUT) else 2)
     if fmt == "json":
         text = json.dumps({"status": outcome.status, "encoding": outcome.task.encoding,
@@ -156,3 +159,12 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: 
         emit(text, None)
     if not plan.replay.ok:
         ctx.exit(2)
+
+
+def _failed_json(fmt: str, output: Path | None, status: str, encoding: str, message: str, reason: str | None) -> None:
+    """With --format json (and no -o DIR, which gets all its files or none), the one JSON document of a run with
+    no macro plan: the keys of a skill plan's, empty, with the planner's message and the reason."""
+    if fmt == "json" and output is None:
+        emit(json.dumps({"status": status, "encoding": encoding, "message": message, "reason": reason, "plan": [],
+                         "ok": False, "replay": None, "macro_steps": 0, "decomposed": 0, "steps": [], "skills": []},
+                        indent=2) + "\n", None)
