@@ -147,7 +147,7 @@ def physical_context(data: ReportData, summary: dict) -> dict:
         "gen_means": None if gen is None else {
             f: statistics.fmean(getattr(g, f) for g in gen[2]) for f in ("category", "concrete", "concrete_executable")},
         "physical_planners": physical_planners_md(data),
-        "planner_means": [{"solver": s, "network": net_name(n), "mean": m} for s, n, m in planner_means(data)],
+        "planner_means": ", ".join(f"`{s}` {net_name(n)} {_cell(m)}" for s, n, m in planner_means(data)),
         "top_short": list(dict.fromkeys(f"`{label}`" for _, label, _, _ in short_labels(data, ref or REFERENCE, 6)))[:3],
     }
 
