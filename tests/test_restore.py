@@ -57,14 +57,16 @@ def test_the_network_gains_one_restoring_unit_per_node_it_leaves_a_ready_label_i
 def test_one_knife_does_all_three_cuts_and_the_replay_holds():
     without = plan(_cuts(), KITCHEN, GOAL, "relational")
     assert [o.label for o in without.trace.objects].count("knife") == 3  # FOON's: a clean knife per cut
-    _, counts = with_restore(_cuts(), KITCHEN, GOAL)
-    assert dict(counts)["knife"] == 1
+    _, counted = with_restore(_cuts(), KITCHEN, GOAL)
+    assert dict(counted.counts) == {CLEAN: 1}
     outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational")
     assert outcome.status == "solved" and replay(outcome.trace).ok
     assert [o.label for o in outcome.trace.objects].count("knife") == 1
     assert [s.unit.motion.label for s in outcome.trace.steps].count("wash") == 2
-    assert any(x.startswith("restore: restoring units added") and "knife 1" in x for x in outcome.decoded.notes)
-    assert dict(with_restore(_cuts(), KITCHEN, GOAL, instances=(("knife", 2),))[1])["knife"] == 2  # the caller's wins
+    assert any(x.startswith("restore: restoring units added") and "1 x knife (clean)" in x
+               for x in outcome.decoded.notes)
+    stated = Kitchen(KITCHEN.nodes, counts=((CLEAN, 2),))
+    assert dict(with_restore(_cuts(), stated, GOAL)[1].counts) == {CLEAN: 2}  # the kitchen's own count wins
 
 
 def test_counts_too_low_for_the_encoding_fall_back_to_the_derived_ones(monkeypatch):
@@ -75,10 +77,11 @@ def test_counts_too_low_for_the_encoding_fall_back_to_the_derived_ones(monkeypat
     units.append(FunctionalUnit((*(n(f, "chopped") for f in FOODS), *smeared), Motion("mix"), (n("soup", "mixed"),)))
     foon = Foon(tuple(units))
     augmented, _ = with_restore(foon, KITCHEN, GOAL)
-    monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, (("knife", 1),)))
+    monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, Kitchen(KITCHEN.nodes, counts=((CLEAN, 1),))))
     outcome = plan_restoring(foon, KITCHEN, GOAL, "instances", time_limit=30)
     assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 3
-    assert any("knife 1 gave no plan" in x and "planned at the derived counts" in x for x in outcome.decoded.notes)
+    assert any("1 x knife (clean) gave no plan" in x and "planned at the derived counts" in x
+               for x in outcome.decoded.notes)
 
 
 def test_plan_cli_restore_needs_a_physical_encoding_and_one_goal():
@@ -87,3 +90,16 @@ def test_plan_cli_restore_needs_a_physical_encoding_and_one_goal():
     assert result.exit_code == 2 and "--restore needs a physical encoding" in result.output
     result = runner.invoke(main, ["plan", "--goal", "guacamole", "--encoding", "relational", "--restore"])
     assert result.exit_code == 0 and "note: restore: restoring units added" in result.output
+
+
+def test_compile_cli_restore_writes_the_restoring_actions_marked_as_assumed(tmp_path):
+    runner = CliRunner()
+    args = ["compile", "--goal", "guacamole", "--encoding", "relational", "-o"]
+    plain = runner.invoke(main, [*args, str(tmp_path / "plain")])
+    result = runner.invoke(main, [*args, str(tmp_path / "restore"), "--restore"])
+    assert plain.exit_code == 0 and result.exit_code == 0, result.output
+    domain = (tmp_path / "restore" / "domain.pddl").read_text()
+    assert "assumed-restore:1" in domain and "assumed-restore" not in (tmp_path / "plain" / "domain.pddl").read_text()
+    batch = runner.invoke(main, ["compile", "--goal", "guacamole", "--goal", "salsa", "--encoding", "relational",
+                                 "--restore", "-o", str(tmp_path / "batch")])
+    assert batch.exit_code == 2 and "one goal at a time" in batch.output

@@ -14,6 +14,7 @@ from ..io.rates import read_rates
 from ..pddl.compile import compile_task, encoding_named
 from ..pddl.constraints import GoalExcluded
 from ..pddl.render import render
+from ..pddl.restore import with_restore
 from ..pddl.task import PlanningTask, goal_at_start
 from ..pddl.untyped import untyped
 from . import main
@@ -40,9 +41,10 @@ from .reasons import ALREADY_HELD
 def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | None, encoding: str, level: int,
                prune: bool, costs: str | None, rates: Path | None, network: str = DEFAULT_NETWORK,
                containment: str = "strict", utensils: Path | None = None, instances: tuple[str, ...] = (),
-               category_types: bool = False, constraints=((), (), (), ())) -> PlanningTask:
+               category_types: bool = False, constraints=((), (), (), ()), restore: bool = False) -> PlanningTask:
     """Load network, kitchen, goal, rates and constraints (files, without-motion, without, must-use labels)
-    as the CLI options say, and compile (FoonError on bad input; GoalExcluded when nothing is left)."""
+    as the CLI options say, and compile (FoonError on bad input; GoalExcluded when nothing is left); with
+    `restore`, the network gains restoring units and the counts they allow (`pddl.restore.with_restore`)."""
     cons, motion_rates, costs = constraint_inputs(*constraints, rates, costs)
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
@@ -55,8 +57,13 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     fixpoint = not encoding_named(encoding).lifted  # (see `unreachable_reason`)
     if fixpoint and (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
+    foon, kit = view.foon, view.kitchen
+    if restore:
+        if not encoding_named(encoding).physical:
+            raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
+        foon, kit = with_restore(foon, kit, target, level)
     with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
-        task = compile_task(view.foon, view.kitchen, target, encoding, level, prune, costs, motion_rates, cons,
+        task = compile_task(foon, kit, target, encoding, level, prune, costs, motion_rates, cons,
                             **encoder_options(encoding, instances, category_types, view.foon))
     if (why := unreachable_reason(view.foon, view.kitchen, target, task, fixpoint=fixpoint)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
@@ -87,9 +94,12 @@ def encoder_options(encoding: str, instances: tuple[str, ...], category_types: b
                    "per goal (DIR/<goal>.pddl), the goal in its :goal.")
 @click.option("--untyped", "untype", is_flag=True, default=False,
               help="No :typing: each type a static predicate type_<T> (for planners without subtypes, Tamer).")
+@click.option("--restore", is_flag=True,
+              help="Physical encodings: add generic restoring units (wash, empty, switch off; an assumption beyond "
+                   "FOON, see docs/pddl.md) and the fewer objects they allow.")
 def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, encoding, instances, category_types,
              level, network, prune, costs, rates, constraints_files, without_motions, without, must_use, output_dir,
-             fmt, shared, untype) -> None:
+             fmt, shared, untype, restore) -> None:
     """Compile a goal over the network into PDDL: DIR/domain.pddl and DIR/problem.pddl (written atomically).
 
     Several goals (--goal repeated, --goals FILE) compile into one subdirectory each, with one table;
@@ -102,8 +112,8 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
     check_output(output_dir, directory=True)
     entries = batch_entries(goal, goals_file, goal_file, "text" if shared else None)
     if entries is not None:
-        if constraints_files or without_motions or without or must_use:
-            raise UsageError("constraints compile one goal at a time (not a batch)")
+        if constraints_files or without_motions or without or must_use or restore:
+            raise UsageError("constraints and --restore compile one goal at a time (not a batch)")
         if costs == "success-rate" and rates is None:
             raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
         _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
@@ -112,7 +122,8 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
                              **encoder_options(encoding, instances, category_types, view.foon))
     try:
         task = build_task(paths, goal, goal_file, kitchen, encoding, level, prune, costs, rates, network, containment,
-                          utensils, instances, category_types, (constraints_files, without_motions, without, must_use))
+                          utensils, instances, category_types, (constraints_files, without_motions, without, must_use),
+                          restore)
     except GoalExcluded as exc:
         click.echo(f"cannot compile: {exc}", err=True)
         click.get_current_context().exit(1)

@@ -317,7 +317,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
         state(v, label, before)
         after = plan.after_of(k) if bound[k] else s.after
         # what is in or on a consumed object became part of the mixture too, and so did all of its label in its
-        # holder; what is in or on a container `--restore` empties is thrown away
+        # holder; what is in or on a container a restoring unit empties is thrown away
         sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label)) for node, rel in
                  inside.get(label, ())] if s.fate is Fate.CONSUMED or (k == 0 and discards(unit)) else []
         if s.fate is Fate.CONSUMED:

@@ -16,7 +16,10 @@ Rules, in order (each reads only the unit itself):
    its label: `salad bowl (contains {salad})` beside `carrot salad (in [salad
    bowl])`, `oil (in [pan])` where the pan is a `cooking pan`. A name no role of
    the unit has is read as the one role whose label it is the head of, or whose
-   head it is (last words; `unit_aliases`); every such reading is reported
+   head it is (last words; `unit_aliases`), and a place no label matches so, used
+   by an output node and no ingredient list, as the one role whose node lists what
+   is placed there (`lemonade (in [cup])` in the drinking glass that lists it);
+   every such reading is reported
    (`holder_words.mismatches`), and the replay reads the task's lists through the same
    readings (`holder_words.task_aliases`).
 1. **Places.** A node's place is its first `in [C]` / `on [C]` state (a bare `on`
@@ -169,12 +172,14 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
             out[name] = match[0]
     lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
              for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
+    sides = [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]
     for name in sorted(names - labels - lists - set(out)):  # a place only: the one role listing what is there
-        takers, put = set(), set()
-        for side in [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]:
+        takers = set()
+        for side in sides:
             put = {r.label for n, r in side if name in (c for _, c in places(n))}
             takers |= {r.label for n, r in side if r.label not in put and listed(n) & put}
-        out.update({name: takers.pop()} if len(takers) == 1 and put else {})  # `put`: some output node's place
+        if len(takers) == 1 and any(name in (c for _, c in places(n)) for n, _ in sides[1]):
+            out[name] = takers.pop()
     return tuple(sorted(out.items()))
 
 

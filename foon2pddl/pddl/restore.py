@@ -14,8 +14,8 @@ says it is an assumption.
 The counts: the plan `instance_counts.derive_counts` unfolds is replayed object by object in firing
 order (`restore_counts`); a unit that needs an object in a ready kitchen state takes one there, else
 restores one of that label that sits in a node it can restore and that no later firing needs, else the
-kitchen needs one more. Each label with one ready kitchen state gets that peak as its count (an
-`--instances` override the caller's own overrides win over). O(firings x roles x nodes of the label).
+kitchen needs one more. Each ready kitchen state gets that peak as its stated count (`2 x knife (clean)`;
+the kitchen's own stated counts, and `--instances` overrides, win). O(firings x roles x nodes of the label).
 
 >>> from foon2pddl.model.foon import make_node, make_state
 >>> restore_motion(make_node("knife", [make_state("dirty")]))
@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
+from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source
 from ..model.goal import Goal
@@ -34,6 +35,7 @@ from ..model.places import listed, places
 from .encoding import at_level
 from .instance_counts import InstanceCounts, derive_counts
 from .pairing import RoleKind, unit_roles
+from .prune import restoring_units
 
 __all__ = ["READY", "RESTORE_SOURCE", "discards", "ready_states", "restore_counts", "restore_motion", "restoring_network",
            "with_restore"]
@@ -68,20 +70,24 @@ def discards(unit: FunctionalUnit) -> bool:
     return bool(unit.sources) and unit.sources[0].path == RESTORE_SOURCE and unit.motion.label == "empty"
 
 
-def restoring_network(foon: Foon, kitchen: Iterable[ObjectNode]) -> tuple[Foon, dict[str, ObjectNode]]:
-    """`foon` with the restoring units (module doc) appended, and the ready state of each label they restore."""
+def restoring_network(foon: Foon, kitchen: Iterable[ObjectNode],
+                      among: Iterable[int] | None = None) -> tuple[Foon, dict[str, ObjectNode]]:
+    """`foon` with the restoring units (module doc) appended, for the nodes the units `among` (default: all)
+    leave objects in, and the ready state of each label they restore."""
     kitchen = frozenset(kitchen)
     ready = ready_states(kitchen)
-    targets = sorted({n for u in foon.units for n in u.outputs
+    units = foon.units if among is None else [foon.units[u] for u in among]
+    targets = sorted({n for u in units for n in u.outputs
                       if n.label in ready and n not in kitchen and n != ready[n.label] and not places(n)})
     units = tuple(FunctionalUnit((n,), Motion(restore_motion(n)), (ready[n.label],), (Source(RESTORE_SOURCE, k),))
                   for k, n in enumerate(targets, start=1))
     return Foon(foon.units + units), {label: ready[label] for label in sorted({n.label for n in targets})}
 
 
-def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, ObjectNode]) -> dict[str, int]:
-    """Label -> objects the unfolded plan of `counts` needs when restoring units reuse them (module doc);
-    only labels in `ready`, and only when `counts` has the unfolded plan ({} otherwise)."""
+def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, ObjectNode]) -> dict[ObjectNode, int]:
+    """Ready kitchen node -> objects the unfolded plan of `counts` needs in it when restoring units reuse them
+    (module doc); only the nodes of `ready` the counts place objects in, and only when `counts` has the
+    unfolded plan ({} otherwise)."""
     if not counts.unfolded:
         return {}
     firings = dict(counts.firings)
@@ -90,7 +96,7 @@ def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, Objec
                   if u.sources and u.sources[0].path == RESTORE_SOURCE and u.outputs[0] == ready.get(u.inputs[0].label)}
     ahead: Counter[ObjectNode] = Counter(r.before for u in order for r in unit_roles(foon.units[u]) if r.before)
     at: Counter[ObjectNode] = Counter()
-    need: Counter[str] = Counter()
+    need: Counter[ObjectNode] = Counter()
     for u in order:
         roles = unit_roles(foon.units[u])
         ahead.subtract(r.before for r in roles if r.before)
@@ -103,25 +109,26 @@ def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, Objec
                 if free and ready.get(r.label) == r.before:
                     at[free[0]] -= 1  # restored: washed, emptied or switched off
                 else:
-                    need[r.label] += ready.get(r.label) == r.before
+                    need[r.before] += 1
                 at[r.before] += 1
             if r.kind is RoleKind.MOVED:
                 at[r.before] -= 1
                 at[r.after] += 1
-    placed = Counter(n.label for n, _ in counts.at_node)
-    alone = {label for label, node in ready.items() if placed[label] == 1 and (node, ) == tuple(
-        n for n, _ in counts.at_node if n.label == label)} - {label for label, _ in counts.unmade}
-    return {label: max(need[label], 1) for label in sorted(alone)}
+    wanted = set(ready.values())
+    return {n: max(need[n], 1) for n, _ in counts.at_node if n in wanted}
 
 
-def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
-                 instances: tuple[tuple[str, int], ...] = ()) -> tuple[Foon, tuple[tuple[str, int], ...]]:
-    """`foon` with its restoring units, and the per-label counts they allow (`restore_counts`, at `level`),
-    `instances` (the caller's overrides) winning: what `plan` and `compile_goal` take to restore."""
-    augmented, ready = restoring_network(foon, kitchen.nodes)
+def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3) -> tuple[Foon, Kitchen]:
+    """`foon` with its restoring units, and `kitchen` stating the counts they allow in its ready states
+    (`restore_counts`, at `level`; the kitchen's own stated counts win): what `plan` and `compile_goal` take."""
+    plain = at_level(foon, kitchen, goal, level)  # restoring units only for what the goal's units leave
+    augmented, ready = restoring_network(foon, kitchen.nodes, restoring_units(plain.foon, plain.kitchen,
+                                                                              plain.candidates))
     inp = at_level(augmented, kitchen, goal, level)
-    original = range(len(foon.units))
-    counts = derive_counts(inp.foon, tuple(original), inp.kitchen, inp.candidates)
+    counts = derive_counts(inp.foon, tuple(range(len(foon.units))), inp.kitchen, inp.candidates,
+                           stated=kitchen.project(level).stated_counts())
     mine = restore_counts(inp.foon, counts, {n.label: n for n in ready_states(inp.kitchen).values()
                                              if n.label in ready})
-    return augmented, tuple(sorted({**mine, **dict(instances)}.items()))
+    if level < kitchen.level:  # counts are stated at the kitchen's own level
+        return augmented, kitchen
+    return augmented, replace(kitchen, counts=tuple(sorted({**mine, **dict(kitchen.counts)}.items())))

@@ -157,7 +157,7 @@ class _Replay:
         self.found: list[Disagreement] = []
         self.active: set[tuple] = set()
         self.seen: set[str] = set()  # objects that have existed: with no node later, they are undescribed
-        self.read: dict[str | None, Mapping[str, str]] = {}  # object -> the aliases of the step that set its node
+        self.read: dict[str | None, Mapping[str, str]] = {}  # object -> its aliases and the setting step's
 
     def present(self, state: ObjectState) -> bool:
         """Physically there: existing, or made earlier and not consumed, with no FOON node any more."""
@@ -169,8 +169,7 @@ class _Replay:
 
     def reading(self, oid: str | None) -> Mapping[str, str]:
         """The names `oid`'s node is read through: the task's aliases, and those of the step that set it."""
-        own = self.read.get(oid)
-        return {**self.aliases, **own} if own else self.aliases
+        return self.read.get(oid, self.aliases)
 
     def places(self, node: ObjectNode | None, oid: str | None = None) -> tuple[tuple[Relation, str], ...]:
         return tuple((r, self.reading(oid).get(c, c)) for r, c in places(node))
@@ -283,7 +282,7 @@ class _Replay:
 
         for b in step.bindings:  # a node the step sets is the unit's words: read through its own aliases
             if after[b.object].node not in (None, before[b.object].node):
-                self.read[b.object] = dict(step.aliases)
+                self.read[b.object] = {**self.aliases, **dict(step.aliases)}
         for c in sorted(step.changes, key=lambda c: c.id):
             if c.id not in bound and c != before[c.id]:
                 add(DisagreementKind.UNBOUND_CHANGE, (c.id,), f"{c.id} changes, but the step does not use it")

@@ -157,18 +157,18 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
 
 
-def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
-                   instances: tuple[tuple[str, int], ...] = (), **options) -> PlanOutcome:
-    """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they allow.
-    When no plan is found at those counts (the encoding needs two of a label at once where the unfolded plan
+def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
+                   **options) -> PlanOutcome:
+    """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they
+    allow. When no plan is found at those counts (the encoding needs two at once where the unfolded plan
     reuses one), it plans again at the derived counts. A note gives the counts and which were used."""
-    augmented, counts = with_restore(foon, kitchen, goal, level, instances)
-    lowered = ", ".join(f"{label} {k}" for label, k in counts if (label, k) not in instances)
-    outcome = plan(augmented, kitchen, goal, encoding, level, instances=counts, **options)
-    note = ("restore: restoring units added (an assumption beyond FOON); objects of the labels they reuse: "
-            + (lowered or "none"))
+    augmented, counted = with_restore(foon, kitchen, goal, level)
+    lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
+    outcome = plan(augmented, counted, goal, encoding, level, **options)
+    note = "restore: restoring units added (an assumption beyond FOON); " + (
+        f"objects in the states they restore: {lowered}" if lowered else "no count lowered")
     if outcome.status != PlanStatus.SOLVED and lowered:
-        again = plan(augmented, kitchen, goal, encoding, level, instances=instances, **options)
+        again = plan(augmented, kitchen, goal, encoding, level, **options)
         if again.status == PlanStatus.SOLVED:
             outcome, note = again, note + f" gave no plan ({outcome.status}): planned at the derived counts"
     if outcome.decoded is None:
