@@ -160,17 +160,17 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
                    **options) -> PlanOutcome:
     """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they
-    allow. When no plan is found at those counts (the encoding needs two at once where the unfolded plan
-    reuses one), it plans again at the derived counts. A note gives the counts and which were used."""
+    allow. When that gives no valid plan (the encoding needs two at once where the unfolded plan reuses one),
+    it plans as `plan` does, without them. A note gives the counts and which plan was kept."""
     augmented, counted = with_restore(foon, kitchen, goal, level)
     lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
     outcome = plan(augmented, counted, goal, encoding, level, **options)
     note = "restore: restoring units added (an assumption beyond FOON); " + (
         f"objects in the states they restore: {lowered}" if lowered else "no count lowered")
-    if outcome.status != PlanStatus.SOLVED and lowered:
-        again = plan(augmented, kitchen, goal, encoding, level, **options)
+    if outcome.status != PlanStatus.SOLVED:
+        again = plan(foon, kitchen, goal, encoding, level, **options)
         if again.status == PlanStatus.SOLVED:
-            outcome, note = again, note + f" gave no plan ({outcome.status}): planned at the derived counts"
+            outcome, note = again, note + f" gave no valid plan ({outcome.status}): planned without them"
     if outcome.decoded is None:
         return outcome
     return replace(outcome, decoded=replace(outcome.decoded, notes=(*outcome.decoded.notes, note)))
