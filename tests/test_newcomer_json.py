@@ -44,3 +44,21 @@ def test_a_batch_with_a_tree_format_and_no_directory_is_a_usage_error(command, f
     assert r.exit_code == 2, r.output
     assert f"--format {fmt}" in r.output and "jsonl" in r.output and "-o DIR" in r.output
     assert "Traceback" not in r.output
+
+
+def test_a_dish_the_merge_cannot_make_from_its_kitchen_names_the_recipe_file_that_makes_it_alone():
+    # the shared subgraphs, merged: the french toast of 0037 starts from `maple syrup (in [bowl])`, which another
+    # recipe makes (so no kitchen of the merge holds it) by units that never fire; the file alone makes the dish
+    from conftest import SUBGRAPHS
+
+    for command in ("retrieve", "plan"):
+        r = run(command, SUBGRAPHS, "--goal", "french toast")
+        assert r.exit_code == 1, r.output
+        hint = next(line for line in r.stderr.splitlines() if "alone makes it" in line)
+        suggested = hint.split("`foon2pddl ", 1)[1].split("`", 1)[0]
+        assert suggested.startswith(f"{command} ") and "0037-make_quick_french_toast.txt" in suggested
+        import shlex
+
+        again = run(*shlex.split(suggested))
+        assert again.exit_code == 0, again.output
+    assert not any("alone makes it" in line for line in run("retrieve", "--goal", "lemonade").stderr.splitlines())

@@ -100,7 +100,8 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     from .progress import slow_step
 
     spec = goal_spec(goal, goal_file)
-    _default_kitchen_hint(net, kitchen, spec, level)
+    if not _default_kitchen_hint(net, kitchen, spec, level):
+        _recipe_file_hint(net, kitchen, spec, level)
     slow = slow_hint(net, kitchen)  # known to take seconds: said at once, not after the silence budget
     with slow_step(slow or "checking which other network makes it (for a hint)", after=0 if slow else None):
         kinds = networks_that_reach(net, kitchen, spec, level,
@@ -111,24 +112,60 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
 
 
-def _default_kitchen_hint(net, kitchen, spec, level: int) -> None:
-    """From the base kitchen: say (stderr) when the network's default kitchen makes the goal (FOON's fixpoint)."""
+def _default_kitchen_hint(net, kitchen, spec, level: int) -> bool:
+    """From the base kitchen: say (stderr) when the network's default kitchen makes the goal (FOON's fixpoint);
+    whether it said so."""
     from ..analysis.reachability import reachable
     from ..errors import FoonError
     from ..model.goal import resolve_goal
     from ..model.kitchen import BASE_SOURCE, default_kitchen
 
     if kitchen.source != BASE_SOURCE:
-        return
+        return False
     foon = net.at(level)
     try:
         goal = resolve_goal(spec, foon)
     except FoonError:
-        return
+        return False
     reach = reachable(foon, default_kitchen(foon).nodes)
     if any(reach.can_make(c) for c in goal.candidates):
         click.echo("hint: `--kitchen default` can make it: the network's default kitchen holds the half-made "
                    "dishes the base kitchen leaves out", err=True)
+        return True
+    return False
+
+
+def _recipe_file_hint(net, kitchen, spec, level: int) -> None:
+    """On a merge of recipe files, from a kitchen the run chose (base or default): say (stderr) which file that
+    makes the goal makes it alone, from its own default kitchen, with the command. In a merge another recipe may
+    make a file's starting node (`maple syrup (in [bowl])`) by units that never fire: then no kitchen of the merge
+    holds it. Files tried: those of the goal's makers, sorted, at most 5 (one fixpoint each)."""
+    import shlex
+
+    from ..analysis.reachability import reachable
+    from ..errors import FoonError
+    from ..model.foon import Foon
+    from ..model.goal import resolve_goal
+    from ..model.kitchen import BASE_SOURCE, default_kitchen
+
+    foon = net.at(level)
+    if kitchen.source not in (BASE_SOURCE, default_kitchen(foon).source):
+        return
+    try:
+        goal = resolve_goal(spec, foon)
+    except FoonError:
+        return
+    if len({s.path for u in foon.units for s in u.sources[:1]}) < 2:
+        return
+    makers = {u for c in goal.candidates for u in foon.producers.get(c, ())}
+    for path in sorted({s.path for u in makers for s in foon.units[u].sources})[:5]:
+        alone = Foon(tuple(u for u in foon.units if any(s.path == path for s in u.sources)), foon.level)
+        reach = reachable(alone, default_kitchen(alone).nodes, goal.candidates)
+        if any(reach.can_make(c) for c in goal.candidates):
+            command = shlex.join(["foon2pddl", click.get_current_context().info_name, path, "--goal", spec.describe()])
+            click.echo(f"hint: {path} alone makes it from its own starting nodes (`{command}`); in this merge "
+                       "other recipes' units make some of them, so no kitchen of the merge holds them", err=True)
+            return
 
 
 def _lifted_solves(net, kitchen, spec, level: int, encoding: str) -> bool:
