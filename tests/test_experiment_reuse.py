@@ -200,3 +200,16 @@ def test_a_goal_task_holds_only_the_variables_its_operators_and_goal_mention():
     alone = sas.task_text([(1, 0)], [], set())  # var1 alone is renumbered 0
     assert alone.count("begin_variable") == 1 and "begin_goal\n1\n0 0\nend_goal" in alone
     assert "NegatedAtom b()" in alone and "Atom a()" not in alone and "begin_state\n1\nend_state" in alone
+
+
+def test_only_a_forgettable_translation_starts_elsewhere_and_auxiliary_names_are_reserved():
+    from foon2pddl.pddl.task import Action, PlanningTask
+
+    sas = parse_sas(_SAS, f"atom {fd_reuse.ANCHOR}()", (fd_reuse.ANCHOR, fd_reuse.FORGET_OP))
+    task = PlanningTask("d", "p", "tree", 3, (), (), (), ())
+    with pytest.raises(ValueError, match="forgettable"):  # a dropped static atom would go unseen
+        fd_reuse.TranslatedTask(task, sas, 0.0).at_init(task)
+    assert fd_reuse.TranslatedTask(task, sas, 0.0, forgettable=True).at_init(task).sas.state == (1, 1, 1)
+    taken = PlanningTask("d", "p", "tree", 3, (), (Action(f"{fd_reuse.ANCHOR}ed", (), ()),), (), ())
+    with pytest.raises(ValueError, match="foon2pddl-reuse-"):  # parse_sas would skip it by its prefix
+        fd_reuse._anchored(taken)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from click.testing import CliRunner
 
 from foon2pddl.cli import main
@@ -67,6 +68,11 @@ def test_one_knife_does_all_three_cuts_and_the_replay_holds():
                for x in outcome.decoded.notes)
     stated = Kitchen(KITCHEN.nodes, counts=((CLEAN, 2),))
     assert dict(with_restore(_cuts(), stated, GOAL)[1].counts) == {CLEAN: 2}  # the kitchen's own count wins
+
+
+def test_restoring_units_are_built_at_the_networks_own_level():
+    with pytest.raises(ValueError, match="network's level"):  # its unit indexes would name other units
+        with_restore(_cuts(), KITCHEN, GOAL, level=2)
 
 
 def test_counts_too_low_for_the_encoding_fall_back_to_planning_without_restoring(monkeypatch):

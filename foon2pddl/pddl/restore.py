@@ -15,7 +15,7 @@ The counts: the plan `instance_counts.derive_counts` unfolds is replayed object 
 order (`restore_counts`); a unit that needs an object in a ready kitchen state takes one there, else
 restores one of that label that sits in a node it can restore and that no later firing needs, else the
 kitchen needs one more. Each ready kitchen state gets that peak as its stated count (`2 x knife (clean)`;
-the kitchen's own stated counts, and `--instances` overrides, win). O(firings x roles x nodes of the label).
+the kitchen's own stated counts, and the caller's instance overrides, win). O(firings x roles x nodes of the label).
 
 >>> from foon2pddl.model.foon import make_node, make_state
 >>> restore_motion(make_node("knife", [make_state("dirty")]))
@@ -121,6 +121,8 @@ def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, Objec
 def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3) -> tuple[Foon, Kitchen]:
     """`foon` with its restoring units, and `kitchen` stating the counts they allow in its ready states
     (`restore_counts`, at `level`; the kitchen's own stated counts win): what `plan` and `compile_goal` take."""
+    if level != foon.level:  # unit indexes below are the network's own: project it first (`model.levels`)
+        raise ValueError(f"restoring units are built at the network's level ({foon.level}), not {level}")
     plain = at_level(foon, kitchen, goal, level)  # restoring units only for what the goal's units leave
     augmented, ready = restoring_network(foon, kitchen.nodes, restoring_units(plain.foon, plain.kitchen,
                                                                               plain.candidates))

@@ -45,6 +45,7 @@ from . import fd
 from .result import PlanResult, step_action
 from .sas import Sas, parse_sas
 
+RESERVED = "foon2pddl-reuse-"  # the prefix of every auxiliary name
 ANCHOR = "foon2pddl-reuse-anchor"
 GOAL_OP = "foon2pddl-reuse-goal-"
 FORGET_OP = "foon2pddl-reuse-forget-"
@@ -59,8 +60,8 @@ def _anchored(task: PlanningTask, forgettable: bool = False) -> PlanningTask:
     """The task with its goal replaced by a fresh anchor atom one auxiliary action makes true; `forgettable`:
     and one auxiliary action per initial atom that deletes it (see the module doc)."""
     taken = {p.name.lower() for p in task.predicates} | {a.name.lower() for a in task.actions}
-    if ANCHOR in taken or any(n.startswith(FORGET_OP) for n in taken):
-        raise ValueError(f"task already uses the name {ANCHOR!r} or {FORGET_OP}N")
+    if any(n.startswith(RESERVED) for n in taken):  # `parse_sas` skips operators by these prefixes
+        raise ValueError(f"task already uses a name starting {RESERVED!r}")
     anchor = Atom(ANCHOR)
     cost = 0 if task.uses_costs else None
     forget = tuple(Action(f"{FORGET_OP}{k}", (), (), (a,), cost=cost) for k, a in enumerate(task.init)) \
@@ -82,6 +83,7 @@ class TranslatedTask:
     translate_seconds: float
     optimal: bool = False
     search: tuple[str, ...] | None = None  # search options (default: the alias for `optimal`)
+    forgettable: bool = False  # built so that `at_init` may start from any subset of the initial state
 
     @classmethod
     def build(cls, task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
@@ -100,7 +102,8 @@ class TranslatedTask:
         t0 = time.perf_counter()
         text = cached_sas(cache, domain_text, problem_text, options) if cache is not None else None
         if text is not None:
-            return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), time.perf_counter() - t0, optimal, search)
+            return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), time.perf_counter() - t0,
+                       optimal, search, forgettable)
         with tempfile.TemporaryDirectory(prefix="foon2pddl-fdr-") as tmp:
             work = Path(tmp)
             (work / "domain.pddl").write_text(domain_text)
@@ -113,11 +116,14 @@ class TranslatedTask:
             text = (work / "output.sas").read_text()
         if cache is not None:
             store_sas(cache, domain_text, problem_text, options, text)
-        return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), run.seconds, optimal, search)
+        return cls(task, parse_sas(text, sas_fact_name(Atom(ANCHOR)), (ANCHOR, FORGET_OP)), run.seconds, optimal,
+                   search, forgettable)
 
     def at_init(self, task: PlanningTask) -> TranslatedTask:
         """This translation for `task`, the translated task with another initial state (built `forgettable`,
-        see the module doc; ValueError when its state cannot be written here)."""
+        see the module doc; ValueError when its state cannot be written here, or it was not built so)."""
+        if not self.forgettable:
+            raise ValueError("at_init needs a translation built forgettable (a dropped static atom would go unseen)")
         sas = self.sas.at_init(sas_fact_name(a) for a in task.init)
         return replace(self, task=task, sas=sas)
 

@@ -280,9 +280,10 @@ class _Replay:
         def add(kind: DisagreementKind, objects: tuple[str, ...], message: str) -> None:
             self.found.append(Disagreement(kind, k, objects, source, f"{motion}: {message}"))
 
+        words = {**self.aliases, **dict(step.aliases)}
         for b in step.bindings:  # a node the step sets is the unit's words: read through its own aliases
             if after[b.object].node not in (None, before[b.object].node):
-                self.read[b.object] = {**self.aliases, **dict(step.aliases)}
+                self.read[b.object] = words
         for c in sorted(step.changes, key=lambda c: c.id):
             if c.id not in bound and c != before[c.id]:
                 add(DisagreementKind.UNBOUND_CHANGE, (c.id,), f"{c.id} changes, but the step does not use it")

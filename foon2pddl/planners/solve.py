@@ -161,7 +161,8 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
                    **options) -> PlanOutcome:
     """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they
     allow. When that gives no valid plan (the encoding needs two at once where the unfolded plan reuses one),
-    it plans as `plan` does, without them. A note gives the counts and which plan was kept."""
+    it plans as `plan` does, without them (with its own time limit: up to twice `time_limit` in all). A note
+    gives the counts and which plan was kept."""
     augmented, counted = with_restore(foon, kitchen, goal, level)
     lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
     outcome = plan(augmented, counted, goal, encoding, level, **options)
