@@ -225,7 +225,7 @@ def _plan_outcome(outcome, steps: tuple[str, ...], kitchen_nodes=None, per_item:
 
 
 #: Replanners from a view's default kitchen a process keeps, by view (`_FdReuse`): (view, replanner).
-_FROM_DEFAULT: OrderedDict[int, tuple[NetworkView, object]] = OrderedDict()
+_FROM_DEFAULT: OrderedDict[tuple, tuple[NetworkView, object]] = OrderedDict()
 #: Views whose replanner `_FROM_DEFAULT` keeps (an EXP one holds a compiled task and its translation).
 DEFAULT_KEPT = 3
 
@@ -249,9 +249,10 @@ class _FdReuse(Prepared):
         self.per_item = setting.per_item
         t0 = time.perf_counter()
         kitchen = view.map_kitchen(setting.kitchen)
+        default = _from_default(setting)
         try:
-            replanner = _from_default(setting).for_kitchen(kitchen)
-        except ValueError:
+            replanner = default.for_kitchen(kitchen)
+        except ValueError:  # a kitchen not within the default one: its own translation
             replanner = GoalReplanner(view.foon, kitchen, "tree", view.foon.level, time_limit=setting.time_limit,
                                       cache=setting.cache)
         self.replanner = replanner.with_search(optimal=True, search=OPTIMAL_SEARCH) if optimal else replanner
@@ -267,7 +268,7 @@ def _from_default(setting: Setting):
     from ..planners.solve import GoalReplanner
 
     view = setting.view
-    key = id(view)
+    key = (id(view), setting.time_limit, setting.cache)  # the translation's own time limit and cache too
     if key in _FROM_DEFAULT and _FROM_DEFAULT[key][0] is view:
         _FROM_DEFAULT.move_to_end(key)
         return _FROM_DEFAULT[key][1]
