@@ -8,7 +8,7 @@ import re
 import pytest
 from click.testing import CliRunner
 from conftest import SUBGRAPHS
-from foon_strategies import foons, full, full_unit
+from foon_strategies import foons, full, full_unit, units
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -560,3 +560,22 @@ def test_random_garbage_files_never_traceback(tmp_path):
         result = _run(["stats", str(bad)])
         assert result.exit_code == 2 and "Traceback" not in result.stderr
         assert result.stderr.startswith(f"{bad}:")
+
+
+@settings(max_examples=50, suppress_health_check=[HealthCheck.too_slow])
+@given(units())
+def test_the_fast_builders_make_what_the_dataclass_constructors_make(unit):
+    """`make_unit`/`make_source` fill `__dict__` directly: equal, equally hashed, every field set, as built by
+    the frozen dataclass's own `__init__` (a new field on Source or FunctionalUnit must reach them)."""
+    from dataclasses import fields
+
+    from foon2pddl.model.foon import FunctionalUnit, Source, make_source, make_unit
+
+    built = make_unit(unit.inputs, unit.motion, unit.outputs, (make_source("f.txt", 3),))
+    plain = FunctionalUnit(unit.inputs, unit.motion, unit.outputs, (Source("f.txt", 3),))
+    assert built == plain and hash(built) == hash(plain) and built.key == plain.key
+    for made, ref in ((built, plain), (built.sources[0], plain.sources[0])):
+        assert {f.name: getattr(made, f.name) for f in fields(ref)} == {f.name: getattr(ref, f.name) for f in fields(ref)}
+    node = unit.inputs[0] if unit.inputs else unit.outputs[0]
+    again = make_node(node.label, node.states, motion_flag=node.motion_flag, goal=node.goal, dish=node.dish)
+    assert again == node and hash(again) == hash(node)

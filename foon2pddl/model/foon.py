@@ -31,9 +31,10 @@ def normalize_label(text: str) -> str:
 
 class _HashOnce:
     """Base of the frozen dataclasses hashed constantly (states, nodes: sets, dict keys, unit keys): the hash of
-    `_identity()` (the generated dataclass hash's value) is computed once and kept as an attribute (set as one,
-    not through `__dict__`, which would materialize a dict per object); a pickle drops it (string hashes differ
-    per process). A dataclass replaces an inherited `__hash__`, so each class names this one in its body."""
+    `_identity()` (the generated dataclass hash's value) is computed once and kept as an attribute (`make_state`
+    and `make_node` fill `__dict__` directly: a dict per object, ~64 bytes, for half the build time; 1M units:
+    2.76 against 2.55 GB peak, 43 against 48-52 s CPU); a pickle drops it (string hashes differ per process).
+    A dataclass replaces an inherited `__hash__`, so each class names this one in its body."""
 
     def _identity(self) -> tuple:
         raise NotImplementedError
@@ -198,7 +199,7 @@ class FunctionalUnit:
     @property
     def key(self) -> tuple[str, frozenset[ObjectNode], frozenset[ObjectNode]]:
         """Duplicate-detection key: motion label with the sets of input and output nodes."""
-        try:  # cached as an attribute (a cached_property would materialize a dict per unit)
+        try:  # cached as an attribute (as `_HashOnce` keeps a hash)
             return self._key
         except AttributeError:
             value = (self.motion.label, frozenset(self.inputs), frozenset(self.outputs))
