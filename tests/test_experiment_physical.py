@@ -190,7 +190,12 @@ def test_a_physical_plan_fits_the_kitchen_exactly_when_scheduling_its_tree_does(
             assert (plan.verdict, plan.message) == (tree_verdict.verdict, tree_verdict.message), node.describe()
             assert plan.drawn == unlimited.drawn
             seen.add((per_item, plan.verdict))
+        stated = {n: k for n, k in unlimited.drawn[:2]}  # the kitchen says how many of two nodes: enough there
+        plan, tree_verdict = drawn_by_plan(unlimited.trace, nodes, stated=stated), schedule(tree, nodes, stated=stated)
+        assert (plan.verdict, plan.message) == (tree_verdict.verdict, tree_verdict.message), node.describe()
+        seen.add(("stated", plan.verdict))
     assert {(1, Verdict.SHORT), (1, Verdict.EXECUTABLE), (2, Verdict.EXECUTABLE)} <= seen
+    assert {("stated", Verdict.SHORT), ("stated", Verdict.EXECUTABLE)} <= seen
 
 
 def test_fd_instances_plans_that_need_more_objects_say_how_many_and_where(tmp_path):

@@ -40,7 +40,7 @@ from ..model.tasktree import TaskTree
 from ..pddl.pairing import RoleKind, unit_roles
 from .foon_places import step_source
 
-__all__ = ["Executability", "Verdict", "drawn_by_plan", "needed", "schedule"]
+__all__ = ["Executability", "Verdict", "drawn_by_plan", "needed", "schedule", "short_message"]
 
 
 class Verdict(StrEnum):
@@ -120,8 +120,7 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
                     names.append(new_object(role.label, role.before))
                     continue
                 return result(Verdict.SHORT, k, role.label, role.before,
-                              f"step {k + 1} ({unit.motion.label}) needs one more {role.label} in {what!r}: "
-                              f"the kitchen has {limit} there, none free")
+                              short_message(k, unit.motion.label, role.label, role.before, limit))
             if role.before in made:
                 return result(Verdict.USED_UP, k, role.label, role.before,
                               f"step {k + 1} ({unit.motion.label}) needs {what!r} again, but step "
@@ -148,15 +147,22 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
     return result(Verdict.EXECUTABLE)
 
 
-def drawn_by_plan(trace: PhysicalTrace, kitchen_nodes: Iterable[ObjectNode], per_item: int = 1) -> Executability:
+def drawn_by_plan(trace: PhysicalTrace, kitchen_nodes: Iterable[ObjectNode], per_item: int = 1, *,
+                  stated: Mapping[ObjectNode, int] | None = None) -> Executability:
     """Whether a physical plan (a planner's `trace`, already replayed) fits a kitchen of `per_item` objects per
-    kitchen node: the objects it draws per kitchen node are those starting in that node that some step binds.
+    kitchen node (`stated`: per node where the kitchen says, as in `schedule`): the objects it draws per
+    kitchen node are those starting in that node that some step binds.
     `short` at the first step binding one object more than the kitchen has there (its label and node, in
     `schedule`'s words), with `drawn` over the whole plan (the objects it needs; beyond `per_item`, more).
     A planner given derived counts (`instances`) may use a second bowl where the kitchen has one. O(steps)."""
     kitchen = frozenset(kitchen_nodes)
     start = {s.id: s.node for s in trace.initial}
     labels = trace.by_id
+    stated = stated or {}
+
+    def limit(node: ObjectNode) -> int:
+        return stated.get(node, per_item)
+
     drawn: dict[ObjectNode, set[str]] = {}
     first: tuple[int, str, ObjectNode, str] | None = None
     for step in trace.steps:
@@ -165,15 +171,19 @@ def drawn_by_plan(trace: PhysicalTrace, kitchen_nodes: Iterable[ObjectNode], per
             if node is None or node not in kitchen or b.object in drawn.get(node, ()):
                 continue
             drawn.setdefault(node, set()).add(b.object)
-            if first is None and len(drawn[node]) > per_item:
+            if first is None and len(drawn[node]) > limit(node):
                 first = (step.index, labels[b.object].label, node, step.unit.motion.label)
     counts = tuple(sorted((n, len(o)) for n, o in drawn.items()))
     if first is None:
         return Executability(Verdict.EXECUTABLE, drawn=counts, trace=trace)
     k, label, node, motion = first
-    return Executability(Verdict.SHORT, k, label, node,
-                         f"step {k + 1} ({motion}) needs one more {label} in {node.describe()!r}: "
-                         f"the kitchen has {per_item} there, none free", counts, trace)
+    return Executability(Verdict.SHORT, k, label, node, short_message(k, motion, label, node, limit(node)), counts,
+                         trace)
+
+
+def short_message(step: int, motion: str, label: str, node: ObjectNode, limit: int) -> str:
+    """The words of a `SHORT` verdict (one sentence for trees and plans; `experiment.physical` reads them)."""
+    return f"step {step + 1} ({motion}) needs one more {label} in {node.describe()!r}: the kitchen has {limit} there, none free"
 
 
 def needed(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode]) -> Executability:
