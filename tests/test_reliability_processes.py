@@ -210,7 +210,20 @@ def test_a_planner_whose_caller_is_killed_ends_at_its_cpu_limit(tmp_path):
               f"run_process([sys.executable, '-c', {child!r}], Path({str(tmp_path)!r}), timeout=3)")
     proc = subprocess.Popen([sys.executable, "-c", caller], env=ENV)
     assert _wait_for(lambda: bool(running_with(mark)))
+    # the caller sets the limit just after the child starts: kill it once it has (a fresh clone's run at
+    # f601743 killed it in between, on a loaded machine, and the child ran on unlimited)
+    assert _wait_for(lambda: all(_cpu_limited(pid) for pid in running_with(mark)))
     proc.kill()
     proc.wait()
     assert running_with(mark), "the child ended with its caller: nothing was tested"
     assert _wait_for(lambda: not running_with(mark), timeout=120)  # 2 x 3 + 1 s of CPU at most
+
+
+def _cpu_limited(pid: int) -> bool:
+    """Whether process `pid` has a CPU time limit (`/proc/PID/limits`)."""
+    try:
+        text = Path(f"/proc/{pid}/limits").read_text()
+    except OSError:
+        return False
+    line = next((x for x in text.splitlines() if x.startswith("Max cpu time")), "")
+    return bool(line) and "unlimited" not in line
