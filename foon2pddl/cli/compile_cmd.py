@@ -58,9 +58,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if fixpoint and (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     foon, kit = view.foon, view.kitchen
+    check_restore(restore, encoding)
     if restore:
-        if not encoding_named(encoding).physical:
-            raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
         foon, kit = with_restore(foon, kit, target, level)
     with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
         task = compile_task(foon, kit, target, encoding, level, prune, costs, motion_rates, cons,
@@ -68,6 +67,12 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if (why := unreachable_reason(view.foon, view.kitchen, target, task, fixpoint=fixpoint)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     return task
+
+
+def check_restore(restore: bool, encoding: str) -> None:
+    """`--restore` (of `compile` and `plan`) refused (UsageError) under an encoding without physical objects."""
+    if restore and not encoding_named(encoding).physical:
+        raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:

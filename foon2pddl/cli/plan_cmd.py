@@ -22,6 +22,7 @@ from ..status import PlanStatus
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
+from .compile_cmd import check_restore
 from .options import (
     category_chains,
     check_output,
@@ -180,8 +181,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                                 rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
-    if restore and not ENCODINGS[encoding].physical:
-        raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
+    check_restore(restore, encoding)
     with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
                    f"time limit {time_limit:g} s)"):
         outcome = (plan_restoring if restore else plan)(

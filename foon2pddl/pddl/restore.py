@@ -37,7 +37,7 @@ from .instance_counts import InstanceCounts, derive_counts
 from .pairing import RoleKind, unit_roles
 from .prune import restoring_units
 
-__all__ = ["READY", "RESTORE_SOURCE", "discards", "ready_states", "restore_counts", "restore_motion", "restoring_network",
+__all__ = ["READY", "RESTORE_SOURCE", "discards", "is_restoring", "ready_states", "restore_counts", "restore_motion", "restoring_network",
            "with_restore"]
 
 #: States a ready kitchen state may have (and nothing else).
@@ -67,7 +67,12 @@ def restore_motion(node: ObjectNode) -> str:
 
 def discards(unit: FunctionalUnit) -> bool:
     """Whether `unit` is a restoring unit that empties a container: what is in or on it is thrown away."""
-    return bool(unit.sources) and unit.sources[0].path == RESTORE_SOURCE and unit.motion.label == "empty"
+    return is_restoring(unit) and unit.motion.label == "empty"
+
+
+def is_restoring(unit: FunctionalUnit) -> bool:
+    """Whether `unit` is one of the restoring units (`restoring_network`), by its source."""
+    return bool(unit.sources) and unit.sources[0].path == RESTORE_SOURCE
 
 
 def restoring_network(foon: Foon, kitchen: Iterable[ObjectNode],
@@ -93,7 +98,7 @@ def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, Objec
     firings = dict(counts.firings)
     order = [u for u in counts.unfolded for _ in range(firings.get(u, 1))]
     restorable = {u.inputs[0] for u in foon.units
-                  if u.sources and u.sources[0].path == RESTORE_SOURCE and u.outputs[0] == ready.get(u.inputs[0].label)}
+                  if is_restoring(u) and u.outputs[0] == ready.get(u.inputs[0].label)}
     ahead: Counter[ObjectNode] = Counter(r.before for u in order for r in unit_roles(foon.units[u]) if r.before)
     at: Counter[ObjectNode] = Counter()
     need: Counter[ObjectNode] = Counter()
@@ -126,11 +131,10 @@ def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3) -> tu
     plain = at_level(foon, kitchen, goal, level)  # restoring units only for what the goal's units leave
     augmented, ready = restoring_network(foon, kitchen.nodes, restoring_units(plain.foon, plain.kitchen,
                                                                               plain.candidates))
+    if level < kitchen.level:  # counts are stated at the kitchen's own level
+        return augmented, kitchen
     inp = at_level(augmented, kitchen, goal, level)
     counts = derive_counts(inp.foon, tuple(range(len(foon.units))), inp.kitchen, inp.candidates,
                            stated=kitchen.project(level).stated_counts())
-    mine = restore_counts(inp.foon, counts, {n.label: n for n in ready_states(inp.kitchen).values()
-                                             if n.label in ready})
-    if level < kitchen.level:  # counts are stated at the kitchen's own level
-        return augmented, kitchen
+    mine = restore_counts(inp.foon, counts, ready)  # the kitchen as given: its ready states are `ready`'s
     return augmented, replace(kitchen, counts=tuple(sorted({**mine, **dict(kitchen.counts)}.items())))
