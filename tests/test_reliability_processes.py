@@ -227,3 +227,47 @@ def _cpu_limited(pid: int) -> bool:
         return False
     line = next((x for x in text.splitlines() if x.startswith("Max cpu time")), "")
     return bool(line) and "unlimited" not in line
+
+
+def _limits_of(pid: int) -> dict[str, str]:
+    """`/proc/PID/limits` as {name: soft limit}."""
+    rows = Path(f"/proc/{pid}/limits").read_text().splitlines()[1:]
+    return {row[:26].strip(): row[26:47].strip() for row in rows}
+
+
+def test_a_planner_has_its_limits_even_when_its_caller_dies_right_after_starting_it(tmp_path):
+    # the caller is SIGKILLed the moment Popen returns: anything it does after that never happens,
+    # so the planner must already carry its CPU and memory limits (set before exec)
+    s = unique_sleep()
+    caller = ("import os, signal, subprocess, sys; from pathlib import Path; "
+              "from foon2pddl.planners.process import run_process\n"
+              "real = subprocess.Popen\n"
+              "class Dying(real):\n"
+              "    def __init__(self, *a, **k):\n"
+              "        super().__init__(*a, **k)\n"
+              "        os.kill(os.getpid(), signal.SIGKILL)\n"
+              "subprocess.Popen = Dying\n"
+              f"run_process(['sleep', '{s}'], Path({str(tmp_path)!r}), timeout=3, memory_limit_mb=512)")
+    proc = subprocess.run([sys.executable, "-c", caller], env=ENV, timeout=60)
+    assert proc.returncode == -signal.SIGKILL
+    assert _wait_for(lambda: bool(running_with(f"sleep {s}")), timeout=10)
+    (pid,) = running_with(f"sleep {s}")
+    try:
+        assert _wait_for(lambda: Path(f"/proc/{pid}/comm").read_text().strip() == "sleep", timeout=10)
+        limits = _limits_of(pid)
+        assert limits["Max cpu time"] == "7"  # 2 x 3 s + 1
+        assert limits["Max address space"] == str(512 * 1024 * 1024)
+    finally:
+        os.kill(pid, signal.SIGKILL)
+
+
+def test_a_planner_without_limits_runs_unwrapped_and_a_missing_one_is_an_oserror(tmp_path):
+    run = run_process(["sh", "-c", "ulimit -t; ulimit -v; cat /proc/$$/comm"], tmp_path)
+    assert run.returncode == 0 and run.output.split() == ["unlimited", "unlimited", "sh"]
+    run = run_process(["sh", "-c", "ulimit -t; ulimit -v"], tmp_path, 5, memory_limit_mb=300)
+    assert run.returncode == 0 and run.output.split() == ["11", str(300 * 1024)]
+    with pytest.raises(FileNotFoundError):
+        run_process(["no-such-planner-x7"], tmp_path, 5)
+    (tmp_path / "not-executable").write_text("#!/bin/sh\n")
+    with pytest.raises(PermissionError):
+        run_process(["./not-executable"], tmp_path, 5)

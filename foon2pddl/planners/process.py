@@ -8,11 +8,16 @@ the head and the tail), and a daemon child that inherited the output cannot
 make us wait for it. When the run ends (exit, time limit or interrupt) its
 process group and every process carrying its mark (`cleanup.MARK`, inherited
 even across `setsid`) are killed; should the caller die before it can, a CPU
-limit (`CPU_LIMIT_FACTOR`) still ends a run that has a time limit.
+limit (`CPU_LIMIT_FACTOR`) still ends a run that has a time limit. The CPU and memory limits are
+set before the planner's `exec`, by a `/bin/sh` that sets them and execs it (`limited`): the child
+carries them from its first instruction, whenever the caller dies. (`preexec_fn` would do the same
+in Python, but is unsafe in a threaded process such as a Dask worker; `prlimit` after `Popen` left
+a window in which a caller killed with SIGKILL left its planner unlimited.)
 """
 
 from __future__ import annotations
 
+import errno
 import math
 import os
 import resource
@@ -116,17 +121,12 @@ def run_process(
     try:
         # Not under signals_deferred (the child would inherit the blocked mask): an interrupt before
         # `proc` is bound is covered by the mark, which the child carries from its first instruction.
+        # the CPU limit is a backstop should this process die uncleaned (SIGKILL): see CPU_LIMIT_FACTOR
+        cpu = None if timeout is None else math.ceil(CPU_LIMIT_FACTOR * timeout) + 1
+        argv = limited(cmd, cwd, run_env, cpu, memory_limit_mb)
         with open(log, "wb") as out, open(stdin_path or os.devnull, "rb") as stdin:
-            proc = subprocess.Popen(list(cmd), cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
+            proc = subprocess.Popen(argv, cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
                                     env=run_env, start_new_session=True)
-        limits = [(resource.RLIMIT_AS, memory_limit_mb * 1024 * 1024)] if memory_limit_mb is not None else []
-        if timeout is not None:  # a backstop should this process die uncleaned (SIGKILL): see CPU_LIMIT_FACTOR
-            limits.append((resource.RLIMIT_CPU, math.ceil(CPU_LIMIT_FACTOR * timeout) + 1))
-        for kind, limit in limits:
-            try:
-                resource.prlimit(proc.pid, kind, (limit, limit))
-            except (OSError, ValueError):
-                pass
         try:
             code = proc.wait(timeout)
         except subprocess.TimeoutExpired:
@@ -137,6 +137,40 @@ def run_process(
     seconds = time.perf_counter() - t0
     output, size = read_capped(log)
     return ProcessRun(code, output, seconds, size)
+
+
+#: Sets the limits given as $1 (CPU seconds) and $2 (address space, KiB; "-" for none), then execs the rest.
+#: A limit above the inherited hard limit cannot be set: the inherited (lower) one stays, as with prlimit.
+_LIMIT_SCRIPT = ('[ "$1" = - ] || ulimit -t "$1" 2>/dev/null; [ "$2" = - ] || ulimit -v "$2" 2>/dev/null; '
+                 'shift 2; exec "$@"')
+
+
+def limited(cmd: Sequence[str], cwd: Path, env: Mapping[str, str], cpu_limit: int | None,
+            memory_limit_mb: int | None) -> list[str]:
+    """`cmd` run with RLIMIT_CPU = `cpu_limit` and RLIMIT_AS = `memory_limit_mb` (soft = hard) from its
+    first instruction: `/bin/sh -c _LIMIT_SCRIPT` execs it (same pid, argv and environment). `cmd` itself
+    when there is no limit to set.
+
+    The program is looked up first, as `Popen` would (on `env`'s PATH, relative to `cwd`), so a missing
+    or non-executable one still raises FileNotFoundError / PermissionError rather than the shell's 127.
+    """
+    if cpu_limit is None and memory_limit_mb is None:
+        return list(cmd)
+    _check_program(cmd[0], cwd, env)
+    memory = "-" if memory_limit_mb is None else str(memory_limit_mb * 1024)
+    return ["/bin/sh", "-c", _LIMIT_SCRIPT, "sh", "-" if cpu_limit is None else str(cpu_limit), memory,
+            *cmd]
+
+
+def _check_program(program: str, cwd: Path, env: Mapping[str, str]) -> None:
+    """Raise the OSError `Popen` would for a program it cannot execute (ENOENT, EACCES)."""
+    dirs = [""] if "/" in program else os.get_exec_path(env)
+    candidates = [Path(cwd, d, program) for d in dirs]
+    if any(c.is_file() and os.access(c, os.X_OK) for c in candidates):
+        return
+    if any(c.exists() for c in candidates):
+        raise PermissionError(errno.EACCES, os.strerror(errno.EACCES), program)
+    raise FileNotFoundError(errno.ENOENT, os.strerror(errno.ENOENT), program)
 
 
 def _end(proc: subprocess.Popen | None, token: str) -> None:
