@@ -16,6 +16,10 @@ Two analyses, one per semantics, both solvability-preserving:
   the goal atoms over achievers (adders that do not require what they add). Sound for STRIPS with
   positive preconditions;
   init atoms, predicates and constants no kept part mentions are dropped too.
+
+And one for lifted tasks, exact whatever the semantics: `drop_unbindable` drops the actions whose static
+preconditions no binding of their parameters satisfies (the `instances` encoding's lanes leave most
+unit schemas of a large goal so), which Fast Downward's translator would ground to nothing anyway.
 """
 
 from __future__ import annotations
@@ -158,3 +162,69 @@ def prune_task(task: PlanningTask) -> PlanningTask:
         constants=tuple(c for c in task.constants if c[0] in used_args),
         objects=tuple(o for o in task.objects if o[0] in used_args),
     )
+
+
+def drop_unbindable(task: PlanningTask) -> PlanningTask:
+    """The task without the actions that have no ground instance: some static precondition (of a predicate
+    no action adds or deletes, so true exactly in `init`) that no binding of the parameters can satisfy.
+
+    The check is generalized arc consistency over the static preconditions: each parameter's candidate
+    values are narrowed to those some matching init atom supports, until nothing changes; an action goes
+    when an atom has no matching init atom left. A binding that satisfies every static precondition survives
+    the narrowing, so a dropped action has no ground instance a planner could apply in any state: plans,
+    and what a translator grounds, are unchanged (fluent preconditions and types are not read; the check
+    is partial there and never drops wrongly). Returns `task` itself when nothing is dropped.
+    O(narrowing rounds x static atoms x matching init atoms) per action; matches are looked up by an
+    atom's constant arguments.
+    """
+    changing = {x.predicate for a in task.actions
+                for x in (*a.add, *a.delete, *(y for c in a.conditional for y in (*c.add, *c.delete)))}
+    static: dict[str, list[tuple[str, ...]]] = {}
+    for a in task.init:
+        if a.predicate not in changing:
+            static.setdefault(a.predicate, []).append(a.args)
+    rows: dict[tuple, list[tuple[str, ...]]] = {}
+
+    def matching(atom: Atom) -> list[tuple[str, ...]]:
+        """Init atoms of `atom`'s predicate and arity equal to it in its constant arguments."""
+        fixed = tuple((i, x) for i, x in enumerate(atom.args) if not x.startswith("?"))
+        key = (atom.predicate, len(atom.args), fixed)
+        if key not in rows:
+            rows[key] = [f for f in static.get(atom.predicate, ()) if len(f) == len(atom.args)
+                         and all(f[i] == x for i, x in fixed)]
+        return rows[key]
+
+    def bindable(pre: list[Atom]) -> bool:
+        atoms = [(matching(p), [(i, x) for i, x in enumerate(p.args) if x.startswith("?")]) for p in pre]
+        if any(not rows for rows, _ in atoms):
+            return False
+        domain: dict[str, set[str]] = {}
+        todo = [k for k, (_, at) in enumerate(atoms) if at]  # AC-3: the atoms whose variables narrowed
+        users: dict[str, list[int]] = {}
+        for k in todo:
+            for _, x in atoms[k][1]:
+                users.setdefault(x, []).append(k)
+        while todo:
+            rows, at = atoms[todo.pop()]
+            live = [(i, domain[x]) for i, x in at if x in domain]
+            fits = [r for r in rows if all(r[i] in d for i, d in live)] if live else rows
+            if len(at) > 1 and len({x for _, x in at}) < len(at):
+                fits = [r for r in fits if _same_var_same_value(at, r)]
+            if not fits:
+                return False
+            for i, x in at:
+                values = {r[i] for r in fits}
+                if x not in domain or len(values) < len(domain[x]):  # `fits` kept only values in domain[x]
+                    domain[x] = values
+                    todo.extend(k for k in users[x] if k not in todo)
+        return True
+
+    kept = tuple(a for a in task.actions
+                 if bindable([p for p in a.pre if p.predicate not in changing]))
+    return task if len(kept) == len(task.actions) else replace(task, actions=kept)
+
+
+def _same_var_same_value(at: list[tuple[int, str]], row: tuple[str, ...]) -> bool:
+    """Whether `row` gives a variable that occurs twice in an atom (its `(position, variable)`s) one value."""
+    seen: dict[str, str] = {}
+    return all(seen.setdefault(x, row[i]) == row[i] for i, x in at)

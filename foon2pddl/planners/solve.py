@@ -27,6 +27,7 @@ from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
+from ..pddl.prune import drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
 from ..pddl.restore import with_restore
@@ -131,7 +132,9 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     leave no way to make the goal, nothing is compiled and the outcome is `unsolvable`
     (planner `constraints`, an empty task of the encoding); a planner's failure is a
     status, never an exception. `instances`, `categories`: for the
-    `instances` encoding (see `pddl.encoding.EncodeOptions`).
+    `instances` encoding (see `pddl.encoding.EncodeOptions`). The planner gets the task without the
+    actions no binding grounds (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground);
+    the outcome keeps the task as compiled.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -150,9 +153,10 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
                            timings=timings)
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    domain_text, problem_text = render(compiled.task)
+    planned = drop_unbindable(compiled.task)  # what the planner would ground to nothing (the lanes' work)
+    domain_text, problem_text = render(planned)
     timings["write"] = time.perf_counter() - t0
-    result = run_planner(compiled.task, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
+    result = run_planner(planned, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
                          optimal=optimal, time_limit=time_limit, search=search)
     return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
 
