@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+import sys
 
 import pytest
 from click.testing import CliRunner
@@ -266,3 +267,16 @@ def test_french_toast_dips_the_bread_into_the_custard_not_the_custard_into_the_b
     assert "abstract" not in result.stderr, result.stderr  # every step has a skill: melt heats the butter
     melt = lines[next(k for k, line in enumerate(lines) if re.match(r"\d+\. melt butter", line)) + 1]
     assert melt == "   robot: heat the butter", melt
+
+
+@pytest.mark.parametrize(("code", "status", "exit_code"), [(12, "gave up", 1), (10, "unsolvable", 1), (40, "error", 2)])
+def test_skills_exit_as_plan_does_for_a_planner_that_gives_up_proves_or_fails(code, status, exit_code):
+    # docs/planning.md: `gave up` exits 1 like `unsolvable` and `timeout`; only `error` exits 2
+    planner = f"{sys.executable} -c 'import sys; sys.exit({code})' {{domain}} {{problem}} {{plan}}"
+    plain = run("--goal", "guacamole", "--encoding", "instances", "--planner-cmd", planner)
+    skills = run("--goal", "guacamole", "--encoding", "instances", "--skills", "--planner-cmd", planner)
+    assert plain.exit_code == skills.exit_code == exit_code, (plain.output, skills.output)
+    assert skills.stderr.startswith(f"{status} ")
+    # the same account of why there is no plan as `plan` gives
+    assert [x for x in skills.stderr.splitlines() if x.startswith("reason: ")] == \
+        [x for x in plain.stderr.splitlines() if x.startswith("reason: ")]

@@ -43,11 +43,7 @@ from .options import (
 )
 from .progress import slow_step
 from .reasons import networks_hint, why_unsolvable
-from .skills_cli import check_skill_usage, plan_with_skills, skill_encoding, skill_options
-
-#: Exit status per outcome status.
-EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.GAVE_UP: 1, PlanStatus.TIMEOUT: 1,
-        PlanStatus.ERROR: 2}
+from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 
 def timing_line(timings: dict[str, float]) -> str:

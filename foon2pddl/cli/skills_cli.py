@@ -15,7 +15,11 @@ from .options import emit
 from .progress import slow_step
 from .reasons import why_unsolvable
 
-__all__ = ["SKILL_FORMATS", "check_skill_usage", "plan_with_skills", "skill_encoding", "skill_options"]
+__all__ = ["EXIT", "SKILL_FORMATS", "check_skill_usage", "plan_with_skills", "skill_encoding", "skill_options"]
+
+#: `plan`'s exit status per outcome status, with or without --skills (docs/planning.md): no plan is 1, a failure 2.
+EXIT = {PlanStatus.SOLVED: 0, PlanStatus.UNSOLVABLE: 1, PlanStatus.GAVE_UP: 1, PlanStatus.TIMEOUT: 1,
+        PlanStatus.ERROR: 2}
 
 #: The `--format`s of a skill plan: the steps with their skills, a cook's sentences, the executive's JSON.
 SKILL_FORMATS = ("steps", "recipe", "json")
@@ -102,7 +106,8 @@ def _check_skill_names(domain, names) -> None:
 def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: Path | None, table_path: Path | None,
                      without_skills: tuple[str, ...], hands: int, fmt: str, output: Path | None, timings: dict,
                      **options) -> None:
-    """Plan, decompose, print (or write `-o DIR`); exits 1 when there is no plan, 2 when the skill replay fails."""
+    """Plan, decompose, print (or write `-o DIR`); exits as `plan` does when there is no plan (`EXIT`: 1, or 2 when
+    the planner failed), 2 when the skill replay fails."""
     from ..io.atomic import atomic_write_many
     from ..skills.recipe import skill_plan_recipe
     from ..skills.report import micro_files, skill_plan_json, skill_plan_text
@@ -125,14 +130,14 @@ def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: 
         message = outcome.message or outcome.result.message
         click.echo(f"{outcome.status} ({outcome.result.planner}): {message}", err=True)
         reason = None
-        if outcome.status == PlanStatus.UNSOLVABLE:
+        if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP):
             from ..model.constraints import combine
             from ..skills.profile import robot_constraints
 
             reason, _ = why_unsolvable(foon, kitchen, goal, combine(cons, robot_constraints(table, robot)), encoding)
             click.echo("reason: " + reason, err=True)
         _failed_json(fmt, output, outcome.status, encoding, message, reason)
-        ctx.exit(1 if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.TIMEOUT) else 2)
+        ctx.exit(EXIT[outcome.status])
     if fmt == "json":
         text = json.dumps({"status": outcome.status, "encoding": outcome.task.encoding,
                            "plan": list(outcome.result.plan), **skill_plan_json(plan)}, indent=2) + "\n"
