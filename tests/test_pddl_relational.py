@@ -10,10 +10,11 @@ from click.testing import CliRunner
 from conftest import SUBGRAPHS
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from node_words import contains, inside, n
 
 from foon2pddl.cli import main
 from foon2pddl.io.files import load
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_node, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
@@ -30,18 +31,6 @@ from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 
 WHIPPED = SUBGRAPHS / "0001-whipped_cream.txt"
-
-
-def n(label, *states):
-    return make_node(label, [s if not isinstance(s, str) else make_state(s) for s in states])
-
-
-def contains(*items):
-    return make_state("contains", "", items)
-
-
-def inside(holder):
-    return make_state("in", holder)
 
 
 # Heavy cream poured from a carton into a cup: FOON lists the cream only as an input (read-only).

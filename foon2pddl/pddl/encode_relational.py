@@ -67,7 +67,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
 from .holder_words import mismatches, task_aliases
-from .holders import Fate, gained, list_gaps, unit_aliases
+from .holders import Fate, gained, head_of, list_gaps, unit_aliases
 from .instance_counts import count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role
@@ -100,7 +100,11 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
-    silent = silent_labels(task_nodes)  # once: the comprehension below read it per unit
+    # once (the comprehension below read it per unit); with the places only outputs name, and by no other name
+    # (`pan` for the skillet), whose holders start with no list (`missing` below: the bread toast's plate)
+    names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
+    silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
+                                          if c not in names and not any(head_of(c, x) for x in names)}
     plans = {u: plan_unit(f.units[u], inp.kitchen, silent, filled) for u in units}
     by_unit = {f.units[u]: p for u, p in plans.items()}
     def roles_of(unit):

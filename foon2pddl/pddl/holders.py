@@ -34,7 +34,10 @@ Rules, in order (each reads only the unit itself):
    {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
    An object `in [C]` before and after a unit with one C that does not list it
    stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`),
-   unless that C's output node newly lists it (it came from another C).
+   unless that C's output node newly lists it (it came from another C). An object whose output node keeps
+   the place its input node had, in a holder whose output node no longer lists it, while exactly one other
+   container newly lists it, arrives in that one: FOON left its place stale (the garlic butter scraped out of
+   the food processor bowl into the bowl that lists it, still `in [food processor bowl]`).
    A second role of one label in the same holder is bound late too: a list names
    a label once (`plate (contains {bread})` under the sandwich's two breads, each
    brought on its own plate: the planner takes the second from where it is).
@@ -141,9 +144,16 @@ class Flow:
 
 
 def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:
-    """`node` with its place replaced by `in [holder]` (an implied node, rule 3)."""
+    """`node` with its place replaced by `relation [holder]` (an implied node, rule 3)."""
     kept = [s for s in node.states if not (s.label in ("in", "on") and s.related)]
     return make_node(node.label, [*kept, make_state(relation.value, holder)])
+
+
+def _relation(nodes: tuple[ObjectNode | None, ...], holder: str) -> Relation:
+    """How the unit's nodes place things at `holder`: `on` when they say `on [holder]` more often than `in
+    [holder]` (the onion and pepper poured onto the plate of tomato, `on [plate]` in the unit), else `in`."""
+    said = [rel for node in nodes for rel, c in places(node) if c == holder]
+    return Relation.ON if said.count(Relation.ON) > said.count(Relation.IN) else Relation.IN
 
 
 def head_of(name: str, label: str) -> bool:
@@ -251,8 +261,11 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                 mixed.add(k)
             elif into:
                 implied[k] = into[0]
-                out_nodes[k] = moved_into(r.before, labels[into[0]])
-    read_after = [moved_into(before[k], labels[implied[k]]) if k in implied else after[k] for k in range(len(roles))]
+    how = {k: _relation((*before, *after), labels[j]) for k, j in implied.items()}
+    for k, j in implied.items():
+        out_nodes[k] = moved_into(roles[k].before, labels[j], how[k])
+    read_after = [moved_into(before[k], labels[implied[k]], how[k]) if k in implied else after[k]
+                  for k in range(len(roles))]
     made_in = {place_of(after[k]) for k, r in enumerate(roles) if r.before is None and place_of(after[k])}
     result = []
     sources = [_holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None
@@ -262,8 +275,13 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         if src is not None and src.role is not None and any(
                 labels[j] == r.label and sources[j] == src for j in range(k)):
             src = Place(src.relation, src.holder)  # a list names a label once: the second is bound late (rule 2)
-        dst = (Place(Relation.IN, labels[implied[k]], implied[k]) if k in implied  # the role it moves into
+        dst = (Place(how[k], labels[implied[k]], implied[k]) if k in implied  # the role it moves into
                else _holder(labels, read_after, k, r.label, place_of(read_after[k])))
+        if (src is not None and src == dst and src.role is not None and r.after is not None
+                and place_of(after[k]) == place_of(before[k]) and r.label not in listed(after[src.role])):
+            takers = [j for j in range(len(roles)) if j != k and roles[j].before is not None and r.label in gained[j]]
+            if len(takers) == 1:  # a stale place (the unit left it as it was): the one role taking it in holds it
+                dst = Place(dst.relation, labels[takers[0]], takers[0])
         if r.before is None:
             result.append(RelRole(r, r.after, Fate.NEW, None, dst))
             continue

@@ -15,34 +15,31 @@ own words, never with an encoding's facts (it is the oracle that checks them).
 * placement: an object whose node says `in [C]` / `on [C]` is directly in / on an
   object labelled C (`MISPLACED`); when its node names several places (`in [bowl]`,
   `in [microwave]`), the direct holder matches one and the others are further up the
-  holder chain. An object whose node names no place may have a holder only when it
+  holder chain (or the holder's label and the object's are a pair `PhysicalTrace.gaps` reports: the
+  pour's `bowl (contains {garlic butter})` beside `garlic butter (in [food processor bowl])`). An
+  object whose node names no place may have a holder only when it
   has had it since the initial state and its initial node named no place either (a
   scene's placement FOON is silent about: the bowl on `counter_1`); any other holder
   is `UNEXPECTED_HOLDER` (a board that is cut on, then carried, still holding the onion);
-* contents, for holders of a *container label* (a label some node of the trace gives a
-  `contains`, `empty` or `with` state and some node names as a place; a stove or a table,
-  whose nodes never describe what is on them, may hold anything, and a `contains` list on
-  a mixture nothing is put in names its ingredients), when its node describes its contents
-  (a `contains`, `empty` or `with` state: `cutting board (dirty)` with the bread still on it
-  says nothing about what is on the board, so nothing is checked): the labels a container's node lists
-  (`contains {a, b}`, `contains [a]`) are exactly covered by the existing objects in or
-  on it, directly or through others (the dressing on the carrot in the bowl). An
-  ingredient list names what went into a mixture, so an object *stands for* its label
-  plus every object it absorbed: a consumed object is absorbed by the objects its step
-  changed that end up in the holder it was in (or under the mixture it was on, consumed
-  too; or, for a consumed object that stood free, by the objects the step made),
-  transitively. A listed label nothing in the container stands for (nor the container
-  itself, when it is a mixture that absorbed it) is `MISSING_CONTENT` (unless the trace's
-  builder reported that FOON's own nodes contradict each other about that container label
-  and content label, `PhysicalTrace.gaps`: then the pair is not checked), or `STALE_SOURCE`
-  when an object of that label left the container in a step that gave the container no
-  new node (FOON leaves a pour's source out of the unit's outputs, so its list goes
-  stale), or `CLAIMED_TWICE` when the only objects of that label are in other containers
-  that list it too (two bowls claim one salmon). An object that stands for nothing the
-  list names is `UNLISTED_CONTENT`, or `HELD_BY_EMPTY` when the node lists nothing
-  (emptied, or a board that "becomes dirty" with the onion still on it). Only objects
-  whose node names a place count as contents: FOON lists what it places, and a placeless
-  object with a holder is judged by the placement rule above.
+* contents, for holders of a *container label* (a label some node of the trace gives a `contains`, `empty` or
+  `with` state and some node names as a place; a stove or a table, whose nodes never describe what is on them, may
+  hold anything, and a `contains` list on a mixture nothing is put in names its ingredients), when its node
+  describes its contents (a `contains`, `empty` or `with` state: `cutting board (dirty)` with the bread still on it
+  says nothing about what is on the board, so nothing is checked): the labels a container's node lists (`contains
+  {a, b}`, `contains [a]`) are exactly covered by the existing objects in or on it, directly or through others (the
+  dressing on the carrot in the bowl). An ingredient list names what went into a mixture, so an object *stands for*
+  its label plus every object it absorbed: a consumed object is absorbed by the objects its step changed that end
+  up in the holder it was in (or under the mixture it was on, consumed too; or, for a consumed object that stood
+  free, by the objects the step made), transitively. A listed label nothing in the container stands for (nor the
+  container itself, when it is a mixture that absorbed it) is `MISSING_CONTENT` (unless the trace's builder
+  reported that FOON's own nodes contradict each other about that container label and content label,
+  `PhysicalTrace.gaps`: then the pair is not checked), or `STALE_SOURCE` when an object of that label left the
+  container in a step that gave the container no new node (FOON leaves a pour's source out of the unit's outputs,
+  so its list goes stale), or `CLAIMED_TWICE` when the only objects of that label are in other containers that list
+  it too (two bowls claim one salmon). An object that stands for nothing the list names is `UNLISTED_CONTENT`, or
+  `HELD_BY_EMPTY` when the node lists nothing (emptied, or a board that "becomes dirty" with the onion still on
+  it). Only objects whose node names a place count as contents: FOON lists what it places, and a placeless object
+  with a holder is judged by the placement rule above.
 
 **Steps**, for step k:
 
@@ -54,10 +51,10 @@ own words, never with an encoding's facts (it is the oracle that checks them).
 * an object that leaves a holder was in a holder its input node names, and that holder
   is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder,
   the fridge a scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
-* a bound object whose node (before or after) names `in [C]` while the step binds
-  objects labelled C as roles or chosen holders (not a board an effect emptied) is in one of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in
-  the microwave while the salmon sits in bowl_2), unless the task reports that pair as one
-  FOON's words contradict (`trace.gaps`: the unit's only bowl lists its contents without the onion).
+* a bound object whose node (before or after) names `in [C]` while the step binds objects labelled C as
+  roles or chosen holders (not a board an effect emptied, nor one it makes, for a node from before it) is in one
+  of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in the microwave while the salmon sits in bowl_2), unless
+  `trace.gaps` reports C's or the holder's pair (the unit's only bowl lists its contents without the onion).
 
 FOON's names are read through the trace's aliases (`salad` for `carrot salad`), and a node a step sets also
 through that step's own (`TraceStep.aliases`: the club sandwich's `toothpick (in [sandwich])`).
@@ -216,8 +213,9 @@ class _Replay:
             return
         here = (s.relation, self.label[s.holder])
         if here not in named:
-            add(DisagreementKind.MISPLACED, (oid, s.holder),
-                f"{oid} is {_say(named)} by its node, but is {s.relation} {s.holder} (a {here[1]})")
+            if not self.stands_for(oid) & self.gaps.get(here[1], frozenset()):
+                add(DisagreementKind.MISPLACED, (oid, s.holder),
+                    f"{oid} is {_say(named)} by its node, but is {s.relation} {s.holder} (a {here[1]})")
             return
         chain, at = set(), states[s.holder].holder
         while at is not None:
@@ -331,19 +329,21 @@ class _Replay:
                 f"{oid} goes {now.relation} {now.holder}, which the step does not use")
 
     def _holders_bound(self, step: TraceStep, before, after, add) -> None:
-        by_label: dict[str, set[str]] = {}
-        for b in step.bindings:  # the unit's objects and the holders it chose, not what an effect emptied
+        by_label: dict[str, set[str]] = {}  # the unit's objects and the holders it chose, not what an effect
+        made = {b.object for b in step.bindings if b.before is None}  # emptied; none it makes holds before
+        for b in step.bindings:
             if b.role:
                 by_label.setdefault(self.label[b.object], set()).add(b.object)
         seen = set()
         for b in step.bindings:
-            for node, state in ((b.before, before[b.object]), (b.after or b.before, after[b.object])):
+            for node, state, new in ((b.before, before[b.object], made), (b.after or b.before, after[b.object], made if b.after is None else set())):
                 if not state.exists or state.holder is None:
                     continue
+                gap = self.gaps.get(self.label[state.holder], frozenset())
                 for rel, c in self.places(node):
-                    if self.stands_for(b.object) & self.gaps.get(c, frozenset()):
+                    if self.stands_for(b.object) & (self.gaps.get(c, frozenset()) | gap):
                         continue  # FOON's words contradict each other here: reported, and bound late
-                    ours = by_label.get(c, set()) - {b.object}
+                    ours = by_label.get(c, set()) - {b.object} - new
                     if ours and rel == state.relation and state.holder not in ours and (b.object, c) not in seen:
                         seen.add((b.object, c))
                         add(DisagreementKind.HOLDER_NOT_BOUND, (b.object, state.holder, *sorted(ours)),

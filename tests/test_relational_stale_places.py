@@ -1,0 +1,95 @@
+"""The `relational` encoding where FOON's place words go stale: the holder that lists an object wins."""
+
+from __future__ import annotations
+
+from node_words import contains, inside, n
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.holders import relational_roles
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+# cheesy garlic bread: the garlic butter is scraped out of the food processor bowl into a bowl that then lists
+# it, while FOON leaves its node `in [food processor bowl]`; the spread takes it from the bowl that lists it
+FPB, BOWL, SPOON = n("food processor bowl", contains("garlic butter")), n("bowl", "empty"), n("spoon", "clean")
+BUTTER = n("garlic butter", inside("food processor bowl"))
+FULL_BOWL = n("bowl", contains("garlic butter"))
+SCRAPE = FunctionalUnit((FPB, BOWL, BUTTER, SPOON), Motion("scrape and pour"),
+                        (n("food processor bowl", "dirty"), n("spoon", "dirty"), FULL_BOWL, BUTTER))
+BREAD = n("bread", "halved")
+SPREAD_BREAD = n("bread", contains("garlic butter"))
+SPREAD = FunctionalUnit((BREAD, FULL_BOWL, BUTTER, SPOON), Motion("spread"),
+                        (SPREAD_BREAD, n("garlic butter", make_state("on", "bread")), n("spoon", "dirty")))
+
+
+def test_an_object_whose_place_goes_stale_arrives_in_the_one_container_that_newly_lists_it():
+    butter = relational_roles(SCRAPE)[2]
+    assert butter.source.holder == "food processor bowl" and butter.source.role == 0
+    assert butter.target.holder == "bowl" and butter.target.role == 1
+
+
+def test_a_plan_through_a_stale_place_passes_the_replay():
+    kitchen = Kitchen(frozenset({FPB, BOWL, BUTTER, SPOON, BREAD}))
+    outcome = plan(Foon((SCRAPE, SPREAD)), kitchen, Goal(GoalSpec("bread"), (SPREAD_BREAD,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    final = outcome.trace.final
+    butter = [o.id for o in outcome.trace.objects if o.label == "garlic butter"]
+    assert [final[b].holder for b in butter] == ["bread_1"]
+    scraped = next(s for s in outcome.trace.steps if s.unit == SCRAPE)
+    assert {b.object for b in scraped.bindings} >= {"bowl_1", "garlic_butter_1"}
+
+
+def test_a_holder_the_step_makes_is_not_where_its_objects_were_before():
+    # cheesy garlic bread: the bread is moved from its board onto the baking tray, and FOON gives a `cutting
+    # board (dirty)` as an output only: a board the step makes, which cannot be where the bread was before it
+    board, loaf = n("cutting board", "clean"), n("bread", "loaf")
+    bread = n("bread", "loaf", make_state("on", "cutting board"))
+    put = FunctionalUnit((board, loaf), Motion("pick-and-place"), (n("cutting board", contains("bread")), bread))
+    tray = n("baking tray", "empty")
+    moved, full_tray = n("bread", "loaf", make_state("on", "baking tray")), n("baking tray", contains("bread"))
+    place = FunctionalUnit((tray, bread), Motion("pick-and-place"), (n("cutting board", "dirty"), full_tray, moved))
+    outcome = plan(Foon((put, place)), Kitchen(frozenset({board, loaf, tray})), Goal(GoalSpec("bread"), (moved,)),
+                   "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    assert [s.holder for s in outcome.trace.final.values() if s.node == moved] == ["baking_tray_1"]
+
+
+def test_an_implied_move_keeps_the_relation_the_unit_uses_for_that_holder():
+    # perfect omelette: the onion and pepper plates are poured onto the plate of tomato, which alone has an
+    # output node; the next pour takes `onion (chopped, on [plate])`, as the unit's own nodes place things
+    tomato_plate, tomato = n("plate", contains("tomato")), n("tomato", "diced", make_state("on", "plate"))
+    onion_plate, onion = n("plate", contains("onion")), n("onion", "chopped", make_state("on", "plate"))
+    full = n("plate", contains("onion", "tomato"))
+    merge = FunctionalUnit((tomato_plate, tomato, onion_plate, onion), Motion("pour"), (full,))
+    onion_role = relational_roles(merge)[3]
+    assert onion_role.target.relation == "on" and onion_role.target.role == 0
+    assert onion_role.after == onion
+    pan, mixed = n("pan", "empty"), n("pan", contains("onion", "tomato"))
+    pour = FunctionalUnit((pan, full, onion, tomato), Motion("pour"),
+                          (mixed, n("onion", "chopped", inside("pan")), n("tomato", "diced", inside("pan"))))
+    kitchen = Kitchen(frozenset({tomato_plate, tomato, onion_plate, onion, pan}))
+    outcome = plan(Foon((merge, pour)), kitchen, Goal(GoalSpec("pan"), (mixed,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok
+
+
+def test_an_object_leaves_a_holder_no_node_describes_whole():
+    # bread toast: the bread starts on a plate FOON never gives a node; moving it to the pan takes the bread
+    # itself, not a portion of it (a plate is no carton that keeps what it lists)
+    bread, butter = n("bread", make_state("on", "plate")), n("butter", inside("bowl"))
+    buttered = n("bread", contains("butter"), make_state("on", "plate"))
+    spread = FunctionalUnit((bread, butter), Motion("spread"), (buttered,))
+    pan, moved = n("cooking pan", "empty"), n("bread", contains("butter"), make_state("on", "cooking pan"))
+    place = FunctionalUnit((pan, buttered), Motion("pick-and-place"), (n("cooking pan", contains("bread")), moved))
+    outcome = plan(Foon((spread, place)), Kitchen(frozenset({bread, butter, pan})), Goal(GoalSpec("bread"), (moved,)),
+                   "relational")
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok, [d.describe() for d in replay(outcome.trace).disagreements]
+    assert [o.id for o in outcome.trace.objects if o.label == "bread"] == ["bread_1"]
+    assert outcome.trace.final["bread_1"].node == moved
