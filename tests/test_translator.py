@@ -144,3 +144,34 @@ def test_prestart_starts_the_server_that_the_next_translation_uses(example, goal
     assert translator._server is server  # a running server is kept
     run, sas = _translate(tmp_path / "t", domain, problem, warm=True)
     assert run.returncode == 0 and sas and translator._server is server
+
+
+def test_the_server_has_imported_every_module_a_translation_imports(example, goals, tmp_path):
+    """`translate_server.LATE_IMPORTS` is complete: after importing what the server imports, translating a FOON
+    goal's task (delete-free and with deletes) imports nothing more (else each child imports it again)."""
+    import subprocess
+    import sys
+
+    from foon2pddl.planners import translate_server
+
+    foon, kitchen = example
+    goal = resolve_goal(spec_of_node(goals[0]), foon)
+    for k, encoding in enumerate(("tree", "instances")):
+        domain, problem = render(compile_goal(foon, kitchen, goal, encoding).task)
+        (tmp_path / f"domain{k}.pddl").write_text(domain)
+        (tmp_path / f"problem{k}.pddl").write_text(problem)
+    script = (
+        "import importlib, io, contextlib, sys\n"
+        "from fast_downward.translate import main, options, pddl_parser\n"
+        f"for name in {translate_server.LATE_IMPORTS!r}: importlib.import_module(name)\n"
+        "before = set(sys.modules)\n"
+        "for k in (0, 1):\n"
+        "    sys.argv = ['translate', f'domain{k}.pddl', f'problem{k}.pddl', '--sas-file', 'out.sas']\n"
+        "    options.set_options()\n"
+        "    with contextlib.redirect_stdout(io.StringIO()):\n"
+        "        main.main()\n"
+        "print(sorted(set(sys.modules) - before))\n")
+    env = {**os.environ, "PYTHONPATH": str(fd.bin_dir())}
+    out = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, env=env, capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "[]", out.stdout

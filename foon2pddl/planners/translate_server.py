@@ -4,7 +4,8 @@ Run as a script (`python translate_server.py`, the wheel's `bin` directory on PY
 `planners.translator`; it imports nothing of foon2pddl. Starting an interpreter and importing
 the translator costs ~100 ms of CPU, against ~20 ms for translating a typical FOON goal's
 task; a forked child starts in ~2 ms, with the translator's modules loaded and never run, so
-every task still gets a pristine translator (its module-level options and counters fresh).
+every task still gets a pristine translator (its module-level options and counters fresh); the
+modules it would import only while running are imported by the server too (`LATE_IMPORTS`).
 
 Protocol, one JSON object a line: a request `{"args": [...], "cwd": DIR, "memory_mb": N|null}`
 on stdin; the reply `{"pid": P}` as soon as the child runs, then `{"code": C}` when it ends
@@ -25,6 +26,9 @@ import sys
 import traceback
 
 OUTPUT_FILE = "planner-output.log"  # the name planners.process uses
+#: Modules the translator imports only while it runs: argparse's help formatter (shutil, locale), the input
+#: files' encoding, the rule splitting of its Datalog program. Imported by the server, before it forks.
+LATE_IMPORTS = ("shutil", "locale", "encodings.latin_1", "fast_downward.translate.split_rules")
 
 
 def _child(request: dict) -> int:
@@ -80,7 +84,15 @@ def _finish(code: int) -> None:
 
 def serve() -> None:
     """Answer requests until stdin ends."""
+    import importlib
+
     from fast_downward.translate import main, options, pddl_parser  # noqa: F401 - loaded once, run per child
+
+    for name in LATE_IMPORTS:  # what a run would import again in every child (~5 ms of a child's ~20)
+        try:
+            importlib.import_module(name)
+        except ImportError:  # another translator version: its child imports what it needs
+            pass
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the caller ends us (stdin closed, or killed)
     for line in sys.stdin:
