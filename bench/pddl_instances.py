@@ -33,6 +33,7 @@ from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.encode_instances import encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
 from foon2pddl.pddl.instance_replay import instance_trace
+from foon2pddl.pddl.prune import drop_unbindable
 from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd, up_engine
 from foon2pddl.planners.trace_check import check_states
@@ -81,7 +82,7 @@ def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_l
     tree_units = sum(tree_task.action_for(s.split()[0]).unit is not None for s in tree.plan)
     t0 = time.perf_counter()
     task = encode_instances(foon, kitchen, goal, 3, EncodeOptions(), extra=extra)
-    res = PLANNERS[planner](*render(task), time_limit)
+    res = PLANNERS[planner](*render(drop_unbindable(task)), time_limit)  # what `plan` gives the planner
     seconds = _seconds(res) or (time.perf_counter() - t0)
     if not res.solved:
         return Row(name, native, tree.status, tree_units, res.status, 0, 0, len(task.instances), False,
