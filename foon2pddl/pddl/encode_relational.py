@@ -269,7 +269,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
     delete: list[Atom] = []
     cond: list[Conditional] = []
     first: dict[tuple[str, str], str] = {}
-    late: dict[tuple[Relation, str], str] = {}
+    late: dict[tuple[Relation, str, int], str] = {}
 
     def fresh(label: str, key, word: str = "") -> str:
         v = f"?{names.name(f'{label} {word}'.strip(), key=key)}"
@@ -291,14 +291,15 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
         if not isinstance(new, str) and new in stable:
             add.append(Atom(OCCUPIED, (const[new],)))
 
-    def holder_var(place, label: str, k: int) -> str | None:
+    def holder_var(place, label: str, k: int, source: bool = False) -> str | None:
         if place.role is not None:
             return var[place.role]
-        key = (place.relation, place.holder)
+        key = (place.relation, place.holder, k if source else -1)  # a source per object (two breads, two boards)
         if key not in late:
             if place.holder not in type_of:
                 return None
-            late[key] = fresh(place.holder, ("late", key), "here")
+            taken = [h for (rel, c, _), h in late.items() if (rel, c) == key[:2] and not source]  # the first's
+            late[key] = taken[0] if taken else fresh(place.holder, ("late", key), "here")
         if place.holder in containers:
             gaps.append((place.holder, label, f"{label} is {place.relation} [{place.holder}], a {place.holder} "
                          "the unit does not name: nothing says that it lists it", unit))
@@ -347,7 +348,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             h = None
             if (src.role is not None and bound[src.role]) or (src.role is None and s.fate is Fate.CONSUMED
                                                                and not s.late_empties):
-                h = holder_var(src, label, k)
+                h = holder_var(src, label, k, source=True)
             fact = Atom(src.relation.value, (h, v)) if h is not None else None
             if fact is not None:
                 pre.append(fact)

@@ -18,7 +18,10 @@ parameter of the unit's action, bound to a physical instance:
 Pairing rule, per label: among all (input, output) pairs of that label, the
 pair of identical nodes first, then the greatest number of shared states, then
 of shared ingredients (`bowl (contains {a})` becomes `bowl (contains {a, b})`),
-ties broken by input position then output position (the order FOON lists them in);
+then of shared ingredients that no input FOON marks as in motion (its motion identifier,
+1: a scoop of bacon, `bacon (fried, in [skillet])` marked 1, from `skillet (contains
+{bacon})` into `skillet (contains {white sauce})` gives `skillet (contains {white
+sauce, bacon})`: the white sauce was there already, the bacon is what the hand moves), ties broken by input position then output position (the order FOON lists them in);
 pairs are taken greedily, each node at most once. Ambiguity: when a unit has
 several inputs of one label and fewer outputs (two bowls combined into one), the
 rule picks the input most like the output as the one that "becomes" it; FOON
@@ -79,12 +82,14 @@ def unit_roles(unit: FunctionalUnit) -> tuple[Role, ...]:
     O(k^2 log k) for k nodes of one label (k is tiny in practice); cached per unit.
     """
     inputs, outputs = tuple(dict.fromkeys(unit.inputs)), tuple(dict.fromkeys(unit.outputs))
+    moving = {n.label for n in inputs if n.motion_flag}  # FOON's motion identifier: the objects the hand moves
     pairs = []
     for i, a in enumerate(inputs):
         for j, b in enumerate(outputs):
             if a.label == b.label:
                 states, ingredients = _overlap(a, b)
-                pairs.append((a != b, -states, -ingredients, i, j))
+                resident = len((a.ingredients & b.ingredients) - moving)
+                pairs.append((a != b, -states, -ingredients, -resident, i, j))
     partner: dict[int, int] = {}
     taken: set[int] = set()
     for *_, i, j in sorted(pairs):

@@ -1,0 +1,58 @@
+"""Relational tasks' search time and size: readings of FOON that made a task unsolvable in a state space too large
+for the planner to prove it (it searched to the time limit), and objects no plan needs."""
+
+from __future__ import annotations
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.pairing import RoleKind, unit_roles
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+
+def n(label, *states):
+    return make_node(label, [s if not isinstance(s, str) else make_state(s) for s in states])
+
+
+def contains(*items):
+    return make_state("contains", "", items)
+
+
+def test_the_container_that_keeps_what_no_role_moves_is_the_one_that_receives():
+    # 0002 (bacon mac and cheese, line 409): the bacon is scooped out of its skillet into the white sauce's.
+    # Both skillets share one ingredient and two states with the output; FOON marks the bacon as the object in
+    # motion (identifier 1) and nothing moves the white sauce: its skillet is the one that holds both after.
+    place = make_state("on", "stove")
+    bacon_pan = n("skillet", contains("bacon"), "hot", place)
+    sauce_pan = n("skillet", contains("white sauce"), "hot", place)
+    both = n("skillet", contains("white sauce", "bacon"), "hot", place)
+    scoop = FunctionalUnit((bacon_pan, sauce_pan, make_node("bacon", [make_state("fried"), make_state("in", "skillet")], motion_flag=1)),
+                           Motion("scoop and pour"), (n("skillet", "dirty", place), both))
+    roles = {r.before: r for r in unit_roles(scoop)}
+    assert roles[sauce_pan].after == both and roles[bacon_pan].after == n("skillet", "dirty", place)
+    # unmarked, FOON's order still decides (as before)
+    a, b = n("bowl", contains("a")), n("bowl", contains("b"))
+    kinds = {r.before: r.kind for r in unit_roles(FunctionalUnit((b, a), Motion("pour"), (n("bowl", contains("a", "b")),)))}
+    assert kinds == {b: RoleKind.MOVED, a: RoleKind.READ_ONLY}
+
+
+def test_two_objects_on_holders_the_unit_does_not_name_may_be_on_two_of_them():
+    # 0005 (chipotle bean sandwich, line 457): two breads, each `on [cutting board]`, each put on a clean board
+    # of its own; the unit that makes the sandwich names no board. Binding both to one board parameter made
+    # the task unsolvable (lama-first searched to the limit); the sandwich is where the first bread was.
+    board = n("cutting board", "clean")
+    on = make_state("on", "cutting board")
+    units = [FunctionalUnit((n("bread", s), board), Motion("place"), (n("bread", s, on), n("cutting board", contains("bread"))))
+             for s in ("buttered", "toasted")]
+    sandwich = n("sandwich", on)
+    units.append(FunctionalUnit((n("bread", "buttered", on), n("bread", "toasted", on)), Motion("assemble"), (sandwich,)))
+    kitchen = Kitchen(frozenset({n("bread", "buttered"), n("bread", "toasted"), board}))
+    out = plan(Foon(tuple(units)), kitchen, Goal(GoalSpec("sandwich"), (sandwich,)), "relational", time_limit=30)
+    assert out.status == "solved", out.message
+    assert replay(out.trace).ok
+    placed = out.trace.after(1)  # both breads placed, one board each as the place units say
+    boards = {placed[b].holder for b in ("bread_1", "bread_2")}
+    assert len(boards) == 2 and None not in boards
+    assert out.trace.final["sandwich_1"].holder in boards
+
