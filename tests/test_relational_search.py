@@ -6,6 +6,7 @@ from __future__ import annotations
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.pairing import RoleKind, unit_roles
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
@@ -56,3 +57,28 @@ def test_two_objects_on_holders_the_unit_does_not_name_may_be_on_two_of_them():
     assert len(boards) == 2 and None not in boards
     assert out.trace.final["sandwich_1"].holder in boards
 
+
+def test_portions_poured_into_the_state_they_come_from_need_one_source_object():
+    # 0012 (grilled cheese, line 34): each of two firings pours a portion of the grated cheese out of its bowl
+    # into the bowl of mustard; the portion's node is the source's own (`cheese (grated, in [bowl])`, a kitchen
+    # node). The unfolding charged both later mixes to the kitchen (two cheeses in the bowl, never used) on top
+    # of the two portions: 4 objects where one that stays and two portions do, and the pour's groundings grow
+    # with the product of such counts (32,504 operators on 0012, 4,504 now).
+    inb = make_state("in", "bowl")
+    mbowl, mustard = n("bowl", contains("mustard")), n("mustard", "ground", inb)
+    cbowl, cheese = n("bowl", contains("cheese")), n("cheese", "grated", inb)
+    both, spread = n("bowl", contains("cheese", "mustard")), n("spread", inb)
+    on_bread, on_cracker = n("bread", "toasted", contains("spread")), n("cracker", contains("spread"))
+    units = (FunctionalUnit((mbowl, mustard, cbowl, cheese), Motion("pour"), (both,)),
+             FunctionalUnit((both, mustard, cheese), Motion("mix"), (n("bowl", contains("spread")), spread)),
+             FunctionalUnit((spread, n("bread", "toasted")), Motion("spread"), (on_bread,)),
+             FunctionalUnit((spread, n("cracker", "plain")), Motion("spread"), (on_cracker,)),
+             FunctionalUnit((on_bread, on_cracker), Motion("serve"), (n("snack", "plated"),)))
+    kitchen = Kitchen(frozenset({mbowl, mustard, cbowl, cheese, n("bread", "toasted"), n("cracker", "plain")}))
+    goal = Goal(GoalSpec("snack"), (n("snack", "plated"),))
+    task = compile_task(Foon(units), kitchen, goal, "relational")
+    cheeses = [x for x in task.instances if x.label == "cheese"]
+    assert len(cheeses) == 3 and sum(x.start is None for x in cheeses) == 2  # one in its bowl, two portions
+    out = plan(Foon(units), kitchen, goal, "relational", time_limit=30)
+    assert out.status == "solved", out.message
+    assert replay(out.trace).ok

@@ -14,8 +14,12 @@ unfolding a delete-free plan backwards:
    reader before a mover reads the instance the mover takes later). A unit fires F times, F being the largest
    demand among the nodes it is credited with making (moved and new roles);
    each firing moves one instance per moved role and needs one not-yet-made
-   instance per new role. Kitchen nodes are never credited to a unit: their
-   demand is the number of instances the kitchen must hold in that state.
+   instance per new role. Kitchen nodes are not credited to a unit: their
+   demand is the number of instances the kitchen must hold in that state;
+   except a node a unit reads and makes new instances in (`relational`: a
+   portion poured off into the state it was taken from, `cheese (grated, in
+   [bowl])` from one bowl into another): one stays there, and each portion
+   is the unit's.
 
 So the unfolded plan (each unit fired F times, in plan order) is executable at
 the instance level with exactly these counts: the task is solvable whenever
@@ -118,7 +122,8 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
 
     for u in reversed(plan):
         roles = roles_of(foon.units[u])
-        makes = [r.after for r in roles if r.changes and r.after not in kitchen]
+        read_only = {r.before for r in roles if r.kind is RoleKind.READ_ONLY}
+        makes = [r.after for r in roles if r.changes and (r.after not in kitchen or r.after in read_only)]
         times = max((demand(n) for n in makes), default=0)
         if times == 0:
             continue
