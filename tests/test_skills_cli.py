@@ -280,3 +280,15 @@ def test_skills_exit_as_plan_does_for_a_planner_that_gives_up_proves_or_fails(co
     # the same account of why there is no plan as `plan` gives
     assert [x for x in skills.stderr.splitlines() if x.startswith("reason: ")] == \
         [x for x in plain.stderr.splitlines() if x.startswith("reason: ")]
+
+
+@pytest.mark.parametrize("encoding", ["relational", "instances"])
+def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding):
+    from conftest import SUBGRAPHS
+
+    path = str(SUBGRAPHS / "0037-make_quick_french_toast.txt")
+    result = run(path, "--goal", "french toast", "--skills", "--encoding", encoding)
+    assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
+    lines = result.stdout.splitlines()
+    k = next(k for k, line in enumerate(lines) if re.match(r"\d+\. crack ", line))
+    assert lines[k + 2] == "   crack egg_1", lines[k:k + 3]  # was `crack measuring_cup_1`

@@ -405,3 +405,33 @@ def test_a_portion_a_pour_moves_is_poured_from_the_holder_of_what_it_is_part_of(
     assert plan.ok, plan.replay.problems
     assert skills(plan) == [("pick", ("tub_1", "workspace")), ("pour", ("tub_1", "pan_1")),
                             ("place", ("tub_1", "workspace"))]
+
+
+
+def egg_trace(consumed):
+    # FOON (0037 french toast, line 7): crack: measuring cup (empty), egg (uncracked) -> measuring cup (contains
+    # {egg white and yolk}), egg white and yolk (in [measuring cup]); the relational trace keeps the egg (FOON lists
+    # it as an input only, as it lists a knife), another trace may use it up
+    objects = {"egg_1": "egg", "cup_1": "measuring cup", "yolk_1": "egg white and yolk"}
+    egg = node("egg", "uncracked")
+    initial = [ObjectState("egg_1", egg), ObjectState("cup_1", node("measuring cup", "empty")), ObjectState("yolk_1")]
+    step = ("crack", [ObjectState("egg_1", egg, consumed=consumed),
+                      ObjectState("cup_1", make_node("measuring cup", [make_state("contains", "", ["egg white and yolk"])])),
+                      ObjectState("yolk_1", node("egg white and yolk"), "cup_1", IN)], ["cup_1", "egg_1", "yolk_1"])
+    return trace(objects, initial, [step])
+
+
+@pytest.mark.parametrize("consumed", [False, True])
+def test_a_hand_skill_works_on_the_egg_it_cracks_not_on_the_cup_the_yolk_appears_in(consumed):
+    # the french toast cracked the measuring cup (`crack measuring_cup_1`): the skill aimed where the yolk appears
+    t = egg_trace(consumed)
+    assert targets(t, "crack") == ["egg_1"]
+    plan = decompose(t, shipped_table(), shipped_domain())
+    assert plan.ok, plan.replay.problems
+    assert skills(plan) == [("crack", ("egg_1",))]
+
+
+def test_a_tool_skill_that_changes_nothing_works_where_its_product_appears():
+    # several ingredients used up in the bowl their mixture appears in: the mix works in the bowl, with the spoon
+    mixed = decompose(kitchen_trace(CHOP, MOVE, POUR, MIX), shipped_table(), shipped_domain())
+    assert [c.objects for c in mixed.calls if c.skill == "mix"] == [("spoon_1", "bowl_1")]

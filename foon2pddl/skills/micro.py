@@ -13,8 +13,11 @@ appear, where consumed objects were (the workspace only when nothing else is a
 site). A tool or hand skill (one that works on one object: `?h ?o`, `?h ?t ?o`)
 brings the whole outcome in one application at any target, and its targets are
 only the changed objects other than tools when there are any (squeeze the lime,
-not the juicer its juice appears in); a transfer works at the target its moved
-objects go to. Goal = the
+not the juicer its juice appears in), else the free-standing objects it handles: those it
+uses up and, for a bare-hand skill (`?h ?o`, which holds no tool), the step's objects
+taken for tools (crack the egg, not the cup its yolk appears in; the relational trace
+keeps the egg, unchanged); else the sites above (mix in the bowl whose ingredients become
+one mixture); a transfer works at the target its moved objects go to. Goal = the
 objects' facts after the step and every hand empty. Objects moved by a transport
 skill (pick-and-place) stay `graspable`, and their phase changes are tagged with the
 skill that sets them down (`put-in` into a container, `place` onto a surface); objects poured or scooped out of a holder
@@ -158,8 +161,17 @@ def _roles(trace: PhysicalTrace) -> tuple[set[str], set[str]]:
 
 def works_on(domain: SkillDomain, skill: str) -> bool:
     """Whether `skill` works on one placed object (`?h ?o`, or `?h ?t ?o` with a tool), not a transfer."""
+    return _operands(domain, skill) in (("?o",), ("?t", "?o"))
+
+
+def _bare_hand(domain: SkillDomain, skill: str) -> bool:
+    """Whether `skill` works on one object with the bare hand (`?h ?o`: crack, squeeze), holding no tool."""
+    return _operands(domain, skill) == ("?o",)
+
+
+def _operands(domain: SkillDomain, skill: str) -> tuple[str, ...] | None:
     schema = domain.by_name.get(skill)
-    return schema is not None and tuple(v for v, _ in schema.params[1:]) in (("?o",), ("?t", "?o"))
+    return None if schema is None else tuple(v for v, _ in schema.params[1:])
 
 
 def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid: set[str], holders: set) -> bool:
@@ -230,6 +242,7 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
 
     touched = set(trace.steps[index].objects) | {c.id for c in trace.steps[index].changes}
     sites: dict[int, list[str]] = {0: [], 1: [], 2: [], 3: []}  # changed, moved-to, made-in, used-up-in
+    handled: list[str] = []  # used-up objects that stood free: the robot's hand reaches them (the egg it cracks)
     for oid in ids:
         b, a = before[oid], after[oid]
         if not b.exists and a.exists:
@@ -238,6 +251,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
         elif b.exists and not a.exists:
             statics.add(Atom("uses-up", (tag, n[oid])))
             sites[3].append(where(b))
+            if b.holder is None:
+                handled.append(n[oid])
         elif b.exists:
             if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT and not (
                     carries and b.holder is None):
@@ -254,6 +269,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
     tools = {oid for oid in ids if _is_tool(oid, found_before[oid], after[oid], touched, rigid, holders)}
     worked = [x for x in sites[0] if naming.back.get(x) not in tools]
+    if carries and not worked:  # nothing changes phase: the object the hand handles, not where products appear
+        worked = handled + ([n[t] for t in sorted(tools)] if _bare_hand(domain, skill) else [])
     if worked and carries:
         targets = list(dict.fromkeys(worked))  # squeeze the lime, not the juicer its juice appears in
     else:
