@@ -15,11 +15,11 @@ unfolding a delete-free plan backwards:
    demand among the nodes it is credited with making (moved and new roles);
    each firing moves one instance per moved role and needs one not-yet-made
    instance per new role. Kitchen nodes are not credited to a unit: their
-   demand is the number of instances the kitchen must hold in that state;
-   except a node a unit reads and makes new instances in (`relational`: a
-   portion poured off into the state it was taken from, `cheese (grated, in
-   [bowl])` from one bowl into another): one stays there, and each portion
-   is the unit's.
+   demand is the number of instances the kitchen must hold in that state,
+   less one per firing of a unit that reads the node and makes a new instance
+   in it (`relational`: a portion poured off into the state it was taken from,
+   `cheese (grated, in [bowl])` from one bowl into another): that portion
+   serves a later taker, and one instance stays in the source.
 
 So the unfolded plan (each unit fired F times, in plan order) is executable at
 the instance level with exactly these counts: the task is solvable whenever
@@ -122,8 +122,7 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
 
     for u in reversed(plan):
         roles = roles_of(foon.units[u])
-        read_only = {r.before for r in roles if r.kind is RoleKind.READ_ONLY}
-        makes = [r.after for r in roles if r.changes and (r.after not in kitchen or r.after in read_only)]
+        makes = [r.after for r in roles if r.changes and r.after not in kitchen]
         times = max((demand(n) for n in makes), default=0)
         if times == 0:
             continue
@@ -131,6 +130,9 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
         for n in makes:
             consumed.pop(n, None)
             read.discard(n)
+        read_only = {r.before for r in roles if r.kind is RoleKind.READ_ONLY}
+        for n in {r.after for r in roles if r.kind is RoleKind.NEW and r.after in kitchen and r.after in read_only}:
+            consumed[n] = max(0, consumed[n] - times)  # each firing's portion serves one later taker of the node
         for r in roles:
             if r.kind is RoleKind.NEW:
                 created[r.label] += times
