@@ -33,8 +33,7 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.planners.process import cpu_seconds
 from foon2pddl.planners.solve import plan
 from foon2pddl.skills import decompose, shipped_domain, shipped_table
-from foon2pddl.skills.decompose import StepStatus
-from foon2pddl.skills.domain import TRANSPORT
+from foon2pddl.skills.decompose import StepStatus, uncarried
 from foon2pddl.skills.run import skills_encoding
 from foon2pddl.skills.source import trace_of
 from foon2pddl.skills.table import coverage
@@ -62,22 +61,6 @@ class Row:
     firings: list[str] = field(default_factory=list)
     misses: list[tuple[str, str, str]] = field(default_factory=list)  # (motion, status, reason)
     uncarried: list[str] = field(default_factory=list)  # `step N: object (motion)` moved with no transport skill
-
-
-def uncarried(skills, trace) -> list[tuple[int, str]]:
-    """(step index, object id) of every object that stands free before a decomposed step (the robot can grasp
-    it), is in or on something else after it, and is named by no transport skill of that step: moved by a
-    skill that does not hold it. Read from the trace and the skill calls alone, not from the micro problems."""
-    out = []
-    for s in skills.steps:
-        if s.status is not StepStatus.DECOMPOSED:
-            continue
-        before, after = trace.after(s.index - 1), trace.after(s.index)
-        carried = {c.objects[0] for c in s.calls if c.skill in TRANSPORT}
-        out += [(s.index, oid) for oid, b in sorted(before.items())
-                if b.exists and after[oid].exists and b.holder is None and after[oid].holder is not None
-                and oid not in carried]
-    return out
 
 
 def check_file(path: Path, time_limit: float, encoding: str | None = None, repeat: int = 1) -> Row | None:

@@ -24,7 +24,7 @@ from ..model.physical import PhysicalTrace
 from ..model.tasktree import Validation
 from ..pddl.task import Atom, PlanningTask
 from ..planners.process import cpu_seconds
-from .domain import SkillDomain
+from .domain import TRANSPORT, SkillDomain
 from .fd_micro import solve_micro
 from .memo import MicroMemo
 from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem
@@ -33,7 +33,7 @@ from .replay import Replayer, SkillError, check
 from .shorten import irredundant
 from .table import MotionTable
 
-__all__ = ["MacroSkills", "SkillCall", "SkillPlan", "StepStatus", "decompose"]
+__all__ = ["MacroSkills", "SkillCall", "SkillPlan", "StepStatus", "decompose", "uncarried"]
 
 
 class StepStatus(StrEnum):
@@ -159,8 +159,10 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
         if status2 == "solved":
             skill, problem, status, plan, reused = other, moved, status2, plan2, reused2
     if status != "solved" and "?t" in {v for v, _ in domain.by_name[skill].params} and not _has_tool(problem):
+        lacking = (f"the motion table gives {motion!r} no by-hand skill" if hand is None else
+                   f"the motion table's by-hand skill {hand!r} for {motion!r} is not defined in {domain.path}")
         return out(StepStatus.FAILED, f"the step lists no tool to {skill} with (none stands free on the table) and "
-                   f"the motion table gives {motion!r} no by-hand skill", problem, reused=reused)
+                   + lacking, problem, reused=reused)
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)
@@ -234,3 +236,20 @@ def _back(naming: Naming, name: str | None) -> str | None:
     if name is None or name == naming.workspace:
         return None if name is None else "workspace"
     return naming.back.get(name, name)
+
+
+def uncarried(plan: SkillPlan, trace: PhysicalTrace) -> list[tuple[int, str]]:
+    """(step index, object id) of every object that stands free before a decomposed step (the robot can grasp
+    it), is in or on something else after it, and is named by no transport skill of that step: moved by a
+    skill that does not hold it (floor 0; `bench.skills` counts them). Read from the trace and the skill calls
+    alone, not from the micro problems, so it checks what `skills.micro` builds. O(steps x objects)."""
+    out = []
+    for s in plan.steps:
+        if s.status is not StepStatus.DECOMPOSED:
+            continue
+        before, after = trace.after(s.index - 1), trace.after(s.index)
+        carried = {c.objects[0] for c in s.calls if c.skill in TRANSPORT}
+        out += [(s.index, oid) for oid, b in sorted(before.items())
+                if b.exists and after[oid].exists and b.holder is None and after[oid].holder is not None
+                and oid not in carried]
+    return out
