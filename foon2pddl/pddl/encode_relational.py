@@ -100,8 +100,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
-    # once (the comprehension below read it per unit); with the places only outputs name, and by no other name
-    # (`pan` for the skillet), whose holders start with no list (`missing` below: the bread toast's plate)
+    # once; with places only outputs name (by no other name: `pan`), holders with no list (bread toast's plate)
     names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
     silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
                                           if c not in names and not any(head_of(c, x) for x in names)}
@@ -365,7 +364,9 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 f_ = f"?{names.name(f'from {k}', key=('from', k))}"
                 leave = Atom(src.relation.value, (f_, v))
                 cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
-                for old, new in empties.get(k, ()):  # whichever holder the units filled with it: emptied of it
+                for old, new in empties.get(k, ()):  # whichever holder the units filled with it: emptied of it,
+                    if any(bound[j] and changes[j] and x.rel.role.before == old for j, x in enumerate(slots)):
+                        continue  # but not one the unit itself changes out of that state: it says how
                     was = Atom(IS, (f_, const[old]))
                     now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
                     cond.append(Conditional((leave, was), add=tuple(now), delete=(was,), var=f_, type=ROOT_TYPE))

@@ -35,9 +35,9 @@ Rules, in order (each reads only the unit itself):
    An object `in [C]` before and after a unit with one C that does not list it
    stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`),
    unless that C's output node newly lists it (it came from another C). An object whose output node keeps
-   the place its input node had, in a holder whose output node no longer lists it, while exactly one other
-   container newly lists it, arrives in that one: FOON left its place stale (the garlic butter scraped out of
-   the food processor bowl into the bowl that lists it, still `in [food processor bowl]`).
+   its input node's place, in a holder whose output node no longer lists it, arrives in the one other
+   container that newly lists it, if one: FOON left its place stale (the garlic butter scraped into the
+   bowl that lists it, still `in [food processor bowl]`).
    A second role of one label in the same holder is bound late too: a list names
    a label once (`plate (contains {bread})` under the sandwich's two breads, each
    brought on its own plate: the planner takes the second from where it is).
@@ -167,7 +167,8 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     """Rule 0: names the unit's lists and places use for one of its objects under another label.
 
     A name a `contains`/`with` list or an `in [C]`/`on [C]` place of the unit uses that is the label of no
-    role of the unit, and that exactly one role's label matches by the head-noun rule (`head_of`), means
+    role of the unit, and that exactly one role's label matches by the head-noun rule (`head_of`), not counting
+    a role whose own nodes list it (`fried rice (contains {rice})` lists an ingredient, not itself), means
     that role: `salad bowl (contains {salad})` beside `carrot salad (in [salad bowl])`, `oil (in [pan])` in a
     unit whose pan is `cooking pan`. A name only places use (an output node's among them), matching no label
     so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
@@ -175,15 +176,21 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     """
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
-    names = {x for r in roles for n in (r.before, r.after) for x in (*listed(n), *(c for _, c in places(n)))}
+    users: dict[str, set[str]] = {}  # name -> labels of the nodes that use it
+    listers: dict[str, set[str]] = {}  # name -> labels of the nodes that list it
+    for r, n in ((r, n) for r in roles for n in (r.before, r.after)):
+        for x in listed(n):
+            listers.setdefault(x, set()).add(r.label)
+        for x in (*listed(n), *(c for _, c in places(n))):
+            users.setdefault(x, set()).add(r.label)
     out = {}
-    for name in sorted(names - labels):
-        if len(match := [lab for lab in sorted(labels) if head_of(name, lab)]) == 1:
+    for name in sorted(set(users) - labels):
+        if len(match := [lab for lab in sorted(labels) if head_of(name, lab) and lab not in listers.get(name, ())]) == 1:
             out[name] = match[0]
     lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
              for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
     sides = [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]
-    for name in sorted(names - labels - lists - set(out)):  # a place only: the one role listing what is there
+    for name in sorted(set(users) - labels - lists - set(out)):  # a place only: the one role listing what is there
         takers = set()
         for side in sides:
             put = {r.label for n, r in side if name in (c for _, c in places(n))}

@@ -56,11 +56,14 @@ def _states(task: PlanningTask, facts: set[Atom], last: dict[str, ObjectNode | N
     holder = _holders(facts)
     node: dict[str, ObjectNode | None] = {x.name: None for x in task.instances}
     consumed: set[str] = set()
-    for a in facts:
+    for a in sorted(facts):
         if a.predicate == "is" and len(a.args) == 2 and a.args[0] in node:
             if a.args[1] == _CONSUMED:
                 consumed.add(a.args[0])
             elif a.args[1] != _NOT_MADE:
+                if node[a.args[0]] is not None:  # an encoding whose effects set two states: say so, never pick one
+                    raise PlanDecodeError(f"{a.args[0]} is {node[a.args[0]].describe()!r} and "
+                                          f"{nodes[a.args[1]].describe()!r} at once")
                 node[a.args[0]] = nodes[a.args[1]]
     return {x: ObjectState(x, last.get(x) if x in consumed else node[x], *holder.get(x, (None, None)),
                            x in consumed) for x in node}
