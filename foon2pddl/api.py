@@ -359,8 +359,10 @@ def skill_plan(network: Network | Foon, kitchen: Kitchen, goal: Goal | str, *, s
 
     `skills`, `table`: a skill domain and a motion table instead of the shipped ones; the robot has
     `hands`, lacks `without_skills` (their motions are banned for the macro planner) and pays
-    `skill_costs` (others cost 1). `options` as `planners.solve.plan` takes them. `.skills` is the
-    `skills.SkillPlan` (None without a plan), `.json()` the skill list `--format json` prints.
+    `skill_costs` (others cost 1). `options` as `planners.solve.plan` takes them. `encoding` None: the
+    relational one, falling back to `instances` when it finds no plan (`skills.run`; `.first` is then its
+    outcome). `.skills` is the `skills.SkillPlan` (None without a plan), `.json()` the skill list `--format
+    json` prints.
 
     >>> net = load_network()
     >>> done = skill_plan(net, load_kitchen(net), "whipped cream")

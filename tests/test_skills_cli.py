@@ -292,3 +292,35 @@ def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding
     lines = result.stdout.splitlines()
     k = next(k for k, line in enumerate(lines) if re.match(r"\d+\. crack ", line))
     assert lines[k + 2] == "   crack egg_1", lines[k:k + 3]  # was `crack measuring_cup_1`
+
+
+def test_the_default_skill_plan_falls_back_to_instances_when_the_relational_encoding_finds_none_and_says_so():
+    # 0036: the relational task has no relaxed solution (a FOON producer/consumer mismatch), the instances one solves;
+    # `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a skill plan
+    from conftest import SUBGRAPHS
+
+    path = str(SUBGRAPHS / "0036-roasted_brussels_sprouts.txt")
+    result = run(path, "--goal", "brussel sprout (cooked, on [plate])", "--skills")
+    assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
+    assert "note: the relational encoding found no plan (unsolvable: " in result.stderr, result.stderr
+    assert "under the instances encoding" in result.stderr
+    asked = run(path, "--goal", "brussel sprout (cooked, on [plate])", "--skills", "--encoding", "relational")
+    assert asked.exit_code == 1 and "encoding found no plan" not in asked.stderr, asked.output  # asked for: no fallback
+
+
+def test_the_relational_task_gets_a_share_of_the_time_limit_when_a_fallback_may_follow(monkeypatch):
+    from foon2pddl.skills import run as skills_run
+
+    calls = []
+    real = skills_run.plan
+
+    def recording(foon, kitchen, goal, encoding, **options):
+        calls.append((encoding, options["time_limit"]))
+        return real(foon, kitchen, goal, encoding, **options)
+
+    monkeypatch.setattr(skills_run, "plan", recording)
+    assert run("--goal", "whipped cream", "--skills", "--time-limit", "40").exit_code == 0
+    assert calls == [("relational", 40 * skills_run.FIRST_SHARE)]  # solved: no fallback
+    calls.clear()
+    assert run("--goal", "whipped cream", "--skills", "--time-limit", "40", "--encoding", "relational").exit_code == 0
+    assert calls == [("relational", 40)]

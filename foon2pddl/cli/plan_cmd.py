@@ -164,7 +164,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           instances=checked_instances(instances, encoding, view.foon))
     if skills:
         source = click.get_current_context().get_parameter_source("encoding")
-        encoding = skill_encoding(encoding, source is not click.core.ParameterSource.DEFAULT)
+        default_encoding = source is click.core.ParameterSource.DEFAULT
+        encoding = skill_encoding(encoding, not default_encoding)
         if click.get_current_context().get_parameter_source("fmt") is click.core.ParameterSource.DEFAULT:
             fmt = "steps"  # a skill plan's own default: each FOON unit with its skill calls (docs/skills.md)
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
@@ -172,7 +173,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
     if skills:
-        return plan_with_skills(foon, kit, target, encoding, cons, skill_domain=skill_domain, table_path=skill_table,
+        return plan_with_skills(foon, kit, target, None if default_encoding else encoding, cons,
+                                skill_domain=skill_domain, table_path=skill_table,
                                 without_skills=without_skills, hands=hands, fmt=fmt, output=output,
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,

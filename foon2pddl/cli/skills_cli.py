@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import click
@@ -103,29 +104,45 @@ def _check_skill_names(domain, names) -> None:
                              + (f" (did you mean {', '.join(close)}?)" if close else ""))
 
 
-def plan_with_skills(foon, kitchen, goal, encoding: str, cons, *, skill_domain: Path | None, table_path: Path | None,
-                     without_skills: tuple[str, ...], hands: int, fmt: str, output: Path | None, timings: dict,
-                     **options) -> None:
+def plan_with_skills(foon, kitchen, goal, encoding: str | None, cons, *, skill_domain: Path | None,
+                     table_path: Path | None, without_skills: tuple[str, ...], hands: int, fmt: str,
+                     output: Path | None, timings: dict, **options) -> None:
     """Plan, decompose, print (or write `-o DIR`); exits as `plan` does when there is no plan (`EXIT`: 1, or 2 when
-    the planner failed), 2 when the skill replay fails."""
+    the planner failed), 2 when the skill replay fails. `encoding` None: the default one, which falls back to
+    `instances` when it finds no plan (`skills.run`), saying so on stderr."""
     from ..io.atomic import atomic_write_many
     from ..skills.recipe import skill_plan_recipe
     from ..skills.report import micro_files, skill_plan_json, skill_plan_text
-    from ..skills.run import plan_skills, robot_profile
+    from ..skills.run import FALLBACK_ENCODING, FIRST_SHARE, plan_skills, robot_profile, skills_encoding
 
     domain, table = _inputs(skill_domain, table_path)
     _check_skill_names(domain, (*without_skills, *(cons.without_skills if cons is not None else ())))
     robot = robot_profile(cons, hands, without_skills)
     ctx = click.get_current_context()
+    first = encoding or skills_encoding()
+    then = ""
+    if encoding is None and first != FALLBACK_ENCODING:
+        limit = options.get("time_limit")
+        within = f" in {limit * FIRST_SHARE:g} s" if limit is not None and math.isfinite(limit) else ""
+        then = f", then {FALLBACK_ENCODING} if it finds no plan{within}"
+
+    def falling_back(outcome) -> None:
+        click.echo(f"note: the {first} encoding found no plan ({outcome.status}: "
+                   f"{outcome.result.message}); planning with the {FALLBACK_ENCODING} encoding (holders read from "
+                   f"FOON's words, not planned; --encoding {first} gives it the whole time limit)", err=True)
+
     try:
-        with slow_step(f"planning {goal.describe()!r} ({encoding} encoding) and each step's robot skills"):
+        with slow_step(f"planning {goal.describe()!r} ({first} encoding{then}) and each step's robot skills"):
             done = plan_skills(foon, kitchen, goal, encoding=encoding, domain=domain, table=table, robot=robot,
-                               constraints=cons, **options)
+                               constraints=cons, on_fallback=falling_back, **options)
     except GoalExcluded as exc:
         click.echo(f"unsolvable (robot and constraints): {exc}", err=True)
-        _failed_json(fmt, output, PlanStatus.UNSOLVABLE, encoding, "robot and constraints", str(exc))
+        _failed_json(fmt, output, PlanStatus.UNSOLVABLE, first, "robot and constraints", str(exc))
         ctx.exit(1)
     outcome, plan = done.outcome, done.skills
+    encoding = outcome.task.encoding
+    if done.first is not None:
+        timings[f"{first} (no plan)"] = sum(done.first.timings.values())
     if plan is None:
         message = outcome.message or outcome.result.message
         click.echo(f"{outcome.status} ({outcome.result.planner}): {message}", err=True)
