@@ -290,6 +290,9 @@ def test_places_and_listed_read_foon_words():
     assert listed(n) == {"oil", "salt"}  # `seasoned {salt}`: the salt is on the pan (the list is not its own)
     assert listed(node("bowl", ("contains", "rice"))) == {"rice"}
     assert listed(node("baking tray", ("with", "aluminium foil"))) == {"aluminium foil"}
+    # `on {pizza dough}`: the public data's braces around one holder name a place; two names do not
+    assert places(node("mozzarella", "shredded", ("on", ["pizza dough"]))) == (("on", "pizza dough"),)
+    assert places(node("mozzarella", ("on", ["pizza dough", "sauce"]))) == ()
 
 
 @st.composite

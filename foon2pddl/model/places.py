@@ -27,11 +27,13 @@ CONTENT_STATES = frozenset({"contains", "empty", "with"})
 
 
 def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
-    """The places a node names, in order: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]` (a bare
-    `on` is an appliance switched on, not a place)."""
+    """The places a node names, in order: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]`, and for
+    `on {pizza dough}`, the public data's braces around one holder (a bare `on` is an appliance switched on,
+    not a place)."""
     if node is None:
         return ()
-    return tuple((Relation(s.label), s.related) for s in node.states if s.label in ("in", "on") and s.related)
+    return tuple((Relation(s.label), s.related or s.ingredients[0]) for s in node.states
+                 if s.label in ("in", "on") and (s.related or len(s.ingredients) == 1))
 
 
 def place_of(node: ObjectNode | None) -> tuple[Relation, str] | None:
