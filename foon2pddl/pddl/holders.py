@@ -178,7 +178,7 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     labels = {r.label for r in roles}
     users: dict[str, set[str]] = {}  # name -> labels of the nodes that use it
     listers: dict[str, set[str]] = {}  # name -> labels of the nodes that list it
-    for r, n in ((r, n) for r in roles for n in (r.before, r.after)):
+    for r, n in ((role, n) for role in roles for n in (role.before, role.after)):
         for x in listed(n):
             listers.setdefault(x, set()).add(r.label)
         for x in (*listed(n), *(c for _, c in places(n))):
