@@ -153,3 +153,15 @@ def test_a_holder_the_unit_changes_gets_only_the_units_state_whatever_the_hash_s
                               env={**os.environ, "PYTHONHASHSEED": seed}, cwd=Path(__file__).parent.parent)
         seen.add(done.stdout.strip())
     assert seen == {"solved cooking pan (contains {fried rice})"}, seen
+
+
+def test_what_a_wrap_consumes_off_a_sheet_is_part_of_what_it_makes():
+    # onigiri: the rice on the seaweed sheet is wrapped into the onigiri, which lists it; nothing ends on the
+    # sheet, so the rice is part of what the step made
+    rice, sheet = n("rice", make_state("on", "seaweed")), n("seaweed", contains("rice"), "sheet")
+    onigiri = n("onigiri", contains("rice", "seaweed"))
+    wrap = FunctionalUnit((rice, sheet), Motion("wrap"), (onigiri, n("seaweed", "wrapped", make_state("on", "onigiri"))))
+    outcome = plan(Foon((wrap,)), Kitchen(frozenset({rice, sheet})), Goal(GoalSpec("onigiri"), (onigiri,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok, [d.describe() for d in replay(outcome.trace).disagreements]
+    assert outcome.trace.final["rice_1"].consumed

@@ -29,8 +29,8 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   {a, b}`, `contains [a]`) are exactly covered by the existing objects in or on it, directly or through others (the
   dressing on the carrot in the bowl). An ingredient list names what went into a mixture, so an object *stands for*
   its label plus every object it absorbed: a consumed object is absorbed by the objects its step changed that end
-  up in the holder it was in (or under the mixture it was on, consumed too; or, for a consumed object that stood
-  free, by the objects the step made), transitively. A listed label nothing in the container stands for (nor the
+  up in the holder it was in (or under the mixture it was on, consumed too; or, when it stood free or none end up
+  there, by the objects the step made: the rice wrapped into the onigiri), transitively. A listed label nothing in the container stands for (nor the
   container itself, when it is a mixture that absorbed it) is `MISSING_CONTENT` (unless the trace's builder
   reported that FOON's own nodes contradict each other about that container label and content label,
   `PhysicalTrace.gaps`: then the pair is not checked), or `STALE_SOURCE` when an object of that label left the
@@ -359,8 +359,8 @@ class _Replay:
             while h is not None and after[h].consumed:  # on a mixture consumed too: the holder under it
                 h = before[h].holder
             takers = [i for i in changed if i != c.id and after[i].holder is not None
-                      and after[i].holder in (h, c.holder)] if h is not None else made
-            for t in takers:
+                      and after[i].holder in (h, c.holder)] if h is not None else []
+            for t in takers or made:
                 self.absorbed[t] = self.absorbed.get(t, frozenset()) | self.stands_for(c.id)
 
 
