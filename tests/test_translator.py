@@ -175,3 +175,25 @@ def test_the_server_has_imported_every_module_a_translation_imports(example, goa
     out = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, env=env, capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "[]", out.stdout
+
+
+def test_the_warm_translators_child_has_the_cpu_limit_of_a_fresh_one(tmp_path):
+    # a fresh translator gets its CPU limit before exec (`process.limited`); the warm server's forked child had
+    # none, so a caller killed mid-translation left it translating unbounded (the server ends, its child does not)
+    from foon2pddl.planners.process import CPU_LIMIT_FACTOR
+
+    fake = tmp_path / "bin" / "fast_downward" / "translate"
+    fake.mkdir(parents=True)
+    (fake.parent / "__init__.py").write_text("")
+    (fake / "__init__.py").write_text("")
+    (fake / "options.py").write_text("def set_options():\n    pass\n")
+    (fake / "pddl_parser.py").write_text("class ParseError(Exception):\n    pass\n")
+    (fake / "main.py").write_text("def main():\n    print(open('/proc/self/limits').read())\n")
+    translator._drop()
+    try:
+        run = translator.run(["domain.pddl"], tmp_path, 3.0, tmp_path / "bin")
+    finally:
+        translator._drop()
+    assert run is not None and run.returncode == 0, run
+    line = next(x for x in run.output.splitlines() if x.startswith("Max cpu time"))
+    assert line.split()[3:5] == [str(CPU_LIMIT_FACTOR * 3 + 1)] * 2, line

@@ -66,6 +66,11 @@ class ProcessRun:
         return self.returncode is None
 
 
+def cpu_limit(timeout: float | None) -> int | None:
+    """The RLIMIT_CPU (seconds) of a run with a (bounded) time limit: CPU_LIMIT_FACTOR times it, plus a second."""
+    return None if timeout is None else math.ceil(CPU_LIMIT_FACTOR * timeout) + 1
+
+
 def bounded_timeout(seconds: float | None) -> float | None:
     """A time limit every wait accepts: None (no limit) for None, infinity or more than MAX_TIMEOUT;
     at least a millisecond. Raises ValueError for NaN."""
@@ -122,8 +127,7 @@ def run_process(
         # Not under signals_deferred (the child would inherit the blocked mask): an interrupt before
         # `proc` is bound is covered by the mark, which the child carries from its first instruction.
         # the CPU limit is a backstop should this process die uncleaned (SIGKILL): see CPU_LIMIT_FACTOR
-        cpu = None if timeout is None else math.ceil(CPU_LIMIT_FACTOR * timeout) + 1
-        argv = limited(cmd, cwd, run_env, cpu, memory_limit_mb)
+        argv = limited(cmd, cwd, run_env, cpu_limit(timeout), memory_limit_mb)
         with open(log, "wb") as out, open(stdin_path or os.devnull, "rb") as stdin:
             proc = subprocess.Popen(argv, cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
                                     env=run_env, start_new_session=True)

@@ -7,7 +7,7 @@ task; a forked child starts in ~2 ms, with the translator's modules loaded and n
 every task still gets a pristine translator (its module-level options and counters fresh); the
 modules it would import only while running are imported by the server too (`LATE_IMPORTS`).
 
-Protocol, one JSON object a line: a request `{"args": [...], "cwd": DIR, "memory_mb": N|null}`
+Protocol, one JSON object a line: a request `{"args": [...], "cwd": DIR, "memory_mb": N|null, "cpu_s": N|null}`
 on stdin; the reply `{"pid": P}` as soon as the child runs, then `{"code": C}` when it ends
 (C as `subprocess` reports it: the exit status, or minus the signal that killed it). The
 child runs in its own session (the caller kills its process group at a time limit), with its
@@ -47,6 +47,9 @@ def _child(request: dict) -> int:
     if request.get("memory_mb"):
         limit = int(request["memory_mb"]) * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    if request.get("cpu_s"):  # ends the child should its caller die first: the server ends with it, this child not
+        limit = int(request["cpu_s"])
+        resource.setrlimit(resource.RLIMIT_CPU, (limit, limit))
     sys.argv = ["translate", *request["args"]]
     from fast_downward.translate import pddl_parser
     from fast_downward.translate.main import main

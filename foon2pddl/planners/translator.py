@@ -28,7 +28,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .cleanup import MARK, new_token
-from .process import OUTPUT_FILE, ProcessRun, bounded_timeout, read_capped
+from .process import OUTPUT_FILE, ProcessRun, bounded_timeout, cpu_limit, read_capped
 
 SWITCH = "FOON2PDDL_WARM_TRANSLATOR"
 _SCRIPT = Path(__file__).with_name("translate_server.py")
@@ -121,7 +121,7 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
         if _server is None or not _server.usable():
             _drop()
             _server = _Server(bin_dir)
-        request = {"args": args, "cwd": str(cwd), "memory_mb": memory_limit_mb}
+        request = {"args": args, "cwd": str(cwd), "memory_mb": memory_limit_mb, "cpu_s": cpu_limit(timeout)}
         _server.proc.stdin.write((json.dumps(request) + "\n").encode())
         _server.proc.stdin.flush()
         started = _server.reply(None)
