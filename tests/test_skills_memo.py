@@ -13,7 +13,7 @@ from dataclasses import replace
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from test_skills_decompose import BOARD, BOWL, KNIFE, ON, ONION_CHOPPED, ONION_WHOLE, POUR, kitchen_trace, node, trace
+from skill_traces import BOARD, BOWL, KNIFE, ON, ONION_CHOPPED, ONION_WHOLE, POUR, kitchen_trace, node, trace
 
 from foon2pddl.model.physical import ObjectState, PhysicalObject, PhysicalTrace
 from foon2pddl.skills.decompose import _fd, decompose
@@ -57,7 +57,7 @@ def problems(t: PhysicalTrace, skills: list[str]):
 @settings(max_examples=25, deadline=None)
 @given(st.permutations(range(len(IDS))), st.sampled_from(["x", "obj-", "zz_", "a"]))
 def test_renaming_the_objects_changes_no_canonical_problem_and_plans_come_back_renamed(order, prefix):
-    from test_skills_decompose import CHOP, MIX, MOVE
+    from skill_traces import CHOP, MIX, MOVE
 
     before = kitchen_trace(CHOP, MOVE, POUR, MIX)
     to = {i: f"{prefix}{order[k]}" for k, i in enumerate(IDS)}

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from test_skills_decompose import CHOP, MOVE, POUR, kitchen_trace
+from skill_traces import CHOP, MOVE, POUR, kitchen_trace
 
 from foon2pddl.skills.decompose import _fd, decompose
 from foon2pddl.skills.domain import shipped_domain
