@@ -17,23 +17,29 @@ plan's facts can make them disagree).
 
 from __future__ import annotations
 
-from .foon import ObjectNode
+from .foon import ObjectNode, State
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "describes_contents", "listed", "place_of", "places"]
+__all__ = ["CONTENT_STATES", "describes_contents", "listed", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
 
 
+def place_state(state: State) -> tuple[Relation, str] | None:
+    """The place one state names: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]`, and for `on
+    {pizza dough}`, the public data's braces around one holder; None for any other state (a bare `on` is an
+    appliance switched on, not a place)."""
+    if state.label not in ("in", "on") or not (state.related or len(state.ingredients) == 1):
+        return None
+    return Relation(state.label), state.related or state.ingredients[0]
+
+
 def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
-    """The places a node names, in order: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]`, and for
-    `on {pizza dough}`, the public data's braces around one holder (a bare `on` is an appliance switched on,
-    not a place)."""
+    """The places a node names, in order (`place_state`)."""
     if node is None:
         return ()
-    return tuple((Relation(s.label), s.related or s.ingredients[0]) for s in node.states
-                 if s.label in ("in", "on") and (s.related or len(s.ingredients) == 1))
+    return tuple(p for s in node.states if (p := place_state(s)) is not None)
 
 
 def place_of(node: ObjectNode | None) -> tuple[Relation, str] | None:

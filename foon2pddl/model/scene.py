@@ -24,7 +24,7 @@ from dataclasses import dataclass, replace
 
 from .foon import ObjectNode, make_node, make_state
 from .physical import Relation
-from .places import CONTENT_STATES
+from .places import CONTENT_STATES, place_state
 
 __all__ = ["SceneObject", "SceneProblem", "place_scene", "placed_labels"]
 
@@ -58,8 +58,7 @@ class SceneProblem(ValueError):
 
 def placed_labels(nodes: Iterable[ObjectNode]) -> frozenset[tuple[str, Relation, str]]:
     """(object label, relation, holder label) for every place a node names (`heavy cream (in [carton])`)."""
-    return frozenset((n.label, Relation(s.label), s.related) for n in nodes for s in n.states
-                     if s.label in ("in", "on") and s.related)
+    return frozenset((n.label, *p) for n in nodes for s in n.states if (p := place_state(s)) is not None)
 
 
 def place_scene(objects: Iterable[SceneObject], network_nodes: Iterable[ObjectNode]) -> tuple[SceneObject, ...]:

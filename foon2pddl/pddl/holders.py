@@ -88,7 +88,7 @@ from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of, places
+from ..model.places import describes_contents, listed, place_of, place_state, places
 from .pairing import Role, unit_roles
 
 __all__ = ["Fate", "Flow", "Place", "RelRole", "gained", "head_of", "list_gaps", "moved_into", "relational_roles",
@@ -145,7 +145,7 @@ class Flow:
 
 def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:
     """`node` with its place replaced by `relation [holder]` (an implied node, rule 3)."""
-    kept = [s for s in node.states if not (s.label in ("in", "on") and s.related)]
+    kept = [s for s in node.states if place_state(s) is None]
     return make_node(node.label, [*kept, make_state(relation.value, holder)])
 
 

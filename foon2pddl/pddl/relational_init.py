@@ -7,7 +7,7 @@ from collections.abc import Iterable
 
 from ..model.foon import ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of
+from ..model.places import describes_contents, listed, place_of, place_state
 from ..model.scene import SceneObject
 from .names import NameTable
 from .task import Instance
@@ -109,7 +109,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
 
 def unplaced(node: ObjectNode) -> ObjectNode:
     """`node` with its places dropped: `skillet (empty)` for `skillet (empty, on [stove])`."""
-    return make_node(node.label, [s for s in node.states if not (s.label in ("in", "on") and s.related)])
+    return make_node(node.label, [s for s in node.states if place_state(s) is None])
 
 
 def kitchen_placed(nodes: Iterable[ObjectNode | None], kitchen: Iterable[ObjectNode]) -> frozenset[ObjectNode]:
