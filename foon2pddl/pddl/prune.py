@@ -183,20 +183,20 @@ def drop_unbindable(task: PlanningTask) -> PlanningTask:
     for a in task.init:
         if a.predicate not in changing:
             static.setdefault(a.predicate, []).append(a.args)
-    rows: dict[tuple, list[tuple[str, ...]]] = {}
+    memo: dict[tuple, list[tuple[str, ...]]] = {}
 
     def matching(atom: Atom) -> list[tuple[str, ...]]:
         """Init atoms of `atom`'s predicate and arity equal to it in its constant arguments."""
         fixed = tuple((i, x) for i, x in enumerate(atom.args) if not x.startswith("?"))
         key = (atom.predicate, len(atom.args), fixed)
-        if key not in rows:
-            rows[key] = [f for f in static.get(atom.predicate, ()) if len(f) == len(atom.args)
+        if key not in memo:
+            memo[key] = [f for f in static.get(atom.predicate, ()) if len(f) == len(atom.args)
                          and all(f[i] == x for i, x in fixed)]
-        return rows[key]
+        return memo[key]
 
     def bindable(pre: list[Atom]) -> bool:
         atoms = [(matching(p), [(i, x) for i, x in enumerate(p.args) if x.startswith("?")]) for p in pre]
-        if any(not rows for rows, _ in atoms):
+        if any(not facts for facts, _ in atoms):
             return False
         domain: dict[str, set[str]] = {}
         todo = [k for k, (_, at) in enumerate(atoms) if at]  # AC-3: the atoms whose variables narrowed
@@ -205,9 +205,9 @@ def drop_unbindable(task: PlanningTask) -> PlanningTask:
             for _, x in atoms[k][1]:
                 users.setdefault(x, []).append(k)
         while todo:
-            rows, at = atoms[todo.pop()]
+            facts, at = atoms[todo.pop()]
             live = [(i, domain[x]) for i, x in at if x in domain]
-            fits = [r for r in rows if all(r[i] in d for i, d in live)] if live else rows
+            fits = [r for r in facts if all(r[i] in d for i, d in live)] if live else facts
             if len(at) > 1 and len({x for _, x in at}) < len(at):
                 fits = [r for r in fits if _same_var_same_value(at, r)]
             if not fits:
