@@ -526,10 +526,10 @@ def test_plan_names_the_steps_it_left_out(tmp_path):
     data = json.loads(r.stdout)
     raw, used = data["planner_plan"], data["plan"]
     assert len(raw) > len(used)  # lama-first's plan has detours here: they are named, with their step numbers
-    note = next(n for n in data["validation"]["notes"] if n.startswith("left out "))
-    assert f"of the planner's {len(raw)}" in note
+    note = next(n for n in data["validation"]["notes"] if n.startswith("the planner's plan has "))
+    assert note.startswith(f"the planner's plan has {len(raw)} steps; ")
     numbered = [int(part.split(" (")[0]) for part in note.split(": ", 1)[1].split("; ")]
-    assert len(numbered) == int(note.split()[2]) == len(raw) - len(used)
+    assert len(numbered) == int(note.split()[6]) == len(raw) - len(used)
     assert all(raw[n - 1] not in used for n in numbered)
     assert (tmp_path / "sas_plan").read_text().splitlines()[:-1] == [f"({s})" for s in used]
 
@@ -542,7 +542,7 @@ def test_plan_steps_printed_are_the_ones_that_make_the_goal():
     steps, units = _summary_counts(r.stderr)
     assert steps == units == 9, r.stderr
     # the left-out squeeze is guacamole's own (the kept one is the lemonade recipe's, its lemon a lime)
-    assert ("note: left out 5 of the planner's 14 plan steps the goal does not need: "
+    assert ("note: the planner's plan has 14 steps; 5 the goal does not need are left out: "
             "4 (squeeze at 07-guacamole.foon:77: ") in r.stderr
     # the lifted plan names what the squeezed lime made as the recipe does; the tree renames it, and says so
     assert "lemon juice -> lime juice" in r.stderr and "lemon juice" not in r.stdout

@@ -197,7 +197,7 @@ def test_doubled_plan_decodes_to_the_same_tree_and_says_so():
     assert twice.decoded.notes[0] == (f"dropped {units} plan steps repeating a unit already applied "
                                       "(no effect in this delete-free encoding)")
     # the steps the goal does not need are named once, at their first position, either way
-    left_out = tuple(n for n in once.decoded.notes if n.startswith("left out "))
+    left_out = tuple(n for n in once.decoded.notes if n.startswith("the planner's plan has "))
     assert once.decoded.notes == left_out and len(twice.decoded.notes) == 1 + len(left_out)
 
 

@@ -224,7 +224,7 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
     if not out:
         return ()
     more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
-    return (f"left out {len(out)} of the planner's {len(steps)} plan steps the goal does not need: "
+    return (f"the planner's plan has {len(steps)} steps; {len(out)} the goal does not need are left out: "
             + "; ".join(out[:shown]) + more,)
 
 
