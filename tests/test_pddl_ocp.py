@@ -222,3 +222,20 @@ def test_operator_names_follow_the_converters_focal_object():
     assert action_name(pour) == "pour water"
     assert action_name(FunctionalUnit((_n("bowl", ("contains", "", ["a"])),), Motion("mix"), ())) == "mix ingredients"
     assert action_name(FunctionalUnit((_n("cup", flag=1),), Motion("fill"), ())) == "fill"
+
+
+def test_a_kitchen_container_writes_what_it_holds_so_a_goal_it_holds_holds_at_start():
+    # found by test_goal_in_kitchen's hypothesis search in a fresh clone: the goal `bowl (contains {salt, water})`
+    # requires `(in bowl water)` (a unit reads `water (in [bowl])`), which the kitchen's own bowl did not write
+    from foon2pddl.model.foon import Foon
+    from foon2pddl.model.goal import Goal, GoalSpec
+    from foon2pddl.model.kitchen import Kitchen
+    from foon2pddl.pddl.compile import compile_goal
+    from foon2pddl.pddl.task import Atom
+
+    bowl = make_node("bowl", [make_state("contains", "", ["salt", "water"])])
+    fill = FunctionalUnit((make_node("water", [make_state("in", "bowl")]),), Motion("pour"), (bowl,))
+    task = compile_goal(Foon((fill,)), Kitchen(frozenset({bowl})), Goal(GoalSpec("bowl"), (bowl,)), "ocp").task
+    assert Atom("in", ("bowl", "water")) in task.init
+    assert set(task.goal) <= set(task.init)
+    assert Atom("in", ("bowl", "salt")) not in task.init  # salt is no object of the task: nothing writes it

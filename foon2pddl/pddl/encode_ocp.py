@@ -34,7 +34,8 @@ So nothing leaves the table or its old holder unless air says so: after the
 converter's pour_water example, `(under water cup)` and `(under water bowl)`
 both hold, and an object put into a bowl is still `(on table o)`, exactly as in
 the converter's reference output (`tests/data/foon_to_pddl-examples/`). The
-kitchen's facts (of objects the network mentions) are the initial state.
+kitchen's facts (of objects the network mentions) are the initial state, a kitchen
+container's `contains {...}` written as its contents' nodes would (`(in bowl water)`).
 
 Unlike the converter: the goal is the goal asked for, not every goal-marked node
 of the file. Its facts are the node's in the converter's goal reading (`in [h]`
@@ -110,6 +111,14 @@ def node_facts(node: ObjectNode, on_table: bool = True, goal: bool = False) -> t
     return tuple(dict.fromkeys(out))
 
 
+def contents_facts(node: ObjectNode, mentioned: set[str]) -> tuple[Fact, ...]:
+    """`(in bowl water)` for each item of the node's `contains {...}` that the network mentions: what a kitchen
+    container holds, written as the contents' own nodes would write it (a goal the kitchen holds holds at start)."""
+    inside = "on" if node.label in SURFACES else "in"
+    return tuple((inside, node.label, i) for s in node.states if s.label == "contains" for i in s.ingredients
+                 if i in mentioned)
+
+
 def goal_facts_of(node: ObjectNode, made: set[Fact]) -> tuple[Fact, ...]:
     """The goal facts of `node`: its facts in the converter's goal reading, and what it contains.
 
@@ -182,7 +191,8 @@ def encode_ocp(
     f = inp.foon
     effects = [unit_effects(u) for u in f.units]
     mentioned = {x for fs in effects for part in fs for fact in part for x in fact[1:]}
-    init_facts = tuple(dict.fromkeys(x for n in sorted(inp.kitchen) if n.label in mentioned for x in node_facts(n)))
+    init_facts = tuple(dict.fromkeys(x for n in sorted(inp.kitchen) if n.label in mentioned
+                                     for x in (*node_facts(n), *contents_facts(n, mentioned))))
     made = {*init_facts, *(x for _, add, _ in effects for x in add)}
     goal_facts = [(c, goal_facts_of(c, made)) for c in inp.candidates]
 
