@@ -3,6 +3,8 @@ for the planner to prove it (it searched to the time limit), and objects no plan
 
 from __future__ import annotations
 
+from node_words import contains, n
+
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
@@ -10,14 +12,6 @@ from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.pairing import RoleKind, unit_roles
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
-
-
-def n(label, *states):
-    return make_node(label, [s if not isinstance(s, str) else make_state(s) for s in states])
-
-
-def contains(*items):
-    return make_state("contains", "", items)
 
 
 def test_the_container_that_keeps_what_no_role_moves_is_the_one_that_receives():
