@@ -24,30 +24,24 @@ Rules, in order (each reads only the unit itself):
    readings (`holder_words.task_aliases`).
 1. **Places.** A node's place is its first `in [C]` / `on [C]` state (a bare `on`
    is an appliance switched on, not a place).
-2. **Holder binding.** The holder of an object of label L at a place of label C
-   (before the unit: read from the input nodes; after it: from the output nodes,
-   or the input node of a role the unit leaves unchanged) is, among the unit's
-   other roles of label C: the first whose node on that side lists L; else the
-   only one; else none: bound late (the planner chooses which C). Before the unit,
-   a C whose node lists its contents without L is no candidate: FOON's words
-   disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains
-   {egg white, egg yolk, flour})`), so it is bound late and reported (rule 6).
-   An object `in [C]` before and after a unit with one C that does not list it
-   stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`),
-   unless that C's output node newly lists it (it came from another C). An object whose output node keeps
-   its input node's place, in a holder whose output node no longer lists it, arrives in the one other
-   container that newly lists it, if one: FOON left its place stale (the garlic butter scraped into the
-   bowl that lists it, still `in [food processor bowl]`).
-   A second role of one label in the same holder is bound late too: a list names
-   a label once (`plate (contains {bread})` under the sandwich's two breads, each
-   brought on its own plate: the planner takes the second from where it is).
-3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of
-   heavy cream gives `mixing bowl (contains {heavy cream})` as output but not the
-   cream. A role of label L with no output node moves when another role's output
-   node lists L and its input node does not: it arrives `in` that role (an implied
-   node: its input node with the place replaced, `heavy cream (in [mixing bowl])`),
-   unless that role is a product the unit makes (`custard (contains {egg, milk})`):
-   then it is an ingredient of it, `CONSUMED` (as in rule 5).
+2. **Holder binding.** The holder of an object of label L at a place of label C (before the unit: read from the
+   input nodes; after it: from the output nodes, or the input node of a role the unit leaves unchanged) is, among
+   the unit's other roles of label C: the first whose node on that side lists L; else the only one; else none:
+   bound late (the planner chooses which C). Before the unit, a C whose node lists its contents without L is no
+   candidate: FOON's words disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains {egg white,
+   egg yolk, flour})`), so it is bound late and reported (rule 6). An object `in [C]` before and after a unit with
+   one C that does not list it stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`), unless
+   that C's output node newly lists it (it came from another C). An object whose output node keeps its input
+   node's place, in a holder whose output node no longer lists it, arrives in the one other container that newly
+   lists it, if one: FOON left its place stale (the garlic butter scraped into the bowl that lists it, still `in
+   [food processor bowl]`). A second role of one label in the same holder is bound late too: a list names a label
+   once (`plate (contains {bread})` under the sandwich's two breads, each brought on its own plate: the planner
+   takes the second from where it is).
+3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of heavy cream gives `mixing bowl
+   (contains {heavy cream})` as output but not the cream. A role of label L with no output node moves when another
+   role's output node lists L and its input node does not: it arrives in that role, `on` it where the unit's nodes
+   say `on` (an implied node: its input node with the place replaced, `heavy cream (in [mixing bowl])`), unless that role is a product the unit makes
+   (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5).
 4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves
    still lists L afterwards (its output node does, or the unit gives it none and
    its node does): FOON then says the holder keeps what it holds, so a portion
@@ -256,14 +250,13 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
     read = _reading(unit)
     roles, before, after = read.roles, read.before, read.after
     labels = [r.label for r in roles]
-    gained = [listed(after[k]) - listed(before[k]) if roles[k].after is not None else frozenset()
-              for k in range(len(roles))]
+    newly = _newly_listed(unit)
     out_nodes: list[ObjectNode | None] = [r.after for r in roles]
     implied: dict[int, int] = {}
     mixed: set[int] = set()  # roles listed by a product the unit makes: ingredients of it
     for k, r in enumerate(roles):  # rule 3
         if r.after is None and r.before is not None:
-            into = [j for j in range(len(roles)) if j != k and r.label in gained[j]]
+            into = _takers(unit, r.label, k)
             if into and roles[into[0]].before is None:
                 mixed.add(k)
             elif into:
@@ -286,7 +279,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                else _holder(labels, read_after, k, r.label, place_of(read_after[k])))
         if (src is not None and src == dst and src.role is not None and r.after is not None
                 and place_of(after[k]) == place_of(before[k]) and r.label not in listed(after[src.role])):
-            takers = [j for j in range(len(roles)) if j != k and roles[j].before is not None and r.label in gained[j]]
+            takers = [j for j in _takers(unit, r.label, k) if roles[j].before is not None]
             if len(takers) == 1:  # a stale place (the unit left it as it was): the one role taking it in holds it
                 dst = Place(dst.relation, labels[takers[0]], takers[0])
         if r.before is None:
@@ -303,7 +296,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
             continue
         if src is not None and dst is not None and src.role is None and (src.relation, src.holder) == (
                 dst.relation, dst.holder) and dst.role is not None and labels.count(dst.holder) == 1 \
-                and r.label not in gained[dst.role]:
+                and r.label not in newly[dst.role]:
             src = dst  # in [pot] before and after, the unit's one pot not taking it in: it stays there
         same = (src == dst) or (src is not None and dst is not None and src.holder == dst.holder
                                 and src.role is not None and src.role == dst.role)
@@ -319,9 +312,21 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
 def gained(unit: FunctionalUnit) -> frozenset[tuple[str, str]]:
     """(holder label, content label) for every label a role's output node lists and its input node does not:
     what the unit puts into something (names read through the unit's aliases)."""
+    return frozenset((r.label, x) for r, new in zip(unit_roles(unit), _newly_listed(unit), strict=True) for x in new)
+
+
+@lru_cache(maxsize=1 << 14)
+def _newly_listed(unit: FunctionalUnit) -> tuple[frozenset[str], ...]:
+    """Per role, the labels its output node lists and its input node does not (none without an output node),
+    read through the unit's aliases: what the unit puts into it."""
     read = _reading(unit)
-    return frozenset((r.label, x) for k, r in enumerate(read.roles) if r.after is not None
-                     for x in listed(read.after[k]) - listed(read.before[k]))
+    return tuple(listed(read.after[k]) - listed(read.before[k]) if r.after is not None else frozenset()
+                 for k, r in enumerate(read.roles))
+
+
+def _takers(unit: FunctionalUnit, label: str, but: int) -> list[int]:
+    """The roles other than `but` whose output node newly lists `label`, in role order."""
+    return [j for j, new in enumerate(_newly_listed(unit)) if j != but and label in new]
 
 
 @lru_cache(maxsize=1 << 14)
@@ -338,8 +343,7 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
             continue
         if r.after is None:  # a container poured out whole: what another role's output node newly lists follows
             for lab in sorted(listed(before[h]) - labels):
-                into = [j for j, x in enumerate(roles) if j != h and x.after is not None and x.before is not None
-                        and lab in listed(after[j]) - listed(before[j])]
+                into = [j for j in _takers(unit, lab, h) if roles[j].before is not None]
                 if into:
                     out.append(Flow(lab, h, into[0]))
             continue
@@ -349,8 +353,7 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
         elsewhere = {x.role.label for x in rels if (x.source.holder != r.label if x.source is not None
                                                      else x.fate is Fate.CONSUMED)}
         for lab in sorted(listed(before[h]) - listed(after[h]) - (labels - elsewhere)):
-            into = [j for j, x in enumerate(roles) if j != h and x.after is not None
-                    and lab in listed(after[j]) - listed(before[j])]
+            into = _takers(unit, lab, h)
             out.append(Flow(lab, h, into[0] if into and roles[into[0]].before is not None else None))
     return tuple(out)
 
@@ -388,10 +391,7 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
                 describes_contents(read.before[j]) for j in mine):
             out.append((src.holder, r.label, f"{r.label} is {src.relation} [{src.holder}], whose node before the "
                         "unit does not list it: which one holds it is left to the plan"))
-    for k, r in enumerate(roles):
-        if r.after is None:
-            continue
-        new = listed(read.after[k]) - listed(read.before[k])
+    for r, new in zip(roles, _newly_listed(unit), strict=True):
         out += [(r.label, x, f"{r.label} lists {x}, which no object of the unit is") for x in sorted(new - labels)]
         for label, node in outs:
             place = place_of(node)
