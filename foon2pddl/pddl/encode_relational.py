@@ -51,7 +51,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
-from . import relational_plan
+from . import encoding, relational_plan
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -82,6 +82,7 @@ from .relational_init import (
     scene_instances,
 )
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
+from .relational_stitch import stitch_notes, stitched
 from .restore import discards
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
@@ -96,6 +97,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
     """The relational task of `goal` over `foon` (see the module doc), with its reports as notes."""
     inp = at_level(foon, kitchen, goal, level)
+    given, (inp, reads) = inp.foon.units, stitched(inp)  # FOON's own units: the plan's tree is made of them
     f = inp.foon
     units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
@@ -195,16 +197,16 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
-    found += [(unit, msg) for _, _, msg, unit in gaps]
-    notes = sorted({f"{_where(unit)}: {m}" for unit, m in found})
-    commented = sorted({f"{_where(unit, short_path)}: {m}" for unit, m in found})  # no checkout path in files
+    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads)
+    notes = sorted({f"{encoding.unit_where(unit)}: {m}" for unit, m in found})
+    commented = sorted({f"{encoding.unit_where(unit, short_path)}: {m}" for unit, m in found})  # no checkout path in files
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
-        objects=tuple((x.name, type_of[x.label]) for x in instances), units=f.units, labels=table.labels,
+        objects=tuple((x.name, type_of[x.label]) for x in instances), units=given, labels=table.labels,
         comments=header("relational", inp, options, len(units)) + count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
@@ -214,11 +216,6 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     # check's kitchen too
     moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
-
-
-def _where(unit, path=str) -> str:
-    src = unit.source
-    return f"{path(src.path)}:{src.line}" if src is not None else "?"
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],

@@ -123,6 +123,12 @@ def short_path(path: str) -> str:
     return path.replace("\\", "/").rstrip("/").rsplit("/", 1)[-1] or path
 
 
+def unit_where(unit: FunctionalUnit, path: Callable[[str], str] = str) -> str:
+    """`FILE:LINE` of the unit's first source (`path` shortens the file: `short_path` in generated files), `?`."""
+    src = unit.source
+    return f"{path(src.path)}:{src.line}" if src is not None else "?"
+
+
 def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     """Comment lines of a unit's action: index, motion, source recipe files and lines, what it does."""
     places = [f"{short_path(s.path)}:{s.line}" + (f" (expanded from {s.expanded_from})" if s.expanded_from else "")

@@ -1,0 +1,73 @@
+"""The `relational` encoding reads a kitchen container whose contents only units make as the unit output it is
+by another wording (`pddl.relational_stitch`), so its plans map back to FOON trees that validate."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from node_words import contains, inside, n
+
+from foon2pddl.io.files import load
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.relational_stitch import kitchen_stitches
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+SUBGRAPHS = Path(__file__).parent / "data" / "foon-subgraphs"
+
+# dalgona coffee: the pour makes `mixing bowl (contains {refined sugar, water})`; the beat takes the bowl as
+# `mixing bowl (contains {sugar, hot water})`, a node no unit makes, with the sugar and water the pour makes
+SUGAR, WATER = n("refined sugar", inside("bowl")), n("water", "hot", inside("bowl"))
+POURED = n("mixing bowl", contains("refined sugar", "water"))
+IN_SUGAR, IN_WATER = n("refined sugar", inside("mixing bowl")), n("water", inside("mixing bowl"))
+POUR = FunctionalUnit((n("mixing bowl", "empty"), n("bowl", contains("refined sugar")), SUGAR,
+                       n("bowl", contains("water")), WATER), Motion("pour"), (POURED, IN_SUGAR, IN_WATER))
+WORDED = n("mixing bowl", contains("sugar", "hot water"))
+WHIPPED = n("whipped coffee", inside("mixing bowl"))
+BEAT = FunctionalUnit((WORDED, IN_SUGAR, IN_WATER, n("whisk")), Motion("beat"),
+                      (n("mixing bowl", contains("whipped coffee")), WHIPPED))
+
+
+def test_a_kitchen_container_whose_contents_only_a_unit_makes_is_read_as_that_units_output():
+    foon = Foon((POUR, BEAT))
+    assert kitchen_stitches(foon, default_kitchen(foon).nodes) == {WORDED: (POURED, POUR)}
+
+
+def test_the_plan_makes_what_the_kitchen_container_lists_and_its_tree_validates():
+    foon = Foon((POUR, BEAT))
+    kitchen = default_kitchen(foon)
+    assert WORDED in kitchen.nodes  # FOON's kitchen has the worded bowl, not the water in it
+    outcome = plan(foon, kitchen, Goal(GoalSpec("whipped coffee"), (WHIPPED,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert [s.unit for s in outcome.trace.steps] == [POUR, BEAT]
+    assert outcome.tree.units == (POUR, BEAT)
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    assert any("the kitchen's mixing bowl (contains {hot water, sugar}) is read as mixing bowl (contains "
+               "{refined sugar, water}), which this pour makes" in note for note in outcome.compiled.notes)
+
+
+def test_a_container_that_held_more_before_the_unit_is_no_other_wording():
+    # the egg is poured into a bowl of flour: `bowl (contains {egg})` is not that bowl, which also holds the flour
+    egg, flour = n("egg", "beaten", inside("cup")), n("flour", inside("bowl"))
+    full, beaten_in = n("bowl", contains("egg", "flour")), n("egg", "beaten", inside("bowl"))
+    pour = FunctionalUnit((n("bowl", contains("flour")), flour, n("cup", contains("egg")), egg), Motion("pour"),
+                          (full, beaten_in))
+    whisk = FunctionalUnit((n("bowl", contains("egg")), beaten_in, n("whisk")), Motion("whisk"),
+                           (n("bowl", contains("batter")), n("batter", inside("bowl"))))
+    foon = Foon((pour, whisk))
+    assert kitchen_stitches(foon, default_kitchen(foon).nodes) == {}
+
+
+@pytest.mark.parametrize("name", ["0067-onigiri.txt", "0079-dalgona_coffee.txt"])
+def test_shared_dishes_whose_kitchen_container_only_units_fill_validate(name):
+    foon, _ = load([SUBGRAPHS / name])
+    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational",
+                   time_limit=60)
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
