@@ -23,7 +23,7 @@
   - a portion (`SPLITS`) is a not-yet-made object that arrives at the target in
     the role's output node, while the object it was taken from stays;
   - a container FOON filled earlier and leaves out of the outputs is emptied of
-    what leaves it (`relational_plan.without`);
+    what leaves it (`relational_plan.without`), and says so as a role;
   - a consumed object goes to `consumed` and leaves its holder, with all of its
     label there when the holder's node no longer lists it; contents that are
     no role of the unit follow their container's list (`holders.Flow`), by one
@@ -167,18 +167,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     for n in sorted(nodes):
         for rel, c in places(n)[:1]:
             inside.setdefault(alias.get(c, c), []).append((n, rel))
-    left: set[ObjectNode] = set()  # nodes some action moves an object out of
-    for u in units:
-        p = plans[u]
-        for k, s in enumerate(p.slots):
-            after = p.after_of(k) if s.fate is not Fate.CONSUMED else None
-            if s.rel.role.before is not None and (s.fate is Fate.CONSUMED or (after is not None
-                                                                              and after != s.rel.role.before)):
-                left.add(s.rel.role.before)
-        left.update(n for lst in ways[u].values() for n, _, _ in lst)
-        left.update(n for lst in empties[u].values() for n, _ in lst)
-        left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
-        left.update(n for s in p.slots for n, _ in relational_plan.alike_nodes(p, s, inside))
+    dust = relational_plan.dustings(plans[u] for u in units)
+    left = relational_plan.left_nodes([(plans[u], ways[u], empties[u]) for u in units], inside, dust)
     stable = {n for n in const if n not in left}
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
@@ -186,7 +176,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
     actions = [_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
-                            container_labels, inside, empties[u], loose) for u in units]
+                            container_labels, inside, empties[u], loose, dust) for u in units]
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
@@ -221,7 +211,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
                  type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[Way]],
                  gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
-                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str]) -> Action:
+                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str],
+                 dust: frozenset[ObjectNode]) -> Action:
     """One unit's schema (see the module doc): per role its state change and its holder facts."""
     slots, unit = plan.slots, plan.unit
     # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
@@ -328,6 +319,11 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                           for node, rel in relational_plan.alike_nodes(plan, s, inside)]
         elif after is not None and after != before:
             becomes(v, before, after)
+        sweep += [(v, node, rel, f"{node.label} on {label}", ("dust", k, node))  # went into what is put there
+                  for node, rel in relational_plan.dusted_nodes(plan, k, inside, dust)]
+        if s.fate is Fate.NEW:  # what FOON restates as made was there: it becomes part of the one made
+            sweep += [(var[r.target.role], node, rel, f"{label} there", ("there", k, node))
+                      for node, rel in relational_plan.restated_nodes(plan, s, inside)]
         for h, node, rel, word, key in sweep:
             if node.label in type_of:
                 c = f"?{names.name(word, key=key)}"
@@ -387,8 +383,11 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             if flow.into is not None:
                 now.append(Atom(IN, (var[flow.into], y)))
             cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y, type=type_of[label]))
-    expected = [Role(s.rel.role.label, s.rel.role.before,
-                     None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else plan.after_of(k))
+    # a role the unit leaves as it is ends in the node a late empty turns its node into (the oven the tray leaves)
+    emptied_by = {(slots[j].rel.source.holder, old): new for j, s in enumerate(slots) if s.late_empties
+                  for old, new in empties.get(j, ())}
+    expected = [Role(s.rel.role.label, s.rel.role.before, None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else
+                     plan.after_of(k) or emptied_by.get((s.rel.role.label, s.rel.role.before)))
                 for k, s in enumerate(slots)]
     return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(dict.fromkeys(pre)),
                   add=tuple(dict.fromkeys(add)), delete=tuple(d for d in dict.fromkeys(delete) if d not in add),

@@ -41,7 +41,9 @@ Rules, in order (each reads only the unit itself):
    (contains {heavy cream})` as output but not the cream. A role of label L with no output node moves when another
    role's output node lists L and its input node does not: it arrives in that role, `on` it where the unit's nodes
    say `on` (an implied node: its input node with the place replaced, `heavy cream (in [mixing bowl])`), unless that role is a product the unit makes
-   (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5).
+   (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5). An output node
+   whose only place word is a bare `on`, beside the one role that newly lists it, is `on` that role (`avocado (on,
+   sliced)` put on the bread that lists it).
 4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves
    still lists L afterwards (its output node does, or the unit gives it none and
    its node does): FOON then says the holder keeps what it holds, so a portion
@@ -83,6 +85,7 @@ from functools import lru_cache
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, place_state, places
+from .holder_words import aliased, head_of, unit_aliases
 from .pairing import Role, unit_roles
 
 __all__ = ["Fate", "Flow", "Place", "RelRole", "gained", "head_of", "list_gaps", "moved_into", "relational_roles",
@@ -150,65 +153,6 @@ def _relation(nodes: tuple[ObjectNode | None, ...], holder: str) -> Relation:
     return Relation.ON if said.count(Relation.ON) > said.count(Relation.IN) else Relation.IN
 
 
-def head_of(name: str, label: str) -> bool:
-    """`name` and `label` name one thing by the head-noun rule: one is the other's last words (`salad` /
-    `carrot salad`, `pan` / `cooking pan`, `black pepper` / `pepper`)."""
-    return label != name and (label.endswith(" " + name) or name.endswith(" " + label))
-
-
-@lru_cache(maxsize=1 << 14)
-def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
-    """Rule 0: names the unit's lists and places use for one of its objects under another label.
-
-    A name a `contains`/`with` list or an `in [C]`/`on [C]` place of the unit uses that is the label of no
-    role of the unit, and that exactly one role's label matches by the head-noun rule (`head_of`), not counting
-    a role whose own nodes list it (`fried rice (contains {rice})` lists an ingredient, not itself), means
-    that role: `salad bowl (contains {salad})` beside `carrot salad (in [salad bowl])`, `oil (in [pan])` in a
-    unit whose pan is `cooking pan`. A name only places use (an output node's among them), matching no label
-    so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
-    drinking glass that lists the lemonade `in [cup]`; the skillet of `bread (in [pan])`). Sorted; O(n r^2).
-    """
-    roles = unit_roles(unit)
-    labels = {r.label for r in roles}
-    users: dict[str, set[str]] = {}  # name -> labels of the nodes that use it
-    listers: dict[str, set[str]] = {}  # name -> labels of the nodes that list it
-    for r, n in ((role, n) for role in roles for n in (role.before, role.after)):
-        for x in listed(n):
-            listers.setdefault(x, set()).add(r.label)
-        for x in (*listed(n), *(c for _, c in places(n))):
-            users.setdefault(x, set()).add(r.label)
-    out = {}
-    for name in sorted(set(users) - labels):
-        if len(match := [lab for lab in sorted(labels) if head_of(name, lab) and lab not in listers.get(name, ())]) == 1:
-            out[name] = match[0]
-    lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
-             for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
-    sides = [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]
-    for name in sorted(set(users) - labels - lists - set(out)):  # a place only: the one role listing what is there
-        takers = set()
-        for side in sides:
-            put = {r.label for n, r in side if name in (c for _, c in places(n))}
-            takers |= {r.label for n, r in side if r.label not in put and listed(n) & put}
-        if len(takers) == 1 and any(name in (c for _, c in places(n)) for n, _ in sides[1]):
-            out[name] = takers.pop()
-    return tuple(sorted(out.items()))
-
-
-def _aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None:
-    """`node` with the names of its lists and places read through `alias` (the node itself when none apply)."""
-    if node is None or not alias:
-        return node
-    states = []
-    for st in node.states:
-        if st.label in ("in", "on", "with") and st.related in alias:
-            st = make_state(st.label, alias[st.related], list(st.ingredients))
-        elif st.label == "contains" and any(i in alias for i in (*st.ingredients, st.related)):
-            st = make_state(st.label, alias.get(st.related, st.related),
-                            sorted({alias.get(i, i) for i in st.ingredients}))
-        states.append(st)
-    return make_node(node.label, states)
-
-
 def _holder(labels: list[str], nodes: list[ObjectNode | None], me: int, label: str,
             place: tuple[Relation, str] | None, strict: bool = False) -> Place | None:
     """Rule 2: the role holding role `me` (of `label`) at `place`, read from `nodes` (one side of the unit)."""
@@ -234,8 +178,8 @@ class _Reading:
 def _reading(unit: FunctionalUnit) -> _Reading:
     roles = unit_roles(unit)
     alias = dict(unit_aliases(unit))
-    before = tuple(_aliased(r.before, alias) for r in roles)
-    after = tuple(_aliased(r.after, alias) if r.after is not None else before[k] for k, r in enumerate(roles))
+    before = tuple(aliased(r.before, alias) for r in roles)
+    after = tuple(aliased(r.after, alias) if r.after is not None else before[k] for k, r in enumerate(roles))
     return _Reading(roles, before, after)
 
 
@@ -266,6 +210,12 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         out_nodes[k] = moved_into(roles[k].before, labels[j], how[k])
     read_after = [moved_into(before[k], labels[implied[k]], how[k]) if k in implied else after[k]
                   for k in range(len(roles))]
+    for k, r in enumerate(roles):  # rule 3: a bare `on` beside the one role newly listing it is on that role
+        bare = [st for st in (r.after.states if r.after is not None else ()) if st.label == "on" and not place_state(st)]
+        into = [j for j in _takers(unit, r.label, k) if roles[j].before is not None]
+        if bare and r.before is not None and place_of(after[k]) is None and place_of(before[k]) and len(into) == 1:
+            out_nodes[k], read_after[k] = (moved_into(make_node(r.label, [st for st in node.states if st not in bare]),
+                                                      labels[into[0]], Relation.ON) for node in (r.after, after[k]))
     made_in = {place_of(after[k]) for k, r in enumerate(roles) if r.before is None and place_of(after[k])}
     result = []
     sources = [_holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None

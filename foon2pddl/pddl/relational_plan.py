@@ -23,7 +23,11 @@
   A container poured out whole (`holders.unit_flows`) is emptied of what it held.
   An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
-  (the bowl of sesame seeds sprinkled over the salad).
+  (the bowl of sesame seeds sprinkled over the salad). An object a unit makes in a
+  holder whose node lists it before and after restates what is there, which becomes
+  part of it (`restated_nodes`: the corn on the board); what a unit puts on a holder
+  it leaves silent about its contents (`dustings`: the flour on the floured board)
+  goes into what a later unit puts there when its list leaves it out (`dusted_nodes`).
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
   object leaves its node, an emptied container changes node.
@@ -44,7 +48,7 @@ from .pairing import Role
 from .relational_init import read_names
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
-           "silent_labels", "plan_unit", "without"]
+           "dusted_nodes", "dustings", "left_nodes", "restated_nodes", "silent_labels", "plan_unit", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -247,3 +251,67 @@ def alike_nodes(plan: UnitPlan, s: Slot,
     if after is None or not describes_contents(after) or label in listed(after):
         return []
     return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
+
+
+def restated_nodes(plan: UnitPlan, s: Slot,
+                   inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
+    """For a slot the unit makes (its only role of that label) in a holder role whose node lists the label before
+    and after the unit: the nodes of that label placed in holders of the holder's label. FOON restates what is
+    already there (the scoop's output-only `corn (shaved, on [cutting board])` beside the board's `contains
+    {corn}`; the mix's new `potato mixture` in the bowl that lists one): the object there becomes part of the one
+    made, so the holder never holds two."""
+    dst, label = s.rel.target, s.rel.role.label
+    if s.fate is not Fate.NEW or dst is None or dst.role is None or [x.rel.role.label for x in plan.slots].count(label) > 1:
+        return []
+    holder = plan.slots[dst.role].rel.role
+    after = plan.after_of(dst.role) or holder.before
+    if holder.before is None or label not in listed(holder.before) or label not in listed(after):
+        return []
+    return [(n, rel) for n, rel in inside.get(holder.label, ()) if n.label == label]
+
+
+def dustings(plans: Iterable[UnitPlan]) -> frozenset[ObjectNode]:
+    """The nodes units put in or on a role they leave silent about its contents (the sprinkle's `flour (powder, on
+    [cutting board])` beside its `cutting board (floured)`): what FOON stops counting as the holder's contents."""
+    out = set()
+    for p in plans:
+        for s in p.slots:
+            into = s.rel.target.role if s.rel.target is not None else None
+            after = p.after_of(into) if into is not None else None
+            if after is not None and not describes_contents(after) and s.fate in (Fate.NEW, Fate.MOVES, Fate.SPLITS):
+                out.add(s.portion if s.fate is Fate.SPLITS else s.after)
+    return frozenset(out - {None})
+
+
+def dusted_nodes(plan: UnitPlan, k: int, inside: dict[str, list[tuple[ObjectNode, Relation]]],
+                 dust: frozenset[ObjectNode]) -> list[tuple[ObjectNode, Relation]]:
+    """For a container role whose input node is silent about what it holds and whose node after the unit lists
+    it (`cutting board (floured)` -> `cutting board (contains {dough})`): the nodes among `dust` (`dustings`)
+    placed in holders of its label, of a label that list leaves out and no role of the unit has. What was put
+    there as FOON stopped listing it (the flour sprinkled onto the board) went into what the unit puts there (the
+    dough laid on the flour)."""
+    before, after = plan.slots[k].rel.role.before, plan.after_of(k)
+    if before is None or after is None or describes_contents(before) or not describes_contents(after):
+        return []
+    labels = {s.rel.role.label for s in plan.slots} | listed(after)
+    return [(n, rel) for n, rel in inside.get(plan.slots[k].rel.role.label, ()) if n in dust and n.label not in labels]
+
+
+def left_nodes(units: Iterable[tuple[UnitPlan, dict[int, list[Way]], dict[int, list[tuple[ObjectNode, ObjectNode]]]]],
+               inside: dict[str, list[tuple[ObjectNode, Relation]]], dust: frozenset[ObjectNode]) -> set[ObjectNode]:
+    """The nodes some unit's action moves an object out of (all others are stable), from each unit's plan, flow
+    ways (`flow_ways`) and late empties (`late_empties`); `inside`: per label, the nodes placed in one; `dust`:
+    the task's `dustings`."""
+    left: set[ObjectNode] = set()
+    for p, ways, empties in units:
+        for k, s in enumerate(p.slots):
+            after = p.after_of(k) if s.fate is not Fate.CONSUMED else None
+            if s.rel.role.before is not None and (s.fate is Fate.CONSUMED or (after is not None
+                                                                              and after != s.rel.role.before)):
+                left.add(s.rel.role.before)
+        left.update(n for lst in ways.values() for n, _, _ in lst)
+        left.update(n for lst in empties.values() for n, _ in lst)
+        left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
+        left.update(n for s in p.slots for n, _ in (*alike_nodes(p, s, inside), *restated_nodes(p, s, inside)))
+        left.update(n for k in range(len(p.slots)) for n, _ in dusted_nodes(p, k, inside, dust))
+    return left

@@ -1,0 +1,121 @@
+"""The `relational` encoding on the shared dishes whose plans the replay found physically wrong (issue 21).
+
+Each case is the dish's own FOON units, cut down to the ones that show the fault."""
+
+from __future__ import annotations
+
+from node_words import contains, inside, n
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.physical import Relation
+from foon2pddl.pddl.holders import Fate, relational_roles
+from foon2pddl.pddl.relational_plan import plan_unit, restated_nodes
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+
+def on(holder: str):
+    return make_state("on", holder)
+
+
+def _clean_plan(units, kitchen, goal_node):
+    outcome = plan(Foon(tuple(units)), Kitchen(frozenset(kitchen)), Goal(GoalSpec(goal_node.label), (goal_node,)),
+                   "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    return outcome
+
+
+# homestyle creamed corn (0038): the scoop of the kernels restates `corn (shaved, on [cutting board])` as an
+# output with no input node; the board's input node already lists the corn, so it is the corn there, not a
+# second shaved corn made on the board (which stayed there when the scrape took the first one into the pot)
+BOARD, CORN = n("cutting board", contains("corn")), n("corn", "shaved", on("cutting board"))
+KERNELS, KNIFE, POT = n("corn kernels", "uncooked", on("cutting board")), n("knife", "clean"), n("pot", "empty")
+SCOOP = FunctionalUnit((BOARD, KERNELS, POT, KNIFE), Motion("scoop and pour"),
+                       (n("pot", contains("corn kernels")), n("corn kernels", "uncooked", inside("pot")), CORN))
+SCRAPED_POT = n("pot", contains("corn"))
+SCRAPE = FunctionalUnit((n("pot", contains("corn kernels")), CORN, KNIFE), Motion("scrape"),
+                        (SCRAPED_POT, n("corn kernels", "uncooked", inside("pot")), n("corn cob", "shaved")))
+
+
+def test_an_output_only_object_in_a_holder_that_already_lists_it_replaces_the_one_there():
+    slot = plan_unit(SCOOP, frozenset(), frozenset(), frozenset()).slots[4]
+    there = {"cutting board": [(CORN, Relation.ON), (KERNELS, Relation.ON)],
+             "pot": [(n("corn", inside("pot")), Relation.IN)]}
+    assert slot.rel.role.label == "corn" and slot.fate is Fate.NEW
+    assert restated_nodes(plan_unit(SCOOP, frozenset(), frozenset(), frozenset()), slot, there) == [(CORN, Relation.ON)]
+
+
+def test_a_restated_object_is_not_made_twice():
+    whole, empty_board = n("corn", "whole", on("cutting board")), n("cutting board", "empty")
+    put = FunctionalUnit((n("corn", "whole"), empty_board), Motion("pick-and-place"), (BOARD, whole))
+    shave = FunctionalUnit((BOARD, whole, KNIFE), Motion("shave"), (KERNELS, CORN))
+    outcome = _clean_plan((put, shave, SCOOP, SCRAPE), (n("corn", "whole"), empty_board, KNIFE, POT), SCRAPED_POT)
+    final = outcome.trace.final
+    corn = [o.id for o in outcome.trace.objects if o.label == "corn" and final[o.id].node is not None]
+    assert [final[c].holder for c in corn if not final[c].consumed] == ["pot_1"]
+
+
+# chocolate cake (0058): the tray is taken out of the oven, which FOON leaves out of the outputs as `oven (on,
+# with [pan])`; the task empties whichever oven held it (the oven's `with [pan]` names the tray by another
+# word, a pair the task reports), so the step that takes the oven as a role says it ends `oven (on)`
+OVEN, HOT_OVEN = n("oven", "on"), n("oven", "on", make_state("with", "pan"))
+BATTER = n("cake batter", inside("pan"))
+TRAY = n("baking tray", contains("cake batter"))
+PUT_IN = FunctionalUnit((OVEN, TRAY), Motion("put inside"), (HOT_OVEN, n("baking tray", contains("cake batter"),
+                                                                          inside("oven"))))
+BAKE = FunctionalUnit((HOT_OVEN, n("baking tray", contains("cake batter"), inside("oven")), BATTER), Motion("bake"),
+                      (n("baking tray", contains("cake"), inside("oven")), n("cake", inside("pan"))))
+RACK, CAKE_ON_RACK = n("wire rack", "empty"), n("cake", on("wire rack"))
+TAKE_OUT = FunctionalUnit((HOT_OVEN, n("baking tray", contains("cake"), inside("oven")), n("cake", inside("pan")),
+                           RACK), Motion("pick-and-place"),
+                          (n("wire rack", contains("cake")), CAKE_ON_RACK, n("baking tray", "dirty")))
+
+
+def test_a_role_a_late_empty_changes_says_the_node_it_ends_in():
+    outcome = _clean_plan((PUT_IN, BAKE, TAKE_OUT), (OVEN, TRAY, BATTER, RACK), CAKE_ON_RACK)
+    oven = [o.id for o in outcome.trace.objects if o.label == "oven"]
+    assert [outcome.trace.final[o].node for o in oven] == [OVEN]
+
+
+# egg noodles from scratch (0044): flour is sprinkled onto the board, which FOON then calls `floured` (silent
+# about what is on it); the dough is put on it and the board lists only the dough: the dusting went into it
+EMPTY_BOARD, JAR = n("cutting board", "empty"), n("jar", contains("flour"))
+FLOUR = n("flour", "powder", inside("jar"))
+SPRINKLE = FunctionalUnit((EMPTY_BOARD, JAR, FLOUR), Motion("sprinkle"),
+                          (n("cutting board", "floured"), n("flour", "powder", on("cutting board"))))
+DOUGH_BOWL, DOUGH = n("bowl", contains("dough")), n("dough", contains("egg", "flour"), inside("bowl"))
+DOUGH_ON_BOARD = n("dough", contains("egg", "flour"), on("cutting board"))
+PUT_DOUGH = FunctionalUnit((n("cutting board", "floured"), DOUGH_BOWL, DOUGH), Motion("pick-and-place"),
+                           (n("cutting board", contains("dough")), DOUGH_ON_BOARD))
+
+
+def test_a_dusting_a_container_list_leaves_out_went_into_what_the_unit_puts_there():
+    outcome = _clean_plan((SPRINKLE, PUT_DOUGH), (EMPTY_BOARD, JAR, FLOUR, DOUGH_BOWL, DOUGH), DOUGH_ON_BOARD)
+    final = outcome.trace.final
+    dusting = [o.id for o in outcome.trace.objects if o.label == "flour" and final[o.id].node is not None
+               and final[o.id].holder != "jar_1"]
+    assert dusting and all(final[o].consumed for o in dusting)
+
+
+# chipotle-bean sandwich (0005): the avocado is put on the bread, which then lists it, while the avocado's output
+# node says only `on` (no holder; a bare `on` is otherwise an appliance switched on): it is on the bread
+TOAST = n("bread", "sliced", "toasted", on("cutting board"))
+AVOCADO = n("avocado", "sliced", on("cutting board"))
+TOPPED = n("bread", contains("avocado"), on("cutting board"))
+TOP = FunctionalUnit((TOAST, AVOCADO, KNIFE), Motion("pick-and-place"),
+                     (TOPPED, n("avocado", "on", "sliced"), n("knife", "dirty")))
+
+
+def test_a_bare_on_beside_the_one_role_that_newly_lists_the_object_places_it_there():
+    avocado = relational_roles(TOP)[1]
+    assert avocado.target.holder == "bread" and avocado.target.role == 0
+    assert avocado.after == n("avocado", "sliced", on("bread"))
+    empty, loose = n("cutting board", "empty"), n("avocado", "sliced")
+    put = FunctionalUnit((empty, loose), Motion("pick-and-place"), (n("cutting board", contains("avocado")), AVOCADO))
+    outcome = _clean_plan((put, TOP), (n("cutting board", contains("bread")), empty, TOAST, loose, KNIFE), TOPPED)
+    final = outcome.trace.final
+    assert [final[o.id].holder for o in outcome.trace.objects if o.label == "avocado"] == ["bread_1"]
