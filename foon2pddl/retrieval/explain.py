@@ -52,9 +52,23 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
             return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
     if exact:
         leaves = blockers(reach, goal.candidates)
-        return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it)"
-                + ("; nodes no unit makes, each needed on some way to it: " + "; ".join(n.describe() for n in leaves)
-                   if leaves else " (every way to make it needs a node that itself needs it: `foon2pddl check` names "
-                                  "the cycle)"))
+        if not leaves:
+            return f"{head}; {_cycle_text(foon, reach, goal, max_size)}"
+        return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it); "
+                "nodes no unit makes, each needed on some way to it: " + "; ".join(n.describe() for n in leaves))
     return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
             "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
+
+
+def _cycle_text(foon: Foon, reach, goal: Goal, max_size: int) -> str:
+    """Every way to the goal needs a node that itself needs it, so no node no unit makes helps; a kitchen that
+    holds a node of the cycle breaks it (the converter's pour water gives back the empty cup its fill takes):
+    the smallest such sets, among the nodes the goal depends on (the goal's own nodes excluded)."""
+    text = (f"no set of up to {max_size} nodes no unit makes gives it: every way to make it needs a node that "
+            "itself needs it (`foon2pddl check` names the cycle)")
+    goals = set(goal.candidates)
+    inner = [n for n in foon.nodes if n not in goals]
+    fixes = smallest_additions(reach, goal.candidates, inner, max_size=min(3, max_size))
+    if fixes.smallest:
+        text += "; a kitchen that holds one of the cycle's nodes breaks it: " + additions_text(fixes.smallest)
+    return text

@@ -1,0 +1,36 @@
+"""Findings of a newcomer's re-pass over README and docs (issue 24): each test is one thing a new user
+read or was told that was not true, written first and watched fail."""
+
+from __future__ import annotations
+
+from click.testing import CliRunner
+from conftest import ROOT
+
+from foon2pddl.cli import main
+
+POUR_WATER = ROOT / "tests" / "data" / "foon_to_pddl-examples" / "FOON-pour_water.txt"
+BOWL = "bowl: contains {water}, on [table]"
+
+
+def run(*args: str):
+    return CliRunner().invoke(main, [str(a) for a in args])
+
+
+def test_a_cycle_names_the_node_that_breaks_it_not_a_false_count():
+    """The converter's pour water: the pour gives back the empty cup the fill takes, so the default kitchen
+    lacks it. One node (`cup (empty, on [table])`, docs/pddl.md's kitchen) makes the bowl of water; the
+    reason said it "needs more than 6 kitchen additions"."""
+    r = run("retrieve", POUR_WATER, "--goal", BOWL)
+    assert r.exit_code == 1
+    assert "needs more than" not in r.stderr
+    assert "`foon2pddl check` names the cycle" in r.stderr
+    assert "a kitchen that holds one of the cycle's nodes breaks it: add `cup (empty, on [table])`" in r.stderr
+
+
+def test_the_named_node_does_make_it(tmp_path):
+    """The oracle: the default kitchen plus the node the reason names makes the goal."""
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("bottle: contains {water}, on [table]\nwater: liquid, in [bottle]\nbowl: empty, on [table]\n"
+                       "cup: empty, on [table]\n")
+    r = run("retrieve", POUR_WATER, "--kitchen", kitchen, "--goal", BOWL)
+    assert r.exit_code == 0, r.stderr
