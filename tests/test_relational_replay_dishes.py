@@ -12,6 +12,7 @@ from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.pddl.holders import Fate, relational_roles
 from foon2pddl.pddl.relational_plan import plan_unit, restated_nodes
+from foon2pddl.pddl.relational_stitch import kitchen_stitches
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 
@@ -119,3 +120,25 @@ def test_a_bare_on_beside_the_one_role_that_newly_lists_the_object_places_it_the
     outcome = _clean_plan((put, TOP), (n("cutting board", contains("bread")), empty, TOAST, loose, KNIFE), TOPPED)
     final = outcome.trace.final
     assert [final[o.id].holder for o in outcome.trace.objects if o.label == "avocado"] == ["bread_1"]
+
+
+# bacon macaroni and cheese (0002): the cook leaves the macaroni in `pot (contains {macaroni, salt, water}, hot, on
+# [stove])`; the scoop takes the pot without `hot`, a node no unit makes: the kitchen's pot of raw macaroni, while
+# the cooked macaroni is scooped out of the pot it was cooked in. The kitchen's pot is read as the cook's output
+# (`relational_stitch`: its words are among the output's, which only adds a state)
+STOVE_POT = n("pot", contains("macaroni", "salt", "water"), "hot", on("stove"))
+RAW_POT = n("pot", contains("macaroni", "salt", "water"), on("stove"))
+RAW, COOKED = n("macaroni", "raw", inside("pot")), n("macaroni", "cooked", inside("pot"))
+COOK = FunctionalUnit((STOVE_POT, RAW), Motion("cook"), (STOVE_POT, COOKED))
+SKILLET = n("skillet", contains("bacon"), "hot")
+SAUCED = n("macaroni", "cooked", inside("skillet"))
+SCOOP_MAC = FunctionalUnit((SKILLET, n("skimmer", "clean"), RAW_POT, COOKED), Motion("scoop and pour"),
+                           (n("skimmer", "dirty"), n("skillet", contains("bacon", "macaroni"), "hot"), SAUCED))
+
+
+def test_a_kitchen_container_read_as_a_unit_output_that_adds_a_state():
+    foon = Foon((COOK, SCOOP_MAC))
+    assert kitchen_stitches(foon, [STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")]) == {
+        RAW_POT: (STOVE_POT, COOK)}
+    outcome = _clean_plan((COOK, SCOOP_MAC), (STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")), SAUCED)
+    assert [s.unit for s in outcome.trace.steps] == [COOK, SCOOP_MAC]

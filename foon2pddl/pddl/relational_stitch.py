@@ -6,8 +6,9 @@ K take in nodes only units make (`mixing bowl (contains {instant coffee, sugar, 
 `water (in [mixing bowl])`, which only the pour makes) would start holding objects in those nodes: the plan
 then skips the units FOON makes them with, and its task tree does not validate from FOON's kitchen. When
 exactly one unit output P of K's label is K by another wording, the relational task reads K as P: K is no
-kitchen object, and the units taking K take P. "Another wording": the same states but for lists and places,
-K's places among P's, K's list (read through the task's aliases, `holder_words.task_aliases`) within P's, and
+kitchen object, and the units taking K take P. "Another wording": K's states but lists and places among P's
+(P may add one: the cook leaves the bacon macaroni's pot `hot`, which the scoop's kitchen pot does not say), K's
+places among P's, K's list (read through the task's aliases, `holder_words.task_aliases`) within P's, and
 whatever else P lists no object of P's unit is and its input nodes of that label do not list (the onigiri's
 `bowl (contains {rice, water})` for the kitchen's `bowl (contains {rice})`: no water is poured). FOON's tree
 keeps K, which FOON's kitchen has; each reading is reported with the unit's file:line.
@@ -58,7 +59,7 @@ def kitchen_stitches(foon: Foon, kitchen: Iterable[ObjectNode]) -> dict[ObjectNo
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
             for p in u.outputs:
-                if (p.label == k.label and _rest(p) == _rest(k) and set(places(k)) <= set(places(p))
+                if (p.label == k.label and _rest(k) <= _rest(p) and set(places(k)) <= set(places(p))
                         and items <= read(listed(p)) and not (read(listed(p)) - items) & (roles | before)):
                     found.setdefault(p, u)
         if len(found) == 1:
