@@ -33,7 +33,7 @@ BEAT = FunctionalUnit((WORDED, IN_SUGAR, IN_WATER, n("whisk")), Motion("beat"),
 
 def test_a_kitchen_container_whose_contents_only_a_unit_makes_is_read_as_that_units_output():
     foon = Foon((POUR, BEAT))
-    assert kitchen_stitches(foon, default_kitchen(foon).nodes) == {WORDED: (POURED, POUR)}
+    assert kitchen_stitches(foon.units, default_kitchen(foon).nodes) == {WORDED: (POURED, POUR)}
 
 
 def test_the_plan_makes_what_the_kitchen_container_lists_and_its_tree_validates():
@@ -59,7 +59,7 @@ def test_a_container_that_held_more_before_the_unit_is_no_other_wording():
     whisk = FunctionalUnit((n("bowl", contains("egg")), beaten_in, n("whisk")), Motion("whisk"),
                            (n("bowl", contains("batter")), n("batter", inside("bowl"))))
     foon = Foon((pour, whisk))
-    assert kitchen_stitches(foon, default_kitchen(foon).nodes) == {}
+    assert kitchen_stitches(foon.units, default_kitchen(foon).nodes) == {}
 
 
 @pytest.mark.parametrize("name", ["0067-onigiri.txt", "0079-dalgona_coffee.txt"])
@@ -71,3 +71,14 @@ def test_shared_dishes_whose_kitchen_container_only_units_fill_validate(name):
     assert outcome.status == "solved", outcome.message
     report = replay(outcome.trace)
     assert report.ok, [d.describe() for d in report.disagreements]
+
+
+def test_names_are_read_as_in_the_goals_task_not_the_whole_network():
+    # a universal FOON: another recipe has `sugar` objects of its own, so the network reads no `sugar` as
+    # `refined sugar`; the whipped coffee's task, which has none, does
+    other = FunctionalUnit((n("bag", contains("sugar")), n("sugar", inside("bag")), n("cup", "empty")), Motion("pour"),
+                           (n("cup", contains("sugar")), n("sugar", inside("cup"))))
+    foon = Foon((other, POUR, BEAT))
+    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("whipped coffee"), (WHIPPED,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert outcome.tree.units == (POUR, BEAT)

@@ -97,9 +97,11 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
     """The relational task of `goal` over `foon` (see the module doc), with its reports as notes."""
     inp = at_level(foon, kitchen, goal, level)
-    given, (inp, reads) = inp.foon.units, stitched(inp)  # FOON's own units: the plan's tree is made of them
+    given = inp.foon.units  # FOON's own: the plan's tree is made of them
+    units = restoring_units(inp.foon, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(given)))
+    inp, reads = stitched(inp, units)
     f = inp.foon
-    units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(f.units)))
+    units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune and reads else units
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
     # once; with places only outputs name (by no other name: `pan`), holders with no list (bread toast's plate)

@@ -16,7 +16,7 @@ keeps K, which FOON's kitchen has; each reading is reported with the unit's file
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
@@ -33,16 +33,19 @@ def _rest(node: ObjectNode) -> frozenset:
     return frozenset(s for s in node.states if place_state(s) is None and s.label not in CONTENT_STATES)
 
 
-def kitchen_stitches(foon: Foon, kitchen: Iterable[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
-    """K -> (P, the unit making P) for each kitchen container the task reads as a unit's output (module doc).
-    O(kitchen containers x units x outputs)."""
-    kitchen = frozenset(kitchen)
-    made = {o for u in foon.units for o in u.outputs}
+def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNode],
+                     makers: Sequence[FunctionalUnit] | None = None) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
+    """K -> (P, the unit making P) for each kitchen container a task of `units` reads as an output of one of
+    `makers` (the network's units; default `units`; module doc). Names are read as in that task: a universal
+    FOON's `sugar` is a label of its own, a dish's task may read it as `refined sugar`. O(kitchen containers x
+    units x outputs)."""
+    kitchen, makers = frozenset(kitchen), units if makers is None else makers
+    made = {o for u in makers for o in u.outputs}
     full = sorted(k for k in kitchen if listed(k) and k not in made)
     if not full:
         return {}
-    labels = {n.label for u in foon.units for n in (*u.inputs, *u.outputs)}
-    alias = dict(task_aliases(foon.units, labels, full))
+    labels = {n.label for u in units for n in (*u.inputs, *u.outputs)}
+    alias = dict(task_aliases(units, labels, full))
 
     def read(names: Iterable[str]) -> frozenset[str]:
         return frozenset(alias.get(x, x) for x in names)
@@ -50,12 +53,12 @@ def kitchen_stitches(foon: Foon, kitchen: Iterable[ObjectNode]) -> dict[ObjectNo
     out = {}
     for k in full:
         items = read(listed(k))
-        taken = {x for u in foon.units if k in u.inputs for x in u.inputs
+        taken = {x for u in units if k in u.inputs for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
         found = {}
-        for u in foon.units:
+        for u in makers:
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
             for p in u.outputs:
@@ -67,10 +70,11 @@ def kitchen_stitches(foon: Foon, kitchen: Iterable[ObjectNode]) -> dict[ObjectNo
     return out
 
 
-def stitched(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
-    """`inp` with each kitchen node K of `kitchen_stitches` read as its P: out of the kitchen, and P in every
-    unit taking K; and the readings."""
-    stitches = kitchen_stitches(inp.foon, inp.kitchen)
+def stitched(inp: LevelInputs, units: Iterable[int]) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode,
+                                                                                                FunctionalUnit]]]:
+    """`inp` with each kitchen node K that a task of the `units` (indexes) reads as a unit output P
+    (`kitchen_stitches`) read so: out of the kitchen, and P in every unit taking K; and the readings."""
+    stitches = kitchen_stitches([inp.foon.units[u] for u in units], inp.kitchen, inp.foon.units)
     if not stitches:
         return inp, stitches
 
