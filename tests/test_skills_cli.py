@@ -295,16 +295,19 @@ def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding
 
 
 def test_the_default_skill_plan_falls_back_to_instances_when_the_relational_encoding_finds_none_and_says_so():
-    # 0036: the relational task has no relaxed solution (a FOON producer/consumer mismatch), the instances one solves;
-    # `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a skill plan
+    # ACT-0009: the relational task has no relaxed solution (FOON's bowls of batter disagree across units), the
+    # instances one solves; `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a
+    # skill plan (0036, then 0050, were the example until input stitches solved them)
     from conftest import SUBGRAPHS
 
-    path = str(SUBGRAPHS / "0036-roasted_brussels_sprouts.txt")
-    result = run(path, "--goal", "brussel sprout (cooked, on [plate])", "--skills")
+    path = str(SUBGRAPHS / "ACT-0009-chocolate_chip_muffin.txt")
+    goal = ("chocolate chip muffin (baked, contains {baking powder, brown sugar, butter, chocolate chip, cinnamon, "
+            "egg white and yolk, flour, milk, salt, sour cream, sugar, vanilla extract}, in [muff])")
+    result = run(path, "--goal", goal, "--skills")
     assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
     assert "note: the relational encoding found no plan (unsolvable: " in result.stderr, result.stderr
     assert "under the instances encoding" in result.stderr
-    asked = run(path, "--goal", "brussel sprout (cooked, on [plate])", "--skills", "--encoding", "relational")
+    asked = run(path, "--goal", goal, "--skills", "--encoding", "relational")
     assert asked.exit_code == 1 and "encoding found no plan" not in asked.stderr, asked.output  # asked for: no fallback
 
 

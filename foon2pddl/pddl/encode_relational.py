@@ -34,11 +34,11 @@
   listing what starts in it (`heavy cream (in [carton])` and no carton in any unit,
   or `egg (in [bowl])` while every bowl of the kitchen is `bowl (empty)`), and a
   kitchen container that lists an item holds one object of it.
-* **Reports.** Label readings and contradictions (`holder_words.mismatches`,
-  `holders.list_gaps`), and every object the unit puts where its node does not say
-  what the holder holds (a target the unit does not name: `sandwich (on [plate])`
-  with no plate in the unit), once per task with the unit's file:line; the last two
-  are the (container, content) pairs the replay does not check.
+* **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in.
+* **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
+  every object the unit puts where its node does not say what the holder holds (a target the unit does not
+  name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
+  two are the (container, content) pairs the replay does not check.
 
 Requirements: `:strips :typing`, `:conditional-effects` when an action has a
 quantified or conditional effect, `:action-costs` with costs.
@@ -46,12 +46,14 @@ quantified or conditional effect, `:action-costs` with costs.
 
 from __future__ import annotations
 
-from ..model.foon import Foon, ObjectNode, make_node
+from dataclasses import replace
+
+from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
-from . import encoding, relational_plan
+from . import relational_plan
 from .costs import unit_cost
 from .encode_instances import (
     IS,
@@ -65,22 +67,16 @@ from .encode_instances import (
     object_types,
     precedes_facts,
 )
-from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, short_path, unit_comment
-from .holder_words import mismatches, task_aliases
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
+from .holder_words import mismatches, reported, task_aliases
 from .holders import Fate, gained, head_of, list_gaps, unit_aliases
-from .instance_counts import count_reasons, derive_counts
+from .input_stitch import with_stitches
+from .instance_counts import InstanceCounts, count_reasons, derive_counts
 from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import (
-    counted_objects,
-    holder_init,
-    implied_contents,
-    kitchen_placed,
-    named_objects,
-    scene_instances,
-)
+from .relational_init import completed_kitchen, kitchen_placed, scene_instances
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
 from .relational_stitch import stitch_notes, stitched
 from .restore import discards
@@ -101,7 +97,10 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     units = restoring_units(inp.foon, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(given)))
     inp, reads = stitched(inp, units)
     f = inp.foon
-    units = restoring_units(f, inp.kitchen, inp.candidates) if options.prune and reads else units
+    def relevant(net: Foon) -> tuple[int, ...]:
+        return restoring_units(net, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(net.units)))
+    st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
+    f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled = frozenset().union(*(gained(f.units[u]) for u in units))
     # once; with places only outputs name (by no other name: `pan`), holders with no list (bread toast's plate)
@@ -113,9 +112,11 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     def roles_of(unit):
         return count_roles(by_unit[unit]) if unit in by_unit else ()
 
-    counts = derive_counts(f, units, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
-                           overrides=dict(options.instances), roles_of=roles_of)
-    why = tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen, roles_of))
+    def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
+        return derive_counts(net, need, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
+                             overrides=dict(options.instances), roles_of=roles_of)
+    counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if origin else count(inp.foon, st.own)
+    why = tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, roles_of))
     scene = kitchen.project(level).scene
     have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
     units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
@@ -134,23 +135,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
         placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
     else:
-        instances = counted_objects(table, counts)
-        alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
-        # The kitchen completed: contents its containers list, holders its objects and the units name.
-        placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
-        paired = frozenset((a, b) for u in units for a in f.units[u].inputs for b in f.units[u].inputs)
-        instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired))
-        named_places = {alias.get(c, c) for u in units for s in plans[u].slots
-                        for n in (s.after, s.portion) for _, c in places(n)}
-        missing = sorted(named_places - {x.label for x in instances})
-        instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
-        quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
-        instances, implied = holder_init(instances, alias, quiet, nodes)
-        held_by = frozenset(implied) & nodes
-        if implied:
-            # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
-            # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
-            instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
+        named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
+        instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], have, nodes,
+                                                              named, silent)
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
@@ -177,8 +164,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     gaps: list[tuple[str, str, str, object]] = []  # (container, content, message, unit)
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
-    actions = [_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
-                            container_labels, inside, empties[u], loose, dust) for u in units]
+    actions = [replace(_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
+                                    container_labels, inside, empties[u], loose, dust), unit=origin.get(u, u))
+               for u in units]
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
@@ -189,9 +177,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
-    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads)
-    notes = sorted({f"{encoding.unit_where(unit)}: {m}" for unit, m in found})
-    commented = sorted({f"{encoding.unit_where(unit, short_path)}: {m}" for unit, m in found})  # no checkout path in files
+    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + [(x.taker, x.describe()) for x in sewn]
+    notes, commented = reported(found)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
@@ -199,14 +186,14 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=given, labels=table.labels,
-        comments=header("relational", inp, options, len(units)) + count_lines(counts) + why
+        comments=header("relational", inp, options, len(units) - len(origin)) + count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too
-    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by
+    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn}
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 

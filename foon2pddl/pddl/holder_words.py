@@ -1,6 +1,7 @@
 """FOON's words about a unit's holders read by another name: rule 0 of `holders` (`unit_aliases`, and `aliased`,
 a node read through them), and those readings as the relational task reports and reads them: per unit
-(`mismatches`, the `label mismatch:` notes) and across a task (`task_aliases`, which its replay reads)."""
+(`mismatches`, the `label mismatch:` notes) and across a task (`task_aliases`, which its replay reads); `reported`
+gives a task's report lines with their units' file:line."""
 
 from __future__ import annotations
 
@@ -9,9 +10,10 @@ from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.places import listed, places
+from .encoding import short_path, unit_where
 from .pairing import unit_roles
 
-__all__ = ["aliased", "head_of", "mismatches", "task_aliases", "unit_aliases"]
+__all__ = ["aliased", "head_of", "mismatches", "reported", "task_aliases", "unit_aliases"]
 
 
 def head_of(name: str, label: str) -> bool:
@@ -107,3 +109,11 @@ def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
             if name not in have and len(match) == 1:
                 seen.setdefault(name, set()).add(match[0])
     return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)
+
+
+def reported(found: Iterable[tuple[FunctionalUnit, str]]) -> tuple[list[str], list[str]]:
+    """A task's report lines, each once, after its unit's file:line: for the notes (the path as given) and for
+    the PDDL comments (the file name only: no checkout path in generated files)."""
+    found = list(found)
+    return (sorted({f"{unit_where(u)}: {m}" for u, m in found}),
+            sorted({f"{unit_where(u, short_path)}: {m}" for u, m in found}))

@@ -78,6 +78,14 @@ class InstanceCounts:
     def total(self) -> int:
         return sum(k for _, k in self.at_node) + sum(k for _, k in self.unmade)
 
+    def widest(self, other: InstanceCounts) -> InstanceCounts:
+        """Enough objects for both plans: per kitchen node and per label the larger count; this one's firings
+        (its plan explains the counts), and no unfolded plan unless the counts are this one's."""
+        at_node = tuple(sorted((Counter(dict(self.at_node)) | Counter(dict(other.at_node))).items()))
+        unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
+        same = (at_node, unmade) == (self.at_node, self.unmade)
+        return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else ())
+
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode],
                      candidates: Sequence[ObjectNode]) -> tuple[tuple[int, ...], ObjectNode] | None:

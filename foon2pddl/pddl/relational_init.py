@@ -3,16 +3,17 @@ its nodes name (module doc of `encode_relational`, "Init")."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
-from ..model.foon import ObjectNode, make_node, make_state
+from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of, place_state
+from ..model.places import describes_contents, listed, place_of, place_state, places
 from ..model.scene import SceneObject
+from .holder_words import task_aliases
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["counted_objects", "holder_init", "implied_contents", "kitchen_placed", "named_objects", "read_names",
+__all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_placed", "named_objects", "read_names",
            "scene_instances", "unplaced"]
 
 
@@ -153,3 +154,26 @@ def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iter
         out += [Instance(table.name(f"{label} {i}", key=("instance", label, i)), label)
                 for i in range(first, first + k)]
     return out
+
+
+def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit], have: Iterable[str],
+                      nodes: set[ObjectNode], named: Iterable[str], silent: frozenset[str],
+                      ) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
+    """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
+    and the units name (`named`: the places the units' output nodes and portions name). Also the task's aliases
+    (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the
+    holders the kitchen implies start in."""
+    instances = counted_objects(table, counts)
+    alias = dict(task_aliases(units, have, [x.start for x in instances]))
+    placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
+    paired = frozenset((a, b) for u in units for a in u.inputs for b in u.inputs)
+    instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired))
+    missing = sorted({alias.get(c, c) for c in named} - {x.label for x in instances})
+    instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
+    quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
+    instances, implied = holder_init(instances, alias, quiet, nodes)
+    if implied:
+        # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
+        # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
+        instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
+    return instances, alias, placed, frozenset(implied) & nodes

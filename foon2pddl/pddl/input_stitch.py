@@ -1,0 +1,182 @@
+"""Stitches: a unit's input that no unit makes, read as the node an earlier unit left that object in.
+
+FOON's annotators describe one object again at each unit, and the words do not always agree: the add puts
+`brussel sprout (peeled, in [plastic bag])` into the bag, and the shake that takes the bag next takes `brussel
+sprout (peeled, uncooked, in [plastic bag])`, a node no unit makes. FOON's own semantics takes such a node from
+the kitchen (which is why the `tree` encoding solves these dishes); over physical objects it is a second sprout in
+a second bag, while the bag the shake needs holds the first one, so no plan exists.
+
+A stitch reads the input as the made node, on FOON's evidence in the unit itself (`stitches`):
+
+* the unit takes the input N (label L, place `in [C]` / `on [C]`), and no unit of the network makes N;
+* the unit takes a container of label C (C read through the unit's names, `pan` for `cooking pan`) whose node
+  lists L and is made by a unit (of the units given, `with_stitches` gives all): that container was filled by
+  the plan, and the L it lists is N;
+* the made node M read for N: of label L, at the same place (read through its unit's names), made by a unit
+  other than this one, and the latest such node (no other unit takes it and leaves an L at that place: the pizza's parsley is sprinkled on before the pick-and-place, so the pizza before the
+  sprinkle is not read for the pizza it takes); one made by a unit that makes the container's node, else the
+  only one. A made node that names no place is where the one output of its unit that lists it is (the pour
+  and stir makes `filling (contains {...})` and `cooking pan (contains {filling})`: the pour after it takes
+  `filling (contains {...}, in [cooking pan])`). Anything else is ambiguous and not stitched.
+
+What a stitch drops or assumes is said (`Stitch.describe`): the states N has that M lacks are assumed (`uncooked`),
+those M has that N lacks are dropped. Only words are added (a list's items too), or a contents list dropped from a
+node that names none (`_words_only_added`). The stitched unit is one more action beside FOON's own (`with_stitches`): the plan's trace
+holds M for the object (what the plan made); the tree keeps FOON's unit, and its check takes N as given by the
+stitch (`Compiled.placed`). O(u n^2) in the network's units.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field, replace
+
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.physical import Relation
+from ..model.places import listed, place_of
+from .holder_words import unit_aliases
+
+__all__ = ["Stitch", "Stitched", "stitches", "with_stitches"]
+
+
+@dataclass(frozen=True)
+class Stitch:
+    """Unit `unit` (an index of the network; `taker`) takes `node`, which no unit makes, read as `reads_as`."""
+
+    unit: int
+    node: ObjectNode
+    reads_as: ObjectNode
+    taker: FunctionalUnit = field(compare=False, repr=False)
+
+    @property
+    def assumed(self) -> tuple[str, ...]:
+        """The states the unit's node says and the made node does not (`uncooked`), places aside."""
+        return _words(self.node, self.reads_as)
+
+    @property
+    def dropped(self) -> tuple[str, ...]:
+        """The states the made node says and the unit's node does not, places aside."""
+        return _words(self.reads_as, self.node)
+
+    def describe(self) -> str:
+        """`shake takes brussel sprout (...), which no unit makes, as brussel sprout (...): assumes uncooked`."""
+        said = [f"{w} {', '.join(x)}" for w, x in (("assumes", self.assumed), ("drops", self.dropped)) if x]
+        return (f"{self.taker.motion.label} takes {self.node.describe()}, which no unit makes, as {self.reads_as.describe()}"
+                f"{': ' + '; '.join(said) if said else ': its place by another name'}")
+
+
+def _said(node: ObjectNode, placed: bool = True) -> frozenset:
+    """What a node says, as words: its states, a `contains` list item by item (`contains {a, b}` says `a` and
+    `b`); places only when `placed` is False."""
+    return frozenset(w for x in node.states if not (placed and x.label in ("in", "on"))
+                     for w in ([("contains", i) for i in (*x.ingredients, x.related) if i] if x.label == "contains"
+                               else [x]))
+
+
+def _words(a: ObjectNode, b: ObjectNode) -> tuple[str, ...]:
+    """What `a` says and `b` does not, described (a list's items as one `contains {...}`); places only when `b`
+    names none (else they are one place by two names)."""
+    extra = _said(a, place_of(b) is not None) - _said(b, False)
+    items = sorted(w[1] for w in extra if isinstance(w, tuple))
+    return tuple(sorted(w.describe() for w in extra if not isinstance(w, tuple))) + (
+        (f"contains {{{', '.join(items)}}}",) if items else ())
+
+
+def _place(node: ObjectNode, unit: FunctionalUnit, made: bool = False) -> tuple[Relation, str] | None:
+    """The node's first place, its holder read through the unit's names; for a node the unit `made` that names
+    none, `in` the one output of the unit that lists it (`filling (contains {...})` beside `cooking pan (contains
+    {filling})`)."""
+    where = place_of(node)
+    if where is None:
+        lists = {o.label for o in unit.outputs if made and node.label in listed(o)}
+        return (Relation.IN, lists.pop()) if len(lists) == 1 else None
+    return where[0], dict(unit_aliases(unit)).get(where[1], where[1])
+
+
+def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
+    """The stitches of `units` (see the module doc), in unit order."""
+    made: dict[ObjectNode, list[int]] = {}  # node -> the units that make it
+    for u in units:
+        for n in foon.units[u].outputs:
+            made.setdefault(n, []).append(u)
+    produced = foon.producers
+    at: dict[tuple[str, object], list[ObjectNode]] = {}  # (label, place) -> made nodes there
+    for n, us in made.items():
+        for p in {_place(n, foon.units[u], made=True) for u in us} - {None}:
+            at.setdefault((n.label, p), []).append(n)
+    found = []
+    for u in units:
+        unit = foon.units[u]
+        names = dict(unit_aliases(unit))
+        for n in unit.inputs:
+            if n in produced or (p := _place(n, unit)) is None:
+                continue
+            holders = [h for h in unit.inputs if h.label == p[1] and h in made
+                       and (n.label in listed(h) or any(names.get(x) == n.label for x in listed(h)))]
+            cands = [m for m in at.get((n.label, p), ()) if m != n and set(made[m]) - {u}
+                     and not _changed_there(foon, units, m, p, u)]
+            by_holder = [m for m in cands if any(set(made[h]) & set(made[m]) for h in holders)]
+            pick = by_holder if by_holder else cands
+            if holders and len(pick) == 1 and _words_only_added(n, pick[0]):
+                found.append(Stitch(u, n, pick[0], unit))
+    return tuple(found)
+
+
+def _words_only_added(node: ObjectNode, made: ObjectNode) -> bool:
+    """Whether reading `made` for `node` only assumes words (`node` says all `made` says, and more: `uncooked`, or
+    more items of a list, the omelette that lists the egg mixture it was made of beside the bacon), or only drops
+    the contents list of a node that names no contents (`soup broth (in [pot])` for the stirred broth that lists
+    its stocks): never a state against its opposite (`uncooked` for `cooked`). Places aside (they are one)."""
+    said, was = _said(node), _said(made)
+    dropped = was - said
+    return not dropped or (said <= was and all(isinstance(w, tuple) for w in dropped)
+                           and not any(isinstance(w, tuple) for w in said))
+
+
+def _changed_there(foon: Foon, units: Iterable[int], node: ObjectNode, place: tuple[object, str], but: int) -> bool:
+    """Whether a unit of `units` other than `but` takes `node` and leaves an object of its label at `place`."""
+    return any(node in foon.units[v].inputs and any(o.label == node.label and o != node
+                                                    and _place(o, foon.units[v]) == place
+                                                    for o in foon.units[v].outputs)
+               for v in units if v != but)
+
+
+@dataclass(frozen=True)
+class Stitched:
+    """A task's units with its stitches (`with_stitches`).
+
+    `foon`: the network with one more unit per stitched unit, taking the made nodes instead of its own; `units`:
+    the task's units of it; `origin`: each added unit's index -> the FOON unit it reads (the plan's tree shows
+    FOON's unit); `own`: the units FOON's own plan needs; `through`: the network with each added unit in the
+    place of the one it reads, and `needed`, the units a plan through the stitches needs."""
+
+    foon: Foon
+    units: tuple[int, ...]
+    origin: dict[int, int]
+    found: tuple[Stitch, ...]
+    own: tuple[int, ...]
+    through: Foon
+    needed: tuple[int, ...]
+
+
+def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stitched:
+    """The task's units with one more per stitch of the network (`Stitched`); `relevant` gives a network's units
+    a task needs (relevance pruning). A stitch is read over the whole network (the pizza topped with parsley by a
+    unit FOON's own plan skips is still the latest pizza), and kept when a plan through the stitches needs its
+    unit, with the units that plan needs (the sprinkle).
+
+    FOON's unit stays (taking its node from the kitchen, as FOON's semantics does): a stitch is one more way,
+    never a rewrite, so a plan that solved without it still does."""
+    own = tuple(relevant(foon))
+    found = stitches(foon, range(len(foon.units)))
+    reads: dict[int, dict[ObjectNode, ObjectNode]] = {}
+    for s in found:
+        reads.setdefault(s.unit, {})[s.node] = s.reads_as
+    through = Foon(tuple(replace(x, inputs=tuple(reads[u].get(n, n) for n in x.inputs)) if u in reads else x
+                         for u, x in enumerate(foon.units)), foon.level)
+    needed = tuple(relevant(through)) if reads else own
+    kept = [u for u in reads if u in needed]
+    origin = {len(foon.units) + k: u for k, u in enumerate(kept)}
+    wider = Foon(foon.units + tuple(through.units[u] for u in kept), foon.level) if kept else foon
+    units = (*sorted(set(own) | (set(needed) - set(kept))), *origin)
+    return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed)

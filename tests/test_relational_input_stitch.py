@@ -1,0 +1,160 @@
+"""The `relational` encoding's stitches: a unit's input no unit makes, read as the node the plan left it in."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from node_words import contains, inside, n
+
+from foon2pddl.io.files import load
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.input_stitch import stitches, with_stitches
+from foon2pddl.pddl.instance_counts import InstanceCounts
+from foon2pddl.pddl.prune import restoring_units
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+DATA = Path(__file__).parent / "data" / "foon-subgraphs"
+
+# roasted brussel sprouts: the add puts `brussel sprout (peeled, in [plastic bag])` into the bag, and the shake
+# that takes the bag next takes `brussel sprout (peeled, uncooked, in [plastic bag])`, which no unit makes
+EMPTY_BAG, BOARD_SPROUT = n("plastic bag", "empty"), n("brussel sprout", "peeled", "uncooked")
+FULL_BAG = n("plastic bag", contains("brussel sprout", "salt"))
+ADDED, SALT = n("brussel sprout", "peeled", inside("plastic bag")), n("salt", "granulated", inside("plastic bag"))
+ADD = FunctionalUnit((EMPTY_BAG, BOARD_SPROUT, n("salt", "granulated")), Motion("add"), (FULL_BAG, ADDED, SALT))
+TAKEN = n("brussel sprout", "peeled", "uncooked", inside("plastic bag"))
+SHAKEN = n("brussel sprout", "seasoned", inside("plastic bag"))
+SHAKE = FunctionalUnit((FULL_BAG, TAKEN, SALT), Motion("shake"), (n("plastic bag", contains("brussel sprout")), SHAKEN))
+
+
+def test_an_input_no_unit_makes_is_read_as_the_node_the_filled_container_holds():
+    (found,) = stitches(Foon((ADD, SHAKE)), (0, 1))
+    assert (found.unit, found.node, found.reads_as) == (1, TAKEN, ADDED)
+    assert found.assumed == ("uncooked",) and found.dropped == ()
+    assert found.describe().startswith("shake takes brussel sprout") and "assumes uncooked" in found.describe()
+
+
+def test_a_stitch_adds_a_unit_and_keeps_foons_own():
+    net = Foon((ADD, SHAKE))
+    st = with_stitches(net, lambda x: tuple(range(len(x.units))))
+    assert st.units == (0, 1, 2) and st.origin == {2: 1} and st.found == stitches(net, (0, 1))
+    assert st.foon.units[:2] == net.units and st.foon.units[2].inputs == (FULL_BAG, ADDED, SALT)
+    assert st.through.units == (ADD, st.foon.units[2])  # the stitched unit in FOON's place
+
+
+def test_a_stitched_plan_makes_the_object_and_passes_the_replay():
+    net = Foon((ADD, SHAKE))
+    kitchen = default_kitchen(net)
+    assert TAKEN in kitchen.nodes  # FOON's semantics takes it from the kitchen: another sprout in another bag
+    outcome = plan(net, kitchen, Goal(GoalSpec("brussel sprout"), (SHAKEN,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert [s.unit for s in outcome.trace.steps] == [ADD, SHAKE]  # the tree shows FOON's units
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    shaken = outcome.trace.steps[1]
+    sprout = next(b for b in shaken.bindings if b.before is not None and b.before.label == "brussel sprout")
+    assert sprout.before == ADDED  # the sprout the add put in the bag, not one from the kitchen
+    assert any("shake takes brussel sprout" in x and "assumes uncooked" in x for x in outcome.compiled.notes)
+
+
+def test_no_stitch_reads_a_state_against_its_opposite():
+    # chicken `(cooked, on [plate])` is made; a unit taking `chicken (uncooked, on [plate])` is not given it
+    plate = n("plate", contains("chicken"))
+    cooked = n("chicken", "cooked", "seasoned", inside("plate"))
+    cook = FunctionalUnit((n("plate", "empty"), n("chicken", "raw")), Motion("cook"), (plate, cooked))
+    raw = n("chicken", "uncooked", inside("plate"))
+    grind = FunctionalUnit((plate, raw), Motion("grind"), (n("plate", "empty"), n("chicken", "ground")))
+    assert stitches(Foon((cook, grind)), (0, 1)) == ()
+
+
+def test_a_made_object_changed_later_is_not_read_for_an_earlier_node():
+    # the pizza is topped after it is baked: the pick-and-place's pizza is the topped one, though the unit that
+    # made the paper it lies on is the bake
+    paper = n("parchment paper", contains("pizza"))
+    baked = n("pizza", "baked", inside("parchment paper"))
+    bake = FunctionalUnit((n("parchment paper", contains("dough")), n("dough", inside("parchment paper"))),
+                          Motion("bake"), (paper, baked))
+    topped = n("pizza", "baked", "topped", inside("parchment paper"))
+    top = FunctionalUnit((baked, n("parsley", "chopped")), Motion("sprinkle"), (topped,))
+    wanted = n("pizza", "baked", "hot", "topped", inside("parchment paper"))
+    take = FunctionalUnit((paper, wanted), Motion("pick-and-place"), (n("pizza", "baked", "hot", "topped"),))
+    (found,) = stitches(Foon((bake, top, take)), (0, 1, 2))
+    assert found.reads_as == topped and found.assumed == ("hot",)
+    # FOON's own plan takes the topped pizza from the kitchen and needs no sprinkle; the stitched one does
+    net = Foon((bake, top, take))
+    goal = n("pizza", "baked", "hot", "topped")
+
+    def relevant(x: Foon) -> tuple[int, ...]:
+        return restoring_units(x, default_kitchen(net).nodes, (goal,))
+
+    st = with_stitches(net, relevant)
+    assert 1 not in st.own and 1 in st.needed and st.units == (0, 1, 2, 3) and st.origin == {3: 2}
+
+
+def test_roasted_brussel_sprouts_solve_replay_clean_with_the_stitch_reported():
+    path = DATA / "0036-roasted_brussels_sprouts.txt"
+    foon, _ = load([path])
+    goal = resolve_goal(spec_of_node(next(x for x in foon.nodes if x.dish is not None)), foon)
+    outcome = plan(foon, default_kitchen(foon), goal, "relational", time_limit=60)
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok
+    assert any("0036-roasted_brussels_sprouts.txt:135: shake" in x and "assumes uncooked" in x
+               for x in outcome.compiled.notes)
+
+
+def test_a_kitchen_reading_still_solves_when_the_made_node_cannot_be_made():
+    # the chocolate brownie: FOON's chain to the brownie on the board is broken elsewhere, and the cut takes the
+    # brownie from the kitchen as FOON's semantics does; the stitch is one more way, not a rewrite
+    board = n("cutting board", contains("brownie"))
+    made = n("brownie", "baked", contains("flour"), inside("cutting board"))
+    broken = FunctionalUnit((n("brownie batter", "never made"), n("cutting board", "empty")), Motion("bake"),
+                            (board, made))
+    loose = n("brownie", "baked", inside("cutting board"))
+    cut = FunctionalUnit((loose, board), Motion("cut"), (n("brownie", "divided"), n("cutting board", "dirty")))
+    net = Foon((broken, cut))
+    assert len(stitches(net, (0, 1))) == 1
+    kitchen = Kitchen(frozenset({loose, board, n("cutting board", "empty")}))
+    outcome = plan(net, kitchen, Goal(GoalSpec("brownie"), (n("brownie", "divided"),)), "relational")
+    assert outcome.status == "solved", outcome.message
+
+
+def test_a_stitch_may_assume_more_items_of_a_list_but_never_one_list_for_another():
+    # scrambled eggs: the cook leaves `omelette (contains {bacon}, cooked, in [pan])`; the pour takes the omelette
+    # that lists the egg mixture, onion and cheese it was spread from as well
+    pan = n("cooking pan", contains("omelette"))
+    cooked = n("omelette", contains("bacon"), "cooked", inside("cooking pan"))
+    cook = FunctionalUnit((n("cooking pan", contains("egg mixture")), n("egg mixture", inside("cooking pan"))),
+                          Motion("cook"), (pan, cooked))
+    full = n("omelette", contains("bacon", "cheese", "egg mixture", "onion"), "cooked", inside("cooking pan"))
+    pour = FunctionalUnit((pan, full, n("plate", "empty")), Motion("pour"), (n("plate", contains("omelette")),))
+    (found,) = stitches(Foon((cook, pour)), (0, 1))
+    assert found.reads_as == cooked and found.assumed == ("contains {cheese, egg mixture, onion}",)
+    # the buckeyes' bowl: `contains {chocolate}` is not the melted `contains {chocolate chip}`
+    other = n("omelette", contains("cheese"), "cooked", inside("cooking pan"))
+    swap = FunctionalUnit((pan, other, n("plate", "empty")), Motion("pour"), (n("plate", contains("omelette")),))
+    assert stitches(Foon((cook, swap)), (0, 1)) == ()
+
+
+def test_objects_are_counted_for_foons_plan_and_for_the_stitched_one():
+    a = InstanceCounts(tuple(sorted(((BOARD_SPROUT, 1), (TAKEN, 1)))), (("plastic bag", 1),), ((1, 1),), (1,))
+    b = InstanceCounts(((BOARD_SPROUT, 2),), (("plastic bag", 1), ("salt", 1)), ((0, 2),), (0, 0))
+    wide = a.widest(b)
+    assert dict(wide.at_node) == {BOARD_SPROUT: 2, TAKEN: 1}
+    assert dict(wide.unmade) == {"plastic bag": 1, "salt": 1}
+    assert wide.firings == a.firings and wide.unfolded == ()
+    assert a.widest(a) == a
+
+
+def test_scrambled_eggs_solve_replay_clean_through_the_cooked_omelette():
+    # the pour takes the omelette the cook leaves (its list read as the cook's); FOON's own plan makes no bacon
+    # (it takes that omelette from the kitchen), so the objects counted for it alone had none for the sprinkle
+    path = DATA / "0050-scrambled_eggs_with_bacon-cheese.txt"
+    foon, _ = load([path])
+    goal = resolve_goal(spec_of_node(next(x for x in foon.nodes if x.dish is not None)), foon)
+    outcome = plan(foon, default_kitchen(foon), goal, "relational", time_limit=60)
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok
+    assert any(":288: pour takes omelette" in x and "assumes contains {cheese, egg mixture, onion}" in x
+               for x in outcome.compiled.notes)
