@@ -142,3 +142,25 @@ def test_a_kitchen_container_read_as_a_unit_output_that_adds_a_state():
         RAW_POT: (STOVE_POT, COOK)}
     outcome = _clean_plan((COOK, SCOOP_MAC), (STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")), SAUCED)
     assert [s.unit for s in outcome.trace.steps] == [COOK, SCOOP_MAC]
+
+
+# chipotle-bean sandwich (0005): salt is sprinkled onto the bean mix, the bean mix spread on the bread, and the
+# bread made into the sandwich: what is on what was on the bread became part of the sandwich too
+BEANS, SALT_BOWL = n("bowl", contains("bean mix")), n("bowl", contains("salt"))
+SALT, MIX = n("salt", "granulated", inside("bowl")), n("bean mix", inside("bowl"))
+SALTED = n("salt", "granulated", on("bean mix"))
+SEASON = FunctionalUnit((BEANS, SALT_BOWL, SALT), Motion("sprinkle"), (n("bowl", contains("bean mix", "salt")), SALTED))
+BREAD_ON_BOARD, SPREAD_BREAD = n("bread", "toasted", on("cutting board")), n("bread", contains("bean mix"),
+                                                                          on("cutting board"))
+SPREAD_MIX = FunctionalUnit((n("bowl", contains("bean mix", "salt")), MIX, BREAD_ON_BOARD), Motion("spread"),
+                            (n("bowl", "empty"), SPREAD_BREAD, n("bean mix", on("bread"))))
+SANDWICH = n("sandwich", contains("bean mix"), on("cutting board"))
+FOLD = FunctionalUnit((SPREAD_BREAD,), Motion("fold"), (SANDWICH,))
+
+
+def test_what_is_on_what_was_on_a_consumed_object_is_consumed_with_it():
+    kitchen = (BEANS, SALT_BOWL, SALT, MIX, BREAD_ON_BOARD, n("cutting board", contains("bread")))
+    outcome = _clean_plan((SEASON, SPREAD_MIX, FOLD), kitchen, SANDWICH)
+    final = outcome.trace.final
+    assert [final[o.id].consumed for o in outcome.trace.objects if o.label == "salt" and final[o.id].holder
+            is None and final[o.id].node == SALTED] == [True]

@@ -63,7 +63,7 @@ def narrow_arguments(task: PlanningTask) -> PlanningTask:
         variables = dict(a.params)
         note((*a.pre, *a.add, *a.delete), variables)
         for c in a.conditional:
-            note(c.atoms(), {**variables, **({c.var: c.type} if c.var is not None else {})})
+            note(c.atoms(), {**variables, **dict(c.quantified)})
 
     def narrowed(p: Predicate) -> Predicate:
         params = tuple((v, common_type(parent, uses[(p.name, k)]) if (p.name, k) in uses else t)

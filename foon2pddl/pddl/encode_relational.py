@@ -25,7 +25,8 @@
   - a container FOON filled earlier and leaves out of the outputs is emptied of
     what leaves it (`relational_plan.without`), and says so as a role;
   - a consumed object goes to `consumed` and leaves its holder, with all of its
-    label there when the holder's node no longer lists it; contents that are
+    label there when the holder's node no longer lists it, and with what is in
+    or on it, two levels deep (`relational_sweep`); contents that are
     no role of the unit follow their container's list (`holders.Flow`), by one
     quantified conditional effect per node they can be in.
 * **Init.** Kitchen objects start in the state of their node; an object whose node
@@ -79,14 +80,13 @@ from .registry import Compiled
 from .relational_init import completed_kitchen, kitchen_placed, scene_instances
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
 from .relational_stitch import stitch_notes, stitched
+from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 
 IN, ON = "in", "on"
-#: The state constant of an object that became part of a mixture.
-CONSUMED = "consumed"
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
@@ -313,12 +313,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
         if s.fate is Fate.NEW:  # what FOON restates as made was there: it becomes part of the one made
             sweep += [(var[r.target.role], node, rel, f"{label} there", ("there", k, node))
                       for node, rel in relational_plan.restated_nodes(plan, s, inside)]
-        for h, node, rel, word, key in sweep:
-            if node.label in type_of:
-                c = f"?{names.name(word, key=key)}"
-                there, was = Atom(rel.value, (h, c)), Atom(IS, (c, const[node]))
-                cond.append(Conditional((there, was), add=(Atom(IS, (c, CONSUMED)),), delete=(there, was),
-                                        var=c, type=type_of[node.label]))
+        cond += sweep_effects(sweep, lambda word, key: names.name(word, key=key), const, type_of, inside)
         src, dst = r.source, r.target
         if s.fate in (Fate.STAYS, Fate.SPLITS) and src is not None and src.role is not None and bound[src.role]:
             pre.append(Atom(src.relation.value, (var[src.role], v)))

@@ -36,7 +36,7 @@ def _conditional(c: Conditional, typed: bool) -> str:
 
     text = (f"(when {conj([_atom(a) for a in c.when])} "
             f"{conj([_atom(a) for a in c.add] + [f'(not {_atom(a)})' for a in c.delete])})")
-    return text if c.var is None else f"(forall ({_params(((c.var, c.type),), typed).strip()}) {text})"
+    return text if c.var is None else f"(forall ({_params(c.quantified, typed).strip()}) {text})"
 
 
 @lru_cache(maxsize=1)
@@ -68,7 +68,7 @@ def check_names(task: PlanningTask) -> None:
         names.append(a.name)
         names += [n.removeprefix("?") for pair in a.params for n in pair]
         released = tuple(atom for c in a.conditional for atom in c.atoms())
-        names += [n.removeprefix("?") for c in a.conditional if c.var for n in (c.var, c.type)]
+        names += [n.removeprefix("?") for c in a.conditional for pair in c.quantified for n in pair]
         names += [x for atom in (*a.pre, *a.add, *a.delete, *released) for x in (atom.predicate, *atom.args)]
     names += [x for atom in (*task.init, *task.goal) for x in (atom.predicate, *atom.args)]
     for name in set(names):

@@ -36,17 +36,25 @@ class Predicate:
 @dataclass(frozen=True)
 class Conditional:
     """A conditional effect `(when (and when...) (and add... (not delete)...))`, quantified over `var` of `type`
-    when `var` is set: `(forall (?v - type) (when ...))`. Conditions are read in the state before the action."""
+    when `var` is set: `(forall (?v - type) (when ...))`, and over the further (variable, type) pairs `more`
+    (`(forall (?v - type ?w - type2) ...)`: what is on what is on a consumed object). Conditions are read in the
+    state before the action."""
 
     when: tuple[Atom, ...]
     add: tuple[Atom, ...] = ()
     delete: tuple[Atom, ...] = ()
     var: str | None = None
     type: str | None = None
+    more: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
-        if (self.var is None) != (self.type is None):
+        if (self.var is None) != (self.type is None) or (self.more and self.var is None):
             raise ValueError("a quantified conditional effect needs both a variable and its type")
+
+    @property
+    def quantified(self) -> tuple[tuple[str, str], ...]:
+        """Every (variable, type) the effect is quantified over, `var` first."""
+        return ((self.var, self.type), *self.more) if self.var is not None else ()
 
     def atoms(self) -> tuple[Atom, ...]:
         return (*self.when, *self.add, *self.delete)
@@ -125,7 +133,7 @@ class PlanningTask:
             return True
         typed = [t for _, t in self.objects + self.constants]
         typed += [t for p in self.predicates for _, t in p.params]
-        typed += [t for a in self.actions for _, t in (*a.params, *((c.var, c.type) for c in a.conditional if c.var))]
+        typed += [t for a in self.actions for _, t in (*a.params, *(q for c in a.conditional for q in c.quantified))]
         return any(t != "object" for t in typed)
 
     @property
@@ -269,7 +277,9 @@ def apply_action(state: set[Atom], action: Action, bind: dict[str, str],
 
     add, delete = ground(action.add, bind), ground(action.delete, bind)
     for c in action.conditional:
-        scopes = [bind] if c.var is None else [{**bind, c.var: o} for o, ts in types.items() if c.type in ts]
+        scopes = [bind]
+        for v, t in c.quantified:
+            scopes = [{**b, v: o} for b in scopes for o, ts in types.items() if t in ts]
         for b in scopes:
             if all(a in state for a in ground(c.when, b)):
                 add += ground(c.add, b)

@@ -68,7 +68,7 @@ def _as_predicates(task: PlanningTask, top: bool) -> PlanningTask:
                       | {n for pair in (*task.types, *task.objects, *task.constants) for n in pair})
     used = {t for _, t in (*task.objects, *task.constants)}
     used |= {t for a in task.actions for _, t in a.params}
-    used |= {c.type for a in task.actions for c in a.conditional if c.var is not None}
+    used |= {t for a in task.actions for c in a.conditional for _, t in c.quantified}
     names: dict[str, str] = {}
     for typ in sorted({a for t in used for a in folded(t)}):
         names[typ] = table.name(f"type {typ}", key=typ)
@@ -77,9 +77,9 @@ def _as_predicates(task: PlanningTask, top: bool) -> PlanningTask:
         return tuple(Atom(names[t], (v,)) for v, t in params if t in names)
 
     def unguarded(c: Conditional) -> Conditional:
-        if c.var is None or c.type not in names:
-            return replace(c, type=base(c.type)) if c.var is not None else c
-        return replace(c, when=(Atom(names[c.type], (c.var,)), *c.when), type=base(c.type))
+        if c.var is None:
+            return c
+        return replace(c, when=(*guard(c.quantified), *c.when), type=base(c.type), more=retyped(c.more))
 
     def retyped(pairs: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
         return tuple((v, base(t)) for v, t in pairs)

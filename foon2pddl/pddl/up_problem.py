@@ -92,8 +92,8 @@ def build_up(task: PlanningTask) -> UpTask:
 
     declared = dict(task.types)
     used_types = {t for _, t in typed_objects} | {t for p in task.predicates for _, t in p.params}
-    used_types |= {t for a in task.actions for _, t in (*a.params, *((c.var, c.type) for c in a.conditional
-                                                                     if c.var is not None))}
+    used_types |= {t for a in task.actions for _, t in (*a.params, *(q for c in a.conditional
+                                                                     for q in c.quantified))}
     # `object` is PDDL's implicit root: a type declared under it has no father unless `object` itself
     # types something (as UP's PDDL reader does), so flat typing stays flat (Tamer reads only that)
     root = "object" in used_types or not task.uses_types
@@ -137,10 +137,10 @@ def build_up(task: PlanningTask) -> UpTask:
         for atom in action.add:
             ua.add_effect(expr(atom), True)
         for c in action.conditional:
-            scope, bound = dict(params), ()
-            if c.var is not None:
-                scope[c.var] = Variable(_param(c.var), up_type(c.type))
-                bound = (scope[c.var],)
+            scope = dict(params)
+            for v, t in c.quantified:
+                scope[v] = Variable(_param(v), up_type(t))
+            bound = tuple(scope[v] for v, _ in c.quantified)
 
             def fact(atom: Atom, scope=scope) -> Any:
                 return fluents[atom.predicate](*(scope[a] if a.startswith("?") else objects[a] for a in atom.args))
