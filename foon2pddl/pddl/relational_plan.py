@@ -6,7 +6,8 @@
   lists `SPLITS` (a new object of its label arrives at the target; the one in the
   container stays). The task says which containers keep: a container FOON changes
   keeps what its output node lists. One FOON leaves out of the outputs is emptied of
-  what leaves it (its node drops the label, `without`) when the task's units fill
+  what leaves it and what the units put into that label (its node drops the labels,
+  `without`: the syrup soaked into the cranberries) when the task's units fill
   containers of its label with that label (`holders.gained`: the measuring cup the
   cream was poured into) and its node is no kitchen node, unless it goes onto an object
   in that container (the lemon juice the carrot in the salad bowl is seasoned with: it
@@ -139,7 +140,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                 fate = Fate.MOVES  # a container an earlier unit filled, which FOON never empties
                 into = rels[r.target.role].target if r.target is not None and r.target.role is not None else None
                 if into is None or into.role != src.role:  # onto the carrot in that bowl: still in it
-                    drops.setdefault(src.role, set()).add(r.role.label)
+                    # with what the task's units put into it (the syrup soaked into the cranberries)
+                    drops.setdefault(src.role, set()).update({r.role.label} | {x for h, x in filled if h == r.role.label})
             elif (fate is Fate.CONSUMED and holder.after is None and holder.before in kitchen
                   and r.role.label in listed(holder.before)
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
