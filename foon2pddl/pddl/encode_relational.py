@@ -177,7 +177,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
-    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + [(x.taker, x.describe()) for x in sewn]
+    live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
+    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads)
+    found += [(x.taker, x.describe()) for x in sewn if x.unit in live]
     notes, commented = reported(found)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
@@ -186,14 +188,14 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         init=tuple(sorted(set(init))), goal=(Atom(GOAL_REACHED),), types=tuple(types),
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=given, labels=table.labels,
-        comments=header("relational", inp, options, len(units) - len(origin)) + count_lines(counts) + why
+        comments=header("relational", inp, options, len(units) - len(live)) + count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too
-    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn}
+    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 

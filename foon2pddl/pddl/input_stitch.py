@@ -28,7 +28,7 @@ stitch (`Compiled.placed`). O(u n^2) in the network's units.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
@@ -96,6 +96,7 @@ def _place(node: ObjectNode, unit: FunctionalUnit, made: bool = False) -> tuple[
 def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
     """The stitches of `units` (see the module doc), in unit order."""
     made: dict[ObjectNode, list[int]] = {}  # node -> the units that make it
+    task = frozenset(units)
     for u in units:
         for n in foon.units[u].outputs:
             made.setdefault(n, []).append(u)
@@ -114,7 +115,7 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
             holders = [h for h in unit.inputs if h.label == p[1] and h in made
                        and (n.label in listed(h) or any(names.get(x) == n.label for x in listed(h)))]
             cands = [m for m in at.get((n.label, p), ()) if m != n and set(made[m]) - {u}
-                     and not _changed_there(foon, units, m, p, u)]
+                     and not _changed_there(foon, task, m, p, u)]
             by_holder = [m for m in cands if any(set(made[h]) & set(made[m]) for h in holders)]
             pick = by_holder if by_holder else cands
             if holders and len(pick) == 1 and _words_only_added(n, pick[0]):
@@ -133,12 +134,12 @@ def _words_only_added(node: ObjectNode, made: ObjectNode) -> bool:
                            and not any(isinstance(w, tuple) for w in said))
 
 
-def _changed_there(foon: Foon, units: Iterable[int], node: ObjectNode, place: tuple[object, str], but: int) -> bool:
-    """Whether a unit of `units` other than `but` takes `node` and leaves an object of its label at `place`."""
-    return any(node in foon.units[v].inputs and any(o.label == node.label and o != node
-                                                    and _place(o, foon.units[v]) == place
-                                                    for o in foon.units[v].outputs)
-               for v in units if v != but)
+def _changed_there(foon: Foon, units: frozenset[int], node: ObjectNode, place: tuple[object, str], but: int) -> bool:
+    """Whether a unit of `units` other than `but` takes `node` and leaves an object of its label at `place` (the
+    network's consumer index: O(takers of the node))."""
+    return any(any(o.label == node.label and o != node and _place(o, foon.units[v]) == place
+                   for o in foon.units[v].outputs)
+               for v in foon.consumers.get(node, ()) if v != but and v in units)
 
 
 @dataclass(frozen=True)
