@@ -34,3 +34,21 @@ def test_the_named_node_does_make_it(tmp_path):
                        "cup: empty, on [table]\n")
     r = run("retrieve", POUR_WATER, "--kitchen", kitchen, "--goal", BOWL)
     assert r.exit_code == 0, r.stderr
+
+
+def test_a_gen_goal_note_names_what_the_user_asked_for():
+    """`retrieve --goal lemonade --network gen` said "note: goal 'beverages' read as the recipe's dish": the user
+    asked for lemonade; the note names it, and the category FOON-GEN reads it as."""
+    r = run("retrieve", "--goal", "lemonade", "--network", "gen")
+    assert r.exit_code == 0, r.output
+    assert "note: goal 'lemonade' (FOON-GEN: 'beverages') read as the recipe's dish: `beverages (" in r.stderr
+    assert "note: goal 'beverages'" not in r.stderr
+
+
+def test_plan_help_says_what_format_a_skill_plan_takes():
+    """`plan --help` gave `--format` as "[default: recipe]" for the task tree only; with --skills the default is
+    the steps form (docs/skills.md) and only steps, recipe and json are accepted."""
+    text = " ".join(run("plan", "--help").stdout.split())
+    assert "with --skills, the skill plan: steps (the default there), recipe or json" in text
+    default = run("plan", "--goal", "whipped cream", "--skills")
+    assert default.exit_code == 0 and default.stdout.splitlines()[1].startswith("1. pour [pour] (")

@@ -288,7 +288,7 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
         click.echo(f"warning: {loss}", err=True)
     found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file)
     if found.preferred:
-        click.echo("note: " + found.choice_note(), err=True)
+        click.echo("note: " + found.choice_note(asked=spec.label, network=view.name), err=True)
     return found
 
 

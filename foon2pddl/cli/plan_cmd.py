@@ -115,7 +115,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="Also check the plan with unified-planning's validator (tasks up to 300 actions).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS + TABLE_FORMATS), default=DEFAULT_FORMAT, show_default=True,
               help="How to print the task tree (recipe: steps in a cook's words; steps: each unit's FOON "
-                   "nodes); for a batch, the table (text, csv, jsonl) or the tree files' format.")
+                   "nodes); for a batch, the table (text, csv, jsonl) or the tree files' format; with --skills, "
+                   "the skill plan: steps (the default there), recipe or json.")
 @click.option("-o", "--output", "output", type=click.Path(path_type=Path), default=None,
               help="Write the task tree to this file (atomically) instead of standard output; for a batch, "
                    "a directory receiving one tree file per solved goal; with --skills, a directory receiving "

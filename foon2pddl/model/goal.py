@@ -45,8 +45,9 @@ class Goal:
     def describe(self) -> str:
         return self.spec.describe()
 
-    def choice_note(self, limit: int = 5) -> str:
-        """Which nodes a bare label was read as, and the others it could name ("" when nothing was left out)."""
+    def choice_note(self, limit: int = 5, asked: str = "", network: str = "") -> str:
+        """Which nodes a bare label was read as, and the others it could name ("" when nothing was left out);
+        `asked`: the label the user typed, named first when `network` (FOON-GEN) reads it as another one."""
         if not self.preferred:
             return ""
         many = len(self.candidates) > 1
@@ -56,7 +57,9 @@ class Goal:
         more = "; ".join(f"`{o.describe()}`" for o in self.others[:limit])
         if len(self.others) > limit:
             more += f"; ... ({len(self.others) - limit} more)"
-        return (f"goal {self.spec.label!r} read as {what}: {chosen}; other {self.spec.label!r} nodes "
+        label = self.spec.label
+        name = f"{asked!r} (FOON-{network.upper()}: {label!r})" if asked and asked != label else repr(label)
+        return (f"goal {name} read as {what}: {chosen}; other {label!r} nodes "
                 f"(give the states to ask for one): {more}")
 
     def satisfied_by(self, available: set[ObjectNode] | frozenset[ObjectNode]) -> ObjectNode | None:
