@@ -36,6 +36,20 @@ def test_the_named_node_does_make_it(tmp_path):
     assert r.exit_code == 0, r.stderr
 
 
+def test_a_scene_kitchens_fridge_and_counter_are_no_tools_to_lift():
+    """`plan --kitchen SCENE --skills` (docs/scene.md's scene): the robot picked the fridge up and poured the sugar
+    from it, and found no whisk to beat with on the counter. A holder the step's unit does not name is where the
+    object stands: the sugar is taken out of the fridge and poured, the whisk picked from the counter."""
+    r = run("plan", "--kitchen", ROOT / "tests" / "data" / "scene" / "whipped_cream_scene.json", "--goal",
+            "whipped cream", "--skills")
+    assert r.exit_code == 0, r.output
+    assert "4 macro steps, 4 decomposed, 11 skills; skill replay valid" in r.stdout
+    lines = r.stdout.splitlines()
+    assert "   take-out sugar_1 out of fridge_1" in lines and "   pour from sugar_1 over mixing_bowl_1" in lines
+    assert "   pick whisk_1 from counter_1" in lines and "   beat mixing_bowl_1 with whisk_1" in lines
+    assert not any("fridge_1 from" in x or "from fridge_1 over" in x for x in lines)
+
+
 def test_a_gen_goal_note_names_what_the_user_asked_for():
     """`retrieve --goal lemonade --network gen` said "note: goal 'beverages' read as the recipe's dish": the user
     asked for lemonade; the note names it, and the category FOON-GEN reads it as."""

@@ -3,7 +3,8 @@
 Rule (docs/skills.md): the objects are the ones the step binds or changes, plus
 their holders before and after the step (transitively: a bowl in the fridge brings
 the fridge); everything stands where the trace says, and free-standing objects
-stand on the `workspace`. Init = those objects' facts before the step, the robot's
+stand on the `workspace`. An object in or on a holder the step's unit does not name (a scene's fridge or
+counter) stands free for that step as well (`stands_free`): it is taken from there, not poured out of it. Init = those objects' facts before the step, the robot's
 hands empty, and the step's outcome as facts tagged with the skill its motion maps
 to: `changes` (a physical phase changes), `moves-in`/`moves-on` (moved by a
 non-transport skill: poured, scooped, spread), `makes-in`/`makes-on` (a product
@@ -174,12 +175,32 @@ def _operands(domain: SkillDomain, skill: str) -> tuple[str, ...] | None:
     return None if schema is None else tuple(v for v, _ in schema.params[1:])
 
 
-def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid: set[str], holders: set) -> bool:
+def _is_tool(oid: str, b: ObjectState, a: ObjectState, touched: set[str], rigid: set[str], holders: set,
+             free) -> bool:
     """A step object that stands free (on the workspace: the pepper in a bowl, the pan on the stove are no tools),
     holds nothing, stays where it is, and keeps its phase or becomes `dirty`."""
     return (oid in touched and oid not in rigid and oid not in holders and b.exists and a.exists
-            and b.holder is None and a.holder is None
+            and free(b) and free(a)
             and (phase_of(b.node) == phase_of(a.node) or USED in phase_of(a.node)))
+
+
+def _named(unit) -> frozenset[str]:
+    """The labels a unit names: its objects, the places its states name, their ingredients."""
+    nodes = (*unit.inputs, *unit.outputs)
+    return frozenset({n.label for n in nodes} | {s.related for n in nodes for s in n.states if s.related}
+                     | {i for n in nodes for i in n.ingredients})
+
+
+def stands_free(trace: PhysicalTrace, index: int):
+    """Whether an object stands free for step `index`: on the workspace, or in or on a holder the step's unit does
+    not name (a scene's counter or fridge: the whisk on the counter is a tool, the sugar in the fridge is taken out
+    and poured by holding it, not by tipping the fridge). A unit with no nodes (a hand-built trace's) names no
+    holder and tells nothing: there only the workspace is free. O(1) per call after O(unit) set-up."""
+    named = _named(trace.steps[index].unit)
+    if not named:
+        return lambda s: s.holder is None
+    labels = {o.id: o.label for o in trace.objects}
+    return lambda s: s.holder is None or labels.get(s.holder) not in named
 
 
 def _restated(before: Mapping[str, ObjectState], after: Mapping[str, ObjectState],
@@ -234,6 +255,8 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
     statics: set[Atom] = {Atom("surface", (ws,))}
     rigid: set[str] = set()
 
+    free = stands_free(trace, index)
+
     def where(s: ObjectState) -> str:
         return ws if s.holder is None else n[s.holder]
 
@@ -251,14 +274,14 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
         elif b.exists and not a.exists:
             statics.add(Atom("uses-up", (tag, n[oid])))
             sites[3].append(where(b))
-            if b.holder is None:
+            if free(b):
                 handled.append(n[oid])
         elif b.exists:
             if (b.holder, b.relation) != (a.holder, a.relation) and skill not in TRANSPORT and not (
-                    carries and b.holder is None):
+                    carries and free(b)):
                 statics.add(Atom(f"moves-{rel(a)}", (tag, n[oid], where(a))))
                 sites[1].append(where(a))
-                if b.holder is not None:
+                if not free(b):
                     rigid.add(oid)
             if phase_of(b.node) != phase_of(a.node):
                 how = tag
@@ -267,7 +290,7 @@ def micro_problem(trace: PhysicalTrace, index: int, skill: str, naming: Naming, 
                 statics.add(Atom("changes", (how, n[oid], naming.phase(b.node), naming.phase(a.node))))
                 sites[0].append(n[oid])
     holders = {s.holder for states in (before, after) for s in (states[i] for i in ids) if s.holder is not None}
-    tools = {oid for oid in ids if _is_tool(oid, found_before[oid], after[oid], touched, rigid, holders)}
+    tools = {oid for oid in ids if _is_tool(oid, found_before[oid], after[oid], touched, rigid, holders, free)}
     worked = [x for x in sites[0] if naming.back.get(x) not in tools]
     if carries and not worked:  # nothing changes phase: the object the hand handles, not where products appear
         worked = handled + ([n[t] for t in sorted(tools)] if _bare_hand(domain, skill) else [])
