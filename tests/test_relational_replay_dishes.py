@@ -15,6 +15,7 @@ from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.pddl.holders import Fate, relational_roles
+from foon2pddl.pddl.mutual_lists import mutual_readings
 from foon2pddl.pddl.relational_plan import plan_unit, restated_nodes
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
 from foon2pddl.planners.physical_replay import replay
@@ -191,6 +192,7 @@ def test_a_container_emptied_of_an_object_is_emptied_of_what_the_units_put_into_
 
 
 @pytest.mark.parametrize("name", ["0002-bacon_macaroni_and_cheese.txt", "0005-chipotle-bean_sandwich.txt",
+                                  "0017-garfield_garlic_bread.txt",
                                   "0038-homestyle_creamed_corn.txt", "0044-egg_noodles_from_scratch.txt",
                                   "0058-chocolate_cake.txt", "ACT-0003-blueberry_muffin.txt",
                                   "ACT-0097-cranberry-walnut_pancake.txt"])
@@ -201,3 +203,23 @@ def test_the_shared_dishes_plans_are_replay_clean(name):
     assert outcome.status == "solved", outcome.message
     report = replay(outcome.trace)
     assert report.ok, [d.describe() for d in report.disagreements]
+
+
+# garfield garlic bread (0017): the pick-and-place gives `baking tray (contains {bread})` beside `bread (sliced,
+# contains {baking tray})`; the network places the bread on the tray elsewhere, so the bread is read as on it
+TRAY_OF_BREAD = n("baking tray", contains("bread"))
+BOTH_WAYS = n("bread", "sliced", contains("baking tray"))
+LAY = FunctionalUnit((n("baking tray", "empty"), n("bread", "sliced")), Motion("pick-and-place"),
+                     (TRAY_OF_BREAD, BOTH_WAYS))
+BUTTERED = n("bread", contains("butter"), on("baking tray"))
+SPREAD_BUTTER = FunctionalUnit((TRAY_OF_BREAD, BOTH_WAYS, n("butter", inside("bowl")), n("bowl", contains("butter"))),
+                               Motion("spread"), (BUTTERED, n("butter", on("bread")), n("bowl", "empty")))
+
+
+def test_two_nodes_that_list_each_other_read_as_one_on_the_other():
+    reads = mutual_readings(Foon((LAY, SPREAD_BUTTER)))
+    assert reads == {BOTH_WAYS: (n("bread", "sliced", on("baking tray")), LAY)}
+    assert mutual_readings(Foon((LAY,))) == {}  # no node places a bread on a tray: no evidence which holds which
+    kitchen = (n("baking tray", "empty"), n("bread", "sliced"), n("butter", inside("bowl")), n("bowl", contains("butter")))
+    outcome = _clean_plan((LAY, SPREAD_BUTTER), kitchen, BUTTERED)
+    assert any("is read as bread (on [baking tray], sliced)" in note for note in outcome.compiled.notes)

@@ -35,7 +35,8 @@
   listing what starts in it (`heavy cream (in [carton])` and no carton in any unit,
   or `egg (in [bowl])` while every bowl of the kitchen is `bowl (empty)`), and a
   kitchen container that lists an item holds one object of it.
-* **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in.
+* **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in; two nodes of a unit
+  that list each other, read as one on the other (`mutual_lists`).
 * **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
   name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
@@ -73,6 +74,7 @@ from .holder_words import mismatches, reported, task_aliases
 from .holders import Fate, gained, head_of, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import InstanceCounts, count_reasons, derive_counts
+from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
@@ -94,6 +96,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     """The relational task of `goal` over `foon` (see the module doc), with its reports as notes."""
     inp = at_level(foon, kitchen, goal, level)
     given = inp.foon.units  # FOON's own: the plan's tree is made of them
+    inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
     units = restoring_units(inp.foon, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(given)))
     inp, reads = stitched(inp, units)
     f = inp.foon
@@ -178,7 +181,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
-    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads)
+    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(mutual)
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live]
     notes, commented = reported(found)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
