@@ -66,3 +66,14 @@ def test_plan_help_says_what_format_a_skill_plan_takes():
     assert "with --skills, the skill plan: steps (the default there), recipe or json" in text
     default = run("plan", "--goal", "whipped cream", "--skills")
     assert default.exit_code == 0 and default.stdout.splitlines()[1].startswith("1. pour [pour] (")
+
+
+def test_an_unquoted_goal_of_two_words_is_told_to_be_quoted():
+    """`plan --goal whipped cream` said only "cream: error: no such file or directory": the second word was read
+    as a FOON path. The error stays (exit 2); a hint shows the quoted goal."""
+    r = run("plan", "--goal", "whipped", "cream")
+    assert r.exit_code == 2
+    assert "cream: error: no such file or directory" in r.stderr
+    assert "hint: a goal of several words is one argument: --goal 'whipped cream'" in r.stderr
+    other = run("plan", "--goal", "guacamole", "nowhere.txt")  # a path that is plainly a file name: no hint
+    assert other.exit_code == 2 and "hint:" not in other.stderr

@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import errno
 import importlib
+import shlex
 import sys
 
 import click
 
 from .. import __version__
-from ..errors import FoonError, UsageError
+from ..errors import FoonError, FoonInputError, UsageError
 from ..io.atomic import discard_staged
 from ..io.interrupts import Terminated, sigterm_raises
 from ..planners.cleanup import command_scope
@@ -72,6 +73,10 @@ class _Group(click.Group):
             importlib.import_module(f"{__name__}.{COMMANDS[cmd_name]}")
         return self.commands.get(cmd_name)
 
+    def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
+        ctx.meta["argv"] = tuple(args)  # the words as given, for the unquoted-goal hint of an error
+        return super().parse_args(ctx, args)
+
     def invoke(self, ctx: click.Context):
         _escape_unencodable_output()
         progress.begin()
@@ -87,6 +92,9 @@ class _Group(click.Group):
             click.echo(f"{where}: error: {exc.message}" if where else f"Error: {exc.message}", err=True)
             if exc.text is not None:
                 click.echo(f"    {exc.text!r}", err=True)
+            hint = _unquoted_goal(exc, ctx.meta.get("argv", ()))
+            if hint:
+                click.echo(f"hint: a goal of several words is one argument: --goal {hint}", err=True)
             ctx.exit(2)
         except KeyboardInterrupt as exc:
             terminated = isinstance(exc, Terminated)
@@ -100,6 +108,18 @@ class _Group(click.Group):
                 raise
             output_failed(exc)
             ctx.exit(2)
+
+
+def _unquoted_goal(exc: FoonError, args) -> str:
+    """`'whipped cream'` when a missing PATH is the word after `--goal whipped` (the shell split an unquoted
+    goal; a word with `/` or `.` is a path), else ""."""
+    missing = exc.path if isinstance(exc, FoonInputError) and not exc.line else None
+    if not missing or "/" in missing or "." in missing:
+        return ""
+    for at in range(len(args) - 2):
+        if args[at] == "--goal" and args[at + 2] == missing:
+            return shlex.quote(f"{args[at + 1]} {missing}")
+    return ""
 
 
 #: errno values of a write that cannot complete: device full, quota, file too large, I/O error.
