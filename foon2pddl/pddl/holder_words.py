@@ -32,7 +32,9 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     that role: `salad bowl (contains {salad})` beside `carrot salad (in [salad bowl])`, `oil (in [pan])` in a
     unit whose pan is `cooking pan`. A name only places use (an output node's among them), matching no label
     so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
-    drinking glass that lists the lemonade `in [cup]`; the skillet of `bread (in [pan])`). Sorted; O(n r^2).
+    drinking glass that lists the lemonade `in [cup]`; the skillet of `bread (in [pan])`). Not a name a
+    container lists before and after the unit while the unit's nodes list the role's label itself: the bowl's
+    `brown sugar`, there before the `sugar` is poured in, is no other name for it. Sorted; O(n r^2).
     """
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
@@ -43,10 +45,14 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
             listers.setdefault(x, set()).add(r.label)
         for x in (*listed(n), *(c for _, c in places(n))):
             users.setdefault(x, set()).add(r.label)
+    # a name a container lists before and after the unit, while the unit's nodes also list the role's own label,
+    # is what was there before under its own name (the bowl's `brown sugar` beside the `sugar` poured in)
+    stays = {x for r in roles if r.before is not None and r.after is not None for x in listed(r.before) & listed(r.after)}
     out = {}
     for name in sorted(set(users) - labels):
         if len(match := [lab for lab in sorted(labels) if head_of(name, lab) and lab not in listers.get(name, ())]) == 1:
-            out[name] = match[0]
+            if not (name in stays and match[0] in listers):
+                out[name] = match[0]
     lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
              for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
     sides = [(r.before, r) for r in roles if r.before], [(r.after, r) for r in roles if r.after]

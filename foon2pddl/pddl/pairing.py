@@ -21,7 +21,10 @@ of shared ingredients (`bowl (contains {a})` becomes `bowl (contains {a, b})`),
 then of shared ingredients that no input FOON marks as in motion (its motion identifier,
 1: a scoop of bacon, `bacon (fried, in [skillet])` marked 1, from `skillet (contains
 {bacon})` into `skillet (contains {white sauce})` gives `skillet (contains {white
-sauce, bacon})`: the white sauce was there already, the bacon is what the hand moves), ties broken by input position then output position (the order FOON lists them in);
+sauce, bacon})`: the white sauce was there already, the bacon is what the hand moves), then the input FOON
+does not mark as in motion itself (the chocolate chips scraped from the bowl marked 1 into the bowl of
+batter marked 0: the batter's bowl is the one that lists both after), ties broken by input position then output
+position (the order FOON lists them in);
 pairs are taken greedily, each node at most once. Ambiguity: when a unit has
 several inputs of one label and fewer outputs (two bowls combined into one), the
 rule picks the input most like the output as the one that "becomes" it; FOON
@@ -89,7 +92,7 @@ def unit_roles(unit: FunctionalUnit) -> tuple[Role, ...]:
             if a.label == b.label:
                 states, ingredients = _overlap(a, b)
                 resident = len((a.ingredients & b.ingredients) - moving)
-                pairs.append((a != b, -states, -ingredients, -resident, i, j))
+                pairs.append((a != b, -states, -ingredients, -resident, a.motion_flag, i, j))
     partner: dict[int, int] = {}
     taken: set[int] = set()
     for *_, i, j in sorted(pairs):
