@@ -9,7 +9,7 @@ import pytest
 from node_words import contains, inside, n
 
 from foon2pddl.io.files import load
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
@@ -82,3 +82,46 @@ def test_names_are_read_as_in_the_goals_task_not_the_whole_network():
     outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("whipped coffee"), (WHIPPED,)), "relational")
     assert outcome.status == "solved", outcome.message
     assert outcome.tree.units == (POUR, BEAT)
+
+
+def test_an_object_on_a_holder_no_node_lists_it_on_is_on_the_one_the_unit_takes_with_it():
+    # watermelon lemonade: the pour takes `strainer (clean, empty, on [measuring cup])` from the kitchen with
+    # `measuring cup (clean, empty)`; no measuring cup lists the strainer, and none is added for it
+    strainer, cup = n("strainer", "clean", "empty", make_state("on", "measuring cup")), n("measuring cup", "clean", "empty")
+    juice, strained = n("juice", inside("blender cup")), n("juice", inside("strainer"))
+    pour = FunctionalUnit((strainer, cup, n("blender cup", contains("juice")), juice), Motion("pour"),
+                          (n("strainer", contains("juice"), make_state("on", "measuring cup")), strained))
+    foon = Foon((pour,))
+    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("juice"), (strained,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    assert [o.id for o in outcome.trace.objects if o.label == "measuring cup"] == ["measuring_cup_1"]
+    assert {s.id: s.holder for s in outcome.trace.initial}["strainer_1"] == "measuring_cup_1"
+
+
+def test_a_unit_that_takes_the_kitchen_container_does_not_make_its_other_wording():
+    # a universal FOON: the buckeye candy opens the kitchen's `jar (contains {peanut butter})`, making `jar
+    # (contains {peanut butter}, opened)`; that is the jar after a unit, not the kitchen's jar in other words
+    jar, pb = n("jar", contains("peanut butter")), n("peanut butter", inside("jar"))
+    opened = FunctionalUnit((jar,), Motion("open"), (n("jar", contains("peanut butter"), "opened"), pb))
+    bread = n("bread", "sliced")
+    spread = FunctionalUnit((jar, pb, bread, n("knife")), Motion("spread"), (n("bread", contains("peanut butter")),))
+    foon = Foon((opened, spread))
+    assert kitchen_stitches(foon.units, default_kitchen(foon).nodes) == {}
+
+
+def test_an_object_a_unit_takes_off_a_container_without_naming_its_place_is_the_one_on_it():
+    # watermelon lemonade: the uncover takes a plain `blender lid` with `blender cup (contains {watermelon juice},
+    # covered {blender lid})`; the lid it takes off is the one the cover put on the cup, not a second lid
+    cup, juice, lid = n("blender cup", contains("juice")), n("juice", inside("blender cup")), n("blender lid", "clean")
+    covered = n("blender cup", contains("juice"), make_state("covered", "", ("blender lid",)))
+    cover = FunctionalUnit((cup, juice, lid), Motion("cover"), (covered, n("blender lid", make_state("on", "blender cup"))))
+    dirty = n("blender lid", "dirty")
+    uncover = FunctionalUnit((covered, juice, n("blender lid")), Motion("uncover"),
+                             (n("blender cup", contains("juice"), "open"), dirty))
+    foon = Foon((cover, uncover))
+    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("blender lid"), (dirty,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    assert [o.id for o in outcome.trace.objects if o.label == "blender lid"] == ["blender_lid_1"]
+    assert outcome.tree.units == (cover, uncover)

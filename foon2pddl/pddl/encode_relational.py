@@ -97,8 +97,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     inp = at_level(foon, kitchen, goal, level)
     given = inp.foon.units  # FOON's own: the plan's tree is made of them
     inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
-    units = restoring_units(inp.foon, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(given)))
-    inp, reads = stitched(inp, units)
+    inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if options.prune
+                                 else tuple(range(len(given))))
     f = inp.foon
     def relevant(net: Foon) -> tuple[int, ...]:
         return restoring_units(net, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(net.units)))

@@ -24,12 +24,15 @@ def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
 
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
                 silent: frozenset[str] = frozenset(), nodes: Iterable[ObjectNode] = (),
+                paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
                 ) -> tuple[list[Instance], list[ObjectNode]]:
     """Instances with their starting holders, and the holders to add (module doc, "Init").
 
     An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
     first not yet given one of that label), else, when no node of the task says what a C holds (`silent`:
-    a stove, a table), into the first C; with none, into a holder to add: one per label C, listing
+    a stove, a table), into the first C, else into the first C whose node a unit takes with the object's
+    (`paired`: the watermelon lemonade's pour takes `strainer (clean, empty, on [measuring cup])` with
+    `measuring cup (clean, empty)`, FOON's contradiction the task reports); with none, into a holder to add: one per label C, listing
     everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
     avocado the kitchen has on a board). An added holder starts in a node of `nodes` that lists exactly that
     and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
@@ -52,7 +55,8 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         listing = [h for h in pool if x.label in read_names(listed(h.start), alias)]
         free = [h for h in listing if (h.name, x.label) not in used]
         quiet = [h for h in pool if not describes_contents(h.start)] if label in silent else []
-        pick = (free or listing or quiet or [None])[0]
+        together = [h for h in pool if (x.start, h.start) in paired]
+        pick = (free or listing or quiet or together or [None])[0]
         if pick is None:
             wanted.setdefault(label, set()).add(x.label)
             picks[x.name] = (label, None)
@@ -171,7 +175,7 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
     missing = sorted({alias.get(c, c) for c in named} - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
-    instances, implied = holder_init(instances, alias, quiet, nodes)
+    instances, implied = holder_init(instances, alias, quiet, nodes, paired)
     if implied:
         # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
         # held by itself) leaves those objects standing free: `_` are the holders a third pass would add

@@ -10,13 +10,15 @@ kitchen object, and the units taking K take P. "Another wording": K's states but
 (P may add one: the cook leaves the bacon macaroni's pot `hot`, which the scoop's kitchen pot does not say), K's
 places among P's, K's list (read through the task's aliases, `holder_words.task_aliases`) within P's, and
 whatever else P lists no object of P's unit is and its input nodes of that label do not list (the onigiri's
-`bowl (contains {rice, water})` for the kitchen's `bowl (contains {rice})`: no water is poured). FOON's tree
+`bowl (contains {rice, water})` for the kitchen's `bowl (contains {rice})`: no water is poured). A unit taking K
+makes K after it, not K in other words (a universal FOON's `jar (contains {peanut butter}, opened)`, which the
+buckeye candy's open makes of the kitchen's `jar (contains {peanut butter})`). FOON's tree
 keeps K, which FOON's kitchen has; each reading is reported with the unit's file:line.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
@@ -31,6 +33,11 @@ __all__ = ["kitchen_stitches", "stitch_notes", "stitched"]
 def _rest(node: ObjectNode) -> frozenset:
     """The node's states but its lists and places."""
     return frozenset(s for s in node.states if place_state(s) is None and s.label not in CONTENT_STATES)
+
+
+def _nested(a: Iterable, b: Iterable) -> bool:
+    """One of two nodes' places names all the other's (one node may leave a place out)."""
+    return set(a) <= set(b) or set(b) <= set(a)
 
 
 def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNode],
@@ -58,37 +65,70 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
         found = {}
-        for u in makers:
+        for u in (m for m in makers if k not in m.inputs):  # what a unit makes of K is K after it, not K
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
             for p in u.outputs:
-                if (p.label == k.label and _rest(k) <= _rest(p) and set(places(k)) <= set(places(p))
+                if (p.label == k.label and _rest(k) <= _rest(p) and _nested(places(k), places(p))
                         and items <= read(listed(p)) and not (read(listed(p)) - items) & (roles | before)):
                     found.setdefault(p, u)
+        if len(found) == 1:
+            out[k] = next(iter(found.items()))
+    return out | _taken_off(units, kitchen, makers, made)
+
+
+def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], makers: Sequence[FunctionalUnit],
+               made: set[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
+    """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off a
+    container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains {watermelon
+    juice}, covered {blender lid})`, whose output node no longer lists the lid): the one output P of a unit not
+    taking K with K's states and a place in or on such a container (the cover's `blender lid (on [blender
+    cup])`). O(kitchen x units x outputs)."""
+    out = {}
+    for k in sorted(x for x in kitchen if not places(x) and x not in made):
+        takers = [u for u in units if k in u.inputs]
+        off = [{i.label for i in u.inputs if k.label in listed(i)
+                and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)} for u in takers]
+        if not takers or not all(off):
+            continue
+        holders = frozenset().union(*off)
+        found = {p: u for u in makers if k not in u.inputs for p in u.outputs
+                 if p.label == k.label and _rest(k) <= _rest(p) and {c for _, c in places(p)} & holders}
         if len(found) == 1:
             out[k] = next(iter(found.items()))
     return out
 
 
-def stitched(inp: LevelInputs, units: Iterable[int]) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode,
-                                                                                                FunctionalUnit]]]:
-    """`inp` with each kitchen node K that a task of the `units` (indexes) reads as a unit output P
-    (`kitchen_stitches`) read so: out of the kitchen, and P in every unit taking K; and the readings."""
-    stitches = kitchen_stitches([inp.foon.units[u] for u in units], inp.kitchen, inp.foon.units)
-    if not stitches:
-        return inp, stitches
+Stitches = dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]
 
-    def unit(u: FunctionalUnit) -> FunctionalUnit:
-        if not any(n in stitches for n in u.inputs):
-            return u
-        ins = tuple(dict.fromkeys(stitches[n][0] if n in stitches else n for n in u.inputs))
-        return FunctionalUnit(ins, u.motion, u.outputs, u.sources)
 
-    foon = Foon(tuple(map(unit, inp.foon.units)), inp.foon.level)
-    return replace(inp, foon=foon, kitchen=inp.kitchen - stitches.keys()), stitches
+def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]],
+             ) -> tuple[LevelInputs, Stitches, tuple[int, ...]]:
+    """`inp` with each kitchen node K that the task of its `relevant` units reads as a unit output P
+    (`kitchen_stitches`) read so: out of the kitchen, and P in every unit taking K; the readings; and the units
+    relevant then. Until no more: a unit a reading makes relevant may take a kitchen node to read too (the
+    watermelon lemonade's pitcher brings in the pour that takes the kitchen's squeezer). O(rounds x
+    `kitchen_stitches`), a round per kitchen node at most."""
+    stitches: Stitches = {}
+    units = relevant(inp)
+    while new := kitchen_stitches([inp.foon.units[u] for u in units], inp.kitchen, inp.foon.units):
+        stitches |= new
+
+        def unit(u: FunctionalUnit, new: Stitches = new) -> FunctionalUnit:
+            if not any(n in new for n in u.inputs):
+                return u
+            return FunctionalUnit(tuple(dict.fromkeys(new[n][0] if n in new else n for n in u.inputs)), u.motion,
+                                  u.outputs, u.sources)
+
+        inp = replace(inp, foon=Foon(tuple(map(unit, inp.foon.units)), inp.foon.level),
+                      kitchen=inp.kitchen - new.keys())
+        units = relevant(inp)
+    return inp, stitches, units
 
 
 def stitch_notes(stitches: Mapping[ObjectNode, tuple[ObjectNode, FunctionalUnit]]) -> list[tuple[FunctionalUnit, str]]:
     """(the unit making P, what is read) per reading, for the task's notes with the unit's file:line."""
     return [(u, f"the kitchen's {k.describe()} is read as {p.describe()}, which this {u.motion.label} makes: FOON "
-             "gives what it holds only as what units make") for k, (p, u) in sorted(stitches.items())]
+             "gives what it holds only as what units make" if listed(k) else f"the kitchen's {k.describe()} is "
+             f"read as {p.describe()}, which this {u.motion.label} makes: the units taking it take it off a holder")
+            for k, (p, u) in sorted(stitches.items())]
