@@ -125,3 +125,20 @@ def test_an_object_a_unit_takes_off_a_container_without_naming_its_place_is_the_
     assert report.ok, [d.describe() for d in report.disagreements]
     assert [o.id for o in outcome.trace.objects if o.label == "blender lid"] == ["blender_lid_1"]
     assert outcome.tree.units == (cover, uncover)
+
+
+def test_the_unit_that_puts_a_kitchen_object_on_the_holder_keeps_it_and_the_others_take_what_it_made():
+    # watermelon lemonade: the pick-and-place puts the kitchen's `watermelon (whole)` on the board; the slice
+    # takes `watermelon (whole)` with `cutting board (contains {watermelon})`: the one on the board, not a second
+    whole, board = n("watermelon", "whole"), n("cutting board", "empty")
+    full, placed = n("cutting board", contains("watermelon")), n("watermelon", "whole", make_state("on", "cutting board"))
+    put = FunctionalUnit((whole, board), Motion("pick-and-place"), (full, placed))
+    halved = n("watermelon", "halved", make_state("on", "cutting board"))
+    cut = FunctionalUnit((full, whole, n("knife")), Motion("slice"), (halved,))
+    foon = Foon((put, cut))
+    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("watermelon"), (halved,)), "relational")
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    assert [o.id for o in outcome.trace.objects if o.label == "watermelon"] == ["watermelon_1"]
+    assert outcome.tree.units == (put, cut)

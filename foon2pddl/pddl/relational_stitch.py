@@ -49,8 +49,6 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     kitchen, makers = frozenset(kitchen), units if makers is None else makers
     made = {o for u in makers for o in u.outputs}
     full = sorted(k for k in kitchen if listed(k) and k not in made)
-    if not full:
-        return {}
     labels = {n.label for u in units for n in (*u.inputs, *u.outputs)}
     alias = dict(task_aliases(units, labels, full))
 
@@ -79,21 +77,24 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
 
 def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], makers: Sequence[FunctionalUnit],
                made: set[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
-    """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off a
-    container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains {watermelon
-    juice}, covered {blender lid})`, whose output node no longer lists the lid): the one output P of a unit not
-    taking K with K's states and a place in or on such a container (the cover's `blender lid (on [blender
-    cup])`). O(kitchen x units x outputs)."""
+    """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off or
+    works on a container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains
+    {watermelon juice}, covered {blender lid})`, whose output node no longer lists the lid): the one output P with
+    K's states and a place in or on such a container (the cover's `blender lid (on [blender cup])`). The unit
+    making P may take K itself (the pick-and-place puts the kitchen's `watermelon (whole)` on the board the slice
+    cuts it on): it keeps K, the others take P. O(kitchen x units x outputs)."""
     out = {}
     for k in sorted(x for x in kitchen if not places(x) and x not in made):
-        takers = [u for u in units if k in u.inputs]
-        off = [{i.label for i in u.inputs if k.label in listed(i)
-                and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)} for u in takers]
-        if not takers or not all(off):
-            continue
-        holders = frozenset().union(*off)
-        found = {p: u for u in makers if k not in u.inputs for p in u.outputs
-                 if p.label == k.label and _rest(k) <= _rest(p) and {c for _, c in places(p)} & holders}
+        off = {u: {i.label for i in u.inputs if k.label in listed(i)
+                   and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)}
+               for u in units if k in u.inputs}
+        found: dict[ObjectNode, FunctionalUnit] = {}
+        for u in makers:
+            for p in u.outputs:
+                others = [h for t, h in off.items() if t != u]
+                if (p.label == k.label and _rest(k) <= _rest(p) and others and all(others)
+                        and {c for _, c in places(p)} & frozenset().union(*others)):
+                    found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
     return out
@@ -115,13 +116,15 @@ def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]
         stitches |= new
 
         def unit(u: FunctionalUnit, new: Stitches = new) -> FunctionalUnit:
-            if not any(n in new for n in u.inputs):
+            read = {k: p for k, (p, maker) in new.items() if k in u.inputs and maker != u}  # its maker keeps K
+            if not read:
                 return u
-            return FunctionalUnit(tuple(dict.fromkeys(new[n][0] if n in new else n for n in u.inputs)), u.motion,
-                                  u.outputs, u.sources)
+            return FunctionalUnit(tuple(dict.fromkeys(read.get(n, n) for n in u.inputs)), u.motion, u.outputs,
+                                  u.sources)
 
+        kept = {k for k, (_, maker) in new.items() if k in maker.inputs}
         inp = replace(inp, foon=Foon(tuple(map(unit, inp.foon.units)), inp.foon.level),
-                      kitchen=inp.kitchen - new.keys())
+                      kitchen=inp.kitchen - (new.keys() - kept))
         units = relevant(inp)
     return inp, stitches, units
 
@@ -130,5 +133,5 @@ def stitch_notes(stitches: Mapping[ObjectNode, tuple[ObjectNode, FunctionalUnit]
     """(the unit making P, what is read) per reading, for the task's notes with the unit's file:line."""
     return [(u, f"the kitchen's {k.describe()} is read as {p.describe()}, which this {u.motion.label} makes: FOON "
              "gives what it holds only as what units make" if listed(k) else f"the kitchen's {k.describe()} is "
-             f"read as {p.describe()}, which this {u.motion.label} makes: the units taking it take it off a holder")
+             f"read as {p.describe()}, which this {u.motion.label} makes: the units taking it find it on a holder")
             for k, (p, u) in sorted(stitches.items())]
