@@ -295,14 +295,15 @@ def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding
 
 
 def test_the_default_skill_plan_falls_back_to_instances_when_the_relational_encoding_finds_none_and_says_so():
-    # ACT-0009: the relational task has no relaxed solution (FOON's bowls of batter disagree across units), the
-    # instances one solves; `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a
-    # skill plan (0036, then 0050, were the example until input stitches solved them)
+    # 0086 (apple turnover): the relational task has no relaxed solution (the remove takes `oven (on, contains
+    # {apple pie})`, the bake leaves `oven (on, contains {baking tray})`), the instances one solves; `plan --skills`
+    # answered `unsolvable` where `plan --encoding instances --skills` had a skill plan (0036, 0050, then ACT-0009
+    # were the example until relational readings solved them or brought them to search)
     from conftest import SUBGRAPHS
 
-    path = str(SUBGRAPHS / "ACT-0009-chocolate_chip_muffin.txt")
-    goal = ("chocolate chip muffin (baked, contains {baking powder, brown sugar, butter, chocolate chip, cinnamon, "
-            "egg white and yolk, flour, milk, salt, sour cream, sugar, vanilla extract}, in [muff])")
+    path = str(SUBGRAPHS / "0086-apple_turnover.txt")
+    goal = ("apple pie (contains {apple, brown sugar, butter, cinnamon, dough, egg wash, salt, sugar, water}, cooked, "
+            "on [plate])")
     result = run(path, "--goal", goal, "--skills")
     assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
     assert "note: the relational encoding found no plan (unsolvable: " in result.stderr, result.stderr
