@@ -60,3 +60,14 @@ def test_every_documented_command_runs_from_a_clone_as_written():
     missing = {(c.where, path) for c in documented_commands() for path in missing_inputs(c.text)
                if path not in READERS_OWN}
     assert not missing
+
+
+def test_skills_md_says_how_long_the_relational_try_takes_by_default():
+    """skills.md said the merged subgraphs' black bean "solves under `instances` in ~2 s"; a new user running it
+    waited 80 s, since the relational try takes its whole share of the default time limit first."""
+    from foon2pddl.cli.plan_cmd import plan_ as plan_command
+    from foon2pddl.skills.run import FIRST_SHARE
+
+    default = next(p.default for p in plan_command.params if p.name == "time_limit")
+    text = " ".join((ROOT / "docs" / "skills.md").read_text().split())
+    assert f"after {default * FIRST_SHARE:g} s, a quarter of the default {default:g} s limit" in text
