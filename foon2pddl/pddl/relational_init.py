@@ -4,6 +4,7 @@ its nodes name (module doc of `encode_relational`, "Init")."""
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
@@ -120,9 +121,15 @@ def unplaced(node: ObjectNode) -> ObjectNode:
 def kitchen_placed(nodes: Iterable[ObjectNode | None], kitchen: Iterable[ObjectNode]) -> frozenset[ObjectNode]:
     """The `nodes` not in `kitchen` that are a kitchen node in another place (`milk (in [bowl])` for `milk (in
     [carton])`): where the kitchen completion starts an object a kitchen container lists, the kitchen says so."""
-    loose = {unplaced(k) for k in kitchen}
-    given = set(kitchen)
+    given = frozenset(kitchen)
+    loose = _unplaced_all(given)
     return frozenset(n for n in nodes if n is not None and n not in given and unplaced(n) in loose)
+
+
+@lru_cache(maxsize=8)
+def _unplaced_all(kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
+    """The kitchen's nodes with their places dropped (cached: the kitchen stitches ask once per kitchen node)."""
+    return frozenset(unplaced(k) for k in kitchen)
 
 
 def named_objects(table: NameTable, instances: list[Instance], nodes: Iterable[ObjectNode]) -> list[Instance]:

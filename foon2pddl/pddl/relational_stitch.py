@@ -55,21 +55,23 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     def read(names: Iterable[str]) -> frozenset[str]:
         return frozenset(alias.get(x, x) for x in names)
 
+    outputs, takers = _outputs_by_label(makers), _takers(units)
     out = {}
     for k in full:
         items = read(listed(k))
-        taken = {x for u in units if k in u.inputs for x in u.inputs
+        taken = {x for u in takers.get(k, ()) for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
         found = {}
-        for u in (m for m in makers if k not in m.inputs):  # what a unit makes of K is K after it, not K
+        for p, u in outputs.get(k.label, ()):
+            if k in u.inputs:  # what a unit makes of K is K after it, not K
+                continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
-            for p in u.outputs:
-                if (p.label == k.label and _rest(k) <= _rest(p) and _nested(places(k), places(p))
-                        and items <= read(listed(p)) and not (read(listed(p)) - items) & (roles | before)):
-                    found.setdefault(p, u)
+            if (_rest(k) <= _rest(p) and _nested(places(k), places(p))
+                    and items <= read(listed(p)) and not (read(listed(p)) - items) & (roles | before)):
+                found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
     return out | _taken_off(units, kitchen, makers, made)
@@ -83,20 +85,38 @@ def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], 
     K's states and a place in or on such a container (the cover's `blender lid (on [blender cup])`). The unit
     making P may take K itself (the pick-and-place puts the kitchen's `watermelon (whole)` on the board the slice
     cuts it on): it keeps K, the others take P. O(kitchen x units x outputs)."""
+    outputs, takers = _outputs_by_label(makers), _takers(units)
     out = {}
     for k in sorted(x for x in kitchen if not places(x) and x not in made):
         off = {u: {i.label for i in u.inputs if k.label in listed(i)
                    and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)}
-               for u in units if k in u.inputs}
+               for u in takers.get(k, ())}
         found: dict[ObjectNode, FunctionalUnit] = {}
-        for u in makers:
-            for p in u.outputs:
-                others = [h for t, h in off.items() if t != u]
-                if (p.label == k.label and _rest(k) <= _rest(p) and others and all(others)
-                        and {c for _, c in places(p)} & frozenset().union(*others)):
-                    found.setdefault(p, u)
+        for p, u in outputs.get(k.label, ()) if off else ():
+            others = [h for t, h in off.items() if t != u]
+            if (_rest(k) <= _rest(p) and others and all(others)
+                    and {c for _, c in places(p)} & frozenset().union(*others)):
+                found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
+    return out
+
+
+def _outputs_by_label(units: Sequence[FunctionalUnit]) -> dict[str, list[tuple[ObjectNode, FunctionalUnit]]]:
+    """label -> (output node, its unit) in the units' order: the candidates P of a kitchen node K of that label."""
+    out: dict[str, list[tuple[ObjectNode, FunctionalUnit]]] = {}
+    for u in units:
+        for p in u.outputs:
+            out.setdefault(p.label, []).append((p, u))
+    return out
+
+
+def _takers(units: Sequence[FunctionalUnit]) -> dict[ObjectNode, list[FunctionalUnit]]:
+    """node -> the units taking it, in the units' order."""
+    out: dict[ObjectNode, list[FunctionalUnit]] = {}
+    for u in units:
+        for i in dict.fromkeys(u.inputs):
+            out.setdefault(i, []).append(u)
     return out
 
 
