@@ -11,6 +11,7 @@ from conftest import SUBGRAPHS
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from node_words import contains, inside, n
+from relational_checks import clean_unit_plan
 
 from foon2pddl.cli import main
 from foon2pddl.io.files import load
@@ -403,15 +404,6 @@ def test_an_object_in_a_holder_of_its_own_label_compiles_at_every_level():
         assert "bowl" in {x.label for x in task.instances}
 
 
-def _solve(units, kitchen_nodes, goal_node):
-    outcome = plan(Foon(tuple(units)), Kitchen(frozenset(kitchen_nodes)), Goal(GoalSpec(goal_node.label), (goal_node,)),
-                   "relational")
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
-    return outcome
-
-
 def test_an_object_its_only_holder_does_not_list_is_bound_late_and_reported():
     # pancake batter: the bowl lists egg white and egg yolk, the mix takes `egg white and yolk (in [bowl])`,
     # which no unit put into that bowl: FOON's words disagree, so the planner may take it from its own bowl
@@ -424,7 +416,7 @@ def test_an_object_its_only_holder_does_not_list_is_bound_late_and_reported():
     roles = relational_roles(mix)
     assert roles[1].source.role is None and roles[2].source.role == 0  # flour is listed: its bowl is bound
     assert ("bowl", "egg white and yolk") in {(c, x) for c, x, _ in list_gaps(mix)}
-    outcome = _solve([mix], [bowl, eggs, flour, white, yolk], batter)
+    outcome = clean_unit_plan([mix], [bowl, eggs, flour, white, yolk], batter)
     assert outcome.trace.final["egg_white_and_yolk_1"].consumed
     assert any("egg white and yolk is in [bowl], whose node before the unit does not list it" in x
                for x in outcome.compiled.notes)
@@ -438,7 +430,7 @@ def test_a_container_left_out_of_the_outputs_is_poured_out_whole():
     spread = n("tuna spread", inside("bowl"))
     mix = FunctionalUnit((n("bowl", contains("mayonnaise", "tuna")), mayo, tuna), Motion("mix"),
                          (n("bowl", contains("tuna spread")), spread))
-    outcome = _solve([pour, mix], [mayo_bowl, tuna_bowl, mayo, tuna], spread)
+    outcome = clean_unit_plan([pour, mix], [mayo_bowl, tuna_bowl, mayo, tuna], spread)
     final = outcome.trace.final
     assert final["tuna_1"].consumed and final["mayonnaise_1"].consumed
     empty = [b for b in ("bowl_1", "bowl_2") if final[b].node.describe() == "bowl (empty)"]
@@ -455,7 +447,7 @@ def test_a_tool_leaving_an_unnamed_holder_for_no_place_moves_whole():
     squeeze = FunctionalUnit((n("squeezer", "clean", make_state("on", "surface")), n("orange", "halved")),
                              Motion("squeeze"), (squeezer, juice, n("orange", "squeezed")))
     surface = n("surface", contains("cutting board"))  # a node that says what a surface holds
-    outcome = _solve([squeeze, pour], [squeeze.inputs[0], squeeze.inputs[1], surface, glass], served)
+    outcome = clean_unit_plan([squeeze, pour], [squeeze.inputs[0], squeeze.inputs[1], surface, glass], served)
     ids = [o.id for o in outcome.trace.objects if o.label == "squeezer"]
     assert ids == ["squeezer_1"] and outcome.trace.final["squeezer_1"].node == n("squeezer", "dirty")
 
@@ -472,7 +464,7 @@ def test_all_that_leaves_a_pan_at_once_empties_it_of_all():
     place_ = FunctionalUnit((n("tortilla", "plain"), beef, onion), Motion("pick-and-place"),
                             (n("tortilla", contains("meat mix")), fill))
     start = [*put.inputs, fry.inputs[2], place_.inputs[0]]
-    outcome = _solve([put, fry, place_], start, fill)
+    outcome = clean_unit_plan([put, fry, place_], start, fill)
     assert outcome.trace.final["cooking_pan_1"].node.describe() == "cooking pan (empty)"
 
 
@@ -503,7 +495,7 @@ def test_what_a_kitchen_holder_holds_starts_as_the_unit_that_uses_the_pair_takes
     in_skillet = n("butter", "cube", inside("skillet"))
     pour = FunctionalUnit((bowl, butter, hot), Motion("pour"),
                           (n("skillet", "hot", contains("butter"), on_stove), in_skillet))
-    outcome = _solve([place_, heat, pour], [ready, n("skillet", "empty"), stove, bowl, butter], in_skillet)
+    outcome = clean_unit_plan([place_, heat, pour], [ready, n("skillet", "empty"), stove, bowl, butter], in_skillet)
     first = next(iter(outcome.trace.states()))
     held = [i for i, s in first.items() if s.holder is not None and s.node.label == "skillet"]
     assert [first[i].node for i in held] == [empty]
@@ -522,7 +514,7 @@ def test_a_holder_the_kitchen_implies_starts_in_a_node_of_the_network_that_lists
     water_pot, water = n("pot", contains("water")), n("water", inside("pot"))
     boil = FunctionalUnit((n("stove", "on"), water_pot), Motion("pick-and-place"),
                           (with_pot, n("pot", contains("water"), on_stove)))
-    outcome = _solve([boil, pour, cook], [heated, bottle, oil, n("stove", "on"), water_pot, water], hot)
+    outcome = clean_unit_plan([boil, pour, cook], [heated, bottle, oil, n("stove", "on"), water_pot, water], hot)
     first = outcome.trace.after(-1)
     stove = first[next(o.id for o in outcome.trace.objects if o.label == "pot" and first[o.id].node == heated)].holder
     assert first[stove].node == with_pot
@@ -536,7 +528,7 @@ def test_an_object_that_leaves_an_unnamed_holder_for_no_place_empties_it():
     glass, juice = n("glass", "empty"), n("lemon juice", inside("glass"))
     squeeze = FunctionalUnit((lemon, glass), Motion("squeeze"),
                              (n("glass", contains("lemon juice")), juice, n("lemon", "squeezed")))
-    outcome = _solve([squeeze], [board, lemon, glass], juice)
+    outcome = clean_unit_plan([squeeze], [board, lemon, glass], juice)
     assert outcome.trace.final["cutting_board_1"].node == n("cutting board", "empty")
 
 
@@ -555,7 +547,7 @@ def test_a_second_object_of_a_label_in_one_holder_is_bound_late():
                            (n("cutting board", contains("sandwich")), sandwich))
     roles = relational_roles(stack)
     assert roles[1].source.role == 0 and roles[2].source.role is None
-    outcome = _solve([put, spread, top, stack], [board, bread, n("butter", "soft"), n("turkey", "sliced")], sandwich)
+    outcome = clean_unit_plan([put, spread, top, stack], [board, bread, n("butter", "soft"), n("turkey", "sliced")], sandwich)
     assert sum(s.unit is put for s in outcome.trace.steps) == 2
 
 
@@ -568,7 +560,7 @@ def test_the_milk_a_kitchen_bowl_lists_is_the_kitchens_milk_in_that_bowl():
     pour = FunctionalUnit((carton, milk, n("bowl", "empty")), Motion("pour"), (bowl, in_bowl))
     mixed = n("egg mixture", inside("bowl"))
     mix = FunctionalUnit((bowl, in_bowl, n("egg", "beaten")), Motion("mix"), (n("bowl", contains("egg mixture")), mixed))
-    outcome = _solve([pour, mix], [carton, milk, bowl, n("bowl", "empty"), n("egg", "beaten")], mixed)
+    outcome = clean_unit_plan([pour, mix], [carton, milk, bowl, n("bowl", "empty"), n("egg", "beaten")], mixed)
     assert [s.unit for s in outcome.trace.steps] == [mix]
     assert in_bowl in outcome.compiled.placed
 
@@ -582,7 +574,7 @@ def test_what_a_list_names_by_another_word_follows_the_list():
     grind = FunctionalUnit((cup, grinder, pepper), Motion("grind"), (peppered, n("black pepper", "ground", inside("cup"))))
     dressing = n("dressing", inside("cup"))
     stir = FunctionalUnit((peppered, oil, n("whisk")), Motion("stir"), (n("cup", contains("dressing")), dressing))
-    outcome = _solve([grind, stir], [cup, oil, grinder, pepper, n("whisk")], dressing)
+    outcome = clean_unit_plan([grind, stir], [cup, oil, grinder, pepper, n("whisk")], dressing)
     assert [o for o, s in outcome.trace.final.items() if o.startswith("black_pepper") and s.consumed]
 
 
@@ -598,7 +590,7 @@ def test_what_a_container_drops_goes_even_when_the_unit_takes_that_label_from_el
     mix = FunctionalUnit((cup, bowl_flour, broth, n("whisk")), Motion("mix"),
                          (n("measuring cup", contains("soup stock")), stock))
     assert any(f.label == "flour" for f in unit_flows(mix))
-    outcome = _solve([pour, mix], [n("measuring cup", contains("broth")), broth, bowl, bowl_flour, n("whisk")], stock)
+    outcome = clean_unit_plan([pour, mix], [n("measuring cup", contains("broth")), broth, bowl, bowl_flour, n("whisk")], stock)
     assert all(s.consumed or s.holder != "measuring_cup_1" for o, s in outcome.trace.final.items()
                if o.startswith("flour"))
 
@@ -610,7 +602,7 @@ def test_what_a_glass_drops_goes_into_the_drink_beside_an_object_of_its_label_fr
     roll = FunctionalUnit((n("glass", "empty"), n("lemon", "halved")), Motion("roll"), (glass, rolled))
     drink = n("drink", contains("lemon", "lemon juice"), inside("glass"))
     squeeze = FunctionalUnit((glass, n("lemon", "halved")), Motion("squeeze"), (n("glass", contains("drink")), drink))
-    outcome = _solve([roll, squeeze], [n("glass", "empty"), n("lemon", "halved")], drink)
+    outcome = clean_unit_plan([roll, squeeze], [n("glass", "empty"), n("lemon", "halved")], drink)
     assert all(s.consumed for o, s in outcome.trace.final.items() if o.startswith("lemon"))
 
 
@@ -625,7 +617,7 @@ def test_an_ingredient_listed_only_as_input_goes_into_the_container_that_newly_l
     mix = n("cake mix", inside("bowl"))
     stir = FunctionalUnit((both, cocoa, n("whisk")), Motion("stir"), (n("bowl", contains("cake mix")), mix))
     start = [cocoa_bowl, flour_bowl, cocoa, n("flour", inside("bowl")), n("sugar", inside("bowl")), n("whisk")]
-    outcome = _solve([pour, stir], start, mix)
+    outcome = clean_unit_plan([pour, stir], start, mix)
     assert outcome.trace.final["cake_mix_1"].holder == outcome.trace.steps[0].bindings[1].object
 
 
@@ -641,7 +633,7 @@ def test_a_place_a_unit_names_by_another_objects_label_is_read_as_that_units_hol
     pour_berry = FunctionalUnit((with_yogurt, bowl, berry), Motion("pour"), (both, n("strawberry", inside("cup"))))
     shake = n("shake", contains("strawberry", "yogurt"), inside("blender cup"))
     blend = FunctionalUnit((both,), Motion("blend"), (n("blender cup", contains("shake")), shake))
-    outcome = _solve([pour_yogurt, pour_berry, blend], [cup, yogurt, blender_cup, bowl, berry], shake)
+    outcome = clean_unit_plan([pour_yogurt, pour_berry, blend], [cup, yogurt, blender_cup, bowl, berry], shake)
     final = outcome.trace.final
     berries = [o.id for o in outcome.trace.objects if o.label == "strawberry"]
     assert [b for b in berries if final[b].consumed] and not [b for b in berries if final[b].holder == "blender_cup_1"]
@@ -662,7 +654,7 @@ def test_what_goes_onto_an_object_in_its_container_is_still_in_that_container():
     done = n("salad bowl", contains("carrot", "dressing", "lemon juice"))
     scoop = FunctionalUnit((salad_bowl, seasoned, jar, dressing), Motion("scoop"),
                            (done, n("dressing", inside("salad bowl"))))
-    outcome = _solve([pour, mix, scoop], [cup, carrot, bowl, juice, n("salad bowl", "empty"), jar, dressing], done)
+    outcome = clean_unit_plan([pour, mix, scoop], [cup, carrot, bowl, juice, n("salad bowl", "empty"), jar, dressing], done)
     final = outcome.trace.final
     label = {o.id: o.label for o in outcome.trace.objects}
     on_carrot = [x for x, lab in label.items() if lab == "lemon juice" and label.get(final[x].holder) == "carrot"]
@@ -686,7 +678,7 @@ def test_an_object_in_the_units_one_holder_of_its_place_before_and_after_stays_t
     assert relational_roles(place)[1].fate is Fate.MOVES and relational_roles(place)[1].source.role is None
     bowl, raw = n("bowl", contains("white rice")), n("white rice", inside("bowl"))
     fill = FunctionalUnit((n("pot", "empty"), bowl, raw), Motion("pour"), (pot, rice))
-    outcome = _solve([fill, pour], [n("pot", "empty"), bowl, raw, plate, garlic], done)
+    outcome = clean_unit_plan([fill, pour], [n("pot", "empty"), bowl, raw, plate, garlic], done)
     final = outcome.trace.final
     garnished = [x for x, st in final.items() if st.node == done]
     assert final["pot_1"].node == pot and len(garnished) == 1 and final[garnished[0]].holder == "pot_1"

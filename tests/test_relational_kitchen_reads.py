@@ -7,10 +7,10 @@ from pathlib import Path
 
 import pytest
 from node_words import contains, inside, n
+from relational_checks import clean_dish_plan, clean_plan
 
-from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
-from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
 from foon2pddl.planners.physical_replay import replay
@@ -64,13 +64,7 @@ def test_a_container_that_held_more_before_the_unit_is_no_other_wording():
 
 @pytest.mark.parametrize("name", ["0067-onigiri.txt", "0079-dalgona_coffee.txt"])
 def test_shared_dishes_whose_kitchen_container_only_units_fill_validate(name):
-    foon, _ = load([SUBGRAPHS / name])
-    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
-    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational",
-                   time_limit=60)
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
+    clean_dish_plan(SUBGRAPHS / name)
 
 
 def test_names_are_read_as_in_the_goals_task_not_the_whole_network():
@@ -119,10 +113,7 @@ def test_an_object_a_unit_takes_off_a_container_without_naming_its_place_is_the_
     uncover = FunctionalUnit((covered, juice, n("blender lid")), Motion("uncover"),
                              (n("blender cup", contains("juice"), "open"), dirty))
     foon = Foon((cover, uncover))
-    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("blender lid"), (dirty,)), "relational")
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
+    outcome = clean_plan(foon, default_kitchen(foon), Goal(GoalSpec("blender lid"), (dirty,)))
     assert [o.id for o in outcome.trace.objects if o.label == "blender lid"] == ["blender_lid_1"]
     assert outcome.tree.units == (cover, uncover)
 
@@ -136,9 +127,6 @@ def test_the_unit_that_puts_a_kitchen_object_on_the_holder_keeps_it_and_the_othe
     halved = n("watermelon", "halved", make_state("on", "cutting board"))
     cut = FunctionalUnit((full, whole, n("knife")), Motion("slice"), (halved,))
     foon = Foon((put, cut))
-    outcome = plan(foon, default_kitchen(foon), Goal(GoalSpec("watermelon"), (halved,)), "relational")
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
+    outcome = clean_plan(foon, default_kitchen(foon), Goal(GoalSpec("watermelon"), (halved,)))
     assert [o.id for o in outcome.trace.objects if o.label == "watermelon"] == ["watermelon_1"]
     assert outcome.tree.units == (put, cut)

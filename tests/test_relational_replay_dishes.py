@@ -8,33 +8,20 @@ from pathlib import Path
 
 import pytest
 from node_words import contains, inside, n
+from relational_checks import clean_dish_plan, clean_unit_plan
 
-from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
-from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.pddl.holders import Fate, relational_roles
 from foon2pddl.pddl.mutual_lists import mutual_readings
 from foon2pddl.pddl.relational_plan import plan_unit, restated_nodes
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
-from foon2pddl.planners.physical_replay import replay
-from foon2pddl.planners.solve import plan
 
 SUBGRAPHS = Path(__file__).parent / "data" / "foon-subgraphs"
 
 
 def on(holder: str):
     return make_state("on", holder)
-
-
-def _clean_plan(units, kitchen, goal_node):
-    outcome = plan(Foon(tuple(units)), Kitchen(frozenset(kitchen)), Goal(GoalSpec(goal_node.label), (goal_node,)),
-                   "relational")
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
-    return outcome
 
 
 # homestyle creamed corn (0038): the scoop of the kernels restates `corn (shaved, on [cutting board])` as an
@@ -61,7 +48,7 @@ def test_a_restated_object_is_not_made_twice():
     whole, empty_board = n("corn", "whole", on("cutting board")), n("cutting board", "empty")
     put = FunctionalUnit((n("corn", "whole"), empty_board), Motion("pick-and-place"), (BOARD, whole))
     shave = FunctionalUnit((BOARD, whole, KNIFE), Motion("shave"), (KERNELS, CORN))
-    outcome = _clean_plan((put, shave, SCOOP, SCRAPE), (n("corn", "whole"), empty_board, KNIFE, POT), SCRAPED_POT)
+    outcome = clean_unit_plan((put, shave, SCOOP, SCRAPE), (n("corn", "whole"), empty_board, KNIFE, POT), SCRAPED_POT)
     final = outcome.trace.final
     corn = [o.id for o in outcome.trace.objects if o.label == "corn" and final[o.id].node is not None]
     assert [final[c].holder for c in corn if not final[c].consumed] == ["pot_1"]
@@ -84,7 +71,7 @@ TAKE_OUT = FunctionalUnit((HOT_OVEN, n("baking tray", contains("cake"), inside("
 
 
 def test_a_role_a_late_empty_changes_says_the_node_it_ends_in():
-    outcome = _clean_plan((PUT_IN, BAKE, TAKE_OUT), (OVEN, TRAY, BATTER, RACK), CAKE_ON_RACK)
+    outcome = clean_unit_plan((PUT_IN, BAKE, TAKE_OUT), (OVEN, TRAY, BATTER, RACK), CAKE_ON_RACK)
     oven = [o.id for o in outcome.trace.objects if o.label == "oven"]
     assert [outcome.trace.final[o].node for o in oven] == [OVEN]
 
@@ -102,7 +89,7 @@ PUT_DOUGH = FunctionalUnit((n("cutting board", "floured"), DOUGH_BOWL, DOUGH), M
 
 
 def test_a_dusting_a_container_list_leaves_out_went_into_what_the_unit_puts_there():
-    outcome = _clean_plan((SPRINKLE, PUT_DOUGH), (EMPTY_BOARD, JAR, FLOUR, DOUGH_BOWL, DOUGH), DOUGH_ON_BOARD)
+    outcome = clean_unit_plan((SPRINKLE, PUT_DOUGH), (EMPTY_BOARD, JAR, FLOUR, DOUGH_BOWL, DOUGH), DOUGH_ON_BOARD)
     final = outcome.trace.final
     dusting = [o.id for o in outcome.trace.objects if o.label == "flour" and final[o.id].node is not None
                and final[o.id].holder != "jar_1"]
@@ -124,7 +111,7 @@ def test_a_bare_on_beside_the_one_role_that_newly_lists_the_object_places_it_the
     assert avocado.after == n("avocado", "sliced", on("bread"))
     empty, loose = n("cutting board", "empty"), n("avocado", "sliced")
     put = FunctionalUnit((empty, loose), Motion("pick-and-place"), (n("cutting board", contains("avocado")), AVOCADO))
-    outcome = _clean_plan((put, TOP), (n("cutting board", contains("bread")), empty, TOAST, loose, KNIFE), TOPPED)
+    outcome = clean_unit_plan((put, TOP), (n("cutting board", contains("bread")), empty, TOAST, loose, KNIFE), TOPPED)
     final = outcome.trace.final
     assert [final[o.id].holder for o in outcome.trace.objects if o.label == "avocado"] == ["bread_1"]
 
@@ -147,7 +134,7 @@ def test_a_kitchen_container_read_as_a_unit_output_that_adds_a_state():
     foon = Foon((COOK, SCOOP_MAC))
     assert kitchen_stitches(foon, [STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")]) == {
         RAW_POT: (STOVE_POT, COOK)}
-    outcome = _clean_plan((COOK, SCOOP_MAC), (STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")), SAUCED)
+    outcome = clean_unit_plan((COOK, SCOOP_MAC), (STOVE_POT, RAW, RAW_POT, SKILLET, n("skimmer", "clean")), SAUCED)
     assert [s.unit for s in outcome.trace.steps] == [COOK, SCOOP_MAC]
 
 
@@ -167,7 +154,7 @@ FOLD = FunctionalUnit((SPREAD_BREAD,), Motion("fold"), (SANDWICH,))
 
 def test_what_is_on_what_was_on_a_consumed_object_is_consumed_with_it():
     kitchen = (BEANS, SALT_BOWL, SALT, MIX, BREAD_ON_BOARD, n("cutting board", contains("bread")))
-    outcome = _clean_plan((SEASON, SPREAD_MIX, FOLD), kitchen, SANDWICH)
+    outcome = clean_unit_plan((SEASON, SPREAD_MIX, FOLD), kitchen, SANDWICH)
     final = outcome.trace.final
     assert [final[o.id].consumed for o in outcome.trace.objects if o.label == "salt" and final[o.id].holder
             is None and final[o.id].node == SALTED] == [True]
@@ -197,12 +184,7 @@ def test_a_container_emptied_of_an_object_is_emptied_of_what_the_units_put_into_
                                   "0058-chocolate_cake.txt", "ACT-0003-blueberry_muffin.txt",
                                   "ACT-0097-cranberry-walnut_pancake.txt"])
 def test_the_shared_dishes_plans_are_replay_clean(name):
-    foon, _ = load([SUBGRAPHS / name])
-    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
-    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=60)
-    assert outcome.status == "solved", outcome.message
-    report = replay(outcome.trace)
-    assert report.ok, [d.describe() for d in report.disagreements]
+    clean_dish_plan(SUBGRAPHS / name)
 
 
 # garfield garlic bread (0017): the pick-and-place gives `baking tray (contains {bread})` beside `bread (sliced,
@@ -221,5 +203,5 @@ def test_two_nodes_that_list_each_other_read_as_one_on_the_other():
     assert reads == {BOTH_WAYS: (n("bread", "sliced", on("baking tray")), LAY)}
     assert mutual_readings(Foon((LAY,))) == {}  # no node places a bread on a tray: no evidence which holds which
     kitchen = (n("baking tray", "empty"), n("bread", "sliced"), n("butter", inside("bowl")), n("bowl", contains("butter")))
-    outcome = _clean_plan((LAY, SPREAD_BUTTER), kitchen, BUTTERED)
+    outcome = clean_unit_plan((LAY, SPREAD_BUTTER), kitchen, BUTTERED)
     assert any("is read as bread (on [baking tray], sliced)" in note for note in outcome.compiled.notes)

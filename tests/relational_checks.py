@@ -1,0 +1,34 @@
+"""Relational plans in tests: planned, solved, and replay-clean (the disagreements shown when not)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from foon2pddl.io.files import load
+from foon2pddl.model.foon import Foon, ObjectNode
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+
+def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
+    """The `relational` plan of `goal`, asserted solved and replay-clean."""
+    outcome = plan(foon, kitchen, goal, "relational", **options)
+    assert outcome.status == "solved", outcome.message
+    report = replay(outcome.trace)
+    assert report.ok, [d.describe() for d in report.disagreements]
+    return outcome
+
+
+def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode):
+    """`clean_plan` of `goal_node` over a network of `units` from a kitchen of `kitchen_nodes`."""
+    return clean_plan(Foon(tuple(units)), Kitchen(frozenset(kitchen_nodes)),
+                      Goal(GoalSpec(goal_node.label), (goal_node,)))
+
+
+def clean_dish_plan(path: Path):
+    """`clean_plan` of a recipe file's (first) dish from its default kitchen, 60 s."""
+    foon, _ = load([path])
+    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+    return clean_plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), time_limit=60)
