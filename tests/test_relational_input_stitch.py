@@ -5,10 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, inside, n
+from relational_checks import clean_dish_plan
 
-from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
-from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.input_stitch import stitches, with_stitches
 from foon2pddl.pddl.instance_counts import InstanceCounts
@@ -94,12 +94,7 @@ def test_a_made_object_changed_later_is_not_read_for_an_earlier_node():
 
 
 def test_roasted_brussel_sprouts_solve_replay_clean_with_the_stitch_reported():
-    path = DATA / "0036-roasted_brussels_sprouts.txt"
-    foon, _ = load([path])
-    goal = resolve_goal(spec_of_node(next(x for x in foon.nodes if x.dish is not None)), foon)
-    outcome = plan(foon, default_kitchen(foon), goal, "relational", time_limit=60)
-    assert outcome.status == "solved", outcome.message
-    assert replay(outcome.trace).ok
+    outcome = clean_dish_plan(DATA / "0036-roasted_brussels_sprouts.txt")
     assert any("0036-roasted_brussels_sprouts.txt:135: shake" in x and "assumes uncooked" in x
                for x in outcome.compiled.notes)
 
@@ -150,11 +145,6 @@ def test_objects_are_counted_for_foons_plan_and_for_the_stitched_one():
 def test_scrambled_eggs_solve_replay_clean_through_the_cooked_omelette():
     # the pour takes the omelette the cook leaves (its list read as the cook's); FOON's own plan makes no bacon
     # (it takes that omelette from the kitchen), so the objects counted for it alone had none for the sprinkle
-    path = DATA / "0050-scrambled_eggs_with_bacon-cheese.txt"
-    foon, _ = load([path])
-    goal = resolve_goal(spec_of_node(next(x for x in foon.nodes if x.dish is not None)), foon)
-    outcome = plan(foon, default_kitchen(foon), goal, "relational", time_limit=60)
-    assert outcome.status == "solved", outcome.message
-    assert replay(outcome.trace).ok
+    outcome = clean_dish_plan(DATA / "0050-scrambled_eggs_with_bacon-cheese.txt")
     assert any(":288: pour takes omelette" in x and "assumes contains {cheese, egg mixture, onion}" in x
                for x in outcome.compiled.notes)
