@@ -41,12 +41,13 @@ def _nested(a: Iterable, b: Iterable) -> bool:
 
 
 def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNode],
-                     makers: Sequence[FunctionalUnit] | None = None) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
+                     makers: Foon | None = None) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
     """K -> (P, the unit making P) for each kitchen container a task of `units` reads as an output of one of
-    `makers` (the network's units; default `units`; module doc). Names are read as in that task: a universal
+    `makers` (the network; default the task's units; module doc). Names are read as in that task: a universal
     FOON's `sugar` is a label of its own, a dish's task may read it as `refined sugar`. O(kitchen containers x
     units x outputs)."""
-    kitchen, makers = frozenset(kitchen), units if makers is None else makers
+    kitchen, task = frozenset(kitchen), Foon(tuple(units))
+    makers = task if makers is None else makers
     made = {o for u in makers for o in u.outputs}
     full = sorted(k for k in kitchen if listed(k) and k not in made)
     labels = {n.label for u in units for n in (*u.inputs, *u.outputs)}
@@ -55,16 +56,15 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     def read(names: Iterable[str]) -> frozenset[str]:
         return frozenset(alias.get(x, x) for x in names)
 
-    outputs, takers = _outputs_by_label(makers), _takers(units)
     out = {}
     for k in full:
         items = read(listed(k))
-        taken = {x for u in takers.get(k, ()) for x in u.inputs
+        taken = {x for u in _takers(task, k) for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
         found = {}
-        for p, u in outputs.get(k.label, ()):
+        for p, u in _outputs_of(makers, k.label):
             if k in u.inputs:  # what a unit makes of K is K after it, not K
                 continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
@@ -74,10 +74,10 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
                 found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
-    return out | _taken_off(units, kitchen, makers, made)
+    return out | _taken_off(task, kitchen, makers, made)
 
 
-def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], makers: Sequence[FunctionalUnit],
+def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
                made: set[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
     """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off or
     works on a container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains
@@ -85,14 +85,13 @@ def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], 
     K's states and a place in or on such a container (the cover's `blender lid (on [blender cup])`). The unit
     making P may take K itself (the pick-and-place puts the kitchen's `watermelon (whole)` on the board the slice
     cuts it on): it keeps K, the others take P. O(kitchen x units x outputs)."""
-    outputs, takers = _outputs_by_label(makers), _takers(units)
     out = {}
     for k in sorted(x for x in kitchen if not places(x) and x not in made):
         off = {u: {i.label for i in u.inputs if k.label in listed(i)
                    and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)}
-               for u in takers.get(k, ())}
+               for u in _takers(task, k)}
         found: dict[ObjectNode, FunctionalUnit] = {}
-        for p, u in outputs.get(k.label, ()) if off else ():
+        for p, u in _outputs_of(makers, k.label) if off else ():
             others = [h for t, h in off.items() if t != u]
             if (_rest(k) <= _rest(p) and others and all(others)
                     and {c for _, c in places(p)} & frozenset().union(*others)):
@@ -102,22 +101,15 @@ def _taken_off(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode], 
     return out
 
 
-def _outputs_by_label(units: Sequence[FunctionalUnit]) -> dict[str, list[tuple[ObjectNode, FunctionalUnit]]]:
-    """label -> (output node, its unit) in the units' order: the candidates P of a kitchen node K of that label."""
-    out: dict[str, list[tuple[ObjectNode, FunctionalUnit]]] = {}
-    for u in units:
-        for p in u.outputs:
-            out.setdefault(p.label, []).append((p, u))
-    return out
+def _outputs_of(foon: Foon, label: str) -> list[tuple[ObjectNode, FunctionalUnit]]:
+    """(output node, a unit making it) of `label`, from the network's indexes (`Foon.produced_by_label`,
+    `Foon.producers`): the candidates P of a kitchen node K of that label, each node's first maker first."""
+    return [(p, foon.units[i]) for p in foon.produced_by_label.get(label, ()) for i in foon.producers[p]]
 
 
-def _takers(units: Sequence[FunctionalUnit]) -> dict[ObjectNode, list[FunctionalUnit]]:
-    """node -> the units taking it, in the units' order."""
-    out: dict[ObjectNode, list[FunctionalUnit]] = {}
-    for u in units:
-        for i in dict.fromkeys(u.inputs):
-            out.setdefault(i, []).append(u)
-    return out
+def _takers(foon: Foon, node: ObjectNode) -> list[FunctionalUnit]:
+    """The units taking `node` (`Foon.consumers`)."""
+    return [foon.units[i] for i in foon.consumers.get(node, ())]
 
 
 Stitches = dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]
@@ -132,7 +124,7 @@ def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]
     `kitchen_stitches`), a round per kitchen node at most."""
     stitches: Stitches = {}
     units = relevant(inp)
-    while new := kitchen_stitches([inp.foon.units[u] for u in units], inp.kitchen, inp.foon.units):
+    while new := kitchen_stitches([inp.foon.units[u] for u in units], inp.kitchen, inp.foon):
         stitches |= new
 
         def unit(u: FunctionalUnit, new: Stitches = new) -> FunctionalUnit:
