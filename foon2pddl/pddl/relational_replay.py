@@ -25,18 +25,18 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
+from .encode_instances import NOT_MADE
 from .holder_words import task_aliases
 from .holders import relational_roles, unit_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
+from .relational_sweep import CONSUMED
 from .task import Atom, PlanningTask, apply_action, type_closure
 from .trace_view import TraceView, changed, show_node
 
 __all__ = ["RELATIONAL_VIEW", "relational_json", "relational_text", "relational_trace", "step_words"]
 
 _RELATIONS = {r.value for r in Relation}
-#: The state constants that are no FOON node.
-_NOT_MADE, _CONSUMED = "not-yet-made", "consumed"
 
 
 def _holders(facts: set[Atom]) -> dict[str, tuple[str, Relation]]:
@@ -58,9 +58,9 @@ def _states(task: PlanningTask, facts: set[Atom], last: dict[str, ObjectNode | N
     consumed: set[str] = set()
     for a in sorted(facts):
         if a.predicate == "is" and len(a.args) == 2 and a.args[0] in node:
-            if a.args[1] == _CONSUMED:
+            if a.args[1] == CONSUMED:
                 consumed.add(a.args[0])
-            elif a.args[1] != _NOT_MADE:
+            elif a.args[1] != NOT_MADE:
                 if node[a.args[0]] is not None:  # an encoding whose effects set two states: say so, never pick one
                     raise PlanDecodeError(f"{a.args[0]} is {node[a.args[0]].describe()!r} and "
                                           f"{nodes[a.args[1]].describe()!r} at once")
