@@ -11,7 +11,7 @@ from relational_checks import clean_dish_plan, clean_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
-from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
@@ -130,3 +130,14 @@ def test_the_unit_that_puts_a_kitchen_object_on_the_holder_keeps_it_and_the_othe
     outcome = clean_plan(foon, default_kitchen(foon), Goal(GoalSpec("watermelon"), (halved,)))
     assert [o.id for o in outcome.trace.objects if o.label == "watermelon"] == ["watermelon_1"]
     assert outcome.tree.units == (put, cut)
+
+
+def test_what_a_unit_makes_in_a_kitchen_container_is_a_goal_only_once_the_unit_has_made_it():
+    # the experiment's chipotle: the kitchen's closed packet lists a chipotle, whose object starts in the one
+    # node of its label in a packet, `chipotle (dried, in [packet])`; FOON makes that node by opening the packet
+    # (0005-chipotle-bean_sandwich.txt:75), so the goal is reached by the open, not by the kitchen's object
+    closed, dried = n("packet", contains("chipotle")), n("chipotle", "dried", inside("packet"))
+    opening = FunctionalUnit((closed,), Motion("open"), (n("packet", contains("chipotle"), "opened"), dried))
+    outcome = clean_plan(Foon((opening,)), Kitchen(frozenset({closed})), Goal(GoalSpec("chipotle"), (dried,)))
+    assert [u.motion.label for u in outcome.tree.units] == ["open"]
+    assert outcome.validation.ok, outcome.validation.problems

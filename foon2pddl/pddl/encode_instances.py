@@ -81,6 +81,7 @@ NOT_MADE = "not-yet-made"
 PRECEDES = "precedes"
 LANE = "lane"
 TOGETHER = "together"
+GOAL_OBJECT = "goal-object"
 STATE_TYPE = "object-state"
 ROOT_TYPE = "physical-object"
 
@@ -235,17 +236,24 @@ def count_lines(counts: InstanceCounts) -> tuple[str, ...]:
     return (f"instances: {counts.total} ({shown}{more})",)
 
 
-def goal_actions_over_objects(candidates, stable, table: NameTable, const, type_of, options: EncodeOptions
-                              ) -> list[Action]:
+def goal_actions_over_objects(candidates, stable, table: NameTable, const, type_of, options: EncodeOptions,
+                              made_by_units: dict | None = None) -> list[Action]:
     """One `reach-goal-<i>` action per goal candidate: "some object is in the candidate's state" (through
     `(occupied s)` when the candidate's node is stable, else a parameter). Shared by the encodings over
-    physical objects; kept even when no object can reach a candidate."""
+    physical objects; kept even when no object can reach a candidate.
+
+    `made_by_units` maps a candidate to the objects that may reach it, when others start in its state without
+    the kitchen holding it (`relational`: a closed packet's chipotle starts as the `chipotle (dried, in
+    [packet])` FOON makes by opening the packet): that candidate's action also needs `(goal-object ?x)`,
+    a static fact of the objects that may, so only a unit's product reaches the goal."""
+    made_by_units = made_by_units or {}
     out = []
     for i, c in enumerate(candidates, start=1):
-        stable_goal = c in stable
+        stable_goal = c in stable and c not in made_by_units
+        pre = (Atom(OCCUPIED, (const[c],)),) if stable_goal else (Atom(IS, ("?x", const[c])),)
         out.append(Action(
             table.name(f"reach-goal-{i}", key=("goal-action", i)),
-            pre=(Atom(OCCUPIED, (const[c],)) if stable_goal else Atom(IS, ("?x", const[c])),),
+            pre=pre + ((Atom(GOAL_OBJECT, ("?x",)),) if c in made_by_units else ()),
             add=(Atom(GOAL_REACHED),), params=() if stable_goal else (("?x", type_of[c.label]),),
             cost=goal_cost(options.costs), comment=(f"goal candidate {i}: {c.describe()}",), candidate=c,
         ))

@@ -58,6 +58,7 @@ from ..model.places import describes_contents, place_of, places
 from . import relational_plan
 from .costs import unit_cost
 from .encode_instances import (
+    GOAL_OBJECT,
     IS,
     NOT_MADE,
     OCCUPIED,
@@ -125,7 +126,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
 
     table = NameTable()
-    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, STATE_TYPE, ROOT_TYPE):
+    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE):
         table.reserve(name)
     nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
     for u in units:
@@ -170,7 +171,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     actions = [replace(_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
                                     container_labels, inside, empties[u], loose, dust), unit=origin.get(u, u))
                for u in units]
-    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options))
+    live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
+    # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
+    # check's kitchen too; a candidate an object starts in beyond it is reached only by what units make
+    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
+    early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
+             and any(x.start == c for x in instances)}
+    made = {c: tuple(x.name for x in instances if x.label == c.label and x.start != c) for c in early}
+    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, made))
+    init.extend(Atom(GOAL_OBJECT, (x,)) for x in sorted({x for xs in made.values() for x in xs}))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
     predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
@@ -179,8 +188,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                   Predicate(GOAL_REACHED, comment="a goal candidate was made")]
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
+    if made:
+        predicates.append(Predicate(GOAL_OBJECT, (("?x", ROOT_TYPE),), "?x may reach the goal: no kitchen object"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
-    live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(mutual)
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live]
     notes, commented = reported(found)
@@ -196,9 +206,6 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)),
     )
-    # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
-    # check's kitchen too
-    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 
