@@ -71,3 +71,57 @@ def test_skills_md_says_how_long_the_relational_try_takes_by_default():
     default = next(p.default for p in plan_command.params if p.name == "time_limit")
     text = " ".join((ROOT / "docs" / "skills.md").read_text().split())
     assert f"after {default * FIRST_SHARE:g} s, a quarter of the default {default:g} s limit" in text
+
+
+def _prose(page: str) -> str:
+    return " ".join((ROOT / "docs" / page).read_text().split())
+
+
+def test_pddl_md_says_one_count_of_the_dishes_instances_solves():
+    """pddl.md's `state` note said "`instances` solves 88" while its figures table (bench.pddl_subgraphs)
+    and the replay figures say 89: a reader comparing the encodings gets two answers."""
+    text = _prose("pddl.md")
+    table = re.search(r"\| `instances` \| (\d+) \| (\d+) \| (\d+) \|", text)
+    assert table, "the figures table has an `instances` row"
+    said = set(re.findall(r"`instances` solves (\d+)", text))
+    assert said == {table.group(2)}, f"pddl.md says `instances` solves {sorted(said)}; its table: {table.group(2)}"
+
+
+def test_pddl_md_native_tree_figures_are_what_the_bench_gives():
+    """pddl.md quotes `python -m bench.physical_replay --native -v` (one object per kitchen item): its counts
+    of executable, short and used-up trees must be what that bench gives on the shipped subgraphs."""
+    from collections import Counter
+
+    from bench.physical_replay import native_rows
+
+    rows = native_rows(ROOT / "tests" / "data" / "foon-subgraphs")
+    got = Counter(r.verdict for r in rows)
+    text = _prose("pddl.md")
+    m = re.search(r"--native -v`\), one object per kitchen item: (\d+) executable, (\d+) short .*? (\d+) used-up", text)
+    assert m, "pddl.md quotes the native schedule's counts"
+    assert (len(rows), *map(int, m.groups())) == (89, got["executable"], got["short"], got["used-up"])
+
+
+#: Paragraphs quoting a bench's figures (page, words that open the paragraph or table row): a figure a later
+#: change moves is only comparable when the text says which commit gave it.
+BENCH_FIGURES = (
+    ("pddl.md", "Figures (`python -m bench.physical_replay -v`"),
+    ("pddl.md", "On the 89 native trees of the shared dishes (`python -m bench.physical_replay"),
+    ("skills.md", "`python -m bench.skills` (also an area of `python -m bench`)"),
+)
+
+
+@pytest.mark.parametrize(("page", "opening"), BENCH_FIGURES, ids=[f"{p}: {o[:40]}" for p, o in BENCH_FIGURES])
+def test_bench_figures_name_the_commit_they_are_from(page, opening):
+    """pddl.md's physical-replay figures were from before lanes (1,614 of 1,686 steps; the bench now gives
+    1,759 of 1,800) and said nothing of when: the paragraph names the commit its figures are from."""
+    import subprocess
+
+    text = (ROOT / "docs" / page).read_text()
+    start = text.index(opening)
+    paragraph = text[start:text.find("\n\n", text.find("\n\n", start) + 2)]  # the paragraph and what follows
+    commits = re.findall(r"\b(?:at|commit) ([0-9a-f]{7,40})\b", paragraph)
+    assert commits, f"{page}: the figures after {opening!r} name no commit"
+    for sha in commits:
+        known = subprocess.run(["git", "-C", str(ROOT), "cat-file", "-e", f"{sha}^{{commit}}"], capture_output=True)
+        assert known.returncode == 0, f"{page}: {sha} is no commit of this repository"
