@@ -109,6 +109,7 @@ BENCH_FIGURES = (
     ("pddl.md", "On the 89 native trees of the shared dishes (`python -m bench.physical_replay"),
     ("skills.md", "`python -m bench.skills` (also an area of `python -m bench`)"),
     ("planning.md", "(pyperplan's default search is blind breadth-first"),  # said 58 s; 10 s of CPU, 25 s wall
+    ("pddl.md", "`instances` (`python -m bench.pddl_instances -v`"),
 )
 
 
@@ -142,3 +143,12 @@ def test_generalization_md_says_one_gen_unit_count(universal):
     now = re.search(r"FOON-GEN construction \| .*?; ([\d,]+) now", text)
     assert table and now
     assert {int(table.group(1)), int(now.group(1).replace(",", ""))} == {units}
+
+
+def test_pddl_md_counts_the_instances_plans_steps_once():
+    """pddl.md gave the 89 `instances` plans 1,840 unit steps (bench.pddl_instances, when lanes came) and 1,800
+    (bench.physical_replay, the same plans now): both paragraphs quote the one count."""
+    text = _prose("pddl.md")
+    counted = re.search(r"([\d,]+) unit steps against `tree`'s", text)
+    replayed = re.search(r"of their ([\d,]+) unit steps are followed", text)
+    assert counted and replayed and counted.group(1) == replayed.group(1)
