@@ -111,7 +111,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
     silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
                                           if c not in names and not any(head_of(c, x) for x in names)}
-    plans = {u: plan_unit(f.units[u], inp.kitchen, silent, filled) for u in units}
+    plans = {u: plan_unit(f.units[u], inp.kitchen, silent, filled, frozenset(n.label for n in task_nodes)) for u in units}
     by_unit = {f.units[u]: p for u, p in plans.items()}
     def roles_of(unit):
         return count_roles(by_unit[unit]) if unit in by_unit else ()

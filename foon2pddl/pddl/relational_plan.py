@@ -113,17 +113,18 @@ def silent_labels(nodes: Iterable[ObjectNode]) -> frozenset[str]:
     return frozenset(n.label for n in nodes) - describing
 
 
-def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]]) -> bool:
-    """Whether the task's units fill holders named `holder` (or a label it is the head of: `pan`, `cooking
-    pan`) with `label`."""
-    return any(x == label and (h == holder or h.endswith(" " + holder)) for h, x in filled)
+def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str]) -> bool:
+    """Whether the task's units fill holders named `holder` (or, when no object of the task has that label, a
+    label it is the head of: `pan`, `cooking pan`) with `label`. A `cup` in a task with cups is a cup, not the
+    blender cup another recipe of a universal FOON fills."""
+    return any(x == label and (h == holder or (holder not in labels and h.endswith(" " + holder))) for h, x in filled)
 
 
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
-              filled: frozenset[tuple[str, str]]) -> UnitPlan:
+              filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
-    no node says the contents of (`silent_labels`), and whose units put contents into holders as `filled`
-    says ((holder label, content label), `holders.gained`; module doc)."""
+    no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
+    says ((holder label, content label), `holders.gained`; module doc), and whose nodes have `labels`."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -147,11 +148,11 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
                               for x in rels)):
                 fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
-        elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled)
+        elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled, labels)
               and (src.relation, src.holder) not in made_at):
             late_empties = True  # consumed out of a container the unit does not name (and makes nothing in)
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
-            if _fills(src.holder, r.role.label, filled) or r.target is None:
+            if _fills(src.holder, r.role.label, filled, labels) or r.target is None:
                 late_empties = True  # whichever container holds it is emptied of it (it ends in no place)
             else:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
