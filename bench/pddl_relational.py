@@ -1,13 +1,15 @@
 """The `relational` encoding against `instances` and `tree` on each subgraph alone (dish goal, default kitchen).
 
-`python -m bench.pddl_relational [--shared DIR] [--time-limit S] [--limit N] [--encodings E,E] [-v]`
+`python -m bench.pddl_relational [--shared DIR] [--universal] [--time-limit S] [--limit N] [--encodings E,E] [-v]`
 plans every subgraph with `tree`, `instances` and `relational` (`planners.solve.plan`,
 Fast Downward lama-first) and reports per encoding: solved, plans whose trace
 passes the relational replay (`planners.physical_replay`, zero disagreements;
 `instances` traces have no holders, so its figure counts what a holder-blind
 plan gets wrong), disagreements by kind, unit steps and objects per task
 (median, worst), translate+search seconds (median, worst). `-v`: one line per
-file and encoding. As a bench area (`run(ctx)`) it reports the counts.
+file and encoding. `--universal`: the merge of all subgraphs (issue 21's universal
+floor), its default kitchen, each reachable dish a goal (as `bench.pddl_instances
+--universal`); a row's `file` is the goal node. As a bench area (`run(ctx)`) it reports the counts.
 """
 
 from __future__ import annotations
@@ -15,13 +17,16 @@ from __future__ import annotations
 import argparse
 import collections
 import statistics
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
+from foon2pddl.analysis.reachability import reachable
 from foon2pddl.errors import FoonError
 from foon2pddl.io.files import expand_paths, load
-from foon2pddl.model.goal import resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.foon import Foon
+from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 
@@ -52,7 +57,12 @@ def check_file(path: Path, time_limit: float, encodings: tuple[str, ...] = ENCOD
         goal = resolve_goal(spec_of_node(dishes[0]), foon)
     except FoonError:
         return []
-    kitchen = default_kitchen(foon)
+    return check_goal(path.name, foon, default_kitchen(foon), goal, time_limit, encodings)
+
+
+def check_goal(name: str, foon: Foon, kitchen: Kitchen, goal: Goal, time_limit: float,
+               encodings: tuple[str, ...] = ENCODINGS) -> list[Row]:
+    """One row per encoding: `goal` planned over `foon` from `kitchen`, its trace replayed."""
     rows = []
     for enc in encodings:
         out = plan(foon, kitchen, goal, enc, time_limit=time_limit)
@@ -61,9 +71,21 @@ def check_file(path: Path, time_limit: float, encodings: tuple[str, ...] = ENCOD
         if out.trace is not None:
             kinds = tuple(str(d.kind) for d in replay(out.trace).disagreements)
         steps = len(out.trace.steps) if out.trace is not None else (len(out.tree) if out.tree is not None else 0)
-        rows.append(Row(path.name, enc, str(out.status), steps, len(out.task.instances), kinds, seconds,
+        rows.append(Row(name, enc, str(out.status), steps, len(out.task.instances), kinds, seconds,
                         out.message.splitlines()[0][:200] if out.message else ""))
     return rows
+
+
+def universal_rows(shared: Path, time_limit: float, limit: int | None = None,
+                   encodings: tuple[str, ...] = ENCODINGS) -> Iterator[Row]:
+    """The merged subgraphs, default kitchen, every dish its kitchen can make a goal (sorted; the first `limit`)."""
+    foon, _ = load([shared / "foon-subgraphs"])
+    kitchen = default_kitchen(foon)
+    reach = reachable(foon, kitchen.nodes)
+    dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
+    for dish in dishes[:limit]:
+        yield from check_goal(dish.describe(), foon, kitchen, resolve_goal(spec_of_node(dish), foon), time_limit,
+                              encodings)
 
 
 def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
@@ -77,7 +99,8 @@ def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
             clean = [r for r in traced if not r.kinds]
             kinds = collections.Counter(k for r in traced for k in r.kinds)
             bad_plans = collections.Counter(k for r in traced for k in set(r.kinds))
-            line += (f"; plans with zero replay disagreements {len(clean)}/{len(traced)}; "
+            line += (f"; plans with zero replay disagreements {len(clean)}/{len(traced)} "
+                     f"({sum(r.status == 'solved' for r in clean)} of them solved: valid and replay-clean); "
                      f"disagreements {sum(kinds.values())} ("
                      + ", ".join(f"{k} {v} in {bad_plans[k]} plans" for k, v in kinds.most_common()) + ")")
             objs = [r.objects for r in traced]
@@ -105,20 +128,23 @@ def run(ctx: Context) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--shared", type=Path, default=Path(__file__).resolve().parent.parent / "tests" / "data")
+    ap.add_argument("--universal", action="store_true", help="the merged subgraphs, every reachable dish a goal")
     ap.add_argument("--time-limit", type=float, default=60.0)
     ap.add_argument("--limit", type=int, default=None)
     ap.add_argument("--encodings", default=",".join(ENCODINGS), help="comma-separated, of " + ", ".join(ENCODINGS))
     ap.add_argument("-v", "--verbose", action="store_true")
     args = ap.parse_args()
     encodings = tuple(e for e in args.encodings.split(",") if e)
+    found = (universal_rows(args.shared, args.time_limit, args.limit, encodings) if args.universal
+             else (r for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]
+                   for r in check_file(f, args.time_limit, encodings)))
     rows = []
-    for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]:
-        for r in check_file(f, args.time_limit, encodings):
-            rows.append(r)
-            if args.verbose:
-                kinds = collections.Counter(r.kinds)
-                print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\t"
-                      f"{r.seconds:.2f}s\t{dict(kinds)}\t{r.message}", flush=True)
+    for r in found:
+        rows.append(r)
+        if args.verbose:
+            kinds = collections.Counter(r.kinds)
+            print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\t"
+                  f"{r.seconds:.2f}s\t{dict(kinds)}\t{r.message}", flush=True)
     print(summary(rows, encodings))
 
 

@@ -1,10 +1,12 @@
 """Relational readings that only the universal FOON (many recipes in one network) puts to the test: a name one
-recipe uses for its own label must not be read as another recipe's longer label."""
+recipe uses for its own label must not be read as another recipe's longer label; and the bench of the universal floor."""
 
 from __future__ import annotations
 
+from conftest import SHARED
 from node_words import contains, inside, n
 
+from bench.pddl_relational import universal_rows
 from foon2pddl.model.foon import FunctionalUnit, Motion
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
@@ -38,3 +40,10 @@ def test_the_universal_bread_toast_is_clean(universal):
     outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=60)
     assert outcome.status == "solved", outcome.message
     assert replay(outcome.trace).ok
+
+
+def test_the_bench_plans_the_universal_foons_reachable_dishes_in_order():
+    # `python -m bench.pddl_relational --universal`: issue 21's universal floor, one row per goal and encoding
+    rows = list(universal_rows(SHARED, 60.0, limit=1, encodings=("relational",)))
+    assert [(r.file, r.encoding, r.status, r.kinds) for r in rows] == [
+        ("barbecued ribs (cooked, on [baking tray])", "relational", "solved", ())]
