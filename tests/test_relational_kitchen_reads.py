@@ -132,6 +132,24 @@ def test_the_unit_that_puts_a_kitchen_object_on_the_holder_keeps_it_and_the_othe
     assert outcome.tree.units == (put, cut)
 
 
+
+def test_every_unit_that_puts_the_kitchen_object_on_the_holder_keeps_it():
+    # the universal FOON's watermelon lemonade: the smoothie (0021, line 19) puts `watermelon (whole)` on a
+    # `cutting board (clean)` too, and makes the same node as the lemonade's own pick-and-place. It took K and no
+    # container, so the reading was dropped and the slice cut a second watermelon while the first stayed on the
+    # board it empties. Each unit making the output keeps K; the others take what they made.
+    whole, placed = n("watermelon", "whole"), n("watermelon", "whole", make_state("on", "cutting board"))
+    full = n("cutting board", contains("watermelon"))
+    put = FunctionalUnit((whole, n("cutting board", "empty")), Motion("pick-and-place"), (full, placed))
+    also = FunctionalUnit((whole, n("cutting board", "clean")), Motion("pick-and-place"), (full, placed))
+    halved = n("watermelon", "halved", make_state("on", "cutting board"))
+    cut = FunctionalUnit((full, whole, n("knife")), Motion("slice"), (halved,))
+    foon = Foon((also, put, cut))
+    assert kitchen_stitches(foon.units, default_kitchen(foon).nodes)[whole][0] == placed
+    outcome = clean_plan(foon, default_kitchen(foon), Goal(GoalSpec("watermelon"), (halved,)))
+    assert [o.id for o in outcome.trace.objects if o.label == "watermelon"] == ["watermelon_1"]
+
+
 def test_what_a_unit_makes_in_a_kitchen_container_is_a_goal_only_once_the_unit_has_made_it():
     # the experiment's chipotle: the kitchen's closed packet lists a chipotle, whose object starts in the one
     # node of its label in a packet, `chipotle (dried, in [packet])`; FOON makes that node by opening the packet

@@ -84,7 +84,8 @@ def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
     {watermelon juice}, covered {blender lid})`, whose output node no longer lists the lid): the one output P with
     K's states and a place in or on such a container (the cover's `blender lid (on [blender cup])`). The unit
     making P may take K itself (the pick-and-place puts the kitchen's `watermelon (whole)` on the board the slice
-    cuts it on): it keeps K, the others take P. O(kitchen x units x outputs)."""
+    cuts it on): it keeps K, and so does every other unit making P (a universal FOON's smoothie puts it on a board
+    in the same words), the others take P. O(kitchen x units x outputs)."""
     out = {}
     for k in sorted(x for x in kitchen if not places(x) and x not in made):
         off = {u: {i.label for i in u.inputs if k.label in listed(i)
@@ -92,7 +93,7 @@ def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
                for u in _takers(task, k)}
         found: dict[ObjectNode, FunctionalUnit] = {}
         for p, u in _outputs_of(makers, k.label) if off else ():
-            others = [h for t, h in off.items() if t != u]
+            others = [h for t, h in off.items() if p not in t.outputs]  # every unit making P keeps K
             if (_rest(k) <= _rest(p) and others and all(others)
                     and {c for _, c in places(p)} & frozenset().union(*others)):
                 found.setdefault(p, u)
@@ -128,7 +129,7 @@ def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]
         stitches |= new
 
         def unit(u: FunctionalUnit, new: Stitches = new) -> FunctionalUnit:
-            read = {k: p for k, (p, maker) in new.items() if k in u.inputs and maker != u}  # its maker keeps K
+            read = {k: p for k, (p, _) in new.items() if k in u.inputs and p not in u.outputs}  # its makers keep K
             if not read:
                 return u
             return FunctionalUnit(tuple(dict.fromkeys(read.get(n, n) for n in u.inputs)), u.motion, u.outputs,
