@@ -152,3 +152,38 @@ def test_pddl_md_counts_the_instances_plans_steps_once():
     counted = re.search(r"([\d,]+) unit steps against `tree`'s", text)
     replayed = re.search(r"of their ([\d,]+) unit steps are followed", text)
     assert counted and replayed and counted.group(1) == replayed.group(1)
+
+
+def _resolves(dotted: str) -> bool:
+    """Whether `a.b.c` names a module, or an attribute of the longest module prefix that imports."""
+    import importlib
+
+    parts = dotted.split(".")
+    for k in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:k]))
+        except ImportError:
+            continue
+        for name in parts[k:]:
+            if not hasattr(obj, name):
+                return False
+            obj = getattr(obj, name)
+        return True
+    return False
+
+
+def test_every_dotted_name_the_docs_give_imports():
+    """json-schema.md said `foon2pddl.jsonio` (it is `foon2pddl.io.jsonio`), planning.md
+    `foon2pddl.pddl.solve.GoalReplanner` (in `planners.solve`), retrieval.md `foon2pddl.tasktree.validate`
+    (in `model.tasktree`): a reader who types them gets an ImportError. Every `foon2pddl.x.y` a page names,
+    and every `pddl.x`, `planners.x`, ... it names inside the package, is importable."""
+    subpackages = "model|io|analysis|retrieval|generalize|pddl|planners|skills|experiment|cli"
+    named = re.compile(rf"`((?:foon2pddl|{subpackages})(?:\.[A-Za-z_]\w*)+)")
+    wrong = []
+    for page in PAGES:
+        for number, line in enumerate(page.read_text().splitlines(), start=1):
+            for m in named.finditer(line):
+                dotted = m.group(1) if m.group(1).startswith("foon2pddl.") else "foon2pddl." + m.group(1)
+                if dotted != "foon2pddl.foon" and not _resolves(dotted):  # the JSON format's name (json-schema.md)
+                    wrong.append(f"{page.name}:{number}: {m.group(1)}")
+    assert not wrong
