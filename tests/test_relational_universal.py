@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from conftest import SHARED
 from node_words import contains, inside, n
+from relational_checks import clean_unit_plan
 
 from bench.pddl_relational import universal_rows
 from foon2pddl.model.foon import FunctionalUnit, Motion
@@ -47,3 +48,22 @@ def test_the_bench_plans_the_universal_foons_reachable_dishes_in_order():
     rows = list(universal_rows(SHARED, 60.0, limit=1, encodings=("relational",)))
     assert [(r.file, r.encoding, r.status, r.kinds) for r in rows] == [
         ("barbecued ribs (cooked, on [baking tray])", "relational", "solved", ())]
+
+
+def test_what_was_kneaded_into_an_object_leaves_the_unnamed_holder_with_it():
+    # kofta (ACT-0054, lines 91-162; only the universal FOON makes its kofta mix, from ACT-0053): salt, paprika and
+    # scallion are sprinkled onto the baking tray, kneaded into the kofta mix there, and the shape takes the mix
+    # off a tray it does not name. The tray was emptied of the kofta mix only, so it still listed the paprika
+    # that is in the mix (claimed twice). It is emptied of what the task's units put into the mix too.
+    tray = n("baking tray", contains("dough"))
+    dough = n("dough", inside("baking tray"))
+    salted = n("baking tray", contains("dough", "salt"))
+    salt_on = n("salt", "granulated", inside("baking tray"))
+    sprinkle = FunctionalUnit((tray, n("bowl", contains("salt")), n("salt", "granulated", inside("bowl"))),
+                              Motion("sprinkle"), (salted, salt_on))
+    kneaded = n("dough", contains("salt"), inside("baking tray"), "kneaded")
+    knead = FunctionalUnit((salted, dough, salt_on), Motion("knead"), (kneaded,))
+    shaped = n("dough", contains("salt"), "shaped")
+    shape = FunctionalUnit((kneaded,), Motion("shape"), (shaped,))
+    outcome = clean_unit_plan((sprinkle, knead, shape), {tray, dough, *sprinkle.inputs[1:]}, shaped)
+    assert outcome.trace.final["baking_tray_1"].node == n("baking tray", "empty")

@@ -89,6 +89,9 @@ class Slot:
     #: `MOVES` out of a holder the unit does not name, which the task's units fill with it: whichever holds
     #: it no longer lists it
     late_empties: bool = False
+    #: with `late_empties`: what the task's units put into the object, which leaves that holder's list with it
+    #: (the paprika kneaded into the kofta mix on the tray)
+    along: frozenset[str] = frozenset()
 
 
 @dataclass(frozen=True)
@@ -160,7 +163,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
             after, portion = None, r.after
         elif fate is Fate.CONSUMED:
             after = None
-        slots.append(Slot(r, fate, after, portion, late_empties))
+        along = frozenset(x for h, x in filled if h == r.role.label) if late_empties else frozenset()
+        slots.append(Slot(r, fate, after, portion, late_empties, along))
     flows = unit_flows(unit)
     for f in flows:  # a container FOON leaves out of the outputs, poured out whole, is emptied of what left it
         if rels[f.holder].role.after is None:
@@ -216,12 +220,13 @@ def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
                  alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
     """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
     label that lists the object's label, with the node it becomes (`without` all that leaves holders of that
-    label in the unit: the beef and the onion leave the pan at once)."""
+    label in the unit: the beef and the onion leave the pan at once, and what was put into them, `Slot.along`)."""
     out = {}
     group: dict[str, set[str]] = {}  # holder label -> what leaves holders of it in this unit (all at once)
     for s in plan.slots:
         if s.late_empties:
-            group.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).add(s.rel.role.label)
+            group.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).update({s.rel.role.label,
+                                                                                                 *s.along})
     for k, s in enumerate(plan.slots):
         if s.late_empties:
             label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
