@@ -187,3 +187,15 @@ def test_every_dotted_name_the_docs_give_imports():
                 if dotted != "foon2pddl.foon" and not _resolves(dotted):  # the JSON format's name (json-schema.md)
                     wrong.append(f"{page.name}:{number}: {m.group(1)}")
     assert not wrong
+
+
+def test_readme_says_what_make_bench_reads_in_a_clone():
+    """README said `make bench` "needs `../shared/data`"; the Makefile runs it on the copy in tests/data when
+    ../shared/data is not beside the checkout, so a new user's clone runs it as it is."""
+    makefile = (ROOT / "Makefile").read_text()
+    assert "SHARED ?= $(if $(wildcard ../shared/data),../shared/data,tests/data)" in makefile
+    assert "bench: $(STAMP)\n\t$(PY) -m bench --shared $(SHARED)" in makefile
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert "needs `../shared/data`" not in readme
+    assert "`make bench` (speed figures, medians over repeated runs, on `../shared/data` when it is beside the " \
+           "checkout, else on the copy in `tests/data`)" in readme
