@@ -75,6 +75,7 @@ from .holder_words import mismatches, reported, task_aliases
 from .holders import Fate, gained, head_of, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import InstanceCounts, count_reasons, derive_counts
+from .list_drops import kept_in_place
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
 from .pairing import Role
@@ -111,7 +112,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
     silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
                                           if c not in names and not any(head_of(c, x) for x in names)}
-    plans = {u: plan_unit(f.units[u], inp.kitchen, silent, filled, frozenset(n.label for n in task_nodes)) for u in units}
+    plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled,
+                                                         frozenset(n.label for n in task_nodes)) for u in units})
     by_unit = {f.units[u]: p for u, p in plans.items()}
     def roles_of(unit):
         return count_roles(by_unit[unit]) if unit in by_unit else ()
@@ -165,7 +167,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     stable = {n for n in const if n not in left}
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
-    gaps: list[tuple[str, str, str, object]] = []  # (container, content, message, unit)
+    gaps: list[tuple[str, str, str, object]] = list(drops)  # (container, content, message, unit)
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
     actions = [replace(_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
@@ -293,6 +295,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                          "the unit does not name: nothing says that it lists it", unit))
         return late[key]
 
+    moving = {s.rel.role.before for s in slots if s.fate is Fate.MOVES}
     for k, s in enumerate(slots):
         r = s.rel
         label, before = r.role.label, r.role.before
@@ -310,9 +313,11 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
         state(v, label, before)
         after = plan.after_of(k) if bound[k] else s.after
         # what is in or on a consumed object became part of the mixture too, and so did all of its label in its
-        # holder; what is in or on a container a restoring unit empties is thrown away
+        # holder; what is in or on a container a restoring unit empties is thrown away; a role that moves out of it
+        # goes where its node says (the gyoza filling folded from the wrapper into the dumpling)
         sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label)) for node, rel in
-                 inside.get(label, ())] if s.fate is Fate.CONSUMED or (k == 0 and discards(unit)) else []
+                 inside.get(label, ()) if node not in moving] if s.fate is Fate.CONSUMED or (
+                     k == 0 and discards(unit)) else []
         if s.fate is Fate.CONSUMED:
             becomes(v, before, CONSUMED)
             if r.source is not None and r.source.role is not None and bound[r.source.role]:

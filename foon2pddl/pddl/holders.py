@@ -61,9 +61,11 @@ Rules, in order (each reads only the unit itself):
    object: the flour the cup lists beside the mix's `flour (in [bowl])`): what is of that label in it
    follows into the role whose output node newly lists it (`Flow.into`), or became
    part of the mixture (`Flow.into` None; also when that role is a product the unit makes).
-   A container FOON leaves out of the outputs, whose contents another role's output
-   node newly lists, was poured out whole (`bowl (contains {tuna})` into the bowl of
-   mayonnaise): its contents follow, and the task empties it.
+   A container FOON leaves out of the outputs, or gives an output node silent about its
+   contents (`bowl (dirty)`), whose contents another role's output node newly lists,
+   was poured out whole (`bowl (contains {tuna})` into the bowl of mayonnaise): its
+   contents follow, and the task empties it (`list_drops`: unless a later unit takes
+   a label the list dropped from that container).
 6. **Contradictions** (`list_gaps`): an object in a C whose only C does not list it
    (rule 2), a product placed in a container whose output node describes its
    contents and does not list it, and a label an output node newly lists that no
@@ -289,9 +291,10 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
     rels = relational_roles(unit)
     out = []
     for h, r in enumerate(roles):
-        if r.before is None or not describes_contents(after[h]):
+        if r.before is None or not (describes_contents(after[h]) or describes_contents(before[h])):
             continue
-        if r.after is None:  # a container poured out whole: what another role's output node newly lists follows
+        if r.after is None or not describes_contents(after[h]):  # poured out whole (no output node, or one silent
+            # about its contents: `bowl (dirty)`): what another role's output node newly lists follows
             for lab in sorted(listed(before[h]) - labels):
                 into = [j for j in _takers(unit, lab, h) if roles[j].before is not None]
                 if into:

@@ -19,6 +19,11 @@ A stitch reads the input as the made node, on FOON's evidence in the unit itself
   and stir makes `filling (contains {...})` and `cooking pan (contains {filling})`: the pour after it takes
   `filling (contains {...}, in [cooking pan])`). Anything else is ambiguous and not stitched.
 
+An input naming no place and no contents (an appliance: the turn on's `oven (off (ready))`) is read as the one
+node of its label, made by another unit, that names no place and no contents and that no unit takes (the remove's
+`oven (off)`: where a unit left the object and nothing goes on from); two such are ambiguous. A state with a word
+in parentheses says both words (`off (ready)` says `off` and `ready`).
+
 What a stitch drops or assumes is said (`Stitch.describe`): the states N has that M lacks are assumed (`uncooked`),
 those M has that N lacks are dropped. Only words are added (a list's items too), or a contents list dropped from a
 node that names none (`_words_only_added`). The stitched unit is one more action beside FOON's own (`with_stitches`): the plan's trace
@@ -31,9 +36,9 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
-from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.foon import Foon, FunctionalUnit, ObjectNode, State, make_state
 from ..model.physical import Relation
-from ..model.places import listed, place_of
+from ..model.places import describes_contents, listed, place_of
 from .holder_words import unit_aliases
 
 __all__ = ["Stitch", "Stitched", "stitches", "with_stitches"]
@@ -67,10 +72,20 @@ class Stitch:
 
 def _said(node: ObjectNode, placed: bool = True) -> frozenset:
     """What a node says, as words: its states, a `contains` list item by item (`contains {a, b}` says `a` and
-    `b`); places only when `placed` is False."""
+    `b`), a state with a word in parentheses as both words (`off (ready)` says `off` and `ready`); places only
+    when `placed` is False."""
     return frozenset(w for x in node.states if not (placed and x.label in ("in", "on"))
                      for w in ([("contains", i) for i in (*x.ingredients, x.related) if i] if x.label == "contains"
-                               else [x]))
+                               else _qualified(x)))
+
+
+def _qualified(state: State) -> tuple[State, ...]:
+    """`off (ready)` as `off` and `ready` (FOON's one state of that form: the switch is off, the appliance is
+    ready); any other state as itself."""
+    head, paren, rest = state.label.partition(" (")
+    if not paren or not rest.endswith(")") or state.related or state.ingredients:
+        return (state,)
+    return make_state(head), make_state(rest[:-1])
 
 
 def _words(a: ObjectNode, b: ObjectNode) -> tuple[str, ...]:
@@ -105,12 +120,22 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
     for n, us in made.items():
         for p in {_place(n, foon.units[u], made=True) for u in us} - {None}:
             at.setdefault((n.label, p), []).append(n)
+    # nodes no unit takes, naming no place and no contents (`oven (off)` after the remove): where a unit left it
+    ends = {}
+    for n in made:
+        if n not in foon.consumers and place_of(n) is None and not describes_contents(n):
+            ends.setdefault(n.label, []).append(n)
     found = []
     for u in units:
         unit = foon.units[u]
         names = dict(unit_aliases(unit))
         for n in unit.inputs:
-            if n in produced or (p := _place(n, unit)) is None:
+            if n in produced:
+                continue
+            if (p := _place(n, unit)) is None:
+                pick = [m for m in ends.get(n.label, ()) if set(made[m]) - {u} and _words_only_added(n, m)]
+                if len(pick) == 1 and not describes_contents(n):
+                    found.append(Stitch(u, n, pick[0], unit))
                 continue
             holders = [h for h in unit.inputs if h.label == p[1] and h in made
                        and (n.label in listed(h) or any(names.get(x) == n.label for x in listed(h)))]
@@ -149,7 +174,8 @@ class Stitched:
     `foon`: the network with one more unit per stitched unit, taking the made nodes instead of its own; `units`:
     the task's units of it; `origin`: each added unit's index -> the FOON unit it reads (the plan's tree shows
     FOON's unit); `own`: the units FOON's own plan needs; `through`: the network with each added unit in the
-    place of the one it reads, and `needed`, the units a plan through the stitches needs."""
+    place of the one it reads (an appliance's after FOON's units, beside FOON's own), and `needed`, the units a
+    plan through the stitches needs."""
 
     foon: Foon
     units: tuple[int, ...]
@@ -167,17 +193,26 @@ def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stit
     unit, with the units that plan needs (the sprinkle).
 
     FOON's unit stays (taking its node from the kitchen, as FOON's semantics does): a stitch is one more way,
-    never a rewrite, so a plan that solved without it still does."""
+    never a rewrite, so a plan that solved without it still does; a stitched unit needed only beside FOON's own
+    (the second turn on of one oven) is kept when relevant in the network that has both."""
     own = tuple(relevant(foon))
     found = stitches(foon, range(len(foon.units)))
     reads: dict[int, dict[ObjectNode, ObjectNode]] = {}
     for s in found:
         reads.setdefault(s.unit, {})[s.node] = s.reads_as
-    through = Foon(tuple(replace(x, inputs=tuple(reads[u].get(n, n) for n in x.inputs)) if u in reads else x
-                         for u, x in enumerate(foon.units)), foon.level)
+
+    def sewn(u: int) -> FunctionalUnit:
+        return replace(foon.units[u], inputs=tuple(reads[u].get(n, n) for n in foon.units[u].inputs))
+    # an appliance's stitch is needed beside FOON's unit (the first turn on takes the kitchen's `oven (off
+    # (ready))`, the second the `oven (off)` the remove leaves): one more unit; the others take FOON's place
+    beside = [u for u in reads if all(place_of(x.node) is None for x in found if x.unit == u)]
+    n = len(foon.units)
+    through = Foon(tuple(sewn(u) if u in reads and u not in beside else x for u, x in enumerate(foon.units))
+                   + tuple(sewn(u) for u in beside), foon.level)
     needed = tuple(relevant(through)) if reads else own
-    kept = [u for u in reads if u in needed]
-    origin = {len(foon.units) + k: u for k, u in enumerate(kept)}
-    wider = Foon(foon.units + tuple(through.units[u] for u in kept), foon.level) if kept else foon
-    units = (*sorted(set(own) | (set(needed) - set(kept))), *origin)
+    used = set(needed)
+    kept = [u for u in reads if (n + beside.index(u) if u in beside else u) in used]
+    origin = {n + k: u for k, u in enumerate(kept)}
+    wider = Foon(foon.units + tuple(sewn(u) for u in kept), foon.level) if kept else foon
+    units = (*sorted(set(own) | {u for u in used if u < n and u not in kept}), *origin)
     return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed)

@@ -1,0 +1,83 @@
+"""Items a container's list drops while a later unit takes them out of that container: the list left them out.
+
+`holders` rule 5 reads a label a container's output node drops, with no role of the unit of that label, as part
+of a mixture made there (`Flow.into` None: consumed). The gyoza's scrape (0070-gyoza.txt:87) gives `pot (contains
+{cabbage, ground pork, scallion, soy sauce, sesame oil, garlic})`, without the rice beer poured in at :63; but the
+mix at :113 takes `rice beer (in [pot])` (the pour's node) from the pot the scrape's output becomes (the pour of
+corn starch between takes that node and gives the mix's). Read from those units, the scrape's list left the rice
+beer out: it stays in the pot, and the mix takes it from there.
+
+Rule (`kept_in_place`): a flow of label L out of the container role of label C into nothing is not applied when,
+following that role's output node forward through the task's units that take it (each unit's pairing,
+`pairing.unit_roles`, gives the node it becomes), a unit takes a node of label L placed in C (its place read
+through that unit's names) that a unit of the network makes. What stays ambiguous: the pot's nodes between the
+two units do not list the rice beer, so the pair (C, L) is one the replay does not check (`PlanningTask.gaps`),
+and the reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r
+roles (d at most `DEPTH`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import replace
+
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.places import place_of
+from .encoding import short_path, unit_where
+from .holder_words import unit_aliases
+from .pairing import unit_roles
+from .relational_plan import UnitPlan
+
+__all__ = ["DEPTH", "kept_in_place"]
+
+#: How many units the container's node is followed through.
+DEPTH = 12
+
+
+def _taker(foon: Foon, units: frozenset[int], start: ObjectNode, label: str) -> FunctionalUnit | None:
+    """The first unit of `units` on the path of `start`'s object that takes a node of `label` placed in or on
+    it, when a unit of the network makes that node (breadth-first, `DEPTH` units)."""
+    frontier, seen = [start], {start}
+    for _ in range(DEPTH):
+        nxt = []
+        for node in frontier:
+            for v in foon.consumers.get(node, ()):
+                if v not in units:
+                    continue
+                unit = foon.units[v]
+                names = dict(unit_aliases(unit))
+                for n in unit.inputs:
+                    where = place_of(n)
+                    if (n.label == label and where is not None and names.get(where[1], where[1]) == start.label
+                            and n in foon.producers):
+                        return unit
+                nxt += [r.after for r in unit_roles(unit) if r.before == node and r.after is not None
+                        and r.after not in seen]
+        seen.update(nxt)
+        frontier = nxt
+        if not frontier:
+            return None
+    return None
+
+
+def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
+                  ) -> tuple[dict[int, UnitPlan], list[tuple[str, str, str, FunctionalUnit]]]:
+    """`plans` without the flows a later unit's input says did not happen (module doc), and the readings as
+    (container label, content label, message, unit) gaps, in unit order."""
+    task = frozenset(units)
+    out, gaps = dict(plans), []
+    for u in sorted(task & plans.keys()):
+        plan = plans[u]
+        keep = []
+        for f in plan.flows:
+            role = plan.slots[f.holder].rel.role
+            taker = _taker(foon, task, role.after, f.label) if f.into is None and role.after is not None else None
+            if taker is None:
+                keep.append(f)
+                continue
+            gaps.append((role.label, f.label, f"{role.label} leaves {f.label} out of its list, which {taker.motion.label} at "
+                         f"{unit_where(taker, short_path)} takes in [{role.label}]: read as still in it",
+                         plan.unit))
+        if len(keep) < len(plan.flows):
+            out[u] = replace(plan, flows=tuple(keep))
+    return out, gaps
