@@ -199,3 +199,14 @@ def test_readme_says_what_make_bench_reads_in_a_clone():
     assert "needs `../shared/data`" not in readme
     assert "`make bench` (speed figures, medians over repeated runs, on `../shared/data` when it is beside the " \
            "checkout, else on the copy in `tests/data`)" in readme
+
+
+def test_retrieval_md_gives_the_additions_search_its_bound():
+    """retrieval.md said "When no set of up to 3 nodes works, the old list of missing nodes is printed"; the
+    explanation tries sets of up to `MAX_ADDITIONS` (6) and prints "it needs more than 6 kitchen additions"."""
+    from foon2pddl.retrieval.explain import MAX_ADDITIONS
+
+    text = _prose("retrieval.md")
+    said = {int(n) for n in re.findall(r"When no set of up to (\d+) nodes works", text)}
+    assert said == {MAX_ADDITIONS}
+    assert f"`it needs more than {MAX_ADDITIONS} kitchen additions`" in text
