@@ -77,3 +77,14 @@ def test_an_unquoted_goal_of_two_words_is_told_to_be_quoted():
     assert "hint: a goal of several words is one argument: --goal 'whipped cream'" in r.stderr
     other = run("plan", "--goal", "guacamole", "nowhere.txt")  # a path that is plainly a file name: no hint
     assert other.exit_code == 2 and "hint:" not in other.stderr
+
+
+def test_a_command_without_a_goal_names_every_way_to_give_one():
+    """`foon2pddl plan` with no goal said "give exactly one of --goal and --goal-file": a newcomer reading it
+    misses `--goals FILE` and that `--goal` repeats (README, "Many goals in one run")."""
+    for command in ("plan", "retrieve", "compile"):
+        r = run(command, *(["-o", "out"] if command == "compile" else []))
+        assert r.exit_code == 2, (command, r.stderr)
+        assert "no goal given: --goal G (repeat it for a batch), --goals FILE or --goal-file FILE" in r.stderr
+    both = run("plan", "--goal", "guacamole", "--goal-file", POUR_WATER)
+    assert both.exit_code == 2 and "--goal and --goal-file: give one of them" in both.stderr

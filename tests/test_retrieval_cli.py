@@ -145,7 +145,7 @@ def test_svg_without_graphviz_is_a_clear_error(monkeypatch):
     (["--goal", "no such dish"], "unknown object label"),
     (["--goal", "greek salad", "--method", "weighted"], "needs --rates"),
     (["--goal", "greek salad", "--kitchen", "/nonexistent/kitchen.txt"], "kitchen.txt"),
-    (["--goal", "greek salad", "--goal-file", "x"], "exactly one of"),
+    (["--goal", "greek salad", "--goal-file", "x"], "--goal and --goal-file: give one of them"),
 ])
 def test_bad_input_exits_2(args, needle):
     result = run("retrieve", *args)

@@ -22,7 +22,12 @@ def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Pat
     """The goals of a batch run, or None for a single-goal run (one `--goal` or `--goal-file`, no
     `--goals`, not a table format): single-goal runs behave exactly as before batches existed.
     A tree format given with `--format` (json, svg, ...) and no `-o DIR` is a usage error: a batch prints
-    its table, and the tree format would be ignored."""
+    its table, and the tree format would be ignored. No goal at all, or `--goal` beside `--goal-file`, is a usage
+    error naming every way to give one (before anything is loaded)."""
+    if goals_file is None and not goal and goal_file is None:
+        raise UsageError("no goal given: --goal G (repeat it for a batch), --goals FILE or --goal-file FILE")
+    if goals_file is None and len(goal) == 1 and goal_file is not None:
+        raise UsageError("--goal and --goal-file: give one of them (--goals FILE for a batch)")
     if goals_file is None and len(goal) <= 1 and fmt not in TABLE_FORMATS:
         return None
     if goal_file is not None:
