@@ -90,6 +90,11 @@ def test_a_label_a_list_leaves_out_stays_when_a_later_unit_takes_it_from_that_co
     assert "takes in [pot]: read as still in it" in gaps[0][2]
     # without the mix taking it, the list's word stands: the rice beer became part of what is in the pot
     assert kept_in_place(foon, range(3), plans) == (plans, [])
+    # nor does a unit earlier in the recipe count (a universal FOON's shared nodes come round again): the path
+    # runs forward only
+    mix_first = (units[3], *units[:3])
+    back = {u: plan_unit(x, Kitchen(frozenset()), frozenset(), frozenset()) for u, x in enumerate(mix_first)}
+    assert kept_in_place(Foon(mix_first), range(4), back) == (back, [])
 
 
 def test_gyoza_is_solved_and_replay_clean_with_the_rice_beer_the_scrape_list_leaves_out():

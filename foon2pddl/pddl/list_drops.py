@@ -9,8 +9,8 @@ beer out: it stays in the pot, and the mix takes it from there.
 
 Rule (`kept_in_place`): a flow of label L out of the container role of label C into nothing is not applied when,
 following that role's output node forward through the task's units that take it (each unit's pairing,
-`pairing.unit_roles`, gives the node it becomes), a unit takes a node of label L placed in C (its place read
-through that unit's names) that a unit of the network makes. What stays ambiguous: the pot's nodes between the
+`pairing.unit_roles`, gives the node it becomes), each later in the same recipe file, a unit takes a node of
+label L placed in C (its place read through that unit's names) that a unit of the network makes. What stays ambiguous: the pot's nodes between the
 two units do not list the rice beer, so the pair (C, L) is one the replay does not check (`PlanningTask.gaps`),
 and the reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r
 roles (d at most `DEPTH`).
@@ -34,15 +34,24 @@ __all__ = ["DEPTH", "kept_in_place"]
 DEPTH = 12
 
 
-def _taker(foon: Foon, units: frozenset[int], start: ObjectNode, label: str) -> FunctionalUnit | None:
-    """The first unit of `units` on the path of `start`'s object that takes a node of `label` placed in or on
-    it, when a unit of the network makes that node (breadth-first, `DEPTH` units)."""
-    frontier, seen = [start], {start}
+def _order(foon: Foon, u: int) -> tuple[str, int]:
+    """Where unit `u` is in its recipe: (file, line) of its first source, else (``, index)."""
+    src = foon.units[u].source
+    return (src.path, src.line) if src is not None else ("", u)
+
+
+def _taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: str) -> FunctionalUnit | None:
+    """The first unit of `units` on the path of `start`'s object (unit `u`'s output) that takes a node of `label`
+    placed in or on it, when a unit of the network makes that node: breadth-first, `DEPTH` units, each later in
+    the same recipe file than the one before (a universal FOON shares nodes between recipes, and one recipe's
+    nodes may come round again: no path runs into another recipe or back)."""
+    frontier, seen = [(start, _order(foon, u))], {start}
     for _ in range(DEPTH):
         nxt = []
-        for node in frontier:
+        for node, (path, line) in frontier:
             for v in foon.consumers.get(node, ()):
-                if v not in units:
+                here = _order(foon, v)
+                if v not in units or here[0] != path or here[1] <= line:
                     continue
                 unit = foon.units[v]
                 names = dict(unit_aliases(unit))
@@ -51,9 +60,9 @@ def _taker(foon: Foon, units: frozenset[int], start: ObjectNode, label: str) -> 
                     if (n.label == label and where is not None and names.get(where[1], where[1]) == start.label
                             and n in foon.producers):
                         return unit
-                nxt += [r.after for r in unit_roles(unit) if r.before == node and r.after is not None
+                nxt += [(r.after, here) for r in unit_roles(unit) if r.before == node and r.after is not None
                         and r.after not in seen]
-        seen.update(nxt)
+        seen.update(n for n, _ in nxt)
         frontier = nxt
         if not frontier:
             return None
@@ -71,7 +80,7 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
         keep = []
         for f in plan.flows:
             role = plan.slots[f.holder].rel.role
-            taker = _taker(foon, task, role.after, f.label) if f.into is None and role.after is not None else None
+            taker = _taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
             if taker is None:
                 keep.append(f)
                 continue
