@@ -10,7 +10,10 @@ then `solve` per goal). Figures (ms per goal):
 - `fd-instances` as it ran before: every goal compiled and translated by a fresh
   interpreter (`plan` per goal, `FOON2PDDL_WARM_TRANSLATOR=0`), and the ratios new / old;
 - on the goals a task tree reaches (those `fd-instances` plans): its median against `fd-tree`'s
-  on the same goals, and where the time goes (encode, write, translate, search), before and now.
+  on the same goals, and where the time goes (encode, write, translate, search), before and now;
+- the `relational` encode alone, per goal on REG, EXP and GEN (CPU);
+- `fd-relational` likewise (median, mean, worst, its median against `fd-tree`'s, and on the goals it
+  encodes, where the time goes).
 `--quick` uses 20 goals.
 """
 
@@ -24,6 +27,7 @@ from foon2pddl.experiment.networks import build_view
 from foon2pddl.experiment.protocol import Protocol, draw
 from foon2pddl.experiment.solvers import SOLVERS, Setting
 from foon2pddl.io.inputs import load_network
+from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.planners import translator
 from foon2pddl.planners.solve import plan
 
@@ -50,9 +54,27 @@ def _summary(ctx: Context, name: str, times: list[float], note: str = "") -> Non
     ctx.report(AREA, f"{name} worst", max(times) * 1000, "ms")
 
 
+def relational_encode(ctx: Context, net, goals_per_trial: int) -> None:
+    """The relational encode alone, per goal of one trial on REG, EXP and GEN (CPU seconds, goals one after another
+    over one network object, as a worker encodes them)."""
+    for name in ("reg", "exp", "gen"):
+        view = build_view(name, net, 3)
+        trial = draw(build_view("reg", net, 3).foon, Protocol(trials=1, goals=goals_per_trial)).trials[0]
+        kitchen = view.map_kitchen(trial.kitchen)
+        times = []
+        for g in trial.goals:
+            t0 = time.process_time()
+            compile_goal(view.foon, kitchen, view.goal_of(g), "relational", view.foon.level)
+            times.append(time.process_time() - t0)
+        ctx.report(AREA, f"relational encode, {name.upper()}, median", statistics.median(times) * 1000, "ms/goal",
+                   f"{len(times)} goals, CPU")
+        ctx.report(AREA, f"relational encode, {name.upper()}, worst", max(times) * 1000, "ms")
+
+
 def run(ctx: Context) -> None:
     goals_per_trial = 20 if ctx.quick else 100
     net = load_network([ctx.shared / "foon-subgraphs"])
+    relational_encode(ctx, net, goals_per_trial)
     view = build_view("reg", net, 3)
     trial = draw(view.foon, Protocol(trials=1, goals=goals_per_trial)).trials[0]
     setting = Setting(view, trial.kitchen, 60.0)
@@ -72,6 +94,21 @@ def run(ctx: Context) -> None:
     worst = max(new_times)
     ctx.report(AREA, "fd-instances worst goal", worst, "s",
                f"floor < {WORST_FLOOR:g} s" + ("" if worst < WORST_FLOOR else ": ABOVE"))
+
+    rel = SOLVERS["fd-relational"].prepare(setting)
+    rel_times, rel_phases = _per_goal(rel.solve, trial.goals)
+    _summary(ctx, "fd-relational", rel_times, "screened by the fixpoint, warm translator")
+    ctx.report(AREA, "fd-relational median / fd-tree median", statistics.median(rel_times) / statistics.median(tree_times),
+               "x", "issue 25: not slower per goal than fd-tree's median")
+    planned = [k for k, p in enumerate(rel_phases) if "encode" in p]
+    if planned:
+        ours = statistics.median(rel_times[k] for k in planned)
+        theirs = statistics.median(tree_times[k] for k in planned)
+        ctx.report(AREA, "planned goals: fd-relational median / fd-tree median", ours / theirs, "x",
+                   f"{ours * 1000:.3g} ms against {theirs * 1000:.3g} ms on the {len(planned)} goals it encodes")
+        for phase in ("encode", "translate", "search"):
+            ctx.report(AREA, f"planned goals: fd-relational {phase} median",
+                       statistics.median(rel_phases[k].get(phase, 0.0) for k in planned) * 1000, "ms")
 
     os.environ[translator.SWITCH] = "0"
     try:

@@ -682,3 +682,22 @@ def test_an_object_in_the_units_one_holder_of_its_place_before_and_after_stays_t
     final = outcome.trace.final
     garnished = [x for x, st in final.items() if st.node == done]
     assert final["pot_1"].node == pot and len(garnished) == 1 and final[garnished[0]].holder == "pot_1"
+
+
+def test_a_networks_readings_kept_between_goals_give_the_task_a_fresh_network_gives():
+    # the mutual lists (0017's bread and tray) and the input stitches (0036's sprouts, 0019's chicken) are read
+    # once per network object and kept for its next goal: every task is the one a new, equal network gives
+    paths = [p for p in sorted(SUBGRAPHS.iterdir()) if p.name[:4] in ("0017", "0019", "0036", "0079")]
+    kept, _ = load(paths)
+    dishes = sorted(x for x in kept.nodes if x.dish is not None)
+    assert len(dishes) == 4
+
+    def task(foon, dish):
+        c = compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational")
+        return repr((c.task, c.notes))
+
+    first = [task(kept, d) for d in dishes]
+    again = [task(kept, d) for d in reversed(dishes)][::-1]
+    fresh = [task(load(paths)[0], d) for d in dishes]
+    assert first == again == fresh
+    assert any("read as" in t for t in first)

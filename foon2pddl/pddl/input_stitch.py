@@ -37,6 +37,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, State, make_state
+from ..model.memo import per_network
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of
 from .holder_words import unit_aliases
@@ -148,6 +149,30 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
     return tuple(found)
 
 
+@per_network
+def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[ObjectNode, ObjectNode]], list[int],
+                                           Foon]:
+    """`stitches` of every unit of the network, each stitched unit's readings, the stitched units needed beside
+    FOON's (an appliance's), and the network through the stitches (`with_stitches`): once per network object (an
+    experiment encodes a hundred goals over one)."""
+    found = stitches(foon, range(len(foon.units)))
+    reads: dict[int, dict[ObjectNode, ObjectNode]] = {}
+    for s in found:
+        reads.setdefault(s.unit, {})[s.node] = s.reads_as
+    # an appliance's stitch is needed beside FOON's unit (the first turn on takes the kitchen's `oven (off
+    # (ready))`, the second the `oven (off)` the remove leaves): one more unit; the others take FOON's place
+    beside = [u for u in reads if all(place_of(x.node) is None for x in found if x.unit == u)]
+    through = Foon(tuple(_sewn(foon, reads, u) if u in reads and u not in beside else x
+                         for u, x in enumerate(foon.units))
+                   + tuple(_sewn(foon, reads, u) for u in beside), foon.level)
+    return found, reads, beside, through
+
+
+def _sewn(foon: Foon, reads: dict[int, dict[ObjectNode, ObjectNode]], u: int) -> FunctionalUnit:
+    """Unit `u` taking the made nodes its stitches read."""
+    return replace(foon.units[u], inputs=tuple(reads[u].get(n, n) for n in foon.units[u].inputs))
+
+
 def _words_only_added(node: ObjectNode, made: ObjectNode) -> bool:
     """Whether reading `made` for `node` only assumes words (`node` says all `made` says, and more: `uncooked`, or
     more items of a list, the omelette that lists the egg mixture it was made of beside the bacon), or only drops
@@ -196,23 +221,12 @@ def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stit
     never a rewrite, so a plan that solved without it still does; a stitched unit needed only beside FOON's own
     (the second turn on of one oven) is kept when relevant in the network that has both."""
     own = tuple(relevant(foon))
-    found = stitches(foon, range(len(foon.units)))
-    reads: dict[int, dict[ObjectNode, ObjectNode]] = {}
-    for s in found:
-        reads.setdefault(s.unit, {})[s.node] = s.reads_as
-
-    def sewn(u: int) -> FunctionalUnit:
-        return replace(foon.units[u], inputs=tuple(reads[u].get(n, n) for n in foon.units[u].inputs))
-    # an appliance's stitch is needed beside FOON's unit (the first turn on takes the kitchen's `oven (off
-    # (ready))`, the second the `oven (off)` the remove leaves): one more unit; the others take FOON's place
-    beside = [u for u in reads if all(place_of(x.node) is None for x in found if x.unit == u)]
+    found, reads, beside, through = _network_stitches(foon)
     n = len(foon.units)
-    through = Foon(tuple(sewn(u) if u in reads and u not in beside else x for u, x in enumerate(foon.units))
-                   + tuple(sewn(u) for u in beside), foon.level)
     needed = tuple(relevant(through)) if reads else own
     used = set(needed)
     kept = [u for u in reads if (n + beside.index(u) if u in beside else u) in used]
     origin = {n + k: u for k, u in enumerate(kept)}
-    wider = Foon(foon.units + tuple(sewn(u) for u in kept), foon.level) if kept else foon
+    wider = Foon(foon.units + tuple(_sewn(foon, reads, u) for u in kept), foon.level) if kept else foon
     units = (*sorted(set(own) | {u for u in used if u < n and u not in kept}), *origin)
     return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed)

@@ -16,6 +16,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.memo import per_network
 from ..model.places import listed, places
 from .encoding import LevelInputs
 
@@ -57,18 +58,27 @@ def mutual_readings(foon: Foon) -> dict[ObjectNode, tuple[ObjectNode, Functional
     return out
 
 
-def read_mutual(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
-    """`inp` with every node of `mutual_readings` read so, in the units and the kitchen; and the readings."""
-    reads = mutual_readings(inp.foon)
+@per_network
+def _mutual_network(foon: Foon) -> tuple[Foon, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
+    """The network with every node of `mutual_readings` read so, and the readings: once per network object (an
+    experiment encodes a hundred goals over one network)."""
+    reads = mutual_readings(foon)
     if not reads:
-        return inp, reads
+        return foon, reads
 
     def unit(u: FunctionalUnit) -> FunctionalUnit:
         ins = tuple(dict.fromkeys(reads[n][0] if n in reads else n for n in u.inputs))
         outs = tuple(dict.fromkeys(reads[n][0] if n in reads else n for n in u.outputs))
         return FunctionalUnit(ins, u.motion, outs, u.sources)
 
-    foon = Foon(tuple(map(unit, inp.foon.units)), inp.foon.level)
+    return Foon(tuple(map(unit, foon.units)), foon.level), reads
+
+
+def read_mutual(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
+    """`inp` with every node of `mutual_readings` read so, in the units and the kitchen; and the readings."""
+    foon, reads = _mutual_network(inp.foon)
+    if not reads:
+        return inp, reads
     kitchen = frozenset(reads[n][0] if n in reads else n for n in inp.kitchen)
     return replace(inp, foon=foon, kitchen=kitchen), reads
 
