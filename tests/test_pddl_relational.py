@@ -701,3 +701,15 @@ def test_a_networks_readings_kept_between_goals_give_the_task_a_fresh_network_gi
     fresh = [task(load(paths)[0], d) for d in dishes]
     assert first == again == fresh
     assert any("read as" in t for t in first)
+
+
+def test_a_reading_is_a_note_of_the_tasks_that_have_its_node_only():
+    # 0017's garlic bread lists the tray in the bread and the bread in the tray: its task reports the reading,
+    # the dalgona coffee's task over the same network does not
+    foon, _ = load([p for p in sorted(SUBGRAPHS.iterdir()) if p.name[:4] in ("0017", "0079")])
+    notes = {}
+    for dish in sorted(x for x in foon.nodes if x.dish is not None):
+        c = compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational")
+        notes[dish.label] = [x for x in c.notes if "each in the other" in x]
+    assert notes["garlic bread"] and all("0017-garfield_garlic_bread.txt:35" in x for x in notes["garlic bread"])
+    assert notes["dalgona coffee"] == []

@@ -193,7 +193,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     if made:
         predicates.append(Predicate(GOAL_OBJECT, (("?x", ROOT_TYPE),), "?x may reach the goal: no kitchen object"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
-    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(mutual)
+    found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
+        mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live]
     notes, commented = reported(found)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}

@@ -13,6 +13,7 @@ tray})`). FOON's tree keeps its own nodes; each reading is reported with the uni
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
@@ -83,7 +84,9 @@ def read_mutual(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[O
     return replace(inp, foon=foon, kitchen=kitchen), reads
 
 
-def mutual_notes(reads: dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]) -> list[tuple[FunctionalUnit, str]]:
-    """(the unit showing the pair, what is read) per reading, for the task's notes with the unit's file:line."""
+def mutual_notes(reads: dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]],
+                 task: Collection[ObjectNode]) -> list[tuple[FunctionalUnit, str]]:
+    """(the unit showing the pair, what is read) per reading whose node the `task`'s units have, for the task's
+    notes with the unit's file:line (a universal FOON's garlic bread reading is no note of the dalgona coffee)."""
     return [(u, f"{n.describe()} is read as {m.describe()}: this unit lists {n.label} and {places(m)[0][1]} each in "
-             "the other") for n, (m, u) in sorted(reads.items())]
+             "the other") for n, (m, u) in sorted(reads.items()) if m in task]
