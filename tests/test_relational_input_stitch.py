@@ -7,7 +7,7 @@ from pathlib import Path
 from node_words import contains, inside, n
 from relational_checks import clean_dish_plan
 
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.input_stitch import stitches, with_stitches
@@ -148,3 +148,78 @@ def test_scrambled_eggs_solve_replay_clean_through_the_cooked_omelette():
     outcome = clean_dish_plan(DATA / "0050-scrambled_eggs_with_bacon-cheese.txt")
     assert any(":288: pour takes omelette" in x and "assumes contains {cheese, egg mixture, onion}" in x
                for x in outcome.compiled.notes)
+
+
+def test_a_made_node_taken_with_what_only_a_later_unit_makes_is_read_as_the_node_that_unit_leaves():
+    # homemade cheese pizza: the bake takes `oven (contains {pizza pan}, on, preheated)` and leaves `oven (on)`;
+    # the remove takes that oven node again, with `pizza pan (contains {cheese pizza}, in [oven])`, which only
+    # the bake makes: the oven it finds is the one the bake left (a plan through FOON's node puts a second pizza
+    # into the oven to remove the first; 0082 below)
+    on_pan = make_state("on", "pizza pan")
+    hot, full = n("oven", "on", "preheated"), n("oven", contains("pizza pan"), "on", "preheated")
+    raw, dough = n("pizza pan", contains("pizza dough"), make_state("on", "surface")), n("pizza dough", on_pan)
+    put = FunctionalUnit((hot, dough, raw), Motion("pick-and-place"),
+                         (full, n("pizza pan", contains("pizza dough"), inside("oven"))))
+    baked = n("pizza pan", contains("cheese pizza"), inside("oven"))
+    bake = FunctionalUnit((full, dough, n("pizza pan", contains("pizza dough"), inside("oven"))), Motion("bake"),
+                          (n("cheese pizza", on_pan), baked, n("oven", "on")))
+    remove = FunctionalUnit((full, n("cheese pizza", on_pan), baked), Motion("remove"),
+                            (n("oven", "off"), n("pizza pan", contains("cheese pizza"))))
+    found = [s for s in stitches(Foon((put, bake, remove)), range(3)) if s.unit == 2]  # (the put's: an appliance's)
+    assert [(s.unit, s.node, s.reads_as) for s in found] == [(2, full, n("oven", "on"))]
+    assert found[0].describe() == ("remove takes oven (contains {pizza pan}, on, preheated), with what only the bake "
+                                   "makes, as oven (on), which the bake leaves: assumes preheated, contains {pizza pan}")
+    # not when another unit makes the pan in the oven without taking that oven node
+    other = FunctionalUnit((n("oven", "on"), n("pizza pan", contains("cheese pizza"))), Motion("put inside"),
+                           (baked,))
+    assert [s.unit for s in stitches(Foon((put, bake, remove, other)), range(4)) if s.unit == 2] == []
+
+
+def test_homemade_cheese_pizza_solves_replay_clean_with_its_two_readings_reported():
+    outcome = clean_dish_plan(DATA / "0082-homemade_cheese_pizza.txt")
+    notes = "\n".join(outcome.compiled.notes)
+    assert "0082-homemade_cheese_pizza.txt:466: remove takes oven (contains {pizza pan}, on, preheated), with" in notes
+    assert ("0082-homemade_cheese_pizza.txt:187: the kitchen's bowl (contains {pizza dough}, wrapped {plastic wrap}) "
+            "is read as bowl (contains {pizza dough}, covered)") in notes
+    assert [s.unit.motion.label for s in outcome.trace.steps].count("unwrap") == 1
+
+
+def test_a_made_container_whose_unit_leaves_it_listing_more_than_it_brings_is_read_as_the_one_holding_that():
+    # best black beans: the salt's sprinkle takes `pot (contains {black bean})` and leaves it listing cayenne
+    # pepper too, which no object of the unit is; the sprinkle before it takes that pot node and puts the cayenne
+    # in: the pot the salt goes into is that one (through FOON's node, two units move one pot to two nodes that
+    # the stir needs together, and no plan exists)
+    pot, bean = n("pot", contains("black bean")), n("black bean", inside("pot"))
+    hot = n("pot", contains("black bean", "cayenne pepper"))
+    cayenne = FunctionalUnit((pot, bean, n("bowl", contains("cayenne pepper")), n("cayenne pepper", inside("bowl"))),
+                             Motion("sprinkle"), (hot, n("cayenne pepper", inside("pot"))))
+    salted = n("pot", contains("black bean", "cayenne pepper", "salt"))
+    salt = FunctionalUnit((pot, n("salt", "granulated")), Motion("sprinkle"), (salted, n("salt", inside("pot"))))
+    pour = FunctionalUnit((n("pot", "empty"), n("can", contains("black bean")), n("black bean", inside("can"))),
+                          Motion("pour"), (pot, bean))
+    found = stitches(Foon((pour, cayenne, salt)), range(3))
+    assert [(s.unit, s.node, s.reads_as) for s in found] == [(2, pot, hot)]
+    assert found[0].describe() == ("sprinkle takes pot (contains {black bean}) as pot (contains {black bean, cayenne "
+                                   "pepper}), which the sprinkle taking that node leaves: its output lists cayenne "
+                                   "pepper too, which no object of the unit is")
+    # not when the unit brings what its output lists
+    brought = FunctionalUnit((pot, n("salt", "granulated"), n("cayenne pepper")), Motion("sprinkle"),
+                             (salted, n("salt", inside("pot"))))
+    assert stitches(Foon((pour, cayenne, brought)), range(3)) == ()
+
+
+def test_best_black_beans_solve_replay_clean_with_the_salt_in_the_pot_of_cayenne():
+    outcome = clean_dish_plan(DATA / "0059-best_black_beans.txt")
+    assert any("0059-best_black_beans.txt:234: sprinkle takes pot (contains {black bean, cilantro, garlic, onion}, on "
+               "[stove]) as pot (contains {black bean, cayenne pepper, cilantro, garlic, onion}, on [stove])" in x
+               for x in outcome.compiled.notes)
+
+
+def test_chocolate_chip_muffins_bake_the_pan_the_put_inside_left_in_the_oven():
+    # the bake takes `muffin pan (contains {muffin batter})`, the scoop's node, with `oven (on, with [pan])`, which
+    # only the put inside makes, and that leaves the pan `in [oven]`
+    outcome = clean_dish_plan(DATA / "ACT-0009-chocolate_chip_muffin.txt")
+    assert any("ACT-0009-chocolate_chip_muffin.txt:289: bake takes muffin pan (contains {muffin batter}), with what "
+               "only the put inside makes, as muffin pan (contains {muffin batter}, in [oven])" in x
+               for x in outcome.compiled.notes)
+    assert [s.unit.motion.label for s in outcome.trace.steps][-2:] == ["put inside", "bake"]

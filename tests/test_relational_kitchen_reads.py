@@ -159,3 +159,28 @@ def test_what_a_unit_makes_in_a_kitchen_container_is_a_goal_only_once_the_unit_h
     outcome = clean_plan(Foon((opening,)), Kitchen(frozenset({closed})), Goal(GoalSpec("chipotle"), (dried,)))
     assert [u.motion.label for u in outcome.tree.units] == ["open"]
     assert outcome.validation.ok, outcome.validation.problems
+
+def test_a_word_for_what_lies_on_the_kitchen_container_is_read_as_the_word_of_the_unit_that_put_it_there():
+    # homemade cheese pizza: the pick-and-place puts `plastic wrap (on [bowl])` on the dough's bowl, making `bowl
+    # (contains {pizza dough}, covered)`; the unwrap takes that wrap, `plastic wrap (on [bowl])`, with `bowl
+    # (contains {pizza dough}, wrapped {plastic wrap})`, a node no unit makes: the wrap on it, in other words
+    dough, wrap_on = n("pizza dough", inside("bowl")), n("plastic wrap", make_state("on", "bowl"))
+    knead = FunctionalUnit((n("bowl", "empty"), n("flour", inside("bag"))), Motion("knead"),
+                           (n("bowl", contains("pizza dough")), dough))
+    covered = n("bowl", contains("pizza dough"), "covered")
+    cover = FunctionalUnit((n("bowl", contains("pizza dough")), dough, n("plastic wrap")), Motion("pick-and-place"),
+                           (covered, wrap_on))
+    fermented = n("pizza dough", "fermented", inside("bowl"))
+    ferment = FunctionalUnit((covered, dough, wrap_on), Motion("ferment"), (fermented,))
+    wrapped = n("bowl", contains("pizza dough"), make_state("wrapped", "", ("plastic wrap",)))
+    dirty = n("plastic wrap", "dirty")
+    unwrap = FunctionalUnit((wrapped, wrap_on, fermented), Motion("unwrap"),
+                            (n("bowl", contains("pizza dough")), dirty))
+    foon = Foon((knead, cover, ferment, unwrap))
+    assert kitchen_stitches(foon.units, default_kitchen(foon).nodes) == {wrapped: (covered, cover)}
+    outcome = clean_plan(foon, default_kitchen(foon), Goal(GoalSpec("plastic wrap"), (dirty,)))
+    assert outcome.tree.units == (knead, cover, ferment, unwrap)
+    assert [o.id for o in outcome.trace.objects if o.label == "bowl"] == ["bowl_1"]
+    assert any("is read as bowl (contains {pizza dough}, covered), which this pick-and-place makes" in note
+               and "assumes covered, drops wrapped {plastic wrap}: plastic wrap (on [bowl]) in both units" in note
+               for note in outcome.compiled.notes), outcome.compiled.notes

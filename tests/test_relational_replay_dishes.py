@@ -205,3 +205,31 @@ def test_two_nodes_that_list_each_other_read_as_one_on_the_other():
     kitchen = (n("baking tray", "empty"), n("bread", "sliced"), n("butter", inside("bowl")), n("bowl", contains("butter")))
     outcome = clean_unit_plan((LAY, SPREAD_BUTTER), kitchen, BUTTERED)
     assert any("is read as bread (on [baking tray], sliced)" in note for note in outcome.compiled.notes)
+
+
+def test_what_a_unit_folds_into_a_mixture_that_stays_in_its_container_goes_in_whole():
+    # chocolate chip muffin: the fold takes `chocolate chip (floured {flour}, in [bowl])` with the batter in that
+    # bowl, and leaves the batter listing the chips and the bowl listing both: the chips are in the batter in the
+    # bowl, all of them (no portion stays in the bowl for the scoop to leave behind when it empties it)
+    bowl = n("bowl", contains("chocolate chip", "muffin batter"))
+    batter = n("muffin batter", inside("bowl"))
+    chips = n("chocolate chip", "floured", inside("bowl"))
+    folded = n("muffin batter", contains("chocolate chip"), inside("bowl"))
+    fold = FunctionalUnit((n("spatula", "dirty"), bowl, batter, chips), Motion("fold"),
+                          (bowl, folded, n("spatula", "dirty")))
+    slots = plan_unit(fold, frozenset(), frozenset(), frozenset()).slots
+    assert [s.fate for s in slots if s.rel.role.label == "chocolate chip"] == [Fate.MOVES]
+    pan = n("muffin pan", contains("muffin batter"))
+    scoop = FunctionalUnit((bowl, folded, n("muffin pan", "empty"), n("scoop", "clean")), Motion("scoop and pour"),
+                           (n("muffin batter", contains("chocolate chip"), inside("muffin pan")), pan,
+                            n("scoop", "dirty")))
+    put = FunctionalUnit((n("bowl", contains("chocolate chip")), n("chocolate chip", "floured", inside("bowl")),
+                          n("muffin batter", inside("bowl")), n("bowl", contains("muffin batter"))),
+                         Motion("scrape"), (bowl, chips, batter))
+    outcome = clean_unit_plan([put, fold, scoop], [n("bowl", contains("chocolate chip")),
+                                                    n("chocolate chip", "floured", inside("bowl")),
+                                                    n("bowl", contains("muffin batter")),
+                                                    n("muffin batter", inside("bowl")),
+                                                    n("spatula", "dirty"), n("muffin pan", "empty"),
+                                                    n("scoop", "clean")], pan)
+    assert [o.id for o in outcome.trace.objects if o.label == "chocolate chip"] == ["chocolate_chip_1"]

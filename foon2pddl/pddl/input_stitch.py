@@ -24,6 +24,14 @@ node of its label, made by another unit, that names no place and no contents and
 `oven (off)`: where a unit left the object and nothing goes on from); two such are ambiguous. A state with a word
 in parentheses says both words (`off (ready)` says `off` and `ready`).
 
+A made input is read so too (`_left_by`) when the unit takes it with an object in or on it that only units
+taking that node make, each leaving the object in one other node by only dropping words: the remove takes the
+pick-and-place's `oven (contains {pizza pan}, on, preheated)` with `pizza pan (contains {cheese pizza}, in
+[oven])`, which only the bake makes, and the bake leaves `oven (on)`; and a made container node as the one
+another unit taking it leaves listing more, when the unit's own output lists that more and no object of the unit
+is it (`_held_before`: the salt's sprinkle takes the pot the cayenne's sprinkle takes too, and its output lists
+the cayenne pepper).
+
 What a stitch drops or assumes is said (`Stitch.describe`): the states N has that M lacks are assumed (`uncooked`),
 those M has that N lacks are dropped. Only words are added (a list's items too), or a contents list dropped from a
 node that names none (`_words_only_added`). The stitched unit is one more action beside FOON's own (`with_stitches`): the plan's trace
@@ -39,7 +47,7 @@ from dataclasses import dataclass, field, replace
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, State, make_state
 from ..model.memo import per_network
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of
+from ..model.places import describes_contents, listed, place_of, places
 from .holder_words import unit_aliases
 
 __all__ = ["Stitch", "Stitched", "stitches", "with_stitches"]
@@ -53,6 +61,8 @@ class Stitch:
     node: ObjectNode
     reads_as: ObjectNode
     taker: FunctionalUnit = field(compare=False, repr=False)
+    left_by: FunctionalUnit | None = field(default=None, compare=False, repr=False)  # a made input: the unit
+    held: bool = field(default=False, compare=False, repr=False)  # `_held_before` (else `_left_by`) read it
 
     @property
     def assumed(self) -> tuple[str, ...]:
@@ -67,8 +77,14 @@ class Stitch:
     def describe(self) -> str:
         """`shake takes brussel sprout (...), which no unit makes, as brussel sprout (...): assumes uncooked`."""
         said = [f"{w} {', '.join(x)}" for w, x in (("assumes", self.assumed), ("drops", self.dropped)) if x]
-        return (f"{self.taker.motion.label} takes {self.node.describe()}, which no unit makes, as {self.reads_as.describe()}"
-                f"{': ' + '; '.join(said) if said else ': its place by another name'}")
+        by = self.left_by.motion.label if self.left_by is not None else ""
+        if self.held:
+            return (f"{self.taker.motion.label} takes {self.node.describe()} as {self.reads_as.describe()}, which the "
+                    f"{by} taking that node leaves: its output lists {', '.join(sorted(listed(self.reads_as) - listed(self.node)))} "
+                    "too, which no object of the unit is")
+        return (f"{self.taker.motion.label} takes {self.node.describe()}, "
+                f"{f'with what only the {by} makes' if by else 'which no unit makes'}, as {self.reads_as.describe()}"
+                f"{f', which the {by} leaves' if by else ''}{': ' + '; '.join(said) if said else ': its place by another name'}")
 
 
 def _said(node: ObjectNode, placed: bool = True) -> frozenset:
@@ -132,6 +148,8 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
         names = dict(unit_aliases(unit))
         for n in unit.inputs:
             if n in produced:
+                found.extend(Stitch(u, n, m, unit, foon.units[b]) for m, b in _left_by(foon, made, unit, n))
+                found.extend(Stitch(u, n, m, unit, foon.units[b], True) for m, b in _held_before(foon, u, n))
                 continue
             if (p := _place(n, unit)) is None:
                 pick = [m for m in ends.get(n.label, ()) if set(made[m]) - {u} and _words_only_added(n, m)]
@@ -171,6 +189,53 @@ def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[Ob
 def _sewn(foon: Foon, reads: dict[int, dict[ObjectNode, ObjectNode]], u: int) -> FunctionalUnit:
     """Unit `u` taking the made nodes its stitches read."""
     return replace(foon.units[u], inputs=tuple(reads[u].get(n, n) for n in foon.units[u].inputs))
+
+
+def _left_by(foon: Foon, made: dict[ObjectNode, list[int]], unit: FunctionalUnit,
+             node: ObjectNode) -> list[tuple[ObjectNode, int]]:
+    """[(M, a unit leaving it)] when `unit` takes the made `node` (label L) with an object in or on L, or holding
+    one `with [L]`, that only units taking `node` make (or units making it), and each of them leaves L as M, another node, by only adding
+    or dropping words of `node` (places aside): the remove takes `oven (contains {pizza pan}, on, preheated)` with
+    `pizza pan (contains {cheese pizza}, in [oven])`, which only the bake makes, and the bake takes that oven and
+    leaves `oven (on)`: the oven the remove finds is the bake's. The muffins' bake takes `muffin pan (contains
+    {muffin batter})` with `oven (on, with [pan])`, which only the put inside makes, leaving the pan `in [oven]`."""
+    names = dict(unit_aliases(unit))
+    left, by = set(), -1
+    for x in unit.inputs:
+        at = {w[1] for w in places(x)} | {s.related for s in x.states if s.label == "with"}
+        if node.label not in {names.get(c, c) for c in at} or not made.get(x):
+            continue
+        for b in made[x]:
+            maker = foon.units[b]
+            if node in maker.outputs:  # put there as `node` was made (the batter the scoop puts in the pan)
+                continue
+            if node not in maker.inputs:
+                return []
+            by = b
+            left |= {o for o in maker.outputs if o.label == node.label}
+    return [(m, by)] if len(left) == 1 and (m := left.pop()) != node and _words_only_added(node, m) else []
+
+
+def _held_before(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode, int]]:
+    """[(M, the unit making it)] when unit `u`'s output of `node`'s label lists items that neither `node` nor any
+    object of the unit is, and exactly one other unit taking `node` leaves that label as M, `node` with just those
+    items more: the salt's sprinkle takes `pot (contains {black bean, cilantro, garlic, onion}, on [stove])` and
+    leaves the pot listing `cayenne pepper` too, which the sprinkle before it, taking that pot, put in."""
+    unit = foon.units[u]
+    names = dict(unit_aliases(unit))
+    objects = {x.label for x in (*unit.inputs, *unit.outputs)}
+    extra = {x for o in unit.outputs if o.label == node.label for x in listed(o)
+             if x not in listed(node) and names.get(x, x) not in objects and x not in objects}
+    if not extra:
+        return []
+    found = [(o, v) for v in foon.consumers.get(node, ()) if v != u for o in foon.units[v].outputs
+             if o.label == node.label and listed(o) == listed(node) | extra and _rest_same(o, node)]
+    return found[:1] if len({m for m, _ in found}) == 1 else []
+
+
+def _rest_same(a: ObjectNode, b: ObjectNode) -> bool:
+    """Whether two nodes say the same but their lists."""
+    return {x for x in _said(a, False) if not isinstance(x, tuple)} == {x for x in _said(b, False) if not isinstance(x, tuple)}
 
 
 def _words_only_added(node: ObjectNode, made: ObjectNode) -> bool:

@@ -38,7 +38,7 @@ Pure; O(r^2) per unit for r roles.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
@@ -159,6 +159,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                 late_empties = True  # whichever container holds it is emptied of it (it ends in no place)
             else:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
+        if fate is Fate.SPLITS and _into_one_staying(rels, r):
+            fate = Fate.MOVES  # into a mixture that stays in the holder: still in it, so the holder's list holds
         if fate is Fate.SPLITS:
             after, portion = None, r.after
         elif fate is Fate.CONSUMED:
@@ -195,6 +197,18 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
 #: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
 #: (None: consumed).
 Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
+
+
+def _into_one_staying(rels: Sequence[RelRole], r: RelRole) -> bool:
+    """Whether `r` leaves its holder role for a role that stays in that holder (the fold's chips into the batter
+    in the bowl, which lists both after the unit): it is still in the holder, inside the other, so all of it goes
+    and none is left beside the mixture."""
+    src, dst = r.source, r.target
+    if src is None or src.role is None or dst is None or dst.role is None:
+        return False
+    into = rels[dst.role]
+    return (into.fate is Fate.STAYS and into.source is not None and into.source.role == src.role
+            and into.target is not None and into.target.role == src.role)
 
 
 def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str],

@@ -13,7 +13,11 @@ whatever else P lists no object of P's unit is and its input nodes of that label
 `bowl (contains {rice, water})` for the kitchen's `bowl (contains {rice})`: no water is poured). A unit taking K
 makes K after it, not K in other words (a universal FOON's `jar (contains {peanut butter}, opened)`, which the
 buckeye candy's open makes of the kitchen's `jar (contains {peanut butter})`). FOON's tree
-keeps K, which FOON's kitchen has; each reading is reported with the unit's file:line.
+keeps K, which FOON's kitchen has; each reading is reported with the unit's file:line and the words it assumes
+and drops. A word of K naming only objects P's unit leaves in or on it, in the node every unit taking K takes
+them in, is that object lying there, which P says by its own word (`_laid_words`: the unwrap's `bowl (contains
+{pizza dough}, wrapped {plastic wrap})` with `plastic wrap (on [bowl])`, read as the pick-and-place's `bowl
+(contains {pizza dough}, covered)`, which leaves that wrap there).
 """
 
 from __future__ import annotations
@@ -21,7 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 
-from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.foon import Foon, FunctionalUnit, ObjectNode, State
 from ..model.places import CONTENT_STATES, listed, place_of, place_state, places
 from .encoding import LevelInputs
 from .holder_words import task_aliases
@@ -69,12 +73,28 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
                 continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
-            if (_rest(k) <= _rest(p) and _nested(places(k), places(p))
-                    and items <= read(listed(p)) and not (read(listed(p)) - items) & (roles | before)):
+            laid = _laid_words(k, u, _takers(task, k))
+            kept = items - read(x for s in laid for x in (*s.ingredients, s.related) if x)
+            if (_rest(k) - laid <= _rest(p) and _nested(places(k), places(p))
+                    and kept <= read(listed(p)) and not (read(listed(p)) - kept) & (roles | before)):
                 found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
     return out | _taken_off(task, kitchen, makers, made)
+
+
+def _laid(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUnit]) -> list[ObjectNode]:
+    """The outputs of `u` placed in or on K's label that every unit taking K takes as they are (at least one)."""
+    return [x for x in u.outputs if (w := place_of(x)) is not None and w[1] == k.label
+            and takers and all(x in t.inputs for t in takers)]
+
+
+def _laid_words(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUnit]) -> frozenset[State]:
+    """K's states naming only objects that `u` leaves in or on K's label, in the node every unit taking K takes
+    them in (`wrapped {plastic wrap}`, where the pick-and-place leaves and the unwrap takes `plastic wrap (on
+    [bowl])`): words for that object lying there, which `u`'s output says by its own word (`covered`)."""
+    laid = {x.label for x in _laid(k, u, takers)}
+    return frozenset(s for s in _rest(k) if (names := {*s.ingredients, s.related} - {""}) and names <= laid)
 
 
 def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
@@ -145,6 +165,16 @@ def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]
 def stitch_notes(stitches: Mapping[ObjectNode, tuple[ObjectNode, FunctionalUnit]]) -> list[tuple[FunctionalUnit, str]]:
     """(the unit making P, what is read) per reading, for the task's notes with the unit's file:line."""
     return [(u, f"the kitchen's {k.describe()} is read as {p.describe()}, which this {u.motion.label} makes: FOON "
-             "gives what it holds only as what units make" if listed(k) else f"the kitchen's {k.describe()} is "
-             f"read as {p.describe()}, which this {u.motion.label} makes: the units taking it find it on a holder")
-            for k, (p, u) in sorted(stitches.items())]
+             "gives what it holds only as what units make" + _words(k, p, u) if listed(k) else
+             f"the kitchen's {k.describe()} is read as {p.describe()}, which this {u.motion.label} makes: the units "
+             "taking it find it on a holder") for k, (p, u) in sorted(stitches.items())]
+
+
+def _words(k: ObjectNode, p: ObjectNode, u: FunctionalUnit) -> str:
+    """`; assumes covered, drops wrapped {plastic wrap}: plastic wrap (on [bowl]) in both units`: the states but
+    lists and places that reading K as P assumes and drops, and the objects a dropped word names as lying there."""
+    said = [f"{w} {', '.join(sorted(s.describe() for s in x))}" for w, x in
+            (("assumes", _rest(p) - _rest(k)), ("drops", _rest(k) - _rest(p))) if x]
+    named = {x for s in _rest(k) - _rest(p) for x in (*s.ingredients, s.related)}
+    laid = [x.describe() for x in u.outputs if x.label in named and (w := place_of(x)) and w[1] == k.label]
+    return ("; " + ", ".join(said) if said else "") + (f": {', '.join(laid)} in both units" if laid else "")
