@@ -88,3 +88,11 @@ def test_a_command_without_a_goal_names_every_way_to_give_one():
         assert "no goal given: --goal G (repeat it for a batch), --goals FILE or --goal-file FILE" in r.stderr
     both = run("plan", "--goal", "guacamole", "--goal-file", POUR_WATER)
     assert both.exit_code == 2 and "--goal and --goal-file: give one of them" in both.stderr
+
+
+def test_instances_help_names_every_encoding_it_counts_for():
+    """`--instances` sets the object counts of `relational` too (docs/pddl.md: same counts as `instances`), but
+    plan --help said "instances encoding: N objects of LABEL" and the refusal "--encoding instances" only."""
+    assert "instances and relational encodings: N objects of LABEL" in " ".join(run("plan", "--help").output.split())
+    counted = run("plan", "--goal", "guacamole", "--encoding", "relational", "--instances", "cutting board=2")
+    assert counted.exit_code == 0 and "2 x cutting board (empty): the count stated for it" in counted.stderr

@@ -81,8 +81,8 @@ def encoding_option(command):
 
 
 instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
-                                help="instances encoding: N objects of LABEL in each place one can start "
-                                     "(overrides the derived count; repeatable).")
+                                help="instances and relational encodings: N objects of LABEL in each place one "
+                                     "can start (overrides the derived count; repeatable).")
 category_types_option = click.option("--category-types", "category_types", is_flag=True,
                                      help="instances encoding: declare each label's type under its categories "
                                           "from the shipped category index (FOON-GEN's).")
@@ -380,7 +380,7 @@ def checked_instances(items, encoding: str, foon) -> tuple[tuple[str, int], ...]
     if not items:
         return ()
     if not encoding_named(encoding).physical:
-        raise UsageError(f"--instances counts the objects of --encoding instances; the {encoding} encoding has none")
+        raise UsageError(f"--instances counts the objects of --encoding instances or relational; {encoding} has none")
     parsed = parse_instances(items)
     labels = sorted({n.label for n in foon.nodes})
     for label, _ in parsed:
