@@ -713,3 +713,19 @@ def test_a_reading_is_a_note_of_the_tasks_that_have_its_node_only():
         notes[dish.label] = [x for x in c.notes if "each in the other" in x]
     assert notes["garlic bread"] and all("0017-garfield_garlic_bread.txt:35" in x for x in notes["garlic bread"])
     assert notes["dalgona coffee"] == []
+
+
+def test_encoding_keeps_no_network_alive():
+    # the readings kept per network object (mutual lists, input stitches) die with it: a long run (an
+    # experiment's workers, this test suite) would otherwise keep every network it encoded, and its indexes
+    import gc
+    import weakref
+
+    for names in (("0001",), ("0017", "0036")):  # no reading at all; a mutual reading and an input stitch
+        foon, _ = load([p for p in sorted(SUBGRAPHS.iterdir()) if p.name[:4] in names])
+        dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+        compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational")
+        alive = weakref.ref(foon)
+        del foon
+        gc.collect()
+        assert alive() is None, names

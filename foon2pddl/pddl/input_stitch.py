@@ -169,7 +169,7 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
 
 @per_network
 def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[ObjectNode, ObjectNode]], list[int],
-                                           Foon]:
+                                           Foon | None]:
     """`stitches` of every unit of the network, each stitched unit's readings, the stitched units needed beside
     FOON's (an appliance's), and the network through the stitches (`with_stitches`): once per network object (an
     experiment encodes a hundred goals over one)."""
@@ -180,6 +180,8 @@ def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[Ob
     # an appliance's stitch is needed beside FOON's unit (the first turn on takes the kitchen's `oven (off
     # (ready))`, the second the `oven (off)` the remove leaves): one more unit; the others take FOON's place
     beside = [u for u in reads if all(place_of(x.node) is None for x in found if x.unit == u)]
+    if not reads:  # no network of its own (and the cache must not keep its key alive)
+        return found, reads, beside, None
     through = Foon(tuple(_sewn(foon, reads, u) if u in reads and u not in beside else x
                          for u, x in enumerate(foon.units))
                    + tuple(_sewn(foon, reads, u) for u in beside), foon.level)
@@ -287,6 +289,7 @@ def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stit
     (the second turn on of one oven) is kept when relevant in the network that has both."""
     own = tuple(relevant(foon))
     found, reads, beside, through = _network_stitches(foon)
+    through = foon if through is None else through
     n = len(foon.units)
     needed = tuple(relevant(through)) if reads else own
     used = set(needed)

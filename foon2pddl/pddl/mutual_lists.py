@@ -60,12 +60,13 @@ def mutual_readings(foon: Foon) -> dict[ObjectNode, tuple[ObjectNode, Functional
 
 
 @per_network
-def _mutual_network(foon: Foon) -> tuple[Foon, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
-    """The network with every node of `mutual_readings` read so, and the readings: once per network object (an
-    experiment encodes a hundred goals over one network)."""
+def _mutual_network(foon: Foon) -> tuple[Foon | None, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
+    """The network with every node of `mutual_readings` read so (None when there is none: the cache must not keep
+    its own key alive), and the readings: once per network object (an experiment encodes a hundred goals over
+    one network)."""
     reads = mutual_readings(foon)
     if not reads:
-        return foon, reads
+        return None, reads
 
     def unit(u: FunctionalUnit) -> FunctionalUnit:
         ins = tuple(dict.fromkeys(reads[n][0] if n in reads else n for n in u.inputs))
@@ -78,7 +79,7 @@ def _mutual_network(foon: Foon) -> tuple[Foon, dict[ObjectNode, tuple[ObjectNode
 def read_mutual(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
     """`inp` with every node of `mutual_readings` read so, in the units and the kitchen; and the readings."""
     foon, reads = _mutual_network(inp.foon)
-    if not reads:
+    if foon is None:
         return inp, reads
     kitchen = frozenset(reads[n][0] if n in reads else n for n in inp.kitchen)
     return replace(inp, foon=foon, kitchen=kitchen), reads
