@@ -54,6 +54,15 @@ def _summary(ctx: Context, name: str, times: list[float], note: str = "") -> Non
     ctx.report(AREA, f"{name} worst", max(times) * 1000, "ms")
 
 
+def _against_tree(ctx: Context, name: str, times: list[float], tree_times: list[float], planned: list[int],
+                  which: str) -> None:
+    """`name`'s median against `fd-tree`'s on the `planned` goals (the goals `which`)."""
+    ours = statistics.median(times[k] for k in planned)
+    theirs = statistics.median(tree_times[k] for k in planned)
+    ctx.report(AREA, f"planned goals: {name} median / fd-tree median", ours / theirs, "x",
+               f"{ours * 1000:.3g} ms against {theirs * 1000:.3g} ms on the {len(planned)} goals {which}")
+
+
 def relational_encode(ctx: Context, net, goals_per_trial: int) -> None:
     """The relational encode alone, per goal of one trial on REG, EXP and GEN (CPU seconds, goals one after another
     over one network object, as a worker encodes them)."""
@@ -102,10 +111,7 @@ def run(ctx: Context) -> None:
                "x", "issue 25: not slower per goal than fd-tree's median")
     planned = [k for k, p in enumerate(rel_phases) if "encode" in p]
     if planned:
-        ours = statistics.median(rel_times[k] for k in planned)
-        theirs = statistics.median(tree_times[k] for k in planned)
-        ctx.report(AREA, "planned goals: fd-relational median / fd-tree median", ours / theirs, "x",
-                   f"{ours * 1000:.3g} ms against {theirs * 1000:.3g} ms on the {len(planned)} goals it encodes")
+        _against_tree(ctx, "fd-relational", rel_times, tree_times, planned, "it encodes")
         for phase in ("encode", "translate", "search"):
             ctx.report(AREA, f"planned goals: fd-relational {phase} median",
                        statistics.median(rel_phases[k].get(phase, 0.0) for k in planned) * 1000, "ms")
@@ -124,10 +130,7 @@ def run(ctx: Context) -> None:
     ctx.report(AREA, "fd-instances mean: before / now", statistics.fmean(old_times) / statistics.fmean(new_times), "x")
     planned = [k for k, p in enumerate(new_phases) if "translate" in p]
     if planned:
-        ours = statistics.median(new_times[k] for k in planned)
-        theirs = statistics.median(tree_times[k] for k in planned)
-        ctx.report(AREA, "planned goals: fd-instances median / fd-tree median", ours / theirs, "x",
-                   f"{ours * 1000:.3g} ms against {theirs * 1000:.3g} ms on the {len(planned)} goals a task tree reaches")
+        _against_tree(ctx, "fd-instances", new_times, tree_times, planned, "a task tree reaches")
         for phase in ("encode", "write", "translate", "search"):
             now = statistics.median(new_phases[k].get(phase, 0.0) for k in planned) * 1000
             before = statistics.median(old_phases[k].get(phase, 0.0) for k in planned) * 1000
