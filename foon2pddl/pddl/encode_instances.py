@@ -60,7 +60,7 @@ with no holders (`instance_replay`, the encoding's replay hook).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from itertools import pairwise
 
 from ..model.foon import Foon, ObjectNode
@@ -237,16 +237,15 @@ def count_lines(counts: InstanceCounts) -> tuple[str, ...]:
 
 
 def goal_actions_over_objects(candidates, stable, table: NameTable, const, type_of, options: EncodeOptions,
-                              made_by_units: dict | None = None) -> list[Action]:
+                              made_by_units: Collection[ObjectNode] = ()) -> list[Action]:
     """One `reach-goal-<i>` action per goal candidate: "some object is in the candidate's state" (through
     `(occupied s)` when the candidate's node is stable, else a parameter). Shared by the encodings over
     physical objects; kept even when no object can reach a candidate.
 
-    `made_by_units` maps a candidate to the objects that may reach it, when others start in its state without
-    the kitchen holding it (`relational`: a closed packet's chipotle starts as the `chipotle (dried, in
-    [packet])` FOON makes by opening the packet): that candidate's action also needs `(goal-object ?x)`,
-    a static fact of the objects that may, so only a unit's product reaches the goal."""
-    made_by_units = made_by_units or {}
+    `made_by_units`: the candidates some object starts in without the kitchen holding them (`relational`: a
+    closed packet's chipotle starts as the `chipotle (dried, in [packet])` FOON makes by opening the packet):
+    their actions also need `(goal-object ?x)`, a static fact the task gives the objects that do not start in
+    it, so only a unit's product reaches the goal."""
     out = []
     for i, c in enumerate(candidates, start=1):
         stable_goal = c in stable and c not in made_by_units

@@ -179,9 +179,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
     early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
              and any(x.start == c for x in instances)}
-    made = {c: tuple(x.name for x in instances if x.label == c.label and x.start != c) for c in early}
-    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, made))
-    init.extend(Atom(GOAL_OBJECT, (x,)) for x in sorted({x for xs in made.values() for x in xs}))
+    actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, early))
+    init.extend(Atom(GOAL_OBJECT, (x.name,)) for x in instances if any(x.label == c.label and x.start != c
+                                                                      for c in early))
     init.extend(precedes_facts(precede, instances))
     hold = (("?h", ROOT_TYPE), ("?x", ROOT_TYPE))
     predicates = [Predicate(IS, (("?x", ROOT_TYPE), ("?s", STATE_TYPE)), "?x is in the state of FOON node ?s"),
@@ -190,7 +190,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                   Predicate(GOAL_REACHED, comment="a goal candidate was made")]
     if precede:
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
-    if made:
+    if early:
         predicates.append(Predicate(GOAL_OBJECT, (("?x", ROOT_TYPE),), "?x may reach the goal: no kitchen object"))
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(

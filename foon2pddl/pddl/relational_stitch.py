@@ -62,8 +62,8 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
 
     out = {}
     for k in full:
-        items = read(listed(k))
-        taken = {x for u in _takers(task, k) for x in u.inputs
+        items, takers = read(listed(k)), _takers(task, k)
+        taken = {x for u in takers for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
@@ -73,7 +73,7 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
                 continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
-            laid = _laid_words(k, u, _takers(task, k))
+            laid = _laid_words(k, u, takers)
             kept = items - read(x for s in laid for x in (*s.ingredients, s.related) if x)
             if (_rest(k) - laid <= _rest(p) and _nested(places(k), places(p))
                     and kept <= read(listed(p)) and not (read(listed(p)) - kept) & (roles | before)):
