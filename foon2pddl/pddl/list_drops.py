@@ -10,10 +10,16 @@ beer out: it stays in the pot, and the mix takes it from there.
 Rule (`kept_in_place`): a flow of label L out of the container role of label C into nothing is not applied when,
 following that role's output node forward through the task's units that take it (each unit's pairing,
 `pairing.unit_roles`, gives the node it becomes), each later in the same recipe file, a unit takes a node of
-label L placed in C (its place read through that unit's names) that a unit of the network makes. What stays ambiguous: the pot's nodes between the
-two units do not list the rice beer, so the pair (C, L) is one the replay does not check (`PlanningTask.gaps`),
-and the reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r
-roles (d at most `DEPTH`).
+label L placed in C (its place read through that unit's names) that a unit of the network makes; or when a unit
+of the task later in the same recipe file takes a node of label L placed in C that a unit before this one in that
+file makes, with a node of C listing L (`_still_there`): FOON describes the object still there, in the node it
+had before. 0012's spray (0012-grilled-grilled_cheese_sandwich.txt:123) leaves `grill (on, contains {bread})`,
+without the spatula of cheese the pick-and-place put on it; the heat at :142, after it in the video, takes
+`grill spatula (contains {cheese}, on [grill])` and `grill (on, contains {grill spatula})`: the spatula stayed
+on the grill. What stays ambiguous: the container's nodes between the two units do not list L, so the pair (C,
+L) is one the replay does not check (`PlanningTask.gaps`), and the reading is reported once with the unit's
+file:line. O(d r) per dropped label for a path of d units of r roles (d at most `DEPTH`), and O(u n) for the
+later units of the recipe.
 """
 
 from __future__ import annotations
@@ -22,7 +28,7 @@ from collections.abc import Iterable
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
-from ..model.places import place_of
+from ..model.places import listed, place_of
 from .encoding import short_path, unit_where
 from .holder_words import unit_aliases
 from .pairing import unit_roles
@@ -54,18 +60,38 @@ def _taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: 
                 if v not in units or here[0] != path or here[1] <= line:
                     continue
                 unit = foon.units[v]
-                names = dict(unit_aliases(unit))
-                for n in unit.inputs:
-                    where = place_of(n)
-                    if (n.label == label and where is not None and names.get(where[1], where[1]) == start.label
-                            and n in foon.producers):
-                        return unit
+                if any(n in foon.producers for n in _placed(unit, label, start.label)):
+                    return unit
                 nxt += [(r.after, here) for r in unit_roles(unit) if r.before == node and r.after is not None
                         and r.after not in seen]
         seen.update(n for n, _ in nxt)
         frontier = nxt
         if not frontier:
             return None
+    return None
+
+
+def _placed(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
+    """The unit's inputs of `label` placed in or on `holder` (the place read through the unit's names)."""
+    names = dict(unit_aliases(unit))
+    return [n for n in unit.inputs if n.label == label and (w := place_of(n)) is not None
+            and names.get(w[1], w[1]) == holder]
+
+
+def _still_there(foon: Foon, units: frozenset[int], u: int, holder: str, label: str) -> FunctionalUnit | None:
+    """The first unit of `units` later in unit `u`'s recipe file that takes a node of `label` placed in or on
+    `holder`, made by a unit before `u` in that file, together with a node of `holder` listing `label`: FOON
+    describes the object still there, in the node it had before `u` (0012's heat takes the spatula of cheese on
+    the grill, and the grill listing it, after the spray's `grill (contains {bread})`)."""
+    path, line = _order(foon, u)
+    for v in sorted((v for v in units if _order(foon, v)[0] == path and _order(foon, v)[1] > line),
+                    key=lambda v: _order(foon, v)):
+        unit = foon.units[v]
+        names = dict(unit_aliases(unit))
+        if (any(_order(foon, p)[0] == path and _order(foon, p)[1] < line
+                for n in _placed(unit, label, holder) for p in foon.producers.get(n, ()))
+                and any(n.label == holder and label in {names.get(x, x) for x in listed(n)} for n in unit.inputs)):
+            return unit
     return None
 
 
@@ -81,11 +107,14 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
         for f in plan.flows:
             role = plan.slots[f.holder].rel.role
             taker = _taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
+            if taker is None and f.into is None:
+                taker = _still_there(foon, task, u, role.label, f.label)
             if taker is None:
                 keep.append(f)
                 continue
+            rel = next((place_of(n)[0].value for n in _placed(taker, f.label, role.label)), "in")
             gaps.append((role.label, f.label, f"{role.label} leaves {f.label} out of its list, which {taker.motion.label} at "
-                         f"{unit_where(taker, short_path)} takes in [{role.label}]: read as still in it",
+                         f"{unit_where(taker, short_path)} takes {rel} [{role.label}]: read as still in it",
                          plan.unit))
         if len(keep) < len(plan.flows):
             out[u] = replace(plan, flows=tuple(keep))

@@ -27,8 +27,10 @@
   (the bowl of sesame seeds sprinkled over the salad). An object a unit makes in a
   holder whose node lists it before and after restates what is there, which becomes
   part of it (`restated_nodes`: the corn on the board); what a unit puts on a holder
-  it leaves silent about its contents (`dustings`: the flour on the floured board)
-  goes into what a later unit puts there when its list leaves it out (`dusted_nodes`).
+  it leaves silent about its contents (`dustings`: the flour on the floured board), or
+  what a unit's node lists on a holder some unit leaves silent (the spray's olive oil
+  on the bread the flip leaves `toasted`), goes into what a later unit puts there when
+  its list leaves it out (`dusted_nodes`: the melted cheese scooped onto that bread).
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
   object leaves its node, an emptied container changes node.
@@ -294,14 +296,22 @@ def restated_nodes(plan: UnitPlan, s: Slot,
 
 def dustings(plans: Iterable[UnitPlan]) -> frozenset[ObjectNode]:
     """The nodes units put in or on a role they leave silent about its contents (the sprinkle's `flour (powder, on
-    [cutting board])` beside its `cutting board (floured)`): what FOON stops counting as the holder's contents."""
-    out = set()
+    [cutting board])` beside its `cutting board (floured)`), and the nodes units make of a label L placed at a
+    label C when some unit turns a node of C listing L into one silent about its contents (0012's spray makes
+    `olive oil (on [bread])` and `bread (contains {olive oil})`, the flip leaves `bread (toasted)`): what FOON
+    stops counting as the holder's contents."""
+    out, made, hushed = set(), set(), set()
     for p in plans:
-        for s in p.slots:
+        for k, s in enumerate(p.slots):
             into = s.rel.target.role if s.rel.target is not None else None
             after = p.after_of(into) if into is not None else None
             if after is not None and not describes_contents(after) and s.fate in (Fate.NEW, Fate.MOVES, Fate.SPLITS):
                 out.add(s.portion if s.fate is Fate.SPLITS else s.after)
+            made.update(n for n in (s.after, s.portion) if n is not None)
+            new, old = p.after_of(k), s.rel.role.before
+            if new is not None and old is not None and describes_contents(old) and not describes_contents(new):
+                hushed.update((s.rel.role.label, x) for x in listed(old))
+    out.update(n for n in made for _, c in places(n)[:1] if (c, n.label) in hushed)
     return frozenset(out - {None})
 
 

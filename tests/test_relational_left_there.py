@@ -1,0 +1,73 @@
+"""0012's readings: an object a list drops that a later unit still takes there, and what a silent node hushed."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from node_words import contains, n
+from relational_checks import clean_dish_plan
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.list_drops import kept_in_place
+from foon2pddl.pddl.relational_plan import dustings, plan_unit
+
+DATA = Path(__file__).parent / "data" / "foon-subgraphs"
+
+
+def on(holder: str):
+    return make_state("on", holder)
+
+
+def _grill(order=(0, 1, 2)):
+    """0012's grill: the spatula of cheese put on it, the spray (its list then names only the bread), the heat
+    that takes the spatula on the grill and the grill listing it, each a line later in one recipe file."""
+    grill_on = n("grill", "on")
+    spatula = n("grill spatula", contains("cheese"), on("grill"))
+    with_spatula = n("grill", "on", contains("grill spatula"))
+    units = (FunctionalUnit((grill_on, n("grill spatula", contains("cheese"))), Motion("pick-and-place"),
+                            (with_spatula, spatula)),
+             FunctionalUnit((with_spatula, n("bread", "sliced")), Motion("spray"),
+                            (n("grill", "on", contains("bread")), n("bread", on("grill")))),
+             FunctionalUnit((with_spatula, spatula, n("cheese", on("grill spatula"))), Motion("heat"),
+                            (spatula, n("cheese", "melted", on("grill spatula")))))
+    return tuple(FunctionalUnit(u.inputs, u.motion, u.outputs, (Source("r.txt", 10 * (1 + order[k])),))
+                 for k, u in enumerate(units))
+
+
+def _plans(units):
+    return {u: plan_unit(x, Kitchen(frozenset()), frozenset(), frozenset()) for u, x in enumerate(units)}
+
+
+def test_a_list_drops_an_object_a_later_unit_still_takes_there_with_the_container_listing_it():
+    units = _grill()
+    plans = _plans(units)
+    assert [f.label for f in plans[1].flows if f.into is None] == ["grill spatula"]  # holders rule 5: consumed
+    kept, gaps = kept_in_place(Foon(units), range(3), plans)
+    assert not kept[1].flows
+    assert [(c, x, u) for c, x, _, u in gaps] == [("grill", "grill spatula", units[1])]
+    assert "heat at r.txt:30 takes on [grill]: read as still in it" in gaps[0][2]
+    # the heat earlier in the recipe than the spray is no evidence: the spatula may have gone by then
+    early = _grill(order=(0, 2, 1))
+    assert kept_in_place(Foon(early), range(3), _plans(early)) == (_plans(early), [])
+    # nor a heat that takes the grill without listing the spatula
+    bare = (*units[:2], FunctionalUnit((n("grill", "on"), *units[2].inputs[1:]), units[2].motion, units[2].outputs,
+                                       units[2].sources))
+    assert kept_in_place(Foon(bare), range(3), _plans(bare)) == (_plans(bare), [])
+
+
+def test_what_a_node_lists_on_a_role_a_later_unit_leaves_silent_went_into_what_is_put_there_next():
+    # 0012: the spray leaves `bread (contains {olive oil})` and `olive oil (on [bread])`; the flip leaves the bread
+    # `toasted`, silent about what is on it; the scoop then puts the cheese on and the bread lists only cheese
+    oil = n("olive oil", on("bread"))
+    spray = FunctionalUnit((n("bread", "sliced"), n("olive oil", "liquid")), Motion("spray"),
+                           (n("bread", contains("olive oil")), oil))
+    flip = FunctionalUnit((n("bread", contains("olive oil")),), Motion("flip"), (n("bread", "toasted"),))
+    plans = _plans((spray, flip))
+    assert dustings([plans[0]]) == frozenset()
+    assert dustings(plans.values()) == {oil}
+
+
+def test_grilled_cheese_sandwich_is_solved_and_replay_clean():
+    outcome = clean_dish_plan(DATA / "0012-grilled-grilled_cheese_sandwich.txt")
+    assert any("grill leaves grill spatula out of its list, which heat at" in note for note in outcome.compiled.notes)
