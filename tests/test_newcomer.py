@@ -617,6 +617,34 @@ def test_recipe_text_on_every_unit_of_the_corpus_names_its_motion_and_movers(uni
                 assert f" the {_place(o)[1]}" in text  # where a moved object goes is said
 
 
+def test_a_pour_into_a_container_whose_contents_list_it_says_what_is_poured_from_where(universal):
+    """0001's `pour*` lists the cream and the sugar only in the mixing bowl's new contents (no output of their
+    own): the step says what goes from where into what, not `pour mixing bowl ..., with the ... heavy cream`."""
+    from foon2pddl.io.tree_formats import recipe_text
+    from foon2pddl.model.places import listed, place_of
+
+    foon, _ = universal
+    pour = next(u for u in foon.units if u.motion.label == "pour" and any(
+        o.label == "mixing bowl" and {"heavy cream", "refined sugar"} <= listed(o) for o in u.outputs)
+        and not any(o.label == "heavy cream" for o in u.outputs))
+    assert recipe_text(pour) == (
+        "pour heavy cream from the measuring cup and refined sugar (granulated) from the spoon into the mixing bowl"
+        " (attached to [mixer], empty), with the mixer (on, with [mixing bowl])")
+    def contains(node):
+        return {i for s in node.states if s.label == "contains" for i in s.ingredients}
+
+    for unit in foon.units[:600]:  # every object a container newly lists, with no output of its own, is said moved
+        new = {o.label: o for o in unit.outputs if o not in unit.inputs}
+        before = {i.label: i for i in unit.inputs}
+        text = recipe_text(unit)
+        for label, container in new.items():
+            for i in unit.inputs:
+                if (label in before and i.label in contains(container) - contains(before[label])
+                        and i.label not in new and (place_of(i) or (0, ""))[1] != label and i.label != label
+                        and not (place_of(i) and place_of(i) == place_of(before[label]))):  # stirred where both are
+                    assert i.label in text and f" into the {label}" in text, (text, i.label)
+
+
 # -- -o: one convention for every output ---------------------------------------------------------------
 
 #: Every command's output options, each with its kind: a file, or a directory of files.

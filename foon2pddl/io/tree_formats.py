@@ -132,6 +132,27 @@ def _without_contents(node: ObjectNode, contents: set[str]) -> str:
     return node.label + (f" ({', '.join(states)})" if states else "")
 
 
+def _contents(node: ObjectNode) -> set[str]:
+    """What a node's `contains` states list (`bowl (contains {egg, salt})`: egg, salt)."""
+    return {i for s in node.states if s.label == "contains" for i in s.ingredients}
+
+
+def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
+            moved: set[str]) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
+    """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
+    unit gives it no node of its own (0001's `pour*`: the cream and the sugar only in the mixing bowl's list);
+    not an input already in it, or beside it in one holder (stirred in the pot where both are)."""
+    out = []
+    for label, container in new.items():
+        if label not in before:
+            continue
+        added = _contents(container) - _contents(before[label])
+        out += [(i, _place(i), ("in", label)) for i in unit.inputs
+                if i.label in added and i.label not in new and i.label not in moved
+                and (_place(i) or ("", ""))[1] != label and not (_place(i) and _place(i) == _place(before[label]))]
+    return out
+
+
 def recipe_text(unit: FunctionalUnit) -> str:
     """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
 
@@ -146,14 +167,20 @@ def recipe_text(unit: FunctionalUnit) -> str:
     by_label = {i.label: i for i in unit.inputs}
     moves = [(i, _place(i), _place(new[i.label])) for i in unit.inputs
              if i.label in new and _place(new[i.label]) not in (None, _place(i))]
+    moves += _filled(unit, new, by_label, {i.label for i, _, _ in moves})
     named = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
     if moves:
-        parts = []
+        parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
         for i, src, dst in moves:
             phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
             where = by_label.get(dst[1])
-            parts.append(f"{phrase} {_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}")
-        text = f"{unit.motion.label} " + "; ".join(parts)
+            into = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
+            if parts and parts[-1][1] == into:
+                parts[-1][0].append(phrase)
+            else:
+                parts.append(([phrase], into))
+        text = f"{unit.motion.label} " + "; ".join(
+            (", ".join(what[:-1]) + " and " if len(what) > 1 else "") + f"{what[-1]} {into}" for what, into in parts)
     else:
         receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o))}
         changed = ([i for i in unit.inputs if i.label in new and i.label not in receivers]
