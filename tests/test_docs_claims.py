@@ -210,3 +210,31 @@ def test_retrieval_md_gives_the_additions_search_its_bound():
     said = {int(n) for n in re.findall(r"When no set of up to (\d+) nodes works", text)}
     assert said == {MAX_ADDITIONS}
     assert f"`it needs more than {MAX_ADDITIONS} kitchen additions`" in text
+
+
+def test_skills_md_counts_and_lists_the_shipped_domains_actions():
+    """skills.md said "Skills (46 actions, ...)" above a list of 47, the shipped domain's 47 actions: the count
+    and the names listed are the domain's."""
+    domain = (ROOT / "foon2pddl" / "data" / "skills" / "skills.pddl").read_text()
+    actions = set(re.findall(r"\(:action ([\w-]+)", domain))
+    text = _prose("skills.md")
+    count = re.search(r"Skills \((\d+) actions, the first parameter always the hand\):(.*?)What FOON says", text)
+    assert count, "skills.md introduces the skill list with its count"
+    listed = set(re.findall(r"`([a-z-]+)`", count.group(2))) - {"tool", "graspable"}
+    assert int(count.group(1)) == len(actions) and listed == actions, (count.group(1), listed ^ actions)
+
+
+def test_the_tests_run_with_the_venvs_pytest_as_with_python_m_pytest():
+    """`make test` runs `python -m pytest`, which puts the checkout on sys.path; the venv's `pytest` script (how
+    a contributor runs one file) does not, and the test files that import `bench` failed to collect with
+    "No module named 'bench'". pyproject's pytest `pythonpath` puts the checkout there for both."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    script = Path(sys.executable).parent / "pytest"
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    run = subprocess.run([str(script), "--collect-only", "-q", "-p", "no:xdist", "-p", "no:cacheprovider",
+                          "tests/test_docs_transcripts.py"], cwd=ROOT, env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
