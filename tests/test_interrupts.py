@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
 import signal
 import time
 import weakref
@@ -31,3 +33,36 @@ def test_an_interrupt_inside_a_weakref_callback_is_delivered_after_it(capfd):
             time.sleep(0.01)
     assert ref() is None
     assert "Exception ignored" not in capfd.readouterr().err
+
+
+#: Run the CLI with a signal sent while a class of the package whose fields have defaults is being created:
+#: Python 3.11 wraps an exception raised in `__set_name__` (a dataclass `field()`) in a RuntimeError.
+_SIGNAL_IN_SET_NAME = """
+import dataclasses, os, signal, sys
+module, signum = sys.argv[1], getattr(signal, sys.argv[2])
+original = dataclasses.Field.__set_name__
+def signalling(self, owner, name):
+    if owner.__module__ == module:
+        os.kill(os.getpid(), signum)
+        for _ in range(10_000):  # the handler runs here
+            pass
+    return original(self, owner, name)
+dataclasses.Field.__set_name__ = signalling
+sys.argv = ["foon2pddl", "plan", "--goal", "guacamole"]
+from foon2pddl.__main__ import run
+run()
+"""
+
+
+@pytest.mark.parametrize(("module", "name", "status", "word"), [
+    ("foon2pddl.model.foon", "SIGTERM", 143, "terminated"),  # imported by the command (click has started it)
+    ("foon2pddl.model.foon", "SIGINT", 130, "interrupted"),
+])
+def test_a_signal_while_a_dataclass_is_created_exits_without_a_traceback(module, name, status, word):
+    # found by test_signals at load 10: `plan` printed "RuntimeError: Error calling __set_name__ on 'Field'
+    # instance 'origin' in 'Overrides'" and its traceback when SIGTERM came during a lazy import
+    done = subprocess.run([sys.executable, "-c", _SIGNAL_IN_SET_NAME, module, name], capture_output=True,
+                          text=True, timeout=120)
+    assert "Traceback" not in done.stderr, done.stderr[-2000:]
+    assert done.returncode == status, (done.returncode, done.stderr[-2000:])
+    assert done.stderr.strip().splitlines()[-1] == word

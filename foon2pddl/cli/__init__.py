@@ -21,7 +21,7 @@ import click
 from .. import __version__
 from ..errors import FoonError, FoonInputError, UsageError
 from ..io.atomic import discard_staged
-from ..io.interrupts import Terminated, sigterm_raises
+from ..io.interrupts import Terminated, carried_interrupt, sigterm_raises
 from ..planners.cleanup import command_scope
 from . import progress
 
@@ -96,8 +96,11 @@ class _Group(click.Group):
             if hint:
                 click.echo(f"hint: a goal of several words is one argument: --goal {hint}", err=True)
             ctx.exit(2)
-        except KeyboardInterrupt as exc:
-            terminated = isinstance(exc, Terminated)
+        except (KeyboardInterrupt, RuntimeError) as exc:
+            interrupt = carried_interrupt(exc)
+            if interrupt is None:
+                raise
+            terminated = isinstance(interrupt, Terminated)
             click.echo("terminated" if terminated else "interrupted", err=True)
             ctx.exit(143 if terminated else 130)
         except BrokenPipeError:

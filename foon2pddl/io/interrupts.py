@@ -37,6 +37,15 @@ def _raise_terminated(signum: int, frame: object) -> None:
     raise Terminated()
 
 
+def carried_interrupt(exc: BaseException) -> KeyboardInterrupt | None:
+    """The interrupt `exc` is, or carries as its cause: Python 3.11 wraps an exception raised in `__set_name__`
+    in a RuntimeError ("Error calling __set_name__"), so a signal landing while a class with dataclass `field()`
+    defaults is created (a module the command imports lazily) arrives as one. None for any other exception."""
+    while isinstance(exc, RuntimeError) and exc.__cause__ is not None:
+        exc = exc.__cause__
+    return exc if isinstance(exc, KeyboardInterrupt) else None
+
+
 def _main_thread() -> bool:
     return threading.current_thread() is threading.main_thread()
 
