@@ -1,11 +1,12 @@
-"""An interrupt that lands inside a weak-reference callback is not lost and prints no traceback."""
+"""Interrupts that land where Python cannot propagate them as they are (a weak-reference callback, a
+dataclass field's `__set_name__`) are not lost and print no traceback."""
 
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
-import signal
 import time
 import weakref
 
