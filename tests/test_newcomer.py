@@ -316,6 +316,15 @@ def test_stats_of_a_kitchen_json_says_it_is_a_kitchen():
     assert r.exit_code == 2 and "is a kitchen or a goal list" in r.stderr
 
 
+@pytest.mark.parametrize("command", ["stats", "plan"])
+def test_a_scene_given_as_a_network_says_it_is_a_scene_kitchen(command):
+    """`plan tests/data/scene/whipped_cream_scene.json --goal ...` (the scene as PATHS, not --kitchen) said only
+    "FOON JSON document lacks the required field 'format'"."""
+    scene = Path(__file__).parent / "data" / "scene" / "whipped_cream_scene.json"
+    r = run(command, scene, *(["--goal", "whipped cream"] if command == "plan" else []))
+    assert r.exit_code == 2 and "is a scene kitchen (docs/scene.md), not a network: give it as the kitchen" in r.stderr
+
+
 def test_stats_skips_plainly_non_foon_files_and_invalid_ones_on_request(tmp_path):
     from conftest import SEARCH_INPUTS
 

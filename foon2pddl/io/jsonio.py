@@ -238,6 +238,9 @@ def _foon(data: Any) -> Foon:
     if isinstance(data, list):
         raise _Invalid((), "expected a FOON JSON document (a JSON object), found a list: a JSON list of objects "
                            "is a kitchen or a goal list (docs/format.md), not a network")
+    if isinstance(data, dict) and "objects" in data and "format" not in data:
+        raise _Invalid((), "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a network: "
+                           "give it as the kitchen")
     d = _fields(data, (), "FOON JSON document", ("format", "version", "units"), ("level",))
     if d["format"] != FORMAT:
         raise _Invalid(("format",), f"not a foon2pddl FOON (expected \"format\": \"{FORMAT}\", found {d['format']!r})")
