@@ -238,3 +238,16 @@ def test_the_tests_run_with_the_venvs_pytest_as_with_python_m_pytest():
     run = subprocess.run([str(script), "--collect-only", "-q", "-p", "no:xdist", "-p", "no:cacheprovider",
                           "tests/test_docs_transcripts.py"], cwd=ROOT, env=env, capture_output=True, text=True)
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
+
+
+def test_generalization_md_statistics_name_the_network_they_are_of():
+    """generalization.md's statistics of the 100 shared subgraphs said `foon2pddl expand --similarity paper` /
+    `expand` / `generalize` print its rows: run as written (no PATHS) they print the embedded example's (101
+    units). Each command shown names the subgraphs, and the REG rows are what `stats` of them prints."""
+    text = (ROOT / "docs" / "generalization.md").read_text()
+    section = text.split("## Statistics on the 100 shared subgraphs", 1)[1].split("\n## ", 1)[0]
+    shown = re.findall(r"`(foon2pddl [^`]+)`", section.split("| network |", 1)[0])
+    assert len(shown) == 3 and all(" tests/data/foon-subgraphs" in c for c in shown), shown
+    stats = CliRunner().invoke(main, ["stats", str(ROOT / "tests" / "data" / "foon-subgraphs")]).stdout
+    for level, objects, motions in re.findall(r"^\s+(\d)\s+(\d+)\s+(\d+)$", stats, re.M):
+        assert f"| REG | {level} | {objects} | {motions} |" in section
