@@ -67,3 +67,32 @@ def test_a_signal_while_a_dataclass_is_created_exits_without_a_traceback(module,
     assert "Traceback" not in done.stderr, done.stderr[-2000:]
     assert done.returncode == status, (done.returncode, done.stderr[-2000:])
     assert done.stderr.strip().splitlines()[-1] == word
+
+
+_SIGNAL_IN_CALLBACK_AT_START = """
+import os, signal, sys, time, weakref
+from foon2pddl.io.interrupts import exit_on_signals
+exit_on_signals()  # as `foon2pddl` does first, while its modules load
+class Node:
+    pass
+def callback(_ref):
+    os.kill(os.getpid(), getattr(signal, sys.argv[1]))
+    for _ in range(10_000):  # the handler runs here, inside the callback
+        pass
+node = Node()
+ref = weakref.ref(node, callback)
+del node
+for _ in range(500):
+    time.sleep(0.01)
+print("not interrupted")
+"""
+
+
+@pytest.mark.parametrize(("name", "status"), [("SIGTERM", 143), ("SIGINT", 130)])
+def test_a_signal_inside_a_weakref_callback_at_start_up_still_ends_the_process(name, status):
+    # found by test_signals at load 12: SIGTERM landed in importlib's module-lock weakref callback while the
+    # CLI's modules loaded; Python printed "Exception ignored ... Traceback" and the command ran to its end
+    done = subprocess.run([sys.executable, "-c", _SIGNAL_IN_CALLBACK_AT_START, name], capture_output=True,
+                          text=True, timeout=120)
+    assert (done.returncode, done.stdout) == (status, ""), done.stderr[-2000:]
+    assert "Traceback" not in done.stderr and "Exception ignored" not in done.stderr, done.stderr[-2000:]

@@ -51,17 +51,22 @@ def _main_thread() -> bool:
 
 
 def _redeliver(unraisable) -> None:
-    """`sys.unraisablehook` while `sigterm_raises` is on: an interrupt raised inside a weak-reference callback
-    or a finalizer (the garbage collector ran one just as the signal came) cannot propagate; Python would print
-    it and lose it. It is sent again from another thread a moment later, so its handler runs once the callback
-    has returned (should it land in another callback, this repeats), and the command ends as for any interrupt."""
-    if isinstance(unraisable.exc_value, KeyboardInterrupt):
-        signum = signal.SIGTERM if isinstance(unraisable.exc_value, Terminated) else signal.SIGINT
-        again = threading.Timer(REDELIVERY_DELAY, os.kill, (os.getpid(), signum))
-        again.daemon = True
-        again.start()
+    """`sys.unraisablehook` from the program's start: an interrupt raised inside a weak-reference callback or a
+    finalizer (the garbage collector, or importlib's module locks, ran one just as the signal came) cannot
+    propagate; Python would print it and lose it. It is sent again from another thread a moment later, so its
+    handler runs once the callback has returned (should it land in another callback, this repeats), and the
+    command ends as for any interrupt."""
+    exc = unraisable.exc_value
+    if isinstance(exc, _SignalExit):
+        signum = exc.signum
+    elif isinstance(exc, KeyboardInterrupt):
+        signum = signal.SIGTERM if isinstance(exc, Terminated) else signal.SIGINT
+    else:
+        sys.__unraisablehook__(unraisable)
         return
-    sys.__unraisablehook__(unraisable)
+    again = threading.Timer(REDELIVERY_DELAY, os.kill, (os.getpid(), signum))
+    again.daemon = True
+    again.start()
 
 
 @contextmanager
@@ -83,8 +88,16 @@ def sigterm_raises() -> Iterator[None]:
             signal.signal(signum, handler)
 
 
+class _SignalExit(SystemExit):
+    """The exit (status 128 + signal number) of a signal that came before a command's handling began."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(128 + signum)
+        self.signum = signum
+
+
 def _exit_quietly(signum: int, frame: object) -> None:
-    raise SystemExit(128 + signum)
+    raise _SignalExit(signum)
 
 
 def exit_on_signals() -> None:
@@ -92,6 +105,7 @@ def exit_on_signals() -> None:
     traceback (for the program's start, while modules load, and its end)."""
     for signum in _HELD:
         signal.signal(signum, _exit_quietly)
+    sys.unraisablehook = _redeliver
 
 
 def _forked_child() -> None:
