@@ -82,7 +82,7 @@ from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
 from .relational_init import completed_kitchen, kitchen_placed, scene_instances
-from .relational_plan import UnitPlan, Way, count_roles, flow_ways, plan_unit, silent_labels
+from .relational_plan import UnitPlan, Way, count_roles, flow_ways, holding_labels, plan_unit, silent_labels
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
@@ -107,13 +107,14 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
-    filled = frozenset().union(*(gained(f.units[u]) for u in units))
+    filled, holding = frozenset().union(*(gained(f.units[u]) for u in units)), holding_labels(f.units[u] for u in units)
     # once; with places only outputs name (by no other name: `pan`), holders with no list (bread toast's plate)
     names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
     silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
                                           if c not in names and not any(head_of(c, x) for x in names)}
     plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled,
-                                                         frozenset(n.label for n in task_nodes)) for u in units})
+                                                         frozenset(n.label for n in task_nodes),
+                                                         holding) for u in units})
     by_unit = {f.units[u]: p for u, p in plans.items()}
     def roles_of(unit):
         return count_roles(by_unit[unit]) if unit in by_unit else ()
@@ -143,7 +144,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     else:
         named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], have, nodes,
-                                                              named, silent)
+                                                              named, silent, filled)
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
@@ -246,9 +247,9 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 need.append(src.role)
             if dst is not None and dst.role is not None and (bound[k] or s.fate is Fate.SPLITS):
                 need.append(dst.role)
-            if (s.fate is Fate.STAYS and src is not None and src.role is not None and changes[src.role]
-                    and not bound[k]):
-                need.append(k)
+            if src is not None and src.role is not None and not bound[k] and (
+                    s.fate is Fate.STAYS and changes[src.role] or s.fate is Fate.SPLITS and bound[src.role]):
+                need.append(k)  # it stays in that holder, or a portion comes out of it: it is in that one
             for j in need:
                 if not bound[j]:
                     bound[j] = grew = True

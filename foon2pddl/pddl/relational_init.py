@@ -26,7 +26,7 @@ def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
                 silent: frozenset[str] = frozenset(), nodes: Iterable[ObjectNode] = (),
                 paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
-                ) -> tuple[list[Instance], list[ObjectNode]]:
+                filled: frozenset[tuple[str, str]] = frozenset()) -> tuple[list[Instance], list[ObjectNode]]:
     """Instances with their starting holders, and the holders to add (module doc, "Init").
 
     An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
@@ -35,7 +35,10 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     (`paired`: the watermelon lemonade's pour takes `strainer (clean, empty, on [measuring cup])` with
     `measuring cup (clean, empty)`, FOON's contradiction the task reports); with none, into a holder to add: one per label C, listing
     everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
-    avocado the kitchen has on a board). An added holder starts in a node of `nodes` that lists exactly that
+    avocado the kitchen has on a board), and one more per further object of a label the task's units put into
+    holders of label C (`filled`, `holders.gained`): a unit taking it out of such a holder empties the holder
+    (`relational_plan`), so two butters `in [bowl]` get two bowls listing butter, where one bowl holding both
+    was left empty with the second in it. An added holder starts in a node of `nodes` that lists exactly that
     and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
     [pot])`), else in a node made of the list. Names are read through the task's `alias`es. O(n^2) for n objects.
     """
@@ -45,7 +48,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         if x.start is not None:
             by_label.setdefault(x.label, []).append(x)
     used: set[tuple[str, str]] = set()
-    wanted: dict[str, set[str]] = {}
+    wanted: dict[str, dict[str, int]] = {}
     picks: dict[str, tuple[str, Relation] | tuple[str, None]] = {}
     for x in instances:
         place = place_of(x.start)
@@ -59,7 +62,8 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         together = [h for h in pool if (x.start, h.start) in paired]
         pick = (free or listing or quiet or together or [None])[0]
         if pick is None:
-            wanted.setdefault(label, set()).add(x.label)
+            items = wanted.setdefault(label, {})
+            items[x.label] = items.get(x.label, 0) + 1 if (label, x.label) in filled else 1
             picks[x.name] = (label, None)
             continue
         used.add((pick.name, x.label))
@@ -69,7 +73,8 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
             listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
     implied = [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
-               for label, items in sorted(wanted.items())]
+               for label, counts in sorted(wanted.items())
+               for items in (frozenset(x for x, k in counts.items() if k > i) for i in range(max(counts.values())))]
     return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None
             else x for x in instances], implied
 
@@ -169,9 +174,11 @@ def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iter
 
 def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit], have: Iterable[str],
                       nodes: set[ObjectNode], named: Iterable[str], silent: frozenset[str],
+                      filled: frozenset[tuple[str, str]] = frozenset(),
                       ) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
     """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
-    and the units name (`named`: the places the units' output nodes and portions name). Also the task's aliases
+    and the units name (`named`: the places the units' output nodes and portions name; `filled`: what the
+    task's units put into holders of which label, `holder_init`). Also the task's aliases
     (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the
     holders the kitchen implies start in."""
     instances = counted_objects(table, counts)
@@ -182,7 +189,7 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
     missing = sorted({alias.get(c, c) for c in named} - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
-    instances, implied = holder_init(instances, alias, quiet, nodes, paired)
+    instances, implied = holder_init(instances, alias, quiet, nodes, paired, filled)
     if implied:
         # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
         # held by itself) leaves those objects standing free: `_` are the holders a third pass would add

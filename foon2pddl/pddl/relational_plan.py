@@ -118,6 +118,13 @@ def silent_labels(nodes: Iterable[ObjectNode]) -> frozenset[str]:
     return frozenset(n.label for n in nodes) - describing
 
 
+def holding_labels(units: Iterable[FunctionalUnit]) -> frozenset[str]:
+    """Labels of the objects the `units` place something in or on, as their roles read (`holders.relational_roles`:
+    `butter (in [bread])`, the spread's butter the bread lists)."""
+    return frozenset(c for u in units for r in relational_roles(u) for n in (r.role.before, r.after)
+                     for _, c in places(n))
+
+
 def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str]) -> bool:
     """Whether the task's units fill holders named `holder` (or, when no object of the task has that label, a
     label it is the head of: `pan`, `cooking pan`) with `label`. A `cup` in a task with cups is a cup, not the
@@ -126,10 +133,12 @@ def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: 
 
 
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
-              filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset()) -> UnitPlan:
+              filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
+              holding: frozenset[str] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
-    says ((holder label, content label), `holders.gained`; module doc), and whose nodes have `labels`."""
+    says ((holder label, content label), `holders.gained`; module doc), whose nodes have `labels` and place
+    objects in or on objects of the labels `holding`."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -157,8 +166,11 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
               and (src.relation, src.holder) not in made_at):
             late_empties = True  # consumed out of a container the unit does not name (and makes nothing in)
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
-            if _fills(src.holder, r.role.label, filled, labels) or r.target is None:
-                late_empties = True  # whichever container holds it is emptied of it (it ends in no place)
+            if (_fills(src.holder, r.role.label, filled, labels) or r.target is None
+                    or (r.role.label in holding and listed(r.role.before))):
+                # whichever container holds it is emptied of it (it ends in no place; it holds objects a portion
+                # would leave behind: the buttered bread leaves the plate whole, the butter in it with it)
+                late_empties = True
             else:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
         if fate is Fate.SPLITS and _into_one_staying(rels, r):

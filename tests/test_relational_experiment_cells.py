@@ -1,0 +1,77 @@
+"""Relational plans of experiment cells that failed the replay (issue 25): each rule read from one cell of
+`foon2pddl experiment tests/data/foon-subgraphs --trials 1 --goals 100 --solvers fd-relational`."""
+
+from __future__ import annotations
+
+from node_words import contains, inside, n
+from relational_checks import clean_unit_plan
+
+from foon2pddl.model.foon import FunctionalUnit, Motion, make_state
+
+# the french toast's pour (0037-make_quick_french_toast.txt:63) takes `bowl (contains {butter})`, which the
+# garlic bread's pick-and-place fills, and leaves it out of its outputs: the bowl is emptied of the butter
+BUTTER_BOWL, BUTTER = n("bowl", contains("butter")), n("butter", "cubed", inside("bowl"))
+PACKED = n("butter", "stick", inside("packet"))
+FILL = FunctionalUnit((n("bowl", "empty"), PACKED), Motion("pick-and-place"), (BUTTER_BOWL, n("butter", inside("bowl"))))
+
+
+def _pour_into(pan: str) -> FunctionalUnit:
+    return FunctionalUnit((BUTTER_BOWL, BUTTER, n(pan, "heated")), Motion("pour"),
+                          (n("butter", "cubed", inside(pan)), n(pan, contains("butter"))))
+
+
+def test_a_holder_the_kitchen_implies_is_added_once_per_object_it_holds():
+    # EXP, trial 1, goal 12: the trial's kitchen has `butter (cubed, in [bowl])` and no bowl listing butter; a
+    # plan pouring butter into two pans needs two such butters, which went into one added bowl: the first
+    # pour left that bowl empty with the second butter in it [held-by-empty]. Each butter gets a bowl.
+    dish = n("toast", "buttered")
+    serve = FunctionalUnit((n("skillet", contains("butter")), n("pot", contains("butter"))), Motion("serve"), (dish,))
+    outcome = clean_unit_plan([FILL, _pour_into("skillet"), _pour_into("pot"), serve],
+                              [BUTTER, n("bowl", "empty"), PACKED, n("packet", contains("butter")),
+                               n("skillet", "heated"), n("pot", "heated")], dish)
+    holders = [s.holder for s in outcome.trace.initial if s.node == BUTTER]
+    assert len(holders) == len(set(holders)) == 2 and all(h.startswith("bowl_") for h in holders)
+
+
+def test_an_object_that_holds_others_leaves_a_holder_the_unit_does_not_name_whole():
+    # REG and EXP, trial 1, goal 69 (0077-bread_toast.txt:28): the pick-and-place takes `bread (contains
+    # {butter}, on [plate])` with no plate; the trial's kitchen has a plate that lists its contents, so a plate
+    # may be a stock: a portion of the bread went onto the pan, listing the butter still in the bread on the
+    # plate [claimed-twice]. An object whose node lists what is in or on it leaves whole.
+    bread, buttered = n("bread", make_state("on", "plate")), n("bread", contains("butter"), make_state("on", "plate"))
+    spread = FunctionalUnit((bread, n("bowl", contains("butter")), n("butter", inside("bowl")), n("knife")),
+                            Motion("spread"), (buttered, n("butter", inside("bread")), n("bowl", "empty")))
+    toast = n("bread", contains("butter"), make_state("on", "cooking pan"))
+    place = FunctionalUnit((buttered, n("cooking pan", "empty")), Motion("pick-and-place"),
+                           (toast, n("cooking pan", make_state("with", "bread"))))
+    outcome = clean_unit_plan([spread, place], [bread, n("plate"), n("plate", contains("cheese")),
+                                                n("bowl", contains("butter")), n("butter", inside("bowl")),
+                                                n("knife"), n("cooking pan", "empty")], toast)
+    assert [o.id for o in outcome.trace.objects if o.label == "bread"] == ["bread_1"]
+
+
+def test_a_portion_comes_out_of_the_holder_the_unit_binds():
+    # GEN, trial 1, goal 42 (0044-egg_noodles_from_scratch.txt:79): the pour takes `bowls (contains {dairy})`,
+    # which it binds (another unit leaves that node), and `dairy (in [bowls])`, which it only reads: a portion
+    # went into the eggs from the dairy the plan had put into another bowl [holder-not-bound]. The object the
+    # portion comes from is bound too, in the bound holder.
+    from foon2pddl.model.foon import Foon
+    from foon2pddl.model.goal import Goal, GoalSpec
+    from foon2pddl.model.kitchen import Kitchen
+    from foon2pddl.pddl.compile import compile_task
+
+    milk_bowl, milk = n("bowl", contains("milk")), n("milk", inside("bowl"))
+    fill = FunctionalUnit((n("bowl", "empty"), n("milk", inside("carton"))), Motion("pour"), (milk_bowl, milk))
+    pour = FunctionalUnit((milk_bowl, milk, n("cup", "empty")), Motion("pour"),
+                          (n("cup", contains("milk")), n("milk", inside("cup"))))
+    drink = n("milk", "warm", inside("cup"))
+    heat = FunctionalUnit((n("milk", inside("cup")),), Motion("heat"), (drink,))
+    wash = FunctionalUnit((milk_bowl, n("sponge")), Motion("wash"), (n("bowl", "clean"),))
+    meal = n("breakfast")
+    serve = FunctionalUnit((drink, n("bowl", "clean")), Motion("serve"), (meal,))  # the wash is needed too
+    kitchen = Kitchen(frozenset([milk_bowl, milk, n("bowl", "empty"), n("milk", inside("carton")),
+                                 n("carton", contains("milk")), n("cup", "empty"), n("sponge")]))
+    task = compile_task(Foon((fill, pour, heat, wash, serve)), kitchen, Goal(GoalSpec("breakfast"), (meal,)),
+                        encoding="relational", level=3, prune=False, costs=None, rates=None)
+    action = next(a for a in task.actions if a.unit is not None and task.units[a.unit] == pour)
+    assert ("?bowl", "?milk") in {p.args for p in action.pre if p.predicate == "in"}
