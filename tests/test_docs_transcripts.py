@@ -2,7 +2,8 @@
 
 Each `$ foon2pddl ...` line in a fenced block is run (from the repository root, so
 `tests/data/...` PATHS resolve); every documented output line must appear in the
-command's output: stdout lines in order, stderr lines (notes, summaries) anywhere.
+command's output: stdout lines in order, stderr lines (notes, summaries) anywhere; stdout the
+transcript leaves out is marked by an elision line (`...`) where it is left out.
 Timing lines (`phases: ...`) vary from run to run and are skipped, and so is an
 elision line (`...`); inside a line, `...` stands for any text (a documented line
 may shorten a long one).
@@ -83,16 +84,24 @@ def test_transcript_matches_the_program(command, expected, monkeypatch):
     monkeypatch.chdir(ROOT)
     result = CliRunner().invoke(main, shlex.split(command))
     out, err = result.stdout.splitlines(), result.stderr.splitlines()
-    position = 0
+    position, elided, left_out = 0, False, []
     for line in expected:
-        if line.startswith("phases: ") or line == "...":
+        if line.startswith("phases: "):
+            continue
+        if line == "...":
+            elided = True
             continue
         at = next((i for i in range(position, len(out)) if matches(line, out[i])), None)
         if at is not None:
-            position = at + 1
+            if at > position and not elided:
+                left_out.append(f"stdout lines {position + 1}-{at} before {line!r}")
+            position, elided = at + 1, False
         elif not any(matches(line, e) for e in err):
             pytest.fail(f"documented line not printed (in order): {line!r}\nstdout:\n" + "\n".join(out)
                         + "\nstderr:\n" + "\n".join(err))
+    if position < len(out) and not elided:
+        left_out.append(f"stdout lines {position + 1}-{len(out)} at the end")
+    assert not left_out, f"the transcript leaves out what the command prints, with no `...` there: {left_out}"
 
 
 def file_excerpts(text: str) -> list[tuple[str, dict[str, list[str]]]]:
