@@ -6,10 +6,17 @@ Fast Downward lama-first) and reports per encoding: solved, plans whose trace
 passes the relational replay (`planners.physical_replay`, zero disagreements;
 `instances` traces have no holders, so its figure counts what a holder-blind
 plan gets wrong), disagreements by kind, unit steps and objects per task
-(median, worst), translate+search seconds (median, worst). `-v`: one line per
-file and encoding. `--universal`: the merge of all subgraphs (issue 21's universal
+(median, worst; and those the PDDL problem declares: `pddl.untouched` sets aside
+what no action can touch), translate+search seconds (median, worst). `-v`: one
+line per file and encoding. `--universal`: the merge of all subgraphs (issue 21's universal
 floor), its default kitchen, each reachable dish a goal (as `bench.pddl_instances
 --universal`); a row's `file` is the goal node. As a bench area (`run(ctx)`) it reports the counts.
+`--restore`: each task planned with the given encodings' last and again with `plan --restore`
+(`planners.solve.plan_restoring`); on the dishes both plan valid and replay-clean, their objects and
+`copies` (copies used one after another) before and after.
+
+`planners.copies`: per kitchen node, the objects used less the most in use at once (a bowl of flour and a
+bowl of sugar are no copies of each other).
 """
 
 from __future__ import annotations
@@ -27,8 +34,9 @@ from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.foon import Foon
 from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
-from foon2pddl.planners.solve import plan
+from foon2pddl.planners.solve import plan, plan_restoring
 
 from .harness import Context
 
@@ -42,7 +50,8 @@ class Row:
     encoding: str
     status: str
     steps: int
-    objects: int
+    objects: int  # the task's objects (the plan's replay holds them all)
+    problem: int  # the objects the PDDL problem declares (`pddl.untouched` sets the others aside)
     kinds: tuple[str, ...]  # replay disagreement kinds (one per disagreement)
     seconds: float
     message: str = ""
@@ -71,9 +80,44 @@ def check_goal(name: str, foon: Foon, kitchen: Kitchen, goal: Goal, time_limit: 
         if out.trace is not None:
             kinds = tuple(str(d.kind) for d in replay(out.trace).disagreements)
         steps = len(out.trace.steps) if out.trace is not None else (len(out.tree) if out.tree is not None else 0)
-        rows.append(Row(name, enc, str(out.status), steps, len(out.task.instances), kinds, seconds,
+        rows.append(Row(name, enc, str(out.status), steps, len(out.task.instances), len(out.task.objects), kinds,
+                        seconds,
                         out.message.splitlines()[0][:200] if out.message else ""))
     return rows
+
+
+def restore_rows(paths: list[Path], encoding: str, time_limit: float, verbose: bool) -> str:
+    """Objects and copies (`copies`) of each dish's plan without and with restoring units, on the dishes both
+    plan valid and replay-clean."""
+    pairs = []
+    for path in paths:
+        foon, _ = load([path])
+        dishes = sorted(n for n in foon.nodes if n.dish is not None)
+        try:
+            goal = resolve_goal(spec_of_node(dishes[0]), foon) if dishes else None
+        except FoonError:
+            goal = None
+        if goal is None:
+            continue
+        kitchen = default_kitchen(foon)
+        outs = [f(foon, kitchen, goal, encoding, time_limit=time_limit) for f in (plan, plan_restoring)]
+        if all(str(o.status) == "solved" and o.trace is not None and not replay(o.trace).disagreements for o in outs):
+            row = [(len(o.task.instances), copies(o.trace), sum(s.unit.sources[0].path == "assumed-restore"
+                                                                 for s in o.trace.steps)) for o in outs]
+            pairs.append(row)
+            if verbose:
+                print(f"{path.name}\tobjects {row[0][0]} -> {row[1][0]}\tcopies {row[0][1]} -> {row[1][1]}\t"
+                      f"restoring steps {row[1][2]}", flush=True)
+    total = [sum(sum(r[i][1].values()) for r in pairs) for i in (0, 1)]
+    by_label = [collections.Counter() for _ in (0, 1)]
+    for r in pairs:
+        for i in (0, 1):
+            by_label[i].update(r[i][1])
+    top = ", ".join(f"{lab} {by_label[0][lab]} -> {by_label[1][lab]}" for lab, _ in by_label[0].most_common(6))
+    return (f"{encoding} --restore: {len(pairs)} dishes plan valid and replay-clean either way; objects "
+            f"{sum(r[0][0] for r in pairs)} -> {sum(r[1][0] for r in pairs)}; copies used one after another "
+            f"{total[0]} -> {total[1]} ({top}); restoring steps {sum(r[1][2] for r in pairs)} in "
+            f"{sum(r[1][2] > 0 for r in pairs)} plans")
 
 
 def universal_rows(shared: Path, time_limit: float, limit: int | None = None,
@@ -103,9 +147,10 @@ def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
                      f"({sum(r.status == 'solved' for r in clean)} of them solved: valid and replay-clean); "
                      f"disagreements {sum(kinds.values())} ("
                      + ", ".join(f"{k} {v} in {bad_plans[k]} plans" for k, v in kinds.most_common()) + ")")
-            objs = [r.objects for r in traced]
+            objs, problem = [r.objects for r in traced], [r.problem for r in traced]
             if objs:
-                line += f"; objects median {statistics.median(objs):.0f}, worst {max(objs)}"
+                line += (f"; objects median {statistics.median(objs):.0f}, worst {max(objs)} (in the problem: median "
+                         f"{statistics.median(problem):.0f}, worst {max(problem)})")
         if solved:
             secs = [r.seconds for r in solved]
             line += (f"; unit steps median {statistics.median(r.steps for r in solved):.0f}; "
@@ -133,8 +178,13 @@ def main() -> None:
     ap.add_argument("--limit", type=int, default=None)
     ap.add_argument("--encodings", default=",".join(ENCODINGS), help="comma-separated, of " + ", ".join(ENCODINGS))
     ap.add_argument("-v", "--verbose", action="store_true")
+    ap.add_argument("--restore", action="store_true", help="without and with restoring units: objects and copies")
     args = ap.parse_args()
     encodings = tuple(e for e in args.encodings.split(",") if e)
+    if args.restore:
+        print(restore_rows(expand_paths([args.shared / "foon-subgraphs"])[: args.limit], encodings[-1],
+                           args.time_limit, args.verbose))
+        return
     found = (universal_rows(args.shared, args.time_limit, args.limit, encodings) if args.universal
              else (r for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]
                    for r in check_file(f, args.time_limit, encodings)))
@@ -143,7 +193,7 @@ def main() -> None:
         rows.append(r)
         if args.verbose:
             kinds = collections.Counter(r.kinds)
-            print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\t"
+            print(f"{r.file}\t{r.encoding}\t{r.status}\tsteps={r.steps}\tobjects={r.objects}\tproblem={r.problem}\t"
                   f"{r.seconds:.2f}s\t{dict(kinds)}\t{r.message}", flush=True)
     print(summary(rows, encodings))
 

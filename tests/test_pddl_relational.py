@@ -151,7 +151,7 @@ POUR_GOAL = Goal(GoalSpec("cup"), (FULL_CUP,))
 
 def test_the_task_moves_the_holder_fact_and_requires_the_real_source():
     task = compile_task(POUR_FOON, POUR_KITCHEN, POUR_GOAL, "relational")
-    assert Atom("in", ("carton_1", "heavy_cream_1")) in task.init  # holder first, as the converter writes it
+    assert Atom("in", ("carton_1", "heavy_cream_1")) in task.initial_facts  # holder first, as the converter writes it
     # a carton FOON leaves unchanged keeps its cream: a portion (a not-yet-made object) goes into the cup
     good = ["pour_u0 cup_1 heavy_cream_2", "reach-goal-1"]
     assert simulate_plan(task, good).ok
@@ -258,7 +258,7 @@ def test_every_state_of_a_trace_has_one_holder_per_object(cartons, cups):
     kitchen = Kitchen(POUR_KITCHEN.nodes, 3, "k", ((CARTON, cartons), (CUP, cups), (CREAM, cartons)))
     task = compile_goal(POUR_FOON, kitchen, POUR_GOAL, "relational").task
     holders = {}
-    for a in task.init:
+    for a in task.initial_facts:
         if a.predicate in ("in", "on"):
             assert a.args[1] not in holders
             holders[a.args[1]] = a.args[0]
@@ -272,7 +272,7 @@ def test_the_kitchen_is_completed_with_the_holders_and_contents_it_names():
     boil = FunctionalUnit((pot, noodle), Motion("add"), (cooked,))
     task = compile_task(Foon((boil,)), Kitchen(frozenset({pot, noodle})), Goal(GoalSpec("pot"), (cooked,)),
                         "relational")
-    held = {(a.predicate, *a.args) for a in task.init if a.predicate in ("in", "on")}
+    held = {(a.predicate, *a.args) for a in task.initial_facts if a.predicate in ("in", "on")}
     # a pouch, a stove and the water FOON only names
     assert held == {("in", "pouch_1", "noodle_1"), ("in", "pot_1", "water_1"), ("on", "stove_1", "pot_1")}
     assert {x.label for x in task.instances} == {"pot", "noodle", "pouch", "stove", "water"}
@@ -291,7 +291,7 @@ def test_every_kitchen_container_listing_an_item_holds_one():
     pour = FunctionalUnit((bowl, other, water, n("pot", "empty")), Motion("pour"), (both, n("water", inside("pot"))))
     kitchen = Kitchen(frozenset({water, bowl, other, n("pot", "empty")}))
     task = compile_task(Foon((pour,)), kitchen, Goal(GoalSpec("pot"), (both,)), "relational")
-    held = sorted(a.args for a in task.init if a.predicate == "in")
+    held = sorted(a.args for a in task.initial_facts if a.predicate == "in")
     assert [h for h, _ in held] == ["bowl_1", "bowl_2"] and len({x for _, x in held}) == 2
 
 

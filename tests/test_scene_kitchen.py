@@ -51,7 +51,7 @@ def test_a_scene_of_the_example_kitchen_plans_whipped_cream_with_only_its_ids():
     assert existing == ids  # the task's objects at the start are exactly the scene's
     made = {o.id for o in trace.objects} - ids
     assert made and all(not first[x].exists for x in made)  # the rest are what the plan makes
-    init = set(outcome.task.init)
+    init = set(outcome.task.initial_facts)
     holders = {(a.predicate, *a.args) for a in init if a.predicate in ("in", "on")}
     assert ("in", "fridge_1", "sugar_1") in holders and ("on", "counter_1", "bowl_1") in holders
     assert ("in", "carton_1", "cream_1") in holders and ("on", "board_1", "knife_1") in holders
@@ -216,5 +216,6 @@ def test_ids_and_labels_that_would_break_pddl_compile_to_pddl_that_parses(tmp_pa
     pddl.parser.domain.DomainParser()(domain)
     parsed = pddl.parser.problem.ProblemParser()(problem)
     names = {str(o.name) for o in parsed.objects}
-    assert len(names) == len(task.objects) and {x.name for x in task.instances} == names
+    # the objects no action can touch are set aside from the problem (`pddl.untouched`), the others declared
+    assert len(names) == len(task.objects) and {x.name for x in task.instances} == names | {x for x, _ in task.aside}
     assert {task.labels[x.name] for x in task.instances if x.start is not None} >= set(ids)  # each id, named

@@ -87,6 +87,7 @@ from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
+from .untouched import set_aside
 
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 
@@ -208,8 +209,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         comments=header("relational", inp, options, len(units) - len(live)) + count_lines(counts) + why
         + tuple(f"label mismatch: {m}" for m in commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
-        gaps=tuple(sorted(pairs)),
-    )
+        gaps=tuple(sorted(pairs)))
+    task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
 
 

@@ -71,7 +71,7 @@ def _states(task: PlanningTask, facts: set[Atom], last: dict[str, ObjectNode | N
 
 def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
     """The plan as a trace with holders (see the module doc)."""
-    facts = set(task.init)
+    facts = set(task.initial_facts)
     types = type_closure(task)
     label = {x.name: x.label for x in task.instances}
     now = _states(task, facts, {})
@@ -105,7 +105,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
                 bindings.append(Binding(x, was[x].node if was[x].exists else None, after, role=x in args))
         changes = tuple(now[x] for x in sorted(now) if now[x] != was[x])
         out.append(TraceStep(len(out), unit, tuple(bindings), changes, source_of(unit), unit_aliases(unit)))
-    start = _states(task, set(task.init), {})
+    start = _states(task, set(task.initial_facts), {})
     aliases = task_aliases(units, label.values(), [x.start for x in task.instances])
     trace = PhysicalTrace(tuple(PhysicalObject(x.name, x.label) for x in task.instances),
                           tuple(start[x.name] for x in task.instances), tuple(out), aliases, task.gaps)

@@ -121,6 +121,15 @@ class PlanningTask:
     #: other about in this task (a product placed in a container whose node does not list it): not checked
     gaps: tuple[tuple[str, str], ...] = ()
     metric: bool = False  # minimize total-cost although no action here has a cost (the domain comes from a file)
+    #: objects the problem leaves out (`untouched`: no action can touch them), and their initial facts; a plan's
+    #: replay still holds them (`initial_facts`, `type_closure`)
+    aside: tuple[tuple[str, str], ...] = ()
+    aside_init: tuple[Atom, ...] = ()
+
+    @property
+    def initial_facts(self) -> tuple[Atom, ...]:
+        """The state a plan's replay starts from: `init` and the facts of the objects set aside."""
+        return self.init + self.aside_init
 
     @property
     def uses_costs(self) -> bool:
@@ -196,10 +205,11 @@ def candidate_alternatives(task: PlanningTask, nodes: tuple[ObjectNode, ...]
 
 
 def type_closure(task: PlanningTask) -> dict[str, frozenset[str]]:
-    """Object or constant name -> every type it has (its declared type and the ancestors of it)."""
+    """Object or constant name -> every type it has (its declared type and the ancestors of it); objects set
+    aside (`PlanningTask.aside`) too."""
     parent = dict(task.types)
     out = {}
-    for name, t in (*task.objects, *task.constants):
+    for name, t in (*task.objects, *task.aside, *task.constants):
         chain, at = {"object"}, t
         while at is not None and at not in chain:
             chain.add(at)

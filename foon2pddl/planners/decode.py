@@ -193,7 +193,7 @@ def used_steps(compiled: Compiled, steps: Sequence[str], plain: TaskTree) -> tup
     if compiled.every_step or not compiled.foon_semantics:
         return tuple(steps)
     task, kept, seen = compiled.task, set(plain.units), set()
-    state, types, out = set(task.init), type_closure(task), []
+    state, types, out = set(task.initial_facts), type_closure(task), []
     for n, (step, unit) in enumerate(zip(steps, _step_units(compiled, steps), strict=True), start=1):
         if unit is not None and (unit not in kept or unit in seen):
             continue
@@ -307,7 +307,7 @@ def decode(task: PlanningTask | Compiled, steps: Sequence[str], goal: Goal, kitc
 
 def run_plan(task: PlanningTask, steps: Sequence[str]) -> tuple[set[Atom], str | None]:
     """Apply the plan to the task's initial state: (final state, or the state before the first failing step; problem)."""
-    state, types = set(task.init), type_closure(task)
+    state, types = set(task.initial_facts), type_closure(task)
     for n, step in enumerate(steps, start=1):
         after, problem = apply_step(task, state, step, n, types)
         if problem is not None:

@@ -12,40 +12,26 @@
     cinnamon_1 - cinnamon
     custard_1 - custard
     egg_1 - egg
-    fork_1 - fork
     french_toast_1 - french_toast
     frying_pan_1 - frying_pan
-    maple_syrup_1 - maple_syrup
     maple_syrup_2 - maple_syrup
-    milk_1 - milk
     milk_2 - milk
     plate_1 - plate
-    spatula_1 - spatula
     stove_1 - stove
     vanilla_extract_1 - vanilla_extract
-    bottle_1 - bottle
-    carton_1 - carton
   )
   (:init
-    (in bottle_1 maple_syrup_1)
-    (in carton_1 milk_1)
-    (is bottle_1 bottle_contains_maple_syrup)
     (is bowl_1 bowl_empty)
     (is bread_1 bread_sliced)
     (is butter_1 butter_solid)
-    (is carton_1 carton_contains_milk)
     (is cinnamon_1 cinnamon_ground)
     (is custard_1 not-yet-made)
     (is egg_1 egg_whole)
-    (is fork_1 fork_plain)
     (is french_toast_1 not-yet-made)
     (is frying_pan_1 frying_pan_empty)
-    (is maple_syrup_1 maple_syrup_in_bottle)
     (is maple_syrup_2 not-yet-made)
-    (is milk_1 milk_in_carton)
     (is milk_2 not-yet-made)
     (is plate_1 plate_empty)
-    (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
     (is vanilla_extract_1 vanilla_extract_liquid)
     (occupied bottle_contains_maple_syrup)

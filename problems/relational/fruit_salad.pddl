@@ -13,48 +13,32 @@
     cutting_board_2 - cutting_board
     cutting_board_3 - cutting_board
     fruit_salad_1 - fruit_salad
-    heavy_cream_1 - heavy_cream
     heavy_cream_2 - heavy_cream
-    honey_1 - honey
     honey_2 - honey
     juicer_1 - juicer
-    knife_1 - knife
     lime_1 - lime
     lime_juice_1 - lime_juice
     mixing_bowl_1 - mixing_bowl
-    spoon_1 - spoon
     strawberry_1 - strawberry
     sugar_1 - sugar
     whipped_cream_1 - whipped_cream
-    whisk_1 - whisk
-    carton_1 - carton
-    jar_1 - jar
   )
   (:init
-    (in carton_1 heavy_cream_1)
-    (in jar_1 honey_1)
     (is banana_1 banana_whole)
     (is bowl_1 bowl_empty)
-    (is carton_1 carton_contains_heavy_cream)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
     (is cutting_board_3 cutting_board_empty)
     (is fruit_salad_1 not-yet-made)
-    (is heavy_cream_1 heavy_cream_in_carton)
     (is heavy_cream_2 not-yet-made)
-    (is honey_1 honey_in_jar)
     (is honey_2 not-yet-made)
-    (is jar_1 jar_contains_honey)
     (is juicer_1 juicer_empty)
-    (is knife_1 knife_plain)
     (is lime_1 lime_whole)
     (is lime_juice_1 not-yet-made)
     (is mixing_bowl_1 mixing_bowl_empty)
-    (is spoon_1 spoon_plain)
     (is strawberry_1 strawberry_whole)
     (is sugar_1 sugar_granulated)
     (is whipped_cream_1 not-yet-made)
-    (is whisk_1 whisk_plain)
     (occupied carton_contains_heavy_cream)
     (occupied heavy_cream_in_carton)
     (occupied honey_in_jar)

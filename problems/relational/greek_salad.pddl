@@ -14,22 +14,14 @@
     cutting_board_3 - cutting_board
     feta_cheese_1 - feta_cheese
     greek_salad_1 - greek_salad
-    knife_1 - knife
-    olive_oil_1 - olive_oil
     olive_oil_2 - olive_oil
     onion_1 - onion
     oregano_1 - oregano
-    red_wine_vinegar_1 - red_wine_vinegar
     red_wine_vinegar_2 - red_wine_vinegar
-    salad_tongs_1 - salad_tongs
     tomato_1 - tomato
-    bottle_1 - bottle
   )
   (:init
-    (in bottle_1 olive_oil_1)
-    (in bottle_1 red_wine_vinegar_1)
     (is black_olive_1 black_olive_pitted)
-    (is bottle_1 bottle_contains_olive_oil_red_wine_vinegar)
     (is bowl_1 bowl_empty)
     (is cucumber_1 cucumber_whole)
     (is cutting_board_1 cutting_board_empty)
@@ -37,14 +29,10 @@
     (is cutting_board_3 cutting_board_empty)
     (is feta_cheese_1 feta_cheese_crumbled)
     (is greek_salad_1 not-yet-made)
-    (is knife_1 knife_plain)
-    (is olive_oil_1 olive_oil_in_bottle)
     (is olive_oil_2 not-yet-made)
     (is onion_1 onion_whole)
     (is oregano_1 oregano_dried)
-    (is red_wine_vinegar_1 red_wine_vinegar_in_bottle)
     (is red_wine_vinegar_2 not-yet-made)
-    (is salad_tongs_1 salad_tongs_plain)
     (is tomato_1 tomato_whole)
     (occupied bottle_contains_olive_oil_red_wine_vinegar)
     (occupied knife_plain)

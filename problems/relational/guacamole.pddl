@@ -14,15 +14,12 @@
     cutting_board_3 - cutting_board
     cutting_board_4 - cutting_board
     cutting_board_5 - cutting_board
-    fork_1 - fork
     guacamole_1 - guacamole
     juicer_1 - juicer
-    knife_1 - knife
     lime_1 - lime
     lime_juice_1 - lime_juice
     onion_1 - onion
     salt_1 - salt
-    spoon_1 - spoon
     tomato_1 - tomato
   )
   (:init
@@ -34,15 +31,12 @@
     (is cutting_board_3 cutting_board_empty)
     (is cutting_board_4 cutting_board_empty)
     (is cutting_board_5 cutting_board_empty)
-    (is fork_1 fork_plain)
     (is guacamole_1 not-yet-made)
     (is juicer_1 juicer_empty)
-    (is knife_1 knife_plain)
     (is lime_1 lime_whole)
     (is lime_juice_1 not-yet-made)
     (is onion_1 onion_whole)
     (is salt_1 salt_granulated)
-    (is spoon_1 spoon_plain)
     (is tomato_1 tomato_whole)
     (occupied fork_plain)
     (occupied knife_plain)

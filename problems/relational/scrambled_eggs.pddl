@@ -10,36 +10,25 @@
     butter_1 - butter
     egg_1 - egg
     egg_mixture_1 - egg_mixture
-    fork_1 - fork
     frying_pan_1 - frying_pan
-    milk_1 - milk
     milk_2 - milk
     plate_1 - plate
     salt_1 - salt
     scrambled_eggs_1 - scrambled_eggs
-    spatula_1 - spatula
     stove_1 - stove
-    whisk_1 - whisk
-    carton_1 - carton
   )
   (:init
-    (in carton_1 milk_1)
     (is black_pepper_1 black_pepper_ground)
     (is bowl_1 bowl_empty)
     (is butter_1 butter_solid)
-    (is carton_1 carton_contains_milk)
     (is egg_1 egg_whole)
     (is egg_mixture_1 not-yet-made)
-    (is fork_1 fork_plain)
     (is frying_pan_1 frying_pan_empty)
-    (is milk_1 milk_in_carton)
     (is milk_2 not-yet-made)
     (is plate_1 plate_empty)
     (is salt_1 salt_granulated)
     (is scrambled_eggs_1 not-yet-made)
-    (is spatula_1 spatula_plain)
     (is stove_1 stove_off)
-    (is whisk_1 whisk_plain)
     (occupied carton_contains_milk)
     (occupied fork_plain)
     (occupied milk_in_carton)

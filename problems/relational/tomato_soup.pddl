@@ -12,43 +12,27 @@
     cutting_board_1 - cutting_board
     cutting_board_2 - cutting_board
     immersion_blender_1 - immersion_blender
-    knife_1 - knife
-    ladle_1 - ladle
-    olive_oil_1 - olive_oil
     olive_oil_2 - olive_oil
     onion_1 - onion
     pot_1 - pot
     stove_1 - stove
     tomato_1 - tomato
     tomato_soup_1 - tomato_soup
-    vegetable_broth_1 - vegetable_broth
     vegetable_broth_2 - vegetable_broth
-    wooden_spoon_1 - wooden_spoon
-    bottle_1 - bottle
-    carton_1 - carton
   )
   (:init
-    (in bottle_1 olive_oil_1)
-    (in carton_1 vegetable_broth_1)
     (is basil_1 basil_fresh)
-    (is bottle_1 bottle_contains_olive_oil)
     (is bowl_1 bowl_empty)
-    (is carton_1 carton_contains_vegetable_broth)
     (is cutting_board_1 cutting_board_empty)
     (is cutting_board_2 cutting_board_empty)
     (is immersion_blender_1 immersion_blender_off)
-    (is knife_1 knife_plain)
-    (is ladle_1 ladle_plain)
-    (is olive_oil_1 olive_oil_in_bottle)
     (is olive_oil_2 not-yet-made)
     (is onion_1 onion_whole)
     (is pot_1 pot_empty)
     (is stove_1 stove_off)
     (is tomato_1 tomato_whole)
     (is tomato_soup_1 not-yet-made)
-    (is vegetable_broth_1 vegetable_broth_in_carton)
     (is vegetable_broth_2 not-yet-made)
-    (is wooden_spoon_1 wooden_spoon_plain)
     (occupied bottle_contains_olive_oil)
     (occupied carton_contains_vegetable_broth)
     (occupied knife_plain)

@@ -6,26 +6,17 @@
   (:domain foon-relational-733e9be4)
   (:objects
     bowl_1 - bowl
-    heavy_cream_1 - heavy_cream
     heavy_cream_2 - heavy_cream
     mixing_bowl_1 - mixing_bowl
-    spatula_1 - spatula
     sugar_1 - sugar
     whipped_cream_1 - whipped_cream
-    whisk_1 - whisk
-    carton_1 - carton
   )
   (:init
-    (in carton_1 heavy_cream_1)
     (is bowl_1 bowl_empty)
-    (is carton_1 carton_contains_heavy_cream)
-    (is heavy_cream_1 heavy_cream_in_carton)
     (is heavy_cream_2 not-yet-made)
     (is mixing_bowl_1 mixing_bowl_empty)
-    (is spatula_1 spatula_plain)
     (is sugar_1 sugar_granulated)
     (is whipped_cream_1 not-yet-made)
-    (is whisk_1 whisk_plain)
     (occupied carton_contains_heavy_cream)
     (occupied heavy_cream_in_carton)
     (occupied spatula_plain)

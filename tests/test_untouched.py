@@ -1,0 +1,124 @@
+"""`pddl.untouched`: objects no action can touch are set aside from the problem, and no plan changes.
+
+Two oracles: exhaustive search of small random tasks (every state reachable in the whole task, its facts that
+name no object set aside, is a state reachable in the smaller one, and back), and the relational whipped
+cream, whose problem leaves out the carton and the spatula while its plan still names them.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from conftest import SUBGRAPHS
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.render import render
+from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, Predicate, apply_action, type_closure
+from foon2pddl.pddl.untouched import set_aside, untouched
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.solve import plan
+
+OBJECTS = (("a", "bowl"), ("b", "bowl"), ("c", "egg"), ("d", "egg"))
+STATES = ("s0", "s1", "s2")
+TYPES = (("bowl", "thing"), ("egg", "thing"))
+
+
+@st.composite
+def tasks(draw) -> PlanningTask:
+    """Four objects of two types, states `(is ?x s)`, a holder fact `(in ?h ?x)`, `(occupied s)`, and actions of
+    up to two parameters with conditional effects quantified over a type (what the relational encoding writes)."""
+    init = [Atom("is", (o, draw(st.sampled_from(STATES)))) for o, _ in OBJECTS if draw(st.booleans())]
+    init += [Atom("in", (h, x)) for h, x in draw(st.lists(st.tuples(st.sampled_from("ab"), st.sampled_from("cd")),
+                                                         max_size=2, unique=True))]
+    init += [Atom("occupied", (s,)) for s in draw(st.lists(st.sampled_from(STATES), max_size=1))]
+    actions = []
+    for k in range(draw(st.integers(1, 4))):
+        params = tuple((v, draw(st.sampled_from(("bowl", "egg", "thing")))) for v in ("?p", "?q")[:draw(st.integers(1, 2))])
+        names = [v for v, _ in params]
+
+        def var(names=names) -> str:
+            return draw(st.sampled_from(names))
+        pre = [Atom("is", (v, draw(st.sampled_from(STATES)))) for v, _ in params if draw(st.booleans())]
+        if draw(st.booleans()):
+            pre.append(Atom("occupied", (draw(st.sampled_from(STATES)),)))
+        if len(params) == 2 and draw(st.booleans()):
+            pre.append(Atom("in", ("?p", "?q")))
+        add = [Atom("is", (var(), draw(st.sampled_from(STATES))))]
+        if draw(st.booleans()):
+            add.append(Atom("occupied", (draw(st.sampled_from(STATES)),)))
+        cond = []
+        if draw(st.booleans()):
+            when = [Atom("is", ("?y", draw(st.sampled_from(STATES))))]
+            if draw(st.booleans()):
+                when.append(Atom("in", (var(), "?y")))
+            effect = draw(st.sampled_from((Atom("is", ("?y", "s2")), Atom("occupied", ("s1",)),
+                                           Atom("is", (var(), "s1")))))
+            cond.append(Conditional(tuple(when), add=(effect,), delete=(when[0],), var="?y",
+                                    type=draw(st.sampled_from(("bowl", "egg", "thing")))))
+        actions.append(Action(f"act{k}", tuple(pre), tuple(add), params=params, conditional=tuple(cond)))
+    preds = (Predicate("is", (("?x", "thing"), ("?s", "state"))), Predicate("in", (("?h", "thing"), ("?x", "thing"))),
+             Predicate("occupied", (("?s", "state"),)))
+    return PlanningTask("d", "p", "relational", 3, preds, tuple(actions), tuple(sorted(set(init))),
+                        (Atom("occupied", ("s2",)),), types=TYPES, objects=OBJECTS,
+                        constants=tuple((s, "state") for s in STATES))
+
+
+def _reachable(task: PlanningTask, types: dict[str, frozenset[str]]) -> set[frozenset[Atom]]:
+    """Every state reachable from `task.init`, over the objects of `types` (exhaustive search)."""
+    objects = [o for o, ts in types.items() if o not in {c for c, _ in task.constants}]
+    start = frozenset(task.init)
+    seen, stack = {start}, [start]
+    while stack:
+        state = stack.pop()
+        for act in task.actions:
+            pools = [[o for o in objects if t in types[o]] for _, t in act.params]
+            for values in itertools.product(*pools):
+                bind = dict(zip((v for v, _ in act.params), values, strict=True))
+                if all(Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) in state for a in act.pre):
+                    nxt = frozenset(apply_action(set(state), act, bind, types))
+                    if nxt not in seen:
+                        seen.add(nxt)
+                        stack.append(nxt)
+    return seen
+
+
+@settings(max_examples=400, deadline=None)
+@given(tasks())
+def test_setting_aside_keeps_every_reachable_state_of_the_objects_kept(task):
+    small = set_aside(task)
+    aside = {o for o, _ in small.aside}
+    assert aside == untouched(task) and {o for o, _ in small.objects} == {o for o, _ in task.objects} - aside
+    whole = _reachable(task, type_closure(task))
+    kept = _reachable(small, {o: ts for o, ts in type_closure(small).items() if o not in aside})
+    assert {frozenset(a for a in s if not aside & set(a.args)) for s in whole} == kept
+    assert set(small.initial_facts) == set(task.init)
+
+
+def test_an_object_whose_quantified_effect_sets_a_fact_of_no_object_is_kept():
+    empties = Conditional((Atom("is", ("?y", "s0")),), add=(Atom("occupied", ("s1",)),), var="?y", type="egg")
+    act = Action("go", (Atom("is", ("?p", "s0")),), (Atom("is", ("?p", "s2")),), params=(("?p", "bowl"),),
+                 conditional=(empties,))
+    init = (Atom("is", ("a", "s0")), Atom("is", ("c", "s0")), Atom("is", ("d", "s1")))
+    task = PlanningTask("d", "p", "relational", 3, (), (act,), init, (Atom("occupied", ("s1",)),), types=TYPES,
+                        objects=OBJECTS)
+    assert untouched(task) == {"b", "d"}  # c sets (occupied s1); b is in no state a parameter needs
+
+
+def test_whipped_cream_problem_leaves_out_the_carton_and_spatula_and_the_plan_still_names_them():
+    foon, _ = load([SUBGRAPHS / "0001-whipped_cream.txt"])
+    goal = resolve_goal(spec_of_node(sorted(x for x in foon.nodes if x.dish is not None)[0]), foon)
+    kitchen = default_kitchen(foon)
+    task = compile_goal(foon, kitchen, goal, "relational").task
+    problem = render(task)[1]
+    assert {"carton_1", "spatula_1", "heavy_cream_1"} <= {o for o, _ in task.aside}
+    assert "carton_1" not in problem and "spatula_1" not in problem and "mixing_bowl_1" in problem
+    assert "carton_1" in render(compile_goal(foon, kitchen, goal, "relational", prune=False).task)[1]
+    out = plan(foon, kitchen, goal, "relational", time_limit=60)
+    assert str(out.status) == "solved" and not replay(out.trace).disagreements
+    named = {b.object for s in out.trace.steps for b in s.bindings}
+    assert {"carton_1", "spatula_1"} <= named
