@@ -109,8 +109,10 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
+    (("expand",), "writing FOON-EXP (181 units) and its statistics ..."),  # 4.4 s silent on the subgraphs (paper)
+    (("generalize",), "writing FOON-GEN (95 units) and its statistics ..."),
 ], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
-        "check", "stats"])
+        "check", "stats", "expand: its output", "generalize: its output"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     r = run(*args)
     assert r.exit_code in (0, 1), r.stderr

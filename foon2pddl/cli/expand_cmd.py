@@ -64,6 +64,8 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
         return
     header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "
               f"{len(e.substitutions)} label substitutions")
-    emit_network(e.foon, fmt, provenance, header, output)
-    click.echo(format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon})), err=True, nl=False)
+    with slow_step(f"writing FOON-EXP ({len(e.foon.units):,} units) and its statistics"):
+        emit_network(e.foon, fmt, provenance, header, output)
+        table = format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon}))
+    click.echo(table, err=True, nl=False)
 

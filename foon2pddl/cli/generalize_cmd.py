@@ -8,6 +8,7 @@ import click
 
 from . import main
 from .options import emit, emit_network, output_option, paths_argument, read_network
+from .progress import slow_step
 
 categories_option = click.option("--categories", "categories", type=click.Path(path_type=Path), default=None,
                                  help="Category index (JSON, see docs/generalization.md). Default: the shipped one.")
@@ -35,8 +36,10 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
     c = compress(net.foon, index)
     header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
               f"{c.original_units} -> {len(c.foon.units)} units")
-    emit_network(c.foon, fmt, provenance, header, output)
-    click.echo(format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon})), err=True, nl=False)
+    with slow_step(f"writing FOON-GEN ({len(c.foon.units):,} units) and its statistics"):
+        emit_network(c.foon, fmt, provenance, header, output)
+        table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}))
+    click.echo(table, err=True, nl=False)
 
 
 @main.command("categories")
