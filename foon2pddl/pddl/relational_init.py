@@ -90,7 +90,8 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     node in another place (`skillet (empty, on [stove])` for the kitchen's `skillet (empty)`, `milk (in
     [bowl])` for its `milk (in [carton])`: the kitchen's `stove (off, with [skillet])` and `bowl (contains
     {milk})` say they are there: `kitchen_placed`), one a unit takes with the container's own node first
-    (`paired`); else `water (in [pot])`. In container-name order; O(n^2)."""
+    (`paired`), never one that lists contents of its own (no object would stand for them); else `water (in
+    [pot])`. In container-name order; O(n^2)."""
     out = []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
@@ -111,7 +112,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             if spare.get((item, h.label), 0) > 0:
                 spare[(item, h.label)] -= 1
                 continue
-            found = fits.get((item, h.label), ())
+            found = [n for n in fits.get((item, h.label), ()) if not listed(n)]  # lists nothing of its own
             moved = kitchen_placed(found, starts)
             known = sorted(found, key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
