@@ -273,3 +273,18 @@ def test_every_page_gives_the_current_exp_and_gen_unit_counts(universal):
         said += [(page.name, "GEN", int(n.replace(",", ""))) for n in re.findall(r"GEN has ([\d,]+) units", text)]
     assert said, "retrieval.md gives the current counts"
     assert [s for s in said if s[2] != {"EXP": exp, "GEN": gen}[s[1]]] == []
+
+
+def test_skills_md_fallback_example_falls_back():
+    """skills.md said the merged subgraphs' black bean times out under `relational` and solves under `instances`;
+    since the relational readings of 8b11317 and later it solves under `relational` (21 macro steps): the page's
+    example of the fallback is a command whose relational task finds no plan, run as written."""
+    text = _prose("skills.md")
+    m = re.search(r"`foon2pddl (plan tests/data/\S+ --goal \"[^\"]+\" --skills)` has no relaxed solution under "
+                  r"`relational`", text)
+    assert m, "skills.md names a command whose relational task falls back to instances"
+    r = CliRunner().invoke(main, shlex.split(m.group(1)))
+    assert r.exit_code == 0, r.stderr
+    assert "note: the relational encoding found no plan (unsolvable: translator: no relaxed solution); planning " \
+           "with the instances encoding" in r.stderr
+    assert "under the instances encoding" in r.stderr and "black bean times out" not in text
