@@ -5,12 +5,13 @@ from __future__ import annotations
 
 from conftest import SHARED
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import clean_plan, clean_unit_plan
 
 from bench.pddl_relational import universal_rows
-from foon2pddl.model.foon import FunctionalUnit, Motion
-from foon2pddl.model.goal import resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.instance_counts import delete_free_plan
 from foon2pddl.pddl.relational_plan import plan_unit
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
@@ -67,3 +68,76 @@ def test_what_was_kneaded_into_an_object_leaves_the_unnamed_holder_with_it():
     shape = FunctionalUnit((kneaded,), Motion("shape"), (shaped,))
     outcome = clean_unit_plan((sprinkle, knead, shape), {tray, dough, *sprinkle.inputs[1:]}, shaped)
     assert outcome.trace.final["baking_tray_1"].node == n("baking tray", "empty")
+
+
+def test_a_name_only_a_unit_without_objects_reads_as_its_label_leaves_the_place_silent():
+    # onigiri (0067, lines 176-201) on the universal FOON: the seaweed is taken out of its packet `on [surface]` (a
+    # place no node describes) and wrapped onto the onigiri, off the surface whole. The grilled cheese's place
+    # (0012, line 175) reads its `aluminium foil (on [surface])` as on its `table`; that unit is relevant to the
+    # onigiri, but the task has no foil and no table, so it is no action. Its reading made `surface` a name of a
+    # label, no longer a place only FOON names: the seaweed became a portion, and the one left on the surface
+    # still listed the rice the wrap had taken off it (stale source).
+    surface = make_state("on", "surface")
+    packet, kept = n("packet", contains("seaweed")), n("seaweed", inside("packet"), "sheet")
+    sheet = n("seaweed", surface, "sheet")
+    remove = FunctionalUnit((packet, kept), Motion("remove"), (sheet,))
+    rice = n("rice", "shaped")
+    on_sheet, holding = n("rice", make_state("on", "seaweed")), n("seaweed", contains("rice"), surface)
+    place = FunctionalUnit((rice, sheet), Motion("pick-and-place"), (on_sheet, holding))
+    onigiri = n("onigiri", contains("rice", "seaweed"))
+    wrap = FunctionalUnit((on_sheet, holding), Motion("wrap"),
+                          (onigiri, n("seaweed", make_state("on", "onigiri"), "wrapped")))
+    foil, table = n("aluminium foil", "sheet"), n("table", "empty")
+    cover = FunctionalUnit((foil, table), Motion("place"),
+                           (n("aluminium foil", surface), n("table", make_state("covered", "", ("aluminium foil",)))))
+    kitchen = Kitchen(frozenset({packet, kept, rice, foil, table}))
+    outcome = clean_plan(Foon((remove, place, wrap, cover)), kitchen, Goal(GoalSpec("onigiri"), (onigiri,)),
+                         prune=False)  # every unit in the task, the place too (FOON's plan does not need it)
+    # the packet keeps its seaweed (FOON leaves it out of the remove's outputs): the sheet taken out is the second
+    assert sorted(x.name for x in outcome.task.instances if x.label == "seaweed") == ["seaweed_1", "seaweed_2"]
+    assert [(s.holder, s.node) for s in map(outcome.trace.final.get, ("seaweed_1", "seaweed_2"))] == [
+        ("packet_1", kept), ("onigiri_1", wrap.outputs[1])]
+
+
+def test_a_container_and_what_is_in_it_are_counted_from_one_unit_that_makes_both():
+    # onigiri (0067, line 15) on the universal FOON: the pour takes `measuring cup (contains {water})` and `water (in
+    # [measuring cup])`. Their first makers are two units of other recipes: the pizza's turn on (0085, line 231),
+    # whose water is `from [faucet], in [measuring cup]`, and the macaroni's fill (0002, line 21) into a cup that is
+    # `below [faucet]`. Counted from those, the task had two cups and no plan had the water in the one poured from
+    # (unsolvable); the pesto's fill (0075, line 13) makes both, from the kitchen's `measuring cup (empty)`.
+    cup, water, faucet = "measuring cup", "water", "faucet"
+    below, off, ready = make_state("below", faucet), n(faucet, "off"), n(faucet, "off (ready)")
+    on, empty, filled = n(faucet, "on"), n(cup, "empty"), n(cup, contains(water))
+    from_tap, in_cup = n(water, make_state("from", faucet)), n(water, inside(cup))
+    units = (
+        FunctionalUnit((off, n(cup, "clean", "empty")), Motion("turn on"),
+                       (on, n(water, make_state("from", faucet), inside(cup)), filled)),
+        FunctionalUnit((ready, n("pot", "empty")), Motion("pick-and-place"), (n(cup, "empty", below),)),
+        FunctionalUnit((ready,), Motion("turn on"), (on, from_tap)),
+        FunctionalUnit((on, from_tap, n(cup, below, "empty")), Motion("fill"), (n(cup, below, contains(water)), in_cup)),
+        FunctionalUnit((off,), Motion("turn on"), (n(water, "from faucet"), on)),
+        FunctionalUnit((on, n(water, "from faucet"), empty), Motion("fill"), (filled, in_cup)),
+        FunctionalUnit((n("rice cooker", "empty"), filled, in_cup), Motion("pour"),
+                       (n("rice cooker", contains(water)), n(water, inside("rice cooker")))),
+    )
+    kitchen = {off, ready, empty, n(cup, "clean", "empty"), n("pot", "empty"), n("rice cooker", "empty")}
+    outcome = clean_unit_plan(units, kitchen, units[-1].outputs[0])
+    assert [s.unit.motion.label for s in outcome.trace.steps][-2:] == ["fill", "pour"]
+
+
+def test_a_unit_that_needs_the_container_node_does_not_make_it_for_the_unit_taking_both():
+    # hash browns (0039, lines 163-196): the second mix makes `bowl (contains {potato mixture})` and the mixture
+    # with the egg, from the bowl the first mix leaves in that very node: counted from the second mix alone, the
+    # plan lost the first mix and everything before it (15 objects, no relaxed solution)
+    bowl, mix, egg = n("bowl", contains("potato mixture")), "potato mixture", "egg white and yolk"
+    first = FunctionalUnit((n("bowl", contains("potato")), n("tongs", "clean")), Motion("mix"),
+                           (bowl, n(mix, contains("potato"), inside("bowl"))))
+    pour = FunctionalUnit((bowl, n("bowl", contains(egg)), n(egg, inside("bowl"))), Motion("pour"),
+                          (n("bowl", contains(mix, egg)),))
+    egged = n(mix, contains("potato", egg), inside("bowl"))
+    second = FunctionalUnit((n("bowl", contains(mix, egg)), n("tongs", "clean")), Motion("mix"), (bowl, egged))
+    place = FunctionalUnit((bowl, egged, n("skillet", "heated")), Motion("pick-and-place"),
+                           (n(mix, contains("potato", egg), make_state("in", "skillet")),))
+    foon = Foon((first, pour, second, place))
+    kitchen = frozenset({*first.inputs, *pour.inputs[1:], n("skillet", "heated")})
+    assert delete_free_plan(foon, kitchen, place.outputs, together=True)[0] == (0, 1, 2, 3)

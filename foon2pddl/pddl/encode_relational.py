@@ -12,8 +12,7 @@
   where it was, so an object is in or on at most one holder.
 * **Actions.** One schema per unit, from the unit's reading in the task
   (`relational_plan.plan_unit`, `holders.relational_roles`). Per role:
-  - an object that stays where it is while it or its holder changes must be there:
-    `(in ?bowl ?onion)` (nothing is cut on another board);
+  - an object that stays where it is while it or its holder changes must be there: `(in ?bowl ?onion)`;
   - an object that moves must be in its source holder (deleted) and goes into its
     target (added); a source the unit does not name is left by a quantified delete
     `(forall (?h - physical-object) (when (in ?h ?x) (not (in ?h ?x))))`, never by one
@@ -72,7 +71,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported, task_aliases
-from .holders import Fate, gained, head_of, list_gaps, unit_aliases
+from .holders import Fate, gained, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import InstanceCounts, count_reasons, derive_counts
 from .list_drops import kept_in_place
@@ -82,7 +81,7 @@ from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
 from .relational_init import completed_kitchen, kitchen_placed, scene_instances
-from .relational_plan import UnitPlan, Way, count_roles, flow_ways, holding_labels, plan_unit, silent_labels
+from .relational_plan import UnitPlan, Way, count_roles, flow_ways, holding_labels, plan_unit, quiet_places
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
@@ -108,26 +107,27 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
-    filled, holding = frozenset().union(*(gained(f.units[u]) for u in units)), holding_labels(f.units[u] for u in units)
-    # once; with places only outputs name (by no other name: `pan`), holders with no list (bread toast's plate)
-    names = {n.label for n in task_nodes} | {c for u in units for c, _ in unit_aliases(f.units[u])}
-    silent = silent_labels(task_nodes) | {c for u in units for n in f.units[u].outputs for _, c in places(n)
-                                          if c not in names and not any(head_of(c, x) for x in names)}
-    plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled,
-                                                         frozenset(n.label for n in task_nodes),
-                                                         holding) for u in units})
-    by_unit = {f.units[u]: p for u, p in plans.items()}
-    def roles_of(unit):
-        return count_roles(by_unit[unit]) if unit in by_unit else ()
-
-    def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-        return derive_counts(net, need, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
-                             overrides=dict(options.instances), roles_of=roles_of)
-    counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if origin else count(inp.foon, st.own)
-    why = tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, roles_of))
+    filled, labels = frozenset().union(*(gained(f.units[u]) for u in units)), frozenset(n.label for n in task_nodes)
+    holding = holding_labels(f.units[u] for u in units)
     scene = kitchen.project(level).scene
-    have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
-    units = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
+    def read(speakers: tuple[int, ...]):  # the units' readings and objects, `speakers`' names read (quiet_places)
+        silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
+        plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
+                                                             holding) for u in units})
+        by_unit = {f.units[u]: p for u, p in plans.items()}
+        def roles_of(unit):
+            return count_roles(by_unit[unit]) if unit in by_unit else ()
+        def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
+            return derive_counts(net, need, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
+                                 overrides=dict(options.instances), roles_of=roles_of, together=True)
+        counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if origin else count(inp.foon, st.own)
+        have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
+        kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
+        return silent, plans, drops, roles_of, counts, have, kept
+    silent, plans, drops, roles_of, counts, have, kept = read(units)
+    if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in kept]) != silent:
+        silent, plans, drops, roles_of, counts, have, kept = read(kept)  # a unit with no objects names no place
+    units, why = kept, tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, roles_of))
 
     table = NameTable()
     for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE):

@@ -46,12 +46,13 @@ from dataclasses import dataclass, field
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, places
-from .holders import Fate, Flow, RelRole, moved_into, relational_roles, unit_aliases, unit_flows
+from .holders import Fate, Flow, RelRole, head_of, moved_into, relational_roles, unit_aliases, unit_flows
 from .pairing import Role
 from .relational_init import read_names
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
-           "dusted_nodes", "dustings", "left_nodes", "restated_nodes", "silent_labels", "plan_unit", "without"]
+           "dusted_nodes", "dustings", "holding_labels", "left_nodes", "quiet_places", "restated_nodes", "silent_labels",
+           "plan_unit", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -123,6 +124,19 @@ def holding_labels(units: Iterable[FunctionalUnit]) -> frozenset[str]:
     `butter (in [bread])`, the spread's butter the bread lists)."""
     return frozenset(c for u in units for r in relational_roles(u) for n in (r.role.before, r.after)
                      for _, c in places(n))
+
+
+def quiet_places(nodes: Iterable[ObjectNode], units: Iterable[FunctionalUnit],
+                 speakers: Iterable[FunctionalUnit]) -> frozenset[str]:
+    """The holders that say nothing of what they hold: the labels no node of `nodes` (the task's) says the contents
+    of (`silent_labels`), and the places the output nodes of `units` name that are no label of `nodes` nor the head
+    of one, nor a name one of `speakers` (the units the task has objects for) reads as one of its objects
+    (`unit_aliases`): the bread toast's plate; the onigiri's `surface`, which the grilled cheese's place reads as its
+    table in a universal FOON, where the onigiri's task has no table to fire that unit with."""
+    nodes = list(nodes)
+    names = {n.label for n in nodes} | {c for u in speakers for c, _ in unit_aliases(u)}
+    return silent_labels(nodes) | {c for u in units for n in u.outputs for _, c in places(n)
+                                   if c not in names and not any(head_of(c, x) for x in names)}
 
 
 def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str]) -> bool:
