@@ -141,3 +141,17 @@ def test_a_unit_that_needs_the_container_node_does_not_make_it_for_the_unit_taki
     foon = Foon((first, pour, second, place))
     kitchen = frozenset({*first.inputs, *pour.inputs[1:], n("skillet", "heated")})
     assert delete_free_plan(foon, kitchen, place.outputs, together=True)[0] == (0, 1, 2, 3)
+
+
+def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
+    # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
+    # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from
+    # that jar (leaving it `opened`, no longer the node the spread takes). The plan spreads the peanut butter the
+    # kitchen's jar holds, as a cook would; its FOON tree found `peanut butter (in [jar])` not available. The
+    # node says nothing the jar does not: the kitchen implies it, as it implies the milk in its bowl.
+    jar, butter = n("jar", contains("peanut butter")), n("peanut butter", inside("jar"))
+    opening = FunctionalUnit((jar,), Motion("open"), (n("jar", "opened", contains("peanut butter")), butter))
+    bread, knife = n("bread", "sliced"), n("knife", "clean")
+    spread = FunctionalUnit((jar, butter, bread, knife), Motion("spread"), (n("bread", contains("peanut butter"), "sliced"),))
+    outcome = clean_unit_plan((opening, spread), {jar, bread, knife}, spread.outputs[0])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["spread"]

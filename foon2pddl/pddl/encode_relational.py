@@ -80,7 +80,7 @@ from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import completed_kitchen, kitchen_placed, scene_instances
+from .relational_init import completed_kitchen, kitchen_implied, scene_instances
 from .relational_plan import UnitPlan, Way, count_roles, flow_ways, holding_labels, plan_unit, quiet_places
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
@@ -178,7 +178,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too; a candidate an object starts in beyond it is reached only by what units make
-    moved = kitchen_placed((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
+    moved = kitchen_implied((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
     early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
              and any(x.start == c for x in instances)}
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, early))

@@ -14,8 +14,8 @@ from .holder_words import task_aliases
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_placed", "named_objects", "read_names",
-           "scene_instances", "unplaced"]
+__all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_implied", "kitchen_placed",
+           "named_objects", "read_names", "scene_instances", "unplaced"]
 
 
 def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
@@ -130,6 +130,17 @@ def kitchen_placed(nodes: Iterable[ObjectNode | None], kitchen: Iterable[ObjectN
     given = frozenset(kitchen)
     loose = _unplaced_all(given)
     return frozenset(n for n in nodes if n is not None and n not in given and unplaced(n) in loose)
+
+
+def kitchen_implied(nodes: Iterable[ObjectNode | None], kitchen: Iterable[ObjectNode]) -> frozenset[ObjectNode]:
+    """`kitchen_placed`, and the `nodes` not in `kitchen` that say nothing but where they are, in or on a label
+    whose kitchen node lists them (`peanut butter (in [jar])` beside the kitchen's `jar (contains {peanut
+    butter})`, a node a universal FOON's buckeye candy makes by opening the jar): what the kitchen says too."""
+    given, nodes = frozenset(kitchen), [n for n in nodes if n is not None]
+    lists = {(k.label, x) for k in given for x in listed(k)}
+    bare = {n for n in nodes if n not in given and n.states and all(place_state(s) is not None for s in n.states)
+            and all((c, n.label) in lists for _, c in places(n))}
+    return kitchen_placed(nodes, given) | bare
 
 
 @lru_cache(maxsize=8)
