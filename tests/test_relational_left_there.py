@@ -71,3 +71,34 @@ def test_what_a_node_lists_on_a_role_a_later_unit_leaves_silent_went_into_what_i
 def test_grilled_cheese_sandwich_is_solved_and_replay_clean():
     outcome = clean_dish_plan(DATA / "0012-grilled-grilled_cheese_sandwich.txt")
     assert any("grill leaves grill spatula out of its list, which heat at" in note for note in outcome.compiled.notes)
+
+
+def test_a_node_on_the_grill_another_unit_made_is_no_evidence_the_object_stayed():
+    # a universal FOON written as one file has every recipe in it: the spatula on the grill that the heat takes
+    # must come from the unit that made the grill the spray takes, not from another unit earlier in the file
+    grill_on, cheesy = n("grill", "on"), n("grill spatula", contains("cheese"))
+    spatula = n("grill spatula", contains("cheese"), on("grill"))
+    with_spatula = n("grill", "on", contains("grill spatula"))
+    units = (FunctionalUnit((grill_on, cheesy), Motion("pick-and-place"), (with_spatula,)),
+             FunctionalUnit((cheesy, n("grill", "off")), Motion("place"), (spatula, n("grill", "off"))),
+             FunctionalUnit((with_spatula, n("bread", "sliced")), Motion("spray"),
+                            (n("grill", "on", contains("bread")), n("bread", on("grill")))),
+             FunctionalUnit((with_spatula, spatula, n("cheese", on("grill spatula"))), Motion("heat"),
+                            (spatula, n("cheese", "melted", on("grill spatula")))))
+    units = tuple(FunctionalUnit(u.inputs, u.motion, u.outputs, (Source("universal.txt", 10 * (1 + k)),))
+                  for k, u in enumerate(units))
+    plans = _plans(units)
+    assert [f.label for f in plans[2].flows if f.into is None] == ["grill spatula"]
+    assert kept_in_place(Foon(units), range(4), plans) == (plans, [])
+
+
+def test_only_what_the_unit_making_the_hushed_node_made_beside_it_is_dust():
+    # another unit's olive oil on bread (another recipe of a universal FOON) is not what the flip hushed
+    oil = n("olive oil", on("bread"))
+    spray = FunctionalUnit((n("bread", "sliced"), n("olive oil", "liquid")), Motion("spray"),
+                           (n("bread", contains("olive oil")),))
+    drizzle = FunctionalUnit((n("bread", "toasted"), n("olive oil", "liquid")), Motion("drizzle"),
+                             (n("bread", "toasted", contains("olive oil", "salt")), oil))
+    flip = FunctionalUnit((n("bread", contains("olive oil")),), Motion("flip"), (n("bread", "toasted"),))
+    dust = dustings(_plans((spray, drizzle, flip)).values())
+    assert [x.label for x in dust] == ["olive oil"] and oil not in dust  # the spray's own oil only

@@ -11,8 +11,8 @@ Rule (`kept_in_place`): a flow of label L out of the container role of label C i
 following that role's output node forward through the task's units that take it (each unit's pairing,
 `pairing.unit_roles`, gives the node it becomes), each later in the same recipe file, a unit takes a node of
 label L placed in C (its place read through that unit's names) that a unit of the network makes; or when a unit
-of the task later in the same recipe file takes a node of label L placed in C that a unit before this one in that
-file makes, with a node of C listing L (`_still_there`): FOON describes the object still there, in the node it
+of the task later in the same recipe file takes a node of label L placed in C that a unit making this unit's node
+of C makes too, with a node of C listing L (`_still_there`): FOON describes the object still there, in the node it
 had before. 0012's spray (0012-grilled-grilled_cheese_sandwich.txt:123) leaves `grill (on, contains {bread})`,
 without the spatula of cheese the pick-and-place put on it; the heat at :142, after it in the video, takes
 `grill spatula (contains {cheese}, on [grill])` and `grill (on, contains {grill spatula})`: the spatula stayed
@@ -78,19 +78,22 @@ def _placed(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
             and names.get(w[1], w[1]) == holder]
 
 
-def _still_there(foon: Foon, units: frozenset[int], u: int, holder: str, label: str) -> FunctionalUnit | None:
-    """The first unit of `units` later in unit `u`'s recipe file that takes a node of `label` placed in or on
-    `holder`, made by a unit before `u` in that file, together with a node of `holder` listing `label`: FOON
-    describes the object still there, in the node it had before `u` (0012's heat takes the spatula of cheese on
-    the grill, and the grill listing it, after the spray's `grill (contains {bread})`)."""
+def _still_there(foon: Foon, units: frozenset[int], u: int, before: ObjectNode, label: str) -> FunctionalUnit | None:
+    """The first unit of `units` later in unit `u`'s recipe file that takes a node of `label` placed in or on the
+    container `before` is (unit `u`'s input), made by a unit that made `before` too, together with a node of that
+    container listing `label`: FOON describes the object still there, in the node it had before `u` (0012's heat
+    takes the spatula of cheese on the grill, which the pick-and-place made with the grill the spray takes, and the
+    grill listing it, after the spray's `grill (contains {bread})`). The shared maker, not the file, ties the two:
+    a universal FOON written as one file has all its recipes in it."""
     path, line = _order(foon, u)
+    makers = set(foon.producers.get(before, ()))
     for v in sorted((v for v in units if _order(foon, v)[0] == path and _order(foon, v)[1] > line),
                     key=lambda v: _order(foon, v)):
         unit = foon.units[v]
         names = dict(unit_aliases(unit))
-        if (any(_order(foon, p)[0] == path and _order(foon, p)[1] < line
-                for n in _placed(unit, label, holder) for p in foon.producers.get(n, ()))
-                and any(n.label == holder and label in {names.get(x, x) for x in listed(n)} for n in unit.inputs)):
+        if (any(makers.intersection(foon.producers.get(n, ())) for n in _placed(unit, label, before.label))
+                and any(n.label == before.label and label in {names.get(x, x) for x in listed(n)}
+                        for n in unit.inputs)):
             return unit
     return None
 
@@ -107,8 +110,8 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
         for f in plan.flows:
             role = plan.slots[f.holder].rel.role
             taker = _taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
-            if taker is None and f.into is None:
-                taker = _still_there(foon, task, u, role.label, f.label)
+            if taker is None and f.into is None and role.before is not None:
+                taker = _still_there(foon, task, u, role.before, f.label)
             if taker is None:
                 keep.append(f)
                 continue

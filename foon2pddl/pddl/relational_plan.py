@@ -324,20 +324,23 @@ def dustings(plans: Iterable[UnitPlan]) -> frozenset[ObjectNode]:
     """The nodes units put in or on a role they leave silent about its contents (the sprinkle's `flour (powder, on
     [cutting board])` beside its `cutting board (floured)`), and the nodes units make of a label L placed at a
     label C when some unit turns a node of C listing L into one silent about its contents (0012's spray makes
-    `olive oil (on [bread])` and `bread (contains {olive oil})`, the flip leaves `bread (toasted)`): what FOON
+    `olive oil (on [bread])` and `bread (contains {olive oil})`, the flip leaves `bread (toasted)`), made by the
+    unit that made the node of C turned silent (not every L at a C: other recipes of a universal FOON): what FOON
     stops counting as the holder's contents."""
-    out, made, hushed = set(), set(), set()
+    out, made, hushed = set(), [], {}
     for p in plans:
+        made.append({n for s in p.slots for n in (s.after, s.portion) if n is not None})
         for k, s in enumerate(p.slots):
             into = s.rel.target.role if s.rel.target is not None else None
             after = p.after_of(into) if into is not None else None
             if after is not None and not describes_contents(after) and s.fate in (Fate.NEW, Fate.MOVES, Fate.SPLITS):
                 out.add(s.portion if s.fate is Fate.SPLITS else s.after)
-            made.update(n for n in (s.after, s.portion) if n is not None)
             new, old = p.after_of(k), s.rel.role.before
             if new is not None and old is not None and describes_contents(old) and not describes_contents(new):
-                hushed.update((s.rel.role.label, x) for x in listed(old))
-    out.update(n for n in made for _, c in places(n)[:1] if (c, n.label) in hushed)
+                hushed[old] = s.rel.role.label
+    # only what the unit that made the hushed node made beside it: the spray's oil, not every L at C
+    out.update(n for nodes in made for old, c in hushed.items() if old in nodes
+               for n in nodes for _, at in places(n)[:1] if at == c and n.label in listed(old))
     return frozenset(out - {None})
 
 
