@@ -34,6 +34,7 @@ from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.foon import Foon
 from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.restore import is_restoring
 from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan, plan_restoring
@@ -102,8 +103,7 @@ def restore_rows(paths: list[Path], encoding: str, time_limit: float, verbose: b
         kitchen = default_kitchen(foon)
         outs = [f(foon, kitchen, goal, encoding, time_limit=time_limit) for f in (plan, plan_restoring)]
         if all(str(o.status) == "solved" and o.trace is not None and not replay(o.trace).disagreements for o in outs):
-            row = [(len(o.task.instances), copies(o.trace), sum(s.unit.sources[0].path == "assumed-restore"
-                                                                 for s in o.trace.steps)) for o in outs]
+            row = [(len(o.task.instances), copies(o.trace), sum(is_restoring(s.unit) for s in o.trace.steps)) for o in outs]
             pairs.append(row)
             if verbose:
                 print(f"{path.name}\tobjects {row[0][0]} -> {row[1][0]}\tcopies {row[0][1]} -> {row[1][1]}\t"
