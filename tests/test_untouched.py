@@ -109,6 +109,16 @@ def test_an_object_whose_quantified_effect_sets_a_fact_of_no_object_is_kept():
     assert untouched(task) == {"b", "d"}  # c sets (occupied s1); b is in no state a parameter needs
 
 
+def test_an_object_the_goal_names_is_kept():
+    # relational goals are 0-ary (`goal-reached`); a task whose goal names an object must still declare it
+    act = Action("go", (Atom("is", ("?p", "s0")),), (Atom("is", ("?p", "s1")),), params=(("?p", "bowl"),))
+    init = (Atom("is", ("a", "s0")), Atom("is", ("c", "s2")))
+    task = PlanningTask("d", "p", "relational", 3, (), (act,), init, (Atom("is", ("c", "s2")),), types=TYPES,
+                        objects=OBJECTS)
+    assert untouched(task) == {"b", "d"}
+    assert "c" in {name for name, _ in set_aside(task).objects}
+
+
 def test_whipped_cream_problem_leaves_out_the_carton_and_spatula_and_the_plan_still_names_them():
     foon, _ = load([SUBGRAPHS / "0001-whipped_cream.txt"])
     goal = resolve_goal(spec_of_node(sorted(x for x in foon.nodes if x.dish is not None)[0]), foon)

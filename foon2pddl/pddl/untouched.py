@@ -72,6 +72,7 @@ def untouched(task: PlanningTask) -> frozenset[str]:
     # an object an action names itself is kept, and a fact naming it is taken as possible
     touched: set[str] = {x for act in task.actions for c in (act.pre, act.add, act.delete, *(
         y.atoms() for y in act.conditional)) for a in c for x in a.args if x in states}
+    touched.update(x for a in task.goal for x in a.args if x in states)  # so is one the goal names
     leaky: set[str] = set()
     grew = True
     while grew:
