@@ -85,10 +85,12 @@ def _still_there(foon: Foon, units: frozenset[int], u: int, before: ObjectNode, 
     takes the spatula of cheese on the grill, which the pick-and-place made with the grill the spray takes, and the
     grill listing it, after the spray's `grill (contains {bread})`). The shared maker, not the file, ties the two:
     a universal FOON written as one file has all its recipes in it."""
-    path, line = _order(foon, u)
     makers = set(foon.producers.get(before, ()))
-    for v in sorted((v for v in units if _order(foon, v)[0] == path and _order(foon, v)[1] > line),
-                    key=lambda v: _order(foon, v)):
+    if not makers:  # a kitchen node: no unit made the object's earlier node beside it
+        return None
+    path, line = _order(foon, u)
+    later = [(at, v) for v in units if (at := _order(foon, v))[0] == path and at[1] > line]
+    for _, v in sorted(later, key=lambda p: p[0]):
         unit = foon.units[v]
         names = dict(unit_aliases(unit))
         if (any(makers.intersection(foon.producers.get(n, ())) for n in _placed(unit, label, before.label))
