@@ -10,8 +10,8 @@
   order): `(in ?holder ?obj)`, `(on ?surface ?obj)`. A container's contents are
   the objects in it; every action that puts an object somewhere removes it from
   where it was, so an object is in or on at most one holder.
-* **Actions.** One schema per unit, from the unit's reading in the task
-  (`relational_plan.plan_unit`, `holders.relational_roles`). Per role:
+* **Actions.** One schema per unit, from the unit's reading in the task (`relational_reading.read_units`:
+  `relational_plan.plan_unit`, `holders.relational_roles`). Per role:
   - an object that stays where it is while it or its holder changes must be there: `(in ?bowl ?onion)`;
   - an object that moves must be in its source holder (deleted) and goes into its
     target (added); a source the unit does not name is left by a quantified delete
@@ -71,17 +71,17 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported, task_aliases
-from .holders import Fate, gained, list_gaps, unit_aliases
+from .holders import Fate, list_gaps, unit_aliases
 from .input_stitch import with_stitches
-from .instance_counts import InstanceCounts, count_reasons, derive_counts
-from .list_drops import kept_in_place
+from .instance_counts import count_reasons
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
 from .relational_init import completed_kitchen, kitchen_implied, scene_instances
-from .relational_plan import UnitPlan, Way, count_roles, flow_ways, holding_labels, plan_unit, quiet_places
+from .relational_plan import UnitPlan, Way, flow_ways
+from .relational_reading import read_units
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
@@ -106,28 +106,10 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         return restoring_units(net, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(net.units)))
     st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
-    task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
-    filled, labels = frozenset().union(*(gained(f.units[u]) for u in units)), frozenset(n.label for n in task_nodes)
-    holding = holding_labels(f.units[u] for u in units)
     scene = kitchen.project(level).scene
-    def read(speakers: tuple[int, ...]):  # the units' readings and objects, `speakers`' names read (quiet_places)
-        silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
-        plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
-                                                             holding) for u in units})
-        by_unit = {f.units[u]: p for u, p in plans.items()}
-        def roles_of(unit):
-            return count_roles(by_unit[unit]) if unit in by_unit else ()
-        def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-            return derive_counts(net, need, inp.kitchen, inp.candidates, stated=kitchen.project(level).stated_counts(),
-                                 overrides=dict(options.instances), roles_of=roles_of, together=True)
-        counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if origin else count(inp.foon, st.own)
-        have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
-        kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
-        return silent, plans, drops, roles_of, counts, have, kept
-    silent, plans, drops, roles_of, counts, have, kept = read(units)
-    if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in kept]) != silent:
-        silent, plans, drops, roles_of, counts, have, kept = read(kept)  # a unit with no objects names no place
-    units, why = kept, tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, roles_of))
+    rd = read_units(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances))
+    units, silent, plans, drops, counts, have = rd.units, rd.silent, rd.plans, rd.drops, rd.counts, rd.have
+    why = tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, rd.roles_of))
 
     table = NameTable()
     for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE):
@@ -145,7 +127,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     else:
         named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], have, nodes,
-                                                              named, silent, filled)
+                                                              named, silent, rd.filled)
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)

@@ -1,0 +1,79 @@
+"""How the `relational` encoding reads a task's units, and the objects that reading needs.
+
+Each unit of the task is read by `relational_plan.plan_unit`, given the holders that say nothing of what they
+hold (`relational_plan.quiet_places`), the (holder, content) pairs the task's units fill (`holders.gained`), the
+task's labels and the labels that hold something (`relational_plan.holding_labels`); flows a later unit's input
+says did not happen are dropped (`list_drops.kept_in_place`). The objects come from those readings
+(`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
+for the stitched one), or from the scene. A unit with a role of a label the task has no object of is left out;
+when that changes which places the task's units name, the units are read again with only the kept ones as
+speakers (a unit with no objects names no place).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.scene import SceneObject
+from .encoding import LevelInputs
+from .holders import gained
+from .input_stitch import Stitched
+from .instance_counts import InstanceCounts, RolesOf, derive_counts
+from .list_drops import kept_in_place
+from .relational_plan import UnitPlan, count_roles, holding_labels, plan_unit, quiet_places
+
+__all__ = ["Reading", "read_units"]
+
+
+@dataclass(frozen=True)
+class Reading:
+    """A task's units as the relational encoding reads them (`read_units`).
+
+    `units`: the task's units with an object for every role; `silent`: the holders that say nothing of what they
+    hold; `plans`: each unit's reading; `drops`: the flows read as not happening, as (container, content,
+    message, unit); `roles_of`: a unit's roles for counting; `counts`, `have`: the objects (label -> how many);
+    `filled`: the (holder, content) label pairs the units fill."""
+
+    units: tuple[int, ...]
+    silent: frozenset[str]
+    plans: dict[int, UnitPlan]
+    drops: list[tuple[str, str, str, FunctionalUnit]]
+    roles_of: RolesOf
+    counts: InstanceCounts
+    have: dict[str, int]
+    filled: frozenset[tuple[str, str]]
+
+
+def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
+               overrides: Mapping[str, int]) -> Reading:
+    """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
+    kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
+    give."""
+    f, units = st.foon, st.units
+    task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
+    filled, labels = frozenset().union(*(gained(f.units[u]) for u in units)), frozenset(n.label for n in task_nodes)
+    holding = holding_labels(f.units[u] for u in units)
+
+    def read(speakers: Sequence[int]) -> Reading:
+        silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
+        plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
+                                                             holding) for u in units})
+        by_unit = {f.units[u]: p for u, p in plans.items()}
+
+        def roles_of(unit):
+            return count_roles(by_unit[unit]) if unit in by_unit else ()
+
+        def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
+            return derive_counts(net, need, inp.kitchen, inp.candidates, stated=stated, overrides=overrides,
+                                 roles_of=roles_of, together=True)
+        counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if st.origin else count(inp.foon, st.own)
+        have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
+        kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
+        return Reading(kept, silent, plans, drops, roles_of, counts, have, filled)
+
+    first = read(units)
+    if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in first.units]) != first.silent:
+        return read(first.units)
+    return first
