@@ -116,7 +116,10 @@ def random_world(draw, st) -> World:
                           min_size=1, max_size=4, unique=True))
     bowls = [f"bowl_{i}" for i in range(1, draw(st.integers(2, 4)) + 1)]
     objects = {b: "bowl" for b in bowls} | {f"{f}_1": f for f in foods} | {"knife_1": "knife"}
-    objects |= {f"mixture_{i}": "mixture" for i in range(1, 4)}
+    # each mixture has its own label, as FOON's do (salsa, dough): with every label one object, each change
+    # changes what some node says, so a trace without it is inconsistent (two objects of one label in one
+    # bowl can restate a list, which no replay could tell from a consistent trace)
+    objects |= {f"mixture_{i}": label for i, label in enumerate(["batter", "dough", "paste"], 1)}
     held: dict[str, list[str]] = {b: [] for b in bowls}
     initial = {"knife_1": ObjectState("knife_1", node("knife"))}
     for f in foods:
@@ -151,6 +154,6 @@ def random_world(draw, st) -> World:
             gone = [ObjectState(x, w.now[x].node, src, "in", consumed=True) for x in held[src]]
             held[src] = [m]
             shape[m] = "mixed"
-            w.step("mix", [*gone, ObjectState(m, node("mixture", "mixed", ("in", "bowl")), src, "in"),
-                           ObjectState(src, contents("bowl", ["mixture"]))])
+            w.step("mix", [*gone, ObjectState(m, node(objects[m], "mixed", ("in", "bowl")), src, "in"),
+                           ObjectState(src, contents("bowl", [objects[m]]))])
     return w
