@@ -122,6 +122,19 @@ def test_gen_header_names_the_kitchen_file_and_counts_in_the_singular(tmp_path):
     assert kitchen.startswith("; kitchen: example_kitchen.txt (") and "/" not in kitchen
 
 
+def test_gen_header_counts_the_units_pruning_kept_as_the_other_encodings_do(tmp_path):
+    first = {}
+    for prune in ("--prune", "--no-prune"):
+        out = tmp_path / prune
+        result = _run("--network", "gen", "--goal", "guacamole", prune, "-o", str(out))
+        assert result.exit_code == 0, result.output
+        first[prune] = (out / "domain.pddl").read_text().splitlines()[0]
+    kept = re.fullmatch(r"; foon2pddl, lifted FOON-GEN \(categories as types\), level 3: \d+ lifted units "
+                        r"from (\d+) of 101 units after relevance pruning", first["--prune"])
+    assert kept and int(kept.group(1)) < 101, first["--prune"]
+    assert re.fullmatch(r"; foon2pddl, .*: \d+ lifted units from all 101 units", first["--no-prune"]), first
+
+
 def test_domain_name_identifies_the_domain_and_the_problem_names_it(tmp_path):
     names = {}
     for goal in ("guacamole", "whipped cream", "guacamole"):

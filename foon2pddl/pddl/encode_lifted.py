@@ -67,6 +67,7 @@ from .encoding import (
     goal_actions,
     goal_kitchen_lines,
     unit_comment,
+    units_kept,
 )
 from .lifted_atoms import Family, Shape, family_label, node_atom_labels, representations, shape_label
 from .names import NameTable
@@ -270,6 +271,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     """The lifted FOON-GEN task for `goal` from `kitchen` over the concrete network `foon` (see the module doc);
     `options` gives the action costs (`costs.unit_cost` of each lifted unit's first unit, goal actions 0)."""
     f = project(foon, level)
+    total = len(f.units)
     kitchen_nodes = kitchen.project(level).nodes
     candidates = tuple(sorted({project_node(c, level) for c in goal.candidates}))
     ordering = Ordering(index)
@@ -323,7 +325,7 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
         units=tuple(lu.unit for lu in lifted),
         labels=names.table.labels,
         comments=(f"foon2pddl, lifted FOON-GEN (categories as types), level {level}: "
-                  f"{len(lifted)} lifted units from {len(f.units)} units",
+                  f"{len(lifted)} lifted units from {units_kept(len(f.units), total, prune)}",
                   *goal_kitchen_lines(goal.describe(), len(candidates), kitchen.source, len(kitchen_nodes)),
                   *cost_lines(options)),
     )

@@ -153,11 +153,14 @@ def goal_kitchen_lines(goal: str, candidates: int, kitchen_source: str | None, k
             f"kitchen: {(short_path(kitchen_source) if kitchen_source else '') or 'given'} ({_count(kitchen_nodes, 'node')})")
 
 
+def units_kept(kept: int, total: int, prune: bool) -> str:
+    """The header's words for the units compiled of the network's `total` (every encoding's)."""
+    return f"{kept} of {total} units after relevance pruning" if prune else f"all {total} units"
+
+
 def header(encoding: str, inp: LevelInputs, options: EncodeOptions, kept: int) -> tuple[str, ...]:
     """Header comment lines shared by the domain and problem files."""
-    total = len(inp.foon.units)
-    pruning = f"{kept} of {total} units after relevance pruning" if options.prune else f"all {total} units"
-    lines = [f"foon2pddl, encoding {encoding}, level {inp.level}: {pruning}",
+    lines = [f"foon2pddl, encoding {encoding}, level {inp.level}: {units_kept(kept, len(inp.foon.units), options.prune)}",
              *goal_kitchen_lines(inp.goal.describe(), len(inp.candidates), inp.kitchen_source, len(inp.kitchen))]
     return (*lines, *cost_lines(options))
 
