@@ -3,6 +3,7 @@ read or was told that was not true, written first and watched fail."""
 
 from __future__ import annotations
 
+import pytest
 from click.testing import CliRunner
 from conftest import ROOT
 
@@ -96,3 +97,26 @@ def test_instances_help_names_every_encoding_it_counts_for():
     assert "instances and relational encodings: N objects of LABEL" in " ".join(run("plan", "--help").output.split())
     counted = run("plan", "--goal", "guacamole", "--encoding", "relational", "--instances", "cutting board=2")
     assert counted.exit_code == 0 and "2 x cutting board (empty): the count stated for it" in counted.stderr
+
+
+PHYSICAL_OPTIONS = (("--restore",), ("--instances", "bowl=2"), ("--instances", "bowl=x"), ("--category-types",))
+
+
+@pytest.mark.parametrize("command", ["plan", "compile"])
+@pytest.mark.parametrize("option", PHYSICAL_OPTIONS, ids=" ".join)
+def test_an_option_over_physical_objects_is_refused_before_anything_is_read(command, option, tmp_path):
+    """`plan --goal "whipped cream" --restore` (the `tree` encoding) printed the goal's note, then the usage
+    error; on the shared subgraphs the kitchen's note too, after 2 s of loading. A usage error comes first.
+    And `--category-types` under `tree` was ignored without a word (`--instances` there is refused)."""
+    out = ["-o", tmp_path / "out"] if command == "compile" else []
+    r = run(command, "--goal", "whipped cream", *option, *out)
+    assert r.exit_code == 2, r.output
+    assert option[0] in r.stderr and "note:" not in r.stderr, r.stderr
+    gen = run(command, "--goal", "whipped cream", "--network", "gen", *option, *out)
+    assert gen.exit_code == 2 and "gen-lifted" in gen.stderr and "note:" not in gen.stderr, gen.stderr
+
+
+def test_category_types_help_names_every_encoding_it_types():
+    """`--category-types` changes the `relational` domain as it does `instances`' (both declare the category
+    chain as supertypes), but --help said "instances encoding:"."""
+    assert "instances and relational encodings: declare" in " ".join(run("plan", "--help").output.split())

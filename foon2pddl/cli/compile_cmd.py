@@ -20,10 +20,9 @@ from ..pddl.untyped import untyped
 from . import main
 from .batch import batch_entries
 from .batch_pddl import compile_batch
+from .object_options import category_chains, checked_instances
 from .options import (
-    category_chains,
     check_output,
-    checked_instances,
     constraint_inputs,
     constraints_options,
     costs_option,
@@ -49,7 +48,8 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     reject_lifted_constraints(network, cons)
     if costs == "success-rate" and motion_rates is None:
         raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
-    _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
+    _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
+                                       restore=restore, instances=instances, category_types=category_types)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
     from .progress import slow_step
     from .reasons import unreachable_reason
@@ -58,7 +58,6 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if fixpoint and (why := unreachable_reason(view.foon, view.kitchen, target)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     foon, kit = view.foon, view.kitchen
-    check_restore(restore, encoding)
     if restore:
         foon, kit = with_restore(foon, kit, target, level)
     with slow_step(f"compiling {target.describe()!r} ({encoding} encoding)"):
@@ -67,12 +66,6 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     if (why := unreachable_reason(view.foon, view.kitchen, target, task, fixpoint=fixpoint)) is not None:
         raise GoalExcluded(f"{target.describe()!r} is unreachable: {why}")
     return task
-
-
-def check_restore(restore: bool, encoding: str) -> None:
-    """`--restore` (of `compile` and `plan`) refused (UsageError) under an encoding without physical objects."""
-    if restore and not encoding_named(encoding).physical:
-        raise UsageError(f"--restore needs a physical encoding (relational, instances), not {encoding}")
 
 
 def encoder_options(encoding: str, instances: tuple[str, ...], category_types: bool, foon) -> dict:
@@ -121,7 +114,8 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
             raise UsageError("constraints and --restore compile one goal at a time (not a batch)")
         if costs == "success-rate" and rates is None:
             raise UsageError("--costs success-rate needs --rates FILE (motion<TAB>rate)")
-        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
+        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
+                                           instances=instances, category_types=category_types)
         return compile_batch(view, entries, encoding, level, prune and not shared, costs,
                              read_rates(rates) if rates else None, output_dir, fmt, shared=shared, untype=untype,
                              **encoder_options(encoding, instances, category_types, view.foon))

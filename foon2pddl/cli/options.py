@@ -8,6 +8,7 @@ import click
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
+from .object_options import category_types_option, check_physical_options, instances_option
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 level_option = click.option("--level", type=click.IntRange(1, 3), default=3, show_default=True,
@@ -80,12 +81,6 @@ def encoding_option(command):
                              + " (see docs/pddl.md).")(command)
 
 
-instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
-                                help="instances and relational encodings: N objects of LABEL in each place one "
-                                     "can start (overrides the derived count; repeatable).")
-category_types_option = click.option("--category-types", "category_types", is_flag=True,
-                                     help="instances encoding: declare each label's type under its categories "
-                                          "from the shipped category index (FOON-GEN's).")
 prune_option = click.option("--prune/--no-prune", "prune", default=True, show_default=True,
                             help="Compile only the units that can contribute to the goal.")
 costs_option = click.option("--costs", type=click.Choice(["unit", "success-rate"]), default=None,
@@ -308,11 +303,13 @@ def lifted_goal(view, spec):
 
 
 def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encoding: str, costs: str | None,
-                   containment: str = "strict", utensils: Path | None = None):
+                   containment: str = "strict", utensils: Path | None = None, *, restore: bool = False,
+                   instances: tuple[str, ...] = (), category_types: bool = False):
     """`load_view` for the PDDL commands (compile, plan), with the encoding they use.
 
     A network kind with its own encoding (`gen`: the lifted one) compiles that encoding
-    over the concrete network; an encoding without action costs rejects --costs.
+    over the concrete network; an encoding without action costs rejects --costs, and one without
+    physical objects the options over them (`check_physical_options`), before anything is read.
     """
     from ..generalize.network import NETWORKS
     from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
@@ -326,6 +323,7 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
         encoding, network = own, next(iter(NETWORKS))
     if costs is not None and not ENCODINGS[encoding].costs:
         raise UsageError(f"--encoding {encoding} does not support --costs")
+    check_physical_options(encoding, restore, instances, category_types)
     net, view = load_view(paths, kitchen, level, network, containment, utensils)
     return net, view, encoding
 
@@ -355,46 +353,3 @@ def pddl_task_options(command):
     """What compile and plan share: `goal_input_options`, then encoding, instances, level and network."""
     return goal_input_options(_apply(command, (encoding_option, instances_option, category_types_option,
                                                level_option, network_option)))
-
-
-def parse_instances(items) -> tuple[tuple[str, int], ...]:
-    """`--instances LABEL=N` values as (normalized label, N), sorted; UsageError when malformed."""
-    from ..model.foon import normalize_label
-
-    out: dict[str, int] = {}
-    for item in items:
-        label, sep, count = item.rpartition("=")
-        if not sep or not normalize_label(label) or not count.strip().isdigit():
-            raise UsageError(f"--instances expects LABEL=N with N >= 0, not {item!r}")
-        out[normalize_label(label)] = int(count)
-    return tuple(sorted(out.items()))
-
-
-def checked_instances(items, encoding: str, foon) -> tuple[tuple[str, int], ...]:
-    """`parse_instances` of `items`, refused (UsageError) under an encoding without physical objects and
-    for a label no node of `foon` has (a typo would otherwise be ignored), naming close labels."""
-    import difflib
-
-    from ..pddl.compile import encoding_named
-
-    if not items:
-        return ()
-    if not encoding_named(encoding).physical:
-        raise UsageError(f"--instances counts the objects of --encoding instances or relational; {encoding} has none")
-    parsed = parse_instances(items)
-    labels = sorted({n.label for n in foon.nodes})
-    for label, _ in parsed:
-        if label not in labels:
-            close = difflib.get_close_matches(label, labels, n=3)
-            raise UsageError(f"--instances: no object of the network is labelled {label!r}"
-                             + (f"; close matches: {', '.join(close)}" if close else ""))
-    return parsed
-
-
-def category_chains(foon) -> tuple[tuple[str, tuple[str, ...]], ...]:
-    """Label -> its category chain (most specific first) from the shipped category index, for PDDL supertypes."""
-    from ..generalize.categories import load_index
-
-    index = load_index()
-    labels = sorted({n.label for n in foon.nodes})
-    return tuple((label, (cat, *index.ancestors(cat))) for label in labels if (cat := index.choose(label)))

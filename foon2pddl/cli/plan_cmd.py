@@ -22,12 +22,10 @@ from ..status import PlanStatus
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
-from .compile_cmd import check_restore
+from .object_options import category_chains, checked_instances
 from .options import (
-    category_chains,
     check_output,
     check_time_limit,
-    checked_instances,
     constraint_inputs,
     constraints_options,
     costs_option,
@@ -157,7 +155,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     if entries is not None:
         if cons.items:
             raise UsageError("constraints plan one goal at a time (not a batch)")
-        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
+        _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
+                                           instances=instances, category_types=category_types)
         return plan_batch(view, entries, encoding, level, fmt if fmt in TABLE_FORMATS else "text",
                           fmt if fmt in TREE_EXTENSIONS else DEFAULT_FORMAT, output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
@@ -169,7 +168,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         encoding = skill_encoding(encoding, not default_encoding)
         if click.get_current_context().get_parameter_source("fmt") is click.core.ParameterSource.DEFAULT:
             fmt = "steps"  # a skill plan's own default: each FOON unit with its skill calls (docs/skills.md)
-    net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils)
+    net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
+                                         restore=restore, instances=instances, category_types=category_types)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
@@ -180,14 +180,13 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                                 rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
-    check_restore(restore, encoding)
     with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
                    f"time limit {time_limit:g} s)"):
         outcome = (plan_restoring if restore else plan)(
                        foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
                        up_validate=up_validate, constraints=cons, search=config, instances=counts,
-                       categories=category_chains(foon) if category_types and ENCODINGS[encoding].physical else ())
+                       categories=category_chains(foon) if category_types else ())
     timings = {"load": load_s, **outcome.timings}
     status = outcome.status
     data: str | None = None
