@@ -8,9 +8,10 @@ from node_words import contains, inside, n
 from relational_checks import clean_plan, clean_unit_plan
 
 from bench.pddl_relational import universal_rows
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.holders import list_gaps
 from foon2pddl.pddl.instance_counts import delete_free_plan
 from foon2pddl.pddl.relational_plan import plan_unit
 from foon2pddl.planners.physical_replay import replay
@@ -155,3 +156,29 @@ def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchen
     spread = FunctionalUnit((jar, butter, bread, knife), Motion("spread"), (n("bread", contains("peanut butter"), "sliced"),))
     outcome = clean_unit_plan((opening, spread), {jar, bread, knife}, spread.outputs[0])
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["spread"]
+
+
+def test_a_list_naming_what_the_unit_attaches_to_it_is_a_gap():
+    # watermelon lemonade (0084, line 147) on the universal FOON: the attach leaves `blender cup (..., attached to
+    # [blender])` beside `blender (with [cup])`, the cup read as the blender cup. FOON says the cup is attached to
+    # the blender, a relation the encoding does not hold (only in and on), so nothing is in the blender. Alone the
+    # blender is no container (no node of the plan says anything is in one); on the universal FOON the kitchen has a
+    # `cup (in [blender])`, and the replay found `blender_1 lists blender cup, but nothing in it is` (a gap now).
+    cup, juice = n("blender cup", contains("watermelon")), n("watermelon", inside("blender cup"))
+    attached = n("blender cup", contains("watermelon"), make_state("attached to", "blender"))
+    attach = FunctionalUnit((cup, juice, n("blender", "off")), Motion("attach"),
+                            (attached, n("blender", make_state("with", "cup"))), (Source("lemonade.txt", 147),))
+    assert list_gaps(attach)[-1] == ("blender", "blender cup", "blender lists blender cup, which the unit leaves "
+                                     "attached to [blender]: a relation the encoding does not hold")
+
+
+def test_the_universal_watermelon_lemonade_is_clean(universal):
+    # its kitchen's `blender (on, with [cup])` holds a cup (`cup (in [blender])`, a label of the universal task): the
+    # blender is a container there, and after the attach `blender_1 (with [cup])` held nothing
+    foon, _ = universal
+    dish = next(x for x in sorted(foon.nodes) if x.dish is not None and x.describe().startswith("watermelon lemonade"))
+    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=60)
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok, [d.describe() for d in replay(outcome.trace).disagreements]
+    assert any("blender lists blender cup, which the unit leaves attached to [blender]" in note
+               for note in outcome.compiled.notes)

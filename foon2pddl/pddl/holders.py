@@ -318,7 +318,9 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     contents without it (rule 2 binds it late); an output node placed `in [C]`/`on [C]` while C's output
     node describes its contents and does not list it (`salad (in [salad bowl])` and `carrot salad (in [salad
     bowl])` made, the bowl `contains {salad}`); and a label C's output node newly lists that no role of the
-    unit is, nor is read as (rule 0). No plan can satisfy both words, so the task reports them and its replay
+    unit is, nor is read as (rule 0), or that the unit leaves `attached to [C]` (the watermelon lemonade's
+    `blender (with [cup])` beside `blender cup (attached to [blender])`: a relation, not in or on, that no holder
+    fact holds). No plan can satisfy both words, so the task reports them and its replay
     does not check that pair. Names read through the unit's aliases; O(r^2) for r roles.
     """
     read = _reading(unit)
@@ -350,4 +352,8 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
             place = place_of(node)
             if label in new and place is not None and place[1] != r.label:
                 out.append((r.label, label, f"{r.label} lists {label}, which the unit puts {place[0]} [{place[1]}]"))
+            if label in new and place is None and any(s.label == "attached to" and s.related == r.label
+                                                      for s in node.states):
+                out.append((r.label, label, f"{r.label} lists {label}, which the unit leaves attached to "
+                            f"[{r.label}]: a relation the encoding does not hold"))
     return tuple(dict.fromkeys(out))
