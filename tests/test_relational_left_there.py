@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, n
-from relational_checks import clean_dish_plan
+from relational_checks import clean_dish_plan, clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.kitchen import Kitchen
@@ -102,3 +102,37 @@ def test_only_what_the_unit_making_the_hushed_node_made_beside_it_is_dust():
     flip = FunctionalUnit((n("bread", contains("olive oil")),), Motion("flip"), (n("bread", "toasted"),))
     dust = dustings(_plans((spray, drizzle, flip)).values())
     assert [x.label for x in dust] == ["olive oil"] and oil not in dust  # the spray's own oil only
+
+
+def _foil():
+    """0010 (lines 218-243): the foil placed on the empty tray, the bread put on the tray (its list then names only
+    the bread), the wrap that takes the foil sheet on the tray, as the place left it, and no node of the tray."""
+    sheet, tray = n("aluminium foil", "sheet"), n("baking tray", "empty")
+    on_tray = n("aluminium foil", "sheet", on("baking tray"))
+    with_foil = n("baking tray", make_state("with", "aluminium foil"))
+    bread = n("bread", contains("butter"), on("cutting board"))
+    placed = n("bread", contains("butter"), on("baking tray"))
+    units = (FunctionalUnit((sheet, tray), Motion("place"), (on_tray, with_foil)),
+             FunctionalUnit((with_foil, bread), Motion("pick-and-place"),
+                            (n("cutting board", "dirty"), n("baking tray", contains("bread")), placed)),
+             FunctionalUnit((placed, on_tray), Motion("wrap"),
+                            (n("aluminium foil", make_state("covering", "bread"), on("baking tray")),
+                             n("bread", contains("butter"), make_state("covered", "aluminium foil"),
+                               on("baking tray")))))
+    return tuple(FunctionalUnit(u.inputs, u.motion, u.outputs, (Source("r.txt", 10 * (1 + k)),))
+                 for k, u in enumerate(units))
+
+
+def test_a_list_drops_an_object_a_later_unit_takes_there_with_no_node_of_the_container():
+    # cheesy garlic bread (0010): read as part of the bread, the foil left the wrap needing a second sheet on a
+    # second tray; on the universal FOON the trays were used up and search timed out
+    units = _foil()
+    plans = _plans(units)
+    assert [f.label for f in plans[1].flows if f.into is None] == ["aluminium foil"]
+    kept, gaps = kept_in_place(Foon(units), range(3), plans)
+    assert not kept[1].flows
+    assert gaps[0][2] == ("baking tray leaves aluminium foil out of its list, which wrap at r.txt:30 takes on "
+                          "[baking tray]: read as still in it")
+    sheet, tray, bread = units[0].inputs[0], units[0].inputs[1], units[1].inputs[1]
+    outcome = clean_unit_plan(units, {sheet, tray, bread, n("cutting board", contains("bread"))}, units[2].outputs[1])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["place", "pick-and-place", "wrap"]

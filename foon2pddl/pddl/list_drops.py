@@ -12,14 +12,17 @@ following that role's output node forward through the task's units that take it 
 `pairing.unit_roles`, gives the node it becomes), each later in the same recipe file, a unit takes a node of
 label L placed in C (its place read through that unit's names) that a unit of the network makes; or when a unit
 of the task later in the same recipe file takes a node of label L placed in C that a unit making this unit's node
-of C makes too, with a node of C listing L (`_still_there`): FOON describes the object still there, in the node it
-had before. 0012's spray (0012-grilled-grilled_cheese_sandwich.txt:123) leaves `grill (on, contains {bread})`,
-without the spatula of cheese the pick-and-place put on it; the heat at :142, after it in the video, takes
-`grill spatula (contains {cheese}, on [grill])` and `grill (on, contains {grill spatula})`: the spatula stayed
-on the grill. What stays ambiguous: the container's nodes between the two units do not list L, so the pair (C,
-L) is one the replay does not check (`PlanningTask.gaps`), and the reading is reported once with the unit's
-file:line. O(d r) per dropped label for a path of d units of r roles (d at most `DEPTH`), and O(u n) for the
-later units of the recipe.
+of C makes too, with a node of C listing L or with no node of C (`_still_there`): FOON describes the object still
+there, in the node it had before. 0012's spray (0012-grilled-grilled_cheese_sandwich.txt:123) leaves `grill (on,
+contains {bread})`, without the spatula of cheese the pick-and-place put on it; the heat at :142, after it in the
+video, takes `grill spatula (contains {cheese}, on [grill])` and `grill (on, contains {grill spatula})`: the spatula
+stayed on the grill. 0010's pick-and-place (0010-cheesy_garlic_bread.txt:229) leaves `baking tray (contains {bread})`
+without the foil the place at :218 put on it, and the wrap at :243 takes `aluminium foil (sheet, on [baking tray])`,
+the place's node, with no node of the tray: the foil stayed on the tray, for the wrap (read as part of the bread,
+it left the wrap needing a second sheet on a second tray). What stays ambiguous: the container's nodes between the
+two units do not list L, so the pair (C, L) is one the replay does not check (`PlanningTask.gaps`), and the
+reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r roles (d at
+most `DEPTH`), and O(u n) for the later units of the recipe.
 """
 
 from __future__ import annotations
@@ -81,10 +84,11 @@ def _placed(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
 def _still_there(foon: Foon, units: frozenset[int], u: int, before: ObjectNode, label: str) -> FunctionalUnit | None:
     """The first unit of `units` later in unit `u`'s recipe file that takes a node of `label` placed in or on the
     container `before` is (unit `u`'s input), made by a unit that made `before` too, together with a node of that
-    container listing `label`: FOON describes the object still there, in the node it had before `u` (0012's heat
-    takes the spatula of cheese on the grill, which the pick-and-place made with the grill the spray takes, and the
-    grill listing it, after the spray's `grill (contains {bread})`). The shared maker, not the file, ties the two:
-    a universal FOON written as one file has all its recipes in it."""
+    container listing `label`, or with no node of that container (one not listing it says it left): FOON describes
+    the object still there, in the node it had before `u` (0012's heat takes the spatula of cheese on the grill,
+    which the pick-and-place made with the grill the spray takes, and the grill listing it, after the spray's `grill
+    (contains {bread})`; 0010's wrap takes the foil on the tray with no node of the tray). The shared maker, not the
+    file, ties the two: a universal FOON written as one file has all its recipes in it."""
     makers = set(foon.producers.get(before, ()))
     if not makers:  # a kitchen node: no unit made the object's earlier node beside it
         return None
@@ -93,9 +97,9 @@ def _still_there(foon: Foon, units: frozenset[int], u: int, before: ObjectNode, 
     for _, v in sorted(later, key=lambda p: p[0]):
         unit = foon.units[v]
         names = dict(unit_aliases(unit))
+        mine = [n for n in unit.inputs if n.label == before.label]
         if (any(makers.intersection(foon.producers.get(n, ())) for n in _placed(unit, label, before.label))
-                and any(n.label == before.label and label in {names.get(x, x) for x in listed(n)}
-                        for n in unit.inputs)):
+                and (not mine or any(label in {names.get(x, x) for x in listed(n)} for n in mine))):
             return unit
     return None
 
