@@ -223,3 +223,23 @@ def test_chocolate_chip_muffins_bake_the_pan_the_put_inside_left_in_the_oven():
                "only the put inside makes, as muffin pan (contains {muffin batter}, in [oven])" in x
                for x in outcome.compiled.notes)
     assert [s.unit.motion.label for s in outcome.trace.steps][-2:] == ["put inside", "bake"]
+
+
+def test_no_stitch_reads_an_input_the_unit_filling_its_container_took_itself():
+    # grilled cheese (0012, lines 34-65) on the universal FOON: the pour puts the kitchen's `mustard (ground, in
+    # [bowl])` into the bowl of cheddar, and the mix takes that node again with the bowl the pour leaves. The
+    # potato salad's pour (another recipe) makes `mustard (in [bowl])`, the only other mustard in a bowl; read as
+    # it, the plan through the stitches ran through the potato salad, and the task had 142 objects instead of 59.
+    # The pour put that very object there (it took the node): the relational reading moves it, no stitch.
+    ground = n("mustard", "ground", inside("bowl"))
+    other = FunctionalUnit((n("jar", contains("mustard")), n("mustard", inside("jar")), n("bowl", "empty")),
+                           Motion("pour"), (n("bowl", contains("mustard")), n("mustard", inside("bowl"))))
+    both = n("bowl", contains("cheddar", "mustard"))
+    pour = FunctionalUnit((n("bowl", contains("cheddar")), ground), Motion("pour"), (both,))
+    mix = FunctionalUnit((both, ground, n("cheddar", inside("bowl"))), Motion("mix"),
+                         (n("bowl", contains("cheese")), n("cheese", inside("bowl"))))
+    assert stitches(Foon((other, pour, mix)), range(3)) == ()
+    # the same mix after a pour that did not take that node: the other mustard in a bowl is the only candidate
+    blind = FunctionalUnit((n("bowl", contains("cheddar")), n("mustard", "ground")), Motion("pour"), (both,))
+    assert [(s.node, s.reads_as) for s in stitches(Foon((other, blind, mix)), range(3))] == [
+        (ground, n("mustard", inside("bowl")))]
