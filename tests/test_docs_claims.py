@@ -289,3 +289,15 @@ def test_skills_md_fallback_example_falls_back():
     assert "note: the relational encoding found no plan (unsolvable: translator: no relaxed solution); planning " \
            "with the instances encoding" in r.stderr
     assert "under the instances encoding" in r.stderr and "black bean times out" not in text
+
+
+def test_readme_quotes_what_a_missing_file_prints(tmp_path):
+    """README said a missing file prints `path: error: no such file`; a missing PATHS entry (a file or a
+    directory) prints `... no such file or directory`. Each message the program prints is the one quoted."""
+    readme = (ROOT / "README.md").read_text()
+    missing = tmp_path / "nope.txt"
+    for args in (("stats", missing), ("plan", "--goal", "guacamole", "--kitchen", missing)):
+        r = CliRunner().invoke(main, [str(a) for a in args])
+        assert r.exit_code == 2 and r.stderr.startswith(f"{missing}: error: "), r.stderr
+        message = r.stderr.strip().removeprefix(f"{missing}: ")
+        assert f"`path: {message}`" in readme, message

@@ -109,10 +109,11 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
+    (("stats", SUBGRAPHS), "counting nodes and labels at each level ..."),  # 2.4 s silent at load 12
     (("expand",), "writing FOON-EXP (181 units) and its statistics ..."),  # 4.4 s silent on the subgraphs (paper)
     (("generalize",), "writing FOON-GEN (95 units) and its statistics ..."),
 ], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
-        "check", "stats", "expand: its output", "generalize: its output"])
+        "check", "stats", "stats: its counts", "expand: its output", "generalize: its output"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     r = run(*args)
     assert r.exit_code in (0, 1), r.stderr
@@ -133,6 +134,9 @@ def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_pa
     assert r.exit_code == 0, r.stderr
     lines = r.stderr.splitlines()
     assert "building the networks (REG, GEN) before the first of 4 cells ..." in lines
+    drawing = "drawing the trials (kitchens and goals) and reading the cells already run ..."
+    assert drawing in lines and lines.index(drawing) < lines.index(  # README's experiment: 2.8 s silent first
+        "building the networks (REG, GEN) before the first of 4 cells ...")
     assert f"writing the report and plots ({tmp_path / 'report.md'}) ..." in lines
     assert lines.index("building the networks (REG, GEN) before the first of 4 cells ...") < next(
         k for k, line in enumerate(lines) if line.startswith("experiment: "))  # before the progress line

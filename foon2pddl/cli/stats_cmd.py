@@ -24,6 +24,9 @@ def stats(paths, as_json, skip_invalid, output) -> None:
     directory that are plainly not FOON (a rates file, text without FOON lines) are skipped
     with a warning.
     """
+    from .progress import slow_step
+
     net = read_network(paths, skip_invalid)
-    data = network_stats(net.foon, net.warnings)
+    with slow_step("counting nodes and labels at each level"):
+        data = network_stats(net.foon, net.warnings)
     emit(json.dumps(data, indent=2) + "\n" if as_json else format_stats(data), output)

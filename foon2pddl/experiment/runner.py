@@ -319,21 +319,22 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
 
 def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None],
                  t0: float, step: Step) -> RunSummary:
-    first = config.points[0]
-    trials = trials_at(config, first)
-    config.out_dir.mkdir(parents=True, exist_ok=True)
-    if config.results_path.exists() and not config.results_path.is_file():
-        raise FoonInputError(str(config.results_path), 0, "not a results file (a directory or a special file); "
-                                                          "remove it or use another -o directory")
-    if fresh:
-        config.results_path.unlink(missing_ok=True)
-        (config.out_dir / RUNS).unlink(missing_ok=True)
-    old_limit = check_protocol(config, trials)
-    warnings: list[str] = []
-    grid = cells(config)
-    done = reusable(read_records(config.results_path, warnings), cell_labels(config, grid), config.time_limit,
-                    old_limit)
-    batches = plan_batches(config, done, grid)
+    with step("drawing the trials (kitchens and goals) and reading the cells already run"):
+        first = config.points[0]
+        trials = trials_at(config, first)
+        config.out_dir.mkdir(parents=True, exist_ok=True)
+        if config.results_path.exists() and not config.results_path.is_file():
+            raise FoonInputError(str(config.results_path), 0, "not a results file (a directory or a special file); "
+                                                              "remove it or use another -o directory")
+        if fresh:
+            config.results_path.unlink(missing_ok=True)
+            (config.out_dir / RUNS).unlink(missing_ok=True)
+        old_limit = check_protocol(config, trials)
+        warnings: list[str] = []
+        grid = cells(config)
+        done = reusable(read_records(config.results_path, warnings), cell_labels(config, grid), config.time_limit,
+                        old_limit)
+        batches = plan_batches(config, done, grid)
     planned = sum(len(b.goals) for b in batches)
     written = [0, 0]  # cells written, of which lost
     if batches:
