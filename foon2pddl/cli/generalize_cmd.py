@@ -33,7 +33,8 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
 
     index = load_index(categories)
     net = read_network(paths)
-    c = compress(net.foon, index)
+    with slow_step(f"generalizing {len(net.foon.units):,} units to categories"):
+        c = compress(net.foon, index)
     header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
               f"{c.original_units} -> {len(c.foon.units)} units")
     with slow_step(f"writing FOON-GEN ({len(c.foon.units):,} units) and its statistics"):
