@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from node_words import n
 
 from foon2pddl.model.foon import FunctionalUnit, Motion
 from foon2pddl.model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
-from foon2pddl.planners.copies import at_once, copies
+from foon2pddl.planners.copies import at_once, busy, copies
 
 CLEAN, DIRTY = n("knife", "clean"), n("knife", "dirty")
 ONION, CUT = n("onion", "whole"), n("onion", "chopped")
@@ -36,3 +38,15 @@ def test_consumed_objects_other_kitchen_nodes_and_bindings_that_are_no_role_are_
     trace = _trace([[("onion_1", True), ("bowl_1", True)], [("onion_2", True), ("bowl_2", True)],
                     [("knife_1", True)], [("knife_2", False)]], consumed=frozenset({"onion_1", "onion_2"}))
     assert copies(trace) == {}
+
+
+def test_busy_holds_an_object_to_the_end_when_it_is_consumed_or_left_where_it_cannot_be_turned_back():
+    trace = _trace([[("knife_1", True)], [("knife_2", True)], [("knife_3", True)]])
+    assert busy(trace, lambda node, start: True) == {CLEAN: 1}  # one after another, each turned back
+    consumed = _trace([[("knife_1", True)], [("knife_2", True)]], consumed=frozenset({"knife_1"}))
+    assert busy(consumed, lambda node, start: True) == {CLEAN: 2}  # knife_1 is gone: knife_2 is a second one
+    assert busy(trace, lambda node, start: False) == {CLEAN: 1}  # no change: each stays clean, free again
+    dirtied = PhysicalTrace(trace.objects, trace.initial, tuple(
+        replace(s, changes=(ObjectState(s.bindings[0].object, DIRTY),)) for s in trace.steps))
+    assert busy(dirtied, lambda node, start: (node, start) == (DIRTY, CLEAN)) == {CLEAN: 1}  # washed in between
+    assert busy(dirtied, lambda node, start: False) == {CLEAN: 3}  # left dirty with no wash: three knives

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from click.testing import CliRunner
 
@@ -9,10 +11,17 @@ from foon2pddl.cli import main
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
-from foon2pddl.pddl.restore import RESTORE_SOURCE, ready_states, restore_motion, restoring_network, with_restore
-from foon2pddl.planners import solve
+from foon2pddl.pddl.restore import (
+    RESTORE_SOURCE,
+    ready_states,
+    restore_motion,
+    restoring_network,
+    with_restore,
+)
+from foon2pddl.planners import PlanResult, solve
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan, plan_restoring
+from foon2pddl.status import PlanStatus
 
 
 def n(label, *states):
@@ -88,6 +97,48 @@ def test_counts_too_low_for_the_encoding_fall_back_to_planning_without_restoring
     assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 3
     assert any("1 x knife (clean) gave no valid plan" in x and "planned without them" in x
                for x in outcome.decoded.notes)
+
+
+def test_counts_above_what_the_plan_has_in_use_at_once_are_planned_again_lower(monkeypatch):
+    # three clean knives (FOON's counts, say): the plan cuts with each once and washes none; each knife ends
+    # dirty, a node the wash turns back, so one knife is in use at a time and the plan is made again with one
+    augmented, _ = with_restore(_cuts(), KITCHEN, GOAL)
+    monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, Kitchen(KITCHEN.nodes, counts=((CLEAN, 3),))))
+    outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational", time_limit=30)
+    assert outcome.status == "solved" and replay(outcome.trace).ok
+    assert [o.label for o in outcome.trace.objects].count("knife") == 1
+    assert [s.unit.motion.label for s in outcome.trace.steps].count("wash") == 2
+    assert any("planned again with them and the most the plan had in use at once: 1 x knife (clean)" in x
+               for x in outcome.decoded.notes)
+
+
+def test_a_lower_count_with_no_plan_keeps_the_first_plan(monkeypatch):
+    # each knife ends smeared, a node no restoring unit turns back (the mix takes it): all three stay in use
+    smeared = [n("knife", "dirty", make_state("smeared", "", [f])) for f in FOODS]
+    units = [FunctionalUnit((n(f, "whole"), CLEAN), Motion("chop"), (n(f, "chopped"), knife))
+             for f, knife in zip(FOODS, smeared, strict=True)]
+    units.append(FunctionalUnit((*(n(f, "chopped") for f in FOODS), *smeared), Motion("mix"), (n("soup", "mixed"),)))
+    foon = Foon(tuple(units))
+    outcome = plan_restoring(foon, KITCHEN, GOAL, "relational", time_limit=30)
+    assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 3
+    assert not any("planned again" in x for x in outcome.decoded.notes)
+
+
+def test_a_plan_without_restoring_units_is_planned_again_with_them_at_the_most_it_had_in_use_at_once(monkeypatch):
+    real, calls = solve.plan, []
+
+    def first_fails(*args, **kwargs):  # the counts the restoring units allow give no plan (say)
+        calls.append(args)
+        out = real(*args, **kwargs)
+        return replace(out, result=PlanResult(PlanStatus.UNSOLVABLE, (), "fd", "")) if len(calls) == 1 else out
+
+    monkeypatch.setattr(solve, "plan", first_fails)
+    outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational", time_limit=30)
+    assert len(calls) == 3  # with them, without them (three knives, one after another), with them and one knife
+    assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 1
+    assert [s.unit.motion.label for s in outcome.trace.steps].count("wash") == 2
+    assert any("gave no valid plan (unsolvable): planned without them; planned again with them and the most the "
+               "plan had in use at once: 1 x knife (clean)" in x for x in outcome.decoded.notes)
 
 
 def test_plan_cli_restore_needs_a_physical_encoding_and_one_goal():

@@ -16,6 +16,9 @@ order (`restore_counts`); a unit that needs an object in a ready kitchen state t
 restores one of that label that sits in a node it can restore and that no later firing needs, else the
 kitchen needs one more. Each ready kitchen state gets that peak as its stated count (`2 x knife (clean)`;
 the kitchen's own stated counts, and the caller's instance overrides, win). O(firings x roles x nodes of the label).
+A plan at those counts may still use them one after another where the counts had two in use at once (the
+planner takes the second clean board rather than wash the first): `fewer` lowers each count this module stated
+to the most the plan had busy at once (`planners.copies.busy`), for `planners.solve.plan_restoring` to plan again.
 
 >>> from foon2pddl.model.foon import make_node, make_state
 >>> restore_motion(make_node("knife", [make_state("dirty")]))
@@ -37,8 +40,8 @@ from .instance_counts import InstanceCounts, derive_counts
 from .pairing import RoleKind, unit_roles
 from .prune import restoring_units
 
-__all__ = ["READY", "RESTORE_SOURCE", "discards", "is_restoring", "ready_states", "restore_counts", "restore_motion", "restoring_network",
-           "with_restore"]
+__all__ = ["READY", "RESTORE_SOURCE", "discards", "fewer", "is_restoring", "ready_states", "restore_counts", "restore_motion",
+           "restoring_network", "returns", "with_restore"]
 
 #: States a ready kitchen state may have (and nothing else).
 READY = frozenset({"clean", "empty", "off", "washed", "dry", "closed"})
@@ -89,6 +92,22 @@ def restoring_network(foon: Foon, kitchen: Iterable[ObjectNode],
     return Foon(foon.units + units), {label: ready[label] for label in sorted({n.label for n in targets})}
 
 
+def returns(foon: Foon) -> dict[ObjectNode, ObjectNode]:
+    """Node -> the ready state a restoring unit of `foon` turns it back into (`knife (dirty)` -> `knife (clean)`)."""
+    return {u.inputs[0]: u.outputs[0] for u in foon.units if is_restoring(u)}
+
+
+def fewer(counted: Kitchen, given: Kitchen, back: Mapping[ObjectNode, ObjectNode], have: Mapping[ObjectNode, int],
+          peak: Mapping[ObjectNode, int]) -> Kitchen | None:
+    """`counted` stating, for each ready state the restoring units `back` (`returns`) turn objects back into and
+    whose count `given` (the kitchen as given) does not state, `peak` objects (the most a plan had busy at once,
+    at least one) where the plan had more (`have`); None when no count is lower."""
+    own = dict(given.counts)
+    low = {n: max(1, peak.get(n, 0)) for n in sorted(set(back.values()))
+           if n not in own and max(1, peak.get(n, 0)) < have.get(n, 0)}
+    return replace(counted, counts=tuple(sorted({**dict(counted.counts), **low}.items()))) if low else None
+
+
 def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, ObjectNode]) -> dict[ObjectNode, int]:
     """Ready kitchen node -> objects the unfolded plan of `counts` needs in it when restoring units reuse them
     (module doc); only the nodes of `ready` the counts place objects in, and only when `counts` has the
@@ -97,8 +116,7 @@ def restore_counts(foon: Foon, counts: InstanceCounts, ready: Mapping[str, Objec
         return {}
     firings = dict(counts.firings)
     order = [u for u in counts.unfolded for _ in range(firings.get(u, 1))]
-    restorable = {u.inputs[0] for u in foon.units
-                  if is_restoring(u) and u.outputs[0] == ready.get(u.inputs[0].label)}
+    restorable = {n for n, r in returns(foon).items() if r == ready.get(n.label)}
     ahead: Counter[ObjectNode] = Counter(r.before for u in order for r in unit_roles(foon.units[u]) if r.before)
     at: Counter[ObjectNode] = Counter()
     need: Counter[ObjectNode] = Counter()

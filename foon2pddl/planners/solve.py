@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import copy
 import time
+from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -30,16 +31,20 @@ from ..pddl.constraints import GoalExcluded
 from ..pddl.prune import drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
-from ..pddl.restore import with_restore
+from ..pddl.restore import fewer, returns, with_restore
 from ..pddl.task import PlanningTask, candidate_alternatives
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
+from .copies import busy
 from .decode import Decoded, PlanDecodeError, check, finished, plan_tree, run_plan
 
 __all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan", "plan_restoring"]
 
 #: The planner named by the outcome of a goal that constraints exclude (nothing was planned).
 EXCLUDED = "constraints"
+
+#: The time limit (s) of `plan_restoring`'s second plan with fewer objects (or the caller's, when shorter).
+RETRY_SECONDS = 10.0
 
 #: Phases in the order they run (the CLI adds `load` first).
 PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
@@ -165,8 +170,11 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
                    **options) -> PlanOutcome:
     """`plan` with restoring units (`pddl.restore`): the network with its restoring units, at the counts they
     allow. When that gives no valid plan (the encoding needs two at once where the unfolded plan reuses one),
-    it plans as `plan` does, without them (with its own time limit: up to twice `time_limit` in all). A note
-    gives the counts and which plan was kept."""
+    it plans as `plan` does, without them (with its own time limit). A plan that had fewer of the objects in the
+    states the restoring units make busy at once than it was given (`planners.copies.busy`: it used them one after
+    another) is made again, with the restoring units and only those (`pddl.restore.fewer`), within
+    `RETRY_SECONDS`; it is kept when valid, else the first plan is. A note gives the counts and which plan was
+    kept."""
     augmented, counted = with_restore(foon, kitchen, goal, level)
     lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
     outcome = plan(augmented, counted, goal, encoding, level, **options)
@@ -174,8 +182,27 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
         f"objects in the states they restore: {lowered}" if lowered else "no count lowered")
     if outcome.status != PlanStatus.SOLVED:
         again = plan(foon, kitchen, goal, encoding, level, **options)
-        if again.status == PlanStatus.SOLVED:
-            outcome, note = again, note + f" gave no valid plan ({outcome.status}): planned without them"
+        if again.status != PlanStatus.SOLVED:
+            return _noted(outcome, note)
+        outcome, counted, note = again, kitchen, note + f" gave no valid plan ({outcome.status}): planned without them"
+    if outcome.trace is None:
+        return _noted(outcome, note)
+    back = returns(augmented)
+    low = fewer(counted, kitchen, back, Counter(o.node for o in outcome.trace.initial),
+                busy(outcome.trace, lambda node, start: back.get(node) == start))
+    if low is not None:  # the plan used them one after another: plan again with no more than it had busy at once
+        limit = min(options.get("time_limit") or RETRY_SECONDS, RETRY_SECONDS)
+        tighter = plan(augmented, low, goal, encoding, level, **{**options, "time_limit": limit})
+        said = ", ".join(f"{k} x {n.describe()}" for n, k in low.counts if (n, k) not in counted.counts)
+        if tighter.status == PlanStatus.SOLVED:
+            outcome, note = tighter, note + f"; planned again with them and the most the plan had in use at once: {said}"
+        else:
+            note += f"; planned again with them and the most the plan had in use at once, {said}: {tighter.status}, kept"
+    return _noted(outcome, note)
+
+
+def _noted(outcome: PlanOutcome, note: str) -> PlanOutcome:
+    """`outcome` with `note` after its decoded plan's notes (as it is when nothing was decoded)."""
     if outcome.decoded is None:
         return outcome
     return replace(outcome, decoded=replace(outcome.decoded, notes=(*outcome.decoded.notes, note)))
