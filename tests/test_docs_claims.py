@@ -301,3 +301,28 @@ def test_readme_quotes_what_a_missing_file_prints(tmp_path):
         assert r.exit_code == 2 and r.stderr.startswith(f"{missing}: error: "), r.stderr
         message = r.stderr.strip().removeprefix(f"{missing}: ")
         assert f"`path: {message}`" in readme, message
+
+
+def test_pddl_md_restore_figures_are_what_plan_gives():
+    """pddl.md said `--restore` on 0013 (potato soup) gives "31 plan steps instead of 26" with "one knife washed
+    twice": `plan` says 32 plan steps (31 units) instead of 27 (26 units), and the knife is washed three times."""
+    import json
+
+    m = re.search(r"On 0013 \(potato soup\)(?: at ([0-9a-f]{7,40}))?: (\d+) objects instead of (\d+), one knife "
+                  r"washed (\w+(?: times)?) instead of (\w+) knives, (\d+) plan steps \((\d+) units\) instead of (\d+) \((\d+) units\)",
+                  _prose("pddl.md"))
+    assert m, "pddl.md quotes --restore's figures on 0013 with the plan steps and units of each run"
+    words = {"once": 1, "twice": 2, "three times": 3, "thrice": 3, "four": 4, "two": 2, "three": 3, "five": 5}
+    got = []
+    for restore in ((), ("--restore",)):
+        r = CliRunner().invoke(main, ["plan", str(ROOT / "tests/data/foon-subgraphs/0013-creamy_potato_soup.txt"),
+                                      "--goal", "potato soup", "--encoding", "relational", *restore, "--format", "json"])
+        assert r.exit_code == 0, r.stderr
+        data = json.loads(r.stdout)
+        objects = data["relational"]["initial"]
+        got.append((len(objects), sum(o["label"] == "knife" for o in objects), len(data["plan"]),
+                    data["tree"]["units"], sum(s["motion"] == "wash" and "knife" in s["text"]
+                                                    for s in data["relational"]["steps"])))
+    (plain, restored) = got
+    said = (int(m[2]), int(m[3]), words[m[4]], words[m[5]], int(m[6]), int(m[7]), int(m[8]), int(m[9]))
+    assert said == (restored[0], plain[0], restored[4], plain[1], restored[2], restored[3], plain[2], plain[3])
