@@ -109,11 +109,13 @@ def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
     for u in units:
         for name, label in unit_aliases(u):
             seen.setdefault(name, set()).add(label)
+    ordered, matches = sorted(have), {}  # a name's labels by the head-noun rule, read once per name
     for node in starts:
         for name in (*listed(node), *(c for _, c in places(node))):
-            match = [lab for lab in sorted(have) if head_of(name, lab)]
-            if name not in have and len(match) == 1:
-                seen.setdefault(name, set()).add(match[0])
+            if name not in matches:
+                matches[name] = [lab for lab in ordered if head_of(name, lab)]
+            if name not in have and len(matches[name]) == 1:
+                seen.setdefault(name, set()).add(matches[name][0])
     return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)
 
 

@@ -81,20 +81,32 @@ def _placed(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
             and names.get(w[1], w[1]) == holder]
 
 
-def _still_there(foon: Foon, units: frozenset[int], u: int, before: ObjectNode, label: str) -> FunctionalUnit | None:
-    """The first unit of `units` later in unit `u`'s recipe file that takes a node of `label` placed in or on the
-    container `before` is (unit `u`'s input), made by a unit that made `before` too, together with a node of that
-    container listing `label`, or with no node of that container (one not listing it says it left): FOON describes
-    the object still there, in the node it had before `u` (0012's heat takes the spatula of cheese on the grill,
-    which the pick-and-place made with the grill the spray takes, and the grill listing it, after the spray's `grill
-    (contains {bread})`; 0010's wrap takes the foil on the tray with no node of the tray). The shared maker, not the
-    file, ties the two: a universal FOON written as one file has all its recipes in it."""
+def _in_recipes(foon: Foon, units: Iterable[int]) -> dict[str, list[tuple[tuple[str, int], int]]]:
+    """recipe file -> [(where, unit)] of `units` in that file, in recipe order (`_order`; ties as `units` gives
+    them): read once per task, not once per flow."""
+    out: dict[str, list[tuple[tuple[str, int], int]]] = {}
+    for at, v in sorted(((_order(foon, v), v) for v in units), key=lambda p: p[0]):
+        out.setdefault(at[0], []).append((at, v))
+    return out
+
+
+def _still_there(foon: Foon, recipes: dict[str, list[tuple[tuple[str, int], int]]], u: int, before: ObjectNode,
+                 label: str) -> FunctionalUnit | None:
+    """The first unit of the task (`recipes`, `_in_recipes`) later in unit `u`'s recipe file that takes a node of
+    `label` placed in or on the container `before` is (unit `u`'s input), made by a unit that made `before` too,
+    together with a node of that container listing `label`, or with no node of that container (one not listing it
+    says it left): FOON describes the object still there, in the node it had before `u` (0012's heat takes the
+    spatula of cheese on the grill, which the pick-and-place made with the grill the spray takes, and the grill
+    listing it, after the spray's `grill (contains {bread})`; 0010's wrap takes the foil on the tray with no node
+    of the tray). The shared maker, not the file, ties the two: a universal FOON written as one file has all its
+    recipes in it."""
     makers = set(foon.producers.get(before, ()))
     if not makers:  # a kitchen node: no unit made the object's earlier node beside it
         return None
     path, line = _order(foon, u)
-    later = [(at, v) for v in units if (at := _order(foon, v))[0] == path and at[1] > line]
-    for _, v in sorted(later, key=lambda p: p[0]):
+    for at, v in recipes.get(path, ()):
+        if at[1] <= line:
+            continue
         unit = foon.units[v]
         names = dict(unit_aliases(unit))
         mine = [n for n in unit.inputs if n.label == before.label]
@@ -109,6 +121,7 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
     """`plans` without the flows a later unit's input says did not happen (module doc), and the readings as
     (container label, content label, message, unit) gaps, in unit order."""
     task = frozenset(units)
+    recipes = _in_recipes(foon, task)  # `_still_there`'s later units
     out, gaps = dict(plans), []
     for u in sorted(task & plans.keys()):
         plan = plans[u]
@@ -117,7 +130,7 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
             role = plan.slots[f.holder].rel.role
             taker = _taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
             if taker is None and f.into is None and role.before is not None:
-                taker = _still_there(foon, task, u, role.before, f.label)
+                taker = _still_there(foon, recipes, u, role.before, f.label)
             if taker is None:
                 keep.append(f)
                 continue

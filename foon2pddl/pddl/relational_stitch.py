@@ -22,10 +22,11 @@ them in, is that object lying there, which P says by its own word (`_laid_words`
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Container, Iterable, Mapping, Sequence
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, State
+from ..model.memo import per_network
 from ..model.places import CONTENT_STATES, listed, place_of, place_state, places
 from .encoding import LevelInputs
 from .holder_words import task_aliases
@@ -52,7 +53,7 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     units x outputs)."""
     kitchen, task = frozenset(kitchen), Foon(tuple(units))
     makers = task if makers is None else makers
-    made = {o for u in makers for o in u.outputs}
+    made = makers.producers  # the nodes a unit makes (the network's index, built once per network object)
     full = sorted(k for k in kitchen if listed(k) and k not in made)
     labels = {n.label for u in units for n in (*u.inputs, *u.outputs)}
     alias = dict(task_aliases(units, labels, full))
@@ -62,6 +63,8 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
 
     out = {}
     for k in full:
+        if k not in task.consumers:  # no unit of the task takes K
+            continue
         items, takers = read(listed(k)), _takers(task, k)
         taken = {x for u in takers for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
@@ -98,7 +101,7 @@ def _laid_words(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUni
 
 
 def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
-               made: set[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
+               made: Container[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
     """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off or
     works on a container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains
     {watermelon juice}, covered {blender lid})`, whose output node no longer lists the lid): the one output P with
@@ -107,12 +110,15 @@ def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
     cuts it on): it keeps K, and so does every other unit making P (a universal FOON's smoothie puts it on a board
     in the same words), the others take P. O(kitchen x units x outputs)."""
     out = {}
-    for k in sorted(x for x in kitchen if not places(x) and x not in made):
+    for k in sorted(x for x in kitchen if x in task.consumers and not places(x) and x not in made):
         off = {u: {i.label for i in u.inputs if k.label in listed(i)
                    and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)}
                for u in _takers(task, k)}
+        held = frozenset().union(*off.values())  # a P must be in or on one of these
         found: dict[ObjectNode, FunctionalUnit] = {}
-        for p, u in _outputs_of(makers, k.label) if off else ():
+        for p, u in _outputs_of(makers, k.label) if held else ():
+            if not {c for _, c in places(p)} & held:
+                continue
             others = [h for t, h in off.items() if p not in t.outputs]  # every unit making P keeps K
             if (_rest(k) <= _rest(p) and others and all(others)
                     and {c for _, c in places(p)} & frozenset().union(*others)):
@@ -134,6 +140,16 @@ def _takers(foon: Foon, node: ObjectNode) -> list[FunctionalUnit]:
 
 
 Stitches = dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]
+#: Networks read by kitchen stitches kept per network object (`_read_networks`).
+READINGS_KEPT = 8
+
+
+@per_network
+def _read_networks(foon: Foon) -> dict[frozenset, Foon]:
+    """The networks `stitched` read from `foon`, by reading (its K -> P pairs): one object per reading, so what is
+    kept per network object (`input_stitch`'s stitches, the indexes) is computed once per reading, not once per
+    goal (an experiment's goals over one kitchen share a few readings)."""
+    return {}
 
 
 def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]],
@@ -156,8 +172,13 @@ def stitched(inp: LevelInputs, relevant: Callable[[LevelInputs], tuple[int, ...]
                                   u.sources)
 
         kept = {k for k, (_, maker) in new.items() if k in maker.inputs}
-        inp = replace(inp, foon=Foon(tuple(map(unit, inp.foon.units)), inp.foon.level),
-                      kitchen=inp.kitchen - (new.keys() - kept))
+        read = _read_networks(inp.foon)
+        key = frozenset((k, p) for k, (p, _) in new.items())
+        if key not in read:
+            while len(read) >= READINGS_KEPT:  # a long run's trials read other kitchens
+                read.pop(next(iter(read)))
+            read[key] = Foon(tuple(map(unit, inp.foon.units)), inp.foon.level)
+        inp = replace(inp, foon=read[key], kitchen=inp.kitchen - (new.keys() - kept))
         units = relevant(inp)
     return inp, stitches, units
 
