@@ -93,3 +93,17 @@ def test_an_object_a_kitchen_container_lists_starts_in_a_node_that_lists_nothing
     outcome = clean_unit_plan([add, whisk, mount], [n("bowl", "empty"), flour_bag, flour, n("mixer", "off"), running],
                               mounted)
     assert n("bowl", inside("mixer")) in {s.node for s in outcome.trace.initial}
+
+
+def test_an_object_a_unit_only_implies_in_the_goal_node_does_not_reach_the_goal():
+    # GEN, trial 1, goal 34 (0001-whipped_cream.txt:39 and :59): the pour gives no node of the cream it pours
+    # into the bowl, so its node there is implied (`creams (in [bowls])`, holders rule 3), and that is the node
+    # the mix makes, the goal: the plan poured and stopped [goal not produced]. The cream the pour leaves is in
+    # the bowl before the mix; only the mix's cream reaches the goal.
+    cup, cream = n("cup", contains("cream")), n("cream", inside("cup"))
+    pour = FunctionalUnit((n("bowl", "empty"), cup, cream), Motion("pour"), (n("bowl", contains("cream")),))
+    whipped = n("cream", inside("bowl"))
+    mix = FunctionalUnit((n("bowl", contains("cream")), n("whisk")), Motion("mix"),
+                         (n("bowl", contains("cream"), "whipped"), whipped))
+    outcome = clean_unit_plan([pour, mix], [n("bowl", "empty"), cup, cream, n("whisk")], whipped)
+    assert [s.split("_u")[0] for s in outcome.result.plan if "_u" in s] == ["pour", "mix"]

@@ -13,9 +13,9 @@ speakers (a unit with no objects names no place).
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.scene import SceneObject
 from .encoding import LevelInputs
 from .holders import gained
@@ -46,6 +46,25 @@ class Reading:
     filled: frozenset[tuple[str, str]]
 
 
+def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]) -> dict[int, UnitPlan]:
+    """`plans` with every node a unit only implies for an object (its `after` or `portion` node, not one of the
+    unit's outputs) that is a goal candidate a unit of the task makes (`makers`: candidate -> that unit) read as
+    the object before that unit: the candidate's states and `before <motion>`. The pour that gives no node of
+    the cream it pours into the bowl implies `cream (in [bowl])`, the node the mix makes (GEN's whipped cream):
+    only the mix's cream reaches the goal, the poured one is the cream the mix has not yet whipped."""
+    def apart(node: ObjectNode | None, unit: FunctionalUnit) -> ObjectNode | None:
+        if node is None or node not in makers or node in unit.outputs:
+            return node
+        return make_node(node.label, (*node.states, make_state(f"before {makers[node].motion.label}")),
+                         motion_flag=node.motion_flag)
+
+    out = {}
+    for u, p in plans.items():
+        slots = tuple(replace(s, after=apart(s.after, p.unit), portion=apart(s.portion, p.unit)) for s in p.slots)
+        out[u] = p if slots == p.slots else replace(p, slots=slots)
+    return out
+
+
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int]) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
@@ -60,6 +79,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
         plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
                                                              holding) for u in units})
+        plans = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
+                                       if c in inp.candidates})
         by_unit = {f.units[u]: p for u, p in plans.items()}
 
         def roles_of(unit):
