@@ -35,7 +35,8 @@
   or `egg (in [bowl])` while every bowl of the kitchen is `bowl (empty)`), and a
   kitchen container that lists an item holds one object of it.
 * **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in; two nodes of a unit
-  that list each other, read as one on the other (`mutual_lists`).
+  that list each other, read as one on the other (`mutual_lists`); a list's item no object of the unit is, taken
+  there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`).
 * **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
   name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
@@ -74,6 +75,7 @@ from .holder_words import mismatches, reported, task_aliases
 from .holders import Fate, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
+from .list_arrivals import read_arrivals
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
 from .pairing import Role
@@ -99,6 +101,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     inp = at_level(foon, kitchen, goal, level)
     given = inp.foon.units  # FOON's own: the plan's tree is made of them
     inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
+    inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
     inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if options.prune
                                  else tuple(range(len(given))))
     f = inp.foon
@@ -179,7 +182,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
-    found += [(x.taker, x.describe()) for x in sewn if x.unit in live]
+    found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [arrived[u] for u in units if u in arrived]
     notes, commented = reported(found)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(

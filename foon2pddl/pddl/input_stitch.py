@@ -22,6 +22,12 @@ A stitch reads the input as the made node, on FOON's evidence in the unit itself
   and stir makes `filling (contains {...})` and `cooking pan (contains {filling})`: the pour after it takes
   `filling (contains {...}, in [cooking pan])`). Anything else is ambiguous and not stitched.
 
+Without such a container, the input is read as the one made node of its label at its place that no unit takes,
+that says all the input says and more (`said_less`), and whose unit made another input of this unit: the
+uncover's `pot (contains {soup}, covered [pot lid], on [stove])` for the cover's `..., hot, ...` (0011), the cover
+having put on the `pot lid (on [pot])` the uncover takes: where a unit left the object, and nothing goes on from.
+The shared maker, not the recipe file, ties the two (a universal FOON written as one file has every recipe in it).
+
 An input naming no place and no contents (an appliance: the turn on's `oven (off (ready))`) is read as the one
 node of its label, made by another unit, that names no place and no contents and that no unit takes (the remove's
 `oven (off)`: where a unit left the object and nothing goes on from); two such are ambiguous. A state with a word
@@ -53,7 +59,7 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
 from .holder_words import unit_aliases
 
-__all__ = ["Stitch", "Stitched", "stitches", "with_stitches"]
+__all__ = ["Stitch", "Stitched", "said_less", "stitches", "with_stitches"]
 
 
 @dataclass(frozen=True)
@@ -168,6 +174,9 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
             pick = by_holder if by_holder or took else cands
             if holders and len(pick) == 1 and _words_only_added(n, pick[0]):
                 found.append(Stitch(u, n, pick[0], unit))
+            elif len(left := [m for m in cands if m not in foon.consumers and said_less(n, m) and any(
+                    set(made[m]) & set(made.get(x, ())) for x in unit.inputs if x != n)]) == 1:
+                found.append(Stitch(u, n, left[0], unit))  # where a unit left the object, and nothing goes on
     return tuple(found)
 
 
@@ -237,6 +246,12 @@ def _held_before(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode,
     found = [(o, v) for v in foon.consumers.get(node, ()) if v != u for o in foon.units[v].outputs
              if o.label == node.label and listed(o) == listed(node) | extra and _rest_same(o, node)]
     return found[:1] if len({m for m, _ in found}) == 1 else []
+
+
+def said_less(node: ObjectNode, made: ObjectNode) -> bool:
+    """Whether `node` says less than `made` and nothing else (places aside): the uncover's `pot (contains {soup},
+    covered [pot lid], on [stove])` for the cover's `pot (contains {soup}, covered [pot lid], hot, on [stove])`."""
+    return _said(node) < _said(made)
 
 
 def _rest_same(a: ObjectNode, b: ObjectNode) -> bool:

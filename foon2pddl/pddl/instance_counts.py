@@ -6,7 +6,10 @@ unfolding a delete-free plan backwards:
 1. A delete-free plan: back from the goal candidate made in the fewest rounds
    of the kitchen's fixpoint (`analysis.reachability`), each needed node's
    first achiever, in firing order (`relational`: a container's node and its
-   content's node one unit takes, from one earlier unit that makes both).
+   content's node one unit takes, from one earlier unit that makes both);
+   after a unit that moves an object out of a node a later unit takes, the
+   task's units that lead it back there (`count_returns.with_returns`: the pot
+   the cover and uncover bring back from `hot`).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -47,6 +50,7 @@ from dataclasses import dataclass
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.places import listed, places
+from .count_returns import with_returns
 from .pairing import Role, RoleKind, unit_roles
 
 #: A unit's object roles, for counting what passes through each node.
@@ -213,17 +217,20 @@ def start_places(foon: Foon, units: Iterable[int], kitchen: frozenset[ObjectNode
 def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNode],
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
-                  roles_of: RolesOf = unit_roles, together: bool = False) -> InstanceCounts:
+                  roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
     `extra`: instances added to every place (for measuring the cost of too many); `roles_of`: a unit's
-    object roles (default `pairing.unit_roles`, the `instances` encoding's); `together`: `delete_free_plan`'s.
+    object roles (default `pairing.unit_roles`, the `instances` encoding's); `together`: `delete_free_plan`'s;
+    `stitched`: the task reads inputs no unit makes as `input_stitch` does (`count_returns.with_returns`).
     """
     stated = stated or {}
     overrides = overrides or {}
     nodes, labels = start_places(foon, units, kitchen, candidates, roles_of)
     found = delete_free_plan(foon, kitchen, candidates, together)
+    if found is not None:
+        found = (with_returns(foon, found[0], units, kitchen, roles_of, stitched), found[1])
     if found is None:
         at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))

@@ -37,7 +37,7 @@ from .holder_words import unit_aliases
 from .pairing import unit_roles
 from .relational_plan import UnitPlan
 
-__all__ = ["DEPTH", "kept_in_place"]
+__all__ = ["DEPTH", "kept_in_place", "path_taker", "placed_at"]
 
 #: How many units the container's node is followed through.
 DEPTH = 12
@@ -49,11 +49,12 @@ def _order(foon: Foon, u: int) -> tuple[str, int]:
     return (src.path, src.line) if src is not None else ("", u)
 
 
-def _taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: str) -> FunctionalUnit | None:
+def path_taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: str,
+               made: bool = True) -> FunctionalUnit | None:
     """The first unit of `units` on the path of `start`'s object (unit `u`'s output) that takes a node of `label`
-    placed in or on it, when a unit of the network makes that node: breadth-first, `DEPTH` units, each later in
-    the same recipe file than the one before (a universal FOON shares nodes between recipes, and one recipe's
-    nodes may come round again: no path runs into another recipe or back)."""
+    placed in or on it, when a unit of the network makes that node (`made`; else when none does): breadth-first,
+    `DEPTH` units, each later in the same recipe file than the one before (a universal FOON shares nodes between
+    recipes, and one recipe's nodes may come round again: no path runs into another recipe or back)."""
     frontier, seen = [(start, _order(foon, u))], {start}
     for _ in range(DEPTH):
         nxt = []
@@ -63,7 +64,7 @@ def _taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: 
                 if v not in units or here[0] != path or here[1] <= line:
                     continue
                 unit = foon.units[v]
-                if any(n in foon.producers for n in _placed(unit, label, start.label)):
+                if any((n in foon.producers) == made for n in placed_at(unit, label, start.label)):
                     return unit
                 nxt += [(r.after, here) for r in unit_roles(unit) if r.before == node and r.after is not None
                         and r.after not in seen]
@@ -74,7 +75,7 @@ def _taker(foon: Foon, units: frozenset[int], u: int, start: ObjectNode, label: 
     return None
 
 
-def _placed(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
+def placed_at(unit: FunctionalUnit, label: str, holder: str) -> list[ObjectNode]:
     """The unit's inputs of `label` placed in or on `holder` (the place read through the unit's names)."""
     names = dict(unit_aliases(unit))
     return [n for n in unit.inputs if n.label == label and (w := place_of(n)) is not None
@@ -110,7 +111,7 @@ def _still_there(foon: Foon, recipes: dict[str, list[tuple[tuple[str, int], int]
         unit = foon.units[v]
         names = dict(unit_aliases(unit))
         mine = [n for n in unit.inputs if n.label == before.label]
-        if (any(makers.intersection(foon.producers.get(n, ())) for n in _placed(unit, label, before.label))
+        if (any(makers.intersection(foon.producers.get(n, ())) for n in placed_at(unit, label, before.label))
                 and (not mine or any(label in {names.get(x, x) for x in listed(n)} for n in mine))):
             return unit
     return None
@@ -128,13 +129,13 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
         keep = []
         for f in plan.flows:
             role = plan.slots[f.holder].rel.role
-            taker = _taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
+            taker = path_taker(foon, task, u, role.after, f.label) if f.into is None and role.after is not None else None
             if taker is None and f.into is None and role.before is not None:
                 taker = _still_there(foon, recipes, u, role.before, f.label)
             if taker is None:
                 keep.append(f)
                 continue
-            rel = next((place_of(n)[0].value for n in _placed(taker, f.label, role.label)), "in")
+            rel = next((place_of(n)[0].value for n in placed_at(taker, f.label, role.label)), "in")
             gaps.append((role.label, f.label, f"{role.label} leaves {f.label} out of its list, which {taker.motion.label} at "
                          f"{unit_where(taker, short_path)} takes {rel} [{role.label}]: read as still in it",
                          plan.unit))

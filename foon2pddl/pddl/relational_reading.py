@@ -88,7 +88,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
             return derive_counts(net, need, inp.kitchen, inp.candidates, stated=stated, overrides=overrides,
-                                 roles_of=roles_of, together=True)
+                                 roles_of=roles_of, together=True, stitched=True)
         counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if st.origin else count(inp.foon, st.own)
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))

@@ -1,0 +1,83 @@
+"""Ways back: the units that bring an object back to a node a later unit of a delete-free plan takes.
+
+`instance_counts.delete_free_plan` makes each needed node once. When a unit of the plan moves an object out of a
+node that a later unit of the plan takes (0011's first cook and stir leaves the pot of soup `hot`, while the
+second cook and stir takes `pot (contains {soup}, on [stove])`, the node the first took), the unfolding counts a
+second object for the later unit, and doubles everything that object's chain needs (a second pot, a second
+soup, a second blender jar with each of its ten ingredients: 2^12 groundings of the relational add). The task's
+units often lead the object back (the cover and the uncover): `with_returns` puts them into the plan after the
+unit, and the later unit takes the object that came back.
+
+Rule (`with_returns`): for each role of a plan's unit that changes an object out of a node N no kitchen holds
+and that a later unit of the plan takes, the fewest units of the task outside the plan (at most `RETURN_DEPTH`)
+that change the object from the role's output node back to N, one after the other, each taking otherwise only
+kitchen nodes and nodes the units before it on the way make (`_way_back`), are inserted after that unit, each
+unit once. With `stitched` (a task that reads inputs no unit makes as `input_stitch` does), a unit on the way
+may take the object in a node no unit makes that says less than the one it is in (`input_stitch.said_less`: the
+uncover's pot, no longer `hot`, is the cover's). The way is searched breadth-first over the spare units with a
+role of the object's label, each node reached once. Without such a way the plan stays (a second object it is).
+O(p^2 r) for a plan of p units of r roles, plus O(n s r) per way back for n nodes reached and s spare units.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from .input_stitch import said_less
+from .pairing import Role, unit_roles
+
+__all__ = ["RETURN_DEPTH", "with_returns"]
+
+#: How many units a way back to a node a later unit reads may have.
+RETURN_DEPTH = 4
+
+
+def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: dict[str, list[tuple[int, tuple[Role, ...]]]],
+              kitchen: frozenset[ObjectNode], stitched: bool) -> list[int]:
+    """The fewest units of `steps` (label -> the spare units with a role changing an object of that label, and
+    their roles; at most `RETURN_DEPTH`) that change an object from `start` back to `end`, one after the other,
+    each taking otherwise only kitchen nodes and nodes the units before it make; [] if none. Breadth-first, each
+    node reached once (a universal FOON has hundreds of spare units)."""
+    frontier: list[tuple[ObjectNode, list[int], frozenset[ObjectNode]]] = [(start, [], frozenset())]
+    seen = {start}
+    for _ in range(RETURN_DEPTH):
+        nxt = []
+        for node, path, made in frontier:
+            for v, roles in steps.get(node.label, ()):
+                step = next((r for r in roles if r.changes and r.before is not None and r.before.label == node.label
+                             and (r.before == node or (stitched and r.before not in foon.producers
+                                                       and said_less(r.before, node)))), None)
+                if v in path or step is None or any(r.before is not None and r is not step and r.before not in kitchen
+                                                    and r.before not in made for r in roles):
+                    continue
+                if step.after == end:
+                    return [*path, v]
+                if step.after is not None and step.after not in seen:
+                    seen.add(step.after)
+                    nxt.append((step.after, [*path, v], made | {r.after for r in roles if r.after is not None}))
+        frontier = nxt
+    return []
+
+
+def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen: frozenset[ObjectNode],
+                 roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles,
+                 stitched: bool = False) -> tuple[int, ...]:
+    """`plan` with the ways back of the task's `units` put in (module doc)."""
+    order, spare = list(plan), [u for u in units if u not in set(plan)]
+    steps: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
+    for v in spare:
+        roles = roles_of(foon.units[v])
+        for label in dict.fromkeys(r.before.label for r in roles if r.changes and r.before is not None):
+            steps.setdefault(label, []).append((v, roles))
+    for i, m in enumerate(plan):
+        for r in roles_of(foon.units[m]):
+            if r.before is None or not r.changes or r.before in kitchen:
+                continue
+            if not any(x.before == r.before for v in plan[i + 1:] for x in roles_of(foon.units[v])):
+                continue
+            if back := _way_back(foon, r.after, r.before, steps, kitchen, stitched):
+                at = order.index(m) + 1
+                order[at:at] = back
+                steps = {k: [x for x in xs if x[0] not in back] for k, xs in steps.items()}
+    return tuple(order)
