@@ -9,7 +9,8 @@ jar of the kitchen is empty), while the blend needs it in the jar the add filled
 those units, the add put the sugar in too.
 
 Rule (`arrivals`): a unit U whose output node of label C lists a name L that its input node of label C (the
-pairing's, `pairing.unit_roles`) does not, where no node of U is of label L (read through U's names); and a unit V
+pairing's, `pairing.unit_roles`) does not, where no node of U is of label L (read through U's names) and no input
+node of U lists L (the tuna poured from a bowl that lists it came from there); and a unit V
 on the path of U's node of C (`list_drops.path_taker`: the units that take that node on, each later in the same
 recipe file) that takes a node N of label L placed in or on C (read through V's names) that no unit of the
 network makes, with a node of label C that lists L. Then U also gives N as an output: an object the unit makes,
@@ -39,8 +40,9 @@ def _gained(unit: FunctionalUnit) -> list[tuple[ObjectNode, str]]:
     """(container's output node, name) per name a role's output node lists and its input node does not, that is
     no object of the unit (through its names)."""
     labels = {n.label for n in (*unit.inputs, *unit.outputs)}
+    given = {x for n in unit.inputs for x in listed(n)}  # poured from a container that lists it: no arrival
     new = [(r.after, x) for r in unit_roles(unit) if r.after is not None and r.before is not None
-           for x in sorted(listed(r.after) - listed(r.before)) if x not in labels]
+           for x in sorted(listed(r.after) - listed(r.before)) if x not in labels and x not in given]
     names = dict(unit_aliases(unit)) if new else {}  # only for a unit whose list gains a name
     return [(box, x) for box, x in new if names.get(x, x) not in labels]
 
