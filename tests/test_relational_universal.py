@@ -182,3 +182,19 @@ def test_the_universal_watermelon_lemonade_is_clean(universal):
     assert replay(outcome.trace).ok, [d.describe() for d in replay(outcome.trace).disagreements]
     assert any("blender lists blender cup, which the unit leaves attached to [blender]" in note
                for note in outcome.compiled.notes)
+
+
+def test_a_list_drop_is_noted_only_for_a_unit_the_task_keeps(universal):
+    # miso soup on the universal FOON: relevance pruning leaves hundreds of units, of which the task keeps those
+    # with objects for every role. The garlic bread's foil (0010:229) and the grilled cheese's grill (0012:123)
+    # were read as left in place for units the task does not keep, and noted (and left unchecked) in its task.
+    from foon2pddl.pddl.compile import compile_goal
+
+    foon, _ = universal
+    dish = next(x for x in sorted(foon.nodes) if x.dish is not None and x.describe().startswith("miso soup"))
+    compiled = compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational",
+                            foon.level)
+    acted = {int(a.name.rsplit("_u", 1)[1]) for a in compiled.task.actions if "_u" in a.name}  # `chop_u637`
+    kept = {f"{s.path}:{s.line}" for u in acted for s in compiled.task.units[u].sources}
+    drops = [x for x in compiled.notes if "out of its list" in x]
+    assert all(x.split(": ")[1] in kept for x in drops), drops

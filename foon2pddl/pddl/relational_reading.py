@@ -33,16 +33,16 @@ class Reading:
 
     `units`: the task's units with an object for every role; `silent`: the holders that say nothing of what they
     hold; `plans`: each unit's reading; `drops`: the flows read as not happening, as (container, content,
-    message, unit); `roles_of`: a unit's roles for counting; `counts`, `have`: the objects (label -> how many);
+    message, unit), of the units in `units` only (another unit's reading is no part of the task); `roles_of`: a unit's roles for counting; `counts`, `have`: the objects (label -> how many);
     `filled`: the (holder, content) label pairs the units fill."""
 
     units: tuple[int, ...]
     silent: frozenset[str]
-    plans: dict[int, UnitPlan]
-    drops: list[tuple[str, str, str, FunctionalUnit]]
+    plans: Mapping[int, UnitPlan]
+    drops: tuple[tuple[str, str, str, FunctionalUnit], ...]
     roles_of: RolesOf
     counts: InstanceCounts
-    have: dict[str, int]
+    have: Mapping[str, int]
     filled: frozenset[tuple[str, str]]
 
 
@@ -92,7 +92,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if st.origin else count(inp.foon, st.own)
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
-        return Reading(kept, silent, plans, drops, roles_of, counts, have, filled)
+        acting = {f.units[u] for u in kept}
+        return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled)
 
     first = read(units)
     if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in first.units]) != first.silent:
