@@ -6,7 +6,10 @@ from __future__ import annotations
 from node_words import contains, inside, n
 from relational_checks import clean_unit_plan
 
-from foon2pddl.model.foon import FunctionalUnit, Motion, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_goal
 
 # the french toast's pour (0037-make_quick_french_toast.txt:63) takes `bowl (contains {butter})`, which the
 # garlic bread's pick-and-place fills, and leaves it out of its outputs: the bowl is emptied of the butter
@@ -107,3 +110,8 @@ def test_an_object_a_unit_only_implies_in_the_goal_node_does_not_reach_the_goal(
                          (n("bowl", contains("cream"), "whipped"), whipped))
     outcome = clean_unit_plan([pour, mix], [n("bowl", "empty"), cup, cream, n("whisk")], whipped)
     assert [s.split("_u")[0] for s in outcome.result.plan if "_u" in s] == ["pour", "mix"]
+    # the reading names a node FOON does not have (`cream (in [bowl], before mix)`): the task says so, once
+    compiled = compile_goal(Foon((pour, mix)), Kitchen(frozenset({n("bowl", "empty"), cup, cream, n("whisk")})),
+                            Goal(GoalSpec("cream"), (whipped,)), "relational", 3)
+    assert [x for x in compiled.notes if "before mix" in x] == [
+        "label mismatch: ?: pour implies cream (in [bowl]), the goal's node mix at ? makes: read as the cream before mix"]

@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.scene import SceneObject
-from .encoding import LevelInputs
+from .encoding import LevelInputs, short_path, unit_where
 from .holders import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, derive_counts
@@ -34,7 +34,8 @@ class Reading:
     `units`: the task's units with an object for every role; `silent`: the holders that say nothing of what they
     hold; `plans`: each unit's reading; `drops`: the flows read as not happening, as (container, content,
     message, unit), of the units in `units` only (another unit's reading is no part of the task); `roles_of`: a unit's roles for counting; `counts`, `have`: the objects (label -> how many);
-    `filled`: the (holder, content) label pairs the units fill."""
+    `filled`: the (holder, content) label pairs the units fill; `renamed`: (unit, note) per kept unit whose
+    implied node is read as before the goal's maker (`_short_of_goal`)."""
 
     units: tuple[int, ...]
     silent: frozenset[str]
@@ -44,25 +45,34 @@ class Reading:
     counts: InstanceCounts
     have: Mapping[str, int]
     filled: frozenset[tuple[str, str]]
+    renamed: tuple[tuple[FunctionalUnit, str], ...] = ()
 
 
-def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]) -> dict[int, UnitPlan]:
+def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]
+                   ) -> tuple[dict[int, UnitPlan], dict[int, tuple[FunctionalUnit, str]]]:
     """`plans` with every node a unit only implies for an object (its `after` or `portion` node, not one of the
     unit's outputs) that is a goal candidate a unit of the task makes (`makers`: candidate -> that unit) read as
     the object before that unit: the candidate's states and `before <motion>`. The pour that gives no node of
     the cream it pours into the bowl implies `cream (in [bowl])`, the node the mix makes (GEN's whipped cream):
-    only the mix's cream reaches the goal, the poured one is the cream the mix has not yet whipped."""
-    def apart(node: ObjectNode | None, unit: FunctionalUnit) -> ObjectNode | None:
+    only the mix's cream reaches the goal, the poured one is the cream the mix has not yet whipped. Also unit
+    index -> (unit, note) per unit so read."""
+    said: dict[int, tuple[FunctionalUnit, str]] = {}
+
+    def apart(u: int, node: ObjectNode | None, unit: FunctionalUnit) -> ObjectNode | None:
         if node is None or node not in makers or node in unit.outputs:
             return node
-        return make_node(node.label, (*node.states, make_state(f"before {makers[node].motion.label}")),
+        maker = makers[node]
+        said[u] = (unit, f"{unit.motion.label} implies {node.describe()}, the goal's node {maker.motion.label} at "
+                         f"{unit_where(maker, short_path)} makes: read as the {node.label} before {maker.motion.label}")
+        return make_node(node.label, (*node.states, make_state(f"before {maker.motion.label}")),
                          motion_flag=node.motion_flag)
 
     out = {}
     for u, p in plans.items():
-        slots = tuple(replace(s, after=apart(s.after, p.unit), portion=apart(s.portion, p.unit)) for s in p.slots)
+        slots = tuple(replace(s, after=apart(u, s.after, p.unit), portion=apart(u, s.portion, p.unit))
+                      for s in p.slots)
         out[u] = p if slots == p.slots else replace(p, slots=slots)
-    return out
+    return out, said
 
 
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
@@ -79,8 +89,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
         plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
                                                              holding) for u in units})
-        plans = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
-                                       if c in inp.candidates})
+        plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
+                                             if c in inp.candidates})
         by_unit = {f.units[u]: p for u, p in plans.items()}
 
         def roles_of(unit):
@@ -93,7 +103,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}
-        return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled)
+        return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled,
+                       tuple(said[u] for u in kept if u in said))
 
     first = read(units)
     if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in first.units]) != first.silent:
