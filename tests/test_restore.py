@@ -84,13 +84,19 @@ def test_restoring_units_are_built_at_the_networks_own_level():
         with_restore(_cuts(), KITCHEN, GOAL, level=2)
 
 
-def test_counts_too_low_for_the_encoding_fall_back_to_planning_without_restoring(monkeypatch):
-    # the three knives are needed at once (the mix takes them dirty): one knife cannot do, the derived three can
+def _smeared_cuts() -> Foon:
+    """Each food chopped with a clean knife left smeared with it, then all mixed with the three smeared knives
+    (a node no restoring unit turns back: the mix takes it)."""
     smeared = [n("knife", "dirty", make_state("smeared", "", [f])) for f in FOODS]
     units = [FunctionalUnit((n(f, "whole"), CLEAN), Motion("chop"), (n(f, "chopped"), knife))
              for f, knife in zip(FOODS, smeared, strict=True)]
     units.append(FunctionalUnit((*(n(f, "chopped") for f in FOODS), *smeared), Motion("mix"), (n("soup", "mixed"),)))
-    foon = Foon(tuple(units))
+    return Foon(tuple(units))
+
+
+def test_counts_too_low_for_the_encoding_fall_back_to_planning_without_restoring(monkeypatch):
+    # the three knives are needed at once (the mix takes them dirty): one knife cannot do, the derived three can
+    foon = _smeared_cuts()
     augmented, _ = with_restore(foon, KITCHEN, GOAL)
     monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, Kitchen(KITCHEN.nodes, counts=((CLEAN, 1),))))
     outcome = plan_restoring(foon, KITCHEN, GOAL, "instances", time_limit=30)
@@ -114,11 +120,7 @@ def test_counts_above_what_the_plan_has_in_use_at_once_are_planned_again_lower(m
 
 def test_a_lower_count_with_no_plan_keeps_the_first_plan(monkeypatch):
     # each knife ends smeared, a node no restoring unit turns back (the mix takes it): all three stay in use
-    smeared = [n("knife", "dirty", make_state("smeared", "", [f])) for f in FOODS]
-    units = [FunctionalUnit((n(f, "whole"), CLEAN), Motion("chop"), (n(f, "chopped"), knife))
-             for f, knife in zip(FOODS, smeared, strict=True)]
-    units.append(FunctionalUnit((*(n(f, "chopped") for f in FOODS), *smeared), Motion("mix"), (n("soup", "mixed"),)))
-    foon = Foon(tuple(units))
+    foon = _smeared_cuts()
     outcome = plan_restoring(foon, KITCHEN, GOAL, "relational", time_limit=30)
     assert outcome.status == "solved" and [o.label for o in outcome.trace.objects].count("knife") == 3
     assert not any("planned again" in x for x in outcome.decoded.notes)
