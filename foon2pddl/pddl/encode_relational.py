@@ -72,7 +72,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported, task_aliases
-from .holders import Fate, list_gaps, unit_aliases
+from .holders import Fate, attached_gaps, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .list_arrivals import read_arrivals
@@ -93,6 +93,8 @@ from .untouched import set_aside
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 
 IN, ON = "in", "on"
+#: The note kind of a relation FOON states that the encoding does not hold (`holders.attached_gaps`).
+UNHELD = "relation not modelled"
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
@@ -179,12 +181,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         predicates.append(Predicate(PRECEDES, hold, "static order of the objects of a label"))
     if early:
         predicates.append(Predicate(GOAL_OBJECT, (("?x", ROOT_TYPE),), "?x may reach the goal: no kitchen object"))
-    found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))]
+    unheld = [(f.units[u], g) for u in units for _, _, g in attached_gaps(f.units[u])]  # FOON's labels agree there
+    found = [(f.units[u], m) for u in units for m in (*mismatches(f.units[u]), *(g for _, _, g in list_gaps(f.units[u])))
+             if (f.units[u], m) not in unheld]
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [arrived[u] for u in units if u in arrived]
     found += rd.renamed
     notes, commented = reported(found)
+    unheld_notes, unheld_commented = reported(unheld)
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
@@ -193,11 +198,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=given, labels=table.labels,
         comments=header("relational", inp, options, len(units) - len(live)) + count_lines(counts) + why
-        + tuple(f"label mismatch: {m}" for m in commented),
+        + tuple(f"label mismatch: {m}" for m in commented) + tuple(f"{UNHELD}: {m}" for m in unheld_commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)))
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
-    return Compiled(task, every_step=True, notes=tuple(f"label mismatch: {m}" for m in notes) + why, placed=moved)
+    return Compiled(task, every_step=True, placed=moved, notes=tuple(f"label mismatch: {m}" for m in notes)
+                    + tuple(f"{UNHELD}: {m}" for m in unheld_notes) + why)
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
