@@ -28,6 +28,7 @@ from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
+from ..pddl.holder_reach import drop_unreachable
 from ..pddl.prune import drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
@@ -42,6 +43,9 @@ __all__ = ["PHASES", "GoalReplanner", "PlanOutcome", "plan", "plan_restoring"]
 
 #: The planner named by the outcome of a goal that constraints exclude (nothing was planned).
 EXCLUDED = "constraints"
+
+#: The planner named by the outcome of a goal no reachable state of the objects applies (`pddl.holder_reach`).
+UNREACHED = "holder reachability"
 
 #: The time limit (s) of `plan_restoring`'s second plan with fewer objects (or the caller's, when shorter).
 RETRY_SECONDS = 10.0
@@ -138,8 +142,10 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     (planner `constraints`, an empty task of the encoding); a planner's failure is a
     status, never an exception. `instances`, `categories`: for the
     `instances` encoding (see `pddl.encoding.EncodeOptions`). The planner gets the task without the
-    actions no binding grounds (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground);
-    the outcome keeps the task as compiled.
+    actions no binding grounds (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground)
+    and without those no reachable state applies (`pddl.holder_reach`: a holder and its content in states no
+    plan has together); when that leaves the goal out of reach, no planner runs and the outcome is `unsolvable`
+    (planner `holder reachability`, the message naming the units). The outcome keeps the task as compiled.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -159,6 +165,10 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     timings["encode"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     planned = drop_unbindable(compiled.task)  # what the planner would ground to nothing (the lanes' work)
+    planned, unreached = drop_unreachable(planned)  # what no reachable state applies (holder and content states)
+    if unreached is not None:
+        timings["write"] = time.perf_counter() - t0
+        return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), compiled, timings=timings)
     domain_text, problem_text = render(planned)
     timings["write"] = time.perf_counter() - t0
     result = run_planner(planned, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,

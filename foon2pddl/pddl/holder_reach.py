@@ -1,0 +1,223 @@
+"""Actions no reachable state applies: states and (holder state, content state) pairs, over-approximated.
+
+A relational task (`encode_relational`) can be unsolvable in a way relaxed reachability does not see: the
+apple turnover's pour takes `cooking pan (contains {butter})` with `butter (in [pan], melted)` in that very pan,
+and the only unit that melts butter in a pan leaves the pan `greased {butter}`; each node alone is reachable,
+the two together in one pan are not. Fast Downward then searches every arrangement of the task's bowls and
+butters until its time limit (experiment REG trial 1 goal 12). `drop_unreachable` computes, by a fixpoint
+over the actions, every state an object may reach (`(is ?x s)`), every pair of states a holder and what it
+holds may have together (`(in ?h ?x)`, `(on ?h ?x)`) and every other fluent atom, and drops the actions
+whose preconditions need a state or a pair outside them.
+
+Over-approximation (never drops an action some plan applies): an action counts as applicable when each
+precondition alone is in the sets; an object whose state the action does not say may be in any state
+(`ANY`); a pair whose holder or content changes state may end with either of them changed or not, except
+that an object the action takes out of a named holder (`(in ?h ?x)` in its precondition) is in no other
+holder (each object is in or on at most one), so only that pair carries its new state; conditional effects
+count as firing. Atoms of other predicates whose arguments are not all named count as reachable.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from .encoding import unit_where
+from .task import Action, Atom, PlanningTask
+
+#: A state nothing says: the object may be in any state.
+ANY = "*"
+#: Predicates that place one object in or on another.
+HOLDS = ("in", "on")
+#: Units named when the goal is out of reach.
+SHOWN = 3
+
+
+def _fits(have: str, need: str) -> bool:
+    return have == need or have == ANY or need == ANY
+
+
+class _Reach:
+    """The sets the fixpoint grows: states, (relation, holder state, content state) pairs, other atoms."""
+
+    def __init__(self, task: PlanningTask) -> None:
+        self.states: set[str] = set()
+        self.pairs: set[tuple[str, str, str]] = set()
+        self.atoms: set[Atom] = set()
+        self.any_of: set[str] = set()  # predicates added with unnamed arguments: every atom counts as reachable
+        self.by_holder: dict[str, set[tuple[str, str, str]]] = {}
+        self.by_content: dict[str, set[tuple[str, str, str]]] = {}
+        state = {}
+        for a in task.initial_facts:
+            if a.predicate == "is":
+                state[a.args[0]] = a.args[1]
+                self.states.add(a.args[1])
+        for a in task.initial_facts:
+            if a.predicate in HOLDS:
+                self.add_pairs(a.predicate, (state.get(a.args[0], ANY),), (state.get(a.args[1], ANY),))
+            elif a.predicate != "is":
+                self.atoms.add(a)
+
+    def add_pairs(self, rel: str, holders, contents) -> None:
+        for h in holders:
+            for x in contents:
+                pair = (rel, h, x)
+                if pair not in self.pairs:
+                    self.pairs.add(pair)
+                    self.by_holder.setdefault(h, set()).add(pair)
+                    self.by_content.setdefault(x, set()).add(pair)
+
+    def has_pair(self, rel: str, holder: str, content: str) -> bool:
+        if holder == ANY or content == ANY:
+            return any(r == rel and _fits(h, holder) and _fits(c, content) for r, h, c in self.pairs)
+        return any((rel, h, c) in self.pairs for h in (holder, ANY) for c in (content, ANY))
+
+    def applicable(self, action: Action) -> bool:
+        return not _missing(self, action.pre)
+
+    def fire(self, action: Action) -> bool:
+        """Add what `action` may make; whether anything was new."""
+        size = (len(self.states), len(self.pairs), len(self.atoms), len(self.any_of))
+        before = _states_in(action.pre)
+        after: dict[str, set[str]] = {}  # term -> its possible states after the action
+        for term, s in _states_in(action.add).items():
+            after.setdefault(term, set()).add(s)
+        for c in action.conditional:
+            for term, s in _states_in(c.add).items():
+                after.setdefault(term, set()).add(s)
+            for term, s in _states_in(c.when).items():
+                before.setdefault(term, s)
+        unconditional = _states_in(action.add)
+        for term in after:
+            if term not in unconditional:  # a conditional change: it may also stay as it was
+                after[term].add(before.get(term, ANY))
+        self.states.update(s for ss in after.values() for s in ss if s != ANY)
+
+        def post(term: str) -> set[str]:
+            return after.get(term) or {before.get(term, ANY)}
+
+        added = [*action.add, *(x for c in action.conditional for x in c.add)]
+        for a in added:
+            if a.predicate in HOLDS:
+                self.add_pairs(a.predicate, post(a.args[0]), post(a.args[1]))
+            elif a.predicate != "is":
+                if any(x.startswith("?") for x in a.args):
+                    self.any_of.add(a.predicate)
+                else:
+                    self.atoms.add(a)
+        pinned = {p.args[1] for p in action.pre if p.predicate in HOLDS}
+        for p in action.pre:  # a content taken from a named holder is in no other: that pair alone carries it
+            if p.predicate in HOLDS and p.args[1] in after:
+                self.add_pairs(p.predicate, post(p.args[0]), post(p.args[1]))
+        changed = [(before.get(t, ANY), ss) for t, ss in after.items()]
+        loose = [(before.get(t, ANY), ss) for t, ss in after.items() if t not in pinned]
+        touched = set()
+        for pre, _ in changed:
+            touched.update(self.pairs if pre == ANY else (*self.by_holder.get(pre, ()), *self.by_holder.get(ANY, ())))
+        for pre, _ in loose:
+            touched.update(self.pairs if pre == ANY else (*self.by_content.get(pre, ()), *self.by_content.get(ANY, ())))
+        for rel, h, x in touched:
+            holders = {h}.union(*(ss for pre, ss in changed if _fits(pre, h)))
+            contents = {x}.union(*(ss for pre, ss in loose if _fits(pre, x)))
+            self.add_pairs(rel, holders, contents)
+        return size != (len(self.states), len(self.pairs), len(self.atoms), len(self.any_of))
+
+
+def _missing(reach: _Reach, pre: tuple[Atom, ...]) -> list[Atom]:
+    """The preconditions in `pre` that `reach` has not reached (a state, a holder pair, another atom)."""
+    before = _states_in(pre)
+    out = []
+    for p in pre:
+        if p.predicate == "is":
+            if p.args[1] not in reach.states and not p.args[1].startswith("?"):
+                out.append(p)
+        elif p.predicate in HOLDS:
+            if not reach.has_pair(p.predicate, before.get(p.args[0], ANY), before.get(p.args[1], ANY)):
+                out.append(p)
+        elif p.predicate not in reach.any_of and not any(x.startswith("?") for x in p.args) and p not in reach.atoms:
+            out.append(p)
+    return out
+
+
+def _causes(reach: _Reach, gone: tuple[Action, ...], goal: tuple[Atom, ...]) -> list[tuple[Action, Atom]]:
+    """The dropped actions whose holder pair is out of reach, on the way back from the goal (breadth first):
+    from an unreached state or atom to the dropped actions that would make it."""
+    def key(atom: Atom):
+        return ("is", atom.args[1]) if atom.predicate == "is" else (atom.predicate, atom.args)
+
+    makers: dict[tuple, list[Action]] = {}
+    for a in gone:
+        for x in (*a.add, *(y for c in a.conditional for y in c.add)):
+            makers.setdefault(key(x), []).append(a)
+    todo, seen, out = list(_missing(reach, goal)), set(), []
+    while todo:
+        atom = todo.pop(0)
+        for a in makers.get(key(atom), ()) if atom.predicate not in HOLDS else ():
+            if a.name in seen:
+                continue
+            seen.add(a.name)
+            miss = _missing(reach, a.pre)
+            before = _states_in(a.pre)  # a pair whose states are each reached: the cause (else follow the state)
+            out.extend((a, m) for m in miss if m.predicate in HOLDS
+                       and all(before.get(x, ANY) in reach.states for x in m.args))
+            todo.extend(m for m in miss if m.predicate not in HOLDS)
+    return out
+
+
+def _states_in(atoms) -> dict[str, str]:
+    """Term -> the state its `(is term s)` atom gives (the last one)."""
+    return {a.args[0]: a.args[1] for a in atoms if a.predicate == "is"}
+
+
+def _fixpoint(task: PlanningTask) -> tuple[_Reach, tuple[Action, ...]]:
+    """The sets grown from `task`'s init, and the actions they never apply."""
+    reach = _Reach(task)
+    live: list[Action] = []
+    waiting = list(task.actions)
+    grew = True
+    while grew:
+        grew = False
+        still = []
+        for a in waiting:
+            if reach.applicable(a):
+                live.append(a)
+                grew = True
+            else:
+                still.append(a)
+        waiting = still
+        for a in live:
+            grew = reach.fire(a) or grew
+    return reach, tuple(waiting)
+
+
+def unreachable(task: PlanningTask) -> tuple[Action, ...]:
+    """The actions of `task` that no state reachable from its init applies (module doc); () for a task
+    of another encoding (only `relational` keeps one state and one holder per object). O(rounds x actions x
+    pairs touched)."""
+    if task.encoding != "relational":
+        return ()
+    return _fixpoint(task)[1]
+
+
+def drop_unreachable(task: PlanningTask) -> tuple[PlanningTask, str | None]:
+    """`task` without the actions `unreachable` finds (the same plans; `task` itself when there are none),
+    and, when the goal is then out of reach, why: the units whose holder and content no plan has together
+    (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached.
+    A task of another encoding is returned as it is."""
+    if task.encoding != "relational":
+        return task, None
+    reach, gone = _fixpoint(task)
+    kept = replace(task, actions=tuple(a for a in task.actions if a not in set(gone))) if gone else task
+    if not _missing(reach, task.goal):
+        return kept, None
+    nodes = dict(task.nodes)
+    said = []
+    for a, miss in _causes(reach, gone, task.goal):
+        before = _states_in(a.pre)
+        if a.unit is not None and all(before.get(x, ANY) in nodes for x in miss.args):
+            unit = task.units[a.unit]
+            holder, content = (nodes[before[x]].describe() for x in miss.args)
+            said.append(f"{unit.motion.label} at {unit_where(unit)} needs {holder} holding {content}"
+                        if miss.predicate == "in" else
+                        f"{unit.motion.label} at {unit_where(unit)} needs {content} on {holder}")
+    shown = "; ".join(said[:SHOWN]) + (f" (+{len(said) - SHOWN} more)" if len(said) > SHOWN else "")
+    return kept, "no reachable state applies what the goal needs" + (f": {shown}" if shown else "")
