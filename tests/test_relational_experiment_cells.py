@@ -115,3 +115,22 @@ def test_an_object_a_unit_only_implies_in_the_goal_node_does_not_reach_the_goal(
                             Goal(GoalSpec("cream"), (whipped,)), "relational", 3)
     assert [x for x in compiled.notes if "before mix" in x] == [
         "label mismatch: ?: pour implies cream (in [bowl]), the goal's node mix at ? makes: read as the cream before mix"]
+
+
+def test_an_object_a_kitchen_container_lists_never_starts_in_a_node_only_a_unit_makes():
+    # GEN, trial 2, goal 97: the kitchen's `measuring cups (contains {water and ice})` holds one water, and the only
+    # node of water in a measuring cup is the fill's `water and ice (from [kitchen fixtures], in [measuring cups])`:
+    # the water added there was poured without the fill, and FOON's tree did not validate [input not available].
+    # It starts in `water (in [cup])`, which the kitchen's cup says; the pour takes the water the fill makes.
+    fill = FunctionalUnit((n("cup", "empty"), n("faucet", "on")), Motion("fill"),
+                          (n("cup", contains("water")), n("water", make_state("from", "faucet"), inside("cup"))))
+    turn_on = FunctionalUnit((n("faucet", "off"),), Motion("turn on"), (n("faucet", "on"),))
+    dough = n("bowl", contains("flour", "water"))
+    pour = FunctionalUnit((n("cup", contains("water")), n("water", make_state("from", "faucet"), inside("cup")),
+                           n("bowl", contains("flour")), n("flour", inside("bowl"))), Motion("pour"),
+                          (dough, n("water", inside("bowl"))))
+    outcome = clean_unit_plan([turn_on, fill, pour], [n("cup", contains("water")), n("cup", "empty"),
+                                                      n("faucet", "off"), n("bowl", contains("flour")),
+                                                      n("flour", inside("bowl"))], dough)
+    assert n("water", inside("cup")) in {s.node for s in outcome.trace.initial}
+    assert [u.motion.label for u in outcome.tree.units] == ["turn on", "fill", "pour"]

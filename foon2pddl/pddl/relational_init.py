@@ -90,8 +90,9 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     node in another place (`skillet (empty, on [stove])` for the kitchen's `skillet (empty)`, `milk (in
     [bowl])` for its `milk (in [carton])`: the kitchen's `stove (off, with [skillet])` and `bowl (contains
     {milk})` say they are there: `kitchen_placed`), one a unit takes with the container's own node first
-    (`paired`), never one that lists contents of its own (no object would stand for them); else `water (in
-    [pot])`. In container-name order; O(n^2)."""
+    (`paired`), never one that lists contents of its own (no object would stand for them), nor one the kitchen
+    does not say (`kitchen_implied`: only a unit makes it, and FOON's tree would not find it there); else `water
+    (in [pot])`. In container-name order; O(n^2)."""
     out = []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
@@ -114,7 +115,8 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
                 continue
             found = [n for n in fits.get((item, h.label), ()) if not listed(n)]  # lists nothing of its own
             moved = kitchen_placed(found, starts)
-            known = sorted(found, key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired, n))
+            said = kitchen_implied(found, starts) | (starts & set(found))  # what FOON's tree may take from the kitchen
+            known = sorted((n for n in found if n in said), key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
     return tuple(out)
 
