@@ -2,7 +2,8 @@
 
 * **Objects and states** as in `encode_instances`: one PDDL object per physical
   object, `(is ?x ?s)` for its FOON node (`not-yet-made` before it exists,
-  `consumed` after it became part of a mixture), `(occupied s)` for stable nodes,
+  `consumed` after it became part of a mixture), `(occupied s)` for stable nodes
+  (and, kept by a tally, for a role that only checks a node others leave: `tallies`),
   `(precedes ?a ?b)` to bind two roles of one state to two objects. Counts are
   derived as for `instances`, from the roles this encoding gives each unit
   (`relational_plan.count_roles`: a portion poured off is a new object).
@@ -87,6 +88,7 @@ from .relational_reading import read_units
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
+from .tallies import tallied
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 from .untouched import set_aside
 
@@ -202,6 +204,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)))
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
+    task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     return Compiled(task, every_step=True, placed=moved, notes=tuple(f"label mismatch: {m}" for m in notes)
                     + tuple(f"{UNHELD}: {m}" for m in unheld_notes) + why)
 

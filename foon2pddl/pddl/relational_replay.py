@@ -31,6 +31,7 @@ from .holders import relational_roles, unit_aliases
 from .instance_replay import source_of
 from .registry import PlanDecodeError
 from .relational_sweep import CONSUMED
+from .tallies import COUNT_TYPE
 from .task import Atom, PlanningTask, apply_action, type_closure
 from .trace_view import TraceView, changed, show_node
 
@@ -74,6 +75,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
     facts = set(task.initial_facts)
     types = type_closure(task)
     label = {x.name: x.label for x in task.instances}
+    counts = {name for name, t in task.constants if t == COUNT_TYPE}  # a tally's (`pddl.tallies`): no object
     now = _states(task, facts, {})
     units = [task.units[a.unit] for a in task.actions if a.unit is not None]
     out = []
@@ -84,7 +86,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
             raise PlanDecodeError(f"plan step {n} ({step}) names no action of the task")
         if len(args) != len(action.params):
             raise PlanDecodeError(f"plan step {n} ({step}): {len(action.params)} arguments expected, got {len(args)}")
-        unknown = [a for a in args if a not in label]
+        unknown = [a for a in args if a not in label and a not in counts]
         if unknown:
             raise PlanDecodeError(f"plan step {n} ({step}): {unknown[0]} is not an object of the task")
         bind = {v: a for (v, _), a in zip(action.params, args, strict=True)}
@@ -98,7 +100,7 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
         named = set(names)
         moved = sorted(x for x in now if now[x] != was[x])
         ends = [h for x in moved for h in (was[x].holder, now[x].holder) if h is not None and was[x].holder != now[x].holder]
-        for x in (*args, *moved, *sorted(set(ends))):
+        for x in (*(a for a in args if a in label), *moved, *sorted(set(ends))):
             if x not in named:
                 named.add(x)
                 after = now[x].node if now[x].node != was[x].node and not now[x].consumed else None
