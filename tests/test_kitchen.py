@@ -103,7 +103,7 @@ def test_json_errors_name_the_item(tmp_path):
 
 
 @pytest.mark.parametrize(("text", "line", "expected"), [
-    ("O\tbowl\nM\tpour\n", 2, "expected an 'O' or 'S' line"),
+    ("O\tbowl\nM\tpour\n", 2, "a motion line ('M'): this file is a FOON network"),
     ("//\nS\tempty\n", 2, "before any object"),
     ("bowl: empty\nonion: in [fridge\n", 2, "unbalanced bracket"),
     ("bowl: empty\n: whole\n", 2, "no object label"),

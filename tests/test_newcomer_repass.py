@@ -120,3 +120,16 @@ def test_category_types_help_names_every_encoding_it_types():
     """`--category-types` changes the `relational` domain as it does `instances`' (both declare the category
     chain as supertypes), but --help said "instances encoding:"."""
     assert "instances and relational encodings: declare" in " ".join(run("plan", "--help").output.split())
+
+
+@pytest.mark.parametrize("option", ["--kitchen", "--goal-file"])
+def test_a_recipe_file_given_as_a_list_of_objects_is_told_to_be_a_network(option):
+    """A FOON recipe given where a list of objects is read (`--kitchen`, `--goal-file`) stopped at its first
+    motion line with `expected an 'O' or 'S' line`, never saying the file is a network that goes in PATHS."""
+    recipe = ROOT / "tests" / "data" / "foon-subgraphs" / "0001-whipped_cream.txt"
+    extra = ["--goal", "guacamole"] if option == "--kitchen" else []
+    r = run("retrieve", option, recipe, *extra)
+    assert r.exit_code == 2
+    assert f"{recipe}:8: error: a motion line ('M'): this file is a FOON network of functional units, " in r.stderr
+    assert "give it as a PATHS argument" in r.stderr
+    assert "Traceback" not in r.output

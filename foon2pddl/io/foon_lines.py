@@ -207,6 +207,9 @@ def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, i
             raise FoonSyntaxError(path, lineno, "control character in line (garbage bytes?)", line)
         fields = [f.strip() for f in stripped.split("\t")]
         head = fields[0]
+        if head[:1] == "M" and _ID.fullmatch(head):
+            raise FoonSyntaxError(path, lineno, "a motion line ('M'): this file is a FOON network of functional "
+                                                "units, not a list of objects; give it as a PATHS argument", line)
         if head[:1] not in "OS" or not _ID.fullmatch(head):
             raise FoonSyntaxError(path, lineno, "expected an 'O' or 'S' line, '//' or a '#' comment", line)
         if len(fields) < 2 or not fields[1]:
