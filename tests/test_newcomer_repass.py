@@ -133,3 +133,25 @@ def test_a_recipe_file_given_as_a_list_of_objects_is_told_to_be_a_network(option
     assert f"{recipe}:8: error: a motion line ('M'): this file is a FOON network of functional units, " in r.stderr
     assert "give it as a PATHS argument" in r.stderr
     assert "Traceback" not in r.output
+
+
+@pytest.mark.parametrize(("where", "extra"), [
+    ("foon2pddl.planners.solve", ["--goal", "whipped cream", "--goal", "guacamole"]),  # a batch
+    ("foon2pddl.skills.run", ["--goal", "whipped cream", "--skills"]),
+])
+def test_category_types_reach_the_planner_in_a_batch_and_under_skills(where, extra, monkeypatch):
+    """`--category-types` was read, then dropped without a word by a batch of goals and by `--skills`:
+    every task they planned had no category types."""
+    import importlib
+
+    module = importlib.import_module(where)
+    real, seen = module.plan, []
+
+    def spy(*args, **kwargs):
+        seen.append(kwargs.get("categories", ()))
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(module, "plan", spy)
+    r = run("plan", "--encoding", "relational", "--category-types", *extra)
+    assert r.exit_code == 0, r.output
+    assert seen and all(dict(chains).get("bowl", ())[:1] == ("bowls",) for chains in seen)

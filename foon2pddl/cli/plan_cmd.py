@@ -161,7 +161,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           fmt if fmt in TREE_EXTENSIONS else DEFAULT_FORMAT, output, planner=planner,
                           planner_cmd=planner_cmd, optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
                           rates=motion_rates, up_validate=up_validate, search=config,
-                          instances=checked_instances(instances, encoding, view.foon))
+                          instances=checked_instances(instances, encoding, view.foon),
+                          categories=category_chains(view.foon) if category_types else ())
     if skills:
         source = click.get_current_context().get_parameter_source("encoding")
         default_encoding = source is click.core.ParameterSource.DEFAULT
@@ -179,7 +180,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 without_skills=without_skills, hands=hands, fmt=fmt, output=output,
                                 timings={"load": load_s}, level=level, planner=planner, planner_cmd=planner_cmd,
                                 optimal=optimal, time_limit=time_limit, prune=prune, costs=costs,
-                                rates=motion_rates, up_validate=up_validate, search=config, instances=counts)
+                                rates=motion_rates, up_validate=up_validate, search=config, instances=counts,
+                                categories=category_chains(foon) if category_types else ())
     with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
                    f"time limit {time_limit:g} s)"):
         outcome = (plan_restoring if restore else plan)(
