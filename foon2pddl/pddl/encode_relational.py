@@ -37,7 +37,8 @@
   kitchen container that lists an item holds one object of it.
 * **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in; two nodes of a unit
   that list each other, read as one on the other (`mutual_lists`); a list's item no object of the unit is, taken
-  there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`).
+  there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`); a
+  container's node and what is in it, taken together and made together by no unit, as at hand (`kitchen_pairs`).
 * **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
   name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
@@ -76,6 +77,7 @@ from .holder_words import mismatches, reported, task_aliases
 from .holders import Fate, attached_gaps, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
+from .kitchen_pairs import read_pairs
 from .list_arrivals import read_arrivals
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
@@ -95,8 +97,9 @@ from .untouched import set_aside
 __all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
 
 IN, ON = "in", "on"
-#: The note kind of a relation FOON states that the encoding does not hold (`holders.attached_gaps`).
-UNHELD = "relation not modelled"
+#: The note kinds of a relation FOON states that the encoding does not hold (`holders.attached_gaps`) and of a
+#: pair of nodes no unit makes together, read as the kitchen's (`kitchen_pairs`).
+UNHELD, AT_HAND = "relation not modelled", "assumed at hand"
 
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
@@ -108,6 +111,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
     inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if options.prune
                                  else tuple(range(len(given))))
+    inp, at_hand = read_pairs(inp, units)  # a container's node and what is in it that no unit makes together: the kitchen's
     f = inp.foon
     def relevant(net: Foon) -> tuple[int, ...]:
         return restoring_units(net, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(net.units)))
@@ -167,7 +171,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too; a candidate an object starts in beyond it is reached only by what units make
-    moved = kitchen_implied((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
+    moved = (kitchen_implied((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
+             | {n for x in at_hand for n in (x.box, x.held)})
     early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
              and any(x.start == c for x in instances)}
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, early))
@@ -190,8 +195,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [arrived[u] for u in units if u in arrived]
     found += rd.renamed
-    notes, commented = reported(found)
-    unheld_notes, unheld_commented = reported(unheld)
+    told = [(kind, reported(x)) for kind, x in (("label mismatch", found), (UNHELD, unheld),
+                                                (AT_HAND, [(x.taker, x.describe()) for x in at_hand]))]
+    notes, commented = ([f"{kind}: {m}" for kind, both in told for m in both[i]] for i in (0, 1))
     pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
@@ -200,13 +206,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         constants=tuple((name, STATE_TYPE) for name in (NOT_MADE, CONSUMED, *const.values())),
         objects=tuple((x.name, type_of[x.label]) for x in instances), units=given, labels=table.labels,
         comments=header("relational", inp, options, len(units) - len(live)) + count_lines(counts) + why
-        + tuple(f"label mismatch: {m}" for m in commented) + tuple(f"{UNHELD}: {m}" for m in unheld_commented),
+        + tuple(commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)))
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
-    return Compiled(task, every_step=True, placed=moved, notes=tuple(f"label mismatch: {m}" for m in notes)
-                    + tuple(f"{UNHELD}: {m}" for m in unheld_notes) + why)
+    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why)
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],

@@ -1,0 +1,96 @@
+"""A container's node and the node of what is in it, taken together, that no unit makes together: the kitchen's.
+
+A unit may take a container's node that lists a label L together with L's node placed in that container: the
+greek salad dressing's pour (`ACT-0085-greek_salad_dressing.txt:29`) takes `bowl (contains {garlic})` with `garlic
+(minced, in [bowl])`. Over objects the garlic must be in the very bowl, in the very node. In a network where units
+make each node only beside a different node of the other (on the universal FOON the tomato soup's pick-and-place,
+`0011-easy_tomato_soup.txt:65`, makes the bowl with the garlic `peeled` in it; the garlic bread's add,
+`0015-garlic_bread-student-mealz.txt:88`, makes the minced garlic in a bowl that lists the butter too), no plan
+has the pair; FOON's tree takes each node from its own maker, two bowls for one. The hamburger's sprinkle and the
+gyoza's scrape take the same pair.
+
+The reading (`kitchen_pairs`), on the makers' own outputs: both nodes are made, neither is the kitchen's, no unit
+makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
+(the garlic is in another bowl), and every unit making the container's node leaves beside it a node of L at that
+container other than the pair's (another garlic is in the bowl), and no maker of the one takes the other (the homemade cheese pizza's bake takes
+the pick-and-place's `oven (contains {pizza pan}, on, preheated)` and makes the pan of baked pizza in that oven,
+which the remove takes with that oven node: one oven in two units' words, which `input_stitch` reads). Then no
+unit's outputs have the pair, and none
+turns the one made into the pair's without naming the other (a unit that did would be a maker without such an
+output: the mince of the garlic in its bowl, which may make the pair, is no evidence for the reading). The pair is
+read as at hand, as the kitchen's (`read_pairs`): the task starts with the container in its node and the object in
+it, the plan's tree check takes both as given (`Compiled.placed`), and the task says so with the taker's file:line
+and every maker's (`Pair.describe`). Labels as written (no name readings). O(u i^2) for u units of i inputs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, replace
+
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.places import listed, places
+from .encoding import LevelInputs, short_path, unit_where
+
+__all__ = ["Pair", "kitchen_pairs", "read_pairs"]
+
+
+@dataclass(frozen=True)
+class Pair:
+    """`taker` takes `box` (a container's node listing `held`'s label) with `held` (placed in or on it), which no
+    unit makes together: per maker of each, the node of the other's label it leaves beside it."""
+
+    taker: FunctionalUnit
+    box: ObjectNode
+    held: ObjectNode
+    box_makers: tuple[tuple[FunctionalUnit, ObjectNode], ...]
+    held_makers: tuple[tuple[FunctionalUnit, ObjectNode], ...]
+
+    def describe(self) -> str:
+        """`pour takes bowl (...) with garlic (...), which no unit makes together (pick-and-place at F:L makes the
+        bowl beside garlic (...); ...): read as the kitchen's`."""
+        made = [f"{m.motion.label} at {unit_where(m, short_path)} makes the {what} beside {other.describe()}"
+                for what, makers in ((self.box.label, self.box_makers), (self.held.label, self.held_makers))
+                for m, other in makers]
+        return (f"{self.taker.motion.label} takes {self.box.describe()} with {self.held.describe()}, which no unit "
+                f"makes together ({'; '.join(made)}): read as the kitchen's")
+
+
+def _beside(maker: FunctionalUnit, label: str, holder: str | None = None) -> ObjectNode | None:
+    """The first output of `maker` of `label` (placed at `holder` when given)."""
+    return next((o for o in maker.outputs if o.label == label
+                 and (holder is None or holder in {h for _, h in places(o)})), None)
+
+
+def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[int] | None = None) -> tuple[Pair, ...]:
+    """Every pair of the module doc that the units `takers` (indexes; default all) take, in unit order; makers
+    from the whole network."""
+    makers: dict[ObjectNode, list[FunctionalUnit]] = {}
+    for u in foon.units:
+        for o in u.outputs:
+            makers.setdefault(o, []).append(u)
+    out: list[Pair] = []
+    for u in (foon.units if takers is None else [foon.units[i] for i in sorted(takers)]):
+        for box in u.inputs:
+            if box in kitchen or box not in makers:
+                continue
+            for held in u.inputs:
+                if (held in kitchen or held not in makers or held.label == box.label or held.label not in listed(box)
+                        or box.label not in {h for _, h in places(held)} or set(makers[box]) & set(makers[held])):
+                    continue
+                boxes = [(m, _beside(m, held.label, box.label)) for m in dict.fromkeys(makers[box])]
+                helds = [(m, _beside(m, box.label)) for m in dict.fromkeys(makers[held])]
+                if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
+                        o is not None and o != box and box not in m.inputs for m, o in helds):
+                    out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
+    return tuple(dict.fromkeys(out))
+
+
+def read_pairs(inp: LevelInputs, units: Iterable[int]) -> tuple[LevelInputs, tuple[Pair, ...]]:
+    """`inp` whose kitchen has both nodes of every pair the task's relevant `units` take, and those pairs (only
+    those: a bowl of minced garlic at hand is no shortcut for a task that takes no such pair, as the black beans'
+    pour of chopped garlic, whose tree check found the bowl not available)."""
+    pairs = kitchen_pairs(inp.foon, frozenset(inp.kitchen), units)
+    if not pairs:
+        return inp, pairs
+    return replace(inp, kitchen=frozenset(inp.kitchen) | {n for p in pairs for n in (p.box, p.held)}), pairs

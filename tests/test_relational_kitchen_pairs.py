@@ -1,0 +1,87 @@
+"""A container's node and the node of what is in it, taken together, that no unit makes together: the kitchen's
+(`pddl/kitchen_pairs.py`)."""
+
+from __future__ import annotations
+
+from node_words import contains, inside, n
+from relational_checks import clean_unit_plan
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_goal
+
+# The greek salad dressing's pour (ACT-0085:29) takes `bowl (contains {garlic})` with `garlic (minced, in [bowl])`.
+# On the universal FOON the tomato soup's pick-and-place (0011:65) makes the bowl, with the garlic peeled in it, and
+# the garlic bread's add (0015:88) makes the minced garlic, in a bowl that lists the butter too: no unit makes the
+# two together, and over objects no plan had the minced garlic in a bowl that lists garlic alone.
+EMPTY, PEELED, MINCED = n("bowl", "empty"), n("garlic", "peeled"), n("garlic", "minced")
+BOWL, IN_BOWL = n("bowl", contains("garlic")), n("garlic", "minced", inside("bowl"))
+PLACE = FunctionalUnit((EMPTY, PEELED), Motion("pick-and-place"), (BOWL, n("garlic", "peeled", inside("bowl"))),
+                       (Source("soup.txt", 65),))
+BUTTER = n("butter", inside("packet"))
+ADD = FunctionalUnit((EMPTY, MINCED, BUTTER), Motion("add"),
+                     (n("bowl", contains("butter", "garlic")), IN_BOWL, n("butter", inside("bowl"))),
+                     (Source("bread.txt", 88),))
+CUP = n("measuring cup", "empty")
+GOAL = n("garlic", "minced", inside("measuring cup"))
+POUR = FunctionalUnit((CUP, BOWL, IN_BOWL), Motion("pour"),
+                      (n("measuring cup", contains("garlic")), GOAL, n("bowl", "dirty")), (Source("dressing.txt", 29),))
+KITCHEN = {EMPTY, PEELED, MINCED, BUTTER, CUP}
+
+
+def test_a_pair_no_unit_makes_together_is_the_kitchens():
+    outcome = clean_unit_plan((PLACE, ADD, POUR), KITCHEN, GOAL)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
+    assert outcome.validation.ok  # the tree check takes the pair as the task reads it
+    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+        "assumed at hand: dressing.txt:29: pour takes bowl (contains {garlic}) with garlic (in [bowl], minced), "
+        "which no unit makes together (pick-and-place at soup.txt:65 makes the bowl beside garlic (in [bowl], "
+        "peeled); add at bread.txt:88 makes the garlic beside bowl (contains {butter, garlic})): read as the kitchen's"]
+
+
+def test_a_pair_one_unit_makes_is_made():
+    # a unit that makes both (the pour from the garlic press into the bowl) makes the pair: nothing is read
+    press = n("garlic", "minced", inside("garlic press"))
+    both = FunctionalUnit((EMPTY, press), Motion("pour"), (BOWL, IN_BOWL), (Source("bread.txt", 99),))
+    outcome = clean_unit_plan((PLACE, ADD, both, POUR), KITCHEN | {press}, GOAL)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour", "pour"]
+    assert not [x for x in outcome.compiled.notes if x.startswith("assumed at hand")]
+
+
+def test_a_pair_a_unit_may_finish_in_place_is_not_read():
+    # the mince in the bowl turns the placed garlic into the pair's node without naming the bowl: the pair may be
+    # made, so nothing is read (the pair stays made by units, as FOON's tree has it)
+    mince = FunctionalUnit((n("garlic", "peeled", inside("bowl")), n("knife", "clean")), Motion("mince"),
+                           (IN_BOWL,), (Source("soup.txt", 70),))
+    compiled = compile_goal(Foon((PLACE, ADD, mince, POUR)), Kitchen(frozenset(KITCHEN | {n("knife", "clean")})),
+                            Goal(GoalSpec("garlic"), (GOAL,)), "relational")
+    assert not [x for x in compiled.notes if x.startswith("assumed at hand")]
+    assert BOWL not in compiled.placed and IN_BOWL not in compiled.placed
+
+
+def test_a_pair_whose_maker_takes_the_other_is_not_read():
+    # the homemade cheese pizza's remove (0082:466) takes the pick-and-place's `oven (contains {pizza pan}, on,
+    # preheated)` with `pizza pan (contains {cheese pizza}, in [oven])`, which only the bake makes, from that very
+    # oven (leaving it `oven (on)`): one oven, in FOON's words of two units (a stitch reads it), never at hand
+    from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
+
+    oven, raw = n("oven", "on", "preheated"), n("pizza pan", contains("pizza dough"))
+    full, raw_in = n("oven", contains("pizza pan"), "on", "preheated"), n("pizza pan", contains("pizza dough"), inside("oven"))
+    baked = n("pizza pan", contains("cheese pizza"), inside("oven"))
+    put = FunctionalUnit((oven, raw), Motion("pick-and-place"), (full, raw_in))
+    bake = FunctionalUnit((full, raw_in), Motion("bake"), (baked, n("oven", "on")))
+    remove = FunctionalUnit((full, baked), Motion("remove"), (n("pizza pan", contains("cheese pizza")),))
+    assert kitchen_pairs(Foon((put, bake, remove)), frozenset({oven, raw})) == ()
+    # the pair the dressing's pour takes is read
+    assert [(p.box, p.held) for p in kitchen_pairs(Foon((PLACE, ADD, POUR)), frozenset(KITCHEN))] == [(BOWL, IN_BOWL)]
+
+
+def test_a_task_that_takes_no_pair_reads_none():
+    # on the universal FOON the black beans' pour takes `bowl (contains {garlic})` with the garlic chopped in it; read
+    # for every task, the bowl of minced garlic at hand stood in for the bowl the plan fills (its tree check: input
+    # not available). Only the units relevant to the goal are read.
+    empty = FunctionalUnit((BOWL,), Motion("empty"), (n("bowl", "empty", "dirty"),), (Source("beans.txt", 61),))
+    outcome = clean_unit_plan((PLACE, ADD, POUR, empty), KITCHEN, n("bowl", "empty", "dirty"))
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pick-and-place", "empty"]
+    assert not [x for x in outcome.compiled.notes if x.startswith("assumed at hand")]
