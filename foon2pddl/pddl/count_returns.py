@@ -41,10 +41,28 @@ def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: dict[str, l
     node reached once (a universal FOON has hundreds of spare units)."""
     frontier: list[tuple[ObjectNode, list[int], frozenset[ObjectNode]]] = [(start, [], frozenset())]
     seen = {start}
+    found: dict[str, tuple[dict[ObjectNode, set[int]], set[int]]] = {}
+
+    def able(node: ObjectNode) -> list[tuple[int, tuple[Role, ...]]]:
+        """The spare units that may change an object out of `node` (the others have no step from it), in order:
+        those with a role from it, and, stitched, those with one from a node no unit makes."""
+        if node.label not in found:
+            exact: dict[ObjectNode, set[int]] = {}
+            loose: set[int] = set()
+            for k, (_, roles) in enumerate(steps.get(node.label, ())):
+                for r in roles:
+                    if r.changes and r.before is not None and r.before.label == node.label:
+                        exact.setdefault(r.before, set()).add(k)
+                        if stitched and r.before not in foon.producers:
+                            loose.add(k)
+            found[node.label] = exact, loose
+        exact, loose = found[node.label]
+        return [steps[node.label][k] for k in sorted(exact.get(node, set()) | loose)]
+
     for _ in range(RETURN_DEPTH):
         nxt = []
         for node, path, made in frontier:
-            for v, roles in steps.get(node.label, ()):
+            for v, roles in able(node):
                 step = next((r for r in roles if r.changes and r.before is not None and r.before.label == node.label
                              and (r.before == node or (stitched and r.before not in foon.producers
                                                        and said_less(r.before, node)))), None)
@@ -70,11 +88,15 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
         roles = roles_of(foon.units[v])
         for label in dict.fromkeys(r.before.label for r in roles if r.changes and r.before is not None):
             steps.setdefault(label, []).append((v, roles))
+    taken = [roles_of(foon.units[m]) for m in plan]
+    later: list[set[ObjectNode | None]] = [set() for _ in range(len(plan) + 1)]  # nodes the units after i take
+    for i in range(len(plan) - 1, -1, -1):
+        later[i] = later[i + 1] | {x.before for x in taken[i]}
     for i, m in enumerate(plan):
-        for r in roles_of(foon.units[m]):
+        for r in taken[i]:
             if r.before is None or not r.changes or r.before in kitchen:
                 continue
-            if not any(x.before == r.before for v in plan[i + 1:] for x in roles_of(foon.units[v])):
+            if r.before not in later[i + 1]:
                 continue
             if back := _way_back(foon, r.after, r.before, steps, kitchen, stitched):
                 at = order.index(m) + 1

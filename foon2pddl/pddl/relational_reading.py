@@ -93,8 +93,12 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                                              if c in inp.candidates})
         by_unit = {f.units[u]: p for u, p in plans.items()}
 
-        def roles_of(unit):
-            return count_roles(by_unit[unit]) if unit in by_unit else ()
+        roles: dict[FunctionalUnit, tuple] = {}
+
+        def roles_of(unit):  # asked once per unit and plan position by the counts: read once
+            if unit not in roles:
+                roles[unit] = count_roles(by_unit[unit]) if unit in by_unit else ()
+            return roles[unit]
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
             return derive_counts(net, need, inp.kitchen, inp.candidates, stated=stated, overrides=overrides,
