@@ -113,6 +113,7 @@ BENCH_FIGURES = (
     ("README.md", "The `experiment` line is the quick one"),  # said "about 15 s ... 25 s", measured when?
     ("planning.md", "Which planners read and solve which encoding's PDDL"),  # a date, no commit, rows moved since
     ("planning.md", "Optimal planners on the universal FOON"),  # 55/59 on 2026-12-04, no commit; 56/59 later
+    ("constraints.md", "`python -m bench --shared ../shared/data --only constraints"),  # no commit (issue 24 re-pass)
 )
 
 
