@@ -8,6 +8,7 @@ cream, whose problem leaves out the carton and the spatula while its plan still 
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 
 from conftest import SUBGRAPHS
 from hypothesis import given, settings
@@ -31,7 +32,8 @@ TYPES = (("bowl", "thing"), ("egg", "thing"))
 @st.composite
 def tasks(draw) -> PlanningTask:
     """Four objects of two types, states `(is ?x s)`, a holder fact `(in ?h ?x)`, `(occupied s)`, and actions of
-    up to two parameters with conditional effects quantified over a type (what the relational encoding writes)."""
+    up to two parameters (and one of the states' type, bound to the constants) with conditional effects quantified
+    over a type (what the relational encoding writes)."""
     init = [Atom("is", (o, draw(st.sampled_from(STATES)))) for o, _ in OBJECTS if draw(st.booleans())]
     init += [Atom("in", (h, x)) for h, x in draw(st.lists(st.tuples(st.sampled_from("ab"), st.sampled_from("cd")),
                                                          max_size=2, unique=True))]
@@ -49,6 +51,9 @@ def tasks(draw) -> PlanningTask:
         if len(params) == 2 and draw(st.booleans()):
             pre.append(Atom("in", ("?p", "?q")))
         add = [Atom("is", (var(), draw(st.sampled_from(STATES))))]
+        if draw(st.booleans()):  # a parameter of the constants' type: the state ?p is in, or one it gets
+            params += (("?s", "state"),)
+            (pre if draw(st.booleans()) else add).append(Atom("is", ("?p", "?s")))
         if draw(st.booleans()):
             add.append(Atom("occupied", (draw(st.sampled_from(STATES)),)))
         cond = []
@@ -71,12 +76,13 @@ def tasks(draw) -> PlanningTask:
 def _reachable(task: PlanningTask, types: dict[str, frozenset[str]]) -> set[frozenset[Atom]]:
     """Every state reachable from `task.init`, over the objects of `types` (exhaustive search)."""
     objects = [o for o, ts in types.items() if o not in {c for c, _ in task.constants}]
+    constants = [c for c, _ in task.constants]
     start = frozenset(task.init)
     seen, stack = {start}, [start]
     while stack:
         state = stack.pop()
         for act in task.actions:
-            pools = [[o for o in objects if t in types[o]] for _, t in act.params]
+            pools = [[o for o in (*objects, *constants) if t in types[o]] for _, t in act.params]
             for values in itertools.product(*pools):
                 bind = dict(zip((v for v, _ in act.params), values, strict=True))
                 if all(Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) in state for a in act.pre):
@@ -107,6 +113,20 @@ def test_an_object_whose_quantified_effect_sets_a_fact_of_no_object_is_kept():
     task = PlanningTask("d", "p", "relational", 3, (), (act,), init, (Atom("occupied", ("s1",)),), types=TYPES,
                         objects=OBJECTS)
     assert untouched(task) == {"b", "d"}  # c sets (occupied s1); b is in no state a parameter needs
+
+
+def test_a_parameter_of_a_constants_type_takes_the_constants():
+    # `?s - state` is bound to the task's constants: the action applies (a in s0), so it touches a
+    act = Action("go", (Atom("is", ("?p", "?s")),), (Atom("is", ("?p", "s1")),), params=(("?p", "bowl"), ("?s", "state")))
+    init = (Atom("is", ("a", "s0")),)
+    task = PlanningTask("d", "p", "relational", 3, (), (act,), init, (Atom("is", ("a", "s1")),), types=TYPES,
+                        objects=OBJECTS, constants=tuple((s, "state") for s in STATES))
+    assert untouched(task) == {"b", "c", "d"}
+    again = Action("on", (Atom("is", ("?p", "s1")),), (Atom("is", ("?p", "?s")),), params=(("?p", "bowl"), ("?s", "state")))
+    later = Action("off", (Atom("is", ("?p", "s2")), Atom("is", ("?q", "s0"))), (Atom("is", ("?q", "s2")),),
+                   params=(("?p", "bowl"), ("?q", "egg")))
+    task = replace(task, actions=(act, again, later), init=(*init, Atom("is", ("c", "s0"))))
+    assert untouched(task) == {"b", "d"}  # a reaches s2 through `on`'s ?s: `off` takes c
 
 
 def test_an_object_the_goal_names_is_kept():

@@ -4,7 +4,8 @@
 other fact of objects, `in`/`on` holders among them, is taken as possible, but a static one of one object,
 `(goal-object ?x)`, as the init says), and the objects each action parameter can take: one of the
 parameter's type with every `(is ?p s)` the action requires reachable, when every parameter of the action
-has one and every ground precondition (`(occupied s)`) is reachable. The fixpoint adds each such action's
+has one and every ground precondition (`(occupied s)`) is reachable; a parameter of a constant's type (a
+state) takes the constants, and `(is ?p ?s)` over such a parameter needs only some state of `?p`. The fixpoint adds each such action's
 effects for the objects its parameters can take, and each conditional effect's, for the objects its
 quantified variables can take. An object is *untouched* when no parameter of any action can take it, and
 every conditional effect quantified over it that it can meet changes only facts that name it (one that
@@ -25,6 +26,7 @@ still names the carton and the spatula. O(rounds x actions x parameters x object
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterable
 from dataclasses import replace
 
@@ -49,7 +51,7 @@ def untouched(task: PlanningTask) -> frozenset[str]:
     types = type_closure(task)
     objects = [name for name, _ in task.objects]
     of_type: dict[str, list[str]] = {}
-    for x in objects:
+    for x in (*objects, *(c for c, _ in task.constants)):  # a parameter of a constant's type takes the constants
         for t in types[x]:
             of_type.setdefault(t, []).append(x)
     states: dict[str, set[str]] = {x: set() for x in objects}
@@ -66,7 +68,8 @@ def untouched(task: PlanningTask) -> frozenset[str]:
     def takers(var: str, typ: str, conds: Iterable[Atom]) -> list[str]:
         need = [a.args[1] for a in conds if a.predicate == IS and len(a.args) == 2 and a.args[0] == var]
         static = [a.predicate for a in conds if a.predicate not in changing and a.args == (var,)]
-        return [x for x in of_type.get(typ, ()) if all(s in states[x] for s in need)
+        return [x for x in of_type.get(typ, ()) if all(s in states.get(x, ()) or (s.startswith("?") and states.get(x))
+                                                        for s in need)  # a state a parameter names: any it has
                 and all(Atom(p, (x,)) in unary for p in static)]
 
     # an object an action names itself is kept, and a fact naming it is taken as possible
@@ -82,9 +85,9 @@ def untouched(task: PlanningTask) -> frozenset[str]:
             nonlocal grew
             for a in atoms:
                 if a.predicate == IS and len(a.args) == 2 and (a.args[0] in bind or a.args[0] in states):
-                    for x in bind.get(a.args[0], [a.args[0]]):
-                        if a.args[1] not in states[x]:
-                            states[x].add(a.args[1])
+                    for x, s in itertools.product(bind.get(a.args[0], [a.args[0]]), bind.get(a.args[1], [a.args[1]])):
+                        if x in states and s not in states[x]:
+                            states[x].add(s)
                             grew = True
                 elif _ground(a) and a not in ground and not any(x in states for x in a.args):
                     ground.add(a)
