@@ -10,6 +10,8 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.relational_init import holder_init
+from foon2pddl.pddl.task import Instance
 
 # the french toast's pour (0037-make_quick_french_toast.txt:63) takes `bowl (contains {butter})`, which the
 # garlic bread's pick-and-place fills, and leaves it out of its outputs: the bowl is emptied of the butter
@@ -34,6 +36,15 @@ def test_a_holder_the_kitchen_implies_is_added_once_per_object_it_holds():
                                n("skillet", "heated"), n("pot", "heated")], dish)
     holders = [s.holder for s in outcome.trace.initial if s.node == BUTTER]
     assert len(holders) == len(set(holders)) == 2 and all(h.startswith("bowl_") for h in holders)
+
+
+def test_what_the_units_fill_is_read_through_the_task_aliases_when_holders_are_added():
+    # a unit's list names `oil` where the task's object is `olive oil` (`holder_words.task_aliases`): two olive
+    # oils `in [bowl]`, of a label the units put into bowls, get a bowl each, as the two butters above do
+    oil = n("olive oil", inside("bowl"))
+    xs = [Instance(f"olive_oil_{k}", "olive oil", oil) for k in (1, 2)]
+    _, implied = holder_init(xs, {"oil": "olive oil"}, filled=frozenset({("bowl", "oil")}))
+    assert implied == [n("bowl", contains("olive oil"))] * 2
 
 
 def test_an_object_that_holds_others_leaves_a_holder_the_unit_does_not_name_whole():

@@ -40,9 +40,10 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     (`relational_plan`), so two butters `in [bowl]` get two bowls listing butter, where one bowl holding both
     was left empty with the second in it. An added holder starts in a node of `nodes` that lists exactly that
     and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
-    [pot])`), else in a node made of the list. Names are read through the task's `alias`es. O(n^2) for n objects.
+    [pot])`), else in a node made of the list. Names (`filled`'s too) are read through the task's `alias`es. O(n^2) for n objects.
     """
     alias = alias or {}
+    filled = frozenset((alias.get(h, h), alias.get(x, x)) for h, x in filled)  # a unit's `oil` is the `olive oil`
     by_label: dict[str, list[Instance]] = {}
     for x in instances:
         if x.start is not None:
