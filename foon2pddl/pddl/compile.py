@@ -81,11 +81,12 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
                  prune: bool = True, costs: str | None = None, rates: Rates | None = None,
                  instances: tuple[tuple[str, int], ...] = (), categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
                  category_index: CategoryIndex | None = None, policy: str = "absent",
-                 constraints: Constraints | None = None) -> Compiled:
+                 constraints: Constraints | None = None, narrow: bool = False) -> Compiled:
     """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or bad options).
 
     `instances` and `categories` (category chains) are read by the `instances` encoding,
-    `category_index` and `policy` by lifted ones (default: the shipped category index).
+    `category_index` and `policy` by lifted ones (default: the shipped category index), `narrow` (objects
+    counted small, `Compiled.narrowed`) by the `relational` one.
     With `constraints`, the one place they apply to every encoding (`constraints.py`): the network,
     kitchen and goal are filtered before encoding (GoalExcluded when no candidate remains) and
     must-use objects join the goal after. A goal the kitchen already holds is put in the initial
@@ -111,7 +112,7 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
         if constraints.must_use and prune:
             foon, prune = must_use_cone(foon, kitchen, goal, constraints.must_use), False
     options = EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances, categories=categories,
-                            category_index=category_index, policy=policy)
+                            category_index=category_index, policy=policy, narrow=narrow)
     compiled = enc.compile(foon, kitchen, goal, level, options)
     if constraints:
         compiled = replace(compiled, task=add_must_use(compiled.task, constraints.must_use))

@@ -6,7 +6,8 @@
   (and, kept by a tally, for a role that only checks a node others leave: `tallies`),
   `(precedes ?a ?b)` to bind two roles of one state to two objects. Counts are
   derived as for `instances`, from the roles this encoding gives each unit
-  (`relational_plan.count_roles`: a portion poured off is a new object).
+  (`relational_plan.count_roles`: a portion poured off is a new object); counted
+  small with `EncodeOptions.narrow` (`relational_objects`: what `plan` tries first).
 * **Relations** as facts between objects, holder first (the public converter's
   order): `(in ?holder ?obj)`, `(on ?surface ?obj)`. A container's contents are
   the objects in it; every action that puts an object somewhere removes it from
@@ -73,7 +74,7 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .holder_words import mismatches, reported, task_aliases
+from .holder_words import mismatches, reported
 from .holders import Fate, attached_gaps, list_gaps, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
@@ -84,9 +85,9 @@ from .names import NameTable
 from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
-from .relational_init import completed_kitchen, kitchen_implied, scene_instances
+from .relational_init import kitchen_implied
+from .relational_objects import task_objects
 from .relational_plan import UnitPlan, Way, flow_ways
-from .relational_reading import read_units
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
@@ -118,27 +119,12 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     scene = kitchen.project(level).scene
-    rd = read_units(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances))
-    units, silent, plans, drops, counts, have = rd.units, rd.silent, rd.plans, rd.drops, rd.counts, rd.have
-    why = tuple(f"objects: {w}" for w in count_reasons(inp.foon, counts, inp.kitchen, rd.roles_of))
-
-    table = NameTable()
-    for name in (IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE):
-        table.reserve(name)
-    nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
-    for u in units:
-        p = plans[u]
-        nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
-        nodes.update(n for _, n in p.emptied)
-    held_by: frozenset[ObjectNode] = frozenset()  # network nodes the holders the kitchen implies start in
-    if scene:  # the scene is the init: its objects, where they are, and the objects units make
-        instances = scene_instances(table, scene, counts.unmade)
-        alias = dict(task_aliases([f.units[u] for u in units], have, [x.start for x in instances]))
-        placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
-    else:
-        named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
-        instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], have, nodes,
-                                                              named, silent, rd.filled)
+    ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
+        IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE), options.narrow)
+    rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
+    units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
+    why = tuple(f"objects: {w}" for w in (*count_reasons(inp.foon, counts, ob.kitchen, rd.roles_of),
+                                          *((ob.narrowed,) if ob.narrowed else ())))
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
@@ -171,7 +157,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too; a candidate an object starts in beyond it is reached only by what units make
-    moved = (kitchen_implied((x.start for x in instances), inp.kitchen) | held_by | {x.node for x in sewn if x.unit in live}
+    moved = (kitchen_implied((x.start for x in instances), inp.kitchen) | ob.implied | {x.node for x in sewn if x.unit in live}
              | {n for x in at_hand for n in (x.box, x.held)})
     early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
              and any(x.start == c for x in instances)}
@@ -211,7 +197,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         gaps=tuple(sorted(pairs)))
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
-    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why)
+    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed)
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],

@@ -42,6 +42,7 @@ class EncodeOptions:
     first, for PDDL supertypes; given as data, so the encoders need no category index).
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
+    The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`).
     """
 
     prune: bool = True
@@ -51,6 +52,7 @@ class EncodeOptions:
     categories: tuple[tuple[str, tuple[str, ...]], ...] = ()
     category_index: CategoryIndex | None = field(default=None, compare=False)
     policy: str = "absent"
+    narrow: bool = False
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

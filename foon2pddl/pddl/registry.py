@@ -67,6 +67,9 @@ class Compiled:
     #: [skillet])`), and a holder a kitchen node is in (`stove (on, with [pot])` under `pot (heated, on
     #: [stove])`); the kitchen the tree is checked from includes them
     placed: frozenset[ObjectNode] = frozenset()
+    #: what the encoder counted small, as a note (`EncodeOptions.narrow`); empty when its counts are the wide
+    #: ones: then no wider task has more objects (`planners.solve.plan` plans the wide one when this has no plan)
+    narrowed: str = ""
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
         """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""

@@ -5,9 +5,9 @@ hold (`relational_plan.quiet_places`), the (holder, content) pairs the task's un
 task's labels and the labels that hold something (`relational_plan.holding_labels`); flows a later unit's input
 says did not happen are dropped (`list_drops.kept_in_place`). The objects come from those readings
 (`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
-for the stitched one), or from the scene. A unit with a role of a label the task has no object of is left out;
-when that changes which places the task's units name, the units are read again with only the kept ones as
-speakers (a unit with no objects names no place).
+for the stitched one; counted small, for FOON's own plan alone, `relational_objects`), or from the scene. A unit
+with a role of a label the task has no object of is left out; when that changes which places the task's units
+name, the units are read again with only the kept ones as speakers (a unit with no objects names no place).
 """
 
 from __future__ import annotations
@@ -76,10 +76,11 @@ def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, Funct
 
 
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
-               overrides: Mapping[str, int]) -> Reading:
+               overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
     kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
-    give."""
+    give; `narrow`: count small, from FOON's own plan alone (no stitched one beside it) in the kitchen with these
+    nodes too (`relational_objects`)."""
     f, units = st.foon, st.units
     task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
     filled, labels = frozenset().union(*(gained(f.units[u]) for u in units)), frozenset(n.label for n in task_nodes)
@@ -101,9 +102,10 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             return roles[unit]
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-            return derive_counts(net, need, inp.kitchen, inp.candidates, stated=stated, overrides=overrides,
-                                 roles_of=roles_of, together=True, stitched=True)
-        counts = count(inp.foon, st.own).widest(count(st.through, st.needed)) if st.origin else count(inp.foon, st.own)
+            return derive_counts(net, need, inp.kitchen | (narrow or frozenset()), inp.candidates, stated=stated,
+                                 overrides=overrides, roles_of=roles_of, together=True, stitched=True)
+        counts = count(inp.foon, st.own)
+        counts = counts.widest(count(st.through, st.needed)) if st.origin and narrow is None else counts
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}

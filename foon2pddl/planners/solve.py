@@ -14,6 +14,7 @@ from __future__ import annotations
 import copy
 import time
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -47,7 +48,8 @@ EXCLUDED = "constraints"
 #: The planner named by the outcome of a goal no reachable state of the objects applies (`pddl.holder_reach`).
 UNREACHED = "holder reachability"
 
-#: The time limit (s) of `plan_restoring`'s second plan with fewer objects (or the caller's, when shorter).
+#: The time limit (s) of a plan with fewer objects than a plan to fall back on: `plan_restoring`'s second plan, and
+#: `plan`'s task counted small (or the caller's, when shorter).
 RETRY_SECONDS = 10.0
 
 #: Phases in the order they run (the CLI adds `load` first).
@@ -108,7 +110,7 @@ def _finish(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes: f
     """Decode and validate a planner result; fold its timings into `timings`."""
     for phase in ("write", "translate", "search"):
         if phase in result.timings:
-            timings[phase] = timings.get(phase, 0.0) + result.timings[phase]
+            _add(timings, phase, result.timings[phase])
     if not result.solved:
         return PlanOutcome(result, compiled, timings=timings)
     t0 = time.perf_counter()
@@ -116,13 +118,13 @@ def _finish(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes: f
         plain = plan_tree(compiled, result.plan, goal, kitchen_nodes)
         tree = finished(compiled, plain, result.plan, kitchen_nodes)
     except PlanDecodeError as exc:
-        timings["decode"] = time.perf_counter() - t0
+        _add(timings, "decode", time.perf_counter() - t0)
         return PlanOutcome(result, compiled, decode_error=str(exc), timings=timings)
-    timings["decode"] = time.perf_counter() - t0
+    _add(timings, "decode", time.perf_counter() - t0)
     t0 = time.perf_counter()
     decoded = check(tree, kitchen_nodes, compiled, result.plan, up_validate=up_validate,
                     candidates=sorted({project_node(c, compiled.task.level) for c in goal.candidates}), plain=plain)
-    timings["validate"] = time.perf_counter() - t0
+    _add(timings, "validate", time.perf_counter() - t0)
     return PlanOutcome(result, compiled, decoded, timings=timings)
 
 
@@ -146,34 +148,68 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     and without those no reachable state applies (`pddl.holder_reach`: a holder and its content in states no
     plan has together); when that leaves the goal out of reach, no planner runs and the outcome is `unsolvable`
     (planner `holder reachability`, the message naming the units). The outcome keeps the task as compiled.
+    A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
+    valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
+    `time_limit`, and a note says so; the timings are then both plans'.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
 
         fd.prestart_translator()  # its start-up overlaps the encoding
     timings: dict[str, float] = {}
-    t0 = time.perf_counter()
-    try:
-        compiled = compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
+
+    def compiled(narrow: bool) -> Compiled:
+        t0 = time.perf_counter()
+        try:
+            return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                                 category_index=category_index, constraints=constraints, instances=instances,
-                                categories=categories)
+                                categories=categories, narrow=narrow)
+        finally:
+            _add(timings, "encode", time.perf_counter() - t0)
+
+    def planned(task: Compiled, limit: float | None) -> PlanOutcome:
+        t0 = time.perf_counter()
+        smaller = drop_unbindable(task.task)  # what the planner would ground to nothing (the lanes' work)
+        smaller, unreached = drop_unreachable(smaller)  # what no reachable state applies (holder and content states)
+        if unreached is not None:
+            _add(timings, "write", time.perf_counter() - t0)
+            return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), task, timings=timings)
+        domain_text, problem_text = render(smaller)
+        _add(timings, "write", time.perf_counter() - t0)
+        result = run_planner(smaller, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
+                             optimal=optimal, time_limit=limit, search=search)
+        return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
+
+    try:
+        small = compiled(True)
     except GoalExcluded as exc:
-        timings["encode"] = time.perf_counter() - t0
         empty = PlanningTask("excluded", "excluded", encoding, level, (), (), (), ())
         return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), EXCLUDED, str(exc)), Compiled(empty),
                            timings=timings)
-    timings["encode"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    planned = drop_unbindable(compiled.task)  # what the planner would ground to nothing (the lanes' work)
-    planned, unreached = drop_unreachable(planned)  # what no reachable state applies (holder and content states)
-    if unreached is not None:
-        timings["write"] = time.perf_counter() - t0
-        return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), compiled, timings=timings)
-    domain_text, problem_text = render(planned)
-    timings["write"] = time.perf_counter() - t0
-    result = run_planner(planned, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
-                         optimal=optimal, time_limit=time_limit, search=search)
-    return _finish(result, compiled, goal, kitchen.project(level).nodes, timings, up_validate)
+    if not small.narrowed:
+        return planned(small, time_limit)
+    short = min(time_limit or RETRY_SECONDS, RETRY_SECONDS)
+    outs = _first_solved(lambda: planned(small, short), lambda: planned(compiled(False), time_limit))
+    if len(outs) == 1:
+        return outs[0]
+    return _noted(outs[1], f"objects: the {len(small.task.instances)} objects counted small gave no valid plan within "
+                           f"{short:g} s ({outs[0].status}): planned with the {len(outs[1].task.instances)} FOON's "
+                           "plan unfolded counts")
+
+
+def _add(timings: dict[str, float], phase: str, seconds: float) -> None:
+    """`seconds` added to `phase` of `timings` (a plan made twice reports both)."""
+    timings[phase] = timings.get(phase, 0.0) + seconds
+
+
+def _first_solved(*attempts: Callable[[], PlanOutcome]) -> tuple[PlanOutcome, ...]:
+    """The outcomes of `attempts`, run in order until one is solved (a valid plan): the last one is, or none is."""
+    outs: list[PlanOutcome] = []
+    for attempt in attempts:
+        outs.append(attempt())
+        if outs[-1].status == PlanStatus.SOLVED:
+            break
+    return tuple(outs)
 
 
 def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
@@ -187,14 +223,15 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
     kept."""
     augmented, counted = with_restore(foon, kitchen, goal, level)
     lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
-    outcome = plan(augmented, counted, goal, encoding, level, **options)
+    outs = _first_solved(lambda: plan(augmented, counted, goal, encoding, level, **options),
+                         lambda: plan(foon, kitchen, goal, encoding, level, **options))
+    outcome = outs[0]
     note = "restore: restoring units added (an assumption beyond FOON); " + (
         f"objects in the states they restore: {lowered}" if lowered else "no count lowered")
-    if outcome.status != PlanStatus.SOLVED:
-        again = plan(foon, kitchen, goal, encoding, level, **options)
-        if again.status != PlanStatus.SOLVED:
-            return _noted(outcome, note)
-        outcome, counted, note = again, kitchen, note + f" gave no valid plan ({outcome.status}): planned without them"
+    if outs[-1].status != PlanStatus.SOLVED:
+        return _noted(outcome, note)
+    if len(outs) > 1:
+        outcome, counted, note = outs[1], kitchen, note + f" gave no valid plan ({outcome.status}): planned without them"
     if outcome.trace is None:
         return _noted(outcome, note)
     back = returns(augmented)

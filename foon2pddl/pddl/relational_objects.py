@@ -1,0 +1,96 @@
+"""The `relational` task's objects: counted from its units' reading, or the scene's, with the kitchen completed
+(`relational_init`); counted small first when asked (`task_objects`).
+
+Counted wide (`compile`'s): for FOON's plan unfolded, and for the plan through the stitched units beside it
+(`relational_reading.read_units`). That plan makes every node FOON's semantics needs, also one the completed
+kitchen holds: the brownie's cut (`ACT-0010-choco_brownie.txt:384`) takes the kitchen's `brownie (baked, on
+[cutting board])` with `cutting board (contains {brownie})`, a node only the whole recipe makes, while the init
+puts the kitchen's brownie on a board of its own, in that node: 92 objects for a plan that is the cut. Counted
+small (`narrow`, what `planners.solve.plan` tries first): from FOON's own plan alone (no stitched plan beside
+it), in the kitchen with the network's nodes the holders the completion adds start in: the cut, 4 objects. Kept
+when it has fewer objects, with a note that says so (`Compiled.narrowed`). It may have no plan where the wide
+task has one (0050's own plan takes the finished omelette from the kitchen, and the plan needs the bacon the
+stitched one sprinkles): `plan` then plans the wide task. A scene's objects are the scene's: never counted small.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, replace
+
+from ..model.foon import ObjectNode
+from ..model.places import places
+from ..model.scene import SceneObject
+from .encoding import LevelInputs
+from .holder_words import task_aliases
+from .input_stitch import Stitched
+from .names import NameTable
+from .relational_init import completed_kitchen, scene_instances
+from .relational_reading import Reading, read_units
+from .task import Instance
+
+__all__ = ["TaskObjects", "task_objects"]
+
+
+@dataclass(frozen=True)
+class TaskObjects:
+    """A relational task's objects (`task_objects`): the units' `reading` (its counts), the names `table`, the
+    `instances`, the task's aliases (`alias`), the labels a node places something in or on (`placed`), the
+    network's nodes the kitchen implies objects start in (`implied`: the completion's holders, the nodes counted
+    small from), the task's `nodes`, the `kitchen` the counts are derived in, and the note when counted small."""
+
+    reading: Reading
+    table: NameTable
+    instances: tuple[Instance, ...]
+    alias: Mapping[str, str]
+    placed: frozenset[str]
+    implied: frozenset[ObjectNode]
+    nodes: frozenset[ObjectNode]
+    kitchen: frozenset[ObjectNode]
+    narrowed: str = ""
+
+
+def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
+                 overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False) -> TaskObjects:
+    """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
+    `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
+    `narrow`: counted small when that gives fewer objects. Counting small reads the units twice more."""
+    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None)
+    if not narrow or scene:
+        return wide
+    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), wide.implied)
+    if len(small.instances) >= len(wide.instances):
+        return wide
+    more = ", ".join(n.describe() for n in sorted(wide.implied))
+    return replace(small, narrowed=(
+        "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the holders its "
+                                                       "nodes imply start" if more else "")
+        + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
+
+
+def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
+             overrides: Mapping[str, int], reserved: tuple[str, ...], more: frozenset[ObjectNode] | None,
+             ) -> TaskObjects:
+    """The objects counted from the reading of the units (`read_units`, small with `more`), or the scene's."""
+    rd = read_units(inp, st, scene, stated, overrides, more)
+    f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts
+    table = NameTable()
+    for name in reserved:
+        table.reserve(name)
+    nodes = set(inp.candidates) | {n for n, _ in counts.at_node}
+    for u in units:
+        p = plans[u]
+        nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
+        nodes.update(n for _, n in p.emptied)
+    held_by: frozenset[ObjectNode] = frozenset()  # network nodes the holders the kitchen implies start in
+    if scene:  # the scene is the init: its objects, where they are, and the objects units make
+        instances = scene_instances(table, scene, counts.unmade)
+        alias = dict(task_aliases([f.units[u] for u in units], rd.have, [x.start for x in instances]))
+        placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
+    else:
+        named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
+        instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
+                                                              nodes, named, rd.silent, rd.filled)
+    more = more or frozenset()
+    return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
+                       inp.kitchen | more)

@@ -1,0 +1,80 @@
+"""Objects counted small first (`pddl/relational_objects.py`), and the wide count when that task has no plan
+(`planners.solve.plan`)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+from relational_checks import clean_dish_plan
+
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.planners import solve
+from foon2pddl.status import PlanStatus
+
+DATA = Path(__file__).parent / "data" / "foon-subgraphs"
+
+
+def _dish(name: str):
+    foon, _ = load([DATA / name])
+    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
+    return foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon)
+
+
+def test_the_brownie_cut_from_the_kitchen_is_counted_from_its_one_unit():
+    # ACT-0010: the cut takes the kitchen's `brownie (baked, on [cutting board])` with `cutting board (contains
+    # {brownie})`, which only the whole recipe makes; the init puts the kitchen's brownie on a board of its own in
+    # that node, so the plan is the cut alone, yet FOON's plan unfolded (and the stitched one) counted 92 objects
+    foon, kitchen, goal = _dish("ACT-0010-choco_brownie.txt")
+    wide = compile_goal(foon, kitchen, goal, "relational")
+    small = compile_goal(foon, kitchen, goal, "relational", narrow=True)
+    assert len(wide.task.instances) > 80 and not wide.narrowed
+    # the baking tray is the place the cut's output names (`in [baking tray]`), which no object of it is
+    assert sorted(x.label for x in small.task.instances) == ["baking tray", "brownie", "cutting board", "knife"]
+    assert "4 objects, where FOON's plan unfolded counts 92" in small.narrowed
+    assert any(x.startswith("objects: counted small") for x in small.notes)
+    outcome = clean_dish_plan(DATA / "ACT-0010-choco_brownie.txt")
+    assert len(outcome.task.instances) == 4 and [s.unit.motion.label for s in outcome.trace.steps] == ["cut"]
+
+
+def test_a_task_counted_small_with_no_plan_is_planned_with_the_wide_counts():
+    # 0050: FOON's own plan takes the finished omelette from the kitchen (no bacon); the relational task counted
+    # from it has no plan, the one counted from FOON's plan and the stitched one (bacon sprinkled) has
+    foon, kitchen, goal = _dish("0050-scrambled_eggs_with_bacon-cheese.txt")
+    small = compile_goal(foon, kitchen, goal, "relational", narrow=True)
+    wide = compile_goal(foon, kitchen, goal, "relational")
+    assert small.narrowed and len(small.task.instances) < len(wide.task.instances)
+    outcome = clean_dish_plan(DATA / "0050-scrambled_eggs_with_bacon-cheese.txt")
+    assert len(outcome.task.instances) == len(wide.task.instances)
+    assert any(x.startswith(f"objects: the {len(small.task.instances)} objects counted small gave no valid plan "
+                            "within 10 s (unsolvable): planned with the "
+                            f"{len(wide.task.instances)} FOON's plan unfolded counts") for x in outcome.decoded.notes)
+
+
+def test_the_small_task_gets_the_short_time_limit_and_the_wide_one_the_callers(monkeypatch):
+    real, limits = solve.run_planner, []
+
+    def first_times_out(*args, **kwargs):
+        limits.append(kwargs["time_limit"])
+        out = real(*args, **kwargs)
+        return replace(out, status=PlanStatus.TIMEOUT, plan=()) if len(limits) == 1 else out
+
+    monkeypatch.setattr(solve, "run_planner", first_times_out)
+    foon, kitchen, goal = _dish("ACT-0010-choco_brownie.txt")
+    outcome = solve.plan(foon, kitchen, goal, "relational", time_limit=60)
+    assert limits == [solve.RETRY_SECONDS, 60] and outcome.status == "solved"
+    assert len(outcome.task.instances) > 80
+    assert any("counted small gave no valid plan within 10 s (timeout)" in x for x in outcome.decoded.notes)
+
+
+def test_other_encodings_and_counts_that_do_not_shrink_plan_once(monkeypatch):
+    real, calls = solve.run_planner, []
+    monkeypatch.setattr(solve, "run_planner", lambda *a, **k: calls.append(k["time_limit"]) or real(*a, **k))
+    foon, kitchen, goal = _dish("0001-whipped_cream.txt")
+    for encoding in ("instances", "relational"):
+        outcome = solve.plan(foon, kitchen, goal, encoding, time_limit=60)
+        assert outcome.status == "solved" and not outcome.compiled.narrowed
+    assert calls == [60, 60]
