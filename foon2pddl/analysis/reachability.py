@@ -21,6 +21,7 @@ from itertools import chain, repeat
 
 from ..model.bulk import drain
 from ..model.foon import Foon, ObjectNode
+from ..model.memo import per_network
 from .fixpoint import UNREACHED, fire
 from .index import FoonIndex, index_of
 
@@ -102,9 +103,38 @@ def reachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode],
     node's round and first achiever depend only on such units, so the answers
     for the targets are the same; used per goal, it is much faster). Units whose
     index is in `skip` never fire (the units constraints remove, `constraints.py`).
+    The whole fixpoint (no `targets`, no `skip`) is remembered per network object for its last
+    `FIXPOINTS_KEPT` kitchens (`_fixpoints`): a Reachability is immutable, and the relational encoding
+    asks for one kitchen's fixpoint several times per goal, for every goal of a trial.
     """
-    ix = index_of(foon)
     kitchen = frozenset(kitchen_nodes)
+    if targets is not None or skip:
+        return _fixpoint(foon, kitchen, targets, skip)
+    kept = _fixpoints(foon)
+    if (hit := kept.get(kitchen)) is None:
+        reach = _fixpoint(foon, kitchen, None, ())
+        kept[kitchen] = (reach.node_round, reach.achiever, reach.fired, reach.unit_round)
+        while len(kept) > FIXPOINTS_KEPT:
+            kept.pop(next(iter(kept)))
+        return reach
+    return Reachability(foon, index_of(foon), kitchen, *hit)
+
+
+#: Whole fixpoints `reachable` keeps per network object, by kitchen (a trial's kitchen and its readings).
+FIXPOINTS_KEPT = 4
+
+
+@per_network
+def _fixpoints(foon: Foon) -> dict[frozenset[ObjectNode], tuple[tuple[int, ...], ...]]:
+    """The whole fixpoints of `foon` `reachable` keeps, by kitchen, oldest first: their rounds, achievers, fired
+    units and unit rounds (not the Reachability, which holds the network: the cache would keep it alive)."""
+    return {}
+
+
+def _fixpoint(foon: Foon, kitchen: frozenset[ObjectNode], targets: Iterable[ObjectNode] | None,
+              skip: Container[int]) -> Reachability:
+    """`reachable`, computed."""
+    ix = index_of(foon)
     scope = None if targets is None else frozenset(targets)
     kitchen_ids = ix.kitchen_ids(kitchen)
     in_kitchen = bytearray(len(ix.nodes))

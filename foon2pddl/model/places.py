@@ -17,6 +17,8 @@ plan's facts can make them disagree).
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 from .foon import ObjectNode, State
 from .physical import Relation
 
@@ -35,6 +37,11 @@ def place_state(state: State) -> tuple[Relation, str] | None:
     return Relation(state.label), state.related or state.ingredients[0]
 
 
+#: Nodes whose reading `places`, `listed` and `describes_contents` remember (nodes are immutable; an encoding reads each many times).
+READ_KEPT = 1 << 16
+
+
+@lru_cache(maxsize=READ_KEPT)
 def places(node: ObjectNode | None) -> tuple[tuple[Relation, str], ...]:
     """The places a node names, in order (`place_state`)."""
     if node is None:
@@ -48,6 +55,7 @@ def place_of(node: ObjectNode | None) -> tuple[Relation, str] | None:
     return named[0] if named else None
 
 
+@lru_cache(maxsize=READ_KEPT)
 def listed(node: ObjectNode | None) -> frozenset[str]:
     """The labels a node lists: the ingredients and related objects of its `contains` states, the related
     object of a `with` state (`baking tray (with [aluminium foil])`: the foil is on the tray), and the
@@ -61,6 +69,7 @@ def listed(node: ObjectNode | None) -> frozenset[str]:
     return frozenset(items - {node.label})
 
 
+@lru_cache(maxsize=READ_KEPT)
 def describes_contents(node: ObjectNode | None) -> bool:
     """Whether the node says what is in or on the object (`contains`, `empty`, `with`): a node that does not
     (`cutting board (dirty)`, `bowl (clean)`) is silent about its contents, and nothing is checked of them."""

@@ -82,7 +82,8 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
                  roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles,
                  stitched: bool = False) -> tuple[int, ...]:
     """`plan` with the ways back of the task's `units` put in (module doc)."""
-    order, spare = list(plan), [u for u in units if u not in set(plan)]
+    planned = set(plan)
+    order, spare = list(plan), [u for u in units if u not in planned]
     steps: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
     for v in spare:
         roles = roles_of(foon.units[v])

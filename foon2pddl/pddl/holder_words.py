@@ -109,11 +109,17 @@ def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
     for u in units:
         for name, label in unit_aliases(u):
             seen.setdefault(name, set()).add(label)
-    ordered, matches = sorted(have), {}  # a name's labels by the head-noun rule, read once per name
+    tails: dict[str, set[str]] = {}  # the labels by each of their ends after a blank: `salad` -> `carrot salad`
+    for lab in have:
+        for k, ch in enumerate(lab):
+            if ch == " ":
+                tails.setdefault(lab[k + 1:], set()).add(lab)
+    matches: dict[str, list[str]] = {}  # a name's labels by the head-noun rule (`head_of`), read once per name
     for node in starts:
         for name in (*listed(node), *(c for _, c in places(node))):
             if name not in matches:
-                matches[name] = [lab for lab in ordered if head_of(name, lab)]
+                ends = {name[k + 1:] for k, ch in enumerate(name) if ch == " "} & have
+                matches[name] = sorted((tails.get(name, set()) | ends) - {name})
             if name not in have and len(matches[name]) == 1:
                 seen.setdefault(name, set()).add(matches[name][0])
     return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)

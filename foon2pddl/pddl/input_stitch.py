@@ -201,6 +201,27 @@ def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[Ob
     return found, reads, beside, through
 
 
+#: Networks with stitched units `_wider` keeps per network object.
+WIDER_KEPT = 8
+
+
+@per_network
+def _widened(foon: Foon) -> dict[tuple[int, ...], Foon]:
+    """The networks `with_stitches` made of `foon`, by the stitched units they add (`_wider`)."""
+    return {}
+
+
+def _wider(foon: Foon, reads: dict[int, dict[ObjectNode, ObjectNode]], kept: tuple[int, ...]) -> Foon:
+    """`foon` with the stitched units `kept` added: one object per set of units, so what is kept per network object
+    (its indexes, its fixpoints) is computed once per set, not once per goal (an experiment's goals share a few)."""
+    made = _widened(foon)
+    if kept not in made:
+        while len(made) >= WIDER_KEPT:
+            made.pop(next(iter(made)))
+        made[kept] = Foon(foon.units + tuple(_sewn(foon, reads, u) for u in kept), foon.level)
+    return made[kept]
+
+
 def _sewn(foon: Foon, reads: dict[int, dict[ObjectNode, ObjectNode]], u: int) -> FunctionalUnit:
     """Unit `u` taking the made nodes its stitches read."""
     return replace(foon.units[u], inputs=tuple(reads[u].get(n, n) for n in foon.units[u].inputs))
@@ -314,6 +335,6 @@ def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stit
     used = set(needed)
     kept = [u for u in reads if (n + beside.index(u) if u in beside else u) in used]
     origin = {n + k: u for k, u in enumerate(kept)}
-    wider = Foon(foon.units + tuple(_sewn(foon, reads, u) for u in kept), foon.level) if kept else foon
+    wider = _wider(foon, reads, tuple(kept)) if kept else foon
     units = (*sorted(set(own) | {u for u in used if u < n and u not in kept}), *origin)
     return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed)
