@@ -145,3 +145,20 @@ def test_an_object_a_kitchen_container_lists_never_starts_in_a_node_only_a_unit_
                                                       n("flour", inside("bowl"))], dough)
     assert n("water", inside("cup")) in {s.node for s in outcome.trace.initial}
     assert [u.motion.label for u in outcome.tree.units] == ["turn on", "fill", "pour"]
+
+
+def test_a_kitchen_container_s_object_starts_in_a_node_the_kitchen_has_in_another_place():
+    # The universal FOON's tuna sandwich (ACT-0024-tuna_sandwich.txt:32): the kitchen's `bowl (contains
+    # {mayonnaise, onion})` (no unit makes it) is mixed with `onion (chopped, in [bowl])`, which units make only
+    # in another bowl; the kitchen has `onion (chopped, in [tray])`, that onion in another place, which FOON's
+    # tree takes (`kitchen_implied` over the whole kitchen, `Compiled.placed`). Read against the task's starting
+    # objects alone, the onion started in `onion (in [bowl])` and the mix was out of reach [unsolvable].
+    box, chopped = n("bowl", contains("mayonnaise", "onion")), n("onion", "chopped", inside("bowl"))
+    on_tray, mayo = n("onion", "chopped", inside("tray")), n("mayonnaise", inside("bowl"))  # no unit takes it
+    whole, cut = (n("onion", s, make_state("on", "cutting board")) for s in ("whole", "chopped"))
+    chop = FunctionalUnit((whole, n("knife")), Motion("chop"), (cut,))
+    move = FunctionalUnit((n("bowl", "empty"), cut), Motion("pick-and-place"), (n("bowl", contains("onion")), chopped))
+    spread = n("bowl", contains("spread"))
+    mix = FunctionalUnit((box, mayo, chopped), Motion("mix"), (spread,))
+    outcome = clean_unit_plan([chop, move, mix], [box, mayo, on_tray, whole, n("bowl", "empty"), n("knife")], spread)
+    assert chopped in {s.node for s in outcome.trace.initial}

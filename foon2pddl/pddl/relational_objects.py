@@ -90,7 +90,7 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
     else:
         named = {c for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
-                                                              nodes, named, rd.silent, rd.filled)
+                                                              nodes, named, rd.silent, rd.filled, inp.kitchen)
     more = more or frozenset()
     return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
                        inp.kitchen | more)
