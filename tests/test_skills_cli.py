@@ -297,7 +297,7 @@ def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding
 def test_the_default_skill_plan_falls_back_to_instances_when_the_relational_encoding_finds_none_and_says_so():
     # 0086 (apple turnover): the relational task has no plan (the remove takes `oven (on, contains {apple pie})`,
     # the bake leaves `oven (on, contains {baking tray})`; it had no relaxed solution until the cut's apple was read
-    # as the one the pick-and-place left (drops whole), and search now runs to the time limit), the instances one
+    # as the one the pick-and-place left (drops whole), and holder reachability now answers unsolvable), the instances one
     # solves; `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a skill plan
     # (0036, 0050, then ACT-0009 were the example until relational readings solved them or brought them to search)
     from conftest import SUBGRAPHS
