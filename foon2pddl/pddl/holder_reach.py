@@ -75,25 +75,27 @@ class _Reach:
         return not _missing(self, action.pre)
 
     def fire(self, action: Action) -> bool:
-        """Add what `action` may make; whether anything was new."""
+        """Add what `action` may make; whether anything was new (per-conditional from-states)."""
         size = (len(self.states), len(self.pairs), len(self.atoms), len(self.any_of))
-        before = _states_in(action.pre)
-        after: dict[str, set[str]] = {}  # term -> its possible states after the action
-        for term, s in _states_in(action.add).items():
-            after.setdefault(term, set()).add(s)
-        for c in action.conditional:
-            for term, s in _states_in(c.add).items():
-                after.setdefault(term, set()).add(s)
-            for term, s in _states_in(c.when).items():
-                before.setdefault(term, s)
+        pre = _states_in(action.pre)
+        entries = []  # (term, from-state, possible states after)
         unconditional = _states_in(action.add)
-        for term in after:
-            if term not in unconditional:  # a conditional change: it may also stay as it was
-                after[term].add(before.get(term, ANY))
-        self.states.update(s for ss in after.values() for s in ss if s != ANY)
+        for term, s in unconditional.items():
+            entries.append((term, pre.get(term, ANY), {s}))
+        for c in action.conditional:
+            when = _states_in(c.when)
+            for term, s in _states_in(c.add).items():
+                if term in unconditional:
+                    continue
+                was = pre.get(term, when.get(term, ANY))
+                entries.append((term, was, {s, was}))
+        self.states.update(s for _, _, ss in entries for s in ss if s != ANY)
+        after: dict[str, set[str]] = {}
+        for term, _, ss in entries:
+            after.setdefault(term, set()).update(ss)
 
         def post(term: str) -> set[str]:
-            return after.get(term) or {before.get(term, ANY)}
+            return after.get(term) or {pre.get(term, ANY)}
 
         added = [*action.add, *(x for c in action.conditional for x in c.add)]
         for a in added:
@@ -105,19 +107,19 @@ class _Reach:
                 else:
                     self.atoms.add(a)
         pinned = {p.args[1] for p in action.pre if p.predicate in HOLDS}
-        for p in action.pre:  # a content taken from a named holder is in no other: that pair alone carries it
+        for p in action.pre:
             if p.predicate in HOLDS and p.args[1] in after:
                 self.add_pairs(p.predicate, post(p.args[0]), post(p.args[1]))
-        changed = [(before.get(t, ANY), ss) for t, ss in after.items()]
-        loose = [(before.get(t, ANY), ss) for t, ss in after.items() if t not in pinned]
+        changed = [(w, ss) for _, w, ss in entries]
+        loose = [(w, ss) for t, w, ss in entries if t not in pinned]
         touched = set()
-        for pre, _ in changed:
-            touched.update(self.pairs if pre == ANY else (*self.by_holder.get(pre, ()), *self.by_holder.get(ANY, ())))
-        for pre, _ in loose:
-            touched.update(self.pairs if pre == ANY else (*self.by_content.get(pre, ()), *self.by_content.get(ANY, ())))
+        for w, _ in changed:
+            touched.update(self.pairs if w == ANY else (*self.by_holder.get(w, ()), *self.by_holder.get(ANY, ())))
+        for w, _ in loose:
+            touched.update(self.pairs if w == ANY else (*self.by_content.get(w, ()), *self.by_content.get(ANY, ())))
         for rel, h, x in touched:
-            holders = {h}.union(*(ss for pre, ss in changed if _fits(pre, h)))
-            contents = {x}.union(*(ss for pre, ss in loose if _fits(pre, x)))
+            holders = {h}.union(*(ss for w, ss in changed if _fits(w, h)))
+            contents = {x}.union(*(ss for w, ss in loose if _fits(w, x)))
             self.add_pairs(rel, holders, contents)
         return size != (len(self.states), len(self.pairs), len(self.atoms), len(self.any_of))
 
@@ -206,7 +208,8 @@ def drop_unreachable(task: PlanningTask) -> tuple[PlanningTask, str | None]:
     if task.encoding != "relational":
         return task, None
     reach, gone = _fixpoint(task)
-    kept = replace(task, actions=tuple(a for a in task.actions if a not in set(gone))) if gone else task
+    dropped = {a.name for a in gone}
+    kept = replace(task, actions=tuple(a for a in task.actions if a.name not in dropped)) if gone else task
     if not _missing(reach, task.goal):
         return kept, None
     nodes = dict(task.nodes)
