@@ -203,18 +203,20 @@ def unreachable(task: PlanningTask) -> tuple[Action, ...]:
 def drop_unreachable(task: PlanningTask) -> tuple[PlanningTask, str | None]:
     """`task` without the actions `unreachable` finds (the same plans; `task` itself when there are none),
     and, when the goal is then out of reach, why: the units whose holder and content no plan has together
-    (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached.
+    (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached, or
+    when no holder pair keeps it out of reach (nothing makes a node: the planner's relaxed analysis says so).
     A task of another encoding is returned as it is."""
     if task.encoding != "relational":
         return task, None
     reach, gone = _fixpoint(task)
     dropped = {a.name for a in gone}
     kept = replace(task, actions=tuple(a for a in task.actions if a.name not in dropped)) if gone else task
-    if not _missing(reach, task.goal):
+    causes = _causes(reach, gone, task.goal) if _missing(reach, task.goal) else []
+    if not causes:  # reached, or out of reach with no holder pair on the way: the planner's own analysis says so
         return kept, None
     nodes = dict(task.nodes)
     said = []
-    for a, miss in _causes(reach, gone, task.goal):
+    for a, miss in causes:
         before = _states_in(a.pre)
         if a.unit is not None and all(before.get(x, ANY) in nodes for x in miss.args):
             unit = task.units[a.unit]
