@@ -51,6 +51,10 @@ UNREACHED = "holder reachability"
 #: The time limit (s) of a plan with fewer objects than a plan to fall back on: `plan_restoring`'s second plan, and
 #: `plan`'s task counted small (or the caller's, when shorter).
 RETRY_SECONDS = 10.0
+#: The least time a second plan gets when the first used up the limit (so a call ends at most this much late).
+MIN_REST = 1.0
+#: The clock the time left is measured on (a module name, so a test can set it).
+_now = time.monotonic
 
 #: Phases in the order they run (the CLI adds `load` first).
 PHASES = ("load", "encode", "write", "translate", "search", "decode", "validate")
@@ -150,7 +154,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     (planner `holder reachability`, the message naming the units). The outcome keeps the task as compiled.
     A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
     valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
-    `time_limit`, and a note says so; the timings are then both plans'.
+    what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -189,7 +193,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     if not small.narrowed:
         return planned(small, time_limit)
     short = min(time_limit or RETRY_SECONDS, RETRY_SECONDS)
-    outs = _first_solved(lambda: planned(small, short), lambda: planned(compiled(False), time_limit))
+    started = _now()
+
+    def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
+        return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
+
+    outs = _first_solved(lambda: planned(small, short), lambda: planned(compiled(False), rest()))
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {len(small.task.instances)} objects counted small gave no valid plan within "
