@@ -8,17 +8,16 @@ one holder per object): no action applicable in a reachable state is dropped.
 
 from __future__ import annotations
 
-import itertools
-
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from node_words import contains, inside, n
+from task_search import explore
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.holder_reach import unreachable
-from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, Predicate, apply_action, type_closure
+from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, Predicate, type_closure
 from foon2pddl.planners.solve import plan
 
 BUTTER_PAN = n("cooking pan", contains("butter"))
@@ -107,22 +106,7 @@ def tasks(draw) -> PlanningTask:
 
 def _applied(task: PlanningTask) -> set[str]:
     """The actions some state reachable from `task.init` applies (exhaustive search)."""
-    types = type_closure(task)
-    objects = [o for o, _ in OBJECTS]
-    start = frozenset(task.init)
-    seen, stack, applied = {start}, [start], set()
-    while stack:
-        state = stack.pop()
-        for act in task.actions:
-            for values in itertools.product(*([o for o in objects if t in types[o]] for _, t in act.params)):
-                bind = dict(zip((v for v, _ in act.params), values, strict=True))
-                if all(Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) in state for a in act.pre):
-                    applied.add(act.name)
-                    nxt = frozenset(apply_action(set(state), act, bind, types))
-                    if nxt not in seen:
-                        seen.add(nxt)
-                        stack.append(nxt)
-    return applied
+    return explore(task, type_closure(task))[1]
 
 
 @settings(max_examples=500, deadline=None)

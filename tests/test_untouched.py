@@ -7,19 +7,19 @@ cream, whose problem leaves out the carton and the spatula while its plan still 
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import replace
 
 from conftest import SUBGRAPHS
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from task_search import explore
 
 from foon2pddl.io.files import load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.render import render
-from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, Predicate, apply_action, type_closure
+from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, Predicate, type_closure
 from foon2pddl.pddl.untouched import set_aside, untouched
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
@@ -75,22 +75,7 @@ def tasks(draw) -> PlanningTask:
 
 def _reachable(task: PlanningTask, types: dict[str, frozenset[str]]) -> set[frozenset[Atom]]:
     """Every state reachable from `task.init`, over the objects of `types` (exhaustive search)."""
-    objects = [o for o, ts in types.items() if o not in {c for c, _ in task.constants}]
-    constants = [c for c, _ in task.constants]
-    start = frozenset(task.init)
-    seen, stack = {start}, [start]
-    while stack:
-        state = stack.pop()
-        for act in task.actions:
-            pools = [[o for o in (*objects, *constants) if t in types[o]] for _, t in act.params]
-            for values in itertools.product(*pools):
-                bind = dict(zip((v for v, _ in act.params), values, strict=True))
-                if all(Atom(a.predicate, tuple(bind.get(x, x) for x in a.args)) in state for a in act.pre):
-                    nxt = frozenset(apply_action(set(state), act, bind, types))
-                    if nxt not in seen:
-                        seen.add(nxt)
-                        stack.append(nxt)
-    return seen
+    return explore(task, types)[0]
 
 
 @settings(max_examples=400, deadline=None)
