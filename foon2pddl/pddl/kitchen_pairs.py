@@ -65,21 +65,22 @@ def _beside(maker: FunctionalUnit, label: str, holder: str | None = None) -> Obj
 def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[int] | None = None) -> tuple[Pair, ...]:
     """Every pair of the module doc that the units `takers` (indexes; default all) take, in unit order; makers
     from the whole network."""
-    makers: dict[ObjectNode, list[FunctionalUnit]] = {}
-    for u in foon.units:
-        for o in u.outputs:
-            makers.setdefault(o, []).append(u)
+    made = foon.producers
+
+    def makers(node: ObjectNode) -> list[FunctionalUnit]:
+        return [foon.units[i] for i in made[node]]
+
     out: list[Pair] = []
     for u in (foon.units if takers is None else [foon.units[i] for i in sorted(takers)]):
         for box in u.inputs:
-            if box in kitchen or box not in makers:
+            if box in kitchen or box not in made:
                 continue
             for held in u.inputs:
-                if (held in kitchen or held not in makers or held.label == box.label or held.label not in listed(box)
-                        or box.label not in {h for _, h in places(held)} or set(makers[box]) & set(makers[held])):
+                if (held in kitchen or held not in made or held.label == box.label or held.label not in listed(box)
+                        or box.label not in {h for _, h in places(held)} or set(makers(box)) & set(makers(held))):
                     continue
-                boxes = [(m, _beside(m, held.label, box.label)) for m in dict.fromkeys(makers[box])]
-                helds = [(m, _beside(m, box.label)) for m in dict.fromkeys(makers[held])]
+                boxes = [(m, _beside(m, held.label, box.label)) for m in dict.fromkeys(makers(box))]
+                helds = [(m, _beside(m, box.label)) for m in dict.fromkeys(makers(held))]
                 if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
                         o is not None and o != box and box not in m.inputs for m, o in helds):
                     out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]

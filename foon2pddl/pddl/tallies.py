@@ -111,7 +111,7 @@ def tallied(task: PlanningTask) -> PlanningTask:
     facts = Counter(atom.args[1] for atom in task.initial_facts if atom.predicate == IS and len(atom.args) == 2)
     # the most objects that can be in a state: those there at first and those of a type a parameter brings in
     types = type_closure(task)
-    entering = {(s, t) for a in task.actions for s, k in _net(a).items() if k > 0
+    entering = {(s, t) for a, net in zip(task.actions, nets, strict=True) for s, k in net.items() if k > 0
                 for atom in a.add if atom.predicate == IS and atom.args[1] == s
                 for v, t in a.params if v == atom.args[0]}
     there = {(atom.args[1], atom.args[0]) for atom in task.initial_facts if atom.predicate == IS and len(atom.args) == 2}
