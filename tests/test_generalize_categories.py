@@ -11,7 +11,7 @@ from conftest import SHARED, SUBGRAPHS
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.categories import coverage, parse_index, shipped_index
-from foon2pddl.generalize.compress import abstract_goal, abstract_kitchen, compress
+from foon2pddl.generalize.compress import abstract_goal, abstract_kitchen, abstract_node, compress
 from foon2pddl.io.files import load
 from foon2pddl.io.goal_files import parse_goal_spec
 from foon2pddl.io.inputs import example_path
@@ -91,6 +91,35 @@ def test_compress_merges_units_of_one_category():
     assert {n.label for n in u.inputs} == {"lemons and limes", "cutting tools"}
     assert [s.path for s in u.sources] == ["lemon.foon", "lime.foon"]  # provenance joined
     assert {n.label for n in o.inputs} == {"oranges", "cutting tools"}
+
+
+def test_compress_reads_a_place_word_as_the_unit_reads_it():
+    # the apple turnover's pour (0086:195): `butter (melted, in [pan])` where the unit's pan is the `cooking pan`
+    # (rule 0, the head noun). `pan` has no category of its own: generalized, it is the cooking pan's,
+    # `cookware`, not a `pan` no object of the GEN unit is; the reading is reported at the unit's file:line
+    pan = make_node("cooking pan", [make_state("contains", "", ["butter"]), make_state("on", "stove")])
+    butter = make_node("butter", [make_state("melted"), make_state("in", "pan")])
+    apple = make_node("apple", [make_state("chopped"), make_state("in", "bowl")])
+    out = (make_node("cooking pan", [make_state("contains", "", ["apple", "butter"]), make_state("on", "stove")]),
+           make_node("apple", [make_state("chopped"), make_state("in", "cooking pan")]))
+    pour = FunctionalUnit((pan, butter, apple), Motion("pour"), out, (Source("turnover.foon", 195),))
+    ix = shipped_index()
+    c = compress(Foon((pour,)), ix)
+    (u,) = c.foon.units
+    assert make_node("dairy", [make_state("melted"), make_state("in", "cookware")]) in u.inputs
+    assert c.readings == ("turnover.foon:195: pan read as cooking pan, so cookware",)
+    # the node is one thing wherever it is: a kitchen holding it (and a goal asking for it) reads it so too
+    assert abstract_node(butter, c.mapping, c.names) in abstract_kitchen(Kitchen(frozenset({butter})), ix,
+                                                                         c.names).nodes
+    assert abstract_node(butter, c.mapping, c.names) == make_node("dairy", [make_state("melted"),
+                                                                            make_state("in", "cookware")])
+    # a place word the unit does not read (no role's label ends in it) stays as it is, and nothing is reported
+    lid = FunctionalUnit((make_node("pot"), make_node("pot lid")), Motion("cover"),
+                         (make_node("pot", [make_state("covered")]), make_node("pot lid", [make_state("on", "pan")])),
+                         (Source("rice.foon", 131),))
+    c = compress(Foon((lid,)), shipped_index())
+    assert make_node("lids and covers", [make_state("on", "pan")]) in c.foon.units[0].outputs
+    assert c.readings == ()
 
 
 def test_abstract_kitchen_and_goal():

@@ -91,6 +91,11 @@ def test_generalize_writes_category_network(run, tmp_path):
     assert r.exit_code == 0, r.stderr
     labels = {n.label for u in parse_file(out).foon.units for n in u.inputs}
     assert "lemons and limes" in labels and "lemon" not in labels
+    # a name read as its unit's object is generalized as it, and the reading is a note at the unit's file:line
+    r = run("generalize", "tests/data/foon-subgraphs/0086-apple_turnover.txt", "-o", str(out))
+    assert r.exit_code == 0, r.stderr
+    assert "note: category reading: tests/data/foon-subgraphs/0086-apple_turnover.txt:195: pan read as cooking " \
+           "pan, so cookware\n" in r.stderr
 
 
 def test_network_option_on_retrieve(run):

@@ -41,6 +41,8 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
         emit_network(c.foon, fmt, provenance, header, output)
         table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}))
     click.echo(table, err=True, nl=False)
+    for r in c.readings:  # a name read as its unit's object, generalized as that object
+        click.echo(f"note: category reading: {r}", err=True)
 
 
 @main.command("categories")

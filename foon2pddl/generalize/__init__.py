@@ -6,7 +6,7 @@
   ancestor, broad ancestors rejected); `modes`: the registry of modes; `pairs`: `expand --pairs`;
 - `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
 - `categories`: the shipped category index; `extend`: `categories --extend`; `compress`: FOON-GEN,
-  objects replaced by categories;
+  objects replaced by categories (`readings`: a name read as its unit's object takes its category);
 - `network`: the `--network reg|exp|gen` view used by retrieve, compile and plan; `stats`: tables.
 The lifted FOON-GEN PDDL encoding (categories as types) is `pddl.encode_lifted`.
 See docs/generalization.md.
@@ -14,5 +14,5 @@ See docs/generalization.md.
 
 #: The package's modules (import them by name).
 __all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "grounding", "hints", "modes",
-           "network", "pairs", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
+           "network", "pairs", "readings", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
            "wup"]

@@ -7,21 +7,24 @@ identical are merged (`model.foon.dedupe_units`, provenance joined). A kitchen a
 goal are abstracted the same way, so native retrieval runs unchanged on GEN.
 Two objects of one category in one unit become one node or ingredient: the
 compression the seed paper reports, and why `pddl/encode_lifted.py` keeps concrete
-objects as typed parameters instead.
+objects as typed parameters instead. A name a node uses for an object of its unit under
+another word (`butter (in [pan])` beside the `cooking pan`) takes that object's category
+when it has none of its own (`readings.py`); kitchen and goal nodes are read the same.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 from ..model.constraints import node_labels
 from ..model.containment import is_auxiliary
-from ..model.foon import Foon, dedupe_units, make_state
+from ..model.foon import Foon, ObjectNode, dedupe_units, make_state
 from ..model.goal import Goal, GoalSpec, spec_of_node
 from ..model.kitchen import Kitchen
 from .categories import CategoryIndex
-from .substitute import substitute_node, substitute_unit, unit_labels
+from .readings import node_readings
+from .substitute import node_mapping, substitute_node, substitute_unit, unit_labels
 
 
 def category_map(labels: Iterable[str], index: CategoryIndex) -> dict[str, str]:
@@ -36,11 +39,15 @@ def category_map(labels: Iterable[str], index: CategoryIndex) -> dict[str, str]:
 
 @dataclass(frozen=True)
 class Compression:
-    """The generalized network, the label mapping used and the size before."""
+    """The generalized network, the label mapping used, the size before, and the names nodes use read as
+    their unit's object (`names`: node -> {name: category}; `readings`: `FILE:LINE: pan read as cooking pan,
+    so cookware`, sorted)."""
 
     foon: Foon
     mapping: dict[str, str]
     original_units: int
+    names: dict[ObjectNode, dict[str, str]]
+    readings: tuple[str, ...] = ()
 
     @property
     def removed_units(self) -> int:
@@ -53,15 +60,26 @@ def compress(foon: Foon, index: CategoryIndex) -> Compression:
     for u in foon.units:
         labels |= unit_labels(u)
     mapping = category_map(sorted(labels), index)
-    units = dedupe_units(substitute_unit(u, mapping) for u in foon.units)
-    return Compression(Foon(units, foon.level), mapping, len(foon.units))
+    names, readings = node_readings(foon.units, mapping)
+    units = dedupe_units(substitute_unit(u, mapping, per_node=names) for u in foon.units)
+    return Compression(Foon(units, foon.level), mapping, len(foon.units), names, readings)
 
 
-def abstract_kitchen(kitchen: Kitchen, index: CategoryIndex) -> Kitchen:
-    """The kitchen with every object replaced by its category (nodes that coincide merge)."""
+def abstract_kitchen(kitchen: Kitchen, index: CategoryIndex,
+                     names: Mapping[ObjectNode, Mapping[str, str]] | None = None) -> Kitchen:
+    """The kitchen with every object replaced by its category (nodes that coincide merge); a node of the
+    network also with the names its units read (`names`, `Compression.names`)."""
     labels = set().union(*(node_labels(n) for n in kitchen.nodes)) - {""}
     mapping = category_map(sorted(labels), index)
-    return Kitchen(frozenset(substitute_node(n, mapping) for n in kitchen.nodes), kitchen.level, kitchen.source)
+    return Kitchen(frozenset(abstract_node(n, mapping, names) for n in kitchen.nodes), kitchen.level,
+                   kitchen.source)
+
+
+def abstract_node(node: ObjectNode, mapping: Mapping[str, str],
+                  names: Mapping[ObjectNode, Mapping[str, str]] | None = None) -> ObjectNode:
+    """`node` with its labels replaced by `mapping` (label -> category) and its own `names`, as FOON-GEN
+    reads it in its units."""
+    return substitute_node(node, node_mapping(node, mapping, names))
 
 
 def abstract_goal(spec: GoalSpec, index: CategoryIndex) -> GoalSpec:

@@ -17,8 +17,8 @@ commands all read `NETWORKS`, and no other module names a kind. Adding a kind is
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
 from enum import StrEnum
 from pathlib import Path
 
@@ -30,7 +30,7 @@ from ..model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project
 from .categories import CategoryIndex, load_index
-from .compress import abstract_goal, abstract_kitchen, category_map, compress
+from .compress import abstract_goal, abstract_kitchen, abstract_node, category_map, compress
 from .expand import DEFAULT_THRESHOLD, expand
 from .modes import DEFAULT_MODE
 from .substitute import substitute_node
@@ -60,6 +60,7 @@ class NetworkView:
     index: CategoryIndex | None = None
     note: str = ""
     map_node: Callable[[ObjectNode], ObjectNode] = _same  # a kitchen node as this view sees it
+    names: Mapping[ObjectNode, Mapping[str, str]] = field(default_factory=dict)  # GEN: `Compression.names`
 
     def kitchen_strays(self, nodes: Iterable[ObjectNode], reg: Foon) -> list[ObjectNode]:
         """The kitchen `nodes` (at this view's level) that are neither a node of `reg` nor, mapped, of this view."""
@@ -77,11 +78,12 @@ class NetworkView:
 
     def map_kitchen(self, kitchen: Kitchen) -> Kitchen:
         """Another (concrete) kitchen as this network sees it."""
-        return kitchen if self.index is None else abstract_kitchen(kitchen, self.index)
+        return kitchen if self.index is None else abstract_kitchen(kitchen, self.index, self.names)
 
     def goal_of(self, node: ObjectNode) -> Goal:
         """The goal asking for the concrete `node`, as this network sees it (UsageError if it has no match)."""
-        return resolve_goal(self.map_goal(spec_of_node(node)), self.foon)
+        read = self.names.get(node)  # GEN: the names its units read as their object's category
+        return resolve_goal(self.map_goal(spec_of_node(substitute_node(node, read) if read else node)), self.foon)
 
     def concrete_goal(self, node: ObjectNode) -> Goal:
         """The goal asking for the concrete `node` on the concrete network."""
@@ -182,12 +184,13 @@ def _wordnet() -> None:
 def _gen(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
     ix = options.index or load_index()
     c = compress(net.foon, ix)
-    note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units"
+    note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units" + (
+        f"; {len(c.readings)} names read as their unit's object (`generalize` lists them)" if c.readings else "")
     labels = set().union(*(node_labels(n) for n in kitchen.nodes))
     mapping = category_map(sorted(labels - {""}), ix)
-    return NetworkView(_GEN, project(c.foon, level), abstract_kitchen(kitchen, ix),
+    return NetworkView(_GEN, project(c.foon, level), abstract_kitchen(kitchen, ix, c.names),
                        lambda spec: abstract_goal(spec, ix), net.at(level), ix, note,
-                       lambda node: substitute_node(node, mapping))
+                       lambda node: abstract_node(node, mapping, c.names), c.names)
 
 
 DEFAULT_NETWORK, _EXP, _GEN = "reg", "exp", "gen"

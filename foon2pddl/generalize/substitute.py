@@ -43,12 +43,20 @@ def unit_labels(unit: FunctionalUnit) -> frozenset[str]:
     return frozenset().union(*(node_labels(n) for n in (*unit.inputs, *unit.outputs)))
 
 
+def node_mapping(node: ObjectNode, mapping: Mapping[str, str],
+                 per_node: Mapping[ObjectNode, Mapping[str, str]] | None = None) -> Mapping[str, str]:
+    """`mapping` with the names `per_node` gives `node` itself added (FOON-GEN's readings, `readings.py`)."""
+    extra = per_node.get(node) if per_node else None
+    return {**mapping, **extra} if extra else mapping
+
+
 def substitute_unit(unit: FunctionalUnit, mapping: Mapping[str, str], note: str | None = None,
-                    to: str | None = None) -> FunctionalUnit:
-    """`unit` with labels replaced in every node; `note` marks its sources `expanded_from` (and `to`,
-    the label that replaced it, `expanded_to`)."""
-    ins = tuple(dict.fromkeys(substitute_node(n, mapping) for n in unit.inputs))
-    outs = tuple(dict.fromkeys(substitute_node(n, mapping) for n in unit.outputs))
+                    to: str | None = None,
+                    per_node: Mapping[ObjectNode, Mapping[str, str]] | None = None) -> FunctionalUnit:
+    """`unit` with labels replaced in every node (a node in `per_node` also with its own names replaced);
+    `note` marks its sources `expanded_from` (and `to`, the label that replaced it, `expanded_to`)."""
+    ins = tuple(dict.fromkeys(substitute_node(n, node_mapping(n, mapping, per_node)) for n in unit.inputs))
+    outs = tuple(dict.fromkeys(substitute_node(n, node_mapping(n, mapping, per_node)) for n in unit.outputs))
     sources = unit.sources
     if note is not None:
         sources = tuple(Source(s.path, s.line, s.url, note, to) for s in unit.sources) \

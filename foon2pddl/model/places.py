@@ -22,10 +22,16 @@ from functools import lru_cache
 from .foon import ObjectNode, State
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "describes_contents", "listed", "place_of", "place_state", "places"]
+__all__ = ["CONTENT_STATES", "describes_contents", "head_of", "listed", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
+
+
+def head_of(name: str, label: str) -> bool:
+    """`name` and `label` name one thing by the head-noun rule: one is the other's last words (`salad` /
+    `carrot salad`, `pan` / `cooking pan`, `black pepper` / `pepper`)."""
+    return label != name and (label.endswith(" " + name) or name.endswith(" " + label))
 
 
 def place_state(state: State) -> tuple[Relation, str] | None:

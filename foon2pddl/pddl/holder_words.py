@@ -9,17 +9,11 @@ from collections.abc import Iterable
 from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
-from ..model.places import listed, places
+from ..model.places import head_of, listed, places
 from .encoding import short_path, unit_where
 from .pairing import unit_roles
 
 __all__ = ["aliased", "head_of", "mismatches", "reported", "task_aliases", "unit_aliases"]
-
-
-def head_of(name: str, label: str) -> bool:
-    """`name` and `label` name one thing by the head-noun rule: one is the other's last words (`salad` /
-    `carrot salad`, `pan` / `cooking pan`, `black pepper` / `pepper`)."""
-    return label != name and (label.endswith(" " + name) or name.endswith(" " + label))
 
 
 @lru_cache(maxsize=1 << 14)
