@@ -243,3 +243,25 @@ def test_no_stitch_reads_an_input_the_unit_filling_its_container_took_itself():
     blind = FunctionalUnit((n("bowl", contains("cheddar")), n("mustard", "ground")), Motion("pour"), (both,))
     assert [(s.node, s.reads_as) for s in stitches(Foon((other, blind, mix)), range(3))] == [
         (ground, n("mustard", inside("bowl")))]
+
+
+def test_of_several_units_making_the_container_the_stitch_reads_the_one_whose_node_the_input_only_adds_to():
+    # the universal FOON's omelettes (0050:288 among 0042, 0063, 0064's): four cooks each leave `cooking pan
+    # (contains {omelette})`, each with an omelette of its own; the pour takes the omelette listing bacon, cheese,
+    # egg mixture and onion, which only the cook leaving `omelette (contains {bacon}, ...)` is read as (the others
+    # list what the input does not say: a list for another). Before, the four were ambiguous and nothing stitched.
+    pan = n("cooking pan", contains("omelette"))
+    raw = n("cooking pan", contains("egg mixture"))
+
+    def cook(*items: str) -> FunctionalUnit:
+        return FunctionalUnit((raw, n("egg mixture", inside("cooking pan"))), Motion("cook"),
+                              (pan, n("omelette", contains(*items), "cooked", inside("cooking pan"))))
+
+    ours, others = cook("bacon"), [cook("black pepper", "salt"), cook("milk", "salt")]
+    full = n("omelette", contains("bacon", "cheese", "egg mixture", "onion"), "cooked", inside("cooking pan"))
+    pour = FunctionalUnit((pan, full, n("plate", "empty")), Motion("pour"), (n("plate", contains("omelette")),))
+    net = Foon((*others, ours, pour))
+    assert [(s.unit, s.reads_as) for s in stitches(net, range(4))] == [(3, ours.outputs[1])]
+    # two such candidates stay ambiguous
+    twin = cook("bacon", "cheese")
+    assert stitches(Foon((*others, ours, twin, pour)), range(5)) == ()

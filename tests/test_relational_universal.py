@@ -45,6 +45,17 @@ def test_the_universal_bread_toast_is_clean(universal):
     assert replay(outcome.trace).ok
 
 
+def test_the_universal_omelette_is_valid_and_clean(universal):
+    # 0050's pour (line 288) reads the omelette its own cook left, of the four cooks leaving the pan's node
+    # (`input_stitch`), and the second pan goes onto the stove the bacon's pan was taken off (`trace_check.emptied`)
+    foon, _ = universal
+    dish = next(x for x in sorted(foon.nodes) if x.dish is not None and x.describe().startswith("omelette (contains {bacon"))
+    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=120)
+    assert outcome.status == "solved", outcome.message
+    assert replay(outcome.trace).ok
+    assert any("0050-scrambled_eggs_with_bacon-cheese.txt:288: pour takes omelette" in x for x in outcome.compiled.notes)
+
+
 def test_the_bench_plans_the_universal_foons_reachable_dishes_in_order():
     # `python -m bench.pddl_relational --universal`: issue 21's universal floor, one row per goal and encoding
     rows = list(universal_rows(SHARED, 60.0, limit=1, encodings=("relational",)))

@@ -6,6 +6,7 @@ planner plans alike) and is checked the same way, by simulation.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 from .containment import Containment, is_auxiliary, is_inference, rule_holds
@@ -49,8 +50,12 @@ class Validation:
 
 
 def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNode],
-             containment: Containment | str = Containment.STRICT) -> Validation:
+             containment: Containment | str = Containment.STRICT,
+             beside: Sequence[Iterable[ObjectNode]] = ()) -> Validation:
     """Run the units in order: every input must be available when its unit runs, and the goal at the end.
+
+    `beside`: per unit, nodes available after it beside its outputs (a holder a relational plan's step emptied
+    that FOON's unit does not list: `planners.trace_check.emptied`).
 
     Under `Containment.INFER` the containment rule (`containment.rule_holds`) applies: an
     inference step must hold by the rule, and a missing container input is inferred when
@@ -88,6 +93,7 @@ def validate(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode] | set[ObjectNo
                 + "; ".join(n.describe() for n in missing)
             )
         available.update(unit.outputs)
+        available.update(beside[step - 1] if step <= len(beside) else ())
     if infer and tree.goal not in available and rule_holds(tree.goal, available, tree.level):
         note([tree.goal])
         available.add(tree.goal)

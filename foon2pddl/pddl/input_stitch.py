@@ -15,7 +15,8 @@ A stitch reads the input as the made node, on FOON's evidence in the unit itself
 * the made node M read for N: of label L, at the same place (read through its unit's names), made by a unit
   other than this one, and the latest such node (no other unit takes it and leaves an L at that place: the pizza's parsley is sprinkled on before the pick-and-place, so the pizza before the
   sprinkle is not read for the pizza it takes); one made by a unit that makes the container's node, else the
-  only one, unless a unit making the container's node took N itself (it put that very object there, and the
+  only one, of those the input only adds words to (`_words_only_added`: four cooks leave the universal FOON's
+  `cooking pan (contains {omelette})`, and only one omelette lists no more than the pour's), unless a unit making the container's node took N itself (it put that very object there, and the
   relational reading moves it: on the universal FOON the grilled cheese's pour takes `mustard (ground, in
   [bowl])` into the bowl of cheddar, and the mix takes that node again; the potato salad's `mustard (in
   [bowl])`, the only other, ran the plan through the stitches through the potato salad). A made node that names no place is where the one output of its unit that lists it is (the pour
@@ -171,8 +172,9 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
                      and not _changed_there(foon, task, m, p, u)]
             by_holder = [m for m in cands if any(set(made[h]) & set(made[m]) for h in holders)]
             took = any(n in foon.units[b].inputs for h in holders for b in made[h])  # it put this very object there
-            pick = by_holder if by_holder or took else cands
-            if holders and len(pick) == 1 and _words_only_added(n, pick[0]):
+            # of several, the one the input only adds words to (the omelette listing bacon, not black pepper)
+            pick = [m for m in (by_holder if by_holder or took else cands) if _words_only_added(n, m)]
+            if holders and len(pick) == 1:
                 found.append(Stitch(u, n, pick[0], unit))
             elif len(left := [m for m in cands if m not in foon.consumers and said_less(n, m) and any(
                     set(made[m]) & set(made.get(x, ())) for x in unit.inputs if x != n)]) == 1:

@@ -35,7 +35,7 @@ from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
 from .result import step_action
-from .trace_check import check_states
+from .trace_check import check_states, emptied, emptied_notes
 
 __all__ = ["Decoded", "PlanDecodeError", "check", "decode", "finished", "goal_node", "plan_tree", "plan_units",
            "run_plan", "simulate_plan", "to_tree", "up_validation", "used_steps"]
@@ -266,16 +266,24 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
     # a task compiled under --containment infer holds inference units: validate under the same rule. The tree is
     # checked from the kitchen as given, not as an encoding completes it: an object the completion starts in a
     # state some unit makes (`macaroni (cooked, in [pot])`) must not let a plan skip the cooking; only what the
-    # kitchen's own nodes say is where they say (`Compiled.placed`) is added
-    decoded = Decoded(tree, validate(tree, kitchen_nodes | compiled.placed, containment_of(compiled.task.units)),
-                      simulate_plan(compiled.task, steps), up, compiled.foon_semantics, compiled.notes + notes,
-                      steps=used_steps(compiled, steps, plain))
+    # kitchen's own nodes say is where they say (`Compiled.placed`) is added; with holders, each step's emptied
+    # holders too (`trace_check.emptied`: the stove a pan is taken off, which FOON's unit does not list)
+    trace, broken = None, None
+    if compiled.replay is not None:
+        try:
+            trace = compiled.replay(compiled.task, steps)
+        except PlanDecodeError as exc:
+            broken = Validation(False, (str(exc),))
+    beside = emptied(trace) if trace is not None and compiled.holders else ()
+    beside = beside if len(beside) == len(tree.units) else ()
+    notes += emptied_notes(trace, kitchen_nodes | compiled.placed) if beside else ()
+    decoded = Decoded(tree, validate(tree, kitchen_nodes | compiled.placed, containment_of(compiled.task.units),
+                                     beside), simulate_plan(compiled.task, steps), up, compiled.foon_semantics,
+                      compiled.notes + notes, steps=used_steps(compiled, steps, plain))
     if compiled.replay is None:  # an encoding with no physical objects
         return decoded
-    try:
-        trace = compiled.replay(compiled.task, steps)
-    except PlanDecodeError as exc:
-        return replace(decoded, trace_check=Validation(False, (str(exc),)))
+    if trace is None:
+        return replace(decoded, trace_check=broken)
     wanted = tuple(candidates) if candidates is not None else (tree.goal,)
     if not compiled.holders:  # no holders modelled: say what the physical replay finds with inferred ones
         from .instance_physical import replay_note
