@@ -18,7 +18,7 @@ from foon2pddl.io.files import expand_paths
 from foon2pddl.io.foon_lines import _classify, _parse_state, parse_objects, plain_state
 from foon2pddl.io.parser import _comment_head, _plain, _Reader, parse_file, parse_text
 from foon2pddl.io.writer import write_foon
-from foon2pddl.model.foon import State, make_node, make_state, node_table
+from foon2pddl.model.foon import Motion, State, make_node, make_source, make_state, make_unit, node_table
 
 UNIT = "O1\tbowl\t1\nS1\tempty\nO2\tegg\t1\nS2\twhole\nM1\tcrack\t0:01\t0:05\nO1\tbowl\t0\nS3\tcontains\t{egg}\n"
 
@@ -448,16 +448,18 @@ def test_plain_state_reads_what_the_field_reader_reads(raw):
         assert fast is not None
 
 
-def test_states_and_nodes_keep_their_hashes_across_pickling():
-    """States and nodes cache their hash; a pickle carries no hash (string hashes differ per process) and the
-    copy hashes and compares as the original."""
+def test_states_nodes_and_units_keep_their_hashes_across_pickling():
+    """States, nodes and units cache their hash; a pickle carries no hash (string hashes differ per process) and
+    the copy hashes and compares as the original."""
     import pickle
 
     state = make_state("Contains", "", ["b", "a"])
     node = make_node("Bowl", [state, make_state("in", "sink")], motion_flag=1)
+    unit = make_unit((node,), Motion("stir"), (make_node("bowl"),), (make_source("r.txt", 3),))
     assert hash(state) == hash((state.label, state.related, state.ingredients))
     assert hash(node) == hash((node.label, node.states))
-    for x in (state, node):
+    assert hash(unit) == hash((unit.inputs, unit.motion, unit.outputs)) and unit.key  # the key is cached too
+    for x in (state, node, unit):
         copy = pickle.loads(pickle.dumps(x))
         assert b"_hash" not in pickle.dumps(x)
         assert copy == x and hash(copy) == hash(x) and {copy: 1}[x] == 1

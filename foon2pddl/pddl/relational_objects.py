@@ -55,10 +55,11 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
     `narrow`: counted small when that gives fewer objects. Counting small reads the units twice more."""
-    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None)
+    memo: dict = {}  # the units' readings and counts both countings share (`read_units`)
+    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo)
     if not narrow or scene:
         return wide
-    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), wide.implied)
+    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), wide.implied, memo)
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(wide.implied))
@@ -70,9 +71,10 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
 
 def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
              overrides: Mapping[str, int], reserved: tuple[str, ...], more: frozenset[ObjectNode] | None,
-             ) -> TaskObjects:
-    """The objects counted from the reading of the units (`read_units`, small with `more`), or the scene's."""
-    rd = read_units(inp, st, scene, stated, overrides, more)
+             memo: dict) -> TaskObjects:
+    """The objects counted from the reading of the units (`read_units`, small with `more`, sharing `memo`), or the
+    scene's."""
+    rd = read_units(inp, st, scene, stated, overrides, more, memo)
     f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts
     table = NameTable()
     for name in reserved:

@@ -76,34 +76,56 @@ def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, Funct
 
 
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
-               overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None) -> Reading:
+               overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
+               memo: dict | None = None) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
     kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
     give; `narrow`: count small, from FOON's own plan alone (no stitched one beside it) in the kitchen with these
-    nodes too (`relational_objects`)."""
+    nodes too (`relational_objects`). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
+    `overrides` (counted wide, then small): the units' readings by speakers and the counts by plan and kitchen are
+    made once (the same values: read twice, they cost a GEN trial's encoding a third more)."""
+    memo = {} if memo is None else memo
     f, units = st.foon, st.units
-    task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
-    filled, labels = frozenset().union(*(gained(f.units[u]) for u in units)), frozenset(n.label for n in task_nodes)
-    holding = holding_labels(f.units[u] for u in units)
+    if "task" not in memo:
+        task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
+        memo["task"] = (task_nodes, frozenset().union(*(gained(f.units[u]) for u in units)),
+                        frozenset(n.label for n in task_nodes), holding_labels(f.units[u] for u in units))
+    task_nodes, filled, labels, holding = memo["task"]
+
+    def quiet(speakers: Sequence[int]) -> frozenset[str]:
+        key = ("silent", tuple(speakers))
+        if key not in memo:
+            memo[key] = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
+        return memo[key]
+
+    def plans_of(silent: frozenset[str]) -> tuple:  # the units' reading with these holders silent, made once
+        key = ("plans", silent)
+        if key not in memo:
+            plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
+                                                                 holding) for u in units})
+            plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
+                                                 if c in inp.candidates})
+            by_unit = {f.units[u]: p for u, p in plans.items()}
+            roles: dict[FunctionalUnit, tuple] = {}
+
+            def roles_of(unit):  # asked once per unit and plan position by the counts: read once
+                if unit not in roles:
+                    roles[unit] = count_roles(by_unit[unit]) if unit in by_unit else ()
+                return roles[unit]
+            memo[key] = plans, drops, said, roles_of
+        return memo[key]
 
     def read(speakers: Sequence[int]) -> Reading:
-        silent = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
-        plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
-                                                             holding) for u in units})
-        plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
-                                             if c in inp.candidates})
-        by_unit = {f.units[u]: p for u, p in plans.items()}
-
-        roles: dict[FunctionalUnit, tuple] = {}
-
-        def roles_of(unit):  # asked once per unit and plan position by the counts: read once
-            if unit not in roles:
-                roles[unit] = count_roles(by_unit[unit]) if unit in by_unit else ()
-            return roles[unit]
+        silent = quiet(speakers)
+        plans, drops, said, roles_of = plans_of(silent)
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-            return derive_counts(net, need, inp.kitchen | (narrow or frozenset()), inp.candidates, stated=stated,
-                                 overrides=overrides, roles_of=roles_of, together=True, stitched=True)
+            key = ("counts", id(net), need, id(roles_of), narrow or None)  # `net`: `inp.foon` or `st.through`
+            if key not in memo:
+                memo[key] = derive_counts(net, need, inp.kitchen | (narrow or frozenset()), inp.candidates,
+                                          stated=stated, overrides=overrides, roles_of=roles_of, together=True,
+                                          stitched=True)
+            return memo[key]
         counts = count(inp.foon, st.own)
         counts = counts.widest(count(st.through, st.needed)) if st.origin and narrow is None else counts
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
@@ -113,6 +135,6 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                        tuple(said[u] for u in kept if u in said))
 
     first = read(units)
-    if quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in first.units]) != first.silent:
+    if quiet(first.units) != first.silent:
         return read(first.units)
     return first
