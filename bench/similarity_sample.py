@@ -73,17 +73,22 @@ def main() -> None:
     ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
     ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
     args = ap.parse_args()
-    rows = sorted(candidates(args.shared))
-    random.Random(SEED).shuffle(rows)
-    with open(args.blind, "w", encoding="utf-8", newline="") as fh:
+    write_batch(candidates(args.shared), args.blind, args.key, SEED)
+
+
+def write_batch(rows: list[tuple[str, str, str, str]], blind: Path, key: Path, seed: int) -> None:
+    """Write (label_a, label_b, split, source) rows in a seeded shuffle: BLIND (labels only) and KEY (module doc)."""
+    rows = sorted(rows)
+    random.Random(seed).shuffle(rows)
+    with open(blind, "w", encoding="utf-8", newline="") as fh:
         w = csv.writer(fh, delimiter="\t", lineterminator="\n")
         w.writerow(["label_a", "label_b", "label"])
         w.writerows((a, b, "") for a, b, _, _ in rows)
-    with open(args.key, "w", encoding="utf-8", newline="") as fh:
+    with open(key, "w", encoding="utf-8", newline="") as fh:
         w = csv.writer(fh, delimiter="\t", lineterminator="\n")
         w.writerow(["label_a", "label_b", "split", "source"])
         w.writerows(rows)
-    print(f"{len(rows)} pairs -> {args.blind}; key -> {args.key}")
+    print(f"{len(rows)} pairs -> {blind}; key -> {key}")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,102 @@
+"""Draw a fourth labelled batch of substitution pairs (split `lemmas`), of labels no rule was designed on.
+
+`python -m bench.similarity_lemmas [--shared DIR] BLIND KEY` writes BLIND (the pairs in a
+seeded shuffle with an empty `label` column) and KEY (each pair's split and source), as
+`similarity_sample` does. The labels are WordNet 3.0 noun lemmas drawn at random (seed
+`SEED`): `FOOD` synsets and `TOOLS` synsets under roots fixed before the draw (the kinds
+of objects FOON recipes use), each synset named by its first lower-case lemma
+(`apple_pie` -> `apple pie`), skipping labels of the reference vocabulary (the shared
+subgraphs and the example), of the search inputs (the `outside` split) and of
+`similarity_pairs.tsv`. The pairs: a seeded sample of `ACCEPTED` pairs among those of a
+drawn label with a drawn or reference label that the paper's rule or the cook mode
+accepts (>= 0.89; the cook mode's breadth vocabulary joined by the drawn labels, as a
+user's run on them would), plus `RANDOM` seeded pairs from the rest (`random`).
+The sources name the modes at the commit the batch was drawn on; rerun there to reproduce it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import random
+from pathlib import Path
+
+from foon2pddl.generalize.cook import reference_vocabulary
+from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
+from foon2pddl.generalize.modes import make_similarity
+from foon2pddl.model.foon import normalize_label
+
+from .similarity import read_pairs, search_labels
+from .similarity_sample import write_batch
+
+SEED, N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 42, 80, 40, 170, 30
+FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
+        "seafood.n.01", "bread.n.01", "sauce.n.01", "condiment.n.01", "dish.n.02", "baked_goods.n.01",
+        "dairy_product.n.01", "vegetable_oil.n.01", "sweetening.n.01", "edible_nut.n.01", "pasta.n.02",
+        "beverage.n.01")
+TOOLS = ("kitchen_utensil.n.01", "tableware.n.01", "kitchen_appliance.n.01", "cutlery.n.02")
+
+
+def _pool(reader, roots: tuple[str, ...]) -> list[str]:
+    out: set[str] = set()
+    for root in roots:
+        s = reader.synset(root)
+        out.update(x.name() for x in [s, *s.closure(lambda y: y.hyponyms())])
+    return sorted(out)
+
+
+def _name(reader, synset: str) -> str:
+    lemmas = [x.name() for x in reader.synset(synset).lemmas() if x.name().islower()]
+    return normalize_label(lemmas[0].replace("_", " ")) if lemmas else ""
+
+
+def draw_labels(reader, shared: Path) -> list[str]:
+    """The drawn labels (module doc), in draw order."""
+    seen = set(reference_vocabulary()) | set(search_labels(shared))
+    seen |= {x for p in read_pairs() for x in (p.a, p.b)}
+    rng = random.Random(SEED)
+    out: list[str] = []
+    for roots, n in ((FOOD, N_FOOD), (TOOLS, N_TOOLS)):
+        pool = _pool(reader, roots)
+        rng.shuffle(pool)
+        got = 0
+        for synset in pool:
+            label = _name(reader, synset)
+            if label and label not in seen and label not in out:
+                out.append(label)
+                got += 1
+                if got == n:
+                    break
+    return out
+
+
+def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
+    """(label_a, label_b, split, source) of the batch (module doc)."""
+    paper = make_similarity("paper")
+    drawn = draw_labels(paper.reader, shared)
+    cook = make_similarity("cook", drawn, reader=paper.reader)
+    others = sorted(set(reference_vocabulary()) | set(drawn))
+    accepted, rest = [], []
+    for a in drawn:
+        for b in others:
+            if b == a or (b in drawn and b < a):
+                continue
+            pair = tuple(sorted((a, b)))
+            modes = [m for m, sim in (("paper", paper), ("cook", cook)) if sim(a, b) >= DEFAULT_THRESHOLD]
+            (accepted if modes else rest).append((*pair, "lemmas", "+".join(modes) or "random"))
+    rng = random.Random(SEED)
+    picked = rng.sample(sorted(accepted), min(ACCEPTED, len(accepted)))
+    print(f"{len(drawn)} labels drawn; {len(accepted)} pairs accepted by either mode, {len(picked)} sampled")
+    return picked + rng.sample(sorted(rest), RANDOM)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(prog="python -m bench.similarity_lemmas", description=__doc__)
+    ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
+    ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
+    ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
+    args = ap.parse_args()
+    write_batch(candidates(args.shared), args.blind, args.key, SEED)
+
+
+if __name__ == "__main__":
+    main()
