@@ -9,7 +9,8 @@ it and `independent`; `outside` and `unsampled`: a third batch, every pair eithe
 accepts on the search inputs' labels outside the shared subgraphs and on the shared
 labels not sampled before, see `similarity_sample.py`; `unseen`: both). The cook mode's
 breadth vocabulary is the shipped reference vocabulary (the shared subgraphs' labels)
-joined, for `outside`, by the search inputs' labels as a user's run on them would.
+joined, for `outside`, by the search inputs' labels and, for `lemmas`, by the drawn lemmas, as a user's
+run on them would.
 Also reported per mode: the share of accepted pairs labelled bad.
 """
 
@@ -29,7 +30,7 @@ from .harness import Context
 
 AREA = "similarity"
 PAIRS = Path(__file__).with_name("similarity_pairs.tsv")
-SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "tune", "all")
+SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "lemmas", "tune", "all")
 #: Groups of splits reported together: the held-out batches, and the third batch (`similarity_sample`).
 GROUPS = {"held-out": ("independent", "fresh"), "unseen": ("outside", "unsampled")}
 Z95 = 1.959963984540054
@@ -94,21 +95,25 @@ def search_labels(shared: Path) -> list[str]:
     return sorted(out - {""})
 
 
-def accepted(pairs: list[Pair], mode: str, outside: list[str], reader=None):
-    """Keys (frozensets) of the pairs `mode` accepts; an `outside` pair is scored with the labels
-    `outside` joining the cook mode's breadth vocabulary. Returns the keys and the WordNet reader."""
-    sims = {False: make_similarity(mode, reader=reader)}
-    sims[True] = make_similarity(mode, outside, reader=sims[False].reader)
-    keys = {frozenset((p.a, p.b)) for p in pairs if sims[p.split == "outside"](p.a, p.b) >= DEFAULT_THRESHOLD}
-    return keys, sims[False].reader
+def accepted(pairs: list[Pair], mode: str, joined: dict[str, list[str]], reader=None):
+    """Keys (frozensets) of the pairs `mode` accepts; a pair of a split in `joined` is scored with that
+    split's labels joining the cook mode's breadth vocabulary. Returns the keys and the WordNet reader."""
+    base = make_similarity(mode, reader=reader)
+    sims = {split: make_similarity(mode, labels, reader=base.reader) for split, labels in joined.items()}
+    keys = {frozenset((p.a, p.b)) for p in pairs if sims.get(p.split, base)(p.a, p.b) >= DEFAULT_THRESHOLD}
+    return keys, base.reader
 
 
 def run(ctx: Context) -> None:
+    from foon2pddl.generalize import wordnet
+
+    from .similarity_lemmas import draw_labels
+
     pairs = read_pairs()
-    outside = search_labels(ctx.shared)
-    reader = None
+    reader = wordnet.reader()
+    joined = {"outside": search_labels(ctx.shared), "lemmas": draw_labels(reader, ctx.shared)}
     for mode in SIMILARITY_MODES:
-        keys, reader = accepted(pairs, mode, outside, reader)
+        keys, reader = accepted(pairs, mode, joined, reader)
         for split in SPLITS:
             chosen = [p for p in pairs if split == "all" or p.split == split or p.split in GROUPS.get(split, ())]
             s = score(chosen, lambda a, b, keys=keys: frozenset((a, b)) in keys)

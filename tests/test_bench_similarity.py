@@ -15,10 +15,10 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     pairs = read_pairs()
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
-    assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled"}
-    third = {"paper+cook", "paper", "cook", "random"}
-    assert {p.source for p in pairs if p.split in ("outside", "unsampled")} <= third
-    assert {p.source for p in pairs if p.split not in ("outside", "unsampled")} == {
+    assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas"}
+    later = ("outside", "unsampled", "lemmas")
+    assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
+    assert {p.source for p in pairs if p.split not in later} == {
         "paper-proposed", "cook-proposed", "random"}
     keys = [frozenset((p.a, p.b)) for p in pairs]
     assert len(set(keys)) == len(keys) and all(len(k) == 2 for k in keys)
@@ -30,6 +30,8 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
             assert {p.a, p.b} <= search and not {p.a, p.b} <= reference, p
         elif p.split == "unsampled":
             assert {p.a, p.b} <= reference, p
+        elif p.split == "lemmas":  # a drawn WordNet lemma with a drawn or reference label
+            assert not {p.a, p.b} <= reference and not {p.a, p.b} & (search - reference), p
         else:
             assert {p.a, p.b} <= shared, p
 
