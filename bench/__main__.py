@@ -10,7 +10,7 @@ from .harness import Context
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
-         "generalize", "similarity", "category_extend", "exp_gains", "experiment", "reliability", "physical_replay", "translation", "skills", "silence"]
+         "generalize", "similarity", "similarity_holdout", "category_extend", "exp_gains", "experiment", "reliability", "physical_replay", "translation", "skills", "silence"]
 
 
 def main() -> None:

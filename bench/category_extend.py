@@ -11,6 +11,7 @@ subgraph (least per file) with the shipped index.
 from __future__ import annotations
 
 import random
+from pathlib import Path
 
 from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, shipped_index
 from foon2pddl.generalize.extend import assign
@@ -26,15 +27,22 @@ def _labels(paths) -> set[str]:
     return {n.label for n in load_network([str(p) for p in paths]).foon.nodes}
 
 
+def held_out_index(shared: Path) -> tuple[CategoryIndex, list[str]]:
+    """The shipped index without the labels only the held-out subgraphs use (module doc), and those labels."""
+    files = sorted((shared / "foon-subgraphs").glob("*.txt"))
+    held = set(random.Random(SEED).sample(files, min(HELD_OUT, len(files))))
+    only = sorted(_labels(held) - _labels([f for f in files if f not in held]))
+    small = CategoryIndex(tuple(Category(c.name, c.parent, c.description, tuple(m for m in c.members if m not in only))
+                                for c in shipped_index().categories))
+    return small, only
+
+
 def run(ctx: Context) -> None:
     files = sorted((ctx.shared / "foon-subgraphs").glob("*.txt"))
     full = shipped_index()
     least = min(coverage(_labels([f]), full).percent for f in files)
     ctx.report(AREA, "least coverage of a shared subgraph (shipped index)", least, "%", f"{len(files)} subgraphs")
-    held = set(random.Random(SEED).sample(files, min(HELD_OUT, len(files))))
-    only = sorted(_labels(held) - _labels([f for f in files if f not in held]))
-    small = CategoryIndex(tuple(Category(c.name, c.parent, c.description, tuple(m for m in c.members if m not in only))
-                                for c in full.categories))
+    small, only = held_out_index(ctx.shared)
     found = [a for a in assign(only, small) if a.category is not None]
 
     def top(name: str | None) -> str | None:

@@ -128,6 +128,27 @@ def test_pairs_stand_only_as_kin_in_the_categories(cook, label_similarity):
                 assert free(a, b) > 0 and not kin(index, a, b)
 
 
+def test_a_label_in_no_category_is_filed_as_categories_extend_files_it(cook, label_similarity):
+    """Rule 5 for a label the index lacks: the category `extend.assign` (`categories --extend`) files it in,
+    so a pair the hand-made index would reject is rejected without it too (bottle~jug: storage containers
+    and pitchers); `extend=False` leaves the label unconstrained (the rule before)."""
+    from foon2pddl.generalize.extend import assign
+
+    full = shipped_index()
+    small = CategoryIndex(tuple(Category(c.name, c.parent, c.description, tuple(m for m in c.members if m != "jug"))
+                                for c in full.categories))
+    filed = CookSimilarity(label_similarity.reader, categories=small)
+    loose = CookSimilarity(label_similarity.reader, categories=small, extend=False)
+    assert not small.of("jug") and full.of("jug") == ("pitchers and jugs",)
+    assert filed.categories_of("jug") == tuple(a.category for a in assign(["jug"], small)) == ("pitchers and jugs",)
+    assert loose("bottle", "jug") >= 0.89 and loose.categories_of("jug") == ()
+    assert filed("bottle", "jug") == 0.0 and filed.explain("bottle", "jug").rejected == "category"
+    assert kin(small, "jug", "pitcher", filed.categories_of) and not kin(small, "jug", "bottle", filed.categories_of)
+    for label in ("sieve", "goblet"):  # the shipped index lacks them
+        assert not full.of(label)
+        assert cook.categories_of(label) == tuple(a.category for a in assign([label], full)) != ()
+
+
 def test_stocks_are_ingredients_and_a_shared_modifier_does_not_reject(cook):
     """Rule 4 leaves stocks alone (WordNet files broth under soup); two compounds with one modifier are as
     close as their heads."""

@@ -27,9 +27,12 @@ head nouns and modifiers, see `similarity.py`) and changes five things:
    refinement of the other's (any of their categories), and scores 0 otherwise
    (`category`): siblings (microwave~oven, fork~spoon), two compounds of one head sense
    (bowl~food processor bowl) and a kind with a narrower kind alike (cheese~parmesan,
-   melting and hard cheeses; frying pan~muffin pan). A label in no category is not
-   constrained. WordNet says how close two things are; the categories say which of
-   them a cook swaps.
+   melting and hard cheeses; frying pan~muffin pan). A label in no category joins one
+   exactly as `categories --extend` files it (`extend.assign`: its head's category, a
+   category's name, else its nearest member's category at >= `extend.DEFAULT_MIN_SIMILARITY`;
+   each label on its own, so deterministic and independent of the other labels); a label
+   still in none is not constrained. WordNet says how close two things are; the
+   categories say which of them a cook swaps.
 
 The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
 with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
@@ -39,7 +42,7 @@ Cost: per label one sense lookup; per sense pair one `deepest` call (set lookups
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -125,13 +128,18 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
     """What a cook matrix depends on beyond its labels (with the shipped category index), computable
     without WordNet."""
     vocab = sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""})
-    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text())
+    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text(), RULES)
 
 
-def kin(index: CategoryIndex, a: str, b: str) -> bool:
+#: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels).
+RULES = "rule 5 extended"
+
+
+def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
     """Whether `index` puts `a` and `b` in one category or one in a refinement of the other's (any of their
-    categories); True when either is in none (rule 5)."""
-    ca, cb = index.of(a), index.of(b)
+    categories, `of(label)`, by default `index.of`); True when either is in none (rule 5)."""
+    of = of or index.of
+    ca, cb = of(a), of(b)
     if not ca or not cb:
         return True
     return any(x == y or x in index.ancestors(y) or y in index.ancestors(x) for x in ca for y in cb)
@@ -143,8 +151,10 @@ class CookSimilarity:
     mode = "cook"
 
     def __init__(self, reader=None, overrides: Overrides | None = None, *, vocabulary: Iterable[str] = (),
-                 breadth: float = DEFAULT_BREADTH, categories: bool = True) -> None:
-        """`categories=False` drops rule 5 (extending the category index must not read the index it extends)."""
+                 breadth: float = DEFAULT_BREADTH, categories: bool | CategoryIndex = True, extend: bool = True
+                 ) -> None:
+        """`categories=False` drops rule 5 (extending the category index must not read the index it extends);
+        an index replaces the shipped one; `extend=False` leaves a label in no category unconstrained."""
         from . import wordnet
         from .wup import WupTable
 
@@ -158,7 +168,28 @@ class CookSimilarity:
         self._evidence: dict[tuple[str, str], Evidence] = {}
         self._modifier_evidence: dict[tuple[str, str], Evidence] = {}
         self._cover: dict[str, int] | None = None
-        self.categories: CategoryIndex | None = shipped_index() if categories else None
+        self.categories: CategoryIndex | None = (
+            categories if isinstance(categories, CategoryIndex) else shipped_index() if categories else None)
+        self._filed: dict[str, tuple[str, ...]] = {}
+        self._filer: CookSimilarity | None = None
+        self.extend = extend
+
+    def categories_of(self, label: str) -> tuple[str, ...]:
+        """The categories rule 5 reads for `label`: the index's, else the one `categories --extend` would
+        file it in (`extend.assign` with this similarity's reader and overrides), else none."""
+        from .extend import assign
+
+        assert self.categories is not None
+        label = normalize_label(label)
+        found = self.categories.of(label)
+        if found or not self.extend:
+            return found
+        if label not in self._filed:
+            if self._filer is None:
+                self._filer = CookSimilarity(self.reader, self.overrides, breadth=1.0, categories=False)
+            filed = assign([label], self.categories, sim=self._filer)
+            self._filed[label] = tuple(a.category for a in filed if a.category is not None)
+        return self._filed[label]
 
     def resolution(self, label: str) -> Resolution:
         label = normalize_label(label)
@@ -204,7 +235,7 @@ class CookSimilarity:
         if found is None:
             found = self._compute(a, b)
             if found.similarity and not found.rejected and self.categories is not None \
-                    and not kin(self.categories, a, b):
+                    and not kin(self.categories, a, b, self.categories_of):
                 found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
             self._evidence[(a, b)] = found
         return found
