@@ -16,7 +16,6 @@ The sources name the modes at the commit the batch was drawn on; rerun there to 
 
 from __future__ import annotations
 
-import argparse
 import random
 from pathlib import Path
 
@@ -26,7 +25,7 @@ from foon2pddl.generalize.modes import make_similarity
 from foon2pddl.model.foon import normalize_label
 
 from .similarity import read_pairs, search_labels
-from .similarity_sample import write_batch
+from .similarity_sample import main as sample_main
 
 SEED, N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 42, 80, 40, 170, 30
 FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
@@ -90,12 +89,7 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser(prog="python -m bench.similarity_lemmas", description=__doc__)
-    ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
-    ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
-    ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
-    args = ap.parse_args()
-    write_batch(candidates(args.shared), args.blind, args.key, SEED)
+    sample_main("python -m bench.similarity_lemmas", __doc__, candidates, SEED)
 
 
 if __name__ == "__main__":

@@ -67,13 +67,15 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
     return out
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(prog="python -m bench.similarity_sample", description=__doc__)
+def main(prog: str = "python -m bench.similarity_sample", doc: str | None = __doc__, draw=candidates,
+         seed: int = SEED) -> None:
+    """`prog [--shared DIR] BLIND KEY`: write the batch `draw(shared)` gives (`write_batch`)."""
+    ap = argparse.ArgumentParser(prog=prog, description=doc)
     ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
     ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
     ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
     args = ap.parse_args()
-    write_batch(candidates(args.shared), args.blind, args.key, SEED)
+    write_batch(draw(args.shared), args.blind, args.key, seed)
 
 
 def write_batch(rows: list[tuple[str, str, str, str]], blind: Path, key: Path, seed: int) -> None:

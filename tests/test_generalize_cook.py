@@ -16,6 +16,7 @@ from foon2pddl.generalize.cook import (
     DEFAULT_BREADTH,
     CookSimilarity,
     cook_overrides,
+    filing_similarity,
     kin,
     reference_vocabulary,
 )
@@ -140,13 +141,15 @@ def test_a_label_in_no_category_is_filed_as_categories_extend_files_it(cook, lab
     filed = CookSimilarity(label_similarity.reader, categories=small)
     loose = CookSimilarity(label_similarity.reader, categories=small, extend=False)
     assert not small.of("jug") and full.of("jug") == ("pitchers and jugs",)
-    assert filed.categories_of("jug") == tuple(a.category for a in assign(["jug"], small)) == ("pitchers and jugs",)
+    files = filing_similarity(label_similarity.reader)
+    assert filed.categories_of("jug") == tuple(a.category for a in assign(["jug"], small, files)) == (
+        "pitchers and jugs",)
     assert loose("bottle", "jug") >= 0.89 and loose.categories_of("jug") == ()
     assert filed("bottle", "jug") == 0.0 and filed.explain("bottle", "jug").rejected == "category"
     assert kin(small, "jug", "pitcher", filed.categories_of) and not kin(small, "jug", "bottle", filed.categories_of)
     for label in ("sieve", "goblet"):  # the shipped index lacks them
         assert not full.of(label)
-        assert cook.categories_of(label) == tuple(a.category for a in assign([label], full)) != ()
+        assert cook.categories_of(label) == tuple(a.category for a in assign([label], full, files)) != ()
 
 
 def test_stocks_are_ingredients_and_a_shared_modifier_does_not_reject(cook):

@@ -8,6 +8,7 @@ from click.testing import CliRunner
 
 from foon2pddl.cli import main
 from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, parse_index, shipped_index
+from foon2pddl.generalize.cook import filing_similarity
 from foon2pddl.generalize.extend import assign, by_name, extended_index, index_json
 
 FORGOTTEN = ("lime", "strawberry", "salad bowl", "cayenne pepper")
@@ -21,7 +22,7 @@ def _without(index: CategoryIndex, labels) -> CategoryIndex:
 def test_forgotten_labels_find_their_categories_again(label_similarity):
     full = shipped_index()
     small = _without(full, FORGOTTEN)
-    found = {a.label: a for a in assign([*FORGOTTEN, "lemon", "xyzzy plorb"], small)}
+    found = {a.label: a for a in assign([*FORGOTTEN, "lemon", "xyzzy plorb"], small, filing_similarity(label_similarity.reader))}
     assert set(found) == {*FORGOTTEN, "xyzzy plorb"}  # known labels are not reassigned
     assert found["lime"].category == full.choose("lime") == "lemons and limes" and found["lime"].how == "name"
     assert found["strawberry"].category == full.choose("strawberry") == "berries"
@@ -59,7 +60,7 @@ def test_a_hand_is_not_filed_with_the_tools(label_similarity):
     read it as the body part, which is close to no tool, so an index without a place for it leaves it out
     (listed for review) instead of making it a cutting tool."""
     small = CategoryIndex(tuple(c for c in shipped_index().categories if "hand" not in c.members))
-    (found,) = assign(["hand"], small)
+    (found,) = assign(["hand"], small, filing_similarity(label_similarity.reader))
     assert found.category is None and found.how == "none"
 
 

@@ -50,6 +50,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
+from .extend import assign
 from .senses import Overrides, Resolution, kitchen_senses, parse_overrides, resolve
 from .similarity import Evidence
 
@@ -177,8 +178,6 @@ class CookSimilarity:
     def categories_of(self, label: str) -> tuple[str, ...]:
         """The categories rule 5 reads for `label`: the index's, else the one `categories --extend` would
         file it in (`extend.assign` with this similarity's reader and overrides), else none."""
-        from .extend import assign
-
         assert self.categories is not None
         label = normalize_label(label)
         found = self.categories.of(label)
@@ -186,7 +185,7 @@ class CookSimilarity:
             return found
         if label not in self._filed:
             if self._filer is None:
-                self._filer = CookSimilarity(self.reader, self.overrides, breadth=1.0, categories=False)
+                self._filer = filing_similarity(self.reader, self.overrides)
             filed = assign([label], self.categories, sim=self._filer)
             self._filed[label] = tuple(a.category for a in filed if a.category is not None)
         return self._filed[label]
@@ -293,3 +292,10 @@ class CookSimilarity:
         if best.similarity == 0.0 and broad is not None:
             return Evidence(0.0, broad.ancestor, broad.sense_a, broad.sense_b, broad.breadth, "broad")
         return best
+
+
+def filing_similarity(reader=None, overrides: Overrides | None = None) -> CookSimilarity:
+    """The similarity unknown labels are filed by (`extend.assign`, `categories --extend`, rule 5): the cook
+    mode's senses and deepest common ancestor, no breadth rejection (a category is meant to be broad) and no
+    category rule (it would read the index being extended)."""
+    return CookSimilarity(reader, overrides, breadth=1.0, categories=False)

@@ -10,10 +10,11 @@ Each unknown object label joins the category of the known label it is nearest to
    -> `sauces`, `pizza sauce` -> `pasta and pizza sauces`, but `curry powder` not
    `allium powders`); among several, the longest part, then the shallowest category,
    then file order;
-3. otherwise nearest member: the known label with the greatest Wu-Palmer value under
-   the cook mode's senses (role senses, deepest common ancestor; no breadth rejection,
-   since a category is meant to be broad, and no category rule, which would read the index being extended), at least `min_similarity` (default 0.65);
-   ties broken by label order.
+3. otherwise nearest member: the known label with the greatest value of the similarity
+   given (`cook.filing_similarity`: the cook mode's role senses and deepest common
+   ancestor; no breadth rejection, since a category is meant to be broad, and no category
+   rule, which would read the index being extended), at least `min_similarity` (default
+   0.65); ties broken by label order.
 
 A label with no WordNet sense, no known head and no category-name head stays unassigned
 (listed as such).
@@ -81,17 +82,14 @@ def by_name(label: str, index: CategoryIndex, parts: dict[str, list[tuple[str, f
     return min(candidates, key=lambda c: (-len(c[1]), index.depth(c[0]), order[c[0]]))[0]
 
 
-def assign(labels: Iterable[str], index: CategoryIndex, sim=None,
+def assign(labels: Iterable[str], index: CategoryIndex, sim,
            min_similarity: float = DEFAULT_MIN_SIMILARITY) -> tuple[Assignment, ...]:
-    """Assignments of the `labels` in no category of `index` (sorted by label)."""
+    """Assignments of the `labels` in no category of `index` (sorted by label); `sim(a, b)` ranks the known
+    labels (`cook.filing_similarity`, which the cook mode's rule 5 also files unknown labels by)."""
     known = sorted({m for c in index.categories for m in c.members})
     todo = sorted({normalize_label(x) for x in labels} - set(known) - set(index.names) - {""})
     if not todo:
         return ()
-    if sim is None:
-        from .cook import CookSimilarity
-
-        sim = CookSimilarity(breadth=1.0, vocabulary=[*known, *todo], categories=False)
     parts = _name_parts(index)
     out = []
     for label in todo:
