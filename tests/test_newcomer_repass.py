@@ -155,3 +155,34 @@ def test_category_types_reach_the_planner_in_a_batch_and_under_skills(where, ext
     r = run("plan", "--encoding", "relational", "--category-types", *extra)
     assert r.exit_code == 0, r.output
     assert seen and all(dict(chains).get("bowl", ())[:1] == ("bowls",) for chains in seen)
+
+
+@pytest.mark.parametrize(("document", "says"), [
+    ("docs/examples/robot-no-pour.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
+                                         "give it as the constraints file"),
+    ("docs/examples/diet-no-egg.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
+                                       "give it as the constraints file"),
+    ("network", "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"),
+])
+def test_a_json_document_given_as_a_kitchen_says_what_it_is_and_where_it_goes(document, says, tmp_path):
+    """A constraints file or a network's JSON export given as `--kitchen` got the generic `expected a JSON
+    list of objects, or a scene`, never saying what the file is or which option takes it."""
+    if document == "network":
+        document = tmp_path / "net.json"
+        assert run("merge", "--format", "json", "-o", document).exit_code == 0
+    else:
+        document = ROOT / document
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", document)
+    assert r.exit_code == 2
+    assert f"{document}:1: error: {says}" in r.stderr
+    assert "Traceback" not in r.output
+
+
+def test_a_constraints_file_given_as_a_network_says_to_give_it_with_constraints():
+    """`retrieve docs/examples/robot-no-pour.json --goal ...` said only "FOON JSON document lacks the required
+    field 'format'"."""
+    document = ROOT / "docs" / "examples" / "robot-no-pour.json"
+    r = run("retrieve", document, "--goal", "guacamole")
+    assert r.exit_code == 2
+    assert ("error: top level: this is a constraints file (docs/constraints.md), not a network: give it as the "
+            "constraints file") in r.stderr

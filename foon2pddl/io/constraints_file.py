@@ -38,6 +38,11 @@ MIN_RATE = math.ulp(0.0)
 MAX_COST = -math.log(MIN_RATE)
 
 
+def is_constraints(data: object) -> bool:
+    """Whether decoded JSON reads as a constraints document: an object with keys, each a constraints key."""
+    return isinstance(data, dict) and bool(data) and all(key in KEYS for key in data)
+
+
 def _line_of(text: str, key: str) -> int:
     """1-based line of the first occurrence of `"key"` (1 when not found)."""
     at = text.find(json.dumps(key))

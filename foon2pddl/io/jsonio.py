@@ -16,6 +16,7 @@ from typing import Any
 from ..errors import FoonSyntaxError
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
 from ..model.levels import LEVELS
+from .constraints_file import is_constraints
 from .json_text import decode_tracked, line_of, load_json, text_problem
 from .parser import read_text
 
@@ -241,6 +242,9 @@ def _foon(data: Any) -> Foon:
     if isinstance(data, dict) and "objects" in data and "format" not in data:
         raise _Invalid((), "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a network: "
                            "give it as the kitchen")
+    if is_constraints(data):
+        raise _Invalid((), "this is a constraints file (docs/constraints.md), not a network: give it as the "
+                           "constraints file")
     d = _fields(data, (), "FOON JSON document", ("format", "version", "units"), ("level",))
     if d["format"] != FORMAT:
         raise _Invalid(("format",), f"not a foon2pddl FOON (expected \"format\": \"{FORMAT}\", found {d['format']!r})")

@@ -57,8 +57,7 @@ def read_json_nodes(path: Path) -> list[ObjectNode]:
 def json_nodes(data: object, text: str, path: Path) -> list[ObjectNode]:
     """Nodes of decoded JSON in the public search projects' convention (`text` locates problems)."""
     if not isinstance(data, list):
-        raise FoonSyntaxError(str(path), 1, 'expected a JSON list of objects, or a scene: {"objects": [...]} '
-                                            "(docs/scene.md)")
+        raise FoonSyntaxError(str(path), 1, _not_a_kitchen(data))
     nodes = []
     for i, item in enumerate(data):
         try:
@@ -66,6 +65,18 @@ def json_nodes(data: object, text: str, path: Path) -> list[ObjectNode]:
         except FoonSyntaxError as exc:  # locate the item (a re-parse, only on error)
             raise FoonSyntaxError(exc.path, line_of(text, (i,)), exc.message) from None
     return nodes
+
+
+def _not_a_kitchen(data: object) -> str:
+    """What a JSON document that is no list of objects (and no scene) is, and which option takes it."""
+    from .constraints_file import is_constraints
+    from .jsonio import FORMAT
+
+    if isinstance(data, dict) and data.get("format") == FORMAT:
+        return "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"
+    if is_constraints(data):
+        return "this is a constraints file (docs/constraints.md), not a kitchen: give it as the constraints file"
+    return 'expected a JSON list of objects, or a scene: {"objects": [...]} (docs/scene.md)'
 
 
 #: `2 x bowl: empty`: a node-per-line kitchen entry with an instance count.
