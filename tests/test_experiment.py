@@ -430,3 +430,36 @@ def test_experiment_with_each_similarity_mode(tmp_path):
         assert f"--similarity {mode}" in (out / "report.md").read_text()
         counts[mode] = len((out / "results.jsonl").read_text().splitlines())
     assert counts["cook"] == counts["paper"] == 6
+
+
+def test_runs_log_and_report_name_the_code_that_computed_the_cells(tmp_path):
+    """docs/experiment.md's figures named no commit: runs.jsonl recorded cells, jobs and seconds, never which
+    code computed them. Each run now records the package version and, from a git checkout, its commit."""
+    import subprocess
+
+    from foon2pddl import __version__
+
+    root = Path(__file__).resolve().parent.parent
+    head = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
+    report = tmp_path / "report.md"
+    r = CliRunner().invoke(main, ["experiment", "--trials", "1", "--goals", "2", "--networks", "reg",
+                                  "--solvers", "native-greedy", "-o", str(tmp_path / "out"), "--report", str(report)])
+    assert r.exit_code == 0, r.output
+    (logged,) = [json.loads(line) for line in (tmp_path / "out" / "runs.jsonl").read_text().splitlines()]
+    assert logged["version"] == __version__ and logged["commit"] == head
+    assert isinstance(logged["modified"], bool)
+    assert f"foon2pddl {__version__} at commit {head[:7]}" in report.read_text()
+
+
+def test_outside_a_git_checkout_the_run_records_the_version_and_says_no_commit(tmp_path, monkeypatch):
+    from foon2pddl import __version__
+    from foon2pddl.experiment import provenance
+
+    provenance.code_version.cache_clear()
+    monkeypatch.setattr(provenance, "ROOT", tmp_path)
+    try:
+        assert provenance.code_version() == {"version": __version__}
+        assert provenance.describe(provenance.code_version()) == \
+            f"foon2pddl {__version__} (not run from a git checkout: no commit recorded)"
+    finally:
+        provenance.code_version.cache_clear()

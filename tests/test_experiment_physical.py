@@ -150,7 +150,7 @@ def _meta(config, summary):
             "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
                                "what": ""} for v in runner.views(config)],
             "solver_descriptions": [], "time_limit": "60", "jobs": 1, "scheduler": None, "wall": "1 s", "ran": 1,
-            "skipped": 0, "history": [], "machine": "test"}
+            "skipped": 0, "history": [], "machine": "test", "code": "test"}
 
 
 def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(tmp_path):

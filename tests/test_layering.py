@@ -147,7 +147,8 @@ OTHER_PROGRAMS_FLAGS = {"--sas-file", "--internal-plan-file", "--search", "--inv
                         "--alias", "--evaluator", "--translate-options", "--search-options", "--plan-file",
                         "--overall-time-limit", "--search-time-limit", "--translate-time-limit", "--keep-sas-file",
                         "--keep-unimportant-variables",
-                        "--sas_file", "--help", "--out", "--port"}
+                        "--sas_file", "--help", "--out", "--port",
+                        "--porcelain", "--untracked-files"}  # git's (experiment.provenance)
 _FLAG = re.compile(r"(?<![\w-])--[a-z][a-z-]+")
 
 

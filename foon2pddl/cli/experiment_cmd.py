@@ -11,6 +11,7 @@ import click
 from ..errors import FoonInputError, UsageError
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
+from ..experiment.provenance import code_version, describe
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
 from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
 from . import main
@@ -159,7 +160,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
             f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
         "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",
-        "ran": summary.ran, "skipped": summary.skipped, "history": list(summary.history), "machine": machine(),
+        "ran": summary.ran, "skipped": summary.skipped, "machine": machine(),
+        "history": [dict(h, code=describe(h)) for h in summary.history], "code": describe(code_version()),
     }
     first = dict(config.points[0])
     data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,

@@ -14,5 +14,5 @@
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bans", "collector", "engine", "networks", "params", "physical", "plots", "progress", "protocol", "records",
-           "render", "report", "runner", "solvers", "tables", "worker"]
+__all__ = ["bans", "collector", "engine", "networks", "params", "physical", "plots", "progress", "protocol",
+           "provenance", "records", "render", "report", "runner", "solvers", "tables", "worker"]

@@ -35,9 +35,10 @@ from ..io.atomic import atomic_write
 from . import collector
 from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
 from .networks import NETWORKS, NetworkView
-from .params import Point, check_grid, points
+from .params import PARAMS, Point, check_grid, points
 from .progress import OFF, Progress, default_mode
 from .protocol import Protocol, Trial
+from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
 from .worker import Batch, Job, draw_at, fingerprint, input_files, view
@@ -54,7 +55,7 @@ __all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "
 
 RESULTS = "results.jsonl"
 PROTOCOL = "protocol.json"
-RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs, wall seconds
+RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs, wall seconds, code (provenance)
 #: Most goals in one task (a lost task loses at most this many cells). 50 rather than 25: half the
 #: tasks and result messages, ~1 s less on the default protocol's native solvers (21.2 vs 22.2 s, median
 #: of 3); the costliest batches start first, so the tail stays short.
@@ -94,8 +95,6 @@ class Config:
         """What results in this directory depend on: the protocol (swept parameters aside) and the inputs."""
         swept = [name for name, _ in self.sweeps]
         base = self.protocol.identity()
-        from .params import PARAMS
-
         for name in swept:
             base.pop(PARAMS[name].field or "", None)
         if swept:
@@ -357,7 +356,7 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
             with open_for_append(config.results_path) as fh:
                 run_cells(config, batches, sink, bar, settle)
         finally:
-            log = {"cells": written[0], "planned": planned, "jobs": config.jobs,
+            log = {"cells": written[0], "planned": planned, "jobs": config.jobs, **code_version(),
                    "seconds": round(time.perf_counter() - t_run, 3), "solvers": sorted({b.solver for b in batches})}
             if config.scheduler:
                 log["scheduler"] = config.scheduler
