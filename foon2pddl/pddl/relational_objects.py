@@ -54,7 +54,8 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
                  overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False) -> TaskObjects:
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
-    `narrow`: counted small when that gives fewer objects. Counting small reads the units twice more."""
+    `narrow`: counted small when that gives fewer objects. Counting small reuses the readings counting wide
+    made (`read_units`' memo: units are read again only with other holders silent) and derives its own counts."""
     memo: dict = {}  # the units' readings and counts both countings share (`read_units`)
     wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo)
     if not narrow or scene:
