@@ -4,12 +4,13 @@
 from __future__ import annotations
 
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import clean_plan, clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.holders import list_gaps, relational_roles
 from foon2pddl.pddl.relational_init import holder_init
 from foon2pddl.pddl.task import Instance
 
@@ -162,3 +163,124 @@ def test_a_kitchen_container_s_object_starts_in_a_node_the_kitchen_has_in_anothe
     mix = FunctionalUnit((box, mayo, chopped), Motion("mix"), (spread,))
     outcome = clean_unit_plan([chop, move, mix], [box, mayo, on_tray, whole, n("bowl", "empty"), n("knife")], spread)
     assert chopped in {s.node for s in outcome.trace.initial}
+
+
+# 0061-club_sandwich.txt:180 and :196: two breads made into a sandwich, then the bacon put `on [bread]` while the
+# sandwich, which lists bread, newly lists the bacon: the bread is part of the sandwich
+ON_BOARD = make_state("on", "cutting board")
+BREAD_BOARD, TOP, BOTTOM = n("cutting board", contains("bread")), n("bread", "toasted", ON_BOARD), n("bread", "sliced")
+SANDWICH = n("sandwich", contains("bread"), ON_BOARD)
+JOIN = FunctionalUnit((BREAD_BOARD, TOP, BOTTOM), Motion("pick-and-place"),
+                      (n("cutting board", contains("sandwich")), SANDWICH))
+BACON_PLATE, BACON = n("plate", contains("bacon")), n("bacon", "fried", make_state("on", "plate"))
+ON_BREAD = n("bacon", "fried", make_state("on", "bread"))
+TOP_WITH_BACON = FunctionalUnit((n("cutting board", contains("sandwich")), SANDWICH, BACON_PLATE, BACON),
+                                Motion("pick-and-place"), (n("sandwich", contains("bread", "bacon"), ON_BOARD), ON_BREAD))
+
+
+def test_an_object_put_on_a_label_no_role_has_is_on_the_one_role_that_lists_both():
+    bacon = relational_roles(TOP_WITH_BACON)[3]
+    assert (bacon.target.relation, bacon.target.holder, bacon.target.role) == ("on", "sandwich", 1)
+    assert bacon.after == ON_BREAD  # FOON's own node is kept
+    assert ("sandwich", "bacon", "bacon is on [bread], which sandwich lists: read as on the sandwich") \
+        in list_gaps(TOP_WITH_BACON)
+
+
+def test_a_plan_never_puts_an_object_on_a_part_a_unit_consumed():
+    # REG trial 4 goal 41: the bacon went onto a bread the planner chose (a holder the unit does not name), one
+    # the sandwich had consumed [bread_1 is consumed, the unit needs it not yet made]
+    outcome = clean_unit_plan((JOIN, TOP_WITH_BACON), (BREAD_BOARD, TOP, BOTTOM, BACON_PLATE, BACON), ON_BREAD)
+    assert [s.holder for s in outcome.trace.final.values() if s.node == ON_BREAD] == ["sandwich_1"]
+
+
+def test_a_holder_added_where_only_a_unit_s_output_names_the_place_lists_nothing():
+    # GEN trial 3 goal 82: the ribs' scoop (0018-barbecue-style_country_ribs.txt:122) takes the kitchen's chopped
+    # garlic off a surface; another unit of the task, with no objects, puts a towel `on [surface]`, so the surface
+    # says nothing of what it holds and the garlic leaves it whole, but the surface added for the kitchen's garlic
+    # listed it, and still did once the garlic was in the spoon [stale-source]
+    on_surface = make_state("on", "surface")
+    garlic, spoon, scooped = n("garlic", "chopped", on_surface), n("spoon", "clean"), n("garlic", "chopped", inside("spoon"))
+    scoop = FunctionalUnit((garlic, spoon), Motion("scoop"), (n("spoon", contains("garlic")), scooped))
+    wipe = FunctionalUnit((n("spoon", "dirty"), n("towel", "dry")), Motion("wipe"), (spoon, n("towel", "wet", on_surface)))
+    outcome = clean_unit_plan((scoop, wipe), (garlic, spoon, n("spoon", "dirty"), n("towel", "dry")), scooped)
+    assert [s.node for s in outcome.trace.initial if s.id.startswith("surface")] == [n("surface")]
+
+
+def test_a_container_keeps_what_the_unit_s_own_output_leaves_on_it():
+    # GEN trial 3 goal 99: FOON-GEN reads the creamed corn's corn and corn kernels as one label; the scoop and
+    # pour (0038-homestyle_creamed_corn.txt:27) takes the kernels off the board, which it leaves out of its
+    # outputs, and restates the shaved corn `on [cutting boards]`: the board was emptied of the label with the
+    # shaved corn still on it [held-by-empty]
+    veg, on_board, in_pot = "fruit vegetables", make_state("on", "cutting boards"), inside("pots")
+    board, full, knife, pot = (n("cutting boards", "clean"), n("cutting boards", contains(veg)), n("cutting tools", "clean"),
+                               n("pots", "empty"))
+    whole, kernels, shaved = n(veg, "whole"), n(veg, "uncooked", on_board), n(veg, "shaved", on_board)
+    on_it = n(veg, "whole", on_board)
+    put = FunctionalUnit((board, whole), Motion("pick-and-place"), (full, on_it))
+    shave = FunctionalUnit((full, on_it, knife), Motion("shave"), (kernels, shaved))
+    scoop = FunctionalUnit((full, kernels, pot, knife), Motion("scoop and pour"),
+                           (n("pots", contains(veg)), n(veg, "uncooked", in_pot), shaved))
+    cob = n(veg, "shaved")
+    scrape = FunctionalUnit((n("pots", contains(veg)), shaved, knife), Motion("scrape"),
+                            (n("pots", contains(veg)), n(veg, "uncooked", in_pot), cob))
+    clean_unit_plan((put, shave, scoop, scrape), (board, whole, knife, pot), cob)
+
+
+def test_a_holder_the_unit_does_not_name_is_emptied_under_the_name_the_task_reads_it_by():
+    # GEN trial 4 goal 30: the enchiladas' pick-and-place (0053-beef-enchiladas.txt:72) takes the cooked ground
+    # meats `in [pan]`, a pan it does not name, into the meat mix; another unit fills the cookware with them and
+    # places them `in [pan]`, read as the cookware. The cookware was never emptied [stale-source]
+    bowl, pan = n("bowls", contains("ground meats")), n("cookware", "heated")
+    raw, cooked = n("ground meats", "uncooked", inside("bowls")), n("ground meats", "cooked", inside("pan"))
+    fill = FunctionalUnit((bowl, raw, pan), Motion("pick-and-place"), (n("cookware", contains("ground meats")), cooked))
+    mix = n("meat mixtures", contains("ground meats"), make_state("on", "breads"))
+    wrap = FunctionalUnit((n("breads", "plain"), cooked), Motion("pick-and-place"),
+                          (n("breads", contains("meat mixtures")), mix))
+    clean_unit_plan((fill, wrap), (bowl, raw, pan, n("breads", "plain")), mix)
+
+
+def test_an_object_made_in_a_container_whose_list_is_renamed_to_it_stays_in_that_container():
+    # EXP trial 6 goal 53: the omelette's mix (0063-plain_omelette_mahalo.txt:108) makes `omelette (in [pan])`
+    # and leaves the pan listing the egg mixture; the cook at :140 takes that pan and the omelette `in [pan]`,
+    # and leaves the pan listing the omelette. Bound late, the omelette was cooked in another pan, and the one it
+    # was made in still listed the egg mixture [stale-source]
+    bowl, pan, whisk = n("bowl", contains("egg mixture")), n("pan", "empty"), n("whisk", "clean")
+    mixture, in_pan, full = n("egg mixture", inside("bowl")), n("egg mixture", inside("pan")), n("pan", contains("egg mixture"))
+    pour = FunctionalUnit((pan, bowl, mixture), Motion("pour"), (full, in_pan))
+    raw = n("omelette", "partly cooked", inside("pan"))
+    mix = FunctionalUnit((full, in_pan, whisk), Motion("mix"), (full, raw))
+    done = n("omelette", "cooked", inside("pan"))
+    cook = FunctionalUnit((full, raw), Motion("cook"), (n("pan", contains("omelette")), done))
+    omelette = relational_roles(cook)[1]
+    assert (omelette.fate, omelette.source.role, omelette.target.role) == ("stays", 0, 0)
+    clean_plan(Foon((pour, mix, cook)), Kitchen(frozenset({bowl, pan, whisk, mixture})), Goal(GoalSpec("omelette"), (done,)),
+               instances=(("pan", 2),))
+
+
+def test_what_is_on_a_part_of_a_consumed_object_is_consumed_with_it():
+    # 0061-club_sandwich.txt:260 makes the club sandwich of the sandwich the bacon is on (`on [bread]`, read as on
+    # the sandwich): the bacon became part of the club sandwich, with the sandwich [holder-gone before]
+    finish = FunctionalUnit((n("sandwich", contains("bread", "bacon"), ON_BOARD), n("bread", "sliced")),
+                            Motion("pick-and-place"), (n("club sandwich", contains("bread", "bacon"), ON_BOARD),))
+    club = finish.outputs[0]
+    outcome = clean_unit_plan((JOIN, TOP_WITH_BACON, finish), (BREAD_BOARD, TOP, BOTTOM, n("bread", "sliced"),
+                                                               BACON_PLATE, BACON), club)
+    final = outcome.trace.final
+    assert final["sandwich_1"].consumed and not [s for s in final.values() if s.node == ON_BREAD and not s.consumed]
+    assert any(s.node == ON_BREAD for st in outcome.trace.states() for s in st.values())  # the bacon was on it
+
+
+def test_a_holder_the_task_fills_under_another_name_is_emptied_as_the_unit_s_own_role():
+    # 0037-make_quick_french_toast.txt:173 takes the cooked toast `in [pan]` out of the skillet it names and leaves
+    # out of its outputs; `pan` names the skillet and the plate there, but the cook fills the skillet with the toast
+    # and says `in [pan]`: the toast leaves the skillet whole (before: a portion, the rest still in the skillet),
+    # and the skillet role ends emptied, as the step says
+    skillet, full = n("skillet", "heated"), n("skillet", contains("toast"))
+    raw, cooked = n("toast", "raw"), n("toast", "cooked", inside("pan"))
+    cook = FunctionalUnit((skillet, raw), Motion("cook"), (full, cooked))
+    served = n("toast", "cooked", make_state("on", "plate"))
+    serve = FunctionalUnit((n("plate", "empty"), cooked, full), Motion("pick-and-place"),
+                           (n("plate", contains("toast")), served))
+    outcome = clean_unit_plan((cook, serve), (skillet, raw, n("plate", "empty")), served)
+    assert [o.id for o in outcome.trace.objects if o.label == "toast"] == ["toast_1"]
+    assert [s.holder for s in outcome.trace.final.values() if s.id == "toast_1"] == ["plate_1"]

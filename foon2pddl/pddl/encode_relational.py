@@ -75,7 +75,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported
-from .holders import Fate, attached_gaps, list_gaps, unit_aliases
+from .holders import Fate, attached_gaps, list_gaps, on_parts, unit_aliases
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
@@ -143,6 +143,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     for n in sorted(nodes):
         for rel, c in places(n)[:1]:
             inside.setdefault(alias.get(c, c), []).append((n, rel))
+    for n, holder in sorted({x for u in units for x in on_parts(f.units[u])}):  # the bacon `on [bread]`: on the
+        inside.setdefault(holder, []).extend((n, rel) for rel, _ in places(n)[:1])  # sandwich (`holders` rule 2)
     dust = relational_plan.dustings(plans[u] for u in units)
     left = relational_plan.left_nodes([(plans[u], ways[u], empties[u]) for u in units], inside, dust)
     stable = {n for n in const if n not in left}
@@ -374,8 +376,8 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 now.append(Atom(IN, (var[flow.into], y)))
             cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y, type=type_of[label]))
     # a role the unit leaves as it is ends in the node a late empty turns its node into (the oven the tray leaves)
-    emptied_by = {(slots[j].rel.source.holder, old): new for j, s in enumerate(slots) if s.late_empties
-                  for old, new in empties.get(j, ())}
+    # (by the emptied node's label: the name the unit uses may be another, FOON-GEN's `pan` for the cookware)
+    emptied_by = {(old.label, old): new for j, s in enumerate(slots) if s.late_empties for old, new in empties.get(j, ())}
     expected = [Role(s.rel.role.label, s.rel.role.before, None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else
                      plan.after_of(k) or emptied_by.get((s.rel.role.label, s.rel.role.before)))
                 for k, s in enumerate(slots)]

@@ -5,7 +5,7 @@ gives a task's report lines with their units' file:line."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
@@ -13,7 +13,7 @@ from ..model.places import head_of, listed, places
 from .encoding import short_path, unit_where
 from .pairing import unit_roles
 
-__all__ = ["aliased", "head_of", "mismatches", "reported", "task_aliases", "unit_aliases"]
+__all__ = ["aliased", "head_of", "mismatches", "part_of", "renamed", "reported", "task_aliases", "unit_aliases"]
 
 
 @lru_cache(maxsize=1 << 14)
@@ -58,6 +58,30 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
         if len(takers) == 1 and any(name in (c for _, c in places(n)) for n, _ in sides[1]):
             out[name] = takers.pop()
     return tuple(sorted(out.items()))
+
+
+def renamed(was: ObjectNode | None, now: ObjectNode | None, label: str, labels: Iterable[str]) -> bool:
+    """A holder's list renamed to `label`: its node after a unit (`now`) lists `label` and nothing its node before
+    (`was`) lists, none of which is one of the unit's `labels` (the cook's `cooking pan (contains {egg mixture})`
+    becomes `contains {omelette}`: the omelette the mix made there from the egg mixture, the list not saying so)."""
+    before, after = listed(was), listed(now)
+    return bool(before) and label in after and not before & after and not before & set(labels)
+
+
+def part_of(labels: Sequence[str], before: Sequence[ObjectNode | None], after: Sequence[ObjectNode | None], k: int,
+            holder: str) -> int | None:
+    """The one role (of a unit's `labels`, with nodes `before` and `after` it; not `k`, existing before and given an
+    output, and no place the unit's nodes name) whose node after lists role `k`'s label and `holder`, when no role
+    is a `holder`: placed at a `holder` that is part of that role (the bacon `on [bread]` beside the sandwich that
+    lists bread and bacon; FOON-GEN's sandwich listed its sausages and cured meats, the ham, before the bacon came
+    too). A container the unit's nodes place things in lists what is in it, not what it is made of: the salt
+    sprinkled `on [bean mix]` in the bowl that lists both is on the bean mix. Else None."""
+    named = {c for n in (*before, *after) for _, c in places(n)}
+    if holder in labels:
+        return None
+    takers = [j for j in range(len(labels)) if j != k and before[j] is not None and after[j] is not None
+              and labels[j] not in named and {labels[k], holder} <= listed(after[j])]
+    return takers[0] if len(takers) == 1 else None
 
 
 def aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None:

@@ -29,12 +29,16 @@ Rules, in order (each reads only the unit itself):
    the unit's other roles of label C: the first whose node on that side lists L; else the only one; else none:
    bound late (the planner chooses which C). Before the unit, a C whose node lists its contents without L is no
    candidate: FOON's words disagree (`egg white and yolk (in [bowl])` beside the only `bowl (contains {egg white,
-   egg yolk, flour})`), so it is bound late and reported (rule 6). An object `in [C]` before and after a unit with
+   egg yolk, flour})`), so it is bound late and reported (rule 6), unless that C's output node lists it and none of
+   what it listed, which no role is (the cook's pan goes from `contains {egg mixture}` to `contains {omelette}`:
+   the omelette made from it is in it). An object `in [C]` before and after a unit with
    one C that does not list it stays in that C (`white rice (in [pot])` beside `pot (contains {rice})`), unless
    that C's output node newly lists it (it came from another C). An object whose output node keeps its input
    node's place, in a holder whose output node no longer lists it, arrives in the one other container that newly
    lists it, if one: FOON left its place stale (the garlic butter scraped into the bowl that lists it, still `in
-   [food processor bowl]`). A second role of one label in the same holder is bound late too: a list names a label
+   [food processor bowl]`). An object placed at a C where the unit has no C is with the one other role whose output
+   node lists both L and C: C is part of it (the club sandwich's bacon `on [bread]` beside the sandwich that lists
+   bread and bacon; reported by rule 6). A second role of one label in the same holder is bound late too: a list names a label
    once (`plate (contains {bread})` under the sandwich's two breads, each brought on its own plate: the planner
    takes the second from where it is).
 3. **Implied moves.** FOON often lists an ingredient only as an input: the pour of heavy cream gives `mixing bowl
@@ -68,8 +72,8 @@ Rules, in order (each reads only the unit itself):
    a label the list dropped from that container).
 6. **Contradictions** (`list_gaps`): an object in a C whose only C does not list it
    (rule 2), a product placed in a container whose output node describes its
-   contents and does not list it, and a label an output node newly lists that no
-   role of the unit is. No plan can satisfy both words, so the
+   contents and does not list it, an object placed on a part of another role (rule 2),
+   and a label an output node newly lists that no role of the unit is. No plan can satisfy both words, so the
    task reports them and its replay does not check that pair.
 
 What stays ambiguous: several holders of one label that all list L (the first
@@ -87,11 +91,11 @@ from functools import lru_cache
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, place_state, places
-from .holder_words import aliased, head_of, unit_aliases
+from .holder_words import aliased, head_of, part_of, renamed, unit_aliases
 from .pairing import Role, unit_roles
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "head_of", "list_gaps", "moved_into", "relational_roles",
-           "unit_aliases", "unit_flows"]
+__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "head_of", "list_gaps", "moved_into", "on_parts",
+           "relational_roles", "unit_aliases", "unit_flows"]
 
 
 class Fate(StrEnum):
@@ -185,6 +189,22 @@ def _reading(unit: FunctionalUnit) -> _Reading:
     return _Reading(roles, before, after)
 
 
+@lru_cache(maxsize=1 << 14)
+def on_parts(unit: FunctionalUnit) -> tuple[tuple[ObjectNode, str], ...]:
+    """(output node, holder label) for each object the unit places at a part of another role (rule 2: the bacon
+    `on [bread]` is on the sandwich)."""
+    read, rels = _reading(unit), relational_roles(unit)
+    labels, given = [r.label for r in read.roles], _given(read)
+    return tuple((r.after, labels[x.target.role]) for j, (r, x) in enumerate(zip(read.roles, rels, strict=True))
+                 if r.after is not None and x.target is not None and x.target.role is not None and place_of(given[j])
+                 and part_of(labels, read.before, given, j, place_of(given[j])[1]) == x.target.role)
+
+
+def _given(read: _Reading) -> list[ObjectNode | None]:
+    """The output nodes of the unit's roles, read through its names (None: the unit gives the role none)."""
+    return [read.after[k] if r.after is not None else None for k, r in enumerate(read.roles)]
+
+
 def _keeps(node: ObjectNode | None, label: str) -> bool:
     """Whether a holder in `node` still holds something of `label` by FOON's words (rule 4)."""
     return node is not None and describes_contents(node) and label in listed(node)
@@ -224,6 +244,10 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                for k, r in enumerate(roles)]
     for k, r in enumerate(roles):
         src = sources[k]
+        if src is not None and src.role is None and place_of(after[k]) == place_of(before[k]):
+            mine = [j for j in range(len(roles)) if j != k and labels[j] == src.holder and before[j] is not None]
+            if len(mine) == 1 and renamed(before[mine[0]], after[mine[0]], r.label, labels):
+                src = Place(src.relation, src.holder, mine[0])  # its list had it by the name it was made from
         if src is not None and src.role is not None and any(
                 labels[j] == r.label and sources[j] == src for j in range(k)):
             src = Place(src.relation, src.holder)  # a list names a label once: the second is bound late (rule 2)
@@ -234,6 +258,9 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
             takers = [j for j in _takers(unit, r.label, k) if roles[j].before is not None]
             if len(takers) == 1:  # a stale place (the unit left it as it was): the one role taking it in holds it
                 dst = Place(dst.relation, labels[takers[0]], takers[0])
+        if r.after is not None and dst is not None and dst.role is None and (
+                part := part_of(labels, before, _given(read), k, dst.holder)) is not None:
+            dst = Place(dst.relation, labels[part], part)  # placed on a part of the one role taking it in
         if r.before is None:
             result.append(RelRole(r, r.after, Fate.NEW, None, dst))
             continue
@@ -346,6 +373,9 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
                 describes_contents(read.before[j]) for j in mine):
             out.append((src.holder, r.label, f"{r.label} is {src.relation} [{src.holder}], whose node before the "
                         "unit does not list it: which one holds it is left to the plan"))
+    for node, holder in on_parts(unit):  # rule 2: placed on a part of another role (the bread of the sandwich)
+        (rel, part), = places(node)[:1]
+        out.append((holder, node.label, f"{node.label} is {rel} [{part}], which {holder} lists: read as {rel} the {holder}"))
     for r, new in zip(roles, _newly_listed(unit), strict=True):
         out += [(r.label, x, f"{r.label} lists {x}, which no object of the unit is") for x in sorted(new - labels)]
         for label, node in outs:

@@ -38,7 +38,11 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     avocado the kitchen has on a board), and one more per further object of a label the task's units put into
     holders of label C (`filled`, `holders.gained`): a unit taking it out of such a holder empties the holder
     (`relational_plan`), so two butters `in [bowl]` get two bowls listing butter, where one bowl holding both
-    was left empty with the second in it. An added holder starts in a node of `nodes` that lists exactly that
+    was left empty with the second in it. A holder added for a `silent` label is one plain node (`surface`),
+    listing nothing, for every object placed there: its contents are not checked, as a place that says nothing of
+    what it holds, and a unit may take them off it whole (the ribs' garlic scooped off the surface the kitchen
+    has it on, in a task where another unit's output names a surface: listing the garlic, the surface
+    still listed it once the garlic was in the spoon). An added holder starts in a node of `nodes` that lists exactly that
     and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
     [pot])`), else in a node made of the list. Names (`filled`'s too) are read through the task's `alias`es. O(n^2) for n objects.
     """
@@ -51,6 +55,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     used: set[tuple[str, str]] = set()
     wanted: dict[str, dict[str, int]] = {}
     picks: dict[str, tuple[str, Relation] | tuple[str, None]] = {}
+    plain: set[str] = set()
     for x in instances:
         place = place_of(x.start)
         if place is None:
@@ -62,6 +67,10 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         quiet = [h for h in pool if not describes_contents(h.start)] if label in silent else []
         together = [h for h in pool if (x.start, h.start) in paired]
         pick = (free or listing or quiet or together or [None])[0]
+        if pick is None and label in silent:  # a holder that says nothing of what it holds: one, in no list
+            plain.add(label)
+            picks[x.name] = (label, None)
+            continue
         if pick is None:
             items = wanted.setdefault(label, {})
             items[x.label] = items.get(x.label, 0) + 1 if (label, x.label) in filled else 1
@@ -73,7 +82,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     for n in sorted(nodes):
         if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
             listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
-    implied = [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
+    implied = [make_node(label, []) for label in sorted(plain)] + [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
                for label, counts in sorted(wanted.items())
                for items in (frozenset(x for x, k in counts.items() if k > i) for i in range(max(counts.values())))]
     return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None

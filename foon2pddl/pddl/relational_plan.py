@@ -46,11 +46,11 @@ from dataclasses import dataclass, field
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, places
-from .holders import Fate, Flow, RelRole, head_of, moved_into, relational_roles, unit_aliases, unit_flows
+from .holders import Fate, Flow, RelRole, gained, head_of, moved_into, relational_roles, unit_aliases, unit_flows
 from .pairing import Role
 from .relational_init import read_names
 
-__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "called_fills", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
            "dusted_nodes", "dustings", "holding_labels", "left_nodes", "quiet_places", "restated_nodes", "silent_labels",
            "plan_unit", "without"]
 
@@ -139,20 +139,29 @@ def quiet_places(nodes: Iterable[ObjectNode], units: Iterable[FunctionalUnit],
                                    if c not in names and not any(head_of(c, x) for x in names)}
 
 
-def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str]) -> bool:
+def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str],
+           called: frozenset[tuple[str, str]]) -> bool:
     """Whether the task's units fill holders named `holder` (or, when no object of the task has that label, a
-    label it is the head of: `pan`, `cooking pan`) with `label`. A `cup` in a task with cups is a cup, not the
-    blender cup another recipe of a universal FOON fills."""
-    return any(x == label and (h == holder or (holder not in labels and h.endswith(" " + holder))) for h, x in filled)
+    label it is the head of: `pan`, `cooking pan`; or holders they call `holder`, `called`: FOON-GEN's enchiladas
+    fill the cookware with the ground meats they place `in [pan]`) with `label`. A `cup` in a task with cups is
+    a cup, not the blender cup another recipe of a universal FOON fills."""
+    return (holder, label) in called or any(
+        x == label and (h == holder or (holder not in labels and h.endswith(" " + holder))) for h, x in filled)
+
+
+def called_fills(units: Iterable[FunctionalUnit]) -> frozenset[tuple[str, str]]:
+    """(name, content label) for every label a unit puts into a holder it calls by that name (`unit_aliases`: the
+    pick-and-place that fills FOON-GEN's cookware with ground meats and leaves them `in [pan]`)."""
+    return frozenset((name, x) for u in units for name, lab in unit_aliases(u) for h, x in gained(u) if h == lab)
 
 
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
-              holding: frozenset[str] = frozenset()) -> UnitPlan:
+              holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holders.gained`; module doc), whose nodes have `labels` and place
-    objects in or on objects of the labels `holding`."""
+    objects in or on objects of the labels `holding`, and fill holders by the names `called` (`called_fills`)."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -168,7 +177,9 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                     and (holder.label, r.role.label) in filled):
                 fate = Fate.MOVES  # a container an earlier unit filled, which FOON never empties
                 into = rels[r.target.role].target if r.target is not None and r.target.role is not None else None
-                if into is None or into.role != src.role:  # onto the carrot in that bowl: still in it
+                restated = any(x.fate is Fate.NEW and x.role.label == r.role.label and x.target is not None
+                               and x.target.role == src.role for x in rels)  # the unit's own output leaves one there
+                if (into is None or into.role != src.role) and not restated:  # onto the carrot in that bowl: still in it
                     # with what the task's units put into it (the syrup soaked into the cranberries)
                     drops.setdefault(src.role, set()).update({r.role.label} | {x for h, x in filled if h == r.role.label})
             elif (fate is Fate.CONSUMED and holder.after is None and holder.before in kitchen
@@ -176,11 +187,11 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                   and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
                               for x in rels)):
                 fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
-        elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled, labels)
+        elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled, labels, called)
               and (src.relation, src.holder) not in made_at):
             late_empties = True  # consumed out of a container the unit does not name (and makes nothing in)
         elif fate is Fate.MOVES and src is not None and src.role is None and src.holder not in silent:
-            if (_fills(src.holder, r.role.label, filled, labels) or r.target is None
+            if (_fills(src.holder, r.role.label, filled, labels, called) or r.target is None
                     or (r.role.label in holding and listed(r.role.before))):
                 # whichever container holds it is emptied of it (it ends in no place; it holds objects a portion
                 # would leave behind: the buttered bread leaves the plate whole, the butter in it with it)
@@ -305,19 +316,27 @@ def alike_nodes(plan: UnitPlan, s: Slot,
 
 def restated_nodes(plan: UnitPlan, s: Slot,
                    inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
-    """For a slot the unit makes (its only role of that label) in a holder role whose node lists the label before
-    and after the unit: the nodes of that label placed in holders of the holder's label. FOON restates what is
-    already there (the scoop's output-only `corn (shaved, on [cutting board])` beside the board's `contains
-    {corn}`; the mix's new `potato mixture` in the bowl that lists one): the object there becomes part of the one
-    made, so the holder never holds two."""
+    """For a slot the unit makes (its only role of that label, or the others of the label move out of that holder)
+    in a holder role whose node lists the label before and after the unit: the nodes of that label placed in
+    holders of the holder's label, but those the others leave. FOON restates what is already there (the scoop's
+    output-only `corn (shaved, on [cutting board])` beside the board's `contains {corn}`; the mix's new `potato
+    mixture` in the bowl that lists one; FOON-GEN's scoop and pour takes the corn kernels off the board and
+    restates the shaved corn, both `fruit vegetables`): the object there becomes part of the one made, so the
+    holder never holds two."""
     dst, label = s.rel.target, s.rel.role.label
-    if s.fate is not Fate.NEW or dst is None or dst.role is None or [x.rel.role.label for x in plan.slots].count(label) > 1:
+    if s.fate is not Fate.NEW or dst is None or dst.role is None:
+        return []
+    others = [x for x in plan.slots if x.rel.role.label == label]
+    others.remove(s)
+    if not all(x.fate is Fate.MOVES and x.rel.source is not None and x.rel.source.role == dst.role
+               and (x.rel.target is None or x.rel.target.role != dst.role) for x in others):
         return []
     holder = plan.slots[dst.role].rel.role
     after = plan.after_of(dst.role) or holder.before
     if holder.before is None or label not in listed(holder.before) or label not in listed(after):
         return []
-    return [(n, rel) for n, rel in inside.get(holder.label, ()) if n.label == label]
+    leave = {x.rel.role.before for x in others}
+    return [(n, rel) for n, rel in inside.get(holder.label, ()) if n.label == label and n not in leave]
 
 
 def dustings(plans: Iterable[UnitPlan]) -> frozenset[ObjectNode]:

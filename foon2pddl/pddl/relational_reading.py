@@ -22,7 +22,7 @@ from .holders import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, derive_counts
 from .list_drops import kept_in_place
-from .relational_plan import UnitPlan, count_roles, holding_labels, plan_unit, quiet_places
+from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, plan_unit, quiet_places
 
 __all__ = ["Reading", "read_units"]
 
@@ -89,8 +89,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     if "task" not in memo:
         task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
         memo["task"] = (task_nodes, frozenset().union(*(gained(f.units[u]) for u in units)),
-                        frozenset(n.label for n in task_nodes), holding_labels(f.units[u] for u in units))
-    task_nodes, filled, labels, holding = memo["task"]
+                        frozenset(n.label for n in task_nodes), holding_labels(f.units[u] for u in units),
+                        called_fills(f.units[u] for u in units))  # FOON-GEN's `pan`: the cookware
+    task_nodes, filled, labels, holding, called = memo["task"]
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
         key = ("silent", tuple(speakers))
@@ -102,7 +103,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         key = ("plans", silent)
         if key not in memo:
             plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
-                                                                 holding) for u in units})
+                                                                 holding, called) for u in units})
             plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
                                                  if c in inp.candidates})
             by_unit = {f.units[u]: p for u, p in plans.items()}

@@ -48,9 +48,9 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   unless the step makes it, and then it did not exist (`REMADE`); its node before the
   step is the binding's `before`, and after it the binding's `after` (or `before` when
   the unit leaves it unchanged), unless the step consumes it (`STATE_MISMATCH`);
-* an object that leaves a holder was in a holder its input node names, and that holder
-  is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder,
-  the fridge a scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
+* an object that leaves a holder was in a holder its input node names (or of a pair `trace.gaps` reports), and
+  that holder is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder, the fridge a
+  scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
 * a bound object whose node (before or after) names `in [C]` while the step binds objects labelled C as
   roles or chosen holders (not a board an effect emptied, nor one it makes, for a node from before it) is in one
   of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in the microwave while the salmon sits in bowl_2), unless
@@ -317,10 +317,9 @@ class _Replay:
         first = self.initial[oid]
         scene = was.holder == first.holder and not self.places(first.node, oid)
         if was.holder is not None and not scene:
-            named = {c for _, c in self.places(node_before or was.node, oid)}
-            if self.label[was.holder] not in named:
-                add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
-                    f"{oid} leaves {was.holder}, a {self.label[was.holder]} its input node does not name")
+            named, h = {c for _, c in self.places(node_before or was.node, oid)}, self.label[was.holder]
+            if h not in named and not self.stands_for(oid) & self.gaps.get(h, frozenset()):  # as for placement
+                add(DisagreementKind.WRONG_SOURCE, (oid, was.holder), f"{oid} leaves {was.holder}, a {h} its input node does not name")
             elif was.holder not in bound:
                 add(DisagreementKind.WRONG_SOURCE, (oid, was.holder),
                     f"{oid} leaves {was.holder}, which the step does not use")
