@@ -1,4 +1,4 @@
-"""Timing helpers shared by every benchmark module: medians over repeated runs."""
+"""Helpers shared by the benchmark modules: medians over repeated runs, a universal FOON's dishes."""
 
 from __future__ import annotations
 
@@ -9,6 +9,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from foon2pddl.analysis.reachability import reachable
+from foon2pddl.model.foon import Foon, ObjectNode
 
 
 def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[float, list[float], Any]:
@@ -22,6 +25,14 @@ def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[flo
         result = fn()
         times.append(time.perf_counter() - t0)
     return statistics.median(times), times, result
+
+
+def reachable_dishes(foon: Foon, kitchen_nodes) -> list[ObjectNode]:
+    """The nodes some recipe marks as its dish (`Foon.dishes`: whichever recipe was merged first) that a unit
+    makes and the kitchen can make, sorted: a universal FOON's goals, the same in any merge order (the first
+    node listed need not carry the mark: merged in reverse, three of the shared dishes lost it)."""
+    reach = reachable(foon, kitchen_nodes)
+    return sorted(n for n in foon.dishes if n in foon.producers and reach.can_make(n))
 
 
 @dataclass

@@ -38,7 +38,7 @@ from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd, up_engine
 from foon2pddl.planners.trace_check import check_states
 
-from .harness import Context
+from .harness import Context, reachable_dishes
 
 AREA = "pddl_instances"
 
@@ -113,8 +113,7 @@ def universal_rows(shared: Path, time_limit: float, limit: int | None, extra: in
                    ) -> list[Row]:
     foon, _ = load([shared / "foon-subgraphs"])
     kitchen = default_kitchen(foon)
-    reach = reachable(foon, kitchen.nodes)
-    dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
+    dishes = reachable_dishes(foon, kitchen.nodes)
     return [check_goal(d.describe(), foon, kitchen, d, time_limit, extra, planner) for d in dishes[:limit]]
 
 

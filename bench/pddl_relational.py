@@ -28,7 +28,6 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from foon2pddl.analysis.reachability import reachable
 from foon2pddl.errors import FoonError
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.foon import Foon
@@ -39,7 +38,7 @@ from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan, plan_restoring
 
-from .harness import Context
+from .harness import Context, reachable_dishes
 
 AREA = "pddl_relational"
 ENCODINGS = ("tree", "instances", "relational")
@@ -125,8 +124,7 @@ def universal_rows(shared: Path, time_limit: float, limit: int | None = None,
     """The merged subgraphs, default kitchen, every dish its kitchen can make a goal (sorted; the first `limit`)."""
     foon, _ = load([shared / "foon-subgraphs"])
     kitchen = default_kitchen(foon)
-    reach = reachable(foon, kitchen.nodes)
-    dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
+    dishes = reachable_dishes(foon, kitchen.nodes)
     for dish in dishes[:limit]:
         yield from check_goal(dish.describe(), foon, kitchen, resolve_goal(spec_of_node(dish), foon), time_limit,
                               encodings)

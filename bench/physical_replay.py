@@ -27,7 +27,6 @@ import collections
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from foon2pddl.analysis.reachability import reachable
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
@@ -40,7 +39,7 @@ from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
 from foon2pddl.retrieval.api import retrieve
 
-from .harness import Context
+from .harness import Context, reachable_dishes
 
 AREA = "physical_replay"
 WANTED = ("instances", "relational")
@@ -74,8 +73,7 @@ def universal_rows(subgraphs: Path, encodings: tuple[str, ...], time_limit: floa
     """The merge of every subgraph, each reachable dish a goal (per-goal pruning)."""
     foon, _ = load([subgraphs])
     kitchen = default_kitchen(foon)
-    reach = reachable(foon, kitchen.nodes)
-    dishes = sorted({n for n in foon.nodes if n.dish is not None and n in foon.producers and reach.can_make(n)})
+    dishes = reachable_dishes(foon, kitchen.nodes)
     return [r for d in dishes[:limit] for r in check_goal(d.describe(), foon, kitchen, d, encodings, time_limit)]
 
 

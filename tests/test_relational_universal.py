@@ -63,6 +63,22 @@ def test_the_bench_plans_the_universal_foons_reachable_dishes_in_order():
         ("barbecued ribs (cooked, on [baking tray])", "relational", "solved", ())]
 
 
+CRACK = "O1\tbowl\t0\nS1\tempty\nO2\tegg\t1\nS2\twhole\nM1\t{motion}\tAssumed\tAssumed\n" \
+        "O1\tbowl\t0\nS3\tcontains\t{egg}\nO2\tegg\t1{mark}\nS4\tcracked\nS5\tin\t[bowl]\n//\n"
+
+
+def test_the_universal_bench_plans_the_same_dishes_in_any_merge_order(tmp_path):
+    # the shared subgraphs merged in reverse, as one file: the first node listed of the kofta mix, the shrimp and
+    # the whipped cream is an unmarked one, and the bench planned 56 dishes instead of 59
+    for name, first, second in (("marked-last", "", "\t7"), ("marked-first", "\t7", "")):
+        data = tmp_path / name / "foon-subgraphs"
+        data.mkdir(parents=True)
+        (data / "a.txt").write_text(CRACK.replace("{motion}", "crack").replace("{mark}", first))
+        (data / "b.txt").write_text(CRACK.replace("{motion}", "break").replace("{mark}", second))
+        rows = list(universal_rows(tmp_path / name, 60.0, encodings=("relational",)))
+        assert [(r.file, r.status) for r in rows] == [("egg (cracked, in [bowl])", "solved")], name
+
+
 def test_what_was_kneaded_into_an_object_leaves_the_unnamed_holder_with_it():
     # kofta (ACT-0054, lines 91-162; only the universal FOON makes its kofta mix, from ACT-0053): salt, paprika and
     # scallion are sprinkled onto the baking tray, kneaded into the kofta mix there, and the shape takes the mix
