@@ -284,3 +284,21 @@ def test_a_holder_the_task_fills_under_another_name_is_emptied_as_the_unit_s_own
     outcome = clean_unit_plan((cook, serve), (skillet, raw, n("plate", "empty")), served)
     assert [o.id for o in outcome.trace.objects if o.label == "toast"] == ["toast_1"]
     assert [s.holder for s in outcome.trace.final.values() if s.id == "toast_1"] == ["plate_1"]
+
+
+def test_a_place_only_foon_names_is_read_as_its_own_unit_reads_it():
+    # GEN, trial 6, goal 15 (0066-cilantro-lime_rice.txt:131): the cover leaves `lid (on [pan])` beside the pot,
+    # which does not list the lid, so the unit reads no object as its `pan`; the lemonade's pour in the same
+    # task (0072-old-fashioned_lemonade.txt:155) puts the zest `in [pan]` into the pot that lists it, and reads
+    # its pan as the pot. Through that other unit's reading no `pan` was added for the lid, which the cover
+    # then put on nothing, while the replay read its node as on a pot [misplaced]. A place an output names is
+    # read as its own unit reads it: the lid is on a pan of its own, as in the rice's recipe alone.
+    pot = n("pot", contains("water"), make_state("on", "stove"))
+    zested = n("pot", contains("water", "zest"), make_state("on", "stove"))
+    pour = FunctionalUnit((pot, n("bowl", contains("zest")), n("zest", inside("bowl"))), Motion("pour"),
+                          (zested, n("zest", inside("pan"))))
+    covered = n("pot", contains("water", "zest"), "covered", make_state("on", "stove"))
+    cover = FunctionalUnit((zested, n("lid", "clean")), Motion("cover"), (covered, n("lid", make_state("on", "pan"))))
+    outcome = clean_unit_plan([pour, cover], [pot, n("water", inside("pot")), n("bowl", contains("zest")),
+                                              n("zest", inside("bowl")), n("lid", "clean")], covered)
+    assert [o.id for o in outcome.trace.objects if o.label == "pan"] == ["pan_1"]

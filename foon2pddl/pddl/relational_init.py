@@ -202,7 +202,8 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
                       filled: frozenset[tuple[str, str]] = frozenset(), kitchen: frozenset[ObjectNode] = frozenset(),
                       ) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
     """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
-    and the units name (`named`: the places the units' output nodes and portions name; `filled`: what the
+    and the units name (`named`: the places the units' output nodes and portions name, each as its own unit
+    reads it, `holder_words.unit_aliases`; `filled`: what the
     task's units put into holders of which label, `holder_init`; `kitchen`: the task's kitchen nodes, which judge what
     the kitchen says, `implied_contents`). Also the task's aliases
     (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the
@@ -213,7 +214,7 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
     paired = frozenset((a, b) for u in units for a in u.inputs for b in u.inputs)
     instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired,
                                                                         kitchen))
-    missing = sorted({alias.get(c, c) for c in named} - {x.label for x in instances})
+    missing = sorted(set(named) - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
     instances, implied = holder_init(instances, alias, quiet, nodes, paired, filled)
