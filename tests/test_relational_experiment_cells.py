@@ -302,3 +302,24 @@ def test_a_place_only_foon_names_is_read_as_its_own_unit_reads_it():
     outcome = clean_unit_plan([pour, cover], [pot, n("water", inside("pot")), n("bowl", contains("zest")),
                                               n("zest", inside("bowl")), n("lid", "clean")], covered)
     assert [o.id for o in outcome.trace.objects if o.label == "pan"] == ["pan_1"]
+
+
+def test_an_object_starts_in_no_holder_the_unit_gives_it_another_of():
+    # GEN, trial 4, goal 10 (0019-garlic-parmesan_chicken.txt:64): the pour takes `spoon (contains {basil})` with
+    # `basil (in [spoon])` and `spoon (contains {pepper})` with `pepper (in [spoon])`; the trial's kitchen has the
+    # basil in a spoon and only the spoon of pepper. The basil went into the spoon of pepper, a spoon the unit
+    # takes with the basil's node [unlisted-content]; but the unit's own spoon of the basil is the one listing
+    # it (FOON contradicts itself only when no node of the unit lists it: the dropper `in [bottle]` beside the
+    # bottle of sweetener, 0043). It gets a spoon of its own, listing it.
+    basil_spoon, basil = n("spoon", contains("basil")), n("basil", "dried", inside("spoon"))
+    pepper_spoon, pepper = n("spoon", contains("pepper")), n("pepper", inside("spoon"))
+    shaker, shaken = n("shaker", contains("basil")), n("basil", "dried", inside("shaker"))
+    fill = FunctionalUnit((n("spoon", "empty"), shaker, shaken), Motion("pour"), (basil_spoon, basil))
+    mixed = n("bowl", contains("basil", "pepper"))
+    pour = FunctionalUnit((n("bowl", "empty"), basil_spoon, basil, pepper_spoon, pepper), Motion("pour"),
+                          (mixed, n("basil", "dried", inside("bowl")), n("pepper", inside("bowl"))))
+    outcome = clean_unit_plan([fill, pour], [n("bowl", "empty"), n("spoon", "empty"), shaker, shaken, basil,
+                                             pepper_spoon, pepper], mixed)
+    start = {s.id: s for s in outcome.trace.initial}
+    in_spoons = {s.id: start[s.holder].node for s in start.values() if s.node == basil and s.holder}
+    assert in_spoons and set(in_spoons.values()) == {basil_spoon}  # never the spoon of pepper

@@ -33,7 +33,10 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     first not yet given one of that label), else, when no node of the task says what a C holds (`silent`:
     a stove, a table), into the first C, else into the first C whose node a unit takes with the object's
     (`paired`: the watermelon lemonade's pour takes `strainer (clean, empty, on [measuring cup])` with
-    `measuring cup (clean, empty)`, FOON's contradiction the task reports); with none, into a holder to add: one per label C, listing
+    `measuring cup (clean, empty)`, FOON's contradiction the task reports; not when a unit takes the object's
+    node with a C's node that lists it: the garlic-parmesan chicken's pour takes the spoon of basil and the spoon
+    of pepper, and the kitchen's basil `in [spoon]`, with no spoon listing it, is not in the spoon of pepper);
+    with none, into a holder to add: one per label C, listing
     everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
     avocado the kitchen has on a board), and one more per further object of a label the task's units put into
     holders of label C (`filled`, `holders.gained`): a unit taking it out of such a holder empties the holder
@@ -52,6 +55,8 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     for x in instances:
         if x.start is not None:
             by_label.setdefault(x.label, []).append(x)
+    # an object's node a unit takes with a node of label C that lists it: that unit's C holds it, no other C it takes
+    claimed = {(a, b.label) for a, b in paired if a is not None and a.label in read_names(listed(b), alias)}
     used: set[tuple[str, str]] = set()
     wanted: dict[str, dict[str, int]] = {}
     picks: dict[str, tuple[str, Relation] | tuple[str, None]] = {}
@@ -65,7 +70,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         listing = [h for h in pool if x.label in read_names(listed(h.start), alias)]
         free = [h for h in listing if (h.name, x.label) not in used]
         quiet = [h for h in pool if not describes_contents(h.start)] if label in silent else []
-        together = [h for h in pool if (x.start, h.start) in paired]
+        together = [h for h in pool if (x.start, h.start) in paired and (x.start, label) not in claimed]
         pick = (free or listing or quiet or together or [None])[0]
         if pick is None and label in silent:  # a holder that says nothing of what it holds: one, in no list
             plain.add(label)
