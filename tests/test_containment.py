@@ -133,6 +133,6 @@ def test_cli_retrieve_and_plan_under_infer(tmp_path):
     assert infer.exit_code == 0, infer.output
     assert "1 units, 1 inferred by containment: bowl (contains {cornmeal, milk}, in [mixer])" in infer.stderr
     planned = CliRunner().invoke(main, ["plan", str(net), "--kitchen", str(kitchen), "--goal", "batter",
-                                        "--containment", "infer"])
+                                        "--containment", "infer", "--encoding", "tree"])  # FOON's semantics
     assert planned.exit_code == 0, planned.output
     assert "valid" in planned.stderr

@@ -44,7 +44,7 @@ def test_bad_driver_options_fail_before_planning(args, message):
     (("--evaluator", "h=ff()", "--search", "lazy_greedy([h], preferred=[h])"), "fd (custom)", None),
 ])
 def test_driver_configurations_solve(args, name, steps):
-    r = run("plan", "--goal", "guacamole", "--format", "json", *args)
+    r = run("plan", "--goal", "guacamole", "--encoding", "tree", "--format", "json", *args)  # 20 units: FOON's tree
     assert r.exit_code == 0, r.stderr
     data = json.loads(r.stdout)
     assert data["status"] == "solved" and data["planner"] == name

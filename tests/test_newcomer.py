@@ -195,9 +195,10 @@ def test_instances_typo_is_an_error_with_close_matches():
 
 @pytest.mark.parametrize("command", ["plan", "compile"])
 def test_instances_with_an_encoding_without_objects_is_an_error(command):
-    r = run(command, "--goal", "guacamole", "--instances", "cutting board=2")
+    r = run(command, "--goal", "guacamole", "--encoding", "tree", "--instances", "cutting board=2")
     assert r.exit_code == 2 and "--instances counts the objects of --encoding instances or relational" in r.stderr
-    batch = run(command, "--goal", "guacamole", "--goal", "lemonade", "--instances", "cutting board=2",
+    batch = run(command, "--goal", "guacamole", "--goal", "lemonade", "--encoding", "tree", "--instances",
+                "cutting board=2",
                 *(["-o", "/tmp/nu-never"] if command == "compile" else []))
     assert batch.exit_code == 2 and "--instances" in batch.stderr
 
@@ -374,7 +375,7 @@ def test_a_slow_plan_announces_itself(monkeypatch):
     monkeypatch.setattr(progress, "AFTER", 0.0)  # every step counts as slow: each says what it is
     r = run("plan", "--goal", "guacamole")
     assert r.exit_code == 0
-    assert "planning 'guacamole' (fd, tree encoding, time limit 300 s) ..." in r.stderr
+    assert "planning 'guacamole' (fd, relational encoding, time limit 300 s) ..." in r.stderr  # plan's default
     assert "reading the embedded example ..." in r.stderr
     monkeypatch.setattr(progress, "AFTER", 60.0)
     quiet = run("plan", "--goal", "guacamole")
@@ -399,7 +400,8 @@ def test_experiment_eta_waits_for_enough_cells():
 
 
 def test_optimal_up_result_names_the_engine_that_ran():
-    r = run("plan", "--goal", "whipped cream", "--planner", "pyperplan", "--optimal", "--time-limit", "120")
+    r = run("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan", "--optimal",
+            "--time-limit", "120")  # FOON's semantics: pyperplan takes no conditional effects (relational's)
     assert r.exit_code == 0, r.stderr
     assert "solved (up:pyperplan-opt)" in r.stderr
     assert "`up:pyperplan-opt`" in (Path(__file__).resolve().parent.parent / "docs" / "planning.md").read_text()
@@ -530,7 +532,8 @@ def _summary_counts(stderr: str) -> tuple[int, int]:
 def test_plan_names_the_steps_it_left_out(tmp_path):
     import json
 
-    r = run("plan", "--goal", "guacamole", "--format", "json", "--plan-file", tmp_path / "sas_plan")
+    r = run("plan", "--goal", "guacamole", "--encoding", "tree", "--format", "json", "--plan-file",
+            tmp_path / "sas_plan")  # FOON's semantics: only there does the tree leave steps out
     assert r.exit_code == 0
     data = json.loads(r.stdout)
     raw, used = data["planner_plan"], data["plan"]

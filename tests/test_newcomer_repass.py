@@ -109,7 +109,7 @@ def test_an_option_over_physical_objects_is_refused_before_anything_is_read(comm
     error; on the shared subgraphs the kitchen's note too, after 2 s of loading. A usage error comes first.
     And `--category-types` under `tree` was ignored without a word (`--instances` there is refused)."""
     out = ["-o", tmp_path / "out"] if command == "compile" else []
-    r = run(command, "--goal", "whipped cream", *option, *out)
+    r = run(command, "--goal", "whipped cream", "--encoding", "tree", *option, *out)  # plan's default has objects
     assert r.exit_code == 2, r.output
     assert option[0] in r.stderr and "note:" not in r.stderr, r.stderr
     gen = run(command, "--goal", "whipped cream", "--network", "gen", *option, *out)

@@ -1,4 +1,4 @@
-"""`plan --encoding tree` prints what `plan` printed while `tree` was its default encoding.
+"""`plan`'s default encoding is `relational`; `plan --encoding tree` prints what `plan` printed before the switch.
 
 The files in `tests/data/plan-tree/` are `plan`'s output at 3fbb13a, when `tree` was its default, captured with
 `normalised` below (stdout, then stderr without the `phases:` timing line; the JSON without its `timings`).
@@ -64,3 +64,66 @@ def capture(directory: Path) -> None:
     for name, args in CASES.items():
         (directory / f"{name}.txt").write_text(normalised(run(*args)))
 
+
+def test_plan_without_encoding_plans_the_relational_encoding():
+    text = run("--goal", "guacamole")
+    assert text.exit_code == 0, text.output
+    assert "objects, step by step (relational encoding):" in text.stdout
+    assert "pour lime_juice_1 from juicer_1 into bowl_1" in text.stdout  # the objects, each in its holder
+    data = json.loads(run("--goal", "guacamole", "--format", "json").stdout)
+    assert data["encoding"] == "relational" and data["validation"]["relational"]["ok"]
+
+
+def test_a_scene_kitchen_plans_with_its_ids_without_naming_the_encoding():
+    scene = SHARED / "scene" / "whipped_cream_scene.json"
+    result = run("--kitchen", str(scene), "--goal", "whipped cream: whipped, in [bowl]")
+    assert result.exit_code == 0, result.output
+    assert "pour sugar_1 from fridge_1 into mixing_bowl_1" in result.stdout
+
+
+def test_a_batch_plans_the_relational_encoding():
+    result = run("--goal", "guacamole", "--goal", "tomato soup", "--format", "jsonl")
+    assert result.exit_code == 0, result.output
+    assert "(relational encoding, planner fd)" in result.stderr
+    assert [json.loads(line)["status"] for line in result.stdout.splitlines()] == ["solved", "solved"]
+
+
+def test_restore_and_instances_need_no_encoding_option():
+    result = run("--goal", "guacamole", "--restore", "--instances", "knife=1", "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["encoding"] == "relational"
+    assert {o["id"] for o in data["relational"]["initial"] if o["label"] == "knife"} == {"knife_1"}
+
+
+def test_the_gen_network_keeps_its_lifted_encoding():
+    result = run("--goal", "lemonade", "--network", "gen", "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["encoding"] == "gen-lifted"
+    other = run("--goal", "lemonade", "--network", "gen", "--encoding", "instances")
+    assert other.exit_code == 2 and "--network gen compiles the gen-lifted encoding" in other.stderr
+
+
+def test_no_relational_plan_where_foon_has_a_tree_says_so_and_what_to_try():
+    result = run("--goal", "apple pie", APPLE)
+    assert result.exit_code == 1 and result.stdout == ""
+    reason = next(line for line in result.stderr.splitlines() if line.startswith("reason: "))
+    assert "FOON's semantics makes the goal" in reason and "relational encoding" in reason
+    assert "--encoding tree" in reason
+    data = json.loads(run("--goal", "apple pie", APPLE, "--format", "json").stdout)
+    assert data["status"] == "unsolvable" and "--encoding tree" in data["reason"]
+    assert run("--goal", "apple pie", APPLE, "--encoding", "tree").exit_code == 0  # FOON's own tree
+
+
+def test_a_search_without_conditional_effects_says_why_and_what_to_try():
+    result = run("--goal", "guacamole", "--optimal")
+    assert result.exit_code == 2 and result.stdout == ""
+    reason = next(line for line in result.stderr.splitlines() if line.startswith("reason: "))
+    assert "conditional effects" in reason and "--encoding tree" in reason
+    assert "Traceback" not in result.output
+
+
+def test_compile_keeps_the_tree_encoding_as_its_default(tmp_path):
+    result = CliRunner().invoke(main, ["compile", "--goal", "guacamole", "-o", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert "(tree encoding" in result.stdout

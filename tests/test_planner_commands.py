@@ -65,7 +65,7 @@ def test_an_engine_added_to_unified_planning_is_a_planner():
         check(name)
     factory.add_engine(name, "up_pyperplan.engine", "EngineImpl")
     check(name)
-    r = run("plan", "--goal", "guacamole", "--planner", name)
+    r = run("plan", "--goal", "guacamole", "--encoding", "tree", "--planner", name)  # pyperplan: no conditional effects
     assert r.exit_code == 0, r.stderr
     assert f"solved (up:{name})" in r.stderr
 
@@ -107,7 +107,7 @@ def test_relative_executable_and_arguments_resolve_in_the_callers_directory(tmp_
                                       "runpy.run_module('pyperplan', run_name='__main__')\n")
     monkeypatch.chdir(tmp_path)
     for cmd in ("tools/plan.sh {domain} {problem}", "python wrap.py -s gbf -H hff {domain} {problem}"):
-        r = run("plan", "--goal", "guacamole", "--planner-cmd", cmd)
+        r = run("plan", "--goal", "guacamole", "--encoding", "tree", "--planner-cmd", cmd)  # pyperplan: STRIPS only
         assert r.exit_code == 0, (cmd, r.stderr)
         assert "solved (external" in r.stderr
     missing = run("plan", "--goal", "guacamole", "--planner-cmd", "./nope.sh {domain} {problem}")
@@ -117,7 +117,7 @@ def test_relative_executable_and_arguments_resolve_in_the_callers_directory(tmp_
 
 @pytest.mark.parametrize("preset", sorted(PRESETS))
 def test_every_preset_runs_and_is_documented(preset):
-    r = run("plan", "--goal", "guacamole", "--planner-cmd", preset)
+    r = run("plan", "--goal", "guacamole", "--encoding", "tree", "--planner-cmd", preset)  # every preset reads STRIPS
     assert r.exit_code == 0, r.stderr
     assert f"solved (external ({preset})): " in r.stderr and "20 units, valid" in r.stderr
     doc = (ROOT / "docs" / "planning.md").read_text()

@@ -104,7 +104,8 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
     (("expand", "--pairs"), "expanding 101 units onto similar objects (WordNet similarities: once, then cached) ..."),
     (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
-    (("plan", "--goal", "whipped cream", "--planner", "pyperplan"), "looking up planner 'pyperplan' ..."),
+    (("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan"),
+     "looking up planner 'pyperplan' ..."),
     (("plan", "--goal", "whipped cream", "--skills"),
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),

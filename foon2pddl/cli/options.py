@@ -71,11 +71,12 @@ output_option = click.option("-o", "--output", "output", type=click.Path(path_ty
                              help="Write to this file (atomically) instead of standard output.")
 
 
-def encoding_option(command):
-    """`--encoding` with the registry's encodings (imported when a command that takes it is defined)."""
+def encoding_option(command, default: str | None = None):
+    """`--encoding` with the registry's encodings (imported when a command that takes it is defined); `default`:
+    the command's own (None: `DEFAULT_ENCODING`)."""
     from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
 
-    return click.option("--encoding", type=click.Choice(list(ENCODINGS)), default=DEFAULT_ENCODING,
+    return click.option("--encoding", type=click.Choice(list(ENCODINGS)), default=default or DEFAULT_ENCODING,
                         show_default=True,
                         help="PDDL encoding: " + "; ".join(f"{e.name} ({e.description})" for e in ENCODINGS.values())
                              + " (see docs/pddl.md).")(command)
@@ -308,7 +309,7 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
     """`load_view` for the PDDL commands (compile, plan), with the encoding they use.
 
     A network kind with its own encoding (`gen`: the lifted one) compiles that encoding
-    over the concrete network; an encoding without action costs rejects --costs, and one without
+    over the concrete network (when `--encoding` is the command's default, or `tree`); an encoding without action costs rejects --costs, and one without
     physical objects the options over them (`check_physical_options`), before anything is read.
     """
     from ..generalize.network import NETWORKS
@@ -316,7 +317,7 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
 
     own = NETWORKS[network].encoding
     if own is not None:
-        if encoding not in (DEFAULT_ENCODING, own):
+        if encoding_given() and encoding not in (DEFAULT_ENCODING, own):
             raise UsageError(f"--network {network} compiles the {own} encoding; drop --encoding")
         if costs is not None and not ENCODINGS[own].costs:
             raise UsageError(f"--network {network} does not support --costs")
@@ -349,7 +350,16 @@ def goal_input_options(command):
                             utensils_option, containment_option))
 
 
-def pddl_task_options(command):
-    """What compile and plan share: `goal_input_options`, then encoding, instances, level and network."""
-    return goal_input_options(_apply(command, (encoding_option, instances_option, category_types_option,
-                                               level_option, network_option)))
+def pddl_task_options(command=None, *, encoding: str | None = None):
+    """What compile and plan share: `goal_input_options`, then encoding (`encoding`: the command's default),
+    instances, level and network. `@pddl_task_options` or `@pddl_task_options(encoding=NAME)`."""
+    if command is None:
+        return lambda c: pddl_task_options(c, encoding=encoding)
+    return goal_input_options(_apply(command, (lambda c: encoding_option(c, encoding), instances_option,
+                                               category_types_option, level_option, network_option)))
+
+
+def encoding_given() -> bool:
+    """Whether the running command's `--encoding` was given (False outside a command, or at its default)."""
+    ctx = click.get_current_context(silent=True)
+    return ctx is not None and ctx.get_parameter_source("encoding") not in (None, click.core.ParameterSource.DEFAULT)

@@ -12,7 +12,7 @@ from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import DEFAULT_FORMAT, FORMATS, STEP_FORMATS, render_tree
-from ..pddl.compile import ENCODINGS
+from ..pddl.compile import ENCODINGS, PLAN_ENCODING
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
 from ..planners.registry import UnknownPlanner, lookup
@@ -30,6 +30,7 @@ from .options import (
     constraints_options,
     costs_option,
     emit,
+    encoding_given,
     expansion_notes,
     load_pddl_view,
     pddl_task_options,
@@ -40,8 +41,13 @@ from .options import (
     view_goal,
 )
 from .progress import slow_step
-from .reasons import networks_hint, why_unsolvable
+from .reasons import networks_hint, unsupported_reason, why_unsolvable
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
+
+#: The statuses `plan` explains in FOON's words, by whether the encoding is complete (an incomplete one's time-out
+#: may hide a plan FOON's semantics has).
+_NO_PLAN = {True: (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP),
+            False: (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP, PlanStatus.TIMEOUT)}
 
 
 def timing_line(timings: dict[str, float]) -> str:
@@ -83,7 +89,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
 
 
 @main.command("plan")
-@pddl_task_options
+@pddl_task_options(encoding=PLAN_ENCODING)
 @click.option("--planner", default=DEFAULT_PLANNER, show_default=True,
               help="fd (Fast Downward), or a unified-planning engine name such as pyperplan.")
 @click.option("--planner-cmd", "planner_cmd", default=None,
@@ -164,8 +170,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                           instances=checked_instances(instances, encoding, view.foon),
                           categories=category_chains(view.foon) if category_types else ())
     if skills:
-        source = click.get_current_context().get_parameter_source("encoding")
-        default_encoding = source is click.core.ParameterSource.DEFAULT
+        default_encoding = not encoding_given()
         encoding = skill_encoding(encoding, not default_encoding)
         if click.get_current_context().get_parameter_source("fmt") is click.core.ParameterSource.DEFAULT:
             fmt = "steps"  # a skill plan's own default: each FOON unit with its skill calls (docs/skills.md)
@@ -197,10 +202,11 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         view = outcome.compiled.view
         if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
-    explain = status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics
+    explain = status in _NO_PLAN[ENCODINGS[encoding].complete] and ENCODINGS[encoding].foon_semantics
+    unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else None
     if fmt == "json":
         data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]
-                            if explain else None)
+                            if explain else unsupported)
     else:
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
@@ -220,6 +226,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             click.echo("reason: " + reason, err=True)
             if NETWORKS[network].as_read and not cons.items and not makes:
                 networks_hint(net, kit, single_goal(goal), goal_file, level)
+        if unsupported is not None:
+            click.echo("reason: " + unsupported, err=True)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         emit(data, output)

@@ -38,7 +38,8 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
         found = retrieve_constrained(foon, kitchen, goal, cons).result
         if found.tree is None:
             return found.detail, False
-        return "native retrieval finds a tree under the constraints; the planner did not (see its message)", True
+        return "native retrieval finds a tree under the constraints; the planner did not (see its message)" \
+            + _try_tree(encoding), True
     reach = reachable(foon, kitchen.nodes)
     if not any(reach.can_make(c) for c in goal.candidates):
         return explain_unreachable(foon, kitchen.nodes, goal), False
@@ -56,7 +57,22 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
                     + "; ".join(s.describe() for s in short)
                     + " (raise the count, or drop it to let the count be derived)"), True
     return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
-           "encoding (see its message)", True
+           "encoding (see its message)" + _try_tree(encoding), True
+
+
+def _try_tree(encoding: str) -> str:
+    """What to try when FOON's semantics makes the goal and the planner found no plan under `encoding`."""
+    return "" if encoding == "tree" else "; `--encoding tree` plans under FOON's own semantics (no objects, no holders)"
+
+
+def unsupported_reason(task) -> str | None:
+    """Why a planner error may come from what `task` needs of a planner, and what to try; None when its
+    actions are plain STRIPS (then the planner's message is the whole story)."""
+    if ":conditional-effects" not in task.requirements:
+        return None
+    return (f"the {task.encoding} encoding's actions have conditional effects (`:conditional-effects`), which "
+            "this planner or search may not support (Fast Downward's --optimal A* with LM-cut and pyperplan do "
+            "not); `--encoding tree` (FOON's own semantics) and `--encoding instances` have none")
 
 
 def short_step(foon, kitchen, goal) -> str | None:

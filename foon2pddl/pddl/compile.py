@@ -32,7 +32,7 @@ from .registry import Compiled, Encoding
 from .relational_replay import RELATIONAL_VIEW, relational_trace
 from .task import PlanningTask, settle_goal
 
-__all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "as_compiled", "compile_goal", "compile_task",
+__all__ = ["DEFAULT_ENCODING", "ENCODINGS", "GROUND_ENCODINGS", "PLAN_ENCODING", "as_compiled", "compile_goal", "compile_task",
            "encoding_named", "register"]
 
 
@@ -58,6 +58,9 @@ ENCODINGS: dict[str, Encoding] = _registry(
 )
 
 DEFAULT_ENCODING = next(iter(ENCODINGS))
+#: The encoding `foon2pddl plan` uses when none is asked for: physical objects and which holds which, whose plans a
+#: robot could carry out (`compile` and the API keep `DEFAULT_ENCODING`, FOON's own semantics; docs/planning.md).
+PLAN_ENCODING = "relational"
 
 #: The encodings whose plan steps map back through `Action.unit` alone (the lifted one grounds categories).
 GROUND_ENCODINGS = tuple(name for name, e in ENCODINGS.items() if not e.lifted)
