@@ -458,7 +458,8 @@ def test_states_nodes_and_units_keep_their_hashes_across_pickling():
     unit = make_unit((node,), Motion("stir"), (make_node("bowl"),), (make_source("r.txt", 3),))
     assert hash(state) == hash((state.label, state.related, state.ingredients))
     assert hash(node) == hash((node.label, node.states))
-    assert hash(unit) == hash((unit.inputs, unit.motion, unit.outputs)) and unit.key  # the key is cached too
+    assert hash(unit) == hash((unit.inputs, unit.motion, unit.outputs))
+    assert unit.key is unit.key == (unit.motion.label, frozenset(unit.inputs), frozenset(unit.outputs))  # cached
     for x in (state, node, unit):
         copy = pickle.loads(pickle.dumps(x))
         assert b"_hash" not in pickle.dumps(x)
