@@ -91,7 +91,8 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         alias = dict(task_aliases([f.units[u] for u in units], rd.have, [x.start for x in instances]))
         placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
     else:
-        named = {dict(unit_aliases(f.units[u])).get(c, c)
+        aliases = {u: dict(unit_aliases(f.units[u])) for u in units}  # once per unit, not per place
+        named = {aliases[u].get(c, c)
                  for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
                                                               nodes, named, rd.silent, rd.filled, inp.kitchen)

@@ -276,7 +276,7 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
             broken = Validation(False, (str(exc),))
     beside = emptied(trace) if trace is not None and compiled.holders else ()
     beside = beside if len(beside) == len(tree.units) else ()
-    notes += emptied_notes(trace, kitchen_nodes | compiled.placed) if beside else ()
+    notes += emptied_notes(trace, kitchen_nodes | compiled.placed, beside) if beside else ()
     decoded = Decoded(tree, validate(tree, kitchen_nodes | compiled.placed, containment_of(compiled.task.units),
                                      beside), simulate_plan(compiled.task, steps), up, compiled.foon_semantics,
                       compiled.notes + notes, steps=used_steps(compiled, steps, plain))

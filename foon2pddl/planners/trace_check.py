@@ -63,10 +63,12 @@ def emptied(trace: PhysicalTrace) -> tuple[tuple[ObjectNode, ...], ...]:
                  for step in trace.steps)
 
 
-def emptied_notes(trace: PhysicalTrace, given: Iterable[ObjectNode]) -> tuple[str, ...]:
-    """One note per node of `emptied` a later step takes that neither `given` (the kitchen the tree is checked
-    from) nor an earlier unit's outputs hold, naming both steps with their file:line. O(steps^2 x inputs)."""
-    have, left, out = set(given), emptied(trace), []
+def emptied_notes(trace: PhysicalTrace, given: Iterable[ObjectNode],
+                  left: tuple[tuple[ObjectNode, ...], ...]) -> tuple[str, ...]:
+    """One note per node of `left` (`emptied(trace)`, computed once by the caller) a later step takes that neither
+    `given` (the kitchen the tree is checked from) nor an earlier unit's outputs hold, naming both steps with
+    their file:line. O(steps^2 x inputs)."""
+    have, out = set(given), []
     for k, step in enumerate(trace.steps):
         for node in dict.fromkeys(x for x in step.unit.inputs if x not in have):
             by = next((j for j in range(k - 1, -1, -1) if node in left[j]), None)
