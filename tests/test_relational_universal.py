@@ -37,10 +37,16 @@ def test_a_cup_is_not_read_as_a_blender_cup_when_the_task_has_cups():
     assert (str(slot.fate), slot.late_empties) == ("moves", True)
 
 
+def plan_dish(foon, prefix: str, time_limit: float):
+    """The relational plan of the universal FOON's dish (`Foon.dishes`, as the bench reads them) whose
+    description starts with `prefix`, from the default kitchen."""
+    dish = next(x for x in sorted(foon.dishes) if x.describe().startswith(prefix))
+    return plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational",
+                time_limit=time_limit)
+
+
 def test_the_universal_bread_toast_is_clean(universal):
-    foon, _ = universal
-    dish = next(x for x in sorted(foon.nodes) if x.dish is not None and x.describe().startswith("bread toast"))
-    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=60)
+    outcome = plan_dish(universal[0], "bread toast", 60)
     assert outcome.status == "solved", outcome.message
     assert replay(outcome.trace).ok
 
@@ -48,9 +54,7 @@ def test_the_universal_bread_toast_is_clean(universal):
 def test_the_universal_omelette_is_valid_and_clean(universal):
     # 0050's pour (line 288) reads the omelette its own cook left, of the four cooks leaving the pan's node
     # (`input_stitch`), and the second pan goes onto the stove the bacon's pan was taken off (`trace_check.emptied`)
-    foon, _ = universal
-    dish = next(x for x in sorted(foon.nodes) if x.dish is not None and x.describe().startswith("omelette (contains {bacon"))
-    outcome = plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", time_limit=120)
+    outcome = plan_dish(universal[0], "omelette (contains {bacon", 120)
     assert outcome.status == "solved", outcome.message
     assert replay(outcome.trace).ok
     assert any("0050-scrambled_eggs_with_bacon-cheese.txt:288: pour takes omelette" in x for x in outcome.compiled.notes)
