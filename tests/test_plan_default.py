@@ -118,11 +118,23 @@ def test_no_relational_plan_where_foon_has_a_tree_says_so_and_what_to_try():
 
 
 def test_a_search_without_conditional_effects_says_why_and_what_to_try():
-    result = run("--goal", "guacamole", "--optimal")
+    result = run("--goal", "guacamole", "--planner", "pyperplan")
     assert result.exit_code == 2 and result.stdout == ""
     reason = next(line for line in result.stderr.splitlines() if line.startswith("reason: "))
     assert "conditional effects" in reason and "--encoding tree" in reason
     assert "Traceback" not in result.output
+
+
+def test_optimal_plans_the_default_encoding_with_an_admissible_search_that_takes_conditional_effects():
+    # LM-cut (seq-opt-lmcut) refuses the relational actions' `forall ... when`; A* with h^max is admissible and
+    # takes them, so its plan is no longer than lama's (an independent bound) and passes the relational replay
+    optimal = json.loads(run("--goal", "guacamole", "--optimal", "--format", "json").stdout)
+    lama = json.loads(run("--goal", "guacamole", "--format", "json").stdout)
+    assert (optimal["status"], optimal["planner"], optimal["encoding"]) == ("solved", "fd (astar(hmax()))",
+                                                                           "relational")
+    assert optimal["validation"]["relational"]["ok"] and len(optimal["plan"]) <= len(lama["plan"])
+    tree = json.loads(run("--goal", "guacamole", "--optimal", "--encoding", "tree", "--format", "json").stdout)
+    assert tree["planner"] == "fd (seq-opt-lmcut)"  # no conditional effects: LM-cut as before
 
 
 def test_compile_keeps_the_tree_encoding_as_its_default(tmp_path):

@@ -71,8 +71,8 @@ def unsupported_reason(task) -> str | None:
     if ":conditional-effects" not in task.requirements:
         return None
     return (f"the {task.encoding} encoding's actions have conditional effects (`:conditional-effects`), which "
-            "this planner or search may not support (Fast Downward's --optimal A* with LM-cut and pyperplan do "
-            "not); `--encoding tree` (FOON's own semantics) and `--encoding instances` have none")
+            "this planner or search may not support (pyperplan, Tamer, Aries and Fast Downward's LM-cut do not; "
+            "`--optimal` takes A* with h^max there); `--encoding tree` (FOON's own semantics) and `--encoding instances` have none")
 
 
 def short_step(foon, kitchen, goal) -> str | None:

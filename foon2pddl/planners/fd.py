@@ -33,6 +33,8 @@ from .result import PlanResult, parse_plan_text, tail
 
 SATISFICING_ALIAS = "lama-first"
 OPTIMAL_ALIAS = "seq-opt-lmcut"
+#: `optimal` on a task with conditional effects, which LM-cut refuses: A* with h^max, admissible and takes them.
+OPTIMAL_CONDITIONAL_SEARCH = "astar(hmax())"
 
 #: Exit codes of the FD components (driver/returncodes.py) -> (status, meaning).
 EXIT_CODES: dict[int, tuple[str, str]] = {
@@ -193,6 +195,14 @@ def search_config(alias: str | None = None, search: str | None = None, evaluator
         close = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean {close[0]!r}? " if close else ""
         raise ValueError(f"unknown Fast Downward alias {name!r}; {hint}aliases: {', '.join(known)}") from None
+
+
+def optimal_config(task) -> SearchConfig | None:
+    """The admissible search for `optimal` when `task` (a PlanningTask) has conditional effects, which
+    `seq-opt-lmcut`'s LM-cut refuses: A* with h^max (`OPTIMAL_CONDITIONAL_SEARCH`); None otherwise (the alias)."""
+    if not any(a.conditional for a in task.actions):
+        return None
+    return SearchConfig(OPTIMAL_CONDITIONAL_SEARCH, ("--search", OPTIMAL_CONDITIONAL_SEARCH))
 
 
 def planner_name(optimal: bool) -> str:

@@ -71,9 +71,12 @@ class Planner:
 def _fd_solve(request: PlanRequest) -> PlanResult:
     from . import fd
 
+    config = request.search
+    if config is None and request.optimal:  # LM-cut takes no conditional effects: A* with h^max then
+        config = fd.optimal_config(request.task)
     return fd.solve(request.domain_text, request.problem_text, optimal=request.optimal,
                     time_limit=request.time_limit, translate_options=fd.translate_options_for(request.task),
-                    config=request.search)
+                    config=config)
 
 
 def _fd_translate_once(task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
