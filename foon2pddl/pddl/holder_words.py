@@ -13,7 +13,7 @@ from ..model.places import head_of, listed, places
 from .encoding import short_path, unit_where
 from .pairing import unit_roles
 
-__all__ = ["aliased", "head_of", "mismatches", "part_of", "renamed", "reported", "task_aliases", "unit_aliases"]
+__all__ = ["aliased", "mismatches", "part_of", "renamed", "reported", "task_aliases", "unit_aliases"]
 
 
 @lru_cache(maxsize=1 << 14)
@@ -76,9 +76,9 @@ def part_of(labels: Sequence[str], before: Sequence[ObjectNode | None], after: S
     lists bread and bacon; FOON-GEN's sandwich listed its sausages and cured meats, the ham, before the bacon came
     too). A container the unit's nodes place things in lists what is in it, not what it is made of: the salt
     sprinkled `on [bean mix]` in the bowl that lists both is on the bean mix. Else None."""
-    named = {c for n in (*before, *after) for _, c in places(n)}
     if holder in labels:
         return None
+    named = {c for n in (*before, *after) for _, c in places(n)}
     takers = [j for j in range(len(labels)) if j != k and before[j] is not None and after[j] is not None
               and labels[j] not in named and {labels[k], holder} <= listed(after[j])]
     return takers[0] if len(takers) == 1 else None

@@ -91,10 +91,10 @@ from functools import lru_cache
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, place_state, places
-from .holder_words import aliased, head_of, part_of, renamed, unit_aliases
+from .holder_words import aliased, part_of, renamed, unit_aliases
 from .pairing import Role, unit_roles
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "head_of", "list_gaps", "moved_into", "on_parts",
+__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "moved_into", "on_parts",
            "relational_roles", "unit_aliases", "unit_flows"]
 
 

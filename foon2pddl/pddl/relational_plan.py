@@ -45,8 +45,8 @@ from dataclasses import dataclass, field
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, places
-from .holders import Fate, Flow, RelRole, gained, head_of, moved_into, relational_roles, unit_aliases, unit_flows
+from ..model.places import describes_contents, head_of, listed, places
+from .holders import Fate, Flow, RelRole, gained, moved_into, relational_roles, unit_aliases, unit_flows
 from .pairing import Role
 from .relational_init import read_names
 
