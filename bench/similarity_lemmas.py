@@ -1,13 +1,15 @@
-"""Draw a fourth labelled batch of substitution pairs (split `lemmas`), of labels no rule was designed on.
+"""Draw a batch of substitution pairs over WordNet lemmas no rule was designed on (splits `lemmas`, `lemmas2`).
 
-`python -m bench.similarity_lemmas [--shared DIR] BLIND KEY` writes BLIND (the pairs in a
-seeded shuffle with an empty `label` column) and KEY (each pair's split and source), as
-`similarity_sample` does. The labels are WordNet 3.0 noun lemmas drawn at random (seed
-`SEED`): `FOOD` synsets and `TOOLS` synsets under roots fixed before the draw (the kinds
-of objects FOON recipes use), each synset named by its first lower-case lemma
-(`apple_pie` -> `apple pie`), skipping labels of the reference vocabulary (the shared
-subgraphs and the example), of the search inputs (the `outside` split) and of
-`similarity_pairs.tsv`. The pairs: a seeded sample of `ACCEPTED` pairs among those of a
+`python -m bench.similarity_lemmas [--shared DIR] [--split S] BLIND KEY` writes BLIND (the
+pairs in a seeded shuffle with an empty `label` column) and KEY (each pair's split and
+source), as `similarity_sample` does. The labels are WordNet 3.0 noun lemmas drawn at
+random (the split's seed, `SEEDS`): `FOOD` synsets and `TOOLS` synsets under roots fixed
+before the first draw (the kinds of objects FOON recipes use), each synset named by its
+first lower-case lemma (`apple_pie` -> `apple pie`), skipping labels of the reference
+vocabulary (the shared subgraphs and the example), of the search inputs (the `outside`
+split) and of `similarity_pairs.tsv` as it was when the split was drawn (every split but
+this one and the ones drawn after it) and of the earlier batches' draws: `lemmas2` skips every
+label `lemmas` drew. The pairs: a seeded sample of `ACCEPTED` pairs among those of a
 drawn label with a drawn or reference label that the paper's rule or the cook mode
 accepts (>= 0.89; the cook mode's breadth vocabulary joined by the drawn labels, as a
 user's run on them would), plus `RANDOM` seeded pairs from the rest (`random`).
@@ -27,7 +29,9 @@ from foon2pddl.model.foon import normalize_label
 from .similarity import read_pairs, search_labels
 from .similarity_sample import main as sample_main
 
-SEED, N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 42, 80, 40, 170, 30
+N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 80, 40, 170, 30
+#: The batches in the order they were drawn, with their seeds (`lemmas` at 8697b53, `lemmas2` at 213d3ab).
+SEEDS = {"lemmas": 42, "lemmas2": 43}
 FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
         "seafood.n.01", "bread.n.01", "sauce.n.01", "condiment.n.01", "dish.n.02", "baked_goods.n.01",
         "dairy_product.n.01", "vegetable_oil.n.01", "sweetening.n.01", "edible_nut.n.01", "pasta.n.02",
@@ -48,11 +52,14 @@ def _name(reader, synset: str) -> str:
     return normalize_label(lemmas[0].replace("_", " ")) if lemmas else ""
 
 
-def draw_labels(reader, shared: Path) -> list[str]:
-    """The drawn labels (module doc), in draw order."""
+def draw_labels(reader, shared: Path, split: str = "lemmas") -> list[str]:
+    """The labels drawn for `split` (module doc), in draw order."""
+    later = list(SEEDS)[list(SEEDS).index(split):]
     seen = set(reference_vocabulary()) | set(search_labels(shared))
-    seen |= {x for p in read_pairs() if p.split != "lemmas" for x in (p.a, p.b)}  # the file as it was drawn on
-    rng = random.Random(SEED)
+    seen |= {x for p in read_pairs() if p.split not in later for x in (p.a, p.b)}  # the file as it was drawn on
+    for earlier in list(SEEDS)[:list(SEEDS).index(split)]:  # and every label an earlier batch drew
+        seen |= set(draw_labels(reader, shared, earlier))
+    rng = random.Random(SEEDS[split])
     out: list[str] = []
     for roots, n in ((FOOD, N_FOOD), (TOOLS, N_TOOLS)):
         pool = _pool(reader, roots)
@@ -68,10 +75,10 @@ def draw_labels(reader, shared: Path) -> list[str]:
     return out
 
 
-def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
-    """(label_a, label_b, split, source) of the batch (module doc)."""
+def candidates(shared: Path, split: str = "lemmas") -> list[tuple[str, str, str, str]]:
+    """(label_a, label_b, split, source) of the batch `split` (module doc)."""
     paper = make_similarity("paper")
-    drawn = draw_labels(paper.reader, shared)
+    drawn = draw_labels(paper.reader, shared, split)
     cook = make_similarity("cook", drawn, reader=paper.reader)
     others = sorted(set(reference_vocabulary()) | set(drawn))
     accepted, rest = [], []
@@ -81,15 +88,15 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
                 continue
             pair = tuple(sorted((a, b)))
             modes = [m for m, sim in (("paper", paper), ("cook", cook)) if sim(a, b) >= DEFAULT_THRESHOLD]
-            (accepted if modes else rest).append((*pair, "lemmas", "+".join(modes) or "random"))
-    rng = random.Random(SEED)
+            (accepted if modes else rest).append((*pair, split, "+".join(modes) or "random"))
+    rng = random.Random(SEEDS[split])
     picked = rng.sample(sorted(accepted), min(ACCEPTED, len(accepted)))
     print(f"{len(drawn)} labels drawn; {len(accepted)} pairs accepted by either mode, {len(picked)} sampled")
     return picked + rng.sample(sorted(rest), RANDOM)
 
 
 def main() -> None:
-    sample_main("python -m bench.similarity_lemmas", __doc__, candidates, SEED)
+    sample_main("python -m bench.similarity_lemmas", __doc__, candidates, SEEDS)
 
 
 if __name__ == "__main__":

@@ -68,14 +68,20 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
 
 
 def main(prog: str = "python -m bench.similarity_sample", doc: str | None = __doc__, draw=candidates,
-         seed: int = SEED) -> None:
-    """`prog [--shared DIR] BLIND KEY`: write the batch `draw(shared)` gives (`write_batch`)."""
+         seeds: dict[str, int] | None = None) -> None:
+    """`prog [--shared DIR] BLIND KEY`: write the batch `draw(shared)` gives (`write_batch`); with `seeds`
+    (split -> seed) `--split` picks the batch, `draw(shared, split)`, shuffled with its seed."""
     ap = argparse.ArgumentParser(prog=prog, description=doc)
     ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
+    if seeds:
+        ap.add_argument("--split", choices=list(seeds), default=next(iter(seeds)))
     ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
     ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
     args = ap.parse_args()
-    write_batch(draw(args.shared), args.blind, args.key, seed)
+    if seeds:
+        write_batch(draw(args.shared, args.split), args.blind, args.key, seeds[args.split])
+    else:
+        write_batch(draw(args.shared), args.blind, args.key, SEED)
 
 
 def write_batch(rows: list[tuple[str, str, str, str]], blind: Path, key: Path, seed: int) -> None:
