@@ -218,3 +218,19 @@ def test_shared_subgraphs_expansion_sizes_per_mode():
     assert (cook.original_units, len(cook.foon.units)) == (1845, 7844)
     assert ("lemon", "lime") in cook.substitutions
     assert not {("cilantro", "banana"), ("banana", "cilantro")} & set(cook.substitutions)
+
+
+def test_a_label_filed_through_one_member_stands_only_as_a_kind(cook):
+    """Rule 6: a label the index lacks, filed by its head or its nearest WordNet member, is a kind of that
+    member: it stands with a label whose sense is its own or a WordNet ancestor or descendant of it, not with a
+    sibling under a third ancestor; a synonym of a member and a label filed by a category's name keep rule 5."""
+    assert cook.filing("sugar spoon").how == "head" and cook.filing("chestnut").how == "wordnet"
+    for a, b in [("sugar spoon", "spoon"), ("chestnut", "edible nut"), ("gas oven", "oven")]:  # kinds stand
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+    for a, b in [("sugar spoon", "wooden spoon"), ("sugar spoon", "teaspoon"), ("chestnut", "walnut"),
+                 ("chestnut", "peanut")]:  # siblings under spoon.n.01 and edible_nut.n.01
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "sibling" and e.ancestor not in (e.sense_a, e.sense_b), (a, b)
+    assert cook.filing("eggbeater").similarity == 1.0 and cook("eggbeater", "whisk") >= 0.89  # egg beater's synonym
+    assert cook.filing("hickory nut").how == "name" and cook("hickory nut", "walnut") >= 0.89  # "nuts and seeds"
+    assert cook.filing("walnut") is None  # in the index

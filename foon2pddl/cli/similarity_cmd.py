@@ -91,7 +91,8 @@ def _why(a: str, b: str, ev) -> str:
         return f"{a} ~ {b}: {what}\n"
     if not ev.ancestor:
         return f"{a} ~ {b}: no common ancestor\n"
-    verdict = f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary" if ev.rejected == "broad" \
-        else ("rejected: the categories do not group them" if ev.rejected == "category"
-              else f"ancestor covers {ev.breadth:.1%} of the vocabulary")
+    verdict = {"broad": f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary",
+               "category": "rejected: the categories do not group them",
+               "sibling": "rejected: a label filed through one member stands only with its kinds"}.get(
+        ev.rejected, f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -3,7 +3,7 @@
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
 Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
 0.9 through their plant senses. This rule keeps the paper's composition (overrides,
-head nouns and modifiers, see `similarity.py`) and changes five things:
+head nouns and modifiers, see `similarity.py`) and changes six things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -33,6 +33,13 @@ head nouns and modifiers, see `similarity.py`) and changes five things:
    each label on its own, so deterministic and independent of the other labels); a label
    still in none is not constrained. WordNet says how close two things are; the
    categories say which of them a cook swaps.
+6. A filed label is a kind of its member (`sibling`): a label rule 5 files through one
+   member (its head, or its nearest member other than a synonym, similarity < 1) stands
+   only with a label whose sense is its own or a WordNet ancestor or descendant of it
+   (sugar spoon~spoon), not with a sibling under a third ancestor (sugar spoon~wooden
+   spoon, chestnut~walnut): the filing shows what the label is a kind of, not which of
+   the category's members a cook swaps it with. A synonym of a member and a label filed
+   by a category's name (hickory nut, "nuts and seeds") keep rule 5.
 
 The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
 with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
@@ -50,7 +57,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .extend import assign
+from .extend import Assignment, assign
 from .senses import Overrides, Resolution, kitchen_senses, parse_overrides, resolve
 from .similarity import Evidence
 
@@ -132,8 +139,8 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
     return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text(), RULES)
 
 
-#: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels).
-RULES = "rule 5 extended"
+#: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
+RULES = "rule 5 extended, rule 6"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -171,7 +178,7 @@ class CookSimilarity:
         self._cover: dict[str, int] | None = None
         self.categories: CategoryIndex | None = (
             categories if isinstance(categories, CategoryIndex) else shipped_index() if categories else None)
-        self._filed: dict[str, tuple[str, ...]] = {}
+        self._filed: dict[str, Assignment] = {}
         self._filer: CookSimilarity | None = None
         self.extend = extend
 
@@ -183,12 +190,27 @@ class CookSimilarity:
         found = self.categories.of(label)
         if found or not self.extend:
             return found
+        filed = self.filing(label)
+        return (filed.category,) if filed is not None and filed.category is not None else ()
+
+    def filing(self, label: str) -> Assignment | None:
+        """How rule 5 files `label` (`extend.assign`); None for a label of the index (or with `extend=False`)."""
+        assert self.categories is not None
+        label = normalize_label(label)
+        if self.categories.of(label) or not self.extend:
+            return None
         if label not in self._filed:
             if self._filer is None:
                 self._filer = filing_similarity(self.reader, self.overrides)
-            filed = assign([label], self.categories, sim=self._filer)
-            self._filed[label] = tuple(a.category for a in filed if a.category is not None)
+            self._filed[label] = assign([label], self.categories, sim=self._filer)[0]
         return self._filed[label]
+
+    def kind_only(self, label: str) -> bool:
+        """Whether rule 6 holds `label` to its kinds: filed through its head or a nearest member it is not a
+        synonym of."""
+        filed = self.filing(label) if self.categories is not None else None
+        return filed is not None and filed.category is not None and (
+            filed.how == "head" or (filed.how == "wordnet" and filed.similarity < 1.0))
 
     def resolution(self, label: str) -> Resolution:
         label = normalize_label(label)
@@ -233,9 +255,11 @@ class CookSimilarity:
         found = self._evidence.get((a, b))
         if found is None:
             found = self._compute(a, b)
-            if found.similarity and not found.rejected and self.categories is not None \
-                    and not kin(self.categories, a, b, self.categories_of):
-                found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
+            if found.similarity and not found.rejected and self.categories is not None:
+                if not kin(self.categories, a, b, self.categories_of):
+                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
+                elif found.ancestor not in (found.sense_a, found.sense_b) and (self.kind_only(a) or self.kind_only(b)):
+                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "sibling")
             self._evidence[(a, b)] = found
         return found
 

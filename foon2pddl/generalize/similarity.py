@@ -39,7 +39,8 @@ class Evidence:
     `rejected`: "" (accepted), "broad" (the best sense pair's ancestor is too broad, `cook.py`),
     "forbidden" (in the overrides), "fixed" (value from the overrides), "unknown" (a label
     without sense), "same" (a label and itself), "variant" (a dish compound and a label, `cook.py`
-    rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5).
+    rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5), "sibling" (a label filed
+    through one member with a label that is not its kind, rule 6).
     """
 
     similarity: float
