@@ -318,6 +318,38 @@ def test_progress_lines_without_a_terminal_say_done_rate_and_eta():
     assert out.getvalue().splitlines()[-1] == "experiment: 20/100 cells (20.0 %), 0.5 cells/s, elapsed 40 s, ETA 2 min 40 s"
 
 
+
+def test_eta_weighs_each_solvers_remaining_cells_by_its_own_time_per_cell():
+    """Costliest batches run first: a rate over cells alone predicted 51 min for a run of ~10 (stop 42).
+    With groups, the cells left of each (solver, network) are weighed by that group's time per cell."""
+    import io
+
+    from foon2pddl.experiment.progress import LINES, Progress
+
+    now = [0.0]
+    out = io.StringIO()
+    progress = Progress(100, LINES, out, interval=1000.0, clock=lambda: now[0],
+                        groups={("slow", "reg"): 10, ("fast", "reg"): 90})
+    for _ in range(5):
+        now[0] += 1.0
+        progress.update(group=("slow", "reg"), seconds=2.0)  # 2 s of work a cell, 2 workers: 1 s of wall time
+    assert progress.line().endswith("ETA after a first cell of every solver and network")
+    now[0] += 0.01
+    progress.update(group=("fast", "reg"), seconds=0.02)
+    # wall per second of work 5.01 / 10.02 = 0.5; work left 5 x 2 + 89 x 0.02 = 11.78 s: ETA 6 s, not 89 x 0.83 s
+    assert progress.line() == "experiment: 6/100 cells (6.0 %), 1.2 cells/s, elapsed 5 s, ETA 6 s"
+    progress.close()
+
+
+def test_the_first_batch_of_every_solver_and_network_runs_before_the_rest(tmp_path):
+    """Every group's time per cell is known early (`Progress`'s estimate), costliest first within each part."""
+    config = runner.Config((), Protocol(trials=3, goals=4), ("reg", "gen"), ("native-complete", "fd-tree"), tmp_path)
+    order = [(b.solver, b.network, b.trial.index) for b in runner.plan_batches(config, set())]
+    assert order[:4] == [("fd-tree", "gen", 1), ("fd-tree", "reg", 1), ("native-complete", "gen", 1),
+                         ("native-complete", "reg", 1)]
+    assert order[4:] == sorted(order[4:], key=lambda o: (o[0] != "fd-tree", o[1] != "gen", o[2]))
+
+
 # -- sweeps --------------------------------------------------------------------------------------
 
 def test_sweeps_expand_the_grid_and_the_report_gets_a_table_and_plot_per_parameter(tmp_path):

@@ -561,7 +561,7 @@ def test_plan_steps_printed_are_the_ones_that_make_the_goal():
 
 
 def test_another_protocol_is_said_in_words():
-    from foon2pddl.experiment.runner import identity_difference
+    from foon2pddl.experiment.protocol import identity_difference
 
     old = {"seed": 0, "level": 3, "inputs": "ab12"}
     new = {"seed": 5, "level": 3, "inputs": "cd34", "threshold": 0.8}

@@ -108,11 +108,16 @@ def check_scheduler(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
         raise FoonError(f"cannot reach the Dask scheduler {address}: {exc.strerror or exc}") from None
 
 
+def counted(progress: Progress, record: Record) -> None:
+    """`record` done: counted in its (solver, network) group with its time (`Progress.left`)."""
+    progress.update(group=(record.solver, record.network), seconds=record.time)
+
+
 def run_here(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress) -> None:
     """Run the batches one by one in this process."""
     def emit(record: Record) -> None:
         sink(record)
-        progress.update()
+        counted(progress, record)
 
     for batch in batches:
         run_batch(batch, job, emit=emit)
@@ -237,7 +242,7 @@ def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress,
             if expired.is_set() and future.cancelled():
                 for record in batch.records(CellStatus.LOST, reason):
                     sink(record)
-                    progress.update()
+                    counted(progress, record)
                 continue
             _deliver(batch, future, sink, progress)
             alive.finished()
@@ -292,5 +297,5 @@ def _deliver(batch: Batch, future, sink: Sink, progress: Progress) -> None:
         progress.note(f"experiment: {len(records)} cells lost ({type(exc).__name__}); a rerun redoes them")
     for record in records:
         sink(record)
-        progress.update()
+        counted(progress, record)
     future.release()

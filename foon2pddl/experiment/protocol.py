@@ -152,3 +152,24 @@ def draw(foon: Foon, protocol: Protocol) -> Draw:
 def make_trials(foon: Foon, protocol: Protocol) -> tuple[Trial, ...]:
     """Every trial of `protocol` (numbered from 1)."""
     return draw(foon, protocol).trials
+
+
+def identity_difference(old, new: dict) -> str:
+    """What differs between two protocol identities, in words (`seed 7 there, 8 here`; the inputs' hash
+    is named as input files, not shown)."""
+    if not isinstance(old, dict):
+        return "its protocol file names no identity"
+    words = []
+    for key in sorted(set(old) | set(new)):
+        if old.get(key) == new.get(key):
+            continue
+        name = key.replace("_", " ")
+        if key == "inputs":
+            words.append("the input files differ (other FOON files or other contents)")
+        elif key not in old:
+            words.append(f"{name} {new[key]} here, not set there")
+        elif key not in new:
+            words.append(f"{name} {old[key]} there, not set here")
+        else:
+            words.append(f"{name} {old[key]} there, {new[key]} here")
+    return "; ".join(words) or "the identities differ"

@@ -25,6 +25,7 @@ import json
 import shutil
 import tempfile
 import time
+from collections import Counter
 from collections.abc import Callable, Sequence
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass
@@ -37,7 +38,7 @@ from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, ru
 from .networks import NETWORKS, NetworkView
 from .params import PARAMS, Point, check_grid, points
 from .progress import OFF, Progress, default_mode
-from .protocol import Protocol, Trial
+from .protocol import Protocol, Trial, identity_difference
 from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
@@ -160,7 +161,8 @@ def cell_labels(config: Config, grid: Sequence[Cell] | None = None) -> dict[Key,
 
 def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = None) -> list[Batch]:
     """Batches of at most CHUNK pending goals (all of them for solvers whose preparation is costly, such as a
-    Fast Downward translation), costliest solvers and largest networks first; `grid`: the run's `cells`."""
+    Fast Downward translation), costliest solvers and largest networks first, after the first batch of every
+    (solver, network) in that order; `grid`: the run's `cells`."""
     pending: dict[tuple, list[int]] = {}
     trial_of: dict[tuple, Trial] = {}
     params = _params_keys(config)
@@ -180,34 +182,16 @@ def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = N
         n = NETWORKS[b.network].schedule  # batches on larger networks start first (better load balance)
         return (-SOLVERS[b.solver].cost, n, config.points.index(b.point), b.trial.index, b.goals[0])
 
-    return sorted(batches, key=order)
+    ordered = sorted(batches, key=order)
+    # a group's first batch first: its time per cell is known early (`Progress.left`)
+    probes = set({(b.solver, b.network): i for i, b in reversed(list(enumerate(ordered)))}.values())
+    return [ordered[i] for i in sorted(probes)] + [b for i, b in enumerate(ordered) if i not in probes]
 
 
 # -- protocol.json -------------------------------------------------------------------------------
 
 class OtherResults(FoonInputError):
     """The output directory holds results that cannot be matched to this run's protocol (start afresh or elsewhere)."""
-
-
-def identity_difference(old, new: dict) -> str:
-    """What differs between two protocol identities, in words (`seed 7 there, 8 here`; the inputs' hash
-    is named as input files, not shown)."""
-    if not isinstance(old, dict):
-        return "its protocol file names no identity"
-    words = []
-    for key in sorted(set(old) | set(new)):
-        if old.get(key) == new.get(key):
-            continue
-        name = key.replace("_", " ")
-        if key == "inputs":
-            words.append("the input files differ (other FOON files or other contents)")
-        elif key not in old:
-            words.append(f"{name} {new[key]} here, not set there")
-        elif key not in new:
-            words.append(f"{name} {old[key]} there, not set here")
-        else:
-            words.append(f"{name} {old[key]} there, {new[key]} here")
-    return "; ".join(words) or "the identities differ"
 
 
 def check_protocol(config: Config, trials: tuple[Trial, ...]) -> float | None:
@@ -342,7 +326,10 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
             with step(f"building the networks ({kinds}) before the first of {planned:,} cells"):
                 build_networks(config, batches)
         mode = (default_mode() if progress else OFF) if isinstance(progress, bool) else progress
-        bar = Progress(planned, mode)
+        groups: Counter = Counter()  # cells per (solver, network): `Progress.left` weighs them
+        for b in batches:
+            groups[b.solver, b.network] += len(b.goals)
+        bar = Progress(planned, mode, groups=groups)
         for w in warnings:
             bar.note(w)
         t_run = time.perf_counter()
