@@ -6,6 +6,8 @@ of hand-built records.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from foon2pddl.experiment import physical, runner
@@ -122,6 +124,30 @@ def test_counts_of_hand_built_records():
     assert "50.0 %" in verdicts_md(data)
 
 
+REPLAY = "plan does not validate: step 3 (pour milk_1, cup_1): the milk is not in cup_1"
+
+
+def test_physical_plans_count_per_trial_and_say_whether_each_passed_the_replay():
+    """A physical planner's plans per trial beside the reference's trees (the second Table 2), its plans that
+    fail the replay (errors with a plan) and the goals the reference solves that it has no plan for."""
+    plan = dict(plan_length=4, repeated=0)
+    records = [_rec(1, 1, "reg", "native-complete", "executable"), _rec(1, 2, "reg", "native-complete", "short", SHORT, 1),
+               _rec(2, 1, "reg", "native-complete", "executable"), _rec(2, 2, "reg", "native-complete", "executable"),
+               replace(_rec(1, 1, "reg", "fd-relational", "executable"), **plan),
+               replace(_rec(1, 2, "reg", "fd-relational", "short", SHORT, 1), **plan),
+               replace(_rec(2, 1, "reg", "fd-relational", None, solved=False), status=CellStatus.ERROR, reason=REPLAY,
+                       plan_length=4),
+               _rec(2, 2, "reg", "fd-relational", None, solved=False)]
+    trials = tuple({"trial": t, "goals": ["a", "b"], "kitchen_nodes": 5} for t in (1, 2))
+    data = ReportData(tuple(records), ("reg",), ("native-complete", "fd-relational"), trials)
+    assert physical.planner_successes(data) == {("fd-relational", "reg"): {1: 1, 2: 0}}
+    (row,) = physical.physical_planners(data)
+    assert (row.plans, row.replay_failures, row.no_plan) == (3, (REPLAY,), (("unsolvable", 1),))
+    table = table2_physical(data)
+    assert "| trial | REG executable (of 2) | REG `fd-relational` plans carried out |" in table
+    assert "| 1 | 1 of 2 | 1 |" in table and "| 2 | 2 of 2 | 0 |" in table
+
+
 def test_a_reason_naming_neither_label_nor_step_is_kept_whole():
     assert physical.failure_of("something else") == (0, "something else")
     assert physical.failure_of("step 2 (chop) needs 'onion (chopped)', which no earlier step makes") == (
@@ -165,6 +191,18 @@ def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(t
     (row,) = physical.physical_planners(data)
     assert (row.solver, row.solved) == ("fd-relational", len(solved)) and row.replayed + row.more_objects == len(solved)
     assert row.mean_steps is not None and row.mean_units is not None
+    for r in solved:
+        if r.executable == Verdict.SHORT:  # a plan that draws more objects than the kitchen has: label and step
+            step, label = physical.failure_of(r.executable_reason)
+            assert r.extra_objects >= 1 and step >= 1 and f"one more {label} in " in r.executable_reason
+    from foon2pddl.experiment.report import render_markdown
+
+    data = ReportData(summary.records, config.networks, config.solvers, data.trials, _meta(config, summary))
+    text = render_markdown(data, {"successes.png": "s.png", "times.png": "t.png"})
+    assert f"- `fd-relational` REG: {len(solved)} plans, every one passes the relational replay" in text
+    assert "REG `fd-relational` plans carried out" in text  # the second Table 2 counts its plans per trial
+    assert f"| 1 | {sum(r.executable == 'executable' for r in summary.records if r.solver == 'native-complete')} of " \
+        in text
 
 
 def test_a_physical_plan_fits_the_kitchen_exactly_when_scheduling_its_tree_does(example):

@@ -191,6 +191,14 @@ class PhysicalPlannerRow:
     mean_steps: float | None  # plan steps (repeated firings, washes and restoring steps included)
     mean_repeated: float | None  # of those, unit steps firing a unit the plan fired before
     mean_units: float | None  # the reference's tree units, on the goals both solved
+    plans: int = 0  # plans returned: those replayed clean (`solved`) and those that fail the replay
+    replay_failures: tuple[str, ...] = ()  # why each plan that fails the replay fails (its record's reason)
+    no_plan: tuple[tuple[str, int], ...] = ()  # (status, goals) of the goals the reference solves and it has no plan
+    holders: bool = False  # its replay includes holders (the relational replay: `HOLDER_REPLAY`)
+
+
+#: Planners whose plans are replayed with their holders (`planners.physical_replay`), not on objects alone.
+HOLDER_REPLAY = ("fd-relational",)
 
 
 def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
@@ -213,12 +221,28 @@ def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
                     and r.plan_length is not None and x.units is not None]
             more = [r.extra_objects for r in cells if r.executable == Verdict.SHORT and r.extra_objects is not None]
             repeated = [r.repeated for r, _ in both if r.repeated is not None]
+            failed = [r for r in asked if not r.solved and r.plan_length is not None]
+            no_plan = Counter(str(r.status) for r, x in zip(asked, ref, strict=True)
+                              if x is not None and x.solved and not r.solved and r.plan_length is None)
             out.append(PhysicalPlannerRow(s, n, len(cells), sum(executable(r) for r in cells), len(more),
                                           statistics.fmean(more) if more else None,
                                           sum(x is not None and executable(x) for x in ref),
                                           statistics.fmean(r.plan_length for r, _ in both) if both else None,
                                           statistics.fmean(repeated) if repeated else None,
-                                          statistics.fmean(x.units for _, x in both) if both else None))
+                                          statistics.fmean(x.units for _, x in both) if both else None,
+                                          len(cells) + len(failed), tuple(r.reason for r in failed),
+                                          tuple(sorted(no_plan.items())), s in HOLDER_REPLAY))
+    return out
+
+
+def planner_successes(data: ReportData) -> dict[tuple[str, str], dict[int, int]]:
+    """(solver, network) -> trial -> goals whose plan the trial's objects carry out, for the rows of
+    `physical_planners` (the second Table 2's columns beside the reference's trees)."""
+    out = {}
+    for p in physical_planners(data):
+        cells = data.cells(p.network, p.solver)
+        out[(p.solver, p.network)] = {t["trial"]: sum(executable(r) for r in cells if r.trial == t["trial"])
+                                      for t in data.trials}
     return out
 
 

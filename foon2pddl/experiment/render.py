@@ -302,20 +302,24 @@ def verdicts_md(data: ReportData) -> str:
 
 def table2_physical(data: ReportData) -> str:
     """The paper's Table 2 again, each count beside the trees the trial's objects carry out (`solved / executable`)."""
-    from .physical import physical_successes
+    from .physical import physical_successes, planner_successes
 
     ref = reference_solver(data)
     per = physical_successes(data, ref) if ref else {}
     nets = [n for n in data.networks if n in per]
     if not nets:
         return ""
-    rows = [[t["trial"], *(f"{per[n][t['trial']][1]} of {per[n][t['trial']][0]}" for n in nets)] for t in data.trials]
-    executable = {n: [per[n][t["trial"]][1] for t in data.trials] for n in nets}
-    rows.append(["min-max", *(_span(executable[n]) for n in nets)])
-    rows.append(["mean", *(f"{statistics.fmean(executable[n]):.1f}" for n in nets)])
-    rows.append(["paper (min-max, not physical)", *(_paper_span(n) for n in nets)])
+    plans = planner_successes(data)  # beside the trees, each physical planner's plans carried out
+    rows = [[t["trial"], *(f"{per[n][t['trial']][1]} of {per[n][t['trial']][0]}" for n in nets),
+             *(p[t["trial"]] for p in plans.values())] for t in data.trials]
+    executable = [*([per[n][t["trial"]][1] for t in data.trials] for n in nets),
+                  *([p[t["trial"]] for t in data.trials] for p in plans.values())]
+    rows.append(["min-max", *(_span(e) for e in executable)])
+    rows.append(["mean", *(f"{statistics.fmean(e):.1f}" for e in executable)])
+    rows.append(["paper (min-max, not physical)", *(_paper_span(n) for n in nets), *("-" for _ in plans)])
     goals = len(data.trials[0]["goals"]) if data.trials else 0
-    return md_table(["trial", *(f"{net_name(n)} executable (of {goals})" for n in nets)], rows)
+    return md_table(["trial", *(f"{net_name(n)} executable (of {goals})" for n in nets),
+                     *(f"{net_name(n)} `{s}` plans carried out" for s, n in plans)], rows)
 
 
 def short_md(data: ReportData) -> str:

@@ -124,7 +124,7 @@ def context(data: ReportData, plot_links: dict[str, str]) -> dict:
 
 def physical_context(data: ReportData, summary: dict) -> dict:
     """The physical-execution sections (`physical.py`); `summary` gains each network's executable mean."""
-    from .physical import gen_rows, physical_successes, planner_means, scheduled, short_labels
+    from .physical import gen_rows, physical_planners, physical_successes, planner_means, scheduled, short_labels
 
     ref = reference_solver(data)
     per = physical_successes(data, ref) if ref else {}
@@ -147,6 +147,10 @@ def physical_context(data: ReportData, summary: dict) -> dict:
         "gen_means": None if gen is None else {
             f: statistics.fmean(getattr(g, f) for g in gen[2]) for f in ("category", "concrete", "concrete_executable")},
         "physical_planners": physical_planners_md(data),
+        "replays": [{"solver": p.solver, "name": net_name(p.network), "plans": p.plans, "holders": p.holders,
+                     "failures": p.replay_failures, "no_plan": sum(k for _, k in p.no_plan),
+                     "statuses": ", ".join(f"{status} {k}" for status, k in p.no_plan)}
+                    for p in physical_planners(data)],
         "planner_means": ", ".join(f"`{s}` {net_name(n)} {_cell(m)}" for s, n, m in planner_means(data)),
         "top_short": list(dict.fromkeys(f"`{label}`" for _, label, _, _ in short_labels(data, ref or REFERENCE, 6)))[:3],
     }
