@@ -85,3 +85,61 @@ def test_a_task_that_takes_no_pair_reads_none():
     outcome = clean_unit_plan((PLACE, ADD, POUR, empty), KITCHEN, n("bowl", "empty", "dirty"))
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["pick-and-place", "empty"]
     assert not [x for x in outcome.compiled.notes if x.startswith("assumed at hand")]
+
+
+# One node of the pair is the kitchen's, the other only units make, each beside another node of the pair's other
+# label. On the universal FOON of the even-index subgraphs the apple turnover's sprinkle (0086:335) takes `bowl
+# (contains {flour})`, which only the pancakes' pour (0031:15) makes, with the flour `powder` in it, and the
+# kitchen's `flour (in [bowl])`; the tuna sandwich's pour (ACT-0024:32) takes the kitchen's `bowl (contains
+# {mayonnaise, onion})` and `onion (chopped, in [bowl])`, which the black beans' pour (0059:24) makes in a bowl of
+# onion alone. In each recipe's own kitchen both are at hand; on the merged FOON no plan had the pair.
+FLOUR_BOWL, FLOUR_IN = n("bowl", contains("flour")), n("flour", inside("bowl"))
+FLOUR_POUR = FunctionalUnit((EMPTY, n("flour", inside("bag"))), Motion("pour"),
+                            (FLOUR_BOWL, n("flour", "powder", inside("bowl"))), (Source("pancakes.txt", 15),))
+TABLE = n("table", "empty")
+FLOURED = n("table", contains("flour"))
+SPRINKLE = FunctionalUnit((TABLE, FLOUR_IN, FLOUR_BOWL), Motion("sprinkle"), (FLOURED,), (Source("pie.txt", 335),))
+# another recipe takes the pancakes' flour on (the roux's pour, 0081:66): it is no end the sprinkle's flour stitches to
+ROUX = FunctionalUnit((n("pot", "hot"), FLOUR_BOWL, n("flour", "powder", inside("bowl"))), Motion("pour"),
+                      (n("pot", contains("flour"), "hot"), n("flour", "powder", inside("pot"))), (Source("roux.txt", 66),))
+
+
+def test_a_pair_whose_held_node_is_the_kitchens_is_the_kitchens():
+    # another recipe's kitchen bowl of butter and flour: the kitchen's flour in a bowl starts there
+    kitchen = {EMPTY, n("flour", inside("bag")), TABLE, FLOUR_IN, n("bowl", contains("butter", "flour")),
+               n("butter", inside("bowl"))}
+    outcome = clean_unit_plan((FLOUR_POUR, ROUX, SPRINKLE), kitchen | {n("pot", "hot")}, FLOURED)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["sprinkle"]
+    assert outcome.validation.ok
+    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+        "assumed at hand: pie.txt:335: sprinkle takes bowl (contains {flour}) with flour (in [bowl]), which no unit "
+        "makes together (the flour is the kitchen's; pour at pancakes.txt:15 makes the bowl beside flour (in [bowl], "
+        "powder)): read as the kitchen's"]
+
+
+MAYO_BOWL, ONION_IN = n("bowl", contains("mayonnaise", "onion")), n("onion", "chopped", inside("bowl"))
+KNIFE = n("knife", "clean")
+CHOP = FunctionalUnit((n("onion", "peeled"), KNIFE), Motion("chop"), (n("onion", "chopped"),), (Source("beans.txt", 12),))
+ONION_POUR = FunctionalUnit((EMPTY, n("onion", "chopped")), Motion("pour"), (n("bowl", contains("onion")), ONION_IN),
+                            (Source("beans.txt", 24),))
+TUNA_BOWL = n("bowl", contains("tuna"))
+MIXED = n("bowl", contains("mayonnaise", "onion", "tuna"))
+TUNA_POUR = FunctionalUnit((MAYO_BOWL, n("mayonnaise", inside("bowl")), ONION_IN, TUNA_BOWL), Motion("pour"),
+                           (MIXED,), (Source("tuna.txt", 32),))
+
+
+def test_a_pair_whose_container_is_the_kitchens_is_the_kitchens():
+    kitchen = {EMPTY, n("onion", "peeled"), KNIFE, MAYO_BOWL, n("mayonnaise", inside("bowl")), TUNA_BOWL}
+    outcome = clean_unit_plan((CHOP, ONION_POUR, TUNA_POUR), kitchen, MIXED)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
+    assert outcome.validation.ok
+    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+        "assumed at hand: tuna.txt:32: pour takes bowl (contains {mayonnaise, onion}) with onion (chopped, in [bowl]), "
+        "which no unit makes together (the bowl is the kitchen's; pour at beans.txt:24 makes the onion beside bowl "
+        "(contains {onion})): read as the kitchen's"]
+
+
+def test_a_pair_of_two_kitchen_nodes_reads_nothing():
+    from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
+
+    assert kitchen_pairs(Foon((SPRINKLE,)), frozenset({TABLE, FLOUR_IN, FLOUR_BOWL})) == ()

@@ -60,7 +60,7 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
 from .holder_words import unit_aliases
 
-__all__ = ["Stitch", "Stitched", "said_less", "stitches", "with_stitches"]
+__all__ = ["Stitch", "Stitched", "said_less", "stitched_inputs", "stitches", "with_stitches"]
 
 
 @dataclass(frozen=True)
@@ -201,6 +201,11 @@ def _network_stitches(foon: Foon) -> tuple[tuple[Stitch, ...], dict[int, dict[Ob
                          for u, x in enumerate(foon.units))
                    + tuple(_sewn(foon, reads, u) for u in beside), foon.level)
     return found, reads, beside, through
+
+
+def stitched_inputs(foon: Foon) -> frozenset[tuple[int, ObjectNode]]:
+    """(unit index, input node) of every stitch of the network (`_network_stitches`, computed once per network)."""
+    return frozenset((s.unit, s.node) for s in _network_stitches(foon)[0])
 
 
 #: Networks with stitched units `_wider` keeps per network object.

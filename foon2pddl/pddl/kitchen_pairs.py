@@ -9,8 +9,18 @@ make each node only beside a different node of the other (on the universal FOON 
 has the pair; FOON's tree takes each node from its own maker, two bowls for one. The hamburger's sprinkle and the
 gyoza's scrape take the same pair.
 
-The reading (`kitchen_pairs`), on the makers' own outputs: both nodes are made, neither is the kitchen's, no unit
-makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
+So too when one of the two is the kitchen's and only units make the other: on the universal FOON of the subgraphs of
+even index the apple turnover's sprinkle (`0086-apple_turnover.txt:335`) takes the kitchen's `flour (in [bowl])`
+with `bowl (contains {flour})`, which only the pancakes' pour makes, with its flour `powder` (in the turnover's own
+kitchen both are at hand; merged, the pancakes' pour makes the bowl no longer the kitchen's), and the tuna
+sandwich's pour (`ACT-0024-tuna_sandwich.txt:32`) takes the kitchen's `bowl (contains {mayonnaise, onion})` with
+`onion (chopped, in [bowl])`, which the black beans' pour makes in a bowl of onion alone.
+
+The reading (`kitchen_pairs`), on the makers' own outputs: each node is the kitchen's or made, not both the
+kitchen's (a kitchen node no unit makes has no maker; one a unit makes has it: the pancake's bowl that the oil pour
+takes and leaves in the same words, `0031-easy_pancakes.txt:176`, is no bowl at hand), neither a node a stitch
+reads for the taker (`input_stitch.stitched_inputs`: the unit that left it there is known), nor, for a kitchen
+container, a held node the kitchen already says (`relational_init.kitchen_implied`), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
 (the garlic is in another bowl), and every unit making the container's node leaves beside it a node of L at that
 container other than the pair's (another garlic is in the bowl), and no maker of the one takes the other (the homemade cheese pizza's bake takes
 the pick-and-place's `oven (contains {pizza pan}, on, preheated)` and makes the pan of baked pizza in that oven,
@@ -31,6 +41,8 @@ from dataclasses import dataclass, replace
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.places import listed, places
 from .encoding import LevelInputs, short_path, unit_where
+from .input_stitch import stitched_inputs
+from .relational_init import kitchen_implied
 
 __all__ = ["Pair", "kitchen_pairs", "read_pairs"]
 
@@ -49,9 +61,11 @@ class Pair:
     def describe(self) -> str:
         """`pour takes bowl (...) with garlic (...), which no unit makes together (pick-and-place at F:L makes the
         bowl beside garlic (...); ...): read as the kitchen's`."""
-        made = [f"{m.motion.label} at {unit_where(m, short_path)} makes the {what} beside {other.describe()}"
-                for what, makers in ((self.box.label, self.box_makers), (self.held.label, self.held_makers))
-                for m, other in makers]
+        made = [f"the {what} is the kitchen's" for what, makers in ((self.box.label, self.box_makers),
+                                                                    (self.held.label, self.held_makers)) if not makers]
+        made += [f"{m.motion.label} at {unit_where(m, short_path)} makes the {what} beside {other.describe()}"
+                 for what, makers in ((self.box.label, self.box_makers), (self.held.label, self.held_makers))
+                 for m, other in makers]
         return (f"{self.taker.motion.label} takes {self.box.describe()} with {self.held.describe()}, which no unit "
                 f"makes together ({'; '.join(made)}): read as the kitchen's")
 
@@ -67,20 +81,27 @@ def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[i
     from the whole network."""
     made = foon.producers
 
-    def makers(node: ObjectNode) -> list[FunctionalUnit]:
-        return [foon.units[i] for i in made[node]]
+    def given(node: ObjectNode) -> bool:  # the kitchen's, or made
+        return node in kitchen or node in made
 
+    def makers(node: ObjectNode) -> list[FunctionalUnit]:  # none for the kitchen's that no unit makes
+        return [foon.units[i] for i in dict.fromkeys(made.get(node, ()))]
+
+    sewn = stitched_inputs(foon)
     out: list[Pair] = []
-    for u in (foon.units if takers is None else [foon.units[i] for i in sorted(takers)]):
+    for i in (range(len(foon.units)) if takers is None else sorted(takers)):
+        u = foon.units[i]
         for box in u.inputs:
-            if box in kitchen or box not in made:
+            if not given(box) or (i, box) in sewn:
                 continue
             for held in u.inputs:
-                if (held in kitchen or held not in made or held.label == box.label or held.label not in listed(box)
-                        or box.label not in {h for _, h in places(held)} or set(makers(box)) & set(makers(held))):
+                if (not given(held) or (i, held) in sewn or (box in kitchen and held in kitchen) or held.label == box.label
+                        or held.label not in listed(box) or box.label not in {h for _, h in places(held)}
+                        or set(makers(box)) & set(makers(held))
+                        or (box in kitchen and held in kitchen_implied((held,), kitchen))):
                     continue
-                boxes = [(m, _beside(m, held.label, box.label)) for m in dict.fromkeys(makers(box))]
-                helds = [(m, _beside(m, box.label)) for m in dict.fromkeys(makers(held))]
+                boxes = [(m, _beside(m, held.label, box.label)) for m in makers(box)]
+                helds = [(m, _beside(m, box.label)) for m in makers(held)]
                 if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
                         o is not None and o != box and box not in m.inputs for m, o in helds):
                     out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
