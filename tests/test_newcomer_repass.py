@@ -159,9 +159,9 @@ def test_category_types_reach_the_planner_in_a_batch_and_under_skills(where, ext
 
 @pytest.mark.parametrize(("document", "says"), [
     ("docs/examples/robot-no-pour.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
-                                         "give it as the constraints file"),
+                                         "give it to the constraints option of compile, plan or retrieve"),
     ("docs/examples/diet-no-egg.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
-                                       "give it as the constraints file"),
+                                       "give it to the constraints option of compile, plan or retrieve"),
     ("network", "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"),
 ])
 def test_a_json_document_given_as_a_kitchen_says_what_it_is_and_where_it_goes(document, says, tmp_path):

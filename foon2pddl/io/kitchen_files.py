@@ -75,7 +75,8 @@ def _not_a_kitchen(data: object) -> str:
     if isinstance(data, dict) and data.get("format") == FORMAT:
         return "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"
     if is_constraints(data):
-        return "this is a constraints file (docs/constraints.md), not a kitchen: give it as the constraints file"
+        return ("this is a constraints file (docs/constraints.md), not a kitchen: give it to the constraints option "
+                "of compile, plan or retrieve")
     return 'expected a JSON list of objects, or a scene: {"objects": [...]} (docs/scene.md)'
 
 
