@@ -164,8 +164,18 @@ def test_every_paragraph_quoting_a_benchs_times_names_its_commit():
     """retrieval.md's batch figures, pddl.md's compile times and planning.md's run C/run B table named no
     commit (the last two were measured before most of today's code): a time is comparable only with the
     commit it was measured at. Each such paragraph names it (`at 3fbb13a`)."""
-    unnamed = [where for where, paragraph in _bench_paragraphs() if not _COMMIT.search(paragraph)]
+    import subprocess
+
+    paragraphs = _bench_paragraphs()
+    unnamed = [where for where, paragraph in paragraphs if not _COMMIT.search(paragraph)]
     assert not unnamed, f"bench times with no commit: {unnamed}"
+    named = sorted({(sha, where) for where, paragraph in paragraphs for sha in _COMMIT.findall(paragraph)})
+    query = "".join(f"{sha}^{{commit}}\n" for sha, _ in named)
+    answers = subprocess.run(["git", "-C", str(ROOT), "cat-file", "--batch-check"], input=query,
+                             capture_output=True, text=True, check=True).stdout.splitlines()
+    unknown = [f"{where}: {sha}" for (sha, where), answer in zip(named, answers, strict=True)
+               if answer.endswith("missing") or "ambiguous" in answer]
+    assert not unknown, f"bench times naming no commit of this repository: {unknown}"
 
 
 def test_the_bench_paragraphs_are_found():
