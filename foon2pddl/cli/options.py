@@ -180,13 +180,15 @@ def constraint_inputs(files, without_motions, without, must_use, rates: Path | N
 
 
 def reject_lifted_constraints(network: str, cons) -> None:
-    """A lifted encoding (GEN's) does not take constraints (native `retrieve --network gen` does)."""
+    """A network with its own encoding (GEN's lifted one) takes no constraints in the PDDL commands, in that
+    encoding or in `--encoding tree` over its nodes (native `retrieve --network gen` does)."""
     from ..generalize.network import NETWORKS
 
     if NETWORKS[network].encoding is not None and cons.items:
         others = " or ".join(k.name for k in NETWORKS.values() if k.encoding is None)
-        raise UsageError(f"constraints are not supported by the lifted {NETWORKS[network].label} encoding; "
-                         f"use --network {others}, or `retrieve --network {network}`")
+        raise UsageError(f"constraints are not supported by --network {network} here ({NETWORKS[network].label}'s "
+                         f"lifted encoding, or --encoding tree over its nodes); use --network {others}, or "
+                         f"`retrieve --network {network}`")
 
 
 def emit(text: str, output: Path | None) -> None:
@@ -308,17 +310,19 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
                    instances: tuple[str, ...] = (), category_types: bool = False):
     """`load_view` for the PDDL commands (compile, plan), with the encoding they use.
 
-    A network kind with its own encoding (`gen`: the lifted one) compiles that encoding
-    over the concrete network (when `--encoding` is the command's default, or `tree`); an encoding without action costs rejects --costs, and one without
+    A network kind with its own encoding (`gen`: the lifted one) compiles that encoding over the concrete
+    network unless `--encoding tree` is given (FOON's tree over the kind's own nodes, as the experiment's
+    `fd-tree` plans it); an encoding without action costs rejects --costs, and one without
     physical objects the options over them (`check_physical_options`), before anything is read.
     """
     from ..generalize.network import NETWORKS
-    from ..pddl.compile import DEFAULT_ENCODING, ENCODINGS
+    from ..pddl.compile import ENCODINGS
 
     own = NETWORKS[network].encoding
-    if own is not None:
-        if encoding_given() and encoding not in (DEFAULT_ENCODING, own):
-            raise UsageError(f"--network {network} compiles the {own} encoding; drop --encoding")
+    if own is not None and not (encoding_given() and encoding == "tree"):
+        if encoding_given() and encoding != own:
+            raise UsageError(f"--network {network} compiles the {own} encoding, or FOON's tree over its nodes with "
+                             "--encoding tree; drop --encoding")
         if costs is not None and not ENCODINGS[own].costs:
             raise UsageError(f"--network {network} does not support --costs")
         encoding, network = own, next(iter(NETWORKS))
