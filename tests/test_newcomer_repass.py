@@ -60,6 +60,19 @@ def test_a_gen_goal_note_names_what_the_user_asked_for():
     assert "note: goal 'beverages'" not in r.stderr
 
 
+def test_a_gen_goal_naming_a_label_no_category_files_says_which():
+    """`retrieve --network gen --goal "butter: melted, in [pan]"` listed GEN's `(in [pans], melted)` beside the
+    `in [pan]` it kept, with no reason (review rv42): the index files `pan` in no category; the error says so.
+    A goal whose labels all have categories keeps the plain message."""
+    r = run("retrieve", "--goal", "butter: melted, in [pan]", "--network", "gen")
+    assert r.exit_code == 2
+    assert "the category index files 'pan' in no category, so GEN keeps it as written" in r.stderr
+    other = run("retrieve", "--goal", "butter: melted, in [bowls]", "--network", "gen")
+    assert other.exit_code == 2 and "produced states include" in other.stderr
+    assert "in no category" not in other.stderr
+    assert run("retrieve", "--goal", "butter: melted, in [frying pan]", "--network", "gen").exit_code == 0
+
+
 def test_plan_help_says_what_format_a_skill_plan_takes():
     """`plan --help` gave `--format` as "[default: recipe]" for the task tree only; with --skills the default is
     the steps form (docs/skills.md) and only steps, recipe and json are accepted."""

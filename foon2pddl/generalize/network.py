@@ -73,8 +73,22 @@ class NetworkView:
         return self.resolve(goal_spec(goal, goal_file))
 
     def resolve(self, spec: GoalSpec) -> Goal:
-        """A goal as the user wrote it, mapped and resolved against this network."""
-        return resolve_goal(self.map_goal(spec), self.foon)
+        """A goal as the user wrote it, mapped and resolved against this network.
+
+        When nothing matches and the goal names labels the category index files nowhere (GEN keeps them as
+        written, so `in [pan]` cannot match GEN's `in [pans]`), the error says which.
+        """
+        try:
+            return resolve_goal(self.map_goal(spec), self.foon)
+        except UsageError as exc:
+            index = self.index
+            words = [spec.label, *(w for s in spec.states or () for w in (s.related, *s.ingredients) if w)]
+            kept = sorted({w for w in words if index and not index.choose(w) and not index.is_category(w)})
+            if not kept:
+                raise
+            raise UsageError(f"{exc}; the category index files {', '.join(map(repr, kept))} in no category, so "
+                             f"{self.name.upper()} keeps {'it' if len(kept) == 1 else 'them'} as written, and no "
+                             f"{self.name.upper()} node names {'it' if len(kept) == 1 else 'them'}") from None
 
     def map_kitchen(self, kitchen: Kitchen) -> Kitchen:
         """Another (concrete) kitchen as this network sees it."""
