@@ -160,3 +160,18 @@ def test_compile_keeps_the_tree_encoding_as_its_default(tmp_path):
     result = CliRunner().invoke(main, ["compile", "--goal", "guacamole", "-o", str(tmp_path)])
     assert result.exit_code == 0, result.output
     assert "(tree encoding" in result.stdout
+
+
+def test_batch_rows_give_the_reasons_a_single_goal_prints():
+    """Under the relational default a batch row for a planner that refuses conditional effects, or for a time
+    limit, gave only the planner's words (review rv42): it gives the reason the single-goal run prints."""
+    refused = run("--goal", "guacamole", "--goal", "lemonade", "--planner", "pyperplan", "--format", "jsonl")
+    row = json.loads(refused.stdout.splitlines()[0])
+    assert row["status"] == "error"
+    assert "conditional effects (`:conditional-effects`)" in row["reason"]
+    timed = run("--goal", "guacamole", "--goal", "lemonade", "--time-limit", "0.01", "--format", "jsonl")
+    row = json.loads(timed.stdout.splitlines()[0])
+    assert row["status"] == "timeout"
+    assert "FOON's semantics makes the goal from this kitchen" in row["reason"]
+    single = run("--goal", "guacamole", "--time-limit", "0.01")
+    assert "reason: FOON's semantics makes the goal from this kitchen" in single.stderr

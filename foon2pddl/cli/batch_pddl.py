@@ -10,13 +10,12 @@ from ..io.batch_report import file_names
 from ..model.constraints import Constraints
 from ..model.containment import count_inference, inferred_nodes
 from ..model.goal import resolve_goal
-from ..pddl.compile import ENCODINGS
 from ..pddl.task import goal_at_start
 from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
 from .progress import slow_step
-from .reasons import ALREADY_HELD, unreachable_reason, why_unsolvable
+from .reasons import ALREADY_HELD, explained, unreachable_reason, unsupported_reason, why_unsolvable
 
 
 def _resolve(view, entry, encoding: str | None = None):
@@ -111,9 +110,11 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
             outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
         tree = outcome.tree if outcome.status == "solved" else None
         reason = "" if tree is not None else outcome.message or outcome.result.message
-        if outcome.status in (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP) and ENCODINGS[encoding].foon_semantics:
+        if explained(outcome.status, encoding):
             reason += ": " + why_unsolvable(view.foon, view.kitchen, goal, Constraints(), encoding,
                                             plan_options.get("instances", ()))[0]
+        elif outcome.status == PlanStatus.ERROR and (unsupported := unsupported_reason(outcome.task)) is not None:
+            reason += ": " + unsupported
         units = None if tree is None else len(tree.units) - count_inference(tree.units)
         inferred = () if tree is None else (n.describe() for n in inferred_nodes(tree.units))
         rows.append(_row(entry, goal, outcome.status, time.perf_counter() - t0, reason, units, inferred))

@@ -12,7 +12,7 @@ from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import DEFAULT_FORMAT, FORMATS, STEP_FORMATS, render_tree
-from ..pddl.compile import ENCODINGS, PLAN_ENCODING
+from ..pddl.compile import PLAN_ENCODING
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
 from ..planners.registry import UnknownPlanner, lookup
@@ -41,13 +41,8 @@ from .options import (
     view_goal,
 )
 from .progress import slow_step
-from .reasons import networks_hint, unsupported_reason, why_unsolvable
+from .reasons import explained, networks_hint, unsupported_reason, why_unsolvable
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
-
-#: The statuses `plan` explains in FOON's words, by whether the encoding is complete (an incomplete one's time-out
-#: may hide a plan FOON's semantics has).
-_NO_PLAN = {True: (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP),
-            False: (PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP, PlanStatus.TIMEOUT)}
 
 
 def timing_line(timings: dict[str, float]) -> str:
@@ -202,7 +197,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         view = outcome.compiled.view
         if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
-    explain = status in _NO_PLAN[ENCODINGS[encoding].complete] and ENCODINGS[encoding].foon_semantics
+    explain = explained(status, encoding)
     unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else None
     if fmt == "json":
         data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]

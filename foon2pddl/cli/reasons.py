@@ -21,6 +21,17 @@ ALREADY_HELD = "the goal already holds in the kitchen: the plan is empty"
 GEN_HINT_TIME_LIMIT = 30.0
 
 
+def explained(status, encoding: str) -> bool:
+    """Whether a planner's answer without a plan gets FOON's reason (`why_unsolvable`): unsolvable or gave up,
+    and a time limit too where the encoding is not complete for FOON's semantics (a tree may exist)."""
+    from ..pddl.compile import ENCODINGS
+    from ..status import PlanStatus
+
+    info = ENCODINGS[encoding]
+    statuses = {PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP} | (set() if info.complete else {PlanStatus.TIMEOUT})
+    return status in statuses and info.foon_semantics
+
+
 def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
                    instances: tuple[tuple[str, int], ...] = ()) -> tuple[str, bool]:
     """(FOON's account of a failed plan, whether FOON's semantics makes the goal from `kitchen`).
