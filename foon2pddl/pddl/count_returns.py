@@ -15,7 +15,13 @@ kitchen nodes and nodes the units before it on the way make (`_way_back`), are i
 unit once. With `stitched` (a task that reads inputs no unit makes as `input_stitch` does), a unit on the way
 may take the object in a node no unit makes that says less than the one it is in (`input_stitch.said_less`: the
 uncover's pot, no longer `hot`, is the cover's). The way is searched breadth-first over the spare units with a
-role of the object's label, each node reached once. Without such a way the plan stays (a second object it is).
+role of the object's label, each node reached once. Without such a way, with `again`, the last unit of the plan
+before that unit with a role changing an object of the label from the role's output node back to N is fired once
+more right after it (`_again`; its other inputs are counted again): the universal FOON's omelette flip leaves the
+pan `contains {omelette}` and the cook after it takes the pan `contains {bacon, omelette}` again, which the
+sprinkle before the flip makes from the flip's node, so a second bacon is sprinkled, not a second omelette's whole
+chain counted (`instance_counts.derive_counts` keeps that plan when its counts are fewer). Else the plan stays
+(a second object it is).
 O(p^2 r) for a plan of p units of r roles, plus O(n s r) per way back for n nodes reached and s spare units.
 """
 
@@ -78,10 +84,20 @@ def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: dict[str, l
     return []
 
 
+def _again(plan: Sequence[int], taken: Sequence[tuple[Role, ...]], i: int, r: Role) -> int | None:
+    """The last unit of `plan` before `plan[i]` (`taken`: each unit's roles) with a role that changes an object
+    from the node `r` leaves it in back to the node `r` takes it from (None: no such unit)."""
+    for u, roles in zip(reversed(plan[:i]), reversed(taken[:i]), strict=True):
+        if any(x.changes and x.before == r.after and x.after == r.before for x in roles):
+            return u
+    return None
+
+
 def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen: frozenset[ObjectNode],
                  roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles,
-                 stitched: bool = False) -> tuple[int, ...]:
-    """`plan` with the ways back of the task's `units` put in (module doc)."""
+                 stitched: bool = False, again: bool = False) -> tuple[int, ...]:
+    """`plan` with the ways back of the task's `units` put in (module doc); `again`: a unit of the plan fired
+    again where no unit of the task leads back."""
     planned = set(plan)
     order, spare = list(plan), [u for u in units if u not in planned]
     steps: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
@@ -103,4 +119,7 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
                 at = order.index(m) + 1
                 order[at:at] = back
                 steps = {k: [x for x in xs if x[0] not in back] for k, xs in steps.items()}
+            elif again and (repeat := _again(plan, taken, i, r)) is not None:
+                at = order.index(m) + 1
+                order[at:at] = [repeat]
     return tuple(order)

@@ -9,7 +9,8 @@ unfolding a delete-free plan backwards:
    content's node one unit takes, from one earlier unit that makes both);
    after a unit that moves an object out of a node a later unit takes, the
    task's units that lead it back there (`count_returns.with_returns`: the pot
-   the cover and uncover bring back from `hot`).
+   the cover and uncover bring back from `hot`; `relational`, else a unit of the
+   plan fired again, when that plan counts fewer objects).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -68,7 +69,7 @@ class InstanceCounts:
     unmade: tuple[tuple[str, int], ...]
     firings: tuple[tuple[int, int], ...] = ()
     #: The unfolded plan (unit indexes in firing order, each firing `firings` times) when every count is
-    #: the derived one (no stated, overridden or extra count changed it); () otherwise.
+    #: the derived one (no stated, overridden or extra count changed it) and no unit is in it twice; () otherwise.
     unfolded: tuple[int, ...] = ()
 
     def labels(self) -> dict[str, int]:
@@ -182,7 +183,7 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
         times = max((demand(n) for n in makes), default=0)
         if times == 0:
             continue
-        firings[u] = times
+        firings[u] = firings.get(u, 0) + times
         for n in makes:
             consumed.pop(n, None)
             read.discard(n)
@@ -229,14 +230,16 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     overrides = overrides or {}
     nodes, labels = start_places(foon, units, kitchen, candidates, roles_of)
     found = delete_free_plan(foon, kitchen, candidates, together)
-    if found is not None:
-        found = (with_returns(foon, found[0], units, kitchen, roles_of, stitched), found[1])
     if found is None:
         at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
-        at_kitchen, created, firings = unfold(foon, found[0], kitchen, found[1], roles_of)
+        plans = tuple(dict.fromkeys(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again)
+                                    for again in (False, stitched)))  # stitched: a unit fired again, when fewer
+        unfolds = [unfold(foon, p, kitchen, found[1], roles_of) for p in plans]
+        best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
+        found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
         nodes |= set(at_kitchen)
         labels |= set(created)
 
@@ -251,7 +254,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
     exact = (found is not None and at_node == tuple((n, at_kitchen[n]) for n in sorted(nodes) if at_kitchen[n] > 0)
              and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
-    unfolded = tuple(u for u in found[0] if u in firings) if exact else ()
+    once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
+    unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded)
 
 
