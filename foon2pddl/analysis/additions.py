@@ -17,6 +17,11 @@ is marked inexact (it may miss some sets, never reports a wrong one).
 Rounds repeat until nothing changes: a set first derived by a chain of d units
 appears by round d, so at most (cone size + 1) rounds run. Cost per round:
 the cone's units times `keep`**2 set unions per input.
+
+`first_additions` asks growing sizes and stops at the first that finds a set (the
+same smallest sets as one search of the largest size), after one cheap fixpoint
+that proves no set of any size exists (a goal behind a cycle): a batch's
+unreachable goals mostly end there.
 """
 
 from __future__ import annotations
@@ -69,27 +74,16 @@ def _product(families: list[Family], max_size: int, keep: int) -> tuple[Family, 
     return acc, cut
 
 
-def smallest_additions(reach: Reachability, goal_nodes: Iterable[ObjectNode], addable: Iterable[ObjectNode],
+def smallest_additions(reach: Reachability, goal_nodes: Iterable[ObjectNode], addable: Iterable[ObjectNode] | None,
                        max_size: int = 3, keep: int = 16) -> Additions:
     """The inclusion-minimal sets of `addable` nodes, at most `max_size` each, whose addition to the
-    kitchen lets some of `goal_nodes` be made (smallest first; ties in node order)."""
+    kitchen lets some of `goal_nodes` be made (smallest first; ties in node order). `addable=None`:
+    any node the goal nodes depend on, except the goal nodes themselves."""
     ix = reach.index
     rounds = reach.node_round
-    add_ids = set(ix.ids(n for n in addable if n in ix.node_id))
     goal_ids = list(ix.ids(n for n in goal_nodes if n in ix.node_id))
-    # The cone: unreachable nodes the goal depends on, through the makers of unreachable nodes.
-    cone: list[int] = []
-    seen: set[int] = set()
-    stack = [g for g in goal_ids if rounds[g] == UNREACHED]
-    while stack:
-        n = stack.pop()
-        if n in seen:
-            continue
-        seen.add(n)
-        cone.append(n)
-        for u in ix.makers[n]:
-            stack.extend(i for i in ix.inputs[u] if rounds[i] == UNREACHED and i not in seen)
-    cone.sort()
+    cone = _cone(reach, goal_ids)
+    add_ids = set(cone) - set(goal_ids) if addable is None else set(ix.ids(n for n in addable if n in ix.node_id))
     fam: dict[int, Family] = {n: ((frozenset((n,)),) if n in add_ids else ()) for n in cone}
     empty: Family = (frozenset(),)
     cut = False
@@ -115,3 +109,69 @@ def smallest_additions(reach: Reachability, goal_nodes: Iterable[ObjectNode], ad
         cut = cut or c
     sets = tuple(tuple(sorted(ix.nodes[i] for i in s)) for s in found)
     return Additions(sets, max_size, not cut)
+
+
+def _cone(reach: Reachability, goal_ids: list[int]) -> list[int]:
+    """The unreachable nodes the goals depend on, through the makers of unreachable nodes, in id order."""
+    ix, rounds = reach.index, reach.node_round
+    cone: list[int] = []
+    seen: set[int] = set()
+    stack = [g for g in goal_ids if rounds[g] == UNREACHED]
+    while stack:
+        n = stack.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        cone.append(n)
+        for u in ix.makers[n]:
+            stack.extend(i for i in ix.inputs[u] if rounds[i] == UNREACHED and i not in seen)
+    return sorted(cone)
+
+
+def first_additions(reach: Reachability, goal_nodes: Iterable[ObjectNode], addable: Iterable[ObjectNode] | None,
+                    sizes: Iterable[int], keep: int = 16) -> Additions:
+    """`smallest_additions` for each of `sizes` (growing) until one finds a set: the same smallest sets as one
+    search of the largest size (a family's sets of at most k nodes come from its inputs' sets of at most k alone,
+    and a cut keeps the smallest first), where a small size costs a fraction. `exact` holds when no search cut
+    a family (a cut at a size is a cut at every larger one).
+
+    First one fixpoint of the goals' cone with every addable node added: when even that makes no goal node, no
+    set of any size does, and the answer is exact and empty without a search (the cycle of a dough that needs
+    its own starter; most of a batch's unreachable goals on the shared network)."""
+    goal_nodes = list(goal_nodes)
+    sizes = sorted(sizes)
+    if addable is not None:
+        addable = frozenset(addable)
+    if not _some_set_works(reach, goal_nodes, addable):
+        return Additions((), sizes[-1], True)
+    exact = True
+    for size in sizes:
+        fixes = smallest_additions(reach, goal_nodes, addable, max_size=size, keep=keep)
+        exact = exact and fixes.exact
+        if fixes.sets:
+            return Additions(fixes.sets, size, exact)
+    return Additions((), sizes[-1], exact)
+
+
+def _some_set_works(reach: Reachability, goal_nodes: list[ObjectNode], addable: frozenset[ObjectNode] | None) -> bool:
+    """Whether adding every `addable` node of the goals' cone (None: every cone node but the goals) lets a goal node
+    be made, by the same AND/OR rule over the same makers as the families: a node is made when it is added or
+    some maker has every input reachable or made (rounds over the cone until nothing changes)."""
+    ix, rounds = reach.index, reach.node_round
+    goal_ids = [i for i in ix.ids(n for n in goal_nodes if n in ix.node_id)]
+    if any(rounds[g] != UNREACHED for g in goal_ids):
+        return True
+    cone = _cone(reach, goal_ids)
+    if addable is None:
+        made = set(cone) - set(goal_ids)
+    else:
+        made = {n for n in cone if ix.nodes[n] in addable}
+    changed = True
+    while changed:
+        changed = False
+        for n in cone:
+            if n not in made and any(all(rounds[i] != UNREACHED or i in made for i in ix.inputs[u])
+                                     for u in ix.makers[n]):
+                made.add(n)
+                changed = True
+    return any(g in made for g in goal_ids)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..analysis.additions import smallest_additions
+from ..analysis.additions import first_additions
 from ..analysis.reachability import blockers, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
@@ -44,31 +44,27 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
         return f"{goal.describe()!r} can be made from the kitchen"
     addable = default_kitchen(foon).nodes
     head = f"none of the {len(goal.candidates)} node(s) matching {goal.describe()!r} can be made from the kitchen"
-    exact = True
-    for size in sorted({min(3, max_size), *range(4, max_size + 1)}):
-        fixes = smallest_additions(reach, goal.candidates, addable, max_size=size)
-        exact = exact and fixes.exact
-        if fixes.smallest:
-            return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
+    fixes = first_additions(reach, goal.candidates, addable, sorted({min(3, max_size), *range(4, max_size + 1)}))
+    if fixes.sets:
+        return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
+    exact = fixes.exact
     if exact:
         leaves = blockers(reach, goal.candidates)
         if not leaves:
-            return f"{head}; {_cycle_text(foon, reach, goal, max_size)}"
+            return f"{head}; {_cycle_text(reach, goal, max_size)}"
         return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it); "
                 "nodes no unit makes, each needed on some way to it: " + "; ".join(n.describe() for n in leaves))
     return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
             "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
 
 
-def _cycle_text(foon: Foon, reach, goal: Goal, max_size: int) -> str:
+def _cycle_text(reach, goal: Goal, max_size: int) -> str:
     """Every way to the goal needs a node that itself needs it, so no node no unit makes helps; a kitchen that
     holds a node of the cycle breaks it (the converter's pour water gives back the empty cup its fill takes):
     the smallest such sets, among the nodes the goal depends on (the goal's own nodes excluded)."""
     text = (f"no set of up to {max_size} nodes no unit makes gives it: every way to make it needs a node that "
             "itself needs it (`foon2pddl check` names the cycle)")
-    goals = set(goal.candidates)
-    inner = [n for n in foon.nodes if n not in goals]
-    fixes = smallest_additions(reach, goal.candidates, inner, max_size=min(3, max_size))
+    fixes = first_additions(reach, goal.candidates, None, range(1, min(3, max_size) + 1))
     if fixes.smallest:
         text += "; a kitchen that holds one of the cycle's nodes breaks it: " + additions_text(fixes.smallest)
     return text
