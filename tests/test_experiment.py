@@ -341,13 +341,22 @@ def test_eta_weighs_each_solvers_remaining_cells_by_its_own_time_per_cell():
     progress.close()
 
 
-def test_the_first_batch_of_every_solver_and_network_runs_before_the_rest(tmp_path):
-    """Every group's time per cell is known early (`Progress`'s estimate), costliest first within each part."""
-    config = runner.Config((), Protocol(trials=3, goals=4), ("reg", "gen"), ("native-complete", "fd-tree"), tmp_path)
-    order = [(b.solver, b.network, b.trial.index) for b in runner.plan_batches(config, set())]
-    assert order[:4] == [("fd-tree", "gen", 1), ("fd-tree", "reg", 1), ("native-complete", "gen", 1),
-                         ("native-complete", "reg", 1)]
-    assert order[4:] == sorted(order[4:], key=lambda o: (o[0] != "fd-tree", o[1] != "gen", o[2]))
+def test_a_probe_of_every_solver_and_network_runs_first_and_the_rest_stays_costliest_first(tmp_path):
+    """Every group's time per cell is known early (`Progress.left`) from a probe of its first goals; the rest keeps
+    the costliest-first order (a 1-trial run whose probes were whole first batches left fd-relational's second
+    halves last: one worker busy 316 s, the other 180 s, of 333 s)."""
+    config = runner.Config((), Protocol(trials=2, goals=runner.CHUNK + 4), ("reg", "gen"),
+                           ("native-complete", "fd-tree"), tmp_path)
+    batches = runner.plan_batches(config, set())
+    head = [(b.solver, b.network, b.trial.index, b.goals) for b in batches[:4]]
+    probe = tuple(range(1, runner.PROBE + 1))
+    assert head == [("fd-tree", "gen", 1, probe), ("fd-tree", "reg", 1, probe), ("native-complete", "gen", 1, probe),
+                    ("native-complete", "reg", 1, probe)]
+    rest = [(b.solver, b.network, b.trial.index, b.goals[0]) for b in batches[4:]]
+    assert rest == sorted(rest, key=lambda o: (o[0] != "fd-tree", o[1] != "gen", o[2], o[3]))
+    assert rest[0] == ("fd-tree", "gen", 1, runner.PROBE + 1)  # the probed batch goes on where its probe ended
+    assert sorted(g for b in batches for g in b.goals if (b.solver, b.network, b.trial.index) == ("fd-tree", "reg", 1)) \
+        == list(range(1, runner.CHUNK + 5))
 
 
 # -- sweeps --------------------------------------------------------------------------------------
@@ -411,12 +420,15 @@ def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_pat
     config = runner.Config((), Protocol(trials=2, goals=goals), ("reg",), ("native-complete", "fd-tree"), tmp_path)
     batches = runner.plan_batches(config, set())
     sizes = sorted((b.solver, b.trial.index, len(b.goals)) for b in batches)
-    assert sizes == [("fd-tree", 1, goals), ("fd-tree", 2, goals), ("native-complete", 1, 5),
-                     ("native-complete", 1, runner.CHUNK), ("native-complete", 2, 5),
-                     ("native-complete", 2, runner.CHUNK)]
+    probe = runner.PROBE  # the first batch of each (solver, network) gives its first goals as a probe
+    assert sizes == sorted([("fd-tree", 1, probe), ("fd-tree", 1, goals - probe), ("fd-tree", 2, goals),
+                            ("native-complete", 1, probe), ("native-complete", 1, runner.CHUNK - probe),
+                            ("native-complete", 1, 5), ("native-complete", 2, 5),
+                            ("native-complete", 2, runner.CHUNK)])
     assert batches[0].solver == "fd-tree"  # costliest first
     done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
-    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [goals - 10, goals]
+    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [
+        probe, goals - 10 - probe, goals]
 
 
 def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_path):

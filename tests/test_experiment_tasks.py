@@ -51,7 +51,7 @@ def test_a_task_names_its_trial_and_the_worker_resolves_the_same_batch(tmp_path)
     config = _config(tmp_path, sweeps=(("kitchen-fraction", (0.5, 0.9)), ("banned-motions", (0, 1))))
     job = worker.Job(config.paths, worker.fingerprint(config.paths), config.protocol, config.time_limit)
     batches = runner.plan_batches(config, set())
-    assert len(batches) == 4 * 2 * 2 * 2  # points x trials x networks x solvers
+    assert len(batches) == 4 * 2 * 2 * 2 + 2 * 2  # points x trials x networks x solvers, a probe per solver/network
     for batch in batches:
         ref = batch.ref()
         shipped = pickle.dumps(ref)

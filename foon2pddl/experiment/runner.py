@@ -28,7 +28,7 @@ import time
 from collections import Counter
 from collections.abc import Callable, Sequence
 from contextlib import AbstractContextManager, nullcontext
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..errors import FoonInputError, UsageError
@@ -61,6 +61,8 @@ RUNS = "runs.jsonl"  # one line per invocation that computed cells: cells, jobs,
 #: tasks and result messages, ~1 s less on the default protocol's native solvers (21.2 vs 22.2 s, median
 #: of 3); the costliest batches start first, so the tail stays short.
 CHUNK = 50
+#: Goals of the probe of each (solver, network) that runs before the rest (`plan_batches`).
+PROBE = 2
 
 
 @dataclass(frozen=True)
@@ -161,8 +163,8 @@ def cell_labels(config: Config, grid: Sequence[Cell] | None = None) -> dict[Key,
 
 def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = None) -> list[Batch]:
     """Batches of at most CHUNK pending goals (all of them for solvers whose preparation is costly, such as a
-    Fast Downward translation), costliest solvers and largest networks first, after the first batch of every
-    (solver, network) in that order; `grid`: the run's `cells`."""
+    Fast Downward translation), costliest solvers and largest networks first, after a probe of the first PROBE
+    goals of every (solver, network) in that order; `grid`: the run's `cells`."""
     pending: dict[tuple, list[int]] = {}
     trial_of: dict[tuple, Trial] = {}
     params = _params_keys(config)
@@ -182,10 +184,16 @@ def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = N
         n = NETWORKS[b.network].schedule  # batches on larger networks start first (better load balance)
         return (-SOLVERS[b.solver].cost, n, config.points.index(b.point), b.trial.index, b.goals[0])
 
-    ordered = sorted(batches, key=order)
-    # a group's first batch first: its time per cell is known early (`Progress.left`)
-    probes = set({(b.solver, b.network): i for i, b in reversed(list(enumerate(ordered)))}.values())
-    return [ordered[i] for i in sorted(probes)] + [b for i, b in enumerate(ordered) if i not in probes]
+    probes, rest, probed = [], [], set()  # the first PROBE goals of every (solver, network) first: its time
+    for b in sorted(batches, key=order):  # per cell is known early (`Progress.left`); the rest keeps the order
+        if (b.solver, b.network) in probed:
+            rest.append(b)
+            continue
+        probed.add((b.solver, b.network))
+        probes.append(replace(b, goals=b.goals[:PROBE]))
+        if len(b.goals) > PROBE:
+            rest.append(replace(b, goals=b.goals[PROBE:]))
+    return probes + rest
 
 
 # -- protocol.json -------------------------------------------------------------------------------
