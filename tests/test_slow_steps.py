@@ -145,3 +145,23 @@ def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_pa
         k for k, line in enumerate(lines) if line.startswith("experiment: "))  # before the progress line
     quiet = run(*args, "--no-progress", "--fresh")
     assert quiet.exit_code == 0 and " ..." not in quiet.stderr  # --no-progress: no line at all
+
+
+def test_a_resumed_experiment_says_it_builds_the_networks_for_its_report(every_step_speaks, tmp_path, monkeypatch):
+    """Run again with every cell reused, the experiment ran no cell, so it built its networks only for the report's
+    sizes table: 12 s with nothing on stderr between the drawing of the trials and the report (found by the
+    newcomer re-pass, stop 43)."""
+    args = ("experiment", "--trials", "1", "--goals", "2", "--networks", "reg,gen", "--solvers", "native-greedy",
+            "-o", tmp_path)
+    first = run(*args)
+    assert first.exit_code == 0
+    assert "for the report ..." not in first.stderr  # its cells ran in this process: its networks are built
+    from foon2pddl.experiment import worker
+
+    monkeypatch.setitem(worker._CACHE, "views", {})  # a new process
+    again = run(*args)
+    assert again.exit_code == 0, again.stderr
+    lines = again.stderr.splitlines()
+    building = "building the networks (REG, GEN) for the report ..."
+    assert building in lines
+    assert lines.index(building) < lines.index(f"writing the report and plots ({tmp_path / 'report.md'}) ...")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import shlex
 import sys
+from contextlib import nullcontext
 from pathlib import Path
 
 import click
@@ -145,7 +146,10 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
                                                                "them") from None
     for warning in summary.warnings:
         click.echo(warning, err=True)
-    views = runner.views(config)
+    building = runner.unbuilt(config)  # every cell reused, or run in workers: seconds for EXP and GEN
+    with step(f"building the networks ({', '.join(NETWORKS[n].label for n in building)}) for the report") \
+            if building else nullcontext():
+        views = runner.views(config)
     meta = {
         "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits, swept),
         "goal_limits": dict(limits),

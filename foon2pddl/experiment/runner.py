@@ -42,7 +42,7 @@ from .protocol import Protocol, Trial, identity_difference
 from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
-from .worker import Batch, Job, draw_at, fingerprint, input_files, view
+from .worker import Batch, Job, draw_at, fingerprint, has_view, input_files, view
 
 #: A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`).
 Step = Callable[[str], AbstractContextManager[None]]
@@ -392,3 +392,8 @@ def views(config: Config, point: Point | None = None) -> list[NetworkView]:
     """The run's network views at `point` (the first of the sweep by default), built once per process."""
     point = config.points[0] if point is None else point
     return [view(config.paths, config.protocol, point, n) for n in config.networks]
+
+
+def unbuilt(config: Config) -> list[str]:
+    """The networks `views` would build now (none when this process ran cells on them)."""
+    return [n for n in config.networks if not has_view(config.paths, config.protocol, config.points[0], n)]

@@ -136,12 +136,21 @@ def _network(paths: tuple[str, ...], point: Point) -> Network:
 
 def view(paths: tuple[str, ...], protocol: Protocol, point: Point, name: str) -> NetworkView:
     """The network view `name` at `point`, built once per process."""
-    key = (paths, network_key(protocol, point), name)
+    key = _view_key(paths, protocol, point, name)
     views = _CACHE["views"]
     if key not in views:
         at = protocol_at(protocol, point)
         views[key] = build_view(name, _network(paths, point), at.level, at.threshold, at.similarity)
     return views[key]
+
+
+def has_view(paths: tuple[str, ...], protocol: Protocol, point: Point, name: str) -> bool:
+    """Whether this process has built `view`'s answer already."""
+    return _view_key(paths, protocol, point, name) in _CACHE["views"]
+
+
+def _view_key(paths: tuple[str, ...], protocol: Protocol, point: Point, name: str) -> tuple:
+    return paths, network_key(protocol, point), name
 
 
 def draw_at(paths: tuple[str, ...], protocol: Protocol, point: Point) -> Draw:
