@@ -175,6 +175,36 @@ def test_a_unit_that_needs_the_container_node_does_not_make_it_for_the_unit_taki
     assert delete_free_plan(foon, kitchen, place.outputs, together=True)[0] == (0, 1, 2, 3)
 
 
+def test_what_a_unit_makes_in_the_container_node_a_later_unit_takes_is_made_there():
+    # garlic rice (0023, lines 238-291) on the universal FOON of the even-index subgraphs: the sprinkle takes
+    # `cutting board (contains {cilantro, scallion})`, which the pick-and-places make, with the cilantro and scallion
+    # chopped on it, which the cut makes on that board (taking its node, leaving it as it is); the black beans' cut
+    # (0059, line 88) makes chopped cilantro and scallion on a board of its own first. Counted from the beans' cut,
+    # the plan had no scallion to put on the board (unsolvable at once); the rice's cut makes them where they are taken
+    board, knife = "cutting board", n("knife", "clean")
+    on_board = make_state("on", board)
+    both = n(board, contains("cilantro", "scallion"))
+    chopped = (n("scallion", "chopped", on_board), n("cilantro", "chopped", on_board))
+    beans = FunctionalUnit((n(board, contains("cilantro", "scallion", "garlic")), knife, n("cilantro", "leaf", on_board),
+                            n("scallion", "leaf", on_board)), Motion("cut"), chopped, (Source("beans.txt", 88),))
+    first = FunctionalUnit((n(board, "empty"), n("scallion", "whole")), Motion("pick-and-place"),
+                           (n(board, contains("scallion")), n("scallion", "whole", on_board)))
+    second = FunctionalUnit((n(board, contains("scallion")), n("cilantro", "whole")), Motion("pick-and-place"),
+                            (both, n("cilantro", "whole", on_board)))
+    cut = FunctionalUnit((both, knife, n("cilantro", "whole", on_board), n("scallion", "whole", on_board)), Motion("cut"),
+                         chopped, (Source("rice.txt", 260),))
+    cook = FunctionalUnit((n("pot", contains("rice", "water")),), Motion("boil"), (n("pot", contains("rice"), "wet"),))
+    simmer = FunctionalUnit((n("pot", contains("rice"), "wet"),), Motion("simmer"), (n("pot", contains("rice"), "covered"),))
+    uncover = FunctionalUnit((n("pot", contains("rice"), "covered"),), Motion("uncover"), (n("pot", contains("rice")),))
+    sprinkle = FunctionalUnit((both, *chopped, n("pot", contains("rice"))), Motion("sprinkle"),
+                              (n("pot", contains("cilantro", "rice", "scallion")),), (Source("rice.txt", 291),))
+    foon = Foon((beans, first, second, cut, cook, simmer, uncover, sprinkle))
+    kitchen = frozenset({*beans.inputs, n(board, "empty"), n("scallion", "whole"), n("cilantro", "whole"),
+                         n("pot", contains("rice", "water"))})
+    units = delete_free_plan(foon, kitchen, sprinkle.outputs, together=True)[0]
+    assert sorted(units) == [1, 2, 3, 4, 5, 6, 7] and units.index(3) < units.index(7)  # not the beans' cut (0)
+
+
 def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
     # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
     # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from

@@ -6,7 +6,8 @@ unfolding a delete-free plan backwards:
 1. A delete-free plan: back from the goal candidate made in the fewest rounds
    of the kitchen's fixpoint (`analysis.reachability`), each needed node's
    first achiever, in firing order (`relational`: a container's node and its
-   content's node one unit takes, from one earlier unit that makes both);
+   content's node one unit takes, from one earlier unit that makes both, else
+   the content's from one that makes it in that container: `count_together`);
    after a unit that moves an object out of a node a later unit takes, the
    task's units that lead it back there (`count_returns.with_returns`: the pot
    the cover and uncover bring back from `hot`; `relational`, else a unit of the
@@ -48,10 +49,10 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from ..analysis.reachability import Reachability, reachable
+from ..analysis.reachability import reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
-from ..model.places import listed, places
 from .count_returns import with_returns
+from .count_together import makers_together
 from .pairing import Role, RoleKind, unit_roles
 
 #: A unit's object roles, for counting what passes through each node.
@@ -103,7 +104,7 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
     crediting the latest maker can. None when no candidate can be made. `together`
     (`relational`): a container's node and the node of what is in it that one unit takes
     are made by one unit that makes both, when their first achievers differ and such a unit
-    fires before it and needs neither (`_together`).
+    fires before it and needs neither (`count_together`).
     """
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
@@ -124,45 +125,9 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
         if u not in chosen:
             chosen.add(u)
             if together:
-                maker.update({k: v for k, v in _together(reach, u).items() if k not in seen})
+                maker.update({k: v for k, v in makers_together(reach, u).items() if k not in seen})
             stack.extend(ix.inputs[u])
     return tuple(u for u in reach.fired if u in chosen), target
-
-
-def _together(reach: Reachability, u: int) -> dict[int, int]:
-    """Node id -> the unit to make it, for the pairs of unit `u`'s inputs that are a container's node listing a
-    label and that label's node placed in it, made by two units (first achievers), when some unit firing before
-    `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
-    achiever is the pizza's turn on (`water (from [faucet], in [measuring cup])`), and `water (in [measuring
-    cup])`, the macaroni's fill into a cup below the faucet: two cups, and no plan has the water in the one poured
-    from. The pesto's fill makes both, from the kitchen's `measuring cup (empty)`: its objects are counted."""
-    ix, out = reach.index, {}
-    for c in ix.inputs[u]:
-        for x in ix.inputs[u]:
-            held, box = ix.nodes[x], ix.nodes[c]
-            if (x == c or reach.node_round[x] == 0 or reach.node_round[c] == 0 or held.label not in listed(box)
-                    or box.label not in {h for _, h in places(held)} or reach.achiever[x] == reach.achiever[c]):
-                continue
-            both = [m for m in set(ix.makers[c]) & set(ix.makers[x])
-                    if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
-            if both:
-                out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
-    return out
-
-
-def _needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
-    """Whether unit `u` needs one of `nodes` (ids), through first achievers: the hash browns' second mix makes
-    `bowl (contains {potato mixture})` and the mixture with the egg, from the bowl the first mix leaves in that
-    very node, so it cannot make that node for the unit that takes both."""
-    seen, stack = set(), list(reach.index.inputs[u])
-    while stack:
-        n = stack.pop()
-        if n in nodes:
-            return True
-        if n not in seen and reach.node_round[n] > 0:
-            seen.add(n)
-            stack.extend(reach.index.inputs[reach.achiever[n]])
-    return False
 
 
 def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], target: ObjectNode,

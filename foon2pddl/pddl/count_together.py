@@ -1,0 +1,60 @@
+"""Which unit makes a container's node and the node of what is in it, in the delete-free plan counts are derived
+from (`instance_counts.delete_free_plan`, `relational`): one unit for both where one does, else the content's from
+a unit that makes it in that container."""
+
+from __future__ import annotations
+
+from ..analysis.reachability import Reachability
+from ..model.places import listed, places
+
+__all__ = ["makers_together"]
+
+
+def makers_together(reach: Reachability, u: int) -> dict[int, int]:
+    """Node id -> the unit to make it, for the pairs of unit `u`'s inputs that are a container's node listing a
+    label and that label's node placed in it, made by two units (first achievers), when some unit firing before
+    `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
+    achiever is the pizza's turn on (`water (from [faucet], in [measuring cup])`), and `water (in [measuring
+    cup])`, the macaroni's fill into a cup below the faucet: two cups, and no plan has the water in the one poured
+    from. The pesto's fill makes both, from the kitchen's `measuring cup (empty)`: its objects are counted."""
+    ix, out = reach.index, {}
+    for c in ix.inputs[u]:
+        for x in ix.inputs[u]:
+            held, box = ix.nodes[x], ix.nodes[c]
+            if (x == c or reach.node_round[x] == 0 or reach.node_round[c] == 0 or held.label not in listed(box)
+                    or box.label not in {h for _, h in places(held)} or reach.achiever[x] == reach.achiever[c]):
+                continue
+            both = [m for m in set(ix.makers[c]) & set(ix.makers[x])
+                    if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
+            if both:
+                out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+            elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
+                          and _in_box(reach, m, c) and not _needs(reach, m, {x})]:
+                out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+    return out
+
+
+def _in_box(reach: Reachability, m: int, c: int) -> bool:
+    """Whether unit `m` makes what it makes in the container of node `c` (an id): it takes `c` and leaves no node of
+    its label (the garlic rice's cut, `0023-garlic_rice.txt:260`, chops the cilantro on the board the sprinkle takes
+    in that node), or it makes a node of that label that `c`'s first achiever takes (it leaves the object in the
+    container that unit then changes: a scoop of butter into the pan the oil is poured into next)."""
+    ix, box = reach.index, reach.index.nodes[c]
+    if c in ix.inputs[m]:
+        return not any(ix.nodes[o].label == box.label for o in ix.outputs[m])
+    return any(ix.nodes[o].label == box.label and o in ix.inputs[reach.achiever[c]] for o in ix.outputs[m])
+
+
+def _needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
+    """Whether unit `u` needs one of `nodes` (ids), through first achievers: the hash browns' second mix makes
+    `bowl (contains {potato mixture})` and the mixture with the egg, from the bowl the first mix leaves in that
+    very node, so it cannot make that node for the unit that takes both."""
+    seen, stack = set(), list(reach.index.inputs[u])
+    while stack:
+        n = stack.pop()
+        if n in nodes:
+            return True
+        if n not in seen and reach.node_round[n] > 0:
+            seen.add(n)
+            stack.extend(reach.index.inputs[reach.achiever[n]])
+    return False
