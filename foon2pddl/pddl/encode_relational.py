@@ -80,6 +80,7 @@ from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
 from .list_arrivals import read_arrivals
+from .live_holders import LIVE, with_live
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
 from .pairing import Role
@@ -120,7 +121,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     scene = kitchen.project(level).scene
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
-        IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE), options.narrow)
+        IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE, LIVE),
+        options.narrow)
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
     why = tuple(f"objects: {w}" for w in (*count_reasons(inp.foon, counts, ob.kitchen, rd.roles_of),
@@ -197,6 +199,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         + tuple(commented),
         instances=tuple(instances), nodes=tuple(sorted((name, n) for n, name in const.items())),
         gaps=tuple(sorted(pairs)))
+    task = with_live(task)  # late-bound targets exist: (live x), made to consumed
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed)
@@ -281,6 +284,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 return None
             taken = [h for (rel, c, _), h in late.items() if (rel, c) == key[:2] and not source]  # the first's
             late[key] = taken[0] if taken else fresh(place.holder, ("late", key), "here")
+            pre.extend(() if taken or source else [Atom(LIVE, (late[key],))])  # a target that exists (`live_holders`)
         if place.holder in containers:
             gaps.append((place.holder, label, f"{label} is {place.relation} [{place.holder}], a {place.holder} "
                          "the unit does not name: nothing says that it lists it", unit))
