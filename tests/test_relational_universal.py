@@ -205,6 +205,27 @@ def test_what_a_unit_makes_in_the_container_node_a_later_unit_takes_is_made_ther
     assert sorted(units) == [1, 2, 3, 4, 5, 6, 7] and units.index(3) < units.index(7)  # not the beans' cut (0)
 
 
+def test_the_container_node_made_from_the_one_the_held_nodes_maker_leaves_is_counted_from_that_chain():
+    # tomato soup (0011, lines 293-313) on the universal FOON of the even-index subgraphs: the cook and stir takes
+    # `stove (on, with [pot])` with the pot of soup on it; the pick-and-place puts the pot on the stove (leaving it
+    # `off (ready), with [pot]`), the turn on switches that stove on. The garlic rice's pick-and-place (0023, line 1)
+    # makes `stove (on, with [pot])` first, with a pot heated on it: counted from it, the soup's stove was never
+    # there to switch on (unsolvable at once); the turn on that takes the stove the pot was put on is counted
+    stove, pot, on_stove = "stove", "pot", make_state("on", "stove")
+    with_pot, ready = make_state("with", pot), n(stove, "off (ready)")
+    lit = n(stove, "on", with_pot)
+    other = FunctionalUnit((n(stove, "on"), n(pot, "empty")), Motion("pick-and-place"),
+                           (lit, n(pot, "heated", on_stove)), (Source("rice.txt", 1),))
+    place = FunctionalUnit((n(pot, contains("soup")), ready), Motion("pick-and-place"),
+                           (n(pot, contains("soup"), on_stove), n(stove, "off (ready)", with_pot)), (Source("soup.txt", 293),))
+    turn_on = FunctionalUnit((n(stove, "off (ready)", with_pot),), Motion("turn on"), (lit,), (Source("soup.txt", 305),))
+    cook = FunctionalUnit((lit, n(pot, contains("soup"), on_stove), n("spoon", "clean")), Motion("cook and stir"),
+                          (n(pot, contains("soup"), "hot", on_stove),), (Source("soup.txt", 313),))
+    foon = Foon((other, place, turn_on, cook))
+    kitchen = frozenset({n(stove, "on"), n(pot, "empty"), n(pot, contains("soup")), ready, n("spoon", "clean")})
+    assert delete_free_plan(foon, kitchen, cook.outputs, together=True)[0] == (1, 2, 3)
+
+
 def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
     # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
     # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from

@@ -1,6 +1,7 @@
 """Which unit makes a container's node and the node of what is in it, in the delete-free plan counts are derived
 from (`instance_counts.delete_free_plan`, `relational`): one unit for both where one does, else the content's from
-a unit that makes it in that container."""
+a unit that makes it in that container, else the container's from a unit that takes the container where the
+content's maker left it."""
 
 from __future__ import annotations
 
@@ -28,10 +29,22 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
                     if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
             if both:
                 out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
-            elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
+            elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] <= reach.unit_round[u] and m != u
                           and _in_box(reach, m, c) and not _needs(reach, m, {x})]:
                 out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+            elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
+                           and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
+                out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
     return out
+
+
+def _from_held(reach: Reachability, k: int, c: int, x: int) -> bool:
+    """Whether unit `k` (a maker of the container's node `c`) takes a node of that container's label that the first
+    achiever of the held node `x` leaves beside it: the tomato soup's turn on (`0011-easy_tomato_soup.txt:305`)
+    switches on the stove its pick-and-place put the pot of soup on, `stove (off (ready), with [pot])`."""
+    ix = reach.index
+    made = set(ix.outputs[reach.achiever[x]])
+    return any(i in made and ix.nodes[i].label == ix.nodes[c].label for i in ix.inputs[k])
 
 
 def _in_box(reach: Reachability, m: int, c: int) -> bool:

@@ -49,7 +49,7 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from ..analysis.reachability import reachable
+from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from .count_returns import with_returns
 from .count_together import makers_together
@@ -121,13 +121,29 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
         if n in seen or reach.node_round[n] == 0:
             continue
         seen.add(n)
-        u = maker.get(n, reach.achiever[n])
+        u = maker[n] = maker.get(n, reach.achiever[n])
         if u not in chosen:
             chosen.add(u)
             if together:
                 maker.update({k: v for k, v in makers_together(reach, u).items() if k not in seen})
             stack.extend(ix.inputs[u])
-    return tuple(u for u in reach.fired if u in chosen), target
+    return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen}), target
+
+
+def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) -> tuple[int, ...]:
+    """`chosen` in firing order, each after the units chosen to make its inputs (`made_by`: node id -> unit): a unit
+    `together` picks may fire in the round of the unit it makes a node for (the tomato soup's turn on)."""
+    out: list[int] = []
+    placed: set[int] = set()
+    waiting = [u for u in reach.fired if u in chosen]
+    while waiting:
+        ready = [u for u in waiting if all(made_by.get(n, u) in placed or made_by.get(n, u) == u
+                                           for n in reach.index.inputs[u])]
+        step = ready or waiting[:1]  # a cycle none of the rules makes: firing order
+        out.extend(step)
+        placed.update(step)
+        waiting = [u for u in waiting if u not in placed]
+    return tuple(out)
 
 
 def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], target: ObjectNode,
