@@ -3,6 +3,8 @@ read or was told that was not true, written first and watched fail."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from click.testing import CliRunner
 from conftest import ROOT
@@ -199,3 +201,16 @@ def test_a_constraints_file_given_as_a_network_says_to_give_it_with_constraints(
     assert r.exit_code == 2
     assert ("error: top level: this is a constraints file (docs/constraints.md), not a network: give it as the "
             "constraints file") in r.stderr
+
+
+@pytest.mark.parametrize("encoding", ["state", "ocp"])
+def test_an_encoding_that_is_not_foons_semantics_says_why_it_has_no_plan(encoding):
+    """Stop 43's re-pass: `plan --goal guacamole --encoding state` (and `ocp`) exited 1 with only `search proved the
+    task unsolvable`, where README promises the reason is printed; the guacamole needs the one cutting board twice,
+    and these encodings have one object per label (docs/pddl.md). The reason says so and what to use."""
+    r = run("plan", "--goal", "guacamole", "--encoding", encoding)
+    assert r.exit_code == 1
+    reason = next(line for line in r.stderr.splitlines() if line.startswith("reason: "))
+    assert f"the {encoding} encoding is not FOON's semantics" in reason and "--encoding relational" in reason
+    data = json.loads(run("plan", "--goal", "guacamole", "--encoding", encoding, "--format", "json").stdout)
+    assert data["reason"] == reason.removeprefix("reason: ")

@@ -41,7 +41,7 @@ from .options import (
     view_goal,
 )
 from .progress import slow_step
-from .reasons import explained, networks_hint, unsupported_reason, why_unsolvable
+from .reasons import explained, foreign_reason, networks_hint, unsupported_reason, why_unsolvable
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 
@@ -198,7 +198,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
     explain = explained(status, encoding)
-    unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else None
+    unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else foreign_reason(status, encoding)
     if fmt == "json":
         data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]
                             if explain else unsupported)

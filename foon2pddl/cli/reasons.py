@@ -86,6 +86,20 @@ def unsupported_reason(task) -> str | None:
             "`--optimal` takes A* with h^max there); `--encoding tree` (FOON's own semantics) and `--encoding instances` have none")
 
 
+def foreign_reason(status, encoding: str) -> str | None:
+    """Why an encoding that is not FOON's semantics (`state`, `ocp`: one object per label, deletes) has no plan,
+    where FOON's reason would not apply; None for the other encodings and for a plan or an error."""
+    from ..pddl.compile import ENCODINGS
+    from ..status import PlanStatus
+
+    if ENCODINGS[encoding].foon_semantics or status not in {PlanStatus.UNSOLVABLE, PlanStatus.GAVE_UP,
+                                                            PlanStatus.TIMEOUT}:
+        return None
+    return (f"the {encoding} encoding is not FOON's semantics: it has one object per label, so a recipe that needs "
+            "two of one (two cutting boards, one board twice) has no plan in it (docs/pddl.md); `--encoding "
+            "relational` (the default) or `--encoding tree` plans under FOON's semantics")
+
+
 def short_step(foon, kitchen, goal) -> str | None:
     """Which step of FOON's task tree runs out of a kitchen's counted objects (`planners.executable.schedule`:
     `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree."""
