@@ -122,7 +122,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     cell, or a returned tree does not validate; 4 cells were lost with their workers (run the same
     command again to redo them); 130 interrupted.
     """
-    from ..experiment import runner
+    from ..experiment import collector, runner
     from ..experiment.networks import NETWORKS
     from ..experiment.report import ReportData, agreement, invalid_trees, write_report
     from .progress import slow_step
@@ -146,35 +146,39 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
                                                                "them") from None
     for warning in summary.warnings:
         click.echo(warning, err=True)
-    building = runner.unbuilt(config)  # every cell reused, or run in workers: seconds for EXP and GEN
-    with step(f"building the networks ({', '.join(NETWORKS[n].label for n in building)}) for the report") \
-            if building else nullcontext():
-        views = runner.views(config)
-    meta = {
-        "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits, swept),
-        "goal_limits": dict(limits),
-        "inputs": ", ".join(f"`{p}`" for p in paths) or "the embedded example network",
-        "files": len(runner.input_files(config.paths)),
-        "fingerprint": runner.fingerprint(config.paths),
-        "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
-        "similarity": similarity, "objects_per_item": per_item,
-        "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
-        "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
-                           "what": NETWORKS[v.name].summary} for v in views],
-        "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
-            f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
-        "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",
-        "ran": summary.ran, "skipped": summary.skipped, "machine": machine(),
-        "history": [dict(h, code=describe(h)) for h in summary.history], "code": describe(code_version()),
-    }
-    first = dict(config.points[0])
-    data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,
-                      tuple(t.summary() for t in summary.trials), meta, swept, summary.records)
-    try:
-        with step(f"writing the report and plots ({report})"):
-            written = write_report(data, out_dir, report)
-    except OSError as exc:
-        raise FoonInputError(str(report), 0, f"cannot write the report: {exc.strerror or exc}") from None
+    # the run froze its networks and records while its cells ran and unfroze them when it returned: frozen again
+    # through the report, whose full collections walked them (1.2-2.5 s at load 20, the ticking line held up)
+    with collector.building() as settle:
+        building = runner.unbuilt(config)  # every cell reused, or run in workers: seconds for EXP and GEN
+        with step(f"building the networks ({', '.join(NETWORKS[n].label for n in building)}) for the report") \
+                if building else nullcontext():
+            views = runner.views(config)
+        settle()  # the run's objects, frozen: the report's collections need not walk them
+        meta = {
+            "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits, swept),
+            "goal_limits": dict(limits),
+            "inputs": ", ".join(f"`{p}`" for p in paths) or "the embedded example network",
+            "files": len(runner.input_files(config.paths)),
+            "fingerprint": runner.fingerprint(config.paths),
+            "trials": trials, "goals": goals, "level": level, "seed": seed, "kitchen_fraction": f"{fraction:g}",
+            "similarity": similarity, "objects_per_item": per_item,
+            "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
+            "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
+                               "what": NETWORKS[v.name].summary} for v in views],
+            "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
+                f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
+            "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",
+            "ran": summary.ran, "skipped": summary.skipped, "machine": machine(),
+            "history": [dict(h, code=describe(h)) for h in summary.history], "code": describe(code_version()),
+        }
+        first = dict(config.points[0])
+        data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,
+                          tuple(t.summary() for t in summary.trials), meta, swept, summary.records)
+        try:
+            with step(f"writing the report and plots ({report})"):
+                written = write_report(data, out_dir, report)
+        except OSError as exc:
+            raise FoonInputError(str(report), 0, f"cannot write the report: {exc.strerror or exc}") from None
     solved = sum(r.solved for r in summary.records)
     click.echo(f"{summary.ran} cells run, {summary.skipped} reused, {solved} solved, in {summary.seconds:.1f} s; "
                f"wrote {config.results_path}, " + ", ".join(str(p) for p in written))

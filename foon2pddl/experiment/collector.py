@@ -7,7 +7,8 @@ built, the collector's full passes over them find nothing and cost about a fifth
 being drawn) walks them again. Frozen before the workers are forked, they also stay out of the
 workers' collections (the recipe in the `gc.freeze` documentation). When the run ends the objects
 are unfrozen and the collector is as it was, so a long-lived process (a notebook, the tests) keeps
-collecting them once they are dropped.
+collecting them once they are dropped. The `experiment` command freezes them again, with the network
+views its report needs, until the report is written (`cli/experiment_cmd.py`).
 """
 
 from __future__ import annotations
