@@ -209,8 +209,11 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     """
     stated = stated or {}
     overrides = overrides or {}
-    nodes, labels = start_places(foon, units, kitchen, candidates, roles_of)
     found = delete_free_plan(foon, kitchen, candidates, together)
+    # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
+    # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
+    nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)
+                     if found is None or stated or overrides or extra else (set(), set()))
     if found is None:
         at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
@@ -231,9 +234,10 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
             return stated[node]
         return derived + extra
 
-    at_node = tuple((n, k) for n in sorted(nodes) if (k := count(at_kitchen[n], n.label, n)) > 0)
+    counted = {n: k for n in nodes if (k := count(at_kitchen[n], n.label, n)) > 0}  # sorted once filtered
+    at_node = tuple((n, counted[n]) for n in sorted(counted))
     unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
-    exact = (found is not None and at_node == tuple((n, at_kitchen[n]) for n in sorted(nodes) if at_kitchen[n] > 0)
+    exact = (found is not None and at_node == tuple((n, at_kitchen[n]) for n in sorted(n for n in nodes if at_kitchen[n] > 0))
              and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
     once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
     unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()

@@ -283,8 +283,8 @@ def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
     for k, s in enumerate(plan.slots):
         if s.late_empties:
             label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
-            out[k] = [(n, without(n, group[holder], alias)) for n in sorted(nodes)
-                      if n.label == holder and describes_contents(n) and label in read_names(listed(n), alias)]
+            out[k] = [(n, without(n, group[holder], alias)) for n in sorted(
+                x for x in nodes if x.label == holder and describes_contents(x) and label in read_names(listed(x), alias))]
     return out
 
 

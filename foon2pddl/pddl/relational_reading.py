@@ -67,10 +67,13 @@ def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, Funct
         return make_node(node.label, (*node.states, make_state(f"before {maker.motion.label}")),
                          motion_flag=node.motion_flag)
 
+    def read(u: int, s, unit: FunctionalUnit):  # a slot is copied only when one of its nodes is read apart
+        after, portion = apart(u, s.after, unit), apart(u, s.portion, unit)
+        return s if after is s.after and portion is s.portion else replace(s, after=after, portion=portion)
+
     out = {}
     for u, p in plans.items():
-        slots = tuple(replace(s, after=apart(u, s.after, p.unit), portion=apart(u, s.portion, p.unit))
-                      for s in p.slots)
+        slots = tuple(read(u, s, p.unit) for s in p.slots)
         out[u] = p if slots == p.slots else replace(p, slots=slots)
     return out, said
 
@@ -123,7 +126,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
             key = ("counts", id(net), need, id(roles_of), narrow or None)  # `net`: `inp.foon` or `st.through`
             if key not in memo:
-                memo[key] = derive_counts(net, need, inp.kitchen | (narrow or frozenset()), inp.candidates,
+                memo[key] = derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen, inp.candidates,
                                           stated=stated, overrides=overrides, roles_of=roles_of, together=True,
                                           stitched=True)
             return memo[key]

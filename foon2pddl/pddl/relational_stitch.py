@@ -51,8 +51,9 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     `makers` (the network; default the task's units; module doc). Names are read as in that task: a universal
     FOON's `sugar` is a label of its own, a dish's task may read it as `refined sugar`. O(kitchen containers x
     units x outputs)."""
-    kitchen, task = frozenset(kitchen), Foon(tuple(units))
-    makers = task if makers is None else makers
+    kitchen = frozenset(kitchen)
+    makers = Foon(tuple(units)) if makers is None else makers
+    taking = _taking(units, kitchen)  # the task's units taking each kitchen node (no index of all its nodes)
     made = makers.producers  # the nodes a unit makes (the network's index, built once per network object)
     full = sorted(k for k in kitchen if listed(k) and k not in made)
     labels = {n.label for u in units for n in (*u.inputs, *u.outputs)}
@@ -63,9 +64,9 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
 
     out = {}
     for k in full:
-        if k not in task.consumers:  # no unit of the task takes K
+        if k not in taking:  # no unit of the task takes K
             continue
-        items, takers = read(listed(k)), _takers(task, k)
+        items, takers = read(listed(k)), taking[k]
         taken = {x for u in takers for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
@@ -83,7 +84,7 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
                 found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
-    return out | _taken_off(task, kitchen, makers, made)
+    return out | _taken_off(taking, kitchen, makers, made)
 
 
 def _laid(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUnit]) -> list[ObjectNode]:
@@ -100,7 +101,7 @@ def _laid_words(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUni
     return frozenset(s for s in _rest(k) if (names := {*s.ingredients, s.related} - {""}) and names <= laid)
 
 
-def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
+def _taken_off(taking: Mapping[ObjectNode, list[FunctionalUnit]], kitchen: frozenset[ObjectNode], makers: Foon,
                made: Container[ObjectNode]) -> dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]:
     """K -> (P, the unit making P) for each kitchen node K naming no place that every unit taking it takes off or
     works on a container (the watermelon lemonade's uncover takes `blender lid` with `blender cup (contains
@@ -110,10 +111,10 @@ def _taken_off(task: Foon, kitchen: frozenset[ObjectNode], makers: Foon,
     cuts it on): it keeps K, and so does every other unit making P (a universal FOON's smoothie puts it on a board
     in the same words), the others take P. O(kitchen x units x outputs)."""
     out = {}
-    for k in sorted(x for x in kitchen if x in task.consumers and not places(x) and x not in made):
+    for k in sorted(x for x in kitchen if x in taking and not places(x) and x not in made):
         off = {u: {i.label for i in u.inputs if k.label in listed(i)
                    and not any(o.label == i.label and k.label in listed(o) for o in u.outputs)}
-               for u in _takers(task, k)}
+               for u in taking[k]}
         held = frozenset().union(*off.values())  # a P must be in or on one of these
         found: dict[ObjectNode, FunctionalUnit] = {}
         for p, u in _outputs_of(makers, k.label) if held else ():
@@ -134,9 +135,17 @@ def _outputs_of(foon: Foon, label: str) -> list[tuple[ObjectNode, FunctionalUnit
     return [(p, foon.units[i]) for p in foon.produced_by_label.get(label, ()) for i in foon.producers[p]]
 
 
-def _takers(foon: Foon, node: ObjectNode) -> list[FunctionalUnit]:
-    """The units taking `node` (`Foon.consumers`)."""
-    return [foon.units[i] for i in foon.consumers.get(node, ())]
+def _taking(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode]) -> dict[ObjectNode, list[FunctionalUnit]]:
+    """Kitchen node -> the units of `units` taking it, in order, each once (`Foon.consumers` of the task's units for
+    the kitchen's nodes only: a task of a FOON-GEN goal has hundreds of units, whose other nodes need no index)."""
+    out: dict[ObjectNode, list[FunctionalUnit]] = {}
+    last: dict[ObjectNode, int] = {}
+    for i, u in enumerate(units):
+        for n in u.inputs:
+            if n in kitchen and last.get(n) != i:
+                last[n] = i
+                out.setdefault(n, []).append(u)
+    return out
 
 
 Stitches = dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]
