@@ -99,12 +99,18 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
     """`plan` with the ways back of the task's `units` put in (module doc); `again`: a unit of the plan fired
     again where no unit of the task leads back."""
     planned = set(plan)
-    order, spare = list(plan), [u for u in units if u not in planned]
-    steps: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
-    for v in spare:
-        roles = roles_of(foon.units[v])
-        for label in dict.fromkeys(r.before.label for r in roles if r.changes and r.before is not None):
-            steps.setdefault(label, []).append((v, roles))
+    order = list(plan)
+    steps: dict[str, list[tuple[int, tuple[Role, ...]]]] | None = None  # made when a way back is first looked for
+
+    def spare_steps() -> dict[str, list[tuple[int, tuple[Role, ...]]]]:
+        out: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
+        for v in units:
+            if v not in planned:
+                roles = roles_of(foon.units[v])
+                for label in dict.fromkeys(r.before.label for r in roles if r.changes and r.before is not None):
+                    out.setdefault(label, []).append((v, roles))
+        return out
+
     taken = [roles_of(foon.units[m]) for m in plan]
     later: list[set[ObjectNode | None]] = [set() for _ in range(len(plan) + 1)]  # nodes the units after i take
     for i in range(len(plan) - 1, -1, -1):
@@ -115,6 +121,7 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
                 continue
             if r.before not in later[i + 1]:
                 continue
+            steps = spare_steps() if steps is None else steps
             if back := _way_back(foon, r.after, r.before, steps, kitchen, stitched):
                 at = order.index(m) + 1
                 order[at:at] = back

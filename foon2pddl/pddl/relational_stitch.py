@@ -72,15 +72,19 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
         found = {}
-        for p, u in _outputs_of(makers, k.label):
-            if k in u.inputs:  # what a unit makes of K is K after it, not K
+        rest, where = _rest(k), places(k)
+        for p, u in _outputs_of(makers, k.label):  # the cheap tests first: a label's outputs are many in FOON-GEN
+            if k in u.inputs or not _nested(where, places(p)):  # what a unit makes of K is K after it, not K
+                continue
+            laid = _laid_words(k, u, takers)
+            if not rest - laid <= _rest(p):
+                continue
+            kept, says = items - read(x for s in laid for x in (*s.ingredients, s.related) if x), read(listed(p))
+            if not kept <= says:
                 continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
-            laid = _laid_words(k, u, takers)
-            kept = items - read(x for s in laid for x in (*s.ingredients, s.related) if x)
-            if (_rest(k) - laid <= _rest(p) and _nested(places(k), places(p))
-                    and kept <= read(listed(p)) and not (read(listed(p)) - kept) & (roles | before)):
+            if not (says - kept) & (roles | before):
                 found.setdefault(p, u)
         if len(found) == 1:
             out[k] = next(iter(found.items()))
