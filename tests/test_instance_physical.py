@@ -7,10 +7,10 @@ from physical_world import node as n
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.pairing import unit_roles
 from foon2pddl.model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
 from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.instance_replay import instance_trace
-from foon2pddl.pddl.pairing import unit_roles
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Instance, PlanningTask
 from foon2pddl.planners import fd

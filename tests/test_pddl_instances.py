@@ -17,12 +17,12 @@ from foon2pddl.analysis.reachability import reachable
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.pairing import RoleKind, unit_roles
 from foon2pddl.pddl.compile import compile_task
 from foon2pddl.pddl.encode_instances import IS, LANE, NOT_MADE, TOGETHER, encode_instances
 from foon2pddl.pddl.encoding import EncodeOptions
 from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts, unfold
 from foon2pddl.pddl.instance_replay import InstancePlanError, instance_trace, trace_lines
-from foon2pddl.pddl.pairing import RoleKind, unit_roles
 from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import Atom, PlanningTask
 from foon2pddl.pddl.trace_view import step_text

@@ -15,6 +15,7 @@ from relational_checks import clean_unit_plan
 
 from foon2pddl.cli import main
 from foon2pddl.io.files import load
+from foon2pddl.model.aliases import unit_aliases
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
@@ -22,7 +23,7 @@ from foon2pddl.model.physical import Relation
 from foon2pddl.model.places import listed, place_of
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
 from foon2pddl.pddl.holder_words import mismatches, task_aliases
-from foon2pddl.pddl.holders import Fate, list_gaps, relational_roles, unit_aliases, unit_flows
+from foon2pddl.pddl.holders import Fate, list_gaps, relational_roles, unit_flows
 from foon2pddl.pddl.relational_plan import without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render

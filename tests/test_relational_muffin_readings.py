@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from node_words import contains, inside, n
 
+from foon2pddl.model.aliases import unit_aliases
 from foon2pddl.model.foon import FunctionalUnit, Motion, make_node, make_state
-from foon2pddl.pddl.holder_words import unit_aliases
-from foon2pddl.pddl.pairing import unit_roles
+from foon2pddl.model.pairing import unit_roles
 
 BATTER = ("brown sugar", "butter", "milk")
 

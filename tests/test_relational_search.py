@@ -8,8 +8,8 @@ from node_words import contains, n
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.pairing import RoleKind, unit_roles
 from foon2pddl.pddl.compile import compile_task
-from foon2pddl.pddl.pairing import RoleKind, unit_roles
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 

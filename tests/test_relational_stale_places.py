@@ -9,10 +9,11 @@ from pathlib import Path
 
 from node_words import contains, inside, n
 
+from foon2pddl.model.aliases import unit_aliases
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
-from foon2pddl.pddl.holders import relational_roles, unit_aliases
+from foon2pddl.pddl.holders import relational_roles
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 

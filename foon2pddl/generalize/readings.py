@@ -3,7 +3,7 @@
 FOON often names a holder or an ingredient by a shorter word than the object's label: the
 apple turnover's pour (`0086-apple_turnover.txt:195`) takes `butter (melted, in [pan])`
 beside the `cooking pan (contains {butter})`. The relational encoding reads such a name as
-the object (rule 0, `pddl/holder_words.unit_aliases`). A name with no category of its own
+the object (rule 0, `model/aliases.py`). A name with no category of its own
 (`pan`) would stay as it is under FOON-GEN, beside `cookware (contains {dairy})`: no object
 of the GEN unit is a `pan`. So a name a node uses (a place, a list item) that has no category,
 and that exactly one object label of its unit matches by the head-noun rule

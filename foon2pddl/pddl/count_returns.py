@@ -30,8 +30,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Sequence
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.pairing import Role, unit_roles
 from .input_stitch import said_less
-from .pairing import Role, unit_roles
 
 __all__ = ["RETURN_DEPTH", "with_returns"]
 

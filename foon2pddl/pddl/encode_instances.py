@@ -66,11 +66,11 @@ from itertools import pairwise
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.pairing import unit_roles
 from .costs import goal_cost, unit_cost
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .instance_counts import InstanceCounts, count_reasons, derive_counts, lanes
 from .names import NameTable
-from .pairing import unit_roles
 from .prune import restoring_units
 from .task import Action, Atom, Instance, PlanningTask, Predicate
 from .untyped import flat_typed

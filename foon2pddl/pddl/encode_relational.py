@@ -53,9 +53,11 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..model.aliases import unit_aliases
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.pairing import Role
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
 from . import relational_plan
@@ -75,7 +77,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported
-from .holders import Fate, attached_gaps, list_gaps, on_parts, unit_aliases
+from .holders import Fate, attached_gaps, list_gaps, on_parts
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
@@ -83,7 +85,6 @@ from .list_arrivals import read_arrivals
 from .live_holders import LIVE, with_live
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
-from .pairing import Role
 from .prune import restoring_units
 from .registry import Compiled
 from .relational_init import kitchen_implied

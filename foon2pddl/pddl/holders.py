@@ -88,11 +88,12 @@ from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
 
+from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.pairing import Role, unit_roles
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, place_state, places
-from .holder_words import aliased, part_of, renamed, unit_aliases
-from .pairing import Role, unit_roles
+from .holder_words import aliased, part_of, renamed
 
 __all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "moved_into", "on_parts",
            "relational_roles", "unit_aliases", "unit_flows"]

@@ -54,11 +54,11 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
+from ..model.aliases import unit_aliases
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, State, make_state
 from ..model.memo import per_network
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
-from .holder_words import unit_aliases
 
 __all__ = ["Stitch", "Stitched", "said_less", "stitched_inputs", "stitches", "with_stitches"]
 

@@ -51,9 +51,9 @@ from dataclasses import dataclass
 
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.pairing import Role, RoleKind, unit_roles
 from .count_returns import with_returns
 from .count_together import makers_together
-from .pairing import Role, RoleKind, unit_roles
 
 #: A unit's object roles, for counting what passes through each node.
 RolesOf = Callable[[FunctionalUnit], tuple[Role, ...]]

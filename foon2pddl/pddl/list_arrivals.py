@@ -25,13 +25,13 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..model.aliases import unit_aliases
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.memo import per_network
+from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
 from .encoding import LevelInputs, short_path, unit_where
-from .holder_words import unit_aliases
 from .list_drops import path_taker, placed_at
-from .pairing import unit_roles
 
 __all__ = ["arrival_notes", "arrivals", "read_arrivals"]
 

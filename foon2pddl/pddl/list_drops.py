@@ -30,11 +30,11 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import replace
 
+from ..model.aliases import unit_aliases
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
 from .encoding import short_path, unit_where
-from .holder_words import unit_aliases
-from .pairing import unit_roles
 from .relational_plan import UnitPlan
 
 __all__ = ["DEPTH", "kept_in_place", "path_taker", "placed_at"]

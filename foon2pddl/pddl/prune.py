@@ -65,7 +65,7 @@ def restoring_units(foon: Foon, kitchen: Iterable[ObjectNode], targets: Iterable
     unit moves an object out of it (`pairing.unit_roles`). Sound: every unit of a plan
     fires in the fixpoint and makes something a kept unit needs or uses up.
     """
-    from .pairing import unit_roles
+    from ..model.pairing import unit_roles
 
     kitchen = frozenset(kitchen)
     reach = reachable(foon, kitchen)

@@ -208,7 +208,7 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
                       ) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
     """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
     and the units name (`named`: the places the units' output nodes and portions name, each as its own unit
-    reads it, `holder_words.unit_aliases`; `filled`: what the
+    reads it, `model.aliases.unit_aliases`; `filled`: what the
     task's units put into holders of which label, `holder_init`; `kitchen`: the task's kitchen nodes, which judge what
     the kitchen says, `implied_contents`). Also the task's aliases
     (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the

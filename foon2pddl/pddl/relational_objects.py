@@ -18,11 +18,12 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
+from ..model.aliases import unit_aliases
 from ..model.foon import ObjectNode
 from ..model.places import places
 from ..model.scene import SceneObject
 from .encoding import LevelInputs
-from .holder_words import task_aliases, unit_aliases
+from .holder_words import task_aliases
 from .input_stitch import Stitched
 from .names import NameTable
 from .relational_init import completed_kitchen, scene_instances

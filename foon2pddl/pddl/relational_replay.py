@@ -23,11 +23,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from ..model.aliases import unit_aliases
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
 from .encode_instances import NOT_MADE
 from .holder_words import task_aliases
-from .holders import relational_roles, unit_aliases
+from .holders import relational_roles
 from .instance_replay import source_of
 from .registry import PlanDecodeError
 from .relational_sweep import CONSUMED

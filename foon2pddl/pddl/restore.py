@@ -34,10 +34,10 @@ from dataclasses import replace
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
+from ..model.pairing import RoleKind, unit_roles
 from ..model.places import listed, places
 from .encoding import at_level
 from .instance_counts import InstanceCounts, derive_counts
-from .pairing import RoleKind, unit_roles
 from .prune import restoring_units
 
 __all__ = ["READY", "RESTORE_SOURCE", "discards", "fewer", "is_restoring", "ready_states", "restore_counts", "restore_motion",

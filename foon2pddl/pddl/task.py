@@ -12,8 +12,8 @@ from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from ..model.foon import ObjectNode
+from ..model.pairing import Role
 from ..model.physical import Relation
-from .pairing import Role
 
 
 @dataclass(frozen=True, order=True)

@@ -13,8 +13,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..model.foon import ObjectNode
+from ..model.pairing import RoleKind
 from ..model.physical import Binding, PhysicalTrace, TraceStep
-from .pairing import RoleKind
 from .task import PlanningTask
 
 __all__ = ["TraceView", "binding_kind", "changed", "show_node", "step_text"]

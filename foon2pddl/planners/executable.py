@@ -5,7 +5,7 @@ available, so one bowl serves every unit that needs an empty bowl, even at once.
 `schedule` runs the tree's units in order over physical objects instead: every
 kitchen node holds `counts[label]` objects (default 1: one object per kitchen
 item; `per_item` scales it), each object is in one node at a time, and a unit's
-role (`pddl.pairing.unit_roles`) binds a distinct object in the node the role
+role (`model.pairing.unit_roles`) binds a distinct object in the node the role
 needs: the first by id among the objects in that node, else a fresh kitchen
 object of that node while the node has one left. A utensil or container is thus
 reused only when it is free again, in the state the unit needs (a knife once
@@ -34,10 +34,10 @@ from enum import StrEnum
 
 from ..model.containment import is_inference
 from ..model.foon import ObjectNode
+from ..model.pairing import RoleKind, unit_roles
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
 from ..model.places import places
 from ..model.tasktree import TaskTree
-from ..pddl.pairing import RoleKind, unit_roles
 from .foon_places import step_source
 
 __all__ = ["Executability", "Verdict", "drawn_by_plan", "needed", "schedule", "short_message"]

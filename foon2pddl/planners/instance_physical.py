@@ -47,9 +47,9 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from ..model.foon import ObjectNode
+from ..model.pairing import Role, RoleKind
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..model.places import listed, places
-from ..pddl.pairing import Role, RoleKind
 from ..pddl.task import PlanningTask
 from .physical_replay import replay
 

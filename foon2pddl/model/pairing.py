@@ -39,7 +39,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
 
-from ..model.foon import FunctionalUnit, ObjectNode
+from .foon import FunctionalUnit, ObjectNode
 
 
 class RoleKind(StrEnum):
