@@ -214,3 +214,7 @@ def test_an_encoding_that_is_not_foons_semantics_says_why_it_has_no_plan(encodin
     assert f"the {encoding} encoding is not FOON's semantics" in reason and "--encoding relational" in reason
     data = json.loads(run("plan", "--goal", "guacamole", "--encoding", encoding, "--format", "json").stdout)
     assert data["reason"] == reason.removeprefix("reason: ")
+    missing = run("plan", "--goal", "lemonade", "--encoding", encoding)  # review rv43: no lemon in the kitchen
+    assert missing.exit_code == 1
+    reason = next(line for line in missing.stderr.splitlines() if line.startswith("reason: "))
+    assert "add `lemon (whole)`" in reason and "not FOON's semantics" not in reason

@@ -199,6 +199,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             data += view.text(outcome.task, outcome.trace)
     explain = explained(status, encoding)
     unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else foreign_reason(status, encoding)
+    if unsupported is not None and status != PlanStatus.ERROR:  # state/ocp: their cause only where FOON makes it
+        fails, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
+        unsupported = unsupported if makes else fails
     if fmt == "json":
         data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]
                             if explain else unsupported)
