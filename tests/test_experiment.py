@@ -346,16 +346,16 @@ def test_a_probe_of_every_solver_and_network_runs_first_and_the_rest_stays_costl
     the costliest-first order (a 1-trial run whose probes were whole first batches left fd-relational's second
     halves last: one worker busy 316 s, the other 180 s, of 333 s)."""
     config = runner.Config((), Protocol(trials=2, goals=runner.CHUNK + 4), ("reg", "gen"),
-                           ("native-complete", "fd-tree"), tmp_path)
+                           ("native-complete", "fd-relational"), tmp_path)
     batches = runner.plan_batches(config, set())
     head = [(b.solver, b.network, b.trial.index, b.goals) for b in batches[:4]]
     probe = tuple(range(1, runner.PROBE + 1))
-    assert head == [("fd-tree", "gen", 1, probe), ("fd-tree", "reg", 1, probe), ("native-complete", "gen", 1, probe),
+    assert head == [("fd-relational", "gen", 1, probe), ("fd-relational", "reg", 1, probe), ("native-complete", "gen", 1, probe),
                     ("native-complete", "reg", 1, probe)]
     rest = [(b.solver, b.network, b.trial.index, b.goals[0]) for b in batches[4:]]
-    assert rest == sorted(rest, key=lambda o: (o[0] != "fd-tree", o[1] != "gen", o[2], o[3]))
-    assert rest[0] == ("fd-tree", "gen", 1, runner.PROBE + 1)  # the probed batch goes on where its probe ended
-    assert sorted(g for b in batches for g in b.goals if (b.solver, b.network, b.trial.index) == ("fd-tree", "reg", 1)) \
+    assert rest == sorted(rest, key=lambda o: (o[0] != "fd-relational", o[1] != "gen", o[2], o[3]))
+    assert rest[0] == ("fd-relational", "gen", 1, runner.PROBE + 1)  # the probed batch goes on where its probe ended
+    assert sorted(g for b in batches for g in b.goals if (b.solver, b.network, b.trial.index) == ("fd-relational", "reg", 1)) \
         == list(range(1, runner.CHUNK + 5))
 
 
@@ -420,15 +420,17 @@ def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_pat
     config = runner.Config((), Protocol(trials=2, goals=goals), ("reg",), ("native-complete", "fd-tree"), tmp_path)
     batches = runner.plan_batches(config, set())
     sizes = sorted((b.solver, b.trial.index, len(b.goals)) for b in batches)
-    probe = runner.PROBE  # the first batch of each (solver, network) gives its first goals as a probe
-    assert sizes == sorted([("fd-tree", 1, probe), ("fd-tree", 1, goals - probe), ("fd-tree", 2, goals),
+    probe = runner.PROBE  # the first batch of each (solver, network) gives its first goals as a probe, but a
+    # solver prepared once per batch (fd-tree) probes with its whole first batch: split, trial 1's preparation ran
+    # twice (review rv43: fd-lifted-gen's GEN setup 6.4 s and 10.9 s)
+    assert sizes == sorted([("fd-tree", 1, goals), ("fd-tree", 2, goals),
                             ("native-complete", 1, probe), ("native-complete", 1, runner.CHUNK - probe),
                             ("native-complete", 1, 5), ("native-complete", 2, 5),
                             ("native-complete", 2, runner.CHUNK)])
     assert batches[0].solver == "fd-tree"  # costliest first
     done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
     assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [
-        probe, goals - 10 - probe, goals]
+        goals - 10, goals]
 
 
 def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_path):

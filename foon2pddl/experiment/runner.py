@@ -190,8 +190,9 @@ def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = N
             rest.append(b)
             continue
         probed.add((b.solver, b.network))
-        probes.append(replace(b, goals=b.goals[:PROBE]))
-        if len(b.goals) > PROBE:
+        split = len(b.goals) > PROBE and not SOLVERS[b.solver].whole_batches  # (split, one prepares twice)
+        probes.append(replace(b, goals=b.goals[:PROBE]) if split else b)
+        if split:
             rest.append(replace(b, goals=b.goals[PROBE:]))
     return probes + rest
 
