@@ -29,7 +29,7 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
                     if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
             if both:
                 out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
-            elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] <= reach.unit_round[u] and m != u
+            elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
                           and _in_box(reach, m, c) and not _needs(reach, m, {x})]:
                 out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
             elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
