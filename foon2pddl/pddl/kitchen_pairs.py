@@ -94,14 +94,16 @@ def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[i
         for box in u.inputs:
             if not given(box) or (i, box) in sewn:
                 continue
+            box_makers = makers(box)
             for held in u.inputs:
                 if (not given(held) or (i, held) in sewn or (box in kitchen and held in kitchen) or held.label == box.label
-                        or held.label not in listed(box) or box.label not in {h for _, h in places(held)}
-                        or set(makers(box)) & set(makers(held))
-                        or (box in kitchen and held in kitchen_implied((held,), kitchen))):
+                        or held.label not in listed(box) or box.label not in {h for _, h in places(held)}):
                     continue
-                boxes = [(m, _beside(m, held.label, box.label)) for m in makers(box)]
-                helds = [(m, _beside(m, box.label)) for m in makers(held)]
+                held_makers = makers(held)
+                if set(box_makers) & set(held_makers) or (box in kitchen and held in kitchen_implied((held,), kitchen)):
+                    continue
+                boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
+                helds = [(m, _beside(m, box.label)) for m in held_makers]
                 if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
                         o is not None and o != box and box not in m.inputs for m, o in helds):
                     out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
