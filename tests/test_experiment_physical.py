@@ -179,6 +179,24 @@ def _meta(config, summary):
             "skipped": 0, "history": [], "machine": "test", "code": "test"}
 
 
+def test_a_solver_replays_holders_exactly_when_its_encoding_has_them(monkeypatch):
+    """The report's "relational replay (holders included)" follows the solver's registered encoding, not its
+    name: a solver registered with the relational encoding under another name is replayed with holders."""
+    from foon2pddl.experiment.solvers import SOLVERS
+
+    assert physical.replays_holders("fd-relational") and not physical.replays_holders("fd-instances")
+    assert not physical.replays_holders("fd-tree") and not physical.replays_holders("native-complete")
+    monkeypatch.setitem(SOLVERS, "my-relational", replace(SOLVERS["fd-instances"], name="my-relational",
+                                                          encoding="relational"))
+    assert physical.replays_holders("my-relational")
+    records = [_rec(1, 1, "reg", "native-complete", "executable"),
+               replace(_rec(1, 1, "reg", "my-relational", "executable"), plan_length=4, repeated=0)]
+    data = ReportData(tuple(records), ("reg",), ("native-complete", "my-relational"),
+                      ({"trial": 1, "goals": ["a"], "kitchen_nodes": 5},))
+    (row,) = physical.physical_planners(data)
+    assert row.holders
+
+
 def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(tmp_path):
     config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=12), networks=("reg",),
                            solvers=("native-complete", "fd-relational"), out_dir=tmp_path)

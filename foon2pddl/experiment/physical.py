@@ -194,11 +194,15 @@ class PhysicalPlannerRow:
     plans: int = 0  # plans returned: those replayed clean (`solved`) and those that fail the replay
     replay_failures: tuple[str, ...] = ()  # why each plan that fails the replay fails (its record's reason)
     no_plan: tuple[tuple[str, int], ...] = ()  # (status, goals) of the goals the reference solves and it has no plan
-    holders: bool = False  # its replay includes holders (the relational replay: `HOLDER_REPLAY`)
+    holders: bool = False  # its replay includes holders (the relational replay: `replays_holders`)
 
 
-#: Planners whose plans are replayed with their holders (`planners.physical_replay`), not on objects alone.
-HOLDER_REPLAY = ("fd-relational",)
+def replays_holders(solver: str) -> bool:
+    """`solver`'s plans are replayed with their holders (its encoding's `holders`), not on objects alone."""
+    from ..pddl.compile import ENCODINGS
+
+    encoding = SOLVERS[solver].encoding
+    return encoding is not None and ENCODINGS[encoding].holders
 
 
 def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
@@ -231,7 +235,7 @@ def physical_planners(data: ReportData) -> list[PhysicalPlannerRow]:
                                           statistics.fmean(repeated) if repeated else None,
                                           statistics.fmean(x.units for _, x in both) if both else None,
                                           len(cells) + len(failed), tuple(r.reason for r in failed),
-                                          tuple(sorted(no_plan.items())), s in HOLDER_REPLAY))
+                                          tuple(sorted(no_plan.items())), replays_holders(s)))
     return out
 
 

@@ -6,13 +6,13 @@ which does the work shared by the goals of the batch (its time is the batch's
 reachability fixpoint (complete, optimal) or the network index (greedy);
 `fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once per run
 from the default kitchen, start each trial from its kitchen and swap goals in
-the translated task (`planners.solve.GoalReplanner`); `fd-state`
-and `fd-instances` compile and plan each goal afresh (both are pruned per goal;
-`fd-instances` plans with physical objects, so it may need a wash or a second
-bowl where FOON's semantics does not, and solve fewer goals than `native-complete`);
-`fd-lifted-gen` plans over the concrete network with category types, on the
-GEN network only, translated once per trial too. Every tree a solver returns is validated by simulation from
-the kitchen the solver was given; a tree that fails is an `error`.
+the translated task (`planners.solve.GoalReplanner`); `fd-state`, `fd-instances`
+and `fd-relational` compile and plan each goal afresh with their `encoding`, pruned
+per goal (the physical ones may need a wash or a second bowl where FOON's semantics
+does not, and solve fewer goals than `native-complete`); `fd-lifted-gen` plans over
+the concrete network with category types, on GEN only, translated once per trial
+too. Every tree a solver returns is validated by simulation from the kitchen the
+solver was given; a tree that fails is an `error`.
 """
 
 from __future__ import annotations
@@ -107,6 +107,7 @@ class Solver:
     role: Role = Role.OTHER
     cost: int = 0
     whole_batches: bool = False  # one task per (trial, network): its preparation is too costly to repeat
+    encoding: str | None = None  # the encoding it compiles each goal with (`pddl.compile.ENCODINGS`), if one
 
     def applies_to(self, network: str) -> bool:
         return self.networks is None or network in self.networks
@@ -347,6 +348,11 @@ class _LiftedGen(Prepared):
         return _plan_outcome(outcome, outcome.result.plan, self.replanner.kitchen_nodes, self.per_item)
 
 
+def _fresh(name: str, description: str, encoding: str) -> Solver:
+    """A solver compiling and translating each goal afresh with `encoding` (`_FdFresh`)."""
+    return Solver(name, description, lambda s: _FdFresh(s, encoding), planner=True, cost=6, encoding=encoding)
+
+
 SOLVERS: dict[str, Solver] = {s.name: s for s in (
     Solver("native-greedy", "the seed paper's greedy task tree retrieval", lambda s: _Native(s, "greedy"),
            role=Role.PAPER, cost=1),
@@ -361,18 +367,15 @@ SOLVERS: dict[str, Solver] = {s.name: s for s in (
                           "one translation per run (a trial's kitchen is its initial state), each goal's relevant "
                           "operators only",
            lambda s: _FdReuse(s, True), planner=True, role=Role.OPTIMUM, cost=5, whole_batches=True),
-    Solver("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
-                       "encoding's STRIPS semantics; FOON simulation reported apart)",
-           lambda s: _FdFresh(s, "state"), planner=True, cost=6),
-    Solver("fd-instances", "Fast Downward lama-first, instances encoding (physical objects whose states change, "
+    _fresh("fd-state", "Fast Downward lama-first, state encoding, compiled per goal (plans checked under the "
+                       "encoding's STRIPS semantics; FOON simulation reported apart)", "state"),
+    _fresh("fd-instances", "Fast Downward lama-first, instances encoding (physical objects whose states change, "
                            "counts derived per goal), compiled per goal (plans replayed on the objects and "
                            "validated as FOON trees; goals no task tree reaches are answered from the trial's "
-                           "fixpoint)",
-           lambda s: _FdFresh(s, "instances"), planner=True, cost=6),
-    Solver("fd-relational", "Fast Downward lama-first, relational encoding (physical objects and what holds "
+                           "fixpoint)", "instances"),
+    _fresh("fd-relational", "Fast Downward lama-first, relational encoding (physical objects and what holds "
                             "what), compiled per goal (plans replayed object by object, holders included; goals "
-                            "no task tree reaches are answered from the trial's fixpoint)",
-           lambda s: _FdFresh(s, "relational"), planner=True, cost=6),
+                            "no task tree reaches are answered from the trial's fixpoint)", "relational"),
     Solver("fd-lifted-gen", "Fast Downward lama-first, lifted GEN (category types, concrete objects), one "
                             "translation per trial",
            _LiftedGen, networks=lifted_networks(), planner=True, role=Role.CONCRETE, cost=4, whole_batches=True),
