@@ -152,6 +152,21 @@ def test_a_label_in_no_category_is_filed_as_categories_extend_files_it(cook, lab
         assert cook.categories_of(label) == tuple(a.category for a in assign([label], full, files)) != ()
 
 
+def test_a_label_naming_a_category_is_in_that_category(cook):
+    """A label that is a category's own name and no category's member (cutlery) is in that category: it made
+    the cook mode fail with an IndexError (`assign` files no category name), so `similarity cutlery fork` and
+    an EXP over a FOON with a cutlery node crashed. Kin to the category's members, not to other categories'."""
+    index = shipped_index()
+    names = [n for n in index.names if not index.of(n)]
+    assert "cutlery" in names
+    for name in names:
+        assert cook.categories_of(name) == (name,) and not cook.kind_only(name)
+    member = sorted(index.members_of("cutlery"))[0]
+    assert kin(index, "cutlery", member, cook.categories_of)
+    assert not kin(index, "cutlery", "pot", cook.categories_of)
+    cook("cutlery", member)  # scores without failing
+
+
 def test_stocks_are_ingredients_and_a_shared_modifier_does_not_reject(cook):
     """Rule 4 leaves stocks alone (WordNet files broth under soup); two compounds with one modifier are as
     close as their heads."""

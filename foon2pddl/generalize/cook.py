@@ -30,6 +30,7 @@ head nouns and modifiers, see `similarity.py`) and changes six things:
    melting and hard cheeses; frying pan~muffin pan). A label in no category joins one
    exactly as `categories --extend` files it (`extend.assign`: its head's category, a
    category's name, else its nearest member's category at >= `extend.DEFAULT_MIN_SIMILARITY`;
+   a label that is a category's own name, in no category's members, is in that category;
    each label on its own, so deterministic and independent of the other labels); a label
    still in none is not constrained. WordNet says how close two things are; the
    categories say which of them a cook swaps.
@@ -190,14 +191,17 @@ class CookSimilarity:
         found = self.categories.of(label)
         if found or not self.extend:
             return found
+        if self.categories.is_category(label):  # a category's own name (cutlery), no member of any: that category
+            return (label,)
         filed = self.filing(label)
         return (filed.category,) if filed is not None and filed.category is not None else ()
 
     def filing(self, label: str) -> Assignment | None:
-        """How rule 5 files `label` (`extend.assign`); None for a label of the index (or with `extend=False`)."""
+        """How rule 5 files `label` (`extend.assign`); None for a label of the index, a member's or a category's
+        name (`assign` files neither), or with `extend=False`."""
         assert self.categories is not None
         label = normalize_label(label)
-        if self.categories.of(label) or not self.extend:
+        if self.categories.of(label) or self.categories.is_category(label) or not self.extend:
             return None
         if label not in self._filed:
             if self._filer is None:
