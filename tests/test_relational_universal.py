@@ -240,6 +240,43 @@ def test_the_container_node_made_from_the_one_the_held_nodes_maker_leaves_is_cou
     assert delete_free_plan(foon, kitchen, cook.outputs, together=True)[0] == (1, 2, 3)
 
 
+def _butter_chain():
+    """The apple turnover's butter (0086, lines 163-195) on the universal FOON of the even-index subgraphs: the heat
+    takes `cooking pan (contains {butter}, on [stove])` with `butter (cubed, in [pan])`, its `pan` the cooking pan
+    (rule 0). The turnover's scoop makes the pan's node with its butter `in [cooking pan]`, the chocolate
+    sandwich's pick-and-place (0051, line 103) makes the butter in a skillet, and the pork chops' scoop (0045, line
+    42) makes both."""
+    on_stove, pan = make_state("on", "stove"), "cooking pan"
+    hot, buttered = n(pan, "heated", on_stove), n(pan, contains("butter"), on_stove)
+    cubed = n("butter", "cubed", inside("pan"))
+    turnover = FunctionalUnit((hot, n("bowl", contains("butter")), n("butter", "stick", inside("bowl"))),
+                              Motion("scoop and pour"), (buttered, n("butter", "cubed", inside(pan))),
+                              (Source("apple.txt", 163),))
+    skillet = FunctionalUnit((n("skillet", "heated", on_stove), n("butter", "cubed")), Motion("pick-and-place"),
+                             (n("skillet", contains("butter"), on_stove), cubed), (Source("sandwich.txt", 103),))
+    pork = FunctionalUnit((hot, n("knife", "clean"), n("plate", contains("butter")),
+                           n("butter", "stick", make_state("on", "plate"))), Motion("scoop and pour"), (buttered, cubed),
+                          (Source("pork.txt", 42),))
+    heat = FunctionalUnit((buttered, n("spatula", "clean"), cubed), Motion("heat"),
+                          (buttered, n("butter", "melted", inside("pan"))), (Source("apple.txt", 179),))
+    kitchen = {x for u in (turnover, skillet, pork) for x in u.inputs} | {n("spatula", "clean")}
+    return (turnover, skillet, pork, heat), kitchen
+
+
+def test_a_held_node_placed_at_another_name_of_the_container_is_counted_with_it():
+    # read by label only (`pan` is no `cooking pan`), the pair was not counted from the pork chops' scoop: the pan
+    # from the turnover's scoop, the butter from the skillet; no plan had the butter in the pan the heat takes
+    # (apple pie and pork chop unsolvable at once)
+    units, kitchen = _butter_chain()
+    assert delete_free_plan(Foon(units), frozenset(kitchen), units[-1].outputs[1:], together=True)[0] == (2, 3)
+
+
+def test_the_butter_melted_in_the_pan_another_recipe_scoops_it_into_is_valid_and_clean():
+    units, kitchen = _butter_chain()
+    outcome = clean_unit_plan(units, kitchen, units[-1].outputs[1])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["scoop and pour", "heat"]
+
+
 def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
     # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
     # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from

@@ -6,6 +6,7 @@ content's maker left it."""
 from __future__ import annotations
 
 from ..analysis.reachability import Reachability
+from ..model.aliases import unit_aliases
 from ..model.places import listed, places
 
 __all__ = ["makers_together"]
@@ -17,13 +18,18 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
     `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
     achiever is the pizza's turn on (`water (from [faucet], in [measuring cup])`), and `water (in [measuring
     cup])`, the macaroni's fill into a cup below the faucet: two cups, and no plan has the water in the one poured
-    from. The pesto's fill makes both, from the kitchen's `measuring cup (empty)`: its objects are counted."""
+    from. The pesto's fill makes both, from the kitchen's `measuring cup (empty)`: its objects are counted. Names
+    are read as `u` reads them (rule 0, `unit_aliases`): the apple turnover's heat takes `cooking pan (contains
+    {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node."""
     ix, out = reach.index, {}
+    alias = dict(unit_aliases(reach.foon.units[u]))
     for c in ix.inputs[u]:
         for x in ix.inputs[u]:
             held, box = ix.nodes[x], ix.nodes[c]
-            if (x == c or reach.node_round[x] == 0 or reach.node_round[c] == 0 or held.label not in listed(box)
-                    or box.label not in {h for _, h in places(held)} or reach.achiever[x] == reach.achiever[c]):
+            if (x == c or reach.node_round[x] == 0 or reach.node_round[c] == 0
+                    or held.label not in {alias.get(i, i) for i in listed(box)}
+                    or box.label not in {alias.get(h, h) for _, h in places(held)}
+                    or reach.achiever[x] == reach.achiever[c]):
                 continue
             both = [m for m in set(ix.makers[c]) & set(ix.makers[x])
                     if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
