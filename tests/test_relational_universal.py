@@ -277,6 +277,28 @@ def test_the_butter_melted_in_the_pan_another_recipe_scoops_it_into_is_valid_and
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["scoop and pour", "heat"]
 
 
+def test_a_late_bound_target_is_the_holder_a_role_of_the_unit_is_at_under_that_name():
+    # pork chops (0045, line 160) on the universal FOON of the even-index subgraphs: the pick-and-place takes
+    # `cooking pan (contains {porkchop}, on [stove])` and leaves `plate (contains {porkchop}, on [stove])`. No role is
+    # a stove: the plate's was bound late, and with two stoves the plan put the plate on the one the pan was not on
+    # (`holder-not-bound`: the step uses stove_1, but cooking_pan_1 is on stove_2). One name in a unit, one stove
+    from foon2pddl.pddl.compile import compile_goal
+    from foon2pddl.pddl.task import Atom
+
+    on_stove = make_state("on", "stove")
+    place = FunctionalUnit((n("cooking pan", contains("porkchop"), on_stove), n("plate", "empty"),
+                            n("porkchop", "cooked", inside("pan")), n("tongs", "clean")), Motion("pick-and-place"),
+                           (n("cooking pan", "dirty"), n("plate", contains("porkchop"), on_stove),
+                            n("porkchop", "cooked", make_state("on", "plate"))), (Source("pork.txt", 160),))
+    goal = Goal(GoalSpec("porkchop"), (place.outputs[2],))
+    task = compile_goal(Foon((place,)), Kitchen(frozenset(place.inputs)), goal, "relational").task
+    action = next(a for a in task.actions if a.unit == 0)
+    late = [v for v, t in action.params if t == "stove"]
+    assert len(late) == 1 and Atom("on", (late[0], "?cooking_pan")) in action.pre
+    assert Atom("on", (late[0], "?plate")) in action.add
+    clean_unit_plan((place,), place.inputs, place.outputs[2])
+
+
 def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
     # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
     # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from

@@ -285,7 +285,10 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 return None
             taken = [h for (rel, c, _), h in late.items() if (rel, c) == key[:2] and not source]  # the first's
             late[key] = taken[0] if taken else fresh(place.holder, ("late", key), "here")
-            pre.extend(() if taken or source else [Atom(LIVE, (late[key],))])  # a target that exists (`live_holders`)
+            pre.extend(() if taken or source else [Atom(LIVE, (late[key],)), *(  # a target that exists (`live_holders`),
+                Atom(x.rel.source.relation.value, (late[key], var[j])) for j, x in enumerate(slots)  # the one a bound
+                if j != k and bound[j] and x.rel.source is not None and x.rel.source.role is None  # role is at under
+                and x.rel.source.holder == place.holder)])  # that name: one word, one stove (docs/pddl.md)
         if place.holder in containers:
             gaps.append((place.holder, label, f"{label} is {place.relation} [{place.holder}], a {place.holder} "
                          "the unit does not name: nothing says that it lists it", unit))
