@@ -38,7 +38,8 @@
   kitchen container that lists an item holds one object of it.
 * **Stitches** (`input_stitch`): an input no unit makes, read as the node the plan left it in; two nodes of a unit
   that list each other, read as one on the other (`mutual_lists`); a list's item no object of the unit is, taken
-  there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`); a
+  there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`); a node
+  a unit takes and leaves listing what it puts in, read before it as the node without that (`list_brought`); a
   container's node and what is in it, taken together and made together by no unit, as at hand (`kitchen_pairs`).
 * **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
@@ -82,6 +83,7 @@ from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
 from .list_arrivals import read_arrivals
+from .list_brought import read_brought
 from .live_holders import LIVE, with_live
 from .mutual_lists import mutual_notes, read_mutual
 from .names import NameTable
@@ -112,6 +114,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     given = inp.foon.units  # FOON's own: the plan's tree is made of them
     inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
     inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
+    inp, brought = read_brought(inp)  # a node a unit takes and leaves, listing what it puts in: before it, less that
     inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if options.prune
                                  else tuple(range(len(given))))
     inp, at_hand = read_pairs(inp, units)  # a container's node and what is in it that no unit makes together: the kitchen's
@@ -184,7 +187,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
              if (f.units[u], m) not in unheld]
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
-    found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [arrived[u] for u in units if u in arrived]
+    found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [x[u] for x in (arrived, brought) for u in units if u in x]
     found += rd.renamed
     told = [(kind, reported(x)) for kind, x in (("label mismatch", found), (UNHELD, unheld),
                                                 (AT_HAND, [(x.taker, x.describe()) for x in at_hand]))]

@@ -1,0 +1,76 @@
+"""A container node a unit takes and leaves in the same words, listing what the unit puts in (a relational reading).
+
+The easy pancakes' oil pour (`0031-easy_pancakes.txt:176`) takes `bowl (contains {egg white and yolk, flour mixture,
+milk, vegetable oil})` with the bowl of vegetable oil, and leaves the bowl in the same words: the annotator listed
+the oil before it was poured. No unit makes that node but the pour itself, so FOON's semantics takes it from the
+kitchen, and the egg pour's `bowl (contains {egg white and yolk, flour mixture, milk})` goes nowhere. Over objects the
+kitchen's bowl holds a flour mixture in no node a unit makes (`relational_init`), and the mix, which takes the flour
+mixture made in the bowl the pours fill, applies to no reachable state: the dish was unsolvable, on the subgraph
+alone as on a universal FOON.
+
+Rule (`brought`): a unit U takes a node N of label C that no other unit makes, and gives N as an output; its other
+inputs list items of N that no other output of U lists (what U puts in); and exactly one node M of label C, made by
+a unit other than U, says all N says but those items (places too). Then U takes M, and N is no kitchen object (U
+makes it). The units making M and U, not the recipe file, tie the two (a universal FOON written as one file has
+every recipe in it). FOON's tree keeps FOON's unit; the reading is reported with U's file:line. O(units x made
+nodes of C) for the rare U that takes and leaves one node.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from ..model.foon import Foon, ObjectNode
+from ..model.memo import per_network
+from ..model.places import listed
+from .encoding import LevelInputs
+
+__all__ = ["brought", "read_brought"]
+
+
+def _says(node: ObjectNode, but: frozenset[str] = frozenset()) -> frozenset:
+    """What a node says, its `contains` list item by item, less the items `but`."""
+    return frozenset(w for s in node.states for w in (
+        [("contains", x) for x in (*s.ingredients, s.related) if x and x not in but] if s.label == "contains" else [s]))
+
+
+def brought(foon: Foon) -> dict[int, tuple[ObjectNode, ObjectNode, tuple[str, ...]]]:
+    """Unit index -> (N, M, the items it puts in), per the module doc."""
+    out = {}
+    for u, unit in enumerate(foon.units):
+        for n in unit.inputs:
+            if n not in unit.outputs or set(foon.producers.get(n, ())) != {u}:
+                continue
+            items = frozenset(x for i in unit.inputs if i != n for x in listed(i)) - frozenset(
+                x for o in unit.outputs if o != n for x in listed(o))
+            said = _says(n, items)
+            if said == _says(n):
+                continue
+            found = {m for m in foon.produced_by_label.get(n.label, ()) if m != n and _says(m) == said
+                     and set(foon.producers[m]) - {u}}
+            if len(found) == 1:
+                out[u] = (n, found.pop(), tuple(sorted(items & listed(n))))
+    return out
+
+
+@per_network
+def _brought_network(foon: Foon) -> tuple[Foon | None, dict[int, tuple[ObjectNode, ObjectNode, tuple[str, ...]]]]:
+    """The network with each unit of `brought` taking M (None when there is none), and the readings: once per
+    network object."""
+    found = brought(foon)
+    if not found:
+        return None, found
+    units = tuple(replace(x, inputs=tuple(found[u][1] if i == found[u][0] else i for i in x.inputs))
+                  if u in found else x for u, x in enumerate(foon.units))
+    return Foon(units, foon.level), found
+
+
+def read_brought(inp: LevelInputs) -> tuple[LevelInputs, dict[int, tuple]]:
+    """`inp` with the units of `brought` read so, their N out of the kitchen; and unit index -> (unit, note)."""
+    foon, found = _brought_network(inp.foon)
+    if foon is None:
+        return inp, {}
+    notes = {u: (inp.foon.units[u], f"{inp.foon.units[u].motion.label} takes and leaves {n.describe()}, which no other "
+                 f"unit makes, as {m.describe()}, which another unit makes: {', '.join(items)} put in by it")
+             for u, (n, m, items) in sorted(found.items())}
+    return replace(inp, foon=foon, kitchen=inp.kitchen - {n for n, _, _ in found.values()}), notes

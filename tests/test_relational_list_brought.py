@@ -1,0 +1,58 @@
+"""A container node a unit takes and leaves in the same words, listing what the unit puts in (`pddl/list_brought.py`):
+the easy pancakes' oil pour (`0031-easy_pancakes.txt:176`)."""
+
+from __future__ import annotations
+
+from node_words import contains, inside, n
+from relational_checks import clean_unit_plan
+
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_goal
+
+WHISK = n("whisk", "clean")
+MIXTURE = n("flour mixture", contains("flour", "sugar"), inside("bowl"))
+FULL = n("bowl", contains("flour mixture", "milk", "vegetable oil"))
+FIRST = FunctionalUnit((n("bowl", contains("flour", "sugar")), n("flour", inside("bowl")), n("sugar", inside("bowl")),
+                        WHISK), Motion("mix"), (n("bowl", contains("flour mixture")), MIXTURE),
+                       (Source("pancakes.txt", 111),))
+MILK = FunctionalUnit((n("measuring cup", contains("milk")), n("milk", inside("measuring cup")),
+                       n("bowl", contains("flour mixture"))), Motion("pour"), (n("bowl", contains("flour mixture", "milk")),),
+                      (Source("pancakes.txt", 134),))
+OIL = FunctionalUnit((n("bowl", contains("vegetable oil")), n("vegetable oil", inside("bowl")), FULL), Motion("pour"),
+                     (FULL,), (Source("pancakes.txt", 176),))
+MIX = FunctionalUnit((FULL, MIXTURE, WHISK), Motion("mix"),
+                     (n("bowl", contains("pancake batter")), n("pancake batter", inside("bowl"))),
+                     (Source("pancakes.txt", 188),))
+UNITS = (FIRST, MILK, OIL, MIX)
+# FOON's kitchen: every input no unit makes without taking it, the oil pour's bowl among them
+KITCHEN = {i for u in UNITS for i in u.inputs if i not in {o for v in UNITS if i not in v.inputs for o in v.outputs}}
+
+
+def test_the_bowl_the_oil_is_poured_into_is_the_one_the_milk_was_poured_into():
+    # FOON's kitchen holds the bowl listing the oil, with a flour mixture in no node a unit makes; the mix takes the
+    # flour mixture the first mix made in the bowl the milk is poured into: over objects no state applied the mix
+    assert FULL in KITCHEN
+    outcome = clean_unit_plan(UNITS, KITCHEN, MIX.outputs[1])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["mix", "pour", "pour", "mix"]
+
+
+def test_the_reading_is_noted_with_the_units_file_and_line():
+    goal = Goal(GoalSpec("pancake batter"), (MIX.outputs[1],))
+    notes = compile_goal(Foon(UNITS), Kitchen(frozenset(KITCHEN)), goal, "relational").notes
+    assert [x for x in notes if "takes and leaves" in x] == [
+        "label mismatch: pancakes.txt:176: pour takes and leaves bowl (contains {flour mixture, milk, vegetable oil}), "
+        "which no other unit makes, as bowl (contains {flour mixture, milk}), which another unit makes: vegetable oil "
+        "put in by it"]
+
+
+def test_a_node_left_as_it_was_taken_is_read_only_with_what_the_unit_puts_in_and_no_other_maker():
+    from foon2pddl.pddl.list_brought import brought
+
+    assert list(brought(Foon(UNITS)).values()) == [(FULL, MILK.outputs[0], ("vegetable oil",))]
+    stir = FunctionalUnit((FULL, n("spoon", "clean")), Motion("stir"), (FULL,))  # it puts nothing in: FOON's words
+    assert brought(Foon((FIRST, MILK, stir, MIX))) == {}
+    again = FunctionalUnit((n("bowl", contains("flour mixture", "milk")), n("vegetable oil", "fresh")), Motion("pour"),
+                           (FULL,))  # another unit makes the bowl listing the oil: no reading
+    assert brought(Foon((*UNITS, again))) == {}
