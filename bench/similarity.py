@@ -9,8 +9,8 @@ it and `independent`; `outside` and `unsampled`: a third batch, every pair eithe
 accepts on the search inputs' labels outside the shared subgraphs and on the shared
 labels not sampled before, see `similarity_sample.py`; `unseen`: both). The cook mode's
 breadth vocabulary is the shipped reference vocabulary (the shared subgraphs' labels)
-joined, for `outside`, by the search inputs' labels and, for `lemmas` and `lemmas2`, by the batch's drawn
-lemmas, as a user's run on them would.
+joined, for `outside`, by the search inputs' labels and, for the lemma batches (`lemmas`, `lemmas2`,
+`lemmas3`, `similarity_lemmas.py`), by the batch's drawn lemmas, as a user's run on them would.
 Also reported per mode: the share of accepted pairs labelled bad.
 """
 
@@ -30,7 +30,8 @@ from .harness import Context
 
 AREA = "similarity"
 PAIRS = Path(__file__).with_name("similarity_pairs.tsv")
-SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "lemmas", "lemmas2", "tune", "all")
+SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "lemmas", "lemmas2", "lemmas3",
+          "tune", "all")
 #: Groups of splits reported together: the held-out batches, and the third batch (`similarity_sample`).
 GROUPS = {"held-out": ("independent", "fresh"), "unseen": ("outside", "unsampled")}
 Z95 = 1.959963984540054
@@ -107,12 +108,12 @@ def accepted(pairs: list[Pair], mode: str, joined: dict[str, list[str]], reader=
 def run(ctx: Context) -> None:
     from foon2pddl.generalize import wordnet
 
-    from .similarity_lemmas import draw_labels
+    from .similarity_lemmas import SEEDS, draw_labels
 
     pairs = read_pairs()
     reader = wordnet.reader()
     joined = {"outside": search_labels(ctx.shared),
-              **{split: draw_labels(reader, ctx.shared, split) for split in ("lemmas", "lemmas2")}}
+              **{split: draw_labels(reader, ctx.shared, split) for split in SEEDS}}
     for mode in SIMILARITY_MODES:
         keys, reader = accepted(pairs, mode, joined, reader)
         for split in SPLITS:

@@ -15,8 +15,10 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     pairs = read_pairs()
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
-    assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2"}
-    later = ("outside", "unsampled", "lemmas", "lemmas2")
+    assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2",
+                                        "lemmas3"}
+    lemma_batches = ("lemmas", "lemmas2", "lemmas3")
+    later = ("outside", "unsampled", *lemma_batches)
     assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
     assert {p.source for p in pairs if p.split not in later} == {
         "paper-proposed", "cook-proposed", "random"}
@@ -30,12 +32,13 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
             assert {p.a, p.b} <= search and not {p.a, p.b} <= reference, p
         elif p.split == "unsampled":
             assert {p.a, p.b} <= reference, p
-        elif p.split in ("lemmas", "lemmas2"):  # a drawn WordNet lemma with a drawn or reference label
+        elif p.split in lemma_batches:  # a drawn WordNet lemma with a drawn or reference label
             assert not {p.a, p.b} <= reference and not {p.a, p.b} & (search - reference), p
         else:
             assert {p.a, p.b} <= shared, p
-    drawn2 = {x for p in pairs if p.split == "lemmas2" for x in (p.a, p.b)} - reference
-    assert drawn2 and not drawn2 & {x for p in pairs if p.split != "lemmas2" for x in (p.a, p.b)}  # unseen labels
+    for batch in lemma_batches[1:]:  # each later batch's drawn labels are in no other split
+        drawn = {x for p in pairs if p.split == batch for x in (p.a, p.b)} - reference
+        assert drawn and not drawn & {x for p in pairs if p.split != batch for x in (p.a, p.b)}, batch
 
 
 def test_wilson_interval_matches_the_closed_form_values():
