@@ -93,6 +93,7 @@ def _why(a: str, b: str, ev) -> str:
         return f"{a} ~ {b}: no common ancestor\n"
     verdict = {"broad": f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary",
                "category": "rejected: the categories do not group them",
-               "sibling": "rejected: a label filed through one member stands only with its kinds"}.get(
+               "sibling": "rejected: a label filed through one member stands only with its kinds",
+               "purpose": "rejected: a kind of tool for a food its generic is not for"}.get(
         ev.rejected, f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -3,7 +3,8 @@
 - `wordnet`: WordNet 3.0 through NLTK (an NLTK corpus, or Debian's files assembled once);
 - `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk
   (the seed paper's rule, mode `paper`); `cook`: the default mode (role senses, deepest common
-  ancestor, broad ancestors rejected); `modes`: the registry of modes; `pairs`: `expand --pairs`;
+  ancestor, broad ancestors rejected; `purpose`: the foods a kind of tool is for, its rule 7); `modes`: the
+  registry of modes; `pairs`: `expand --pairs`;
 - `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
 - `categories`: the shipped category index; `extend`: `categories --extend`; `compress`: FOON-GEN,
   objects replaced by categories (`readings`: a name read as its unit's object takes its category);
@@ -14,5 +15,5 @@ See docs/generalization.md.
 
 #: The package's modules (import them by name).
 __all__ = ["bootstrap_categories", "cache", "categories", "compress", "cook", "expand", "extend", "grounding", "hints", "modes",
-           "network", "pairs", "readings", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
+           "network", "pairs", "purpose", "readings", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
            "wup"]

@@ -3,7 +3,7 @@
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
 Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
 0.9 through their plant senses. This rule keeps the paper's composition (overrides,
-head nouns and modifiers, see `similarity.py`) and changes six things:
+head nouns and modifiers, see `similarity.py`) and changes seven things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -37,10 +37,20 @@ head nouns and modifiers, see `similarity.py`) and changes six things:
 6. A filed label is a kind of its member (`sibling`): a label rule 5 files through one
    member (its head, or its nearest member other than a synonym, similarity < 1) stands
    only with a label whose sense is its own or a WordNet ancestor or descendant of it
-   (sugar spoon~spoon), not with a sibling under a third ancestor (sugar spoon~wooden
+   (runcible spoon~spoon), not with a sibling under a third ancestor (sugar spoon~wooden
    spoon, chestnut~walnut): the filing shows what the label is a kind of, not which of
    the category's members a cook swaps it with. A synonym of a member and a label filed
    by a category's name (hickory nut, "nuts and seeds") keep rule 5.
+7. A kind of tool for another food is not its generic (`for_another_food`, `purpose.py`): in a pair
+   with a label rule 6 holds to its kinds, the narrower kind (its sense below the other's, else the
+   compound known by its head: rice cooker~cooker), when a tool, stands only if its name and gloss
+   name no food its generic's do not: pot~urn ("a large pot for making coffee or tea"), spoon~tea
+   maker, bowl~slop basin score 0; caldron~pot ("a very large pot that is used for boiling") stands.
+   Labels of the category index keep rule 5 alone (spoon~teaspoon).
+
+Senses are read as in the paper's rule, except that a hyphenated label that is a WordNet lemma is
+read whole (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon,
+not some spoon known by its head).
 
 The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
 with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
@@ -141,7 +151,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6"
+RULES = "rule 5 extended, rule 6, rule 7, hyphens"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -220,7 +230,7 @@ class CookSimilarity:
         label = normalize_label(label)
         found = self._resolved.get(label)
         if found is None:
-            found = self._resolved[label] = resolve(self.reader, label, self.overrides, role_senses)
+            found = self._resolved[label] = resolve(self.reader, label, self.overrides, role_senses, hyphens=True)
         return found
 
     def coverage(self, ancestor: str) -> float:
@@ -262,10 +272,32 @@ class CookSimilarity:
             if found.similarity and not found.rejected and self.categories is not None:
                 if not kin(self.categories, a, b, self.categories_of):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
-                elif found.ancestor not in (found.sense_a, found.sense_b) and (self.kind_only(a) or self.kind_only(b)):
-                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "sibling")
+                elif self.kind_only(a) or self.kind_only(b):
+                    if found.ancestor not in (found.sense_a, found.sense_b):
+                        found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "sibling")
+                    elif self.for_another_food(a, b, found):
+                        found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "purpose")
             self._evidence[(a, b)] = found
         return found
+
+    def for_another_food(self, a: str, b: str, found: Evidence) -> bool:
+        """Rule 7: whether the narrower of the kind pair `a`, `b` (`a`'s sense first in `found`) is a tool
+        whose name or gloss names a food its generic's does not (`purpose.for_another_food`). The narrower
+        is the label whose sense is below the common ancestor, else a compound known by its head (rice
+        cooker, a kind of cooker); two synonyms or two compounds of one head have none."""
+        from .purpose import for_another_food
+
+        ra, rb = self.resolution(a), self.resolution(b)
+        if found.sense_a != found.sense_b:
+            narrow_a = found.sense_b == found.ancestor
+        elif (ra.modifier is None) != (rb.modifier is None):
+            narrow_a = ra.modifier is not None
+        else:
+            return False
+        kind, generic = ((a, found.sense_a), (b, found.sense_b)) if narrow_a else ((b, found.sense_b), (a, found.sense_a))
+        if self.reader.synset(kind[1]).lexname() != "noun.artifact":
+            return False
+        return for_another_food(self.reader, kind[1], generic[1], kind[0], generic[0])
 
     def _modifiers(self, a: str, b: str) -> Evidence:
         """The similarity of two modifiers (rules 1-4: a modifier is no object label, so no categories)."""

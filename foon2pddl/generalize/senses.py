@@ -142,10 +142,13 @@ def _override(reader, label: str, names: tuple[str, ...], term: str, modifier: s
     return Resolution(label, names, term, modifier, source, kinds)
 
 
-def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses) -> Resolution:
+def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses, *, hyphens: bool = False
+            ) -> Resolution:
     """The senses of `label`: override, whole term (`a_b`, then `ab`), else head noun with a modifier.
 
-    `senses_of(reader, term)` picks a term's senses (name -> lexicographer file).
+    `senses_of(reader, term)` picks a term's senses (name -> lexicographer file). `hyphens` (the cook mode)
+    tries the whole term with its hyphens first (`iced-tea_spoon`, `patty-pan`: WordNet lemmas that would
+    otherwise be found only by their heads, spoon and pan); the paper's rule reads `iced tea spoon`.
     """
     key = _key(label)
     if key in overrides.senses:
@@ -153,7 +156,8 @@ def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses) 
     words = key.split()
     if not words:
         return Resolution(label, (), "", None, "none")
-    for term in dict.fromkeys(("_".join(words), "".join(words))):
+    hyphenated = ("_".join(label.lower().split()),) if hyphens and "-" in label else ()
+    for term in dict.fromkeys((*hyphenated, "_".join(words), "".join(words))):
         found = senses_of(reader, term)
         if found:
             return Resolution(label, tuple(found), term, None, "wordnet", tuple(found.values()))
