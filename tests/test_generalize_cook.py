@@ -13,11 +13,13 @@ from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.categories import Category, CategoryIndex, shipped_index
 from foon2pddl.generalize.cook import (
+    CLASS_KINDS,
     DEFAULT_BREADTH,
     CookSimilarity,
     cook_overrides,
     filing_similarity,
     kin,
+    kinds,
     reference_vocabulary,
 )
 from foon2pddl.generalize.expand import expand, vocabulary
@@ -277,3 +279,15 @@ def test_a_hyphenated_wordnet_lemma_is_read_whole_in_cook_mode(cook, label_simil
     assert cook.resolution("garlic-parmesan chicken").modifier == "garlic parmesan"  # no such lemma: its head
     assert cook.explain("iced-tea spoon", "table spoon").rejected == "sibling"
     assert cook.explain("iced-tea spoon", "teaspoon").rejected == "purpose"
+
+
+def test_a_filed_class_with_many_wordnet_kinds_stands_with_none_of_them(cook):
+    """Rule 8: a label rule 6 holds to its kinds whose sense has at least CLASS_KINDS WordNet kinds is a
+    class (saltwater fish: 57 kinds), not a thing a recipe uses, and stands with none of its kinds; one with
+    fewer (chop: 3, salad green: 18) stands with its kinds as before."""
+    assert kinds(cook.reader, "saltwater_fish.n.01") >= CLASS_KINDS > kinds(cook.reader, "salad_green.n.01")
+    for a, b in [("saltwater fish", "tuna"), ("mixed drink", "bullshot")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "class", (a, b, e)
+    for a, b in [("chop", "porkchop"), ("salad green", "lettuce")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

@@ -94,6 +94,7 @@ def _why(a: str, b: str, ev) -> str:
     verdict = {"broad": f"rejected: the ancestor covers {ev.breadth:.1%} of the vocabulary",
                "category": "rejected: the categories do not group them",
                "sibling": "rejected: a label filed through one member stands only with its kinds",
-               "purpose": "rejected: a kind of tool for a food its generic is not for"}.get(
+               "purpose": "rejected: a kind of tool for a food its generic is not for",
+               "class": "rejected: a filed label with many WordNet kinds is a class, not a substitute"}.get(
         ev.rejected, f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -3,7 +3,7 @@
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
 Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
 0.9 through their plant senses. This rule keeps the paper's composition (overrides,
-head nouns and modifiers, see `similarity.py`) and changes seven things:
+head nouns and modifiers, see `similarity.py`) and changes eight things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -47,6 +47,10 @@ head nouns and modifiers, see `similarity.py`) and changes seven things:
    name no food its generic's do not: pot~urn ("a large pot for making coffee or tea"), spoon~tea
    maker, bowl~slop basin score 0; caldron~pot ("a very large pot that is used for boiling") stands.
    Labels of the category index keep rule 5 alone (spoon~teaspoon).
+8. A filed class is not a substitute for its kinds (`kinds`): a label rule 6 holds to its kinds whose
+   sense has at least `CLASS_KINDS` WordNet kinds (saltwater fish: 57) names a class, not a thing a
+   recipe uses, and stands with none of its kinds (saltwater fish~tuna, mixed drink~bullshot score 0);
+   chop~porkchop (3 kinds) and salad green~lettuce (18) stand.
 
 Senses are read as in the paper's rule, except that a hyphenated label that is a WordNet lemma is
 read whole (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon,
@@ -74,6 +78,9 @@ from .similarity import Evidence
 
 #: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
 DEFAULT_BREADTH = 0.02
+
+#: WordNet kinds from which a label rule 6 holds to its kinds is a class, not a thing a recipe uses (rule 8).
+CLASS_KINDS = 30
 
 #: Artifact synsets under which a tool or container sense is a kitchen one.
 KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
@@ -125,6 +132,12 @@ def role_senses(reader, term: str) -> dict[str, str]:
     return found
 
 
+@lru_cache(maxsize=4096)
+def kinds(reader, name: str) -> int:
+    """How many WordNet kinds (hyponyms, transitively) synset `name` has (rule 8)."""
+    return sum(1 for _ in reader.synset(name).closure(lambda s: s.hyponyms()))
+
+
 def _under(reader, name: str, roots: frozenset[str]) -> bool:
     seen, stack = set(), [reader.synset(name)]
     while stack:
@@ -151,7 +164,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, hyphens"
+RULES = "rule 5 extended, rule 6, rule 7, rule 8, hyphens"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -273,12 +286,22 @@ class CookSimilarity:
                 if not kin(self.categories, a, b, self.categories_of):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
                 elif self.kind_only(a) or self.kind_only(b):
-                    if found.ancestor not in (found.sense_a, found.sense_b):
-                        found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "sibling")
-                    elif self.for_another_food(a, b, found):
-                        found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "purpose")
+                    why = self._kinds(a, b, found)
+                    if why:
+                        found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, why)
             self._evidence[(a, b)] = found
         return found
+
+    def _kinds(self, a: str, b: str, found: Evidence) -> str:
+        """Why rules 6-8 reject a pair with a label rule 6 holds to its kinds ("" when they do not)."""
+        if found.ancestor not in (found.sense_a, found.sense_b):
+            return "sibling"
+        if self.for_another_food(a, b, found):
+            return "purpose"
+        general = a if found.sense_a == found.ancestor else b
+        if found.sense_a != found.sense_b and self.kind_only(general) and kinds(self.reader, found.ancestor) >= CLASS_KINDS:
+            return "class"
+        return ""
 
     def for_another_food(self, a: str, b: str, found: Evidence) -> bool:
         """Rule 7: whether the narrower of the kind pair `a`, `b` (`a`'s sense first in `found`) is a tool
