@@ -11,7 +11,7 @@ from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.holders import list_gaps, relational_roles
-from foon2pddl.pddl.relational_init import holder_init
+from foon2pddl.pddl.relational_init import holder_init, implied_contents
 from foon2pddl.pddl.task import Instance
 
 # the french toast's pour (0037-make_quick_french_toast.txt:63) takes `bowl (contains {butter})`, which the
@@ -323,3 +323,23 @@ def test_an_object_starts_in_no_holder_the_unit_gives_it_another_of():
     start = {s.id: s for s in outcome.trace.initial}
     in_spoons = {s.id: start[s.holder].node for s in start.values() if s.node == basil and s.holder}
     assert in_spoons and set(in_spoons.values()) == {basil_spoon}  # never the spoon of pepper
+
+
+
+def test_a_kitchen_container_s_object_starts_in_the_node_the_counted_plan_takes_it_in():
+    # GEN trial 5 goal 51: the caesar salad's pour (ACT-0080-caesar_salad.txt:29), in the plan the counts are
+    # derived from, takes the kitchen's `bowls (contains {alliums})` with `alliums (in [bowls], peeled)`; another
+    # pour of the task takes that bowl with `alliums (chopped, in [bowls])`, and the kitchen has both alliums in
+    # another place. The bowl's allium started chopped (the first node in order), the counted plan could not fire,
+    # and search ran to its 60 s limit [timeout]. It starts peeled, the node the plan's unit takes with the bowl.
+    box, board = n("bowl", contains("garlic")), make_state("on", "cutting board")
+    peeled, chopped = n("garlic", "peeled", inside("bowl")), n("garlic", "chopped", inside("bowl"))
+    kitchen = frozenset({box, n("garlic", "peeled", board), n("garlic", "chopped", board)})
+    paired = frozenset({(box, peeled), (box, chopped)})
+
+    def start(planned):
+        return implied_contents([Instance("bowl_1", "bowl", box)], {}, frozenset({"bowl"}), [chopped, peeled], paired,
+                                kitchen, planned)
+
+    assert start(frozenset({(box, peeled)})) == (peeled,)
+    assert start(frozenset({(box, chopped)})) == (chopped,)  # the plan's pair, not the order of the nodes

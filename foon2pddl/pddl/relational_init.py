@@ -96,7 +96,8 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
 
 def implied_contents(instances: list[Instance], alias: dict[str, str], placed: frozenset[str],
                      nodes: Iterable[ObjectNode], paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
-                     kitchen: frozenset[ObjectNode] = frozenset()) -> tuple[ObjectNode, ...]:
+                     kitchen: frozenset[ObjectNode] = frozenset(),
+                     planned: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()) -> tuple[ObjectNode, ...]:
     """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
     any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
     `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
@@ -105,7 +106,10 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     node in another place (`skillet (empty, on [stove])` for the kitchen's `skillet (empty)`, `milk (in
     [bowl])` for its `milk (in [carton])`: the kitchen's `stove (off, with [skillet])` and `bowl (contains
     {milk})` say they are there: `kitchen_placed`), one a unit takes with the container's own node first
-    (`paired`), never one that lists contents of its own (no object would stand for them), nor one the kitchen
+    (`paired`; of those, one a unit of the plan the counts are derived from takes so, `planned`: on the
+    experiment's GEN network a kitchen bowl of alliums, implied by both `alliums (chopped, on [surface])` and
+    `alliums (on [surface], peeled)`, held the chopped one, which a pour the plan does not fire takes, while the
+    plan's pour takes the peeled one, GEN trial 5 goal 51), never one that lists contents of its own (no object would stand for them), nor one the kitchen
     does not say (`kitchen_implied` over the `kitchen` and the objects' starts, as the tree check judges it:
     only a unit makes it, and FOON's tree would not find it there); else `water (in [pot])`. In container-name
     order; O(n^2)."""
@@ -132,7 +136,8 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             found = [n for n in fits.get((item, h.label), ()) if not listed(n)]  # lists nothing of its own
             moved = kitchen_placed(found, starts)
             said = kitchen_implied(found, kitchen | starts) | (starts & set(found))  # what FOON's tree may take from the kitchen
-            known = sorted((n for n in found if n in said), key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired, n))
+            known = sorted((n for n in found if n in said), key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired,
+                                                               (h.start, n) not in planned, n))
             out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
     return tuple(out)
 
@@ -205,20 +210,20 @@ def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iter
 def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit], have: Iterable[str],
                       nodes: set[ObjectNode], named: Iterable[str], silent: frozenset[str],
                       filled: frozenset[tuple[str, str]] = frozenset(), kitchen: frozenset[ObjectNode] = frozenset(),
-                      ) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
+                      plan: Sequence[FunctionalUnit] = ()) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
     """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
     and the units name (`named`: the places the units' output nodes and portions name, each as its own unit
     reads it, `model.aliases.unit_aliases`; `filled`: what the
     task's units put into holders of which label, `holder_init`; `kitchen`: the task's kitchen nodes, which judge what
-    the kitchen says, `implied_contents`). Also the task's aliases
+    the kitchen says, and `plan`: the units of the plan the counts are derived from, `implied_contents`). Also the task's aliases
     (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the
     holders the kitchen implies start in."""
     instances = counted_objects(table, counts)
     alias = dict(task_aliases(units, have, [x.start for x in instances]))
     placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
-    paired = frozenset((a, b) for u in units for a in u.inputs for b in u.inputs)
+    paired, planned = (frozenset((a, b) for u in us for a in u.inputs for b in u.inputs) for us in (units, plan))
     instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired,
-                                                                        kitchen))
+                                                                        kitchen, planned))
     missing = sorted(set(named) - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds

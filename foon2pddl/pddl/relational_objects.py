@@ -96,7 +96,8 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         named = {aliases[u].get(c, c)
                  for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
-                                                              nodes, named, rd.silent, rd.filled, inp.kitchen)
+                                                              nodes, named, rd.silent, rd.filled, inp.kitchen,
+                                                              [f.units[u] for u, _ in counts.firings])
     more = more or frozenset()
     return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
                        inp.kitchen | more)
