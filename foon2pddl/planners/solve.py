@@ -30,6 +30,7 @@ from ..model.tasktree import TaskTree, Validation
 from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.holder_reach import drop_unreachable
+from ..pddl.interchangeable import in_order
 from ..pddl.prune import drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
@@ -151,7 +152,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     actions no binding grounds (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground)
     and without those no reachable state applies (`pddl.holder_reach`: a holder and its content in states no
     plan has together); when that leaves the goal out of reach, no planner runs and the outcome is `unsolvable`
-    (planner `holder reachability`, the message naming the units). The outcome keeps the task as compiled.
+    (planner `holder reachability`, the message naming the units). A `relational` task's interchangeable objects are
+    taken in one order (`pddl.interchangeable`: the planner does not try every bowl of a stack). The outcome keeps the task as compiled.
     A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
     valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
     what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
@@ -178,6 +180,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         if unreached is not None:
             _add(timings, "write", time.perf_counter() - t0)
             return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), task, timings=timings)
+        if smaller.encoding == "relational":
+            smaller = in_order(smaller)  # interchangeable objects taken in one order: the same plans, less to search
         domain_text, problem_text = render(smaller)
         _add(timings, "write", time.perf_counter() - t0)
         result = run_planner(smaller, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
