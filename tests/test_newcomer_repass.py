@@ -218,3 +218,18 @@ def test_an_encoding_that_is_not_foons_semantics_says_why_it_has_no_plan(encodin
     assert missing.exit_code == 1
     reason = next(line for line in missing.stderr.splitlines() if line.startswith("reason: "))
     assert "add `lemon (whole)`" in reason and "not FOON's semantics" not in reason
+
+
+@pytest.mark.parametrize("encoding", ["state", "ocp"])
+def test_a_batch_row_gives_the_reason_a_single_plan_gives(encoding):
+    """Stop 44's leftover: a single `plan --encoding state|ocp` names why there is no plan (one object per label;
+    FOON's reason where the kitchen lacks an ingredient), but a batch row gave only the planner's words. One
+    decision serves both: each row's reason ends with the reason line the single run prints."""
+    r = run("plan", "--goal", "guacamole", "--goal", "lemonade", "--encoding", encoding, "--format", "jsonl")
+    assert r.exit_code == 1
+    rows = {row["goal"].split(" (")[0]: row for row in map(json.loads, r.stdout.splitlines())}
+    for goal, says in (("guacamole", f"the {encoding} encoding is not FOON's semantics"),
+                       ("lemonade", "add `lemon (whole)`")):
+        single = run("plan", "--goal", goal, "--encoding", encoding)
+        reason = next(line for line in single.stderr.splitlines() if line.startswith("reason: "))
+        assert says in reason and rows[goal]["reason"].endswith(": " + reason.removeprefix("reason: "))

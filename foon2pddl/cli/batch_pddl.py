@@ -15,7 +15,7 @@ from ..status import BatchStatus, PlanStatus
 from .batch import TREE_EXTENSIONS, finish, write_files
 from .options import lifted_goal
 from .progress import slow_step
-from .reasons import ALREADY_HELD, explained, unreachable_reason, unsupported_reason, why_unsolvable
+from .reasons import ALREADY_HELD, failure_reason, unreachable_reason
 
 
 def _resolve(view, entry, encoding: str | None = None):
@@ -110,11 +110,9 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
             outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
         tree = outcome.tree if outcome.status == "solved" else None
         reason = "" if tree is not None else outcome.message or outcome.result.message
-        if explained(outcome.status, encoding):
-            reason += ": " + why_unsolvable(view.foon, view.kitchen, goal, Constraints(), encoding,
-                                            plan_options.get("instances", ()))[0]
-        elif outcome.status == PlanStatus.ERROR and (unsupported := unsupported_reason(outcome.task)) is not None:
-            reason += ": " + unsupported
+        why, _ = failure_reason(outcome.status, encoding, outcome.task, view.foon, view.kitchen, goal, Constraints(),
+                                plan_options.get("instances", ()))
+        reason += "" if why is None else ": " + why
         units = None if tree is None else len(tree.units) - count_inference(tree.units)
         inferred = () if tree is None else (n.describe() for n in inferred_nodes(tree.units))
         rows.append(_row(entry, goal, outcome.status, time.perf_counter() - t0, reason, units, inferred))

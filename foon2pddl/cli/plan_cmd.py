@@ -18,7 +18,6 @@ from ..planners.commands import PRESETS
 from ..planners.registry import UnknownPlanner, lookup
 from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan, plan_restoring
-from ..status import PlanStatus
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
@@ -41,7 +40,7 @@ from .options import (
     view_goal,
 )
 from .progress import slow_step
-from .reasons import explained, foreign_reason, networks_hint, unsupported_reason, why_unsolvable
+from .reasons import explained, failure_reason, networks_hint
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 
@@ -197,14 +196,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         view = outcome.compiled.view
         if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
             data += view.text(outcome.task, outcome.trace)
-    explain = explained(status, encoding)
-    unsupported = unsupported_reason(outcome.task) if status == PlanStatus.ERROR else foreign_reason(status, encoding)
-    if unsupported is not None and status != PlanStatus.ERROR:  # state/ocp: their cause only where FOON makes it
-        fails, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
-        unsupported = unsupported if makes else fails
+    reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
     if fmt == "json":
-        data = outcome_json(outcome, timings, data, why_unsolvable(foon, kit, target, cons, encoding, counts)[0]
-                            if explain else unsupported)
+        data = outcome_json(outcome, timings, data, reason)
     else:
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
@@ -219,13 +213,10 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             click.echo("note: " + note, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
             expansion_notes(outcome.tree)
-        if explain:
-            reason, makes = why_unsolvable(foon, kit, target, cons, encoding, counts)
+        if reason is not None:
             click.echo("reason: " + reason, err=True)
-            if NETWORKS[network].as_read and not cons.items and not makes:
-                networks_hint(net, kit, single_goal(goal), goal_file, level)
-        if unsupported is not None:
-            click.echo("reason: " + unsupported, err=True)
+        if explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes:
+            networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
         emit(data, output)

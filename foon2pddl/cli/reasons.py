@@ -100,6 +100,24 @@ def foreign_reason(status, encoding: str) -> str | None:
             "relational` (the default) or `--encoding tree` plans under FOON's semantics")
 
 
+def failure_reason(status, encoding: str, task, foon, kitchen, goal, cons,
+                   instances: tuple[tuple[str, int], ...] = ()) -> tuple[str | None, bool]:
+    """(the `reason:` of a planner's answer without a plan, whether FOON's semantics makes the goal): one decision
+    for a single `plan` and each row of a batch. FOON's reason (`why_unsolvable`) where `explained`; for a planner
+    error, what the encoding needs of a planner; for `state`/`ocp`, `foreign_reason` where FOON's semantics makes
+    the goal, else FOON's reason; None (nothing to add) otherwise."""
+    from ..status import PlanStatus
+
+    if explained(status, encoding):
+        return why_unsolvable(foon, kitchen, goal, cons, encoding, instances)
+    if status == PlanStatus.ERROR:
+        return unsupported_reason(task), True
+    if (foreign := foreign_reason(status, encoding)) is None:
+        return None, True
+    fails, makes = why_unsolvable(foon, kitchen, goal, cons, encoding, instances)
+    return (foreign if makes else fails), makes
+
+
 def short_step(foon, kitchen, goal) -> str | None:
     """Which step of FOON's task tree runs out of a kitchen's counted objects (`planners.executable.schedule`:
     `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree."""
