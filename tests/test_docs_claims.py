@@ -403,3 +403,19 @@ def test_pddl_md_says_why_guacamole_restored_takes_more_boards_than_plain():
         got.append((len(used), sum(o["label"] == "cutting board" for o in rel["initial"])))
     (plain_used, plain_has), (restored_used, _) = got
     assert (int(m[1]), int(m[2]), int(m[3])) == (restored_used, plain_used, plain_has)
+
+
+def test_every_experiment_command_shown_says_how_long_it_runs():
+    """README's sweep (`experiment ... --sweep ...`) gave no run time where the quick line under it did: a reader
+    cannot tell a minute from an hour. The paragraph after each `foon2pddl experiment` a page shows in a block
+    gives a wall time in seconds or minutes and the commit it was measured at."""
+    shown = [c for c in documented_commands() if c.form == "block" and c.text.startswith("foon2pddl experiment ")]
+    assert len(shown) >= 2
+    silent = []
+    for command in shown:
+        lines = (ROOT / command.page).read_text().splitlines()[command.line:]
+        close = next(i for i, line in enumerate(lines) if line.startswith("```"))
+        paragraph = "\n".join(lines[close + 1:]).strip().split("\n\n")[0]
+        if not (re.search(r"\d s\b|\d s wall|\d min\b", paragraph) and _COMMIT.search(paragraph)):
+            silent.append(command.where)
+    assert not silent, f"experiment commands with no run time (and commit) in the paragraph after them: {silent}"
