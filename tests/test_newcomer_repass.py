@@ -233,3 +233,18 @@ def test_a_batch_row_gives_the_reason_a_single_plan_gives(encoding):
         single = run("plan", "--goal", goal, "--encoding", encoding)
         reason = next(line for line in single.stderr.splitlines() if line.startswith("reason: "))
         assert says in reason and rows[goal]["reason"].endswith(": " + reason.removeprefix("reason: "))
+
+
+def test_a_directory_file_that_fails_to_parse_names_the_way_to_skip_it(tmp_path):
+    """Stop 44's re-pass: `stats tests/data` stopped at a test fixture under the directory
+    (`plan-tree/whipped-foon.txt:1: error: expected an 'O', 'S' or 'M' line`) and said nothing of
+    `--skip-invalid`, which no page names either (issue 24 item 11: "no way to skip")."""
+    (tmp_path / "net").mkdir()
+    (tmp_path / "net" / "a.foon").write_text((ROOT / "foon2pddl" / "data" / "example" / "07-guacamole.foon").read_text())
+    (tmp_path / "net" / "broken.foon").write_text("O\tbowl\t0\nM\tmix\nX\tnonsense\n")
+    stops = run("stats", tmp_path / "net")
+    assert stops.exit_code == 2 and "broken.foon:3: error" in stops.stderr
+    assert "`--skip-invalid` skips the files that fail to parse" in stops.stderr
+    named = run("stats", tmp_path / "net" / "broken.foon")  # one file named: nothing else to read, no hint
+    assert named.exit_code == 2 and "--skip-invalid" not in named.stderr
+    assert run("stats", tmp_path / "net", "--skip-invalid").exit_code == 0

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import click
 
 from ..analysis.stats import format_stats, network_stats
+from ..errors import FoonSyntaxError
 from . import main
 from .options import emit, output_option, paths_argument, read_network
 
@@ -26,7 +28,13 @@ def stats(paths, as_json, skip_invalid, output) -> None:
     """
     from .progress import slow_step
 
-    net = read_network(paths, skip_invalid)
+    try:
+        net = read_network(paths, skip_invalid)
+    except FoonSyntaxError as exc:  # a file found under a directory: say how to read the others
+        if skip_invalid or exc.path is None or Path(exc.path) in {Path(p) for p in paths}:
+            raise
+        raise FoonSyntaxError(exc.path, exc.line, exc.message + "; `--skip-invalid` skips the files that fail to "
+                              "parse under a directory (each with a warning)", exc.text) from None
     with slow_step("counting nodes and labels at each level"):
         data = network_stats(net.foon, net.warnings)
     emit(json.dumps(data, indent=2) + "\n" if as_json else format_stats(data), output)
