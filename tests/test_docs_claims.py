@@ -419,3 +419,36 @@ def test_every_experiment_command_shown_says_how_long_it_runs():
         if not (re.search(r"\d s\b|\d s wall|\d min\b", paragraph) and _COMMIT.search(paragraph)):
             silent.append(command.where)
     assert not silent, f"experiment commands with no run time (and commit) in the paragraph after them: {silent}"
+
+
+#: The values an option named in retrieval.md's "refused with a batch" sentence takes, and the commands that have it.
+_BATCH_REFUSED = {"--without-motion": (["pour"], ("retrieve", "compile", "plan")),
+                  "--without": (["lime"], ("retrieve", "compile", "plan")),
+                  "--must-use": (["lime"], ("retrieve", "compile", "plan")),
+                  "--constraints": (["docs/examples/diet-no-egg.json"], ("retrieve", "compile", "plan")),
+                  "--restore": ([], ("compile", "plan")), "--skills": ([], ("plan",))}
+
+
+def test_what_retrieval_md_says_a_batch_refuses_it_refuses(tmp_path, monkeypatch):
+    """Stop 44's re-pass: retrieval.md said `--network gen` is refused with a batch; `retrieve`, `compile` and
+    `plan` all run a GEN batch (issue 24 item 9 made them). Every option the sentence names is refused (exit 2)
+    by every command that has it, and what it says takes a batch runs one."""
+    monkeypatch.chdir(ROOT)
+    text = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
+    (refused,) = [s for s in re.split(r"(?<=\.) ", text) if "refused with a batch" in s]
+    named = [m for m in re.findall(r"`(--[^`]+)`", refused)]
+    assert set(_BATCH_REFUSED) <= set(named), refused
+    wrong = []
+    for option in named:
+        values, commands = _BATCH_REFUSED.get(option, (option.split()[1:], ("retrieve", "compile", "plan")))
+        for command in commands:
+            out = ["-o", str(tmp_path / command)] if command == "compile" else []
+            r = CliRunner().invoke(main, [command, "--goal", "guacamole", "--goal", "lemonade",
+                                          option.split()[0], *values, *out])
+            if r.exit_code != 2:
+                wrong.append(f"{command} {option}: exit {r.exit_code}")
+    assert not wrong, f"retrieval.md says these are refused with a batch; they are not: {wrong}"
+    (takes,) = [s for s in re.split(r"(?<=\.) ", text) if "take a batch" in s]
+    for network in re.findall(r"`--network (\w+)`", takes):
+        r = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole", "--goal", "lemonade", "--network", network])
+        assert r.exit_code in (0, 1) and "2 goals:" in r.stdout, (network, r.output)
