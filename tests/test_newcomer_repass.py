@@ -248,3 +248,14 @@ def test_a_directory_file_that_fails_to_parse_names_the_way_to_skip_it(tmp_path)
     named = run("stats", tmp_path / "net" / "broken.foon")  # one file named: nothing else to read, no hint
     assert named.exit_code == 2 and "--skip-invalid" not in named.stderr
     assert run("stats", tmp_path / "net", "--skip-invalid").exit_code == 0
+
+
+def test_a_kitchen_list_given_as_a_network_says_where_it_goes():
+    """Stop 44's re-pass of issue 24 item 11 (`stats kitchen.json` should suggest the kitchen): the error said what
+    the file is but not where it goes, where a scene or a constraints file given as a network is told both."""
+    from conftest import SEARCH_INPUTS
+
+    r = run("stats", SEARCH_INPUTS / "kitchen.json")
+    assert r.exit_code == 2
+    assert "is a kitchen or a goal list (docs/format.md), not a network: give it as the kitchen or the goal list" \
+        in r.stderr

@@ -238,7 +238,7 @@ def _unit(data: Any, where: tuple, level: int) -> FunctionalUnit:
 def _foon(data: Any) -> Foon:
     if isinstance(data, list):
         raise _Invalid((), "expected a FOON JSON document (a JSON object), found a list: a JSON list of objects "
-                           "is a kitchen or a goal list (docs/format.md), not a network")
+                           "is a kitchen or a goal list (docs/format.md), not a network: give it as the kitchen or the goal list")
     if isinstance(data, dict) and "objects" in data and "format" not in data:
         raise _Invalid((), "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a network: "
                            "give it as the kitchen")
