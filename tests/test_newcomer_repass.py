@@ -259,3 +259,17 @@ def test_a_kitchen_list_given_as_a_network_says_where_it_goes():
     assert r.exit_code == 2
     assert "is a kitchen or a goal list (docs/format.md), not a network: give it as the kitchen or the goal list" \
         in r.stderr
+
+
+def test_results_of_another_protocol_give_each_way_out_once(tmp_path):
+    """Stop 44's re-pass of issue 24 item 13: the experiment's 'another protocol' error said 'use another output
+    directory, start afresh, or the same parameters and inputs; use another -o directory, or --fresh to discard
+    them': the library's advice and then the command's, one of them twice. Each way out is said once."""
+    args = ["experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-complete",
+            "-o", str(tmp_path), "--sensitivity", "none", "--no-progress"]
+    assert run(*args).exit_code == 0
+    r = run(*args, "--seed", "5")
+    assert r.exit_code == 2 and "seed 0 there, 5 here" in r.stderr
+    assert r.stderr.split("error: ", 1)[1].count("another") == 2  # 'another protocol', 'another -o directory'
+    assert "the same parameters and inputs resume them; use another -o directory, or --fresh to discard them" \
+        in r.stderr

@@ -221,7 +221,7 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> float | None:
         if old != identity:
             raise OtherResults(str(path), 0, "this directory holds results of another protocol or input: "
                                + identity_difference(old, identity)
-                               + "; use another output directory, start afresh, or the same parameters and inputs")
+                               + "; the same parameters and inputs resume them")
     data = {
         "identity": identity,
         "trials": config.protocol.trials,
