@@ -299,6 +299,50 @@ def test_a_late_bound_target_is_the_holder_a_role_of_the_unit_is_at_under_that_n
     clean_unit_plan((place,), place.inputs, place.outputs[2])
 
 
+def _pizza_dough():
+    """The homemade cheese pizza's dough (0082, lines 211-328) on the universal FOON of the odd-index subgraphs: the
+    pick-and-place takes `table (contains {flour, pizza dough})` with `pizza dough (flattened, on [table])`; the
+    pour puts the dough on the floured table, the knead takes the table's node and kneads it there, the press
+    flattens it there. The mini pizza's press (0085, line 334) flattens a dough on a table of its own, sooner."""
+    table, on_table = "table", make_state("on", "table")
+    flour = n("flour", "powder", on_table)
+    floured, both = n(table, contains("flour")), n(table, contains("flour", "pizza dough"))
+    sprinkle = FunctionalUnit((n(table, "empty"), n("bag", contains("flour")), n("flour", "powder", inside("bag"))),
+                              Motion("sprinkle"), (flour, floured), (Source("pizza.txt", 211),))
+    pour = FunctionalUnit((floured, flour, n("bowl", contains("pizza dough")), n("pizza dough", "fermented", inside("bowl"))),
+                          Motion("pour"), (both, n("bowl", "dirty"), n("pizza dough", "fermented", on_table)),
+                          (Source("pizza.txt", 240),))
+    knead = FunctionalUnit((both, flour, n("pizza dough", "fermented", on_table), n("knife", "clean")), Motion("knead"),
+                           (n("pizza dough", "kneaded", on_table),), (Source("pizza.txt", 260),))
+    press = FunctionalUnit((flour, n("pizza dough", "kneaded", on_table)), Motion("press"),
+                           (n("pizza dough", "flattened", on_table),), (Source("pizza.txt", 316),))
+    mini = FunctionalUnit((n("pizza dough", "ball", on_table), n("rolling pin", "clean")), Motion("press"),
+                          (n("pizza dough", "flattened", on_table),), (Source("mini.txt", 334),))
+    place = FunctionalUnit((both, flour, n("pizza dough", "flattened", on_table), n("pizza pan", "clean", "empty")),
+                           Motion("pick-and-place"), (floured, n("pizza pan", contains("pizza dough")),
+                                                      n("pizza dough", "flattened", inside("pizza pan"))),
+                           (Source("pizza.txt", 328),))
+    kitchen = {n(table, "empty"), n("bag", contains("flour")), n("flour", "powder", inside("bag")),
+               n("bowl", contains("pizza dough")), n("pizza dough", "fermented", inside("bowl")),
+               n("pizza dough", "ball", on_table), n("rolling pin", "clean"), n("pizza pan", "clean", "empty"),
+               n("knife", "clean")}  # the cut's knife, in the pizza's chain between (here the knead's)
+    return (mini, sprinkle, pour, knead, press, place), kitchen
+
+
+def test_a_held_node_worked_where_it_lies_is_counted_from_the_units_working_it_there():
+    # counted from the mini pizza's press, the dough lay on no table the pour had floured and put it on (the
+    # cheese pizza unsolvable at once; before 1b9796c the knife of the cut between was not counted)
+    units, kitchen = _pizza_dough()
+    plan_units = delete_free_plan(Foon(units), frozenset(kitchen), units[-1].outputs[2:], together=True)[0]
+    assert plan_units == (1, 2, 3, 4, 5)  # not the mini pizza's press (0)
+
+
+def test_the_dough_flattened_on_the_floured_table_is_placed_in_the_pan():
+    units, kitchen = _pizza_dough()
+    outcome = clean_unit_plan(units, kitchen, units[-1].outputs[2])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["sprinkle", "pour", "knead", "press", "pick-and-place"]
+
+
 def test_a_node_that_says_only_where_a_kitchen_container_holds_it_is_the_kitchens():
     # peanut butter and jelly (0024, line 11) on the universal FOON: the spread takes the kitchen's `jar (contains
     # {peanut butter})` and `peanut butter (in [jar])`, a node the buckeye candy's open (0008, line 4) makes from

@@ -41,7 +41,34 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
             elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
                            and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
+            else:
+                out.update(_worked_there(reach, u, c, x) or {})
     return out
+
+
+def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = 12) -> dict[int, int] | None:
+    """Node id -> maker for the held node `x` made where it lies, when no unit makes it in the container `c` before
+    `u`: a maker of `x` firing only after `u` in the fixpoint (a maker by `u`'s round is the rules' above, never one
+    of `u`'s round: the universal hamburger's garlic, 77 objects against 75) that makes it in `c` (`_in_box`), or one
+    taking a node of its label at its place that such a
+    chain makes (at most `depth` units, none needing what `u` makes). The homemade cheese pizza's pick-and-place
+    (`0082-homemade_cheese_pizza.txt:328`) takes `table (contains {flour, pizza dough})` with `pizza dough
+    (flattened, on [table])`; the knead takes the table's node and kneads the dough on it, the cut, shape and press
+    work it there. On the universal FOON of the odd-index subgraphs the mini pizza's press makes the flattened dough
+    first, on a table of its own: counted from it, no dough lay on the pizza's table (unsolvable at once)."""
+    ix, held = reach.index, reach.index.nodes[x]
+    mine = {o for o in ix.outputs[u] if reach.achiever[o] == u}  # what only `u` makes first
+    for m in sorted(ix.makers[x], key=lambda k: (reach.unit_round[k], ix.rank[k])):
+        if m == u or reach.unit_round[m] < 0 or depth == 12 and reach.unit_round[m] <= reach.unit_round[u] or _needs(
+                reach, m, mine):  # one firing by the taker's round is the rules' above (c476cc6: not the same round)
+            continue
+        if _in_box(reach, m, c):
+            return {x: m}
+        for i in ix.inputs[m]:
+            if depth and i != x and ix.nodes[i].label == held.label and places(ix.nodes[i]) == places(held) and (
+                    found := _worked_there(reach, u, c, i, depth - 1)):
+                return {x: m} | found
+    return None
 
 
 def _from_held(reach: Reachability, k: int, c: int, x: int) -> bool:
