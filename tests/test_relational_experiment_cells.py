@@ -13,6 +13,7 @@ from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.holders import list_gaps, relational_roles
 from foon2pddl.pddl.relational_init import holder_init, implied_contents
 from foon2pddl.pddl.task import Instance
+from foon2pddl.planners.solve import plan
 
 # the french toast's pour (0037-make_quick_french_toast.txt:63) takes `bowl (contains {butter})`, which the
 # garlic bread's pick-and-place fills, and leaves it out of its outputs: the bowl is emptied of the butter
@@ -343,3 +344,37 @@ def test_a_kitchen_container_s_object_starts_in_the_node_the_counted_plan_takes_
 
     assert start(frozenset({(box, peeled)})) == (peeled,)
     assert start(frozenset({(box, chopped)})) == (chopped,)  # the plan's pair, not the order of the nodes
+
+
+def test_a_portion_from_a_holder_no_action_leaves_comes_out_of_that_holder():
+    # GEN, trial 4, goal 92 (0042-perfect_omelette.txt:79): the pour takes `plates (contains {peppers})` and
+    # `peppers (chopped, on [plates])`, both in nodes no action leaves, so both were only checked, `(occupied
+    # s)`: the kitchen's plate of peppers stood for the one, the peppers scraped onto the onions' plate for the
+    # other, and a portion came out of neither [holder-not-bound]. The object the portion comes from is bound,
+    # in the holder the unit binds with it, as for a holder bound for another reason (above).
+    on = lambda h: make_state("on", h)  # noqa: E731
+    pour = FunctionalUnit((n("plate", contains("tomato")), n("tomato", "diced", on("plate")),
+                           n("plate", contains("pepper")), n("pepper", "chopped", on("plate"))), Motion("pour"),
+                          (n("plate", contains("pepper", "tomato")),))
+    scrape = FunctionalUnit((n("board", contains("pepper")), n("pepper", "chopped", on("board")),
+                             n("plate", contains("onion"))), Motion("scrape"),
+                            (n("plate", contains("onion", "pepper")), n("pepper", "chopped", on("plate")),
+                             n("board", "dirty")))
+    pick = FunctionalUnit((n("board", "empty"), n("pepper", "whole")), Motion("pick-and-place"),
+                          (n("board", contains("pepper")), n("pepper", "whole", on("board"))))
+    chop = FunctionalUnit((n("pepper", "whole", on("board")), n("knife")), Motion("chop"),
+                          (n("pepper", "chopped", on("board")),))
+    kitchen = [n("plate", contains("tomato")), n("tomato", "diced", on("plate")), n("plate", contains("onion")),
+               n("onion", on("plate")), n("pepper", "whole"), n("board", "empty"), n("knife")]
+    dish = n("plate", contains("pepper", "tomato"))
+    goal = Goal(GoalSpec("plate"), (dish,))
+    # the kitchen's plate of peppers holds them whole: no plate holds chopped peppers and lists only them
+    stock = [n("plate", contains("pepper")), n("pepper", "whole", inside("plate"))]
+    outcome = plan(Foon((pick, chop, scrape, pour)), Kitchen(frozenset(kitchen + stock)), goal, "relational")
+    assert outcome.status == "unsolvable", outcome.message
+    # a plate listing peppers whose peppers the kitchen does not describe holds them as the pour needs
+    clean_unit_plan([scrape, pour], [*kitchen[:4], n("board", contains("pepper")), n("pepper", "chopped", on("board")),
+                                     n("plate", contains("pepper"))], dish)
+    task = compile_goal(Foon((pick, chop, scrape, pour)), Kitchen(frozenset(kitchen + stock)), goal, "relational").task
+    action = next(a for a in task.actions if a.unit is not None and task.units[a.unit] == pour)
+    assert ("?plate-2", "?pepper") in {p.args for p in action.pre if p.predicate == "on"}

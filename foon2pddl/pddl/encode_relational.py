@@ -154,13 +154,15 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     dust = relational_plan.dustings(plans[u] for u in units)
     left = relational_plan.left_nodes([(plans[u], ways[u], empties[u]) for u in units], inside, dust)
     stable = {n for n in const if n not in left}
+    entered = {n for u in units for k, s in enumerate(plans[u].slots) if s.fate is not Fate.CONSUMED  # an action puts
+               for n in (s.portion, plans[u].after_of(k)) if n not in (None, s.rel.role.before)}  # an object there
     init.extend(Atom(OCCUPIED, (const[x.start],)) for x in instances if x.start in stable)
 
     gaps: list[tuple[str, str, str, object]] = list(drops)  # (container, content, message, unit)
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
     actions = [replace(_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
-                                    container_labels, inside, empties[u], loose, dust), unit=origin.get(u, u))
+                                    container_labels, inside, empties[u], loose, dust, entered), unit=origin.get(u, u))
                for u in units]
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
@@ -213,7 +215,7 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                  type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[Way]],
                  gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
                  empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str],
-                 dust: frozenset[ObjectNode]) -> Action:
+                 dust: frozenset[ObjectNode], entered: set[ObjectNode]) -> Action:
     """One unit's schema (see the module doc): per role its state change and its holder facts."""
     slots, unit = plan.slots, plan.unit
     # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
@@ -243,9 +245,9 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
                 need.append(src.role)
             if dst is not None and dst.role is not None and (bound[k] or s.fate is Fate.SPLITS):
                 need.append(dst.role)
-            if src is not None and src.role is not None and not bound[k] and (
-                    s.fate is Fate.STAYS and changes[src.role] or s.fate is Fate.SPLITS and bound[src.role]):
-                need.append(k)  # it stays in that holder, or a portion comes out of it: it is in that one
+            if src is not None and src.role is not None and not bound[k] and (s.fate is Fate.STAYS and changes[src.role]
+                    or s.fate is Fate.SPLITS and (bound[src.role] or s.rel.role.before in entered)):
+                need.append(k)  # it stays in that holder, or a portion comes out of it (of a node an action fills)
             for j in need:
                 if not bound[j]:
                     bound[j] = grew = True
@@ -386,14 +388,13 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             if flow.into is not None:
                 now.append(Atom(IN, (var[flow.into], y)))
             cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y, type=type_of[label]))
-    # a role the unit leaves as it is ends in the node a late empty turns its node into (the oven the tray leaves)
-    # (by the emptied node's label: the name the unit uses may be another, FOON-GEN's `pan` for the cookware)
+    # a role the unit leaves as it is ends in the node a late empty turns its node into (the oven the tray leaves), by
+    # the emptied node's label (the name the unit uses may be another, FOON-GEN's `pan` for the cookware)
     emptied_by = {(old.label, old): new for j, s in enumerate(slots) if s.late_empties for old, new in empties.get(j, ())}
     expected = [Role(s.rel.role.label, s.rel.role.before, None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else
                      plan.after_of(k) or emptied_by.get((s.rel.role.label, s.rel.role.before)))
                 for k, s in enumerate(slots)]
     return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(dict.fromkeys(pre)),
                   add=tuple(dict.fromkeys(add)), delete=tuple(d for d in dict.fromkeys(delete) if d not in add),
-                  params=tuple(params), conditional=tuple(cond),
-                  cost=unit_cost(unit, options.costs, options.rates), unit=u, comment=unit_comment(unit, u),
-                  roles=tuple(zip(expected, bound, strict=True)))
+                  params=tuple(params), conditional=tuple(cond), cost=unit_cost(unit, options.costs, options.rates),
+                  unit=u, comment=unit_comment(unit, u), roles=tuple(zip(expected, bound, strict=True)))
