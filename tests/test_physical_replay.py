@@ -362,3 +362,26 @@ def test_single_mutations_fail(world, data):
                                                 if b.object == c.id else b for b in step.bindings))
         t = replace(t, steps=t.steps[:k] + (step,) + t.steps[k + 1:])
     assert not replay(t).ok
+
+
+def test_a_source_is_read_through_the_aliases_of_the_step_that_set_its_node():
+    """EXP trial 10 goal 68 (0061-club_sandwich.txt:54): the cook's unit reads the bacon's `in [pan]` as its
+    saucepan; the next step's unit names no pan but in that node, and takes the bacon out of the saucepan: its
+    source is the one the node's own words name, not a wrong source. A step reading the words so counts too."""
+    w = World({"pan_1": "saucepan", "plate_1": "plate", "bacon_1": "bacon"},
+              {"pan_1": ObjectState("pan_1", contents("saucepan", [])), "plate_1": ObjectState("plate_1", contents("plate", [])),
+               "bacon_1": ObjectState("bacon_1", node("bacon", "uncooked"))})
+    w.step("pick-and-place", [ObjectState("bacon_1", node("bacon", "uncooked", ("in", "pan")), "pan_1", "in"),
+                              ObjectState("pan_1", contents("saucepan", ["bacon"]))])
+    w.step("pick-and-place", [ObjectState("bacon_1", node("bacon", ("on", "plate")), "plate_1", "on"),
+                              ObjectState("plate_1", contents("plate", ["bacon"])),
+                              ObjectState("pan_1", node("saucepan", "dirty"))])
+    t = w.trace()
+
+    def read(first: tuple, second: tuple) -> set[K]:
+        steps = (replace(t.steps[0], aliases=first), replace(t.steps[1], aliases=second))
+        return {d.kind for d in replay(replace(t, steps=steps)).disagreements if d.step == 1}
+
+    pan = (("pan", "saucepan"),)
+    assert K.WRONG_SOURCE in read((), ())  # no step reads `pan` as the saucepan
+    assert read(pan, ()) == set() and read((), pan) <= {K.MISPLACED} and read(pan, pan) == set()

@@ -48,8 +48,8 @@ own words, never with an encoding's facts (it is the oracle that checks them).
   unless the step makes it, and then it did not exist (`REMADE`); its node before the
   step is the binding's `before`, and after it the binding's `after` (or `before` when
   the unit leaves it unchanged), unless the step consumes it (`STATE_MISMATCH`);
-* an object that leaves a holder was in a holder its input node names (or of a pair `trace.gaps` reports), and
-  that holder is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder, the fridge a
+* an object that leaves a holder was in a holder its input node names, read as this step or the one that set
+  the node reads it (or of a pair `trace.gaps` reports), and that holder is bound in the step (`WRONG_SOURCE`; exempt: leaving the undescribed initial holder, the fridge a
   scene put the onion in); the holder it arrives in is bound (`UNBOUND_TARGET`);
 * a bound object whose node (before or after) names `in [C]` while the step binds objects labelled C as
   roles or chosen holders (not a board an effect emptied, nor one it makes, for a node from before it) is in one
@@ -278,7 +278,7 @@ class _Replay:
         def add(kind: DisagreementKind, objects: tuple[str, ...], message: str) -> None:
             self.found.append(Disagreement(kind, k, objects, source, f"{motion}: {message}"))
 
-        words = {**self.aliases, **dict(step.aliases)}
+        words, prior = {**self.aliases, **dict(step.aliases)}, {b.object: self.reading(b.object) for b in step.bindings}
         for b in step.bindings:  # a node the step sets is the unit's words: read through its own aliases
             if after[b.object].node not in (None, before[b.object].node):
                 self.read[b.object] = words
@@ -303,21 +303,22 @@ class _Replay:
                 add(DisagreementKind.STATE_MISMATCH, (b.object,),
                     f"{b.object} ends {have!r}, the step makes it {want.describe()!r}")
         for b in step.bindings:
-            self._moves(b.object, b.before, before, after, bound, add)
+            self._moves(b.object, b.before, before, after, bound, add, prior[b.object])
             h = before[b.object].holder
             if h is not None and after[b.object].holder != h and self.label[b.object] in self.listed(after[h].node, h):
                 self.stale[(h, self.label[b.object])] = (after[h].node, k)
         self._holders_bound(step, before, after, add)
         self._absorb(step, before, after)
 
-    def _moves(self, oid, node_before, before, after, bound, add) -> None:
+    def _moves(self, oid, node_before, before, after, bound, add, prior) -> None:
         was, now = before[oid], after[oid]
         if was.holder == now.holder:
             return
         first = self.initial[oid]
         scene = was.holder == first.holder and not self.places(first.node, oid)
         if was.holder is not None and not scene:
-            named, h = {c for _, c in self.places(node_before or was.node, oid)}, self.label[was.holder]
+            h, n = self.label[was.holder], node_before or was.node  # in the words of the step that set it, or this one's
+            named = {c for _, c in self.places(n, oid)} | {prior.get(c, c) for _, c in places(n)}
             if h not in named and not self.stands_for(oid) & self.gaps.get(h, frozenset()):  # as for placement
                 add(DisagreementKind.WRONG_SOURCE, (oid, was.holder), f"{oid} leaves {was.holder}, a {h} its input node does not name")
             elif was.holder not in bound:
