@@ -378,3 +378,37 @@ def test_a_portion_from_a_holder_no_action_leaves_comes_out_of_that_holder():
     task = compile_goal(Foon((pick, chop, scrape, pour)), Kitchen(frozenset(kitchen + stock)), goal, "relational").task
     action = next(a for a in task.actions if a.unit is not None and task.units[a.unit] == pour)
     assert ("?plate-2", "?pepper") in {p.args for p in action.pre if p.predicate == "on"}
+
+
+def test_an_ingredient_consumed_off_a_holder_the_units_fill_empties_it():
+    # GEN, trial 3, goal 16 (0023-garlic_rice.txt:312): GEN's rice is `garnished {alliums, soft herbs}` before
+    # the pour (the scallion is an allium too), so the pour consumes the fried garlic off its plate, where REG's
+    # moves it into the rice. FOON leaves the plate out of the outputs; the units fill plates with garlic (the
+    # scoop), so the plate is emptied of it, as of an object that moves out (a portion would be left listed).
+    # The trial's kitchen has the garlic on a plate and no plate listing it: the plate added for it stayed
+    # listing the garlic [stale-source].
+    pot, rice = n("pot", contains("rice")), n("white rice", make_state("garnished", "", ["garlic"]), inside("pot"))
+    plate, garlic = n("plate", contains("garlic")), n("garlic", "fried", make_state("on", "plate"))
+    dish = n("garlic rice", contains("garlic"), inside("pot"))
+    pour = FunctionalUnit((pot, garlic, plate, rice), Motion("pour"), (rice, dish))
+    fried, pan = n("garlic", "fried", inside("pan")), n("pan", contains("garlic"))
+    scoop = FunctionalUnit((pan, fried, n("plate", "empty")), Motion("scoop"), (n("pan", "empty"), garlic, plate))
+    outcome = clean_unit_plan([scoop, pour], [pot, rice, garlic, n("plate", "empty"), pan, fried], dish)
+    assert [s.node for s in outcome.trace.final.values() if s.node is not None and s.node.label == "plate"] == [
+        n("plate", "empty")]
+
+
+def test_an_ingredient_consumed_into_what_the_unit_makes_in_its_holder_stays_listed_there():
+    # the scrambled eggs' cook (0056-scrambled_eggs.txt) makes the omelette in the pan the egg mixture is poured
+    # into and leaves the pan out of its outputs; the flip takes the pan still `contains {egg mixture}` with the
+    # omelette in it: the egg mixture is in the pan, inside the omelette, and the pan is not emptied of it
+    pan, mixture = n("pan", contains("egg mixture")), n("egg mixture", inside("pan"))
+    fill = FunctionalUnit((n("pan", "empty"), n("bowl", contains("egg mixture")), n("egg mixture", inside("bowl"))),
+                          Motion("pour"), (pan, mixture, n("bowl", "empty")))
+    cook = FunctionalUnit((pan, mixture), Motion("cook"), (n("omelette", inside("pan")),))
+    flipped = n("omelette", "flipped", inside("pan"))
+    flip = FunctionalUnit((pan, n("omelette", inside("pan"))), Motion("flip"), (flipped,))
+    outcome = clean_unit_plan([fill, cook, flip], [n("pan", "empty"), n("bowl", contains("egg mixture")),
+                                                   n("egg mixture", inside("bowl"))], flipped)
+    assert [u.motion.label for u in outcome.tree.units] == ["pour", "cook", "flip"]  # not poured in again
+

@@ -20,7 +20,9 @@ The reading (`kitchen_pairs`), on the makers' own outputs: each node is the kitc
 kitchen's (a kitchen node no unit makes has no maker; one a unit makes has it: the pancake's bowl that the oil pour
 takes and leaves in the same words, `0031-easy_pancakes.txt:176`, is no bowl at hand), neither a node a stitch
 reads for the taker (`input_stitch.stitched_inputs`: the unit that left it there is known), nor, for a kitchen
-container, a held node the kitchen already says (`relational_init.kitchen_implied`), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
+container, a held node the kitchen already says (`relational_init.kitchen_implied`) or another node of the held
+label the kitchen places there (GEN's `plates and trays (contains {peppers})` holds the kitchen's whole peppers, not
+the chopped ones the omelette's pour, `0042-perfect_omelette.txt:79`, takes with it), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
 (the garlic is in another bowl), and every unit making the container's node leaves beside it a node of L at that
 container other than the pair's (another garlic is in the bowl), and no maker of the one takes the other (the homemade cheese pizza's bake takes
 the pick-and-place's `oven (contains {pizza pan}, on, preheated)` and makes the pan of baked pizza in that oven,
@@ -102,6 +104,8 @@ def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[i
                 held_makers = makers(held)
                 if set(box_makers) & set(held_makers) or (box in kitchen and held in kitchen_implied((held,), kitchen)):
                     continue
+                if box in kitchen and any(k.label == held.label and box.label in {h for _, h in places(k)} for k in kitchen):
+                    continue  # the kitchen says what of that label its container holds (the plate of whole peppers)
                 boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
                 helds = [(m, _beside(m, box.label)) for m in held_makers]
                 if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(

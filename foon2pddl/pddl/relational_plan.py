@@ -2,11 +2,11 @@
 
 `holders` reads one unit; two questions need the task too:
 
-* **A portion or the whole?** An object leaving a container that keeps what it
-  lists `SPLITS` (a new object of its label arrives at the target; the one in the
-  container stays). The task says which containers keep: a container FOON changes
-  keeps what its output node lists. One FOON leaves out of the outputs is emptied of
-  what leaves it and what the units put into that label (its node drops the labels,
+* **A portion or the whole?** An object leaving a container that keeps what it lists `SPLITS` (a new object of its
+  label arrives at the target; the one in the container stays). The task says which containers keep: a container
+  FOON changes keeps what its output node lists. One FOON leaves out of the outputs is emptied of what leaves it,
+  moved or consumed (GEN's garlic, consumed into the rice dish off the plate; not into what the unit makes in it:
+  the omelette cooked from the egg mixture in the pan), and what the units put into that label (its node drops the labels,
   `without`: the syrup soaked into the cranberries) when the task's units fill
   containers of its label with that label (`holders.gained`: the measuring cup the
   cream was poured into) and its node is no kitchen node, unless it goes onto an object
@@ -174,9 +174,11 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         src = r.source
         if fate in (Fate.SPLITS, Fate.CONSUMED) and src is not None and src.role is not None:
             holder = rels[src.role].role
-            if (fate is Fate.SPLITS and holder.after is None and holder.before not in kitchen
-                    and (holder.label, r.role.label) in filled):
-                fate = Fate.MOVES  # a container an earlier unit filled, which FOON never empties
+            made_in = any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role for x in rels)
+            if holder.after is None and holder.before not in kitchen and (holder.label, r.role.label) in filled and not (
+                    fate is Fate.CONSUMED and made_in):  # (consumed into what the unit makes there: still in it)
+                fate = Fate.MOVES if fate is Fate.SPLITS else fate  # a container an earlier unit filled, which FOON
+                # never empties: the whole leaves it (or is consumed out of it: GEN's garlic rice)
                 into = rels[r.target.role].target if r.target is not None and r.target.role is not None else None
                 restated = any(x.fate is Fate.NEW and x.role.label == r.role.label and x.target is not None
                                and x.target.role == src.role for x in rels)  # the unit's own output leaves one there
@@ -185,8 +187,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                     drops.setdefault(src.role, set()).update({r.role.label} | {x for h, x in filled if h == r.role.label})
             elif (fate is Fate.CONSUMED and holder.after is None and holder.before in kitchen
                   and r.role.label in listed(holder.before)
-                  and not any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role
-                              for x in rels)):
+                  and not made_in):
                 fate, after = Fate.STAYS, None  # some of what a kitchen bowl holds went into a product made elsewhere
         elif (fate is Fate.CONSUMED and src is not None and src.role is None and _fills(src.holder, r.role.label, filled, labels, called)
               and (src.relation, src.holder) not in made_at):
