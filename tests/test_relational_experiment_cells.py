@@ -412,3 +412,22 @@ def test_an_ingredient_consumed_into_what_the_unit_makes_in_its_holder_stays_lis
                                                    n("egg mixture", inside("bowl"))], flipped)
     assert [u.motion.label for u in outcome.tree.units] == ["pour", "cook", "flip"]  # not poured in again
 
+
+def test_an_object_a_kitchen_container_lists_under_another_name_never_starts_in_a_node_only_a_unit_makes():
+    # EXP, trial 4, goal 74 (0079-dalgona_coffee.txt:59): the kitchen's `mixing bowl (contains {hot water, instant
+    # coffee, sugar})` lists `sugar`, which the beat reads as its `brown sugar` (EXP's for refined sugar); the brown
+    # sugar added in it started in the beat's `brown sugar (in [mixing bowl])`, which only the pour makes, so the
+    # plan beat at once and FOON's tree did not validate [input not available]. It starts as the kitchen's brown
+    # sugar, placed there: `brown sugar (granulated, in [bowl])`.
+    beaten = n("bowl", contains("whipped coffee"))
+    beat = FunctionalUnit((n("bowl", contains("coffee", "sugar")), n("coffee", inside("bowl")),
+                           n("brown sugar", inside("bowl"))), Motion("beat"),
+                          (beaten, n("whipped coffee", inside("bowl"))))
+    pour = FunctionalUnit((n("bowl", contains("coffee")), n("coffee", inside("bowl")), n("jar", contains("brown sugar")),
+                           n("brown sugar", "granulated", inside("jar"))), Motion("pour"),
+                          (n("bowl", contains("coffee", "sugar")), n("brown sugar", inside("bowl"))))
+    outcome = clean_unit_plan([pour, beat], [n("bowl", contains("coffee", "sugar")), n("coffee", inside("bowl")),
+                                             n("bowl", contains("coffee")), n("jar", contains("brown sugar")),
+                                             n("brown sugar", "granulated", inside("jar"))], beaten)
+    assert [u.motion.label for u in outcome.tree.units] == ["pour", "beat"]
+    assert n("brown sugar", "granulated", inside("bowl")) in {s.node for s in outcome.trace.initial}

@@ -11,6 +11,7 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, place_state, places
 from ..model.scene import SceneObject
 from .holder_words import task_aliases
+from .holders import moved_into
 from .names import NameTable
 from .task import Instance
 
@@ -111,8 +112,11 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     `alliums (on [surface], peeled)`, held the chopped one, which a pour the plan does not fire takes, while the
     plan's pour takes the peeled one, GEN trial 5 goal 51), never one that lists contents of its own (no object would stand for them), nor one the kitchen
     does not say (`kitchen_implied` over the `kitchen` and the objects' starts, as the tree check judges it:
-    only a unit makes it, and FOON's tree would not find it there); else `water (in [pot])`. In container-name
-    order; O(n^2)."""
+    only a unit makes it, and FOON's tree would not find it there); else `water (in [pot])`, unless only a unit
+    makes that node: then a kitchen node of the label placed there (EXP's `brown sugar (granulated, in [mixing
+    bowl])` for the kitchen's `mixing bowl (contains {..., sugar})`, whose `sugar` the dalgona coffee's beat reads
+    as its brown sugar, `0079-dalgona_coffee.txt:59`: not its `brown sugar (in [mixing bowl])`, which the pour
+    makes). In container-name order; O(n^2)."""
     out = []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
@@ -138,7 +142,9 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             said = kitchen_implied(found, kitchen | starts) | (starts & set(found))  # what FOON's tree may take from the kitchen
             known = sorted((n for n in found if n in said), key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired,
                                                                (h.start, n) not in planned, n))
-            out.append(known[0] if known else make_node(item, [make_state("in", h.label)]))
+            bare = make_node(item, [make_state("in", h.label)])  # else a kitchen node of it there, when that one only a unit makes
+            there = sorted(moved_into(k, h.label) for k in kitchen if k.label == item) if bare in found else []
+            out.append(known[0] if known else (there or [bare])[0])
     return tuple(out)
 
 
