@@ -431,3 +431,21 @@ def test_an_object_a_kitchen_container_lists_under_another_name_never_starts_in_
                                              n("brown sugar", "granulated", inside("jar"))], beaten)
     assert [u.motion.label for u in outcome.tree.units] == ["pour", "beat"]
     assert n("brown sugar", "granulated", inside("bowl")) in {s.node for s in outcome.trace.initial}
+
+
+def test_an_object_the_unit_s_objects_are_in_leaves_its_holder_whole():
+    # GEN, trial 9, goal 67 (0071-banana_pudding.txt:108): the blend takes the bowl `in [mixer]` with the vanilla
+    # and the pudding mix in it, and gives it `bowl (contains {pudding mixture})`, in no place, while the mixer
+    # stays `with [bowl]`: the mixer kept its bowl, so a portion of the bowl split off, listing the pudding mixture
+    # made in the bowl left behind [claimed-twice on GEN, whose pudding mix and pudding mixture are both `sweet
+    # mixtures`; missing-content with REG's words, as here: so no question of GEN's categories]. The bowl leaves
+    # whole, and the mixer's list that still has it is reported (rule 6), as FOON's words that contradict.
+    mixer = lambda state: n("mixer", state, make_state("with", "bowl"))  # noqa: E731
+    bowl, done = n("bowl", contains("pudding mix", "vanilla"), inside("mixer")), n("bowl", contains("pudding mixture"))
+    blend = FunctionalUnit((mixer("on"), n("vanilla", inside("bowl")), n("pudding mix", inside("bowl")), bowl),
+                           Motion("blend"), (mixer("off"), done,
+                                             n("pudding mixture", contains("pudding mix", "vanilla"), inside("bowl"))))
+    outcome = clean_unit_plan([blend], [mixer("on"), n("vanilla", inside("bowl")), n("pudding mix", inside("bowl")),
+                                        bowl], done)
+    assert [o.id for o in outcome.trace.objects if o.label == "bowl"] == ["bowl_1"]
+    assert ("mixer", "bowl") in {(c, x) for c, x, _ in list_gaps(blend)}

@@ -19,10 +19,10 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from .foon import ObjectNode, State
+from .foon import ObjectNode, State, make_node, make_state
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "describes_contents", "head_of", "listed", "place_of", "place_state", "places"]
+__all__ = ["CONTENT_STATES", "describes_contents", "head_of", "listed", "moved_into", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
@@ -80,3 +80,9 @@ def describes_contents(node: ObjectNode | None) -> bool:
     """Whether the node says what is in or on the object (`contains`, `empty`, `with`): a node that does not
     (`cutting board (dirty)`, `bowl (clean)`) is silent about its contents, and nothing is checked of them."""
     return node is not None and any(s.label in CONTENT_STATES for s in node.states)
+
+
+def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:
+    """`node` with its place replaced by `relation [holder]` (an implied node: `pddl.holders` rule 3)."""
+    kept = [s for s in node.states if place_state(s) is None]
+    return make_node(node.label, [*kept, make_state(relation.value, holder)])

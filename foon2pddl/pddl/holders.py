@@ -48,17 +48,16 @@ Rules, in order (each reads only the unit itself):
    (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5). An output node
    whose only place word is a bare `on`, beside the one role that newly lists it, is `on` that role (`avocado (on,
    sliced)` put on the bread that lists it).
-4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves
-   still lists L afterwards (its output node does, or the unit gives it none and
-   its node does): FOON then says the holder keeps what it holds, so a portion
-   `SPLITS` off: a new object of label L arrives where the role's output node says,
-   and the object in the holder stays (the carton still holds cream after some is
-   poured; the measuring cup FOON never empties keeps its cream too). A role with no
-   output node whose holder's output node no longer lists L is `CONSUMED`: it
-   became part of the mixture made there (the lettuce of a salad), and so is one
-   sitting, with no output node, where the unit makes a new object (`garlic (in
-   [bowl])` where `meat mix (in [bowl])` is made). A source the unit does not name
-   is decided by the encoding, which knows the task's nodes (`Fate.MOVES` here).
+4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves still lists L afterwards (its
+   output node does, or the unit gives it none and its node does) and no role is in or on the object (the blend's
+   bowl, `0071-banana_pudding.txt:108`, leaves the mixer that stays `with [bowl]` whole, with the vanilla in it):
+   FOON then says the holder keeps what it holds, so a portion `SPLITS` off: a new object of label L arrives where
+   the role's output node says, and the object in the holder stays (the carton still holds cream after some is
+   poured; the measuring cup FOON never empties keeps its cream too). A role with no output node whose holder's
+   output node no longer lists L is `CONSUMED`: it became part of the mixture made there (the lettuce of a salad),
+   and so is one sitting, with no output node, where the unit makes a new object (`garlic (in [bowl])` where `meat
+   mix (in [bowl])` is made). A source the unit does not name is decided by the encoding, which knows the task's
+   nodes (`Fate.MOVES` here).
 5. **Contents that are not roles.** A container whose output node drops a label its
    input node lists, with no role of that label that may be in it (a role of the
    label taken from a holder of another label, or consumed from no place, is another
@@ -89,13 +88,13 @@ from enum import StrEnum
 from functools import lru_cache
 
 from ..model.aliases import unit_aliases
-from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.foon import FunctionalUnit, ObjectNode, make_node
 from ..model.pairing import Role, unit_roles
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of, place_state, places
+from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
 from .holder_words import aliased, part_of, renamed
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "moved_into", "on_parts",
+__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "on_parts",
            "relational_roles", "unit_aliases", "unit_flows"]
 
 
@@ -145,12 +144,6 @@ class Flow:
     label: str
     holder: int
     into: int | None
-
-
-def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:
-    """`node` with its place replaced by `relation [holder]` (an implied node, rule 3)."""
-    kept = [s for s in node.states if place_state(s) is None]
-    return make_node(node.label, [*kept, make_state(relation.value, holder)])
 
 
 def _relation(nodes: tuple[ObjectNode | None, ...], holder: str) -> Relation:
@@ -243,6 +236,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
     result = []
     sources = [_holder(labels, list(before), k, r.label, place_of(before[k]), True) if r.before is not None else None
                for k, r in enumerate(roles)]
+    held = {s.role for s in sources if s is not None}  # the roles others are in or on: they leave whole (rule 4)
     for k, r in enumerate(roles):
         src = sources[k]
         if src is not None and src.role is None and place_of(after[k]) == place_of(before[k]):
@@ -283,7 +277,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         if same:
             result.append(RelRole(r, out_nodes[k], Fate.STAYS, src, dst))
             continue
-        keeps = src is not None and src.role is not None and _keeps(after[src.role], r.label)
+        keeps = src is not None and src.role is not None and _keeps(after[src.role], r.label) and k not in held
         result.append(RelRole(r, out_nodes[k], Fate.SPLITS if keeps else Fate.MOVES, src, dst))
     return tuple(result)
 
@@ -348,7 +342,8 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     bowl])` made, the bowl `contains {salad}`); and a label C's output node newly lists that no role of the
     unit is, nor is read as (rule 0), or that the unit leaves `attached to [C]` (the watermelon lemonade's
     `blender (with [cup])` beside `blender cup (attached to [blender])`: a relation, not in or on, that no holder
-    fact holds). No plan can satisfy both words, so the task reports them and its replay
+    fact holds); and a holder whose output node still lists an object that leaves it whole (rule 4: the mixer still
+    `with [bowl]` as the blend's bowl leaves it). No plan can satisfy both words, so the task reports them and its replay
     does not check that pair. Names read through the unit's aliases; O(r^2) for r roles.
     """
     read = _reading(unit)
@@ -374,6 +369,11 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
                 describes_contents(read.before[j]) for j in mine):
             out.append((src.holder, r.label, f"{r.label} is {src.relation} [{src.holder}], whose node before the "
                         "unit does not list it: which one holds it is left to the plan"))
+    for k, x in enumerate(rels):  # rule 4: the whole, holding the unit's objects, leaves a holder that lists it still
+        if x.fate is Fate.MOVES and x.source is not None and x.source.role is not None and _keeps(
+                read.after[x.source.role], x.role.label) and any(y.source and y.source.role == k for y in rels):
+            out.append((x.source.holder, x.role.label, f"{x.source.holder} lists {x.role.label} after the unit, which "
+                        "leaves it whole with what is in it"))
     for node, holder in on_parts(unit):  # rule 2: placed on a part of another role (the bread of the sandwich)
         (rel, part), = places(node)[:1]
         out.append((holder, node.label, f"{node.label} is {rel} [{part}], which {holder} lists: read as {rel} the {holder}"))

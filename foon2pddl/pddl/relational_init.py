@@ -8,10 +8,9 @@ from functools import lru_cache
 
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, place_of, place_state, places
+from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
 from ..model.scene import SceneObject
 from .holder_words import task_aliases
-from .holders import moved_into
 from .names import NameTable
 from .task import Instance
 

@@ -47,8 +47,8 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role
 from ..model.physical import Relation
-from ..model.places import describes_contents, head_of, listed, places
-from .holders import Fate, Flow, RelRole, gained, moved_into, relational_roles, unit_flows
+from ..model.places import describes_contents, head_of, listed, moved_into, places
+from .holders import Fate, Flow, RelRole, gained, relational_roles, unit_flows
 from .relational_init import read_names
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "called_fills", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
