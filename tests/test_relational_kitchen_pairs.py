@@ -143,3 +143,30 @@ def test_a_pair_of_two_kitchen_nodes_reads_nothing():
     from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
 
     assert kitchen_pairs(Foon((SPRINKLE,)), frozenset({TABLE, FLOUR_IN, FLOUR_BOWL})) == ()
+
+
+def test_a_units_pairs_are_read_once_per_network_object_and_kitchen(monkeypatch):
+    # a trial's goals share one network object and a few kitchens, and their tasks hundreds of units: each unit's
+    # pairs are read once per kitchen; another kitchen, or another network object with the same units, reads its own
+    from foon2pddl.model.places import listed
+    from foon2pddl.pddl import kitchen_pairs as module
+
+    units = (FLOUR_POUR, ROUX, SPRINKLE, CHOP, ONION_POUR, TUNA_POUR)
+    wide = frozenset({EMPTY, n("flour", inside("bag")), TABLE, FLOUR_IN, n("bowl", contains("butter", "flour")),
+                      n("butter", inside("bowl")), n("pot", "hot"), n("onion", "peeled"), KNIFE, MAYO_BOWL,
+                      n("mayonnaise", inside("bowl")), TUNA_BOWL})
+
+    def pairs(foon, kitchen, takers=None):
+        return [(p.taker, p.box, p.held) for p in module.kitchen_pairs(foon, kitchen, takers)]
+
+    foon = Foon(units)
+    assert pairs(foon, wide, (5,)) == [(TUNA_POUR, MAYO_BOWL, ONION_IN)]
+    reads: list = []
+    monkeypatch.setattr(module, "listed", lambda node: reads.append(node) or listed(node))
+    both = [(SPRINKLE, FLOUR_BOWL, FLOUR_IN), (TUNA_POUR, MAYO_BOWL, ONION_IN)]
+    assert pairs(foon, wide) == both and reads  # units 0-4 are read now
+    reads.clear()
+    assert pairs(foon, wide, (5, 2)) == both and not reads  # in unit order, each read before
+    assert pairs(foon, wide - {MAYO_BOWL}) == [(SPRINKLE, FLOUR_BOWL, FLOUR_IN)] and reads
+    reads.clear()
+    assert pairs(Foon(units), wide - {FLOUR_IN}) == [(TUNA_POUR, MAYO_BOWL, ONION_IN)] and reads

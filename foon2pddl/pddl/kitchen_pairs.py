@@ -41,6 +41,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
+from ..model.memo import per_network
 from ..model.places import listed, places
 from .encoding import LevelInputs, short_path, unit_where
 from .input_stitch import stitched_inputs
@@ -78,9 +79,38 @@ def _beside(maker: FunctionalUnit, label: str, holder: str | None = None) -> Obj
                  and (holder is None or holder in {h for _, h in places(o)})), None)
 
 
+#: Kitchens whose pairs are kept per network object (`_read`): a trial's goals read a few, a long run's trials more.
+KITCHENS_KEPT = 8
+
+
+@per_network
+def _read(foon: Foon) -> dict[frozenset[ObjectNode], dict[int, tuple[Pair, ...]]]:
+    """Kitchen -> unit index -> the pairs that unit takes, filled as `kitchen_pairs` reads units. Sound: a unit's
+    pairs read only the network (its units, makers and `stitched_inputs`, fixed for a network object, which this is
+    kept per) and the kitchen, the key; a trial's goals share the network object, and their tasks most of their
+    hundreds of units (FOON-GEN), which each goal read again."""
+    return {}
+
+
 def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[int] | None = None) -> tuple[Pair, ...]:
     """Every pair of the module doc that the units `takers` (indexes; default all) take, in unit order; makers
-    from the whole network."""
+    from the whole network. Each unit is read once per network object and kitchen (`_read`)."""
+    read = _read(foon)
+    if kitchen not in read:
+        while len(read) >= KITCHENS_KEPT:
+            read.pop(next(iter(read)))
+        read[kitchen] = {}
+    known = read[kitchen]
+    out: list[Pair] = []
+    for i in (range(len(foon.units)) if takers is None else sorted(takers)):
+        if i not in known:
+            known[i] = _taken_pairs(foon, kitchen, i)
+        out.extend(known[i])
+    return tuple(dict.fromkeys(out))
+
+
+def _taken_pairs(foon: Foon, kitchen: frozenset[ObjectNode], i: int) -> tuple[Pair, ...]:
+    """The pairs of the module doc unit `i` of `foon` takes from `kitchen`, in its inputs' order."""
     made = foon.producers
 
     def given(node: ObjectNode) -> bool:  # the kitchen's, or made
@@ -91,27 +121,26 @@ def kitchen_pairs(foon: Foon, kitchen: frozenset[ObjectNode], takers: Iterable[i
 
     sewn = stitched_inputs(foon)
     out: list[Pair] = []
-    for i in (range(len(foon.units)) if takers is None else sorted(takers)):
-        u = foon.units[i]
-        for box in u.inputs:
-            if not given(box) or (i, box) in sewn:
+    u = foon.units[i]
+    for box in u.inputs:
+        if not given(box) or (i, box) in sewn:
+            continue
+        box_makers = makers(box)
+        for held in u.inputs:
+            if (not given(held) or (i, held) in sewn or (box in kitchen and held in kitchen) or held.label == box.label
+                    or held.label not in listed(box) or box.label not in {h for _, h in places(held)}):
                 continue
-            box_makers = makers(box)
-            for held in u.inputs:
-                if (not given(held) or (i, held) in sewn or (box in kitchen and held in kitchen) or held.label == box.label
-                        or held.label not in listed(box) or box.label not in {h for _, h in places(held)}):
-                    continue
-                held_makers = makers(held)
-                if set(box_makers) & set(held_makers) or (box in kitchen and held in kitchen_implied((held,), kitchen)):
-                    continue
-                if box in kitchen and any(k.label == held.label and box.label in {h for _, h in places(k)} for k in kitchen):
-                    continue  # the kitchen says what of that label its container holds (the plate of whole peppers)
-                boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
-                helds = [(m, _beside(m, box.label)) for m in held_makers]
-                if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
-                        o is not None and o != box and box not in m.inputs for m, o in helds):
-                    out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
-    return tuple(dict.fromkeys(out))
+            held_makers = makers(held)
+            if set(box_makers) & set(held_makers) or (box in kitchen and held in kitchen_implied((held,), kitchen)):
+                continue
+            if box in kitchen and any(k.label == held.label and box.label in {h for _, h in places(k)} for k in kitchen):
+                continue  # the kitchen says what of that label its container holds (the plate of whole peppers)
+            boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
+            helds = [(m, _beside(m, box.label)) for m in held_makers]
+            if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
+                    o is not None and o != box and box not in m.inputs for m, o in helds):
+                out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
+    return tuple(out)
 
 
 def read_pairs(inp: LevelInputs, units: Iterable[int]) -> tuple[LevelInputs, tuple[Pair, ...]]:
