@@ -50,7 +50,8 @@ head nouns and modifiers, see `similarity.py`) and changes eight things:
 8. A filed class is not a substitute for its kinds (`kinds`): a label rule 6 holds to its kinds whose
    sense has at least `CLASS_KINDS` WordNet kinds (saltwater fish: 57) names a class, not a thing a
    recipe uses, and stands with none of its kinds (saltwater fish~tuna, mixed drink~bullshot score 0);
-   chop~porkchop (3 kinds) and salad green~lettuce (18) stand.
+   chop~porkchop (3 kinds) and salad green~lettuce (18) stand. A label that is a category's own name
+   and no category's member (cutlery) is a class too, and stands with no label (`bare_category`).
 
 Senses are read as in the paper's rule, except that a hyphenated label that is a WordNet lemma is
 read whole (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon,
@@ -164,7 +165,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, rule 8, hyphens"
+RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -232,6 +233,12 @@ class CookSimilarity:
             self._filed[label] = assign([label], self.categories, sim=self._filer)[0]
         return self._filed[label]
 
+    def bare_category(self, label: str) -> bool:
+        """Whether `label` is a category's own name and no category's member (cutlery): a class (rule 8)."""
+        assert self.categories is not None
+        label = normalize_label(label)
+        return self.categories.is_category(label) and not self.categories.of(label)
+
     def kind_only(self, label: str) -> bool:
         """Whether rule 6 holds `label` to its kinds: filed through its head or a nearest member it is not a
         synonym of."""
@@ -283,7 +290,9 @@ class CookSimilarity:
         if found is None:
             found = self._compute(a, b)
             if found.similarity and not found.rejected and self.categories is not None:
-                if not kin(self.categories, a, b, self.categories_of):
+                if self.bare_category(a) or self.bare_category(b):  # rule 8: a class stands with nothing
+                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "class")
+                elif not kin(self.categories, a, b, self.categories_of):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
                 elif self.kind_only(a) or self.kind_only(b):
                     why = self._kinds(a, b, found)
