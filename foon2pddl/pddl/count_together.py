@@ -46,12 +46,16 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
     return out
 
 
-def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = 12) -> dict[int, int] | None:
+#: How many units deep `_worked_there` follows a held node worked where it lies.
+WORKED_DEPTH = 12
+
+
+def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_DEPTH) -> dict[int, int] | None:
     """Node id -> maker for the held node `x` made where it lies, when no unit makes it in the container `c` before
     `u`: a maker of `x` firing only after `u` in the fixpoint (a maker by `u`'s round is the rules' above, never one
     of `u`'s round: the universal hamburger's garlic, 77 objects against 75) that makes it in `c` (`_in_box`), or one
-    taking a node of its label at its place that such a
-    chain makes (at most `depth` units, none needing what `u` makes). The homemade cheese pizza's pick-and-place
+    taking a node of its label at its place that such a chain makes (at most `depth` units, none needing what `u`
+    makes; the round test is the top call's, on `x` itself). The homemade cheese pizza's pick-and-place
     (`0082-homemade_cheese_pizza.txt:328`) takes `table (contains {flour, pizza dough})` with `pizza dough
     (flattened, on [table])`; the knead takes the table's node and kneads the dough on it, the cut, shape and press
     work it there. On the universal FOON of the odd-index subgraphs the mini pizza's press makes the flattened dough
@@ -59,7 +63,7 @@ def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = 12) 
     ix, held = reach.index, reach.index.nodes[x]
     mine = {o for o in ix.outputs[u] if reach.achiever[o] == u}  # what only `u` makes first
     for m in sorted(ix.makers[x], key=lambda k: (reach.unit_round[k], ix.rank[k])):
-        if m == u or reach.unit_round[m] < 0 or depth == 12 and reach.unit_round[m] <= reach.unit_round[u] or _needs(
+        if m == u or reach.unit_round[m] < 0 or depth == WORKED_DEPTH and reach.unit_round[m] <= reach.unit_round[u] or _needs(
                 reach, m, mine):  # one firing by the taker's round is the rules' above (c476cc6: not the same round)
             continue
         if _in_box(reach, m, c):
