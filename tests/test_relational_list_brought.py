@@ -1,5 +1,5 @@
 """A container node a unit takes and leaves in the same words, listing what the unit puts in (`pddl/list_brought.py`):
-the easy pancakes' oil pour (`0031-easy_pancakes.txt:176`)."""
+the easy pancakes' oil pour (`0031-easy_pancakes.txt:178`)."""
 
 from __future__ import annotations
 
@@ -56,3 +56,11 @@ def test_a_node_left_as_it_was_taken_is_read_only_with_what_the_unit_puts_in_and
     again = FunctionalUnit((n("bowl", contains("flour mixture", "milk")), n("vegetable oil", "fresh")), Motion("pour"),
                            (FULL,))  # another unit makes the bowl listing the oil: no reading
     assert brought(Foon((*UNITS, again))) == {}
+
+
+def test_a_node_is_read_only_as_one_a_unit_can_make_from_the_kitchen():
+    # no flour or milk at hand: no unit makes the bowl the milk was poured into, and the kitchen's full bowl with the
+    # flour mixture in it stays the kitchen's; the mix applies at once, as in FOON's tree (read, the kitchen's bowl
+    # was gone and the dish unsolvable)
+    outcome = clean_unit_plan(UNITS, {FULL, MIXTURE, WHISK}, MIX.outputs[1])
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["mix"]

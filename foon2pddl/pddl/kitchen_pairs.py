@@ -18,7 +18,7 @@ sandwich's pour (`ACT-0024-tuna_sandwich.txt:32`) takes the kitchen's `bowl (con
 
 The reading (`kitchen_pairs`), on the makers' own outputs: each node is the kitchen's or made, not both the
 kitchen's (a kitchen node no unit makes has no maker; one a unit makes has it: the pancake's bowl that the oil pour
-takes and leaves in the same words, `0031-easy_pancakes.txt:176`, is no bowl at hand), neither a node a stitch
+takes and leaves in the same words, `0031-easy_pancakes.txt:178`, is no bowl at hand), neither a node a stitch
 reads for the taker (`input_stitch.stitched_inputs`: the unit that left it there is known), nor, for a kitchen
 container, a held node the kitchen already says (`relational_init.kitchen_implied`) or another node of the held
 label the kitchen places there (GEN's `plates and trays (contains {peppers})` holds the kitchen's whole peppers, not
