@@ -9,7 +9,10 @@ init; an action binding an object in the state the class starts in needs it `rea
 class `ready`. Any plan, renamed so that the class's objects are first bound in their order, meets this: the
 objects a plan binds first in a class are still in their starting state when bound (nothing but a binding moves
 an object that holds nothing and stands in nothing), so a task stays solvable exactly when it was, and its
-plans name the same actions. Applied by `planners.solve.plan` to the task it gives the planner (`relational`);
+plans name the same actions. Two facts of the relational encoding make the renaming sound: a late-bound target
+binds an object by `(live ?x)` alone, not by its state, so it neither needs `ready` nor counts as a first binding
+(the renaming orders a class by first bindings in its starting state); and an object named in another object's
+initial fact, as `(precedes a b)` names two of one label an action binds at once in that state, is in no class. Applied by `planners.solve.plan` to the task it gives the planner (`relational`);
 `compile` writes the task without it. O(init + actions x parameters).
 """
 
