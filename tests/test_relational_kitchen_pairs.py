@@ -170,3 +170,32 @@ def test_a_units_pairs_are_read_once_per_network_object_and_kitchen(monkeypatch)
     assert pairs(foon, wide - {MAYO_BOWL}) == [(SPRINKLE, FLOUR_BOWL, FLOUR_IN)] and reads
     reads.clear()
     assert pairs(Foon(units), wide - {FLOUR_IN}) == [(TUNA_POUR, MAYO_BOWL, ONION_IN)] and reads
+
+
+def test_a_node_of_the_held_label_in_another_container_leaves_the_pair_at_hand():
+    # REG and EXP trial 9 goal 29 (ACT-0024-tuna_sandwich.txt:32): another recipe's whole onion in a bowl does not
+    # say the kitchen's bowl of mayonnaise and onion holds it, when another kitchen bowl lists onion
+    kitchen = {EMPTY, n("onion", "peeled"), KNIFE, MAYO_BOWL, n("mayonnaise", inside("bowl")), TUNA_BOWL,
+               n("onion", "whole", inside("bowl")), n("bowl", contains("onion"))}
+    outcome = clean_unit_plan((CHOP, ONION_POUR, TUNA_POUR), kitchen, MIXED)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
+
+
+def test_a_node_of_the_held_label_beside_a_container_the_kitchen_does_not_fill_leaves_the_pair_at_hand():
+    # the trial's own kitchen: its mayonnaise is in a jar, none in a bowl (the carrot salad's scoop, 0007:92, makes
+    # it in a bowl of mayonnaise alone), so its bowl of mayonnaise and onion is no bowl whose contents the kitchen
+    # places; the whole onion in some bowl is not said to be in it
+    jar, mayo = n("jar", contains("mayonnaise")), n("mayonnaise", inside("jar"))
+    scoop = FunctionalUnit((EMPTY, jar, mayo), Motion("scoop"), (n("bowl", contains("mayonnaise")),
+                                                                 n("mayonnaise", inside("bowl"))),
+                           (Source("salad.txt", 92),))
+    units = (CHOP, ONION_POUR, scoop, TUNA_POUR)
+    kitchen = {EMPTY, n("onion", "peeled"), KNIFE, MAYO_BOWL, jar, mayo, TUNA_BOWL, n("onion", "whole", inside("bowl"))}
+    outcome = clean_unit_plan(units, kitchen, MIXED)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
+    # a bowl whose every listed label the kitchen places in a bowl, and the one bowl listing onion, holds the
+    # whole onion: the chopped one is not read at hand in it
+    from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
+
+    said = frozenset(kitchen | {n("mayonnaise", inside("bowl"))})
+    assert [p.held for p in kitchen_pairs(Foon(units), said)] == []

@@ -133,7 +133,7 @@ def _taken_pairs(foon: Foon, kitchen: frozenset[ObjectNode], i: int) -> tuple[Pa
             held_makers = makers(held)
             if set(box_makers) & set(held_makers) or (box in kitchen and held in kitchen_implied((held,), kitchen)):
                 continue
-            if box in kitchen and any(k.label == held.label and box.label in {h for _, h in places(k)} for k in kitchen):
+            if box in kitchen and _holds_other(box, held.label, kitchen):
                 continue  # the kitchen says what of that label its container holds (the plate of whole peppers)
             boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
             helds = [(m, _beside(m, box.label)) for m in held_makers]
@@ -141,6 +141,16 @@ def _taken_pairs(foon: Foon, kitchen: frozenset[ObjectNode], i: int) -> tuple[Pa
                     o is not None and o != box and box not in m.inputs for m, o in helds):
                 out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
     return tuple(out)
+
+
+def _holds_other(box: ObjectNode, label: str, kitchen: frozenset[ObjectNode]) -> bool:
+    """Whether the kitchen says its `box` holds a node of `label` of its own: it places one in the box's label, no
+    other kitchen node of that label lists `label` (the whole onion may be in another bowl of onion), and it places
+    a node of every label the box lists there (REG's bowl of mayonnaise and onion, whose mayonnaise the kitchen has
+    in a jar, is no bowl the kitchen fills: another recipe's whole onion in a bowl is not in it, trial 9 goal 29)."""
+    inside = {k.label for k in kitchen if box.label in {h for _, h in places(k)}}
+    return (label in inside and listed(box) <= inside
+            and not any(k.label == box.label and k != box and label in listed(k) for k in kitchen))
 
 
 def read_pairs(inp: LevelInputs, units: Iterable[int]) -> tuple[LevelInputs, tuple[Pair, ...]]:
