@@ -17,8 +17,6 @@ from foon2pddl.pddl.names import MAX_LENGTH, RESERVED, NameTable, comment, is_va
 from foon2pddl.pddl.render import render
 
 VALID = re.compile(r"[a-z][a-z0-9_-]*\Z")
-PARSE_DOMAIN = pddl.parser.domain.DomainParser()  # building a parser takes 0.2 s: build once
-PARSE_PROBLEM = pddl.parser.problem.ProblemParser()
 
 # Labels meant to break things: PDDL syntax, keywords, line breaks of every kind, unicode, digits.
 NASTY = st.sampled_from([
@@ -108,8 +106,10 @@ def test_hostile_labels_render_to_pddl_that_parses_with_the_same_structure(case,
     costs = costs if ENCODINGS[encoding].costs else None  # (an encoding may not support action costs)
     task = compile_task(foon, kitchen, goal, encoding, 3, prune=False, costs=costs)
     domain_text, problem_text = render(task)
-    domain = PARSE_DOMAIN(domain_text)
-    problem = PARSE_PROBLEM(problem_text)
+    # fresh parsers: the `pddl` package's parser keeps state when a parse raises, so a shared one would fail every
+    # later example with 'parser is in an unexpected state' and hide the first example's own error while shrinking
+    domain = pddl.parser.domain.DomainParser()(domain_text)
+    problem = pddl.parser.problem.ProblemParser()(problem_text)
     assert len(domain.actions) == len(task.actions)
     assert {a.name for a in domain.actions} == {a.name for a in task.actions}
     assert len(domain.predicates) == len(task.predicates)
