@@ -72,6 +72,30 @@ def test_atoms_reconstruct_their_node(node):
     assert all(node_of(s, args) == node for s, args in reps)
 
 
+def test_representations_of_a_node_with_many_objects_of_one_category_stay_small():
+    """A node listing 10 seasonings: the orderings are drawn lazily, at most `MAX_REPRESENTATIONS`, and the same
+    as `itertools.product`'s first ones. `product` read the 3.6 million permutations of the group in full first
+    (a hypothesis example of the atoms test once grew a worker of the suite to 24 GB and had it killed)."""
+    import itertools
+    import tracemalloc
+
+    from foon2pddl.model.foon import make_node, make_state
+    from foon2pddl.pddl.lifted_atoms import MAX_REPRESENTATIONS, _orderings
+
+    ordering = Ordering(INDEX)
+    spices = sorted(m for m in CATEGORIZED if ordering.root(m) == "seasonings")[:10]
+    node = make_node("bowl", [make_state("contains", "", spices)])
+    shape, labels = node_atom_labels(node, ordering)
+    tracemalloc.start()
+    reps = representations(node, ordering, {shape})
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert (shape, labels) in reps and 1 <= len(reps) <= MAX_REPRESENTATIONS
+    assert peak < 20_000_000, peak  # bytes: 3.6 million tuples of 10 would be hundreds of MB
+    groups = [["a", "b", "c"], ["d", "e"]]
+    assert list(_orderings(groups)) == list(itertools.product(*(itertools.permutations(g) for g in groups)))
+
+
 def test_lifting_parameterizes_missing_objects_only(example, kitchen):
     have = kitchen.nodes
     lifted = lift(example.foon, INDEX, generalizer("missing", example.foon, have))

@@ -11,6 +11,7 @@ top-level category in any order, as a grounded action may order them differently
 from __future__ import annotations
 
 import itertools
+from collections.abc import Iterator
 
 from ..generalize.relevance import Ordering
 from ..model.constraints import node_labels
@@ -48,13 +49,24 @@ def representations(node: ObjectNode, ordering: Ordering, shapes: set[Shape]) ->
     order = sorted(node_labels(node) - {node.label}, key=ordering.key)
     groups = [list(g) for _, g in itertools.groupby(order, key=ordering.root)]
     out: list[tuple[Shape, tuple[str, ...]]] = []
-    for combo in itertools.islice(itertools.product(*(itertools.permutations(g) for g in groups)),
-                                  MAX_REPRESENTATIONS):
+    for combo in itertools.islice(_orderings(groups), MAX_REPRESENTATIONS):
         labels = [x for part in combo for x in part]
         shape = shape_with(node, labels)
         if shape in shapes:
             out.append((shape, (node.label, *labels)))
     return out
+
+
+def _orderings(groups: list[list[str]]) -> Iterator[tuple[tuple[str, ...], ...]]:
+    """One permutation per group, in `itertools.product`'s order (the last group varies fastest), lazily:
+    `product` first reads every input to its end, and the permutations of a group of 12 same-category labels
+    are 479 million tuples (a worker of the test suite grew to 24 GB on one such node)."""
+    if not groups:
+        yield ()
+        return
+    for first in itertools.permutations(groups[0]):
+        for rest in _orderings(groups[1:]):
+            yield (first, *rest)
 
 
 def node_of(shape: Shape, labels: tuple[str, ...]) -> ObjectNode:
