@@ -1,5 +1,5 @@
 """Draw a batch of substitution pairs over WordNet lemmas no rule was designed on (splits `lemmas`, `lemmas2`,
-`lemmas3`).
+`lemmas3`, `lemmas4`).
 
 `python -m bench.similarity_lemmas [--shared DIR] [--split S] BLIND KEY` writes BLIND (the
 pairs in a seeded shuffle with an empty `label` column) and KEY (each pair's split and
@@ -10,7 +10,8 @@ first lower-case lemma (`apple_pie` -> `apple pie`), skipping labels of the refe
 vocabulary (the shared subgraphs and the example), of the search inputs (the `outside`
 split) and of `similarity_pairs.tsv` as it was when the split was drawn (every split but
 this one and the ones drawn after it) and of the earlier batches' draws: `lemmas2` skips every
-label `lemmas` drew, `lemmas3` every label `lemmas` and `lemmas2` drew. The pairs: a seeded
+label `lemmas` drew, `lemmas3` every label `lemmas` and `lemmas2` drew, `lemmas4` every label the three
+earlier batches drew. The pairs: a seeded
 sample of `ACCEPTED` pairs among those of a drawn label with a drawn or reference label that the paper's rule or the cook mode
 accepts (>= 0.89; the cook mode's breadth vocabulary joined by the drawn labels, as a
 user's run on them would), plus `RANDOM` seeded pairs from the rest (`random`).
@@ -32,8 +33,8 @@ from .similarity_sample import main as sample_main
 
 N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 80, 40, 170, 30
 #: The batches in the order they were drawn, with their seeds (`lemmas` at 8697b53, `lemmas2` at 213d3ab,
-#: `lemmas3` at c9b0080).
-SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44}
+#: `lemmas3` at f864136, `lemmas4` at 5ececf4).
+SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45}
 FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
         "seafood.n.01", "bread.n.01", "sauce.n.01", "condiment.n.01", "dish.n.02", "baked_goods.n.01",
         "dairy_product.n.01", "vegetable_oil.n.01", "sweetening.n.01", "edible_nut.n.01", "pasta.n.02",

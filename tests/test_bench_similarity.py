@@ -16,8 +16,8 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
     assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2",
-                                        "lemmas3"}
-    lemma_batches = ("lemmas", "lemmas2", "lemmas3")
+                                        "lemmas3", "lemmas4"}
+    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4")
     later = ("outside", "unsampled", *lemma_batches)
     assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
     assert {p.source for p in pairs if p.split not in later} == {
