@@ -56,6 +56,7 @@ EXTRA = (
     ("docs/generalization.md", "foon2pddl expand --similarity paper --pairs"),
     ("docs/generalization.md", "foon2pddl goals --network exp"),
     ("docs/generalization.md", "foon2pddl compile --goal lemonade --network gen -o out/"),
+    ("docs/generalization.md", "foon2pddl categories --extend tests/data/foon-subgraphs -o out/index.json"),  # my_recipes/
     ("docs/retrieval.md", "foon2pddl goals --dishes"),
     ("docs/pddl.md", "foon2pddl compile --goal guacamole --encoding relational -o out/"),
     ("README.md", "foon2pddl experiment tests/data/foon-subgraphs --solvers native-greedy,native-complete --jobs 2 "

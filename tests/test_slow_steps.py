@@ -114,9 +114,10 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
     (("expand",), "writing FOON-EXP (181 units) and its statistics ..."),  # 4.4 s silent on the subgraphs (paper)
     (("generalize",), "writing FOON-GEN (95 units) and its statistics ..."),
     (("generalize",), "generalizing 101 units to categories ..."),  # 2.0-2.1 s silent at load 13 (subgraphs)
+    (("categories", "--extend"), "filing the object labels in no category (through WordNet) ..."),  # 24 s at load 14
 ], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
         "check", "stats", "stats: its counts", "expand: its output", "generalize: its output",
-        "generalize: compressing"])
+        "generalize: compressing", "categories --extend"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     r = run(*args)
     assert r.exit_code in (0, 1), r.stderr

@@ -73,7 +73,8 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
 
         net = read_network(paths)
         labels = [n.label for n in net.foon.nodes]
-        found = assign(labels, index, filing_similarity(), min_similarity=min_similarity)
+        with slow_step("filing the object labels in no category (through WordNet)"):
+            found = assign(labels, index, filing_similarity(), min_similarity=min_similarity)
         bigger = extended_index(index, found)
         emit(index_json(bigger, "Extended by foon2pddl categories --extend: review the assignments."), output)
         click.echo("label\tcategory\tvia\tsimilarity\thow", err=True)
