@@ -453,3 +453,24 @@ def test_what_retrieval_md_says_a_batch_refuses_it_refuses(tmp_path, monkeypatch
     for network in re.findall(r"`--network (\w+)`", takes):
         r = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole", "--goal", "lemonade", "--network", network])
         assert r.exit_code in (0, 1) and "2 goals:" in r.stdout, (network, r.output)
+
+
+def test_extending_md_says_the_experiment_takes_a_new_network_kinds_name_only(tmp_path, monkeypatch):
+    """Stop 45's pass: extending.md said that after `register(...)` "the CLI, the Python API and the experiment"
+    accept the new planner's, network kind's, method's or encoding's name. The experiment takes a network kind's
+    (`--networks`); its `--solvers` are its own registry (`experiment/solvers.py`), so a new planner is no solver."""
+    from foon2pddl.generalize.network import NETWORKS, NetworkKind, register
+    from foon2pddl.planners.registry import PLANNERS, Planner
+    from foon2pddl.planners.registry import register as register_planner
+
+    monkeypatch.setitem(NETWORKS, "asread", NETWORKS["reg"])  # placeholder: replaced by register below
+    register(NetworkKind("asread", "ASREAD", "the network as read", NETWORKS["reg"].build, ""))
+    monkeypatch.setitem(PLANNERS, "toy", PLANNERS["fd"])
+    register_planner(Planner("toy", "Fast Downward again", PLANNERS["fd"].solve, lambda name: None))
+    common = ["experiment", "--trials", "1", "--goals", "1", "--no-progress", "-o", str(tmp_path / "x")]
+    assert CliRunner().invoke(main, [*common, "--networks", "asread", "--solvers", "native-complete"]).exit_code == 0
+    assert CliRunner().invoke(main, [*common, "--networks", "reg", "--solvers", "toy"]).exit_code == 2
+    intro = (ROOT / "docs/extending.md").read_text().split("\n\n")[1]
+    said = re.search(r"then accept[^.]*\.", intro, re.S)
+    assert said and "experiment" in said.group(0) and "--networks" in said.group(0), intro
+    assert "solvers.py" in intro  # where the experiment's own names are
