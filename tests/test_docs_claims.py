@@ -474,3 +474,28 @@ def test_extending_md_says_the_experiment_takes_a_new_network_kinds_name_only(tm
     said = re.search(r"then accept[^.]*\.", intro, re.S)
     assert said and "experiment" in said.group(0) and "--networks" in said.group(0), intro
     assert "solvers.py" in intro  # where the experiment's own names are
+
+
+#: A page's word on which encoding a command takes by default: "`relational` is not the default of `plan`",
+#: a heading "### `tree` (the default of `compile`)".
+_DEFAULT_SAID = re.compile(r"`([a-z-]+)` is (not )?the default of `(\w+)`|^#+ `([a-z-]+)` \(([^)]*default[^)]*)\)", re.M)
+
+
+def test_what_the_docs_say_an_encoding_default_is_the_commands_default():
+    """Stop 45's pass: docs/pddl.md said "`relational` is not the default of `plan`" and headed the `tree`
+    section "(default)", while `plan` takes `relational` unless --encoding says otherwise (`compile`: `tree`).
+    Every such sentence names the command and says what its --encoding option defaults to."""
+    from foon2pddl.cli import main as cli
+
+    def default(command):
+        return next(p.default for p in cli.get_command(None, command).params if p.name == "encoding")
+
+    said = []
+    for page in PAGES:
+        for m in _DEFAULT_SAID.finditer(page.read_text()):
+            if m.group(1):
+                said.append((page.name, m.group(0), (default(m.group(3)) == m.group(1)) != bool(m.group(2))))
+            else:
+                named = re.fullmatch(r"the default of `(\w+)`", m.group(5))
+                said.append((page.name, m.group(0), bool(named) and default(named.group(1)) == m.group(4)))
+    assert said and not [s for s in said if not s[2]], said
