@@ -21,10 +21,10 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
     return outcome
 
 
-def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode):
-    """`clean_plan` of `goal_node` over a network of `units` from a kitchen of `kitchen_nodes`."""
+def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode, **options):
+    """`clean_plan` of `goal_node` over a network of `units` from a kitchen of `kitchen_nodes` (`options`: `plan`'s)."""
     return clean_plan(Foon(tuple(units)), Kitchen(frozenset(kitchen_nodes)),
-                      Goal(GoalSpec(goal_node.label), (goal_node,)))
+                      Goal(GoalSpec(goal_node.label), (goal_node,)), **options)
 
 
 def clean_dish_plan(path: Path):

@@ -26,7 +26,8 @@ def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
                 silent: frozenset[str] = frozenset(), nodes: Iterable[ObjectNode] = (),
                 paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
-                filled: frozenset[tuple[str, str]] = frozenset()) -> tuple[list[Instance], list[ObjectNode]]:
+                filled: frozenset[tuple[str, str]] = frozenset(),
+                follows: dict[ObjectNode, frozenset[ObjectNode]] | None = None) -> tuple[list[Instance], list[ObjectNode]]:
     """Instances with their starting holders, and the holders to add (module doc, "Init").
 
     An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
@@ -47,9 +48,11 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     has it on, in a task where another unit's output names a surface: listing the garlic, the surface
     still listed it once the garlic was in the spoon). An added holder starts in a node of `nodes` that lists exactly that
     and names no place (the kitchen's `pot (heated, on [stove])` is on the network's `stove (on, with
-    [pot])`), else in a node made of the list. Names (`filled`'s too) are read through the task's `alias`es. O(n^2) for n objects.
+    [pot])`), of several first one from which units (`follows`, `same_place_steps`) lead it to a node `held_met`
+    finds (the miso soup's stove: `stove (off (ready), with [pot])`, which a turn on switches on, not another
+    recipe's `stove (off, with [pot])`, which none does), else in a node made of the list. Names (`filled`'s too) are read through the task's `alias`es. O(n^2) for n objects.
     """
-    alias = alias or {}
+    alias, follows = alias or {}, follows or {}
     filled = frozenset((alias.get(h, h), alias.get(x, x)) for h, x in filled)  # a unit's `oil` is the `olive oil`
     by_label: dict[str, list[Instance]] = {}
     for x in instances:
@@ -83,8 +86,9 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
             continue
         used.add((pick.name, x.label))
         picks[x.name] = (pick.name, rel)
-    listing_nodes = {}
-    for n in sorted(nodes):
+    met = held_met([x.start for x in instances if x.name in picks and picks[x.name][1] is None], follows, paired)
+    listing_nodes: dict[tuple[str, frozenset[str]], ObjectNode] = {}
+    for n in sorted(nodes, key=lambda n: (n.label not in wanted or met.get(n.label, set()).isdisjoint(_reached([n], follows)), n)):
         if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
             listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
     implied = [make_node(label, []) for label in sorted(plain)] + [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
@@ -92,6 +96,69 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
                for items in (frozenset(x for x, k in counts.items() if k > i) for i in range(max(counts.values())))]
     return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None
             else x for x in instances], implied
+
+
+def same_place_steps(units: Iterable[FunctionalUnit]) -> dict[ObjectNode, frozenset[ObjectNode]]:
+    """Per node, the nodes of its label at its place (or none, as it) a unit taking it leaves (`_reached`)."""
+    out: dict[ObjectNode, set[ObjectNode]] = {}
+    for u in units:
+        for a in u.inputs:
+            out.setdefault(a, set()).update(b for b in u.outputs if b.label == a.label and b != a
+                                            and place_of(b) == place_of(a))
+    return {a: frozenset(b) for a, b in out.items()}
+
+
+def started_notes(units: Sequence[FunctionalUnit], starts: Iterable[ObjectNode | None], implied: Iterable[ObjectNode],
+                  follows: dict[ObjectNode, frozenset[ObjectNode]],
+                  kitchen: frozenset[ObjectNode]) -> tuple[tuple[FunctionalUnit, str], ...]:
+    """(unit, note) for each added holder (`implied`) that starts, not in a kitchen node, where `held_met` led it
+    (`holder_init`): the unit that takes the node it is led to with the object, still where it started."""
+    out = []
+    for h in implied:
+        ahead = _reached([h], follows)
+        for x in sorted(n for n in starts if n is not None and h not in kitchen):
+            near = _reached([x], follows)
+            taken = [(near[a], i, a, m) for i, u in enumerate(units) for a in u.inputs if a in near
+                     for m in u.inputs if m.label == h.label and m in ahead]
+            if taken:
+                _, i, a, m = min(taken)
+                led = f", from which units leave {m.describe()}" if m != h else ""
+                how = "it" if a == x else f"{a.describe()}, which units make of it without moving it"
+                out.append((units[i], f"the {h.label} the kitchen's {x.describe()} is {place_of(x)[0].value} starts "
+                                      f"in {h.describe()}{led}, a node only units make: this "
+                                      f"{units[i].motion.label} takes that with {how}"))
+                break
+    return tuple(out)
+
+
+def held_met(starts: Iterable[ObjectNode | None], follows: dict[ObjectNode, frozenset[ObjectNode]],
+             paired: Iterable[tuple[ObjectNode, ObjectNode]]) -> dict[str, set[ObjectNode]]:
+    """Per holder label, the nodes of it a unit first takes with a node objects in `starts` reach where they are
+    (`_reached`): the stir's `stove (on, with [pot])` for the miso soup's kitchen pot of hot water."""
+    near = _reached(starts, follows)
+    first: dict[str, int] = {}
+    for a, b in paired:
+        if a in near and b.label != a.label:
+            first[b.label] = min(first.get(b.label, near[a]), near[a])
+    met: dict[str, set[ObjectNode]] = {}
+    for a, b in paired:
+        if a in near and b.label != a.label and near[a] == first[b.label]:
+            met.setdefault(b.label, set()).add(b)
+    return met
+
+
+def _reached(starts: Iterable[ObjectNode | None], follows: dict[ObjectNode, frozenset[ObjectNode]]) -> dict[ObjectNode, int]:
+    """The nodes an object in one of `starts` reaches by units that leave its label at the same place (`follows`),
+    each with the fewest such units."""
+    near: dict[ObjectNode, int] = {}
+    todo = sorted({n for n in starts if n is not None})
+    for depth in range(len(follows) + 1):
+        todo = [n for n in todo if n not in near]
+        if not todo:
+            break
+        near.update((n, depth) for n in todo)
+        todo = sorted({m for n in todo for m in follows.get(n, ())})
+    return near
 
 
 def implied_contents(instances: list[Instance], alias: dict[str, str], placed: frozenset[str],
@@ -215,14 +282,15 @@ def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iter
 def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit], have: Iterable[str],
                       nodes: set[ObjectNode], named: Iterable[str], silent: frozenset[str],
                       filled: frozenset[tuple[str, str]] = frozenset(), kitchen: frozenset[ObjectNode] = frozenset(),
-                      plan: Sequence[FunctionalUnit] = ()) -> tuple[list[Instance], dict[str, str], frozenset[str], frozenset[ObjectNode]]:
+                      plan: Sequence[FunctionalUnit] = ()) -> tuple[list[Instance], dict[str, str], frozenset[str],
+                                                                    frozenset[ObjectNode], tuple[tuple[FunctionalUnit, str], ...]]:
     """The counted objects with the kitchen completed: the contents its containers list, the holders its objects
     and the units name (`named`: the places the units' output nodes and portions name, each as its own unit
     reads it, `model.aliases.unit_aliases`; `filled`: what the
     task's units put into holders of which label, `holder_init`; `kitchen`: the task's kitchen nodes, which judge what
     the kitchen says, and `plan`: the units of the plan the counts are derived from, `implied_contents`). Also the task's aliases
-    (`holder_words.task_aliases`), the labels a node places something in or on, and the network's nodes the
-    holders the kitchen implies start in."""
+    (`holder_words.task_aliases`), the labels a node places something in or on, the network's nodes the
+    holders the kitchen implies start in, and the notes on where those start (`started_notes`)."""
     instances = counted_objects(table, counts)
     alias = dict(task_aliases(units, have, [x.start for x in instances]))
     placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
@@ -232,9 +300,12 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
     missing = sorted(set(named) - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
-    instances, implied = holder_init(instances, alias, quiet, nodes, paired, filled)
+    follows = same_place_steps(units)
+    instances, implied = holder_init(instances, alias, quiet, nodes, paired, filled, follows)
+    told = started_notes(units, [x.start for x in instances if x.holder is None and place_of(x.start) is not None],
+                         implied, follows, kitchen)
     if implied:
         # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
         # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
         instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
-    return instances, alias, placed, frozenset(implied) & nodes
+    return instances, alias, placed, frozenset(implied) & nodes, told

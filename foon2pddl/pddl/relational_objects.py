@@ -19,7 +19,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from ..model.aliases import unit_aliases
-from ..model.foon import ObjectNode
+from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import places
 from ..model.scene import SceneObject
 from .encoding import LevelInputs
@@ -38,7 +38,8 @@ class TaskObjects:
     """A relational task's objects (`task_objects`): the units' `reading` (its counts), the names `table`, the
     `instances`, the task's aliases (`alias`), the labels a node places something in or on (`placed`), the
     network's nodes the kitchen implies objects start in (`implied`: the completion's holders, the nodes counted
-    small from), the task's `nodes`, the `kitchen` the counts are derived in, and the note when counted small."""
+    small from), the task's `nodes`, the `kitchen` the counts are derived in, the note when counted small, and
+    the notes on where the completion's holders start (`relational_init.started_notes`)."""
 
     reading: Reading
     table: NameTable
@@ -49,6 +50,7 @@ class TaskObjects:
     nodes: frozenset[ObjectNode]
     kitchen: frozenset[ObjectNode]
     narrowed: str = ""
+    started: tuple[tuple[FunctionalUnit, str], ...] = ()  # (unit, note): where an added holder starts
 
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
@@ -65,7 +67,7 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(wide.implied))
-    return replace(small, narrowed=(
+    return replace(small, started=tuple(dict.fromkeys(wide.started + small.started)), narrowed=(
         "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the holders its "
                                                        "nodes imply start" if more else "")
         + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
@@ -87,6 +89,7 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
         nodes.update(n for _, n in p.emptied)
     held_by: frozenset[ObjectNode] = frozenset()  # network nodes the holders the kitchen implies start in
+    started: tuple = ()
     if scene:  # the scene is the init: its objects, where they are, and the objects units make
         instances = scene_instances(table, scene, counts.unmade)
         alias = dict(task_aliases([f.units[u] for u in units], rd.have, [x.start for x in instances]))
@@ -95,9 +98,9 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         aliases = {u: dict(unit_aliases(f.units[u])) for u in units}  # once per unit, not per place
         named = {aliases[u].get(c, c)
                  for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
-        instances, alias, placed, held_by = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
+        instances, alias, placed, held_by, started = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
                                                               nodes, named, rd.silent, rd.filled, inp.kitchen,
                                                               [f.units[u] for u, _ in counts.firings])
     more = more or frozenset()
     return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
-                       inp.kitchen | more)
+                       inp.kitchen | more, started=started)
