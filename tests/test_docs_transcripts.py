@@ -1,9 +1,9 @@
 """The command transcripts in the README and every docs/*.md are what the program prints.
 
-Each `$ foon2pddl ...` line in a fenced block is run (from the repository root, so
-`tests/data/...` PATHS resolve); every documented output line must appear in the
-command's output: stdout lines in order, stderr lines (notes, summaries) anywhere; stdout the
-transcript leaves out is marked by an elision line (`...`) where it is left out.
+Each `$ foon2pddl ...` line in a fenced block is run (from a scratch directory with the repository's
+`tests/` and `docs/` linked in, so `tests/data/...` PATHS resolve and no output may depend on running from
+the checkout); every documented output line must appear in the command's output: stdout lines in
+order, stderr lines (notes, summaries) anywhere; stdout the transcript leaves out is marked by an elision line (`...`) where it is left out.
 Timing lines (`phases: ...`) vary from run to run and are skipped, and so is an
 elision line (`...`); inside a line, `...` stands for any text (a documented line
 may shorten a long one).
@@ -80,8 +80,12 @@ def test_matches_reads_an_elision_as_any_text():
 
 
 @pytest.mark.parametrize(("command", "expected"), CASES, ids=[f"{i}: {c}" for i, (c, _) in enumerate(CASES)])
-def test_transcript_matches_the_program(command, expected, monkeypatch):
-    monkeypatch.chdir(ROOT)
+def test_transcript_matches_the_program(command, expected, monkeypatch, tmp_path):
+    # From a directory of the reader's own, as after `pip install` (`tests/` and `docs/` linked so the paths
+    # the pages give resolve): what the program prints must not depend on running from the checkout.
+    for name in ("tests", "docs"):
+        (tmp_path / name).symlink_to(ROOT / name)
+    monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(main, shlex.split(command))
     out, err = result.stdout.splitlines(), result.stderr.splitlines()
     position, elided, left_out = 0, False, []

@@ -44,15 +44,21 @@ def call_text(call: SkillCall, params: tuple[str, ...] = ()) -> str:
     return text if call.hand == "hand_1" else f"{text} ({call.hand})"
 
 
+#: The package's directory: a file shipped with it (the embedded example) is named by its path in the package.
+_PACKAGE = Path(__file__).resolve().parent.parent
+
+
 def where(source: str) -> str:
-    """A unit's `file:line`, the file relative to the working directory when it is under it."""
+    """A unit's `file:line`: a file shipped with the package by its path in the package
+    (`foon2pddl/data/example/02-whipped_cream.foon:3`, wherever it is installed and run from),
+    another file relative to the working directory when it is under it."""
     path, sep, line = source.rpartition(":")
     if not sep or not os.path.isabs(path):
         return source
-    try:
-        return f"{Path(path).relative_to(Path.cwd())}:{line}"
-    except ValueError:
-        return source
+    for file, base, named in ((Path(path).resolve(), _PACKAGE, Path(_PACKAGE.name)), (Path(path), Path.cwd(), Path())):
+        if file.is_relative_to(base):
+            return f"{named / file.relative_to(base)}:{line}"
+    return source
 
 
 def _header(step: MacroSkills) -> str:
