@@ -297,3 +297,13 @@ def test_a_filed_class_with_many_wordnet_kinds_stands_with_none_of_them(cook):
         assert e.similarity == 0.0 and e.rejected == "class", (a, b, e)
     for a, b in [("chop", "porkchop"), ("salad green", "lettuce")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_modifier_wordnet_tags_mostly_as_an_adjective_is_no_food(cook):
+    """Rule 4 reads a compound's modifier as a food only when WordNet does not tag the word more often as an
+    adjective: `green` (52 adjective tags, 7 noun tags; its noun senses include leafy greens) describes the
+    olive oil, `peanut` and `garlic` (no adjective tags) name the food a dish is made with."""
+    for a, b in [("green olive oil", "olive oil"), ("green olive oil", "vegetable oil"), ("green olive oil", "oil")]:
+        assert cook(a, b) >= 0.89, (a, b)
+    assert cook.variant(cook.resolution("peanut mixture"))  # an unchanged reading: peanut is a food here
+    assert cook.explain("chicken", "garlic chicken").rejected == "variant"

@@ -21,7 +21,8 @@ head nouns and modifiers, see `similarity.py`) and changes eight things:
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
-   sauces are made from) is an ingredient, so vegetable broth~broth stands.
+   sauces are made from) is an ingredient, so vegetable broth~broth stands; a modifier
+   WordNet tags mostly as an adjective (`senses.adjective`: green) is no food.
 5. Kin by the categories: a pair stands only if FOON-GEN's category index
    (`categories.json`, hand-made) puts the two labels in one category or one in a
    refinement of the other's (any of their categories), and scores 0 otherwise
@@ -74,7 +75,7 @@ from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
 from .extend import Assignment, assign
-from .senses import Overrides, Resolution, kitchen_senses, parse_overrides, resolve
+from .senses import Overrides, Resolution, adjective, kitchen_senses, parse_overrides, resolve
 from .similarity import Evidence
 
 #: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
@@ -165,7 +166,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens"
+RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -266,7 +267,8 @@ class CookSimilarity:
     def variant(self, r: Resolution) -> bool:
         """Whether a label known by its head noun is a recipe's preparation (rule 4): a food whose head is a
         prepared food (`PREPARED`), or whose modifier ends in a food (garlic-parmesan chicken) or a past
-        participle (barbecued ribs); never a stock or broth (`INGREDIENTS`: vegetable broth)."""
+        participle (barbecued ribs); never a stock or broth (`INGREDIENTS`: vegetable broth). A modifier WordNet
+        tags more often as an adjective (`adjective`: green) describes the food and is no food itself."""
         if not r.senses or not all(k == "noun.food" for k in r.lexnames):
             return False
         if any(self._wup.ancestors(x) & INGREDIENTS for x in r.senses):
@@ -274,7 +276,8 @@ class CookSimilarity:
         last = (r.modifier or "").split()[-1:]
         if last and last[0].endswith("ed") and self.reader.morphy(last[0], "v") not in (None, last[0]):
             return True
-        if last and any(s.lexname() == "noun.food" for s in self.reader.synsets(last[0], "n")):
+        if last and not adjective(self.reader, last[0]) and any(
+                s.lexname() == "noun.food" for s in self.reader.synsets(last[0], "n")):
             return True
         return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
 
