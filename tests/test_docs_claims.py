@@ -499,3 +499,17 @@ def test_what_the_docs_say_an_encoding_default_is_the_commands_default():
                 named = re.fullmatch(r"the default of `(\w+)`", m.group(5))
                 said.append((page.name, m.group(0), bool(named) and default(named.group(1)) == m.group(4)))
     assert said and not [s for s in said if not s[2]], said
+
+
+def test_the_instances_physical_note_pddl_md_quotes_is_the_one_plan_prints(monkeypatch):
+    """Stop 45's pass: docs/pddl.md quoted the note `plan --encoding instances` adds as '... first:
+    07-guacamole.foon:28: step 4: scoop ...'; the guacamole plan puts every board to use first and scoops at
+    step 12. The quote (its `...` any text) is a line of that command's stderr."""
+    quote = re.search(r"`(note: not checked physically by the encoding:[^`]*)`",
+                      " ".join((ROOT / "docs/pddl.md").read_text().split()))
+    assert quote and "07-guacamole.foon" in quote.group(1)
+    monkeypatch.chdir(ROOT)
+    r = CliRunner().invoke(main, ["plan", "--goal", "guacamole", "--encoding", "instances"])
+    assert r.exit_code == 0, r.stderr
+    pattern = re.compile(".*".join(re.escape(part) for part in quote.group(1).split("...")))
+    assert any(pattern.fullmatch(line) for line in r.stderr.splitlines()), (quote.group(1), r.stderr)
