@@ -144,6 +144,16 @@ def test_a_search_without_conditional_effects_says_why_and_what_to_try():
     assert "Traceback" not in result.output
 
 
+def test_a_planner_refusing_action_costs_says_why_and_what_to_try():
+    """Stop 45's pass: `plan --encoding tree --costs unit --planner pyperplan` printed the engine's "does not
+    support this task's features" and no reason (docs/pddl.md: pyperplan rejects action costs)."""
+    result = run("--goal", "guacamole", "--encoding", "tree", "--costs", "unit", "--planner", "pyperplan")
+    assert result.exit_code == 2 and result.stdout == ""
+    reason = next((line for line in result.stderr.splitlines() if line.startswith("reason: ")), result.stderr)
+    assert "action costs (`:action-costs`" in reason and "without --costs" in reason
+    assert "conditional effects" not in reason  # the tree encoding has none
+
+
 def test_optimal_plans_the_default_encoding_with_an_admissible_search_that_takes_conditional_effects():
     # LM-cut (seq-opt-lmcut) refuses the relational actions' `forall ... when`; A* with h^max is admissible and
     # takes them, so its plan is no longer than lama's (an independent bound) and passes the relational replay

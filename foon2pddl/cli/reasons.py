@@ -79,11 +79,16 @@ def _try_tree(encoding: str) -> str:
 def unsupported_reason(task) -> str | None:
     """Why a planner error may come from what `task` needs of a planner, and what to try; None when its
     actions are plain STRIPS (then the planner's message is the whole story)."""
-    if ":conditional-effects" not in task.requirements:
-        return None
-    return (f"the {task.encoding} encoding's actions have conditional effects (`:conditional-effects`), which "
-            "this planner or search may not support (pyperplan, Tamer, Aries and Fast Downward's LM-cut do not; "
-            "`--optimal` takes A* with h^max there); `--encoding tree` (FOON's own semantics) and `--encoding instances` have none")
+    said = []
+    if ":conditional-effects" in task.requirements:
+        said.append(f"the {task.encoding} encoding's actions have conditional effects (`:conditional-effects`), which "
+                    "this planner or search may not support (pyperplan, Tamer, Aries and Fast Downward's LM-cut do not; "
+                    "`--optimal` takes A* with h^max there); `--encoding tree` (FOON's own semantics) and "
+                    "`--encoding instances` have none")
+    if ":action-costs" in task.requirements:
+        said.append("the task has action costs (`:action-costs`; --costs or a constraints file's rates give them), "
+                    "which this planner may not support (pyperplan does not); plan without --costs")
+    return "; ".join(said) or None
 
 
 def foreign_reason(status, encoding: str) -> str | None:
