@@ -273,3 +273,12 @@ def test_results_of_another_protocol_give_each_way_out_once(tmp_path):
     assert r.stderr.split("error: ", 1)[1].count("another") == 2  # 'another protocol', 'another -o directory'
     assert "the same parameters and inputs resume them; use another -o directory, or --fresh to discard them" \
         in r.stderr
+
+
+def test_optimal_help_names_the_search_the_default_encoding_gets():
+    """`plan --help` said `--optimal` is "Fast Downward: A* with LM-cut"; on plan's default encoding
+    (`relational`, whose conditional effects LM-cut refuses) it runs A* with h^max (docs/planning.md)."""
+    r = run("plan", "--goal", "whipped cream", "--optimal")
+    assert r.exit_code == 0 and "solved (fd (astar(hmax())))" in r.stderr, r.stderr
+    text = " ".join(run("plan", "--help").stdout.split())
+    assert "A* with h^max on a task with conditional effects (relational)" in text

@@ -90,7 +90,8 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
               help="External planner command, run without a shell: 'cmd {domain} {problem} {plan}' "
                    "(also {time}); its IPC plan file is read back. Or a preset: "
                    + ", ".join(PRESETS) + " (docs/planning.md).")
-@click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut).")
+@click.option("--optimal", is_flag=True, help="Admissible search (Fast Downward: A* with LM-cut; A* with h^max on "
+              "a task with conditional effects (relational), which LM-cut refuses).")
 @click.option("--alias", default=None, metavar="NAME",
               help="Fast Downward: a search alias of its driver (lama-first, seq-opt-lmcut, seq-sat-lama-2011, ...).")
 @click.option("--search", "search", default=None, metavar="CONFIG",
