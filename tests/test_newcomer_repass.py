@@ -282,3 +282,16 @@ def test_optimal_help_names_the_search_the_default_encoding_gets():
     assert r.exit_code == 0 and "solved (fd (astar(hmax())))" in r.stderr, r.stderr
     text = " ".join(run("plan", "--help").stdout.split())
     assert "A* with h^max on a task with conditional effects (relational)" in text
+
+
+def test_a_misspelt_json_field_is_named_as_the_typo(tmp_path):
+    """docs/json-schema.md: "Unknown fields are an error (they are most often typos, e.g. `stats` for `states`)".
+    A node written with `stats` was reported as "object node lacks the required field 'states'", never naming
+    the field the file does have."""
+    export = run("merge", "--format", "json")
+    assert export.exit_code == 0
+    bad = tmp_path / "net.json"
+    bad.write_text(export.stdout.replace('"states"', '"stats"', 1))
+    r = run("stats", bad)
+    assert r.exit_code == 2 and "Traceback" not in r.output
+    assert "units[0].inputs[0].stats: unknown field 'stats' in object node: did you mean 'states'?" in r.stderr

@@ -9,6 +9,7 @@ the file, the line of the offending JSON item and its place
 
 from __future__ import annotations
 
+import difflib
 import json
 from pathlib import Path
 from typing import Any
@@ -110,12 +111,16 @@ def _pointer(where: tuple[str | int, ...]) -> str:
 def _fields(data: Any, where: tuple, what: str, required: tuple[str, ...], optional: tuple[str, ...]) -> dict:
     if not isinstance(data, dict):
         raise _Invalid(where, f"expected {what} (a JSON object), found {_kind(data)}")
+    unknown = sorted(set(data) - set(required) - set(optional))
+    allowed = ", ".join(required + optional)
     for key in required:
         if key not in data:
+            typo = difflib.get_close_matches(key, unknown, n=1)  # `stats` for `states`: name what the file has
+            if typo:
+                raise _Invalid(where + (typo[0],), f"unknown field {typo[0]!r} in {what}: did you mean {key!r}? "
+                                                   f"(allowed: {allowed})")
             raise _Invalid(where, f"{what} lacks the required field {key!r}")
-    unknown = sorted(set(data) - set(required) - set(optional))
     if unknown:
-        allowed = ", ".join(required + optional)
         raise _Invalid(where + (unknown[0],), f"unknown field {unknown[0]!r} in {what} (allowed: {allowed})")
     return data
 
