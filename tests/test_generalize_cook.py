@@ -307,3 +307,26 @@ def test_a_modifier_wordnet_tags_mostly_as_an_adjective_is_no_food(cook):
         assert cook(a, b) >= 0.89, (a, b)
     assert cook.variant(cook.resolution("peanut mixture"))  # an unchanged reading: peanut is a food here
     assert cook.explain("chicken", "garlic chicken").rejected == "variant"
+
+
+def test_a_whole_wordnet_term_is_filed_by_its_head_only_as_a_kind_of_it(cook, label_similarity):
+    """Rule 5's filing: `pepper` is the spice (the index files it with black and white pepper; a shipped sense),
+    and `chili pepper`, which WordNet knows whole as a capsicum (`chili.n.02`, no kind of `pepper.n.03`), is not
+    filed with it by its head but by a category's name (`peppers`); a compound known only by its head still is."""
+    from foon2pddl.generalize.extend import assign
+
+    assert cook.resolution("pepper").senses == ("pepper.n.03",)
+    assert cook.filing("chili pepper").how == "name" and cook.categories_of("chili pepper") == ("peppers",)
+    assert assign(["chili pepper"], shipped_index(), filing_similarity(label_similarity.reader))[0].how == "head"
+    assert cook.filing("smoked pepper").how == "head"  # known by its head: a kind of it by its reading
+    assert cook("chili pepper", "jalapeno") >= 0.89 and cook("hot pepper", "jalapeno") >= 0.89
+    assert cook("hot pepper", "pepper") == 0.0 and cook("chili pepper", "pepper") == 0.0
+
+
+def test_a_label_equally_near_members_of_several_categories_is_in_each(cook):
+    """Rule 5's filing: `chili` is as near cayenne pepper (chili spices) as jalapeno (peppers), 0.957; it was
+    filed with the first by label order alone, and is now in both."""
+    filed = cook.filing("chili")
+    assert filed.how == "wordnet" and {filed.category, *filed.also} == {"chili spices", "peppers"}
+    assert set(cook.categories_of("chili")) == {"chili spices", "peppers"}
+    assert cook("chili", "jalapeno") >= 0.89 and cook("chili", "cayenne pepper") >= 0.89

@@ -1,9 +1,8 @@
 """The cook's similarity (mode `cook`, the default for substitutions): Wu-Palmer a cook would accept.
 
-The paper's rule (`similarity.LabelSimilarity`, mode `paper`) takes the best
-Wu-Palmer value over all kitchen senses of two labels, which scores banana~cilantro
-0.9 through their plant senses. This rule keeps the paper's composition (overrides,
-head nouns and modifiers, see `similarity.py`) and changes eight things:
+The paper's rule (`similarity.LabelSimilarity`, mode `paper`: best Wu-Palmer over all kitchen senses,
+banana~cilantro 0.9 through their plant senses). This rule keeps the paper's composition (overrides,
+head nouns and modifiers, `similarity.py`) and changes eight things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -23,18 +22,16 @@ head nouns and modifiers, see `similarity.py`) and changes eight things:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
    sauces are made from) is an ingredient, so vegetable broth~broth stands; a modifier
    WordNet tags mostly as an adjective (`senses.adjective`: green) is no food.
-5. Kin by the categories: a pair stands only if FOON-GEN's category index
-   (`categories.json`, hand-made) puts the two labels in one category or one in a
-   refinement of the other's (any of their categories), and scores 0 otherwise
-   (`category`): siblings (microwave~oven, fork~spoon), two compounds of one head sense
-   (bowl~food processor bowl) and a kind with a narrower kind alike (cheese~parmesan,
-   melting and hard cheeses; frying pan~muffin pan). A label in no category joins one
-   exactly as `categories --extend` files it (`extend.assign`: its head's category, a
-   category's name, else its nearest member's category at >= `extend.DEFAULT_MIN_SIMILARITY`;
-   a label that is a category's own name, in no category's members, is in that category;
-   each label on its own, so deterministic and independent of the other labels); a label
-   still in none is not constrained. WordNet says how close two things are; the
-   categories say which of them a cook swaps.
+5. Kin by the categories: a pair stands only if FOON-GEN's category index (`categories.json`,
+   hand-made) puts the two labels in one category or one in a refinement of the other's (any of
+   their categories), else 0 (`category`): siblings (microwave~oven, fork~spoon), two compounds of
+   one head sense (bowl~food processor bowl), a kind and a narrower kind (cheese~parmesan). A label
+   in no category joins one as `categories --extend` files it (`extend.assign`: its head's category,
+   a category's name, else its nearest member's at >= `extend.DEFAULT_MIN_SIMILARITY`), but in the
+   categories of all members as near, and by its head only when WordNet knows it as a kind of it
+   (`kind_of_head`); a category's own name is in that category; each label on its own, so
+   deterministic; a label still in none is not constrained. WordNet says how close two things are;
+   the categories say which a cook swaps.
 6. A filed label is a kind of its member (`sibling`): a label rule 5 files through one
    member (its head, or its nearest member other than a synonym, similarity < 1) stands
    only with a label whose sense is its own or a WordNet ancestor or descendant of it
@@ -54,14 +51,12 @@ head nouns and modifiers, see `similarity.py`) and changes eight things:
    chop~porkchop (3 kinds) and salad green~lettuce (18) stand. A label that is a category's own name
    and no category's member (cutlery) is a class too, and stands with no label (`bare_category`).
 
-Senses are read as in the paper's rule, except that a hyphenated label that is a WordNet lemma is
-read whole (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon,
-not some spoon known by its head).
+Senses are read as in the paper's rule, but a hyphenated WordNet lemma is read whole
+(`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon).
 
-The overrides table (`data/cook_overrides.json`, the format of `senses.parse_overrides`
-with `forbidden` pairs) fixes wrong senses (mint the herb, not the candy) and forbids
-pairs WordNet puts close that no cook swaps; a user file extends it (`extended`).
-Cost: per label one sense lookup; per sense pair one `deepest` call (set lookups).
+The overrides (`data/cook_overrides.json`, `senses.parse_overrides` with `forbidden` pairs) fix
+senses (mint the herb; pepper the spice, as the index files it) and forbid pairs WordNet puts close
+that no cook swaps; a user file extends them. Cost: per sense pair one `deepest` call.
 """
 
 from __future__ import annotations
@@ -166,7 +161,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers"
+RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -219,7 +214,7 @@ class CookSimilarity:
         if self.categories.is_category(label):  # a category's own name (cutlery), no member of any: that category
             return (label,)
         filed = self.filing(label)
-        return (filed.category,) if filed is not None and filed.category is not None else ()
+        return (filed.category, *filed.also) if filed is not None and filed.category is not None else ()
 
     def filing(self, label: str) -> Assignment | None:
         """How rule 5 files `label` (`extend.assign`); None for a label of the index, a member's or a category's
@@ -231,8 +226,17 @@ class CookSimilarity:
         if label not in self._filed:
             if self._filer is None:
                 self._filer = filing_similarity(self.reader, self.overrides)
-            self._filed[label] = assign([label], self.categories, sim=self._filer)[0]
+            self._filed[label] = assign([label], self.categories, sim=self._filer, head_ok=self.kind_of_head)[0]
         return self._filed[label]
+
+    def kind_of_head(self, label: str, head: str) -> bool:
+        """Whether rule 5 may file `label` by its head noun `head`: a whole WordNet term only as a kind of a head
+        sense (chili pepper, a capsicum, is no kind of pepper the spice); a label known by its head always."""
+        mine = self.resolution(label)
+        if mine.modifier is not None or not mine.senses:
+            return True
+        heads = set(self.resolution(head).senses)
+        return any(self._wup.ancestors(s) & heads for s in mine.senses)
 
     def bare_category(self, label: str) -> bool:
         """Whether `label` is a category's own name and no category's member (cutlery): a class (rule 8)."""

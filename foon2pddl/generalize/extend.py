@@ -14,7 +14,8 @@ Each unknown object label joins the category of the known label it is nearest to
    given (`cook.filing_similarity`: the cook mode's role senses and deepest common
    ancestor; no breadth rejection, since a category is meant to be broad, and no category
    rule, which would read the index being extended), at least `min_similarity` (default
-   0.65); ties broken by label order.
+   0.65); ties broken by label order (the categories of the other members as near are
+   listed, `Assignment.also`).
 
 A label with no WordNet sense, no known head and no category-name head stays unassigned
 (listed as such).
@@ -24,7 +25,7 @@ is otherwise unchanged. Cost: per unknown label, one similarity per known label.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from ..analysis.check_labels import naive_singular
@@ -44,6 +45,7 @@ class Assignment:
     via: str = ""
     similarity: float = 0.0
     how: str = ""  # head | name | wordnet | none
+    also: tuple[str, ...] = ()  # the categories of other members as near (wordnet), in label order
 
     def describe(self) -> str:
         if self.category is None:
@@ -82,10 +84,11 @@ def by_name(label: str, index: CategoryIndex, parts: dict[str, list[tuple[str, f
     return min(candidates, key=lambda c: (-len(c[1]), index.depth(c[0]), order[c[0]]))[0]
 
 
-def assign(labels: Iterable[str], index: CategoryIndex, sim,
-           min_similarity: float = DEFAULT_MIN_SIMILARITY) -> tuple[Assignment, ...]:
+def assign(labels: Iterable[str], index: CategoryIndex, sim, min_similarity: float = DEFAULT_MIN_SIMILARITY,
+           head_ok: Callable[[str, str], bool] | None = None) -> tuple[Assignment, ...]:
     """Assignments of the `labels` in no category of `index` (sorted by label); `sim(a, b)` ranks the known
-    labels (`cook.filing_similarity`, which the cook mode's rule 5 also files unknown labels by)."""
+    labels (`cook.filing_similarity`, which the cook mode's rule 5 also files unknown labels by). With
+    `head_ok`, a head noun files a label only when `head_ok(label, head)` (the cook mode: a kind of it)."""
     known = sorted({m for c in index.categories for m in c.members})
     todo = sorted({normalize_label(x) for x in labels} - set(known) - set(index.names) - {""})
     if not todo:
@@ -93,7 +96,8 @@ def assign(labels: Iterable[str], index: CategoryIndex, sim,
     parts = _name_parts(index)
     out = []
     for label in todo:
-        head = next((t for t in _tails(label) if index.choose(t) is not None), None)
+        head = next((t for t in _tails(label) if index.choose(t) is not None and (head_ok is None or head_ok(label, t))),
+                    None)
         if head is not None:
             out.append(Assignment(label, index.choose(head), head, 1.0, "head"))
             continue
@@ -101,13 +105,17 @@ def assign(labels: Iterable[str], index: CategoryIndex, sim,
         if named is not None:
             out.append(Assignment(label, named, named, 1.0, "name"))
             continue
-        best, value = "", 0.0
+        best, value, tied = "", 0.0, []
         for m in known:
             v = sim(label, m)
             if v > value:
-                best, value = m, v
+                best, value, tied = m, v, []
+            elif v == value and best:
+                tied.append(m)
         if best and value >= min_similarity:
-            out.append(Assignment(label, index.choose(best), best, value, "wordnet"))
+            first = index.choose(best)
+            also = tuple(dict.fromkeys(c for c in map(index.choose, tied) if c not in (None, first)))
+            out.append(Assignment(label, first, best, value, "wordnet", also))
         else:
             out.append(Assignment(label, None, best, value, "none"))
     return tuple(out)
