@@ -449,3 +449,25 @@ def test_an_object_the_unit_s_objects_are_in_leaves_its_holder_whole():
                                         bowl], done)
     assert [o.id for o in outcome.trace.objects if o.label == "bowl"] == ["bowl_1"]
     assert ("mixer", "bowl") in {(c, x) for c, x, _ in list_gaps(blend)}
+
+
+def test_a_topping_the_dish_and_its_holder_both_list_is_on_the_dish_in_the_holder():
+    # GEN, trial 10, goal 28 (0071-banana_pudding.txt:245): the scoop and pour takes the whipped cream out of its
+    # jar, gives it no output node, and leaves both the baking tray and the pudding in it listing it: the cream went
+    # into the tray beside the pudding, and the pudding, which the insert before (:233) made a holder (the wafer
+    # in it), listed a cream that was in the tray [claimed-twice]. A label both a role and a role in or on it
+    # newly list is in the inner one: the tray holds it through the pudding, one place for the cream.
+    tray = n("baking tray", contains("pudding"))
+    pudding = n("pudding", "incomplete", inside("baking tray"))
+    wafered = n("pudding", make_state("incomplete", "", ["vanilla wafer"]), inside("baking tray"))
+    insert = FunctionalUnit((tray, pudding, n("vanilla wafer", inside("box"))), Motion("insert"), (wafered,))
+    topped = n("pudding", contains("whipped cream"), inside("baking tray"))
+    scoop = FunctionalUnit((tray, n("jar", contains("whipped cream")), n("whipped cream", "chilled", inside("jar")),
+                            wafered), Motion("scoop and pour"),
+                           (n("baking tray", contains("pudding", "whipped cream")), topped))
+    outcome = clean_unit_plan([insert, scoop], [tray, pudding, n("vanilla wafer", inside("box")),
+                                                n("jar", contains("whipped cream")),
+                                                n("whipped cream", "chilled", inside("jar"))], topped)
+    cream, = (x for x in relational_roles(scoop) if x.role.label == "whipped cream")
+    assert cream.target.holder == "pudding"
+    assert any("whipped cream" in m and "pudding" in m for m in outcome.compiled.notes)

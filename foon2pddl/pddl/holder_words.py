@@ -6,14 +6,55 @@ gives a task's report lines with their units' file:line."""
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
 
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
-from ..model.pairing import unit_roles
+from ..model.pairing import Role, unit_roles
 from ..model.places import listed, places
 from .encoding import short_path, unit_where
 
-__all__ = ["aliased", "mismatches", "part_of", "renamed", "reported", "task_aliases"]
+__all__ = ["UnitWords", "aliased", "mismatches", "newly_listed", "part_of", "renamed", "reported", "takers", "task_aliases",
+           "unit_words"]
+
+
+@dataclass(frozen=True)
+class UnitWords:
+    """A unit's roles with their nodes read through its names (rule 0 of `holders`)."""
+
+    roles: tuple[Role, ...]
+    before: tuple[ObjectNode | None, ...]  # input nodes read through the unit's aliases
+    after: tuple[ObjectNode | None, ...]  # output nodes (input node when the unit gives none), read likewise
+
+
+@lru_cache(maxsize=1 << 14)
+def unit_words(unit: FunctionalUnit) -> UnitWords:
+    """The unit's roles and their nodes, read through `unit_aliases`."""
+    roles = unit_roles(unit)
+    alias = dict(unit_aliases(unit))
+    before = tuple(aliased(r.before, alias) for r in roles)
+    after = tuple(aliased(r.after, alias) if r.after is not None else before[k] for k, r in enumerate(roles))
+    return UnitWords(roles, before, after)
+
+
+@lru_cache(maxsize=1 << 14)
+def newly_listed(unit: FunctionalUnit) -> tuple[frozenset[str], ...]:
+    """Per role, the labels its output node lists and its input node does not (none without an output node),
+    read through the unit's aliases: what the unit puts into it."""
+    read = unit_words(unit)
+    return tuple(listed(read.after[k]) - listed(read.before[k]) if r.after is not None else frozenset()
+                 for k, r in enumerate(read.roles))
+
+
+def takers(unit: FunctionalUnit, label: str, but: int) -> list[int]:
+    """The roles other than `but` whose output node newly lists `label`, in role order, but those whose output
+    node is in or on another of them first: the label is in the inner one, and the outer holds it through that
+    (the whipped cream the scoop and pour leaves listed by both the baking tray and the pudding in it,
+    `0071-banana_pudding.txt:245`, is on the pudding)."""
+    read, into = unit_words(unit), [j for j, new in enumerate(newly_listed(unit)) if j != but and label in new]
+    inner = [j for j in into if {c for _, c in places(read.after[j])} & {read.roles[i].label for i in into if i != j}]
+    return inner + [j for j in into if j not in inner]
 
 
 def renamed(was: ObjectNode | None, now: ObjectNode | None, label: str, labels: Iterable[str]) -> bool:
@@ -57,7 +98,9 @@ def aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None
 
 def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
     """Names an output node newly lists that no role has (`bowl lists olive oil, read as green olive oil` by
-    rule 0, else `..., which no object of the unit is`), or places by another: `oil is in [pan], read as ...`."""
+    rule 0, else `..., which no object of the unit is`), or places by another: `oil is in [pan], read as ...`; and
+    a label an input-only role has that two roles newly list, one in or on the other (`takers`): `baking tray and
+    pudding both list whipped cream, and pudding is in [baking tray]: read as held by the pudding, ...`."""
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
     alias = dict(unit_aliases(unit))
@@ -69,6 +112,13 @@ def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:
         out += [f"{r.label} lists {x}, " + (f"read as {alias[x]}" if x in alias else "which no object of the unit is")
                 for x in sorted(new - labels)]
         out += [f"{r.label} is {rel} [{c}], read as {alias[c]}" for rel, c in places(r.after) if c in alias]
+    read = unit_words(unit)
+    for k, r in enumerate(roles):  # `takers`: listed by a holder and by what is in or on it, it is with the latter
+        into = takers(unit, r.label, k) if r.after is None and r.before is not None else []
+        for rel, c in places(read.after[into[0]]) if len(into) > 1 else ():
+            if c in {roles[j].label for j in into[1:]}:
+                out.append(f"{c} and {roles[into[0]].label} both list {r.label}, and {roles[into[0]].label} is {rel} "
+                           f"[{c}]: read as held by the {roles[into[0]].label}, which the {c} holds")
     return tuple(dict.fromkeys(out))
 
 

@@ -45,7 +45,10 @@ Rules, in order (each reads only the unit itself):
    (contains {heavy cream})` as output but not the cream. A role of label L with no output node moves when another
    role's output node lists L and its input node does not: it arrives in that role, `on` it where the unit's nodes
    say `on` (an implied node: its input node with the place replaced, `heavy cream (in [mixing bowl])`), unless that role is a product the unit makes
-   (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5). An output node
+   (`custard (contains {egg, milk})`): then it is an ingredient of it, `CONSUMED` (as in rule 5). Of two roles
+   newly listing L, one in or on the other, it arrives in the inner one, which the outer holds (`takers`: the
+   whipped cream the baking tray and the pudding in it list after the scoop, `0071-banana_pudding.txt:245`, is
+   on the pudding; reported, `holder_words.mismatches`). An output node
    whose only place word is a bare `on`, beside the one role that newly lists it, is `on` that role (`avocado (on,
    sliced)` put on the bread that lists it).
 4. **Fates.** An object whose holder changes `MOVES`, unless the holder it leaves still lists L afterwards (its
@@ -92,7 +95,7 @@ from ..model.foon import FunctionalUnit, ObjectNode, make_node
 from ..model.pairing import Role, unit_roles
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
-from .holder_words import aliased, part_of, renamed
+from .holder_words import UnitWords, newly_listed, part_of, renamed, takers, unit_words
 
 __all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "on_parts",
            "relational_roles", "unit_aliases", "unit_flows"]
@@ -167,34 +170,18 @@ def _holder(labels: list[str], nodes: list[ObjectNode | None], me: int, label: s
     return Place(rel, holder, pick)
 
 
-@dataclass(frozen=True)
-class _Reading:
-    roles: tuple[Role, ...]
-    before: tuple[ObjectNode | None, ...]  # input nodes read through the unit's aliases
-    after: tuple[ObjectNode | None, ...]  # output nodes (input node when the unit gives none), read likewise
-
-
-@lru_cache(maxsize=1 << 14)
-def _reading(unit: FunctionalUnit) -> _Reading:
-    roles = unit_roles(unit)
-    alias = dict(unit_aliases(unit))
-    before = tuple(aliased(r.before, alias) for r in roles)
-    after = tuple(aliased(r.after, alias) if r.after is not None else before[k] for k, r in enumerate(roles))
-    return _Reading(roles, before, after)
-
-
 @lru_cache(maxsize=1 << 14)
 def on_parts(unit: FunctionalUnit) -> tuple[tuple[ObjectNode, str], ...]:
     """(output node, holder label) for each object the unit places at a part of another role (rule 2: the bacon
     `on [bread]` is on the sandwich)."""
-    read, rels = _reading(unit), relational_roles(unit)
+    read, rels = unit_words(unit), relational_roles(unit)
     labels, given = [r.label for r in read.roles], _given(read)
     return tuple((r.after, labels[x.target.role]) for j, (r, x) in enumerate(zip(read.roles, rels, strict=True))
                  if r.after is not None and x.target is not None and x.target.role is not None and place_of(given[j])
                  and part_of(labels, read.before, given, j, place_of(given[j])[1]) == x.target.role)
 
 
-def _given(read: _Reading) -> list[ObjectNode | None]:
+def _given(read: UnitWords) -> list[ObjectNode | None]:
     """The output nodes of the unit's roles, read through its names (None: the unit gives the role none)."""
     return [read.after[k] if r.after is not None else None for k, r in enumerate(read.roles)]
 
@@ -207,16 +194,16 @@ def _keeps(node: ObjectNode | None, label: str) -> bool:
 @lru_cache(maxsize=1 << 14)
 def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
     """The unit's roles with their fates, output nodes and holders (see the module doc)."""
-    read = _reading(unit)
+    read = unit_words(unit)
     roles, before, after = read.roles, read.before, read.after
     labels = [r.label for r in roles]
-    newly = _newly_listed(unit)
+    newly = newly_listed(unit)
     out_nodes: list[ObjectNode | None] = [r.after for r in roles]
     implied: dict[int, int] = {}
     mixed: set[int] = set()  # roles listed by a product the unit makes: ingredients of it
     for k, r in enumerate(roles):  # rule 3
         if r.after is None and r.before is not None:
-            into = _takers(unit, r.label, k)
+            into = takers(unit, r.label, k)
             if into and roles[into[0]].before is None:
                 mixed.add(k)
             elif into:
@@ -228,7 +215,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                   for k in range(len(roles))]
     for k, r in enumerate(roles):  # rule 3: a bare `on` beside the one role newly listing it is on that role
         bare = [st for st in (r.after.states if r.after is not None else ()) if st.label == "on" and not place_state(st)]
-        into = [j for j in _takers(unit, r.label, k) if roles[j].before is not None]
+        into = [j for j in takers(unit, r.label, k) if roles[j].before is not None]
         if bare and r.before is not None and place_of(after[k]) is None and place_of(before[k]) and len(into) == 1:
             out_nodes[k], read_after[k] = (moved_into(make_node(r.label, [st for st in node.states if st not in bare]),
                                                       labels[into[0]], Relation.ON) for node in (r.after, after[k]))
@@ -250,9 +237,9 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
                else _holder(labels, read_after, k, r.label, place_of(read_after[k])))
         if (src is not None and src == dst and src.role is not None and r.after is not None
                 and place_of(after[k]) == place_of(before[k]) and r.label not in listed(after[src.role])):
-            takers = [j for j in _takers(unit, r.label, k) if roles[j].before is not None]
-            if len(takers) == 1:  # a stale place (the unit left it as it was): the one role taking it in holds it
-                dst = Place(dst.relation, labels[takers[0]], takers[0])
+            taking = [j for j in takers(unit, r.label, k) if roles[j].before is not None]
+            if len(taking) == 1:  # a stale place (the unit left it as it was): the one role taking it in holds it
+                dst = Place(dst.relation, labels[taking[0]], taking[0])
         if r.after is not None and dst is not None and dst.role is None and (
                 part := part_of(labels, before, _given(read), k, dst.holder)) is not None:
             dst = Place(dst.relation, labels[part], part)  # placed on a part of the one role taking it in
@@ -286,28 +273,14 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
 def gained(unit: FunctionalUnit) -> frozenset[tuple[str, str]]:
     """(holder label, content label) for every label a role's output node lists and its input node does not:
     what the unit puts into something (names read through the unit's aliases)."""
-    return frozenset((r.label, x) for r, new in zip(unit_roles(unit), _newly_listed(unit), strict=True) for x in new)
-
-
-@lru_cache(maxsize=1 << 14)
-def _newly_listed(unit: FunctionalUnit) -> tuple[frozenset[str], ...]:
-    """Per role, the labels its output node lists and its input node does not (none without an output node),
-    read through the unit's aliases: what the unit puts into it."""
-    read = _reading(unit)
-    return tuple(listed(read.after[k]) - listed(read.before[k]) if r.after is not None else frozenset()
-                 for k, r in enumerate(read.roles))
-
-
-def _takers(unit: FunctionalUnit, label: str, but: int) -> list[int]:
-    """The roles other than `but` whose output node newly lists `label`, in role order."""
-    return [j for j, new in enumerate(_newly_listed(unit)) if j != but and label in new]
+    return frozenset((r.label, x) for r, new in zip(unit_roles(unit), newly_listed(unit), strict=True) for x in new)
 
 
 @lru_cache(maxsize=1 << 14)
 def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
     """Rule 5: for every container role whose output node drops a label no role of the unit has, where what is
     of that label in it goes. O(r^2)."""
-    read = _reading(unit)
+    read = unit_words(unit)
     roles, before, after = read.roles, read.before, read.after
     labels = {r.label for r in roles}
     rels = relational_roles(unit)
@@ -318,7 +291,7 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
         if r.after is None or not describes_contents(after[h]):  # poured out whole (no output node, or one silent
             # about its contents: `bowl (dirty)`): what another role's output node newly lists follows
             for lab in sorted(listed(before[h]) - labels):
-                into = [j for j in _takers(unit, lab, h) if roles[j].before is not None]
+                into = [j for j in takers(unit, lab, h) if roles[j].before is not None]
                 if into:
                     out.append(Flow(lab, h, into[0]))
             continue
@@ -328,7 +301,7 @@ def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
         elsewhere = {x.role.label for x in rels if (x.source.holder != r.label if x.source is not None
                                                      else x.fate is Fate.CONSUMED)}
         for lab in sorted(listed(before[h]) - listed(after[h]) - (labels - elsewhere)):
-            into = _takers(unit, lab, h)
+            into = takers(unit, lab, h)
             out.append(Flow(lab, h, into[0] if into and roles[into[0]].before is not None else None))
     return tuple(out)
 
@@ -346,7 +319,7 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     `with [bowl]` as the blend's bowl leaves it). No plan can satisfy both words, so the task reports them and its replay
     does not check that pair. Names read through the unit's aliases; O(r^2) for r roles.
     """
-    read = _reading(unit)
+    read = unit_words(unit)
     roles = read.roles
     labels = {r.label for r in roles}
     out = []
@@ -377,7 +350,7 @@ def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     for node, holder in on_parts(unit):  # rule 2: placed on a part of another role (the bread of the sandwich)
         (rel, part), = places(node)[:1]
         out.append((holder, node.label, f"{node.label} is {rel} [{part}], which {holder} lists: read as {rel} the {holder}"))
-    for r, new in zip(roles, _newly_listed(unit), strict=True):
+    for r, new in zip(roles, newly_listed(unit), strict=True):
         out += [(r.label, x, f"{r.label} lists {x}, which no object of the unit is") for x in sorted(new - labels)]
         for label, node in outs:
             place = place_of(node)
@@ -390,11 +363,11 @@ def attached_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
     """The gaps of `list_gaps` that are no contradiction of FOON's words but a relation the encoding does not
     hold: a label C's output node newly lists while the unit leaves that object `attached to [C]` (FOON's labels
     agree; the task notes them as a relation not modelled, not as a label mismatch)."""
-    read = _reading(unit)
+    read = unit_words(unit)
     outs = [(r.label, read.after[k]) for k, r in enumerate(read.roles) if r.after is not None]
     return tuple(dict.fromkeys(
         (r.label, label, f"{r.label} lists {label}, which the unit leaves attached to [{r.label}]: a relation the "
          "encoding does not hold (only in and on), so the replay does not check it")
-        for r, new in zip(read.roles, _newly_listed(unit), strict=True) for label, node in outs
+        for r, new in zip(read.roles, newly_listed(unit), strict=True) for label, node in outs
         if label in new and place_of(node) is None
         and any(s.label == "attached to" and s.related == r.label for s in node.states)))
