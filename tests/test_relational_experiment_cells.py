@@ -6,7 +6,7 @@ from __future__ import annotations
 from node_words import contains, inside, n
 from relational_checks import clean_plan, clean_unit_plan
 
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
@@ -340,7 +340,7 @@ def test_a_kitchen_container_s_object_starts_in_the_node_the_counted_plan_takes_
 
     def start(planned):
         return implied_contents([Instance("bowl_1", "bowl", box)], {}, frozenset({"bowl"}), [chopped, peeled], paired,
-                                kitchen, planned)
+                                kitchen, planned)[0]
 
     assert start(frozenset({(box, peeled)})) == (peeled,)
     assert start(frozenset({(box, chopped)})) == (chopped,)  # the plan's pair, not the order of the nodes
@@ -413,22 +413,28 @@ def test_an_ingredient_consumed_into_what_the_unit_makes_in_its_holder_stays_lis
     assert [u.motion.label for u in outcome.tree.units] == ["pour", "cook", "flip"]  # not poured in again
 
 
-def test_an_object_a_kitchen_container_lists_under_another_name_never_starts_in_a_node_only_a_unit_makes():
-    # EXP, trial 4, goal 74 (0079-dalgona_coffee.txt:59): the kitchen's `mixing bowl (contains {hot water, instant
-    # coffee, sugar})` lists `sugar`, which the beat reads as its `brown sugar` (EXP's for refined sugar); the brown
-    # sugar added in it started in the beat's `brown sugar (in [mixing bowl])`, which only the pour makes, so the
-    # plan beat at once and FOON's tree did not validate [input not available]. It starts as the kitchen's brown
-    # sugar, placed there: `brown sugar (granulated, in [bowl])`.
+def _dalgona(*more):
+    """The dalgona coffee's pour (`0079-dalgona_coffee.txt:31`) and beat, planned from a kitchen with `more`."""
     beaten = n("bowl", contains("whipped coffee"))
     beat = FunctionalUnit((n("bowl", contains("coffee", "sugar")), n("coffee", inside("bowl")),
                            n("brown sugar", inside("bowl"))), Motion("beat"),
                           (beaten, n("whipped coffee", inside("bowl"))))
     pour = FunctionalUnit((n("bowl", contains("coffee")), n("coffee", inside("bowl")), n("jar", contains("brown sugar")),
                            n("brown sugar", "granulated", inside("jar"))), Motion("pour"),
-                          (n("bowl", contains("coffee", "sugar")), n("brown sugar", inside("bowl"))))
-    outcome = clean_unit_plan([pour, beat], [n("bowl", contains("coffee", "sugar")), n("coffee", inside("bowl")),
-                                             n("bowl", contains("coffee")), n("jar", contains("brown sugar")),
-                                             n("brown sugar", "granulated", inside("jar"))], beaten)
+                          (n("bowl", contains("coffee", "sugar")), n("brown sugar", inside("bowl"))),
+                          (make_source("0079-dalgona_coffee.txt", 31),))
+    return clean_unit_plan([pour, beat], [n("bowl", contains("coffee", "sugar")), n("coffee", inside("bowl")),
+                                          n("bowl", contains("coffee")), n("jar", contains("brown sugar")),
+                                          n("brown sugar", "granulated", inside("jar")), *more], beaten)
+
+
+def test_an_object_a_kitchen_container_lists_under_another_name_never_starts_in_a_node_only_a_unit_makes():
+    # EXP, trial 4, goal 74 (0079-dalgona_coffee.txt:59): the kitchen's `mixing bowl (contains {hot water, instant
+    # coffee, sugar})` lists `sugar`, which the beat reads as its `brown sugar` (EXP's for refined sugar); the brown
+    # sugar added in it started in the beat's `brown sugar (in [mixing bowl])`, which only the pour makes, so the
+    # plan beat at once and FOON's tree did not validate [input not available]. It starts as the kitchen's brown
+    # sugar, placed there: `brown sugar (granulated, in [bowl])`.
+    outcome = _dalgona()
     assert [u.motion.label for u in outcome.tree.units] == ["pour", "beat"]
     assert n("brown sugar", "granulated", inside("bowl")) in {s.node for s in outcome.trace.initial}
 
@@ -471,3 +477,14 @@ def test_a_topping_the_dish_and_its_holder_both_list_is_on_the_dish_in_the_holde
     cream, = (x for x in relational_roles(scoop) if x.role.label == "whipped cream")
     assert cream.target.holder == "pudding"
     assert any("whipped cream" in m and "pudding" in m for m in outcome.compiled.notes)
+
+
+def test_a_kitchen_node_read_as_placed_in_a_kitchen_container_is_reported():
+    # review rv44-4: the brown sugar above starts as the kitchen's node of its label placed in the bowl (the first in
+    # order of several); that takes the kitchen's node for another, and the task reports it at the pour's file:line
+    outcome = _dalgona(n("brown sugar", "packed", inside("bag")))
+    assert n("brown sugar", "granulated", inside("bowl")) in {s.node for s in outcome.trace.initial}
+    assert ("label mismatch: 0079-dalgona_coffee.txt:31: the kitchen's bowl (contains {coffee, sugar}) lists brown "
+            "sugar, whose node there, brown sugar (in [bowl]), this pour makes: read as the kitchen's brown sugar "
+            "(granulated, in [jar]), placed in it (the first in order of 2 kitchen nodes of brown sugar; no unit of the "
+            "task takes any there)") in outcome.compiled.notes

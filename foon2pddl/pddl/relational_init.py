@@ -164,7 +164,8 @@ def _reached(starts: Iterable[ObjectNode | None], follows: dict[ObjectNode, froz
 def implied_contents(instances: list[Instance], alias: dict[str, str], placed: frozenset[str],
                      nodes: Iterable[ObjectNode], paired: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset(),
                      kitchen: frozenset[ObjectNode] = frozenset(),
-                     planned: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()) -> tuple[ObjectNode, ...]:
+                     planned: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()) -> tuple[
+                         tuple[ObjectNode, ...], tuple[tuple[ObjectNode, ObjectNode, tuple[ObjectNode, ...]], ...]]:
     """What kitchen containers list but the task has too few objects in (`pot (contains {water})`, no water in
     any unit; three bowls of `contains {water}` and one `water (in [bowl])`): for every container (a label of
     `placed`, the labels nodes name as a place) that starts listing a label, one object of that label placed
@@ -182,8 +183,11 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     makes that node: then a kitchen node of the label placed there (EXP's `brown sugar (granulated, in [mixing
     bowl])` for the kitchen's `mixing bowl (contains {..., sugar})`, whose `sugar` the dalgona coffee's beat reads
     as its brown sugar, `0079-dalgona_coffee.txt:59`: not its `brown sugar (in [mixing bowl])`, which the pour
-    makes). In container-name order; O(n^2)."""
-    out = []
+    makes; the first in order of several such kitchen nodes: none is a node any unit of the task takes there, or
+    it would be one of the task's nodes above, so the object only stands for the list). Also, per such reading,
+    (the container's node, the node only a unit makes, the kitchen nodes it was read as, the one taken first),
+    for the task's note. In container-name order; O(n^2)."""
+    out, read = [], []
     fits: dict[tuple[str, str], list[ObjectNode]] = {}
     for n in sorted(nodes):
         place = place_of(n)
@@ -209,9 +213,11 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
             known = sorted((n for n in found if n in said), key=lambda n: (n not in starts, n not in moved, (h.start, n) not in paired,
                                                                (h.start, n) not in planned, n))
             bare = make_node(item, [make_state("in", h.label)])  # else a kitchen node of it there, when that one only a unit makes
-            there = sorted(moved_into(k, h.label) for k in kitchen if k.label == item) if bare in found else []
-            out.append(known[0] if known else (there or [bare])[0])
-    return tuple(out)
+            there = sorted((moved_into(k, h.label), k) for k in kitchen if k.label == item) if bare in found else []
+            out.append(known[0] if known else there[0][0] if there else bare)
+            if there and not known:
+                read.append((h.start, bare, tuple(k for _, k in there)))
+    return tuple(out), tuple(read)
 
 
 def unplaced(node: ObjectNode) -> ObjectNode:
@@ -290,13 +296,15 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
     task's units put into holders of which label, `holder_init`; `kitchen`: the task's kitchen nodes, which judge what
     the kitchen says, and `plan`: the units of the plan the counts are derived from, `implied_contents`). Also the task's aliases
     (`holder_words.task_aliases`), the labels a node places something in or on, the network's nodes the
-    holders the kitchen implies start in, and the notes on where those start (`started_notes`)."""
+    holders the kitchen implies start in, and the notes on where those start (`started_notes`) and of the kitchen
+    nodes `implied_contents` reads as placed in a container (the unit that makes, else takes, the node the
+    container's list could not start in)."""
     instances = counted_objects(table, counts)
     alias = dict(task_aliases(units, have, [x.start for x in instances]))
     placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
     paired, planned = (frozenset((a, b) for u in us for a in u.inputs for b in u.inputs) for us in (units, plan))
-    instances = named_objects(table, instances, implied_contents(instances, alias, placed, nodes, paired,
-                                                                        kitchen, planned))
+    contents, read = implied_contents(instances, alias, placed, nodes, paired, kitchen, planned)
+    instances = named_objects(table, instances, contents)
     missing = sorted(set(named) - {x.label for x in instances})
     instances = named_objects(table, instances, [make_node(c, []) for c in missing])  # `in [muff]`: FOON only
     quiet = silent | frozenset(missing)  # a place only FOON names says nothing it holds
@@ -308,4 +316,10 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
         # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
         # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
         instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
-    return instances, alias, placed, frozenset(implied) & nodes, told
+    return instances, alias, placed, frozenset(implied) & nodes, told + tuple(
+        (u, f"the kitchen's {box.describe()} lists {bare.label}, whose node there, {bare.describe()}, this {u.motion.label} "
+         f"{'makes' if bare in u.outputs else 'takes'}: read as the kitchen's {ks[0].describe()}, placed {place_of(bare)[0]} it"
+         + (f" (the first in order of {len(ks)} kitchen nodes of {bare.label}; no unit of the task takes any there)"
+            if len(ks) > 1 else "")) for box, bare, ks in read
+        for u in [next((u for u in (*units, *plan) if bare in u.outputs), None) or next(
+            (u for u in (*units, *plan) if bare in u.inputs), None)] if u is not None)
