@@ -53,6 +53,7 @@ from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
 from .count_returns import with_returns
+from .count_reuse import reused
 from .count_together import makers_together
 
 #: A unit's object roles, for counting what passes through each node.
@@ -72,6 +73,8 @@ class InstanceCounts:
     #: The unfolded plan (unit indexes in firing order, each firing `firings` times) when every count is
     #: the derived one (no stated, overridden or extra count changed it) and no unit is in it twice; () otherwise.
     unfolded: tuple[int, ...] = ()
+    #: an object the plan leaves in a kitchen node serves a later taker there (`count_reuse`)
+    reused: bool = False
 
     def labels(self) -> dict[str, int]:
         """Label -> total instances."""
@@ -92,7 +95,7 @@ class InstanceCounts:
         at_node = tuple(sorted((Counter(dict(self.at_node)) | Counter(dict(other.at_node))).items()))
         unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
         same = (at_node, unmade) == (self.at_node, self.unmade)
-        return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else ())
+        return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused)
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
@@ -147,9 +150,11 @@ def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) ->
 
 
 def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], target: ObjectNode,
-           roles_of: RolesOf = unit_roles) -> tuple[Counter[ObjectNode], Counter[str], dict[int, int]]:
+           roles_of: RolesOf = unit_roles, steps: list[tuple[int, int]] | None = None
+           ) -> tuple[Counter[ObjectNode], Counter[str], dict[int, int]]:
     """(demand per kitchen node, not-yet-made instances per label, firings per unit) of `plan` (module doc);
-    `roles_of` gives a unit's object roles (an encoding with other rules of what becomes of objects)."""
+    `roles_of` gives a unit's object roles (an encoding with other rules of what becomes of objects); `steps`
+    gets (unit, times) per firing unit, last first."""
     consumed: Counter[ObjectNode] = Counter()
     read: set[ObjectNode] = {target}
     created: Counter[str] = Counter()
@@ -165,6 +170,8 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
         if times == 0:
             continue
         firings[u] = firings.get(u, 0) + times
+        if steps is not None:
+            steps.append((u, times))
         for n in makes:
             consumed.pop(n, None)
             read.discard(n)
@@ -199,13 +206,15 @@ def start_places(foon: Foon, units: Iterable[int], kitchen: frozenset[ObjectNode
 def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNode],
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
-                  roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False) -> InstanceCounts:
+                  roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
+                  reuse: bool = False) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
     `extra`: instances added to every place (for measuring the cost of too many); `roles_of`: a unit's
     object roles (default `pairing.unit_roles`, the `instances` encoding's); `together`: `delete_free_plan`'s;
-    `stitched`: the task reads inputs no unit makes as `input_stitch` does (`count_returns.with_returns`).
+    `stitched`: the task reads inputs no unit makes as `input_stitch` does (`count_returns.with_returns`);
+    `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -221,7 +230,12 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     else:
         plans = tuple(dict.fromkeys(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again)
                                     for again in (False, stitched)))  # stitched: a unit fired again, when fewer
-        unfolds = [unfold(foon, p, kitchen, found[1], roles_of) for p in plans]
+        steps: list[list[tuple[int, int]]] = [[] for _ in plans]
+        unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
+        reuse = reuse and not (stated or overrides or extra)
+        if reuse:  # objects left in a kitchen node serve later takers
+            unfolds = [(r, c, f) if (r := reused(foon, s[::-1], kitchen, found[1], roles_of)) is not None else (a, c, f)
+                       for (a, c, f), s in zip(unfolds, steps, strict=True)]
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
         nodes |= set(at_kitchen)
@@ -241,7 +255,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
              and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
     once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
     unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
-    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded)
+    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None)
 
 
 def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectNode],
@@ -267,7 +281,7 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         if k < 2:
             continue
         taken = sum(t for _, t in takers.get(node, ()))
-        if taken + (node in readers) != k:
+        if taken + (node in readers) != k and not (counts.reused and k < taken + (node in readers)):
             out.append(f"{k} x {node.describe()}: the count stated for it")
             continue
         where = []
@@ -278,7 +292,8 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         more = len(takers.get(node, ())) - shown
         out.append(f"{k} x {node.describe()}: in the plan the counts are derived from (FOON's, unfolded), each of "
                    + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
-                   + " takes one out of that state and no unit puts one back"
+                   + (" takes one out of that state, and one a unit leaves in it again serves a later taker"
+                      if k < taken + (node in readers) else " takes one out of that state and no unit puts one back")
                    + ("; one stays for a unit that only reads it" if node in readers else ""))
     return tuple(out)
 

@@ -128,7 +128,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             if key not in memo:
                 memo[key] = derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen, inp.candidates,
                                           stated=stated, overrides=overrides, roles_of=roles_of, together=True,
-                                          stitched=True)
+                                          stitched=True, reuse=True)
             return memo[key]
         counts = count(inp.foon, st.own)
         counts = counts.widest(count(st.through, st.needed)) if st.origin and narrow is None else counts
