@@ -67,3 +67,16 @@ def test_an_object_left_in_a_kitchen_node_that_names_its_holder_does_not_stand_f
     # `garlic (in [bowl], peeled)`; the counted plan leaves another garlic in that node earlier, in a bowl of its
     # own: taken for the kitchen's, no garlic started in the pour's bowl and no state applied the pour
     clean_dish_plan(DATA / "ACT-0080-caesar_salad.txt")
+
+
+def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves():
+    from foon2pddl.pddl.instance_counts import InstanceCounts, count_reasons
+
+    units = _units(sifted=False)  # the scoop takes an empty cup; fired 3 times on 2 cups, one came back
+    counts = InstanceCounts(((EMPTY, 2),), (), ((1, 3),), reused=True)
+    assert count_reasons(Foon(units), counts, KITCHEN) == (
+        "2 x measuring cup (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop x3 "
+        "takes one out of that state, 1 of them one a unit left in it again",)
+    # without the reuse, fewer objects than takings can only be a stated count
+    stated = InstanceCounts(((EMPTY, 2),), (), ((1, 3),))
+    assert count_reasons(Foon(units), stated, KITCHEN) == ("2 x measuring cup (empty): the count stated for it",)

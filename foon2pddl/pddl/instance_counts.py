@@ -292,7 +292,7 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         more = len(takers.get(node, ())) - shown
         out.append(f"{k} x {node.describe()}: in the plan the counts are derived from (FOON's, unfolded), each of "
                    + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
-                   + (" takes one out of that state, and one a unit leaves in it again serves a later taker"
+                   + (f" takes one out of that state, {taken + (node in readers) - k} of them one a unit left in it again"
                       if k < taken + (node in readers) else " takes one out of that state and no unit puts one back")
                    + ("; one stays for a unit that only reads it" if node in readers else ""))
     return tuple(out)
