@@ -14,7 +14,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.model.containment import is_inference, with_containment
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, ObjectNode, dedupe_units, make_node, make_state
+from foon2pddl.model.dedupe import dedupe_units
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, ObjectNode, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import validate
 from foon2pddl.retrieval import retrieve

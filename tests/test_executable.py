@@ -6,7 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from physical_world import node as n
 
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, dedupe_units
+from foon2pddl.model.dedupe import dedupe_units
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import TaskTree
 from foon2pddl.planners.executable import Verdict, needed, schedule

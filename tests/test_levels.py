@@ -7,7 +7,8 @@ from foon_strategies import foons, full, nodes
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, State, dedupe_units, make_node, make_state
+from foon2pddl.model.dedupe import dedupe_units
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, State, make_node, make_state
 from foon2pddl.model.levels import check_level, project, project_node, project_unit
 
 BOWL = make_node("bowl", [make_state("contains", "", ["salt", "water"]), make_state("on", "stove")],

@@ -20,13 +20,12 @@ from foon2pddl.errors import FoonInputError, FoonSyntaxError
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.io.jsonio import parse_json
 from foon2pddl.io.parser import parse_file, parse_text
+from foon2pddl.model.dedupe import dedupe_units, deduped
 from foon2pddl.model.foon import (
     Foon,
     FunctionalUnit,
     Motion,
     Source,
-    dedupe_units,
-    deduped,
     make_node,
     make_state,
     node_table,

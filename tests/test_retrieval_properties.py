@@ -16,7 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import foon2pddl.retrieval.greedy as greedy_module
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, dedupe_units, make_node, make_state
+from foon2pddl.model.dedupe import dedupe_units
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import validate
 from foon2pddl.retrieval import Rates, blockers, reachable, retrieve

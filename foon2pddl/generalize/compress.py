@@ -3,7 +3,7 @@
 Each label (node label, related object, ingredient) becomes the one category
 `CategoryIndex.choose` gives it (the most specific listing it, first in file
 order on ties); a label in no category stays as it is. Units that become
-identical are merged (`model.foon.dedupe_units`, provenance joined). A kitchen and a
+identical are merged (`model.dedupe.dedupe_units`, provenance joined). A kitchen and a
 goal are abstracted the same way, so native retrieval runs unchanged on GEN.
 Two objects of one category in one unit become one node or ingredient: the
 compression the seed paper reports, and why `pddl/encode_lifted.py` keeps concrete
@@ -19,7 +19,8 @@ from dataclasses import dataclass
 
 from ..model.constraints import node_labels
 from ..model.containment import is_auxiliary
-from ..model.foon import Foon, ObjectNode, dedupe_units, make_state
+from ..model.dedupe import dedupe_units
+from ..model.foon import Foon, ObjectNode, make_state
 from ..model.goal import Goal, GoalSpec, spec_of_node
 from ..model.kitchen import Kitchen
 from .categories import CategoryIndex

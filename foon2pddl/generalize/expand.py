@@ -7,7 +7,7 @@ label, related objects, ingredient lists; `substitute.py`). A label the unit
 already mentions is not substituted in (two objects would become one). Copies
 mark their sources `expanded_from=<original label>` and `expanded_to=<its replacement>`
 (so a tree can say which label replaced which); duplicates (also of
-original units) are removed with `merge.dedupe_units`, originals first, so an
+original units) are removed with `dedupe.dedupe_units`, originals first, so an
 original unit keeps its unmarked provenance. One substitution per copy, as in
 the seed paper, with what the unit makes from the object renamed along
 (`substitute.product_renames`): squeezing a lime makes `lime juice`, not the
@@ -26,7 +26,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ..errors import UsageError
-from ..model.foon import Foon, FunctionalUnit, dedupe_units
+from ..model.dedupe import dedupe_units
+from ..model.foon import Foon, FunctionalUnit
 from ..model.kitchen import Kitchen
 from .modes import DEFAULT_MODE, mode_matrix
 from .similarity import SimilarityMatrix

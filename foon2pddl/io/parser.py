@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
+from ..model.dedupe import network_with_table
 from ..model.foon import (
     Foon,
     FunctionalUnit,
@@ -26,7 +27,6 @@ from ..model.foon import (
     make_node,
     make_source,
     make_unit,
-    network_with_table,
 )
 from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state, plain_state
 

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from ..errors import UsageError
 from .bulk import bulk
-from .foon import Foon, FunctionalUnit, ObjectNode, State, deduped
+from .dedupe import deduped
+from .foon import Foon, FunctionalUnit, ObjectNode, State
 
 LEVELS = (1, 2, 3)
 

@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from .foon import Foon, deduped
+from .dedupe import deduped
+from .foon import Foon
 from .levels import project
 
 

@@ -52,7 +52,8 @@ from ..generalize.grounding import ground, input_labels
 from ..generalize.relevance import Ordering, relevant, shared_grounding
 from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
 from ..model.constraints import node_labels
-from ..model.foon import Foon, FunctionalUnit, ObjectNode, dedupe_units
+from ..model.dedupe import dedupe_units
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
