@@ -63,6 +63,13 @@ class State(_HashOnce):
 
     __hash__ = _HashOnce.__hash__
 
+    def __eq__(self, other: object) -> bool:
+        """The generated equality (label, related, ingredients), answered at once for the same object."""
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self is other or (self.label == other.label and self.related == other.related
+                                 and self.ingredients == other.ingredients)
+
     def _identity(self) -> tuple:
         return (self.label, self.related, self.ingredients)
 
@@ -92,6 +99,15 @@ class ObjectNode(_HashOnce):
     dish: int | None = field(default=None, compare=False)
 
     __hash__ = _HashOnce.__hash__
+
+    def __eq__(self, other: object) -> bool:
+        """The generated equality (label and states), answered at once for the same object (a network's nodes
+        recur: membership tests mostly meet the very object) or for two hashes that differ (a role's node before
+        and after the unit), without building tuples."""
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self is other or (hash(self) == hash(other) and self.label == other.label
+                                 and self.states == other.states)
 
     def _identity(self) -> tuple:
         return (self.label, self.states)

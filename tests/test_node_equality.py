@@ -1,0 +1,48 @@
+"""`ObjectNode` and `State` equality: the hand-written `__eq__` (a fast path for the same object and for differing
+hashes) must agree with the dataclass equality it replaces, which compares the identity fields only."""
+
+from __future__ import annotations
+
+import dataclasses
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from foon2pddl.model.foon import ObjectNode, State, make_node, make_state
+
+# A few short words so that equal and near-equal nodes are drawn often.
+_WORDS = st.sampled_from(["bowl", "egg", "whisk", "in", "whole"])
+_STATES = st.builds(lambda label, related, ingredients: make_state(label, related, ingredients),
+                    _WORDS, st.sampled_from(["", "bowl"]), st.lists(_WORDS, max_size=2))
+_NODES = st.builds(lambda label, states, goal, dish: make_node(label, states, goal=goal, dish=dish),
+                   _WORDS, st.lists(_STATES, max_size=2), st.booleans(), st.sampled_from([None, 0, 1]))
+
+
+def _fields(x: ObjectNode | State) -> tuple:
+    """The values of the fields dataclass equality compares (`compare=True`), read independently of `__eq__`."""
+    return tuple(getattr(x, f.name) for f in dataclasses.fields(x) if f.compare)
+
+
+@given(_NODES, _NODES)
+def test_node_equality_is_field_equality(a, b):
+    assert (a == b) == (_fields(a) == _fields(b))
+    assert (a != b) == (_fields(a) != _fields(b))
+    assert a == a  # noqa: PLR0124 - the same-object fast path
+    if a == b:
+        assert hash(a) == hash(b)
+
+
+@given(_STATES, _STATES)
+def test_state_equality_is_field_equality(a, b):
+    assert (a == b) == (_fields(a) == _fields(b))
+    if a == b:
+        assert hash(a) == hash(b)
+
+
+def test_equality_ignores_marks_and_other_types():
+    a = make_node("egg", [make_state("whole")], goal=True, dish=1)
+    b = make_node("egg", [make_state("whole")])
+    assert a == b and hash(a) == hash(b)
+    assert a != make_node("egg", [make_state("cracked")])
+    assert a != "egg" and make_state("whole") != ("whole", "", ())
+    assert (a == object()) is False
