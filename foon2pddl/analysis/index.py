@@ -23,6 +23,10 @@ from ..model.memo import per_network
 T = TypeVar("T")
 
 
+#: Kitchens whose node ids `FoonIndex.kitchen_ids` keeps (a trial's kitchen and the readings of it a goal's task makes).
+KITCHENS_KEPT = 8
+
+
 @dataclass(frozen=True, eq=False)
 class FoonIndex:
     """Node ids, unit inputs/outputs as id tuples, consumers and makers per node, unit ranks."""
@@ -44,12 +48,15 @@ class FoonIndex:
         return sorted({i for i in map(get, nodes) if i is not None})
 
     def kitchen_ids(self, kitchen: frozenset[ObjectNode]) -> tuple[int, ...]:
-        """`ids(kitchen)`, remembered for the last kitchen object seen (retrievals repeat it)."""
-        hit = self._memo.get("kitchen")
-        if hit is not None and hit[0] is kitchen:
-            return hit[1]
-        ids = tuple(self.ids(kitchen))
-        self._memo["kitchen"] = (kitchen, ids)
+        """`ids(kitchen)`, remembered for the last `KITCHENS_KEPT` kitchens, by value (retrievals repeat one kitchen
+        object; the relational encoding builds equal kitchens anew, several per goal)."""
+        kept = self._memo.setdefault("kitchens", {})
+        key = kitchen if isinstance(kitchen, frozenset) else frozenset(kitchen)
+        ids = kept.get(key)
+        if ids is None:
+            ids = kept[key] = tuple(self.ids(key))
+            while len(kept) > KITCHENS_KEPT:
+                kept.pop(next(iter(kept)))
         return ids
 
     def positions(self, foon: Foon) -> dict[int, int]:
