@@ -77,3 +77,16 @@ def test_wide_units_sort_as_tuples(side):
     """A unit listing many nodes, beside units listing prefixes of them (a shorter tuple sorts first)."""
     units = [FunctionalUnit(tuple(side[:k]), Motion("m"), tuple(side[k:] or side[:1])) for k in range(len(side) + 1)]
     assert_matches(Foon(tuple(reversed(units))))
+
+
+@settings(max_examples=60, deadline=None)
+@given(crowded(), st.lists(st.integers(0, 15), min_size=1, max_size=30))
+def test_kitchen_ids_answers_each_kitchen_by_value(foon, picks):
+    """`kitchen_ids` keeps several kitchens by value: asked for kitchens in any order, equal ones built anew
+    (another frozenset, a set) and more than it keeps, it answers what `ids` computes for each."""
+    ix = index.build_index(foon)
+    nodes_ = sorted({n for u in foon.units for n in (*u.inputs, *u.outputs)})
+    for pick in picks:
+        kitchen = frozenset(n for i, n in enumerate(nodes_) if pick >> i & 1)
+        assert ix.kitchen_ids(kitchen) == tuple(ix.ids(kitchen)), pick
+        assert ix.kitchen_ids(frozenset(set(kitchen))) == tuple(ix.ids(kitchen)), pick
