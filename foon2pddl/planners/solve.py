@@ -35,6 +35,7 @@ from ..pddl.prune import drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
 from ..pddl.restore import fewer, returns, with_restore
+from ..pddl.split_actions import Split, split
 from ..pddl.task import PlanningTask, candidate_alternatives
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
@@ -153,7 +154,9 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     and without those no reachable state applies (`pddl.holder_reach`: a holder and its content in states no
     plan has together); when that leaves the goal out of reach, no planner runs and the outcome is `unsolvable`
     (planner `holder reachability`, the message naming the units). A `relational` task's interchangeable objects are
-    taken in one order (`pddl.interchangeable`: the planner does not try every bowl of a stack). The outcome keeps the task as compiled.
+    taken in one order (`pddl.interchangeable`: the planner does not try every bowl of a stack), and
+    an action whose parameters multiply is split into a chain of small parts (`pddl.split_actions`, not with
+    `optimal`), joined back into the one action in the plan. The outcome keeps the task as compiled.
     A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
     valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
     what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
@@ -180,12 +183,16 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         if unreached is not None:
             _add(timings, "write", time.perf_counter() - t0)
             return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), task, timings=timings)
+        chains = Split(smaller)
         if smaller.encoding == "relational":
-            smaller = in_order(smaller)  # interchangeable objects taken in one order: the same plans, less to search
+            if not optimal:  # an action whose parameters multiply: a chain of small parts, joined back below
+                chains = split(smaller)
+            smaller = in_order(chains.task)  # interchangeable objects taken in one order: the same plans, less to search
         domain_text, problem_text = render(smaller)
         _add(timings, "write", time.perf_counter() - t0)
         result = run_planner(smaller, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
                              optimal=optimal, time_limit=limit, search=search)
+        result = replace(result, plan=chains.join(result.plan))
         return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
 
     try:
