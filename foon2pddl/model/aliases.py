@@ -26,7 +26,10 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     so, where the unit's nodes put objects one other role's node on that side lists, means that role (the
     drinking glass that lists the lemonade `in [cup]`; the skillet of `bread (in [pan])`). Not a name a
     container lists before and after the unit while the unit's nodes list the role's label itself: the bowl's
-    `brown sugar`, there before the `sugar` is poured in, is no other name for it. Sorted; O(n r^2).
+    `brown sugar`, there before the `sugar` is poured in, is no other name for it. A name only an input's place
+    uses, of an object the unit leaves in or on one role whose input node's `contains` list names it, means that
+    role (the sprinkle's pie `on [baking try]`, left `on [baking tray]` beside `baking tray (contains {apple
+    pie})`, `0086-apple_turnover.txt:523`). Sorted; O(n r^2).
     """
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
@@ -55,4 +58,11 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
             takers |= {r.label for n, r in side if r.label not in put and listed(n) & put}
         if len(takers) == 1 and any(name in (c for _, c in places(n)) for n, _ in sides[1]):
             out[name] = takers.pop()
+    for name in sorted(set(users) - labels - lists - set(out)):  # an input's place only: where the unit leaves it
+        held = {(r.label, c) for r in roles if r.after is not None and name in (c for _, c in places(r.before))
+                for _, c in places(r.after)[:1]}
+        if len(held) == 1 and (x := next(iter(held)))[1] in labels and any(  # a `contains` list, no wrapping
+                r.label == x[1] and r.before is not None and any(s.label == "contains" and x[0] in s.ingredients
+                                                                 for s in r.before.states) for r in roles):
+            out[name] = x[1]
     return tuple(sorted(out.items()))

@@ -17,7 +17,9 @@ keeps K, which FOON's kitchen has; each reading is reported with the unit's file
 and drops. A word of K naming only objects P's unit leaves in or on it, in the node every unit taking K takes
 them in, is that object lying there, which P says by its own word (`_laid_words`: the unwrap's `bowl (contains
 {pizza dough}, wrapped {plastic wrap})` with `plastic wrap (on [bowl])`, read as the pick-and-place's `bowl
-(contains {pizza dough}, covered)`, which leaves that wrap there).
+(contains {pizza dough}, covered)`, which leaves that wrap there). Of several such P, the one a unit makes that
+takes what the units taking K take in it; K's list is read with each label every unit taking K takes on an object it takes in K as that
+object (`_held_in`: the remove's `oven (contains {apple pie}, on)` is the bake's `oven (contains {baking tray}, on)`).
 """
 
 from __future__ import annotations
@@ -66,12 +68,12 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     for k in full:
         if k not in taking:  # no unit of the task takes K
             continue
-        items, takers = read(listed(k)), taking[k]
+        items, takers = read(_held_in(k, taking[k], read(listed(k)))), taking[k]
         taken = {x for u in takers for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
             continue  # what K holds the kitchen has, or nothing of it is taken
-        found = {}
+        found, makers_of = {}, {}
         rest, where = _rest(k), places(k)
         for p, u in _outputs_of(makers, k.label):  # the cheap tests first: a label's outputs are many in FOON-GEN
             if k in u.inputs or not _nested(where, places(p)):  # what a unit makes of K is K after it, not K
@@ -86,9 +88,25 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
             before = frozenset().union(*(read(listed(i)) for i in u.inputs if i.label == k.label))
             if not (says - kept) & (roles | before):
                 found.setdefault(p, u)
+                makers_of.setdefault(p, []).append(u)
+        if len(found) > 1:  # of several, those whose unit takes what the units taking K take in it
+            found = {p: v[0] for p, us in makers_of.items()
+                     if (v := [u for u in us if any(t in u.inputs for t in taken)])} or found
         if len(found) == 1:
             out[k] = next(iter(found.items()))
     return out | _taken_off(taking, kitchen, makers, made)
+
+
+def _held_in(k: ObjectNode, takers: Sequence[FunctionalUnit], items: frozenset[str]) -> frozenset[str]:
+    """K's list with each item every unit taking K takes in or on one object it takes in K's label read as that
+    object: the apple turnover's remove (`0086-apple_turnover.txt:614`) takes `oven (contains {apple pie}, on)`
+    with `apple pie (cooked, on [baking tray])` and `baking tray (contains {apple pie}, in [oven])`."""
+    def holder(x: str, u: FunctionalUnit) -> str | None:
+        at = {p[1] for i in u.inputs if i.label == x and (p := place_of(i)) is not None}
+        inner = {i.label for i in u.inputs if i.label in at and (p := place_of(i)) is not None and p[1] == k.label}
+        return next(iter(inner)) if len(at) == 1 and len(inner) == 1 else None
+    return frozenset(h if takers and (h := holder(x, takers[0])) is not None
+                     and all(holder(x, u) == h for u in takers) else x for x in items)
 
 
 def _laid(k: ObjectNode, u: FunctionalUnit, takers: Sequence[FunctionalUnit]) -> list[ObjectNode]:
