@@ -295,21 +295,20 @@ def test_the_french_toast_subgraph_cracks_the_egg_not_the_measuring_cup(encoding
 
 
 def test_the_default_skill_plan_falls_back_to_instances_when_the_relational_encoding_finds_none_and_says_so():
-    # 0086 (apple turnover): the relational task has no plan (the remove takes `oven (on, contains {apple pie})`,
-    # the bake leaves `oven (on, contains {baking tray})`; it had no relaxed solution until the cut's apple was read
-    # as the one the pick-and-place left (drops whole), and holder reachability now answers unsolvable), the instances one
-    # solves; `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a skill plan
-    # (0036, 0050, then ACT-0009 were the example until relational readings solved them or brought them to search)
+    # 0082 (cheese pizza) from the base kitchen: the relational task has no plan (the pour at 0082:240 needs the
+    # bowl of fermented dough, which no reachable state holds: holder reachability answers unsolvable), the
+    # instances one solves; `plan --skills` answered `unsolvable` where `plan --encoding instances --skills` had a
+    # skill plan (0036, 0050, ACT-0009, then 0086 were the example until relational readings solved them)
     from conftest import SUBGRAPHS
 
-    path = str(SUBGRAPHS / "0086-apple_turnover.txt")
-    goal = ("apple pie (contains {apple, brown sugar, butter, cinnamon, dough, egg wash, salt, sugar, water}, cooked, "
-            "on [plate])")
-    result = run(path, "--goal", goal, "--skills", "--time-limit", "20")
+    path = str(SUBGRAPHS / "0082-homemade_cheese_pizza.txt")
+    goal = ("cheese pizza (contains {flour, mozzarella, olive oil, pizza sauce, salt, sugar, water, yeast}, "
+            "on [plate])", "--kitchen", "base")
+    result = run(path, "--goal", *goal, "--skills", "--time-limit", "20")
     assert result.exit_code == 0 and "skill replay valid" in result.stdout, result.output
     assert "note: the relational encoding found no plan (" in result.stderr, result.stderr
     assert "under the instances encoding" in result.stderr
-    asked = run(path, "--goal", goal, "--skills", "--encoding", "relational", "--time-limit", "5")
+    asked = run(path, "--goal", *goal, "--skills", "--encoding", "relational", "--time-limit", "5")
     assert asked.exit_code == 1 and "encoding found no plan" not in asked.stderr, asked.output  # asked for: no fallback
 
 
