@@ -24,7 +24,7 @@ import signal
 import tempfile
 import time
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 
 MARK = "FOON2PDDL_RUN"
 SCOPE_MARK = "FOON2PDDL_SCOPE"
@@ -174,29 +174,52 @@ def _interpreter_helpers() -> set[int]:
     return pids
 
 
+#: Tries at removing a command's directory: a process killed while it wrote there (a worker between the scans
+#: and its SIGKILL) can leave a file in it after a removal, so it is killed again and the removal repeated.
+REMOVALS = 20
+
+
 @contextmanager
 def command_scope() -> Iterator[str]:
-    """Run a command inside a private TMPDIR and a process mark (see the module doc); yields the TMPDIR."""
+    """Run a command inside a private TMPDIR and a process mark (see the module doc); yields the TMPDIR.
+
+    The clean-up is registered before the signals held while the directory is made are let through, so a
+    SIGINT or SIGTERM that arrived meanwhile (delivered as the block ends) still finds it run."""
     from ..io.interrupts import signals_deferred
 
     token, started = new_token(), _now_ticks()
     saved = {k: os.environ.get(k) for k in ("TMPDIR", SCOPE_MARK)}
     saved_tempdir = tempfile.tempdir
-    with signals_deferred():
-        scope = tempfile.mkdtemp(prefix="foon2pddl-")
-        os.environ["TMPDIR"], os.environ[SCOPE_MARK] = scope, token
-        tempfile.tempdir = scope
-    try:
-        yield scope
-    finally:
+    with ExitStack() as stack:
         with signals_deferred():
-            keep = _interpreter_helpers()
-            _kill([p for p in descendants(os.getpid(), started) if p not in keep])
-            kill_marked(token, SCOPE_MARK)  # orphans: daemons, children of workers that died first
-            for key, value in saved.items():
-                if value is None:
-                    os.environ.pop(key, None)
-                else:
-                    os.environ[key] = value
-            tempfile.tempdir = saved_tempdir
+            scope = tempfile.mkdtemp(prefix="foon2pddl-")
+            stack.callback(_leave_scope, scope, token, started, saved, saved_tempdir)
+            os.environ["TMPDIR"], os.environ[SCOPE_MARK] = scope, token
+            tempfile.tempdir = scope
+        yield scope
+
+
+def _leave_scope(scope: str, token: str, started: int, saved: dict[str, str | None], saved_tempdir: str | None) -> None:
+    """`command_scope`'s exit: kill what the command started, restore TMPDIR, remove the directory."""
+    from ..io.interrupts import signals_deferred
+
+    keep = _interpreter_helpers()
+
+    def kill_started() -> None:
+        _kill([p for p in descendants(os.getpid(), started) if p not in keep])
+        kill_marked(token, SCOPE_MARK)  # orphans: daemons, children of workers that died first
+
+    with signals_deferred():
+        kill_started()
+        for key, value in saved.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
+        tempfile.tempdir = saved_tempdir
+        for _ in range(REMOVALS):
             shutil.rmtree(scope, ignore_errors=True)
+            if not os.path.lexists(scope):
+                break
+            kill_started()
+            time.sleep(0.02)
