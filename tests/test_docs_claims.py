@@ -520,6 +520,8 @@ def test_the_instances_physical_note_pddl_md_quotes_is_the_one_plan_prints(monke
     assert r.exit_code == 0, r.stderr
     pattern = re.compile(".*".join(re.escape(part) for part in quote.group(1).split("...")))
     assert any(pattern.fullmatch(line) for line in r.stderr.splitlines()), (quote.group(1), r.stderr)
+    # like every other note, it names the unit's file alone, not where the package is installed (stop 45's pass)
+    assert "first: 07-guacamole.foon:" in r.stderr, r.stderr
 
 
 def test_generalization_md_cook_successes_are_the_experiment_reports():

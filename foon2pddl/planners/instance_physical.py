@@ -43,13 +43,14 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 
 from ..model.foon import ObjectNode
 from ..model.pairing import Role, RoleKind
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..model.places import listed, places
+from ..pddl.encoding import short_path
 from ..pddl.task import PlanningTask
 from .physical_replay import replay
 
@@ -231,7 +232,7 @@ def replay_note(task: PlanningTask, trace: PhysicalTrace) -> tuple[str, ...]:
         return (f"not checked physically by the encoding, and its holders could not be inferred: {exc}",)
     if report.ok:
         return ()
-    n, steps = len(report.disagreements), len(trace.steps)
+    n, steps, first = len(report.disagreements), len(trace.steps), report.disagreements[0]
     return (f"not checked physically by the encoding: with holders inferred by tracking, the physical replay "
             f"finds {n} disagreement{'s' if n != 1 else ''} ({len(report.affected_steps)} of {steps} steps "
-            f"affected); first: {report.disagreements[0]}",)
+            f"affected); first: {replace(first, source=short_path(first.source))}",)
