@@ -169,3 +169,21 @@ def test_goal_spec_needs_exactly_one_source(tmp_path):
     with pytest.raises(UsageError, match="unbalanced"):
         goal_spec("onion: in [bowl", None)
     assert load_goal("onion: chopped", None, FOON).candidates == (node("onion", "chopped"),)
+
+
+def test_an_unknown_goal_names_the_command_listing_this_networks_goals():
+    """Stop 45's pass: `plan --network gen --goal beverage` (GEN's label is `beverages`) said '`foon2pddl goals`
+    lists every goal', which lists the regular network's goals; each network's error names its own listing."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+
+    runner = CliRunner()
+    reg = runner.invoke(main, ["plan", "--goal", "beverage"])
+    assert reg.exit_code == 2 and "`foon2pddl goals` lists every goal" in reg.stderr, reg.stderr
+    gen = runner.invoke(main, ["retrieve", "--network", "gen", "--goal", "beverage"])
+    assert gen.exit_code == 2 and "`foon2pddl goals --network gen` lists every goal" in gen.stderr, gen.stderr
+    lifted = runner.invoke(main, ["plan", "--network", "gen", "--goal", "beverage"])
+    assert lifted.exit_code == 2 and "`foon2pddl goals --network gen` lists the categories" in lifted.stderr
+    listed = runner.invoke(main, ["goals", "--network", "gen"])
+    assert listed.exit_code == 0 and " beverages" in listed.stdout

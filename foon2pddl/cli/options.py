@@ -298,10 +298,11 @@ def lifted_goal(view, spec):
 
     try:
         return view.resolve(spec)
-    except FoonError:
+    except FoonError as exc:
         found = category_goal(spec, view.foon, load_index())
         if found is None:
-            raise
+            raise UsageError(f"{exc.message}; `foon2pddl goals --network gen` lists the categories it also takes, "
+                             "when they are made on this network") from None
         return found
 
 

@@ -79,7 +79,7 @@ class NetworkView:
         written, so `in [pan]` cannot match GEN's `in [pans]`), the error says which.
         """
         try:
-            return resolve_goal(self.map_goal(spec), self.foon)
+            return resolve_goal(self.map_goal(spec), self.foon, listing=self.listing)
         except UsageError as exc:
             index = self.index
             words = [spec.label, *(w for s in spec.states or () for w in (s.related, *s.ingredients) if w)]
@@ -89,6 +89,11 @@ class NetworkView:
             raise UsageError(f"{exc}; the category index files {', '.join(map(repr, kept))} in no category, so "
                              f"{self.name.upper()} keeps {'it' if len(kept) == 1 else 'them'} as written, and no "
                              f"{self.name.upper()} node names {'it' if len(kept) == 1 else 'them'}") from None
+
+    @property
+    def listing(self) -> str:
+        """The command that lists this network's goals (named in a goal error)."""
+        return "foon2pddl goals" + ("" if self.name == DEFAULT_NETWORK else f" --network {self.name}")
 
     def map_kitchen(self, kitchen: Kitchen) -> Kitchen:
         """Another (concrete) kitchen as this network sees it."""

@@ -125,17 +125,18 @@ def prefer_dishes(goal: Goal, foon: Foon) -> Goal:
     return goal
 
 
-def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None) -> Goal:
+def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None, *, listing: str = "foon2pddl goals") -> Goal:
     """The produced nodes of `foon` (at its level) that match `spec`.
 
-    Raises UsageError naming close labels when nothing matches.
+    Raises UsageError naming close labels when nothing matches, and `listing`, the command that lists this
+    network's goals (another network kind's view names its `--network`).
     """
     level = foon.level if level is None else level
     same_label = [n for n in foon.produced_by_label.get(spec.label, ()) if not is_auxiliary(n)]
     if not same_label:
         close = label_hints(spec.label, foon)
         hint = f"; close matches: {', '.join(close)}" if close else ""
-        hint += "; `foon2pddl goals` lists every goal"
+        hint += f"; `{listing}` lists every goal"
         if any(n.label == spec.label for n in foon.nodes):
             raise UsageError(f"no unit produces {spec.label!r} (it only occurs as an input){hint}")
         raise UsageError(f"unknown object label {spec.label!r}{hint}")
