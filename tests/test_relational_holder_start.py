@@ -48,3 +48,13 @@ def test_the_stove_under_the_kitchen_pot_starts_where_units_switch_it_on():
                "with [pot]), from which units leave stove (on, with [pot]), a node only units make: this cook and stir takes "
                "that with pot (contains {soup stock}, hot, on [stove]), which units make of it" in note
                for note in outcome.compiled.notes), outcome.compiled.notes
+
+
+def test_the_started_holder_note_names_only_an_object_at_that_holder():
+    """Review rv45: an onion in a bowl, which the cook and stir also takes, was named in the note as the object
+    the stove is under ("the stove the kitchen's onion (chopped, in [bowl]) is in starts in ...")."""
+    onion = n("onion", "chopped", inside("bowl"))
+    stir = FunctionalUnit((*STIR.inputs, onion), STIR.motion, STIR.outputs)
+    outcome = clean_unit_plan((HEAT, PLACE, TURN_ON, POUR, stir), (*KITCHEN, onion), SOUP, prune=False)
+    started = [note for note in outcome.compiled.notes if "the stove the kitchen's" in note]
+    assert started and all("the kitchen's pot (contains {water}" in note for note in started), started

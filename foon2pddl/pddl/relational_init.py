@@ -114,9 +114,9 @@ def started_notes(units: Sequence[FunctionalUnit], starts: Iterable[ObjectNode |
     """(unit, note) for each added holder (`implied`) that starts, not in a kitchen node, where `held_met` led it
     (`holder_init`): the unit that takes the node it is led to with the object, still where it started."""
     out = []
-    for h in implied:
+    for h in (h for h in implied if h not in kitchen):
         ahead = _reached([h], follows)
-        for x in sorted(n for n in starts if n is not None and h not in kitchen):
+        for x in sorted(n for n in starts if (p := place_of(n)) is not None and p[1] == h.label):  # x is at h
             near = _reached([x], follows)
             taken = [(near[a], i, a, m) for i, u in enumerate(units) for a in u.inputs if a in near
                      for m in u.inputs if m.label == h.label and m in ahead]
