@@ -156,6 +156,7 @@ def test_a_planner_refusing_action_costs_says_why_and_what_to_try():
     assert result.exit_code == 2 and result.stdout == ""
     reason = next((line for line in result.stderr.splitlines() if line.startswith("reason: ")), result.stderr)
     assert "action costs (`:action-costs`" in reason and "without --costs" in reason
+    assert "without the constraints file's rates" in reason  # rates give costs too (review rv45: no --costs there)
     assert "conditional effects" not in reason  # the tree encoding has none
 
 

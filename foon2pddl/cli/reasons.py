@@ -87,7 +87,8 @@ def unsupported_reason(task) -> str | None:
                     "`--encoding instances` have none")
     if ":action-costs" in task.requirements:
         said.append("the task has action costs (`:action-costs`; --costs or a constraints file's rates give them), "
-                    "which this planner may not support (pyperplan does not); plan without --costs")
+                    "which this planner may not support (pyperplan does not); plan without --costs and without the "
+                    "constraints file's rates, or with fd (the default), which takes costs")
     return "; ".join(said) or None
 
 

@@ -174,7 +174,7 @@ def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses, 
 
 def adjective(reader, word: str) -> bool:
     """Whether WordNet tags `word` more often as an adjective than as a noun (its lemmas' sense counts in the
-    tagged corpus): `green` 52 to 7 is an adjective, `peanut` and `garlic` (no tags) are not (the cook similarity's rule 4)."""
+    tagged corpus): `green` 26 to 7 is an adjective, `peanut` and `garlic` (no tags) are not (the cook similarity's rule 4)."""
     def tags(pos: str) -> int:
         return sum(x.count() for s in reader.synsets(word, pos) for x in s.lemmas() if x.name().lower() == word)
     return tags("a") > tags("n")
