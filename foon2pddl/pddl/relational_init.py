@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from functools import lru_cache
 
+from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
@@ -113,10 +114,10 @@ def started_notes(units: Sequence[FunctionalUnit], starts: Iterable[ObjectNode |
                   kitchen: frozenset[ObjectNode]) -> tuple[tuple[FunctionalUnit, str], ...]:
     """(unit, note) for each added holder (`implied`) that starts, not in a kitchen node, where `held_met` led it
     (`holder_init`): the unit that takes the node it is led to with the object, still where it started."""
-    out = []
+    out, named = [], {a: b for u in units for a, b in unit_aliases(u)}  # a place's name for its holder's label
     for h in (h for h in implied if h not in kitchen):
         ahead = _reached([h], follows)
-        for x in sorted(n for n in starts if (p := place_of(n)) is not None and p[1] == h.label):  # x is at h
+        for x in sorted(n for n in starts if (p := place_of(n)) is not None and named.get(p[1], p[1]) == h.label):
             near = _reached([x], follows)
             taken = [(near[a], i, a, m) for i, u in enumerate(units) for a in u.inputs if a in near
                      for m in u.inputs if m.label == h.label and m in ahead]
