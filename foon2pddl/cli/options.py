@@ -284,7 +284,12 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
     loss = level_loss(spec, level)
     if loss:
         click.echo(f"warning: {loss}", err=True)
-    found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file)
+    from ..generalize.network import DEFAULT_NETWORK
+
+    ctx = click.get_current_context(silent=True)
+    network = (ctx.params.get("network") if ctx is not None else None) or DEFAULT_NETWORK
+    listing = "foon2pddl goals" + ("" if network == DEFAULT_NETWORK else f" --network {network}")
+    found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file, listing)
     if found.preferred:
         click.echo("note: " + found.choice_note(asked=spec.label, network=view.name), err=True)
     return found

@@ -68,18 +68,19 @@ class NetworkView:
         known = set(reg.nodes)
         return [n for n in nodes if n not in known and self.map_node(n) not in own]
 
-    def goal(self, goal: str | None, goal_file: str | Path | None) -> Goal:
+    def goal(self, goal: str | None, goal_file: str | Path | None, listing: str = "foon2pddl goals") -> Goal:
         """The user's goal (its text, or a goal file) mapped and resolved against this network."""
-        return self.resolve(goal_spec(goal, goal_file))
+        return self.resolve(goal_spec(goal, goal_file), listing)
 
-    def resolve(self, spec: GoalSpec) -> Goal:
-        """A goal as the user wrote it, mapped and resolved against this network.
+    def resolve(self, spec: GoalSpec, listing: str = "foon2pddl goals") -> Goal:
+        """A goal as the user wrote it, mapped and resolved against this network (`listing`: the command listing
+        its goals, which an error names).
 
         When nothing matches and the goal names labels the category index files nowhere (GEN keeps them as
         written, so `in [pan]` cannot match GEN's `in [pans]`), the error says which.
         """
         try:
-            return resolve_goal(self.map_goal(spec), self.foon, listing=self.listing)
+            return resolve_goal(self.map_goal(spec), self.foon, listing=listing)
         except UsageError as exc:
             index = self.index
             words = [spec.label, *(w for s in spec.states or () for w in (s.related, *s.ingredients) if w)]
@@ -89,11 +90,6 @@ class NetworkView:
             raise UsageError(f"{exc}; the category index files {', '.join(map(repr, kept))} in no category, so "
                              f"{self.name.upper()} keeps {'it' if len(kept) == 1 else 'them'} as written, and no "
                              f"{self.name.upper()} node names {'it' if len(kept) == 1 else 'them'}") from None
-
-    @property
-    def listing(self) -> str:
-        """The command that lists this network's goals (named in a goal error)."""
-        return "foon2pddl goals" + ("" if self.name == DEFAULT_NETWORK else f" --network {self.name}")
 
     def map_kitchen(self, kitchen: Kitchen) -> Kitchen:
         """Another (concrete) kitchen as this network sees it."""
