@@ -5,20 +5,11 @@ from __future__ import annotations
 
 import os
 import shutil
-import signal
 import tempfile
 
 import pytest
 
 from foon2pddl.planners import cleanup
-
-
-class _Stopped(Exception):
-    """What the test's SIGTERM handler raises (the CLI's handler ends the command the same way)."""
-
-
-def _raise(signum, frame):
-    raise _Stopped
 
 
 @pytest.fixture
