@@ -132,6 +132,23 @@ def started_notes(units: Sequence[FunctionalUnit], starts: Iterable[ObjectNode |
     return tuple(out)
 
 
+def placed_notes(read: Iterable[tuple[ObjectNode, ObjectNode, Sequence[ObjectNode]]],
+                 units: Sequence[FunctionalUnit]) -> tuple[tuple[FunctionalUnit, str], ...]:
+    """(unit, note) per kitchen node `implied_contents` read as placed in a kitchen container (`read`: the box, the
+    node there no kitchen node is, the kitchen's nodes of that label), at the unit making that node, else taking it."""
+    out = []
+    for box, bare, ks in read:
+        u = next((u for u in units if bare in u.outputs), None) or next((u for u in units if bare in u.inputs), None)
+        if u is None:
+            continue
+        first = (f" (the first in order of {len(ks)} kitchen nodes of {bare.label}; no unit of the task takes any there)"
+                 if len(ks) > 1 else "")
+        out.append((u, f"the kitchen's {box.describe()} lists {bare.label}, whose node there, {bare.describe()}, this "
+                       f"{u.motion.label} {'makes' if bare in u.outputs else 'takes'}: read as the kitchen's "
+                       f"{ks[0].describe()}, placed {place_of(bare)[0]} it{first}"))
+    return tuple(out)
+
+
 def held_met(starts: Iterable[ObjectNode | None], follows: dict[ObjectNode, frozenset[ObjectNode]],
              paired: Iterable[tuple[ObjectNode, ObjectNode]]) -> dict[str, set[ObjectNode]]:
     """Per holder label, the nodes of it a unit first takes with a node objects in `starts` reach where they are
@@ -317,10 +334,4 @@ def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit],
         # an added holder that cannot list what it holds (no lists at level 2; a bowl `in [bowl]` is not
         # held by itself) leaves those objects standing free: `_` are the holders a third pass would add
         instances, _ = holder_init(named_objects(table, instances, implied), alias, quiet)
-    return instances, alias, placed, frozenset(implied) & nodes, told + tuple(
-        (u, f"the kitchen's {box.describe()} lists {bare.label}, whose node there, {bare.describe()}, this {u.motion.label} "
-         f"{'makes' if bare in u.outputs else 'takes'}: read as the kitchen's {ks[0].describe()}, placed {place_of(bare)[0]} it"
-         + (f" (the first in order of {len(ks)} kitchen nodes of {bare.label}; no unit of the task takes any there)"
-            if len(ks) > 1 else "")) for box, bare, ks in read
-        for u in [next((u for u in (*units, *plan) if bare in u.outputs), None) or next(
-            (u for u in (*units, *plan) if bare in u.inputs), None)] if u is not None)
+    return instances, alias, placed, frozenset(implied) & nodes, told + placed_notes(read, (*units, *plan))
