@@ -16,8 +16,8 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
     assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2",
-                                        "lemmas3", "lemmas4"}
-    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4")
+                                        "lemmas3", "lemmas4", "lemmas5"}
+    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5")
     later = ("outside", "unsampled", *lemma_batches)
     assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
     assert {p.source for p in pairs if p.split not in later} == {
@@ -54,3 +54,20 @@ def test_score_counts_precision_and_recall_of_good_pairs():
     s = score(pairs, lambda x, y: x == "a")
     assert (s.accepted, s.good_accepted, s.good, s.bad_accepted) == (2, 1, 2, 1)
     assert s.precision()[0] == 0.5 and s.recall()[0] == 0.5
+
+
+def test_lemma_batches_draw_as_drawn_and_lemmas5_reaches_the_more_tool_roots():
+    """`lemmas4` found only 14 unused tool lemmas under `TOOLS`; `MORE_TOOLS` joins them from `lemmas5` on only."""
+    from bench.similarity_lemmas import MORE_TOOLS, N_FOOD, N_TOOLS, TOOLS, _name, _pool, draw_labels
+    from foon2pddl.generalize import wordnet
+
+    reader, shared = wordnet.reader(), SEARCH_INPUTS.parent
+    reference = set(reference_vocabulary())
+    pairs = read_pairs()
+    for split in ("lemmas", "lemmas2", "lemmas3", "lemmas4"):  # every lemma a labelled pair uses was drawn again
+        labelled = {x for p in pairs if p.split == split for x in (p.a, p.b)} - reference
+        assert labelled and labelled <= set(draw_labels(reader, shared, split)), split
+    tools = draw_labels(reader, shared, "lemmas5")[N_FOOD:]
+    old = {_name(reader, s) for s in _pool(reader, TOOLS)}
+    more = {_name(reader, s) for s in _pool(reader, MORE_TOOLS)}
+    assert len(tools) == N_TOOLS and set(tools) - old and set(tools) <= old | more
