@@ -15,7 +15,7 @@ from pathlib import Path
 
 from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, shipped_index
 from foon2pddl.generalize.cook import filing_similarity
-from foon2pddl.generalize.extend import assign
+from foon2pddl.generalize.extend import file_labels
 from foon2pddl.io.inputs import load_network
 
 from .harness import Context
@@ -44,7 +44,7 @@ def run(ctx: Context) -> None:
     least = min(coverage(_labels([f]), full).percent for f in files)
     ctx.report(AREA, "least coverage of a shared subgraph (shipped index)", least, "%", f"{len(files)} subgraphs")
     small, only = held_out_index(ctx.shared)
-    found = [a for a in assign(only, small, filing_similarity()) if a.category is not None]
+    found = [a for a in file_labels(only, small, filing_similarity()) if a.category is not None]
 
     def top(name: str | None) -> str | None:
         return (name, *full.ancestors(name))[-1] if name else None

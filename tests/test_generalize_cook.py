@@ -136,7 +136,7 @@ def test_a_label_in_no_category_is_filed_as_categories_extend_files_it(cook, lab
     """Rule 5 for a label the index lacks: the category `extend.assign` (`categories --extend`) files it in,
     so a pair the hand-made index would reject is rejected without it too (bottle~jug: storage containers
     and pitchers); `extend=False` leaves the label unconstrained (the rule before)."""
-    from foon2pddl.generalize.extend import assign
+    from foon2pddl.generalize.extend import file_labels
 
     full = shipped_index()
     small = CategoryIndex(tuple(Category(c.name, c.parent, c.description, tuple(m for m in c.members if m != "jug"))
@@ -145,14 +145,14 @@ def test_a_label_in_no_category_is_filed_as_categories_extend_files_it(cook, lab
     loose = CookSimilarity(label_similarity.reader, categories=small, extend=False)
     assert not small.of("jug") and full.of("jug") == ("pitchers and jugs",)
     files = filing_similarity(label_similarity.reader)
-    assert filed.categories_of("jug") == tuple(a.category for a in assign(["jug"], small, files)) == (
+    assert filed.categories_of("jug") == tuple(a.category for a in file_labels(["jug"], small, files)) == (
         "pitchers and jugs",)
     assert loose("bottle", "jug") >= 0.89 and loose.categories_of("jug") == ()
     assert filed("bottle", "jug") == 0.0 and filed.explain("bottle", "jug").rejected == "category"
     assert kin(small, "jug", "pitcher", filed.categories_of) and not kin(small, "jug", "bottle", filed.categories_of)
     for label in ("sieve", "goblet"):  # the shipped index lacks them
         assert not full.of(label)
-        assert cook.categories_of(label) == tuple(a.category for a in assign([label], full, files)) != ()
+        assert cook.categories_of(label) == tuple(a.category for a in file_labels([label], full, files)) != ()
 
 
 def test_a_label_naming_a_category_is_a_class_that_stands_with_nothing(cook, label_similarity):
@@ -312,12 +312,13 @@ def test_a_modifier_wordnet_tags_mostly_as_an_adjective_is_no_food(cook):
 def test_a_whole_wordnet_term_is_filed_by_its_head_only_as_a_kind_of_it(cook, label_similarity):
     """Rule 5's filing: `pepper` is the spice (the index files it with black and white pepper; a shipped sense),
     and `chili pepper`, which WordNet knows whole as a capsicum (`chili.n.02`, no kind of `pepper.n.03`), is not
-    filed with it by its head but by a category's name (`peppers`); a compound known only by its head still is."""
-    from foon2pddl.generalize.extend import assign
+    filed with it by its head but by a category's name (`peppers`); a compound known only by its head still is
+    (`categories --extend` files it so too: `extend.file_labels`)."""
+    from foon2pddl.generalize.extend import file_labels
 
     assert cook.resolution("pepper").senses == ("pepper.n.03",)
     assert cook.filing("chili pepper").how == "name" and cook.categories_of("chili pepper") == ("peppers",)
-    assert assign(["chili pepper"], shipped_index(), filing_similarity(label_similarity.reader))[0].how == "head"
+    assert file_labels(["chili pepper"], shipped_index(), filing_similarity(label_similarity.reader))[0].how == "name"
     assert cook.filing("smoked pepper").how == "head"  # known by its head: a kind of it by its reading
     assert cook("chili pepper", "jalapeno") >= 0.89 and cook("hot pepper", "jalapeno") >= 0.89
     assert cook("hot pepper", "pepper") == 0.0 and cook("chili pepper", "pepper") == 0.0

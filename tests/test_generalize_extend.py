@@ -9,7 +9,7 @@ from click.testing import CliRunner
 from foon2pddl.cli import main
 from foon2pddl.generalize.categories import Category, CategoryIndex, coverage, parse_index, shipped_index
 from foon2pddl.generalize.cook import filing_similarity
-from foon2pddl.generalize.extend import assign, by_name, extended_index, index_json
+from foon2pddl.generalize.extend import assign, by_name, extended_index, file_labels, index_json
 
 FORGOTTEN = ("lime", "strawberry", "salad bowl", "cayenne pepper")
 
@@ -22,14 +22,16 @@ def _without(index: CategoryIndex, labels) -> CategoryIndex:
 def test_forgotten_labels_find_their_categories_again(label_similarity):
     full = shipped_index()
     small = _without(full, FORGOTTEN)
-    found = {a.label: a for a in assign([*FORGOTTEN, "lemon", "xyzzy plorb"], small, filing_similarity(label_similarity.reader))}
+    found = {a.label: a for a in file_labels([*FORGOTTEN, "lemon", "xyzzy plorb"], small,
+                                             filing_similarity(label_similarity.reader))}
     assert set(found) == {*FORGOTTEN, "xyzzy plorb"}  # known labels are not reassigned
     assert found["lime"].category == full.choose("lime") == "lemons and limes" and found["lime"].how == "name"
     assert found["strawberry"].category == full.choose("strawberry") == "berries"
     assert found["strawberry"].how == "wordnet"
     assert found["salad bowl"].how == "head" and found["salad bowl"].category == full.choose("bowl")
-    cayenne = found["cayenne pepper"].category
-    assert cayenne is not None and "seasonings" in (cayenne, *full.ancestors(cayenne))
+    # WordNet's cayenne pepper (the ground pods, the capsicum) is no kind of the index's pepper, the spice: it joins
+    # `peppers` by that category's name, not `ground peppers` by its head (as the cook mode files it, since rv45-5)
+    assert (found["cayenne pepper"].category, found["cayenne pepper"].how) == ("peppers", "name")
     assert found["xyzzy plorb"].category is None and found["xyzzy plorb"].how == "none"
     bigger = extended_index(small, found.values())
     assert coverage(FORGOTTEN, bigger).percent == 100.0
@@ -60,7 +62,7 @@ def test_a_hand_is_not_filed_with_the_tools(label_similarity):
     read it as the body part, which is close to no tool, so an index without a place for it leaves it out
     (listed for review) instead of making it a cutting tool."""
     small = CategoryIndex(tuple(c for c in shipped_index().categories if "hand" not in c.members))
-    (found,) = assign(["hand"], small, filing_similarity(label_similarity.reader))
+    (found,) = file_labels(["hand"], small, filing_similarity(label_similarity.reader))
     assert found.category is None and found.how == "none"
 
 
@@ -78,3 +80,23 @@ def test_a_label_ending_in_a_category_name_joins_that_category():
     assert by_name("wild berry", ix) == "berries" and by_name("sauce", ix) == "sauces"
     (found,) = assign(["banana pudding"], ix, sim=lambda a, b: 0.0)
     assert (found.category, found.how) == ("puddings and custards", "name")
+
+
+def test_cli_extend_files_a_label_as_the_cook_mode_does(tmp_path, label_similarity):
+    """`categories --extend` and the cook mode's rule 5 file an unknown label one way (`extend.file_labels`):
+    `chili pepper`, a whole WordNet term that is a capsicum, is no kind of the index's `pepper` (the spice),
+    so neither files it by its head (review rv45-5: the CLI filed it with ground peppers, the cook mode in
+    `peppers`)."""
+    from foon2pddl.generalize.cook import CookSimilarity
+
+    foon = tmp_path / "chili.txt"
+    foon.write_text("//\nO1\tchili pepper\t1\nS1\twhole\nO2\tknife\t0\nS2\tclean\n"
+                    "M1\tslice\tAssumed\tAssumed\nO1\tchili pepper\t0\nS3\tsliced\n//\n", encoding="utf-8")
+    out = tmp_path / "index.json"
+    r = CliRunner().invoke(main, ["categories", "--extend", str(foon), "-o", str(out)])
+    assert r.exit_code == 0, r.stderr
+    lines = r.stderr.splitlines()
+    rows = {line.split("\t")[0]: line.split("\t") for line in lines[lines.index("label\tcategory\tvia\tsimilarity\thow") + 1:-1]}
+    cook = CookSimilarity(label_similarity.reader)
+    assert (rows["chili pepper"][1], rows["chili pepper"][4]) == (cook.categories_of("chili pepper")[0], "name") == (
+        "peppers", "name")

@@ -69,12 +69,12 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
     index = load_index(categories)
     if extend:
         from ..generalize.cook import filing_similarity
-        from ..generalize.extend import assign, extended_index, index_json
+        from ..generalize.extend import extended_index, file_labels, index_json
 
         net = read_network(paths)
         labels = [n.label for n in net.foon.nodes]
         with slow_step("filing the object labels in no category (through WordNet)"):
-            found = assign(labels, index, filing_similarity(), min_similarity=min_similarity)
+            found = file_labels(labels, index, filing_similarity(), min_similarity)
         bigger = extended_index(index, found)
         emit(index_json(bigger, "Extended by foon2pddl categories --extend: review the assignments."), output)
         click.echo("label\tcategory\tvia\tsimilarity\thow", err=True)

@@ -69,7 +69,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .extend import Assignment, assign
+from .extend import Assignment, file_labels
 from .senses import Overrides, Resolution, adjective, kitchen_senses, parse_overrides, resolve
 from .similarity import Evidence
 
@@ -226,7 +226,7 @@ class CookSimilarity:
         if label not in self._filed:
             if self._filer is None:
                 self._filer = filing_similarity(self.reader, self.overrides)
-            self._filed[label] = assign([label], self.categories, sim=self._filer, head_ok=self.kind_of_head)[0]
+            self._filed[label] = file_labels([label], self.categories, self._filer)[0]
         return self._filed[label]
 
     def kind_of_head(self, label: str, head: str) -> bool:

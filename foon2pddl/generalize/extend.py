@@ -17,6 +17,10 @@ Each unknown object label joins the category of the known label it is nearest to
    0.65); ties broken by label order (the categories of the other members as near are
    listed, `Assignment.also`).
 
+A whole WordNet term joins its head's category only when it is a kind of the head (`file_labels`, the one
+way `categories --extend` and the cook mode's rule 5 file labels: chili pepper, a capsicum, is no kind of
+the spice pepper, so it joins `peppers` by that category's name).
+
 A label with no WordNet sense, no known head and no category-name head stays unassigned
 (listed as such).
 Every assignment is returned with its evidence for review (`Assignment`); the index
@@ -119,6 +123,14 @@ def assign(labels: Iterable[str], index: CategoryIndex, sim, min_similarity: flo
         else:
             out.append(Assignment(label, None, best, value, "none"))
     return tuple(out)
+
+
+def file_labels(labels: Iterable[str], index: CategoryIndex, files, min_similarity: float = DEFAULT_MIN_SIMILARITY
+                ) -> tuple[Assignment, ...]:
+    """How `categories --extend` and the cook mode's rule 5 file unknown labels, one way: `assign` with
+    `files` (`cook.filing_similarity`) ranking the members and a head noun filing a whole WordNet term only
+    as a kind of it (`files.kind_of_head`: chili pepper, a capsicum, is no kind of the spice pepper)."""
+    return assign(labels, index, files, min_similarity, head_ok=files.kind_of_head)
 
 
 def extended_index(index: CategoryIndex, assignments: Iterable[Assignment]) -> CategoryIndex:
