@@ -225,6 +225,25 @@ def test_gen_goals_listed_are_goals_of_plan_network_gen(tmp_path):
     assert unknown.exit_code == 2 and "unknown object label" in unknown.stderr
 
 
+def test_a_bare_gen_category_goal_means_the_dish_goals_marks():
+    """Stop 46's pass, item 9 tried again: `goals --network gen` marks the lemonade in a drinking vessel as the
+    dish and `retrieve --network gen --goal beverages` reads the bare category so (item 6), but `plan --network
+    gen --goal beverages` planned the pitcher's lemonade (7 units, the cheaper candidate) without a word."""
+    listed = run("goals", "--network", "gen")
+    dish = next(line for line in listed.stdout.splitlines()
+                if line.startswith("yes") and line.split()[2:4] == ["*", "beverages"])
+    assert "in [drinking vessels]" in dish
+    retrieved = run("retrieve", "--network", "gen", "--goal", "beverages")
+    assert "in [drinking vessels]): 9 units" in retrieved.stdout
+    for command in ("plan", "compile"):
+        r = run(command, "--network", "gen", "--goal", "beverages", *(["-o", "out"] if command == "compile" else []))
+        assert r.exit_code == 0, r.stderr
+        assert "note: goal 'beverages' read as the recipe's dish: `lemonade (contains {lemon juice, sugar, water}, " \
+               "in [drinking glass])`" in r.stderr, r.stderr
+    planned = run("plan", "--network", "gen", "--goal", "beverages")
+    assert "in [drinking glass]): 9 units" in planned.stdout, planned.stdout
+
+
 # -- 6. a bare label means the dish ------------------------------------------------------------------
 
 #: Salmon thawed in a bowl (one unit) on the way to the recipe's dish, salmon baked on a plate.

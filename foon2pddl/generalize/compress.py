@@ -21,7 +21,7 @@ from ..model.constraints import node_labels
 from ..model.containment import is_auxiliary
 from ..model.dedupe import dedupe_units
 from ..model.foon import Foon, ObjectNode, make_state
-from ..model.goal import Goal, GoalSpec, spec_of_node
+from ..model.goal import Goal, GoalSpec, prefer_dishes, spec_of_node
 from ..model.kitchen import Kitchen
 from .categories import CategoryIndex
 from .readings import node_readings
@@ -99,13 +99,17 @@ def category_goal(spec: GoalSpec, foon: Foon, index: CategoryIndex) -> Goal | No
     """A goal naming a category (`beverages`, as `goals --network gen` lists FOON-GEN's goals) read on
     the concrete network: the produced nodes whose label generalizes to it (`CategoryIndex.choose`)
     and whose category image is in the given states (equal states if any node has them, else a
-    superset, as `resolve_goal`). None when the label is no category or no node matches."""
+    superset, as `resolve_goal`); a bare category means its dishes (`prefer_dishes`, as a bare label does).
+    None when the label is no category or no node matches."""
     if not index.is_category(spec.label):
         return None
     nodes = sorted(n for label, made in foon.produced_by_label.items() if index.choose(label) == spec.label
                    for n in made if not is_auxiliary(n))
-    if spec.states is not None:
-        want = set(spec.states)
-        images = {n: set(abstract_goal(spec_of_node(n), index).states or ()) for n in nodes}
-        nodes = [n for n in nodes if images[n] == want] or [n for n in nodes if want <= images[n]]
+    if not nodes:
+        return None
+    if spec.states is None:
+        return prefer_dishes(Goal(spec, tuple(nodes), foon.level), foon)
+    want = set(spec.states)
+    images = {n: set(abstract_goal(spec_of_node(n), index).states or ()) for n in nodes}
+    nodes = [n for n in nodes if images[n] == want] or [n for n in nodes if want <= images[n]]
     return Goal(spec, tuple(nodes), foon.level) if nodes else None
