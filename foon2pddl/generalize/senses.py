@@ -172,9 +172,12 @@ def resolve(reader, label: str, overrides: Overrides, senses_of=kitchen_senses, 
     return Resolution(label, (), "", None, "none")
 
 
+@lru_cache(maxsize=4096)
 def adjective(reader, word: str) -> bool:
     """Whether WordNet tags `word` more often as an adjective than as a noun (its lemmas' sense counts in the
-    tagged corpus): `green` 26 to 7 is an adjective, `peanut` and `garlic` (no tags) are not (the cook similarity's rule 4)."""
+    tagged corpus): `green` 26 to 7 is an adjective, `peanut` and `garlic` (no tags) are not (the cook similarity's rule 4).
+    Kept per word: nltk searches the count file on disk for each lemma's count, and a matrix asks of the same
+    few modifiers tens of thousands of times."""
     def tags(pos: str) -> int:
         return sum(x.count() for s in reader.synsets(word, pos) for x in s.lemmas() if x.name().lower() == word)
     return tags("a") > tags("n")
