@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
+from .encoding import unit_where
 from .registry import PlanDecodeError
 from .task import PlanningTask
 from .trace_view import TraceView, binding_kind, show_node, step_text
@@ -28,9 +29,8 @@ class InstancePlanError(PlanDecodeError):
 
 
 def source_of(unit) -> str:
-    """`file.txt:12`, where the unit was read (empty when unknown)."""
-    src = unit.source
-    return "" if src is None else f"{src.path}:{src.line}"
+    """`file.txt:12`, where the unit was read, as messages name it (`unit_where`); empty when unknown."""
+    return "" if unit.source is None else unit_where(unit)
 
 
 def instance_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:

@@ -13,13 +13,10 @@ Deterministic: same plan, same bytes.
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
-
 from .decompose import MacroSkills, SkillCall, SkillPlan, StepStatus
 from .profile import Robot
 
-__all__ = ["call_text", "micro_files", "skill_plan_json", "skill_plan_text", "where"]
+__all__ = ["call_text", "micro_files", "skill_plan_json", "skill_plan_text"]
 
 _REL = {"pick": "from", "take-out": "out of", "place": "on", "put-in": "into"}
 
@@ -44,26 +41,9 @@ def call_text(call: SkillCall, params: tuple[str, ...] = ()) -> str:
     return text if call.hand == "hand_1" else f"{text} ({call.hand})"
 
 
-#: The package's directory: a file shipped with it (the embedded example) is named by its path in the package.
-_PACKAGE = Path(__file__).resolve().parent.parent
-
-
-def where(source: str) -> str:
-    """A unit's `file:line`: a file shipped with the package by its path in the package
-    (`foon2pddl/data/example/02-whipped_cream.foon:3`, wherever it is installed and run from),
-    another file relative to the working directory when it is under it."""
-    path, sep, line = source.rpartition(":")
-    if not sep or not os.path.isabs(path):
-        return source
-    for file, base, named in ((Path(path).resolve(), _PACKAGE, Path(_PACKAGE.name)), (Path(path), Path.cwd(), Path())):
-        if file.is_relative_to(base):
-            return f"{named / file.relative_to(base)}:{line}"
-    return source
-
-
 def _header(step: MacroSkills) -> str:
     skill = f" [{step.skill}]" if step.skill else ""
-    where_ = f" ({where(step.source)})" if step.source else ""
+    where_ = f" ({step.source})" if step.source else ""
     head = f"{step.index + 1}. {step.motion}{skill}{where_}"
     if step.status is StepStatus.DECOMPOSED:
         return head
@@ -94,11 +74,11 @@ def skill_plan_json(plan: SkillPlan) -> dict:
         "replay": {"ok": plan.replay.ok, "problems": list(plan.replay.problems)},
         "macro_steps": len(plan.steps),
         "decomposed": plan.decomposed,
-        "steps": [{"step": s.index + 1, "motion": s.motion, "unit": where(s.source), "skill": s.skill,
+        "steps": [{"step": s.index + 1, "motion": s.motion, "unit": s.source, "skill": s.skill,
                    "status": str(s.status), "reason": s.reason, "skills": len(s.calls),
                    "seconds": round(s.seconds, 4)} for s in plan.steps],
         "skills": [{"skill": c.skill, "hand": c.hand, "objects": list(c.objects), "holders": list(c.holders),
-                    "macro_step": c.macro + 1, "unit": where(plan.steps[c.macro].source)} for c in plan.calls],
+                    "macro_step": c.macro + 1, "unit": plan.steps[c.macro].source} for c in plan.calls],
     }
 
 
