@@ -39,7 +39,8 @@ class TaskObjects:
     `instances`, the task's aliases (`alias`), the labels a node places something in or on (`placed`), the
     network's nodes the kitchen implies objects start in (`implied`: the completion's holders, the nodes counted
     small from), the task's `nodes`, the `kitchen` the counts are derived in, the note when counted small, and
-    the notes on where the completion's holders start (`relational_init.started_notes`)."""
+    the notes on the kitchen's reading in `:init` (`init_notes`: where the completion's holders start,
+    `relational_init.started_notes`, and kitchen nodes read as placed in a kitchen container)."""
 
     reading: Reading
     table: NameTable
@@ -50,7 +51,7 @@ class TaskObjects:
     nodes: frozenset[ObjectNode]
     kitchen: frozenset[ObjectNode]
     narrowed: str = ""
-    started: tuple[tuple[FunctionalUnit, str], ...] = ()  # (unit, note): where an added holder starts
+    init_notes: tuple[tuple[FunctionalUnit, str], ...] = ()  # (unit, note) on the kitchen's reading in :init
 
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
@@ -67,7 +68,7 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(wide.implied))
-    return replace(small, started=tuple(dict.fromkeys(wide.started + small.started)), narrowed=(
+    return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), narrowed=(
         "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the holders its "
                                                        "nodes imply start" if more else "")
         + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
@@ -89,7 +90,7 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         nodes.update(x for s in p.slots for x in (s.rel.role.before, s.after, s.portion) if x is not None)
         nodes.update(n for _, n in p.emptied)
     held_by: frozenset[ObjectNode] = frozenset()  # network nodes the holders the kitchen implies start in
-    started: tuple = ()
+    init_notes: tuple = ()
     if scene:  # the scene is the init: its objects, where they are, and the objects units make
         instances = scene_instances(table, scene, counts.unmade)
         alias = dict(task_aliases([f.units[u] for u in units], rd.have, [x.start for x in instances]))
@@ -98,9 +99,9 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         aliases = {u: dict(unit_aliases(f.units[u])) for u in units}  # once per unit, not per place
         named = {aliases[u].get(c, c)
                  for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
-        instances, alias, placed, held_by, started = completed_kitchen(table, counts, [f.units[u] for u in units], rd.have,
-                                                              nodes, named, rd.silent, rd.filled, inp.kitchen,
-                                                              [f.units[u] for u, _ in counts.firings])
+        instances, alias, placed, held_by, init_notes = completed_kitchen(
+            table, counts, [f.units[u] for u in units], rd.have, nodes, named, rd.silent, rd.filled, inp.kitchen,
+            [f.units[u] for u, _ in counts.firings])
     more = more or frozenset()
     return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
-                       inp.kitchen | more, started=started)
+                       inp.kitchen | more, init_notes=init_notes)
