@@ -85,6 +85,21 @@ def test_a_constraint_matching_nothing_is_warned_about():
     assert result.exit_code == 0 and "warning: no unit of the network mentions 'teleport'" in result.stderr
 
 
+def test_a_gen_ban_of_an_object_gen_names_by_its_category_is_no_typo():
+    """Stop 46's pass: `retrieve --network gen --without "mixing bowl"` printed `substitution: mixing bowl ->
+    bowl`, then `warning: no unit of the network mentions 'mixing bowl'`, as for a typo: FOON-GEN's units name
+    it `bowls`, and the ban takes it out of the kitchen before the kitchen is abstracted (constraints.md). A
+    real typo is still warned about."""
+    result = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--without", "mixing bowl")
+    assert result.exit_code == 0, result.stderr
+    assert "substitution: mixing bowl -> bowl" in result.stderr
+    assert "warning:" not in result.stderr, result.stderr
+    assert ("note: FOON-GEN reads 'mixing bowl' as its category: `without mixing bowl` removes none of its units; "
+            "the kitchen loses what mentions it before it is abstracted") in result.stderr
+    typo = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--without", "mixin bowl")
+    assert "warning: no unit of the network mentions 'mixin bowl'" in typo.stderr
+
+
 def test_bad_flag_value_exits_2():
     result = run("retrieve", "--goal", "guacamole", "--without", " ")
     assert result.exit_code == 2 and "Error: without ' ': the label is empty" in result.stderr and "empty" in result.stderr

@@ -124,7 +124,8 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
             with slow_step(f"retrieving a tree for {target.describe()!r} with substitutes for what is banned"):
                 done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates,
                                     limits)
-        for line in constraint_notes(done.removal):
+        read_from = view.concrete if kind.substitutes is Substitutes.CATEGORY else None
+        for line in constraint_notes(done.removal, read_from, kind.label):
             click.echo(line, err=True)
         result = done.result
         if explain and result.tree is not None:

@@ -25,7 +25,7 @@ from dataclasses import dataclass, replace
 from ..analysis.blocking import Blocking, explain_blocked
 from ..analysis.constraints import Filtered, Removal, removal
 from ..io.rates import Rates
-from ..model.constraints import Constraints, Kind, unit_uses
+from ..model.constraints import Constraints, Kind, mentions, unit_uses
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, make_node, make_state
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
@@ -153,8 +153,12 @@ def shaping(foon: Foon, kitchen: Kitchen | Iterable[ObjectNode], goal: Goal, don
                  for c, gone in sorted(done.removal.removed.items()))
 
 
-def constraint_notes(removal: Removal) -> list[str]:
-    """One line saying what each constraint removes, and a warning per constraint that matches nothing."""
+def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str = "") -> list[str]:
+    """One line saying what each constraint removes, and a warning per constraint that matches nothing.
+
+    `read_from`: the network as read, when `removal`'s network names its objects by category (FOON-`name`):
+    a ban of an object only that one names is no typo; a note says why it removes no unit.
+    """
     total = len(removal.foon.units)
     parts, warnings = [], []
     for c in removal.constraints.items:
@@ -164,7 +168,11 @@ def constraint_notes(removal: Removal) -> list[str]:
         else:
             n = len(removal.removed.get(c, ()))
             parts.append(f"`{c.detail()}` removes {n} of {total} units")
-        if not n:
+        if not n and c.kind is Kind.WITHOUT and read_from is not None and \
+                any(mentions(node, c.value) for node in read_from.nodes):
+            warnings.append(f"note: FOON-{name} reads {c.value!r} as its category: `{c.detail()}` removes none of "
+                            f"its units; the kitchen loses what mentions it before it is abstracted")
+        elif not n:
             warnings.append(f"warning: no unit of the network mentions {c.value!r} (`{c.detail()}`, "
                             f"from {c.source or 'the options'})")
     return (["constraints: " + "; ".join(parts)] if parts else []) + warnings
