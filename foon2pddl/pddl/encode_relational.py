@@ -190,7 +190,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
     found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [x[u] for x in (arrived, brought) for u in units if u in x]
-    found += rd.renamed + ob.init_notes
+    found += rd.renamed + rd.portions + ob.init_notes
     told = [(kind, reported(x)) for kind, x in (("label mismatch", found), (UNHELD, unheld),
                                                 (AT_HAND, [(x.taker, x.describe()) for x in at_hand]))]
     notes, commented = ([f"{kind}: {m}" for kind, both in told for m in both[i]] for i in (0, 1))

@@ -23,6 +23,9 @@ it left the wrap needing a second sheet on a second tray). What stays ambiguous:
 two units do not list L, so the pair (C, L) is one the replay does not check (`PlanningTask.gaps`), and the
 reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r roles (d at
 most `DEPTH`), and O(u n) for the later units of the recipe.
+
+Likewise a container a unit empties because an earlier unit filled it (`relational_plan`) is kept whole when a
+later unit of the same recipe takes its input node again (`taken_again`): what left it was a portion.
 """
 
 from __future__ import annotations
@@ -35,9 +38,10 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
 from .encoding import short_path, unit_where
+from .holders import Fate
 from .relational_plan import UnitPlan
 
-__all__ = ["DEPTH", "kept_in_place", "path_taker", "placed_at"]
+__all__ = ["DEPTH", "kept_in_place", "path_taker", "placed_at", "taken_again"]
 
 #: How many units the container's node is followed through.
 DEPTH = 12
@@ -142,3 +146,44 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
         if len(keep) < len(plan.flows):
             out[u] = replace(plan, flows=tuple(keep))
     return out, gaps
+
+
+def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
+                ) -> tuple[dict[int, UnitPlan], dict[int, tuple[FunctionalUnit, str]]]:
+    """`plans` with a container kept whole where a unit of the task later in the same recipe file takes its input
+    node again: the unit emptied it only because an earlier unit filled its label with what left it (`relational_plan`:
+    a container FOON never empties, the whole leaves it), and FOON's later input says the container still holds
+    what that node lists, so what left it was a portion (`Fate.SPLITS`, as holders read it). The blueberry muffin's
+    pour (`ACT-0003-blueberry_muffin.txt:182`) leaves `bowl (contains {flour mixture})` out of its outputs, and the
+    pour at `:220` takes that node again: read as emptied, the flour mixture's mix and the pours before it fired
+    once more per taking. Only when every object leaving the container is such a portion (no flow, nothing
+    consumed out of it). Also unit index -> (unit, note) per unit so read. O(u r) per recipe of u units."""
+    task = frozenset(units)
+    later: dict[tuple[int, ObjectNode], FunctionalUnit] = {}  # (unit, input node) -> the first later taker
+    for steps in _in_recipes(foon, task).values():
+        first: dict[ObjectNode, tuple[tuple[str, int], int]] = {}
+        for at, v in reversed(steps):
+            for x in dict.fromkeys(foon.units[v].inputs):
+                if x in first and first[x][0][1] > at[1]:
+                    later[(v, x)] = foon.units[first[x][1]]
+                first[x] = (at, v)
+    out, said = dict(plans), {}
+    for u in sorted(task & plans.keys()):
+        plan = plans[u]
+        emptied = dict(plan.emptied)
+        keep = {k for k in emptied if (u, plan.slots[k].rel.role.before) in later
+                and not any(f.holder == k for f in plan.flows)
+                and all(s.fate is Fate.MOVES and s.rel.fate is Fate.SPLITS for s in plan.slots
+                        if s.rel.source is not None and s.rel.source.role == k and s.fate is not Fate.SPLITS)}
+        if not keep:
+            continue
+        slots = tuple(replace(s, fate=Fate.SPLITS, after=None, portion=s.rel.after)
+                      if s.rel.source is not None and s.rel.source.role in keep and s.fate is Fate.MOVES else s
+                      for s in plan.slots)
+        out[u] = replace(plan, slots=slots, emptied=tuple((k, x) for k, x in plan.emptied if k not in keep))
+        k = min(keep)
+        node, taker = plan.slots[k].rel.role.before, later[(u, plan.slots[k].rel.role.before)]
+        said[u] = (plan.unit, f"{plan.unit.motion.label} leaves {node.describe()} out of its outputs, which "
+                              f"{taker.motion.label} at {unit_where(taker, short_path)} takes again: read as a portion taken "
+                              "out of it, the rest still in it")
+    return out, said

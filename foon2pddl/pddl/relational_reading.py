@@ -21,7 +21,7 @@ from .encoding import LevelInputs, short_path, unit_where
 from .holders import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, derive_counts
-from .list_drops import kept_in_place
+from .list_drops import kept_in_place, taken_again
 from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, plan_unit, quiet_places
 
 __all__ = ["Reading", "read_units"]
@@ -46,6 +46,8 @@ class Reading:
     have: Mapping[str, int]
     filled: frozenset[tuple[str, str]]
     renamed: tuple[tuple[FunctionalUnit, str], ...] = ()
+    #: (unit, note) per kept unit read as taking a portion out of a container FOON takes again (`taken_again`)
+    portions: tuple[tuple[FunctionalUnit, str], ...] = ()
 
 
 def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]
@@ -107,6 +109,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         if key not in memo:
             plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
                                                                  holding, called) for u in units})
+            plans, portions = taken_again(f, units, plans)
             plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
                                                  if c in inp.candidates})
             by_unit = {f.units[u]: p for u, p in plans.items()}
@@ -116,12 +119,12 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                 if unit not in roles:
                     roles[unit] = count_roles(by_unit[unit]) if unit in by_unit else ()
                 return roles[unit]
-            memo[key] = plans, drops, said, roles_of
+            memo[key] = plans, drops, said, portions, roles_of
         return memo[key]
 
     def read(speakers: Sequence[int]) -> Reading:
         silent = quiet(speakers)
-        plans, drops, said, roles_of = plans_of(silent)
+        plans, drops, said, portions, roles_of = plans_of(silent)
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
             key = ("counts", id(net), need, id(roles_of), narrow or None)  # `net`: `inp.foon` or `st.through`
@@ -136,7 +139,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}
         return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled,
-                       tuple(said[u] for u in kept if u in said))
+                       tuple(said[u] for u in kept if u in said), tuple(portions[u] for u in kept if u in portions))
 
     first = read(units)
     if quiet(first.units) != first.silent:
