@@ -157,10 +157,12 @@ def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
     pour (`ACT-0003-blueberry_muffin.txt:182`) leaves `bowl (contains {flour mixture})` out of its outputs, and the
     pour at `:220` takes that node again: read as emptied, the flour mixture's mix and the pours before it fired
     once more per taking. Only when every object leaving the container is such a portion (no flow, nothing
-    consumed out of it). Also unit index -> (unit, note) per unit so read. O(u r) per recipe of u units."""
+    consumed out of it), and only units a recipe file gives (`FunctionalUnit.source`). Also unit index -> (unit, note) per unit so read. O(u r) per recipe of u units."""
     task = frozenset(units)
     later: dict[tuple[int, ObjectNode], FunctionalUnit] = {}  # (unit, input node) -> the first later taker
-    for steps in _in_recipes(foon, task).values():
+    for path, steps in _in_recipes(foon, task).items():
+        if not path:  # units of no recipe file: not known to be one recipe's
+            continue
         first: dict[ObjectNode, tuple[tuple[str, int], int]] = {}
         for at, v in reversed(steps):
             for x in dict.fromkeys(foon.units[v].inputs):
