@@ -6,7 +6,7 @@ import argparse
 import importlib
 from pathlib import Path
 
-from .harness import Context
+from .harness import Context, shared_data
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
@@ -21,6 +21,7 @@ def main() -> None:
     ap.add_argument("--quick", action="store_true", help="smaller samples, for a smoke run")
     ap.add_argument("--save", type=Path, default=Path("bench/results/latest.json"), help="where to write figures")
     args = ap.parse_args()
+    shared_data(args.shared)
     ctx = Context(args.shared, args.repeat, args.quick)
     for area in args.only or AREAS:
         importlib.import_module(f"bench.{area}").run(ctx)

@@ -31,6 +31,8 @@ from concurrent.futures import ThreadPoolExecutor
 from io import BytesIO
 from pathlib import Path
 
+from .harness import shared_data
+
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_BASELINE = "ce6cbbc"  # the last commit before the issue-9 refactor
 
@@ -141,6 +143,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--against", default=None, help="a commit to compare instead of this checkout")
     ap.add_argument("--repo", type=Path, default=ROOT, help="git repository holding the baseline commit")
     args = ap.parse_args(argv)
+    shared_data(args.shared)
     todo = commands(args.shared.resolve())
     if args.only:
         words = [w.strip() for w in args.only.split(",") if w.strip()]

@@ -30,6 +30,8 @@ from foon2pddl.pddl.encode_lifted import encode_lifted
 from foon2pddl.pddl.prune import relevant_units
 from foon2pddl.pddl.render import render
 
+from .harness import shared_data
+
 
 def units(task) -> int:
     return sum(a.unit is not None for a in task.actions)
@@ -43,6 +45,7 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--time-limit", type=float, default=60.0)
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per goal")
     args = ap.parse_args(argv)
+    shared_data(args.shared)
     foon, _ = load([args.shared / "foon-subgraphs"])
     index, kitchen = shipped_index(), default_kitchen(foon)
     level3, held = project(foon, 3), kitchen.project(3).nodes

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import statistics
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -12,6 +13,16 @@ from typing import Any
 
 from foon2pddl.analysis.reachability import reachable
 from foon2pddl.model.foon import Foon, ObjectNode
+
+
+def shared_data(path: Path) -> Path:
+    """`--shared`'s FOON data directory, or exit 2 saying where that data is (the docs' `../shared/data` is the
+    project's layout, beside the checkout; a clone has a copy in tests/data)."""
+    if not (path / "foon-subgraphs").is_dir():
+        print(f"{path}: no FOON data here (no foon-subgraphs/): the project's layout has it beside the checkout, "
+              "../shared/data; a clone has a copy: --shared tests/data", file=sys.stderr)
+        raise SystemExit(2)
+    return path
 
 
 def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[float, list[float], Any]:

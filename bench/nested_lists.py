@@ -17,6 +17,8 @@ from pathlib import Path
 from foon2pddl.io.files import load
 from foon2pddl.model.places import listed, places
 
+from .harness import shared_data
+
 
 def pairs(unit):
     """(side, C node, P node, X) for every label X a node C and a node P in or on C both list."""
@@ -32,6 +34,7 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--shared", type=Path, default=Path("../shared/data"))
     ap.add_argument("-v", "--verbose", action="store_true")
     args = ap.parse_args(argv)
+    shared_data(args.shared)
     found, units, kinds = [], 0, Counter()
     for f in sorted((args.shared / "foon-subgraphs").iterdir()):
         foon, _ = load([f])

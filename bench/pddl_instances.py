@@ -38,7 +38,7 @@ from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd, up_engine
 from foon2pddl.planners.trace_check import check_states
 
-from .harness import Context, reachable_dishes
+from .harness import Context, reachable_dishes, shared_data
 
 AREA = "pddl_instances"
 
@@ -158,6 +158,7 @@ def main() -> None:
     ap.add_argument("--planner", choices=sorted(PLANNERS), default="lama", help="planner for the instances task")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per goal")
     args = ap.parse_args()
+    shared_data(args.shared)
     rows = (universal_rows if args.universal else subgraph_rows)(args.shared, args.time_limit, args.limit, args.extra,
                                                                  args.planner)
     if args.verbose:

@@ -38,7 +38,7 @@ from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan, plan_restoring
 
-from .harness import Context, reachable_dishes
+from .harness import Context, reachable_dishes, shared_data
 
 AREA = "pddl_relational"
 ENCODINGS = ("tree", "instances", "relational")
@@ -178,6 +178,7 @@ def main() -> None:
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--restore", action="store_true", help="without and with restoring units: objects and copies")
     args = ap.parse_args()
+    shared_data(args.shared)
     encodings = tuple(e for e in args.encodings.split(",") if e)
     if args.restore:
         print(restore_rows(expand_paths([args.shared / "foon-subgraphs"])[: args.limit], encodings[-1],

@@ -30,7 +30,7 @@ from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
 from foon2pddl.planners import fd
 
-from .harness import Context
+from .harness import Context, shared_data
 
 AREA = "pddl_subgraphs"
 
@@ -166,6 +166,7 @@ def main() -> None:
     ap.add_argument("--limit", type=int, default=None, help="only the first N files")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per file and encoding")
     args = ap.parse_args()
+    shared_data(args.shared)
     outcomes = check_all(args.shared / "foon-subgraphs", args.level, not args.no_prune, args.time_limit, args.limit)
     if args.verbose:
         for o in outcomes:

@@ -39,7 +39,7 @@ from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
 from foon2pddl.retrieval.api import retrieve
 
-from .harness import Context, reachable_dishes
+from .harness import Context, reachable_dishes, shared_data
 
 AREA = "physical_replay"
 WANTED = ("instances", "relational")
@@ -200,6 +200,7 @@ def main() -> None:
     ap.add_argument("--native", action="store_true", help="schedule native trees instead (module doc)")
     ap.add_argument("--universal", action="store_true", help="the merged network, each reachable dish a goal")
     args = ap.parse_args()
+    shared_data(args.shared)
     if args.native:
         native = native_rows(args.shared / "foon-subgraphs", args.limit)
         if args.verbose:

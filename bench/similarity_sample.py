@@ -31,6 +31,7 @@ from foon2pddl.generalize.cook import reference_vocabulary
 from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
 from foon2pddl.generalize.modes import make_similarity
 
+from .harness import shared_data
 from .similarity import read_pairs, search_labels
 
 SEED, RANDOM_OUTSIDE = 23, 36
@@ -78,6 +79,7 @@ def main(prog: str = "python -m bench.similarity_sample", doc: str | None = __do
     ap.add_argument("blind", type=Path, help="pairs to label (no scores, no sources)")
     ap.add_argument("key", type=Path, help="each pair's split and source (not opened while labelling)")
     args = ap.parse_args()
+    shared_data(args.shared)
     if seeds:
         write_batch(draw(args.shared, args.split), args.blind, args.key, seeds[args.split])
     else:

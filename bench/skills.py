@@ -38,7 +38,7 @@ from foon2pddl.skills.run import skills_encoding
 from foon2pddl.skills.source import trace_of
 from foon2pddl.skills.table import coverage
 
-from .harness import Context
+from .harness import Context, shared_data
 
 AREA = "skills"
 
@@ -152,6 +152,7 @@ def main() -> None:
     ap.add_argument("--encoding", default=None, help="macro encoding (default: the one plan --skills uses)")
     ap.add_argument("-v", "--verbose", action="store_true")
     args = ap.parse_args()
+    shared_data(args.shared)
     print(f"start: {load_text()}", flush=True)
     rows = []
     files = [f for f in expand_paths([args.shared / "foon-subgraphs"])
