@@ -12,7 +12,7 @@ from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl import split_actions
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.split_actions import CHAIN, IDLE, split
-from foon2pddl.pddl.task import Atom
+from foon2pddl.pddl.task import Action, Atom, Conditional, PlanningTask, apply_action, type_closure
 from foon2pddl.planners import solve
 
 # Four empty bowls, three jars of salt: the mix binds a bowl of sugar, the sugar, a bowl of salt, the salt in it.
@@ -28,34 +28,99 @@ def _sizes(task):
     return {t: sum(1 for _, u in task.objects if u == t) for _, t in task.objects}
 
 
+def _parts(chains, action):
+    return [a for a in chains.task.actions if a.name.startswith(f"{action.name}-")]
+
+
+def _changes_only_the_chain(part, action) -> bool:
+    return not part.conditional and all(a.predicate == CHAIN or a.predicate.startswith(f"{action.name}-arg-")
+                                        for a in (*part.add, *part.delete))
+
+
 def test_a_checked_ingredient_is_bound_by_its_own_part_and_each_part_grounds_less():
     task = _task()
     mix = next(a for a in task.actions if a.name.startswith("mix"))
     chains = split(task, above=1)
-    parts = [a for a in chains.task.actions if a.name.startswith(mix.name)]
-    assert [a.name for a in parts] == [f"{mix.name}-begin", f"{mix.name}-check-1", f"{mix.name}-end"]
+    parts = _parts(chains, mix)
+    assert parts[0].name == f"{mix.name}-begin" and parts[-1].name == f"{mix.name}-end"
     size = _sizes(task)
     whole = prod(size[t] for _, t in mix.params)
     assert all(prod(size[t] for _, t in a.params) < whole for a in parts)
-    # the salt only needs to be in the bowl of salt (the mix consumes every salt there): the check binds it
-    assert dict(parts[1].params) == {"?bowl-2": "bowl", "?salt": "salt"}
-    # the sugar bowl turns dirty, so the sugar's own effects stay with the action: begin and end bind it
-    assert "?sugar" in dict(parts[0].params) and "?salt" not in dict(parts[2].params)
-    # the parts before the last change only where the chain is and what it recorded
+    # the salt only needs to be in the bowl of salt (the mix consumes every salt there): one check binds it,
+    # with the bowl of salt, and nothing records it
+    salted = [a for a in parts if "?salt" in dict(a.params)]
+    assert len(salted) == 1 and dict(salted[0].params) == {"?bowl-2": "bowl", "?salt": "salt"}
+    assert "-check-" in salted[0].name and _changes_only_the_chain(salted[0], mix)
+    assert not any(a.predicate == f"{mix.name}-arg-salt" for p in parts for a in p.add)
+    # the sugar bowl turns dirty, so the sugar's own effects stay with the action: a part binds and records it
+    # before the checks end, a later one consumes it
+    assert any(a.predicate == f"{mix.name}-arg-sugar" for p in parts for a in p.add)
+    # the parts that bind change only where the chain is and what it recorded; the first takes the lock
+    binding = [p for p in parts if "-begin" in p.name or "-check-" in p.name]
+    assert parts[:len(binding)] == binding and all(_changes_only_the_chain(p, mix) for p in binding)
     assert parts[0].add[0] == Atom(CHAIN, (f"{mix.name}-stage-0",)) and parts[0].delete == (Atom(CHAIN, (IDLE,)),)
-    assert all(a.predicate.startswith(f"{mix.name}-arg-") for a in parts[0].add[1:]) and not parts[1].conditional
-    assert {a.predicate for a in (*parts[1].add, *parts[1].delete)} == {CHAIN}
     # nothing else applies while a chain is under way, and a plan ends with none under way
-    others = [a for a in chains.task.actions if not a.name.startswith(mix.name)]
+    others = [a for a in chains.task.actions if a.name not in chains.parts]
     assert all(a.pre[0] == Atom(CHAIN, (IDLE,)) for a in others) and chains.task.goal[-1] == Atom(CHAIN, (IDLE,))
+
+
+def _steps(chains, action, values):
+    """The plan steps of `action`'s chain bound as `values` (parameter -> object)."""
+    return tuple(" ".join((p.name, *(values[v] for v, _ in p.params))) for p in _parts(chains, action))
 
 
 def test_a_plan_of_the_parts_joins_back_into_the_action_with_every_binding():
     task = _task()
     chains = split(task, above=1)
-    steps = ("pour_u1 jar_1 salt_1 bowl_1", "mix_u2-begin bowl_2 sugar_1 bowl_1 mixture_1 bowl_3",
-             "mix_u2-check-1 bowl_1 salt_1", "mix_u2-end bowl_2 sugar_1 bowl_1 mixture_1 bowl_3")
+    mix = next(a for a in task.actions if a.name.startswith("mix"))
+    values = dict(zip((v for v, _ in mix.params), ("bowl_2", "sugar_1", "bowl_1", "salt_1", "mixture_1", "bowl_3"),
+                      strict=True))
+    steps = ("pour_u1 jar_1 salt_1 bowl_1", *_steps(chains, mix, values))
     assert chains.join(steps) == ("pour_u1 jar_1 salt_1 bowl_1", "mix_u2 bowl_2 sugar_1 bowl_1 salt_1 mixture_1 bowl_3")
+
+
+def test_an_action_whose_every_parameter_has_effects_is_split_too():
+    task = _task()
+    pour = next(a for a in task.actions if a.name.startswith("pour"))
+    assert not {v for v, _ in pour.params} - {x for a in (*pour.add, *pour.delete) for x in a.args}
+    size = _sizes(task)
+    whole = prod(size[t] for _, t in pour.params)
+    parts = _parts(split(task, above=1), pour)
+    assert len(parts) > 1 and all(prod(size[t] for _, t in a.params) < whole for a in parts)
+
+
+# A box-to-box move whose sweep reads what the move adds: the chain must do what the action does.
+ITEM, BOX = "item", "box"
+MOVE = Action("move", params=(("?a", BOX), ("?b", BOX), ("?x", ITEM)),
+              pre=(Atom("in", ("?a", "?x")), Atom("is", ("?a", "full")), Atom("is", ("?b", "open"))),
+              add=(Atom("in", ("?b", "?x")), Atom("is", ("?a", "open")), Atom("is", ("?x", "moved"))),
+              delete=(Atom("in", ("?a", "?x")), Atom("is", ("?a", "full"))),
+              conditional=(Conditional((Atom("in", ("?b", "?y")),), add=(Atom("is", ("?y", "crushed")),),
+                                       delete=(Atom("in", ("?b", "?y")),), var="?y", type=ITEM),
+                           Conditional((Atom("is", ("?y", "moved")),), delete=(Atom("is", ("?y", "moved")),),
+                                       var="?y", type=ITEM)))
+BOXES = PlanningTask("d", "p", "relational", 3, (), (MOVE,), (), (), types=((BOX, "object"), (ITEM, "object")),
+                     objects=(("a1", BOX), ("a2", BOX), ("x1", ITEM), ("x2", ITEM), ("x3", ITEM)),
+                     constants=(("full", "object"), ("open", "object"), ("moved", "object"), ("crushed", "object")))
+
+
+def test_a_chain_does_what_the_action_does_whatever_its_parts_read_and_write():
+    chains = split(BOXES, above=1)
+    parts = _parts(chains, MOVE)
+    assert len(parts) > 2 and all(len(p.params) < 3 for p in parts)
+    types = type_closure(chains.task)
+    start = {Atom("in", ("a1", "x1")), Atom("in", ("a2", "x2")), Atom("is", ("x3", "moved")),
+             Atom("is", ("a1", "full")), Atom("is", ("a2", "open"))}
+    bind = {"?a": "a1", "?b": "a2", "?x": "x1"}
+    whole = apply_action(start, MOVE, bind, types)
+    state = start | {Atom(CHAIN, (IDLE,))}
+    for part in parts:
+        assert all(a in state for a in (Atom(x.predicate, tuple(bind.get(y, y) for y in x.args)) for x in part.pre))
+        state = apply_action(state, part, bind, types)
+    # x2 was in a2 before the move: crushed; x1 arrives in a2 and stays whole; only x1 ends moved
+    assert whole == {Atom("in", ("a2", "x1")), Atom("is", ("x2", "crushed")), Atom("is", ("a1", "open")),
+                     Atom("is", ("x1", "moved")), Atom("is", ("a2", "open"))}
+    assert state == whole | {Atom(CHAIN, (IDLE,))}
 
 
 def test_a_task_whose_actions_ground_small_is_unchanged():

@@ -11,23 +11,34 @@ the parameter's own effects say nothing the quantified one does not. Such a para
 name two of them (a bowl of salt and the salt in it); each group's preconditions name besides only kept ones.
 
 An action whose parameters' objects multiply past `SPLIT_ABOVE` is split (action schema splitting, as planners'
-compilations for large schemas do) into a chain, when every part is smaller than the whole:
+compilations for large schemas do) into a chain, when every part is smaller than the whole. Parts that *bind*:
 
-* `<action>-begin` binds the kept parameters where the preconditions over them alone hold, takes the lock
-  (`(chain idle)`, which every other action and the goal need, becomes the chain's first stage) and records
-  each binding, `(<action>-arg-k x)`;
-* one `<action>-check-i` per group binds the group where its preconditions hold, over the recorded values of the
-  kept parameters they name;
-* `<action>-end` does the action's effects (less the checked parameters' own, which the quantified effects do)
-  on the recorded values, frees the records and gives the lock back (`(chain idle)`).
+* `<action>-begin` takes the lock (`(chain idle)`, which every other action and the goal need, becomes the chain's
+  first stage) and, like each `<action>-check-i` after it, binds some parameters where the preconditions over
+  them and those bound before hold: each kept parameter in turn (recorded, `(<action>-arg-k x)`, for the parts
+  after), then each group of checked ones; neighbours are one part while their parameters multiply to at most
+  `SPLIT_ABOVE` (a pour binds its two bowls, then the flour with the bowl it is in).
 
-The chain's stages make the parts fire in that order. Nothing but the chain's parts applies while the lock is taken and
-the parts before the last change nothing but the lock, stages and records, so a chain fires exactly when the
-action applies in the state where it began, with the same effects: a split task has a plan exactly when the task
-has, and `Split.join` turns each chain of a plan back into the one action with every binding (what replay and
-the task tree read: one unit firing). Tasks whose actions all stay whole are returned unchanged (no lock).
-Applied by `planners.solve.plan` to the task it gives the planner (not with `optimal`: the parts would count as
-steps); `compile` writes the task whole. O(actions x parameters x preconditions).
+Parts that *do* (`<action>-do-i`, the last `<action>-end`, which gives `(chain idle)` back): the action's effects
+(less the checked parameters' own, which the quantified effects do), grouped by the parameters they name, each
+group bound from the records alone: a sweep that empties whichever holder the egg was in grounds once per egg,
+not once per egg, bowl, whisk and batter (the cranberry-walnut pancake of the odd-index universal FOON, its mix at
+`0004-pancake_batter.txt:58`: 1,620 ground `end` parts with 14 sweeps over every object; 26 s of translation
+CPU in all). Groups
+are ordered so that they do what the action does in one step, where conditions read the state before it and an
+add wins over a delete: no group changes an atom a later group's conditions may read, none adds an atom a later
+group may delete (two atoms may be one when their predicates match and each pair of arguments may be one
+object, by type); groups that must each come first are one part. A group joins its neighbour when that binds
+no more combinations than the larger of the two.
+
+The chain's stages make the parts fire in that order. Nothing but the chain's parts applies while the lock is taken,
+the binding parts change nothing but the lock, stages and records, and they check every precondition before any
+part does an effect, so a chain fires exactly when the action applies in the state where it began, with the same
+effects: a split task has a plan exactly when the task has, and `Split.join` turns each chain of a plan back into
+the one action with every binding (what replay and the task tree read: one unit firing). Tasks whose actions all
+stay whole are returned unchanged (no lock). Applied by `planners.solve.plan` to the task it gives the planner
+(not with `optimal`: the parts would count as steps); `compile` writes the task whole.
+O(actions x (parameters x preconditions + effect groups^3 + (effect atoms)^2)).
 """
 
 from __future__ import annotations
@@ -35,7 +46,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from math import prod
 
-from .task import Action, Atom, PlanningTask, Predicate
+from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "Split", "split"]
 
@@ -123,7 +134,90 @@ def _groups(checked: list[str], pre: tuple[Atom, ...]) -> list[list[str]]:
     return [[v for v in checked if group[v] == g] for g in sorted(set(group.values()))]
 
 
-def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]], above: int, taken: set[str]):
+def _compatible(a: str, b: str, below: dict[str, set[str]]) -> bool:
+    return a in below.get(b, {b}) or b in below.get(a, {a})
+
+
+def _may_meet(one: tuple[Atom, dict[str, str]], other: tuple[Atom, dict[str, str]], below: dict[str, set[str]],
+              kind: dict[str, str]) -> bool:
+    """Whether two atoms, each with the types of its variables, may be one ground atom."""
+    (a, at), (b, bt) = one, other
+    if a.predicate != b.predicate or len(a.args) != len(b.args):
+        return False
+    for x, y in zip(a.args, b.args, strict=True):
+        if x not in at and y not in bt:
+            if x != y:
+                return False
+        elif not _compatible(at.get(x, kind.get(x, "object")), bt.get(y, kind.get(y, "object")), below):
+            return False
+    return True
+
+
+@dataclass
+class _Part:
+    """Effects of an action that name the same parameters: unconditional adds and deletes, conditionals."""
+
+    names: set[str]
+    add: list[Atom] = field(default_factory=list)
+    delete: list[Atom] = field(default_factory=list)
+    conditional: list[Conditional] = field(default_factory=list)
+
+    def scoped(self, params: dict[str, str], which: str) -> list[tuple[Atom, dict[str, str]]]:
+        """The part's atoms of one kind ('add', 'delete', 'when') with the types of their variables."""
+        out = [(a, params) for a in (self.add if which == "add" else self.delete if which == "delete" else ())]
+        for c in self.conditional:
+            scope = {**params, **dict(c.quantified)}
+            out += [(a, scope) for a in (c.add if which == "add" else c.delete if which == "delete" else c.when)]
+        return out
+
+
+def _effect_parts(action: Action, own: list[Atom], own_del: list[Atom], below, kind) -> list[_Part]:
+    """The action's effects grouped by the parameters they name, in an order that does what the action does:
+    no part changes an atom a later part's conditions read, none adds an atom a later part deletes (groups that
+    must come before each other are one part)."""
+    params = dict(action.params)
+    parts: dict[frozenset[str], _Part] = {}
+    for atoms, kind_ in ((own, "add"), (own_del, "delete")):
+        for a in atoms:
+            getattr(parts.setdefault(frozenset(_vars((a,))), _Part(set(_vars((a,))))), kind_).append(a)
+    for c in action.conditional:
+        names = _vars(c.atoms()) - {v for v, _ in c.quantified}
+        parts.setdefault(frozenset(names), _Part(set(names))).conditional.append(c)
+    groups = list(parts.values())
+
+    def meet(xs, ys) -> bool:
+        return any(_may_meet(x, y, below, kind) for x in xs for y in ys)
+
+    writes = [g.scoped(params, "add") + g.scoped(params, "delete") for g in groups]
+    first = [[meet(writes[j], groups[i].scoped(params, "when"))  # i must come before j
+              or meet(groups[j].scoped(params, "add"), groups[i].scoped(params, "delete")) for j in range(len(groups))]
+             for i in range(len(groups))]
+    n = len(groups)
+    for k in range(n):  # transitive closure
+        for i in range(n):
+            if first[i][k]:
+                first[i] = [x or y for x, y in zip(first[i], first[k], strict=True)]
+    comp = [min(j for j in range(n) if j == i or first[i][j] and first[j][i]) for i in range(n)]
+    order: list[int] = []
+    todo = sorted(set(comp))
+    while todo:  # the first component nothing left must come before
+        c = next(c for c in todo if not any(first[d][c] and not first[c][d] for d in todo if d != c))
+        todo.remove(c)
+        order.append(c)
+    out = []
+    for c in order:
+        merged = _Part(set())
+        for g in (groups[i] for i in range(n) if comp[i] == c):
+            merged.names |= g.names
+            merged.add += g.add
+            merged.delete += g.delete
+            merged.conditional += g.conditional
+        out.append(merged)
+    return out
+
+
+def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]], above: int, taken: set[str],
+               kind: dict[str, str]):
     """The chain of parts of `action` with their join entries, or None when it stays whole."""
     size = {v: sizes.get(t, 0) for v, t in action.params}
     whole = prod(size.values())
@@ -132,39 +226,76 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     own = [e for e in action.add if not _subsumed(e, True, action, below)]
     own_del = [e for e in action.delete if not _subsumed(e, False, action, below)]
     named = _vars((*own, *own_del, *(x for c in action.conditional for x in c.atoms())))
-    kept = [v for v, _ in action.params if v in named]
-    checked = [v for v, _ in action.params if v not in named]
-    groups = _groups(checked, action.pre)
-    checks = [[a for a in action.pre if _vars((a,)) & set(g)] for g in groups]
-    over = [[v for v in kept if v in _vars(atoms)] for atoms in checks]
-    if not groups or max(prod(size[v] for v in (*k, *g)) for k, g in zip(over, groups, strict=True)) >= whole \
-            or prod(size[v] for v in kept) >= whole:
+    order = [v for v, _ in action.params]
+    kept = [v for v in order if v in named]
+    checked = [v for v in order if v not in named]
+    # binding parts: each kept parameter with the preconditions over it and those bound before it, then each group
+    # of checked ones with the preconditions naming it; neighbours merged while they multiply to at most `above`
+    binds: list[tuple[set[str], list[Atom]]] = []
+    done: set[str] = set()
+    for v in kept:
+        done.add(v)
+        atoms = [a for a in action.pre if v in _vars((a,)) and _vars((a,)) <= done]
+        binds.append(({v, *_vars(atoms)}, atoms))
+    ground = [a for a in action.pre if not _vars((a,))]  # with the first part
+    binds[:1] = [(binds[0][0], ground + binds[0][1])] if binds else [(set(), ground)]
+    for g in _groups(checked, action.pre):
+        atoms = [a for a in action.pre if _vars((a,)) & set(g)]
+        binds.append(({*g, *_vars(atoms)}, atoms))
+    binds = _merged(binds, lambda a, b: prod(size[v] for v in a | b) <= above)
+    effects = _merged([(p.names, p) for p in _effect_parts(action, own, own_del, below, kind)],
+                      lambda a, b: prod(size[v] for v in a | b) <= max(prod(size[v] for v in x) for x in (a, b)))
+    names_of = [x for x, _ in binds] + [x for x, _ in effects]
+    if not effects or len(names_of) < 2 or max(prod(size[v] for v in x) for x in names_of) >= whole:
         return None
     types = dict(action.params)
-    index = {v: i for i, (v, _) in enumerate(action.params)}
-    stage = [f"{action.name}-stage-{i}" for i in range(len(groups) + 1)]
+    index = {v: i for i, v in enumerate(order)}
+    n = len(names_of)
+    stage = [f"{action.name}-stage-{i}" for i in range(n - 1)]
     record = {v: f"{action.name}-arg-{v[1:]}" for v in kept}
-    names = [f"{action.name}-begin", *(f"{action.name}-check-{i}" for i in range(1, len(groups) + 1)),
-             f"{action.name}-end"]
+    checks, does = len(binds) - 1, len(effects) - 1
+    names = [f"{action.name}-begin", *(f"{action.name}-check-{i}" for i in range(1, checks + 1)),
+             *(f"{action.name}-do-{i}" for i in range(1, does + 1)), f"{action.name}-end"]
     if taken & {*stage, *record.values(), *names}:
         raise ValueError(f"splitting {action.name}: a part's name is taken")
-    base = [a for a in action.pre if not _vars((a,)) & set(checked)]
-    recorded = tuple(Atom(record[v], (v,)) for v in kept)
+    last_use = {v: max(i for i, x in enumerate(names_of) if v in x) for v in kept}
     zero = 0 if action.cost is not None else None
-    begin = replace(action, name=names[0], params=tuple((v, types[v]) for v in kept),
-                    pre=(_at(IDLE), *base), add=(_at(stage[0]), *recorded), delete=(_at(IDLE),),
-                    conditional=(), cost=zero)
-    parts = [begin]
-    for i, (g, atoms, k) in enumerate(zip(groups, checks, over, strict=True)):
-        parts.append(replace(action, name=names[i + 1], params=tuple((v, types[v]) for v in (*k, *g)),
-                             pre=(_at(stage[i]), *(Atom(record[v], (v,)) for v in k), *atoms),
-                             add=(_at(stage[i + 1]),), delete=(_at(stage[i]),), conditional=(), cost=zero,
-                             comment=()))
-    parts.append(replace(action, name=names[-1], params=begin.params, pre=(_at(stage[-1]), *recorded, *base),
-                         add=(_at(IDLE), *own), delete=(_at(stage[-1]), *recorded, *own_del), comment=()))
+    parts, bound = [], set()
+    for i, vs in enumerate(names_of):
+        new = [v for v in order if v in vs and v not in bound and v in record]
+        old = [v for v in order if v in vs and v in bound]
+        bound |= vs
+        body = binds[i][1] if i < len(binds) else []
+        eff = effects[i - len(binds)][1] if i >= len(binds) else _Part(set())
+        parts.append(Action(
+            names[i], params=tuple((v, types[v]) for v in order if v in vs), unit=action.unit, roles=action.roles,
+            pre=(_at(IDLE if i == 0 else stage[i - 1]), *(Atom(record[v], (v,)) for v in old), *body),
+            add=(_at(IDLE if i == n - 1 else stage[i]), *(Atom(record[v], (v,)) for v in new), *eff.add),
+            delete=(_at(IDLE if i == 0 else stage[i - 1]),
+                    *(Atom(record[v], (v,)) for v in old if last_use[v] == i), *eff.delete),
+            conditional=tuple(eff.conditional), cost=action.cost if i == n - 1 else zero,
+            comment=action.comment if i == 0 else ()))
     join = {p.name: (action.name, tuple(index[v] for v, _ in p.params), p is parts[-1]) for p in parts}
     predicates = [Predicate(record[v], (("?x", types[v]),), f"{action.name} binds {v} to ?x") for v in kept]
     return parts, join, predicates, stage
+
+
+def _merged(parts: list, fits) -> list:
+    """`parts` ((parameter names, content) pairs, in order) with neighbours joined while `fits(names, names)`;
+    contents are lists or `_Part`s."""
+    out = [parts[0]] if parts else []
+    for names, content in parts[1:]:
+        last_names, last = out[-1]
+        if fits(last_names, names):
+            if isinstance(last, _Part):
+                last = _Part(last.names | content.names, last.add + content.add, last.delete + content.delete,
+                             last.conditional + content.conditional)
+            else:
+                last = last + content
+            out[-1] = (last_names | names, last)
+        else:
+            out.append((names, content))
+    return out
 
 
 def split(task: PlanningTask, above: int | None = None) -> Split:
@@ -181,12 +312,13 @@ def split(task: PlanningTask, above: int | None = None) -> Split:
             s = parent.get(s)
     taken = {a.name for a in task.actions} | {p.name for p in task.predicates} \
         | {n for pair in (*task.types, *task.objects, *task.constants) for n in pair}
+    kind = dict((*task.objects, *task.constants))
     actions: list[Action] = []
     predicates: list[Predicate] = []
     stages: list[str] = [IDLE]
     parts: dict[str, tuple[str, tuple[int, ...], bool]] = {}
     for action in task.actions:
-        chain = _split_one(action, sizes, below, above, taken | {CHAIN, CHAIN_TYPE, IDLE})
+        chain = _split_one(action, sizes, below, above, taken | {CHAIN, CHAIN_TYPE, IDLE}, kind)
         if chain is None:
             actions.append(action)
             continue
