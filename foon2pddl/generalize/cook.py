@@ -17,6 +17,8 @@ head nouns and modifiers, `similarity.py`) and changes eight things:
    is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
    labels of the 100 public FOON subgraphs and the example network) plus the labels of
    the matrix being computed, so a value does not depend on how small a network is.
+   A staple and its own kind (the ancestor is one label's food sense, no prepared food: pasta~penne)
+   are rejected only above `KIND_BREADTH`: the generic names a thing a recipe uses, not a category.
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
@@ -70,22 +72,17 @@ from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
 from .extend import Assignment, file_labels
-from .senses import Overrides, Resolution, adjective, kitchen_senses, parse_overrides, resolve
+from .senses import Overrides, Resolution, adjective, parse_overrides, resolve, role_senses
 from .similarity import Evidence
 
 #: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
 DEFAULT_BREADTH = 0.02
 
+#: Breadth up to which a staple food's own sense is no category for its kinds (rule 3; see docs).
+KIND_BREADTH = 0.03
+
 #: WordNet kinds from which a label rule 6 holds to its kinds is a class, not a thing a recipe uses (rule 8).
 CLASS_KINDS = 30
-
-#: Artifact synsets under which a tool or container sense is a kitchen one.
-KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
-    "container.n.01", "implement.n.01", "device.n.01", "tableware.n.01", "home_appliance.n.01",
-    "kitchen_appliance.n.01", "furniture.n.01", "covering.n.02", "crockery.n.01", "cutlery.n.02",
-    "wrapping.n.01", "sheet.n.06", "utensil.n.01", "vessel.n.03",
-})
-
 
 #: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
 PREPARED: frozenset[str] = frozenset({"dish.n.02", "baked_goods.n.01", "beverage.n.01"})
@@ -116,36 +113,10 @@ def reference_vocabulary() -> tuple[str, ...]:
     return tuple(sorted({normalize_label(x) for x in text.splitlines()} - {""}))
 
 
-def role_senses(reader, term: str) -> dict[str, str]:
-    """Senses of `term` for the role it plays: food, else kitchen artifact, else substance, else any (module doc)."""
-    found = kitchen_senses(reader, term)
-    for kind in ("noun.food", "noun.artifact", "noun.substance"):
-        picked = {n: k for n, k in found.items() if k == kind}
-        if kind == "noun.artifact" and picked:
-            kitchen = {n: k for n, k in picked.items() if _under(reader, n, KITCHEN_ARTIFACTS)}
-            picked = kitchen or picked
-        if picked:
-            return picked
-    return found
-
-
 @lru_cache(maxsize=4096)
 def kinds(reader, name: str) -> int:
     """How many WordNet kinds (hyponyms, transitively) synset `name` has (rule 8)."""
     return sum(1 for _ in reader.synset(name).closure(lambda s: s.hyponyms()))
-
-
-def _under(reader, name: str, roots: frozenset[str]) -> bool:
-    seen, stack = set(), [reader.synset(name)]
-    while stack:
-        s = stack.pop()
-        if s.name() in roots:
-            return True
-        for h in s.hypernyms() + s.instance_hypernyms():
-            if h.name() not in seen:
-                seen.add(h.name())
-                stack.append(h)
-    return False
 
 
 @lru_cache(maxsize=1)
@@ -161,7 +132,8 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties"
+RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties, "
+         "staple kinds")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -285,6 +257,11 @@ class CookSimilarity:
             return True
         return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
 
+    def staple(self, lcs: str, s: str, t: str) -> bool:
+        """Whether `lcs` is one of the senses `s`, `t` and a food that is no prepared food (rule 3: pasta.n.02)."""
+        return lcs in (s, t) and self.reader.synset(lcs).lexname() == "noun.food" and not (
+            self._wup.ancestors(lcs) & PREPARED)
+
     def __call__(self, a: str, b: str) -> float:
         return self.explain(a, b).similarity
 
@@ -383,7 +360,7 @@ class CookSimilarity:
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
                 share = self.coverage(lcs)
-                if s != t and share > self.breadth:
+                if s != t and share > (max(self.breadth, KIND_BREADTH) if self.staple(lcs, s, t) else self.breadth):
                     if broad is None or value > broad.similarity:
                         broad = Evidence(value, lcs, s, t, share, "broad")
                 elif value > best.similarity:

@@ -7,7 +7,8 @@ kitchen-relevant lexicographer files (`KITCHEN_LEXNAMES`: with all senses,
 falls back to its head noun: leading words are dropped until the rest is a term
 (`blueberry muffin` -> head `muffin`, modifier `blueberry`). The overrides file
 (`generalize/data/similarity_overrides.json`) names the senses of labels WordNet
-lacks or gets wrong, and fixes the similarity of particular pairs.
+lacks or gets wrong, and fixes the similarity of particular pairs. The cook similarity
+keeps the senses of a label's role (`role_senses`: food, else kitchen artifact, ...).
 """
 
 from __future__ import annotations
@@ -181,3 +182,38 @@ def adjective(reader, word: str) -> bool:
     def tags(pos: str) -> int:
         return sum(x.count() for s in reader.synsets(word, pos) for x in s.lemmas() if x.name().lower() == word)
     return tags("a") > tags("n")
+
+
+#: Artifact synsets under which a tool or container sense is a kitchen one.
+KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
+    "container.n.01", "implement.n.01", "device.n.01", "tableware.n.01", "home_appliance.n.01",
+    "kitchen_appliance.n.01", "furniture.n.01", "covering.n.02", "crockery.n.01", "cutlery.n.02",
+    "wrapping.n.01", "sheet.n.06", "utensil.n.01", "vessel.n.03",
+})
+
+
+def role_senses(reader, term: str) -> dict[str, str]:
+    """Senses of `term` for the role it plays: food, else kitchen artifact (under `KITCHEN_ARTIFACTS`, all its
+    artifact senses when none is), else substance, else any (the cook similarity's rule 1, `cook.py`)."""
+    found = kitchen_senses(reader, term)
+    for kind in ("noun.food", "noun.artifact", "noun.substance"):
+        picked = {n: k for n, k in found.items() if k == kind}
+        if kind == "noun.artifact" and picked:
+            kitchen = {n: k for n, k in picked.items() if _under(reader, n, KITCHEN_ARTIFACTS)}
+            picked = kitchen or picked
+        if picked:
+            return picked
+    return found
+
+
+def _under(reader, name: str, roots: frozenset[str]) -> bool:
+    seen, stack = set(), [reader.synset(name)]
+    while stack:
+        s = stack.pop()
+        if s.name() in roots:
+            return True
+        for h in s.hypernyms() + s.instance_hypernyms():
+            if h.name() not in seen:
+                seen.add(h.name())
+                stack.append(h)
+    return False
