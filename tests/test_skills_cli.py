@@ -328,3 +328,23 @@ def test_the_relational_task_gets_a_share_of_the_time_limit_when_a_fallback_may_
     calls.clear()
     assert run("--goal", "whipped cream", "--skills", "--time-limit", "40", "--encoding", "relational").exit_code == 0
     assert calls == [("relational", 40)]
+
+
+def test_retrieve_reads_a_lacked_skill_as_one_ban_and_warns_only_when_it_bans_nothing(tmp_path):
+    """docs/skills.md: a constraints file's `without_skills` bans the skill's motions for `retrieve` too. The
+    table maps pour to nine motions (add, drain, fill, ...); the example network has only pour among them: the
+    constraints line counts the ban once, as the user gave it, and there is no warning that the network has no
+    `add` (the user did not name it). A skill none of whose motions is in the network gets one warning."""
+    profile = tmp_path / "robot.json"
+    profile.write_text('{"without_skills": ["pour"]}')
+    result = CliRunner().invoke(main, ["retrieve", "--goal", "whipped cream", "--constraints", str(profile)])
+    assert result.exit_code == 1, result.output
+    constraints = [x for x in result.stderr.splitlines() if x.startswith("constraints: ")]
+    assert constraints == ["constraints: `without-skill pour` removes 21 of 101 units"], result.stderr
+    assert "warning" not in result.stderr, result.stderr
+    profile.write_text('{"without_skills": ["grate"]}')
+    result = CliRunner().invoke(main, ["retrieve", "--goal", "whipped cream", "--constraints", str(profile)])
+    assert result.exit_code == 0, result.output
+    warnings = [x for x in result.stderr.splitlines() if x.startswith("warning: ")]
+    assert warnings == ["warning: no unit of the network has a motion the table maps to the skill 'grate' "
+                        "(`without-skill grate`)"], result.stderr

@@ -161,7 +161,11 @@ def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str 
     """
     total = len(removal.foon.units)
     parts, warnings = [], []
+    skills: dict[str, set[int]] = {}  # a lacking skill's motion bans, read as the one option the user gave
     for c in removal.constraints.items:
+        if c.skill:
+            skills.setdefault(c.skill, set()).update(removal.removed.get(c, ()))
+            continue
         if c.kind is Kind.MUST_USE:
             n = len(removal.users.get(c.value, ()))
             parts.append(f"`{c.describe()}`: {n} units use it")
@@ -175,6 +179,11 @@ def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str 
         elif not n:
             warnings.append(f"warning: no unit of the network mentions {c.value!r} (`{c.detail()}`, "
                             f"from {c.source or 'the options'})")
+    for skill, gone in sorted(skills.items()):
+        parts.append(f"`without-skill {skill}` removes {len(gone)} of {total} units")
+        if not gone:
+            warnings.append(f"warning: no unit of the network has a motion the table maps to the skill {skill!r} "
+                            f"(`without-skill {skill}`)")
     return (["constraints: " + "; ".join(parts)] if parts else []) + warnings
 
 
