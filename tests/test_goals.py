@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from foon2pddl.errors import FoonSyntaxError, UsageError
@@ -187,3 +189,17 @@ def test_an_unknown_goal_names_the_command_listing_this_networks_goals():
     assert lifted.exit_code == 2 and "`foon2pddl goals --network gen` lists the categories" in lifted.stderr
     listed = runner.invoke(main, ["goals", "--network", "gen"])
     assert listed.exit_code == 0 and " beverages" in listed.stdout
+
+
+def test_the_legend_names_the_embedded_kitchen_by_its_path_in_the_package():
+    """Where the package is installed is no part of the output (as notes name example units): the legend and
+    the JSON name the embedded kitchen `foon2pddl/data/example_kitchen.txt`, not an absolute path."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+
+    text = CliRunner().invoke(main, ["goals", "--dishes"])
+    assert text.exit_code == 0, text.output
+    assert " can be made from foon2pddl/data/example_kitchen.txt (round" in text.stdout.splitlines()[0]
+    data = CliRunner().invoke(main, ["goals", "--dishes", "--json"])
+    assert json.loads(data.stdout)["kitchen"] == "foon2pddl/data/example_kitchen.txt"

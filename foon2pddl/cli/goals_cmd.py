@@ -9,6 +9,7 @@ import click
 from ..generalize.network import DEFAULT_NETWORK, NETWORKS
 from ..io.jsonio import node_to_dict
 from ..model.foon import Foon
+from ..pddl.encoding import shown_path
 from ..retrieval import Reachability, reachable
 from . import main
 from .options import emit, kitchen_option, level_option, load_view, network_option, output_option, paths_argument
@@ -59,7 +60,7 @@ def goals(paths, kitchen, level, network, as_json, only_reachable, only_dishes, 
         rows = [r for r in rows if r["reachable"]]
     if only_dishes:
         rows = [r for r in rows if r["dish"]]
-    source = kit.source or "the kitchen"
+    source = shown_path(kit.source) if kit.source else "the kitchen"  # the embedded one by its path in the package
     if as_json:
         data = {"level": level, "network": network, "kitchen": source,
                 "reachable": sum(r["reachable"] for r in rows), "total": len(rows), "goals": rows}
