@@ -180,7 +180,8 @@ def search_config(alias: str | None = None, search: str | None = None, evaluator
     if evaluators and search is None:
         raise ValueError("--evaluator defines an evaluator for --search; give --search too")
     if optimal and (alias is not None or search is not None):
-        raise ValueError("--optimal is the alias seq-opt-lmcut; drop it or --alias/--search")
+        raise ValueError("--optimal chooses an optimal search itself (seq-opt-lmcut, or astar(hmax()) on a task with "
+                         "conditional effects such as the relational encoding's); drop it or --alias/--search")
     if search is not None:
         if not search.strip():
             raise ValueError("empty --search")
