@@ -203,3 +203,22 @@ def test_the_legend_names_the_embedded_kitchen_by_its_path_in_the_package():
     assert " can be made from foon2pddl/data/example_kitchen.txt (round" in text.stdout.splitlines()[0]
     data = CliRunner().invoke(main, ["goals", "--dishes", "--json"])
     assert json.loads(data.stdout)["kitchen"] == "foon2pddl/data/example_kitchen.txt"
+
+
+def test_a_bare_label_with_no_dish_and_no_final_product_says_any_of_its_nodes_will_do():
+    """docs/format.md: the command says which nodes a bare label was read as. Every `avocado` node of the example
+    is used by some unit (none is a dish or a final product), so any of them satisfies the goal and retrieval
+    makes the one it reaches first (the avocado put on the board, 1 unit): a note says so and names them."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+
+    result = CliRunner().invoke(main, ["retrieve", "--goal", "avocado"])
+    assert result.exit_code == 0, result.output
+    notes = [x for x in result.stderr.splitlines() if x.startswith("note: goal 'avocado'")]
+    assert len(notes) == 1, result.stderr
+    assert notes[0].startswith("note: goal 'avocado' names no recipe's dish and no final product (a unit uses each "
+                               "'avocado' node): any of its 4 nodes will do, the first made is taken "
+                               "(give the states to ask for one): `avocado (halved, on [cutting board])`; "), notes
+    single = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole: in [bowl]"])  # states given: no note
+    assert "note: goal" not in single.stderr

@@ -11,7 +11,7 @@ reaches the goal.
 from __future__ import annotations
 
 import difflib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..errors import UsageError
 from .containment import is_auxiliary
@@ -39,7 +39,7 @@ class Goal:
     spec: GoalSpec
     candidates: tuple[ObjectNode, ...]
     level: int = 3
-    preferred: str = ""  # why a bare label kept only these nodes: "dish", "final product" or "" (all kept)
+    preferred: str = ""  # why a bare label kept these nodes: "dish", "final product", "any" (all of several) or ""
     others: tuple[ObjectNode, ...] = ()  # the label's other produced nodes, left out by that preference
 
     def describe(self) -> str:
@@ -50,6 +50,15 @@ class Goal:
         `asked`: the label the user typed, named first when `network` (FOON-GEN) reads it as another one."""
         if not self.preferred:
             return ""
+        label = self.spec.label
+        name = f"{asked!r} (FOON-{network.upper()}: {label!r})" if asked and asked != label else repr(label)
+        if self.preferred == "any":
+            shown = "; ".join(f"`{c.describe()}`" for c in self.candidates[:limit])
+            if len(self.candidates) > limit:
+                shown += f"; ... ({len(self.candidates) - limit} more)"
+            return (f"goal {name} names no recipe's dish and no final product (a unit uses each {label!r} node): "
+                    f"any of its {len(self.candidates)} nodes will do, the first made is taken "
+                    f"(give the states to ask for one): {shown}")
         many = len(self.candidates) > 1
         what = ("the recipes' dishes" if many else "the recipe's dish") if self.preferred == "dish" else \
             ("the final products (no unit uses them)" if many else "the final product (no unit uses it)")
@@ -57,8 +66,6 @@ class Goal:
         more = "; ".join(f"`{o.describe()}`" for o in self.others[:limit])
         if len(self.others) > limit:
             more += f"; ... ({len(self.others) - limit} more)"
-        label = self.spec.label
-        name = f"{asked!r} (FOON-{network.upper()}: {label!r})" if asked and asked != label else repr(label)
         return (f"goal {name} read as {what}: {chosen}; other {label!r} nodes "
                 f"(give the states to ask for one): {more}")
 
@@ -110,7 +117,8 @@ def spec_of_node(node: ObjectNode) -> GoalSpec:
 
 def prefer_dishes(goal: Goal, foon: Foon) -> Goal:
     """A bare label means the dish: keep the candidates that are a recipe's dish, else those no unit
-    consumes (final products), else all; the ones left out are kept in `others` for the note.
+    consumes (final products), else all (marked "any" when there are several, for the note); the ones left out
+    are kept in `others` for the note.
 
     A cook asking for `salmon` means the finished salmon, not the first state some recipe
     passes through (the earliest-made node, which `complete` retrieval would pick). O(candidates).
@@ -122,7 +130,7 @@ def prefer_dishes(goal: Goal, foon: Foon) -> Goal:
             return Goal(goal.spec, tuple(keep), goal.level, kind, others)
         if keep:
             return goal
-    return goal
+    return replace(goal, preferred="any") if len(goal.candidates) > 1 else goal
 
 
 def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None, *, listing: str = "foon2pddl goals") -> Goal:
