@@ -3,6 +3,7 @@ the parts, the plan comes back with one step per unit firing, every binding in p
 
 from __future__ import annotations
 
+from dataclasses import replace
 from math import prod
 
 from relational_checks import clean_plan
@@ -143,3 +144,21 @@ def test_the_planner_gets_the_chain_and_the_plan_fires_the_unit_once(monkeypatch
     mixes = [step.split() for step in outcome.result.plan if step.startswith("mix")]
     assert len(mixes) == 1 and mixes[0][0] == "mix_u2" and len(mixes[0]) == 7, outcome.result.plan
     assert not any("-begin" in s or "-check-" in s or "-end" in s for s in outcome.result.plan)
+
+
+def _boxes(n: int):
+    return replace(BOXES, objects=(("a1", BOX), ("a2", BOX), *((f"x{i}", ITEM) for i in range(n))))
+
+
+def test_an_action_whose_sweeps_multiply_is_split_though_its_parameters_do_not():
+    # 2 boxes x 2 boxes x 400 items = 1,600 bindings, under the bound, but each sweeps twice over the 400 items: a
+    # planner looks at 1.28 million effects (the odd-index universal shrimp mango salad's mix: 3,600 bindings, 14
+    # sweeps)
+    lots = _boxes(400)
+    chains = split(lots, above=2000)
+    # the binding part may bind all three (no effect there); no sweep grounds once per binding
+    swept = [p for p in _parts(chains, MOVE) if p.conditional]
+    assert swept and all(len(p.params) < 3 for p in swept)
+    # with 40 items, 160 bindings x 81 stay under what a binding's sweeps may add
+    few = _boxes(40)
+    assert 160 * 81 <= 1000 * split_actions.SWEEPS_PER_BINDING and split(few, above=1000).task is few

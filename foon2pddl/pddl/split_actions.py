@@ -10,8 +10,10 @@ the parameter's own effects say nothing the quantified one does not. Such a para
 (those an effect names) are *kept*. The checked parameters fall into groups linked by the preconditions that
 name two of them (a bowl of salt and the salt in it); each group's preconditions name besides only kept ones.
 
-An action whose parameters' objects multiply past `SPLIT_ABOVE` is split (action schema splitting, as planners'
-compilations for large schemas do) into a chain, when every part is smaller than the whole. Parts that *bind*:
+An action whose parameters' objects multiply past `SPLIT_ABOVE`, or whose *weight* (bindings x (1 + the objects
+its quantified effects range over)) passes `SWEEPS_PER_BINDING` times that, is split (action schema splitting, as
+planners' compilations for large schemas do) into a chain, when every part weighs less than the whole. Parts
+that *bind*:
 
 * `<action>-begin` takes the lock (`(chain idle)`, which every other action and the goal need, becomes the chain's
   first stage) and, like each `<action>-check-i` after it, binds some parameters where the preconditions over
@@ -48,7 +50,7 @@ from math import prod
 
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
-__all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "Split", "split"]
+__all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "SWEEPS_PER_BINDING", "Split", "split"]
 
 #: `(chain s)`: where the chains are, one fact at any time: `(chain idle)` (no chain under way: every action but
 #: a chain's later parts needs it, and so does the goal) or the stage a chain is at. One predicate over constants
@@ -58,6 +60,10 @@ __all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "Split", "split"]
 CHAIN, CHAIN_TYPE, IDLE = "chain", "chain-stage", "idle"
 #: An action whose parameters' objects multiply past this is split where it can be.
 SPLIT_ABOVE = 4096
+#: ... and so is one whose bindings times the objects its quantified effects range over (plus one) pass this many
+#: times `SPLIT_ABOVE`: a planner looks at each sweep's objects once per binding (the odd-index universal shrimp mango
+#: salad's mix: 3,600 bindings, 14 sweeps, 251,200 ground effects).
+SWEEPS_PER_BINDING = 64
 
 
 @dataclass(frozen=True)
@@ -220,8 +226,13 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
                kind: dict[str, str]):
     """The chain of parts of `action` with their join entries, or None when it stays whole."""
     size = {v: sizes.get(t, 0) for v, t in action.params}
-    whole = prod(size.values())
-    if whole <= above:
+
+    def weight(names, conditional) -> int:  # bindings x (1 + objects its sweeps range over)
+        return prod(size[v] for v in names) * (1 + sum(prod(sizes.get(t, 0) for _, t in c.quantified)
+                                                        for c in conditional))
+
+    whole = weight(size, action.conditional)
+    if prod(size.values()) <= above and whole <= above * SWEEPS_PER_BINDING:
         return None
     own = [e for e in action.add if not _subsumed(e, True, action, below)]
     own_del = [e for e in action.delete if not _subsumed(e, False, action, below)]
@@ -246,7 +257,8 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     effects = _merged([(p.names, p) for p in _effect_parts(action, own, own_del, below, kind)],
                       lambda a, b: prod(size[v] for v in a | b) <= max(prod(size[v] for v in x) for x in (a, b)))
     names_of = [x for x, _ in binds] + [x for x, _ in effects]
-    if not effects or len(names_of) < 2 or max(prod(size[v] for v in x) for x in names_of) >= whole:
+    if not effects or len(names_of) < 2 or max(*(weight(x, ()) for x, _ in binds),
+                                               *(weight(x, e.conditional) for x, e in effects)) >= whole:
         return None
     types = dict(action.params)
     index = {v: i for i, v in enumerate(order)}
