@@ -45,6 +45,21 @@ def test_user_overrides_extend_the_table(run, tmp_path):
     assert bad.exit_code == 2 and f"{extra}:" in bad.stderr and "forbidden" in bad.stderr
 
 
+def test_an_overrides_file_with_a_typo_or_a_key_given_twice_is_an_error(run, tmp_path):
+    """Stop 46's pass: `--overrides` read its JSON with `json.loads`, so `"sensez"` (a typo) was ignored and
+    a second `"pairs": []` dropped the first silently, where constraints.md says a key given twice is an error
+    in every JSON input. Both are errors naming the file and line (exit 2); the shipped file's `_comment` stays."""
+    extra = tmp_path / "mine.json"
+    extra.write_text('{\n  "pairs": [["pot", "saucepan", 0.95]],\n  "sensez": {}\n}')
+    typo = run("similarity", "pot", "saucepan", "--overrides", str(extra))
+    assert typo.exit_code == 2 and typo.stderr.startswith(f"{extra}:3: error: unknown key 'sensez'"), typo.stderr
+    extra.write_text('{\n  "pairs": [["pot", "saucepan", 0.95]],\n  "pairs": []\n}')
+    twice = run("similarity", "pot", "saucepan", "--overrides", str(extra))
+    assert twice.exit_code == 2 and twice.stderr.startswith(f"{extra}:3: error: duplicate key 'pairs'"), twice.stderr
+    extra.write_text('{"_comment": "mine", "pairs": [["pot", "saucepan", 0.95]]}')
+    assert run("similarity", "pot", "saucepan", "--overrides", str(extra)).stdout == "0.9500\n"
+
+
 def test_expand_pairs_lists_every_substitution_with_its_evidence(run):
     tsv = run("expand", "--pairs")
     assert tsv.exit_code == 0, tsv.stderr

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from foon2pddl.errors import FoonInputError, MissingDependencyError
+from foon2pddl.errors import FoonInputError, FoonSyntaxError, MissingDependencyError
 from foon2pddl.generalize import similarity as simmod
 from foon2pddl.generalize import wordnet
 from foon2pddl.generalize.senses import KITCHEN_LEXNAMES, Overrides, parse_overrides, shipped_overrides
@@ -159,8 +159,9 @@ def test_bad_overrides_are_reported_with_their_file(label_similarity):
     with pytest.raises(FoonInputError) as err:
         parse_overrides('{"pairs": [["a", "b", 3]]}', "over.json")
     assert err.value.path == "over.json" and "0..1" in err.value.message
-    with pytest.raises(FoonInputError):
+    with pytest.raises(FoonSyntaxError) as err:  # invalid JSON names its line (load_json, as every JSON input)
         parse_overrides("{not json", "over.json")
+    assert err.value.line == 1
     bad = Overrides({"thing": ("nosuch.n.01",)}, {})
     with pytest.raises(FoonInputError):
         LabelSimilarity(label_similarity.reader, bad).resolution("thing")

@@ -13,14 +13,14 @@ keeps the senses of a label's role (`role_senses`: food, else kitchen artifact, 
 
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, FoonSyntaxError
+from ..io.json_text import key_line, load_json
 
 #: Lexicographer files whose noun senses can name a kitchen object.
 KITCHEN_LEXNAMES: frozenset[str] = frozenset(
@@ -31,6 +31,8 @@ KITCHEN_LEXNAMES: frozenset[str] = frozenset(
 LIVING: frozenset[str] = frozenset({"noun.plant", "noun.animal"})
 
 _SPLIT = re.compile(r"[\s\-_]+")
+#: The keys of an overrides file (`_comment`: a note for its readers).
+OVERRIDE_KEYS = ("senses", "pairs", "forbidden", "_comment")
 
 
 def overrides_path() -> Path:
@@ -63,11 +65,12 @@ class Overrides:
 
 def parse_overrides(text: str, path: str) -> Overrides:
     """Read `{"senses": {label: [synset, ...]}, "pairs": [[a, b, value], ...], "forbidden": [[a, b], ...]}`
-    (every key optional); errors name the file."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise FoonInputError(path, exc.lineno, f"invalid JSON: {exc.msg}") from None
+    (every key optional, `_comment` a note); errors name the file, and the line of an unknown or repeated key."""
+    data = load_json(text, path)
+    for key in data if isinstance(data, dict) else ():
+        if key not in OVERRIDE_KEYS:
+            raise FoonSyntaxError(path, key_line(text, key),
+                                  f"unknown key {key!r} (expected one of {', '.join(OVERRIDE_KEYS)})")
     if not isinstance(data, dict) or not isinstance(data.get("senses", {}), dict) \
             or not isinstance(data.get("pairs", []), list):
         raise FoonInputError(path, 0, "expected {\"senses\": {label: [synset, ...]}, \"pairs\": [[a, b, value], ...]}")

@@ -18,7 +18,6 @@ only when nothing else makes the goal. Errors name the file and the line of the 
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Iterable
 from pathlib import Path
@@ -26,7 +25,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError, UsageError
 from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
 from .foon_lines import CONTROL_CHARS
-from .json_text import load_json
+from .json_text import key_line, load_json
 from .parser import read_text
 from .rates import Rates
 
@@ -41,12 +40,6 @@ MAX_COST = -math.log(MIN_RATE)
 def is_constraints(data: object) -> bool:
     """Whether decoded JSON reads as a constraints document: an object with keys, each a constraints key."""
     return isinstance(data, dict) and bool(data) and all(key in KEYS for key in data)
-
-
-def _line_of(text: str, key: str) -> int:
-    """1-based line of the first occurrence of `"key"` (1 when not found)."""
-    at = text.find(json.dumps(key))
-    return text.count("\n", 0, at) + 1 if at >= 0 else 1
 
 
 def _labels(value, path: str, line: int, key: str) -> list[str]:
@@ -72,20 +65,20 @@ def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
         raise FoonSyntaxError(path, 1, "a constraints file is a JSON object")
     for key in data:
         if key not in KEYS:
-            raise FoonSyntaxError(path, _line_of(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
+            raise FoonSyntaxError(path, key_line(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
     items = [Constraint(kind, v, path) for key, kind in LIST_KEYS.items()
-             for v in _labels(data.get(key, []), path, _line_of(text, key), key)]
+             for v in _labels(data.get(key, []), path, key_line(text, key), key)]
     rates: list[tuple[str, float]] = []
     for key in ("rates", "costs"):
-        line = _line_of(text, key)
+        line = key_line(text, key)
         for motion, number in _table(data.get(key, {}), path, line, key).items():
             if key == "costs":
                 if not 0.0 <= number < math.inf:
                     raise FoonSyntaxError(path, line, f"cost of {motion!r} must be >= 0, not {number!r}")
                 number = max(math.exp(-number), MIN_RATE)
             rates.append((motion, float(number)))
-    lacks = _labels(data.get("without_skills", []), path, _line_of(text, "without_skills"), "without_skills")
-    line = _line_of(text, "skill_costs")
+    lacks = _labels(data.get("without_skills", []), path, key_line(text, "without_skills"), "without_skills")
+    line = key_line(text, "skill_costs")
     skill_costs = data.get("skill_costs", {})
     if not isinstance(skill_costs, dict) or not all(isinstance(v, int) and not isinstance(v, bool) and v >= 0
                                                     for v in skill_costs.values()):
@@ -93,7 +86,7 @@ def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
     try:
         return make_constraints(items, rates, (path,), lacks, skill_costs.items())
     except ValueError as exc:
-        raise FoonSyntaxError(path, _line_of(text, "rates"), str(exc)) from None
+        raise FoonSyntaxError(path, key_line(text, "rates"), str(exc)) from None
 
 
 def read_constraints(path: str | Path) -> Constraints:

@@ -110,6 +110,12 @@ def load_json(text: str, path: str) -> Any:
                               f"integer with {digits} digits (at most {MAX_INT_DIGITS} are read)") from None
 
 
+def key_line(text: str, key: str) -> int:
+    """1-based line of the first occurrence of `"key"` (1 when not found)."""
+    at = text.find(json.dumps(key))
+    return text.count("\n", 0, at) + 1 if at >= 0 else 1
+
+
 def text_problem(value: str, what: str) -> str | None:
     """Why `value` cannot be label text (`what` names it in the message), else None."""
     if CONTROL_CHARS.search(value):
