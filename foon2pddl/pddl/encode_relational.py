@@ -18,9 +18,8 @@
   - an object that moves must be in its source holder (deleted) and goes into its
     target (added); a source the unit does not name is left by a quantified delete
     `(forall (?h - physical-object) (when (in ?h ?x) (not (in ?h ?x))))`, never by one
-    parameter per possible source (seven read-only bowls poured from are not 9^7
-    groundings); a target the unit does not name is one parameter of its label
-    per unit (the planner picks the oven);
+    parameter per possible source (seven read-only bowls poured from are not 9^7 groundings); a target the unit
+    does not name is one parameter of its label per unit (the planner picks the oven);
   - a portion (`SPLITS`) is a not-yet-made object that arrives at the target in
     the role's output node, while the object it was taken from stays;
   - a container FOON filled earlier and leaves out of the outputs is emptied of
@@ -208,7 +207,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = with_live(task)  # late-bound targets exist: (live x), made to consumed
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
-    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed)
+    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
+                    counted=frozenset(u for u, _ in rd.counts.firings))  # the units of the plan counted from
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],

@@ -20,11 +20,14 @@ Two analyses, one per semantics, both solvability-preserving:
 And one for lifted tasks, exact whatever the semantics: `drop_unbindable` drops the actions whose static
 preconditions no binding of their parameters satisfies (the `instances` encoding's lanes leave most
 unit schemas of a large goal so), which Fast Downward's translator would ground to nothing anyway.
+
+`counted_only` does not preserve solvability: the task's actions of the units a plan fires (the `relational`
+plan the objects are counted from), which `planners.solve.plan` tries before the whole task.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from dataclasses import replace
 from itertools import chain
 
@@ -239,3 +242,11 @@ def _same_var_same_value(at: list[tuple[int, str]], row: tuple[str, ...]) -> boo
     """Whether `row` gives a variable that occurs twice in an atom (its `(position, variable)`s) one value."""
     seen: dict[str, str] = {}
     return all(seen.setdefault(x, row[i]) == row[i] for i, x in at)
+
+
+def counted_only(task: PlanningTask, units: Collection[int]) -> PlanningTask | None:
+    """`task` with only the actions of `units` (and those of no unit: the goal's), or None when that leaves out
+    none of its actions (or `units` is empty: not known). Every plan of it is a plan of `task`, not the other way
+    round: the task may need a unit the counted plan does not fire (one that restores what it reads twice)."""
+    kept = tuple(a for a in task.actions if a.unit is None or a.unit in units)
+    return replace(task, actions=kept) if units and len(kept) < len(task.actions) else None

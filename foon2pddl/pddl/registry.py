@@ -70,6 +70,9 @@ class Compiled:
     #: what the encoder counted small, as a note (`EncodeOptions.narrow`); empty when its counts are the wide
     #: ones: then no wider task has more objects (`planners.solve.plan` plans the wide one when this has no plan)
     narrowed: str = ""
+    #: the units of the plan the encoder counted its objects from (`relational`: FOON's own plan unfolded, as
+    #: `Action.unit` indexes); `planners.solve.plan` plans with them alone first. Empty: not known
+    counted: frozenset[int] = frozenset()
 
     def unit_of(self, action: Action, args: tuple[str, ...] = ()) -> FunctionalUnit | None:
         """The functional unit a plan step of `action` with `args` stands for (None for auxiliary actions)."""

@@ -31,7 +31,7 @@ from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.holder_reach import drop_unreachable
 from ..pddl.interchangeable import in_order
-from ..pddl.prune import drop_unbindable
+from ..pddl.prune import counted_only, drop_unbindable
 from ..pddl.registry import Compiled
 from ..pddl.render import render
 from ..pddl.restore import fewer, returns, with_restore
@@ -160,6 +160,9 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
     valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
     what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
+    Each is planned first (not with `optimal`) with only the actions of the units of the plan its objects are counted
+    from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach),
+    within half its limit (`RETRY_SECONDS` with none), then whole within what is left (at least `MIN_REST`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -183,6 +186,22 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         if unreached is not None:
             _add(timings, "write", time.perf_counter() - t0)
             return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), UNREACHED, unreached), task, timings=timings)
+        # the counted plan's units alone, less to explore (not `optimal`: its best plan may be longer)
+        first = None if optimal else counted_only(smaller, task.counted)
+        if first is not None:
+            first, missed = drop_unreachable(first)
+            first = first if missed is None else None
+        _add(timings, "write", time.perf_counter() - t0)
+        if first is not None:
+            started = _now()
+            out = searched(task, first, limit / 2 if limit is not None else RETRY_SECONDS)
+            if out.status == PlanStatus.SOLVED:
+                return out
+            limit = None if limit is None else max(limit - (_now() - started), MIN_REST)
+        return searched(task, smaller, limit)
+
+    def searched(task: Compiled, smaller: PlanningTask, limit: float | None) -> PlanOutcome:
+        t0 = time.perf_counter()
         chains = Split(smaller)
         if smaller.encoding == "relational":
             if not optimal:  # an action whose parameters multiply: a chain of small parts, joined back below
