@@ -239,7 +239,7 @@ def test_shared_subgraphs_expansion_sizes_per_mode():
     paper = expand(net.foon, similarity="paper")
     assert (paper.original_units, len(paper.foon.units)) == (1845, 19423)
     cook = expand(net.foon)
-    assert (cook.original_units, len(cook.foon.units)) == (1845, 7882)
+    assert (cook.original_units, len(cook.foon.units)) == (1845, 7844)
     assert ("lemon", "lime") in cook.substitutions
     assert not {("cilantro", "banana"), ("banana", "cilantro")} & set(cook.substitutions)
 
@@ -367,17 +367,12 @@ def test_a_words_tagged_counts_are_read_from_wordnet_once():
     assert sorted(read) == ["a", "n"]
 
 
-def test_a_staple_food_and_its_own_kinds_may_share_a_broader_ancestor(cook):
-    """Rule 3 for a kind pair whose ancestor is one label's own sense, a food that is no prepared food (rule 4's
-    dishes, baked goods and drinks): the generic names a thing a recipe uses, not a category, and stands with its
-    kinds up to `KIND_BREADTH` (pasta.n.02 covers 2.4 % of the reference vocabulary: pasta~penne was rejected as
-    broad). Prepared generics (bread, baked goods), broader food classes and siblings keep the 2 % breadth."""
-    from foon2pddl.generalize.cook import KIND_BREADTH
-
-    assert DEFAULT_BREADTH < cook.coverage("pasta.n.02") <= KIND_BREADTH
-    for kind in ("penne", "macaroni", "noodle"):
-        found = cook.explain("pasta", kind)
-        assert found.similarity >= 0.89 and found.ancestor == "pasta.n.02", (kind, found)
-    assert cook.explain("bread", "loaf").rejected == "broad"  # bread.n.01 is a baked good: a prepared food
-    assert cook.coverage("sauce.n.01") > KIND_BREADTH and cook.explain("sauce", "gravy").rejected == "broad"
-    assert cook.explain("grater", "kitchen utensil").rejected == "broad"  # a tool class: rule 3 as before
+def test_a_food_class_and_its_kinds_keep_the_breadth_rule(cook):
+    """Rule 3 holds for a generic and its own kind as for siblings: `herb.n.02` covers 2.8 % of the reference
+    vocabulary, so herb~basil and herb~parsley are rejected as broad. A 3 % breadth for a food generic and its
+    kinds (ea5a9b3, for pasta~penne, 2.4 %) accepted them, and on the blind batch `lemmas5` it added 14 accepted
+    pairs, all bad (herb with its herbs, sweetener with aspartame), and no good one: reverted."""
+    assert DEFAULT_BREADTH < cook.coverage("herb.n.02") < 0.03
+    for kind in ("basil", "parsley"):
+        assert cook.explain("herb", kind).rejected == "broad", kind
+    assert cook.explain("pasta", "penne").rejected == "broad"  # the miss the 3 % was for (pasta.n.02: 2.4 %)

@@ -17,8 +17,6 @@ head nouns and modifiers, `similarity.py`) and changes eight things:
    is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
    labels of the 100 public FOON subgraphs and the example network) plus the labels of
    the matrix being computed, so a value does not depend on how small a network is.
-   A staple and its own kind (the ancestor is one label's food sense, no prepared food: pasta~penne)
-   are rejected only above `KIND_BREADTH`: the generic names a thing a recipe uses, not a category.
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
@@ -78,9 +76,6 @@ from .similarity import Evidence
 #: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
 DEFAULT_BREADTH = 0.02
 
-#: Breadth up to which a staple food's own sense is no category for its kinds (rule 3; see docs).
-KIND_BREADTH = 0.03
-
 #: WordNet kinds from which a label rule 6 holds to its kinds is a class, not a thing a recipe uses (rule 8).
 CLASS_KINDS = 30
 
@@ -132,8 +127,7 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties, "
-         "staple kinds")
+RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties"
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -257,11 +251,6 @@ class CookSimilarity:
             return True
         return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
 
-    def staple(self, lcs: str, s: str, t: str) -> bool:
-        """Whether `lcs` is one of the senses `s`, `t` and a food that is no prepared food (rule 3: pasta.n.02)."""
-        return lcs in (s, t) and self.reader.synset(lcs).lexname() == "noun.food" and not (
-            self._wup.ancestors(lcs) & PREPARED)
-
     def __call__(self, a: str, b: str) -> float:
         return self.explain(a, b).similarity
 
@@ -360,7 +349,7 @@ class CookSimilarity:
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
                 share = self.coverage(lcs)
-                if s != t and share > (max(self.breadth, KIND_BREADTH) if self.staple(lcs, s, t) else self.breadth):
+                if s != t and share > self.breadth:
                     if broad is None or value > broad.similarity:
                         broad = Evidence(value, lcs, s, t, share, "broad")
                 elif value > best.similarity:
