@@ -295,3 +295,12 @@ def test_a_misspelt_json_field_is_named_as_the_typo(tmp_path):
     r = run("stats", bad)
     assert r.exit_code == 2 and "Traceback" not in r.output
     assert "units[0].inputs[0].stats: unknown field 'stats' in object node: did you mean 'states'?" in r.stderr
+
+
+def test_a_misspelt_command_names_the_closest_one():
+    """A newcomer's typo of a command (`foon2pddl retrive`) said only "No such command 'retrive'." where a misspelt
+    option, planner or alias names the closest: the command now does too, and lists the commands."""
+    r = CliRunner().invoke(main, ["retrive", "--goal", "guacamole"])
+    assert r.exit_code == 2
+    assert "Error: No such command 'retrive'; did you mean 'retrieve'? (commands: analyze, categories," in r.stderr
+    assert "Traceback" not in r.output

@@ -73,6 +73,18 @@ class _Group(click.Group):
             importlib.import_module(f"{__name__}.{COMMANDS[cmd_name]}")
         return self.commands.get(cmd_name)
 
+    def resolve_command(self, ctx: click.Context, args: list[str]):
+        """As click's, but a misspelt command names the closest one and lists them all (as a misspelt option)."""
+        name = args[0] if args else ""
+        if name and not name.startswith("-") and not ctx.resilient_parsing and self.get_command(ctx, name) is None:
+            import difflib
+
+            names = self.list_commands(ctx)
+            close = difflib.get_close_matches(name, names, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            ctx.fail(f"No such command {name!r}{hint} (commands: {', '.join(names)})")
+        return super().resolve_command(ctx, args)
+
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
         ctx.meta["argv"] = tuple(args)  # the words as given, for the unquoted-goal hint of an error
         return super().parse_args(ctx, args)
