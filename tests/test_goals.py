@@ -218,7 +218,7 @@ def test_a_bare_label_with_no_dish_and_no_final_product_says_any_of_its_nodes_wi
     notes = [x for x in result.stderr.splitlines() if x.startswith("note: goal 'avocado'")]
     assert len(notes) == 1, result.stderr
     assert notes[0].startswith("note: goal 'avocado' names no recipe's dish and no final product (a unit uses each "
-                               "'avocado' node): any of its 4 nodes will do, the first made is taken "
+                               "'avocado' node): any of its 4 nodes will do, the method chooses which "
                                "(give the states to ask for one): `avocado (halved, on [cutting board])`; "), notes
     single = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole: in [bowl]"])  # states given: no note
     assert "note: goal" not in single.stderr

@@ -57,7 +57,7 @@ class Goal:
             if len(self.candidates) > limit:
                 shown += f"; ... ({len(self.candidates) - limit} more)"
             return (f"goal {name} names no recipe's dish and no final product (a unit uses each {label!r} node): "
-                    f"any of its {len(self.candidates)} nodes will do, the first made is taken "
+                    f"any of its {len(self.candidates)} nodes will do, the method chooses which "
                     f"(give the states to ask for one): {shown}")
         many = len(self.candidates) > 1
         what = ("the recipes' dishes" if many else "the recipe's dish") if self.preferred == "dish" else \
