@@ -1,7 +1,7 @@
 """Messages name a unit's source one way: a file shipped with the package (the embedded example) by its path in
 the package, wherever it is installed; any other file as the user gave it.
 
-Before one helper named them (`pddl.encoding.shown_path`), relational notes printed the embedded example's
+Before one helper named them (`model.where.shown_path`), relational notes printed the embedded example's
 absolute install path (`/.../site-packages/foon2pddl/data/example/09-fruit_salad.foon:199`) while `plan --skills`
 printed `foon2pddl/data/example/...`.
 """
@@ -15,7 +15,7 @@ from conftest import SUBGRAPHS
 
 import foon2pddl
 from foon2pddl.cli import main
-from foon2pddl.pddl.encoding import shown_path
+from foon2pddl.model.where import shown_path
 
 PACKAGE = Path(foon2pddl.__file__).resolve().parent
 

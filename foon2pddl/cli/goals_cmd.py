@@ -9,7 +9,7 @@ import click
 from ..generalize.network import DEFAULT_NETWORK, NETWORKS
 from ..io.jsonio import node_to_dict
 from ..model.foon import Foon
-from ..pddl.encoding import shown_path
+from ..model.where import shown_path
 from ..retrieval import Reachability, reachable
 from . import main
 from .options import emit, kitchen_option, level_option, load_view, network_option, output_option, paths_argument

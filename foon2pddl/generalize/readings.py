@@ -21,6 +21,7 @@ from collections.abc import Iterable, Mapping
 from ..model.constraints import node_labels
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import head_of, listed
+from ..model.where import unit_where
 
 __all__ = ["node_readings", "unit_readings"]
 
@@ -49,8 +50,7 @@ def node_readings(units: Iterable[FunctionalUnit], mapping: Mapping[str, str],
         read = unit_readings(u, mapping)
         if not read:
             continue
-        src = u.source
-        where = f"{src.path}:{src.line}" if src is not None else "?"
+        where = unit_where(u)
         for n in (*u.inputs, *u.outputs):
             for name in node_labels(n) & read.keys():
                 seen.setdefault(n, {}).setdefault(name, set()).add(mapping[read[name]])

@@ -9,11 +9,8 @@ comments, the auxiliary actions for a goal with several candidate nodes).
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import lru_cache
-from pathlib import Path
 
 from ..analysis.index import FoonIndex, index_of
 from ..errors import UsageError
@@ -23,6 +20,7 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project, project_node
+from ..model.where import short_path
 from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
 from .prune import relevant_units
@@ -121,31 +119,6 @@ def select(inp: LevelInputs, prune: bool) -> Selection:
     return Selection(ix, units, nodes, candidates, tuple(i for i in ix.ids(inp.kitchen) if i in chosen))
 
 
-@lru_cache(maxsize=4096)
-def short_path(path: str) -> str:
-    """A source path as written in comments: the file name (output must not depend on checkout place)."""
-    return path.replace("\\", "/").rstrip("/").rsplit("/", 1)[-1] or path
-
-
-#: The package's directory: a file shipped with it (the embedded example) is named by its path in the package.
-_PACKAGE = Path(__file__).resolve().parent.parent
-
-
-@lru_cache(maxsize=4096)
-def shown_path(path: str) -> str:
-    """A source path as notes and reports show it: a file shipped with the package by its path in the package
-    (`foon2pddl/data/example/02-whipped_cream.foon`, wherever it is installed), any other as the user gave it."""
-    if not os.path.isabs(path):
-        return path
-    file = Path(path).resolve()
-    return (Path(_PACKAGE.name) / file.relative_to(_PACKAGE)).as_posix() if file.is_relative_to(_PACKAGE) else path
-
-
-def unit_where(unit: FunctionalUnit, path: Callable[[str], str] = shown_path) -> str:
-    """`FILE:LINE` of the unit's first source, `?` when unknown; `path` names the file: `shown_path` in
-    messages, `short_path` (the file name) in generated files."""
-    src = unit.source
-    return f"{path(src.path)}:{src.line}" if src is not None else "?"
 
 
 def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:

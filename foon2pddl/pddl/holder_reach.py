@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from .encoding import unit_where
+from ..model.where import unit_where
 from .task import Action, Atom, PlanningTask
 
 #: A state nothing says: the object may be in any state.

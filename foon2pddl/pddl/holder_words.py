@@ -13,7 +13,7 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role, unit_roles
 from ..model.places import listed, places
-from .encoding import short_path, unit_where
+from ..model.where import short_path, unit_where
 
 __all__ = ["UnitWords", "aliased", "mismatches", "newly_listed", "part_of", "renamed", "reported", "takers", "task_aliases",
            "unit_words"]

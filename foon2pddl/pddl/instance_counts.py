@@ -52,6 +52,7 @@ from dataclasses import dataclass
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
+from ..model.where import short_path, unit_where
 from .count_returns import with_returns
 from .count_reuse import reused
 from .count_together import makers_together
@@ -287,7 +288,7 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         where = []
         for u, t in takers.get(node, ())[:shown]:
             unit = foon.units[u]
-            src = f" at {unit.source.path.rsplit('/', 1)[-1]}:{unit.source.line}" if unit.source else ""
+            src = f" at {unit_where(unit, short_path)}" if unit.source else ""
             where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
         more = len(takers.get(node, ())) - shown
         out.append(f"{k} x {node.describe()}: in the plan the counts are derived from (FOON's, unfolded), each of "

@@ -15,7 +15,7 @@ from collections.abc import Sequence
 
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, TraceStep
-from .encoding import unit_where
+from ..model.where import unit_where
 from .registry import PlanDecodeError
 from .task import PlanningTask
 from .trace_view import TraceView, binding_kind, show_node, step_text

@@ -43,7 +43,8 @@ from dataclasses import dataclass, replace
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.memo import per_network
 from ..model.places import listed, places
-from .encoding import LevelInputs, short_path, unit_where
+from ..model.where import short_path, unit_where
+from .encoding import LevelInputs
 from .input_stitch import stitched_inputs
 from .relational_init import kitchen_implied
 

@@ -30,7 +30,8 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.memo import per_network
 from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
-from .encoding import LevelInputs, short_path, unit_where
+from ..model.where import short_path, unit_where
+from .encoding import LevelInputs
 from .list_drops import path_taker, placed_at
 
 __all__ = ["arrival_notes", "arrivals", "read_arrivals"]

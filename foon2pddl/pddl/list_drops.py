@@ -37,7 +37,7 @@ from ..model.aliases import unit_aliases
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
-from .encoding import short_path, unit_where
+from ..model.where import short_path, unit_where
 from .holders import Fate
 from .relational_plan import UnitPlan
 

@@ -17,7 +17,8 @@ from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.scene import SceneObject
-from .encoding import LevelInputs, short_path, unit_where
+from ..model.where import short_path, unit_where
+from .encoding import LevelInputs
 from .holders import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, derive_counts

@@ -31,6 +31,7 @@ from ..model.goal import Goal
 from ..model.levels import project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation, justify, validate
+from ..model.where import short_path, unit_where
 from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
@@ -219,7 +220,7 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
             continue  # bookkeeping actions (goal reached) and repeats are not units of the plan's own
         seen.add(unit)
         if unit not in kept:  # where it was read: a left-out unit may look like a kept one renamed (gen-lifted)
-            src = f" at {unit.source.path.rsplit('/', 1)[-1]}:{unit.source.line}" if unit.source else ""
+            src = f" at {unit_where(unit, short_path)}" if unit.source else ""
             out.append(f"{n} ({unit.motion.label}{src}: {', '.join(o.describe() for o in unit.outputs[:2])})")
     if not out:
         return ()

@@ -11,6 +11,7 @@ from collections.abc import Mapping
 
 from ..model.physical import PhysicalTrace, TraceStep
 from ..model.places import describes_contents, places
+from ..model.where import unit_where
 
 __all__ = ["container_labels", "step_source"]
 
@@ -32,5 +33,4 @@ def step_source(step: TraceStep) -> str:
     """The step's `source`, else its unit's first `file:line`."""
     if step.source:
         return step.source
-    src = step.unit.source
-    return f"{src.path}:{src.line}" if src is not None else ""
+    return unit_where(step.unit) if step.unit.source is not None else ""

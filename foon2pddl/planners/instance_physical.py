@@ -50,7 +50,7 @@ from ..model.foon import ObjectNode
 from ..model.pairing import Role, RoleKind
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..model.places import listed, places
-from ..pddl.encoding import short_path
+from ..model.where import short_path
 from ..pddl.task import PlanningTask
 from .physical_replay import replay
 

@@ -1,0 +1,43 @@
+"""How messages and generated files name where a unit was read (`FILE:LINE`): one way for every module.
+
+Messages (notes, reasons, reports) name a file shipped with the package, the embedded example, by its path in
+the package (`foon2pddl/data/example/07-guacamole.foon:28`, wherever it is installed) and any other file as the
+user gave it; generated files (PDDL comments) by the file name alone, so they do not depend on a checkout place.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from functools import lru_cache
+from pathlib import Path
+
+from .foon import FunctionalUnit
+
+__all__ = ["short_path", "shown_path", "unit_where"]
+
+@lru_cache(maxsize=4096)
+def short_path(path: str) -> str:
+    """A source path as written in comments: the file name (output must not depend on checkout place)."""
+    return path.replace("\\", "/").rstrip("/").rsplit("/", 1)[-1] or path
+
+
+#: The package's directory: a file shipped with it (the embedded example) is named by its path in the package.
+_PACKAGE = Path(__file__).resolve().parent.parent
+
+
+@lru_cache(maxsize=4096)
+def shown_path(path: str) -> str:
+    """A source path as notes and reports show it: a file shipped with the package by its path in the package
+    (`foon2pddl/data/example/02-whipped_cream.foon`, wherever it is installed), any other as the user gave it."""
+    if not os.path.isabs(path):
+        return path
+    file = Path(path).resolve()
+    return (Path(_PACKAGE.name) / file.relative_to(_PACKAGE)).as_posix() if file.is_relative_to(_PACKAGE) else path
+
+
+def unit_where(unit: FunctionalUnit, path: Callable[[str], str] = shown_path) -> str:
+    """`FILE:LINE` of the unit's first source, `?` when unknown; `path` names the file: `shown_path` in
+    messages, `short_path` (the file name) in generated files."""
+    src = unit.source
+    return f"{path(src.path)}:{src.line}" if src is not None else "?"
