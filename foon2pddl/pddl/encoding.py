@@ -119,8 +119,6 @@ def select(inp: LevelInputs, prune: bool) -> Selection:
     return Selection(ix, units, nodes, candidates, tuple(i for i in ix.ids(inp.kitchen) if i in chosen))
 
 
-
-
 def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     """Comment lines of a unit's action: index, motion, source recipe files and lines, what it does."""
     places = [f"{short_path(s.path)}:{s.line}" + (f" (expanded from {s.expanded_from})" if s.expanded_from else "")
