@@ -7,6 +7,7 @@ run from a fresh clone as written (only the reader's own files may be missing).
 
 from __future__ import annotations
 
+import functools
 import re
 import shlex
 
@@ -118,11 +119,25 @@ BENCH_FIGURES = (
 )
 
 
+def _in_history(sha: str) -> bool:
+    """Whether `sha` names exactly one commit HEAD descends from. Reachable, not merely present: a local
+    clone copies every object, so a commit of an unmerged branch (e7c38b6, stop 46) resolved here and was
+    missing from CI's clone of main."""
+    return sum(full.startswith(sha) for full in _history()) == 1
+
+
+@functools.cache
+def _history() -> tuple[str, ...]:
+    import subprocess
+
+    return tuple(subprocess.run(["git", "-C", str(ROOT), "rev-list", "HEAD"], capture_output=True, text=True,
+                                check=True).stdout.split())
+
+
 @pytest.mark.parametrize(("page", "opening"), BENCH_FIGURES, ids=[f"{p}: {o[:40]}" for p, o in BENCH_FIGURES])
 def test_bench_figures_name_the_commit_they_are_from(page, opening):
     """pddl.md's physical-replay figures were from before lanes (1,614 of 1,686 steps; the bench now gives
     1,759 of 1,800) and said nothing of when: the paragraph names the commit its figures are from."""
-    import subprocess
 
     text = (ROOT / page if page == "README.md" else ROOT / "docs" / page).read_text()
     start = text.index(opening)
@@ -130,8 +145,7 @@ def test_bench_figures_name_the_commit_they_are_from(page, opening):
     commits = re.findall(r"\b(?:at|commit) ([0-9a-f]{7,40})\b", paragraph)
     assert commits, f"{page}: the figures after {opening!r} name no commit"
     for sha in commits:
-        known = subprocess.run(["git", "-C", str(ROOT), "cat-file", "-e", f"{sha}^{{commit}}"], capture_output=True)
-        assert known.returncode == 0, f"{page}: {sha} is no commit of this repository"
+        assert _in_history(sha), f"{page}: {sha} is no commit in the history of HEAD"
 
 
 #: A time a bench measured: `0.074 s`, `146 ms`, `6 min`, quoted with how (median, load, wall, CPU).
@@ -164,18 +178,13 @@ def test_every_paragraph_quoting_a_benchs_times_names_its_commit():
     """retrieval.md's batch figures, pddl.md's compile times and planning.md's run C/run B table named no
     commit (the last two were measured before most of today's code): a time is comparable only with the
     commit it was measured at. Each such paragraph names it (`at 3fbb13a`)."""
-    import subprocess
 
     paragraphs = _bench_paragraphs()
     unnamed = [where for where, paragraph in paragraphs if not _COMMIT.search(paragraph)]
     assert not unnamed, f"bench times with no commit: {unnamed}"
     named = sorted({(sha, where) for where, paragraph in paragraphs for sha in _COMMIT.findall(paragraph)})
-    query = "".join(f"{sha}^{{commit}}\n" for sha, _ in named)
-    answers = subprocess.run(["git", "-C", str(ROOT), "cat-file", "--batch-check"], input=query,
-                             capture_output=True, text=True, check=True).stdout.splitlines()
-    unknown = [f"{where}: {sha}" for (sha, where), answer in zip(named, answers, strict=True)
-               if answer.endswith("missing") or "ambiguous" in answer]
-    assert not unknown, f"bench times naming no commit of this repository: {unknown}"
+    unknown = [f"{where}: {sha}" for sha, where in named if not _in_history(sha)]
+    assert not unknown, f"bench times naming no commit in the history of HEAD: {unknown}"
 
 
 def test_the_bench_paragraphs_are_found():
