@@ -108,12 +108,12 @@ def accepted(pairs: list[Pair], mode: str, joined: dict[str, list[str]], reader=
 def run(ctx: Context) -> None:
     from foon2pddl.generalize import wordnet
 
-    from .similarity_lemmas import SEEDS, draw_labels
+    from .similarity_lemmas import SEEDS, draws
 
     pairs = read_pairs()
     reader = wordnet.reader()
     joined = {"outside": search_labels(ctx.shared),
-              **{split: draw_labels(reader, ctx.shared, split) for split in SEEDS}}
+              **draws(reader, ctx.shared, list(SEEDS)[-1])}
     for mode in SIMILARITY_MODES:
         keys, reader = accepted(pairs, mode, joined, reader)
         for split in SPLITS:

@@ -84,27 +84,40 @@ def _name(reader, synset: str) -> str:
     return normalize_label(lemmas[0].replace("_", " ")) if lemmas else ""
 
 
+def draws(reader, shared: Path, upto: str = "lemmas") -> dict[str, list[str]]:
+    """The labels drawn for each batch from the first to `upto` (module doc), in draw order: each batch
+    skips the labels every earlier batch drew, so they are drawn once each, in order."""
+    splits = list(SEEDS)[:list(SEEDS).index(upto) + 1]
+    base = set(reference_vocabulary()) | set(search_labels(shared))
+    pairs = read_pairs()
+    pools: dict[tuple[str, ...], list[str]] = {}
+    out: dict[str, list[str]] = {}
+    for split in splits:
+        later = list(SEEDS)[list(SEEDS).index(split):]
+        seen = base | {x for p in pairs if p.split not in later for x in (p.a, p.b)}  # the file as it was drawn on
+        seen |= {x for labels in out.values() for x in labels}  # and every label an earlier batch drew
+        rng = random.Random(SEEDS[split])
+        drawn: list[str] = []
+        for roots, n in ((FOOD, N_FOOD), (tool_roots(split), N_TOOLS)):
+            if roots not in pools:
+                pools[roots] = _pool(reader, roots)
+            pool = list(pools[roots])
+            rng.shuffle(pool)
+            got = 0
+            for synset in pool:
+                label = _name(reader, synset)
+                if label and label not in seen and label not in drawn:
+                    drawn.append(label)
+                    got += 1
+                    if got == n:
+                        break
+        out[split] = drawn
+    return out
+
+
 def draw_labels(reader, shared: Path, split: str = "lemmas") -> list[str]:
     """The labels drawn for `split` (module doc), in draw order."""
-    later = list(SEEDS)[list(SEEDS).index(split):]
-    seen = set(reference_vocabulary()) | set(search_labels(shared))
-    seen |= {x for p in read_pairs() if p.split not in later for x in (p.a, p.b)}  # the file as it was drawn on
-    for earlier in list(SEEDS)[:list(SEEDS).index(split)]:  # and every label an earlier batch drew
-        seen |= set(draw_labels(reader, shared, earlier))
-    rng = random.Random(SEEDS[split])
-    out: list[str] = []
-    for roots, n in ((FOOD, N_FOOD), (tool_roots(split), N_TOOLS)):
-        pool = _pool(reader, roots)
-        rng.shuffle(pool)
-        got = 0
-        for synset in pool:
-            label = _name(reader, synset)
-            if label and label not in seen and label not in out:
-                out.append(label)
-                got += 1
-                if got == n:
-                    break
-    return out
+    return draws(reader, shared, split)[split]
 
 
 def candidates(shared: Path, split: str = "lemmas") -> list[tuple[str, str, str, str]]:

@@ -58,16 +58,17 @@ def test_score_counts_precision_and_recall_of_good_pairs():
 
 def test_lemma_batches_draw_as_drawn_and_lemmas5_reaches_the_more_tool_roots():
     """`lemmas4` found only 14 unused tool lemmas under `TOOLS`; `MORE_TOOLS` joins them from `lemmas5` on only."""
-    from bench.similarity_lemmas import MORE_TOOLS, N_FOOD, N_TOOLS, TOOLS, _name, _pool, draw_labels
+    from bench.similarity_lemmas import MORE_TOOLS, N_FOOD, N_TOOLS, TOOLS, _name, _pool, draws
     from foon2pddl.generalize import wordnet
 
     reader, shared = wordnet.reader(), SEARCH_INPUTS.parent
     reference = set(reference_vocabulary())
     pairs = read_pairs()
-    for split in ("lemmas", "lemmas2", "lemmas3", "lemmas4"):  # every lemma a labelled pair uses was drawn again
+    drawn = draws(reader, shared, "lemmas5")  # every batch drawn once, in order, each skipping the earlier ones
+    for split in ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5"):  # every lemma a labelled pair uses
         labelled = {x for p in pairs if p.split == split for x in (p.a, p.b)} - reference
-        assert labelled and labelled <= set(draw_labels(reader, shared, split)), split
-    tools = draw_labels(reader, shared, "lemmas5")[N_FOOD:]
+        assert labelled and labelled <= set(drawn[split]), split
+    tools = drawn["lemmas5"][N_FOOD:]
     old = {_name(reader, s) for s in _pool(reader, TOOLS)}
     more = {_name(reader, s) for s in _pool(reader, MORE_TOOLS)}
     assert len(tools) == N_TOOLS and set(tools) - old and set(tools) <= old | more
