@@ -166,8 +166,10 @@ def retrieve(network: Network | Foon, kitchen: Kitchen | Iterable[ObjectNode], g
     view, target = _view(network, kind, level, kit, cons, goal)
     if kind.as_read or not cons.items:
         return retrieve_constrained(view.foon, view.kitchen, target, cons, method, rates=rates, **limits).result
-    from .generalize.substitution import retrieve_substituted, without_banned
+    from .generalize.substitution import category_must_use, retrieve_substituted, without_banned
 
+    if view.index is not None:
+        cons, _ = category_must_use(cons, view.index, kind.label)
     concrete = {n.label for n in without_banned(kit.project(level), cons).nodes}
     done, _ = retrieve_substituted(kind.name, view.foon, view.kitchen, target, cons, method, index=view.index,
                                    concrete_labels=concrete, rates=rates, **limits)

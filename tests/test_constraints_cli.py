@@ -8,11 +8,12 @@ import math
 import pytest
 from click.testing import CliRunner
 
+from foon2pddl.api import load_kitchen, load_network, retrieve
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonSyntaxError
 from foon2pddl.io.constraints_file import load_constraints, parse_constraints, with_rates
 from foon2pddl.io.rates import Rates
-from foon2pddl.model.constraints import Kind, label_mentions, mentions
+from foon2pddl.model.constraints import Constraint, Kind, label_mentions, make_constraints, mentions
 from foon2pddl.model.foon import make_node, make_state
 
 
@@ -98,6 +99,29 @@ def test_a_gen_ban_of_an_object_gen_names_by_its_category_is_no_typo():
             "the kitchen loses what mentions it before it is abstracted") in result.stderr
     typo = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--without", "mixin bowl")
     assert "warning: no unit of the network mentions 'mixin bowl'" in typo.stderr
+
+
+def test_a_gen_must_use_is_read_through_the_category_index_as_goals_are(tmp_path):
+    """Stop 46's review (rv46 finding 2): `retrieve --network gen --must-use "mixing bowl"` warned `no unit of
+    the network mentions 'mixing bowl'`, as for a typo, and exited 1 ("no unit using 'mixing bowl' can run"),
+    although FOON-GEN names the mixing bowl by its category, as it reads a goal's label. The must-use is read
+    as the category, a note says which, from the flag and from a constraints file alike; a typo still warns."""
+    note = "note: FOON-GEN reads `must-use mixing bowl` as its category: `must-use bowls`"
+    result = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--must-use", "mixing bowl")
+    assert result.exit_code == 0, result.stderr
+    assert note in result.stderr and "warning:" not in result.stderr, result.stderr
+    assert "`must-use bowls`: " in result.stderr and " units use it" in result.stderr
+    assert any("bowls" in line for line in result.stdout.splitlines())
+    profile = tmp_path / "bowl.json"
+    profile.write_text(json.dumps({"must_use": ["mixing bowl"]}))
+    from_file = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--constraints", str(profile))
+    assert from_file.exit_code == 0 and note in from_file.stderr, from_file.stderr
+    typo = run("retrieve", "--goal", "whipped cream", "--network", "gen", "--must-use", "mixin bowl")
+    assert typo.exit_code == 1 and "warning: no unit of the network mentions 'mixin bowl'" in typo.stderr
+    assert "note: FOON-GEN reads" not in typo.stderr
+    api = retrieve(load_network(), load_kitchen(load_network()), "whipped cream", network_kind="gen",
+                   constraints=make_constraints([Constraint(Kind.MUST_USE, "mixing bowl")]))
+    assert api.found
 
 
 def test_bad_flag_value_exits_2():

@@ -117,6 +117,12 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     done = None
     kind = NETWORKS[network]
     if cons.items:
+        if view.index is not None:
+            from ..generalize.substitution import category_must_use
+
+            cons, read = category_must_use(cons, view.index, kind.label)
+            for line in read:
+                click.echo(line, err=True)
         if kind.substitutes is Substitutes.NONE:
             with slow_step(f"retrieving a tree for {target.describe()!r} under the constraints ({method})"):
                 done = retrieve_constrained(foon, kit, target, cons, method, rates=motion_rates, **limits)

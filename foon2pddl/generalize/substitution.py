@@ -15,9 +15,9 @@ and how similar they are (the default similarity mode, `modes.py`).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from ..model.constraints import Constraints, Kind, label_mentions, mentions
+from ..model.constraints import Constraint, Constraints, Kind, label_mentions, mentions
 from ..model.foon import Foon, FunctionalUnit
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
@@ -51,6 +51,23 @@ def without_banned(kitchen: Kitchen, constraints: Constraints) -> Kitchen:
     """The kitchen without nodes mentioning a banned object (before GEN abstracts it)."""
     keep = frozenset(n for n in kitchen.nodes if not any(mentions(n, x) for x in banned_labels(constraints)))
     return Kitchen(keep, kitchen.level, kitchen.source)
+
+
+def category_must_use(constraints: Constraints, index, name: str = "GEN") -> tuple[Constraints, tuple[str, ...]]:
+    """The constraints as FOON-GEN (`index`: its categories) reads them, and a note per must-use it reads
+    otherwise: a must-use object becomes its category, as a goal's label does (`compress.abstract_goal`), since
+    the network's units name it so (`--must-use "mixing bowl"` -> `bowls`); bans stay as given (the kitchen loses
+    what they mention before it is abstracted)."""
+    items: dict[Constraint, None] = {}
+    notes = []
+    for c in constraints.items:
+        category = index.choose(c.value) if c.kind is Kind.MUST_USE else None
+        if category is not None and category != c.value:
+            read = replace(c, value=category)
+            notes.append(f"note: FOON-{name} reads `{c.detail()}` as its category: `{read.detail()}`")
+            c = read
+        items.setdefault(c)
+    return replace(constraints, items=tuple(sorted(items))), tuple(notes)
 
 
 def _copy_of(unit: FunctionalUnit, constraints: Constraints) -> str | None:
