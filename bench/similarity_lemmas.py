@@ -1,5 +1,5 @@
 """Draw a batch of substitution pairs over WordNet lemmas no rule was designed on (splits `lemmas`, `lemmas2`,
-`lemmas3`, `lemmas4`, `lemmas5`).
+`lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`).
 
 `python -m bench.similarity_lemmas [--shared DIR] [--split S] BLIND KEY` writes BLIND (the
 pairs in a seeded shuffle with an empty `label` column) and KEY (each pair's split and
@@ -15,8 +15,10 @@ earlier batches drew (and so on). From `lemmas5` on the tool roots are joined by
 (`tool_roots`): `lemmas4` found only 14 unused lemmas under `TOOLS`, and FOON recipes also use
 containers (jars, bottles, cans, baskets, trays, drinking glasses), kitchen knives, strainers, tongs,
 openers, boards, wraps, towels and the refrigerator, which `TOOLS` does not reach; the earlier
-batches keep `TOOLS` alone, so they draw as they were drawn. The pairs: a seeded
-sample of `ACCEPTED` (from `lemmas5` on `ACCEPTED_MORE`) pairs among those of a drawn label with a drawn or reference label that the paper's rule or the cook mode
+batches keep `TOOLS` alone, so they draw as they were drawn. From `lemmas6` on `KITCHEN_TOOLS` joins
+them too (kitchen objects FOON uses that no earlier root reaches: shakers, mills, presses, the sink), and
+`N_TOOLS_MORE` tool lemmas are drawn instead of `N_TOOLS`. The pairs: a seeded
+sample of `ACCEPTED` (`ACCEPTED_MORE` from `lemmas5` on, `ACCEPTED_KITCHEN` from `lemmas6` on) pairs among those of a drawn label with a drawn or reference label that the paper's rule or the cook mode
 accepts (>= 0.89; the cook mode's breadth vocabulary joined by the drawn labels, as a
 user's run on them would), plus `RANDOM` seeded pairs from the rest (`random`).
 The sources name the modes at the commit the batch was drawn on; rerun there to reproduce it.
@@ -37,8 +39,8 @@ from .similarity_sample import main as sample_main
 
 N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 80, 40, 170, 30
 #: The batches in the order they were drawn, with their seeds (`lemmas` at 8697b53, `lemmas2` at 213d3ab,
-#: `lemmas3` at f864136, `lemmas4` at 5ececf4).
-SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45, "lemmas5": 46}
+#: `lemmas3` at f864136, `lemmas4` at 5ececf4, `lemmas5` at 7edb3f9, `lemmas6` at e121a45).
+SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45, "lemmas5": 46, "lemmas6": 47}
 #: `lemmas5` on: more sampled pairs (each earlier batch had about 18 good pairs of 200, so wide intervals).
 ACCEPTED_MORE, MORE_FROM = 270, "lemmas5"
 FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
@@ -62,13 +64,35 @@ MORE_TOOLS = ("jar.n.01", "bottle.n.01", "can.n.01", "basket.n.01", "tray.n.01",
               "napkin.n.01", "apron.n.01", "toothpick.n.01", "refrigerator.n.01", "dishwasher.n.01")
 
 
-def _from_more(split: str) -> bool:
-    return list(SEEDS).index(split) >= list(SEEDS).index(MORE_FROM)
+#: Fixed before the `lemmas6` draw (`lemmas5` left 88 unused tool lemmas, many not kitchen objects: ink, pill
+#: and specimen bottles, inkstands): roots of the kitchen objects FOON's labels name that no earlier root
+#: reaches (shaker, sink, faucet, measuring cup, garlic press, pepper mill, scraper, dropper, carton, plastic
+#: bag) and a few kindred ones, each mostly kitchen objects. Left out as mostly not kitchen objects: mill
+#: (windmills, treadmills), press (bench and punch presses), scissors (pruning shears, snuffers), bag, box,
+#: bucket, brush, scale and table. With them, `N_TOOLS_MORE` tool lemmas and up to `ACCEPTED_KITCHEN` pairs
+#: (each earlier batch had at most about 40 good pairs: a bigger batch narrows the intervals).
+KITCHEN_TOOLS = ("shaker.n.03", "sink.n.01", "faucet.n.01", "measure.n.09", "garlic_press.n.01",
+                 "cheese_press.n.01", "pepper_mill.n.01", "coffee_mill.n.01", "spicemill.n.01",
+                 "meat_grinder.n.01", "scraper.n.01", "dropper.n.01", "carton.n.02", "plastic_bag.n.01")
+KITCHEN_FROM, N_TOOLS_MORE, ACCEPTED_KITCHEN = "lemmas6", 50, 300
+
+
+def _since(split: str, first: str) -> bool:
+    return list(SEEDS).index(split) >= list(SEEDS).index(first)
 
 
 def tool_roots(split: str) -> tuple[str, ...]:
-    """`TOOLS`, joined by `MORE_TOOLS` from `lemmas5` on (the earlier batches draw as they were drawn)."""
-    return TOOLS + MORE_TOOLS if _from_more(split) else TOOLS
+    """`TOOLS`, joined by `MORE_TOOLS` from `lemmas5` on and `KITCHEN_TOOLS` from `lemmas6` on (the earlier
+    batches draw as they were drawn)."""
+    return (TOOLS + (MORE_TOOLS if _since(split, MORE_FROM) else ())
+            + (KITCHEN_TOOLS if _since(split, KITCHEN_FROM) else ()))
+
+
+def sizes(split: str) -> tuple[int, int, int]:
+    """(food lemmas, tool lemmas, accepted pairs at most) drawn for `split`."""
+    if _since(split, KITCHEN_FROM):
+        return N_FOOD, N_TOOLS_MORE, ACCEPTED_KITCHEN
+    return N_FOOD, N_TOOLS, ACCEPTED_MORE if _since(split, MORE_FROM) else ACCEPTED
 
 
 def _pool(reader, roots: tuple[str, ...]) -> list[str]:
@@ -98,7 +122,8 @@ def draws(reader, shared: Path, upto: str = "lemmas") -> dict[str, list[str]]:
         seen |= {x for labels in out.values() for x in labels}  # and every label an earlier batch drew
         rng = random.Random(SEEDS[split])
         drawn: list[str] = []
-        for roots, n in ((FOOD, N_FOOD), (tool_roots(split), N_TOOLS)):
+        n_food, n_tools, _ = sizes(split)
+        for roots, n in ((FOOD, n_food), (tool_roots(split), n_tools)):
             if roots not in pools:
                 pools[roots] = _pool(reader, roots)
             pool = list(pools[roots])
@@ -135,7 +160,7 @@ def candidates(shared: Path, split: str = "lemmas") -> list[tuple[str, str, str,
             modes = [m for m, sim in (("paper", paper), ("cook", cook)) if sim(a, b) >= DEFAULT_THRESHOLD]
             (accepted if modes else rest).append((*pair, split, "+".join(modes) or "random"))
     rng = random.Random(SEEDS[split])
-    picked = rng.sample(sorted(accepted), min(ACCEPTED_MORE if _from_more(split) else ACCEPTED, len(accepted)))
+    picked = rng.sample(sorted(accepted), min(sizes(split)[2], len(accepted)))
     print(f"{len(drawn)} labels drawn; {len(accepted)} pairs accepted by either mode, {len(picked)} sampled")
     return picked + rng.sample(sorted(rest), RANDOM)
 

@@ -16,8 +16,8 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
     assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2",
-                                        "lemmas3", "lemmas4", "lemmas5"}
-    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5")
+                                        "lemmas3", "lemmas4", "lemmas5", "lemmas6"}
+    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5", "lemmas6")
     later = ("outside", "unsampled", *lemma_batches)
     assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
     assert {p.source for p in pairs if p.split not in later} == {
@@ -56,19 +56,33 @@ def test_score_counts_precision_and_recall_of_good_pairs():
     assert s.precision()[0] == 0.5 and s.recall()[0] == 0.5
 
 
-def test_lemma_batches_draw_as_drawn_and_lemmas5_reaches_the_more_tool_roots():
-    """`lemmas4` found only 14 unused tool lemmas under `TOOLS`; `MORE_TOOLS` joins them from `lemmas5` on only."""
-    from bench.similarity_lemmas import MORE_TOOLS, N_FOOD, N_TOOLS, TOOLS, _name, _pool, draws
+def test_lemma_batches_draw_as_drawn_and_the_later_ones_reach_their_more_tool_roots():
+    """`lemmas4` found only 14 unused tool lemmas under `TOOLS`; `MORE_TOOLS` joins them from `lemmas5` on only,
+    and `KITCHEN_TOOLS` (kitchen objects FOON uses that no earlier root reaches) from `lemmas6` on only, with
+    `N_TOOLS_MORE` tool lemmas instead of `N_TOOLS`."""
+    from bench.similarity_lemmas import (
+        KITCHEN_TOOLS,
+        MORE_TOOLS,
+        N_FOOD,
+        N_TOOLS,
+        N_TOOLS_MORE,
+        TOOLS,
+        _name,
+        _pool,
+        draws,
+    )
     from foon2pddl.generalize import wordnet
 
     reader, shared = wordnet.reader(), SEARCH_INPUTS.parent
     reference = set(reference_vocabulary())
     pairs = read_pairs()
-    drawn = draws(reader, shared, "lemmas5")  # every batch drawn once, in order, each skipping the earlier ones
-    for split in ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5"):  # every lemma a labelled pair uses
+    drawn = draws(reader, shared, "lemmas6")  # every batch drawn once, in order, each skipping the earlier ones
+    for split in drawn:  # every lemma a labelled pair uses
         labelled = {x for p in pairs if p.split == split for x in (p.a, p.b)} - reference
         assert labelled and labelled <= set(drawn[split]), split
-    tools = drawn["lemmas5"][N_FOOD:]
-    old = {_name(reader, s) for s in _pool(reader, TOOLS)}
-    more = {_name(reader, s) for s in _pool(reader, MORE_TOOLS)}
-    assert len(tools) == N_TOOLS and set(tools) - old and set(tools) <= old | more
+    old, more, kitchen = ({_name(reader, s) for s in _pool(reader, roots)} for roots in (TOOLS, MORE_TOOLS, KITCHEN_TOOLS))
+    tools5, tools6 = drawn["lemmas5"][N_FOOD:], drawn["lemmas6"][N_FOOD:]
+    assert len(tools5) == N_TOOLS and set(tools5) - old and set(tools5) <= old | more
+    assert len(tools6) == N_TOOLS_MORE and set(tools6) - old - more and set(tools6) <= old | more | kitchen
+    assert len(drawn["lemmas6"]) == len(set(drawn["lemmas6"])) and not set(drawn["lemmas6"]) & {
+        x for split, labels in drawn.items() if split != "lemmas6" for x in labels}
