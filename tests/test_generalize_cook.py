@@ -24,7 +24,7 @@ from foon2pddl.generalize.cook import (
 )
 from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity, mode_matrix
-from foon2pddl.generalize.purpose import foods
+from foon2pddl.generalize.purpose import foods, held
 from foon2pddl.generalize.senses import parse_overrides
 from foon2pddl.generalize.wup import WupTable
 from foon2pddl.io.inputs import load_network
@@ -274,6 +274,22 @@ def test_a_kind_of_tool_for_another_food_is_not_its_generic(cook):
     for a, b in [("caldron", "pot"), ("gas oven", "oven"), ("cookstove", "stove"),
                  ("electric frying pan", "frying pan"), ("spoon", "teaspoon")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_vessel_named_for_the_liquid_it_holds_is_still_its_generic(cook):
+    """Rule 7: a container whose gloss says it holds liquids (a bottle "for storing drinks or other liquids", a
+    drinking glass "for holding liquids") holds any of them, so a kind named for one drink (wine, soft drink,
+    beer: WordNet kinds of liquid) is no kind for another food; a food that is no liquid still is (a parfait
+    glass), and a container whose gloss names no liquid gets nothing from it (a pot for making coffee)."""
+    assert held(cook.reader, "bottle.n.01") == {"liquid.n.01"} and held(cook.reader, "glass.n.02") == {"liquid.n.01"}
+    assert held(cook.reader, "pot.n.01") == frozenset()
+    assert held(cook.reader, "teaspoon.n.02") == frozenset()  # "holds about one fluid dram": fluid is no liquid kind
+    for a, b in [("bottle", "wine bottle"), ("bottle", "pop bottle"), ("bottle", "magnum"),
+                 ("drinking glass", "schooner")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+    for a, b in [("drinking glass", "parfait glass"), ("pot", "urn"), ("bowl", "punch bowl"),
+                 ("iced-tea spoon", "teaspoon")]:
+        assert cook.explain(a, b).rejected == "purpose", (a, b, cook.explain(a, b))
 
 
 def test_a_hyphenated_wordnet_lemma_is_read_whole_in_cook_mode(cook, label_similarity):

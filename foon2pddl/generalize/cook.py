@@ -44,6 +44,7 @@ head nouns and modifiers, `similarity.py`) and changes eight things:
    compound known by its head: rice cooker~cooker), when a tool, stands only if its name and gloss
    name no food its generic's do not: pot~urn ("a large pot for making coffee or tea"), spoon~tea
    maker, bowl~slop basin score 0; caldron~pot ("a very large pot that is used for boiling") stands.
+   A vessel for liquids holds any (`purpose.held`): bottle~wine bottle, drinking glass~schooner stand.
    Labels of the category index keep rule 5 alone (spoon~teaspoon).
 8. A filed class is not a substitute for its kinds (`kinds`): a label rule 6 holds to its kinds whose
    sense has at least `CLASS_KINDS` WordNet kinds (saltwater fish: 57) names a class, not a thing a
@@ -127,7 +128,8 @@ def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
-RULES = "rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties"
+RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
+         " vessels hold liquids")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:

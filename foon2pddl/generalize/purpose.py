@@ -7,6 +7,11 @@ for. `foods` reads the foods a synset names: the words of its label (the FOON la
 synset's first lemma) and of its gloss whose most frequent noun sense (WordNet's first) is a
 food (`noun.food`), a two-word compound first ("iced tea", then "tea"), each as that sense.
 A kind for another food is one whose foods are not all among its generic's: `for_another_food`.
+But a vessel named for what it holds is still a vessel: when the generic is a container whose name or
+gloss names a substance it holds (a bottle "for storing drinks or other liquids", a drinking glass "for
+holding liquids"), a food that is a WordNet kind of that substance (wine, beer, soft drink: liquids) is
+not another food (`held`), so bottle~wine bottle and drinking glass~schooner stand; a pot for making
+coffee does not (a pot's gloss names no substance).
 Cost: a few WordNet lookups per synset, cached.
 """
 
@@ -18,19 +23,35 @@ from functools import lru_cache
 _WORD = re.compile(r"[a-z]+")
 
 
-def _food(reader, term: str) -> str | None:
-    """The first noun sense of `term` when it is a food, else None."""
+#: The synset whose kinds are containers: only a container's gloss says what it holds (`held`).
+CONTAINER = "container.n.01"
+
+#: What a container may be said to hold (`held`): liquids (a drink is a liquid in WordNet).
+LIQUID = "liquid.n.01"
+
+
+def _first(reader, term: str, lexname: str) -> str | None:
+    """The first noun sense of `term` when it is in WordNet's file `lexname`, else None."""
     found = reader.synsets(term, "n")
-    return found[0].name() if found and found[0].lexname() == "noun.food" else None
+    return found[0].name() if found and found[0].lexname() == lexname else None
 
 
 def foods(reader, synset: str, label: str = "") -> frozenset[str]:
     """The food senses the label (else the synset's first lemma) and the gloss of `synset` name (module doc)."""
-    return _foods(reader, synset, label)
+    return _named(reader, synset, label, "noun.food")
 
 
-@lru_cache(maxsize=4096)
-def _foods(reader, synset: str, label: str) -> frozenset[str]:
+def held(reader, synset: str, label: str = "") -> frozenset[str]:
+    """The liquids (`LIQUID` or its kinds, read as `foods` reads foods, in `noun.substance`) the label and
+    gloss of container `synset` name; none for a synset that is no WordNet kind of a container."""
+    if CONTAINER not in _ancestors(reader, synset):
+        return frozenset()
+    return frozenset(x for x in _named(reader, synset, label, "noun.substance")
+                     if x == LIQUID or LIQUID in _ancestors(reader, x))
+
+
+@lru_cache(maxsize=8192)
+def _named(reader, synset: str, label: str, lexname: str) -> frozenset[str]:
     s = reader.synset(synset)
     name = label or s.lemmas()[0].name()
     out: set[str] = set()
@@ -38,12 +59,12 @@ def _foods(reader, synset: str, label: str) -> frozenset[str]:
         words = _WORD.findall(text.lower())
         i = 0
         while i < len(words):
-            pair = _food(reader, f"{words[i]}_{words[i + 1]}") if i + 1 < len(words) else None
+            pair = _first(reader, f"{words[i]}_{words[i + 1]}", lexname) if i + 1 < len(words) else None
             if pair is not None:
                 out.add(pair)
                 i += 2
                 continue
-            single = _food(reader, words[i])
+            single = _first(reader, words[i], lexname)
             if single is not None:
                 out.add(single)
             i += 1
@@ -51,5 +72,14 @@ def _foods(reader, synset: str, label: str) -> frozenset[str]:
 
 
 def for_another_food(reader, kind: str, generic: str, kind_label: str = "", generic_label: str = "") -> bool:
-    """Whether tool synset `kind` (a WordNet kind of `generic`) names a food its generic does not name."""
-    return bool(foods(reader, kind, kind_label) - foods(reader, generic, generic_label))
+    """Whether tool synset `kind` (a WordNet kind of `generic`) names a food its generic does not name and
+    that is no WordNet kind of a substance the generic holds (`held`)."""
+    holds = held(reader, generic, generic_label)
+    return any(not (_ancestors(reader, f) & holds)
+               for f in foods(reader, kind, kind_label) - foods(reader, generic, generic_label))
+
+
+@lru_cache(maxsize=4096)
+def _ancestors(reader, synset: str) -> frozenset[str]:
+    """`synset`'s WordNet ancestors (hypernyms, transitively)."""
+    return frozenset(x.name() for x in reader.synset(synset).closure(lambda s: s.hypernyms()))
