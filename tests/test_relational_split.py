@@ -162,3 +162,30 @@ def test_an_action_whose_sweeps_multiply_is_split_though_its_parameters_do_not()
     # with 40 items, 160 bindings x 81 stay under what a binding's sweeps may add
     few = _boxes(40)
     assert 160 * 81 <= 1000 * split_actions.SWEEPS_PER_BINDING and split(few, above=1000).task is few
+
+
+# A move that also counts down a tally: two count parameters a static `next` fact links, ten counts, nine facts.
+COUNT = "count"
+COUNTED = replace(MOVE, name="counted", params=(*MOVE.params, ("?lo", COUNT), ("?hi", COUNT)),
+                  pre=(*MOVE.pre, Atom("left", ("?hi",)), Atom("next", ("?lo", "?hi"))),
+                  add=(*MOVE.add, Atom("left", ("?lo",))), delete=(*MOVE.delete, Atom("left", ("?hi",))))
+
+
+def _counted(items: int):
+    counts = tuple((f"c{i}", COUNT) for i in range(10))
+    return replace(BOXES, actions=(COUNTED,), types=(*BOXES.types, (COUNT, "object")),
+                   objects=(("a1", BOX), ("a2", BOX), *((f"x{i}", ITEM) for i in range(items)), *counts),
+                   init=(Atom("left", ("c9",)), *(Atom("next", (f"c{i}", f"c{i + 1}")) for i in range(9))))
+
+
+def test_parameters_a_static_fact_links_multiply_as_its_facts_not_as_their_objects():
+    # 2 boxes x 2 boxes x 3 items x 10 x 10 counts = 1,200 combinations, but `next` (no action changes it) holds for
+    # 9 pairs of counts: a planner grounds at most 2 x 2 x 3 x 9 = 108 bindings, under the bound of 200
+    few = _counted(3)
+    assert split(few, above=200).task is few
+    # with 30 items (1,080 bindings) it splits, and every part that binds both counts checks the static fact
+    lots = _counted(30)
+    parts = _parts(split(lots, above=200), COUNTED)
+    assert len(parts) > 1
+    both = [p for p in parts if {"?lo", "?hi"} <= dict(p.params).keys()]
+    assert both and all(Atom("next", ("?lo", "?hi")) in p.pre for p in both)

@@ -223,16 +223,22 @@ def _effect_parts(action: Action, own: list[Atom], own_del: list[Atom], below, k
 
 
 def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]], above: int, taken: set[str],
-               kind: dict[str, str]):
+               kind: dict[str, str], static: dict[str, list[tuple[str, ...]]]):
     """The chain of parts of `action` with their join entries, or None when it stays whole."""
     size = {v: sizes.get(t, 0) for v, t in action.params}
+    fixed = [a for a in action.pre if a.predicate in static and _vars((a,))]
+
+    def fixed_over(names) -> list[Atom]:  # the static preconditions a part binding `names` checks
+        return [a for a in fixed if _vars((a,)) <= set(names)]
+
+    def bindings(names) -> int:
+        return _bindings(names, size, fixed_over(names), static)
 
     def weight(names, conditional) -> int:  # bindings x (1 + objects its sweeps range over)
-        return prod(size[v] for v in names) * (1 + sum(prod(sizes.get(t, 0) for _, t in c.quantified)
-                                                        for c in conditional))
+        return bindings(names) * (1 + sum(prod(sizes.get(t, 0) for _, t in c.quantified) for c in conditional))
 
     whole = weight(size, action.conditional)
-    if prod(size.values()) <= above and whole <= above * SWEEPS_PER_BINDING:
+    if bindings(size) <= above and whole <= above * SWEEPS_PER_BINDING:
         return None
     own = [e for e in action.add if not _subsumed(e, True, action, below)]
     own_del = [e for e in action.delete if not _subsumed(e, False, action, below)]
@@ -253,9 +259,9 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     for g in _groups(checked, action.pre):
         atoms = [a for a in action.pre if _vars((a,)) & set(g)]
         binds.append(({*g, *_vars(atoms)}, atoms))
-    binds = _merged(binds, lambda a, b: prod(size[v] for v in a | b) <= above)
+    binds = _merged(binds, lambda a, b: bindings(a | b) <= above)
     effects = _merged([(p.names, p) for p in _effect_parts(action, own, own_del, below, kind)],
-                      lambda a, b: prod(size[v] for v in a | b) <= max(prod(size[v] for v in x) for x in (a, b)))
+                      lambda a, b: bindings(a | b) <= max(bindings(x) for x in (a, b)))
     names_of = [x for x, _ in binds] + [x for x, _ in effects]
     if not effects or len(names_of) < 2 or max(*(weight(x, ()) for x, _ in binds),
                                                *(weight(x, e.conditional) for x, e in effects)) >= whole:
@@ -278,6 +284,7 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
         old = [v for v in order if v in vs and v in bound]
         bound |= vs
         body = binds[i][1] if i < len(binds) else []
+        body = [*body, *(a for a in fixed_over(vs) if a not in body)]  # static: true whenever it held, so each part checks
         eff = effects[i - len(binds)][1] if i >= len(binds) else _Part(set())
         parts.append(Action(
             names[i], params=tuple((v, types[v]) for v in order if v in vs), unit=action.unit, roles=action.roles,
@@ -290,6 +297,23 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     join = {p.name: (action.name, tuple(index[v] for v, _ in p.params), p is parts[-1]) for p in parts}
     predicates = [Predicate(record[v], (("?x", types[v]),), f"{action.name} binds {v} to ?x") for v in kept]
     return parts, join, predicates, stage
+
+
+def _bindings(names, size: dict[str, int], fixed: list[Atom], static: dict[str, list[tuple[str, ...]]]) -> int:
+    """At most how many bindings of the parameters `names` a planner grounds where the static atoms `fixed` (over
+    them only) hold: the product of their objects, each of some static atoms over disjoint parameters (those that
+    rule out most first) counted as the facts it matches instead of its parameters' product."""
+    def facts(atom: Atom) -> int:
+        return sum(all(x.startswith("?") or x == y for x, y in zip(atom.args, row, strict=True))
+                   for row in static[atom.predicate] if len(row) == len(atom.args))
+
+    rated = sorted(((facts(a), _vars((a,))) for a in fixed), key=lambda r: r[0] / max(1, prod(size[v] for v in r[1])))
+    free, n = set(names), 1
+    for count, vs in rated:
+        if vs <= free and count < prod(size[v] for v in vs):
+            free -= vs
+            n *= count
+    return n * prod(size[v] for v in free)
 
 
 def _merged(parts: list, fits) -> list:
@@ -325,12 +349,18 @@ def split(task: PlanningTask, above: int | None = None) -> Split:
     taken = {a.name for a in task.actions} | {p.name for p in task.predicates} \
         | {n for pair in (*task.types, *task.objects, *task.constants) for n in pair}
     kind = dict((*task.objects, *task.constants))
+    changed = {x.predicate for a in task.actions
+               for x in (*a.add, *a.delete, *(y for c in a.conditional for y in (*c.add, *c.delete)))}
+    static: dict[str, list[tuple[str, ...]]] = {}
+    for a in task.init:
+        if a.predicate not in changed:
+            static.setdefault(a.predicate, []).append(a.args)
     actions: list[Action] = []
     predicates: list[Predicate] = []
     stages: list[str] = [IDLE]
     parts: dict[str, tuple[str, tuple[int, ...], bool]] = {}
     for action in task.actions:
-        chain = _split_one(action, sizes, below, above, taken | {CHAIN, CHAIN_TYPE, IDLE}, kind)
+        chain = _split_one(action, sizes, below, above, taken | {CHAIN, CHAIN_TYPE, IDLE}, kind, static)
         if chain is None:
             actions.append(action)
             continue
