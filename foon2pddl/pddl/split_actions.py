@@ -12,8 +12,11 @@ name two of them (a bowl of salt and the salt in it); each group's preconditions
 
 An action whose parameters' objects multiply past `SPLIT_ABOVE`, or whose *weight* (bindings x (1 + the objects
 its quantified effects range over)) passes `SWEEPS_PER_BINDING` times that, is split (action schema splitting, as
-planners' compilations for large schemas do) into a chain, when every part weighs less than the whole. Parts
-that *bind*:
+planners' compilations for large schemas do) into a chain, when every part weighs less than the whole. Bindings
+are counted as a planner grounds them: parameters a static precondition links (no action changes it: a tally's
+low and high counts, `next-count`) multiply as the facts it matches, not as their objects, and every part checks
+the static preconditions over the parameters it binds (a chain is not free: while it is under way only its parts
+apply, and each is a step to the heuristic). Parts that *bind*:
 
 * `<action>-begin` takes the lock (`(chain idle)`, which every other action and the goal need, becomes the chain's
   first stage) and, like each `<action>-check-i` after it, binds some parameters where the preconditions over
