@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from pathlib import Path
 
 from .harness import Context, shared_data
@@ -24,8 +25,18 @@ def main() -> None:
     shared_data(args.shared)
     ctx = Context(args.shared, args.repeat, args.quick)
     for area in args.only or AREAS:
-        importlib.import_module(f"bench.{area}").run(ctx)
+        run_area(area, ctx)
     ctx.save(args.save)
+
+
+def run_area(area: str, ctx: Context) -> None:
+    """Run one area, first saying on stderr which and what it measures (its module's first line): an area
+    prints its figures once measured, minutes later for some, and no command waits silently."""
+    module = importlib.import_module(f"bench.{area}")
+    what = (module.__doc__ or "").strip().split("\n\n", 1)[0]
+    print(f"bench {area}: {' '.join(what.split())} (its figures follow as each is measured) ...", file=sys.stderr,
+          flush=True)
+    module.run(ctx)
 
 
 if __name__ == "__main__":

@@ -22,7 +22,19 @@ def shared_data(path: Path) -> Path:
         print(f"{path}: no FOON data here (no foon-subgraphs/): the project's layout has it beside the checkout, "
               "../shared/data; a clone has a copy: --shared tests/data", file=sys.stderr)
         raise SystemExit(2)
+    _say_what_runs()
     return path
+
+
+def _say_what_runs() -> None:
+    """Say on stderr what the benchmark run as `python -m bench.NAME` measures (its module's first paragraph),
+    once its arguments are read: most print their first figure or row only after a whole measurement, seconds
+    to minutes in, and no documented command waits silently. `python -m bench` says it per area instead."""
+    main = sys.modules.get("__main__")
+    name = getattr(getattr(main, "__spec__", None), "name", None) or ""
+    if name.startswith("bench.") and name != "bench.__main__":
+        what = " ".join((main.__doc__ or "").strip().split("\n\n", 1)[0].split())
+        print(f"python -m {name}: {what} ...", file=sys.stderr, flush=True)
 
 
 def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[float, list[float], Any]:

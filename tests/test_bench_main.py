@@ -1,0 +1,49 @@
+"""`python -m bench`: what a reader of the docs meets running a benchmark area (stop 47's newcomer pass)."""
+
+from __future__ import annotations
+
+import sys
+import types
+
+import bench.__main__ as bench_main
+
+
+def test_each_area_says_on_stderr_what_runs_before_it_runs(monkeypatch, capsys, tmp_path):
+    """`python -m bench --shared ../shared/data --only constraints --repeat 1` (constraints.md) printed nothing
+    for minutes: an area prints its figures once measured, 200 pairs later. As a command's slow step does, each
+    area says on stderr which runs and what it measures (its module's first line) before it runs."""
+    said = []
+
+    def run(ctx):
+        said.append(capsys.readouterr().err)
+
+    fake = types.ModuleType("bench.fake")
+    fake.__doc__ = "A fake area: what it measures.\n\nMore text."
+    fake.run = run
+    monkeypatch.setitem(sys.modules, "bench.fake", fake)
+    monkeypatch.setattr(bench_main, "AREAS", [*bench_main.AREAS, "fake"])
+    (tmp_path / "foon-subgraphs").mkdir()
+    monkeypatch.setattr(sys, "argv", ["bench", "--shared", str(tmp_path), "--only", "fake",
+                                      "--save", str(tmp_path / "out.json")])
+    bench_main.main()
+    assert said == ["bench fake: A fake area: what it measures. (its figures follow as each is measured) ...\n"]
+
+
+def test_a_bench_module_run_alone_says_what_it_measures_once_its_arguments_are_read(monkeypatch, capsys,
+                                                                                       tmp_path):
+    """`python -m bench.pddl_subgraphs -v` (pddl.md), `bench.pddl_instances -v`, `bench.physical_replay -v` and
+    `bench.gen_pruning --fd -v` (generalization.md) printed nothing for their first 15 s and more: a row comes
+    once a whole subgraph is measured. Every bench module with `--shared` reads it through
+    `harness.shared_data` (tests/test_bench_shared.py), which now says what the module run measures."""
+    from bench.harness import shared_data
+
+    (tmp_path / "foon-subgraphs").mkdir()
+    run_alone = types.ModuleType("__main__")
+    run_alone.__doc__ = "Each shared subgraph alone: what it measures.\n\nMore text."
+    run_alone.__spec__ = types.SimpleNamespace(name="bench.fake")
+    monkeypatch.setitem(sys.modules, "__main__", run_alone)
+    shared_data(tmp_path)
+    assert capsys.readouterr().err == "python -m bench.fake: Each shared subgraph alone: what it measures. ...\n"
+    run_alone.__spec__ = types.SimpleNamespace(name="bench.__main__")  # `python -m bench`: said per area
+    shared_data(tmp_path)
+    assert capsys.readouterr().err == ""
