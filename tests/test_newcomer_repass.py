@@ -304,3 +304,26 @@ def test_a_misspelt_command_names_the_closest_one():
     assert r.exit_code == 2
     assert "Error: No such command 'retrive'; did you mean 'retrieve'? (commands: analyze, categories," in r.stderr
     assert "Traceback" not in r.output
+
+
+@pytest.mark.parametrize(("lines", "bad", "says"), [
+    # a node-per-line kitchen with a FOON object pasted in: each O/S line was read as a label, one warning each
+    ("onion: whole\nO1\tbowl\t1\nS1\tempty\n", 2, "a FOON `O` line, but line 1 lists a node in the goal syntax"),
+    ("# kitchen\nknife\n\nS12\tempty\n", 4, "a FOON `S` line, but line 2 lists a node in the goal syntax"),
+    ("onion: whole\nO278 mixing bowl 1\n", 2, "a FOON `O` line, but line 1 lists a node in the goal syntax"),
+    ("onion: whole\n//\n", 2, "a FOON `//` line, but line 1 lists a node in the goal syntax"),
+    # a FOON recipe whose first line is a bare title: its motion line says it is a network
+    ("whipped cream\nO1\tbowl\t1\nS1\tempty\nM1\tpour\t1\t2\n", 2, "a FOON `O` line"),
+])
+def test_a_kitchen_that_mixes_foon_lines_into_node_lines_is_one_error(lines, bad, says, tmp_path):
+    """Stop 46's leftover: a kitchen of one node per line that also holds FOON `O`/`S` lines (a FOON file, or a
+    FOON-style kitchen, pasted after a node line) read each O/S line as a label: one `matches no node` warning
+    per line (69 on a recipe), then a run from the wrong kitchen. One error names the file, the line and the
+    two forms instead."""
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text(lines)
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", kitchen)
+    assert r.exit_code == 2, r.output
+    assert f"{kitchen}:{bad}: error: {says}" in r.stderr
+    assert "one form throughout" in r.stderr and "docs/format.md" in r.stderr
+    assert "warning" not in r.stderr and "Traceback" not in r.output

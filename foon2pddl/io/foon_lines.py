@@ -13,7 +13,8 @@ import re
 from ..errors import FoonSyntaxError
 from ..model.foon import Motion, ObjectNode, State, make_node, make_state, normalize_label
 
-_ID = re.compile(r"[OSM]\d*")
+#: the head of a FOON line: `O`, `S` or `M` and an optional id.
+LINE_ID = re.compile(r"[OSM]\d*")
 CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _INT = re.compile(r"\d+")
 #: Longest integer read (Python's default int-string limit): longer ones are errors, never ValueError.
@@ -65,7 +66,7 @@ def _classify(raw: str, fail) -> tuple:
     fields = list(map(str.strip, stripped.split("\t")))
     head = fields[0]
     kind = head[:1]
-    if kind not in "OSM" or not _ID.fullmatch(head):
+    if kind not in "OSM" or not LINE_ID.fullmatch(head):
         raise fail("expected an 'O', 'S' or 'M' line, '//' or a '#' comment")
     if len(fields) < 2 or not fields[1]:
         raise fail(f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')")
@@ -207,10 +208,10 @@ def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, i
             raise FoonSyntaxError(path, lineno, "control character in line (garbage bytes?)", line)
         fields = [f.strip() for f in stripped.split("\t")]
         head = fields[0]
-        if head[:1] == "M" and _ID.fullmatch(head):
+        if head[:1] == "M" and LINE_ID.fullmatch(head):
             raise FoonSyntaxError(path, lineno, "a motion line ('M'): this file is a FOON network of functional "
                                                 "units, not a list of objects; give it as a PATHS argument", line)
-        if head[:1] not in "OS" or not _ID.fullmatch(head):
+        if head[:1] not in "OS" or not LINE_ID.fullmatch(head):
             raise FoonSyntaxError(path, lineno, "expected an 'O' or 'S' line, '//' or a '#' comment", line)
         if len(fields) < 2 or not fields[1]:
             raise FoonSyntaxError(path, lineno, f"'{head[0]}' line has no label", line)

@@ -8,7 +8,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
-from .foon_lines import parse_objects
+from .foon_lines import LINE_ID, parse_objects
 from .json_text import line_of, load_json, text_problem
 from .parser import read_text
 from .rates import looks_like_rates
@@ -93,10 +93,15 @@ def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]
     from .goal_files import parse_goal_spec
 
     nodes: list[tuple[ObjectNode, int | None]] = []
+    first = 0
     for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only: U+2028 is not a line break here
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
+        foon = _foon_line(line)
+        if foon:
+            raise FoonSyntaxError(path, lineno, _mixed(foon, first), line)
+        first = first or lineno
         counted = _COUNT.match(line)
         count = int(counted.group(1)) if counted else None
         try:
@@ -105,6 +110,31 @@ def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]
             raise FoonSyntaxError(path, lineno, str(exc), line) from None
         nodes.append((make_node(spec.label, spec.states or ()), count))
     return nodes
+
+
+#: the head of a FOON line written with spaces for tabs: `O278 mixing bowl 1`, `S41 empty`.
+_FOON_HEAD = re.compile(r"[OSM]\d+")
+
+
+def _foon_line(line: str) -> str:
+    """`O`, `S`, `M` or `//` for a line in FOON text form (tabs or spaces), else ''."""
+    if line.startswith("//"):
+        return "//"
+    fields = line.split("\t")
+    if len(fields) > 1 and LINE_ID.fullmatch(fields[0].strip()):
+        return line[0]
+    return line[0] if _FOON_HEAD.fullmatch(line.split()[0]) else ""
+
+
+def _mixed(kind: str, first: int) -> str:
+    """The error for a FOON line in a kitchen of one node per line."""
+    if kind == "M" and not first:
+        return "a motion line ('M'): this file is a FOON network of functional units, not a list of objects; " \
+               "give it as a PATHS argument"
+    after = f", but line {first} lists a node in the goal syntax" if first else ""
+    return (f"a FOON `{kind}` line{after}: a kitchen file is in one form throughout, FOON-style O/S lines "
+            "(its first line that is not a comment starts with `//`, or with `O`/`S` and a tab) or one node per "
+            "line (`onion: whole`); docs/format.md")
 
 
 def looks_like_foon(text: str) -> bool:
