@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 from conftest import SUBGRAPHS
 
@@ -41,3 +42,14 @@ def test_a_file_outside_the_package_is_named_as_given(tmp_path):
     assert shown_path(given) == given
     assert shown_path("recipes/x.txt") == "recipes/x.txt"
     assert shown_path(str(PACKAGE / "data" / "example" / "01-lemonade.foon")) == "foon2pddl/data/example/01-lemonade.foon"
+
+
+@pytest.mark.parametrize("command", [["stats"], ["stats", "--json"], ["check"], ["check", "--json"]])
+def test_stats_and_check_name_the_embedded_examples_files_by_their_path_in_the_package(command):
+    """Issue 24's re-pass (stop 47): `stats` (units per source file) and `check` (defect places) on the embedded
+    example printed its absolute install path (`/.../site-packages/foon2pddl/data/example/04-pancakes.foon:178`),
+    where every note names it `foon2pddl/data/example/...`."""
+    result = CliRunner().invoke(main, command)
+    assert result.exit_code in (0, 1), result.output
+    assert "foon2pddl/data/example/0" in result.stdout
+    assert str(PACKAGE) not in result.stdout + result.stderr

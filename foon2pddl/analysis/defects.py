@@ -9,6 +9,7 @@ from enum import StrEnum
 
 from ..model.constraints import node_labels
 from ..model.foon import FunctionalUnit, Source
+from ..model.where import shown_path
 
 
 class Severity(StrEnum):
@@ -50,7 +51,7 @@ class Place:
     line: int
 
     def __str__(self) -> str:
-        return f"{self.path}:{self.line}"
+        return f"{shown_path(self.path)}:{self.line}"
 
 
 @dataclass(frozen=True)

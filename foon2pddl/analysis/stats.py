@@ -8,6 +8,7 @@ from typing import Any
 from ..errors import ParseWarning
 from ..model.foon import Foon
 from ..model.levels import LEVELS, project
+from ..model.where import shown_path
 
 
 def level_row(foon: Foon) -> dict[str, int]:
@@ -18,7 +19,7 @@ def level_row(foon: Foon) -> dict[str, int]:
 
 def network_stats(foon: Foon, warnings: tuple[ParseWarning, ...] = ()) -> dict[str, Any]:
     """Everything `foon2pddl stats` reports, as plain data."""
-    per_file = Counter(s.path for u in foon.units for s in u.sources)
+    per_file = Counter(shown_path(s.path) for u in foon.units for s in u.sources)
     states = {s.label for n in foon.nodes for s in n.states}
     return {
         "levels": [level_row(project(foon, lv)) for lv in LEVELS],
