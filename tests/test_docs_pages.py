@@ -1,5 +1,6 @@
-"""What the input-format pages (docs/json-schema.md, docs/format.md) say about a file's fields and forms holds
-for the reader and the shipped JSON Schema (issue 24: a newcomer writes files from these pages)."""
+"""What README and the docs pages say about themselves and about the files a newcomer writes from them holds
+(issue 24's newcomer passes): README lists every page, and json-schema.md's fields are the reader's and the
+shipped JSON Schema's."""
 
 from __future__ import annotations
 
@@ -37,3 +38,12 @@ def test_a_document_without_the_optional_fields_reads_with_their_defaults():
         {"inputs": [node], "motion": {"label": "peel"}, "outputs": [node], "sources": [{"path": "r.txt"}]}]}
     foon = parse_json(json.dumps(doc), "doc.json")
     assert foon.level == 3 and foon.units[0].sources == () and foon.units[1].sources[0].line == 0
+
+
+def test_readme_lists_every_docs_page():
+    """README's `## Documentation` list left out docs/extending.md (registries: a planner, a network kind, an
+    encoding, a retrieval method), so a newcomer reading README never found it."""
+    readme = (ROOT / "README.md").read_text()
+    listed = readme.split("## Documentation", 1)[1].split("\n## ", 1)[0]
+    pages = sorted(p.name for p in (ROOT / "docs").glob("*.md"))
+    assert [p for p in pages if f"(docs/{p})" not in listed] == []
