@@ -6,8 +6,12 @@ from __future__ import annotations
 
 import json
 import re
+import shlex
 
+from click.testing import CliRunner
 from conftest import ROOT
+
+from foon2pddl.cli import main
 
 from foon2pddl.io.jsonio import parse_json
 
@@ -47,3 +51,17 @@ def test_readme_lists_every_docs_page():
     listed = readme.split("## Documentation", 1)[1].split("\n## ", 1)[0]
     pages = sorted(p.name for p in (ROOT / "docs").glob("*.md"))
     assert [p for p in pages if f"(docs/{p})" not in listed] == []
+
+
+def test_retrieval_md_steps_example_is_a_line_steps_prints():
+    """retrieval.md's `steps` example read `3. chop onion (on [cutting board], whole) with knife on cutting board ->
+    onion (chopped, on [cutting board])`: no tree prints it (the onion is peeled first, and the board it is on is
+    `cutting board (contains {onion})`). The page names the command its example comes from; the line is that
+    command's."""
+    text = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
+    m = re.search(r"- `steps`: the same tree and numbering as FOON nodes \(`foon2pddl (retrieve [^`]*)`\): `([^`]*)`",
+                  text)
+    assert m, "retrieval.md's `steps` bullet names no command and example"
+    result = CliRunner().invoke(main, shlex.split(m.group(1)))
+    assert result.exit_code == 0, result.output
+    assert m.group(2) in result.stdout.splitlines()
