@@ -12,7 +12,6 @@ from click.testing import CliRunner
 from conftest import ROOT
 
 from foon2pddl.cli import main
-
 from foon2pddl.io.jsonio import parse_json
 
 SCHEMA_PAGE = ROOT / "docs" / "json-schema.md"
