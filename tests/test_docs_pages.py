@@ -64,3 +64,17 @@ def test_retrieval_md_steps_example_is_a_line_steps_prints():
     result = CliRunner().invoke(main, shlex.split(m.group(1)))
     assert result.exit_code == 0, result.output
     assert m.group(2) in result.stdout.splitlines()
+
+
+def test_skills_md_names_every_field_of_the_skill_plans_json():
+    """skills.md's `--format json` list left out `domain`, `macro_steps` and `decomposed`, and each step's `skills`
+    and `seconds`: a robot executive's author reading it did not know they were there. Every key of the document,
+    of a step and of a skill is named in that bullet."""
+    page = " ".join((ROOT / "docs" / "skills.md").read_text().split())
+    bullet = re.search(r"- `--format json`: (.*?); - `-o DIR`", page).group(1)
+    named = set(re.findall(r"`(\w+)`", bullet))
+    result = CliRunner().invoke(main, ["plan", "--goal", "whipped cream", "--skills", "--format", "json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    shown = set(data) | set(data["steps"][0]) | set(data["skills"][0]) | set(data["replay"])
+    assert sorted(shown - named) == []
