@@ -100,3 +100,26 @@ def test_the_stove_pddl_md_says_instances_leaves_unbound_is_what_plan_gives(read
     assert "pick-and-place frying_pan_1 with stove_1" in r.stdout and "melt butter_1 with stove_2" in r.stdout
     assert f"finds {count.group(1)} disagreements" in r.stderr, r.stderr
     assert any(fry.group(1) in d for d in seen), seen
+
+
+#: Rule 3's examples: "container~spoon (8.2 %), baking tray~pot (cooking utensil, 3.7 %), ...".
+_BREADTH = re.compile(r"([a-z][a-z ]*)~([a-z][a-z ]*) \((?:([a-z][a-z ]*), )?(\d+\.\d) %\)")
+
+
+def test_the_breadths_rule_3_gives_are_what_similarity_senses_says():
+    """Stop 47's pass: generalization.md's rule 3 said carrot~strawberry meet under produce covering 10.5 % of
+    the vocabulary; `foon2pddl similarity carrot strawberry --senses` says 10.3 % (and did at 820d7bc). Each
+    example's breadth, and its ancestor when named, is the command's."""
+    rule = _prose(ROOT / "docs" / "generalization.md").split("**Broad ancestors rejected.**", 1)[1][:1500]
+    examples = _BREADTH.findall(rule)
+    assert len(examples) >= 5, examples
+    r = CliRunner().invoke(main, ["similarity", "--pairs", "--senses", *(x.strip() for a, b, _, _ in examples
+                                                                          for x in (a, b))])
+    assert r.exit_code == 0, r.stderr
+    for a, b, ancestor, share in examples:
+        first, second = sorted((a.strip(), b.strip()))
+        said = re.search(rf"^{first} ~ {second}: \S+ ~ \S+ under (\S+)\.n\.\d+ \((?:rejected: )?(?:the )?ancestor "
+                         rf"covers (\d+\.\d)% ", r.stdout, re.M)
+        assert said, (a, b, r.stdout)
+        assert said.group(2) == share, (a, b, said.group(2), share)
+        assert not ancestor or said.group(1).replace("_", " ") == ancestor, (a, b, said.group(1), ancestor)
