@@ -108,3 +108,13 @@ def test_readme_says_which_extras_make_install_installs():
     assert f"'.[{','.join(sorted(installed, key=sentence.find))}]'" in sentence
     assert extras - installed == {"interop"}  # the test reads the table it means to
     assert all(f"`{extra}`" in sentence for extra in extras - installed)
+
+
+def test_the_test_corpus_readme_names_every_entry():
+    """README says `tests/data/README.md` says what each file is; it left out `scene/` (the scene kitchens
+    docs/scene.md plans with)."""
+    corpus = ROOT / "tests" / "data"
+    text = (corpus / "README.md").read_text()
+    entries = sorted(p.name + ("/" if p.is_dir() else "") for p in corpus.iterdir()
+                     if p.name not in ("README.md", ".gitattributes"))
+    assert [e for e in entries if f"`{e}`" not in text] == []
