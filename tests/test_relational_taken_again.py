@@ -1,7 +1,7 @@
 """A container FOON takes again after a unit poured out of it (`list_drops.taken_again`): the pour took a portion.
 
 The blueberry muffin (`ACT-0003-blueberry_muffin.txt:182`) pours the flour mixture from its bowl into the wet
-ingredients, leaving the bowl out of its outputs, and `:220`, later in the same recipe, takes `bowl (contains
+ingredients, leaving the bowl out of its outputs, and `:207`, after the mix of what it poured into, takes `bowl (contains
 {flour mixture})` again and pours it into the batter. Read as emptied by the first pour, the bowl of flour mixture
 was made again, its mix and every pour before it fired once more per taking."""
 
@@ -10,7 +10,11 @@ from __future__ import annotations
 from node_words import contains, inside, n
 from relational_checks import clean_unit_plan
 
-from foon2pddl.model.foon import FunctionalUnit, Motion, make_node, make_source
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_source
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.holders import gained
+from foon2pddl.pddl.list_drops import taken_again
+from foon2pddl.pddl.relational_plan import plan_unit
 
 MIX_IN = n("bowl", contains("flour", "salt"))
 KITCHEN = frozenset({MIX_IN, n("flour", inside("bowl")), n("salt", inside("bowl")), n("whisk"), n("spoon"),
@@ -50,3 +54,32 @@ def test_units_of_no_recipe_file_are_not_read_as_one_recipe():
     outcome = clean_unit_plan(_units(recipe=None), KITCHEN, GOAL)
     assert [x.label for x in outcome.task.instances].count("flour") == 2
     assert not any("takes again" in note for note in outcome.compiled.notes)
+
+
+def _readings(units) -> dict[int, str]:
+    """`taken_again`'s readings over all of `units`, unit index -> the taker's place named in the note."""
+    foon = Foon(tuple(units))
+    us = range(len(units))
+    filled = frozenset().union(*(gained(u) for u in units))
+    plans = {u: plan_unit(x, Kitchen(KITCHEN), frozenset(), filled) for u, x in enumerate(units)}
+    return {u: note.split(" at ")[1].split(" takes")[0] for u, (_, note) in taken_again(foon, us, plans)[1].items()}
+
+
+def _elsewhere(path: str, line: int) -> FunctionalUnit:
+    """Another recipe's pour of the flour mixture's bowl into a bowl of water, at `path`:`line`."""
+    water = n("bowl", contains("water"))
+    poured = make_node("bowl", FM_BOWL.states, motion_flag=1)
+    return FunctionalUnit((water, poured, FM), Motion("pour"), (n("bowl", contains("water", "flour mixture")),),
+                          (make_source(path, line),))
+
+
+def test_the_taker_is_one_the_pours_unit_leads_to_not_any_later_unit_of_the_file():
+    own = _units()
+    assert _readings(own) == {1: "muffin.txt:40"}
+    # a universal FOON written as one file: another recipe's pour of the same node, later in the file, that no
+    # path of units from the muffin's pour leads to, is no evidence that the muffin's bowl kept the rest
+    merged = (*own[:3], _elsewhere("muffin.txt", 50))
+    assert _readings(merged) == {}
+    # the same with the recipes in two files: the readings agree
+    assert _readings((*own[:3], _elsewhere("other.txt", 10))) == {}
+    assert _readings((*own, _elsewhere("muffin.txt", 50))) == _readings((*own, _elsewhere("other.txt", 10)))

@@ -25,7 +25,7 @@ reading is reported once with the unit's file:line. O(d r) per dropped label for
 most `DEPTH`), and O(u n) for the later units of the recipe.
 
 Likewise a container a unit empties because an earlier unit filled it (`relational_plan`) is kept whole when a
-later unit of the same recipe takes its input node again (`taken_again`): what left it was a portion.
+later unit the unit's outputs lead to takes its input node again (`taken_again`): what left it was a portion.
 """
 
 from __future__ import annotations
@@ -148,27 +148,59 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
     return out, gaps
 
 
+def _downstream(foon: Foon, units: frozenset[int], u: int) -> frozenset[int]:
+    """The units of `units` on a path from unit `u`'s outputs, at most `DEPTH` units on: each is the next unit of
+    `units` after the one before it (`_order`: later in the same recipe file) to take a node that one makes, with no
+    unit of `units` making that node again between them. The next taker of the node that unit made, not every
+    later one: a universal FOON shares nodes between recipes, and written as one file, every later recipe's unit
+    taking a node another recipe makes is later in that file (the grilled shrimp's cooked shrimp on a plate, made
+    again by the shrimp mango salad, whose pour of shrimp out of its bowl is no evidence for the grilled shrimp's)."""
+    path, line = _order(foon, u)
+    frontier, seen = [(u, line)], {u}
+    for _ in range(DEPTH):
+        nxt = []
+        for w, at in frontier:
+            for node in dict.fromkeys(foon.units[w].outputs):
+                later = [(here, v) for v in (*foon.consumers.get(node, ()), *foon.producers.get(node, ()))
+                         if v in units and (here := _order(foon, v))[0] == path and here[1] > at]
+                if not later or (v := min(later)[1]) in seen or node not in foon.units[v].inputs:
+                    continue  # made again before it is taken next: the next taker takes that unit's node
+                seen.add(v)
+                nxt.append((v, _order(foon, v)[1]))
+        frontier = nxt
+        if not frontier:
+            break
+    return frozenset(seen - {u})
+
+
 def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
                 ) -> tuple[dict[int, UnitPlan], dict[int, tuple[FunctionalUnit, str]]]:
-    """`plans` with a container kept whole where a unit of the task later in the same recipe file takes its input
-    node again: the unit emptied it only because an earlier unit filled its label with what left it (`relational_plan`:
+    """`plans` with a container kept whole where a unit of the task on a path from the unit's outputs (`_downstream`)
+    takes its input node again: the unit emptied it only because an earlier unit filled its label with what left it (`relational_plan`:
     a container FOON never empties, the whole leaves it), and FOON's later input says the container still holds
     what that node lists, so what left it was a portion (`Fate.SPLITS`, as holders read it). The blueberry muffin's
     pour (`ACT-0003-blueberry_muffin.txt:182`) leaves `bowl (contains {flour mixture})` out of its outputs, and the
-    pour at `:220` takes that node again: read as emptied, the flour mixture's mix and the pours before it fired
+    pour at `:207`, which takes the batter the mix of the bowl poured into made, takes that node again: read as emptied, the flour mixture's mix and the pours before it fired
     once more per taking. Only when every object leaving the container is such a portion (no flow, nothing
-    consumed out of it), and only units a recipe file gives (`FunctionalUnit.source`). Also unit index -> (unit, note) per unit so read. O(u r) per recipe of u units."""
+    consumed out of it), and only units a recipe file gives (`FunctionalUnit.source`): "a later unit of the same
+    file" alone read a universal FOON written as one file as one recipe. Also unit index -> (unit, note) per unit so
+    read. O(u r) per recipe of u units, and a path of `DEPTH` units per unit that empties a container."""
     task = frozenset(units)
-    later: dict[tuple[int, ObjectNode], FunctionalUnit] = {}  # (unit, input node) -> the first later taker
-    for path, steps in _in_recipes(foon, task).items():
-        if not path:  # units of no recipe file: not known to be one recipe's
-            continue
-        first: dict[ObjectNode, tuple[tuple[str, int], int]] = {}
-        for at, v in reversed(steps):
+    recipes = _in_recipes(foon, task)
+    takers: dict[ObjectNode, list[int]] = {}  # input node -> the task's units of a recipe file taking it, in order
+    for path, steps in recipes.items():
+        for _, v in (steps if path else ()):  # units of no recipe file: not known to be one recipe's
             for x in dict.fromkeys(foon.units[v].inputs):
-                if x in first and first[x][0][1] > at[1]:
-                    later[(v, x)] = foon.units[first[x][1]]
-                first[x] = (at, v)
+                takers.setdefault(x, []).append(v)
+    later: dict[tuple[int, ObjectNode], FunctionalUnit] = {}  # (unit, input node) -> the first later taker
+    for u in sorted(task & plans.keys()):
+        if not plans[u].emptied or not _order(foon, u)[0]:
+            continue
+        after = _downstream(foon, task, u)
+        for x in dict.fromkeys(foon.units[u].inputs):
+            v = next((v for v in takers.get(x, ()) if v in after), None)
+            if v is not None:
+                later[(u, x)] = foon.units[v]
     out, said = dict(plans), {}
     for u in sorted(task & plans.keys()):
         plan = plans[u]
