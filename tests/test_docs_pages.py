@@ -118,3 +118,15 @@ def test_the_test_corpus_readme_names_every_entry():
     entries = sorted(p.name + ("/" if p.is_dir() else "") for p in corpus.iterdir()
                      if p.name not in ("README.md", ".gitattributes"))
     assert [e for e in entries if f"`{e}`" not in text] == []
+
+
+def test_format_md_counts_the_search_kitchens_one_sided_containers():
+    """format.md said 318 of the 590 `x in [c]` items of the search inputs' kitchen.json have no matching
+    `c contains {x}` item; the file has 618 such items (each a distinct node), 333 of them unmatched."""
+    text = " ".join((ROOT / "docs" / "format.md").read_text().split())
+    m = re.search(r"\(([\d,]+) of the ([\d,]+) `x in \[c\]` items of the search inputs' `kitchen.json`", text)
+    items = json.loads((ROOT / "tests" / "data" / "foon-search-inputs" / "kitchen.json").read_text())
+    listed = {(item["label"], x) for item in items for x in item.get("ingredients") or ()}
+    placed = [item for item in items if item.get("container")]
+    unmatched = [item for item in placed if (item["container"], item["label"]) not in listed]
+    assert (int(m.group(1).replace(",", "")), int(m.group(2).replace(",", ""))) == (len(unmatched), len(placed))
