@@ -10,6 +10,9 @@ from __future__ import annotations
 import functools
 import re
 import shlex
+import subprocess
+import sysconfig
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -592,3 +595,26 @@ def test_generalization_md_counts_the_labelled_pairs_the_file_holds():
             if line.strip() and not line.startswith("#")]
     assert int(said.group(1).replace(",", "")) == len(rows)
     assert not [split for split in sorted({r[-1] for r in rows}) if f"`{split}`" not in page]
+
+
+def _installed(path: str) -> bool:
+    """Whether `path`, a file in a directory (`driver/returncodes.py`, Fast Downward's), is one of an installed
+    package (a bare name, `hash.py`, is in some package or other)."""
+    site = Path(sysconfig.get_paths()["purelib"])
+    return "/" in path.strip("./") and any(str(f).endswith("/" + path.lstrip("./")) for f in site.rglob(Path(path).name))
+
+
+def test_the_pages_name_no_file_outside_the_checkout():
+    """Stop 47's pass: generalization.md's lemmas6 paragraph ran its bench with `--shared /work/shared/data`, the
+    development machine's path; pddl.md named a scratch tool, `/tmp/obj46/over.py` (not kept), and `hash.py`, a
+    script no clone has. A page names paths a reader's clone has (`../shared/data` is the project's layout
+    beside it, which the benches explain), and every `x.py` it names is a file of the repository."""
+    files = subprocess.run(["git", "-C", str(ROOT), "ls-files"], capture_output=True, text=True, check=True)
+    names = {Path(f).name for f in files.stdout.splitlines()}
+    outside, unknown = [], []
+    for page in PAGES:
+        text = page.read_text()
+        outside += [f"{page.name}: {m.group()}" for m in re.finditer(r"(?<![\w.])/(?:work|tmp|home|root)/\S*", text)]
+        unknown += [f"{page.name}: {m.group(1)}" for m in re.finditer(r"`(?:[\w./-]*/)?([\w-]+\.py)\b[^`]*`", text)
+                    if m.group(1) not in names and not _installed(m.group(0).strip("`").split()[0])]
+    assert not outside and not unknown, (outside, unknown)
