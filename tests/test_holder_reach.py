@@ -157,3 +157,22 @@ def test_two_conditional_changes_of_one_quantified_holder_each_keep_their_own_st
                         constants=tuple((s, "state") for s in STATES))
     assert _applied(task) == {"take", "need"}
     assert unreachable(task) == ()
+
+
+def test_a_conditional_change_whose_condition_no_reachable_state_meets_makes_nothing():
+    # 0068-apple_cake.txt:357's scrape moves the cake batter it finds in a bowl in whatever state it is: a cake batter
+    # state only it "makes" (from that very state) is out of reach, and so is the pour that needs it (odd universal
+    # half, chocolate cake: counting the move as firing kept the counted units' task, out of reach, for the planner)
+    batter = Atom("is", ("?y", "s1"))
+    move = Action("move", (), (), params=(("?p", "bowl"), ("?q", "bowl")),
+                  conditional=(Conditional((Atom("in", ("?q", "?y")), batter),
+                                           add=(batter, Atom("in", ("?p", "?y"))), delete=(Atom("in", ("?q", "?y")),),
+                                           var="?y", type="egg"),))
+    need = Action("need", (Atom("is", ("?q", "s1")),), (), params=(("?q", "egg"),))
+    init = (Atom("in", ("a", "c")), Atom("is", ("c", "s0")), Atom("is", ("d", "s0")))
+    preds = (Predicate("is", (("?x", "thing"), ("?s", "state"))), Predicate("in", (("?h", "thing"), ("?x", "thing"))))
+    task = PlanningTask("d", "p", "relational", 3, preds, (move, need), init, (),
+                        types=(("bowl", "thing"), ("egg", "thing")), objects=OBJECTS,
+                        constants=tuple((s, "state") for s in STATES))
+    assert _applied(task) == {"move"}
+    assert [a.name for a in unreachable(task)] == ["need"]

@@ -30,6 +30,8 @@ ANY = "*"
 HOLDS = ("in", "on")
 #: Units named when the goal is out of reach.
 SHOWN = 3
+#: Why the goal is out of reach when no holder pair keeps it there (`drop_unreachable`'s `any_cause`).
+NO_STATE = "no reachable state makes what the goal needs"
 
 
 def _fits(have: str, need: str) -> bool:
@@ -82,7 +84,8 @@ class _Reach:
         unconditional = _states_in(action.add)
         for term, s in unconditional.items():
             entries.append((term, pre.get(term, ANY), {s}))
-        for c in action.conditional:
+        fired = [c for c in action.conditional if not _missing(self, (*action.pre, *c.when))]
+        for c in fired:
             when = _states_in(c.when)
             for term, s in _states_in(c.add).items():
                 if term in unconditional:
@@ -97,7 +100,7 @@ class _Reach:
         def post(term: str) -> set[str]:
             return after.get(term) or {pre.get(term, ANY)}
 
-        added = [*action.add, *(x for c in action.conditional for x in c.add)]
+        added = [*action.add, *(x for c in fired for x in c.add)]
         for a in added:
             if a.predicate in HOLDS:
                 self.add_pairs(a.predicate, post(a.args[0]), post(a.args[1]))
@@ -200,20 +203,21 @@ def unreachable(task: PlanningTask) -> tuple[Action, ...]:
     return _fixpoint(task)[1]
 
 
-def drop_unreachable(task: PlanningTask) -> tuple[PlanningTask, str | None]:
+def drop_unreachable(task: PlanningTask, any_cause: bool = False) -> tuple[PlanningTask, str | None]:
     """`task` without the actions `unreachable` finds (the same plans; `task` itself when there are none),
     and, when the goal is then out of reach, why: the units whose holder and content no plan has together
     (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached, or
-    when no holder pair keeps it out of reach (nothing makes a node: the planner's relaxed analysis says so).
-    A task of another encoding is returned as it is."""
+    when no holder pair keeps it out of reach (nothing makes a node: the planner's relaxed analysis says so),
+    unless `any_cause` (then `NO_STATE`). A task of another encoding is returned as it is."""
     if task.encoding != "relational":
         return task, None
     reach, gone = _fixpoint(task)
     dropped = {a.name for a in gone}
     kept = replace(task, actions=tuple(a for a in task.actions if a.name not in dropped)) if gone else task
-    causes = _causes(reach, gone, task.goal) if _missing(reach, task.goal) else []
+    missing = _missing(reach, task.goal)
+    causes = _causes(reach, gone, task.goal) if missing else []
     if not causes:  # reached, or out of reach with no holder pair on the way: the planner's own analysis says so
-        return kept, None
+        return kept, NO_STATE if missing and any_cause else None
     nodes = dict(task.nodes)
     said = []
     for a, miss in causes:

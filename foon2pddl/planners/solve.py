@@ -161,8 +161,9 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
     what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
     Each is planned first (not with `optimal`) with only the actions of the units of the plan its objects are counted
-    from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach),
-    within half its limit (`RETRY_SECONDS` with none), then whole within what is left (at least `MIN_REST`).
+    from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach,
+    for any cause), within half its limit (`RETRY_SECONDS` with none), then whole within what is left (at least
+    `MIN_REST`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -189,7 +190,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         # the counted plan's units alone, less to explore (not `optimal`: its best plan may be longer)
         first = None if optimal else counted_only(smaller, task.counted)
         if first is not None:
-            first, missed = drop_unreachable(first)
+            first, missed = drop_unreachable(first, any_cause=True)  # not worth a planner's time to prove
             first = first if missed is None else None
         _add(timings, "write", time.perf_counter() - t0)
         if first is not None:
