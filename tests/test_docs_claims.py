@@ -145,7 +145,7 @@ def test_bench_figures_name_the_commit_they_are_from(page, opening):
     text = (ROOT / page if page == "README.md" else ROOT / "docs" / page).read_text()
     start = text.index(opening)
     paragraph = text[start:text.find("\n\n", text.find("\n\n", start) + 2)]  # the paragraph and what follows
-    commits = re.findall(r"\b(?:at|commit) ([0-9a-f]{7,40})\b", paragraph)
+    commits = _COMMIT.findall(paragraph)
     assert commits, f"{page}: the figures after {opening!r} name no commit"
     for sha in commits:
         assert _in_history(sha), f"{page}: {sha} is no commit in the history of HEAD"
@@ -155,7 +155,7 @@ def test_bench_figures_name_the_commit_they_are_from(page, opening):
 _TIMED = re.compile(r"\d(?:\.\d+)? ?(?:s|ms|min)\b")
 _HOW = re.compile(r"\b(?:medians?|load|wall|CPU)\b", re.I)
 _BENCH = re.compile(r"python -m bench|make bench")
-_COMMIT = re.compile(r"\b(?:at|commit) ([0-9a-f]{7,40})\b")
+_COMMIT = re.compile(r"\b(?:[Aa]t|[Cc]ommit) ([0-9a-f]{7,40})\b")  # "At 6b607c6" slipped past a lower-case one
 
 
 def _bench_paragraphs() -> list[tuple[str, str]]:

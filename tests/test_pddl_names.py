@@ -6,6 +6,7 @@ import re
 
 import pddl.parser.domain
 import pddl.parser.problem
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -144,3 +145,22 @@ def test_truncated_name_ends_with_a_digest_of_the_whole_label():
     a, b = NameTable().name(stem + " to a"), NameTable().name(stem + " to b")
     assert a != b and a[:60] == b[:60] and "-2" not in a + b
     assert a.rsplit("__", 1)[1] != b.rsplit("__", 1)[1]
+
+
+@pytest.mark.parametrize("encoding", sorted(ENCODINGS))
+def test_no_variable_shares_its_name_with_a_constant(encoding):
+    """Hypothesis found it (stop 47): a unit making two eggs, the second in state "-" (nothing once sanitized), named that node's
+    state constant `egg-2` (the type took `egg`) and the second egg's parameter `?egg-2`, so an atom read
+    `(is ?egg-2 egg-2)`. PDDL tells them apart by the `?`; the `pddl` package does not (a term's name keys
+    its type), and refused the domain. No action's variable is named like a constant or object."""
+    ins = (_raw_node("egg", "raw", ""), _raw_node("egg", "whole", ""))
+    outs = (_raw_node("egg", "cooked", ""), _raw_node("egg", "-", ""))
+    foon = Foon((FunctionalUnit(ins, Motion("crack"), outs, (Source("t.txt", 1),)),))
+    goal = Goal(GoalSpec("egg"), (outs[0],), 3)
+    task = compile_task(foon, Kitchen(frozenset(ins), 3, "k"), goal, encoding, 3, prune=False)
+    domain_text, problem_text = render(task)
+    pddl.parser.domain.DomainParser()(domain_text)
+    pddl.parser.problem.ProblemParser()(problem_text)
+    constants = {name for name, _ in (*task.constants, *task.objects)}
+    variables = set(re.findall(r"\?([a-z][a-z0-9_-]*)", domain_text))
+    assert not constants & variables

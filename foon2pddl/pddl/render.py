@@ -16,7 +16,7 @@ from functools import lru_cache
 import jinja2
 
 from .names import comment, is_valid_name
-from .task import Atom, Conditional, PlanningTask
+from .task import Action, Atom, Conditional, PlanningTask
 
 
 def _atom(atom: Atom) -> str:
@@ -76,6 +76,47 @@ def check_names(task: PlanningTask) -> None:
             raise ValueError(f"not a sanitized PDDL name in the planning task: {name!r}")
 
 
+def distinct_variables(task: PlanningTask) -> PlanningTask:
+    """`task` with every action variable named like a constant or object renamed (`?egg-2` -> `?egg-2-var`).
+
+    PDDL tells `?egg-2` from the constant `egg-2` by the `?`, but the `pddl` package keys a term's type by its
+    bare name and refuses `(is ?egg-2 egg-2)`; encodings name variables and constants in separate tables, so
+    such pairs happen (two eggs, one in a state that sanitizes to nothing). Plans name actions and their
+    arguments by position, so nothing maps back differently. O(atoms of the actions renamed); `task` itself
+    when no name clashes."""
+    taken = {name for name, _ in (*task.constants, *task.objects)}
+    actions = tuple(_rename_variables(a, taken) for a in task.actions)
+    if all(new is old for new, old in zip(actions, task.actions, strict=True)):
+        return task
+    return replace(task, actions=actions)
+
+
+def _rename_variables(action: Action, taken: set[str]) -> Action:
+    variables = [v for v, _ in action.params] + [v for c in action.conditional for v, _ in c.quantified]
+    clashing = [v for v in dict.fromkeys(variables) if v.removeprefix("?") in taken]
+    if not clashing:
+        return action
+    used, new = set(variables), {}
+    for v in clashing:
+        name, n = f"{v}-var", 1
+        while name in used or name.removeprefix("?") in taken:
+            n += 1
+            name = f"{v}-var-{n}"
+        used.add(name)
+        new[v] = name
+
+    def atoms(xs: tuple[Atom, ...]) -> tuple[Atom, ...]:
+        return tuple(Atom(x.predicate, tuple(new.get(arg, arg) for arg in x.args)) for x in xs)
+
+    def pairs(xs: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+        return tuple((new.get(v, v), t) for v, t in xs)
+
+    conditional = tuple(replace(c, when=atoms(c.when), add=atoms(c.add), delete=atoms(c.delete),
+                                var=new.get(c.var, c.var), more=pairs(c.more)) for c in action.conditional)
+    return replace(action, pre=atoms(action.pre), add=atoms(action.add), delete=atoms(action.delete),
+                   params=pairs(action.params), conditional=conditional)
+
+
 #: Hex digits of the domain text's digest appended to the domain's name.
 DOMAIN_DIGEST_LENGTH = 8
 
@@ -86,6 +127,7 @@ def render_domain(task: PlanningTask) -> tuple[str, str]:
     domains that differ (pruning, goal actions) never share a name and tools that cache domains by name
     cannot mix them up."""
     check_names(task)
+    task = distinct_variables(task)
     env = _environment()
     context = {"task": task, "typed": task.uses_types, "costs": task.uses_costs}
     domain = env.get_template("domain.pddl.j2").render(context)
