@@ -108,6 +108,9 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
      "looking up planner 'pyperplan' ..."),
     (("plan", "--goal", "whipped cream", "--skills"),
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
+    # stop 47's pass: --up-validate's validation (8-13 s at load 14-17) ran under a line naming only the planning
+    (("plan", "--goal", "whipped cream", "--encoding", "tree", "--up-validate"),
+     "planning 'whipped cream' (fd, tree encoding, time limit 300 s, then validating the plan with unified-planning) ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
     (("stats", SUBGRAPHS), "counting nodes and labels at each level ..."),  # 2.4 s silent at load 12
@@ -115,7 +118,7 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
     (("generalize",), "writing FOON-GEN (95 units) and its statistics ..."),
     (("generalize",), "generalizing 101 units to categories ..."),  # 2.0-2.1 s silent at load 13 (subgraphs)
     (("categories", "--extend"), "filing the object labels in no category (through WordNet) ..."),  # 24 s at load 14
-], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills",
+], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills", "plan --up-validate",
         "check", "stats", "stats: its counts", "expand: its output", "generalize: its output",
         "generalize: compressing", "categories --extend"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
