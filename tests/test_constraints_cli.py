@@ -124,6 +124,18 @@ def test_a_gen_must_use_is_read_through_the_category_index_as_goals_are(tmp_path
     assert api.found
 
 
+def test_a_gen_must_use_its_own_ban_names_is_a_contradiction_as_on_reg():
+    """Review rv47 finding 5: `--must-use "mixing bowl" --without "mixing bowl"` exited 0 on GEN with a tree of
+    other bowls (the must-use read as `bowls`, which the kitchen's other bowls satisfy), where REG and EXP report
+    the contradiction. A must-use that a ban also names stays as written, so GEN reports it too."""
+    args = ("retrieve", "--goal", "whipped cream", "--must-use", "mixing bowl", "--without", "mixing bowl")
+    for network in ("reg", "gen"):
+        result = run(*args, "--network", network)
+        assert result.exit_code == 1, (network, result.stdout, result.stderr)
+        assert "smallest set of constraints to relax" in result.stderr, (network, result.stderr)
+        assert "note: FOON-GEN reads `must-use" not in result.stderr
+
+
 def test_bad_flag_value_exits_2():
     result = run("retrieve", "--goal", "guacamole", "--without", " ")
     assert result.exit_code == 2 and "Error: without ' ': the label is empty" in result.stderr and "empty" in result.stderr

@@ -56,12 +56,14 @@ def without_banned(kitchen: Kitchen, constraints: Constraints) -> Kitchen:
 def category_must_use(constraints: Constraints, index, name: str = "GEN") -> tuple[Constraints, tuple[str, ...]]:
     """The constraints as FOON-GEN (`index`: its categories) reads them, and a note per must-use it reads
     otherwise: a must-use object becomes its category, as a goal's label does (`compress.abstract_goal`), since
-    the network's units name it so (`--must-use "mixing bowl"` -> `bowls`); bans stay as given (the kitchen loses
-    what they mention before it is abstracted)."""
+    the network's units name it so (`--must-use "mixing bowl"` -> `bowls`), unless a ban mentions it too; bans stay
+    as given (the kitchen loses what they mention before it is abstracted)."""
     items: dict[Constraint, None] = {}
     notes = []
     for c in constraints.items:
-        category = index.choose(c.value) if c.kind is Kind.MUST_USE else None
+        # a must-use the constraints also ban stays as written: as its category, other objects of the category
+        # would satisfy it where REG and EXP report the contradiction (review rv47 finding 5)
+        category = index.choose(c.value) if c.kind is Kind.MUST_USE and allowed(c.value, constraints) else None
         if category is not None and category != c.value:
             read = replace(c, value=category)
             notes.append(f"note: FOON-{name} reads `{c.detail()}` as its category: `{read.detail()}`")
