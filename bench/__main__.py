@@ -7,7 +7,7 @@ import importlib
 import sys
 from pathlib import Path
 
-from .harness import Context, shared_data
+from .harness import Context, shared_data, what_it_measures
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
@@ -33,8 +33,7 @@ def run_area(area: str, ctx: Context) -> None:
     """Run one area, first saying on stderr which and what it measures (its module's first line): an area
     prints its figures once measured, minutes later for some, and no command waits silently."""
     module = importlib.import_module(f"bench.{area}")
-    what = (module.__doc__ or "").strip().split("\n\n", 1)[0]
-    print(f"bench {area}: {' '.join(what.split())} (its figures follow as each is measured) ...", file=sys.stderr,
+    print(f"bench {area}: {what_it_measures(module)} (its figures follow as each is measured) ...", file=sys.stderr,
           flush=True)
     module.run(ctx)
 

@@ -26,6 +26,11 @@ def shared_data(path: Path) -> Path:
     return path
 
 
+def what_it_measures(module) -> str:
+    """A bench module's first docstring paragraph on one line: what it measures, said before it measures."""
+    return " ".join((module.__doc__ or "").strip().split("\n\n", 1)[0].split())
+
+
 def _say_what_runs() -> None:
     """Say on stderr what the benchmark run as `python -m bench.NAME` measures (its module's first paragraph),
     once its arguments are read: most print their first figure or row only after a whole measurement, seconds
@@ -33,8 +38,7 @@ def _say_what_runs() -> None:
     main = sys.modules.get("__main__")
     name = getattr(getattr(main, "__spec__", None), "name", None) or ""
     if name.startswith("bench.") and name != "bench.__main__":
-        what = " ".join((main.__doc__ or "").strip().split("\n\n", 1)[0].split())
-        print(f"python -m {name}: {what} ...", file=sys.stderr, flush=True)
+        print(f"python -m {name}: {what_it_measures(main)} ...", file=sys.stderr, flush=True)
 
 
 def timeit(fn: Callable[[], Any], repeat: int = 5, warmup: int = 1) -> tuple[float, list[float], Any]:

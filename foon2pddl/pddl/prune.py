@@ -178,6 +178,23 @@ def prune_task(task: PlanningTask) -> PlanningTask:
     )
 
 
+def static_facts(task: PlanningTask) -> dict[str, list[tuple[str, ...]]]:
+    """The arguments of each init atom whose predicate no action changes (adds or deletes, conditionally or
+    not), by predicate, in init's order: facts true in every state a plan reaches. O(actions' effects + init)."""
+    changing = changed_predicates(task)
+    static: dict[str, list[tuple[str, ...]]] = {}
+    for a in task.init:
+        if a.predicate not in changing:
+            static.setdefault(a.predicate, []).append(a.args)
+    return static
+
+
+def changed_predicates(task: PlanningTask) -> set[str]:
+    """The predicates some action adds or deletes, conditionally or not."""
+    return {x.predicate for a in task.actions
+            for x in (*a.add, *a.delete, *(y for c in a.conditional for y in (*c.add, *c.delete)))}
+
+
 def drop_unbindable(task: PlanningTask) -> PlanningTask:
     """The task without the actions that have no ground instance: some static precondition (of a predicate
     no action adds or deletes, so true exactly in `init`) that no binding of the parameters can satisfy.
@@ -191,12 +208,8 @@ def drop_unbindable(task: PlanningTask) -> PlanningTask:
     O(narrowing rounds x static atoms x matching init atoms) per action; matches are looked up by an
     atom's constant arguments.
     """
-    changing = {x.predicate for a in task.actions
-                for x in (*a.add, *a.delete, *(y for c in a.conditional for y in (*c.add, *c.delete)))}
-    static: dict[str, list[tuple[str, ...]]] = {}
-    for a in task.init:
-        if a.predicate not in changing:
-            static.setdefault(a.predicate, []).append(a.args)
+    changing = changed_predicates(task)
+    static = static_facts(task)
     memo: dict[tuple, list[tuple[str, ...]]] = {}
 
     def matching(atom: Atom) -> list[tuple[str, ...]]:

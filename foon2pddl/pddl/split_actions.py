@@ -51,6 +51,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from math import prod
 
+from .prune import static_facts
 from .task import Action, Atom, Conditional, PlanningTask, Predicate
 
 __all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "SWEEPS_PER_BINDING", "Split", "split"]
@@ -352,12 +353,7 @@ def split(task: PlanningTask, above: int | None = None) -> Split:
     taken = {a.name for a in task.actions} | {p.name for p in task.predicates} \
         | {n for pair in (*task.types, *task.objects, *task.constants) for n in pair}
     kind = dict((*task.objects, *task.constants))
-    changed = {x.predicate for a in task.actions
-               for x in (*a.add, *a.delete, *(y for c in a.conditional for y in (*c.add, *c.delete)))}
-    static: dict[str, list[tuple[str, ...]]] = {}
-    for a in task.init:
-        if a.predicate not in changed:
-            static.setdefault(a.predicate, []).append(a.args)
+    static = static_facts(task)
     actions: list[Action] = []
     predicates: list[Predicate] = []
     stages: list[str] = [IDLE]
