@@ -235,8 +235,10 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     def fixed_over(names) -> list[Atom]:  # the static preconditions a part binding `names` checks
         return [a for a in fixed if _vars((a,)) <= set(names)]
 
+    matches = {a: _facts(a, static) for a in fixed}  # once per action: `bindings` is asked for every merge tried
+
     def bindings(names) -> int:
-        return _bindings(names, size, fixed_over(names), static)
+        return _bindings(names, size, [(matches[a], _vars((a,))) for a in fixed_over(names)])
 
     def weight(names, conditional) -> int:  # bindings x (1 + objects its sweeps range over)
         return bindings(names) * (1 + sum(prod(sizes.get(t, 0) for _, t in c.quantified) for c in conditional))
@@ -303,15 +305,18 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     return parts, join, predicates, stage
 
 
-def _bindings(names, size: dict[str, int], fixed: list[Atom], static: dict[str, list[tuple[str, ...]]]) -> int:
-    """At most how many bindings of the parameters `names` a planner grounds where the static atoms `fixed` (over
-    them only) hold: the product of their objects, each of some static atoms over disjoint parameters (those that
-    rule out most first) counted as the facts it matches instead of its parameters' product."""
-    def facts(atom: Atom) -> int:
-        return sum(all(x.startswith("?") or x == y for x, y in zip(atom.args, row, strict=True))
-                   for row in static[atom.predicate] if len(row) == len(atom.args))
+def _facts(atom: Atom, static: dict[str, list[tuple[str, ...]]]) -> int:
+    """How many static facts the atom matches (its variables match anything)."""
+    return sum(all(x.startswith("?") or x == y for x, y in zip(atom.args, row, strict=True))
+               for row in static[atom.predicate] if len(row) == len(atom.args))
 
-    rated = sorted(((facts(a), _vars((a,))) for a in fixed), key=lambda r: r[0] / max(1, prod(size[v] for v in r[1])))
+
+def _bindings(names, size: dict[str, int], fixed: list[tuple[int, set[str]]]) -> int:
+    """At most how many bindings of the parameters `names` a planner grounds where the static atoms `fixed` (over
+    them only; each given as the facts it matches and its variables) hold: the product of their objects, each of
+    some static atoms over disjoint parameters (those that rule out most first) counted as the facts it matches
+    instead of its parameters' product."""
+    rated = sorted(fixed, key=lambda r: r[0] / max(1, prod(size[v] for v in r[1])))
     free, n = set(names), 1
     for count, vs in rated:
         if vs <= free and count < prod(size[v] for v in vs):
