@@ -10,7 +10,7 @@ accepts on the search inputs' labels outside the shared subgraphs and on the sha
 labels not sampled before, see `similarity_sample.py`; `unseen`: both). The cook mode's
 breadth vocabulary is the shipped reference vocabulary (the shared subgraphs' labels)
 joined, for `outside`, by the search inputs' labels and, for the lemma batches (`lemmas`, `lemmas2`,
-`lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `similarity_lemmas.py`), by the batch's drawn lemmas, as a user's run on them would.
+`lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `lemmas7`, `similarity_lemmas.py`), by the batch's drawn lemmas, as a user's run on them would.
 Also reported per mode: the share of accepted pairs labelled bad.
 """
 
@@ -31,7 +31,7 @@ from .harness import Context
 AREA = "similarity"
 PAIRS = Path(__file__).with_name("similarity_pairs.tsv")
 SPLITS = ("independent", "fresh", "held-out", "outside", "unsampled", "unseen", "lemmas", "lemmas2", "lemmas3",
-          "lemmas4", "lemmas5", "lemmas6", "tune", "all")
+          "lemmas4", "lemmas5", "lemmas6", "lemmas7", "tune", "all")
 #: Groups of splits reported together: the held-out batches, and the third batch (`similarity_sample`).
 GROUPS = {"held-out": ("independent", "fresh"), "unseen": ("outside", "unsampled")}
 Z95 = 1.959963984540054
