@@ -7,7 +7,7 @@ import importlib
 import sys
 from pathlib import Path
 
-from .harness import Context, shared_data, what_it_measures
+from .harness import Context, run_main, shared_data, what_it_measures
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
@@ -39,4 +39,4 @@ def run_area(area: str, ctx: Context) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -31,7 +31,7 @@ from concurrent.futures import ThreadPoolExecutor
 from io import BytesIO
 from pathlib import Path
 
-from .harness import shared_data
+from .harness import run_main, shared_data
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_BASELINE = "ce6cbbc"  # the last commit before the issue-9 refactor
@@ -167,4 +167,4 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_main(main)

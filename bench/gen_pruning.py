@@ -30,7 +30,7 @@ from foon2pddl.pddl.encode_lifted import encode_lifted
 from foon2pddl.pddl.prune import relevant_units
 from foon2pddl.pddl.render import render
 
-from .harness import shared_data
+from .harness import run_main, shared_data
 
 
 def units(task) -> int:
@@ -92,4 +92,4 @@ def main(argv: list[str] | None = None) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -26,7 +26,7 @@ from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.similarity import LabelSimilarity, similarity_matrix
 from foon2pddl.io.files import load
 
-from .harness import Context, timeit
+from .harness import Context, run_main, timeit
 
 AREA = "generalize"
 
@@ -97,4 +97,4 @@ def run(ctx: Context) -> None:
 
 
 if __name__ == "__main__":
-    run(Context(Path("../shared/data")))
+    run_main(lambda: run(Context(Path("../shared/data"))))

@@ -9,9 +9,10 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 from foon2pddl.analysis.reachability import reachable
+from foon2pddl.io.interrupts import interrupt_exit, sigterm_raises
 from foon2pddl.model.foon import Foon, ObjectNode
 
 
@@ -24,6 +25,22 @@ def shared_data(path: Path) -> Path:
         raise SystemExit(2)
     _say_what_runs()
     return path
+
+
+def run_main(main: Callable[[], int | None]) -> NoReturn:
+    """Run a bench module's `main` (`python -m bench...`) and exit with its status. Ctrl-C (SIGINT) or SIGTERM
+    stops it as it stops a `foon2pddl` command: the `finally` blocks clean up (planner processes, temporary
+    files), then one line, `interrupted` or `terminated`, and status 130 or 143; no traceback."""
+    with sigterm_raises():
+        try:
+            status = main()
+        except (KeyboardInterrupt, RuntimeError) as exc:
+            ended = interrupt_exit(exc)
+            if ended is None:
+                raise
+            print(ended[0], file=sys.stderr, flush=True)
+            raise SystemExit(ended[1]) from None
+    raise SystemExit(status)
 
 
 def what_it_measures(module) -> str:

@@ -17,7 +17,7 @@ from pathlib import Path
 from foon2pddl.io.files import load
 from foon2pddl.model.places import listed, places
 
-from .harness import shared_data
+from .harness import run_main, shared_data
 
 
 def pairs(unit):
@@ -55,4 +55,4 @@ def main(argv: list[str] | None = None) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -38,7 +38,7 @@ from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd, up_engine
 from foon2pddl.planners.trace_check import check_states
 
-from .harness import Context, reachable_dishes, shared_data
+from .harness import Context, reachable_dishes, run_main, shared_data
 
 AREA = "pddl_instances"
 
@@ -169,4 +169,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

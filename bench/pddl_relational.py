@@ -38,7 +38,7 @@ from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan, plan_restoring
 
-from .harness import Context, reachable_dishes, shared_data
+from .harness import Context, reachable_dishes, run_main, shared_data
 
 AREA = "pddl_relational"
 ENCODINGS = ("tree", "instances", "relational")
@@ -198,4 +198,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -30,7 +30,7 @@ from foon2pddl.pddl.render import render
 from foon2pddl.pddl.task import PlanningTask
 from foon2pddl.planners import fd
 
-from .harness import Context, shared_data
+from .harness import Context, run_main, shared_data
 
 AREA = "pddl_subgraphs"
 
@@ -175,4 +175,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -39,7 +39,7 @@ from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
 from foon2pddl.retrieval.api import retrieve
 
-from .harness import Context, reachable_dishes, shared_data
+from .harness import Context, reachable_dishes, run_main, shared_data
 
 AREA = "physical_replay"
 WANTED = ("instances", "relational")
@@ -221,4 +221,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -35,6 +35,8 @@ from foon2pddl.pddl.untyped import untyped
 from foon2pddl.planners import external, fd, up_engine
 from foon2pddl.planners.result import PlanResult
 
+from .harness import run_main
+
 #: The planners tried by default (the UP engines whose PyPI packages the `interop` extra names).
 DEFAULT_PLANNERS = ("fd", "up:pyperplan", "up:tamer", "up:aries", "up:enhsp", "up:symk")
 
@@ -161,4 +163,4 @@ def main(argv: list[str] | None = None) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .doc_commands import ROOT, DocCommand, documented_commands, missing_inputs
-from .harness import Context
+from .harness import Context, run_main
 
 AREA = "silence"
 #: A terminal's control sequence (a redraw's `ESC [K`).
@@ -226,4 +226,4 @@ def main() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_main(main)

@@ -34,6 +34,7 @@ from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
 from foon2pddl.generalize.modes import make_similarity
 from foon2pddl.model.foon import normalize_label
 
+from .harness import run_main
 from .similarity import read_pairs, search_labels
 from .similarity_sample import main as sample_main
 
@@ -171,4 +172,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -31,7 +31,7 @@ from foon2pddl.generalize.cook import reference_vocabulary
 from foon2pddl.generalize.expand import DEFAULT_THRESHOLD
 from foon2pddl.generalize.modes import make_similarity
 
-from .harness import shared_data
+from .harness import run_main, shared_data
 from .similarity import read_pairs, search_labels
 
 SEED, RANDOM_OUTSIDE = 23, 36
@@ -102,4 +102,4 @@ def write_batch(rows: list[tuple[str, str, str, str]], blind: Path, key: Path, s
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

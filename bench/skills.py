@@ -38,7 +38,7 @@ from foon2pddl.skills.run import skills_encoding
 from foon2pddl.skills.source import trace_of
 from foon2pddl.skills.table import coverage
 
-from .harness import Context, shared_data
+from .harness import Context, run_main, shared_data
 
 AREA = "skills"
 
@@ -184,4 +184,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)

@@ -2,10 +2,19 @@
 
 from __future__ import annotations
 
+import os
+import signal
+import subprocess
 import sys
+import time
 import types
+from pathlib import Path
+
+import pytest
 
 import bench.__main__ as bench_main
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def test_each_area_says_on_stderr_what_runs_before_it_runs(monkeypatch, capsys, tmp_path):
@@ -47,3 +56,31 @@ def test_a_bench_module_run_alone_says_what_it_measures_once_its_arguments_are_r
     run_alone.__spec__ = types.SimpleNamespace(name="bench.__main__")  # `python -m bench`: said per area
     shared_data(tmp_path)
     assert capsys.readouterr().err == ""
+
+
+def _interrupt_once_running(args: list[str], tmp_path) -> subprocess.CompletedProcess:
+    """Run `python -m ARGS` from the repository, send SIGINT once its first stderr line (what it measures) is out
+    (the bench is running by then, minutes from its end), and return how it ended."""
+    proc = subprocess.Popen([sys.executable, "-m", *args], cwd=ROOT, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    first = proc.stderr.readline()
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGINT)
+    rest = proc.stderr.read()
+    proc.wait(timeout=120)
+    return subprocess.CompletedProcess(args, proc.returncode, "", first + rest)
+
+
+@pytest.mark.parametrize("args", [
+    ["bench", "--shared", "tests/data", "--only", "pddl_compile", "--repeat", "1"],
+    ["bench.pddl_subgraphs", "-v", "--shared", "tests/data"],
+])
+def test_ctrl_c_stops_a_bench_with_one_line_and_status_130_as_the_cli_does(args, tmp_path):
+    """Ctrl-C in `python -m bench ...` printed a KeyboardInterrupt traceback from wherever the bench was; the CLI
+    says `interrupted` and exits 130 (cli/__init__.py): a bench does the same, after the same cleanup."""
+    if args[0] == "bench":
+        args = [*args, "--save", str(tmp_path / "latest.json")]
+    done = _interrupt_once_running(args, tmp_path)
+    assert "Traceback" not in done.stderr, done.stderr[-3000:]
+    assert (done.returncode, done.stderr.strip().splitlines()[-1]) == (130, "interrupted"), done.stderr[-3000:]

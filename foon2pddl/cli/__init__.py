@@ -21,7 +21,7 @@ import click
 from .. import __version__
 from ..errors import FoonError, FoonInputError, UsageError
 from ..io.atomic import discard_staged
-from ..io.interrupts import Terminated, carried_interrupt, sigterm_raises
+from ..io.interrupts import interrupt_exit, sigterm_raises
 from ..planners.cleanup import command_scope
 from . import progress
 
@@ -109,12 +109,11 @@ class _Group(click.Group):
                 click.echo(f"hint: a goal of several words is one argument: --goal {hint}", err=True)
             ctx.exit(2)
         except (KeyboardInterrupt, RuntimeError) as exc:
-            interrupt = carried_interrupt(exc)
-            if interrupt is None:
+            ended = interrupt_exit(exc)
+            if ended is None:
                 raise
-            terminated = isinstance(interrupt, Terminated)
-            click.echo("terminated" if terminated else "interrupted", err=True)
-            ctx.exit(143 if terminated else 130)
+            click.echo(ended[0], err=True)
+            ctx.exit(ended[1])
         except BrokenPipeError:
             sys.stderr.close()
             ctx.exit(1)

@@ -46,6 +46,16 @@ def carried_interrupt(exc: BaseException) -> KeyboardInterrupt | None:
     return exc if isinstance(exc, KeyboardInterrupt) else None
 
 
+def interrupt_exit(exc: BaseException) -> tuple[str, int] | None:
+    """The line to print and the exit status when `exc` is (or carries) an interrupt: `interrupted`, 130 for
+    SIGINT, `terminated`, 143 for SIGTERM (the shell's 128 + signal number); None for any other exception.
+    The CLI and `python -m bench` end on an interrupt this one way."""
+    interrupt = carried_interrupt(exc)
+    if interrupt is None:
+        return None
+    return ("terminated", 143) if isinstance(interrupt, Terminated) else ("interrupted", 130)
+
+
 def _main_thread() -> bool:
     return threading.current_thread() is threading.main_thread()
 
