@@ -19,8 +19,7 @@ batches keep `TOOLS` alone, so they draw as they were drawn. From `lemmas6` on `
 them too (kitchen objects FOON uses that no earlier root reaches: shakers, mills, presses, the sink), and
 `N_TOOLS_MORE` tool lemmas are drawn instead of `N_TOOLS`. The pairs: a seeded
 sample of `ACCEPTED` (`ACCEPTED_MORE` from `lemmas5` on, `ACCEPTED_KITCHEN` from `lemmas6` on) pairs among those of a drawn label with a drawn or reference label that the paper's rule or the cook mode
-accepts (>= 0.89; the cook mode's breadth vocabulary joined by the drawn labels, as a
-user's run on them would), plus `RANDOM` seeded pairs from the rest (`random`).
+accepts (>= 0.89), plus `RANDOM` seeded pairs from the rest (`random`).
 The sources name the modes at the commit the batch was drawn on; rerun there to reproduce it.
 """
 
@@ -151,7 +150,7 @@ def candidates(shared: Path, split: str = "lemmas") -> list[tuple[str, str, str,
     """(label_a, label_b, split, source) of the batch `split` (module doc)."""
     paper = make_similarity("paper")
     drawn = draw_labels(paper.reader, shared, split)
-    cook = make_similarity("cook", drawn, reader=paper.reader)
+    cook = make_similarity("cook", reader=paper.reader)
     others = sorted(set(reference_vocabulary()) | set(drawn))
     accepted, rest = [], []
     for a in drawn:

@@ -10,8 +10,7 @@ recall need no weights):
   (object labels, ingredients and containers) with at least one label outside the
   reference vocabulary (`cook.reference_vocabulary`: the shared subgraphs' and the
   example's labels), that the paper's rule or the cook
-  mode accepts (>= 0.89; the cook mode's breadth vocabulary joined by those labels, as a
-  user's run on them would), plus `RANDOM_OUTSIDE` seeded pairs from the rest (`random`);
+  mode accepts (>= 0.89), plus `RANDOM_OUTSIDE` seeded pairs from the rest (`random`);
 - `unsampled`: pairs of the reference vocabulary that either mode accepts and that
   `similarity_pairs.tsv` does not yet hold.
 
@@ -42,8 +41,7 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
     reference = sorted(reference_vocabulary())
     search = search_labels(shared)
     paper = make_similarity("paper")
-    cook_outside = make_similarity("cook", search, reader=paper.reader)
-    cook_shared = make_similarity("cook", reader=paper.reader)
+    cook = make_similarity("cook", reader=paper.reader)
     have = {frozenset((p.a, p.b)) for p in read_pairs()}
     out, rest = [], []
 
@@ -55,14 +53,14 @@ def candidates(shared: Path) -> list[tuple[str, str, str, str]]:
     for a, b in itertools.combinations(search, 2):
         if a in known and b in known:
             continue
-        found = source(a, b, cook_outside)
+        found = source(a, b, cook)
         if found:
             out.append((a, b, "outside", found))
         else:
             rest.append((a, b))
     out += [(a, b, "outside", "random") for a, b in random.Random(SEED).sample(rest, RANDOM_OUTSIDE)]
     for a, b in itertools.combinations(reference, 2):
-        found = source(a, b, cook_shared) if frozenset((a, b)) not in have else None
+        found = source(a, b, cook) if frozenset((a, b)) not in have else None
         if found:
             out.append((a, b, "unsampled", found))
     return out

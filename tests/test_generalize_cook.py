@@ -12,6 +12,7 @@ from conftest import SUBGRAPHS
 from foon2pddl.cli import main
 from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.categories import Category, CategoryIndex, shipped_index
+from foon2pddl.generalize.classes import NAMED_SHARE, TOOL_CLASS_KINDS, kinds, named_kinds
 from foon2pddl.generalize.cook import (
     CLASS_KINDS,
     DEFAULT_BREADTH,
@@ -19,7 +20,6 @@ from foon2pddl.generalize.cook import (
     cook_overrides,
     filing_similarity,
     kin,
-    kinds,
     reference_vocabulary,
 )
 from foon2pddl.generalize.expand import expand, vocabulary
@@ -77,11 +77,44 @@ def test_deepest_common_ancestor_differs_from_nltk(label_similarity):
 
 
 def test_breadth_is_the_share_of_the_vocabulary_under_the_ancestor(cook):
-    vocab = cook.vocabulary
+    vocab = reference_vocabulary()
     under = [x for x in vocab if any("citrus.n.01" in cook._wup.ancestors(s) for s in cook.resolution(x).senses)]
     assert cook.coverage("citrus.n.01") == len(under) / len(vocab)
     assert {"lemon", "lime", "orange"} <= set(under)
     assert cook.coverage("kitchen_utensil.n.01") > DEFAULT_BREADTH
+
+
+def test_breadth_does_not_depend_on_the_other_labels_compared(cook):
+    """Rule 3 measures a pair's ancestor on the reference vocabulary plus the pair's own labels: a matrix that
+    holds many kinds of bottle does not make `bottle.n.01` broad (lemmas6: 5 good bottle pairs rejected so)."""
+    bottles = ["bottle", "beer bottle", "water bottle", "whiskey bottle", "jeroboam", "wine bottle", "pop bottle",
+               "magnum", "carboy", "demijohn", "flask", "pill bottle", "spray bottle", "canteen"]
+    alone = cook.explain("beer bottle", "bottle")
+    assert alone.similarity >= 0.89 and alone.ancestor == "bottle.n.01"
+    m = mode_matrix(bottles, "cook", cache=False)
+    assert m("beer bottle", "bottle") == alone.similarity
+    assert m("water bottle", "bottle") == cook("water bottle", "bottle") >= 0.89
+    reference = set(reference_vocabulary())
+    under = [x for x in reference if any("bottle.n.01" in cook._wup.ancestors(s) for s in cook.resolution(x).senses)]
+    assert "beer bottle" not in reference and alone.breadth == (len(under) + 1) / (len(reference) + 1)
+
+
+def test_a_class_of_tools_is_no_tool(cook):
+    """Rule 9: kitchen appliance, drinking vessel and flatware have kinds with names of their own (oven, mug,
+    plate): classes of tools with different jobs, no substitute for their kinds; a bottle's kinds are mostly
+    bottles, and it stands for them."""
+    for a, b in [("kitchen appliance", "stove"), ("food processor", "kitchen appliance"), ("drinking vessel", "mug"),
+                 ("flatware", "plate")]:
+        ev = cook.explain(a, b)
+        assert ev.similarity == 0.0 and ev.rejected == "tool class", (a, b, ev)
+        generic = ev.ancestor
+        assert generic in (ev.sense_a, ev.sense_b) and kinds(cook.reader, generic) >= TOOL_CLASS_KINDS
+        assert named_kinds(cook.reader, generic) < NAMED_SHARE
+    assert named_kinds(cook.reader, "bottle.n.01") > NAMED_SHARE
+    for a, b in [("beer bottle", "bottle"), ("caldron", "pot"), ("bowl", "mixing bowl"), ("spoon", "teaspoon")]:
+        assert cook(a, b) >= 0.89, (a, b)
+    r = CliRunner().invoke(main, ["similarity", "--senses", "drinking vessel", "mug"])
+    assert "rejected: a class of tools whose kinds go by names of their own" in r.stdout, r.stdout
 
 
 def test_breadth_threshold_is_a_parameter(label_similarity):

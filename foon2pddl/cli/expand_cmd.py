@@ -59,7 +59,7 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
         from ..generalize.pairs import format_pairs, substitution_pairs
 
         with slow_step(f"listing the {len(e.substitutions)} substitutions with their WordNet senses"):
-            text = format_pairs(substitution_pairs(e, vocabulary(net.foon, kit), extra), fmt)
+            text = format_pairs(substitution_pairs(e, extra), fmt)
         emit(text, output)
         return
     header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "

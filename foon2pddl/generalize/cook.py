@@ -2,7 +2,7 @@
 
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`: best Wu-Palmer over all kitchen senses,
 banana~cilantro 0.9 through their plant senses). This rule keeps the paper's composition (overrides,
-head nouns and modifiers, `similarity.py`) and changes eight things:
+head nouns and modifiers, `similarity.py`) and changes nine things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -15,8 +15,10 @@ head nouns and modifiers, `similarity.py`) and changes eight things:
    once) names a category, not a substitute (container~spoon, baking tray~pot), and
    scores 0. Two labels with the same sense are never rejected. The breadth vocabulary
    is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
-   labels of the 100 public FOON subgraphs and the example network) plus the labels of
-   the matrix being computed, so a value does not depend on how small a network is.
+   labels of the 100 public FOON subgraphs and the example network) plus the pair's own
+   two labels, so a pair's value depends neither on how small a network is nor on how
+   many kinds of one thing it happens to hold (a matrix of fourteen bottles does not make
+   `bottle.n.01` broad).
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
@@ -51,6 +53,11 @@ head nouns and modifiers, `similarity.py`) and changes eight things:
    recipe uses, and stands with none of its kinds (saltwater fish~tuna, mixed drink~bullshot score 0);
    chop~porkchop (3 kinds) and salad green~lettuce (18) stand. A label that is a category's own name
    and no category's member (cutlery) is a class too, and stands with no label (`bare_category`).
+9. A class of tools is no tool (`tool_class`): a kind pair whose generic is an artifact sense with at least
+   `TOOL_CLASS_KINDS` WordNet kinds, fewer than `NAMED_SHARE` of them named after it (`named_kinds`), scores 0:
+   the kinds of kitchen appliance (oven, toaster, food processor), drinking vessel (mug, tankard) or flatware
+   (plate, saucer) go by names of their own and do different jobs; a bottle's kinds are mostly called bottles
+   (beer bottle, water bottle: 35 %) and a bottle stands for them. Every label, filed or in the index.
 
 Senses are read as in the paper's rule, but a hyphenated WordNet lemma is read whole
 (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon).
@@ -70,6 +77,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
+from .classes import kinds, tool_class
 from .extend import Assignment, file_labels
 from .senses import Overrides, Resolution, adjective, parse_overrides, resolve, role_senses
 from .similarity import Evidence
@@ -109,27 +117,20 @@ def reference_vocabulary() -> tuple[str, ...]:
     return tuple(sorted({normalize_label(x) for x in text.splitlines()} - {""}))
 
 
-@lru_cache(maxsize=4096)
-def kinds(reader, name: str) -> int:
-    """How many WordNet kinds (hyponyms, transitively) synset `name` has (rule 8)."""
-    return sum(1 for _ in reader.synset(name).closure(lambda s: s.hyponyms()))
-
-
 @lru_cache(maxsize=1)
 def _index_text() -> str:
     return index_path().read_text(encoding="utf-8")
 
 
-def cache_tag(vocabulary: Iterable[str], breadth: float, overrides: Overrides) -> str:
-    """What a cook matrix depends on beyond its labels (with the shipped category index), computable
-    without WordNet."""
-    vocab = sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""})
-    return "cook " + digest(repr(breadth), "\n".join(vocab), overrides.text, _index_text(), RULES)
+def cache_tag(breadth: float, overrides: Overrides) -> str:
+    """What a cook matrix depends on beyond its labels (with the shipped category index and reference
+    vocabulary), computable without WordNet."""
+    return "cook " + digest(repr(breadth), "\n".join(reference_vocabulary()), overrides.text, _index_text(), RULES)
 
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids")
+         " vessels hold liquids, breadth per pair, tool classes")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -147,8 +148,7 @@ class CookSimilarity:
 
     mode = "cook"
 
-    def __init__(self, reader=None, overrides: Overrides | None = None, *, vocabulary: Iterable[str] = (),
-                 breadth: float = DEFAULT_BREADTH, categories: bool | CategoryIndex = True, extend: bool = True
+    def __init__(self, reader=None, overrides: Overrides | None = None, *, breadth: float = DEFAULT_BREADTH, categories: bool | CategoryIndex = True, extend: bool = True
                  ) -> None:
         """`categories=False` drops rule 5 (extending the category index must not read the index it extends);
         an index replaces the shipped one; `extend=False` leaves a label in no category unconstrained."""
@@ -158,8 +158,9 @@ class CookSimilarity:
         self.reader = reader if reader is not None else wordnet.reader()
         self.overrides = overrides if overrides is not None else cook_overrides()
         self.breadth = breadth
-        self.vocabulary = tuple(sorted(set(reference_vocabulary()) | {normalize_label(v) for v in vocabulary} - {""}))
-        self.tag = cache_tag(self.vocabulary, breadth, self.overrides)
+        self.vocabulary = reference_vocabulary()
+        self._reference = frozenset(self.vocabulary)
+        self.tag = cache_tag(breadth, self.overrides)
         self._wup = WupTable(self.reader)
         self._resolved: dict[str, Resolution] = {}
         self._evidence: dict[tuple[str, str], Evidence] = {}
@@ -226,15 +227,22 @@ class CookSimilarity:
             found = self._resolved[label] = resolve(self.reader, label, self.overrides, role_senses, hyphens=True)
         return found
 
-    def coverage(self, ancestor: str) -> float:
-        """Share of the breadth vocabulary with a sense under synset `ancestor` (itself included)."""
+    def coverage(self, ancestor: str, labels: Iterable[str] = ()) -> float:
+        """Share of the breadth vocabulary, the reference vocabulary joined by `labels` (the pair's own), with a
+        sense under synset `ancestor` (itself included)."""
         if self._cover is None:
             counts: dict[str, int] = {}
             for label in self.vocabulary:
-                for x in set().union(*(self._wup.ancestors(s) for s in self.resolution(label).senses)):
+                for x in self._under(label):
                     counts[x] = counts.get(x, 0) + 1
             self._cover = counts
-        return self._cover.get(ancestor, 0) / len(self.vocabulary)
+        extra = {normalize_label(x) for x in labels} - self._reference
+        return (self._cover.get(ancestor, 0) + sum(ancestor in self._under(x) for x in extra)) / (
+            len(self.vocabulary) + len(extra))
+
+    def _under(self, label: str) -> frozenset[str]:
+        """Every synset some sense of `label` is, or is below."""
+        return frozenset().union(*(self._wup.ancestors(s) for s in self.resolution(label).senses))
 
     def variant(self, r: Resolution) -> bool:
         """Whether a label known by its head noun is a recipe's preparation (rule 4): a food whose head is a
@@ -273,6 +281,8 @@ class CookSimilarity:
                     why = self._kinds(a, b, found)
                     if why:
                         found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, why)
+            if found.similarity and not found.rejected and self.categories is not None and tool_class(self.reader, found):
+                found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "tool class")
             self._evidence[(a, b)] = found
         return found
 
@@ -326,21 +336,23 @@ class CookSimilarity:
         if not ra.senses or not rb.senses:
             return Evidence(0.0, rejected="unknown")
         if ra.modifier is None and rb.modifier is None:
-            return self._best(ra.senses, rb.senses, 0)
+            return self._best(ra.senses, rb.senses, 0, (a, b))
         if (ra.modifier is None) != (rb.modifier is None) and self.variant(ra if ra.modifier is not None else rb):
             return Evidence(0.0, rejected="variant")
         if ra.modifier is not None and rb.modifier is not None:
-            heads = self._best(ra.senses, rb.senses, 0)
+            heads = self._best(ra.senses, rb.senses, 0, (a, b))
             mod = self._modifiers(ra.modifier, rb.modifier)
             if mod.rejected not in ("", "fixed", "same") and heads.similarity:  # same modifier: the heads decide
                 return Evidence(0.0, mod.ancestor, mod.sense_a, mod.sense_b, mod.breadth, mod.rejected)
             return Evidence(heads.similarity * mod.similarity, heads.ancestor, heads.sense_a, heads.sense_b,
                             heads.breadth, heads.rejected)
-        return self._best(ra.senses, rb.senses, 1)
+        return self._best(ra.senses, rb.senses, 1, (a, b))
 
-    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int) -> Evidence:
+    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int, labels: tuple[str, str]
+              ) -> Evidence:
         """Greatest accepted value over sense pairs (then first in WordNet order); the best rejected one
-        explains a 0. `extra` links are added below one side (a compound under its head)."""
+        explains a 0. `extra` links are added below one side (a compound under its head); `labels` (the
+        pair's) join the breadth vocabulary."""
         best = Evidence(0.0)
         broad = None
         for s in senses_a:
@@ -350,7 +362,7 @@ class CookSimilarity:
                     continue
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
-                share = self.coverage(lcs)
+                share = self.coverage(lcs, labels)
                 if s != t and share > self.breadth:
                     if broad is None or value > broad.similarity:
                         broad = Evidence(value, lcs, s, t, share, "broad")

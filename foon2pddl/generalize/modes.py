@@ -53,9 +53,8 @@ def check_mode(mode: str) -> str:
     return mode
 
 
-def make_similarity(mode: str = DEFAULT_MODE, vocabulary: Iterable[str] = (), *, reader=None,
-                    extra: Overrides | None = None):
-    """The label similarity of `mode`; `vocabulary` joins cook's breadth vocabulary; `extra` extends the overrides."""
+def make_similarity(mode: str = DEFAULT_MODE, *, reader=None, extra: Overrides | None = None):
+    """The label similarity of `mode`; `extra` extends the overrides."""
     overrides = SIMILARITY_MODES[check_mode(mode)].overrides()
     if extra is not None:
         overrides = overrides.extended(extra)
@@ -63,7 +62,7 @@ def make_similarity(mode: str = DEFAULT_MODE, vocabulary: Iterable[str] = (), *,
         return LabelSimilarity(reader, overrides)
     from .cook import CookSimilarity
 
-    return CookSimilarity(reader, overrides, vocabulary=vocabulary)
+    return CookSimilarity(reader, overrides)
 
 
 def _labels(vocabulary: Iterable[str]) -> tuple[str, ...]:
@@ -78,7 +77,7 @@ def _key(labels: tuple[str, ...], mode: str, extra: Overrides | None) -> str:
         return matrix_key(labels, overrides.text)
     from .cook import DEFAULT_BREADTH, cache_tag
 
-    return matrix_key(labels, overrides.text, cache_tag(labels, DEFAULT_BREADTH, overrides))
+    return matrix_key(labels, overrides.text, cache_tag(DEFAULT_BREADTH, overrides))
 
 
 def mode_matrix(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, *, cache: bool = True,
@@ -88,7 +87,7 @@ def mode_matrix(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, *, cache: b
     found = cached_matrix(labels, _key(labels, mode, extra)) if cache else None
     if found is not None:
         return found
-    return similarity_matrix(labels, cache=cache, sim=make_similarity(mode, labels, extra=extra))
+    return similarity_matrix(labels, cache=cache, sim=make_similarity(mode, extra=extra))
 
 
 def mode_matrix_is_cached(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, extra: Overrides | None = None) -> bool:

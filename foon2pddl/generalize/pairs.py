@@ -33,10 +33,9 @@ class PairRow:
     kind: str  # similar | derived
 
 
-def substitution_pairs(e: Expansion, vocabulary: Iterable[str], extra: Overrides | None = None
-                       ) -> tuple[PairRow, ...]:
+def substitution_pairs(e: Expansion, extra: Overrides | None = None) -> tuple[PairRow, ...]:
     """The rows of `e` (module doc); opens WordNet for the evidence."""
-    sim = make_similarity(e.similarity, vocabulary, extra=extra)
+    sim = make_similarity(e.similarity, extra=extra)
     rows = []
     for a, b in e.substitutions:
         ev = sim.explain(a, b)
