@@ -11,7 +11,9 @@ from node_words import contains, inside, n
 from relational_checks import clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_source
+from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.holders import gained
 from foon2pddl.pddl.list_drops import taken_again
 from foon2pddl.pddl.relational_plan import plan_unit
@@ -83,3 +85,40 @@ def test_the_taker_is_one_the_pours_unit_leads_to_not_any_later_unit_of_the_file
     # the same with the recipes in two files: the readings agree
     assert _readings((*own[:3], _elsewhere("other.txt", 10))) == {}
     assert _readings((*own, _elsewhere("muffin.txt", 50))) == _readings((*own, _elsewhere("other.txt", 10)))
+
+
+def _fired_before(recipe: str = "muffin.txt") -> tuple[FunctionalUnit, ...]:
+    """The muffin's mix and pour (the pour scrapes with a spatula, left dirty), the batter mixed (30) and stirred
+    (35); the flour mixture's bowl poured into the stirred batter (40), and into a bowl of water with the dirty
+    spatula (50), the next taker of that spatula; both mixed (60). The pour at 50 needs nothing the batter's units
+    make: FOON's plan, unfolded as counted, fires it before the stir and the pour at 40."""
+    wet = n("bowl", contains("milk", "flour mixture"))
+    poured = make_node("bowl", FM_BOWL.states, motion_flag=1)
+    batter_bowl, stirred = n("bowl", contains("batter")), n("bowl", contains("batter"), "stirred")
+    into_batter, into_water = n("bowl", contains("batter", "flour mixture")), n("bowl", contains("water", "flour mixture"))
+    units = [FunctionalUnit((MIX_IN, n("flour", inside("bowl")), n("salt", inside("bowl")), n("whisk")), Motion("mix"),
+                            (FM_BOWL, FM)),
+             FunctionalUnit((n("bowl", contains("milk")), poured, FM, n("spatula")), Motion("pour"),
+                            (wet, n("spatula", "dirty"))),
+             FunctionalUnit((FM, wet, n("spoon")), Motion("mix"), (batter_bowl, n("batter", inside("bowl")))),
+             FunctionalUnit((batter_bowl, n("batter", inside("bowl")), n("spoon")), Motion("stir"),
+                            (stirred, n("batter", inside("bowl"), "stirred"))),
+             FunctionalUnit((stirred, poured), Motion("pour"), (into_batter,)),
+             FunctionalUnit((n("bowl", contains("water")), poured, n("spatula", "dirty")), Motion("pour"), (into_water,)),
+             FunctionalUnit((into_batter, into_water), Motion("mix"), (DOUGH,))]
+    return tuple(FunctionalUnit(u.inputs, u.motion, u.outputs, (make_source(recipe, line),))
+                 for u, line in zip(units, (10, 20, 30, 35, 40, 50, 60), strict=True))
+
+
+DOUGH = n("bowl", contains("dough"))
+
+
+def test_the_taker_named_is_the_one_the_counted_plan_fires_first_not_the_first_of_the_file():
+    units = _fired_before()
+    # both pours of the flour mixture's bowl are on paths from the first pour; the file has the one at 40 first
+    assert _readings(units) == {1: "muffin.txt:40"}
+    kitchen = Kitchen(KITCHEN | {n("spatula"), n("bowl", contains("water"))})
+    compiled = compile_goal(Foon(units), kitchen, Goal(GoalSpec("bowl"), (DOUGH,)), "relational")
+    said = [note for note in compiled.notes if "takes again" in note]
+    # FOON's plan unfolded fires the pour at 50 (it needs the dirty spatula and the bowl alone) before the stir
+    assert said and all("pour at muffin.txt:50 takes again" in note for note in said), said

@@ -30,7 +30,7 @@ later unit the unit's outputs lead to takes its input node again (`taken_again`)
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import replace
 
 from ..model.aliases import unit_aliases
@@ -173,7 +173,7 @@ def _downstream(foon: Foon, units: frozenset[int], u: int) -> frozenset[int]:
     return frozenset(seen - {u})
 
 
-def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
+def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan], fired: Sequence[int] = ()
                 ) -> tuple[dict[int, UnitPlan], dict[int, tuple[FunctionalUnit, str]]]:
     """`plans` with a container kept whole where a unit of the task on a path from the unit's outputs (`_downstream`)
     takes its input node again: the unit emptied it only because an earlier unit filled its label with what left it (`relational_plan`:
@@ -184,14 +184,19 @@ def taken_again(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
     once more per taking. Only when every object leaving the container is such a portion (no flow, nothing
     consumed out of it), and only units a recipe file gives (`FunctionalUnit.source`): "a later unit of the same
     file" alone read a universal FOON written as one file as one recipe. Also unit index -> (unit, note) per unit so
-    read. O(u r) per recipe of u units, and a path of `DEPTH` units per unit that empties a container."""
+    read, the note naming the taker FOON's plan fires first (`fired`: its units in firing order, as counted); of
+    takers it does not fire, the first in the file. O(u r) per recipe of u units, and a path of `DEPTH` units per
+    unit that empties a container."""
     task = frozenset(units)
     recipes = _in_recipes(foon, task)
+    at = {v: k for k, v in enumerate(dict.fromkeys(fired))}
     takers: dict[ObjectNode, list[int]] = {}  # input node -> the task's units of a recipe file taking it, in order
     for path, steps in recipes.items():
         for _, v in (steps if path else ()):  # units of no recipe file: not known to be one recipe's
             for x in dict.fromkeys(foon.units[v].inputs):
                 takers.setdefault(x, []).append(v)
+    for vs in takers.values():  # fired first, then the file's order (a stable sort)
+        vs.sort(key=lambda v: at.get(v, len(at)))
     later: dict[tuple[int, ObjectNode], FunctionalUnit] = {}  # (unit, input node) -> the first later taker
     for u in sorted(task & plans.keys()):
         if not plans[u].emptied or not _order(foon, u)[0]:

@@ -21,7 +21,7 @@ from ..model.where import short_path, unit_where
 from .encoding import LevelInputs
 from .holders import gained
 from .input_stitch import Stitched
-from .instance_counts import InstanceCounts, RolesOf, derive_counts
+from .instance_counts import InstanceCounts, RolesOf, delete_free_plan, derive_counts
 from .list_drops import kept_in_place, taken_again
 from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, plan_unit, quiet_places
 
@@ -110,7 +110,10 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         if key not in memo:
             plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
                                                                  holding, called) for u in units})
-            plans, portions = taken_again(f, units, plans)
+            if "fired" not in memo:  # FOON's own plan as counted, in firing order: the taker it fires first is named
+                found = delete_free_plan(inp.foon, inp.kitchen, inp.candidates, together=True)
+                memo["fired"] = found[0] if found is not None else ()
+            plans, portions = taken_again(f, units, plans, memo["fired"])
             plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
                                                  if c in inp.candidates})
             by_unit = {f.units[u]: p for u, p in plans.items()}
