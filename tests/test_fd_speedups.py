@@ -1,0 +1,120 @@
+"""FD's translator with `planners.fd_speedups`' linear-time rewrites writes the SAS file it writes without them,
+and both translator paths (the warm server's children, a fresh interpreter) run with them."""
+
+from __future__ import annotations
+
+import os
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.prune import drop_unbindable
+from foon2pddl.pddl.render import render
+from foon2pddl.pddl.split_actions import split
+from foon2pddl.planners import fd, fd_speedups, translator
+
+SUBGRAPHS = Path(__file__).parent / "data" / "foon-subgraphs"
+PLANNERS = Path(fd_speedups.__file__).parent
+
+
+def _env() -> dict[str, str]:
+    return {**os.environ, "PYTHONPATH": str(fd.bin_dir())}
+
+
+def _in_translator(script: str, cwd: Path) -> str:
+    """`script`'s output, run with the translator importable and this package's planners directory on sys.path
+    (as the server script has it)."""
+    out = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(PLANNERS)!r})\n" + script],
+                         cwd=cwd, env=_env(), capture_output=True, text=True, check=True)
+    return out.stdout
+
+
+def test_the_warm_server_installs_both_rewrites(tmp_path):
+    out = _in_translator("import translate_server; print(sorted(translate_server.load()))", tmp_path)
+    assert out.strip() == str(sorted(fd_speedups.ORIGINALS))
+
+
+def test_another_translator_version_is_left_as_it_is(tmp_path, monkeypatch):
+    script = ("import fd_speedups\n"
+              "fd_speedups.ORIGINALS = {k: '0' * 40 for k in fd_speedups.ORIGINALS}\n"
+              "from fast_downward.translate import variable_order as v\n"
+              "before = v.CausalGraph.calculate_topological_pseudo_sort\n"
+              "print(fd_speedups.apply(), v.CausalGraph.calculate_topological_pseudo_sort is before)\n")
+    assert _in_translator(script, tmp_path).strip() == "() True"
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_the_pseudo_sort_orders_as_the_original(seed, tmp_path):
+    # random weighted causal graphs with large components (the rewrite's case), goal variables among them
+    rng = random.Random(seed)
+    n = rng.randint(2, 60)
+    edges = {(rng.randrange(n), rng.randrange(n)): rng.randint(1, 5) for _ in range(rng.randint(1, 4 * n))}
+    goal = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
+    script = (
+        "import fd_speedups\nfrom collections import defaultdict\n"
+        "from fast_downward.translate import variable_order as v\n"
+        f"edges, goal, n = {edges!r}, {goal!r}, {n}\n"
+        "def order():\n"
+        "    cg = v.CausalGraph.__new__(v.CausalGraph)\n"
+        "    cg.weighted_graph = defaultdict(lambda: defaultdict(int))\n"
+        "    for (s, t), w in edges.items():\n"
+        "        if s != t: cg.weighted_graph[s][t] += w\n"
+        "    cg.predecessor_graph, cg.ordering, cg.num_variables = defaultdict(set), [], n\n"
+        "    cg.goal_map = {g: 0 for g in goal}\n"
+        "    return cg.get_ordering()\n"
+        "before = order(); fd_speedups.apply(); print(before == order(), len(before))\n")
+    same, count = _in_translator(script, tmp_path).split()
+    assert same == "True" and int(count) == n
+
+
+def test_a_ground_action_keeps_the_deletes_the_original_keeps(tmp_path):
+    # a delete the same (condition, atom) adds is dropped, one under another condition or unconditional is kept
+    script = (
+        "import fd_speedups\n"
+        "from fast_downward.translate.pddl import actions\nfrom fast_downward.translate.pddl.conditions import Atom\n"
+        "p, q, r = Atom('p', ['a']), Atom('q', ['b']), Atom('r', [])\n"
+        "effects = [([], p), ([q], p.negate()), ([], p.negate()), ([q], r), ([q], r.negate()), ([r], q.negate()),\n"
+        "           ([q, r], p), ([q, r], p.negate()), ([r, q], p.negate())]\n"
+        "def lists():\n"
+        "    a = actions.PropositionalAction('a', [], effects, 1)\n"
+        "    shown = lambda pairs: repr([(list(map(str, c)), str(e)) for c, e in pairs])\n"
+        "    return shown(a.add_effects), shown(a.del_effects)\n"
+        "before = lists(); fd_speedups.apply(); print(before == lists(), len(eval(before[1])))\n")
+    # kept: ([q], p), ([r], q), ([r, q], p) (a condition is a list: its order counts, as in the original)
+    assert _in_translator(script, tmp_path).split() == ["True", "3"]
+
+
+def _relational_task(name: str) -> tuple[str, str]:
+    """The relational task `plan` hands over for `name`'s dish (split, as `plan` splits it)."""
+    foon, _ = load([SUBGRAPHS / name])
+    dish = min(n for n in foon.nodes if n.dish is not None)
+    compiled = compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "relational", 3)
+    return render(split(drop_unbindable(compiled.task)).task)
+
+
+@pytest.mark.parametrize("name", ["ACT-0034-greek_salad.txt", "0058-chocolate_cake.txt"])
+def test_warm_and_fresh_write_the_sas_file_of_the_unchanged_translator(name, tmp_path):
+    domain, problem = _relational_task(name)
+    (tmp_path / "domain.pddl").write_text(domain)
+    (tmp_path / "problem.pddl").write_text(problem)
+    plain = subprocess.run([sys.executable, "-m", "fast_downward.translate", "domain.pddl", "problem.pddl",
+                            "--sas-file", "plain.sas"], cwd=tmp_path, env=_env(), capture_output=True, check=True)
+    assert plain.returncode == 0
+    sas = {}
+    for warm in (True, False):
+        os.environ[translator.SWITCH] = "1" if warm else "0"
+        try:
+            run = fd.translate(tmp_path / "domain.pddl", tmp_path / "problem.pddl", tmp_path / f"{warm}.sas",
+                               tmp_path, 60.0)
+        finally:
+            os.environ.pop(translator.SWITCH, None)
+        assert run.returncode == 0, run.output
+        sas[warm] = (tmp_path / f"{warm}.sas").read_bytes()
+    assert sas[True] == sas[False] == (tmp_path / "plain.sas").read_bytes()
