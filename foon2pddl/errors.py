@@ -12,7 +12,9 @@
   to the task (an unknown action, wrong arguments); `PlanOutcome` reports it as
   its `decode_error`, never raised to the user.
 
-Messages never name command-line flags: only `cli/` knows them.
+Messages never name command-line flags: only `cli/` knows them. A file of another kind than the input it was
+given as (a kitchen given as a network) carries `belongs`, the inputs that take it (`INPUTS`); its message
+ends by naming them in words, and the CLI names its options instead.
 """
 
 from __future__ import annotations
@@ -21,8 +23,12 @@ import importlib
 from dataclasses import dataclass
 from types import ModuleType
 
-__all__ = ["FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
+__all__ = ["INPUTS", "FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
            "PlanDecodeError", "UsageError", "place", "require"]
+
+#: The inputs a file can belong to (`FoonError.belongs`), as the library's messages name them.
+INPUTS = {"paths": "as a network (FOON paths)", "kitchen": "as the kitchen", "goals": "as the goal list",
+          "constraints": "as the constraints", "rates": "as the motion rates"}
 
 
 def place(path: str, line: int) -> str:
@@ -34,15 +40,19 @@ class FoonError(Exception):
     """Base of every error this package reports to users (CLI exit status 2).
 
     `path` and `line` locate the problem in an input file when there is one
-    (`line` 0: the file as a whole); `text` is the offending line.
+    (`line` 0: the file as a whole); `text` is the offending line. `belongs`: for a file of another kind,
+    the inputs (`INPUTS` keys) that take it; `what` is then the message without where it goes.
     """
 
-    def __init__(self, message: str, *, path: str | None = None, line: int = 0, text: str | None = None) -> None:
+    def __init__(self, message: str, *, path: str | None = None, line: int = 0, text: str | None = None,
+                 belongs: tuple[str, ...] = ()) -> None:
         self.path = path
         self.line = line
-        self.message = message
+        self.what = message
+        self.belongs = belongs
+        self.message = f"{message}: {goes(belongs, INPUTS)}" if belongs else message
         self.text = text
-        super().__init__(message)
+        super().__init__(self.message)
 
     def location(self) -> str | None:
         """`path:line`, `path` when the problem is the file as a whole (line 0), None when not in a file."""
@@ -56,11 +66,17 @@ class FoonError(Exception):
         return text
 
 
-class FoonSyntaxError(FoonError):
-    """A FOON, kitchen, goal or rates file that does not follow its format."""
+def goes(belongs: tuple[str, ...], names: dict[str, str]) -> str:
+    """`give it as the kitchen or as the goal list`: where a file of another kind goes, in `names`' words."""
+    return "give it " + " or ".join(names[b] for b in belongs)
 
-    def __init__(self, path: str, line: int, message: str, text: str | None = None) -> None:
-        super().__init__(message, path=path, line=line, text=text)
+
+class FoonSyntaxError(FoonError):
+    """A FOON, kitchen, goal or rates file that does not follow its format (or a file of another kind)."""
+
+    def __init__(self, path: str, line: int, message: str, text: str | None = None,
+                 belongs: tuple[str, ...] = ()) -> None:
+        super().__init__(message, path=path, line=line, text=text, belongs=belongs)
 
 
 class FoonInputError(FoonError):

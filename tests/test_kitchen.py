@@ -88,7 +88,7 @@ def test_json_convention_maps_container_and_ingredients():
 def test_json_errors_name_the_item(tmp_path):
     bad = tmp_path / "k.json"
     bad.write_text('[{"label": "bowl", "states": []},\n {"label": "cup", "states": "empty"}]')
-    with pytest.raises(FoonSyntaxError, match=r"item 1 \(cup\): 'states' must be a list"):
+    with pytest.raises(FoonSyntaxError, match=r"item 2 \(cup\): 'states' must be a list"):
         read_kitchen(bad)
     bad.write_text('[{"label": "bowl"},\n {"label": }]')
     with pytest.raises(FoonSyntaxError) as info:
@@ -98,7 +98,7 @@ def test_json_errors_name_the_item(tmp_path):
     with pytest.raises(FoonSyntaxError, match="expected a JSON list"):
         read_kitchen(bad)
     bad.write_text('[{"states": []}]')
-    with pytest.raises(FoonSyntaxError, match="item 0: expected an object with a non-empty string 'label'"):
+    with pytest.raises(FoonSyntaxError, match="item 1: expected an object with a non-empty string 'label'"):
         read_kitchen(bad)
 
 

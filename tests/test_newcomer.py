@@ -342,7 +342,7 @@ def test_a_scene_given_as_a_network_says_it_is_a_scene_kitchen(command):
     "FOON JSON document lacks the required field 'format'"."""
     scene = Path(__file__).parent / "data" / "scene" / "whipped_cream_scene.json"
     r = run(command, scene, *(["--goal", "whipped cream"] if command == "plan" else []))
-    assert r.exit_code == 2 and "is a scene kitchen (docs/scene.md), not a network: give it as the kitchen" in r.stderr
+    assert r.exit_code == 2 and "is a scene kitchen (docs/scene.md), not a network: give it with `--kitchen`" in r.stderr
 
 
 def test_stats_skips_plainly_non_foon_files_and_invalid_ones_on_request(tmp_path):

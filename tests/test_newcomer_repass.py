@@ -174,9 +174,9 @@ def test_category_types_reach_the_planner_in_a_batch_and_under_skills(where, ext
 
 @pytest.mark.parametrize(("document", "says"), [
     ("docs/examples/robot-no-pour.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
-                                         "give it to the constraints option of compile, plan or retrieve"),
+                                         "give it with `--constraints`"),
     ("docs/examples/diet-no-egg.json", "this is a constraints file (docs/constraints.md), not a kitchen: "
-                                       "give it to the constraints option of compile, plan or retrieve"),
+                                       "give it with `--constraints`"),
     ("network", "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"),
 ])
 def test_a_json_document_given_as_a_kitchen_says_what_it_is_and_where_it_goes(document, says, tmp_path):
@@ -199,8 +199,8 @@ def test_a_constraints_file_given_as_a_network_says_to_give_it_with_constraints(
     document = ROOT / "docs" / "examples" / "robot-no-pour.json"
     r = run("retrieve", document, "--goal", "guacamole")
     assert r.exit_code == 2
-    assert ("error: top level: this is a constraints file (docs/constraints.md), not a network: give it as the "
-            "constraints file") in r.stderr
+    assert ("error: top level: this is a constraints file (docs/constraints.md), not a network: give it with "
+            "`--constraints`") in r.stderr
 
 
 @pytest.mark.parametrize("encoding", ["state", "ocp"])
@@ -257,7 +257,7 @@ def test_a_kitchen_list_given_as_a_network_says_where_it_goes():
 
     r = run("stats", SEARCH_INPUTS / "kitchen.json")
     assert r.exit_code == 2
-    assert "is a kitchen or a goal list (docs/format.md), not a network: give it as the kitchen or the goal list" \
+    assert "is a kitchen or a goal list (docs/format.md), not a network: give it with `--kitchen` or with `--goals`" \
         in r.stderr
 
 

@@ -19,7 +19,7 @@ import sys
 import click
 
 from .. import __version__
-from ..errors import FoonError, FoonInputError, UsageError
+from ..errors import FoonError, FoonInputError, UsageError, goes
 from ..io.atomic import discard_staged
 from ..io.interrupts import interrupt_exit, sigterm_raises
 from ..planners.cleanup import command_scope
@@ -47,6 +47,10 @@ COMMANDS = {
     "similarity": "similarity_cmd",
     "stats": "stats_cmd",
 }
+
+#: The option that takes a file of each kind (`errors.INPUTS`), for an error on a file given to another one.
+OPTIONS = {"paths": "as a PATHS argument", "kitchen": "with `--kitchen`", "goals": "with `--goals`",
+           "constraints": "with `--constraints`", "rates": "with `--rates`"}
 
 
 class _Command(click.Command):
@@ -101,7 +105,8 @@ class _Group(click.Group):
                     discard_staged()
         except FoonError as exc:
             where = exc.location()
-            click.echo(f"{where}: error: {exc.message}" if where else f"Error: {exc.message}", err=True)
+            message = f"{exc.what}: {goes(exc.belongs, OPTIONS)}" if exc.belongs else exc.message
+            click.echo(f"{where}: error: {message}" if where else f"Error: {message}", err=True)
             if exc.text is not None:
                 click.echo(f"    {exc.text!r}", err=True)
             hint = _unquoted_goal(exc, ctx.meta.get("argv", ()))

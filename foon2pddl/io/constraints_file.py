@@ -58,9 +58,26 @@ def _table(value, path: str, line: int, key: str) -> dict[str, float]:
     return value
 
 
+def _other_kind(data: object) -> tuple[str, tuple[str, ...]] | None:
+    """What a JSON document given as constraints is instead (a kitchen, a scene, a network) and the inputs
+    that take it; None when it may be constraints."""
+    if isinstance(data, list) and data and all(isinstance(item, dict) for item in data):
+        return "a JSON list of objects is a kitchen or a goal list (docs/format.md), not a constraints file", \
+            ("kitchen", "goals")
+    if isinstance(data, dict) and "objects" in data and not is_constraints(data):
+        return "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a constraints file", \
+            ("kitchen",)
+    if isinstance(data, dict) and "format" in data and "units" in data:  # a network's JSON export (jsonio)
+        return "this is a FOON network (JSON, docs/json-schema.md), not a constraints file", ("paths",)
+    return None
+
+
 def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
     """Parse a constraints document; FoonSyntaxError naming path and line on any problem."""
     data = load_json(text, path)  # located errors for bad JSON, deep nesting, huge integers
+    other = _other_kind(data)
+    if other:
+        raise FoonSyntaxError(path, 1, other[0], belongs=other[1])
     if not isinstance(data, dict):
         raise FoonSyntaxError(path, 1, "a constraints file is a JSON object")
     for key in data:

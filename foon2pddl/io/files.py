@@ -61,7 +61,15 @@ def read_network(path: Path) -> ParseResult:
         from .jsonio import read_json
 
         return ParseResult(read_json(path))
-    return parse_file(path)
+    try:
+        return parse_file(path)
+    except FoonSyntaxError:
+        from .rates import looks_like_rates
+
+        if looks_like_rates(read_text(path)):  # re-read only on error: say what the file is and where it goes
+            raise FoonSyntaxError(str(path), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
+                                                "not a network", belongs=("rates",)) from None
+        raise
 
 
 def _read_all(paths: Iterable[str | Path], skip_invalid: bool) -> tuple[list[ParseResult], list[ParseWarning]]:
@@ -82,7 +90,9 @@ def _read_all(paths: Iterable[str | Path], skip_invalid: bool) -> tuple[list[Par
                 raise
             skipped.append(ParseWarning(exc.path, exc.line, f"skipped (not a valid network): {exc.message}"))
     if not results:
-        raise FoonSyntaxError(str(next(iter(named), "")), 0, "no FOON file to read: every file was skipped")
+        said = "; ".join(f"{Path(w.path).name} ({w.message.removeprefix('skipped: ')})" for w in skipped[:3])
+        more = f"; {len(skipped) - 3} more" if len(skipped) > 3 else ""
+        raise FoonSyntaxError(str(next(iter(named), "")), 0, f"no FOON file to read: every file was skipped: {said}{more}")
     return results, skipped
 
 

@@ -19,6 +19,8 @@ CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _INT = re.compile(r"\d+")
 #: Longest integer read (Python's default int-string limit): longer ones are errors, never ValueError.
 MAX_INT_DIGITS = 4300
+#: A motion line where a list of objects (a kitchen, a goal) is read: the file is a network (PATHS).
+NETWORK_NOT_OBJECTS = "a motion line ('M'): this file is a FOON network of functional units, not a list of objects"
 
 
 class _PendingObject:
@@ -209,8 +211,7 @@ def parse_objects(text: str, path: str = "<string>") -> list[tuple[ObjectNode, i
         fields = [f.strip() for f in stripped.split("\t")]
         head = fields[0]
         if head[:1] == "M" and LINE_ID.fullmatch(head):
-            raise FoonSyntaxError(path, lineno, "a motion line ('M'): this file is a FOON network of functional "
-                                                "units, not a list of objects; give it as a PATHS argument", line)
+            raise FoonSyntaxError(path, lineno, NETWORK_NOT_OBJECTS, line, ("paths",))
         if head[:1] not in "OS" or not LINE_ID.fullmatch(head):
             raise FoonSyntaxError(path, lineno, "expected an 'O' or 'S' line, '//' or a '#' comment", line)
         if len(fields) < 2 or not fields[1]:

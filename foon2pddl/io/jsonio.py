@@ -95,10 +95,11 @@ def write_json(foon: Foon) -> str:
 class _Invalid(Exception):
     """A problem at a place in the JSON tree (a path of keys and indexes)."""
 
-    def __init__(self, where: tuple[str | int, ...], message: str) -> None:
+    def __init__(self, where: tuple[str | int, ...], message: str, belongs: tuple[str, ...] = ()) -> None:
         super().__init__(message)
         self.where = where
         self.message = message
+        self.belongs = belongs  # a file of another kind: the inputs that take it (`errors.INPUTS`)
 
 
 def _pointer(where: tuple[str | int, ...]) -> str:
@@ -243,13 +244,12 @@ def _unit(data: Any, where: tuple, level: int) -> FunctionalUnit:
 def _foon(data: Any) -> Foon:
     if isinstance(data, list):
         raise _Invalid((), "expected a FOON JSON document (a JSON object), found a list: a JSON list of objects "
-                           "is a kitchen or a goal list (docs/format.md), not a network: give it as the kitchen or the goal list")
+                           "is a kitchen or a goal list (docs/format.md), not a network", ("kitchen", "goals"))
     if isinstance(data, dict) and "objects" in data and "format" not in data:
-        raise _Invalid((), "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a network: "
-                           "give it as the kitchen")
+        raise _Invalid((), "a JSON document with \"objects\" is a scene kitchen (docs/scene.md), not a network",
+                       ("kitchen",))
     if is_constraints(data):
-        raise _Invalid((), "this is a constraints file (docs/constraints.md), not a network: give it as the "
-                           "constraints file")
+        raise _Invalid((), "this is a constraints file (docs/constraints.md), not a network", ("constraints",))
     d = _fields(data, (), "FOON JSON document", ("format", "version", "units"), ("level",))
     if d["format"] != FORMAT:
         raise _Invalid(("format",), f"not a foon2pddl FOON (expected \"format\": \"{FORMAT}\", found {d['format']!r})")
@@ -270,7 +270,7 @@ def foon_from_dict(data: Any, path: str = "<json>") -> Foon:
     try:
         return _foon(data)
     except _Invalid as exc:
-        raise FoonSyntaxError(path, 0, f"{_pointer(exc.where)}: {exc.message}") from None
+        raise FoonSyntaxError(path, 0, f"{_pointer(exc.where)}: {exc.message}", belongs=exc.belongs) from None
 
 
 def parse_json(text: str, path: str = "<json>") -> Foon:
@@ -280,7 +280,7 @@ def parse_json(text: str, path: str = "<json>") -> Foon:
         return _foon(data)
     except _Invalid as exc:
         line = line_of(text, exc.where)
-        raise FoonSyntaxError(path, line, f"{_pointer(exc.where)}: {exc.message}") from None
+        raise FoonSyntaxError(path, line, f"{_pointer(exc.where)}: {exc.message}", belongs=exc.belongs) from None
 
 
 def read_json(path: str | Path) -> Foon:

@@ -8,7 +8,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
-from .foon_lines import LINE_ID, parse_objects
+from .foon_lines import LINE_ID, NETWORK_NOT_OBJECTS, parse_objects
 from .json_text import line_of, load_json, text_problem
 from .parser import read_text
 from .rates import looks_like_rates
@@ -18,28 +18,29 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
     """One `{"label", "states", "ingredients", "container"}` item of the JSON convention.
 
     `states` are state labels; `container` becomes the state `in [container]`;
-    `ingredients` become the state `contains {...}`. Errors name line 0 (`read_json_nodes` locates them).
+    `ingredients` become the state `contains {...}`. `index` counts from 0; errors name the item counted from 1
+    (`item 1` is the first, as a user counts) and line 0 (`read_json_nodes` locates them).
     """
     if not isinstance(item, dict) or not isinstance(item.get("label"), str) or not item["label"].strip():
-        raise FoonSyntaxError(path, 0, f"item {index}: expected an object with a non-empty string 'label'")
+        raise FoonSyntaxError(path, 0, f"item {index + 1}: expected an object with a non-empty string 'label'")
     states_raw = item.get("states") or []
     ingredients = item.get("ingredients") or []
     container = item.get("container")
     label = item["label"]
     problem = text_problem(label, "label")
     if problem:
-        raise FoonSyntaxError(path, 0, f"item {index}: {problem}")
+        raise FoonSyntaxError(path, 0, f"item {index + 1}: {problem}")
     if not isinstance(states_raw, list) or not all(isinstance(s, str) for s in states_raw):
-        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'states' must be a list of strings")
+        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): 'states' must be a list of strings")
     if not isinstance(ingredients, list) or not all(isinstance(s, str) for s in ingredients):
-        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'ingredients' must be a list of strings")
+        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): 'ingredients' must be a list of strings")
     if container is not None and not isinstance(container, str):
-        raise FoonSyntaxError(path, 0, f"item {index} ({label}): 'container' must be a string or null")
+        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): 'container' must be a string or null")
     for what, text in [("state", s) for s in states_raw] + [("ingredient", s) for s in ingredients] + \
             [("container", container or "")]:
         problem = text_problem(text, what)
         if problem:
-            raise FoonSyntaxError(path, 0, f"item {index} ({label}): {problem}")
+            raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): {problem}")
     states: list[State] = [make_state(s) for s in states_raw if s.strip()]
     if container and container.strip():
         states.append(make_state("in", container))
@@ -57,27 +58,27 @@ def read_json_nodes(path: Path) -> list[ObjectNode]:
 def json_nodes(data: object, text: str, path: Path) -> list[ObjectNode]:
     """Nodes of decoded JSON in the public search projects' convention (`text` locates problems)."""
     if not isinstance(data, list):
-        raise FoonSyntaxError(str(path), 1, _not_a_kitchen(data))
+        what, belongs = _not_a_kitchen(data)
+        raise FoonSyntaxError(str(path), 1, what, belongs=belongs)
     nodes = []
     for i, item in enumerate(data):
         try:
             nodes.append(json_node(item, str(path), i))
         except FoonSyntaxError as exc:  # locate the item (a re-parse, only on error)
-            raise FoonSyntaxError(exc.path, line_of(text, (i,)), exc.message) from None
+            raise FoonSyntaxError(exc.path, line_of(text, (i,)), exc.what, belongs=exc.belongs) from None
     return nodes
 
 
-def _not_a_kitchen(data: object) -> str:
-    """What a JSON document that is no list of objects (and no scene) is, and which option takes it."""
+def _not_a_kitchen(data: object) -> tuple[str, tuple[str, ...]]:
+    """What a JSON document that is no list of objects (and no scene) is, and the inputs that take it."""
     from .constraints_file import is_constraints
     from .jsonio import FORMAT
 
     if isinstance(data, dict) and data.get("format") == FORMAT:
-        return "this is a FOON network (JSON, docs/json-schema.md), not a kitchen: give it as a PATHS argument"
+        return "this is a FOON network (JSON, docs/json-schema.md), not a kitchen", ("paths",)
     if is_constraints(data):
-        return ("this is a constraints file (docs/constraints.md), not a kitchen: give it to the constraints option "
-                "of compile, plan or retrieve")
-    return 'expected a JSON list of objects, or a scene: {"objects": [...]} (docs/scene.md)'
+        return "this is a constraints file (docs/constraints.md), not a kitchen", ("constraints",)
+    return 'expected a JSON list of objects, or a scene: {"objects": [...]} (docs/scene.md)', ()
 
 
 #: `2 x bowl: empty`: a node-per-line kitchen entry with an instance count.
@@ -100,7 +101,8 @@ def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]
             continue
         foon = _foon_line(line)
         if foon:
-            raise FoonSyntaxError(path, lineno, _mixed(foon, first), line)
+            message = _mixed(foon, first)
+            raise FoonSyntaxError(path, lineno, message, line, ("paths",) if message == NETWORK_NOT_OBJECTS else ())
         first = first or lineno
         counted = _COUNT.match(line)
         count = int(counted.group(1)) if counted else None
@@ -129,8 +131,7 @@ def _foon_line(line: str) -> str:
 def _mixed(kind: str, first: int) -> str:
     """The error for a FOON line in a kitchen of one node per line."""
     if kind == "M" and not first:
-        return "a motion line ('M'): this file is a FOON network of functional units, not a list of objects; " \
-               "give it as a PATHS argument"
+        return NETWORK_NOT_OBJECTS
     after = f", but line {first} lists a node in the goal syntax" if first else ""
     return (f"a FOON `{kind}` line{after}: a kitchen file is in one form throughout, FOON-style O/S lines "
             "(its first line that is not a comment starts with `//`, or with `O`/`S` and a tab) or one node per "
@@ -162,7 +163,7 @@ def read_kitchen(path: str | Path) -> Kitchen:
         text = read_text(p)
         if looks_like_rates(text):
             raise FoonSyntaxError(str(p), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
-                                             "not a kitchen: a kitchen lists object nodes (docs/format.md)")
+                                             "not a kitchen", belongs=("rates",))
         if looks_like_foon(text):
             nodes = [n for n, _ in parse_objects(text, str(p))]
         else:

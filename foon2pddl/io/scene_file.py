@@ -46,7 +46,7 @@ def _string(item: dict, key: str, where: str, *, required: bool = True) -> str |
 
 
 def _object(item: Any, k: int) -> SceneObject:
-    """Object `k` of the list (its holder checked later); raises ValueError."""
+    """Object `k` of the list, counted from 1 as a user counts (its holder checked later); raises ValueError."""
     from .goal_files import parse_state_text
 
     if not isinstance(item, dict):
@@ -93,7 +93,7 @@ def scene_of(data: dict, text: str, path: str) -> Kitchen:
     first: dict[str, int] = {}
     for k, item in enumerate(items):
         try:
-            obj = _object(item, k)
+            obj = _object(item, k + 1)
         except ValueError as exc:
             raise FoonSyntaxError(path, line_of(text, ("objects", k)), str(exc)) from None
         line = line_of(text, ("objects", k))

@@ -1,0 +1,78 @@
+"""Stop 48's newcomer pass (issue 24, items 11 and the JSON inputs): a file given to the wrong option is told
+which option takes it, by the option's name, and the items of a JSON list are counted as a user counts them."""
+
+from __future__ import annotations
+
+import pytest
+from click.testing import CliRunner
+from conftest import ROOT, SEARCH_INPUTS
+
+from foon2pddl.cli import main
+from foon2pddl.errors import FoonSyntaxError
+from foon2pddl.io.jsonio import read_json
+
+SCENE = ROOT / "tests" / "data" / "scene" / "whipped_cream_scene.json"
+DIET = ROOT / "docs" / "examples" / "diet-no-egg.json"
+RATES = SEARCH_INPUTS / "motion.txt"
+
+
+def run(*args):
+    return CliRunner().invoke(main, [str(a) for a in args])
+
+
+@pytest.mark.parametrize(("text", "says"), [
+    ('[{"label": "bowl"},\n {"label": "cup", "states": "empty"}]', ":2: error: item 2 (cup): 'states' must be"),
+    ('[{"states": []}]', ":1: error: item 1: expected an object with a non-empty string 'label'"),
+])
+@pytest.mark.parametrize("option", ["--kitchen", "--goals"])
+def test_json_list_items_are_counted_from_one(tmp_path, text, says, option):
+    """A kitchen (or goal list) whose second item is bad said `item 1 (cup)`: counted from 0, where docs/format.md
+    shows `item 3 (cup)` and a user counts from 1."""
+    document = tmp_path / "k.json"
+    document.write_text(text)
+    r = run("retrieve", option, document, *(["--goal", "guacamole"] if option == "--kitchen" else []))
+    assert r.exit_code == 2 and f"{document}{says}" in r.stderr
+
+
+def test_scene_objects_are_counted_from_one(tmp_path):
+    """The scene reader said `object 1: 'id' must be ...` of the scene's second object."""
+    scene = tmp_path / "s.json"
+    scene.write_text('{"objects": [\n {"id": "bowl_1", "label": "bowl"},\n {"label": "cup"}\n]}\n')
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", scene)
+    assert r.exit_code == 2 and f"{scene}:3: error: object 2: 'id' must be a non-empty string" in r.stderr
+
+
+@pytest.mark.parametrize(("args", "says"), [
+    (["stats", SEARCH_INPUTS / "kitchen.json"], "not a network: give it with `--kitchen` or with `--goals`"),
+    (["stats", SCENE], "not a network: give it with `--kitchen`"),
+    (["retrieve", DIET, "--goal", "guacamole"], "not a network: give it with `--constraints`"),
+    (["stats", RATES], "this is a motion success-rates file (`motion<TAB>rate` lines), not a network: give it "
+                       "with `--rates`"),
+    (["retrieve", "--goal", "guacamole", "--kitchen", DIET], "not a kitchen: give it with `--constraints`"),
+    (["retrieve", "--goal", "guacamole", "--kitchen", RATES], "not a kitchen: give it with `--rates`"),
+    (["retrieve", "--goal", "guacamole", "--constraints", SEARCH_INPUTS / "kitchen.json"],
+     "not a constraints file: give it with `--kitchen` or with `--goals`"),
+])
+def test_a_file_of_another_kind_names_the_option_that_takes_it(args, says):
+    """`stats kitchen.json` said `give it as the kitchen or the goal list`, a scene `give it as the kitchen`, a
+    rates file given as PATHS only `expected an 'O', 'S' or 'M' line`: none named the option to use."""
+    r = run(*args)
+    assert r.exit_code == 2 and says in r.stderr, r.stderr
+    assert "Traceback" not in r.output
+
+
+def test_the_library_says_where_a_file_goes_in_words():
+    """Python callers have no options: the same error names the input in words."""
+    with pytest.raises(FoonSyntaxError) as info:
+        read_json(SEARCH_INPUTS / "kitchen.json")
+    assert info.value.belongs == ("kitchen", "goals")
+    assert str(info.value).endswith("not a network: give it as the kitchen or as the goal list")
+
+
+def test_a_directory_of_no_foon_file_says_what_was_skipped():
+    """`stats tests/data/foon-search-inputs` said only `no FOON file to read: every file was skipped`, where
+    docs/format.md says each skipped file gets a warning: the error names them and why."""
+    r = run("stats", SEARCH_INPUTS)
+    assert r.exit_code == 2
+    assert "every file was skipped: motion.txt (a motion success-rates file" in r.stderr
+    assert "utensils.txt (no FOON text" in r.stderr
