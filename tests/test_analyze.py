@@ -57,3 +57,49 @@ def test_cli_json_graphml_and_png(tmp_path):
     assert (tmp_path / "c.png").read_bytes().startswith(b"\x89PNG")
     text = CliRunner().invoke(main, ["analyze", "--top", "3"])
     assert text.exit_code == 0 and "top 3 objects by degree centrality:" in text.stdout
+
+
+def _graphs():
+    """Random graphs with an isolated node, two components, a path and a star, and the degenerate sizes."""
+    for seed in range(4):
+        g = nx.gnm_random_graph(40, 70 + 20 * seed, seed=seed)
+        g.add_node("alone")
+        yield g
+    yield nx.disjoint_union(nx.path_graph(7), nx.star_graph(5))
+    yield from (nx.empty_graph(0), nx.empty_graph(1), nx.path_graph(2), nx.path_graph(3))
+
+
+def test_batched_betweenness_is_networkx_betweenness(monkeypatch):
+    """`analyze --level 3` of the shared subgraphs ran networkx's per-source betweenness for minutes in silence;
+    the batched Brandes that replaces it gives networkx's values, exact and sampled (same seeded sample)."""
+    from foon2pddl.analysis import betweenness
+
+    monkeypatch.setattr(betweenness, "BATCH", 3)  # batches that split the sources unevenly
+    for g in _graphs():
+        want = nx.betweenness_centrality(g, normalized=True)
+        got = betweenness.betweenness(g)
+        assert got.keys() == want.keys() and all(abs(got[v] - want[v]) < 1e-9 for v in g), g
+        if len(g) > 3:
+            k = len(g) // 3
+            want = nx.betweenness_centrality(g, k=k, normalized=True, seed=0)
+            got = betweenness.betweenness(g, k=k, seed=0)
+            assert all(abs(got[v] - want[v]) < 1e-9 for v in g), g
+
+
+def test_analyze_says_how_far_betweenness_is(monkeypatch, example):
+    """Each share of the source nodes is a step: a long betweenness says how far it is on stderr, a line at a
+    time, rather than one line for minutes; the figures on stdout do not change."""
+    from foon2pddl.analysis import betweenness
+    from foon2pddl.cli import progress
+
+    quiet = CliRunner().invoke(main, ["analyze", "--level", "3"])
+    monkeypatch.setattr(progress, "AFTER", 0.0)  # every step counts as slow: each says what it is
+    monkeypatch.setattr(betweenness, "STEP_WORK", 1)  # one batch of sources a step
+    monkeypatch.setattr(betweenness, "BATCH", 64)
+    r = CliRunner().invoke(main, ["analyze", "--level", "3"])
+    assert r.exit_code == 0 and r.stdout == quiet.stdout
+    n = analyze(example.foon, 3).object_count
+    lines = [line for line in r.stderr.splitlines() if line.startswith("betweenness of ")]
+    assert lines[0] == f"betweenness of {n:,} objects: source nodes 1-64 of {n:,} ..."
+    assert lines[-2].endswith(f"-{n:,} of {n:,} ...") and lines[-1].startswith("betweenness of ")
+    assert len([line for line in lines if " objects: " in line]) == -(-n // 64)

@@ -107,3 +107,14 @@ def test_planning_usage_line_lists_every_encoding():
     usage = next(line for line in (ROOT / "docs" / "planning.md").read_text().splitlines()
                  if line.startswith("foon2pddl plan --goal G"))
     assert f"--encoding {'|'.join(ENCODINGS)}]" in usage
+
+
+def test_make_pddl_says_on_stderr_what_it_compiles(tmp_path, capsys):
+    """`make pddl` ran 10.8 s (load 10) with nothing on stderr: it says which goal it compiles, one line each
+    (stdout keeps its one summary line)."""
+    main([str(tmp_path)])
+    out = capsys.readouterr()
+    assert out.err.splitlines() == [f"compiling '{goal}' ({i} of {len(GOALS)}) in {len(GROUND_ENCODINGS)} encodings ..."
+                                    for i, goal in enumerate(GOALS, 1)]
+    assert out.out.splitlines() == [f"wrote {2 * len(PAIRS)} files under {tmp_path / 'domains'} and "
+                                    f"{tmp_path / 'problems'}"]

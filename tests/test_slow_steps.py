@@ -131,7 +131,7 @@ def test_analyze_says_it_draws_the_plot(every_step_speaks, tmp_path):
     r = run("analyze", "--plot", tmp_path / "central.png")
     assert r.exit_code == 0, r.stderr
     assert f"drawing {tmp_path / 'central.png'} ..." in r.stderr.splitlines()
-    assert any(line.startswith("analysing 101 units") for line in r.stderr.splitlines())
+    assert any(line.startswith("projecting 101 units") for line in r.stderr.splitlines())
 
 
 def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_path):

@@ -2,5 +2,5 @@
 reachability, statistics."""
 
 #: The package's modules (import them by name).
-__all__ = ["additions", "blocking", "check", "check_labels", "check_units", "constraints", "defects", "fixpoint",
+__all__ = ["additions", "betweenness", "blocking", "check", "check_labels", "check_units", "constraints", "defects", "fixpoint",
            "index", "network", "network_report", "reachability", "stats"]

@@ -32,8 +32,7 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     from ..io.atomic import atomic_write
 
     net = read_network(paths)
-    with slow_step(f"analysing {len(net.foon.units):,} units (projections, centrality, components)"):
-        result = analyze(net.foon, int(level))
+    result = analyze(net.foon, int(level), step=slow_step)  # says what it does, and how far betweenness is
     try:
         if graphml is not None:
             for p in write_graphml(graphml, graphml_graphs(net.foon, result)):

@@ -27,12 +27,12 @@ import tempfile
 import time
 from collections import Counter
 from collections.abc import Callable, Sequence
-from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
+from ..io.steps import Step, silent_step
 from . import collector
 from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
 from .networks import NETWORKS, NetworkView
@@ -43,14 +43,6 @@ from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
 from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
 from .worker import Batch, Job, draw_at, fingerprint, has_view, input_files, view
-
-#: A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`).
-Step = Callable[[str], AbstractContextManager[None]]
-
-
-def silent_step(what: str) -> AbstractContextManager[None]:
-    """No message (`--no-progress`, the Python API)."""
-    return nullcontext()
 
 __all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]
 

@@ -11,10 +11,12 @@ under those directories that are no longer generated are removed.
 from __future__ import annotations
 
 import sys
+from contextlib import AbstractContextManager, nullcontext
 from pathlib import Path
 
 from ..io.atomic import atomic_write_many
 from ..io.inputs import load_goal, load_kitchen, load_network
+from ..io.steps import Step, silent_step
 from .compile import GROUND_ENCODINGS, compile_task
 from .names import sanitize
 from .render import render
@@ -34,19 +36,20 @@ GOALS = (
 LEVEL = 3
 
 
-def generate() -> dict[Path, str]:
-    """Relative path -> text of every generated file."""
+def generate(step: Step = silent_step) -> dict[Path, str]:
+    """Relative path -> text of every generated file (each goal's encodings in one `step`)."""
     net = load_network([])
     foon = net.at(LEVEL)
     kitchen = load_kitchen(None, net, LEVEL)
     files: dict[Path, str] = {}
-    for goal_text in GOALS:
+    for i, goal_text in enumerate(GOALS, 1):
         goal = load_goal(goal_text, None, foon)
         stem = sanitize(goal_text)
-        for encoding in GROUND_ENCODINGS:
-            domain, problem = render(compile_task(foon, kitchen, goal, encoding, LEVEL))
-            files[Path("domains") / encoding / f"{stem}.pddl"] = domain
-            files[Path("problems") / encoding / f"{stem}.pddl"] = problem
+        with step(f"compiling '{goal_text}' ({i} of {len(GOALS)}) in {len(GROUND_ENCODINGS)} encodings"):
+            for encoding in GROUND_ENCODINGS:
+                domain, problem = render(compile_task(foon, kitchen, goal, encoding, LEVEL))
+                files[Path("domains") / encoding / f"{stem}.pddl"] = domain
+                files[Path("problems") / encoding / f"{stem}.pddl"] = problem
     return files
 
 
@@ -56,10 +59,17 @@ def stale_files(root: Path, files: dict[Path, str]) -> list[Path]:
     return [p for p in found if p not in files]
 
 
+def _said(what: str) -> AbstractContextManager[None]:
+    """A step that says what it does on stderr at once (each goal takes ~1 s; all of them ~10 s at load 10)."""
+    print(f"{what} ...", file=sys.stderr, flush=True)
+    return nullcontext()
+
+
 def main(argv: list[str] | None = None) -> None:
+    """Write every file under ROOT (default `.`), remove stale ones; say on stderr which goal it compiles."""
     args = sys.argv[1:] if argv is None else argv
     root = Path(args[0]) if args else Path(".")
-    files = generate()
+    files = generate(_said)
     atomic_write_many({root / p: text for p, text in files.items()})
     for p in stale_files(root, files):
         (root / p).unlink()

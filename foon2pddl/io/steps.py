@@ -1,0 +1,18 @@
+"""Slow steps told from below: a layer that runs something long takes a `Step` and wraps each long part in it.
+
+The command passes `cli.progress.slow_step`, which says on stderr what a step does when it runs long;
+the Python API and `--no-progress` pass `silent_step`. Lower layers never print themselves.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from contextlib import AbstractContextManager, nullcontext
+
+#: A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`).
+Step = Callable[[str], AbstractContextManager[None]]
+
+
+def silent_step(what: str) -> AbstractContextManager[None]:
+    """No message (`--no-progress`, the Python API)."""
+    return nullcontext()
