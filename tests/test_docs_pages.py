@@ -130,3 +130,30 @@ def test_format_md_counts_the_search_kitchens_one_sided_containers():
     placed = [item for item in items if item.get("container")]
     unmatched = [item for item in placed if (item["container"], item["label"]) not in listed]
     assert (int(m.group(1).replace(",", "")), int(m.group(2).replace(",", ""))) == (len(unmatched), len(placed))
+
+
+def _registry_entries():
+    from foon2pddl.generalize.network import NetworkKind
+    from foon2pddl.pddl.registry import Encoding
+    from foon2pddl.planners.registry import Planner
+    from foon2pddl.retrieval.methods import Method
+
+    return [(Planner, "A planner"), (NetworkKind, "A network kind"), (Encoding, "An encoding"),
+            (Method, "A retrieval method")]
+
+
+@pytest.mark.parametrize(("entry", "section"), _registry_entries(), ids=lambda x: getattr(x, "__name__", x))
+def test_extending_md_names_every_field_of_each_registry_entry(entry, section):
+    """extending.md's table gave `Encoding(name, encode, description, ..., replay, view, holders)` and its section
+    named neither `complete` nor `kitchen_init`, fields the dataclass has: the table row lists every field in
+    order, and the entry's section says what each one (but its name and description) is for."""
+    import dataclasses
+
+    page = (ROOT / "docs" / "extending.md").read_text()
+    fields = [f.name for f in dataclasses.fields(entry)]
+    row = next(line for line in page.splitlines() if line.startswith("| ") and f"`{entry.__name__}(" in line)
+    listed = re.search(rf"`{entry.__name__}\((.*?)\)`", row).group(1)
+    assert [f.strip() for f in listed.split(",")] == fields
+    body = page.split(f"## {section}\n", 1)[1].split("\n## ", 1)[0]
+    said = set(re.findall(r"`(\w+)", body))
+    assert [f for f in fields if f not in said and f not in ("name", "description")] == []
