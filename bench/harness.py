@@ -45,7 +45,12 @@ def run_main(main: Callable[[], int | None]) -> NoReturn:
 
 def what_it_measures(module) -> str:
     """A bench module's first docstring paragraph on one line: what it measures, said before it measures."""
-    return " ".join((module.__doc__ or "").strip().split("\n\n", 1)[0].split())
+    return first_paragraph(module.__doc__)
+
+
+def first_paragraph(doc: str | None) -> str:
+    """A docstring's first paragraph on one line."""
+    return " ".join((doc or "").strip().split("\n\n", 1)[0].split())
 
 
 def _say_what_runs() -> None:

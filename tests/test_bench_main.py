@@ -84,3 +84,18 @@ def test_ctrl_c_stops_a_bench_with_one_line_and_status_130_as_the_cli_does(args,
     done = _interrupt_once_running(args, tmp_path)
     assert "Traceback" not in done.stderr, done.stderr[-3000:]
     assert (done.returncode, done.stderr.strip().splitlines()[-1]) == (130, "interrupted"), done.stderr[-3000:]
+
+
+def test_help_lists_each_area_with_what_it_measures_and_where_the_data_is(capsys, monkeypatch):
+    """`python -m bench --help` (README: `make bench`; docs: "area `similarity`") listed the area names only, and
+    `--shared` as "shared data directory", absent in a clone. It says what each area measures (its module's first
+    line, read without importing it: help stays fast) and where the default data is."""
+    monkeypatch.setattr(sys, "argv", ["bench", "--help"])
+    monkeypatch.setenv("COLUMNS", "200")
+    with pytest.raises(SystemExit):
+        bench_main.main()
+    text = " ".join(capsys.readouterr().out.split())
+    for area in bench_main.AREAS:
+        module = __import__(f"bench.{area}", fromlist=["run"])
+        assert f"{area}: {bench_main.what_it_measures(module)}" in text, area
+    assert "default ../shared/data (beside the checkout; a clone has a copy: --shared tests/data)" in text
