@@ -1,14 +1,18 @@
-"""When a WordNet noun names a class rather than a thing a recipe uses (the cook similarity's rules 8 and 9).
+"""When a WordNet noun names a class rather than a thing a recipe uses (the cook similarity's rules 3, 8 and 9).
 
 Rule 8 counts a synset's kinds (`kinds`); rule 9 reads how its kinds are named (`named_kinds`): a bottle's
 kinds are mostly called bottles (beer bottle, water bottle, wine bottle), a kitchen appliance's go by names of
 their own (oven, toaster, food processor), as a drinking vessel's (mug, tankard) and flatware's (plate,
 saucer) do. A tool whose kinds are named after it is a thing, and does its kinds' job; a tool whose kinds are
-not is a class of tools with different jobs (`tool_class`). Cost: one hyponym closure per synset, cached.
+not is a class of tools with different jobs (`tool_class`). Counting also the kinds whose gloss's genus is the
+noun (penne: "pasta in short tubes"), a food noun most of whose kinds are named or defined after it is a staple,
+which rule 3's breadth limit does not reject with its kinds (`staple`: bread, pasta; not herb or sweetener).
+Cost: one hyponym closure per synset, cached.
 """
 
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 
 from .similarity import Evidence
@@ -16,6 +20,12 @@ from .similarity import Evidence
 #: Rule 9: an artifact sense with at least this many WordNet kinds, fewer than `NAMED_SHARE` of them named after
 #: it, is a class of tools (kitchen appliance: 25 kinds, none named "... appliance"; bottle: 34, 35 % named so).
 TOOL_CLASS_KINDS, NAMED_SHARE = 5, 0.1
+
+#: Rule 3's exemption: a sense with at least `TOOL_CLASS_KINDS` kinds, at least `STAPLE_SHARE` of them named after
+#: it or defined as it by their gloss's first `GENUS_WORDS` words, is a staple (bread 35 %, pasta 50 %).
+STAPLE_SHARE, GENUS_WORDS = 0.3, 2
+
+_WORD = re.compile(r"[a-z]+")
 
 
 @lru_cache(maxsize=4096)
@@ -25,17 +35,29 @@ def kinds(reader, name: str) -> int:
 
 
 @lru_cache(maxsize=4096)
-def named_kinds(reader, name: str) -> float:
+def named_kinds(reader, name: str, gloss_words: int = 0) -> float:
     """Share of synset `name`'s WordNet kinds (hyponyms, transitively) with a lemma named after it: the lemma's
     last word ends with the last word of one of `name`'s lemmas (beer bottle under bottle; teaspoon under
-    spoon). 1.0 without kinds."""
+    spoon), or, with `gloss_words`, whose gloss names it among its first `gloss_words` words (penne: "pasta in
+    short tubes"). 1.0 without kinds."""
     s = reader.synset(name)
     heads = {x.name().lower().split("_")[-1] for x in s.lemmas()}
     found = list(s.closure(lambda y: y.hyponyms()))
     if not found:
         return 1.0
-    return sum(any(x.name().lower().split("_")[-1].endswith(h) for h in heads for x in k.lemmas())
-               for k in found) / len(found)
+
+    def named(k) -> bool:
+        if any(x.name().lower().split("_")[-1].endswith(h) for h in heads for x in k.lemmas()):
+            return True
+        return any(w in heads or w.removesuffix("s") in heads for w in _WORD.findall(k.definition().lower())[:gloss_words])
+    return sum(map(named, found)) / len(found)
+
+
+def staple(reader, name: str) -> bool:
+    """Whether synset `name` is a staple, not a class (rule 3's exemption): at least `TOOL_CLASS_KINDS` kinds,
+    at least `STAPLE_SHARE` of them named after it or whose gloss's genus, among its first `GENUS_WORDS` words,
+    is it (`named_kinds`: penne is "pasta in short tubes"; herb 10 %, sweetening 0 %)."""
+    return kinds(reader, name) >= TOOL_CLASS_KINDS and named_kinds(reader, name, GENUS_WORDS) >= STAPLE_SHARE
 
 
 def tool_class(reader, found: Evidence) -> bool:

@@ -18,7 +18,9 @@ head nouns and modifiers, `similarity.py`) and changes nine things:
    labels of the 100 public FOON subgraphs and the example network) plus the pair's own
    two labels, so a pair's value depends neither on how small a network is nor on how
    many kinds of one thing it happens to hold (a matrix of fourteen bottles does not make
-   `bottle.n.01` broad).
+   `bottle.n.01` broad). A staple (`staple`: bread, pasta, whose WordNet kinds are mostly
+   named or defined after them, `classes.staple`) is never broad with its kinds, unless it is
+   a dish (`DISH`: its kinds are variants) or a compound known by its head.
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
@@ -77,7 +79,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .classes import kinds, tool_class
+from .classes import kinds, staple, tool_class
 from .extend import Assignment, file_labels
 from .senses import Overrides, Resolution, adjective, parse_overrides, resolve, role_senses
 from .similarity import Evidence
@@ -88,8 +90,11 @@ DEFAULT_BREADTH = 0.02
 #: WordNet kinds from which a label rule 6 holds to its kinds is a class, not a thing a recipe uses (rule 8).
 CLASS_KINDS = 30
 
+#: Dishes: their kinds are variants of them (rule 4), so no dish is a staple (rule 3's exemption).
+DISH = "dish.n.02"
+
 #: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
-PREPARED: frozenset[str] = frozenset({"dish.n.02", "baked_goods.n.01", "beverage.n.01"})
+PREPARED: frozenset[str] = frozenset({DISH, "baked_goods.n.01", "beverage.n.01"})
 
 #: Prepared foods that recipes use as ingredients (rule 4): stock and broth (under soup in WordNet).
 INGREDIENTS: frozenset[str] = frozenset({"broth.n.01"})
@@ -130,7 +135,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes")
+         " vessels hold liquids, breadth per pair, tool classes, staples")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -316,6 +321,14 @@ class CookSimilarity:
             return False
         return for_another_food(self.reader, kind[1], generic[1], kind[0], generic[0])
 
+    def staple(self, sense: str, other: str, lcs: str, label: str) -> bool:
+        """Rule 3's exemption: whether the kind pair `sense`~`other` (`lcs` one of them) has a generic that is a
+        staple, not a class: `label` (the generic's) a whole WordNet term, its sense no dish (`DISH`: a dish's
+        kinds are variants of it, rule 4) and `classes.staple` (bread, pasta)."""
+        if lcs not in (sense, other) or self.resolution(label).modifier is not None:
+            return False
+        return DISH not in self._wup.ancestors(lcs) and staple(self.reader, lcs)
+
     def _modifiers(self, a: str, b: str) -> Evidence:
         """The similarity of two modifiers (rules 1-4: a modifier is no object label, so no categories)."""
         a, b = sorted((a, b))
@@ -363,7 +376,7 @@ class CookSimilarity:
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
                 share = self.coverage(lcs, labels)
-                if s != t and share > self.breadth:
+                if s != t and share > self.breadth and not self.staple(s, t, lcs, labels[0] if lcs == s else labels[1]):
                     if broad is None or value > broad.similarity:
                         broad = Evidence(value, lcs, s, t, share, "broad")
                 elif value > best.similarity:
