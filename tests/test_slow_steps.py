@@ -127,6 +127,15 @@ def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     assert any(line.startswith(said) for line in r.stderr.splitlines()), r.stderr
 
 
+def test_check_says_when_it_opens_wordnet_and_how_to_skip_it(every_step_speaks):
+    """`check tests/data/foon-subgraphs` said `checking ... for defects ...` and then nothing for 11.6 s (load 10),
+    most of it opening WordNet for the spelling variants: the step says so, and names `--no-wordnet`."""
+    said = run("check", SUBGRAPHS).stderr.splitlines()
+    opening = "opening WordNet (to tell spelling variants from different words; --no-wordnet: string rules only) ..."
+    assert said[:3] == [f"reading {SUBGRAPHS} ...", opening, f"checking {SUBGRAPHS} for defects ..."], said[:3]
+    assert opening not in run("check", SUBGRAPHS, "--no-wordnet").stderr.splitlines()
+
+
 def test_analyze_says_it_draws_the_plot(every_step_speaks, tmp_path):
     r = run("analyze", "--plot", tmp_path / "central.png")
     assert r.exit_code == 0, r.stderr
