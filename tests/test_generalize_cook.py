@@ -133,6 +133,20 @@ def test_a_staple_stands_with_its_kinds_however_broad(cook):
         assert ev.similarity == 0.0 and ev.rejected == "broad", (a, b, ev)
 
 
+def test_an_ingredient_and_a_substance_are_not_substitutes(cook):
+    """Rule 1: a label with a food sense is an ingredient; one with none but a substance sense is no ingredient,
+    and the two do not stand for each other: drying oil (linseed, tung: "oxidize on exposure to air", a paint
+    oil) is no cooking oil, though WordNet files it under vegetable oil."""
+    for other in ("olive oil", "vegetable oil", "canola oil"):
+        ev = cook.explain("drying oil", other)
+        assert ev.similarity == 0.0 and ev.rejected == "role", (other, ev)
+        lexnames = {cook.reader.synset(x).lexname() for x in (ev.sense_a, ev.sense_b)}
+        assert lexnames == {"noun.food", "noun.substance"}
+    assert cook("olive oil", "vegetable oil") >= 0.89
+    r = CliRunner().invoke(main, ["similarity", "--senses", "drying oil", "olive oil"])
+    assert "rejected: an ingredient and no ingredient" in r.stdout, r.stdout
+
+
 def test_breadth_threshold_is_a_parameter(label_similarity):
     loose = CookSimilarity(label_similarity.reader, breadth=1.0)
     assert loose("grater", "masher") == pytest.approx(0.9)

@@ -96,6 +96,7 @@ def _why(a: str, b: str, ev) -> str:
                "sibling": "rejected: a label filed through one member stands only with its kinds",
                "purpose": "rejected: a kind of tool for a food its generic is not for",
                "class": "rejected: a filed label with many WordNet kinds is a class, not a substitute",
-               "tool class": "rejected: a class of tools whose kinds go by names of their own"}.get(
+               "tool class": "rejected: a class of tools whose kinds go by names of their own",
+               "role": "rejected: an ingredient and no ingredient"}.get(
         ev.rejected, f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

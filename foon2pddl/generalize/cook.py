@@ -8,6 +8,8 @@ head nouns and modifiers, `similarity.py`) and changes nine things:
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
    container and keeps its artifact senses under `KITCHEN_ARTIFACTS` (all its
    artifact senses when none is); otherwise substances, then the other kitchen senses.
+   A pair whose senses are a food and no food stands for nothing (`mixed_roles`: drying oil, a substance
+   WordNet files under vegetable oil, is no olive oil).
 2. The deepest common ancestor (`WupTable.deepest`): greatest `max_depth`, not NLTK's
    greatest `min_depth`, so lemon~lime as foods meet at `citrus.n.01` (0.917, NLTK 0.75).
 3. Broad ancestors rejected: a sense pair whose common ancestor covers more than
@@ -81,7 +83,7 @@ from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
 from .classes import kinds, staple, tool_class
 from .extend import Assignment, file_labels
-from .senses import Overrides, Resolution, adjective, parse_overrides, resolve, role_senses
+from .senses import Overrides, Resolution, adjective, mixed_roles, parse_overrides, resolve, role_senses
 from .similarity import Evidence
 
 #: Default share of the breadth vocabulary above which a common ancestor is a category (see docs).
@@ -135,7 +137,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes, staples")
+         " vessels hold liquids, breadth per pair, tool classes, staples, roles")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -278,7 +280,9 @@ class CookSimilarity:
         if found is None:
             found = self._compute(a, b)
             if found.similarity and not found.rejected and self.categories is not None:
-                if self.bare_category(a) or self.bare_category(b):  # rule 8: a class stands with nothing
+                if mixed_roles(self.reader, found.sense_a, found.sense_b):  # rule 1: an ingredient and no ingredient
+                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "role")
+                elif self.bare_category(a) or self.bare_category(b):  # rule 8: a class stands with nothing
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "class")
                 elif not kin(self.categories, a, b, self.categories_of):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")

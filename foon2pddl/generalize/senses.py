@@ -195,6 +195,13 @@ KITCHEN_ARTIFACTS: frozenset[str] = frozenset({
 })
 
 
+def mixed_roles(reader, sense_a: str, sense_b: str) -> bool:
+    """Whether one of two senses is a food (an ingredient's, `role_senses`) and the other is not: the cook
+    similarity's pairs stand within one role (drying oil, a substance, is no olive oil)."""
+    foods = [reader.synset(x).lexname() == "noun.food" for x in (sense_a, sense_b) if x]
+    return len(foods) == 2 and foods[0] != foods[1]
+
+
 def role_senses(reader, term: str) -> dict[str, str]:
     """Senses of `term` for the role it plays: food, else kitchen artifact (under `KITCHEN_ARTIFACTS`, all its
     artifact senses when none is), else substance, else any (the cook similarity's rule 1, `cook.py`)."""
