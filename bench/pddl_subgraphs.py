@@ -133,11 +133,13 @@ def summary(outcomes: list[Outcome]) -> str:
     files = len({o.file for o in outcomes})
     for enc in ENCODINGS:
         mine = [o for o in outcomes if o.encoding == enc]
+        if not mine:
+            continue
         counts = collections.Counter(o.status for o in mine)
         accepted = sum(o.status in ("solved", "unsolvable", "timeout") for o in mine)
         agree = sum((o.status == "solved") == o.native for o in mine if o.native is not None)
         lines.append(f"{enc}: {counts['solved']}/{files} solved, {accepted}/{files} accepted by FD, "
-                     f"agrees with native on {agree}; status {dict(sorted(counts.items()))}; "
+                     f"agrees with native on {agree}; status {', '.join(f'{k} {n}' for k, n in sorted(counts.items()))}; "
                      f"median {sorted(o.seconds for o in mine)[len(mine) // 2]:.2f} s per file (compile + FD)")
         reasons = collections.Counter(
             o.reason + (f" [{o.detail.split(':')[0]}]" if o.native and o.detail else "")

@@ -99,3 +99,29 @@ def test_help_lists_each_area_with_what_it_measures_and_where_the_data_is(capsys
         module = __import__(f"bench.{area}", fromlist=["run"])
         assert f"{area}: {bench_main.what_it_measures(module)}" in text, area
     assert "default ../shared/data (beside the checkout; a clone has a copy: --shared tests/data)" in text
+
+
+def test_pddl_subgraphs_summary_says_statuses_in_words():
+    """`python -m bench.pddl_subgraphs` (pddl.md) printed `status {<PlanStatus.SOLVED: 'solved'>: 89, ...}`: Python
+    reprs where a reader expects the words the table uses."""
+    from bench.pddl_subgraphs import Outcome, summary
+    from foon2pddl.status import PlanStatus
+
+    rows = [Outcome("a.txt", "tree", PlanStatus.SOLVED, "", "", True, 0.1),
+            Outcome("b.txt", "tree", PlanStatus.UNSOLVABLE, "search: unsolvable", "", False, 0.2)]
+    first = summary(rows).splitlines()[0]
+    assert first == ("tree: 1/2 solved, 2/2 accepted by FD, agrees with native on 2; status solved 1, unsolvable 1; "
+                     "median 0.20 s per file (compile + FD)")
+
+
+def test_pddl_md_figures_table_has_a_row_per_encoding_the_bench_runs():
+    """pddl.md's `bench.pddl_subgraphs` table listed four encodings; the bench runs six (`relational`, `ocp`
+    too): a reader running it met rows the docs do not have."""
+    import re
+
+    from bench.pddl_subgraphs import ENCODINGS
+
+    text = (ROOT / "docs" / "pddl.md").read_text()
+    table = text[text.index("| encoding | PDDL accepted by FD |"):]
+    rows = re.findall(r"^\| `([a-z-]+)` \| \d+ \| \d+ \| \d+ \| \d+ \|$", table.split("\n\n", 1)[0], re.M)
+    assert sorted(rows) == sorted(ENCODINGS)
