@@ -202,3 +202,49 @@ def test_the_report_is_drawn_with_the_runs_objects_frozen(tmp_path, monkeypatch)
     assert r.exit_code == 0, r.stderr
     assert seen and seen[0] > 0
     assert gc.get_freeze_count() == 0  # and unfrozen after: a long-lived process keeps collecting them
+
+
+def test_a_step_says_what_it_does_when_it_speaks(monkeypatch, capsys):
+    """A step's message may be a callable, read when the line is printed (here at once: AFTER 0)."""
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    progress.begin()
+    doing = ["first plan"]
+    with progress.slow_step(lambda: doing[0]):
+        pass
+    assert capsys.readouterr().err == "first plan ...\n"
+
+
+def test_skills_say_the_step_they_are_in_after_the_fallback(monkeypatch):
+    """Stop 48's newcomer pass: `plan 0082-... --kitchen base --skills --time-limit 40` printed `note: the relational
+    encoding found no plan ...; planning with the instances encoding`, and only then `planning 'cheese pizza'
+    (relational encoding, then instances if it finds no plan in 10 s) ...`: the step, once the command had been
+    silent long enough, announced what it had set out to do before the note, not what it was doing. The step's
+    message is read when it is printed: before the fallback it is the first plan, after it the fallback."""
+    from contextlib import contextmanager
+    from types import SimpleNamespace
+
+    from foon2pddl.cli import skills_cli
+    from foon2pddl.pddl.constraints import GoalExcluded
+    from foon2pddl.skills import run as skills_run
+
+    said = []
+
+    @contextmanager
+    def step(what):
+        said.append(what())
+        try:
+            yield
+        finally:
+            said.append(what())
+
+    def fake(*args, on_fallback, **kwargs):
+        on_fallback(SimpleNamespace(status="unsolvable", result=SimpleNamespace(message="no reachable state")))
+        raise GoalExcluded("stop here")
+
+    monkeypatch.setattr(skills_cli, "slow_step", step)
+    monkeypatch.setattr(skills_run, "plan_skills", fake)
+    r = run("plan", "--goal", "whipped cream", "--skills")
+    assert "note: the relational encoding found no plan" in r.stderr
+    assert said == ["planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) "
+                    "and each step's robot skills",
+                    "planning 'whipped cream' (instances encoding) and each step's robot skills"]

@@ -21,7 +21,7 @@ from __future__ import annotations
 import sys
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
 import click
@@ -52,10 +52,12 @@ def begin() -> None:
 
 
 @contextmanager
-def slow_step(what: str, after: float | None = None) -> Iterator[None]:
+def slow_step(what: str | Callable[[], str], after: float | None = None) -> Iterator[None]:
     """Say `what ...` on stderr if the wrapped step is still running once the command has been silent
     for `AFTER` seconds, or (when given) after `after` seconds of the step (0: always, at once)
-    (module doc)."""
+    (module doc). `what` may be a callable, read when the line is printed: a step whose plan changes
+    midway (a fallback its own note announced) says what it does then, not what it set out to do."""
+    text = what if callable(what) else lambda: what
     global _quiet_since
     start = time.monotonic()
     if after is None:
@@ -71,12 +73,12 @@ def slow_step(what: str, after: float | None = None) -> Iterator[None]:
         said.set()
         _quiet_since = None
         if not tty:
-            click.echo(f"{what} ...", err=True)
+            click.echo(f"{text()} ...", err=True)
             return
-        click.echo(f"{what} ...", err=True, nl=False)
+        click.echo(f"{text()} ...", err=True, nl=False)
         while not done.wait(1.0):
-            click.echo(f"{_REDRAW}{what} ... {time.monotonic() - start:.0f} s", err=True, nl=False)
-        click.echo(f"{_REDRAW}{what}: {time.monotonic() - start:.1f} s", err=True)
+            click.echo(f"{_REDRAW}{text()} ... {time.monotonic() - start:.0f} s", err=True, nl=False)
+        click.echo(f"{_REDRAW}{text()}: {time.monotonic() - start:.1f} s", err=True)
 
     watcher = threading.Thread(target=watch, name="slow-step", daemon=True)
     watcher.start()

@@ -126,13 +126,16 @@ def plan_with_skills(foon, kitchen, goal, encoding: str | None, cons, *, skill_d
         within = f" in {limit * FIRST_SHARE:g} s" if limit is not None and math.isfinite(limit) else ""
         then = f", then {FALLBACK_ENCODING} if it finds no plan{within}"
 
+    step = [f"planning {goal.describe()!r} ({first} encoding{then}) and each step's robot skills"]
+
     def falling_back(outcome) -> None:
         click.echo(f"note: the {first} encoding found no plan ({outcome.status}: "
                    f"{outcome.result.message}); planning with the {FALLBACK_ENCODING} encoding (holders read from "
                    f"FOON's words, not planned; --encoding {first} gives it the whole time limit)", err=True)
+        step[0] = f"planning {goal.describe()!r} ({FALLBACK_ENCODING} encoding) and each step's robot skills"
 
     try:
-        with slow_step(f"planning {goal.describe()!r} ({first} encoding{then}) and each step's robot skills"):
+        with slow_step(lambda: step[0]):
             done = plan_skills(foon, kitchen, goal, encoding=encoding, domain=domain, table=table, robot=robot,
                                constraints=cons, on_fallback=falling_back, **options)
     except GoalExcluded as exc:
