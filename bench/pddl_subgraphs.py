@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from foon2pddl.analysis.reachability import blockers, reachable
+from foon2pddl.cli.progress import slow_step
 from foon2pddl.errors import FoonError
 from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
@@ -124,7 +125,11 @@ def check_all(subgraphs: Path, level: int = 3, prune: bool = True, time_limit: f
               limit: int | None = None) -> list[Outcome]:
     """`check_file` for every FOON file under `subgraphs` (the first `limit` ones)."""
     files = expand_paths([subgraphs])[:limit]
-    return [o for f in files for o in check_file(f, level, prune, time_limit)]
+    out: list[Outcome] = []
+    for i, f in enumerate(files, 1):  # a step each: a long run says which file it is at
+        with slow_step(f"{f.name} ({i} of {len(files)}): {len(ENCODINGS)} encodings, Fast Downward"):
+            out += check_file(f, level, prune, time_limit)
+    return out
 
 
 def summary(outcomes: list[Outcome]) -> str:

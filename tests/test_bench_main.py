@@ -125,3 +125,15 @@ def test_pddl_md_figures_table_has_a_row_per_encoding_the_bench_runs():
     table = text[text.index("| encoding | PDDL accepted by FD |"):]
     rows = re.findall(r"^\| `([a-z-]+)` \| \d+ \| \d+ \| \d+ \| \d+ \|$", table.split("\n\n", 1)[0], re.M)
     assert sorted(rows) == sorted(ENCODINGS)
+
+
+def test_pddl_subgraphs_says_which_file_it_plans(monkeypatch, capsys):
+    """`python -m bench.pddl_subgraphs --shared tests/data` printed its first line and then nothing for 307 s (load
+    10-18; `-v` prints its rows only at the end too): each file is a step that says which, and how far the run is."""
+    from bench.pddl_subgraphs import ENCODINGS, check_all
+    from foon2pddl.cli import progress
+
+    monkeypatch.setattr(progress, "AFTER", 0.0)  # every step counts as slow: each says what it is
+    outcomes = check_all(ROOT / "tests" / "data" / "foon-subgraphs", limit=1)
+    first = outcomes[0].file
+    assert capsys.readouterr().err.splitlines() == [f"{first} (1 of 1): {len(ENCODINGS)} encodings, Fast Downward ..."]
