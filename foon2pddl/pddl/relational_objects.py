@@ -7,7 +7,9 @@ kitchen holds: the brownie's cut (`ACT-0010-choco_brownie.txt:384`) takes the ki
 [cutting board])` with `cutting board (contains {brownie})`, a node only the whole recipe makes, while the init
 puts the kitchen's brownie on a board of its own, in that node: 92 objects for a plan that is the cut. Counted
 small (`narrow`, what `planners.solve.plan` tries first): from FOON's own plan alone (no stitched plan beside
-it), in the kitchen with the network's nodes the holders the completion adds start in: the cut, 4 objects. Kept
+it), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
+and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
+another cup filled again): the cut, 4 objects. Kept
 when it has fewer objects, with a note that says so (`Compiled.narrowed`). It may have no plan where the wide
 task has one (0050's own plan takes the finished omelette from the kitchen, and the plan needs the bacon the
 stitched one sprinkles): `plan` then plans the wide task. A scene's objects are the scene's: never counted small.
@@ -64,12 +66,13 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo)
     if not narrow or scene:
         return wide
-    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), wide.implied, memo)
+    started = wide.implied | {x.start for x in wide.instances if x.start is not None and x.start not in inp.kitchen}
+    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), started, memo)
     if len(small.instances) >= len(wide.instances):
         return wide
-    more = ", ".join(n.describe() for n in sorted(wide.implied))
+    more = ", ".join(n.describe() for n in sorted(started))
     return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), narrowed=(
-        "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the holders its "
+        "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the objects its "
                                                        "nodes imply start" if more else "")
         + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
 
