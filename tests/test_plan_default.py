@@ -191,3 +191,19 @@ def test_batch_rows_give_the_reasons_a_single_goal_prints():
     assert "FOON's semantics makes the goal from this kitchen" in row["reason"]
     single = run("--goal", "guacamole", "--time-limit", "0.01")
     assert "reason: FOON's semantics makes the goal from this kitchen" in single.stderr
+
+
+def test_the_conditional_effects_reason_says_which_planner_takes_them():
+    """Stop 48's newcomer pass: `plan --goal 'whipped cream' --planner pyperplan --optimal` failed with the reason
+    "(pyperplan, Tamer, Aries and Fast Downward's LM-cut do not; `--optimal` takes A* with h^max there)": read
+    after an `--optimal` run with pyperplan, as if `--optimal` were the way out. The reason says that Fast
+    Downward (the default planner) takes them, and that its `--optimal` search does."""
+    from types import SimpleNamespace
+
+    from foon2pddl.cli.reasons import unsupported_reason
+
+    reason = unsupported_reason(SimpleNamespace(requirements=(":strips", ":conditional-effects"),
+                                                encoding="relational"))
+    assert "`--optimal` takes A* with h^max there" not in reason
+    assert ("Fast Downward, the default planner, takes them (its `--optimal` search: A* with h^max, not LM-cut)"
+            in reason)

@@ -83,7 +83,8 @@ def unsupported_reason(task) -> str | None:
     if ":conditional-effects" in task.requirements:
         said.append(f"the {task.encoding} encoding's actions have conditional effects (`:conditional-effects`), which "
                     "this planner or search may not support (pyperplan, Tamer, Aries and Fast Downward's LM-cut do not; "
-                    "`--optimal` takes A* with h^max there); `--encoding tree` (FOON's own semantics) and "
+                    "Fast Downward, the default planner, takes them (its `--optimal` search: A* with h^max, not "
+                    "LM-cut)); `--encoding tree` (FOON's own semantics) and "
                     "`--encoding instances` have none")
     if ":action-costs" in task.requirements:
         said.append("the task has action costs (`:action-costs`; --costs or a constraints file's rates give them), "
