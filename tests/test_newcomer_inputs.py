@@ -74,5 +74,5 @@ def test_a_directory_of_no_foon_file_says_what_was_skipped():
     docs/format.md says each skipped file gets a warning: the error names them and why."""
     r = run("stats", SEARCH_INPUTS)
     assert r.exit_code == 2
-    assert "every file was skipped: motion.txt (a motion success-rates file" in r.stderr
-    assert "utensils.txt (no FOON text" in r.stderr
+    assert "every file was skipped; motion.txt: a motion success-rates file" in r.stderr
+    assert "; utensils.txt: no FOON text" in r.stderr

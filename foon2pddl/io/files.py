@@ -90,9 +90,9 @@ def _read_all(paths: Iterable[str | Path], skip_invalid: bool) -> tuple[list[Par
                 raise
             skipped.append(ParseWarning(exc.path, exc.line, f"skipped (not a valid network): {exc.message}"))
     if not results:
-        said = "; ".join(f"{Path(w.path).name} ({w.message.removeprefix('skipped: ')})" for w in skipped[:3])
+        said = "".join(f"; {Path(w.path).name}: {w.message.removeprefix('skipped: ')}" for w in skipped[:3])
         more = f"; {len(skipped) - 3} more" if len(skipped) > 3 else ""
-        raise FoonSyntaxError(str(next(iter(named), "")), 0, f"no FOON file to read: every file was skipped: {said}{more}")
+        raise FoonSyntaxError(str(next(iter(named), "")), 0, f"no FOON file to read: every file was skipped{said}{more}")
     return results, skipped
 
 
