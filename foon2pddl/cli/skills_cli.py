@@ -111,6 +111,7 @@ def plan_with_skills(foon, kitchen, goal, encoding: str | None, cons, *, skill_d
     the planner failed), 2 when the skill replay fails. `encoding` None: the default one, which falls back to
     `instances` when it finds no plan (`skills.run`), saying so on stderr."""
     from ..io.atomic import atomic_write_many
+    from ..skills.decompose import StepStatus
     from ..skills.recipe import skill_plan_recipe
     from ..skills.report import micro_files, skill_plan_json, skill_plan_text
     from ..skills.run import FALLBACK_ENCODING, FIRST_SHARE, plan_skills, robot_profile, skills_encoding
@@ -170,7 +171,9 @@ def plan_with_skills(foon, kitchen, goal, encoding: str | None, cons, *, skill_d
                + ("valid" if plan.replay.ok else "INVALID"), err=True)
     for s in plan.steps:
         if s.reason:
-            click.echo(f"note: step {s.index + 1} ({s.motion}, {s.source}) is {s.status}: {s.reason}", err=True)
+            kept = (" failed to decompose, kept as an abstract step (the replay goes on from FOON's state after it)"
+                    if s.status == StepStatus.FAILED else f" is {s.status}")
+            click.echo(f"note: step {s.index + 1} ({s.motion}, {s.source}){kept}: {s.reason}", err=True)
     for problem in plan.replay.problems:
         click.echo(f"error: {problem}", err=True)
     micro_s = sum(s.seconds for s in plan.steps)
