@@ -362,7 +362,7 @@ def test_the_task_says_why_it_has_several_objects_of_a_label():
     compiled = compile_goal(foon, kitchen, load_goal("guacamole", None, foon), "relational")
     boards = sum(x.label == "cutting board" for x in compiled.task.instances)
     assert boards > 1
-    (line,) = [n for n in compiled.notes if n.startswith(f"objects: {boards} x cutting board (empty): in the plan ")]
+    (line,) = [n for n in compiled.notes if n.startswith(f"objects: {boards} x cutting board (empty): FOON's plan, unfolded, ")]
     assert "pick-and-place at 07-guacamole.foon:52" in line and "takes one out of that state" in line
     assert "; " + line in render(compiled.task)[1]  # in the problem file's header too
     # one line per kitchen state holding several objects; a stated count is said to be one

@@ -75,8 +75,8 @@ def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves(
     units = _units(sifted=False)  # the scoop takes an empty cup; fired 3 times on 2 cups, one came back
     counts = InstanceCounts(((EMPTY, 2),), (), ((1, 3),), reused=True)
     assert count_reasons(Foon(units), counts, KITCHEN) == (
-        "2 x measuring cup (empty): in the plan the counts are derived from (FOON's, unfolded), each of scoop x3 "
-        "takes one out of that state, 1 of them one a unit left in it again",)
+        "2 x measuring cup (empty): FOON's plan, unfolded, takes one out of that state each time it fires scoop x3; "
+        "1 of those takings use one a unit put back in it",)
     # without the reuse, fewer objects than takings can only be a stated count
     stated = InstanceCounts(((EMPTY, 2),), (), ((1, 3),))
     assert count_reasons(Foon(units), stated, KITCHEN) == ("2 x measuring cup (empty): the count stated for it",)

@@ -2,10 +2,10 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 1, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 1, wooden spoon 1)
-; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
+; objects: 2 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
-(define (domain foon-instances-197ad87f)
+(define (domain foon-instances-1adf9735)
   (:requirements :strips :typing)
   (:types
     physical-object - object

@@ -2,8 +2,8 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 17 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 2, onion 1, oregano 1, red wine vinegar 2, salad tongs 1, tomato 1)
-; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3 takes one out of that state and no unit puts one back
-(define (domain foon-relational-963d113e)
+; objects: 3 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3, and no unit puts one back
+(define (domain foon-relational-61817839)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object

@@ -112,6 +112,7 @@ class RunSummary:
     warnings: tuple[str, ...] = ()  # damaged result lines skipped
     points: tuple[Point, ...] = ((),)
     lost: int = 0  # cells of this invocation lost with their worker (a rerun redoes them)
+    cell_seconds: float = 0.0  # of `seconds`, those running the cells (the progress bar's elapsed time)
 
 
 # -- the grid ------------------------------------------------------------------------------------
@@ -321,6 +322,7 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
         batches = plan_batches(config, done, grid)
     planned = sum(len(b.goals) for b in batches)
     written = [0, 0]  # cells written, of which lost
+    running = 0.0  # seconds running the cells (the rest: reading, drawing, building the networks)
     if batches:
         if config.scheduler is None:
             kinds = ", ".join(NETWORKS[n].label for n in config.networks if n in {b.network for b in batches})
@@ -344,8 +346,9 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
             with open_for_append(config.results_path) as fh:
                 run_cells(config, batches, sink, bar, settle)
         finally:
+            running = time.perf_counter() - t_run
             log = {"cells": written[0], "planned": planned, "jobs": config.jobs, **code_version(),
-                   "seconds": round(time.perf_counter() - t_run, 3), "setup_seconds": round(t_run - t0, 3), "solvers": sorted({b.solver for b in batches})}
+                   "seconds": round(running, 3), "setup_seconds": round(t_run - t0, 3), "solvers": sorted({b.solver for b in batches})}
             if config.scheduler:
                 log["scheduler"] = config.scheduler
             try:
@@ -359,7 +362,7 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
     drawn = draw_at(config.paths, config.protocol, first)
     return RunSummary(trials, written[0], len(keys) - planned, time.perf_counter() - t0, mine, len(drawn.kitchen),
                       len(drawn.pool), read_runs(config.out_dir / RUNS), tuple(warnings), config.points,
-                      written[1])
+                      written[1], running)
 
 
 def _sortable(key: Key) -> tuple:

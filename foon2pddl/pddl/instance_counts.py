@@ -291,11 +291,12 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
             src = f" at {unit_where(unit, short_path)}" if unit.source else ""
             where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
         more = len(takers.get(node, ())) - shown
-        out.append(f"{k} x {node.describe()}: in the plan the counts are derived from (FOON's, unfolded), each of "
+        again = taken + (node in readers) - k
+        out.append(f"{k} x {node.describe()}: FOON's plan, unfolded, takes one out of that state each time it fires "
                    + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
-                   + (f" takes one out of that state, {taken + (node in readers) - k} of them one a unit left in it again"
-                      if k < taken + (node in readers) else " takes one out of that state and no unit puts one back")
-                   + ("; one stays for a unit that only reads it" if node in readers else ""))
+                   + (f"; {again} of those takings use one a unit put back in it" if again > 0
+                      else ", and no unit puts one back")
+                   + ("; one more stays for a unit that only reads it" if node in readers else ""))
     return tuple(out)
 
 

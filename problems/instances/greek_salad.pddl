@@ -2,11 +2,11 @@
 ; goal: greek salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black olive 1, bowl 1, cucumber 1, cutting board 3, feta cheese 1, greek salad 1, knife 1, olive oil 1, onion 1, oregano 1, red wine vinegar 1, salad tongs 1, tomato 1)
-; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3 takes one out of that state and no unit puts one back
+; objects: 3 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 08-greek_salad.foon:3, and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_greek_salad)
-  (:domain foon-instances-fe3e4f62)
+  (:domain foon-instances-c6402eed)
   (:objects
     black_olive_1 - physical-object
     bowl_1 - physical-object

@@ -2,10 +2,10 @@
 ; goal: fruit salad (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 20 (banana 1, bowl 1, cutting board 3, fruit salad 1, heavy cream 2, honey 2, juicer 1, knife 1, lime 1, lime juice 1, mixing bowl 1, spoon 1, strawberry 1, sugar 1, whipped cream 1, whisk 1)
-; objects: 3 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34 takes one out of that state and no unit puts one back
+; objects: 3 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 07-guacamole.foon:52, pick-and-place at 09-fruit_salad.foon:3, pick-and-place at 09-fruit_salad.foon:34, and no unit puts one back
 ; label mismatch: 09-fruit_salad.foon:199: bowl lists whipped cream, which the unit puts on [fruit salad]
 (define (problem make_fruit_salad)
-  (:domain foon-relational-f9d848dc)
+  (:domain foon-relational-da776df9)
   (:objects
     banana_1 - banana
     bowl_1 - bowl

@@ -2,10 +2,10 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 17 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 2, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 2, wooden spoon 1)
-; objects: 2 x cutting board (empty): in the plan the counts are derived from (FOON's, unfolded), each of pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42 takes one out of that state and no unit puts one back
+; objects: 2 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
 (define (problem make_tomato_soup)
-  (:domain foon-relational-7e96853b)
+  (:domain foon-relational-ebfae865)
   (:objects
     basil_1 - basil
     bowl_1 - bowl
