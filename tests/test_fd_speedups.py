@@ -69,9 +69,9 @@ def test_the_pseudo_sort_orders_as_the_original(seed, tmp_path):
         "    cg.predecessor_graph, cg.ordering, cg.num_variables = defaultdict(set), [], n\n"
         "    cg.goal_map = {g: 0 for g in goal}\n"
         "    return cg.get_ordering()\n"
-        "before = order(); fd_speedups.apply(); print(before == order(), len(before))\n")
-    same, count = _in_translator(script, tmp_path).split()
-    assert same == "True" and int(count) == n
+        "before = order(); done = fd_speedups.apply(); print(before == order(), len(before), len(done))\n")
+    same, count, installed = _in_translator(script, tmp_path).split()
+    assert same == "True" and int(count) == n and int(installed) == len(fd_speedups.ORIGINALS)  # compared with the rewrite
 
 
 def test_a_ground_action_keeps_the_deletes_the_original_keeps(tmp_path):
@@ -86,9 +86,9 @@ def test_a_ground_action_keeps_the_deletes_the_original_keeps(tmp_path):
         "    a = actions.PropositionalAction('a', [], effects, 1)\n"
         "    shown = lambda pairs: repr([(list(map(str, c)), str(e)) for c, e in pairs])\n"
         "    return shown(a.add_effects), shown(a.del_effects)\n"
-        "before = lists(); fd_speedups.apply(); print(before == lists(), len(eval(before[1])))\n")
+        "before = lists(); done = fd_speedups.apply(); print(before == lists(), len(eval(before[1])), len(done))\n")
     # kept: ([q], p), ([r], q), ([r, q], p) (a condition is a list: its order counts, as in the original)
-    assert _in_translator(script, tmp_path).split() == ["True", "3"]
+    assert _in_translator(script, tmp_path).split() == ["True", "3", str(len(fd_speedups.ORIGINALS))]
 
 
 def _relational_task(name: str) -> tuple[str, str]:
