@@ -1,5 +1,5 @@
 """Draw a batch of substitution pairs over WordNet lemmas no rule was designed on (splits `lemmas`, `lemmas2`,
-`lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `lemmas7`).
+`lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `lemmas7`, `lemmas8`).
 
 `python -m bench.similarity_lemmas [--shared DIR] [--split S] BLIND KEY` writes BLIND (the
 pairs in a seeded shuffle with an empty `label` column) and KEY (each pair's split and
@@ -39,9 +39,10 @@ from .similarity_sample import main as sample_main
 
 N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 80, 40, 170, 30
 #: The batches in the order they were drawn, with their seeds (`lemmas` at 8697b53, `lemmas2` at 213d3ab,
-#: `lemmas3` at f864136, `lemmas4` at 5ececf4, `lemmas5` at 7edb3f9, `lemmas6` at e121a45, `lemmas7` at a65fb7b;
-#: `lemmas7` keeps `lemmas6`'s roots and sizes).
-SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45, "lemmas5": 46, "lemmas6": 47, "lemmas7": 48}
+#: `lemmas3` at f864136, `lemmas4` at 5ececf4, `lemmas5` at 7edb3f9, `lemmas6` at e121a45, `lemmas7` at a65fb7b,
+#: `lemmas8` at 03d5418; `lemmas7` and `lemmas8` keep `lemmas6`'s roots and sizes).
+SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45, "lemmas5": 46, "lemmas6": 47, "lemmas7": 48,
+         "lemmas8": 49}
 #: `lemmas5` on: more sampled pairs (each earlier batch had about 18 good pairs of 200, so wide intervals).
 ACCEPTED_MORE, MORE_FROM = 270, "lemmas5"
 FOOD = ("edible_fruit.n.01", "vegetable.n.01", "herb.n.02", "spice.n.02", "cheese.n.01", "meat.n.01",
