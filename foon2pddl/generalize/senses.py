@@ -204,7 +204,9 @@ def mixed_roles(reader, sense_a: str, sense_b: str) -> bool:
 
 def role_senses(reader, term: str) -> dict[str, str]:
     """Senses of `term` for the role it plays: food, else kitchen artifact (under `KITCHEN_ARTIFACTS`, all its
-    artifact senses when none is), else substance, else any (the cook similarity's rule 1, `cook.py`)."""
+    artifact senses when none is), else substance, else any (the cook similarity's rule 1, `cook.py`); of those,
+    the senses WordNet marks with no region when some are (`regional`: biscuit the quick bread, not the British
+    cookie)."""
     found = kitchen_senses(reader, term)
     for kind in ("noun.food", "noun.artifact", "noun.substance"):
         picked = {n: k for n, k in found.items() if k == kind}
@@ -212,8 +214,19 @@ def role_senses(reader, term: str) -> dict[str, str]:
             kitchen = {n: k for n, k in picked.items() if _under(reader, n, KITCHEN_ARTIFACTS)}
             picked = kitchen or picked
         if picked:
-            return picked
-    return found
+            return _unregional(reader, picked)
+    return _unregional(reader, found)
+
+
+def regional(reader, name: str) -> bool:
+    """Whether WordNet files synset `name` under a region (`cookie.n.01`: "`biscuit' is the British term")."""
+    return bool(reader.synset(name).region_domains())
+
+
+def _unregional(reader, senses: dict[str, str]) -> dict[str, str]:
+    """`senses` but those WordNet marks as regional, unless all are: a FOON is read in no region's usage."""
+    plain = {n: k for n, k in senses.items() if not regional(reader, n)}
+    return plain or senses
 
 
 def _under(reader, name: str, roots: frozenset[str]) -> bool:
