@@ -96,6 +96,17 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
     assert not any(line.startswith(said) for line in warm.stderr.splitlines()), warm.stderr
 
 
+def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
+    """`plan --planner pyperplan --optimal` said nothing for 2.0 s at load 15 (stop 48's pass): the line came
+    once the silence budget was spent, then UP's import took seconds more. An engine name says so at once;
+    Fast Downward, looked up without importing unified-planning, stays quiet."""
+    monkeypatch.setattr(progress, "AFTER", 3600.0)  # no step may speak for having been quiet
+    engine = run("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan", "--optimal")
+    assert engine.exit_code == 0, engine.stderr
+    assert engine.stderr.splitlines()[0] == "looking up planner 'pyperplan' among unified-planning's engines ..."
+    assert "looking up planner" not in run("plan", "--goal", "whipped cream", "--encoding", "tree").stderr
+
+
 # -- the commands found silent for seconds --------------------------------------------------------
 
 
@@ -105,7 +116,7 @@ def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, sa
     (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan"),
-     "looking up planner 'pyperplan' ..."),
+     "looking up planner 'pyperplan' among unified-planning's engines ..."),
     (("plan", "--goal", "whipped cream", "--skills"),
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
     # stop 47's pass: --up-validate's validation (8-13 s at load 14-17) ran under a line naming only the planning

@@ -15,7 +15,7 @@ from ..io.tree_formats import DEFAULT_FORMAT, FORMATS, STEP_FORMATS, render_tree
 from ..pddl.compile import PLAN_ENCODING
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
-from ..planners.registry import UnknownPlanner, lookup
+from ..planners.registry import UP_ENGINE, UnknownPlanner, lookup
 from ..planners.result import plan_cost, sas_plan_text
 from ..planners.solve import PHASES, PlanOutcome, plan, plan_restoring
 from . import main
@@ -137,9 +137,12 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     check_output(output, directory=entries is not None or skills)
     check_output(plan_file)
     config = _search_config(planner, planner_cmd, optimal, alias, search, evaluators)
-    try:  # before anything is loaded or timed (a unified-planning engine: UP's import takes seconds)
-        with slow_step(f"looking up planner {planner_cmd or planner!r}"):
-            lookup(planner, planner_cmd).check(planner if planner_cmd is None else planner_cmd)
+    entry = lookup(planner, planner_cmd)
+    engine = entry is UP_ENGINE  # its check imports unified-planning: seconds, so it says so at once
+    what = f"looking up planner {planner_cmd or planner!r}" + (" among unified-planning's engines" if engine else "")
+    try:  # before anything is loaded or timed
+        with slow_step(what, after=0 if engine else None):
+            entry.check(planner if planner_cmd is None else planner_cmd)
     except UnknownPlanner as exc:
         raise click.BadParameter(f"{exc} (or --planner-cmd with a command or a preset: {', '.join(PRESETS)})",
                                  param_hint="--planner") from None
