@@ -11,7 +11,8 @@ But a vessel named for what it holds is still a vessel: when the generic is a co
 gloss names a substance it holds (a bottle "for storing drinks or other liquids", a drinking glass "for
 holding liquids"), a food that is a WordNet kind of that substance (wine, beer, soft drink: liquids) is
 not another food (`held`), so bottle~wine bottle and drinking glass~schooner stand; a pot for making
-coffee does not (a pot's gloss names no substance).
+coffee does not (a pot's gloss names no substance). A container whose label says which food it holds is that
+container for it (`named_for_food`): a cookie jar is "a jar in which cookies are kept", a jar still.
 Cost: a few WordNet lookups per synset, cached.
 """
 
@@ -71,9 +72,24 @@ def _named(reader, synset: str, label: str, lexname: str) -> frozenset[str]:
     return frozenset(out)
 
 
+def named_for_food(reader, generic: str, kind_label: str, generic_label: str) -> bool:
+    """Whether `kind_label` is container `generic_label` (synset `generic`, a WordNet kind of a container) named
+    for a food it holds: the compound's head is that label and its modifier names a food (read as `foods` reads
+    words: cookie jar, beer mug, soup ladle; not milk can beside tin can, whose heads only are shared)."""
+    modifier = kind_label.removesuffix(" " + generic_label)
+    if not generic_label or modifier in ("", kind_label) or CONTAINER not in _ancestors(reader, generic):
+        return False
+    words = _WORD.findall(modifier.lower())
+    return bool(words) and (_first(reader, "_".join(words), "noun.food") is not None
+                            or _first(reader, words[-1], "noun.food") is not None)
+
+
 def for_another_food(reader, kind: str, generic: str, kind_label: str = "", generic_label: str = "") -> bool:
     """Whether tool synset `kind` (a WordNet kind of `generic`) names a food its generic does not name and
-    that is no WordNet kind of a substance the generic holds (`held`)."""
+    that is no WordNet kind of a substance the generic holds (`held`); never a container named for the food
+    it holds (`named_for_food`: a cookie jar is a jar)."""
+    if named_for_food(reader, generic, kind_label, generic_label):
+        return False
     holds = held(reader, generic, generic_label)
     return any(not (_ancestors(reader, f) & holds)
                for f in foods(reader, kind, kind_label) - foods(reader, generic, generic_label))
