@@ -5,6 +5,7 @@ hour keeps every step quiet."""
 
 from __future__ import annotations
 
+import re
 import time
 
 import pytest
@@ -112,7 +113,8 @@ def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
 
 @pytest.mark.parametrize(("args", "said"), [
     (("similarity", "cilantro", "banana"), "comparing 2 labels in WordNet (cook similarity) ..."),
-    (("expand", "--pairs"), "expanding 101 units onto similar objects (WordNet similarities: once, then cached) ..."),
+    (("expand", "--pairs"), "expanding 101 units onto similar objects: computing the WordNet similarities of 66 labels "
+                            "(once, then cached) ..."),
     (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan"),
@@ -125,8 +127,8 @@ def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
     (("stats", SUBGRAPHS), "counting nodes and labels at each level ..."),  # 2.4 s silent at load 12
-    (("expand",), "writing FOON-EXP (181 units) and its statistics ..."),  # 4.4 s silent on the subgraphs (paper)
-    (("generalize",), "writing FOON-GEN (95 units) and its statistics ..."),
+    (("expand",), "writing FOON-EXP (181 units) ..."),  # 4.4 s silent on the subgraphs (paper)
+    (("generalize",), "writing FOON-GEN (95 units) ..."),
     (("generalize",), "generalizing 101 units to categories ..."),  # 2.0-2.1 s silent at load 13 (subgraphs)
     (("categories", "--extend"), "filing the object labels in no category (through WordNet) ..."),  # 24 s at load 14
 ], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills", "plan --up-validate",
@@ -259,3 +261,117 @@ def test_skills_say_the_step_they_are_in_after_the_fallback(monkeypatch):
     assert said == ["planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) "
                     "and each step's robot skills",
                     "planning 'whipped cream' (instances encoding) and each step's robot skills"]
+
+
+# -- a series of steps (issue 24: `analyze --level 3` left ~25 finished share lines on a terminal) --------------
+
+
+class _Terminal:
+    """A fake terminal for stderr: what was written, and the screen's lines after the cursor moves and clears."""
+
+    def __init__(self) -> None:
+        self.written = ""
+
+    def isatty(self) -> bool:
+        return True
+
+    def write(self, text: str) -> int:
+        self.written += text
+        return len(text)
+
+    def flush(self) -> None:
+        pass
+
+    def screen(self) -> list[str]:
+        """The lines left on screen: `\\x1b[A` moves up a line, `\\r` to its start, `\\x1b[K` clears the rest."""
+        lines, row, col = [""], 0, 0
+        for token in re.split(r"(\x1b\[A|\x1b\[K|\r|\n)", self.written):
+            if token == "\x1b[A":
+                row = max(0, row - 1)
+            elif token == "\x1b[K":
+                lines[row] = lines[row][:col]
+            elif token == "\r":
+                col = 0
+            elif token == "\n":
+                row, col = row + 1, 0
+                lines += [""] * (row + 1 - len(lines))
+            else:
+                lines[row] = lines[row][:col] + token + lines[row][col + len(token):]
+                col += len(token)
+        return [line for line in lines if line]
+
+
+def on_terminal(monkeypatch) -> _Terminal:
+    """stderr a fake terminal, from here on (pytest's capture sets sys.stderr when the test's body starts)."""
+    screen = _Terminal()
+    monkeypatch.setattr("sys.stderr", screen)
+    progress.begin()
+    return screen
+
+
+def test_a_series_of_steps_is_one_redrawn_line_on_a_terminal(every_step_speaks, monkeypatch):
+    terminal = on_terminal(monkeypatch)
+    for first in (1, 33, 65):
+        with progress.slow_step(f"betweenness of 96 objects: source nodes {first}-{first + 31} of 96",
+                                series="betweenness of 96 objects"):
+            pass
+    with progress.slow_step("drawing the plot"):
+        pass
+    shown = terminal.screen()
+    assert len(shown) == 2, shown  # was a finished line per share
+    assert re.fullmatch(r"betweenness of 96 objects: source nodes 65-96 of 96: \d+\.\d s", shown[0]), shown
+    assert re.fullmatch(r"drawing the plot: \d+\.\d s", shown[1]), shown
+
+
+def test_a_series_starts_a_new_line_after_another_step_spoke(every_step_speaks, monkeypatch):
+    terminal = on_terminal(monkeypatch)
+    """Another step's line below the series's: the series's next step may not redraw over it."""
+    for what in ("a: share 1", "other", "a: share 2"):
+        with progress.slow_step(what, series="a" if what.startswith("a") else None):
+            pass
+    assert [line.split(": ")[:-1] for line in terminal.screen()] == [["a", "share 1"], ["other"], ["a", "share 2"]]
+
+
+def test_a_series_in_a_log_is_a_line_per_step(every_step_speaks, capsys):
+    for k in (1, 2):
+        with progress.slow_step(f"s: share {k}", series="s"):
+            pass
+    assert capsys.readouterr().err == "s: share 1 ...\ns: share 2 ...\n"
+
+
+def test_analyze_level_3_keeps_one_betweenness_line_per_projection_on_a_terminal(every_step_speaks, monkeypatch):
+    """What `analyze` runs, with the command's step: a line per projection, the last share's, not one per share."""
+    terminal = on_terminal(monkeypatch)
+    from foon2pddl.analysis import betweenness
+    from foon2pddl.analysis.network import analyze
+    from foon2pddl.io.inputs import load_network
+
+    monkeypatch.setattr(betweenness, "STEP_WORK", 1)  # a share of BATCH sources: several shares on the example
+    analyze(load_network(()).foon, 3, step=progress.slow_step)
+    assert terminal.written.count("betweenness of ") > 4  # several shares of each projection spoke
+    shown = [line for line in terminal.screen() if line.startswith("betweenness of ")]
+    assert len(shown) == 2 and {line.split(" ")[3].rstrip(":") for line in shown} == {"objects", "motions"}, shown
+    assert all(re.search(r"source nodes [\d,]+-([\d,]+) of \1: \d+\.\d s$", line) for line in shown), shown
+
+
+@pytest.mark.parametrize(("args", "said"), [
+    (("expand",), ["expanding 101 units onto similar objects: units 1-16 ...",
+                   "expanding 101 units onto similar objects: units 97-101 ...",
+                   "substituting the products renamed along into the units that use them ...",
+                   "removing duplicates among 187 units ...",
+                   "counting the nodes of REG and EXP at each level: REG (101 units) at level 1 ...",
+                   "counting the nodes of REG and EXP at each level: EXP (181 units) at level 3 ..."]),
+    (("generalize",), ["counting the nodes of REG and GEN at each level: REG (101 units) at level 1 ...",
+                       "counting the nodes of REG and GEN at each level: GEN (95 units) at level 3 ..."]),
+], ids=["expand", "generalize"])
+def test_expand_and_generalize_say_how_far_they_are(every_step_speaks, monkeypatch, args, said):
+    """`expand tests/data/foon-subgraphs` said one line at 1.8 s and nothing for 37.8 s more; `generalize` was silent
+    3.6 s after its header while the statistics table was computed (stop 48's pass): both now say each share."""
+    from foon2pddl.generalize import expand
+
+    monkeypatch.setattr(expand, "SHARE", 16)
+    r = run(*args)
+    assert r.exit_code == 0, r.stderr
+    lines = r.stderr.splitlines()
+    assert all(line in lines for line in said), r.stderr
+    assert [lines.index(line) for line in said] == sorted(lines.index(line) for line in said)

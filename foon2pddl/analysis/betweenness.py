@@ -81,7 +81,8 @@ def betweenness(g: nx.Graph, k: int | None = None, seed: int = 0, step: Step = s
                 what: str = "nodes") -> dict:
     """Normalized betweenness of every node of `g` (undirected, unweighted), as networkx's
     `betweenness_centrality(g, k, normalized=True, seed=seed)` gives it; each share of the sources
-    (`STEP_WORK`) runs in `step("betweenness of N WHAT: source nodes A-B of K")`. O(k (V + E))."""
+    (`STEP_WORK`) runs in `step("betweenness of N WHAT: source nodes A-B of K")`, a series (one redrawn
+    line on a terminal). O(k (V + E))."""
     nodes = list(g.nodes)
     n = len(nodes)
     index = {v: i for i, v in enumerate(nodes)}
@@ -92,7 +93,8 @@ def betweenness(g: nx.Graph, k: int | None = None, seed: int = 0, step: Step = s
     share = max(BATCH, STEP_WORK // max(1, n + g.number_of_edges()) // BATCH * BATCH)
     for first in range(0, len(picked), share):
         last = min(first + share, len(picked))
-        with step(f"betweenness of {n:,} {what}: source nodes {first + 1:,}-{last:,} of {len(picked):,}"):
+        with step(f"betweenness of {n:,} {what}: source nodes {first + 1:,}-{last:,} of {len(picked):,}",
+                  series=f"betweenness of {n:,} {what}"):
             for at in range(first, last, BATCH):
                 total += _dependencies(edges, np.array(picked[at:min(at + BATCH, last)])).sum(axis=1)
     if n <= 2:

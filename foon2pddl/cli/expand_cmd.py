@@ -50,11 +50,13 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     net = read_network(paths)
     kit = load_kitchen(kitchen, net, 3)
     extra = load_overrides(overrides)
-    cold = not mode_matrix_is_cached(vocabulary(net.foon, kit), similarity, extra)  # seconds: said at once
-    with slow_step(f"expanding {len(net.foon.units):,} units onto similar objects (WordNet similarities: once, "
-                   "then cached)", after=0 if cold else None):
-        matrix = mode_matrix(vocabulary(net.foon, kit), similarity, extra=extra) if extra is not None else None
-        e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity)
+    labels = vocabulary(net.foon, kit)
+    cold = not mode_matrix_is_cached(labels, similarity, extra)  # seconds: said at once
+    with slow_step(f"expanding {len(net.foon.units):,} units onto similar objects: computing the WordNet "
+                   f"similarities of {len(labels):,} labels (once, then cached)", after=0 if cold else None):
+        matrix = mode_matrix(labels, similarity, extra=extra)
+    e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity,
+               step=slow_step)  # says how far it is
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 
@@ -64,8 +66,8 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
         return
     header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "
               f"{len(e.substitutions)} label substitutions")
-    with slow_step(f"writing FOON-EXP ({len(e.foon.units):,} units) and its statistics"):
+    with slow_step(f"writing FOON-EXP ({len(e.foon.units):,} units)"):
         emit_network(e.foon, fmt, provenance, header, output)
-        table = format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon}))
+    table = format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon}, step=slow_step))
     click.echo(table, err=True, nl=False)
 

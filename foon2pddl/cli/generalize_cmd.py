@@ -37,9 +37,9 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
         c = compress(net.foon, index)
     header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
               f"{c.original_units} -> {len(c.foon.units)} units")
-    with slow_step(f"writing FOON-GEN ({len(c.foon.units):,} units) and its statistics"):
+    with slow_step(f"writing FOON-GEN ({len(c.foon.units):,} units)"):
         emit_network(c.foon, fmt, provenance, header, output)
-        table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}))
+    table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}, step=slow_step))
     click.echo(table, err=True, nl=False)
     for r in c.readings:  # a name read as its unit's object, generalized as that object
         click.echo(f"note: category reading: {r}", err=True)

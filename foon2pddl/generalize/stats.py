@@ -5,16 +5,21 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..analysis.stats import level_row
+from ..io.steps import Step, silent_step
 from ..model.foon import Foon
 from ..model.levels import LEVELS, project
 
 
-def levels_table(networks: Mapping[str, Foon]) -> list[dict[str, int | str]]:
-    """One row per network and level: object nodes, motion nodes (= units), in the order given."""
+def levels_table(networks: Mapping[str, Foon], step: Step = silent_step) -> list[dict[str, int | str]]:
+    """One row per network and level: object nodes, motion nodes (= units), in the order given; each row
+    in `step` (a series: a projection of a large network takes seconds)."""
     rows: list[dict[str, int | str]] = []
+    names = " and ".join(networks)
     for name, foon in networks.items():
         for level in LEVELS:
-            rows.append({"network": name, **level_row(project(foon, level))})
+            with step(f"counting the nodes of {names} at each level: {name} ({len(foon.units):,} units) at level "
+                      f"{level}", series=f"counting the nodes of {names}"):
+                rows.append({"network": name, **level_row(project(foon, level))})
     return rows
 
 

@@ -6,13 +6,18 @@ the Python API and `--no-progress` pass `silent_step`. Lower layers never print 
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from contextlib import AbstractContextManager, nullcontext
-
-#: A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`).
-Step = Callable[[str], AbstractContextManager[None]]
+from typing import Protocol
 
 
-def silent_step(what: str) -> AbstractContextManager[None]:
+class Step(Protocol):
+    """A context manager factory around a slow step, given what the step does (`cli.progress.slow_step`)
+    and, for the shares of one long computation run one after another, the name of that series (one
+    redrawn line on a terminal)."""
+
+    def __call__(self, what: str, *, series: str | None = None) -> AbstractContextManager[None]: ...
+
+
+def silent_step(what: str, *, series: str | None = None) -> AbstractContextManager[None]:
     """No message (`--no-progress`, the Python API)."""
     return nullcontext()
