@@ -91,10 +91,38 @@ def test_kitchen_typos_are_warned_with_close_matches(tmp_path):
     kitchen.write_text("onoin: whole\nonion whole\nknife\ncutting board: empty\n")
     r = run("retrieve", "--goal", "onion: chopped", "--kitchen", str(kitchen))
     assert r.exit_code == 1
-    warned = [line for line in r.stderr.splitlines() if line.startswith(f"{kitchen}: warning: kitchen item")]
+    warned = [line for line in r.stderr.splitlines() if line.startswith(f"{kitchen}:") and "warning: kitchen item" in line]
     assert len(warned) == 2  # knife and the cutting board are nodes of the network
     assert all("close: `onion: whole`" in line for line in warned)
     assert any("`onoin: whole`" in line for line in warned) and any("`onion whole`" in line for line in warned)
+
+
+KITCHEN_FORMS = {
+    "k.txt": "# my kitchen\ncutting board: empty\nonoin: whole\n\n2 x knife\nonion: whole\nknfie\n",
+    "k.foon": "//\nO\tcutting board\nS\tempty\n//\nO\tonoin\nS\twhole\n//\nO\tknife\n//\nO\tonion\nS\twhole\n"
+              "//\nO\tknfie\n",
+    "k.json": '[\n  {"label": "cutting board", "states": ["empty"]},\n  {"label": "onoin", "states": ["whole"]},\n'
+              '  {"label": "knife"},\n  {"label": "onion",\n   "states": ["whole"]},\n  {"label": "knfie"}\n]\n',
+    "scene.json": '{"objects": [\n  {"id": "board_1", "label": "cutting board", "states": ["empty"]},\n'
+                  '  {"id": "x_1", "label": "onoin", "states": ["whole"]},\n  {"id": "knife_1", "label": "knife"},\n'
+                  '  {"id": "onion_1", "label": "onion",\n   "states": ["whole"]},\n  {"id": "k_2", "label": "knfie"}\n]}\n',
+}
+
+
+@pytest.mark.parametrize(("name", "lines"), [("k.txt", (3, 7)), ("k.foon", (5, 13)), ("k.json", (3, 7)),
+                                             ("scene.json", (3, 7))])
+@pytest.mark.parametrize("level", ["3", "2"])
+def test_kitchen_warnings_name_the_line_of_the_item(tmp_path, name, lines, level):
+    """An error in a kitchen file names file:line; a warning about an item of it did not (`k.txt: warning:
+    kitchen item ...`, stop 48's pass), and listed the items by label. Each names its line, in file order."""
+    kitchen = tmp_path / name
+    kitchen.write_text(KITCHEN_FORMS[name])
+    r = run("retrieve", "--goal", "onion: chopped", "--kitchen", str(kitchen), "--level", level)
+    assert r.exit_code == 0, r.stderr
+    warned = [line for line in r.stderr.splitlines() if "warning" in line]
+    assert [w.split(" matches")[0] for w in warned] == [
+        f"{kitchen}:{lines[0]}: warning: kitchen item `onoin: whole`",
+        f"{kitchen}:{lines[1]}: warning: kitchen item `knfie`"], r.stderr
 
 
 def test_example_kitchen_given_explicitly_raises_no_warning():

@@ -237,7 +237,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     from .progress import slow_step
 
     net, kind = read_network(paths), NETWORKS[network]
-    kit = load_kitchen(kitchen, net, level)
+    kit = loaded = load_kitchen(kitchen, net, level)
     if kitchen is None and not net.is_example:
         click.echo(kitchen_note(kit, net.at(level)), err=True)
     if constraints is not None and kind.substitutes is not Substitutes.NONE:
@@ -250,7 +250,7 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name
-        warn_kitchen(kit, net.at(level), [n for n in view.kitchen_strays(kit.nodes, net.at(level)) if n not in places])
+        warn_kitchen(loaded, net.at(level), [n for n in view.kitchen_strays(kit.nodes, net.at(level)) if n not in places])
     if utensils is not None:
         view = replace(view, kitchen=with_utensils(view.kitchen, view.foon, read_utensils(utensils)))
     if containment != "strict":
@@ -262,9 +262,9 @@ def warn_kitchen(kitchen, foon, strays) -> None:
     """Warn (stderr) about kitchen items that match no node of the network, with close-match hints."""
     from ..model.kitchen import unmatched_items
 
-    messages, total = unmatched_items(strays, foon)
-    for m in messages:
-        click.echo(f"{kitchen.source}: warning: {m}", err=True)
+    messages, total = unmatched_items(strays, foon, lines=kitchen.line_numbers())
+    for line, m in messages:
+        click.echo(f"{kitchen.source}{f':{line}' if line else ''}: warning: {m}", err=True)
     if total > len(messages):
         click.echo(f"{kitchen.source}: warning: ... and {total - len(messages)} more kitchen items match no node",
                    err=True)

@@ -139,6 +139,16 @@ def line_of(text: str, where: tuple[str | int, ...]) -> int:
     return text.count("\n", 0, pos) + 1
 
 
+def item_lines(text: str) -> list[int]:
+    """1-based line of each item of the top-level JSON list `text` holds (where the item starts; one
+    decode and a binary search per item, for messages about valid files)."""
+    from bisect import bisect_left
+
+    data, starts = decode_tracked(text)
+    breaks = [m.start() for m in re.finditer("\n", text)]
+    return [bisect_left(breaks, starts.get(id(item), 0)) + 1 for item in data] if isinstance(data, list) else []
+
+
 def decode_tracked(text: str) -> tuple[Any, dict[int, int]]:
     """The decoded value and the start offset of every object and list in it (by id); (None, {})
     when the text does not decode."""

@@ -9,7 +9,7 @@ from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
 from .foon_lines import LINE_ID, NETWORK_NOT_OBJECTS, parse_objects
-from .json_text import line_of, load_json, text_problem
+from .json_text import item_lines, line_of, load_json, text_problem
 from .parser import read_text
 from .rates import looks_like_rates
 
@@ -91,9 +91,14 @@ def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]
     The count is how many physical objects are in that state (the `instances` PDDL
     encoding uses it; FOON's own semantics ignores it); None when not given. `#` comments allowed.
     """
+    return [(n, k) for n, k, _ in _node_lines(text, path)]
+
+
+def _node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None, int]]:
+    """`read_node_lines` with each node's line."""
     from .goal_files import parse_goal_spec
 
-    nodes: list[tuple[ObjectNode, int | None]] = []
+    nodes: list[tuple[ObjectNode, int | None, int]] = []
     first = 0
     for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only: U+2028 is not a line break here
         line = raw.strip()
@@ -110,7 +115,7 @@ def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]
             spec = parse_goal_spec(counted.group(2) if counted else line)
         except ValueError as exc:
             raise FoonSyntaxError(path, lineno, str(exc), line) from None
-        nodes.append((make_node(spec.label, spec.states or ()), count))
+        nodes.append((make_node(spec.label, spec.states or ()), count, lineno))
     return nodes
 
 
@@ -159,22 +164,27 @@ def read_kitchen(path: str | Path) -> Kitchen:
         if is_scene(data):
             return scene_of(data, text, str(p))
         nodes = json_nodes(data, text, p)
+        listed = list(zip(nodes, item_lines(text), strict=True))
     else:
         text = read_text(p)
         if looks_like_rates(text):
             raise FoonSyntaxError(str(p), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
                                              "not a kitchen", belongs=("rates",))
         if looks_like_foon(text):
-            nodes = [n for n, _ in parse_objects(text, str(p))]
+            listed = parse_objects(text, str(p))
         else:
-            counted = read_node_lines(text, str(p))
-            nodes = [n for n, _ in counted]
-            for n, k in counted:
+            counted = _node_lines(text, str(p))
+            listed = [(n, line) for n, _, line in counted]
+            for n, k, _ in counted:
                 if k is not None:
                     counts[n] = counts.get(n, 0) + k
+        nodes = [n for n, _ in listed]
     if not nodes:
         raise FoonSyntaxError(str(p), 0, "kitchen file lists no object nodes")
-    return Kitchen(frozenset(nodes), 3, str(p), tuple(sorted(counts.items())))
+    lines: dict[ObjectNode, int] = {}
+    for n, line in listed:
+        lines.setdefault(n, line)
+    return Kitchen(frozenset(nodes), 3, str(p), tuple(sorted(counts.items())), lines=tuple(sorted(lines.items())))
 
 
 def write_kitchen(kitchen: Kitchen) -> str:

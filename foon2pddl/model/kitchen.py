@@ -8,7 +8,7 @@ default kitchen is derived by the rule documented in `default_kitchen`.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from itertools import chain
 
 from .bulk import bulk
@@ -39,6 +39,8 @@ class Kitchen:
     counts: tuple[tuple[ObjectNode, int], ...] = ()  # stated instance counts (`2 x bowl (empty)`), sorted
     #: a scene kitchen's objects with ids (`model.scene`; their nodes and counts are `nodes` and `counts`)
     scene: tuple[SceneObject, ...] = ()
+    #: the line of its file that first lists each node (a file's kitchen; a scene's are its objects'): for messages
+    lines: tuple[tuple[ObjectNode, int], ...] = field(default=(), compare=False, repr=False)
 
     def __contains__(self, node: object) -> bool:
         return node in self.nodes
@@ -65,8 +67,21 @@ class Kitchen:
         if self.scene:
             return scene_kitchen([replace(o, node=project_node(o.node, level)) for o in self.scene], self.source,
                                  level)
+        lines: dict[ObjectNode, int] = {}
+        for n, line in self.lines:  # nodes that become one at `level`: the first line listing any of them
+            p = project_node(n, level)
+            lines[p] = min(line, lines.get(p, line))
         return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source,
-                       tuple(sorted(counts.items())))
+                       tuple(sorted(counts.items())), lines=tuple(sorted(lines.items())))
+
+    def line_numbers(self) -> dict[ObjectNode, int]:
+        """Node -> the line of the kitchen's file that first lists it (nodes not read from a file line: absent)."""
+        if not self.scene:
+            return dict(self.lines)
+        lines: dict[ObjectNode, int] = {}
+        for o in self.scene:
+            lines[o.node] = min(o.line, lines.get(o.node, o.line))
+        return lines
 
     def stated_counts(self) -> dict[ObjectNode, int]:
         """Node -> instance count for the nodes whose count the kitchen states."""
@@ -248,17 +263,19 @@ def node_hints(node: ObjectNode, foon: Foon, limit: int = 3) -> list[str]:
     return difflib.get_close_matches(_goal_syntax(node), sorted(pool), n=limit, cutoff=0.0) if pool else []
 
 
-def unmatched_items(nodes: Iterable[ObjectNode], foon: Foon, limit: int = 10) -> tuple[list[str], int]:
-    """Kitchen nodes that are no node of `foon` (same level): a message with hints for the first
-    `limit` (sorted), and how many there are in all. Such items can never be used; most are typos.
+def unmatched_items(nodes: Iterable[ObjectNode], foon: Foon, limit: int = 10,
+                    lines: dict[ObjectNode, int] | None = None) -> tuple[list[tuple[int, str]], int]:
+    """Kitchen nodes that are no node of `foon` (same level): (line, message with hints) for the first
+    `limit`, in the order of their `lines` in the kitchen's file (0: no line), then of the nodes, and how
+    many there are in all. Such items can never be used; most are typos.
     """
-    known = set(foon.nodes)
-    stray = sorted(n for n in nodes if n not in known)
+    known, at = set(foon.nodes), lines or {}
+    stray = sorted((at.get(n, 0), n) for n in nodes if n not in known)
     messages = []
-    for n in stray[:limit]:
+    for line, n in stray[:limit]:
         hints = node_hints(n, foon)
         close = f"; close: {'; '.join(f'`{h}`' for h in hints)}" if hints else ""
-        messages.append(f"kitchen item `{_goal_syntax(n)}` matches no node of the network{close}")
+        messages.append((line, f"kitchen item `{_goal_syntax(n)}` matches no node of the network{close}"))
     return messages, len(stray)
 
 
