@@ -52,26 +52,31 @@ def test_a_task_counted_small_with_no_plan_is_planned_with_the_wide_counts():
     outcome = clean_dish_plan(DATA / "0050-scrambled_eggs_with_bacon-cheese.txt")
     assert len(outcome.task.instances) == len(wide.task.instances)
     assert any(x.startswith(f"objects: the {len(small.task.instances)} objects counted small gave no valid plan "
-                            "within 10 s (unsolvable): planned with the "
+                            "within 10 s of CPU (unsolvable): planned with the "
                             f"{len(wide.task.instances)} FOON's plan unfolded counts") for x in outcome.decoded.notes)
 
 
-def test_the_small_task_gets_the_short_time_limit_and_the_wide_one_what_is_left(monkeypatch):
-    # found in review: the wide task got the whole limit again, so a call could run 10 s past it
+def test_the_small_task_gets_the_short_cpu_limit_and_the_wide_one_what_is_left_of_the_wall_time(monkeypatch):
+    # found in review: the wide task got the whole limit again, so a call could run 10 s past it; the small task's
+    # limit is CPU time (at load 4-5 the odd-index universal chocolate cake's small task spent its 10 s of wall time
+    # translating, 7 s of CPU, and the cake was planned wide), its wall time bounded by the caller's limit
     real, limits, clock = solve.run_planner, [], iter(range(0, 1000, 7))
     monkeypatch.setattr(solve, "_now", lambda: next(clock))  # 7 s pass between two looks at the clock
 
     def first_times_out(*args, **kwargs):
-        limits.append(kwargs["time_limit"])
+        limits.append((kwargs["time_limit"], kwargs["cpu_limit"]))
         out = real(*args, **kwargs)
         return replace(out, status=PlanStatus.TIMEOUT, plan=()) if len(limits) == 1 else out
 
     monkeypatch.setattr(solve, "run_planner", first_times_out)
     foon, kitchen, goal = _dish("ACT-0010-choco_brownie.txt")
     outcome = solve.plan(foon, kitchen, goal, "relational", time_limit=60)
-    assert limits == [solve.RETRY_SECONDS, 60 - 7] and outcome.status == "solved"
+    assert limits == [(60, solve.RETRY_SECONDS), (60 - 7, None)] and outcome.status == "solved"
     assert len(outcome.task.instances) > 80
-    assert any("counted small gave no valid plan within 10 s (timeout)" in x for x in outcome.decoded.notes)
+    assert any("counted small gave no valid plan within 10 s of CPU (timeout)" in x for x in outcome.decoded.notes)
+    limits.clear()
+    solve.plan(foon, kitchen, goal, "relational", time_limit=4)  # a caller's shorter limit bounds both
+    assert limits[0] == (4, 4)
 
 
 def test_other_encodings_and_counts_that_do_not_shrink_plan_once(monkeypatch):

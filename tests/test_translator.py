@@ -177,23 +177,46 @@ def test_the_server_has_imported_every_module_a_translation_imports(example, goa
     assert out.stdout.strip() == "[]", out.stdout
 
 
-def test_the_warm_translators_child_has_the_cpu_limit_of_a_fresh_one(tmp_path):
-    # a fresh translator gets its CPU limit before exec (`process.limited`); the warm server's forked child had
-    # none, so a caller killed mid-translation left it translating unbounded (the server ends, its child does not)
-    from foon2pddl.planners.process import CPU_LIMIT_FACTOR
-
+def _warm_fake(tmp_path, main: str, timeout: float, cpu: float | None = None):
+    """A warm run of a fake translator whose `main` is `main` (source of translate/main.py)."""
     fake = tmp_path / "bin" / "fast_downward" / "translate"
     fake.mkdir(parents=True)
     (fake.parent / "__init__.py").write_text("")
     (fake / "__init__.py").write_text("")
     (fake / "options.py").write_text("def set_options():\n    pass\n")
     (fake / "pddl_parser.py").write_text("class ParseError(Exception):\n    pass\n")
-    (fake / "main.py").write_text("def main():\n    print(open('/proc/self/limits').read())\n")
+    (fake / "main.py").write_text(main)
     translator._drop()
     try:
-        run = translator.run(["domain.pddl"], tmp_path, 3.0, tmp_path / "bin")
+        return translator.run(["domain.pddl"], tmp_path, timeout, tmp_path / "bin", cpu=cpu)
     finally:
         translator._drop()
+
+
+LIMITS = "def main():\n    print(open('/proc/self/limits').read())\n"
+
+
+def test_the_warm_translators_child_has_the_cpu_limit_of_a_fresh_one(tmp_path):
+    # a fresh translator gets its CPU limit before exec (`process.limited`); the warm server's forked child had
+    # none, so a caller killed mid-translation left it translating unbounded (the server ends, its child does not)
+    from foon2pddl.planners.process import CPU_LIMIT_FACTOR
+
+    run = _warm_fake(tmp_path, LIMITS, 3.0)
     assert run is not None and run.returncode == 0, run
     line = next(x for x in run.output.splitlines() if x.startswith("Max cpu time"))
-    assert line.split()[3:5] == [str(CPU_LIMIT_FACTOR * 3 + 1)] * 2, line
+    assert line.split()[3:5] == [str(CPU_LIMIT_FACTOR * 3 + 1), str(CPU_LIMIT_FACTOR * 3 + 2)], line
+
+
+def test_the_warm_translators_child_gets_the_cpu_budget_and_reports_its_cpu(tmp_path):
+    run = _warm_fake(tmp_path, LIMITS, 60.0, cpu=2.0)
+    assert run is not None and run.returncode == 0, run
+    line = next(x for x in run.output.splitlines() if x.startswith("Max cpu time"))
+    assert line.split()[3:5] == ["2", "3"], line  # soft, then hard a second later
+    assert run.cpu is not None and run.cpu >= 0
+
+
+def test_the_warm_translator_past_its_cpu_budget_exits_with_the_translators_time_limit_code(tmp_path):
+    run = _warm_fake(tmp_path, "def main():\n    while True:\n        pass\n", 60.0, cpu=1.0)
+    assert run is not None and run.returncode == 21, run  # the server child's SIGXCPU handler, as FD's __main__
+    assert run.cpu is not None and run.cpu >= 0.5
+    assert fd.translation_failure(run, "fd").status == "timeout"

@@ -41,13 +41,15 @@ def __dir__() -> list[str]:
 
 def run_planner(task: PlanningTask, domain_text: str, problem_text: str, *, planner: str = DEFAULT_PLANNER,
                 planner_cmd: str | None = None, optimal: bool = False,
-                time_limit: float | None = None, search=None) -> PlanResult:
+                time_limit: float | None = None, search=None, cpu_limit: float | None = None) -> PlanResult:
     """Solve a rendered task with the registered planner `planner` (`planners.registry`): Fast Downward
     (`fd`), a unified-planning engine by name, or, given `planner_cmd`, an external command.
 
     `search` (an `fd.SearchConfig`: a driver alias or --search/--evaluator) configures Fast Downward.
+    `cpu_limit`: CPU seconds besides the wall-clock `time_limit` (`PlanRequest.cpu_limit`).
     """
     from .registry import PlanRequest, lookup
 
-    request = PlanRequest(task, domain_text, problem_text, planner, optimal, time_limit, search, planner_cmd)
+    request = PlanRequest(task, domain_text, problem_text, planner, optimal, time_limit, search, planner_cmd,
+                          cpu_limit)
     return lookup(planner, planner_cmd).solve(request)

@@ -19,11 +19,12 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import signal
 import sys
 import tempfile
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache, lru_cache
 from pathlib import Path
 
@@ -213,19 +214,21 @@ def planner_name(optimal: bool) -> str:
 
 
 def translate(domain: Path, problem: Path, sas: Path, cwd: Path, timeout: float | None,
-              options: tuple[str, ...] = (), memory_limit_mb: int | None = None) -> ProcessRun:
+              options: tuple[str, ...] = (), memory_limit_mb: int | None = None,
+              cpu: float | None = None) -> ProcessRun:
     """Run FD's translator on PDDL files, writing the SAS task to `sas`: in a child of the warm
-    translator server (`planners.translator`) when it is free, else in a fresh interpreter."""
+    translator server (`planners.translator`) when it is free, else in a fresh interpreter. `cpu`: a CPU
+    budget (seconds; past it the translator exits with its time limit's code)."""
     from . import translator
 
     args = [str(domain), str(problem), "--sas-file", str(sas), *options]
-    warm = translator.run(args, cwd, timeout, bin_dir(), memory_limit_mb)
+    warm = translator.run(args, cwd, timeout, bin_dir(), memory_limit_mb, cpu)
     if warm is not None:
         return warm
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(bin_dir()), env.get("PYTHONPATH", "")) if p)
     cmd = [sys.executable, str(SPEEDUPS), *args]  # `python -m fast_downward.translate`, sped up (same SAS file)
-    return run_process(cmd, cwd, timeout, env=env, memory_limit_mb=memory_limit_mb)
+    return run_process(cmd, cwd, timeout, env=env, memory_limit_mb=memory_limit_mb, cpu=cpu)
 
 
 def prestart_translator() -> None:
@@ -263,34 +266,43 @@ def _best_plan_file(cwd: Path) -> Path | None:
 
 def search(cwd: Path, options: tuple[str, ...], timeout: float | None, name: str, *,
            sas_path: Path | None = None, sas_text: str | None = None,
-           memory_limit_mb: int | None = None) -> PlanResult:
-    """Run the search binary on a SAS task (file or text) and read its plan file."""
+           memory_limit_mb: int | None = None, cpu: float | None = None) -> PlanResult:
+    """Run the search binary on a SAS task (file or text) and read its plan file. `cpu`: a CPU budget
+    (seconds); the search killed at it (SIGXCPU) is a time limit, as at `timeout`."""
     plan_file = cwd / "sas_plan"
     for old in (plan_file, *cwd.glob("sas_plan.*")):
         old.unlink(missing_ok=True)
-    if timeout is not None and timeout <= 0:
-        return PlanResult("timeout", (), name, "time limit reached before search", {"search": 0.0})
+    if (timeout is not None and timeout <= 0) or (cpu is not None and cpu <= 0):
+        return PlanResult("timeout", (), name, "time limit reached before search", {"search": 0.0}, cpu=0.0)
     cmd = [str(search_binary()), *options, "--internal-plan-file", str(plan_file)]
-    run = run_process(cmd, cwd, timeout, stdin_path=sas_path, stdin_text=sas_text, memory_limit_mb=memory_limit_mb)
+    run = run_process(cmd, cwd, timeout, stdin_path=sas_path, stdin_text=sas_text, memory_limit_mb=memory_limit_mb,
+                      cpu=cpu)
+    if run.returncode == -signal.SIGXCPU:
+        run = replace(run, returncode=None)  # its CPU budget: a time limit (FD's driver reads it so too)
     timings = {"search": run.seconds}
     best = _best_plan_file(cwd)
     if run.timed_out:
         if best is not None:  # an anytime search (seq-sat-lama-2011, ...) had improved plans: FD's code 2
-            return PlanResult("solved", parse_plan_text(best.read_text()), name, EXIT_CODES[2][1], timings)
-        return PlanResult("timeout", (), name, "time limit reached during search", timings)
+            return PlanResult("solved", parse_plan_text(best.read_text()), name, EXIT_CODES[2][1], timings, cpu=run.cpu)
+        return PlanResult("timeout", (), name, "time limit reached during search", timings, cpu=run.cpu)
     status, meaning = exit_status(run.returncode)
     if status == "solved":
         if best is None:
-            return PlanResult("error", (), name, f"exit code {run.returncode} but no plan file: {tail(run.output)}", timings)
-        return PlanResult("solved", parse_plan_text(best.read_text()), name, meaning, timings)
+            return PlanResult("error", (), name, f"exit code {run.returncode} but no plan file: {tail(run.output)}", timings,
+                              cpu=run.cpu)
+        return PlanResult("solved", parse_plan_text(best.read_text()), name, meaning, timings, cpu=run.cpu)
     message = meaning if status in ("unsolvable", "gave up") else f"{meaning}: {tail(run.output)}"
-    return PlanResult(status, (), name, message, timings)
+    return PlanResult(status, (), name, message, timings, cpu=run.cpu)
 
 
 def solve(domain_text: str, problem_text: str, *, optimal: bool = False, time_limit: float | None = None,
           options: tuple[str, ...] | None = None, translate_options: tuple[str, ...] = (),
-          memory_limit_mb: int | None = None, config: SearchConfig | None = None) -> PlanResult:
-    """Plan with Fast Downward on PDDL text. `config` (or raw `options`) overrides the search configuration."""
+          memory_limit_mb: int | None = None, config: SearchConfig | None = None,
+          cpu_limit: float | None = None) -> PlanResult:
+    """Plan with Fast Downward on PDDL text. `config` (or raw `options`) overrides the search configuration.
+    `cpu_limit`: CPU seconds translation and search may use together (the search gets what translation left),
+    beside the wall-clock `time_limit`: a loaded machine stretches wall time, not CPU time. The result's `cpu`
+    is what they used."""
     deadline = None if time_limit is None else time.monotonic() + time_limit
     name = planner_name(optimal) if options is None else "fd (custom)"
     if config is not None:
@@ -305,11 +317,13 @@ def solve(domain_text: str, problem_text: str, *, optimal: bool = False, time_li
             write_s = time.perf_counter() - t0
             sas = work / "output.sas"
             run = translate(work / "domain.pddl", work / "problem.pddl", sas, work, remaining(deadline),
-                            translate_options, memory_limit_mb=memory_limit_mb)
+                            translate_options, memory_limit_mb=memory_limit_mb, cpu=cpu_limit)
+            used = run.cpu if run.cpu is not None else run.seconds  # wall time bounds a one-thread run's CPU
             failed = translation_failure(run, name)
             if failed is not None:
-                return failed.with_timings(write=write_s)
-            result = search(work, opts, remaining(deadline), name, sas_path=sas, memory_limit_mb=memory_limit_mb)
-            return result.with_timings(write=write_s, translate=run.seconds)
+                return replace(failed.with_timings(write=write_s), cpu=used)
+            result = search(work, opts, remaining(deadline), name, sas_path=sas, memory_limit_mb=memory_limit_mb,
+                            cpu=None if cpu_limit is None else cpu_limit - used)
+            return replace(result.with_timings(write=write_s, translate=run.seconds), cpu=used + (result.cpu or 0.0))
     except (FastDownwardMissing, OSError) as exc:
         return PlanResult("error", (), name, str(exc))

@@ -47,8 +47,7 @@ CPU_LIMIT_FACTOR = 2
 
 def cpu_seconds() -> float:
     """CPU time (user + system) of this process and of the child processes it has waited for (planner runs)."""
-    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return time.process_time() + kids.ru_utime + kids.ru_stime
+    return time.process_time() + _children_cpu()
 
 
 @dataclass(frozen=True)
@@ -60,15 +59,23 @@ class ProcessRun:
     output: str
     seconds: float
     output_bytes: int = 0
+    #: CPU seconds (user + system) the run used, when measured (None: not known).
+    cpu: float | None = None
 
     @property
     def timed_out(self) -> bool:
         return self.returncode is None
 
 
-def cpu_limit(timeout: float | None) -> int | None:
-    """The RLIMIT_CPU (seconds) of a run with a (bounded) time limit: CPU_LIMIT_FACTOR times it, plus a second."""
-    return None if timeout is None else math.ceil(CPU_LIMIT_FACTOR * timeout) + 1
+def cpu_limit(timeout: float | None, cpu: float | None = None) -> int | None:
+    """The RLIMIT_CPU (seconds) of a run with a (bounded) time limit: CPU_LIMIT_FACTOR times it, plus a second;
+    with a CPU budget `cpu` (seconds), that budget rounded up (at least 1 s) when lower. A run past it gets
+    SIGXCPU (Fast Downward's components then report their time limit)."""
+    backstop = None if timeout is None else math.ceil(CPU_LIMIT_FACTOR * timeout) + 1
+    if cpu is None:
+        return backstop
+    budget = max(math.ceil(cpu), 1)
+    return budget if backstop is None else min(budget, backstop)
 
 
 def bounded_timeout(seconds: float | None) -> float | None:
@@ -106,9 +113,13 @@ def run_process(
     stdin_text: str | None = None,
     env: Mapping[str, str] | None = None,
     memory_limit_mb: int | None = None,
+    cpu: float | None = None,
 ) -> ProcessRun:
     """Run `cmd` (no shell) in `cwd`; at `timeout` seconds (None: no limit) kill it and everything it started.
 
+    `cpu`: a CPU budget (seconds, rounded up), the run's RLIMIT_CPU (`cpu_limit`): it bounds the work, where
+    `timeout` bounds the wall time a loaded machine stretches. `ProcessRun.cpu` is the CPU the run's reaped
+    processes used (this process's children's, before and after: a thread running others at once adds theirs).
     stdout and stderr are merged into `cwd/OUTPUT_FILE`; `output` holds at most
     HEAD_BYTES + TAIL_BYTES of it. Raises OSError when the command cannot start.
     """
@@ -120,14 +131,14 @@ def run_process(
         stdin_path = cwd / "planner-input.txt"
         stdin_path.write_text(stdin_text)
     log = cwd / OUTPUT_FILE
-    t0 = time.perf_counter()
+    t0, cpu0 = time.perf_counter(), _children_cpu()
     proc: subprocess.Popen | None = None
     code: int | None = None
     try:
         # Not under signals_deferred (the child would inherit the blocked mask): an interrupt before
         # `proc` is bound is covered by the mark, which the child carries from its first instruction.
         # the CPU limit is a backstop should this process die uncleaned (SIGKILL): see CPU_LIMIT_FACTOR
-        argv = limited(cmd, cwd, run_env, cpu_limit(timeout), memory_limit_mb)
+        argv = limited(cmd, cwd, run_env, cpu_limit(timeout, cpu), memory_limit_mb)
         with open(log, "wb") as out, open(stdin_path or os.devnull, "rb") as stdin:
             proc = subprocess.Popen(argv, cwd=cwd, stdin=stdin, stdout=out, stderr=subprocess.STDOUT,
                                     env=run_env, start_new_session=True)
@@ -140,18 +151,25 @@ def run_process(
             _end(proc, token)
     seconds = time.perf_counter() - t0
     output, size = read_capped(log)
-    return ProcessRun(code, output, seconds, size)
+    return ProcessRun(code, output, seconds, size, _children_cpu() - cpu0)
+
+
+def _children_cpu() -> float:
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return kids.ru_utime + kids.ru_stime
 
 
 #: Sets the limits given as $1 (CPU seconds) and $2 (address space, KiB; "-" for none), then execs the rest.
-#: A limit above the inherited hard limit cannot be set: the inherited (lower) one stays, as with prlimit.
-_LIMIT_SCRIPT = ('[ "$1" = - ] || ulimit -t "$1" 2>/dev/null; [ "$2" = - ] || ulimit -v "$2" 2>/dev/null; '
-                 'shift 2; exec "$@"')
+#: A limit above the inherited hard limit cannot be set: the inherited (lower) one stays, as with prlimit. The CPU
+#: limit's hard limit is a second past the soft one, as Fast Downward's driver sets it: at the soft limit the
+#: planner gets SIGXCPU and reports its time limit (at an equal hard limit Linux sends SIGKILL instead).
+_LIMIT_SCRIPT = ('[ "$1" = - ] || { ulimit -S -t "$1" && ulimit -H -t "$(($1 + 1))"; } 2>/dev/null; '
+                 '[ "$2" = - ] || ulimit -v "$2" 2>/dev/null; shift 2; exec "$@"')
 
 
 def limited(cmd: Sequence[str], cwd: Path, env: Mapping[str, str], cpu_limit: int | None,
             memory_limit_mb: int | None) -> list[str]:
-    """`cmd` run with RLIMIT_CPU = `cpu_limit` and RLIMIT_AS = `memory_limit_mb` (soft = hard) from its
+    """`cmd` run with RLIMIT_CPU = `cpu_limit` (soft; hard a second later) and RLIMIT_AS = `memory_limit_mb` from its
     first instruction: `/bin/sh -c _LIMIT_SCRIPT` execs it (same pid, argv and environment). `cmd` itself
     when there is no limit to set.
 

@@ -36,7 +36,9 @@ class PlanRequest:
 
     `name` is the planner name asked for (a UP engine entry serves many names);
     `command` the external command when one is given; `search` a Fast Downward
-    `fd.SearchConfig` (None: the default for `optimal`).
+    `fd.SearchConfig` (None: the default for `optimal`); `cpu_limit` the CPU seconds the planner's processes may
+    use besides the wall-clock `time_limit` (a planner that cannot bound CPU takes it as a wall-clock limit:
+    `wall_limit`).
     """
 
     task: PlanningTask
@@ -47,6 +49,14 @@ class PlanRequest:
     time_limit: float | None = None
     search: Any = None
     command: str | None = None
+    cpu_limit: float | None = None
+
+    @property
+    def wall_limit(self) -> float | None:
+        """The time limit of a planner that cannot bound CPU time: the shorter of `time_limit` and `cpu_limit`
+        (a one-thread planner's CPU time never runs ahead of the wall clock)."""
+        limits = [x for x in (self.time_limit, self.cpu_limit) if x is not None]
+        return min(limits) if limits else None
 
 
 @dataclass(frozen=True)
@@ -76,7 +86,7 @@ def _fd_solve(request: PlanRequest) -> PlanResult:
         config = fd.optimal_config(request.task)
     return fd.solve(request.domain_text, request.problem_text, optimal=request.optimal,
                     time_limit=request.time_limit, translate_options=fd.translate_options_for(request.task),
-                    config=config)
+                    config=config, cpu_limit=request.cpu_limit)
 
 
 def _fd_translate_once(task: PlanningTask, *, optimal: bool = False, time_limit: float | None = None,
@@ -96,7 +106,7 @@ def _command_solve(request: PlanRequest) -> PlanResult:
     from . import external
 
     return external.solve(request.command or "", request.domain_text, request.problem_text,
-                          time_limit=request.time_limit)
+                          time_limit=request.wall_limit)
 
 
 def _command_check(command: str) -> None:
@@ -115,7 +125,7 @@ class UnknownPlanner(UsageError):
 def _up_solve(request: PlanRequest) -> PlanResult:
     from . import up_engine
 
-    return up_engine.solve(request.task, request.name, optimal=request.optimal, time_limit=request.time_limit)
+    return up_engine.solve(request.task, request.name, optimal=request.optimal, time_limit=request.wall_limit)
 
 
 def _up_check(name: str) -> None:

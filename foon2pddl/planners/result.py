@@ -26,6 +26,8 @@ class PlanResult:
     planner: str = ""
     message: str = ""
     timings: dict[str, float] = field(default_factory=dict, compare=False, hash=False)
+    #: CPU seconds the planner's processes used, when measured (Fast Downward's; None otherwise).
+    cpu: float | None = field(default=None, compare=False, hash=False)
 
     def __post_init__(self) -> None:
         # Accept the plain strings too (`PlanStatus("solved")`); anything else is a bug.

@@ -51,7 +51,9 @@ EXCLUDED = "constraints"
 UNREACHED = "holder reachability"
 
 #: The time limit (s) of a plan with fewer objects than a plan to fall back on: `plan_restoring`'s second plan, and
-#: `plan`'s task counted small (or the caller's, when shorter).
+#: `plan`'s task counted small (or the caller's, when shorter), there in CPU seconds of the planner's processes (a
+#: loaded machine stretches their wall time: at load 4-5 the odd-index universal FOON's chocolate cake took 18 s of
+#: wall time to translate its small task, 7 s of CPU, and was planned wide, 40 s).
 RETRY_SECONDS = 10.0
 #: The least time a second plan gets when the first used up the limit (so a call ends at most this much late).
 MIN_REST = 1.0
@@ -158,12 +160,13 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     an action whose parameters multiply is split into a chain of small parts (`pddl.split_actions`, not with
     `optimal`), joined back into the one action in the plan. The outcome keeps the task as compiled.
     A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
-    valid plan within `RETRY_SECONDS` (the `time_limit` when shorter), the task counted wide is planned within
-    what is left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'.
-    Each is planned first (not with `optimal`) with only the actions of the units of the plan its objects are counted
-    from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach,
-    for any cause), within half its limit (`RETRY_SECONDS` with none), then whole within what is left (at least
-    `MIN_REST`).
+    valid plan within `RETRY_SECONDS` of the planner's CPU time (the `time_limit` when shorter; planners that
+    cannot bound CPU take it as wall time, `PlanRequest.wall_limit`) and `time_limit` of wall time, the task
+    counted wide is planned within what is left of `time_limit` (at least `MIN_REST`), and a note says so; the
+    timings are then both plans'. Each is planned first (not with `optimal`) with only the actions of the units of
+    the plan its objects are counted from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out
+    and its goal is in holder reach, for any cause), within half its limits (`RETRY_SECONDS` of wall time with
+    none), then whole within what is left (at least `MIN_REST`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -180,7 +183,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         finally:
             _add(timings, "encode", time.perf_counter() - t0)
 
-    def planned(task: Compiled, limit: float | None) -> PlanOutcome:
+    def planned(task: Compiled, limit: float | None, cpu: float | None = None) -> PlanOutcome:
         t0 = time.perf_counter()
         smaller = drop_unbindable(task.task)  # what the planner would ground to nothing (the lanes' work)
         smaller, unreached = drop_unreachable(smaller)  # what no reachable state applies (holder and content states)
@@ -195,13 +198,17 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         _add(timings, "write", time.perf_counter() - t0)
         if first is not None:
             started = _now()
-            out = searched(task, first, limit / 2 if limit is not None else RETRY_SECONDS)
+            half = limit / 2 if limit is not None else None if cpu is not None else RETRY_SECONDS
+            out = searched(task, first, half, None if cpu is None else cpu / 2)
             if out.status == PlanStatus.SOLVED:
                 return out
-            limit = None if limit is None else max(limit - (_now() - started), MIN_REST)
-        return searched(task, smaller, limit)
+            took = _now() - started
+            limit = None if limit is None else max(limit - took, MIN_REST)
+            # the CPU it used (its wall time, which bounds it, from a planner that does not say)
+            cpu = None if cpu is None else max(cpu - (took if out.result.cpu is None else out.result.cpu), MIN_REST)
+        return searched(task, smaller, limit, cpu)
 
-    def searched(task: Compiled, smaller: PlanningTask, limit: float | None) -> PlanOutcome:
+    def searched(task: Compiled, smaller: PlanningTask, limit: float | None, cpu: float | None) -> PlanOutcome:
         t0 = time.perf_counter()
         chains = Split(smaller)
         if smaller.encoding == "relational":
@@ -211,7 +218,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         domain_text, problem_text = render(smaller)
         _add(timings, "write", time.perf_counter() - t0)
         result = run_planner(smaller, domain_text, problem_text, planner=planner, planner_cmd=planner_cmd,
-                             optimal=optimal, time_limit=limit, search=search)
+                             optimal=optimal, time_limit=limit, search=search, cpu_limit=cpu)
         result = replace(result, plan=chains.join(result.plan))
         return _finish(result, task, goal, kitchen.project(level).nodes, timings, up_validate)
 
@@ -229,12 +236,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
         return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
 
-    outs = _first_solved(lambda: planned(small, short), lambda: planned(compiled(False), rest()))
+    outs = _first_solved(lambda: planned(small, time_limit, short), lambda: planned(compiled(False), rest()))
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {len(small.task.instances)} objects counted small gave no valid plan within "
-                           f"{short:g} s ({outs[0].status}): planned with the {len(outs[1].task.instances)} FOON's "
-                           "plan unfolded counts")
+                           f"{short:g} s of CPU ({outs[0].status}): planned with the {len(outs[1].task.instances)} "
+                           "FOON's plan unfolded counts")
 
 
 def _add(timings: dict[str, float], phase: str, seconds: float) -> None:

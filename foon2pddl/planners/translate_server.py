@@ -9,8 +9,8 @@ every task still gets a pristine translator (its module-level options and counte
 modules it would import only while running are imported by the server too (`LATE_IMPORTS`).
 
 Protocol, one JSON object a line: a request `{"args": [...], "cwd": DIR, "memory_mb": N|null, "cpu_s": N|null}`
-on stdin; the reply `{"pid": P}` as soon as the child runs, then `{"code": C}` when it ends
-(C as `subprocess` reports it: the exit status, or minus the signal that killed it). The
+on stdin; the reply `{"pid": P}` as soon as the child runs, then `{"code": C, "cpu": S}` when it ends
+(C as `subprocess` reports it: the exit status, or minus the signal that killed it; S the child's CPU seconds). The
 child runs in its own session (the caller kills its process group at a time limit), with its
 output in `DIR/planner-output.log`, and exits with the codes `python -m fast_downward.translate`
 uses (20 out of memory, 21 out of time, 31 input error, 1 on any other exception).
@@ -49,8 +49,8 @@ def _child(request: dict) -> int:
         limit = int(request["memory_mb"]) * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     if request.get("cpu_s"):  # ends the child should its caller die first: the server ends with it, this child not
-        limit = int(request["cpu_s"])
-        resource.setrlimit(resource.RLIMIT_CPU, (limit, limit))
+        limit = int(request["cpu_s"])  # soft; SIGXCPU there is the time limit below, the hard limit a second on
+        resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
     sys.argv = ["translate", *request["args"]]
     from fast_downward.translate import pddl_parser
     from fast_downward.translate.main import main
@@ -116,8 +116,9 @@ def serve() -> None:
             finally:
                 _finish(code)
         print(json.dumps({"pid": pid}), flush=True)
-        _, status = os.waitpid(pid, 0)
-        print(json.dumps({"code": os.waitstatus_to_exitcode(status)}), flush=True)
+        _, status, usage = os.wait4(pid, 0)
+        print(json.dumps({"code": os.waitstatus_to_exitcode(status), "cpu": usage.ru_utime + usage.ru_stime}),
+              flush=True)
 
 
 if __name__ == "__main__":

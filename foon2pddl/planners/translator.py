@@ -85,13 +85,14 @@ def enabled() -> bool:
 
 
 def run(args: Sequence[str], cwd: Path, timeout: float | None, bin_dir: Path,
-        memory_limit_mb: int | None = None) -> ProcessRun | None:
+        memory_limit_mb: int | None = None, cpu: float | None = None) -> ProcessRun | None:
     """Translate with the warm server (`args` as for `python -m fast_downward.translate`), or None
-    when it is switched off, busy or cannot start (then the caller runs a fresh translator)."""
+    when it is switched off, busy or cannot start (then the caller runs a fresh translator). `cpu`: a CPU budget,
+    as `process.run_process` takes it; the run's `cpu` is the child's own (the server reaps it)."""
     if not enabled() or not _LOCK.acquire(blocking=False):
         return None
     try:
-        return _run_locked(list(args), cwd, timeout, bin_dir, memory_limit_mb)
+        return _run_locked(list(args), cwd, timeout, bin_dir, memory_limit_mb, cpu)
     finally:
         _LOCK.release()
 
@@ -113,7 +114,7 @@ def prestart(bin_dir: Path) -> None:
 
 
 def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path,
-                memory_limit_mb: int | None) -> ProcessRun | None:
+                memory_limit_mb: int | None, cpu: float | None) -> ProcessRun | None:
     global _server
     timeout = bounded_timeout(timeout)
     t0 = time.perf_counter()
@@ -121,7 +122,7 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
         if _server is None or not _server.usable():
             _drop()
             _server = _Server(bin_dir)
-        request = {"args": args, "cwd": str(cwd), "memory_mb": memory_limit_mb, "cpu_s": cpu_limit(timeout)}
+        request = {"args": args, "cwd": str(cwd), "memory_mb": memory_limit_mb, "cpu_s": cpu_limit(timeout, cpu)}
         _server.proc.stdin.write((json.dumps(request) + "\n").encode())
         _server.proc.stdin.flush()
         started = _server.reply(None)
@@ -131,11 +132,12 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
     pid = started["pid"]
     deadline = None if timeout is None else time.monotonic() + timeout
     code: int | None = None
+    used: float | None = None
     finished = False
     try:
         done = _server.reply(deadline)
         if done is not None:
-            code, finished = done["code"], True
+            code, used, finished = done["code"], done.get("cpu"), True
     except (OSError, EOFError, ValueError):
         code, finished = -signal.SIGKILL, True  # the server died with its child: report a killed run
         _drop()
@@ -148,7 +150,7 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
             _settle()
     seconds = time.perf_counter() - t0
     output, size = read_capped(cwd / OUTPUT_FILE)
-    return ProcessRun(code, output, seconds, size)
+    return ProcessRun(code, output, seconds, size, used)
 
 
 def _settle() -> None:
