@@ -36,3 +36,21 @@ def test_a_vessel_named_for_the_food_it_holds_is_still_that_vessel(cook):
     for a, b in [("pot", "urn"), ("coffeepot", "pot"), ("milk can", "tin can"), ("iced-tea spoon", "teaspoon"),
                  ("spoon", "tea maker"), ("cooker", "rice cooker"), ("meat grinder", "grinder")]:
         assert cook.explain(a, b).rejected == "purpose", (a, b, cook.explain(a, b))
+
+
+def test_a_filed_food_class_whose_kinds_go_by_names_of_their_own_is_no_food(cook):
+    """Rule 8: a label filed by its nearest WordNet member whose food sense has at least 5 WordNet kinds, fewer than
+    10 % of them named or defined after it (`classes.food_class`: citrus 1 of 19, brew 1 of 25), names a class and
+    stands with none of its kinds; a filed generic whose kinds carry its name stands (bean~black bean, beer~pale ale,
+    whiskey~corn whiskey), as do a label filed by its head (salad green, a green: ~lettuce) and labels of the
+    category index (sweetener~sugar: the hand-made categories judge them)."""
+    from foon2pddl.generalize.classes import food_class
+
+    assert food_class(cook.reader, "citrus.n.01") and food_class(cook.reader, "brew.n.01")
+    assert not food_class(cook.reader, "bean.n.01") and not food_class(cook.reader, "friedcake.n.01")
+    for a, b in [("citrus", "lemon"), ("citrus", "orange"), ("brew", "ale"), ("brew", "spruce beer")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "class", (a, b, e)
+    for a, b in [("bean", "black bean"), ("beer", "pale ale"), ("corn whiskey", "whiskey"), ("doughnut", "friedcake"),
+                 ("lettuce", "salad green"), ("sugar", "sweetener"), ("lemon", "lime")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

@@ -6,7 +6,8 @@ their own (oven, toaster, food processor), as a drinking vessel's (mug, tankard)
 saucer) do. A tool whose kinds are named after it is a thing, and does its kinds' job; a tool whose kinds are
 not is a class of tools with different jobs (`tool_class`). Counting also the kinds whose gloss's genus is the
 noun (penne: "pasta in short tubes"), a food noun most of whose kinds are named or defined after it is a staple,
-which rule 3's breadth limit does not reject with its kinds (`staple`: bread, pasta; not herb or sweetener).
+which rule 3's breadth limit does not reject with its kinds (`staple`: bread, pasta; not herb or sweetener); one
+fewer than 10 % of whose kinds are is a class of foods (`food_class`: citrus, brew), which rule 8 reads for filed labels.
 Cost: one hyponym closure per synset, cached.
 """
 
@@ -58,6 +59,15 @@ def staple(reader, name: str) -> bool:
     at least `STAPLE_SHARE` of them named after it or whose gloss's genus, among its first `GENUS_WORDS` words,
     is it (`named_kinds`: penne is "pasta in short tubes"; herb 10 %, sweetening 0 %)."""
     return kinds(reader, name) >= TOOL_CLASS_KINDS and named_kinds(reader, name, GENUS_WORDS) >= STAPLE_SHARE
+
+
+def food_class(reader, name: str) -> bool:
+    """Rule 8: whether food synset `name` is a class of foods, the converse of a staple: at least `TOOL_CLASS_KINDS`
+    kinds, fewer than `NAMED_SHARE` of them named after it or defined as it by their gloss's genus (`named_kinds`
+    with `GENUS_WORDS`: citrus, whose kinds are lemon, lime, orange; brew, whose kinds are ale and beer)."""
+    if reader.synset(name).lexname() != "noun.food" or kinds(reader, name) < TOOL_CLASS_KINDS:
+        return False
+    return named_kinds(reader, name, GENUS_WORDS) < NAMED_SHARE
 
 
 def tool_class(reader, found: Evidence) -> bool:

@@ -81,7 +81,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .classes import kinds, staple, tool_class
+from .classes import food_class, kinds, staple, tool_class
 from .extend import Assignment, file_labels
 from .senses import Overrides, Resolution, adjective, mixed_roles, parse_overrides, resolve, role_senses
 from .similarity import Evidence
@@ -137,7 +137,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food")
+         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -302,7 +302,9 @@ class CookSimilarity:
         if self.for_another_food(a, b, found):
             return "purpose"
         general = a if found.sense_a == found.ancestor else b
-        if found.sense_a != found.sense_b and self.kind_only(general) and kinds(self.reader, found.ancestor) >= CLASS_KINDS:
+        if found.sense_a != found.sense_b and self.kind_only(general) and (
+                kinds(self.reader, found.ancestor) >= CLASS_KINDS
+                or (self.filing(general).how == "wordnet" and food_class(self.reader, found.ancestor))):
             return "class"
         return ""
 
