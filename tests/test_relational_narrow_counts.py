@@ -110,3 +110,18 @@ def test_what_a_kitchen_container_lists_is_counted_small_from_where_it_starts_no
     assert "kitchen with water (in [measuring cup])" in small.narrowed
     outcome = clean_unit_plan(units, kitchen.nodes, pot)
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"] and len(outcome.task.instances) == 4
+
+
+def test_a_task_counted_small_keeps_the_contradictions_of_the_units_it_starts_after():
+    # 0086 (and the apple pie of the universal FOON's even half, issue 21's objects floor): counted small, the pie
+    # starts uncooked with `filling (in [apple pie])` in it, a node the fold at 0086-apple_turnover.txt:418 leads
+    # to while its pie lists filling, which the dish's list drops; the wide task reads that pair as FOON's own
+    # contradiction (not checked), the small one checked it and its plan, the wide one's 8 steps, did not validate:
+    # planned wide, 66 objects in the problem where `instances` has 41
+    foon, kitchen, goal = _dish("0086-apple_turnover.txt")
+    small = compile_goal(foon, kitchen, goal, "relational", narrow=True)
+    wide = compile_goal(foon, kitchen, goal, "relational")
+    assert ("apple pie", "filling") in wide.task.gaps and ("apple pie", "filling") in small.task.gaps
+    outcome = clean_dish_plan(DATA / "0086-apple_turnover.txt")
+    assert len(outcome.task.instances) == len(small.task.instances) and len(outcome.task.objects) < 10
+    assert not any("counted small gave no valid plan" in x for x in outcome.decoded.notes)

@@ -193,7 +193,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     told = [(kind, reported(x)) for kind, x in (("label mismatch", found), (UNHELD, unheld),
                                                 (AT_HAND, [(x.taker, x.describe()) for x in at_hand]))]
     notes, commented = ([f"{kind}: {m}" for kind, both in told for m in both[i]] for i in (0, 1))
-    pairs = {(c, x) for u in units for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
+    pairs = {(c, x) for u in (*units, *ob.beside) for c, x, _ in list_gaps(f.units[u])} | {(c, x) for c, x, _, _ in gaps}
     task = PlanningTask(
         domain="foon-relational", problem=table.name(f"make {goal.describe()}", key=("problem",)),
         encoding="relational", level=inp.level, predicates=tuple(predicates), actions=tuple(actions),

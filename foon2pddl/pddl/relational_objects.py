@@ -42,7 +42,10 @@ class TaskObjects:
     network's nodes the kitchen implies objects start in (`implied`: the completion's holders, the nodes counted
     small from), the task's `nodes`, the `kitchen` the counts are derived in, the note when counted small, and
     the notes on the kitchen's reading in `:init` (`init_notes`: where the completion's holders start,
-    `relational_init.started_notes`, and kitchen nodes read as placed in a kitchen container)."""
+    `relational_init.started_notes`, and kitchen nodes read as placed in a kitchen container); counted small, the
+    units the wide count reads that this one does not (`beside`): the small task starts where they lead, so the pairs
+    FOON contradicts itself about in them (`holders.list_gaps`) are its own too (0086's pie starts with the filling
+    the fold at `0086-apple_turnover.txt:418` puts in it, which the dish's list drops)."""
 
     reading: Reading
     table: NameTable
@@ -54,6 +57,7 @@ class TaskObjects:
     kitchen: frozenset[ObjectNode]
     narrowed: str = ""
     init_notes: tuple[tuple[FunctionalUnit, str], ...] = ()  # (unit, note) on the kitchen's reading in :init
+    beside: tuple[int, ...] = ()
 
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
@@ -71,7 +75,8 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(started))
-    return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), narrowed=(
+    beside = tuple(u for u in wide.reading.units if u not in small.reading.units)
+    return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), beside=beside, narrowed=(
         "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the objects its "
                                                        "nodes imply start" if more else "")
         + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
