@@ -54,3 +54,18 @@ def test_a_filed_food_class_whose_kinds_go_by_names_of_their_own_is_no_food(cook
     for a, b in [("bean", "black bean"), ("beer", "pale ale"), ("corn whiskey", "whiskey"), ("doughnut", "friedcake"),
                  ("lettuce", "salad green"), ("sugar", "sweetener"), ("lemon", "lime")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_staple_is_a_starch_not_a_flavorer_or_a_bake(cook):
+    """Rule 3's exemption: bread (a bake WordNet also files as a starch) and pasta stand with their kinds; a sauce,
+    a flavorer whose kinds are its flavours as a herb's are, and a cake, a bake whose kinds are its variants, do not
+    (sauce~gravy, cake~cheesecake are rejected as broad, as herb~basil is)."""
+    from foon2pddl.generalize.classes import staple
+
+    assert staple(cook.reader, "bread.n.01") and staple(cook.reader, "pasta.n.02") and staple(cook.reader, "mix.n.01")
+    assert not staple(cook.reader, "sauce.n.01") and not staple(cook.reader, "cake.n.03")
+    for a, b in [("sauce", "gravy"), ("cake", "cheesecake"), ("herb", "basil")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "broad", (a, b, e)
+    for a, b in [("bread", "loaf"), ("pasta", "penne")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

@@ -26,6 +26,10 @@ TOOL_CLASS_KINDS, NAMED_SHARE = 5, 0.1
 #: it or defined as it by their gloss's first `GENUS_WORDS` words, is a staple (bread 35 %, pasta 50 %).
 STAPLE_SHARE, GENUS_WORDS = 0.3, 2
 
+#: Rule 3's exemption is for a starch a meal is built on: no flavorer (a sauce's kinds are its flavours, as a herb's
+#: are), no dish and no bake (their kinds are variants, rule 4) unless WordNet also files it as a starch (bread).
+NOT_STAPLES, STARCH = frozenset({"flavorer.n.01", "dish.n.02", "baked_goods.n.01"}), "starches.n.01"
+
 _WORD = re.compile(r"[a-z]+")
 
 
@@ -57,7 +61,11 @@ def named_kinds(reader, name: str, gloss_words: int = 0) -> float:
 def staple(reader, name: str) -> bool:
     """Whether synset `name` is a staple, not a class (rule 3's exemption): at least `TOOL_CLASS_KINDS` kinds,
     at least `STAPLE_SHARE` of them named after it or whose gloss's genus, among its first `GENUS_WORDS` words,
-    is it (`named_kinds`: penne is "pasta in short tubes"; herb 10 %, sweetening 0 %)."""
+    is it (`named_kinds`: penne is "pasta in short tubes"; herb 10 %, sweetening 0 %), and under none of
+    `NOT_STAPLES` unless a `STARCH` (sauce, a flavorer, and cake, a bake, are no staples; bread is)."""
+    above = {x.name() for x in reader.synset(name).closure(lambda s: s.hypernyms())} | {name}
+    if above & NOT_STAPLES and STARCH not in above:
+        return False
     return kinds(reader, name) >= TOOL_CLASS_KINDS and named_kinds(reader, name, GENUS_WORDS) >= STAPLE_SHARE
 
 

@@ -22,7 +22,7 @@ head nouns and modifiers, `similarity.py`) and changes nine things:
    many kinds of one thing it happens to hold (a matrix of fourteen bottles does not make
    `bottle.n.01` broad). A staple (`staple`: bread, pasta, whose WordNet kinds are mostly
    named or defined after them, `classes.staple`) is never broad with its kinds, unless it is
-   a dish (`DISH`: its kinds are variants) or a compound known by its head.
+   a dish, a bake or a flavorer (`classes.NOT_STAPLES`: sauce, cake) or a compound known by its head.
 
 4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
@@ -137,7 +137,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes")
+         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches")
 
 
 def kin(index: CategoryIndex, a: str, b: str, of: Callable[[str], tuple[str, ...]] | None = None) -> bool:
@@ -329,11 +329,11 @@ class CookSimilarity:
 
     def staple(self, sense: str, other: str, lcs: str, label: str) -> bool:
         """Rule 3's exemption: whether the kind pair `sense`~`other` (`lcs` one of them) has a generic that is a
-        staple, not a class: `label` (the generic's) a whole WordNet term, its sense no dish (`DISH`: a dish's
-        kinds are variants of it, rule 4) and `classes.staple` (bread, pasta)."""
+        staple, not a class: `label` (the generic's) a whole WordNet term and `classes.staple` (bread, pasta; no
+        dish, bake or flavorer: a dish's kinds are variants of it, rule 4)."""
         if lcs not in (sense, other) or self.resolution(label).modifier is not None:
             return False
-        return DISH not in self._wup.ancestors(lcs) and staple(self.reader, lcs)
+        return staple(self.reader, lcs)
 
     def _modifiers(self, a: str, b: str) -> Evidence:
         """The similarity of two modifiers (rules 1-4: a modifier is no object label, so no categories)."""
