@@ -149,3 +149,18 @@ def test_compiled_excerpt_matches_the_files(command, files, tmp_path, monkeypatc
             at = next((i for i in range(position, len(lines)) if matches(line, lines[i])), None)
             assert at is not None, f"documented line of {name} not in the file (in order): {line!r}"
             position = at + 1
+
+
+def test_what_the_generalization_page_says_a_cold_cache_prints_it_prints(monkeypatch, tmp_path):
+    """The page's transcripts are from a warm cache; a newcomer's first `--network exp` (and the hint check of a
+    first `retrieve --goal lemonade`) printed a line they do not show (stop 48's pass). The page says which, and
+    each command, run on an empty cache, prints the line the page quotes for it."""
+    text = " ".join((ROOT / "docs" / "generalization.md").read_text().split())
+    paragraph = text[text.index("The transcripts on this page are from a warm cache."):].split(". ", 1)[1]
+    quoted = re.findall(r"`(retrieve [^`]+)` (?:also )?prints `([^`]+ \.\.\.)`", paragraph[:1000])
+    assert [c for c, _ in quoted] == ["retrieve --goal lemonade", "retrieve --goal lemonade --network exp"], quoted
+    for k, (command, line) in enumerate(quoted):
+        monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / f"cold{k}"))
+        cold = CliRunner().invoke(main, shlex.split(command))
+        assert cold.exit_code in (0, 1), cold.stderr
+        assert line in cold.stderr.splitlines(), cold.stderr
