@@ -1,0 +1,88 @@
+"""`make install` says what it does (issue 24): `pip install -q` was silent for minutes (4 min 20 s wall, load 6-9,
+stop 49's pass), and plain pip prints hundreds of lines. `tools/pip_phases.py` runs pip with its output in a log
+file and says each phase on one line; the Makefile runs it, with a line per step of its own."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "tools" / "pip_phases.py"
+
+#: What pip prints for an editable install, shortened.
+PIP_OUTPUT = """Obtaining file:///work/foon2pddl
+  Installing build dependencies: started
+WARNING: Location 'file:///opt/x/' is ignored: it is neither a file nor a directory.
+Collecting click>=8
+  Downloading click-8.1.7-py3-none-any.whl (97 kB)
+Collecting jinja2>=3
+Requirement already satisfied: markupsafe in ./.venv/lib/python3.11/site-packages
+Building wheels for collected packages: foon2pddl
+  Building editable for foon2pddl (pyproject.toml): started
+Successfully built foon2pddl
+Installing collected packages: click, jinja2, foon2pddl
+Successfully installed click-8.1.7 foon2pddl-0.1 jinja2-3.1.4
+"""
+
+
+def fake_pip(tmp_path: Path, output: str, status: int = 0) -> list[str]:
+    """A command that prints `output` as pip would and exits with `status`."""
+    script = tmp_path / "pip_output.txt"
+    script.write_text(output)
+    return [sys.executable, "-c", f"import sys; sys.stdout.write(open({str(script)!r}).read()); sys.exit({status})"]
+
+
+def run_phases(tmp_path: Path, command: list[str]) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, str(SCRIPT), "--log", str(tmp_path / "pip.log"), *command],
+                          capture_output=True, text=True, timeout=60)
+
+
+def test_each_phase_of_pip_is_one_line_and_the_log_keeps_everything(tmp_path):
+    done = run_phases(tmp_path, fake_pip(tmp_path, PIP_OUTPUT))
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.splitlines() == [
+        "pip: preparing the project's build ...",
+        "pip: collecting the dependencies (downloading any not cached) ...",
+        "pip: building ...",
+        "pip: installing the packages into the environment (3 packages) ...",
+        "pip: done: 3 packages installed",
+    ]
+    assert done.stdout == ""
+    assert (tmp_path / "pip.log").read_text() == PIP_OUTPUT
+
+
+def test_a_failing_pip_shows_its_errors_and_its_exit_status(tmp_path):
+    failed = run_phases(tmp_path, fake_pip(tmp_path, "Collecting nosuch\nERROR: No matching distribution found "
+                                                     "for nosuch\n", status=1))
+    assert failed.returncode == 1
+    said = failed.stderr.splitlines()
+    assert said[:2] == ["pip: collecting the dependencies (downloading any not cached) ...",
+                        "pip: ERROR: No matching distribution found for nosuch"]
+    assert said[2] == f"pip failed (exit status 1); the end of its output ({tmp_path / 'pip.log'} has it all):"
+    assert said[3:] == ["  Collecting nosuch", "  ERROR: No matching distribution found for nosuch"]
+
+
+def test_a_long_phase_says_it_is_still_running(tmp_path, monkeypatch, capsys):
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pip_phases
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    monkeypatch.setattr(pip_phases, "TICK", 0.0)
+    slow = [sys.executable, "-c", "import time; print('Collecting click', flush=True); time.sleep(2.5)"]
+    assert pip_phases.main(["--log", str(tmp_path / "pip.log"), *slow]) == 0
+    said = capsys.readouterr().err.splitlines()
+    assert said[0] == "pip: collecting the dependencies (downloading any not cached) ..."
+    assert said[1].startswith("pip: still collecting the dependencies") and said[1].endswith(", 1 collected) ..."), said
+
+
+def test_make_install_says_each_step_and_runs_pip_through_the_phases():
+    recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
+    steps = recipe.splitlines()
+    said = [s for s in steps if s.startswith("\t@echo ")]
+    assert len(said) >= 4, recipe  # system packages, the environment, the packages, bytecode
+    pips = [s for s in steps if "pip install" in s]
+    assert pips and all("pip_phases.py" in s and " -q " not in s for s in pips), pips
