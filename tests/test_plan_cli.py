@@ -70,7 +70,7 @@ def test_planner_command_failures(cmd, code, word):
 def test_bad_input_exits_2_without_traceback():
     result = run("--goal", "no such dish", WHIPPED)
     assert result.exit_code == 2
-    assert "Error: unknown object label" in result.stderr and "Traceback" not in result.output
+    assert "Error: Invalid value for '--goal': unknown object label" in result.stderr and "Traceback" not in result.output
 
 
 def test_instances_encoding_does_not_tie_a_read_stove_to_the_pan_on_it(tmp_path):

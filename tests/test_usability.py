@@ -184,3 +184,18 @@ def test_unwritable_output_fails_before_planning(tmp_path, command):
     ok = tmp_path / "new" / "dir" / "tree.txt"
     assert run(*command, "-o", str(ok)).exit_code == 0 and ok.is_file()
 
+
+
+@pytest.mark.parametrize("command", ["retrieve", "plan", "compile"])
+@pytest.mark.parametrize(("goal", "problem"), [
+    ("onoin", "unknown object label 'onoin'; close matches: onion"),
+    ("onion: in [bowl", "unbalanced bracket in goal states ' in [bowl': 'onion: in [bowl'"),  # named before too
+    ("onion: boiled", "no produced 'onion' node is in states 'onion: boiled'"),
+])
+def test_a_goal_nothing_makes_is_a_usage_error_naming_the_option(tmp_path, command, goal, problem):
+    """README: a bad command-line value is 'a usage error naming the option'; `--goal onoin` said `Error: unknown
+    object label 'onoin'; ...` with no option (stop 49's pass), where `--time-limit nan` names its option."""
+    extra = ["-o", str(tmp_path / "out")] if command == "compile" else []
+    r = run(command, "--goal", goal, *extra)
+    assert r.exit_code == 2
+    assert f"Error: Invalid value for '--goal': {problem}" in r.stderr, r.stderr

@@ -281,19 +281,21 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
     """
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one of --goal and --goal-file")
+    from ..generalize.network import DEFAULT_NETWORK
     from ..io.inputs import goal_spec
     from ..model.goal import level_loss
-
-    spec = goal_spec(goal, goal_file)
-    loss = level_loss(spec, level)
-    if loss:
-        click.echo(f"warning: {loss}", err=True)
-    from ..generalize.network import DEFAULT_NETWORK
 
     ctx = click.get_current_context(silent=True)
     network = (ctx.params.get("network") if ctx is not None else None) or DEFAULT_NETWORK
     listing = "foon2pddl goals" + ("" if network == DEFAULT_NETWORK else f" --network {network}")
-    found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file, listing)
+    try:  # a goal that does not read or that nothing makes is a bad value of its option (README)
+        spec = goal_spec(goal, goal_file)
+        loss = level_loss(spec, level)
+        if loss:
+            click.echo(f"warning: {loss}", err=True)
+        found = lifted_goal(view, spec) if encoding == "gen-lifted" else view.goal(goal, goal_file, listing)
+    except UsageError as exc:
+        raise click.BadParameter(str(exc), param_hint="'--goal'" if goal is not None else "'--goal-file'") from None
     if found.preferred:
         click.echo("note: " + found.choice_note(asked=spec.label, network=view.name), err=True)
     return found
