@@ -199,3 +199,26 @@ def test_a_goal_nothing_makes_is_a_usage_error_naming_the_option(tmp_path, comma
     r = run(command, "--goal", goal, *extra)
     assert r.exit_code == 2
     assert f"Error: Invalid value for '--goal': {problem}" in r.stderr, r.stderr
+
+
+def test_goals_legend_counts_every_candidate_when_only_some_are_listed():
+    """`goals --reachable` said `reachable: 171 of 171 goal candidates can be made` (1853 of 1853 on the subgraphs),
+    counting only the rows it kept, where `goals` says 171 of 187 (stop 49's pass); `--dishes` counts dishes."""
+    every = run("goals").stdout.splitlines()[0]
+    assert every.startswith("reachable: 171 of 187 goal candidates can be made from ")
+    kept = run("goals", "--reachable")
+    assert kept.stdout.splitlines()[0].startswith("reachable: 171 of 187 goal candidates can be made from ")
+    assert "; only those are listed" in kept.stdout.splitlines()[0]
+    assert len(kept.stdout.splitlines()) == 2 + 171
+    dishes = run("goals", "--dishes").stdout.splitlines()[0]
+    assert dishes.startswith("reachable: 8 of 9 dishes can be made from "), dishes
+    both = run("goals", "--dishes", "--reachable", "--json")
+    data = json.loads(both.stdout)
+    assert (data["reachable"], data["total"], len(data["goals"])) == (8, 9, 8)
+
+
+@pytest.mark.parametrize("only", ["--dishes", "--reachable"])
+def test_goals_output_with_its_legend_pipes_into_retrieve(only):
+    listed = run("goals", only).stdout
+    r = CliRunner().invoke(main, ["retrieve", "--goals", "-"], input=listed)
+    assert "unmatched" not in r.stdout, r.stdout

@@ -26,11 +26,14 @@ def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
     return rows
 
 
-def format_rows(rows: list[dict], kitchen_source: str, network: str = DEFAULT_NETWORK) -> str:
-    """Text table: the legend and a column header first, then `yes      3  *    node` per goal."""
-    made = sum(r["reachable"] for r in rows)
+def format_rows(rows: list[dict], kitchen_source: str, network: str = DEFAULT_NETWORK,
+                counted: tuple[int, int, str] | None = None) -> str:
+    """Text table: the legend and a column header first, then `yes      3  *    node` per goal. The legend counts
+    `counted` (made, of how many, what: `goal candidates`, `dishes`) when the rows are only the reachable ones."""
+    made, total, what = counted or (sum(r["reachable"] for r in rows), len(rows), "goal candidates")
     net = "" if NETWORKS[network].as_read else f" on FOON-{NETWORKS[network].label}"
-    lines = [f"reachable: {made} of {len(rows)} goal candidates can be made from {kitchen_source}{net} "
+    listed = "; only those are listed" if counted and len(rows) < total else ""
+    lines = [f"reachable: {made} of {total} {what} can be made from {kitchen_source}{net}{listed} "
              "(round = sequential steps needed; * = a recipe's dish)",
              f"{'made':<5}{'round':>5}  {'dish':<5}goal"]
     lines += [f"{'yes' if r['reachable'] else 'no':<5}{'' if r['round'] is None else r['round']:>5}  "
@@ -56,14 +59,15 @@ def goals(paths, kitchen, level, network, as_json, only_reachable, only_dishes, 
     _, view = load_view(paths, kitchen, level, network)
     foon, kit = view.foon, view.kitchen
     rows = goal_rows(foon, reachable(foon, kit.nodes))
-    if only_reachable:
-        rows = [r for r in rows if r["reachable"]]
     if only_dishes:
         rows = [r for r in rows if r["dish"]]
+    counted = (sum(r["reachable"] for r in rows), len(rows), "dishes" if only_dishes else "goal candidates")
+    if only_reachable:  # the legend still counts every candidate (or dish)
+        rows = [r for r in rows if r["reachable"]]
     source = shown_path(kit.source) if kit.source else "the kitchen"  # the embedded one by its path in the package
     if as_json:
         data = {"level": level, "network": network, "kitchen": source,
-                "reachable": sum(r["reachable"] for r in rows), "total": len(rows), "goals": rows}
+                "reachable": counted[0], "total": counted[1], "goals": rows}
         emit(json.dumps(data, indent=2, ensure_ascii=False) + "\n", output)
     else:
-        emit(format_rows(rows, source, network), output)
+        emit(format_rows(rows, source, network, counted), output)

@@ -31,7 +31,7 @@ from .parser import read_text
 #: A row of the `goals` text table: made (5 columns), round (5), 2 spaces, dish mark (5), node.
 _TABLE_ROW = re.compile(r"^(?:yes  |no   )[ \d]{5}  [* ] {4}(?P<node>\S.*)$")
 #: The summary and header lines of the `goals` table.
-_TABLE_OTHER = re.compile(r"^(?:reachable: \d+ of \d+ goal candidates|made\s+round\s+dish\s+goal$)")
+_TABLE_OTHER = re.compile(r"^(?:reachable: \d+ of \d+ (?:goal candidates|dishes) |made\s+round\s+dish\s+goal$)")
 
 
 @dataclass(frozen=True)
