@@ -83,7 +83,7 @@ def test_each_command_invocation_starts_its_own_budget(monkeypatch):
 @pytest.mark.parametrize(("args", "said"), [
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("retrieve", "--goal", "lemonade"), "checking whether FOON-EXP can make it: computing its WordNet similarity"),
-    (("expand",), "expanding 101 units onto similar objects"),
+    (("expand",), "opening WordNet for the similarities of 66 labels (once, then cached)"),
 ], ids=["build FOON-EXP", "hint check", "expand"])
 def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, said):
     """With an empty cache, FOON-EXP's WordNet matrix takes seconds: the step says so when it starts, not
@@ -113,8 +113,7 @@ def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
 
 @pytest.mark.parametrize(("args", "said"), [
     (("similarity", "cilantro", "banana"), "comparing 2 labels in WordNet (cook similarity) ..."),
-    (("expand", "--pairs"), "expanding 101 units onto similar objects: computing the WordNet similarities of 66 labels "
-                            "(once, then cached) ..."),
+    (("expand", "--pairs"), "expanding 101 units onto similar objects: units 1-101 ..."),
     (("expand", "--pairs"), "listing the "),  # with the matrix cached, WordNet opens here
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("plan", "--goal", "whipped cream", "--encoding", "tree", "--planner", "pyperplan"),
@@ -397,3 +396,40 @@ def test_a_warm_exp_retrieval_scores_its_substitutions_without_opening_wordnet(m
     again = run(*args)
     assert again.exit_code == 0, again.stderr
     assert [line for line in again.stderr.splitlines() if line.startswith("substitution: ")] == said
+
+
+def test_the_similarity_matrix_is_computed_in_a_series_of_steps(monkeypatch):
+    """`expand tests/data/foon-subgraphs` on an empty cache said `expanding ... (WordNet similarities: once, then
+    cached) ...` and nothing for 88.5 s (load 6-9): the matrix's 117,000 pairs. They are computed in shares of
+    rows of about SHARE_PAIRS pairs, each a step of one series; every pair is computed once, as before."""
+    from contextlib import contextmanager
+
+    from foon2pddl.generalize import similarity
+
+    monkeypatch.setattr(similarity, "SHARE_PAIRS", 10)
+    said = []
+
+    @contextmanager
+    def step(what, *, series=None):
+        said.append((what, series))
+        yield
+
+    labels = tuple(f"l{i:02d}" for i in range(12))
+    m = similarity.compute_matrix(labels, lambda a, b: int(a[1:]) * int(b[1:]) / 1000, step=step)
+    assert all(m(a, b) == int(a[1:]) * int(b[1:]) / 1000 for a in labels for b in labels if a != b)
+    assert {series for _, series in said} == {"WordNet similarities of 12 labels"}
+    assert [what.rsplit(": rows ", 1)[1] for what, _ in said] == [
+        "1-1 of 12", "2-2 of 12", "3-4 of 12", "5-6 of 12", "7-9 of 12", "10-12 of 12"]
+
+
+def test_a_cold_expand_says_it_opens_wordnet_and_how_far_the_matrix_is(every_step_speaks, monkeypatch, tmp_path):
+    from foon2pddl.generalize import similarity
+
+    monkeypatch.setattr(similarity, "SHARE_PAIRS", 1000)
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cold"))
+    r = run("expand")
+    assert r.exit_code == 0, r.stderr
+    lines = r.stderr.splitlines()
+    assert "opening WordNet for the similarities of 66 labels (once, then cached) ..." in lines
+    rows = [line for line in lines if line.startswith("WordNet similarities of 66 labels (once, then cached): rows ")]
+    assert len(rows) == 3 and rows[0].endswith(": rows 1-18 of 66 ...") and rows[-1].endswith(" of 66 ..."), rows

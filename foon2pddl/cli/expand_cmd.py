@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import click
 
 from . import main
@@ -51,10 +53,8 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     kit = load_kitchen(kitchen, net, 3)
     extra = load_overrides(overrides)
     labels = vocabulary(net.foon, kit)
-    cold = not mode_matrix_is_cached(labels, similarity, extra)  # seconds: said at once
-    with slow_step(f"expanding {len(net.foon.units):,} units onto similar objects: computing the WordNet "
-                   f"similarities of {len(labels):,} labels (once, then cached)", after=0 if cold else None):
-        matrix = mode_matrix(labels, similarity, extra=extra)
+    cold = not mode_matrix_is_cached(labels, similarity, extra)  # seconds to minutes: each step said at once
+    matrix = mode_matrix(labels, similarity, extra=extra, step=functools.partial(slow_step, after=0) if cold else slow_step)
     e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity,
                step=slow_step)  # says how far it is
     if as_pairs:

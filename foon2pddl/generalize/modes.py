@@ -15,6 +15,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from ..errors import UsageError
+from ..io.steps import Step, silent_step
 from ..model.foon import normalize_label
 from .cache import cache_dir
 from .senses import Overrides, shipped_overrides
@@ -81,13 +82,16 @@ def _key(labels: tuple[str, ...], mode: str, extra: Overrides | None) -> str:
 
 
 def mode_matrix(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, *, cache: bool = True,
-                extra: Overrides | None = None) -> SimilarityMatrix:
-    """The similarity matrix of `mode` over `vocabulary` (disk-cached; a hit opens no WordNet)."""
+                extra: Overrides | None = None, step: Step = silent_step) -> SimilarityMatrix:
+    """The similarity matrix of `mode` over `vocabulary` (disk-cached; a hit opens no WordNet); a miss
+    opens WordNet and computes the pairs in `step`s (`similarity.compute_matrix`)."""
     labels = _labels(vocabulary)
     found = cached_matrix(labels, _key(labels, mode, extra)) if cache else None
     if found is not None:
         return found
-    return similarity_matrix(labels, cache=cache, sim=make_similarity(mode, extra=extra))
+    with step(f"opening WordNet for the similarities of {len(labels):,} labels (once, then cached)"):
+        sim = make_similarity(mode, extra=extra)
+    return similarity_matrix(labels, cache=cache, sim=sim, step=step)
 
 
 def mode_matrix_is_cached(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, extra: Overrides | None = None) -> bool:

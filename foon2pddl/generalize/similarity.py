@@ -23,6 +23,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ..io.atomic import atomic_write
+from ..io.steps import Step, silent_step
 from ..model.foon import normalize_label
 from . import wordnet
 from .cache import cache_dir, digest
@@ -30,6 +31,8 @@ from .senses import Overrides, Resolution, resolve, shipped_overrides
 
 #: Bump when the similarity rule changes, so cached matrices are recomputed.
 CODE_VERSION = "1"
+#: Label pairs compared in one step of `compute_matrix` (a few seconds at most under load).
+SHARE_PAIRS = 4096
 
 
 @dataclass(frozen=True)
@@ -174,15 +177,26 @@ def matrix_key(labels: tuple[str, ...], overrides_text: str, tag: str = "") -> s
     return digest(*parts, tag) if tag else digest(*parts)
 
 
-def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "") -> SimilarityMatrix:
-    """All pairs of `labels` (sorted, distinct)."""
+def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "",
+                   step: Step = silent_step) -> SimilarityMatrix:
+    """All pairs of `labels` (sorted, distinct), in steps of rows of about `SHARE_PAIRS` pairs each (a series:
+    484 labels are 117,000 pairs, a minute under load). O(n^2) similarities."""
     import numpy as np
 
     n = len(labels)
     values = np.eye(n, dtype=np.float64)
-    for i in range(n):
-        for j in range(i + 1, n):
-            values[i, j] = values[j, i] = sim(labels[i], labels[j])
+    first = 0
+    while first < n:
+        last, pairs = first, 0
+        while last < n and pairs < SHARE_PAIRS:
+            pairs += n - last - 1
+            last += 1
+        with step(f"WordNet similarities of {n:,} labels (once, then cached): rows {first + 1:,}-{last:,} of {n:,}",
+                  series=f"WordNet similarities of {n:,} labels"):
+            for i in range(first, last):
+                for j in range(i + 1, n):
+                    values[i, j] = values[j, i] = sim(labels[i], labels[j])
+        first = last
     return SimilarityMatrix(labels, values, key)
 
 
@@ -208,12 +222,12 @@ def cached_matrix(labels: tuple[str, ...], key: str) -> SimilarityMatrix | None:
 
 
 def similarity_matrix(
-    vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None
+    vocabulary: Iterable[str], *, cache: bool = True, sim: LabelSimilarity | None = None, step: Step = silent_step
 ) -> SimilarityMatrix:
     """The similarity matrix over `vocabulary` (labels normalized), from the disk cache when possible.
 
     `sim` (default: this module's rule, mode `paper`) may be any similarity with
-    `overrides` and `tag` (`modes.make_similarity`).
+    `overrides` and `tag` (`modes.make_similarity`); computing runs in `step`s (`compute_matrix`).
     """
     import numpy as np
 
@@ -223,7 +237,7 @@ def similarity_matrix(
     found = cached_matrix(labels, key) if cache else None
     if found is not None:
         return found
-    result = compute_matrix(labels, sim or LabelSimilarity(overrides=overrides), key)
+    result = compute_matrix(labels, sim or LabelSimilarity(overrides=overrides), key, step)
     if cache:
         buf = io.BytesIO()
         np.savez(buf, labels=np.array(labels, dtype=str), values=result.values)
