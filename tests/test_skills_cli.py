@@ -363,3 +363,16 @@ def test_a_failed_step_is_said_to_be_kept_abstract():
     assert ") is failed:" not in r.stderr
     assert ("0082-homemade_cheese_pizza.txt:394) failed to decompose, kept as an abstract step (the replay goes on "
             "from FOON's state after it): the step lists no tool to spread with") in r.stderr
+
+
+@pytest.mark.parametrize("args", [("--goal", "guacamole", "--without-skill", "pour"), ("--goal", "lemonade")],
+                         ids=["a robot without pour", "no lemon in the kitchen"])
+def test_no_second_encoding_is_tried_where_foons_semantics_cannot_make_the_goal(args):
+    """`plan --goal guacamole --skills --without-skill pour` said `note: the relational encoding found no plan
+    (unsolvable: translator: no relaxed solution); planning with the instances encoding ...`, then `unsolvable`
+    again (stop 49's pass): where FOON's semantics cannot make the goal, no encoding can; the reason is given at
+    once, from the first encoding's outcome."""
+    result = run(*args, "--skills")
+    assert result.exit_code == 1, result.output
+    assert "instances" not in result.stderr, result.stderr
+    assert "\nreason: " in "\n" + result.stderr, result.stderr

@@ -9,7 +9,8 @@ registered, else `instances`); its trace (`source.trace_of`) is decomposed
 
 When no encoding is asked for, the relational task gets `FIRST_SHARE` of the time limit and,
 should it end without a plan (time limit, a search that gave up, or `unsolvable`, which the
-incomplete relational encoding does not prove), the `instances` encoding plans with the rest:
+incomplete relational encoding does not prove) where FOON's semantics makes the goal (one fixpoint; where it
+does not, no encoding has a plan), the `instances` encoding plans with the rest:
 holders read from FOON's words rather than planned (the black bean dish of the merged shared
 subgraphs times out under `relational` and solves under `instances` in ~2 s). The outcome says so
 (`SkillOutcome.first`).
@@ -22,6 +23,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from ..analysis.constraints import removal
 from ..model.constraints import Constraints, combine
 from ..model.foon import Foon
 from ..model.goal import Goal
@@ -97,7 +99,8 @@ def plan_skills(foon: Foon, kitchen: Kitchen, goal: Goal, *, encoding: str | Non
     outcome = plan(foon, kitchen, goal, chosen, constraints=cons if cons else None,
                    time_limit=limit * FIRST_SHARE if fallback and finite else limit, **options)
     first = None
-    if fallback and outcome.status in _NO_PLAN and outcome.result.planner != EXCLUDED:
+    if fallback and outcome.status in _NO_PLAN and outcome.result.planner != EXCLUDED \
+            and removal(foon, cons).solvable(kitchen.nodes, goal):  # else no encoding has a plan: FOON's reason
         first = outcome
         if on_fallback is not None:
             on_fallback(first)
