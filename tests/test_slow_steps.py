@@ -172,6 +172,15 @@ def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_pa
     assert quiet.exit_code == 0 and " ..." not in quiet.stderr  # --no-progress: no line at all
 
 
+def test_the_experiment_says_it_stops_its_dask_workers(every_step_speaks, tmp_path):
+    """README's `experiment ... --jobs 2` went 2.3 s without a line after its bar reached 100 % (bench.silence,
+    load 15, stop 49's pass): the local cluster's workers were being stopped. That step says so."""
+    r = run("experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-greedy",
+            "--jobs", "2", "-o", tmp_path)
+    assert r.exit_code == 0, r.stderr
+    assert "stopping the 2 Dask workers ..." in r.stderr.splitlines(), r.stderr
+
+
 def test_a_resumed_experiment_says_it_builds_the_networks_for_its_report(every_step_speaks, tmp_path, monkeypatch):
     """Run again with every cell reused, the experiment ran no cell, so it built its networks only for the report's
     sizes table: 12 s with nothing on stderr between the drawing of the trials and the report (found by the

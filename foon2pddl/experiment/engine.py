@@ -32,8 +32,10 @@ import threading
 import time
 import uuid
 from collections.abc import Callable, Sequence
+from contextlib import nullcontext
 
 from ..errors import FoonError, MissingDependencyError, UsageError
+from ..io.steps import Step, silent_step
 from .progress import Progress
 from .records import CellStatus, Record
 from .worker import Batch, Job, dask_task, run_batch
@@ -214,9 +216,10 @@ class Liveness:
 
 
 def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress, *, jobs: int = 2,
-             scheduler: str | None = None, no_worker_limit: float = NO_WORKER_LIMIT) -> None:
+             scheduler: str | None = None, no_worker_limit: float = NO_WORKER_LIMIT, step: Step = silent_step) -> None:
     """Run the batches as Dask tasks; `sink` gets every record in this process as its task finishes.
-    Cells still pending when the cluster has had no live worker for `no_worker_limit` s are `lost`."""
+    Cells still pending when the cluster has had no live worker for `no_worker_limit` s are `lost`.
+    `step` wraps stopping a local cluster's workers (seconds under load: the command says so)."""
     from distributed import as_completed
 
     client, cluster = connect(jobs, scheduler)
@@ -256,10 +259,12 @@ def run_dask(batches: Sequence[Batch], job: Job, sink: Sink, progress: Progress,
                 client.cancel(list(futures), force=True)
             except Exception:  # noqa: BLE001 - closing anyway
                 pass
+        progress.close()  # the bar's line ends before the step's line (a terminal's bar is redrawn in place)
         try:
-            client.close()
-            if cluster is not None:
-                cluster.close()
+            with step(f"stopping the {jobs} Dask workers") if cluster is not None else nullcontext():
+                client.close()
+                if cluster is not None:
+                    cluster.close()
         finally:
             if cluster is not None:
                 close_local_clusters()

@@ -66,6 +66,7 @@ class Progress:
                  groups: Mapping[Hashable, int] | None = None) -> None:
         self.total = total
         self.done = 0
+        self.closed = False
         self.groups = {g: n for g, n in (groups or {}).items() if n > 0}
         self.done_in: Counter = Counter()  # group -> cells done
         self.work_in: Counter = Counter()  # group -> seconds of work of its cells done
@@ -156,6 +157,10 @@ class Progress:
             print(text, file=self.stream, flush=True)
 
     def close(self) -> None:
+        """End the bar (or print the last line); once: the Dask run ends it before stopping its workers."""
+        if self.closed:
+            return
+        self.closed = True
         if self.bar is not None:
             self._stop.set()
             self._ticker.join()

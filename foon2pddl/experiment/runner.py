@@ -257,9 +257,10 @@ def build_networks(config: Config, batches: list[Batch]) -> None:
 
 
 def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], None], progress: Progress,
-              settle: Callable[[], None] = lambda: None) -> None:
+              settle: Callable[[], None] = lambda: None, step: Step = silent_step) -> None:
     """Run `batches` here or on Dask, passing every record to `sink` in this process as it arrives; `settle`
-    (`collector.building`) is called before the first cell (a local run has built its networks by then)."""
+    (`collector.building`) is called before the first cell (a local run has built its networks by then);
+    `step` wraps the slow end of a Dask run (`engine.run_dask`)."""
     # Translations are shared through a private directory on this machine (fd-tree and fd-tree-opt translate
     # the same task; local workers see the directory, a remote cluster's may not).
     cache = tempfile.mkdtemp(prefix="foon2pddl-sas-") if config.scheduler is None else None
@@ -270,7 +271,7 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
             run_here(batches, job, sink, progress)
         else:
             run_dask(batches, job, sink, progress, jobs=config.jobs, scheduler=config.scheduler,
-                     no_worker_limit=config.no_worker_limit)
+                     no_worker_limit=config.no_worker_limit, step=step)
     finally:
         progress.close()
         if cache is not None:
@@ -344,7 +345,7 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
 
         try:
             with open_for_append(config.results_path) as fh:
-                run_cells(config, batches, sink, bar, settle)
+                run_cells(config, batches, sink, bar, settle, step)
         finally:
             running = time.perf_counter() - t_run
             log = {"cells": written[0], "planned": planned, "jobs": config.jobs, **code_version(),
