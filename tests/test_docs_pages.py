@@ -157,3 +157,29 @@ def test_extending_md_names_every_field_of_each_registry_entry(entry, section):
     body = page.split(f"## {section}\n", 1)[1].split("\n## ", 1)[0]
     said = set(re.findall(r"`(\w+)", body))
     assert [f for f in fields if f not in said and f not in ("name", "description")] == []
+
+
+def test_readme_names_the_example_kitchens_file():
+    """README said every command without PATHS uses "the embedded example network (`foon2pddl/data/example/`, ...)
+    and its kitchen": the kitchen is not in that directory and no page named its file, so a newcomer who wanted to
+    change it (a kitchen without a board, without the lime) looked for it in vain (stop 49's third newcomer pass).
+    README names the file the commands read."""
+    from foon2pddl.io.inputs import example_path
+
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    kitchen = example_path("example_kitchen.txt").resolve().relative_to(ROOT.resolve())
+    assert f"`{kitchen}`" in readme
+
+
+def test_planning_md_says_what_its_planner_cmd_examples_need():
+    """planning.md showed two `--planner-cmd` commands "so both of these work"; the second, run as written, exits 2
+    with `no executable './my-downward/fast-downward.py'`: the page did not say it needs a Fast Downward checkout
+    there. Every relative executable a shown command needs and the repository lacks is named in the prose."""
+    text = (ROOT / "docs" / "planning.md").read_text()
+    prose = re.sub(r"```.*?```", "", text, flags=re.S)
+    block = text.split("so both of these work", 1)[1].split("```", 2)[1]
+    commands = [words[words.index("--planner-cmd") + 1] for words in map(shlex.split, block.splitlines())
+                if "--planner-cmd" in words]
+    needed = {shlex.split(c)[0] for c in commands}
+    needed = {w for w in needed if w.startswith("./") and not (ROOT / w).exists()}
+    assert [w for w in needed if f"`{w.rsplit('/', 1)[0]}`" not in prose] == []

@@ -76,3 +76,27 @@ def test_a_directory_of_no_foon_file_says_what_was_skipped():
     assert r.exit_code == 2
     assert "every file was skipped; motion.txt: a motion success-rates file" in r.stderr
     assert "; utensils.txt: no FOON text" in r.stderr
+
+
+@pytest.mark.parametrize("command", [["retrieve", "--goal", "whipped cream"], ["goals"], ["stats"]])
+def test_every_command_says_which_files_under_a_directory_it_skipped(tmp_path, command):
+    """docs/format.md says a file under a directory that is plainly not FOON is skipped with a warning; `retrieve`,
+    `plan`, `goals` and `compile` on such a directory skipped the rates file and the notes without a word (only
+    `stats`, in its stdout report, and `merge` said so: stop 49's third newcomer pass)."""
+    (tmp_path / "0001-whipped_cream.txt").write_text(
+        (ROOT / "tests" / "data" / "foon-subgraphs" / "0001-whipped_cream.txt").read_text())
+    (tmp_path / "motion.txt").write_text(RATES.read_text())
+    (tmp_path / "notes.txt").write_text("shopping list\n")
+    r = run(*command[:1], tmp_path, *command[1:])
+    assert r.exit_code == 0, r.output
+    assert f"{tmp_path / 'motion.txt'}: warning: skipped: a motion success-rates file" in r.stderr
+    assert f"{tmp_path / 'notes.txt'}: warning: skipped: no FOON text" in r.stderr
+
+
+def test_merge_says_each_skipped_file_once(tmp_path):
+    """`merge` prints every warning on stderr: a skipped file's is not said twice."""
+    (tmp_path / "0001-whipped_cream.txt").write_text(
+        (ROOT / "tests" / "data" / "foon-subgraphs" / "0001-whipped_cream.txt").read_text())
+    (tmp_path / "motion.txt").write_text(RATES.read_text())
+    r = run("merge", tmp_path)
+    assert r.exit_code == 0 and r.stderr.count("motion.txt: warning: skipped") == 1, r.stderr

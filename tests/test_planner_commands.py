@@ -112,6 +112,7 @@ def test_relative_executable_and_arguments_resolve_in_the_callers_directory(tmp_
         assert "solved (external" in r.stderr
     missing = run("plan", "--goal", "guacamole", "--planner-cmd", "./nope.sh {domain} {problem}")
     assert missing.exit_code == 2 and "no executable './nope.sh'" in missing.stderr
+    assert "Invalid value for '--planner-cmd': " in missing.stderr  # quoted as click quotes '--goal'
     assert "phases:" not in missing.stderr
 
 

@@ -28,7 +28,7 @@ def merge(paths, level, with_ids, provenance, fmt, output) -> None:
     their provenance joined. Writes the id-less FOON text by default. Skipped
     blocks are reported on standard error as warnings.
     """
-    net = read_network(paths)
+    net = read_network(paths, say_skipped=False)
     for w in net.warnings:
         click.echo(str(w), err=True)
     foon = net.at(level)

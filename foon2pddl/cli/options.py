@@ -211,13 +211,19 @@ def single_goal(goal: tuple[str, ...]) -> str | None:
     return goal[0] if goal else None
 
 
-def read_network(paths, skip_invalid: bool = False):
-    """`io.inputs.load_network(paths)`, said on stderr when it takes a while (a universal FOON)."""
+def read_network(paths, skip_invalid: bool = False, say_skipped: bool = True):
+    """`io.inputs.load_network(paths)`, said on stderr when it takes a while (a universal FOON); each file it
+    skipped under a directory (plainly not FOON; with `skip_invalid`, failing to parse) gets its warning on stderr,
+    as docs/format.md says (`say_skipped=False`: the caller prints every warning itself)."""
     from ..io.inputs import load_network
     from .progress import inputs, slow_step
 
     with slow_step("reading " + inputs(paths)):
-        return load_network(paths, skip_invalid)
+        net = load_network(paths, skip_invalid)
+    for w in net.warnings if say_skipped else ():
+        if w.message.startswith("skipped"):
+            click.echo(str(w), err=True)
+    return net
 
 
 def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",

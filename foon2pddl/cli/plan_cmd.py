@@ -145,9 +145,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             entry.check(planner if planner_cmd is None else planner_cmd)
     except UnknownPlanner as exc:
         raise click.BadParameter(f"{exc} (or --planner-cmd with a command or a preset: {', '.join(PRESETS)})",
-                                 param_hint="--planner") from None
+                                 param_hint="'--planner'") from None
     except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="--planner-cmd" if planner_cmd else "--planner") from None
+        raise click.BadParameter(str(exc), param_hint="'--planner-cmd'" if planner_cmd else "'--planner'") from None
     t0 = time.perf_counter()
     cons, motion_rates, costs = constraint_inputs(constraints_files, without_motions, without, must_use, rates,
                                                   costs, without_skills=without_skills, skill_table=skill_table)
@@ -237,10 +237,10 @@ def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
         return None
     if not lookup(planner, planner_cmd).configurable:
         raise click.BadParameter("--alias, --search and --evaluator are Fast Downward options (--planner fd)",
-                                 param_hint="--planner")
+                                 param_hint="'--planner'")
     from ..planners.fd import search_config
 
     try:
         return search_config(alias, search, evaluators, optimal)
     except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="--alias" if alias else "--search") from None
+        raise click.BadParameter(str(exc), param_hint="'--alias'" if alias else "'--search'") from None
