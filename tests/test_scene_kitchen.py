@@ -219,3 +219,15 @@ def test_ids_and_labels_that_would_break_pddl_compile_to_pddl_that_parses(tmp_pa
     # the objects no action can touch are set aside from the problem (`pddl.untouched`), the others declared
     assert len(names) == len(task.objects) and {x.name for x in task.instances} == names | {x for x, _ in task.aside}
     assert {task.labels[x.name] for x in task.instances if x.start is not None} >= set(ids)  # each id, named
+
+
+def test_two_bowls_of_one_label_read_as_what_moves_from_which_bowl_into_which():
+    """The last step pours one bowl's contents into the other bowl: both the tree's cook's words and the object
+    line say what moves, from where, into what (not a list of two bowls, not the other bowl's dressing as a
+    tool). FOON's pairing makes the lettuce's bowl the one left empty (`model.pairing`), as the planner does."""
+    result = CliRunner().invoke(main, ["plan", str(DRESSED), "--kitchen", str(SCENES / "dressing_two_bowls.json"),
+                                       "--encoding", "relational", "--goal", DRESSED_GOAL])
+    assert result.exit_code == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "5. pour lettuce (chopped) from the bowl (contains {lettuce}) into the bowl (contains {dressing})" in lines
+    assert "5. pour lettuce_1 from bowl_1 into bowl_2" in lines

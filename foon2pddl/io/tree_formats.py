@@ -18,6 +18,7 @@ from collections.abc import Iterable
 from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
+from ..model.pairing import unit_roles
 from ..model.tasktree import TaskTree
 from .jsonio import node_to_dict
 from .writer import write_units
@@ -160,6 +161,20 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
     return out
 
 
+def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
+    """(what moves, from which container, into which) when two inputs of one container label trade contents
+    (the dressing's bowl and the lettuce's bowl, one left empty): `model.pairing` says which input becomes which
+    output, so the one that loses an ingredient the other gains is the source. None otherwise. O(roles^2)."""
+    roles = [r for r in unit_roles(unit) if r.before is not None and r.after is not None]
+    for src in roles:
+        lost = _contents(src.before) - _contents(src.after)
+        for dst in roles:
+            moved = lost & (_contents(dst.after) - _contents(dst.before)) if dst.label == src.label else set()
+            if dst is not src and moved:
+                return [i for i in unit.inputs if i.label in moved], src.before, dst.before
+    return None
+
+
 def recipe_text(unit: FunctionalUnit) -> str:
     """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
 
@@ -176,7 +191,13 @@ def recipe_text(unit: FunctionalUnit) -> str:
              if i.label in new and _place(new[i.label]) not in (None, _place(i))]
     moves += _filled(unit, new, by_label, {i.label for i, _, _ in moves})
     named = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
-    if moves:
+    between = None if moves else _between(unit)
+    if between:  # two containers of one label: `pour lettuce from the bowl (...) into the bowl (...)`
+        what, src, dst = between
+        text = (f"{unit.motion.label} " + ", ".join(_unplaced(i) for i in what)
+                + f" from the {src.describe()} into the {dst.describe()}")
+        named = {src.label} | {i.label for i in what}
+    elif moves:
         parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
         for i, src, dst in moves:
             phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
@@ -198,7 +219,7 @@ def recipe_text(unit: FunctionalUnit) -> str:
             and not any(s.label in PLACE_WORDS and s.related in holders for s in i.states)]
     places = [i for i in rest if any(_place(n) and _place(n)[1] == i.label for n in unit.inputs)]
     tools = [i for i in rest if i not in places]
-    if not moves:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
+    if not moves and not between:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
         at = {p.label for p in places}
         text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i) or ("", ""))[1] in at
                                                    else i.describe() for i in changed)

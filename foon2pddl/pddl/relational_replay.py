@@ -185,7 +185,8 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
 
     `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
     the motion, each object that changes holder (from, into), each other object whose state changes, then
-    what the step consumes and makes (in the holder of what it makes), then the objects it only uses.
+    what the step consumes and makes (in the holder of what it makes), then the objects it only uses (not
+    what already sits in a holder something moves into: the dressing the lettuce is poured onto is no tool).
     """
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
@@ -210,7 +211,10 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     if used or made:
         parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
                      + ", ".join(made))
-    others = [b.object for b in rest if not changed(b)]
+    into = {after[b.object].holder for b in step.bindings if b.before is not None and b.object not in made
+            and before[b.object].holder != after[b.object].holder}
+    others = [b.object for b in rest if not changed(b) and not (  # not the contents of where something goes
+        before[b.object].holder in into and any(s.label in _RELATIONS and s.related for s in b.before.states))]
     if others:
         parts.append("with " + ", ".join(others))
     return " ".join(p for p in parts if p)
