@@ -80,6 +80,13 @@ def test_repeated_goal_gives_one_table_and_exit_1_when_one_fails(tmp_path):
     assert (tmp_path / "t" / "guacamole.txt").read_text() == single.stdout
 
 
+def test_a_batch_that_writes_no_tree_leaves_no_directory(tmp_path):
+    """-o DIR is made only when a tree is written: a batch with no tree leaves no empty DIR (no half output)."""
+    r = run("retrieve", "--goal", "lemonade", "--goal", "unicorn stew", "-o", str(tmp_path / "trees"))
+    assert r.exit_code == 1 and "unmatched" in r.stdout and "unreachable" in r.stdout
+    assert not (tmp_path / "trees").exists()
+
+
 def test_all_solved_exits_0_and_csv_has_a_row_per_goal():
     r = run("retrieve", "--goal", "guacamole", "--goal", "guacamole", "--format", "csv")
     assert r.exit_code == 0, r.output

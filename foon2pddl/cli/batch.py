@@ -51,7 +51,8 @@ def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Pat
 
 
 def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None], ext: str) -> None:
-    """Write each row's content (None: no file) to DIR/<slug of its goal>.<ext>; set each row's `file`."""
+    """Write each row's content (None: no file) to DIR/<slug of its goal>.<ext>; set each row's `file`.
+    DIR is made only when a file is written (`atomic_write_many` makes it): no tree leaves no empty DIR."""
     names = file_names((r["goal"] for r in rows), ext)
     files = {}
     for row, name, text in zip(rows, names, contents, strict=True):
@@ -60,7 +61,6 @@ def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None
             row["file"] = str(directory / name)
             files[directory / name] = text
     try:
-        directory.mkdir(parents=True, exist_ok=True)
         atomic_write_many(files)
     except OSError as exc:
         raise FoonInputError(str(directory), 0, f"cannot write: {exc.strerror or exc}") from None
