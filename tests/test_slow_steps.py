@@ -155,6 +155,14 @@ def test_analyze_says_it_draws_the_plot(every_step_speaks, tmp_path):
     assert any(line.startswith("projecting 101 units") for line in r.stderr.splitlines())
 
 
+def test_analyze_says_it_draws_the_plot_before_it_starts_at_the_default_threshold(tmp_path):
+    """Drawing the plot (matplotlib's import, the figure) took 2.3 s at load 15 after a silent wait for the
+    threshold: it is announced at once, not only after 1.5 s of silence."""
+    said = run("analyze", "--plot", tmp_path / "central.png").stderr.splitlines()
+    drawing = f"drawing {tmp_path / 'central.png'} ..."
+    assert drawing in said and said.index(drawing) < said.index(f"wrote {tmp_path / 'central.png'}")
+
+
 def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_path):
     args = ("experiment", "--trials", "1", "--goals", "2", "--networks", "reg,gen", "--solvers", "native-greedy",
             "-o", tmp_path)
