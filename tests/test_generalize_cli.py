@@ -107,10 +107,21 @@ def test_generalize_writes_category_network(run, tmp_path):
     labels = {n.label for u in parse_file(out).foon.units for n in u.inputs}
     assert "lemons and limes" in labels and "lemon" not in labels
     # a name read as its unit's object is generalized as it, and the reading is a note at the unit's file:line
-    r = run("generalize", "tests/data/foon-subgraphs/0086-apple_turnover.txt", "-o", str(out))
+    r = run("generalize", "tests/data/foon-subgraphs/0086-apple_turnover.txt", "--readings", "-o", str(out))
     assert r.exit_code == 0, r.stderr
     assert "note: category reading: tests/data/foon-subgraphs/0086-apple_turnover.txt:195: pan read as cooking " \
            "pan, so cookware\n" in r.stderr
+
+
+def test_generalize_counts_its_category_readings_in_one_line_and_lists_them_with_readings(run, tmp_path):
+    """The 100 subgraphs have 204 readings: one a line drowned the table; one line counts them, --readings lists."""
+    r = run("generalize", "tests/data/foon-subgraphs", "-o", str(tmp_path / "gen.foon"))
+    assert r.exit_code == 0, r.stderr
+    notes = [line for line in r.stderr.splitlines() if "category reading" in line]
+    assert notes == ["note: 204 category readings (a name a node uses read as its unit's object, and generalized as "
+                     "it); --readings lists each at its unit's file:line"]
+    listed = run("generalize", "tests/data/foon-subgraphs", "--readings", "-o", str(tmp_path / "gen.foon"))
+    assert sum(line.startswith("note: category reading: ") for line in listed.stderr.splitlines()) == 204
 
 
 def test_network_option_on_retrieve(run):

@@ -20,8 +20,10 @@ categories_option = click.option("--categories", "categories", type=click.Path(p
 @click.option("--provenance", is_flag=True, help="Precede each unit with '# from <file>:<line>' comments.")
 @click.option("--format", "fmt", type=click.Choice(["foon", "json"]), default="foon", show_default=True,
               help="FOON text, or the JSON export.")
+@click.option("--readings", is_flag=True,
+              help="List each category reading (a name read as its unit's object) at its file:line; default: a count.")
 @output_option
-def generalize_(paths, categories, provenance, fmt, output) -> None:
+def generalize_(paths, categories, provenance, fmt, output, readings) -> None:
     """Write FOON-GEN of the network: each object replaced by its category, duplicate units removed.
 
     An object in several categories takes the most specific one (first in the index on
@@ -41,8 +43,12 @@ def generalize_(paths, categories, provenance, fmt, output) -> None:
         emit_network(c.foon, fmt, provenance, header, output)
     table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}, step=slow_step))
     click.echo(table, err=True, nl=False)
-    for r in c.readings:  # a name read as its unit's object, generalized as that object
+    for r in c.readings if readings else ():  # a name read as its unit's object, generalized as that object
         click.echo(f"note: category reading: {r}", err=True)
+    if c.readings and not readings:  # 204 on the 100 subgraphs: one line, not a screenful
+        n = len(c.readings)
+        click.echo(f"note: {n} category reading{'s' if n != 1 else ''} (a name a node uses read as its unit's object, "
+                   "and generalized as it); --readings lists each at its unit's file:line", err=True)
 
 
 @main.command("categories")
