@@ -120,7 +120,7 @@ def test_long_goal_and_kitchen_lines_answer(tmp_path):
     """200 KB of blanks between a state and its bracket: the cubic reader could not finish this."""
     pad = " " * 200_000
     r = cli("retrieve", "--goal", f"whipped cream: a{pad}[x]y", WHIPPED)
-    assert r.exit_code == 2 and "\nError: cannot read state" in r.stderr
+    assert r.exit_code == 2 and "\nError: Invalid value for '--goal': cannot read state" in r.stderr
     ok = cli("retrieve", "--goal", f"whipped cream: in{pad}[mixing bowl]", WHIPPED)
     assert ok.exit_code in (0, 1), ok.output
     k = tmp_path / "k.txt"
