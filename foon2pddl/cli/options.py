@@ -46,17 +46,13 @@ def similarity_options(f):
                                                                for m in SIMILARITY_MODES.values()) + ".")(f)
 
 
-def expansion_notes(tree) -> None:
-    """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity (from the mode's
-    disk-cached matrix over the labels compared: WordNet opens on the first run only, not on every run)."""
-    from ..generalize.modes import mode_matrix
-    from ..generalize.substitution import expansion_labels, expansion_substitutions
+def expansion_notes(tree, matrix) -> None:
+    """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity from `matrix`, the one
+    the EXP view substituted by (`NetworkView.matrix`: no second matrix, no WordNet opened for a new goal)."""
+    from ..generalize.substitution import expansion_substitutions
     from ..model.foon import normalize_label
-    from .progress import slow_step
-    with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
-        labels = expansion_labels(tree)
-        matrix = mode_matrix(labels, chosen_similarity()) if labels else None
-        subs = expansion_substitutions(tree, lambda a, b: matrix(normalize_label(a), normalize_label(b))) if matrix is not None else ()
+
+    subs = expansion_substitutions(tree, lambda a, b: matrix(normalize_label(a), normalize_label(b)))
     for line in [sub.describe() for sub in subs] or ["none (the tree uses only units as read)"]:
         click.echo(f"substitution: {line}", err=True)
 

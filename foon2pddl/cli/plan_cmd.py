@@ -198,9 +198,9 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     data: str | None = None
     if outcome.tree is not None and status == "solved":
         data = render_tree(outcome.tree, fmt, kitchen=kit)
-        view = outcome.compiled.view
-        if fmt in STEP_FORMATS and view is not None and outcome.trace is not None and outcome.trace.steps:
-            data += view.text(outcome.task, outcome.trace)
+        steps_view = outcome.compiled.view
+        if fmt in STEP_FORMATS and steps_view is not None and outcome.trace is not None and outcome.trace.steps:
+            data += steps_view.text(outcome.task, outcome.trace)
     reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
     if fmt == "json":
         data = outcome_json(outcome, timings, data, reason)
@@ -217,7 +217,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
-            expansion_notes(outcome.tree)
+            expansion_notes(outcome.tree, view.matrix)
         if reason is not None:
             click.echo("reason: " + reason, err=True)
         if explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes:

@@ -158,7 +158,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
     if kind.substitutes is Substitutes.SIMILAR and not cons.items:
-        expansion_notes(result.tree)
+        expansion_notes(result.tree, view.matrix)
     if view.index is not None and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
         click.echo(reading, err=True)
     inferred = inferred_nodes(result.tree.units)

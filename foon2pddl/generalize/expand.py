@@ -26,7 +26,7 @@ derived pairs and the duplicate removal in one step each, so that a command says
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..errors import UsageError
 from ..io.steps import Step, silent_step
@@ -54,6 +54,7 @@ class Expansion:
     substitutions: tuple[tuple[str, str], ...]  # (label, similar label) pairs used, sorted
     derived: tuple[tuple[str, str], ...] = ()  # (product, renamed product) pairs propagated, sorted
     similarity: str = DEFAULT_MODE  # the similarity mode (`modes.py`)
+    matrix: SimilarityMatrix | None = field(default=None, compare=False, repr=False)  # the one it substituted by
 
     def title(self) -> str:
         """`FOON-EXP (threshold T)`, naming the similarity unless it is the paper's (whose outputs stay as they were)."""
@@ -146,4 +147,4 @@ def expand(
     with step(f"removing duplicates among {total + len(copies):,} units"):
         units = dedupe_units((*foon.units, *copies))
     return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)),
-                     tuple(sorted(derived)), similarity)
+                     tuple(sorted(derived)), similarity, matrix)

@@ -33,6 +33,7 @@ from .categories import CategoryIndex, load_index
 from .compress import abstract_goal, abstract_kitchen, abstract_node, category_map, compress
 from .expand import DEFAULT_THRESHOLD, expand
 from .modes import DEFAULT_MODE
+from .similarity import SimilarityMatrix
 from .substitute import substitute_node
 
 __all__ = ["DEFAULT_NETWORK", "NETWORKS", "NetworkKind", "NetworkView", "PaperFigures", "Substitutes", "ViewOptions",
@@ -61,6 +62,7 @@ class NetworkView:
     note: str = ""
     map_node: Callable[[ObjectNode], ObjectNode] = _same  # a kitchen node as this view sees it
     names: Mapping[ObjectNode, Mapping[str, str]] = field(default_factory=dict)  # GEN: `Compression.names`
+    matrix: SimilarityMatrix | None = None  # EXP: the similarities its substitutes were chosen by
 
     def kitchen_strays(self, nodes: Iterable[ObjectNode], reg: Foon) -> list[ObjectNode]:
         """The kitchen `nodes` (at this view's level) that are neither a node of `reg` nor, mapped, of this view."""
@@ -178,7 +180,7 @@ def _exp(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> Ne
     e = expand(net.foon, threshold=options.threshold, max_units=options.max_units, kitchen=kitchen,
                similarity=options.similarity)
     note = f"{e.title()}: {e.original_units} -> {len(e.foon.units)} units"
-    return NetworkView(_EXP, project(e.foon, level), kitchen, _same, net.at(level), note=note)
+    return NetworkView(_EXP, project(e.foon, level), kitchen, _same, net.at(level), note=note, matrix=e.matrix)
 
 
 def _exp_slow_step(net: Network, kitchen: Kitchen) -> str | None:
