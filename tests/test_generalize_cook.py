@@ -14,14 +14,13 @@ from foon2pddl.errors import FoonInputError
 from foon2pddl.generalize.categories import Category, CategoryIndex, shipped_index
 from foon2pddl.generalize.classes import NAMED_SHARE, TOOL_CLASS_KINDS, kinds, named_kinds, staple
 from foon2pddl.generalize.cook import (
-    CLASS_KINDS,
     DEFAULT_BREADTH,
     CookSimilarity,
     cook_overrides,
     filing_similarity,
-    kin,
     reference_vocabulary,
 )
+from foon2pddl.generalize.cook_kin import CLASS_KINDS, kin
 from foon2pddl.generalize.expand import expand, vocabulary
 from foon2pddl.generalize.modes import SIMILARITY_MODES, make_similarity, mode_matrix
 from foon2pddl.generalize.purpose import foods, held

@@ -3,7 +3,7 @@
 - `wordnet`: WordNet 3.0 through NLTK (an NLTK corpus, or Debian's files assembled once);
 - `senses`, `wup`, `similarity`: Wu-Palmer similarity of object labels, cached as a matrix on disk
   (the seed paper's rule, mode `paper`); `cook`: the default mode (role senses, deepest common
-  ancestor, broad ancestors rejected; `purpose`: the foods a kind of tool is for, its rule 7; `classes`: a noun that names a class, rules 8-9); `modes`: the
+  ancestor, broad ancestors rejected; `cook_kin`: its rules 5-8, kin in the categories; `purpose`: the foods a kind of tool is for, its rule 7; `classes`: a noun that names a class, rules 8-9); `modes`: the
   registry of modes; `pairs`: `expand --pairs`;
 - `substitute`, `expand`: FOON-EXP, copies of units with similar objects substituted;
 - `categories`: the shipped category index; `extend`: `categories --extend`; `compress`: FOON-GEN,
@@ -14,6 +14,6 @@ See docs/generalization.md.
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bootstrap_categories", "cache", "categories", "classes", "compress", "cook", "expand", "extend", "grounding", "hints", "modes",
+__all__ = ["bootstrap_categories", "cache", "categories", "classes", "compress", "cook", "cook_kin", "expand", "extend", "grounding", "hints", "modes",
            "network", "pairs", "purpose", "readings", "relevance", "senses", "similarity", "stats", "substitute", "substitution", "wordnet",
            "wup"]
