@@ -1,7 +1,7 @@
 """The cook mode on labels its category index lacks, simulated on the tuning pairs.
 
-Every pair of the labelled `outside`, `lemmas`, `lemmas2`, `lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `lemmas7` and
-`lemmas8` splits has a label the shipped index lacks, so rule 5 reads the category `categories --extend` files it in. To choose that
+Every pair of the labelled `outside`, `lemmas`, `lemmas2`, `lemmas3`, `lemmas4`, `lemmas5`, `lemmas6`, `lemmas7`,
+`lemmas8` and `lemmas9` splits has a label the shipped index lacks, so rule 5 reads the category `categories --extend` files it in. To choose that
 rule without looking at those splits, the tuning pairs (`tune` + `unsampled`, shared
 labels) are scored with the index that `category_extend` builds (30 of the shared
 subgraphs held out, seed 5, every label only they use removed): `extend` files each

@@ -43,7 +43,7 @@ N_FOOD, N_TOOLS, ACCEPTED, RANDOM = 80, 40, 170, 30
 #: The batches in the order they were drawn, with their seeds (`lemmas` at 8697b53, `lemmas2` at 213d3ab,
 #: `lemmas3` at f864136, `lemmas4` at 5ececf4, `lemmas5` at 7edb3f9, `lemmas6` at e121a45, `lemmas7` at a65fb7b,
 #: `lemmas8` at 03d5418; `lemmas7` and `lemmas8` keep `lemmas6`'s roots and sizes: `lemmas8` found only 4 tool
-#: lemmas left under them, so a later batch draws food alone unless roots are added; `lemmas9` at its base,
+#: lemmas left under them, so a later batch draws food alone unless roots are added; `lemmas9` at 0d4a503,
 #: with `MORE_FOOD` and `KITCHEN_OBJECTS`).
 SEEDS = {"lemmas": 42, "lemmas2": 43, "lemmas3": 44, "lemmas4": 45, "lemmas5": 46, "lemmas6": 47, "lemmas7": 48,
          "lemmas8": 49, "lemmas9": 50}

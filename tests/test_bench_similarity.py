@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from conftest import SEARCH_INPUTS, SUBGRAPHS
 
-from bench.similarity import Pair, read_pairs, score, search_labels, wilson
+from bench.similarity import SPLITS, Pair, read_pairs, score, search_labels, wilson
 from foon2pddl.generalize.cook import reference_vocabulary
 from foon2pddl.generalize.expand import vocabulary
 from foon2pddl.io.inputs import load_network
@@ -16,8 +16,9 @@ def test_labelled_pairs_are_well_formed_and_from_the_shared_subgraphs_or_the_sea
     assert len(pairs) >= 800
     assert {p.label for p in pairs} == {"good", "marginal", "bad"}
     assert {p.split for p in pairs} == {"independent", "tune", "fresh", "outside", "unsampled", "lemmas", "lemmas2",
-                                        "lemmas3", "lemmas4", "lemmas5", "lemmas6", "lemmas7", "lemmas8"}
-    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5", "lemmas6", "lemmas7", "lemmas8")
+                                        "lemmas3", "lemmas4", "lemmas5", "lemmas6", "lemmas7", "lemmas8", "lemmas9"}
+    assert {p.split for p in pairs} <= set(SPLITS)  # the bench reports every labelled split
+    lemma_batches = ("lemmas", "lemmas2", "lemmas3", "lemmas4", "lemmas5", "lemmas6", "lemmas7", "lemmas8", "lemmas9")
     later = ("outside", "unsampled", *lemma_batches)
     assert {p.source for p in pairs if p.split in later} <= {"paper+cook", "paper", "cook", "random"}
     assert {p.source for p in pairs if p.split not in later} == {
@@ -60,11 +61,16 @@ def test_lemma_batches_draw_as_drawn_and_the_later_ones_reach_their_more_tool_ro
     """`lemmas4` found only 14 unused tool lemmas under `TOOLS`; `MORE_TOOLS` joins them from `lemmas5` on only,
     and `KITCHEN_TOOLS` (kitchen objects FOON uses that no earlier root reaches) from `lemmas6` on only, with
     `N_TOOLS_MORE` tool lemmas instead of `N_TOOLS` (`lemmas7` too; `lemmas8` keeps those roots and finds only the
-    few tool lemmas they have left)."""
+    few tool lemmas they have left); `lemmas9` adds `MORE_FOOD` and `KITCHEN_OBJECTS` and draws every kitchen
+    object left under them, with `N_FOOD_MORE` food lemmas."""
     from bench.similarity_lemmas import (
+        FOOD,
+        KITCHEN_OBJECTS,
         KITCHEN_TOOLS,
+        MORE_FOOD,
         MORE_TOOLS,
         N_FOOD,
+        N_FOOD_MORE,
         N_TOOLS,
         N_TOOLS_MORE,
         TOOLS,
@@ -77,7 +83,7 @@ def test_lemma_batches_draw_as_drawn_and_the_later_ones_reach_their_more_tool_ro
     reader, shared = wordnet.reader(), SEARCH_INPUTS.parent
     reference = set(reference_vocabulary())
     pairs = read_pairs()
-    drawn = draws(reader, shared, "lemmas8")  # every batch drawn once, in order, each skipping the earlier ones
+    drawn = draws(reader, shared, "lemmas9")  # every batch drawn once, in order, each skipping the earlier ones
     for split in drawn:  # every lemma a labelled pair uses
         labelled = {x for p in pairs if p.split == split for x in (p.a, p.b)} - reference
         assert labelled and labelled <= set(drawn[split]), split
@@ -91,7 +97,16 @@ def test_lemma_batches_draw_as_drawn_and_the_later_ones_reach_their_more_tool_ro
         assert len(drawn[split]) == len(set(drawn[split])) and not set(drawn[split]) & {
             x for other, labels in drawn.items() if other != split for x in labels}, split
     # `lemmas8` ran the tool roots dry: it drew every tool lemma no earlier split, label or search input uses
-    earlier = {x for p in pairs if p.split != "lemmas8" for x in (p.a, p.b)} | set(search_labels(shared))
-    earlier |= {x for split, labels in drawn.items() if split != "lemmas8" for x in labels}
+    before9 = {"lemmas8", "lemmas9"}  # the splits drawn after lemmas8's draw (the file as lemmas8 was drawn on)
+    earlier = {x for p in pairs if p.split not in before9 for x in (p.a, p.b)} | set(search_labels(shared))
+    earlier |= {x for split, labels in drawn.items() if split not in before9 for x in labels}
     tools8 = drawn["lemmas8"][N_FOOD:]
     assert 0 < len(tools8) < N_TOOLS_MORE and set(tools8) == (old | more | kitchen) - earlier - reference - {""}
+    # `lemmas9`: more food lemmas, some under `MORE_FOOD` only, and every kitchen object `KITCHEN_OBJECTS` has left
+    food9, tools9 = drawn["lemmas9"][:N_FOOD_MORE], drawn["lemmas9"][N_FOOD_MORE:]
+    only_food, more_food, objects = ({_name(reader, s) for s in _pool(reader, roots)}
+                                     for roots in (FOOD, MORE_FOOD, KITCHEN_OBJECTS))
+    assert set(food9) - only_food and set(food9) <= only_food | more_food
+    earlier |= {x for p in pairs if p.split == "lemmas8" for x in (p.a, p.b)} | set(drawn["lemmas8"])
+    assert 0 < len(tools9) < N_TOOLS_MORE and set(tools9) == objects - old - more - kitchen - earlier - reference
+    assert not set(drawn["lemmas9"]) & {x for split, labels in drawn.items() if split != "lemmas9" for x in labels}
