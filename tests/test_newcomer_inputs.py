@@ -78,7 +78,7 @@ def test_a_directory_of_no_foon_file_says_what_was_skipped():
     assert "; utensils.txt: no FOON text" in r.stderr
 
 
-@pytest.mark.parametrize("command", [["retrieve", "--goal", "whipped cream"], ["goals"], ["stats"]])
+@pytest.mark.parametrize("command", [["retrieve", "--goal", "whipped cream"], ["goals"]])
 def test_every_command_says_which_files_under_a_directory_it_skipped(tmp_path, command):
     """docs/format.md says a file under a directory that is plainly not FOON is skipped with a warning; `retrieve`,
     `plan`, `goals` and `compile` on such a directory skipped the rates file and the notes without a word (only
@@ -91,6 +91,18 @@ def test_every_command_says_which_files_under_a_directory_it_skipped(tmp_path, c
     assert r.exit_code == 0, r.output
     assert f"{tmp_path / 'motion.txt'}: warning: skipped: a motion success-rates file" in r.stderr
     assert f"{tmp_path / 'notes.txt'}: warning: skipped: no FOON text" in r.stderr
+
+
+def test_stats_says_each_skipped_file_once_in_its_report(tmp_path):
+    """`stats DIR` said a skipped file twice: in its report's warnings (stdout) and on stderr. Its report lists
+    every warning of the files read (parse warnings too, and `--json`'s `warnings`), so that is the one place."""
+    (tmp_path / "0001-whipped_cream.txt").write_text(
+        (ROOT / "tests" / "data" / "foon-subgraphs" / "0001-whipped_cream.txt").read_text())
+    (tmp_path / "motion.txt").write_text(RATES.read_text())
+    r = run("stats", tmp_path)
+    assert r.exit_code == 0, r.output
+    assert "motion.txt: warning: skipped" not in r.stderr, r.stderr
+    assert r.stdout.count(f"{tmp_path / 'motion.txt'}: warning: skipped: a motion success-rates file") == 1, r.stdout
 
 
 def test_merge_says_each_skipped_file_once(tmp_path):

@@ -29,7 +29,7 @@ def stats(paths, as_json, skip_invalid, output) -> None:
     from .progress import slow_step
 
     try:
-        net = read_network(paths, skip_invalid)
+        net = read_network(paths, skip_invalid, say_skipped=False)  # its report lists every warning
     except FoonSyntaxError as exc:  # a file found under a directory: say how to read the others
         if skip_invalid or exc.path is None or Path(exc.path) in {Path(p) for p in paths}:
             raise
