@@ -183,3 +183,22 @@ def test_planning_md_says_what_its_planner_cmd_examples_need():
     needed = {shlex.split(c)[0] for c in commands}
     needed = {w for w in needed if w.startswith("./") and not (ROOT / w).exists()}
     assert [w for w in needed if f"`{w.rsplit('/', 1)[0]}`" not in prose] == []
+
+
+def test_readme_layout_names_each_packages_own_files():
+    """README's Layout said, inside `pddl/`'s parenthesis, "jinja2 templates in `templates/`": a newcomer looked for
+    `foon2pddl/pddl/templates/`, which does not exist (the templates, of the PDDL text and of the experiment
+    report, are `foon2pddl/templates/`; stop 50's newcomer pass). Every file or directory a package's parenthesis
+    names in backticks is in that package."""
+    layout = (ROOT / "README.md").read_text().split("## Layout", 1)[1].split("\n## ", 1)[0]
+    misplaced = []
+    for m in re.finditer(r"`([a-z_]+)/` \(", layout):
+        depth, end = 1, m.end()
+        while depth:
+            depth += {"(": 1, ")": -1}.get(layout[end], 0)
+            end += 1
+        base = ROOT / "foon2pddl" / m.group(1)
+        base = base if base.is_dir() else ROOT / m.group(1)
+        named = re.findall(r"`([a-z_]+(?:\.py|/))`", layout[m.end():end])
+        misplaced += [f"{m.group(1)}/{n}" for n in named if not (base / n.rstrip("/")).exists()]
+    assert misplaced == []
