@@ -40,6 +40,20 @@ def test_bad_driver_options_fail_before_planning(args, message):
     assert r.exit_code == 2 and message in r.stderr and "phases:" not in r.stderr
 
 
+@pytest.mark.parametrize(("args", "option"), [
+    (("--evaluator", "h=ff()"), "--evaluator"),
+    (("--alias", "lama-first", "--search", "astar(blind())"), "--alias"),
+    (("--optimal", "--search", "astar(blind())"), "--search"),
+    (("--planner-cmd", "pyperplan", "--search", "astar(blind())"), "--planner-cmd"),
+])
+def test_a_misused_driver_option_is_named_as_given(args, option):
+    """README: a bad command-line value gets "a usage error naming the option". `--evaluator` without `--search`
+    said `Invalid value for '--search'` and `--planner-cmd pyperplan --search ...` `Invalid value for '--planner'`:
+    options the user had not given (stop 50's newcomer pass)."""
+    r = run("plan", "--goal", "guacamole", *args)
+    assert r.exit_code == 2 and f"Invalid value for '{option}'" in r.stderr
+
+
 @pytest.mark.parametrize(("args", "name", "steps"), [
     (("--alias", "seq-opt-lmcut"), "fd (seq-opt-lmcut)", 20),
     (("--alias", "seq-sat-lama-2011", "--time-limit", "15"), "fd (seq-sat-lama-2011)", None),  # anytime

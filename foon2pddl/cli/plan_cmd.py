@@ -237,10 +237,11 @@ def _search_config(planner, planner_cmd, optimal, alias, search, evaluators):
         return None
     if not lookup(planner, planner_cmd).configurable:
         raise click.BadParameter("--alias, --search and --evaluator are Fast Downward options (--planner fd)",
-                                 param_hint="'--planner'")
+                                 param_hint="'--planner-cmd'" if planner_cmd else "'--planner'")
     from ..planners.fd import search_config
 
     try:
         return search_config(alias, search, evaluators, optimal)
     except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--alias'" if alias else "'--search'") from None
+        given = "--alias" if alias else "--search" if search is not None else "--evaluator"  # the option misused
+        raise click.BadParameter(str(exc), param_hint=f"'{given}'") from None
