@@ -61,3 +61,14 @@ def test_non_integer_exit_codes_are_printed_and_exit_1_as_the_interpreter_does()
     assert (text.returncode, text.stdout, text.stderr) == (1, "before\n", "something failed\n")
     none = _python(code, "")
     assert (none.returncode, none.stdout) == (0, "before\n")
+
+
+def test_the_silence_budget_counts_from_the_process_start():
+    """A command's first `...` line is due `progress.AFTER` seconds after the user started it. The budget counted
+    from the console script's first line, after the interpreter's own start-up (0.3 s at load 16, more above), so
+    at load 17-18 the scene commands said nothing for 2.2-2.8 s (stop 50's newcomer pass). Here the process idles
+    past the budget before the script runs: its first step speaks at once."""
+    code = ("import sys, time; time.sleep(1.6); sys.argv = ['foon2pddl', 'retrieve', '--goal', 'guacamole']; "
+            "from foon2pddl.__main__ import run; run()")
+    proc = _python(code)
+    assert proc.returncode == 0 and proc.stderr.splitlines()[0].endswith(" ..."), proc.stderr
