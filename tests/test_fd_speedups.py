@@ -118,3 +118,11 @@ def test_warm_and_fresh_write_the_sas_file_of_the_unchanged_translator(name, tmp
         assert run.returncode == 0, run.output
         sas[warm] = (tmp_path / f"{warm}.sas").read_bytes()
     assert sas[True] == sas[False] == (tmp_path / "plain.sas").read_bytes()
+
+
+@pytest.mark.parametrize("entry", ["import fd_speedups; fd_speedups.apply()",
+                                   "import translate_server; translate_server.load()"])
+def test_both_translator_paths_collect_cycles_rarely(entry, tmp_path):
+    # the fresh translator's script and the warm server (whose children inherit it) raise the collector's threshold
+    out = _in_translator(entry + "\nimport gc; print(gc.get_threshold()[0])", tmp_path)
+    assert int(out) == fd_speedups.GC_THRESHOLD[0] > 700  # CPython's default: a collection every 700 allocations

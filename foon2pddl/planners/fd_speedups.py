@@ -1,4 +1,5 @@
-"""Two of Fast Downward's translator functions, rewritten to do the same in linear time: the SAS file is the same.
+"""Two of Fast Downward's translator functions rewritten to do the same in linear time, its garbage collector run
+rarely: the SAS file is the same.
 
 Imports nothing of foon2pddl: it runs inside translator processes (`planners/translate_server.py` applies it
 before forking; a fresh translator runs this file as its script, `python fd_speedups.py ARGS`, which applies it and
@@ -11,6 +12,11 @@ then runs `fast_downward.translate` as `python -m` would).
 - pddl/actions.py's PropositionalAction.__init__ keeps a delete unless the same (condition, atom) is added, testing
   each delete against the list of adds: O(effects^2) per ground action (FD's own comment says so), with
   hundreds of conditional effects per action on a holder sweep. A set of the adds gives the same lists.
+- The cyclic garbage collector: CPython collects every 700 net allocations, and the translator allocates millions
+  of objects that live to its end (atoms, conditions, ground effects), so each collection walks them again for
+  little garbage (the process is short-lived and ends with the task). `apply` raises the threshold
+  (`GC_THRESHOLD`): the odd-index universal FOON's chocolate cake, its small task's translation 5.17 -> 4.43 s of
+  CPU (medians of 6 runs each, side by side, load 14-18), peak memory the same (144 MB), the SAS file byte-identical.
 
 Each replacement is installed only when the translator file it replaces a function of is the one it was written
 against (sha1 below); another translator version is left as it is. Both keep every order the originals produce, so the SAS file is
@@ -19,6 +25,7 @@ byte-identical (tests/test_fd_speedups.py checks on relational tasks).
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import os
 import runpy
@@ -32,6 +39,9 @@ ORIGINALS = {
     "variable_order.CausalGraph.calculate_topological_pseudo_sort": "95826d3b74439d488f7712d581604666476d208c",
     "pddl.actions.PropositionalAction.__init__": "f8cf5885859734873f4a80335e220392c1d92232",
 }
+
+#: The collector's thresholds in a translator (generation 0 every 100,000 net allocations: CPython's default 700).
+GC_THRESHOLD = (100_000, 50, 100)
 
 
 def _pseudo_sort(self, sccs) -> None:
@@ -78,8 +88,10 @@ def _sha1(module) -> str | None:
 
 
 def apply() -> tuple[str, ...]:
-    """Install each replacement whose translator file is the expected one; the names installed (none when the
-    translator is another version or is missing)."""
+    """Install each replacement whose translator file is the expected one, and collect cycles rarely (`GC_THRESHOLD`:
+    in the translator's process only); the names installed (none when the translator is another version or is
+    missing)."""
+    gc.set_threshold(*GC_THRESHOLD)
     try:
         from fast_downward.translate import variable_order
         from fast_downward.translate.pddl import actions
