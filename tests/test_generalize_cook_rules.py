@@ -69,3 +69,39 @@ def test_a_staple_is_a_starch_not_a_flavorer_or_a_bake(cook):
         assert e.similarity == 0.0 and e.rejected == "broad", (a, b, e)
     for a, b in [("bread", "loaf"), ("pasta", "penne")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_label_wordnet_does_not_know_read_through_an_override_is_one_member_of_its_class(cook):
+    """Rule 10: the overrides read virgin mojito, dashi, gyoza and ramen, which WordNet does not know, as soft
+    drink, broth, dumpling and noodle; each is one member of that class, so it stands with the class's own
+    label (and two labels of one sense stay 1.0), not with the class's other kinds: tonic, pop, chicken broth,
+    matzo ball and egg noodle are other members. A label WordNet knows by its head (salad mix, a mix of salad
+    greens) is no stand-in and keeps its kinds (lettuce)."""
+    for a, b in [("virgin mojito", "tonic"), ("virgin mojito", "pop"), ("virgin mojito", "cream soda"),
+                 ("dashi", "chicken broth"), ("gyoza", "matzo ball"), ("egg noodle", "ramen")]:
+        assert cook.explain(a, b).rejected == "stand-in", (a, b, cook.explain(a, b))
+    for a, b in [("soft drink", "virgin mojito"), ("broth", "dashi"), ("dumpling", "gyoza"), ("lettuce", "salad mix"),
+                 ("cooking spray", "olive oil")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_users_override_for_an_unknown_label_makes_a_stand_in_too(cook):
+    """Rule 10 reads what the override does, not a list: a user's file reading an unknown drink as a soft drink
+    makes it a member of soft drinks, a sibling of tonic, not their generic."""
+    from foon2pddl.generalize.senses import parse_overrides
+
+    mine = CookSimilarity(cook.reader, parse_overrides('{"senses": {"kombucha": ["soft_drink.n.01"]}}', "mine.json"))
+    assert mine.explain("tonic", "kombucha").rejected == "stand-in"
+    assert mine("soft drink", "kombucha") >= 0.89
+
+
+def test_similarity_senses_names_the_stand_in_rule():
+    """`similarity --senses` says why a stand-in's pair is 0 (rule 10), as for every other rule."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+
+    run = CliRunner().invoke(main, ["similarity", "tonic", "virgin mojito", "--senses"])
+    assert run.exit_code == 0, run.output
+    assert "virgin mojito: soft_drink.n.01 (override)" in run.output
+    assert "(rejected: a label the overrides read as its class is one member of it, not its generic)" in run.output

@@ -2,7 +2,7 @@
 
 The paper's rule (`similarity.LabelSimilarity`, mode `paper`: best Wu-Palmer over all kitchen senses,
 banana~cilantro 0.9 through their plant senses). This rule keeps the paper's composition (overrides,
-head nouns and modifiers, `similarity.py`) and changes nine things:
+head nouns and modifiers, `similarity.py`) and changes ten things:
 
 1. Senses by role (`role_senses`): a label with a food sense is an ingredient and
    keeps only its food senses; otherwise a label with an artifact sense is a tool or
@@ -28,8 +28,8 @@ head nouns and modifiers, `similarity.py`) and changes nine things:
    `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
    sauces are made from) is an ingredient, so vegetable broth~broth stands; a modifier
    WordNet tags mostly as an adjective (`senses.adjective`: green) is no food.
-5-8. Kin (`cook_kin.py`): the category index's kin, a filed label with its kinds, a kind of tool for
-   another food, a filed class.
+5-8, 10. Kin (`cook_kin.py`): the category index's kin, a filed label with its kinds, a kind of tool for
+   another food, a filed class; a label WordNet does not know, read as a class by an override, is one member of it.
 9. A class of tools is no tool (`tool_class`): a kind pair whose generic is an artifact sense with at least
    `TOOL_CLASS_KINDS` WordNet kinds, fewer than `NAMED_SHARE` of them named after it (`named_kinds`), scores 0:
    the kinds of kitchen appliance (oven, toaster, food processor), drinking vessel (mug, tankard) or flatware
@@ -108,7 +108,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches")
+         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins")
 
 
 class CookSimilarity(KinRules):
@@ -203,6 +203,8 @@ class CookSimilarity(KinRules):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "class")
                 elif not kin(self.categories, a, b, self.categories_of):
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "category")
+                elif self.member_as_class(a, b, found):  # rule 10: a stand-in is one member of its class
+                    found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "stand-in")
                 elif self.kind_only(a) or self.kind_only(b):
                     why = self._kinds(a, b, found)
                     if why:

@@ -30,6 +30,12 @@ cook swaps, read from the category index and from what a filed label is a kind o
    recipe uses, and stands with none of its kinds (saltwater fish~tuna, mixed drink~bullshot score 0);
    chop~porkchop (3 kinds) and salad green~lettuce (18) stand. A label that is a category's own name
    and no category's member (cutlery) is a class too, and stands with no label (`bare_category`).
+10. A stand-in is one member of its class (`stand_in`): a label WordNet does not know (neither as a whole nor
+   by its head) that the overrides read as a class (virgin mojito as `soft_drink.n.01`, dashi as a broth, gyoza as
+   a dumpling) is one member of that class: it stands with the class's label and its generics, and with a label
+   of its own sense, but not with the class's other kinds (virgin mojito~tonic, dashi~chicken broth,
+   gyoza~matzo ball score 0, "stand-in"). A label WordNet knows by its head (salad mix, a mix of salad greens)
+   is read as WordNet reads it and keeps its kinds.
 """
 
 from __future__ import annotations
@@ -40,7 +46,11 @@ from ..model.foon import normalize_label
 from .categories import CategoryIndex
 from .classes import food_class, kinds
 from .extend import Assignment, file_labels
+from .senses import Overrides, resolve, role_senses
 from .similarity import Evidence
+
+#: No overrides: how WordNet alone reads a label (rule 10).
+WORDNET_ONLY = Overrides({}, {})
 
 #: WordNet kinds from which a label rule 6 holds to its kinds is a class, not a thing a recipe uses (rule 8).
 CLASS_KINDS = 30
@@ -139,3 +149,19 @@ class KinRules:
         if self.reader.synset(kind[1]).lexname() != "noun.artifact":
             return False
         return for_another_food(self.reader, kind[1], generic[1], kind[0], generic[0])
+
+    def stand_in(self, label: str) -> bool:
+        """Rule 10: whether the overrides read `label`, which WordNet alone gives no sense (as a whole term or by its
+        head), as a class it is one member of (virgin mojito as a soft drink)."""
+        if self.resolution(label).source != "override":
+            return False
+        return not resolve(self.reader, normalize_label(label), WORDNET_ONLY, role_senses, hyphens=True).senses
+
+    def member_as_class(self, a: str, b: str, found: Evidence) -> bool:
+        """Rule 10: whether the kind pair `a`, `b` (`a`'s sense first in `found`) puts a stand-in as the generic of
+        another kind of its class (virgin mojito~tonic); a label of the stand-in's own sense is no other kind."""
+        if found.sense_a == found.sense_b:
+            return False
+        return (found.ancestor == found.sense_a and self.stand_in(a)) or (
+            found.ancestor == found.sense_b and self.stand_in(b))
+
