@@ -231,3 +231,15 @@ def test_two_bowls_of_one_label_read_as_what_moves_from_which_bowl_into_which():
     lines = result.stdout.splitlines()
     assert "5. pour lettuce (chopped) from the bowl (contains {lettuce}) into the bowl (contains {dressing})" in lines
     assert "5. pour lettuce_1 from bowl_1 into bowl_2" in lines
+
+
+def test_the_instances_object_line_says_what_moves_from_which_bowl_into_which():
+    """The `instances` encoding's object line for the same step listed the two bowls (`pour bowl_2, bowl_1 with
+    dressing_1, lettuce_1`) where the cook's words name them: it says what moves, from which bowl into which, as
+    the relational encoding's line does, and the dressing already in the receiving bowl is no tool."""
+    result = CliRunner().invoke(main, ["plan", str(DRESSED), "--kitchen", str(SCENES / "dressing_two_bowls.json"),
+                                       "--encoding", "instances", "--goal", DRESSED_GOAL])
+    assert result.exit_code == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "5. pour lettuce (chopped) from the bowl (contains {lettuce}) into the bowl (contains {dressing})" in lines
+    assert any(line.startswith("5. pour lettuce_1 from bowl_1 into bowl_2: ") for line in lines), result.stdout

@@ -18,7 +18,8 @@ from collections.abc import Iterable
 from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
-from ..model.pairing import unit_roles
+from ..model.pairing import transfer, unit_roles
+from ..model.places import contents
 from ..model.tasktree import TaskTree
 from .jsonio import node_to_dict
 from .writer import write_units
@@ -133,11 +134,6 @@ def _without_contents(node: ObjectNode, contents: set[str]) -> str:
     return node.label + (f" ({', '.join(states)})" if states else "")
 
 
-def _contents(node: ObjectNode) -> set[str]:
-    """What a node's `contains` states list (`bowl (contains {egg, salt})`: egg, salt)."""
-    return {i for s in node.states if s.label == "contains" for i in s.ingredients}
-
-
 def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
             moved: set[str]) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
     """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
@@ -149,7 +145,7 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
     for label, container in new.items():
         if label not in before:
             continue
-        added = _contents(container) - _contents(before[label])
+        added = contents(container) - contents(before[label])
         for i in unit.inputs:
             if (i.label in added and i.label not in new and i.label not in moved
                     and (_place(i) or ("", ""))[1] != label and not (_place(i) and _place(i) == _place(before[label]))):
@@ -163,16 +159,13 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
 
 def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
     """(what moves, from which container, into which) when two inputs of one container label trade contents
-    (the dressing's bowl and the lettuce's bowl, one left empty): `model.pairing` says which input becomes which
-    output, so the one that loses an ingredient the other gains is the source. None otherwise. O(roles^2)."""
-    roles = [r for r in unit_roles(unit) if r.before is not None and r.after is not None]
-    for src in roles:
-        lost = _contents(src.before) - _contents(src.after)
-        for dst in roles:
-            moved = lost & (_contents(dst.after) - _contents(dst.before)) if dst.label == src.label else set()
-            if dst is not src and moved:
-                return [i for i in unit.inputs if i.label in moved], src.before, dst.before
-    return None
+    (`model.pairing.transfer` over the unit's roles, which say which input becomes which output). None otherwise."""
+    roles = unit_roles(unit)
+    found = transfer([(r.before, r.after) for r in roles])
+    if found is None:
+        return None
+    src, dst, moved = found
+    return [i for i in unit.inputs if i.label in moved], roles[src].before, roles[dst].before
 
 
 def recipe_text(unit: FunctionalUnit) -> str:

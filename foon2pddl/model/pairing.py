@@ -35,11 +35,13 @@ data that is a duplicated line, not two objects in one state.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
 
 from .foon import FunctionalUnit, ObjectNode
+from .places import contents
 
 
 class RoleKind(StrEnum):
@@ -102,3 +104,17 @@ def unit_roles(unit: FunctionalUnit) -> tuple[Role, ...]:
     roles = [Role(a.label, a, outputs[partner[i]] if i in partner else None) for i, a in enumerate(inputs)]
     roles += [Role(b.label, None, b) for j, b in enumerate(outputs) if j not in taken]
     return tuple(roles)
+
+
+def transfer(sides: Sequence[tuple[ObjectNode | None, ObjectNode | None]]) -> tuple[int, int, frozenset[str]] | None:
+    """(source, destination, labels moved) over objects given as (before, after) nodes, in order: the first two of
+    one label whose contents one loses and the other gains (the lettuce's bowl poured into the dressing's bowl,
+    the first left empty). None when no two do. O(n^2) for n objects."""
+    known = [(k, a, b) for k, (a, b) in enumerate(sides) if a is not None and b is not None]
+    for s, a, b in known:
+        lost = contents(a) - contents(b)
+        for d, c, e in known:
+            moved = lost & (contents(e) - contents(c)) if d != s and c.label == a.label else frozenset()
+            if moved:
+                return s, d, moved
+    return None

@@ -22,7 +22,7 @@ from functools import lru_cache
 from .foon import ObjectNode, State, make_node, make_state
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "describes_contents", "head_of", "listed", "moved_into", "place_of", "place_state", "places"]
+__all__ = ["CONTENT_STATES", "contents", "describes_contents", "head_of", "listed", "moved_into", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
@@ -73,6 +73,12 @@ def listed(node: ObjectNode | None) -> frozenset[str]:
     items |= {s.related for s in node.states if s.label == "with" and s.related}
     items |= {i for s in node.states if s.label not in ("in", "on") for i in s.ingredients}
     return frozenset(items - {node.label})
+
+
+def contents(node: ObjectNode) -> frozenset[str]:
+    """The ingredients a node's `contains` states list (`bowl (contains {egg, salt})`: egg, salt); narrower than
+    `listed`, for words about what moves between containers."""
+    return frozenset(i for s in node.states if s.label == "contains" for i in s.ingredients)
 
 
 @lru_cache(maxsize=READ_KEPT)

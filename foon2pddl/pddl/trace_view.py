@@ -13,8 +13,9 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..model.foon import ObjectNode
-from ..model.pairing import RoleKind
+from ..model.pairing import RoleKind, transfer
 from ..model.physical import Binding, PhysicalTrace, TraceStep
+from ..model.places import contents
 from .task import PlanningTask
 
 __all__ = ["TraceView", "binding_kind", "changed", "show_node", "step_text"]
@@ -45,7 +46,18 @@ def binding_kind(binding: Binding) -> RoleKind:
 
 
 def step_text(step: TraceStep) -> str:
-    """`cut lime_1 on cutting_board_1 with knife_1`: the motion, the objects it changes, then `with` the others."""
+    """`cut lime_1 on cutting_board_1 with knife_1`: the motion, the objects it changes, then `with` the others;
+    between two containers of one label (`model.pairing.transfer`), what moves from which into which, as the
+    tree's cook's words say it: `pour lettuce_1 from bowl_1 into bowl_2` (what sits in the second is no tool)."""
+    found = transfer([(b.before, b.after) for b in step.bindings])
+    if found is not None:
+        src, dst, moved = step.bindings[found[0]], step.bindings[found[1]], found[2]
+        there = contents(dst.before) if dst.before is not None else frozenset()
+        what = [b.object for b in step.bindings if b.before is not None and b.before.label in moved]
+        others = [b.object for b in step.bindings if b not in (src, dst) and b.object not in what
+                  and not (b.before is not None and b.before.label in there)]
+        text = f"{step.unit.motion.label} {', '.join(what)} from {src.object} into {dst.object}"
+        return text + (f" with {', '.join(others)}" if others else "")
     moved = [b.object for b in step.bindings if changed(b)]
     others = [b.object for b in step.bindings if not changed(b)]
     text = " ".join([step.unit.motion.label, ", ".join(moved)]).strip()
