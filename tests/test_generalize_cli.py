@@ -167,3 +167,16 @@ def test_exp_tree_names_its_substitutions_and_similarity_is_an_option(run):
     assert "substitution:" not in plain.stderr
     planned = run("plan", "--goal", "lemonade", "--network", "exp")
     assert planned.exit_code == 0 and "substitution: lemon juice -> lime juice" in planned.stderr
+
+
+def test_exp_names_a_product_renamed_along_that_neither_the_network_nor_the_kitchen_holds(run):
+    """The lemonade recipe alone with the example kitchen's limes: the EXP copy that pours the juice records
+    `lemon juice -> lime juice`, a label outside the vocabulary the EXP view's matrix covers (network and
+    kitchen labels); naming it raised KeyError: 'lime juice' (a traceback) once the notes read that matrix."""
+    from foon2pddl.io.inputs import example_path
+
+    lemonade = str(example_path() / "01-lemonade.foon")
+    kitchen = str(example_path("example_kitchen.txt"))
+    r = run("retrieve", "--goal", "lemonade", "--network", "exp", "--kitchen", kitchen, lemonade)
+    assert r.exit_code == 0, r.stderr
+    assert "substitution: lemon juice -> lime juice (Wu-Palmer 0.875)" in r.stderr
