@@ -45,3 +45,23 @@ def label_similarity():
     from foon2pddl.generalize.similarity import LabelSimilarity
 
     return LabelSimilarity()
+
+
+def substitution_lines_without_wordnet(monkeypatch, tmp_path, *args: str) -> list[str]:
+    """Run the CLI with `args` on an empty cache, then again with WordNet unreadable (a warm run must not open it):
+    both succeed with the same stdout and `substitution:` lines, which are returned."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+    from foon2pddl.generalize import wordnet
+
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cache"))
+    runs = []
+    for warm in (False, True):
+        if warm:
+            monkeypatch.setattr(wordnet, "reader", lambda: pytest.fail("WordNet opened on a warm run"))
+        result = CliRunner().invoke(main, list(args))
+        assert result.exit_code == 0, result.stderr
+        runs.append((result.stdout, [line for line in result.stderr.splitlines() if line.startswith("substitution: ")]))
+    assert runs[0] == runs[1]
+    return runs[0][1]

@@ -10,7 +10,7 @@ import time
 
 import pytest
 from click.testing import CliRunner
-from conftest import SUBGRAPHS
+from conftest import SUBGRAPHS, substitution_lines_without_wordnet
 
 from foon2pddl.cli import main, progress
 
@@ -397,22 +397,9 @@ def test_a_warm_exp_retrieval_scores_its_substitutions_without_opening_wordnet(m
     """`retrieve --goal lemonade --network exp` (docs/generalization.md's transcript) opened WordNet on every run to
     score its one substitution: 10.6 s after `scoring the tree's FOON-EXP substitutions in WordNet ...` with a warm
     cache (load 7-9). The scores come from the mode's disk-cached matrix over the labels compared."""
-    from foon2pddl.generalize import wordnet
-
-    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cache"))
-    args = ("retrieve", "--goal", "lemonade", "--network", "exp")
-    first = run(*args)
-    assert first.exit_code == 0, first.stderr
-    said = [line for line in first.stderr.splitlines() if line.startswith("substitution: ")]
+    said = substitution_lines_without_wordnet(monkeypatch, tmp_path, "retrieve", "--goal", "lemonade", "--network",
+                                              "exp")
     assert said == ["substitution: lemon juice -> lime juice (Wu-Palmer 0.875)"]
-
-    def no_wordnet():
-        raise AssertionError("WordNet opened on a warm run")
-
-    monkeypatch.setattr(wordnet, "reader", no_wordnet)
-    again = run(*args)
-    assert again.exit_code == 0, again.stderr
-    assert [line for line in again.stderr.splitlines() if line.startswith("substitution: ")] == said
 
 
 def test_the_similarity_matrix_is_computed_in_a_series_of_steps(monkeypatch):

@@ -129,7 +129,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
         else:
             with slow_step(f"retrieving a tree for {target.describe()!r} with substitutes for what is banned"):
                 done = _substituted(net, kitchen, network, level, foon, kit, target, cons, method, motion_rates,
-                                    limits)
+                                    limits, view.matrix)
         read_from = view.concrete if kind.substitutes is Substitutes.CATEGORY else None
         for line in constraint_notes(done.removal, read_from, kind.label):
             click.echo(line, err=True)
@@ -202,8 +202,9 @@ def _made_with_banned(net, view, kitchen_path, level: int, target) -> bool:
     return any(reach.can_make(c) for c in target.candidates)
 
 
-def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits):
-    """Retrieval on EXP/GEN under constraints (most similar substitutes first); prints the substitutions made."""
+def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits, matrix=None):
+    """Retrieval on EXP/GEN under constraints (most similar substitutes first); prints the substitutions made.
+    `matrix`: EXP's similarities (`NetworkView.matrix`), read before WordNet is opened for a pair it lacks."""
     from ..generalize.substitution import retrieve_substituted, without_banned
     from ..io.inputs import load_kitchen
 
@@ -215,8 +216,10 @@ def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, met
     concrete = without_banned(load_kitchen(kitchen_path, net, level), cons)
     from ..generalize.modes import make_similarity
 
+    mode = chosen_similarity()
     done, subs = retrieve_substituted(network, foon, kit, target, cons, method, index=index,
-                                      sim=make_similarity(chosen_similarity()),
+                                      sim=make_similarity(mode) if matrix is None else
+                                      matrix.or_else(lambda: make_similarity(mode)),
                                       concrete_labels={n.label for n in concrete.nodes}, rates=rates, **limits)
     for sub in subs:
         click.echo(f"substitution: {sub.describe()}", err=True)

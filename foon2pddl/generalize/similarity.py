@@ -19,7 +19,7 @@ overrides; a cache hit does not import NLTK.
 from __future__ import annotations
 
 import io
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from ..io.atomic import atomic_write
@@ -161,6 +161,20 @@ class SimilarityMatrix:
 
     def __call__(self, a: str, b: str) -> float:
         return float(self.values[self.index(a), self.index(b)])
+
+    def or_else(self, make_sim: Callable[[], Callable[[str, str], float]]) -> Callable[[str, str], float]:
+        """This matrix's value for two of its labels (normalized first), else that of the similarity `make_sim()`
+        builds at the first pair the matrix lacks: pairs it holds open no WordNet (FOON-EXP's copies compare labels
+        of the matrix it was built by)."""
+        made: list[Callable[[str, str], float]] = []
+
+        def value(a: str, b: str) -> float:
+            try:
+                return self(normalize_label(a), normalize_label(b))
+            except KeyError:
+                made[:] = made or [make_sim()]
+                return made[0](a, b)
+        return value
 
     def similar(self, label: str, threshold: float) -> tuple[tuple[str, float], ...]:
         """Other labels at least `threshold` similar to `label`, most similar first (then by label)."""
