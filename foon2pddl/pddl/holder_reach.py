@@ -7,7 +7,7 @@ the two together in one pan are not. Fast Downward then searches every arrangeme
 butters until its time limit (experiment REG trial 1 goal 12). `drop_unreachable` computes, by a fixpoint
 over the actions, every state an object may reach (`(is ?x s)`), every pair of states a holder and what it
 holds may have together (`(in ?h ?x)`, `(on ?h ?x)`) and every other fluent atom, and drops the actions
-whose preconditions need a state or a pair outside them.
+whose preconditions need a state or a pair outside them, and the conditional effects whose conditions do.
 
 Over-approximation (never drops an action some plan applies): an action counts as applicable when each
 precondition alone is in the sets; an object whose state the action does not say may be in any state
@@ -194,6 +194,14 @@ def _fixpoint(task: PlanningTask) -> tuple[_Reach, tuple[Action, ...]]:
     return reach, tuple(waiting)
 
 
+def _firing(reach: _Reach, action: Action) -> Action:
+    """`action` without the conditional effects whose conditions no reachable state meets (never fired in the
+    fixpoint, so in no plan): Fast Downward grounds each over every binding its relaxed analysis allows (the odd
+    universal half's chocolate cake: a scrape's move of a batter in a state only that move keeps, 780 times)."""
+    firing = tuple(c for c in action.conditional if not _missing(reach, (*action.pre, *c.when)))
+    return action if len(firing) == len(action.conditional) else replace(action, conditional=firing)
+
+
 def unreachable(task: PlanningTask) -> tuple[Action, ...]:
     """The actions of `task` that no state reachable from its init applies (module doc); () for a task
     of another encoding (only `relational` keeps one state and one holder per object). O(rounds x actions x
@@ -204,7 +212,8 @@ def unreachable(task: PlanningTask) -> tuple[Action, ...]:
 
 
 def drop_unreachable(task: PlanningTask, any_cause: bool = False) -> tuple[PlanningTask, str | None]:
-    """`task` without the actions `unreachable` finds (the same plans; `task` itself when there are none),
+    """`task` without the actions `unreachable` finds and the conditional effects no reachable state fires (the same
+    plans; `task` itself when there are none),
     and, when the goal is then out of reach, why: the units whose holder and content no plan has together
     (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached, or
     when no holder pair keeps it out of reach (nothing makes a node: the planner's relaxed analysis says so),
@@ -213,7 +222,8 @@ def drop_unreachable(task: PlanningTask, any_cause: bool = False) -> tuple[Plann
         return task, None
     reach, gone = _fixpoint(task)
     dropped = {a.name for a in gone}
-    kept = replace(task, actions=tuple(a for a in task.actions if a.name not in dropped)) if gone else task
+    actions = tuple(_firing(reach, a) for a in task.actions if a.name not in dropped)
+    kept = replace(task, actions=actions) if gone or actions != task.actions else task
     missing = _missing(reach, task.goal)
     causes = _causes(reach, gone, task.goal) if missing else []
     if not causes:  # reached, or out of reach with no holder pair on the way: the planner's own analysis says so
