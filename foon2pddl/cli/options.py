@@ -50,17 +50,13 @@ def expansion_notes(tree, matrix) -> None:
     """Say (stderr) which FOON-EXP substitutions a tree relies on, with their similarity from `matrix`, the one
     the EXP view substituted by (`NetworkView.matrix`: no second matrix, no WordNet opened for a new goal). A
     product renamed along (`lemon juice -> lime juice`) that neither the network nor the kitchen holds is not
-    in that matrix: such a tree is scored in the mode's disk-cached matrix over the labels it compares."""
-    from ..generalize.modes import mode_matrix
-    from ..generalize.substitution import expansion_labels, expansion_substitutions
-    from ..model.foon import normalize_label
+    in that matrix: its pair is scored by the mode itself (`SimilarityMatrix.or_else`)."""
+    from ..generalize.modes import make_similarity
+    from ..generalize.substitution import expansion_substitutions
     from .progress import slow_step
 
-    labels = expansion_labels(tree)
-    if not labels <= set(matrix.labels):
-        with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
-            matrix = mode_matrix(labels, chosen_similarity())
-    subs = expansion_substitutions(tree, lambda a, b: matrix(normalize_label(a), normalize_label(b)))
+    with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
+        subs = expansion_substitutions(tree, matrix.or_else(lambda: make_similarity(chosen_similarity())))
     for line in [sub.describe() for sub in subs] or ["none (the tree uses only units as read)"]:
         click.echo(f"substitution: {line}", err=True)
 

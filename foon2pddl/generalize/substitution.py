@@ -107,18 +107,6 @@ def prefer_most_similar(foon: Foon, constraints: Constraints, sim: Callable[[str
     return foon
 
 
-def expansion_labels(tree: TaskTree) -> frozenset[str]:
-    """The labels `expansion_substitutions` compares: each FOON-EXP copy's original, and its recorded
-    replacement (every label of the copy when none is recorded)."""
-    found: set[str] = set()
-    for u in tree.units:
-        original = u.sources[0].expanded_from if u.sources else None
-        if original is not None:
-            recorded = u.sources[0].expanded_to
-            found.update((original, recorded) if recorded is not None else (original, *unit_labels(u)))
-    return frozenset(found)
-
-
 def expansion_substitutions(tree: TaskTree, sim: Callable[[str, str], float]) -> tuple[Substitution, ...]:
     """The substitutions an EXP tree relies on: for each FOON-EXP copy among its units, the label it
     replaced and the label standing in (as recorded at expansion, `_substitute`), sorted."""
