@@ -171,8 +171,11 @@ def retrieve(network: Network | Foon, kitchen: Kitchen | Iterable[ObjectNode], g
     if view.index is not None:
         cons, _ = category_must_use(cons, view.index, kind.label)
     concrete = {n.label for n in without_banned(kit.project(level), cons).nodes}
+    from .generalize.modes import make_similarity
+
+    sim = view.matrix.or_else(make_similarity) if view.matrix is not None else None  # EXP: WordNet for misses only
     done, _ = retrieve_substituted(kind.name, view.foon, view.kitchen, target, cons, method, index=view.index,
-                                   concrete_labels=concrete, rates=rates, **limits)
+                                   sim=sim, concrete_labels=concrete, rates=rates, **limits)
     return done.result
 
 

@@ -235,3 +235,18 @@ def test_a_warm_exp_retrieval_with_a_ban_ranks_its_substitutes_without_opening_w
     said = substitution_lines_without_wordnet(monkeypatch, tmp_path, "retrieve", "--goal", "pancake", "--network",
                                               "exp", "--without", "mixing bowl")
     assert said == ["substitution: mixing bowl -> bowl (Wu-Palmer 0.957)"]
+
+
+def test_the_api_ranks_a_bans_exp_substitutes_without_opening_wordnet_when_warm(monkeypatch, tmp_path):
+    """`foon2pddl.retrieve(..., network_kind="exp", constraints=...)` opened WordNet on every call, as the command
+    did (above): the API reads the matrix FOON-EXP was built by too."""
+    from foon2pddl.api import constraints_of
+    from foon2pddl.generalize import wordnet
+
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cache"))
+    net = load_network()
+    kitchen, ban = load_kitchen(net), constraints_of(without=["mixing bowl"])
+    first = retrieve(net, kitchen, "pancake", network_kind="exp", constraints=ban)
+    monkeypatch.setattr(wordnet, "reader", lambda: pytest.fail("WordNet opened on a warm run"))
+    again = retrieve(net, kitchen, "pancake", network_kind="exp", constraints=ban)
+    assert first.found and again.tree == first.tree
