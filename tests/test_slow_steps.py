@@ -457,3 +457,18 @@ def test_a_new_exp_goal_scores_its_substitutions_from_the_views_matrix(monkeypat
     assert other.exit_code == 0, other.stderr
     said = [line for line in other.stderr.splitlines() if line.startswith("substitution: ")]
     assert said == ["substitution: bowl -> mixing bowl (Wu-Palmer 0.957)"]
+
+
+def test_a_hint_check_that_finds_nothing_says_so(every_step_speaks, tmp_path):
+    """`checking which other network makes it (for a hint) ...` was the last line of a run whose check found
+    nothing: the reader could not tell a finished check from a hung one. It closes with what it found, and no
+    `hint:` line (README: none when neither network would make it)."""
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("knife\n")
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", kitchen)
+    assert r.exit_code == 1
+    lines = r.stderr.splitlines()
+    assert "checking which other network makes it (for a hint) ..." in lines, r.stderr
+    assert lines[-1] == "neither --network exp nor --network gen makes it", r.stderr
+    assert "hint:" not in r.stderr
+

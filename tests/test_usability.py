@@ -166,7 +166,7 @@ def test_no_network_hint_when_no_network_makes_it(tmp_path):
     kitchen = tmp_path / "k.txt"
     kitchen.write_text("knife\n")
     r = run("retrieve", "--goal", "guacamole", "--kitchen", str(kitchen))
-    assert r.exit_code == 1 and "hint" not in r.stderr
+    assert r.exit_code == 1 and "hint:" not in r.stderr  # a slow check may say `(for a hint) ...`, then what it found
 
 
 # -- output paths are checked before the work ---------------------------------------------------------

@@ -65,12 +65,13 @@ def begin() -> None:
 
 @contextmanager
 def slow_step(what: str | Callable[[], str], after: float | None = None, *,
-              series: str | None = None) -> Iterator[None]:
+              series: str | None = None) -> Iterator[threading.Event]:
     """Say `what ...` on stderr if the wrapped step is still running once the command has been silent
     for `AFTER` seconds, or (when given) after `after` seconds of the step (0: always, at once)
     (module doc). `what` may be a callable, read when the line is printed: a step whose plan changes
     midway (a fallback its own note announced) says what it does then, not what it set out to do.
-    `series`: the name of the series of steps this one belongs to (one redrawn line on a terminal)."""
+    `series`: the name of the series of steps this one belongs to (one redrawn line on a terminal).
+    Yields an event set once the line is said (a caller may close a said step with what it found)."""
     text = what if callable(what) else lambda: what
     global _quiet_since
     start = time.monotonic()
@@ -104,7 +105,7 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
     watcher = threading.Thread(target=watch, name="slow-step", daemon=True)
     watcher.start()
     try:
-        yield
+        yield said
     finally:
         done.set()
         watcher.join()

@@ -169,13 +169,18 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     if not _default_kitchen_hint(net, kitchen, spec, level):
         _recipe_file_hint(net, kitchen, spec, level)
     slow = slow_hint(net, kitchen)  # known to take seconds: said at once, not after the silence budget
-    with slow_step(slow or "checking which other network makes it (for a hint)", after=0 if slow else None):
+    with slow_step(slow or "checking which other network makes it (for a hint)", after=0 if slow else None) as said:
         kinds = networks_that_reach(net, kitchen, spec, level,
                                     confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
                                              for k in NETWORKS.values() if k.encoding is not None})
     if kinds:
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
+    elif said.is_set():  # the check was announced: close it (no `hint:` line, as README says)
+        checked = [f"--network {k.name}" for k in NETWORKS.values() if k.hint and len(net.foon.units) <= k.hint_max_units]
+        click.echo(f"neither {' nor '.join(checked)} makes it" if len(checked) > 1 else
+                   f"{checked[0]} does not make it either" if checked else "no other network is small enough to check",
+                   err=True)
 
 
 def _default_kitchen_hint(net, kitchen, spec, level: int) -> bool:
