@@ -472,3 +472,10 @@ def test_a_hint_check_that_finds_nothing_says_so(every_step_speaks, tmp_path):
     assert lines[-1] == "neither --network exp nor --network gen makes it", r.stderr
     assert "hint:" not in r.stderr
 
+
+def test_analyze_says_what_it_does_before_its_slow_imports(every_step_speaks):
+    """`analyze` was silent 2.1 s from its start (bench.silence, load 16): numpy and networkx load (1.1 s at load
+    15) before its first step; a step around them speaks first."""
+    r = run("analyze", "--level", "3", "--json")
+    assert r.exit_code == 0, r.stderr
+    assert r.stderr.splitlines()[0] == "loading the network analysis (numpy, networkx) ...", r.stderr
