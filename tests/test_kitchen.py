@@ -217,3 +217,18 @@ def test_load_kitchen_chooses_file_example_or_default(tmp_path, example):
     assert load_kitchen(tmp_path / "k.txt", net, 2).nodes == {project_node(n, 2) for n in EXPECTED}
     ex = load_kitchen(None, example, 3)
     assert ex.source.endswith("example_kitchen.txt") and ex.nodes != default_kitchen(example.foon).nodes
+
+
+def test_the_first_line_that_lists_each_node_one_rule_for_files_levels_and_scenes():
+    """`Kitchen.project` (nodes of a file's lines merging at a level) and `Kitchen.line_numbers` (a scene's objects)
+    computed "the first line listing each node" apart: one helper over (node, line) pairs keeps the smallest."""
+    from foon2pddl.model.kitchen import first_lines, scene_kitchen
+    from foon2pddl.model.scene import SceneObject
+
+    chopped, whole = make_node("onion", [make_state("chopped")]), make_node("onion", [make_state("whole")])
+    assert first_lines([(chopped, 7), (whole, 3), (chopped, 2)]) == {chopped: 2, whole: 3}
+    kitchen = Kitchen(frozenset({chopped, whole}), lines=((chopped, 7), (whole, 3)))
+    assert kitchen.project(1).line_numbers() == {make_node("onion"): 3}
+    bowl = make_node("bowl", [make_state("empty")])
+    scene = scene_kitchen([SceneObject("bowl_2", "bowl", bowl, line=9), SceneObject("bowl_1", "bowl", bowl, line=4)])
+    assert scene.line_numbers() == {bowl: 4}

@@ -67,21 +67,13 @@ class Kitchen:
         if self.scene:
             return scene_kitchen([replace(o, node=project_node(o.node, level)) for o in self.scene], self.source,
                                  level)
-        lines: dict[ObjectNode, int] = {}
-        for n, line in self.lines:  # nodes that become one at `level`: the first line listing any of them
-            p = project_node(n, level)
-            lines[p] = min(line, lines.get(p, line))
+        lines = first_lines((project_node(n, level), line) for n, line in self.lines)  # merged nodes: the first
         return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source,
                        tuple(sorted(counts.items())), lines=tuple(sorted(lines.items())))
 
     def line_numbers(self) -> dict[ObjectNode, int]:
         """Node -> the line of the kitchen's file that first lists it (nodes not read from a file line: absent)."""
-        if not self.scene:
-            return dict(self.lines)
-        lines: dict[ObjectNode, int] = {}
-        for o in self.scene:
-            lines[o.node] = min(o.line, lines.get(o.node, o.line))
-        return lines
+        return first_lines(((o.node, o.line) for o in self.scene) if self.scene else self.lines)
 
     def stated_counts(self) -> dict[ObjectNode, int]:
         """Node -> instance count for the nodes whose count the kitchen states."""
@@ -95,6 +87,15 @@ class Kitchen:
     def sorted_nodes(self) -> list[ObjectNode]:
         """Nodes in a stable order (for writing and display)."""
         return sorted(self.nodes)
+
+
+def first_lines(pairs: Iterable[tuple[ObjectNode, int]]) -> dict[ObjectNode, int]:
+    """Node -> the smallest of its lines among (node, line) `pairs`: the first line of a file that lists it (nodes a
+    level merges, or a scene's objects of one node). O(pairs)."""
+    lines: dict[ObjectNode, int] = {}
+    for node, line in pairs:
+        lines[node] = min(line, lines.get(node, line))
+    return lines
 
 
 def scene_kitchen(objects: Iterable[SceneObject], source: str = "", level: int = 3) -> Kitchen:
