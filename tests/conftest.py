@@ -16,10 +16,12 @@ SEARCH_INPUTS = SHARED / "foon-search-inputs"
 @pytest.fixture(autouse=True)
 def _quiet_slow_steps(monkeypatch):
     """A slow step's line (`cli.progress`) depends on the machine's speed and load: none in tests, so
-    their stderr is deterministic; a test about the lines sets `progress.AFTER` itself (0: every step)."""
+    their stderr is deterministic; a test about the lines sets `progress.AFTER` itself (0: every step), and
+    `progress.BEAT` for the seconds a long call's step adds through a pipe."""
     from foon2pddl.cli import progress
 
     monkeypatch.setattr(progress, "AFTER", 3600.0)
+    monkeypatch.setattr(progress, "BEAT", 3600.0)
     monkeypatch.setattr(progress, "_quiet_since", None)
 
 

@@ -479,3 +479,46 @@ def test_analyze_says_what_it_does_before_its_slow_imports(every_step_speaks):
     r = run("analyze", "--level", "3", "--json")
     assert r.exit_code == 0, r.stderr
     assert r.stderr.splitlines()[0] == "loading the network analysis (numpy, networkx) ...", r.stderr
+
+
+class _Said:
+    """Stands in for `progress.click`: records the lines a step says, and signals each one."""
+
+    def __init__(self):
+        import threading
+
+        self.lines: list[str] = []
+        self.new = threading.Condition()
+
+    def echo(self, text, err=False, nl=True):
+        with self.new:
+            self.lines.append(text)
+            self.new.notify_all()
+
+    def wait_for(self, count: int) -> bool:
+        with self.new:
+            return self.new.wait_for(lambda: len(self.lines) >= count, timeout=60)
+
+
+def test_a_step_around_one_long_call_beats_through_a_pipe(monkeypatch):
+    """Through a pipe a step says its line once: opening WordNet (one NLTK call, 3-8 s under load) then left the
+    log silent. A step with `beat=True` adds a line with its seconds every `BEAT` seconds until it ends."""
+    said = _Said()
+    monkeypatch.setattr(progress, "click", said)
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    monkeypatch.setattr(progress, "BEAT", 0.01)
+    with progress.slow_step("opening WordNet", beat=True):
+        assert said.wait_for(3), said.lines  # the line, then two beats: the step ends only once they are said
+    assert said.lines[0] == "opening WordNet ..."
+    assert all(re.fullmatch(r"opening WordNet \.\.\. \d+ s", line) for line in said.lines[1:]), said.lines
+
+
+def test_a_step_without_a_beat_says_its_line_once_through_a_pipe(monkeypatch):
+    said = _Said()
+    monkeypatch.setattr(progress, "click", said)
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    monkeypatch.setattr(progress, "BEAT", 0.01)
+    with progress.slow_step("reading x"):
+        assert said.wait_for(1)
+        time.sleep(0.1)  # ten beats' time: none is said
+    assert said.lines == ["reading x ..."]

@@ -6,7 +6,8 @@ run as `foon2pddl`), or from the end of the last step that said what it did, so
 that several short steps in a row cannot add up to a long silence. A step done by
 then prints nothing (fast runs keep their output). Otherwise it prints `what ...`
 at once; on a terminal the line then counts the seconds and ends with the step's
-time, and in a log it is one line. Only the message goes to stderr, never to
+time, and in a log it is one line (a step that is one long call, `beat=True`, adds a line with its seconds every
+`BEAT` seconds). Only the message goes to stderr, never to
 stdout, so outputs stay byte-identical however slow the machine is. A line printed
 by other means (a note) is not seen here: after one, a step may speak up early.
 
@@ -34,6 +35,8 @@ import click
 
 #: Seconds a command may stay silent before the step it is in says what it is.
 AFTER = 1.5
+#: Through a pipe, seconds between the lines a step with `beat=True` adds while it runs (its seconds so far).
+BEAT = 2.0
 #: On a terminal: back to the start of the line and clear it (a shorter text leaves nothing behind).
 _REDRAW = "\r\x1b[K"
 #: On a terminal: up to the line a finished step left, and clear it (the next step of its series redraws it).
@@ -65,13 +68,15 @@ def begin() -> None:
 
 @contextmanager
 def slow_step(what: str | Callable[[], str], after: float | None = None, *,
-              series: str | None = None) -> Iterator[threading.Event]:
+              series: str | None = None, beat: bool = False) -> Iterator[threading.Event]:
     """Say `what ...` on stderr if the wrapped step is still running once the command has been silent
     for `AFTER` seconds, or (when given) after `after` seconds of the step (0: always, at once)
     (module doc). `what` may be a callable, read when the line is printed: a step whose plan changes
     midway (a fallback its own note announced) says what it does then, not what it set out to do.
     `series`: the name of the series of steps this one belongs to (one redrawn line on a terminal).
-    Yields an event set once the line is said (a caller may close a said step with what it found)."""
+    Yields an event set once the line is said (a caller may close a said step with what it found).
+    `beat`: a step that is one long call (opening WordNet) also says, through a pipe, its seconds every `BEAT`
+    seconds (`what ... 4 s`), as a terminal's line counts them."""
     text = what if callable(what) else lambda: what
     global _quiet_since
     start = time.monotonic()
@@ -94,6 +99,8 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
         _series_line = None
         if not tty:
             click.echo(f"{text()} ...", err=True)
+            while beat and not done.wait(BEAT):
+                click.echo(f"{text()} ... {time.monotonic() - first:.0f} s", err=True)
             return
         click.echo(f"{_REDRAW_ABOVE if above else ''}{text()} ...", err=True, nl=False)
         while not done.wait(1.0):
