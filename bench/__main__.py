@@ -12,7 +12,7 @@ from .harness import Context, first_paragraph, run_main, shared_data, what_it_me
 
 #: Benchmark modules in the order they run (each has `run(ctx)`).
 AREAS = ["startup", "foundation", "scaling", "pddl_compile", "planning", "retrieval", "batch", "constraints",
-         "generalize", "similarity", "similarity_holdout", "category_extend", "exp_gains", "experiment", "reliability", "physical_replay", "translation", "skills", "silence"]
+         "generalize", "similarity", "similarity_relabel", "similarity_holdout", "category_extend", "exp_gains", "experiment", "reliability", "physical_replay", "translation", "skills", "silence"]
 
 
 def main() -> None:

@@ -1,0 +1,47 @@
+"""The second, blind labelling of the shared subgraphs' pairs and the agreement figures bench/similarity_relabel.py reports."""
+
+from __future__ import annotations
+
+import hashlib
+
+import pytest
+
+from bench.similarity import Pair, read_pairs
+from bench.similarity_relabel import LABELS, RELABEL, RELABELLED, agreement, confusion, paired, read_relabel
+
+RUBRIC = RELABEL.with_name("similarity_rubric.md")
+
+
+def test_the_second_labelling_covers_exactly_the_shared_pairs_and_is_the_frozen_file():
+    second = read_relabel()
+    first = [p for p in read_pairs() if p.split in RELABELLED]
+    keys = {frozenset((p.a, p.b)) for p in second}
+    assert len(keys) == len(second) == len(first) and keys == {frozenset((p.a, p.b)) for p in first}
+    assert {p.label for p in second} == set(LABELS)
+    sha1 = hashlib.sha1(RELABEL.read_bytes()).hexdigest()
+    assert sha1 in RUBRIC.read_text(encoding="utf-8")  # the rubric names the hash frozen before the key was opened
+    assert len(paired(first, second)) == len(second)
+
+
+def test_cohens_kappa_matches_a_hand_computed_three_way_table():
+    pairs = [("good", "good")] * 2 + [("marginal", "marginal")] + [("bad", "bad")] * 3 + [
+        ("good", "bad"), ("bad", "marginal")]
+    table = confusion(pairs)
+    assert table[("good", "bad")] == 1 and table[("bad", "good")] == 0 and table[("bad", "marginal")] == 1
+    assert sum(table.values()) == 8 and len(table) == 9
+    po, kappa = agreement(table)  # po 6/8; pe (3*2 + 1*2 + 4*4) / 64 = 0.375; kappa 0.375 / 0.625
+    assert po == pytest.approx(0.75) and kappa == pytest.approx(0.6)
+
+
+def test_kappa_is_zero_at_chance_and_one_when_the_labellers_agree():
+    chance = confusion([("good", "good"), ("good", "bad"), ("bad", "good"), ("bad", "bad")])
+    assert agreement(chance) == pytest.approx((0.5, 0.0))
+    assert agreement(confusion([("good", "good"), ("bad", "bad")])) == pytest.approx((1.0, 1.0))
+
+
+def test_pairing_takes_the_first_label_by_unordered_pair_and_rejects_different_coverage():
+    first = [Pair("a", "b", "good", "random", "tune"), Pair("c", "d", "bad", "random", "tune")]
+    second = [Pair("d", "c", "marginal", "relabel", "relabel"), Pair("a", "b", "good", "relabel", "relabel")]
+    assert paired(first, second) == [("bad", "marginal"), ("good", "good")]
+    with pytest.raises(ValueError, match="different pairs"):
+        paired(first, second[:1])
