@@ -55,8 +55,11 @@ def expansion_notes(tree, matrix) -> None:
     from ..generalize.substitution import expansion_substitutions
     from .progress import slow_step
 
-    with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
-        subs = expansion_substitutions(tree, matrix.or_else(lambda: make_similarity(chosen_similarity())))
+    def opened():  # WordNet opens only here, for a pair the matrix lacks
+        with slow_step("scoring the tree's FOON-EXP substitutions in WordNet"):
+            return make_similarity(chosen_similarity())
+
+    subs = expansion_substitutions(tree, matrix.or_else(opened))
     for line in [sub.describe() for sub in subs] or ["none (the tree uses only units as read)"]:
         click.echo(f"substitution: {line}", err=True)
 
