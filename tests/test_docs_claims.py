@@ -642,3 +642,14 @@ def test_every_documented_command_parses():
             except click.UsageError as exc:
                 refused.append(f"{c.where}: {c.text}: {exc.format_message()}")
     assert not refused, "\n".join(refused)
+
+
+def test_pddl_md_quotes_what_compile_prints_for_a_missing_file(tmp_path):
+    """pddl.md's `compile` paragraph quoted only `nope.json: error: no such file`; `compile --goal guacamole
+    nope.json` (a missing PATHS entry) prints `... no such file or directory`. Each message compile prints for a
+    missing file, as a network path and as a kitchen, is the one the paragraph quotes."""
+    text = _prose("pddl.md")
+    for args in (("nope.json",), ("--kitchen", "nope.json")):
+        r = CliRunner().invoke(main, ["compile", "--goal", "guacamole", "-o", str(tmp_path), *args])
+        assert r.exit_code == 2 and r.stderr.startswith("nope.json: error: "), r.stderr
+        assert f"`{r.stderr.strip()}`" in text, r.stderr
