@@ -103,3 +103,13 @@ def test_analyze_says_how_far_betweenness_is(monkeypatch, example):
     assert lines[0] == f"betweenness of {n:,} objects: source nodes 1-64 of {n:,} ..."
     assert lines[-2].endswith(f"-{n:,} of {n:,} ...") and lines[-1].startswith("betweenness of ")
     assert len([line for line in lines if " objects: " in line]) == -(-n // 64)
+
+
+def test_cli_plot_refuses_a_name_that_is_no_png(tmp_path):
+    """`analyze --plot x.svg` wrote PNG bytes into a file named .svg (newcomer pass nc50b): the name is
+    refused as a usage error naming --plot, before any work, and no file is written."""
+    r = CliRunner().invoke(main, ["analyze", "--plot", str(tmp_path / "x.svg")])
+    assert r.exit_code == 2 and "Invalid value for '--plot'" in r.stderr and ".png" in r.stderr, r.output
+    assert not (tmp_path / "x.svg").exists()
+    ok = CliRunner().invoke(main, ["analyze", "--top", "2", "--plot", str(tmp_path / "X.PNG")])
+    assert ok.exit_code == 0 and (tmp_path / "X.PNG").read_bytes().startswith(b"\x89PNG"), ok.output

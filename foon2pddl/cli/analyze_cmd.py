@@ -12,6 +12,13 @@ from .options import emit, output_option, paths_argument, read_network
 from .progress import slow_step
 
 
+def _png_name(ctx: click.Context, param: click.Parameter, value: Path | None) -> Path | None:
+    """--plot's file: it is written as PNG, so a name ending otherwise (`x.svg`) would hold the wrong format."""
+    if value is not None and value.suffix.lower() != ".png":
+        raise click.BadParameter(f"{value}: the plot is a PNG image: name the file *.png", ctx, param)
+    return value
+
+
 @main.command("analyze")
 @paths_argument
 @click.option("--top", type=click.IntRange(min=1), default=10, show_default=True,
@@ -22,7 +29,7 @@ from .progress import slow_step
 @click.option("--graphml", "graphml", type=click.Path(path_type=Path, file_okay=False), default=None,
               help="Directory for foon.graphml (bipartite), objects.graphml and motions.graphml (Gephi, Cytoscape).")
 @click.option("--plot", "plot", type=click.Path(path_type=Path, dir_okay=False), default=None,
-              help="PNG of the most central objects and motions.")
+              callback=_png_name, help="PNG of the most central objects and motions (FILE.png).")
 @output_option
 def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     """One-mode projections of the network (object-object, motion-motion), degree and betweenness
