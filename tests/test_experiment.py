@@ -266,6 +266,20 @@ def test_bad_options_exit_2():
     assert result.exit_code == 2 and "xyz" in result.output
 
 
+def test_bad_option_values_are_usage_errors_naming_the_option_and_the_closest_name():
+    """`experiment --solvers native-complet` said `Error: --solvers: unknown 'native-complet' (choose from ...)`
+    where `plan --planner` says `Invalid value for '--planner'` and names the closest (newcomer pass nc50b):
+    each experiment option value is refused in that one form, with the closest name when there is one."""
+    for option, value, closest in (("--solvers", "native-complet", "native-complete"), ("--networks", "rge", "reg"),
+                                   ("--sweep", "kitchen-fractoin=0.5", "kitchen-fraction")):
+        result = CliRunner().invoke(main, ["experiment", option, value, "--no-progress"])
+        assert result.exit_code == 2, result.output
+        assert f"Error: Invalid value for '{option}': " in result.stderr, result.stderr
+        assert f"did you mean {closest!r}?" in result.stderr, result.stderr
+    result = CliRunner().invoke(main, ["experiment", "--solvers", "fd-tree", "--goal-limit", "native-greedy=3"])
+    assert result.exit_code == 2 and "Error: Invalid value for '--goal-limit': " in result.stderr, result.stderr
+
+
 # -- report --------------------------------------------------------------------------------------
 
 def test_disagreement_is_flagged():

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError, UsageError
+from ..errors import FoonInputError
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.provenance import code_version, describe
@@ -23,12 +23,21 @@ EXIT_DISAGREEMENT = 3  # the run finished, but solvers disagree or a returned tr
 EXIT_INCOMPLETE = 4  # cells were lost with their workers; running the same command again redoes them
 
 
+def _bad(option: str, message: str) -> click.BadParameter:
+    """A bad value of `option`: `Invalid value for '--option': ...`, the form every command's options use."""
+    return click.BadParameter(message, param_hint=f"'{option}'")
+
+
 def _names(text: str, known, what: str) -> tuple[str, ...]:
     names = tuple(dict.fromkeys(x.strip().lower() for x in text.split(",") if x.strip()))
     unknown = [n for n in names if n not in known]
     if unknown or not names:
-        raise UsageError(f"--{what}: unknown {', '.join(map(repr, unknown)) or 'empty list'} "
-                                             f"(choose from {', '.join(known)})")
+        import difflib
+
+        close = difflib.get_close_matches(unknown[0], list(known), n=1) if unknown else []
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise _bad(f"--{what}", f"unknown {', '.join(map(repr, unknown)) or 'empty list'}{hint} "
+                                f"(choose from {', '.join(known)})")
     return names
 
 
@@ -38,9 +47,9 @@ def _sweeps(items) -> tuple[tuple[str, tuple], ...]:
         try:
             name, values = parse_sweep(item)
         except ValueError as exc:
-            raise UsageError(f"--sweep: {exc}") from None
+            raise _bad("--sweep", str(exc)) from None
         if name in out:
-            raise UsageError(f"--sweep: {name} given twice")
+            raise _bad("--sweep", f"{name} given twice")
         out[name] = values
     return tuple(out.items())
 
@@ -51,8 +60,8 @@ def _goal_limits(items, solvers) -> tuple[tuple[str, int], ...]:
         name, sep, n = item.partition("=")
         name = name.strip().lower()
         if not sep or not n.strip().isdigit() or int(n) < 1 or name not in solvers:
-            raise UsageError(f"--goal-limit {item!r}: expected SOLVER=N with N >= 1 and "
-                                                 f"SOLVER one of the chosen solvers ({', '.join(solvers)})")
+            raise _bad("--goal-limit", f"{item!r}: expected SOLVER=N with N >= 1 and "
+                                       f"SOLVER one of the chosen solvers ({', '.join(solvers)})")
         out[name] = int(n)
     return tuple(sorted(out.items()))
 

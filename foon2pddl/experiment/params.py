@@ -111,7 +111,11 @@ def get_param(name: str) -> Param:
     try:
         return PARAMS[name]
     except KeyError:
-        raise ValueError(f"unknown sweep parameter {name!r} (expected one of {', '.join(PARAMS)})") from None
+        import difflib
+
+        close = difflib.get_close_matches(name, list(PARAMS), n=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise ValueError(f"unknown sweep parameter {name!r}{hint} (expected one of {', '.join(PARAMS)})") from None
 
 
 def parse_sweep(text: str) -> tuple[str, tuple[Any, ...]]:
