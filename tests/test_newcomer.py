@@ -678,10 +678,10 @@ def test_an_input_two_containers_newly_list_goes_into_the_inner_one_said_once(un
 
 # -- -o: one convention for every output ---------------------------------------------------------------
 
-#: Every command's output options, each with its kind: a file, or a directory of files.
+#: Every command's output options, each with its kind: a file, a PNG file (`--plot`), or a directory of files.
 OUTPUTS = [
     (("stats", "-o"), "file"), (("merge", "-o"), "file"), (("goals", "-o"), "file"), (("check", "-o"), "file"),
-    (("analyze", "-o"), "file"), (("analyze", "--plot"), "file"), (("analyze", "--graphml"), "dir"),
+    (("analyze", "-o"), "file"), (("analyze", "--plot"), "png"), (("analyze", "--graphml"), "dir"),
     (("similarity", "lemon", "lime", "-o"), "file"), (("generalize", "-o"), "file"),
     (("categories", "--extend", SUBGRAPHS / "0001-whipped_cream.txt", "-o"), "file"),
     (("retrieve", "--goal", "guacamole", "-o"), "file"), (("retrieve", "--goal", "guacamole", "--goal", "pancake", "-o"),
@@ -698,7 +698,7 @@ OUTPUTS = [
 def test_every_output_option_creates_its_missing_parent_directories(tmp_path, args, kind):
     """`plan -o missing/dir/file` creates `missing/dir`: so does every other output of every command
     (README, common options), as `compile -o DIR` and `experiment -o DIR` must."""
-    target = tmp_path / "missing" / "dir" / ("out" if kind == "dir" else "out.txt")
+    target = tmp_path / "missing" / "dir" / {"dir": "out", "png": "out.png"}.get(kind, "out.txt")  # --plot: a PNG
     r = run(*args, target)
     assert r.exit_code == 0, r.stderr
     assert target.is_dir() if kind == "dir" else target.is_file()

@@ -79,8 +79,10 @@ def categories_(paths, categories, check, extend, min_similarity, output) -> Non
 
         net = read_network(paths)
         labels = [n.label for n in net.foon.nodes]
-        with slow_step("filing the object labels in no category (through WordNet)"):
-            found = file_labels(labels, index, filing_similarity(), min_similarity)
+        found: tuple = ()
+        if coverage(labels, index).missing:  # else nothing to file: WordNet is not opened
+            with slow_step("filing the object labels in no category (through WordNet)"):
+                found = file_labels(labels, index, filing_similarity(), min_similarity)
         bigger = extended_index(index, found)
         emit(index_json(bigger, "Extended by foon2pddl categories --extend: review the assignments."), output)
         click.echo("label\tcategory\tvia\tsimilarity\thow", err=True)
