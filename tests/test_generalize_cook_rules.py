@@ -105,3 +105,17 @@ def test_similarity_senses_names_the_stand_in_rule():
     assert run.exit_code == 0, run.output
     assert "virgin mojito: soft_drink.n.01 (override)" in run.output
     assert "(rejected: a label the overrides read as its class is one member of it, not its generic)" in run.output
+
+
+def test_two_labels_that_share_the_sense_the_mode_reads_are_synonyms(cook):
+    """Synonyms (stop 50, issue 23): two whole terms the mode reads as one WordNet sense (club soda and soda water,
+    both `soda_water.n.01`) name one thing and score 1 whatever the categories say; a compound known by its head
+    shares the head's sense without being it, so bowl~food processor bowl is still held to the categories."""
+    e = cook.explain("club soda", "soda water")
+    assert (e.similarity, e.rejected, e.sense_a, e.sense_b) == (1.0, "", "soda_water.n.01", "soda_water.n.01")
+    assert cook.explain("bowl", "food processor bowl").rejected == "category"
+    # Two shared senses the categories used to hide, read as a kitchen means them (the shipped overrides): ice is
+    # frozen water (`ice.n.01`), not icing; soy is soy sauce, not the bean.
+    assert cook("soy", "soy sauce") == 1.0
+    for a, b in [("frosting", "ice"), ("ice", "water ice"), ("soy", "soybean")]:
+        assert cook(a, b) == 0.0, (a, b, cook.explain(a, b))

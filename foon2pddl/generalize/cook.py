@@ -15,7 +15,7 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
 3. Broad ancestors rejected: a sense pair whose common ancestor covers more than
    `breadth` of the breadth vocabulary (every label with a sense under it, counted
    once) names a category, not a substitute (container~spoon, baking tray~pot), and
-   scores 0. Two labels with the same sense are never rejected. The breadth vocabulary
+   scores 0. Two labels with the same sense are never rejected, by no rule (`synonyms`). The breadth vocabulary
    is the shipped reference vocabulary (`data/reference_vocabulary.txt`: the object
    labels of the 100 public FOON subgraphs and the example network) plus the pair's own
    two labels, so a pair's value depends neither on how small a network is nor on how
@@ -111,6 +111,13 @@ RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adj
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins")
 
 
+def synonyms(found: Evidence) -> bool:
+    """Whether `found` reads two whole terms as one sense (club soda, soda water: `soda_water.n.01`): synonyms name
+    one thing and stand whatever the categories say (rules 5-10 judge two things). A compound known by its head
+    shares the head's sense at a value below 1 (bowl~food processor bowl) and is no synonym."""
+    return found.similarity == 1.0 and found.sense_a is not None and found.sense_a == found.sense_b
+
+
 class CookSimilarity(KinRules):
     """The cook's label similarity (module doc); same interface as `similarity.LabelSimilarity`."""
 
@@ -196,7 +203,7 @@ class CookSimilarity(KinRules):
         found = self._evidence.get((a, b))
         if found is None:
             found = self._compute(a, b)
-            if found.similarity and not found.rejected and self.categories is not None:
+            if found.similarity and not found.rejected and self.categories is not None and not synonyms(found):
                 if mixed_roles(self.reader, found.sense_a, found.sense_b):  # rule 1: an ingredient and no ingredient
                     found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "role")
                 elif self.bare_category(a) or self.bare_category(b):  # rule 8: a class stands with nothing
