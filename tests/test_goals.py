@@ -222,3 +222,21 @@ def test_a_bare_label_with_no_dish_and_no_final_product_says_any_of_its_nodes_wi
                                "(give the states to ask for one): `avocado (halved, on [cutting board])`; "), notes
     single = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole: in [bowl]"])  # states given: no note
     assert "note: goal" not in single.stderr
+
+
+def test_dishes_of_a_network_that_marks_none_say_so_and_name_the_whole_list():
+    """`goals FOON-0076-bloody_mary.txt --dishes` (the converter's example) printed `0 of 0 dishes` and nothing
+    else (newcomer pass nc50b): a network whose O lines mark no dish gets a note saying so and naming `goals`
+    without --dishes, which lists its 20 goal candidates."""
+    from click.testing import CliRunner
+    from conftest import ROOT
+
+    from foon2pddl.cli import main
+
+    net = str(ROOT / "tests/data/foon_to_pddl-examples/FOON-0076-bloody_mary.txt")
+    r = CliRunner().invoke(main, ["goals", net, "--dishes"])
+    assert r.exit_code == 0 and r.stdout.startswith("reachable: 0 of 0 dishes"), r.output
+    assert "note: no node of this network is marked as a recipe's dish" in r.stderr, r.stderr
+    assert "`goals` without --dishes lists every goal candidate" in r.stderr, r.stderr
+    marked = CliRunner().invoke(main, ["goals", "--dishes"])
+    assert marked.exit_code == 0 and "marked as a recipe's dish" not in marked.stderr

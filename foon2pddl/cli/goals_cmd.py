@@ -61,6 +61,9 @@ def goals(paths, kitchen, level, network, as_json, only_reachable, only_dishes, 
     rows = goal_rows(foon, reachable(foon, kit.nodes))
     if only_dishes:
         rows = [r for r in rows if r["dish"]]
+        if not foon.dishes:  # `0 of 0 dishes` alone reads as if none could be made
+            click.echo("note: no node of this network is marked as a recipe's dish (an O line's 4th field); "
+                       "`goals` without --dishes lists every goal candidate", err=True)
     counted = (sum(r["reachable"] for r in rows), len(rows), "dishes" if only_dishes else "goal candidates")
     if only_reachable:  # the legend still counts every candidate (or dish)
         rows = [r for r in rows if r["reachable"]]
