@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from types import ModuleType
 
 __all__ = ["INPUTS", "FoonError", "FoonInputError", "FoonSyntaxError", "MissingDependencyError", "ParseWarning",
-           "PlanDecodeError", "UsageError", "place", "require"]
+           "PlanDecodeError", "UsageError", "did_you_mean", "place", "require"]
 
 #: The inputs a file can belong to (`FoonError.belongs`), as the library's messages name them.
 INPUTS = {"paths": "as a network (FOON paths)", "kitchen": "as the kitchen", "goals": "as the goal list",
@@ -34,6 +34,14 @@ INPUTS = {"paths": "as a network (FOON paths)", "kitchen": "as the kitchen", "go
 def place(path: str, line: int) -> str:
     """`path:line`, or `path` alone for line 0 (the file as a whole: a missing file has no line)."""
     return f"{path}:{line}" if line else path
+
+
+def did_you_mean(name: str, choices) -> str:
+    """`; did you mean 'x'?` naming the choice closest to a misspelt `name` (difflib's ratio, cutoff 0.6), or ""."""
+    import difflib
+
+    close = difflib.get_close_matches(name, list(choices), n=1)
+    return f"; did you mean {close[0]!r}?" if close else ""
 
 
 class FoonError(Exception):

@@ -81,12 +81,10 @@ class _Group(click.Group):
         """As click's, but a misspelt command names the closest one and lists them all (as a misspelt option)."""
         name = args[0] if args else ""
         if name and not name.startswith("-") and not ctx.resilient_parsing and self.get_command(ctx, name) is None:
-            import difflib
+            from ..errors import did_you_mean
 
             names = self.list_commands(ctx)
-            close = difflib.get_close_matches(name, names, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
-            ctx.fail(f"No such command {name!r}{hint} (commands: {', '.join(names)})")
+            ctx.fail(f"No such command {name!r}{did_you_mean(name, names)} (commands: {', '.join(names)})")
         return super().resolve_command(ctx, args)
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
+from ..errors import FoonInputError, did_you_mean
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.provenance import code_version, describe
@@ -32,10 +32,7 @@ def _names(text: str, known, what: str) -> tuple[str, ...]:
     names = tuple(dict.fromkeys(x.strip().lower() for x in text.split(",") if x.strip()))
     unknown = [n for n in names if n not in known]
     if unknown or not names:
-        import difflib
-
-        close = difflib.get_close_matches(unknown[0], list(known), n=1) if unknown else []
-        hint = f"; did you mean {close[0]!r}?" if close else ""
+        hint = did_you_mean(unknown[0], known) if unknown else ""
         raise _bad(f"--{what}", f"unknown {', '.join(map(repr, unknown)) or 'empty list'}{hint} "
                                 f"(choose from {', '.join(known)})")
     return names

@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
-from ..errors import UsageError
+from ..errors import UsageError, did_you_mean
 from ..model.foon import Foon
 from ..model.kitchen import Kitchen
 from .bans import ban_motions, exclude_objects
@@ -111,11 +111,7 @@ def get_param(name: str) -> Param:
     try:
         return PARAMS[name]
     except KeyError:
-        import difflib
-
-        close = difflib.get_close_matches(name, list(PARAMS), n=1)
-        hint = f"; did you mean {close[0]!r}?" if close else ""
-        raise ValueError(f"unknown sweep parameter {name!r}{hint} (expected one of {', '.join(PARAMS)})") from None
+        raise ValueError(f"unknown sweep parameter {name!r}{did_you_mean(name, PARAMS)} (expected one of {', '.join(PARAMS)})") from None
 
 
 def parse_sweep(text: str) -> tuple[str, tuple[Any, ...]]:
