@@ -160,7 +160,7 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
 
 def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan."""
-    from ..generalize.hints import networks_that_reach, slow_hint
+    from ..generalize.hints import hinted_kinds, networks_that_reach, slow_hint
     from ..generalize.network import NETWORKS
     from ..io.inputs import goal_spec
     from .progress import slow_step
@@ -178,7 +178,7 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
     elif said.is_set():  # the check was announced: close it (no `hint:` line, as README says)
-        checked = [f"--network {k.name}" for k in NETWORKS.values() if k.hint and len(net.foon.units) <= k.hint_max_units]
+        checked = [f"--network {k.name}" for k in hinted_kinds(net)]
         click.echo(f"neither {' nor '.join(checked)} makes it" if len(checked) > 1 else
                    f"{checked[0]} does not make it either" if checked else "no other network is small enough to check",
                    err=True)

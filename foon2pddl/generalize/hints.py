@@ -23,20 +23,25 @@ from ..errors import FoonError
 from ..io.inputs import Network
 from ..model.goal import GoalSpec
 from ..model.kitchen import Kitchen
-from .network import NETWORKS, network_view
+from .network import NETWORKS, NetworkKind, network_view
+
+
+def hinted_kinds(net: Network) -> list[NetworkKind]:
+    """The kinds a hint check builds for `net`: those with a `hint`, where `net` is small enough to build them
+    cheaply (`NetworkKind.hint_max_units`), in `NETWORKS` order."""
+    return [k for k in NETWORKS.values() if k.hint and len(net.foon.units) <= k.hint_max_units]
 
 
 def slow_hint(net: Network, kitchen: Kitchen) -> str | None:
     """What the first slow build of a hint check will do (`NetworkKind.slow_step`), None when every
     hinted network is quick to build (EXP's matrix cached): the caller says it when the check starts."""
-    for kind in (k for k in NETWORKS.values() if k.hint and k.slow_step is not None):
-        if len(net.foon.units) <= kind.hint_max_units:
-            try:
-                slow = kind.slow_step(net, kitchen)
-            except (FoonError, OSError):
-                continue
-            if slow is not None:
-                return slow
+    for kind in (k for k in hinted_kinds(net) if k.slow_step is not None):
+        try:
+            slow = kind.slow_step(net, kitchen)
+        except (FoonError, OSError):
+            continue
+        if slow is not None:
+            return slow
     return None
 
 
@@ -48,9 +53,7 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
     """
     confirm = confirm or {}
     found = []
-    for kind in (k for k in NETWORKS.values() if k.hint):
-        if len(net.foon.units) > kind.hint_max_units:
-            continue
+    for kind in hinted_kinds(net):
         try:  # a hint is optional: nothing here (a missing WordNet or extra included) may become an error
             view = network_view(net, kind.name, level, kitchen)
             goal = view.resolve(spec)
