@@ -488,3 +488,21 @@ def test_a_kitchen_node_read_as_placed_in_a_kitchen_container_is_reported():
             "sugar, whose node there, brown sugar (in [bowl]), this pour makes: read as the kitchen's brown sugar "
             "(granulated, in [jar]), placed in it (the first in order of 2 kitchen nodes of brown sugar; no unit of the "
             "task takes any there)") in outcome.compiled.notes
+
+
+def test_the_gen_cell_whose_plan_named_an_emptied_container_returns_no_invalid_plan():
+    # GEN, trial 4, goal 92 of `foon2pddl experiment tests/data/foon-subgraphs` (default protocol): with a kitchen
+    # container read as poured out whole when one unit takes it (9633ca1, 4d158bf, reverted), the relational task
+    # let a pour take `plates and trays (contains {alliums})` that no object was in any more: the plan failed its
+    # own decoding (`no plates and trays is ...`) and the run ended INVALID (exit 3). Whatever the cell's answer,
+    # it is never a plan that does not decode.
+    from pathlib import Path
+
+    from foon2pddl.experiment.protocol import Protocol
+    from foon2pddl.experiment.worker import Batch, Job, draw_at, fingerprint, run_batch
+
+    paths = (str(Path(__file__).parent / "data" / "foon-subgraphs"),)
+    trial = next(t for t in draw_at(paths, Protocol(), ()).trials if t.index == 4)
+    assert trial.goals[91].describe() == "plate (contains {onion, sweet pepper, tomato})"
+    [record] = run_batch(Batch(trial, "gen", "fd-relational", (92,)), Job(paths, fingerprint(paths), Protocol(), 60.0))
+    assert record.status.value != "error", record.reason
