@@ -119,3 +119,17 @@ def test_two_labels_that_share_the_sense_the_mode_reads_are_synonyms(cook):
     assert cook("soy", "soy sauce") == 1.0
     for a, b in [("frosting", "ice"), ("ice", "water ice"), ("soy", "soybean")]:
         assert cook(a, b) == 0.0, (a, b, cook.explain(a, b))
+
+
+def test_two_dishes_are_variants_even_when_wordnet_names_each(cook):
+    """Rule 4 for whole terms (stop 51, issue 23): a dish's kinds are variants of it whether named by a compound
+    (greek salad) or by a word of their own (club sandwich, wrap, quesadilla: all under `dish.n.02`), so two senses
+    that meet under a dish stand with neither each other nor their generic; a stock is an ingredient (rule 4's
+    `INGREDIENTS`: WordNet files broth under soup), and one dish sense read by both labels stands (synonyms)."""
+    for a, b in [("club sandwich", "hamburger"), ("hamburger", "wrap"), ("sandwich", "wrap"),
+                 ("club sandwich", "sandwich"), ("burrito", "quesadilla")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "dishes", (a, b, e)
+    for a, b in [("broth", "chicken broth"), ("beef stock", "vegetable broth"), ("bouillon", "soup broth"),
+                 ("dumpling", "gyoza"), ("french toast", "matzo brei"), ("bread", "loaf"), ("lemon", "lime")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

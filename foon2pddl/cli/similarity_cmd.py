@@ -98,6 +98,7 @@ def _why(a: str, b: str, ev) -> str:
                "class": "rejected: a filed label with many WordNet kinds is a class, not a substitute",
                "tool class": "rejected: a class of tools whose kinds go by names of their own",
                "role": "rejected: an ingredient and no ingredient",
+               "dishes": "rejected: two dishes are variants of one another, not substitutes",
                "stand-in": "rejected: a label the overrides read as its class is one member of it, not its generic"}.get(
         ev.rejected, f"ancestor covers {ev.breadth:.1%} of the vocabulary")
     return f"{a} ~ {b}: {ev.sense_a} ~ {ev.sense_b} under {ev.ancestor} ({verdict})\n"

@@ -24,8 +24,9 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    named or defined after them, `classes.staple`) is never broad with its kinds, unless it is
    a dish, a bake or a flavorer (`classes.NOT_STAPLES`: sauce, cake) or a compound known by its head.
 
-4. Variants (dish compounds) are not substitutes (`variant`); a stock (`INGREDIENTS`:
-   `broth.n.01`, which WordNet files under soup but defines as the liquid soups and
+4. Variants (dish compounds) are not substitutes (`variant`), nor are two dish senses (`dishes`: club
+   sandwich~wrap, sandwich~hamburger); a stock (`INGREDIENTS`:
+   `broth.n.01`, `broth.n.02`, which WordNet files under soup but defines as the liquid soups and
    sauces are made from) is an ingredient, so vegetable broth~broth stands; a modifier
    WordNet tags mostly as an adjective (`senses.adjective`: green) is no food.
 5-8, 10. Kin (`cook_kin.py`): the category index's kin, a filed label with its kinds, a kind of tool for
@@ -69,8 +70,9 @@ DISH = "dish.n.02"
 #: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
 PREPARED: frozenset[str] = frozenset({DISH, "baked_goods.n.01", "beverage.n.01"})
 
-#: Prepared foods that recipes use as ingredients (rule 4): stock and broth (under soup in WordNet).
-INGREDIENTS: frozenset[str] = frozenset({"broth.n.01"})
+#: Prepared foods that recipes use as ingredients (rule 4): stock and broth (under soup in WordNet; `broth.n.02`, "a
+#: thin soup of meat or fish or vegetable stock", holds bouillon and consomme).
+INGREDIENTS: frozenset[str] = frozenset({"broth.n.01", "broth.n.02"})
 
 
 def _data(name: str) -> Path:
@@ -108,7 +110,8 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
-         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms")
+         " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
+         " dishes")
 
 
 def synonyms(found: Evidence) -> bool:
@@ -192,6 +195,15 @@ class CookSimilarity(KinRules):
             return True
         return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
 
+    def dishes(self, sense: str, other: str, lcs: str) -> bool:
+        """Rule 4 for whole terms: whether two senses meet under a dish (`DISH`: club sandwich and wrap under sandwich,
+        a sandwich and its kind), neither a stock (`INGREDIENTS`). A dish's kinds are variants of it whether named
+        by a compound (greek salad) or by a word of their own (club sandwich). Only with the categories (rule 5 on):
+        the filing similarity groups dishes."""
+        if self.categories is None or sense == other or DISH not in self._wup.ancestors(lcs):
+            return False
+        return not any(self._wup.ancestors(x) & INGREDIENTS for x in (sense, other))
+
     def __call__(self, a: str, b: str) -> float:
         return self.explain(a, b).similarity
 
@@ -263,11 +275,11 @@ class CookSimilarity(KinRules):
 
     def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int, labels: tuple[str, str]
               ) -> Evidence:
-        """Greatest accepted value over sense pairs (then first in WordNet order); the best rejected one
-        explains a 0. `extra` links are added below one side (a compound under its head); `labels` (the
+        """Greatest accepted value over sense pairs (then first in WordNet order), no pair too broad (rule 3) or of
+        two dishes (rule 4); the best rejected one explains a 0. `extra` links are added below one side (a compound under its head); `labels` (the
         pair's) join the breadth vocabulary."""
         best = Evidence(0.0)
-        broad = None
+        rejected = None
         for s in senses_a:
             for t in senses_b:
                 found = self._wup.deepest(*sorted((s, t)))
@@ -276,13 +288,16 @@ class CookSimilarity(KinRules):
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
                 share = self.coverage(lcs, labels)
-                if s != t and share > self.breadth and not self.staple(s, t, lcs, labels[0] if lcs == s else labels[1]):
-                    if broad is None or value > broad.similarity:
-                        broad = Evidence(value, lcs, s, t, share, "broad")
+                why = ("broad" if s != t and share > self.breadth
+                       and not self.staple(s, t, lcs, labels[0] if lcs == s else labels[1])
+                       else "dishes" if self.dishes(s, t, lcs) else "")
+                if why:
+                    if rejected is None or value > rejected.similarity:
+                        rejected = Evidence(value, lcs, s, t, share, why)
                 elif value > best.similarity:
                     best = Evidence(value, lcs, s, t, share)
-        if best.similarity == 0.0 and broad is not None:
-            return Evidence(0.0, broad.ancestor, broad.sense_a, broad.sense_b, broad.breadth, "broad")
+        if best.similarity == 0.0 and rejected is not None:
+            return Evidence(0.0, rejected.ancestor, rejected.sense_a, rejected.sense_b, rejected.breadth, rejected.rejected)
         return best
 
 

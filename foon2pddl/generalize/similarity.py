@@ -42,7 +42,7 @@ class Evidence:
     `rejected`: "" (accepted), "broad" (the best sense pair's ancestor is too broad, `cook.py`),
     "forbidden" (in the overrides), "fixed" (value from the overrides), "unknown" (a label
     without sense), "same" (a label and itself), "variant" (a dish compound and a label, `cook.py`
-    rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5), "sibling" (a label filed
+    rule 4), "dishes" (two senses under a dish, rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5), "sibling" (a label filed
     through one member with a label that is not its kind, rule 6), "purpose" (such a label and a kind of tool
     whose name or gloss names a food the other's does not, rule 7), "class" (such a label with many WordNet
     kinds and one of its kinds, rule 8).
