@@ -327,3 +327,19 @@ def test_a_kitchen_that_mixes_foon_lines_into_node_lines_is_one_error(lines, bad
     assert f"{kitchen}:{bad}: error: {says}" in r.stderr
     assert "one form throughout" in r.stderr and "docs/format.md" in r.stderr
     assert "warning" not in r.stderr and "Traceback" not in r.output
+
+
+@pytest.mark.parametrize("command", ["plan", "compile"])
+@pytest.mark.parametrize("value, says", [
+    ("cuting board=1", "no object of the network is labelled 'cuting board'; close matches: cutting board"),
+    ("cutting board", "'cutting board' is not LABEL=N (a label, then a count N >= 0)"),
+    ("cutting board=x", "'cutting board=x' is not LABEL=N (a label, then a count N >= 0)"),
+])
+def test_an_instances_value_error_names_the_option_as_every_other_option_error(command, value, says, tmp_path):
+    """`--instances` errors read `Error: --instances: ...` where `--goal`, `--time-limit`, `--planner` and the
+    experiment's options read click's `Invalid value for '--option': ...` (issue 24, stop 50's leftover)."""
+    r = run(command, "--goal", "guacamole", "--encoding", "instances", "--instances", value,
+            *(["-o", tmp_path / "out"] if command == "compile" else []))
+    assert r.exit_code == 2
+    assert f"Error: Invalid value for '--instances': {says}" in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()

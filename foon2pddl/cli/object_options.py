@@ -7,6 +7,9 @@ import click
 
 from ..errors import UsageError
 
+#: How a bad `--instances` value is reported: `Invalid value for '--instances': ...`, as every option's value is.
+_HINT = "'--instances'"
+
 instances_option = click.option("--instances", "instances", multiple=True, metavar="LABEL=N",
                                 help="instances and relational encodings: N objects of LABEL in each place one "
                                      "can start (overrides the derived count; repeatable).")
@@ -16,14 +19,14 @@ category_types_option = click.option("--category-types", "category_types", is_fl
 
 
 def parse_instances(items) -> tuple[tuple[str, int], ...]:
-    """`--instances LABEL=N` values as (normalized label, N), sorted; UsageError when malformed."""
+    """`--instances LABEL=N` values as (normalized label, N), sorted; click's bad-parameter error when malformed."""
     from ..model.foon import normalize_label
 
     out: dict[str, int] = {}
     for item in items:
         label, sep, count = item.rpartition("=")
         if not sep or not normalize_label(label) or not count.strip().isdigit():
-            raise UsageError(f"--instances expects LABEL=N with N >= 0, not {item!r}")
+            raise click.BadParameter(f"{item!r} is not LABEL=N (a label, then a count N >= 0)", param_hint=_HINT)
         out[normalize_label(label)] = int(count)
     return tuple(sorted(out.items()))
 
@@ -45,8 +48,8 @@ def check_physical_options(encoding: str, restore: bool, instances: tuple[str, .
 
 
 def checked_instances(items, encoding: str, foon) -> tuple[tuple[str, int], ...]:
-    """`parse_instances` of `items` (the encoding is checked by `check_physical_options`), refused (UsageError)
-    for a label no node of `foon` has (a typo would otherwise be ignored), naming close labels."""
+    """`parse_instances` of `items` (the encoding is checked by `check_physical_options`), refused (click's
+    bad-parameter error) for a label no node of `foon` has (a typo would otherwise be ignored), naming close labels."""
     import difflib
 
     if not items:
@@ -56,8 +59,8 @@ def checked_instances(items, encoding: str, foon) -> tuple[tuple[str, int], ...]
     for label, _ in parsed:
         if label not in labels:
             close = difflib.get_close_matches(label, labels, n=3)
-            raise UsageError(f"--instances: no object of the network is labelled {label!r}"
-                             + (f"; close matches: {', '.join(close)}" if close else ""))
+            raise click.BadParameter(f"no object of the network is labelled {label!r}"
+                                     + (f"; close matches: {', '.join(close)}" if close else ""), param_hint=_HINT)
     return parsed
 
 
