@@ -1,11 +1,13 @@
-"""A second, blind labelling of the shared subgraphs' pairs: the modes scored on it, and its agreement with the first.
+"""Blind relabellings of the shared subgraphs' pairs: the modes scored on each, and the labellings' agreement.
 
-`bench/similarity_relabel.tsv` relabels every pair of the `independent`, `fresh`, `tune` and `unsampled`
-splits of `similarity_pairs.tsv` (the shared subgraphs' labels), by a labeller who had not seen the rules
-or the first labels (`similarity_rubric.md`, its last addendum). Reported: per mode, precision and recall
-of good pairs over the second labels, with Wilson 95 % intervals (`similarity.score`, the same counting as
-area `similarity`); then the agreement of the two labellings on the same pairs: the share of pairs with
-the same label, Cohen's kappa over good / marginal / bad, and the 3x3 confusion table (first label by row).
+`bench/similarity_relabel.tsv` (the second labelling, relab50) and `bench/similarity_relab51.tsv` (the third,
+relab51) each relabel every pair of the `independent`, `fresh`, `tune` and `unsampled` splits of
+`similarity_pairs.tsv` (the shared subgraphs' labels), by labellers who had seen neither the rules nor any earlier
+label (`similarity_rubric.md`, its last two addenda). Reported per relabelling and mode: precision and recall of
+good pairs, with Wilson 95 % intervals (`similarity.score`, the same counting as area `similarity`), on all its
+pairs, on those of the first labels' `held-out` splits and on the tuning splits; then, for each labelling (first,
+second, third) and each later one, the share of pairs with the same label, Cohen's kappa over good / marginal /
+bad, and the 3x3 confusion table (the earlier labelling by row).
 """
 
 from __future__ import annotations
@@ -15,19 +17,25 @@ from collections import Counter
 from pathlib import Path
 
 from .harness import Context
-from .similarity import Pair, accepted, read_pairs, score
+from .similarity import GROUPS, Pair, accepted, read_pairs, score
 
 AREA = "similarity_relabel"
 RELABEL = Path(__file__).with_name("similarity_relabel.tsv")
-#: The splits the second labelling covers (the shared subgraphs' labels).
+RELAB51 = Path(__file__).with_name("similarity_relab51.tsv")
+#: The blind relabellings, in the order they were made: (name in the report, file).
+RELABELLINGS = (("relabel", RELABEL), ("relab51", RELAB51))
+#: The splits the relabellings cover (the shared subgraphs' labels).
 RELABELLED = ("independent", "fresh", "tune", "unsampled")
+#: The first labels' splits by what they were used for: scored once (`held-out`), or tuning the rules.
+SUBSETS = {"held-out": GROUPS["held-out"], "tuning": ("tune", "unsampled")}
 LABELS = ("good", "marginal", "bad")
+ORDINALS = ("first", "second", "third")
 
 
-def read_relabel(path: Path = RELABEL) -> list[Pair]:
-    """The second labels, as pairs of source `relabel` and split `relabel`."""
+def read_relabel(path: Path = RELABEL, name: str = "relabel") -> list[Pair]:
+    """A relabelling's labels, as pairs whose source and split are the relabelling's `name`."""
     with open(path, encoding="utf-8", newline="") as fh:
-        return [Pair(r["label_a"], r["label_b"], r["label"], "relabel", "relabel")
+        return [Pair(r["label_a"], r["label_b"], r["label"], name, name)
                 for r in csv.DictReader(fh, delimiter="\t")]
 
 
@@ -57,24 +65,44 @@ def agreement(table: dict[tuple[str, str], int]) -> tuple[float, float]:
     return po, (1.0 if pe == 1 else (po - pe) / (1 - pe))
 
 
+def agreements(labellings: list[list[Pair]]) -> list[tuple[str, str, dict[tuple[str, str], int]]]:
+    """(earlier ordinal, later ordinal, confusion table) for every two labellings, in the order of
+    `labellings` (first, second, third, ...): each with each later one, the earlier one by row."""
+    return [(ORDINALS[i], ORDINALS[j], confusion(paired(labellings[i], labellings[j])))
+            for i in range(len(labellings)) for j in range(i + 1, len(labellings))]
+
+
+def subsets(first: list[Pair], relabelled: list[Pair]) -> dict[str, list[Pair]]:
+    """A relabelling's pairs, all (key "") and by the first labels' split of each pair (SUBSETS), in its order."""
+    split = {frozenset((p.a, p.b)): p.split for p in first}
+    out = {"": relabelled}
+    for name, splits in SUBSETS.items():
+        out[name] = [p for p in relabelled if split[frozenset((p.a, p.b))] in splits]
+    return out
+
+
 def run(ctx: Context) -> None:
     from foon2pddl.generalize import wordnet
     from foon2pddl.generalize.modes import SIMILARITY_MODES
 
-    second = read_relabel()
     first = [p for p in read_pairs() if p.split in RELABELLED]
+    relabellings = [(name, read_relabel(path, name)) for name, path in RELABELLINGS]
     reader = wordnet.reader()
-    for mode in SIMILARITY_MODES:
-        keys, reader = accepted(second, mode, reader)
-        s = score(second, lambda a, b, keys=keys: frozenset((a, b)) in keys)
-        (p, plo, phi), (r, rlo, rhi) = s.precision(), s.recall()
-        note = f"{len(second)} pairs, {s.good} good, {s.accepted} accepted ({s.bad_accepted} bad)"
-        ctx.report(AREA, f"{mode} precision (relabel)", p, "", f"95 % CI {plo:.2f}-{phi:.2f}; {note}")
-        ctx.report(AREA, f"{mode} recall (relabel)", r, "", f"95 % CI {rlo:.2f}-{rhi:.2f}")
-    table = confusion(paired(first, second))
-    po, kappa = agreement(table)
-    ctx.report(AREA, "same label (first vs second)", po, "", f"{len(second)} pairs")
-    ctx.report(AREA, "Cohen's kappa (first vs second)", kappa, "")
-    for x in LABELS:
-        ctx.report(AREA, f"first {x}: second good / marginal / bad", sum(table[(x, y)] for y in LABELS), "pairs",
-                   " / ".join(str(table[(x, y)]) for y in LABELS))
+    for name, labels in relabellings:
+        for mode in SIMILARITY_MODES:
+            keys, reader = accepted(labels, mode, reader)
+            for subset, pairs in subsets(first, labels).items():
+                s = score(pairs, lambda a, b, keys=keys: frozenset((a, b)) in keys)
+                (p, plo, phi), (r, rlo, rhi) = s.precision(), s.recall()
+                where = name + (f", {subset}" if subset else "")
+                note = f"{len(pairs)} pairs, {s.good} good, {s.accepted} accepted ({s.bad_accepted} bad)"
+                ctx.report(AREA, f"{mode} precision ({where})", p, "", f"95 % CI {plo:.2f}-{phi:.2f}; {note}")
+                ctx.report(AREA, f"{mode} recall ({where})", r, "", f"95 % CI {rlo:.2f}-{rhi:.2f}")
+    for x_name, y_name, table in agreements([first, *(labels for _, labels in relabellings)]):
+        po, kappa = agreement(table)
+        versus = f"{x_name} vs {y_name}"
+        ctx.report(AREA, f"same label ({versus})", po, "", f"{sum(table.values())} pairs")
+        ctx.report(AREA, f"Cohen's kappa ({versus})", kappa, "")
+        for x in LABELS:
+            ctx.report(AREA, f"{x_name} {x}: {y_name} good / marginal / bad", sum(table[(x, y)] for y in LABELS),
+                       "pairs", " / ".join(str(table[(x, y)]) for y in LABELS))

@@ -1,4 +1,4 @@
-"""The second, blind labelling of the shared subgraphs' pairs and the agreement figures bench/similarity_relabel.py reports."""
+"""The blind relabellings of the shared subgraphs' pairs and the agreement figures bench/similarity_relabel.py reports."""
 
 from __future__ import annotations
 
@@ -7,7 +7,19 @@ import hashlib
 import pytest
 
 from bench.similarity import Pair, read_pairs
-from bench.similarity_relabel import LABELS, RELABEL, RELABELLED, agreement, confusion, paired, read_relabel
+from bench.similarity_relabel import (
+    LABELS,
+    RELAB51,
+    RELABEL,
+    RELABELLED,
+    RELABELLINGS,
+    agreement,
+    agreements,
+    confusion,
+    paired,
+    read_relabel,
+    subsets,
+)
 
 RUBRIC = RELABEL.with_name("similarity_rubric.md")
 
@@ -45,3 +57,37 @@ def test_pairing_takes_the_first_label_by_unordered_pair_and_rejects_different_c
     assert paired(first, second) == [("bad", "marginal"), ("good", "good")]
     with pytest.raises(ValueError, match="different pairs"):
         paired(first, second[:1])
+
+
+def test_the_third_labelling_covers_exactly_the_shared_pairs_and_is_the_frozen_file():
+    third = read_relabel(RELAB51, "relab51")
+    first = [p for p in read_pairs() if p.split in RELABELLED]
+    assert {frozenset((p.a, p.b)) for p in third} == {frozenset((p.a, p.b)) for p in first}
+    assert len(third) == len(first) and {p.label for p in third} == set(LABELS)
+    assert {(p.source, p.split) for p in third} == {("relab51", "relab51")}
+    assert hashlib.sha1(RELAB51.read_bytes()).hexdigest() in RUBRIC.read_text(encoding="utf-8")
+    assert [name for name, _ in RELABELLINGS] == ["relabel", "relab51"]
+
+
+def test_agreements_compare_every_labelling_with_each_later_one_by_ordinal():
+    first = [Pair("a", "b", "good", "random", "tune"), Pair("c", "d", "bad", "random", "independent")]
+    second = [Pair("b", "a", "good", "relabel", "relabel"), Pair("c", "d", "marginal", "relabel", "relabel")]
+    third = [Pair("c", "d", "bad", "relab51", "relab51"), Pair("a", "b", "marginal", "relab51", "relab51")]
+    got = agreements([first, second, third])
+    assert [(x, y) for x, y, _ in got] == [("first", "second"), ("first", "third"), ("second", "third")]
+    tables = {(x, y): t for x, y, t in got}
+    assert tables[("first", "second")][("bad", "marginal")] == 1 and tables[("first", "second")][("good", "good")] == 1
+    assert tables[("first", "third")][("good", "marginal")] == 1 and tables[("first", "third")][("bad", "bad")] == 1
+    assert tables[("second", "third")][("marginal", "bad")] == 1 and tables[("second", "third")][("good", "marginal")] == 1
+
+
+def test_subsets_split_a_relabelling_by_the_first_labels_splits():
+    first = [Pair("a", "b", "good", "random", "tune"), Pair("c", "d", "bad", "random", "independent"),
+             Pair("e", "f", "bad", "random", "fresh"), Pair("g", "h", "bad", "random", "unsampled")]
+    third = [Pair("d", "c", "good", "relab51", "relab51"), Pair("a", "b", "bad", "relab51", "relab51"),
+             Pair("e", "f", "marginal", "relab51", "relab51"), Pair("g", "h", "good", "relab51", "relab51")]
+    got = subsets(first, third)
+    assert list(got) == ["", "held-out", "tuning"]
+    assert got[""] == third
+    assert [(p.a, p.label) for p in got["held-out"]] == [("d", "good"), ("e", "marginal")]
+    assert [(p.a, p.label) for p in got["tuning"]] == [("a", "bad"), ("g", "good")]
