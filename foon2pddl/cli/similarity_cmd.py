@@ -97,6 +97,7 @@ def _why(a: str, b: str, ev) -> str:
                "purpose": "rejected: a kind of tool for a food its generic is not for",
                "class": "rejected: a filed label with many WordNet kinds is a class, not a substitute",
                "tool class": "rejected: a class of tools whose kinds go by names of their own",
+               "food class": "rejected: a class of foods whose kinds are classes too, not a substitute for one",
                "role": "rejected: an ingredient and no ingredient",
                "dishes": "rejected: two dishes are variants of one another, not substitutes",
                "stand-in": "rejected: a label the overrides read as its class is one member of it, not its generic"}.get(

@@ -7,7 +7,8 @@ saucer) do. A tool whose kinds are named after it is a thing, and does its kinds
 not is a class of tools with different jobs (`tool_class`). Counting also the kinds whose gloss's genus is the
 noun (penne: "pasta in short tubes"), a food noun most of whose kinds are named or defined after it is a staple,
 which rule 3's breadth limit does not reject with its kinds (`staple`: bread, pasta; not herb or sweetener); one
-fewer than 10 % of whose kinds are is a class of foods (`food_class`: citrus, brew), which rule 8 reads for filed labels.
+fewer than 10 % of whose kinds are is a class of foods (`food_class`: citrus, brew), which rule 8 reads for filed labels
+and rule 9 for every label when its kinds are classes too (`food_class_of_classes`: sweetening, salad green).
 Cost: one hyponym closure per synset, cached.
 """
 
@@ -29,6 +30,9 @@ STAPLE_SHARE, GENUS_WORDS = 0.3, 2
 #: Rule 3's exemption is for a starch a meal is built on: no flavorer (a sauce's kinds are its flavours, as a herb's
 #: are), no dish and no bake (their kinds are variants, rule 4) unless WordNet also files it as a starch (bread).
 NOT_STAPLES, STARCH = frozenset({"flavorer.n.01", "dish.n.02", "baked_goods.n.01"}), "starches.n.01"
+
+#: Rule 9 for foods: a food class with at least this many levels of kinds below it has kinds that are classes too.
+CLASS_LEVELS = 3
 
 _WORD = re.compile(r"[a-z]+")
 
@@ -76,6 +80,23 @@ def food_class(reader, name: str) -> bool:
     if reader.synset(name).lexname() != "noun.food" or kinds(reader, name) < TOOL_CLASS_KINDS:
         return False
     return named_kinds(reader, name, GENUS_WORDS) < NAMED_SHARE
+
+
+@lru_cache(maxsize=4096)
+def levels(reader, name: str) -> int:
+    """How many levels of WordNet kinds synset `name` has below it (0 for a leaf; sweetening 4: sugar, brown sugar, ...)."""
+    below = reader.synset(name).hyponyms()
+    return 1 + max(levels(reader, x.name()) for x in below) if below else 0
+
+
+def food_class_of_classes(reader, found: Evidence) -> bool:
+    """Rule 9 for foods: whether `found` is a kind pair whose generic is a class of foods (`food_class`) whose kinds are
+    classes of their own (at least `CLASS_LEVELS` levels of kinds below it): sweetening (sugar and syrup, each with
+    kinds), salad green (lettuce, cress); not a chicken's or a beefsteak's kinds (capon, strip steak: two levels)."""
+    generic = found.ancestor
+    if found.sense_a == found.sense_b or generic not in (found.sense_a, found.sense_b):
+        return False
+    return food_class(reader, generic) and levels(reader, generic) >= CLASS_LEVELS
 
 
 def tool_class(reader, found: Evidence) -> bool:

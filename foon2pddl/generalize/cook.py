@@ -35,7 +35,9 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    `TOOL_CLASS_KINDS` WordNet kinds, fewer than `NAMED_SHARE` of them named after it (`named_kinds`), scores 0:
    the kinds of kitchen appliance (oven, toaster, food processor), drinking vessel (mug, tankard) or flatware
    (plate, saucer) go by names of their own and do different jobs; a bottle's kinds are mostly called bottles
-   (beer bottle, water bottle: 35 %) and a bottle stands for them. Every label, filed or in the index.
+   (beer bottle, water bottle: 35 %) and a bottle stands for them. Every label, filed or in the index. So for
+   foods (`food class`): a kind pair whose generic is a food class whose kinds are classes too
+   (`classes.food_class_of_classes`: sweetener~sugar, salad mix~lettuce) is a category with a member.
 
 Senses are read as in the paper's rule, but a hyphenated WordNet lemma is read whole
 (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon).
@@ -55,7 +57,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .classes import staple, tool_class
+from .classes import food_class_of_classes, staple, tool_class
 from .cook_kin import KinRules, kin
 from .extend import Assignment
 from .senses import Overrides, Resolution, adjective, mixed_roles, parse_overrides, resolve, role_senses
@@ -111,7 +113,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
-         " dishes")
+         " dishes, food classes of classes")
 
 
 def synonyms(found: Evidence) -> bool:
@@ -230,6 +232,9 @@ class CookSimilarity(KinRules):
                         found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, why)
             if found.similarity and not found.rejected and self.categories is not None and tool_class(self.reader, found):
                 found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "tool class")
+            elif found.similarity and not found.rejected and self.categories is not None and food_class_of_classes(
+                    self.reader, found):
+                found = Evidence(0.0, found.ancestor, found.sense_a, found.sense_b, found.breadth, "food class")
             self._evidence[(a, b)] = found
         return found
 

@@ -45,7 +45,7 @@ class Evidence:
     rule 4), "dishes" (two senses under a dish, rule 4), "category" (two labels FOON-GEN's categories do not group, rule 5), "sibling" (a label filed
     through one member with a label that is not its kind, rule 6), "purpose" (such a label and a kind of tool
     whose name or gloss names a food the other's does not, rule 7), "class" (such a label with many WordNet
-    kinds and one of its kinds, rule 8).
+    kinds and one of its kinds, rule 8), "food class" (a food class whose kinds are classes with a kind, rule 9).
     """
 
     similarity: float
