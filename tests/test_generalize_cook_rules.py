@@ -156,3 +156,15 @@ def test_a_class_of_foods_whose_kinds_are_classes_is_no_food(cook):
     for a, b in [("honey", "sugar"), ("salad mix", "spring mix"), ("capon", "chicken"), ("beefsteak", "strip steak"),
                  ("brown sugar", "sugar"), ("lemon", "lime")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_a_stand_in_is_no_other_kind_of_its_class_named_by_the_class_head(cook):
+    """Rule 10 (stop 51, issue 23): a compound known by its head (soup broth, vegetable broth: `broth.n.01` by
+    `broth`) is one of its head's kinds, as chicken broth is, so a stand-in read as that class (dashi) stands with it
+    no more than with chicken broth; the class's own label (broth) and a synonym of the stand-in's class stand."""
+    for a, b in [("dashi", "soup broth"), ("dashi", "soup stock"), ("dashi", "vegetable broth"),
+                 ("chicken broth", "dashi")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "stand-in", (a, b, e)
+    for a, b in [("broth", "dashi"), ("dumpling", "gyoza"), ("soft drink", "virgin mojito")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

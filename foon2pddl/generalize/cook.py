@@ -113,7 +113,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
-         " dishes, food classes of classes")
+         " dishes, food classes of classes, stand-ins and head compounds")
 
 
 def synonyms(found: Evidence) -> bool:

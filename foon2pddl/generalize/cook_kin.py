@@ -34,7 +34,8 @@ cook swaps, read from the category index and from what a filed label is a kind o
    by its head) that the overrides read as a class (virgin mojito as `soft_drink.n.01`, dashi as a broth, gyoza as
    a dumpling) is one member of that class: it stands with the class's label and its generics, and with a label
    of its own sense, but not with the class's other kinds (virgin mojito~tonic, dashi~chicken broth,
-   gyoza~matzo ball score 0, "stand-in"). A label WordNet knows by its head (salad mix, a mix of salad greens)
+   gyoza~matzo ball score 0, "stand-in"), nor with a compound known by the class's head (dashi~soup broth, ~vegetable
+   broth: kinds of broth, since stop 51). A label WordNet knows by its head (salad mix, a mix of salad greens)
    is read as WordNet reads it and keeps its kinds.
 """
 
@@ -159,9 +160,11 @@ class KinRules:
 
     def member_as_class(self, a: str, b: str, found: Evidence) -> bool:
         """Rule 10: whether the kind pair `a`, `b` (`a`'s sense first in `found`) puts a stand-in as the generic of
-        another kind of its class (virgin mojito~tonic); a label of the stand-in's own sense is no other kind."""
+        another kind of its class (virgin mojito~tonic); a label of the stand-in's own sense is no other kind, unless
+        a compound known by its head (dashi~soup broth: a kind of broth, as chicken broth is)."""
         if found.sense_a == found.sense_b:
-            return False
+            return (self.stand_in(a) and self.resolution(b).modifier is not None) or (
+                self.stand_in(b) and self.resolution(a).modifier is not None)
         return (found.ancestor == found.sense_a and self.stand_in(a)) or (
             found.ancestor == found.sense_b and self.stand_in(b))
 
