@@ -168,3 +168,16 @@ def test_a_stand_in_is_no_other_kind_of_its_class_named_by_the_class_head(cook):
         assert e.similarity == 0.0 and e.rejected == "stand-in", (a, b, e)
     for a, b in [("broth", "dashi"), ("dumpling", "gyoza"), ("soft drink", "virgin mojito")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_two_kinds_of_a_class_of_tools_are_different_tools(cook):
+    """Rule 9 for siblings (stop 51, issue 23): a class of tools is no tool, and two of its kinds that meet only under
+    it do different jobs: knife~scissors (under `edge_tool.n.01`) and scraper~spatula (`hand_tool.n.01`: neither
+    has 10 % of its kinds named after it) score 0; siblings under a tool whose kinds carry its name stand
+    (mixer~whisk, colander~strainer, spatula~turner)."""
+    for a, b in [("knife", "scissors"), ("scraper", "spatula")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "tool class", (a, b, e)
+    for a, b in [("mixer", "whisk"), ("egg beater", "whisk"), ("colander", "strainer"), ("spatula", "turner"),
+                 ("juicer", "squeezer")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))

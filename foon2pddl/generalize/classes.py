@@ -102,9 +102,10 @@ def food_class_of_classes(reader, found: Evidence) -> bool:
 def tool_class(reader, found: Evidence) -> bool:
     """Rule 9: whether `found` is a kind pair (two senses, one the other's ancestor) whose generic is a class of
     tools: an artifact sense with at least `TOOL_CLASS_KINDS` kinds, fewer than `NAMED_SHARE` of them named after
-    it (`named_kinds`)."""
+    it (`named_kinds`); or, since stop 51, two kinds that meet only under such a class (knife~scissors under edge
+    tool, scraper~spatula under hand tool): kinds of a class of tools do different jobs."""
     generic = found.ancestor
-    if found.sense_a == found.sense_b or generic not in (found.sense_a, found.sense_b):
+    if found.sense_a == found.sense_b or generic is None:
         return False
     if reader.synset(generic).lexname() != "noun.artifact" or kinds(reader, generic) < TOOL_CLASS_KINDS:
         return False

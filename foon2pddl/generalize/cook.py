@@ -35,7 +35,8 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    `TOOL_CLASS_KINDS` WordNet kinds, fewer than `NAMED_SHARE` of them named after it (`named_kinds`), scores 0:
    the kinds of kitchen appliance (oven, toaster, food processor), drinking vessel (mug, tankard) or flatware
    (plate, saucer) go by names of their own and do different jobs; a bottle's kinds are mostly called bottles
-   (beer bottle, water bottle: 35 %) and a bottle stands for them. Every label, filed or in the index. So for
+   (beer bottle, water bottle: 35 %) and a bottle stands for them. Two kinds that meet only under such a class do
+   different jobs (knife~scissors, scraper~spatula). Every label, filed or in the index. So for
    foods (`food class`): a kind pair whose generic is a food class whose kinds are classes too
    (`classes.food_class_of_classes`: sweetener~sugar, salad mix~lettuce) is a category with a member.
 
@@ -113,7 +114,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
-         " dishes, food classes of classes, stand-ins and head compounds")
+         " dishes, food classes of classes, stand-ins and head compounds, tool class siblings")
 
 
 def synonyms(found: Evidence) -> bool:
