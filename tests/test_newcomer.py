@@ -636,23 +636,24 @@ def test_a_plans_physical_objects_follow_its_recipe_steps():
 
 
 def test_recipe_text_on_every_unit_of_the_corpus_names_its_motion_and_movers(universal):
-    from foon2pddl.io.tree_formats import _place, recipe_text
+    from foon2pddl.io.recipe_words import _place, aliases, recipe_text
 
     foon, _ = universal
     for unit in foon.units[:600]:
         text = recipe_text(unit)
         assert text.startswith(unit.motion.label + " ")
         new = {o.label: o for o in unit.outputs if o not in unit.inputs}
+        named = aliases(unit)  # `bread` read as the unit's `garlic bread`
         for i in unit.inputs:
             o = new.get(i.label)
-            if o is not None and _place(o) not in (None, _place(i)):
-                assert f" the {_place(o)[1]}" in text  # where a moved object goes is said
+            if o is not None and _place(o, named) not in (None, _place(i, named)):
+                assert f" the {_place(o, named)[1]}" in text  # where a moved object goes is said
 
 
 def test_a_pour_into_a_container_whose_contents_list_it_says_what_is_poured_from_where(universal):
     """0001's `pour*` lists the cream and the sugar only in the mixing bowl's new contents (no output of their
     own): the step says what goes from where into what, not `pour mixing bowl ..., with the ... heavy cream`."""
-    from foon2pddl.io.tree_formats import recipe_text
+    from foon2pddl.io.recipe_words import recipe_text
     from foon2pddl.model.places import listed
 
     foon, _ = universal
@@ -667,7 +668,7 @@ def test_a_pour_into_a_container_whose_contents_list_it_says_what_is_poured_from
 def test_an_input_two_containers_newly_list_goes_into_the_inner_one_said_once(universal):
     """0071:245 `scoop and pour`: the baking tray and the pudding in it both newly list the whipped cream. The
     cream goes into the pudding (which is in the tray), and the step says so once."""
-    from foon2pddl.io.tree_formats import recipe_text
+    from foon2pddl.io.recipe_words import recipe_text
 
     foon, _ = universal
     scoop = next(u for u in foon.units if u.motion.label == "scoop and pour"

@@ -343,3 +343,26 @@ def test_an_instances_value_error_names_the_option_as_every_other_option_error(c
     assert r.exit_code == 2
     assert f"Error: Invalid value for '--instances': {says}" in r.stderr, r.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_the_omelettes_steps_say_what_moves_from_where_into_what_with_which_tool():
+    """Issue 24 item 14 on the shared data's omelette: `crack bowl (empty), with the egg (uncracked)`, `sprinkle
+    bowl (...), bowl (...)`, `pour egg mixture ... into the pan, with the cooking pan`, `heat cooking pan (...),
+    stove (...)` and `cook cooking pan (...), omelette (...)` read as if the bowl were cracked and the pan a tool."""
+    from conftest import SUBGRAPHS
+
+    r = run("retrieve", SUBGRAPHS, "--goal", "omelette")
+    assert r.exit_code == 0, r.stderr
+    steps = {line.split(". ", 1)[1] for line in r.stdout.splitlines() if line[:1].isdigit()}
+    assert "crack egg (uncracked) into the bowl (empty), making egg white and yolk in the bowl" in steps, steps
+    assert "mix egg white and yolk, with the fork (clean), in the bowl" in steps  # not `on the bowl`
+    assert "heat cooking pan (empty), on the stove (off, with [pan])" in steps
+    assert "pour egg mixture from the bowl into the cooking pan (heated, on [stove])" in steps
+    assert "sprinkle salt (granulated) from the bowl into the bowl (contains {egg white and yolk})" in steps
+    assert ("cook omelette (contains {black pepper, salt}, partly cooked), in the cooking pan (contains {egg mixture},"
+            " on [stove]), on the stove (on, with [pan])") in steps
+    assert ("mix egg mixture (contains {black pepper, salt}), with the whisk (clean), in the cooking pan (on [stove]),"
+            " making omelette (contains {black pepper, salt}, partly cooked) in the cooking pan") in steps
+    assert ("pick-and-place omelette (contains {black pepper, salt}, cooked) from the cooking pan onto the plate "
+            "(empty), with the turner (clean)") in steps
+    assert not any(s.startswith("crack bowl") or "with the cooking pan" in s or "with the egg" in s for s in steps)

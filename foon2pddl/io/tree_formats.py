@@ -18,10 +18,9 @@ from collections.abc import Iterable
 from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
-from ..model.pairing import transfer, unit_roles
-from ..model.places import contents
 from ..model.tasktree import TaskTree
 from .jsonio import node_to_dict
+from .recipe_words import PLACE_WORDS, recipe_text
 from .writer import write_units
 
 FORMATS = ("recipe", "steps", "foon", "json", "dot", "svg")
@@ -34,10 +33,6 @@ STEP_FORMATS = ("recipe", "steps")
 INPUT_COLOUR = "#8fd18f"    # green
 OUTPUT_COLOUR = "#8fb8ff"   # blue
 MOTION_COLOUR = "#f08080"   # red
-
-#: State labels that, naming another input as their related object, say where a step happens.
-PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
-
 
 def render_tree(tree: TaskTree, fmt: str, kitchen: Kitchen | Iterable[ObjectNode] | None = None) -> str:
     """The tree in `fmt` (one of FORMATS). `kitchen`, when given, lists what the tree takes from it.
@@ -110,121 +105,6 @@ def step_text(unit: FunctionalUnit) -> str:
     for word in sorted(places):
         text += f" {word} " + ", ".join(places[word])
     return text + " -> " + ", ".join(n.describe() for n in (new_outputs or unit.outputs))
-
-
-#: How a recipe says where an object goes, per place state.
-_INTO = {"in": "into", "inside": "into", "into": "into", "on": "onto", "onto": "onto", "under": "under",
-         "over": "over", "above": "above", "below": "below"}
-
-
-def _place(node: ObjectNode) -> tuple[str, str] | None:
-    """(place word, related object) of the node's first place state, or None."""
-    return next(((s.label, s.related) for s in node.states if s.label in PLACE_WORDS and s.related), None)
-
-
-def _unplaced(node: ObjectNode) -> str:
-    """The node in words without its place state (`lime juice`, `lime (whole)`)."""
-    states = [s.describe() for s in node.states if not (s.label in PLACE_WORDS and s.related)]
-    return node.label + (f" ({', '.join(states)})" if states else "")
-
-
-def _without_contents(node: ObjectNode, contents: set[str]) -> str:
-    """The node in words without an ingredient set listing only `contents` (said already)."""
-    states = [s.describe() for s in node.states if not (s.ingredients and set(s.ingredients) <= contents)]
-    return node.label + (f" ({', '.join(states)})" if states else "")
-
-
-def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
-            moved: set[str]) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
-    """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
-    unit gives it no node of its own (0001's `pour*`: the cream and the sugar only in the mixing bowl's list);
-    not an input already in it, or beside it in one holder (stirred in the pot where both are). An input two
-    containers newly list goes into the one inside another of them (0071's cream into the pudding in the tray),
-    else into the first: each input is said once."""
-    into: dict[ObjectNode, list[str]] = {}
-    for label, container in new.items():
-        if label not in before:
-            continue
-        added = contents(container) - contents(before[label])
-        for i in unit.inputs:
-            if (i.label in added and i.label not in new and i.label not in moved
-                    and (_place(i) or ("", ""))[1] != label and not (_place(i) and _place(i) == _place(before[label]))):
-                into.setdefault(i, []).append(label)
-    out = []
-    for i, labels in into.items():
-        inner = [c for c in labels if (_place(new[c]) or ("", ""))[1] in labels]
-        out.append((i, _place(i), ("in", (inner or labels)[0])))
-    return out
-
-
-def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
-    """(what moves, from which container, into which) when two inputs of one container label trade contents
-    (`model.pairing.transfer` over the unit's roles, which say which input becomes which output). None otherwise."""
-    roles = unit_roles(unit)
-    found = transfer([(r.before, r.after) for r in roles])
-    if found is None:
-        return None
-    src, dst, moved = found
-    return [i for i in unit.inputs if i.label in moved], roles[src].before, roles[dst].before
-
-
-def recipe_text(unit: FunctionalUnit) -> str:
-    """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
-
-    `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
-    pitcher first as if it were poured. An input moves when its output of the same label is in a
-    place state (`in [pitcher]`) other than its own; the containers named so, and the contents of
-    moved objects, are not tools. Without a move: what changes, then the tools and the place, said
-    once (`cut lime (whole), with the knife, on the cutting board`). Labels no input has are what the
-    step makes.
-    """
-    new = {o.label: o for o in unit.outputs if o not in unit.inputs}
-    by_label = {i.label: i for i in unit.inputs}
-    moves = [(i, _place(i), _place(new[i.label])) for i in unit.inputs
-             if i.label in new and _place(new[i.label]) not in (None, _place(i))]
-    moves += _filled(unit, new, by_label, {i.label for i, _, _ in moves})
-    named = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
-    between = None if moves else _between(unit)
-    if between:  # two containers of one label: `pour lettuce from the bowl (...) into the bowl (...)`
-        what, src, dst = between
-        text = (f"{unit.motion.label} " + ", ".join(_unplaced(i) for i in what)
-                + f" from the {src.describe()} into the {dst.describe()}")
-        named = {src.label} | {i.label for i in what}
-    elif moves:
-        parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
-        for i, src, dst in moves:
-            phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
-            where = by_label.get(dst[1])
-            into = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
-            if parts and parts[-1][1] == into:
-                parts[-1][0].append(phrase)
-            else:
-                parts.append(([phrase], into))
-        text = f"{unit.motion.label} " + "; ".join(
-            (", ".join(what[:-1]) + " and " if len(what) > 1 else "") + f"{what[-1]} {into}" for what, into in parts)
-    else:
-        receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o))}
-        changed = ([i for i in unit.inputs if i.label in new and i.label not in receivers]
-                   or [i for i in unit.inputs if i.label in new] or list(unit.inputs))
-        named = {i.label for i in changed}
-    holders = {i.label for i, _, _ in moves} | named
-    rest = [i for i in unit.inputs if i.label not in named
-            and not any(s.label in PLACE_WORDS and s.related in holders for s in i.states)]
-    places = [i for i in rest if any(_place(n) and _place(n)[1] == i.label for n in unit.inputs)]
-    tools = [i for i in rest if i not in places]
-    if not moves and not between:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
-        at = {p.label for p in places}
-        text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i) or ("", ""))[1] in at
-                                                   else i.describe() for i in changed)
-    if tools:
-        text += ", with the " + ", ".join(t.describe() for t in tools)
-    if places:
-        text += ", on the " + ", ".join(_without_contents(p, holders) for p in places)
-    made = [o for label, o in sorted(new.items()) if label not in by_label]
-    if made:
-        text += ", making " + ", ".join(_unplaced(o) + (f" {p[0]} the {p[1]}" if (p := _place(o)) else "")
-                                        for o in made)
-    return text
 
 
 def _numbered(tree: TaskTree, used: list[ObjectNode] | None, say) -> str:

@@ -1,7 +1,7 @@
 """A skill plan in a cook's words: each macro step as a recipe sentence, then what the robot does, in words.
 
 `plan --skills --format recipe`. Per macro step: the FOON step as `--format recipe`
-says it (`io.tree_formats.recipe_text`), then one line `robot: ...` with its skills
+says it (`io.recipe_words.recipe_text`), then one line `robot: ...` with its skills
 joined by `; ` (`pick up the knife from the workspace; chop the onion with the
 knife; put the knife on the workspace`), or why the step was kept abstract. An
 object is named by its FOON label, with its instance number when the trace has more
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections import Counter
 
-from ..io.tree_formats import recipe_text
+from ..io.recipe_words import recipe_text
 from ..model.physical import PhysicalTrace
 from .decompose import SkillCall, SkillPlan, StepStatus
 

@@ -1,0 +1,226 @@
+"""A task tree's steps in a cook's words (`recipe`, the default output of `retrieve` and `plan`): what moves,
+from where, into what, with which tool, and what the step makes, read from the unit's FOON nodes.
+
+A place FOON names by a shorter or longer word than the object's label (`egg mixture (in [pan])` where the
+unit's object is the `cooking pan`: `places.head_of`) is that object, so the pan is said once, as the place,
+never as a tool.
+"""
+
+from __future__ import annotations
+
+from ..model.foon import FunctionalUnit, ObjectNode
+from ..model.pairing import transfer, unit_roles
+from ..model.places import contents, head_of
+
+#: State labels that, naming another input as their related object, say where a step happens.
+PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
+
+#: How a recipe says where an object goes, per place state.
+_INTO = {"in": "into", "inside": "into", "into": "into", "on": "onto", "onto": "onto", "under": "under",
+         "over": "over", "above": "above", "below": "below"}
+#: How a recipe says where a step happens, per place state (`cut ..., on the cutting board`, `mix ..., in the bowl`).
+_AT = {"in": "in", "inside": "in", "into": "in", "on": "on", "onto": "on"}
+
+#: A unit's place names read as its objects' labels (`aliases`): `pan` -> `cooking pan`.
+Aliases = dict[str, str]
+
+
+def aliases(unit: FunctionalUnit) -> Aliases:
+    """The place names of `unit` that no object of it has as label, each read as the one input label it names by
+    the head-noun rule (`egg mixture (in [pan])` beside a `cooking pan`: `places.head_of`); a name two input
+    labels could be is left as written. O(nodes x inputs)."""
+    labels = {n.label for n in (*unit.inputs, *unit.outputs)}
+    out: Aliases = {}
+    for n in (*unit.inputs, *unit.outputs):
+        for s in n.states:
+            if s.label in PLACE_WORDS and s.related and s.related not in labels:
+                found = {i.label for i in unit.inputs if head_of(s.related, i.label)}
+                if len(found) == 1:
+                    out[s.related] = found.pop()
+    return out
+
+
+def _place(node: ObjectNode, named: Aliases | None = None) -> tuple[str, str] | None:
+    """(place word, related object) of the node's first place state, or None; the object as `named` reads it."""
+    found = next(((s.label, s.related) for s in node.states if s.label in PLACE_WORDS and s.related), None)
+    return (found[0], named.get(found[1], found[1])) if found and named else found
+
+
+def _holders(node: ObjectNode, named: Aliases) -> set[str]:
+    """Every object the node's place states name (as `named` reads them)."""
+    return {named.get(s.related, s.related) for s in node.states if s.label in PLACE_WORDS and s.related}
+
+
+def _unplaced(node: ObjectNode) -> str:
+    """The node in words without its place state (`lime juice`, `lime (whole)`)."""
+    states = [s.describe() for s in node.states if not (s.label in PLACE_WORDS and s.related)]
+    return node.label + (f" ({', '.join(states)})" if states else "")
+
+
+def _without_contents(node: ObjectNode, contents: set[str]) -> str:
+    """The node in words without an ingredient set listing only `contents` (said already)."""
+    states = [s.describe() for s in node.states if not (s.ingredients and set(s.ingredients) <= contents)]
+    return node.label + (f" ({', '.join(states)})" if states else "")
+
+
+def _becomes(unit: FunctionalUnit, new: dict[str, ObjectNode]) -> dict[str, ObjectNode]:
+    """Label -> the input that becomes its new output (`model.pairing.unit_roles`): of two bowls, the one whose
+    contents the new bowl keeps, not the last one listed."""
+    return {r.label: r.before for r in unit_roles(unit)
+            if r.before is not None and r.after is not None and new.get(r.label) == r.after}
+
+
+def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
+            moved: set[str], named: Aliases) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
+    """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
+    unit gives it no node of its own (0001's `pour*`: the cream and the sugar only in the mixing bowl's list);
+    not an input already in it, or beside it in one holder (stirred in the pot where both are), unless another
+    container of its label lists it (the salt sprinkled from one bowl into the other). An input two
+    containers newly list goes into the one inside another of them (0071's cream into the pudding in the tray),
+    else into the first: each input is said once."""
+    into: dict[ObjectNode, list[str]] = {}
+    for label, container in new.items():
+        if label not in before:
+            continue
+        added = contents(container) - contents(before[label])
+        for i in unit.inputs:
+            place = _place(i, named)
+            elsewhere = any(j.label == label and j is not before[label] and i.label in contents(j) for j in unit.inputs)
+            if (i.label in added and i.label not in new and i.label not in moved
+                    and ((place or ("", ""))[1] != label or elsewhere)
+                    and not (place and place == _place(before[label], named))):
+                into.setdefault(i, []).append(label)
+    out = []
+    for i, labels in into.items():
+        inner = [c for c in labels if (_place(new[c], named) or ("", ""))[1] in labels]
+        out.append((i, _place(i, named), ("in", (inner or labels)[0])))
+    return out
+
+
+def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
+    """(what moves, from which container, into which) when two inputs of one container label trade contents
+    (`model.pairing.transfer` over the unit's roles, which say which input becomes which output). None otherwise."""
+    roles = unit_roles(unit)
+    found = transfer([(r.before, r.after) for r in roles])
+    if found is None:
+        return None
+    src, dst, moved = found
+    return [i for i in unit.inputs if i.label in moved], roles[src].before, roles[dst].before
+
+
+def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[str, ObjectNode],
+             named: Aliases) -> tuple[list[ObjectNode], ObjectNode | None]:
+    """What a step that moves nothing works on, and the container it goes into (or None).
+
+    The inputs that change, but not the container of what the step makes (`making lime juice in the juicer`), nor
+    the holder of another input that changes (the stove under the heated pan, the pan holding the omelette it
+    cooks: they are places); when only that container changes, the inputs the step uses up that become what it
+    makes (`egg` -> `egg white and yolk`) go into it (`crack egg (uncracked) into the bowl (empty)`); when no
+    input changes, the inputs used up in that container are what the step works (`mix egg mixture ..., with the
+    whisk, in the cooking pan, making omelette ...`)."""
+    receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o, named))}
+    changing = [i for i in unit.inputs if i.label in new]
+    changed = [i for i in changing if i.label not in receivers]
+    if not changed:
+        out_labels = {o.label for o in unit.outputs}
+        made = [o.label for o in new.values() if o.label not in by_label]
+        into = next((i for i in changing if i.label in receivers), None)
+        used_up = [i for i in unit.inputs if i.label not in out_labels and (
+            _place(i) is None and any(m.startswith(i.label + " ") for m in made) if into is not None
+            else bool(_holders(i, named) & receivers))]  # nothing changes: what is in the container made into
+        if used_up:
+            return used_up, into
+        changed = changing
+    if not changed:  # FOON says nothing changes (a unit copying its input): every input, as written
+        return list(unit.inputs), None
+    if len(changed) > 1:
+        inside = {h for i in changed for h in _holders(i, named)}
+        changed = [i for i in changed if i.label not in inside] or changed
+    return changed, None
+
+
+def _ordered_places(places: list[ObjectNode], subjects: list[ObjectNode], named: Aliases) -> list[ObjectNode]:
+    """The places, innermost first: those the step's subjects are in or on, then what holds those, and so on
+    (`in the cooking pan, on the stove`); any left in input order."""
+    out: list[ObjectNode] = []
+    frontier = subjects
+    while frontier:
+        frontier = [p for p in places if p not in out and any(p.label in _holders(n, named) for n in frontier)]
+        out += frontier
+    return out + [p for p in places if p not in out]
+
+
+def recipe_text(unit: FunctionalUnit) -> str:
+    """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
+
+    `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
+    pitcher first as if it were poured. An input moves when its output of the same label is in a
+    place state (`in [pitcher]`) other than its own; the containers named so, and the contents of
+    moved objects, are not tools. Without a move: what changes (`_changed`), then the tools and the places,
+    each said once with its own word (`cut lime (whole), with the knife, on the cutting board`; `mix ..., in the
+    bowl`). Labels no input has are what the step makes. A place name is read as the unit's object it names
+    (`aliases`). O(n^2) in the unit's n nodes.
+    """
+    named = aliases(unit)
+    new = {o.label: o for o in unit.outputs if o not in unit.inputs}
+    by_label = {i.label: i for i in unit.inputs}
+    before = {**by_label, **_becomes(unit, new)}
+    moves = [(i, _place(i, named), _place(new[i.label], named)) for i in unit.inputs
+             if i.label in new and _place(new[i.label], named) not in (None, _place(i, named))]
+    moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named)
+    said = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
+    between = None if moves else _between(unit)
+    changed: list[ObjectNode] = []
+    into = None
+    if between:  # two containers of one label: `pour lettuce from the bowl (...) into the bowl (...)`
+        what, src, dst = between
+        text = (f"{unit.motion.label} " + ", ".join(_unplaced(i) for i in what)
+                + f" from the {src.describe()} into the {dst.describe()}")
+        said = {src.label} | {i.label for i in what}
+    elif moves:
+        parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
+        for i, src, dst in moves:
+            phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
+            where = before.get(dst[1])
+            to = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
+            if parts and parts[-1][1] == to:
+                parts[-1][0].append(phrase)
+            else:
+                parts.append(([phrase], to))
+        text = f"{unit.motion.label} " + "; ".join(
+            (", ".join(what[:-1]) + " and " if len(what) > 1 else "") + f"{what[-1]} {to}" for what, to in parts)
+    else:
+        changed, into = _changed(unit, new, by_label, named)
+        said = {i.label for i in changed} | ({into.label} if into is not None else set())
+    holders = {i.label for i, _, _ in moves} | said
+    rest = [i for i in unit.inputs if i.label not in said and not (_holders(i, named) & holders)]
+    places = [i for i in rest if any(i.label in _holders(n, named) for n in unit.inputs)]
+    tools = [i for i in rest if i not in places]
+    if not moves and not between:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
+        at = {p.label for p in places}
+        text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i, named) or ("", ""))[1] in at
+                                                   else i.describe() for i in changed)
+        if into is not None:
+            text += f" into the {into.describe()}"
+    if tools:
+        text += ", with the " + ", ".join(t.describe() for t in tools)
+    for word, group in _by_word(_ordered_places(places, changed or [i for i, _, _ in moves], named), unit, named):
+        text += f", {word} the " + ", ".join(_without_contents(p, holders) for p in group)
+    made = [o for label, o in sorted(new.items()) if label not in by_label]
+    if made:
+        text += ", making " + ", ".join(_unplaced(o) + (f" {p[0]} the {p[1]}" if (p := _place(o, named)) else "")
+                                        for o in made)
+    return text
+
+
+def _by_word(places: list[ObjectNode], unit: FunctionalUnit, named: Aliases) -> list[tuple[str, list[ObjectNode]]]:
+    """The places in runs of one word (`on`, `in`, ...: how the unit's nodes stand in or on each), in order."""
+    runs: list[tuple[str, list[ObjectNode]]] = []
+    for p in places:
+        word = next((w for n in unit.inputs if (w := _place(n, named)) and w[1] == p.label), ("on", ""))[0]
+        word = _AT.get(word, word)
+        if runs and runs[-1][0] == word:
+            runs[-1][1].append(p)
+        else:
+            runs.append((word, [p]))
+    return runs
