@@ -80,6 +80,22 @@ def test_each_command_invocation_starts_its_own_budget(monkeypatch):
     assert run("plan", "--goal", "guacamole").stderr.count(" ...") == 0
 
 
+def test_a_command_whose_modules_load_past_the_budget_says_so(monkeypatch):
+    """Stop 51's pass (nc51b): `plan --network gen --goal beverages` said nothing for 2.0-3.4 s from the process's
+    start at load 9-20: its first line, `looking up planner 'fd' ...`, comes once `plan`'s modules have loaded
+    (0.2 s of CPU, seconds of wall time under load), and no step covered the loading. Loading a command's
+    modules is a step: here the budget is spent before it (the process started a minute ago), so it speaks."""
+    import sys
+
+    monkeypatch.setattr(progress, "AFTER", 1.5)
+    monkeypatch.delitem(main.commands, "stats", raising=False)  # as in a new process: the command's module not loaded yet
+    monkeypatch.delitem(sys.modules, "foon2pddl.cli.stats_cmd", raising=False)
+    monkeypatch.setattr(progress, "_process_start", time.monotonic() - 60)
+    r = run("stats")
+    assert r.exit_code == 0, r.stderr
+    assert r.stderr.splitlines()[0] == "loading foon2pddl stats ...", r.stderr
+
+
 @pytest.mark.parametrize(("args", "said"), [
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("retrieve", "--goal", "lemonade"), "checking whether FOON-EXP can make it: computing its WordNet similarity"),
