@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from foon2pddl.generalize.cook import CookSimilarity
 from foon2pddl.generalize.senses import role_senses
+
+SUBGRAPHS = Path(__file__).parent / "data" / "foon-subgraphs"
 
 
 @pytest.fixture(scope="module")
@@ -76,13 +80,13 @@ def test_a_staple_is_a_starch_not_a_flavorer_or_a_bake(cook):
 
 
 def test_a_label_wordnet_does_not_know_read_through_an_override_is_one_member_of_its_class(cook):
-    """Rule 10: the overrides read virgin mojito, dashi, gyoza and ramen, which WordNet does not know, as soft
-    drink, broth, dumpling and noodle; each is one member of that class, so it stands with the class's own
-    label (and two labels of one sense stay 1.0), not with the class's other kinds: tonic, pop, chicken broth,
-    matzo ball and egg noodle are other members. A label WordNet knows by its head (salad mix, a mix of salad
+    """Rule 10: the overrides read virgin mojito, dashi and gyoza, which WordNet does not know, as soft drink,
+    broth and dumpling; each is one member of that class, so it stands with the class's own label (and two labels
+    of one sense stay 1.0), not with the class's other kinds: tonic, pop, chicken broth and matzo ball are other
+    members. A label WordNet knows by its head (salad mix, a mix of salad
     greens) is no stand-in and keeps its kinds (lettuce)."""
     for a, b in [("virgin mojito", "tonic"), ("virgin mojito", "pop"), ("virgin mojito", "cream soda"),
-                 ("dashi", "chicken broth"), ("gyoza", "matzo ball"), ("egg noodle", "ramen")]:
+                 ("dashi", "chicken broth"), ("gyoza", "matzo ball")]:
         assert cook.explain(a, b).rejected == "stand-in", (a, b, cook.explain(a, b))
     for a, b in [("soft drink", "virgin mojito"), ("broth", "dashi"), ("dumpling", "gyoza"), ("cooking spray", "olive oil")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
@@ -181,3 +185,14 @@ def test_two_kinds_of_a_class_of_tools_are_different_tools(cook):
     for a, b in [("mixer", "whisk"), ("egg beater", "whisk"), ("colander", "strainer"), ("spatula", "turner"),
                  ("juicer", "squeezer")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
+def test_ramen_is_read_as_the_subgraphs_use_it_the_dish_wordnet_lacks(cook):
+    """Overrides read a label as the FOON uses it (the rubric's rule 1): in 0054 ramen is a bowl of soup broth and
+    noodles, the dish, which WordNet lacks (no noodle-soup sense), not the noodle the overrides read it as until
+    stop 51 (noodle~ramen 1.0, pasta~ramen 0.92). It has no sense, so it substitutes for no label."""
+    text = (SUBGRAPHS / "0054-quick_ramen_noodles.txt").read_text(encoding="utf-8")
+    assert "O359\tramen\t1\nS23\tcontains\t{soup broth,noodle}" in text
+    assert cook.resolution("ramen").senses == ()
+    for a, b in [("noodle", "ramen"), ("pasta", "ramen"), ("egg noodle", "ramen")]:
+        assert cook.explain(a, b).rejected == "unknown", (a, b, cook.explain(a, b))
