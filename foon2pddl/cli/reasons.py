@@ -178,10 +178,14 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
         click.echo("hint: " + " and ".join(f"--network {k}" for k in kinds) + " can make it: "
                    + "; ".join(NETWORKS[k].hint for k in kinds), err=True)
     elif said.is_set():  # the check was announced: close it (no `hint:` line, as README says)
-        checked = [f"--network {k.name}" for k in hinted_kinds(net)]
-        click.echo(f"neither {' nor '.join(checked)} makes it" if len(checked) > 1 else
-                   f"{checked[0]} does not make it either" if checked else "no other network is small enough to check",
-                   err=True)
+        hinted = hinted_kinds(net)
+        checked = [f"--network {k.name}" for k in hinted]
+        units = len(net.foon.units)
+        parts = [f"neither {' nor '.join(checked)} makes it" if len(checked) > 1 else
+                 f"{checked[0]} does not make it either"] if checked else []
+        parts += [f"--network {k.name} is not checked (FOON-{k.label} of {units:,} units is too large to build for a "
+                  "hint: run it to see)" for k in NETWORKS.values() if k.hint and k not in hinted]
+        click.echo("; ".join(parts), err=True)
 
 
 def _default_kitchen_hint(net, kitchen, spec, level: int) -> bool:
