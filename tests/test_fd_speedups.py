@@ -1,4 +1,4 @@
-"""FD's translator with `planners.fd_speedups`' linear-time rewrites writes the SAS file it writes without them,
+"""FD's translator with `planners.fd_speedups`' rewrites writes the SAS file it writes without them,
 and both translator paths (the warm server's children, a fresh interpreter) run with them."""
 
 from __future__ import annotations
@@ -126,3 +126,39 @@ def test_both_translator_paths_collect_cycles_rarely(entry, tmp_path):
     # the fresh translator's script and the warm server (whose children inherit it) raise the collector's threshold
     out = _in_translator(entry + "\nimport gc; print(gc.get_threshold()[0])", tmp_path)
     assert int(out) == fd_speedups.GC_THRESHOLD[0] > 700  # CPython's default: a collection every 700 allocations
+
+
+def test_a_condition_translated_again_is_a_fresh_copy_of_the_original_result(tmp_path):
+    # the cache returns what the original returns, as new dicts each time: callers add to them (a delete's guard)
+    script = (
+        "import fd_speedups\n"
+        "from fast_downward.translate import main\nfrom fast_downward.translate.pddl.conditions import Atom\n"
+        "p, q, r = Atom('p', ['a']), Atom('q', ['b']), Atom('r', [])\n"
+        "dictionary = {p: [(0, 0)], q: [(1, 0)], r: [(1, 1)]}\n"
+        "ranges, mutex, mutex_ranges = [2, 3], {p: [(0, 0)], q: [(1, 0)], r: [(2, 0)]}, [2, 2, 2]\n"
+        "cases = [[p], [p, q], [q, r], [p, q.negate()], [r.negate()], []]\n"
+        "def run():\n"
+        "    return [main.translate_strips_conditions(c, dictionary, ranges, mutex, mutex_ranges) for c in cases]\n"
+        "before = run(); done = fd_speedups.apply()\n"
+        "first = run(); first[1][0][5] = 9; second = run()\n"
+        "print(before == second, first[0][0] is not second[0][0], 'main.translate_strips_conditions' in done)\n")
+    assert _in_translator(script, tmp_path).split() == ["True", "True", "True"]
+
+
+@pytest.mark.parametrize("name", ["ACT-0034-greek_salad.txt", "0058-chocolate_cake.txt"])
+def test_the_datalog_model_is_the_original_one_in_its_order(name, tmp_path):
+    domain, problem = _relational_task(name)
+    (tmp_path / "domain.pddl").write_text(domain)
+    (tmp_path / "problem.pddl").write_text(problem)
+    script = (
+        "import io, contextlib, fd_speedups\n"
+        "from fast_downward.translate import build_model, normalize, options, pddl_parser, pddl_to_prolog\n"
+        "options.set_options(['domain.pddl', 'problem.pddl'])\n"
+        "def model():\n"
+        "    with contextlib.redirect_stdout(io.StringIO()):\n"
+        "        task = pddl_parser.open('domain.pddl', 'problem.pddl'); normalize.normalize(task)\n"
+        "        model = build_model.compute_model(pddl_to_prolog.translate(task))\n"
+        "    return [(getattr(a.predicate, 'name', a.predicate), a.args) for a in model]  # an action: by name\n"
+        "before = model(); done = fd_speedups.apply()\n"
+        "print(before == model(), len(before) > 100, 'build_model.JoinRule.fire' in done)\n")
+    assert _in_translator(script, tmp_path).split() == ["True", "True", "True"]

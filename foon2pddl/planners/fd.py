@@ -74,7 +74,7 @@ def exit_status(code: int) -> tuple[str, str]:
 
 #: How to install Fast Downward (the wheel ships the translator and the search binary).
 INSTALL_HINT = "pip install 'up-fast-downward' (make install does)"
-#: A fresh translator's script: FD's translator with two linear-time rewrites of its own (`planners.fd_speedups`).
+#: A fresh translator's script: FD's translator with rewrites of its own, the same SAS file (`planners.fd_speedups`).
 SPEEDUPS = Path(__file__).with_name("fd_speedups.py")
 
 
