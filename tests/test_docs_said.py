@@ -169,3 +169,36 @@ def test_pddl_md_counts_the_encodings_make_pddl_writes():
     encodings, dishes, files = (_NUMBERS.get(x, x) for x in m.groups())
     assert (int(encodings), int(dishes)) == (len(GROUND_ENCODINGS), len(GOALS))
     assert int(files) == 2 * len(GROUND_ENCODINGS) * len(GOALS)
+
+
+def test_generalization_md_gives_the_command_of_its_exp_goals_solved_rows(reader_dir):
+    """Stop 50's and 51's passes (nc50b, nc51b): the table of goals solved named the commands of its REG and GEN
+    rows and none for its EXP rows (`goals --network exp --dishes` counts FOON-EXP's own dishes, copies too). The
+    page gives the pipeline that asks FOON-EXP for the recipes' dish nodes: run here on one recipe, `goals`' table
+    feeds `retrieve --goals -` on FOON-EXP and the batch's count line is what the table's rows read."""
+    section = (ROOT / "docs" / "generalization.md").read_text().split("**Goals solved**", 1)[1][:2500]
+    m = re.search(r"^foon2pddl (goals tests/data/foon-subgraphs [^|\n]+) \| foon2pddl (retrieve [^\n]+)$", section, re.M)
+    assert m, section[:600]
+    listing, asking = (shlex.split(c) for c in m.groups())
+    assert asking[asking.index("--network") + 1] == "exp" and asking[asking.index("--goals") + 1] == "-", asking
+    one = "tests/data/foon-subgraphs/0001-whipped_cream.txt"
+    listing, asking = ([one if w == "tests/data/foon-subgraphs" else w for w in c] for c in (listing, asking))
+    listed = CliRunner().invoke(main, listing)
+    assert listed.exit_code == 0, listed.stderr
+    r = CliRunner().invoke(main, asking, input=listed.stdout)
+    assert r.exit_code == 0, r.stderr
+    assert re.search(r"^1 goals: 1 solved", r.stderr, re.M), r.stderr
+
+
+def test_generalization_md_counts_with_the_search_projects_kitchen_are_what_goals_gives(reader_dir):
+    """Stop 51's pass (nc51b): with the search project's `kitchen.json` the page said REG solves 1 dish and
+    GEN-native 5, its first reading (c01474a), never measured again; `goals --dishes` with that kitchen gives 1
+    and 4. The counts the page gives are what it gives."""
+    text = _prose(ROOT / "docs" / "generalization.md").split("**Goals solved**", 1)[1]
+    m = re.search(r"`kitchen\.json` .*? REG solves (\d+) dish.*? GEN-native (\d+),", text)
+    assert m, text[:300]
+    for network, said in (("reg", m.group(1)), ("gen", m.group(2))):
+        r = CliRunner().invoke(main, ["goals", "tests/data/foon-subgraphs", "--dishes", "--network", network,
+                                      "--kitchen", "tests/data/foon-search-inputs/kitchen.json"])
+        assert r.exit_code == 0, r.stderr
+        assert f"reachable: {said} of 100 dishes " in r.stdout, (network, r.stdout[:200])
