@@ -14,7 +14,9 @@ that change the object from the role's output node back to N, one after the othe
 kitchen nodes and nodes the units before it on the way make (`_way_back`), are inserted after that unit, each
 unit once. With `stitched` (a task that reads inputs no unit makes as `input_stitch` does), a unit on the way
 may take the object in a node no unit makes that says less than the one it is in (`input_stitch.said_less`: the
-uncover's pot, no longer `hot`, is the cover's). The way is searched breadth-first over the spare units with a
+uncover's pot, no longer `hot`, is the cover's). With `plan_made` (`relational`), a unit on the way may also take a node a unit of the plan up to that unit makes:
+the fries' remove (`0035-oven-baked_sweet_potato_fries.txt:212`) takes the oven the put inside leaves `with
+[baking tray]` (`count_order.readers_first` then fires it after the bake). The way is searched breadth-first over the spare units with a
 role of the object's label, each node reached once. Without such a way, with `again`, the last unit of the plan
 before that unit with a role changing an object of the label from the role's output node back to N is fired once
 more right after it (`_again`; its other inputs are counted again): the universal FOON's omelette flip leaves the
@@ -95,9 +97,10 @@ def _again(plan: Sequence[int], taken: Sequence[tuple[Role, ...]], i: int, r: Ro
 
 def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen: frozenset[ObjectNode],
                  roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles,
-                 stitched: bool = False, again: bool = False) -> tuple[int, ...]:
+                 stitched: bool = False, again: bool = False, plan_made: bool = False) -> tuple[int, ...]:
     """`plan` with the ways back of the task's `units` put in (module doc); `again`: a unit of the plan fired
-    again where no unit of the task leads back."""
+    again where no unit of the task leads back; `plan_made`: a unit on the way may also take a node a unit of the
+    plan up to that unit makes."""
     planned = set(plan)
     order = list(plan)
     steps: dict[str, list[tuple[int, tuple[Role, ...]]]] | None = None  # made when a way back is first looked for
@@ -115,14 +118,17 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
     later: list[set[ObjectNode | None]] = [set() for _ in range(len(plan) + 1)]  # nodes the units after i take
     for i in range(len(plan) - 1, -1, -1):
         later[i] = later[i + 1] | {x.before for x in taken[i]}
+    made: set[ObjectNode] = set()  # nodes the plan's units up to `m` make (`plan_made`)
     for i, m in enumerate(plan):
+        if plan_made:
+            made.update(x.after for x in taken[i] if x.changes)
         for r in taken[i]:
             if r.before is None or not r.changes or r.before in kitchen:
                 continue
             if r.before not in later[i + 1]:
                 continue
             steps = spare_steps() if steps is None else steps
-            if back := _way_back(foon, r.after, r.before, steps, kitchen, stitched):
+            if back := _way_back(foon, r.after, r.before, steps, kitchen | made if plan_made else kitchen, stitched):
                 at = order.index(m) + 1
                 order[at:at] = back
                 steps = {k: [x for x in xs if x[0] not in back] for k, xs in steps.items()}

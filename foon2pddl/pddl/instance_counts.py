@@ -53,6 +53,7 @@ from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
 from ..model.where import short_path, unit_where
+from .count_order import readers_first
 from .count_returns import with_returns
 from .count_reuse import reused
 from .count_together import makers_together
@@ -229,8 +230,10 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
-        plans = tuple(dict.fromkeys(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again)
+        plans = tuple(dict.fromkeys(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again, plan_made=together)
                                     for again in (False, stitched)))  # stitched: a unit fired again, when fewer
+        if together:  # `relational`: a unit that only reads a node before the one that moves its object out
+            plans = tuple(dict.fromkeys(readers_first(foon, p, roles_of) for p in plans))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
         reuse = reuse and not (stated or overrides or extra)

@@ -5,7 +5,7 @@ Counted wide (`compile`'s): for FOON's plan unfolded, and for the plan through t
 (`relational_reading.read_units`). That plan makes every node FOON's semantics needs, also one the completed
 kitchen holds: the brownie's cut (`ACT-0010-choco_brownie.txt:384`) takes the kitchen's `brownie (baked, on
 [cutting board])` with `cutting board (contains {brownie})`, a node only the whole recipe makes, while the init
-puts the kitchen's brownie on a board of its own, in that node: 92 objects for a plan that is the cut. Counted
+puts the kitchen's brownie on a board of its own, in that node: 56 objects for a plan that is the cut. Counted
 small (`narrow`, what `planners.solve.plan` tries first): from FOON's own plan alone (no stitched plan beside
 it), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
 and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
