@@ -487,7 +487,10 @@ def test_experiment_with_each_similarity_mode(tmp_path):
         assert r.exit_code == 0, r.stderr
         identity = json.loads((out / "protocol.json").read_text())["identity"]
         assert identity.get("similarity") == (None if mode == "paper" else mode)
-        assert f"--similarity {mode}" in (out / "report.md").read_text()
+        report = (out / "report.md").read_text()
+        assert f"--similarity {mode}" in report
+        (exp_line,) = [line for line in report.splitlines() if line.startswith("  - EXP: ")]
+        assert f"WordNet similarity (mode `{mode}`) >= 0.89" in exp_line, exp_line  # not "Wu-Palmer" for cook
         counts[mode] = len((out / "results.jsonl").read_text().splitlines())
     assert counts["cook"] == counts["paper"] == 6
 

@@ -170,7 +170,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
             "similarity": similarity, "objects_per_item": per_item,
             "default_kitchen": summary.default_kitchen, "goal_pool": summary.goal_pool,
             "network_sizes": [{"name": NETWORKS[v.name].label, "units": len(v.foon.units), "nodes": len(v.foon.nodes),
-                               "what": NETWORKS[v.name].summary} for v in views],
+                               "what": NETWORKS[v.name].summary.replace("{similarity}", similarity)} for v in views],
             "solver_descriptions": [{"name": s, "description": SOLVERS[s].description + (
                 f" (first {dict(limits)[s]} goals of each trial)" if s in dict(limits) else "")} for s in chosen],
             "time_limit": f"{time_limit:g}", "jobs": jobs, "scheduler": scheduler, "wall": f"{summary.seconds:.1f} s",

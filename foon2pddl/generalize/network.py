@@ -140,7 +140,8 @@ class NetworkKind:
     """A registered network kind.
 
     `build(net, level, kitchen, options)` gives its `NetworkView`; `label` is its name in
-    reports (REG); `description` the `--network` help, `summary` the experiment report's.
+    reports (REG); `description` the `--network` help, `summary` the experiment report's
+    (`{similarity}`: the run's similarity mode).
     `encoding`: compile and plan use this encoding over the concrete (REG) network instead
     of compiling the view (None: the user's choice over the view). `as_read`: the network
     as read (the default; other kinds are hinted when it cannot make a goal). `hint`: what
@@ -217,7 +218,7 @@ NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
     NetworkKind(DEFAULT_NETWORK, "REG", "the network as read", _reg, "the network as read", as_read=True,
                 paper=PaperFigures((15, 53), 2120.0), schedule=2),
     NetworkKind(_EXP, "EXP", f"FOON-EXP (similar objects, threshold {DEFAULT_THRESHOLD})", _exp,
-                "FOON-EXP, Wu-Palmer similarity >= 0.89", hint="FOON-EXP (similar objects stand in)",
+                "FOON-EXP, WordNet similarity (mode `{similarity}`) >= 0.89", hint="FOON-EXP (similar objects stand in)",
                 hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
                 paper=PaperFigures((14, 62), 15217.0), schedule=0, requires=_wordnet,
                 building="building FOON-EXP of {units:,} units (WordNet similarities: once, then cached)"),
