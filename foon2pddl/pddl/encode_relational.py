@@ -77,7 +77,7 @@ from .encode_instances import (
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .holder_words import mismatches, reported
-from .holders import Fate, attached_gaps, list_gaps, on_parts
+from .holders import Fate, attached_gaps, held_elsewhere, list_gaps, on_parts
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
@@ -220,12 +220,12 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
     slots, unit = plan.slots, plan.unit
     # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
     # label is a parameter (it must be in its node); several of one label (seven bowls poured into the salad
-    # bowl) are emptied by a conditional effect on whichever holds the object, else 9^7 groundings.
+    # bowl) are emptied by a conditional effect on whichever holds the object, else 9^7 groundings, unless what
+    # leaves one may be in another node of its label (`holders.held_elsewhere`): then each is a parameter.
     emptied = dict(plan.emptied)
-    per_label: dict[str, int] = {}
-    for k in emptied:
-        per_label[slots[k].rel.role.label] = per_label.get(slots[k].rel.role.label, 0) + 1
-    emptied = {k: n for k, n in emptied.items() if per_label[slots[k].rel.role.label] > 1}
+    per_label = [slots[k].rel.role.label for k in emptied]
+    emptied = {k: n for k, n in emptied.items() if per_label.count(slots[k].rel.role.label) > 1
+               and not held_elsewhere([s.rel for s in slots], k, const)}
     bound = [s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
              or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied)
              for k, s in enumerate(slots)]

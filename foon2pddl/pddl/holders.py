@@ -86,6 +86,7 @@ lists). O(r^2) for r roles; cached per unit.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
@@ -97,7 +98,7 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
 from .holder_words import UnitWords, newly_listed, part_of, renamed, takers, unit_words
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "list_gaps", "on_parts",
+__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "held_elsewhere", "list_gaps", "on_parts",
            "relational_roles", "unit_aliases", "unit_flows"]
 
 
@@ -371,3 +372,13 @@ def attached_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
         for r, new in zip(read.roles, newly_listed(unit), strict=True) for label, node in outs
         if label in new and place_of(node) is None
         and any(s.label == "attached to" and s.related == r.label for s in node.states)))
+
+
+def held_elsewhere(rels: Sequence[RelRole], k: int, nodes: Iterable[ObjectNode]) -> bool:
+    """Whether an object leaving role `k`'s container (`rels`: the unit's roles) may be in a holder of its label
+    in another node of `nodes` (a task's) that lists it: a scrape made the plate of alliums the omelette pour
+    takes `contains {alliums, peppers}` (`0042-perfect_omelette.txt:79`), and a pour emptying whichever plate held
+    the alliums, in no node it names, took them off that plate and left it listing both. O(nodes x roles)."""
+    before = rels[k].role.before
+    leaving = {r.role.label for r in rels if r.source is not None and r.source.role == k}
+    return any(n.label == before.label and n != before and leaving & listed(n) for n in nodes)
