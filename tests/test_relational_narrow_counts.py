@@ -106,13 +106,11 @@ def test_what_a_kitchen_container_lists_is_counted_small_from_where_it_starts_no
     goal = Goal(GoalSpec("pot"), (pot,))
     wide = compile_goal(Foon(units), kitchen, goal, "relational")
     small = compile_goal(Foon(units), kitchen, goal, "relational", narrow=True)
-    # the pour is the one unit taking the kitchen's cup, fired once: its water is poured out whole, no portion
-    # (`relational_plan.plan_unit`'s `sole`; tests/test_relational_taken_once.py)
-    assert len(wide.task.instances) == 6
-    assert sorted(x.name for x in small.task.instances) == ["measuring_cup_1", "pot_1", "water_1"]
+    assert len(wide.task.instances) == 7
+    assert sorted(x.name for x in small.task.instances) == ["measuring_cup_1", "pot_1", "water_1", "water_2"]
     assert "kitchen with water (in [measuring cup])" in small.narrowed
     outcome = clean_unit_plan(units, kitchen.nodes, pot)
-    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"] and len(outcome.task.instances) == 3
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"] and len(outcome.task.instances) == 4
 
 
 def test_a_task_counted_small_keeps_the_contradictions_of_the_units_it_starts_after():

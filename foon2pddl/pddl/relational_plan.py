@@ -12,14 +12,15 @@
   cream was poured into) and its node is no kitchen node, unless it goes onto an object
   in that container (the lemon juice the carrot in the salad bowl is seasoned with: it
   is still in the bowl, and the bowl still lists it); else it keeps its contents
-  (a carton, a bag, a packet: the kitchen stocks them), but one no other unit takes, fired once (`sole`), is
-  emptied: the hamburger's bowl of salt (`0027-best_hamburger_ever.txt:167`). A holder the unit does not name is
-  emptied likewise when the units fill its label with the object's (whichever holds it: `Slot.late_empties`), keeps
-  its contents when they do not (it may be a carton; the kitchen adds one listing what it holds when the task has
-  none), and the object simply moves when no node of the task says what a holder of its label holds (a stove, a
-  table), or when its node names no place after the unit (the squeezer that ends `dirty`: it leaves the surface
-  whole). An object consumed out of a holder the unit does not name empties it likewise; all that leaves holders of
-  one label in a unit leaves at once (the beef and the onion leave the pan together).
+  (a carton, a bag, a packet: the kitchen stocks them). A holder the unit does not
+  name is emptied likewise when the units fill its label with the object's (whichever
+  holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
+  carton; the kitchen adds one listing what it holds when the task has none), and
+  the object simply moves when no node of the task says what a holder of its label
+  holds (a stove, a table), or when its node names no place after the unit (the
+  squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of
+  a holder the unit does not name empties it likewise; all that leaves holders of one
+  label in a unit leaves at once (the beef and the onion leave the pan together).
   A container poured out whole (`holders.unit_flows`) is emptied of what it held.
   An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
@@ -157,12 +158,11 @@ def called_fills(units: Iterable[FunctionalUnit]) -> frozenset[tuple[str, str]]:
 
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
-              holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset(),
-              sole: frozenset[ObjectNode] = frozenset()) -> UnitPlan:
+              holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holders.gained`; module doc), whose nodes have `labels` and place
-    objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`."""
+    objects in or on objects of the labels `holding`, and fill holders by the names `called` (`called_fills`)."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -175,8 +175,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         if fate in (Fate.SPLITS, Fate.CONSUMED) and src is not None and src.role is not None:
             holder = rels[src.role].role
             made_in = any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role for x in rels)
-            whole = holder.before not in kitchen or (fate is Fate.SPLITS and holder.before in sole)  # or taken once
-            if holder.after is None and whole and (holder.label, r.role.label) in filled and not (
+            if holder.after is None and holder.before not in kitchen and (holder.label, r.role.label) in filled and not (
                     fate is Fate.CONSUMED and made_in):  # (consumed into what the unit makes there: still in it)
                 fate = Fate.MOVES if fate is Fate.SPLITS else fate  # a container an earlier unit filled, which FOON
                 # never empties: the whole leaves it (or is consumed out of it: GEN's garlic rice)
