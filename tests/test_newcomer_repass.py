@@ -358,7 +358,7 @@ def test_the_omelettes_steps_say_what_moves_from_where_into_what_with_which_tool
     assert "mix egg white and yolk, with the fork (clean), in the bowl" in steps  # not `on the bowl`
     assert "heat cooking pan (empty), on the stove (off, with [pan])" in steps
     assert "pour egg mixture from the bowl into the cooking pan (heated, on [stove])" in steps
-    assert "sprinkle salt (granulated) from the bowl into the bowl (contains {egg white and yolk})" in steps
+    assert "sprinkle salt (granulated) from the bowl (contains {salt}) into the bowl (contains {egg white and yolk})" in steps
     assert ("cook omelette (contains {black pepper, salt}, partly cooked), in the cooking pan (contains {egg mixture},"
             " on [stove]), on the stove (on, with [pan])") in steps
     assert ("mix egg mixture (contains {black pepper, salt}), with the whisk (clean), in the cooking pan (on [stove]),"

@@ -97,6 +97,15 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
     return out
 
 
+def _source(unit: FunctionalUnit, moved: ObjectNode, label: str, into: ObjectNode | None) -> str:
+    """The container `moved` leaves, said so a cook tells it from `into`: with its state when both have one label
+    (`from the bowl (contains {salt}) into the bowl (contains {egg white and yolk})`), else by its label."""
+    if into is None or into.label != label:
+        return label
+    found = next((j for j in unit.inputs if j.label == label and j is not into and moved.label in contents(j)), None)
+    return found.describe() if found is not None else label
+
+
 def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
     """(what moves, from which container, into which) when two inputs of one container label trade contents
     (`model.pairing.transfer` over the unit's roles, which say which input becomes which output). None otherwise."""
@@ -180,8 +189,8 @@ def recipe_text(unit: FunctionalUnit) -> str:
     elif moves:
         parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
         for i, src, dst in moves:
-            phrase = _unplaced(i) + (f" from the {src[1]}" if src else "")
             where = before.get(dst[1])
+            phrase = _unplaced(i) + (f" from the {_source(unit, i, src[1], where)}" if src else "")
             to = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
             if parts and parts[-1][1] == to:
                 parts[-1][0].append(phrase)
