@@ -551,9 +551,10 @@ def test_a_step_without_a_beat_says_its_line_once_through_a_pipe(monkeypatch):
 
 def test_a_hint_check_that_skips_a_network_too_large_to_build_says_so(every_step_speaks):
     """The ramen on the subgraphs (docs/format.md): the check closed with `--network gen does not make it
-    either`, while FOON-EXP of 1,845 units is never built for a hint: the reader took EXP for checked too."""
+    either`, while FOON-EXP of a 1,845-unit network is never built for a hint: the reader took EXP for checked too;
+    the closing line says whose units it counts (the network's, not FOON-EXP's 7,799: rv51's review)."""
     r = run("retrieve", SUBGRAPHS, "--goal", "ramen")
     assert r.exit_code == 1
     lines = r.stderr.splitlines()
-    assert lines[-1] == ("--network gen does not make it either; --network exp is not checked (FOON-EXP of 1,845"
-                         " units is too large to build for a hint: run it to see)"), r.stderr
+    assert lines[-1] == ("--network gen does not make it either; --network exp is not checked (FOON-EXP of a"
+                         " 1,845-unit network is too large to build for a hint: run it to see)"), r.stderr

@@ -183,8 +183,8 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
         units = len(net.foon.units)
         parts = [f"neither {' nor '.join(checked)} makes it" if len(checked) > 1 else
                  f"{checked[0]} does not make it either"] if checked else []
-        parts += [f"--network {k.name} is not checked (FOON-{k.label} of {units:,} units is too large to build for a "
-                  "hint: run it to see)" for k in NETWORKS.values() if k.hint and k not in hinted]
+        parts += [f"--network {k.name} is not checked (FOON-{k.label} of a {units:,}-unit network is too large to build "
+                  "for a hint: run it to see)" for k in NETWORKS.values() if k.hint and k not in hinted]
         click.echo("; ".join(parts), err=True)
 
 
