@@ -99,7 +99,7 @@ def test_a_command_whose_modules_load_past_the_budget_says_so(monkeypatch):
 @pytest.mark.parametrize(("args", "said"), [
     (("retrieve", "--goal", "lemonade", "--network", "exp"), "building FOON-EXP of 101 units"),
     (("retrieve", "--goal", "lemonade"), "checking whether FOON-EXP can make it: computing its WordNet similarity"),
-    (("expand",), "opening WordNet for the similarities of 66 labels (once, then cached)"),
+    (("expand",), "opening WordNet for the similarities of 66 labels (once per set of labels, then cached)"),
 ], ids=["build FOON-EXP", "hint check", "expand"])
 def test_a_step_known_to_be_slow_says_so_at_once(monkeypatch, tmp_path, args, said):
     """With an empty cache, FOON-EXP's WordNet matrix takes seconds: the step says so when it starts, not
@@ -452,8 +452,8 @@ def test_a_cold_expand_says_it_opens_wordnet_and_how_far_the_matrix_is(every_ste
     r = run("expand")
     assert r.exit_code == 0, r.stderr
     lines = r.stderr.splitlines()
-    assert "opening WordNet for the similarities of 66 labels (once, then cached) ..." in lines
-    rows = [line for line in lines if line.startswith("WordNet similarities of 66 labels (once, then cached): rows ")]
+    assert "opening WordNet for the similarities of 66 labels (once per set of labels, then cached) ..." in lines
+    rows = [line for line in lines if line.startswith("WordNet similarities of 66 labels (once per set of labels, then cached): rows ")]
     assert len(rows) == 3 and rows[0].endswith(": rows 1-18 of 66 ...") and rows[-1].endswith(" of 66 ..."), rows
 
 

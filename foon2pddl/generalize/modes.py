@@ -89,7 +89,7 @@ def mode_matrix(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, *, cache: b
     found = cached_matrix(labels, _key(labels, mode, extra)) if cache else None
     if found is not None:
         return found
-    with step(f"opening WordNet for the similarities of {len(labels):,} labels (once, then cached)"):
+    with step(f"opening WordNet for the similarities of {len(labels):,} labels (once per set of labels, then cached)"):
         sim = make_similarity(mode, extra=extra)
     return similarity_matrix(labels, cache=cache, sim=sim, step=step)
 

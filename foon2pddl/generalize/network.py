@@ -190,7 +190,7 @@ def _exp_slow_step(net: Network, kitchen: Kitchen) -> str | None:
 
     if mode_matrix_is_cached(vocabulary(net.foon, kitchen)):
         return None
-    return "checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once, then cached)"
+    return "checking whether FOON-EXP can make it: computing its WordNet similarity matrix (once per set of labels, then cached)"
 
 
 def _wordnet() -> None:
@@ -221,7 +221,7 @@ NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
                 "FOON-EXP, WordNet similarity (mode `{similarity}`) >= 0.89", hint="FOON-EXP (similar objects stand in)",
                 hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
                 paper=PaperFigures((14, 62), 15217.0), schedule=0, requires=_wordnet,
-                building="building FOON-EXP of {units:,} units (WordNet similarities: once, then cached)"),
+                building="building FOON-EXP of {units:,} units (WordNet similarities: once per set of labels, then cached)"),
     NetworkKind(_GEN, "GEN", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen "
                 "objects)", _gen, "FOON-GEN, objects replaced by their categories", encoding="gen-lifted",
                 hint="FOON-GEN (object categories)", hint_max_units=2500, substitutes=Substitutes.CATEGORY,

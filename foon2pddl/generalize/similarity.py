@@ -205,7 +205,7 @@ def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "",
         while last < n and pairs < SHARE_PAIRS:
             pairs += n - last - 1
             last += 1
-        with step(f"WordNet similarities of {n:,} labels (once, then cached): rows {first + 1:,}-{last:,} of {n:,}",
+        with step(f"WordNet similarities of {n:,} labels (once per set of labels, then cached): rows {first + 1:,}-{last:,} of {n:,}",
                   series=f"WordNet similarities of {n:,} labels"):
             for i in range(first, last):
                 for j in range(i + 1, n):
