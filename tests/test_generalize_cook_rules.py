@@ -143,6 +143,20 @@ def test_two_dishes_are_variants_even_when_wordnet_names_each(cook):
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
 
 
+def test_two_prepared_foods_are_variants_not_only_two_dishes(cook):
+    """Rule 4 for every prepared food (stop 52, issue 23): WordNet's food splits into foodstuffs (ingredients:
+    `foodstuff.n.02`) and nutriment, what is eaten as prepared (`nutriment.n.01`: dishes, courses, sweets, meals).
+    Two senses that meet under a prepared food are variants of it, as two dishes are: buckeye candy~fudge (both
+    under `candy.n.01`, a sweet, no dish) and hors d'oeuvre~pigs in a blanket score 0; two ingredients under one
+    foodstuff (lemon~lime, honey~sugar), stocks (`INGREDIENTS`) and one sense read by both labels stand."""
+    for a, b in [("buckeye candy", "fudge"), ("buckeye candy", "marshmallow"), ("hors d'oeuvre", "pigs in a blanket")]:
+        e = cook.explain(a, b)
+        assert e.similarity == 0.0 and e.rejected == "dishes", (a, b, e)
+    for a, b in [("lemon", "lime"), ("honey", "sugar"), ("broth", "chicken broth"), ("dumpling", "gyoza"),
+                 ("olive oil", "vegetable oil")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+
+
 def test_a_class_of_foods_whose_kinds_are_classes_is_no_food(cook):
     """Rule 9 for foods (stop 51, issue 23): a kind pair whose generic is a food class (`classes.food_class`: at
     least 5 kinds, fewer than 10 % named or defined after it) whose kinds are classes of their own (at least

@@ -24,8 +24,8 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    named or defined after them, `classes.staple`) is never broad with its kinds, unless it is
    a dish, a bake or a flavorer (`classes.NOT_STAPLES`: sauce, cake) or a compound known by its head.
 
-4. Variants (dish compounds) are not substitutes (`variant`), nor are two dish senses (`dishes`: club
-   sandwich~wrap, sandwich~hamburger); a stock (`INGREDIENTS`:
+4. Variants (dish compounds) are not substitutes (`variant`), nor are two senses of prepared foods (`dishes`,
+   under `NUTRIMENT`: club sandwich~wrap, sandwich~hamburger, buckeye candy~fudge); a stock (`INGREDIENTS`:
    `broth.n.01`, `broth.n.02`, which WordNet files under soup but defines as the liquid soups and
    sauces are made from) is an ingredient, so vegetable broth~broth stands; a modifier
    WordNet tags mostly as an adjective (`senses.adjective`: green) is no food.
@@ -69,6 +69,10 @@ DEFAULT_BREADTH = 0.02
 
 #: Dishes: their kinds are variants of them (rule 4), so no dish is a staple (rule 3's exemption).
 DISH = "dish.n.02"
+
+#: What is eaten as prepared (WordNet splits food into foodstuffs, the ingredients, and nutriment: dishes, courses,
+#: sweets, meals): two senses that meet under it are variants of one another (rule 4, `dishes`).
+NUTRIMENT = "nutriment.n.01"
 
 #: Prepared foods: a compound under one of these is a recipe's own dish, drink or bake (rule 4).
 PREPARED: frozenset[str] = frozenset({DISH, "baked_goods.n.01", "beverage.n.01"})
@@ -114,7 +118,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
-         " dishes, food classes of classes, stand-ins and head compounds, tool class siblings")
+         " dishes, food classes of classes, stand-ins and head compounds, tool class siblings, prepared foods")
 
 
 def synonyms(found: Evidence) -> bool:
@@ -199,11 +203,12 @@ class CookSimilarity(KinRules):
         return any(self._wup.ancestors(x) & PREPARED for x in r.senses)
 
     def dishes(self, sense: str, other: str, lcs: str) -> bool:
-        """Rule 4 for whole terms: whether two senses meet under a dish (`DISH`: club sandwich and wrap under sandwich,
-        a sandwich and its kind), neither a stock (`INGREDIENTS`). A dish's kinds are variants of it whether named
-        by a compound (greek salad) or by a word of their own (club sandwich). Only with the categories (rule 5 on):
-        the filing similarity groups dishes."""
-        if self.categories is None or sense == other or DISH not in self._wup.ancestors(lcs):
+        """Rule 4 for whole terms: whether two senses meet under a prepared food (`NUTRIMENT`: a dish, a course, a
+        sweet; club sandwich and wrap under sandwich, buckeye candy and fudge under candy, a sandwich and its kind),
+        neither a stock (`INGREDIENTS`). A prepared food's kinds are variants of it whether named by a compound
+        (greek salad) or by a word of their own (club sandwich). Only with the categories (rule 5 on): the filing
+        similarity groups dishes."""
+        if self.categories is None or sense == other or NUTRIMENT not in self._wup.ancestors(lcs):
             return False
         return not any(self._wup.ancestors(x) & INGREDIENTS for x in (sense, other))
 
