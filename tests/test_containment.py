@@ -131,7 +131,7 @@ def test_cli_retrieve_and_plan_under_infer(tmp_path):
     infer = CliRunner().invoke(main, ["retrieve", str(net), "--kitchen", str(kitchen), "--goal", "batter",
                                       "--containment", "infer"])
     assert infer.exit_code == 0, infer.output
-    assert "1 units, 1 inferred by containment: bowl (contains {cornmeal, milk}, in [mixer])" in infer.stderr
+    assert "1 unit, 1 inferred by containment: bowl (contains {cornmeal, milk}, in [mixer])" in infer.stderr
     planned = CliRunner().invoke(main, ["plan", str(net), "--kitchen", str(kitchen), "--goal", "batter",
                                         "--containment", "infer", "--encoding", "tree"])  # FOON's semantics
     assert planned.exit_code == 0, planned.output

@@ -187,7 +187,7 @@ def test_generalization_md_gives_the_command_of_its_exp_goals_solved_rows(reader
     assert listed.exit_code == 0, listed.stderr
     r = CliRunner().invoke(main, asking, input=listed.stdout)
     assert r.exit_code == 0, r.stderr
-    assert re.search(r"^1 goals: 1 solved", r.stderr, re.M), r.stderr
+    assert re.search(r"^1 goal: 1 solved", r.stderr, re.M), r.stderr
 
 
 def test_generalization_md_counts_with_the_search_projects_kitchen_are_what_goals_gives(reader_dir):

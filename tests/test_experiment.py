@@ -129,7 +129,7 @@ def test_damaged_result_line_is_reported_skipped_and_recomputed(tmp_path, kind):
     result = CliRunner().invoke(main, args)
     assert result.exit_code == 0, result.output
     assert "results.jsonl:2: warning: damaged result line" in result.output
-    assert "1 cells run, 3 reused" in result.output
+    assert "1 cell run, 3 reused" in result.output
     assert {k: r.solved for k, r in read_records(path).items()} == {k: r.solved for k, r in before.items()}
 
 

@@ -219,7 +219,7 @@ def test_gen_goals_listed_are_goals_of_plan_network_gen(tmp_path):
     assert run("plan", "--network", "gen", "--goal", node).exit_code == 0
     assert run("compile", "--network", "gen", "--goal", "beverages", "-o", tmp_path / "c").exit_code == 0
     one = run("plan", "--network", "gen", "--goals", "-", stdin="lemonade\n")
-    assert one.exit_code == 0 and "1 goals: 1 solved" in one.stderr
+    assert one.exit_code == 0 and "1 goal: 1 solved" in one.stderr
     many = run("compile", "--network", "gen", "--goal", "lemonade", "--goal", "beverages", "-o", tmp_path / "d")
     assert many.exit_code == 0 and (tmp_path / "d" / "beverages" / "domain.pddl").exists()
     unknown = run("plan", "--network", "gen", "--goal", "beveragez")
@@ -289,7 +289,7 @@ def test_bare_label_is_the_dish_and_says_so(tmp_path):
     assert "`salmon (frozen, in [bowl])`" in r.stderr  # the others are listed
     # states still ask for a node exactly
     exact = run("retrieve", foon, "--goal", "salmon: frozen, in [bowl]", "--kitchen", kit)
-    assert exact.exit_code == 0 and "1 units" in exact.stderr and "note:" not in exact.stderr
+    assert exact.exit_code == 0 and "1 unit" in exact.stderr and "note:" not in exact.stderr
 
 
 def test_bare_label_on_the_corpus_picks_a_dish():
@@ -468,13 +468,13 @@ def test_base_kitchen_starts_from_raw_ingredients(tmp_path):
     chosen = run("retrieve", foon, "--goal", "lemonade")
     assert chosen.exit_code == 0 and "complete: 2 units" in chosen.stderr
     assert "note: kitchen: base (raw ingredients and tools in their base states, 3 nodes" in chosen.stderr
-    assert "`--kitchen default` for the network's default kitchen (4 nodes, 1 half-made dishes included)" \
+    assert "`--kitchen default` for the network's default kitchen (4 nodes, 1 half-made dish included)" \
         in chosen.stderr
     assert "pitcher (contains" not in chosen.stdout.splitlines()[1]  # no half-made dish on hand at the start
     base = run("retrieve", foon, "--goal", "lemonade", "--kitchen", "base")
     assert base.exit_code == 0 and base.stdout == chosen.stdout and "note: kitchen" not in base.stderr
     default = run("retrieve", foon, "--goal", "lemonade", "--kitchen", "default")
-    assert default.exit_code == 0 and "complete: 1 units" in default.stderr and "note: kitchen" not in default.stderr
+    assert default.exit_code == 0 and "complete: 1 unit" in default.stderr and "note: kitchen" not in default.stderr
     assert "pitcher (contains {lemon juice, sugar})" in default.stdout.splitlines()[1]
     listed = run("goals", foon, "--json")
     assert '"kitchen": "base kitchen"' in listed.stdout
@@ -494,9 +494,9 @@ ONE_RECIPE += "//\nO\tpitcher\t0\nS\tcontains\t{lemon juice}\nO\twater\t1\nS\tco
 def test_a_single_recipe_keeps_its_default_kitchen(tmp_path):
     foon = write(tmp_path / "one.txt", ONE_RECIPE)
     r = run("retrieve", foon, "--goal", "lemonade: contains {lemon juice, sugar, water}, in [pitcher]")
-    assert r.exit_code == 0 and "complete: 1 units" in r.stderr  # the recipe's own start, as written
+    assert r.exit_code == 0 and "complete: 1 unit" in r.stderr  # the recipe's own start, as written
     assert "note: kitchen: default (the network's default kitchen, 4 nodes" in r.stderr
-    assert "`--kitchen base` leaves out its 1 half-made dishes" in r.stderr
+    assert "`--kitchen base` leaves out its 1 half-made dish" in r.stderr
     # from the base kitchen nothing makes it; the hint names the kitchen that does
     b = run("retrieve", foon, "--goal", "lemonade: contains {lemon juice, sugar, water}, in [pitcher]",
             "--kitchen", "base")

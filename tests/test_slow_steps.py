@@ -157,12 +157,18 @@ def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     assert any(line.startswith(said) for line in r.stderr.splitlines()), r.stderr
 
 
-def test_check_says_when_it_opens_wordnet_and_how_to_skip_it(every_step_speaks):
+def test_check_says_when_it_opens_wordnet_and_how_to_skip_it(every_step_speaks, monkeypatch):
     """`check tests/data/foon-subgraphs` said `checking ... for defects ...` and then nothing for 11.6 s (load 10),
-    most of it opening WordNet for the spelling variants: the step says so, and names `--no-wordnet`."""
+    most of it opening WordNet for the spelling variants: the step says so, and names `--no-wordnet`. As in a new
+    process, `check`'s module is not loaded yet (run alone, this test read `loading foon2pddl check ...` first)."""
+    import sys
+
+    monkeypatch.delitem(main.commands, "check", raising=False)
+    monkeypatch.delitem(sys.modules, "foon2pddl.cli.check_cmd", raising=False)
     said = run("check", SUBGRAPHS).stderr.splitlines()
     opening = "opening WordNet (to tell spelling variants from different words; --no-wordnet: string rules only) ..."
-    assert said[:3] == [f"reading {SUBGRAPHS} ...", opening, f"checking {SUBGRAPHS} for defects ..."], said[:3]
+    assert said[:4] == ["loading foon2pddl check ...", f"reading {SUBGRAPHS} ...", opening,
+                        f"checking {SUBGRAPHS} for defects ..."], said[:4]
     assert opening not in run("check", SUBGRAPHS, "--no-wordnet").stderr.splitlines()
 
 

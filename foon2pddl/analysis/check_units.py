@@ -9,6 +9,7 @@ import networkx as nx
 
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import default_kitchen, is_base_node
+from ..model.words import count, plural
 from .defects import Defect, DefectKind, defect, mentions
 from .index import index_of
 from .reachability import UNREACHED, reachable
@@ -70,8 +71,8 @@ def no_entry_cycles(foon: Foon) -> list[Defect]:
         blocked = len(nx.ancestors(cond, c)) and sum(len(cond.nodes[a]["members"]) for a in nx.ancestors(cond, c))
         nodes = [ix.nodes[n] for n in members]
         out.append(defect(DefectKind.NO_ENTRY_CYCLE,
-                          f"{len(nodes)} node(s) can only be made from each other: {_names(nodes)}; "
-                          f"{blocked} more node(s) need them",
+                          f"{count(len(nodes), 'node')} can only be made from each other: {_names(nodes)}; "
+                          f"{blocked} more {plural(blocked, 'node')} {'needs' if blocked == 1 else 'need'} them",
                           (s for u in units for s in foon.units[u].sources), [n.describe() for n in nodes]))
     return out
 

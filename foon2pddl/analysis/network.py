@@ -29,6 +29,7 @@ import networkx as nx
 
 from ..io.steps import Step, silent_step
 from ..model.foon import Foon, ObjectNode
+from ..model.words import count
 from .betweenness import betweenness
 
 #: Most edge visits (V (V + E) for exact betweenness) spent on one projection's betweenness.
@@ -140,7 +141,7 @@ def rank(g: nx.Graph, what: str = "nodes", step: Step = silent_step) -> tuple[Ra
 
 def analyze(foon: Foon, level: int = 1, step: Step = silent_step) -> Analysis:
     """Both projections ranked, and the connected components of the bipartite graph (slow parts in `step`)."""
-    with step(f"projecting {len(foon.units):,} units (objects, motions, components)"):
+    with step(f"projecting {count(len(foon.units), 'unit', grouped=True)} (objects, motions, components)"):
         b = bipartite(foon, level)
         sizes = tuple(sorted((len(c) for c in nx.weakly_connected_components(b)), reverse=True))
         og, mg = object_projection(foon, level), motion_projection(foon)

@@ -10,6 +10,7 @@ from pathlib import Path
 import networkx as nx
 
 from ..io.atomic import atomic_write_many
+from ..model.words import count
 from .network import BETWEENNESS_WORK, Analysis
 
 KEYS = (("degree_centrality", "degree centrality"), ("betweenness", "betweenness centrality"))
@@ -41,9 +42,9 @@ def _xml_safe(g: nx.Graph) -> nx.Graph:
 
 def format_text(a: Analysis, top: int) -> str:
     """The `top` objects and motions by degree and betweenness centrality, and the components."""
-    what = "object labels" if a.level == 1 else "object nodes"
-    lines = [f"{a.object_count} {what}, {len(a.motions)} motions, {a.unit_count} units; "
-             f"{len(a.components)} connected component(s), sizes {', '.join(map(str, a.components[:10]))}"
+    what = "object label" if a.level == 1 else "object node"
+    lines = [f"{count(a.object_count, what)}, {count(len(a.motions), 'motion')}, {count(a.unit_count, 'unit')}; "
+             f"{count(len(a.components), 'connected component')}, {'size' if len(a.components) == 1 else 'sizes'} {', '.join(map(str, a.components[:10]))}"
              + (" ..." if len(a.components) > 10 else "")]
     lines += [f"betweenness of {which} estimated from {k} sampled source nodes (exact betweenness would exceed "
               f"{BETWEENNESS_WORK:,} edge visits)" for which, k in a.sampled]

@@ -9,6 +9,7 @@ from ..errors import ParseWarning
 from ..model.foon import Foon
 from ..model.levels import LEVELS, project
 from ..model.where import shown_path
+from ..model.words import count
 
 
 def level_row(foon: Foon) -> dict[str, int]:
@@ -44,7 +45,7 @@ def format_stats(stats: dict[str, Any]) -> str:
         f"distinct motion labels: {stats['motion_labels']}",
         f"composite (*) units:    {stats['composite_units']}",
         "",
-        f"units per source file ({len(stats['units_per_file'])} files):",
+        f"units per source file ({count(len(stats['units_per_file']), 'file')}):",
     ]
     lines += [f"  {n:>5}  {p}" for p, n in stats["units_per_file"].items()]
     if stats["warnings"]:

@@ -6,6 +6,7 @@ import functools
 
 import click
 
+from ..model.words import count
 from . import main
 from .options import (
     emit,
@@ -60,13 +61,13 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 
-        with slow_step(f"listing the {len(e.substitutions)} substitutions with their WordNet senses"):
+        with slow_step(f"listing the {count(len(e.substitutions), 'substitution')} with their WordNet senses"):
             text = format_pairs(substitution_pairs(e, extra), fmt)
         emit(text, output)
         return
-    header = (f"{e.title()}: {e.original_units} units + {e.added_units} expanded, "
-              f"{len(e.substitutions)} label substitutions")
-    with slow_step(f"writing FOON-EXP ({len(e.foon.units):,} units)"):
+    header = (f"{e.title()}: {count(e.original_units, 'unit')} + {e.added_units} expanded, "
+              f"{count(len(e.substitutions), 'label substitution')}")
+    with slow_step(f"writing FOON-EXP ({count(len(e.foon.units), 'unit', grouped=True)})"):
         emit_network(e.foon, fmt, provenance, header, output)
     table = format_levels_table(levels_table({"REG": net.foon, "EXP": e.foon}, step=slow_step))
     click.echo(table, err=True, nl=False)

@@ -15,6 +15,7 @@ from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAU
 from ..experiment.provenance import code_version, describe
 from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
 from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
+from ..model.words import count
 from . import main
 from .options import level_option, paths_argument
 
@@ -190,19 +191,19 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     if summary.ran:  # the bar's elapsed time counts the cells only: say where the rest went
         took += (f" ({summary.cell_seconds:.1f} s running the cells, the rest reading the network, drawing the "
                  f"trials and building the networks)")
-    click.echo(f"{summary.ran} cells run, {summary.skipped} reused, {solved} solved, {took}; "
+    click.echo(f"{count(summary.ran, 'cell')} run, {summary.skipped} reused, {solved} solved, {took}; "
                f"wrote {config.results_path}, " + ", ".join(str(p) for p in written))
     ag = agreement(data)
     bad = invalid_trees(data)
     if (ag is not None and ag.disagreements) or bad:
         if ag is not None and ag.disagreements:
-            click.echo(f"DISAGREEMENT: native-complete and fd-tree differ on {len(ag.disagreements)} cells "
+            click.echo(f"DISAGREEMENT: native-complete and fd-tree differ on {count(len(ag.disagreements), 'cell')} "
                        f"(see {report})", err=True)
         if bad:
-            click.echo(f"INVALID: {len(bad)} returned trees do not validate (see {report})", err=True)
+            click.echo(f"INVALID: {count(len(bad), 'returned tree')} {'does' if len(bad) == 1 else 'do'} not validate (see {report})", err=True)
         sys.exit(EXIT_DISAGREEMENT)
     if summary.lost:
-        click.echo(f"INCOMPLETE: {summary.lost} cells were lost with their workers; run the same command again "
+        click.echo(f"INCOMPLETE: {count(summary.lost, 'cell')} {'was' if summary.lost == 1 else 'were'} lost with their workers; run the same command again "
                    "to redo them", err=True)
         sys.exit(EXIT_INCOMPLETE)
 

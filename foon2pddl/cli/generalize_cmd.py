@@ -6,6 +6,7 @@ from pathlib import Path
 
 import click
 
+from ..model.words import count
 from . import main
 from .options import emit, emit_network, output_option, paths_argument, read_network
 from .progress import slow_step
@@ -35,11 +36,11 @@ def generalize_(paths, categories, provenance, fmt, output, readings) -> None:
 
     index = load_index(categories)
     net = read_network(paths)
-    with slow_step(f"generalizing {len(net.foon.units):,} units to categories"):
+    with slow_step(f"generalizing {count(len(net.foon.units), 'unit', grouped=True)} to categories"):
         c = compress(net.foon, index)
-    header = (f"FOON-GEN ({len(index)} categories, {len(c.mapping)} labels generalized): "
-              f"{c.original_units} -> {len(c.foon.units)} units")
-    with slow_step(f"writing FOON-GEN ({len(c.foon.units):,} units)"):
+    header = (f"FOON-GEN ({count(len(index), 'category')}, {count(len(c.mapping), 'label')} generalized): "
+              f"{c.original_units} -> {count(len(c.foon.units), 'unit')}")
+    with slow_step(f"writing FOON-GEN ({count(len(c.foon.units), 'unit', grouped=True)})"):
         emit_network(c.foon, fmt, provenance, header, output)
     table = format_levels_table(levels_table({"REG": net.foon, "GEN": c.foon}, step=slow_step))
     click.echo(table, err=True, nl=False)
@@ -47,7 +48,7 @@ def generalize_(paths, categories, provenance, fmt, output, readings) -> None:
         click.echo(f"note: category reading: {r}", err=True)
     if c.readings and not readings:  # 204 on the 100 subgraphs: one line, not a screenful
         n = len(c.readings)
-        click.echo(f"note: {n} category reading{'s' if n != 1 else ''} (a name a node uses read as its unit's object, "
+        click.echo(f"note: {count(n, 'category reading')} (a name a node uses read as its unit's object, "
                    "and generalized as it); --readings lists each at its unit's file:line", err=True)
 
 

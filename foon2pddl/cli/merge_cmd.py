@@ -6,6 +6,7 @@ import click
 
 from ..io.jsonio import write_json
 from ..io.writer import write_foon
+from ..model.words import count
 from . import main
 from .options import emit, level_option, output_option, paths_argument, read_network
 
@@ -35,6 +36,6 @@ def merge(paths, level, with_ids, provenance, fmt, output) -> None:
     if fmt == "json":
         text = write_json(foon)
     else:
-        header = f"universal FOON: level {foon.level}, {len(foon.units)} units, {len(foon.nodes)} object nodes"
+        header = f"universal FOON: level {foon.level}, {count(len(foon.units), 'unit')}, {count(len(foon.nodes), 'object node')}"
         text = write_foon(foon, with_ids=with_ids, provenance=provenance, header=header)
     emit(text, output)

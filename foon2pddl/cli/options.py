@@ -8,6 +8,7 @@ import click
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
+from ..model.words import count
 from .object_options import category_types_option, check_physical_options, instances_option
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
@@ -257,9 +258,9 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         from ..generalize.substitution import without_banned
 
         kit = without_banned(kit, constraints)
-    building = kind.building or "preparing the {label} network of {units:,} units at level {level}"
+    building = kind.building or "preparing the {label} network of {units} at level {level}"
     after = 0 if kind.slow_step is not None and kind.slow_step(net, kit) is not None else None  # seconds: at once
-    with slow_step(building.format(label=kind.label, units=len(net.foon.units), level=level), after=after,
+    with slow_step(building.format(label=kind.label, units=count(len(net.foon.units), 'unit', grouped=True), level=level), after=after,
                    beat=after == 0):  # a slow build opens WordNet: one long call
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:

@@ -11,6 +11,7 @@ from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import DEFAULT_FORMAT
 from ..model.containment import count_inference, inferred_nodes
+from ..model.words import count
 from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
 from ..retrieval.explain import explain_unreachable
@@ -162,7 +163,7 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if view.index is not None and (reading := gen_reading_note(view, single_goal(goal), goal_file, result.tree.goal)):
         click.echo(reading, err=True)
     inferred = inferred_nodes(result.tree.units)
-    note = f"{method}: {len(result.tree) - count_inference(result.tree.units)} units"
+    note = f"{method}: {count(len(result.tree) - count_inference(result.tree.units), 'unit')}"
     if inferred:
         note += f", {len(inferred)} inferred by containment: " + "; ".join(n.describe() for n in inferred)
     if result.bound is not None:
@@ -179,7 +180,7 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
 
     if view.note:
         click.echo(view.note, err=True)
-    with slow_step(f"retrieving trees for {len(entries)} goals ({method})"):
+    with slow_step(f"retrieving trees for {count(len(entries), 'goal')} ({method})"):
         found = solve_goals(view.foon, view.kitchen.nodes, entries,
                             lambda spec: resolve_goal(view.map_goal(spec), view.foon),
                             method=method, rates=rates, **limits)

@@ -9,6 +9,7 @@ from pathlib import Path
 import click
 
 from ..errors import UsageError
+from ..model.words import count
 from ..pddl.compile import ENCODINGS
 from ..pddl.constraints import GoalExcluded
 from ..status import PlanStatus
@@ -166,8 +167,8 @@ def plan_with_skills(foon, kitchen, goal, encoding: str | None, cons, *, skill_d
         text = skill_plan_recipe(plan, done.trace, robot.hands)
     else:
         text = skill_plan_text(plan, robot)
-    click.echo(f"solved ({outcome.result.planner}): {len(plan.steps)} macro steps under the {encoding} encoding, "
-               f"{plan.decomposed} decomposed into {len(plan.calls)} skills; skill replay "
+    click.echo(f"solved ({outcome.result.planner}): {count(len(plan.steps), 'macro step')} under the {encoding} encoding, "
+               f"{plan.decomposed} decomposed into {count(len(plan.calls), 'skill')}; skill replay "
                + ("valid" if plan.replay.ok else "INVALID"), err=True)
     for s in plan.steps:
         if s.reason:

@@ -36,6 +36,7 @@ from contextlib import nullcontext
 
 from ..errors import FoonError, MissingDependencyError, UsageError
 from ..io.steps import Step, silent_step
+from ..model.words import count
 from .progress import Progress
 from .records import CellStatus, Record
 from .worker import Batch, Job, dask_task, run_batch
@@ -299,7 +300,7 @@ def _deliver(batch: Batch, future, sink: Sink, progress: Progress) -> None:
         records = future.result()
     except Exception as exc:  # noqa: BLE001 - KilledWorker, CancelledError, a worker's crash
         records = batch.records(CellStatus.LOST, f"task lost, a rerun redoes it ({type(exc).__name__}: {exc})")
-        progress.note(f"experiment: {len(records)} cells lost ({type(exc).__name__}); a rerun redoes them")
+        progress.note(f"experiment: {count(len(records), 'cell')} lost ({type(exc).__name__}); a rerun redoes them")
     for record in records:
         sink(record)
         counted(progress, record)

@@ -33,6 +33,7 @@ from ..io.steps import Step, silent_step
 from ..model.dedupe import dedupe_units
 from ..model.foon import Foon, FunctionalUnit
 from ..model.kitchen import Kitchen
+from ..model.words import count
 from .modes import DEFAULT_MODE, mode_matrix
 from .similarity import SimilarityMatrix
 from .substitute import product_renames, renames_product_away, substitute_unit, unit_labels
@@ -114,14 +115,14 @@ def expand(
         for pair in extra.items():
             derived.setdefault(pair, None)
         if max_units is not None and len(keys) > max_units:
-            raise UsageError(f"FOON-EXP would exceed {max_units} units (threshold {threshold}); "
+            raise UsageError(f"FOON-EXP would exceed {count(max_units, 'unit')} (threshold {threshold}); "
                              "raise the threshold or the unit limit")
 
     mentions: dict[str, list[FunctionalUnit]] = {}
     total = len(foon.units)
     for first in range(0, total, SHARE):
-        with step(f"expanding {total:,} units onto similar objects: units {first + 1:,}-{min(first + SHARE, total):,}",
-                  series=f"expanding {total:,} units"):
+        with step(f"expanding {count(total, 'unit', grouped=True)} onto similar objects: units {first + 1:,}-{min(first + SHARE, total):,}",
+                  series=f"expanding {count(total, 'unit', grouped=True)}"):
             for unit in foon.units[first:first + SHARE]:
                 mentioned = unit_labels(unit)
                 for label in mentioned:
@@ -144,7 +145,7 @@ def expand(
             for unit in mentions.get(old, ()):
                 if new not in unit_labels(unit) and not renames_product_away(unit, old, new):
                     add(unit, old, new)
-    with step(f"removing duplicates among {total + len(copies):,} units"):
+    with step(f"removing duplicates among {count(total + len(copies), 'unit', grouped=True)}"):
         units = dedupe_units((*foon.units, *copies))
     return Expansion(Foon(units, foon.level), threshold, len(foon.units), len(copies), tuple(sorted(used)),
                      tuple(sorted(derived)), similarity, matrix)

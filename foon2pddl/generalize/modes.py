@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from ..errors import UsageError
 from ..io.steps import Step, silent_step
 from ..model.foon import normalize_label
+from ..model.words import count
 from .cache import cache_dir
 from .senses import Overrides, shipped_overrides
 from .similarity import LabelSimilarity, SimilarityMatrix, cached_matrix, matrix_key, similarity_matrix
@@ -89,7 +90,7 @@ def mode_matrix(vocabulary: Iterable[str], mode: str = DEFAULT_MODE, *, cache: b
     found = cached_matrix(labels, _key(labels, mode, extra)) if cache else None
     if found is not None:
         return found
-    with step(f"opening WordNet for the similarities of {len(labels):,} labels (once per set of labels, then cached)"):
+    with step(f"opening WordNet for the similarities of {count(len(labels), 'label', grouped=True)} (once per set of labels, then cached)"):
         sim = make_similarity(mode, extra=extra)
     return similarity_matrix(labels, cache=cache, sim=sim, step=step)
 

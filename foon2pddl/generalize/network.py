@@ -29,6 +29,7 @@ from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project
+from ..model.words import count
 from .categories import CategoryIndex, load_index
 from .compress import abstract_goal, abstract_kitchen, abstract_node, category_map, compress
 from .expand import DEFAULT_THRESHOLD, expand
@@ -180,7 +181,7 @@ def _reg(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> Ne
 def _exp(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
     e = expand(net.foon, threshold=options.threshold, max_units=options.max_units, kitchen=kitchen,
                similarity=options.similarity)
-    note = f"{e.title()}: {e.original_units} -> {len(e.foon.units)} units"
+    note = f"{e.title()}: {e.original_units} -> {count(len(e.foon.units), 'unit')}"
     return NetworkView(_EXP, project(e.foon, level), kitchen, _same, net.at(level), note=note, matrix=e.matrix)
 
 
@@ -202,8 +203,8 @@ def _wordnet() -> None:
 def _gen(net: Network, level: int, kitchen: Kitchen, options: ViewOptions) -> NetworkView:
     ix = options.index or load_index()
     c = compress(net.foon, ix)
-    note = f"FOON-GEN ({len(ix)} categories): {c.original_units} -> {len(c.foon.units)} units" + (
-        f"; {len(c.readings)} names read as their unit's object (`generalize` lists them)" if c.readings else "")
+    note = f"FOON-GEN ({count(len(ix), 'category')}): {c.original_units} -> {count(len(c.foon.units), 'unit')}" + (
+        f"; {count(len(c.readings), 'name')} read as their unit's object (`generalize` lists them)" if c.readings else "")
     labels = set().union(*(node_labels(n) for n in kitchen.nodes))
     mapping = category_map(sorted(labels - {""}), ix)
     return NetworkView(_GEN, project(c.foon, level), abstract_kitchen(kitchen, ix, c.names),
@@ -221,11 +222,11 @@ NETWORKS: dict[str, NetworkKind] = {k.name: k for k in (
                 "FOON-EXP, WordNet similarity (mode `{similarity}`) >= 0.89", hint="FOON-EXP (similar objects stand in)",
                 hint_max_units=600, slow_step=_exp_slow_step, substitutes=Substitutes.SIMILAR,
                 paper=PaperFigures((14, 62), 15217.0), schedule=0, requires=_wordnet,
-                building="building FOON-EXP of {units:,} units (WordNet similarities: once per set of labels, then cached)"),
+                building="building FOON-EXP of {units} (WordNet similarities: once per set of labels, then cached)"),
     NetworkKind(_GEN, "GEN", "FOON-GEN (categories; compile/plan use the lifted encoding whose plans name kitchen "
                 "objects)", _gen, "FOON-GEN, objects replaced by their categories", encoding="gen-lifted",
                 hint="FOON-GEN (object categories)", hint_max_units=2500, substitutes=Substitutes.CATEGORY,
-                paper=PaperFigures((66, 87), 1167.5), schedule=1, building="building FOON-GEN of {units:,} units"),
+                paper=PaperFigures((66, 87), 1167.5), schedule=1, building="building FOON-GEN of {units}"),
 )}
 
 

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from ..io.atomic import atomic_write
 from ..io.steps import Step, silent_step
 from ..model.foon import normalize_label
+from ..model.words import count
 from . import wordnet
 from .cache import cache_dir, digest
 from .senses import Overrides, Resolution, resolve, shipped_overrides
@@ -205,8 +206,8 @@ def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "",
         while last < n and pairs < SHARE_PAIRS:
             pairs += n - last - 1
             last += 1
-        with step(f"WordNet similarities of {n:,} labels (once per set of labels, then cached): rows {first + 1:,}-{last:,} of {n:,}",
-                  series=f"WordNet similarities of {n:,} labels"):
+        with step(f"WordNet similarities of {count(n, 'label', grouped=True)} (once per set of labels, then cached): rows {first + 1:,}-{last:,} of {n:,}",
+                  series=f"WordNet similarities of {count(n, 'label', grouped=True)}"):
             for i in range(first, last):
                 for j in range(i + 1, n):
                     values[i, j] = values[j, i] = sim(labels[i], labels[j])

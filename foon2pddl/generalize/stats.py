@@ -8,6 +8,7 @@ from ..analysis.stats import level_row
 from ..io.steps import Step, silent_step
 from ..model.foon import Foon
 from ..model.levels import LEVELS, project
+from ..model.words import count
 
 
 def levels_table(networks: Mapping[str, Foon], step: Step = silent_step) -> list[dict[str, int | str]]:
@@ -17,7 +18,7 @@ def levels_table(networks: Mapping[str, Foon], step: Step = silent_step) -> list
     names = " and ".join(networks)
     for name, foon in networks.items():
         for level in LEVELS:
-            with step(f"counting the nodes of {names} at each level: {name} ({len(foon.units):,} units) at level "
+            with step(f"counting the nodes of {names} at each level: {name} ({count(len(foon.units), 'unit', grouped=True)}) at level "
                       f"{level}", series=f"counting the nodes of {names}"):
                 rows.append({"network": name, **level_row(project(foon, level))})
     return rows

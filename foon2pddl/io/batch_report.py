@@ -9,6 +9,8 @@ import re
 from collections import Counter
 from collections.abc import Iterable, Sequence
 
+from ..model.words import count
+
 TABLE_FORMATS = ("text", "csv", "jsonl")
 CSV_COLUMNS = ("goal", "status", "units", "inferred", "seconds", "reason", "source", "file")
 
@@ -20,7 +22,7 @@ def summary(rows: Sequence[dict]) -> str:
     """`25 goals: 20 solved, 5 unreachable`."""
     counts = Counter(r["status"] for r in rows)
     parts = ", ".join(f"{n} {s}" for s, n in sorted(counts.items(), key=lambda kv: (kv[0] != "solved", kv[0])))
-    return f"{len(rows)} goals: {parts}" if rows else "0 goals"
+    return f"{count(len(rows), 'goal')}: {parts}" if rows else "0 goals"
 
 
 def format_table(rows: Sequence[dict], fmt: str, total: bool = True) -> str:

@@ -19,6 +19,7 @@ from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
+from ..model.words import count
 from .jsonio import node_to_dict
 from .recipe_words import PLACE_WORDS, recipe_text
 from .writer import write_units
@@ -41,7 +42,7 @@ def render_tree(tree: TaskTree, fmt: str, kitchen: Kitchen | Iterable[ObjectNode
     >>> unit = FunctionalUnit((make_node("onion", [make_state("whole")]), make_node("knife")), Motion("chop"),
     ...                       (make_node("onion", [make_state("chopped")]), make_node("knife")))
     >>> print(render_tree(TaskTree((unit,), make_node("onion", [make_state("chopped")]), 3), "steps"), end="")
-    task tree for onion (chopped): 1 units, level 3
+    task tree for onion (chopped): 1 unit, level 3
     1. chop onion (whole) with knife -> onion (chopped)
     """
     if fmt not in FORMATS:
@@ -65,7 +66,7 @@ def _used_from_kitchen(tree: TaskTree, kitchen) -> list[ObjectNode] | None:
 
 
 def _header(tree: TaskTree) -> str:
-    return f"task tree for {tree.goal.describe()}: {len(tree.units)} units, level {tree.level}"
+    return f"task tree for {tree.goal.describe()}: {count(len(tree.units), 'unit')}, level {tree.level}"
 
 
 # -- steps ----------------------------------------------------------------------------------------

@@ -2,4 +2,4 @@
 
 #: The package's modules (import them by name).
 __all__ = ["aliases", "bulk", "constraints", "containment", "dedupe", "foon", "goal", "kitchen", "levels", "memo", "merge", "pairing", "physical", "places", "scene",
-           "tasktree", "where"]
+           "tasktree", "where", "words"]

@@ -16,6 +16,7 @@ from itertools import chain, compress, repeat
 from operator import attrgetter, is_not
 
 from .bulk import bulk, drain
+from .words import count
 
 _WS = re.compile(r"\s+")
 
@@ -248,8 +249,8 @@ class Foon:
 
     def __repr__(self) -> str:
         """Counts only: the full dataclass repr of a network runs to hundreds of kilobytes."""
-        return (f"<Foon level {self.level}: {len(self.units)} units, {len(self.nodes)} object nodes, "
-                f"{len(self.motions)} motions>")
+        return (f"<Foon level {self.level}: {count(len(self.units), 'unit')}, {count(len(self.nodes), 'object node')}, "
+                f"{count(len(self.motions), 'motion')}>")
 
     def _repr_html_(self) -> str:
         """Jupyter: a summary table (level, units, object nodes, labels, motions, recipes' dishes)."""

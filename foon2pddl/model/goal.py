@@ -17,6 +17,7 @@ from ..errors import UsageError
 from .containment import is_auxiliary
 from .foon import Foon, ObjectNode, State, make_node
 from .levels import project_node
+from .words import count
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,7 @@ class Goal:
             if len(self.candidates) > limit:
                 shown += f"; ... ({len(self.candidates) - limit} more)"
             return (f"goal {name} names no recipe's dish and no final product (a unit uses each {label!r} node): "
-                    f"any of its {len(self.candidates)} nodes will do, the method chooses which "
+                    f"any of its {count(len(self.candidates), 'node')} will do, the method chooses which "
                     f"(give the states to ask for one): {shown}")
         many = len(self.candidates) > 1
         what = ("the recipes' dishes" if many else "the recipe's dish") if self.preferred == "dish" else \

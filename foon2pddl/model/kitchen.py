@@ -16,6 +16,7 @@ from .foon import Foon, NodeTable, ObjectNode, first_objects
 from .levels import project_node
 from .memo import per_network
 from .scene import SceneObject
+from .words import count
 
 #: States an object is in before anyone touches it. An input node whose states
 #: are all base states is in the default kitchen even if some unit also produces
@@ -51,7 +52,7 @@ class Kitchen:
         head = ", ".join(shown[:3]) + (", ..." if len(shown) > 3 else "")
         source = f" from {self.source}" if self.source else ""
         counted = f", {len(self.counts)} counted" if self.counts else ""
-        return f"<Kitchen level {self.level}: {len(self.nodes)} nodes{counted}{source} ({head})>"
+        return f"<Kitchen level {self.level}: {count(len(self.nodes), 'node')}{counted}{source} ({head})>"
 
     def __len__(self) -> int:
         return len(self.nodes)

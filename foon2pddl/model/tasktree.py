@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from .containment import Containment, is_auxiliary, is_inference, rule_holds
 from .foon import FunctionalUnit, ObjectNode
+from .words import count
 
 
 @dataclass(frozen=True)
@@ -26,14 +27,14 @@ class TaskTree:
 
     def __repr__(self) -> str:
         """Goal and unit count only (the dataclass repr lists every node of every unit)."""
-        return f"<TaskTree for {self.goal.describe()!r}: {len(self.units)} units, level {self.level}>"
+        return f"<TaskTree for {self.goal.describe()!r}: {count(len(self.units), 'unit')}, level {self.level}>"
 
     def _repr_html_(self) -> str:
         """Jupyter: the goal and the numbered units (`motion: inputs -> outputs`), labels escaped."""
         from html import escape
 
         steps = "".join(f"<li>{escape(u.describe())}</li>" for u in self.units)
-        return (f"<div><b>task tree for {escape(self.goal.describe())}</b>: {len(self.units)} units, "
+        return (f"<div><b>task tree for {escape(self.goal.describe())}</b>: {count(len(self.units), 'unit')}, "
                 f"level {self.level}<ol>{steps}</ol></div>")
 
 

@@ -21,6 +21,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project, project_node
 from ..model.where import short_path
+from ..model.words import count
 from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
 from .prune import relevant_units
@@ -133,19 +134,15 @@ def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     return (first, text)
 
 
-def _count(n: int, noun: str) -> str:
-    return f"{n} {noun}{'' if n == 1 else 's'}"
-
-
 def goal_kitchen_lines(goal: str, candidates: int, kitchen_source: str | None, kitchen_nodes: int) -> tuple[str, str]:
     """The header's goal and kitchen lines (every encoding's): file names only, counts with their noun."""
-    return (f"goal: {goal} ({_count(candidates, 'candidate node')})",
-            f"kitchen: {(short_path(kitchen_source) if kitchen_source else '') or 'given'} ({_count(kitchen_nodes, 'node')})")
+    return (f"goal: {goal} ({count(candidates, 'candidate node')})",
+            f"kitchen: {(short_path(kitchen_source) if kitchen_source else '') or 'given'} ({count(kitchen_nodes, 'node')})")
 
 
 def units_kept(kept: int, total: int, prune: bool) -> str:
     """The header's words for the units compiled of the network's `total` (every encoding's)."""
-    return f"{kept} of {total} units after relevance pruning" if prune else f"all {total} units"
+    return f"{kept} of {count(total, 'unit')} after relevance pruning" if prune else f"all {count(total, 'unit')}"
 
 
 def header(encoding: str, inp: LevelInputs, options: EncodeOptions, kept: int) -> tuple[str, ...]:

@@ -16,6 +16,7 @@ from pathlib import Path
 
 from ..io.atomic import atomic_write_many
 from ..io.steps import Step, silent_step
+from ..model.words import count
 
 #: Goals a reader recognizes: the dishes of the example recipes the example kitchen can make.
 GOALS = (
@@ -77,7 +78,7 @@ def main(argv: list[str] | None = None) -> None:
     for p in stale_files(root, files):
         (root / p).unlink()
         print(f"removed stale {p}")
-    print(f"wrote {len(files)} files under {root / 'domains'} and {root / 'problems'}")
+    print(f"wrote {count(len(files), 'file')} under {root / 'domains'} and {root / 'problems'}")
 
 
 if __name__ == "__main__":

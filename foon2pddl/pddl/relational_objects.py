@@ -24,6 +24,7 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import places
 from ..model.scene import SceneObject
+from ..model.words import count
 from .encoding import LevelInputs
 from .holder_words import task_aliases
 from .input_stitch import Stitched
@@ -79,7 +80,7 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), beside=beside, narrowed=(
         "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the objects its "
                                                        "nodes imply start" if more else "")
-        + f": {len(small.instances)} objects, where FOON's plan unfolded counts {len(wide.instances)}"))
+        + f": {count(len(small.instances), 'object')}, where FOON's plan unfolded counts {len(wide.instances)}"))
 
 
 def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],

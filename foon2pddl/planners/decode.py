@@ -32,6 +32,7 @@ from ..model.levels import project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation, justify, validate
 from ..model.where import short_path, unit_where
+from ..model.words import count
 from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
@@ -225,7 +226,7 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
     if not out:
         return ()
     more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
-    return (f"the planner's plan has {len(steps)} steps; {len(out)} the goal does not need are left out: "
+    return (f"the planner's plan has {count(len(steps), 'step')}; {len(out)} the goal does not need {'is' if len(out) == 1 else 'are'} left out: "
             + "; ".join(out[:shown]) + more,)
 
 
@@ -260,7 +261,7 @@ def check(tree: TaskTree, kitchen_nodes: frozenset[ObjectNode], task: PlanningTa
         units = plan_units(compiled, steps)
         repeats = len(units) - len(first_occurrences(units))
         if repeats:
-            notes = (f"dropped {repeats} plan step{'s' if repeats != 1 else ''} repeating a unit already applied "
+            notes = (f"dropped {count(repeats, 'plan step')} repeating a unit already applied "
                      "(no effect in this delete-free encoding)",)
     if compiled.foon_semantics and not compiled.every_step:
         notes += unneeded_steps_note(compiled, steps, plain) + renamed_note(plain, tree)

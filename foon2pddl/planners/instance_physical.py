@@ -51,6 +51,7 @@ from ..model.pairing import Role, RoleKind
 from ..model.physical import Binding, ObjectState, PhysicalTrace, Relation, TraceError, TraceStep
 from ..model.places import listed, places
 from ..model.where import short_path
+from ..model.words import count
 from ..pddl.task import PlanningTask
 from .physical_replay import replay
 
@@ -234,5 +235,5 @@ def replay_note(task: PlanningTask, trace: PhysicalTrace) -> tuple[str, ...]:
         return ()
     n, steps, first = len(report.disagreements), len(trace.steps), report.disagreements[0]
     return (f"not checked physically by the encoding: with holders inferred by tracking, the physical replay "
-            f"finds {n} disagreement{'s' if n != 1 else ''} ({len(report.affected_steps)} of {steps} steps "
+            f"finds {count(n, 'disagreement')} ({len(report.affected_steps)} of {steps} steps "
             f"affected); first: {replace(first, source=short_path(first.source))}",)

@@ -27,6 +27,7 @@ from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
+from ..model.words import count
 from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.holder_reach import drop_unreachable
@@ -239,7 +240,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     outs = _first_solved(lambda: planned(small, time_limit, short), lambda: planned(compiled(False), rest()))
     if len(outs) == 1:
         return outs[0]
-    return _noted(outs[1], f"objects: the {len(small.task.instances)} objects counted small gave no valid plan within "
+    return _noted(outs[1], f"objects: the {count(len(small.task.instances), 'object')} counted small gave no valid plan within "
                            f"{short:g} s of CPU ({outs[0].status}): planned with the {len(outs[1].task.instances)} "
                            "FOON's plan unfolded counts")
 

@@ -19,11 +19,17 @@ from .extract import make_tree, ordered_units
 from .result import UNREACHABLE, Retrieval
 
 
+def none_can_be_made(goal: Goal) -> str:
+    """`none of the 3 nodes matching 'x' can be made from the kitchen` (`the one node ... cannot be made` for one)."""
+    if len(goal.candidates) == 1:
+        return f"the one node matching {goal.describe()!r} cannot be made from the kitchen"
+    return f"none of the {len(goal.candidates)} nodes matching {goal.describe()!r} can be made from the kitchen"
+
+
 def unreachable_detail(reach: Reachability, goal: Goal) -> str:
     """Words for why no candidate of `goal` can be made."""
     lacking = blockers(reach, goal.candidates)
-    names = len(goal.candidates)
-    head = f"none of the {names} node(s) matching {goal.describe()!r} can be made from the kitchen"
+    head = none_can_be_made(goal)
     if lacking:
         return head + "; missing (no unit makes them): " + "; ".join(n.describe() for n in lacking)
     return head + " (every way to make them needs a node that itself needs them)"

@@ -30,6 +30,7 @@ from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, make_node, ma
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree, justify
+from ..model.words import count
 from .api import kitchen_nodes, retrieve
 from .methods import get_method
 from .result import UNREACHABLE, Retrieval
@@ -168,10 +169,10 @@ def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str 
             continue
         if c.kind is Kind.MUST_USE:
             n = len(removal.users.get(c.value, ()))
-            parts.append(f"`{c.describe()}`: {n} units use it")
+            parts.append(f"`{c.describe()}`: {count(n, 'unit')} {'uses' if n == 1 else 'use'} it")
         else:
             n = len(removal.removed.get(c, ()))
-            parts.append(f"`{c.detail()}` removes {n} of {total} units")
+            parts.append(f"`{c.detail()}` removes {n} of {count(total, 'unit')}")
         if not n and c.kind is Kind.WITHOUT and read_from is not None and \
                 any(mentions(node, c.value) for node in read_from.nodes):
             warnings.append(f"note: FOON-{name} reads {c.value!r} as its category: `{c.detail()}` removes none of "
@@ -180,7 +181,7 @@ def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str 
             warnings.append(f"warning: no unit of the network mentions {c.value!r} (`{c.detail()}`, "
                             f"from {c.source or 'the options'})")
     for skill, gone in sorted(skills.items()):
-        parts.append(f"`without-skill {skill}` removes {len(gone)} of {total} units")
+        parts.append(f"`without-skill {skill}` removes {len(gone)} of {count(total, 'unit')}")
         if not gone:
             warnings.append(f"warning: no unit of the network has a motion the table maps to the skill {skill!r} "
                             f"(`without-skill {skill}`)")
@@ -189,8 +190,8 @@ def constraint_notes(removal: Removal, read_from: Foon | None = None, name: str 
 
 def explain_line(s: Shaping) -> str:
     """`explain: without-motion pour removes 21 units; the unconstrained tree's ... avoided`."""
-    text = f"explain: `{s.constraint}` removes {s.removed} units"
+    text = f"explain: `{s.constraint}` removes {count(s.removed, 'unit')}"
     if not s.avoided:
         return text + "; the unconstrained tree uses none of them"
     shown = "; ".join(u.describe() for u in s.avoided[:3]) + ("; ..." if len(s.avoided) > 3 else "")
-    return text + f"; avoided {len(s.avoided)} unit(s) of the unconstrained tree: {shown}"
+    return text + f"; avoided {count(len(s.avoided), 'unit')} of the unconstrained tree: {shown}"

@@ -13,6 +13,8 @@ from ..analysis.reachability import blockers, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import default_kitchen
+from ..model.words import count
+from .complete import none_can_be_made
 
 
 def additions_text(sets, shown: int = 3) -> str:
@@ -43,7 +45,7 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
     if any(reach.can_make(c) for c in goal.candidates):
         return f"{goal.describe()!r} can be made from the kitchen"
     addable = default_kitchen(foon).nodes
-    head = f"none of the {len(goal.candidates)} node(s) matching {goal.describe()!r} can be made from the kitchen"
+    head = none_can_be_made(goal)
     fixes = first_additions(reach, goal.candidates, addable, sorted({min(3, max_size), *range(4, max_size + 1)}))
     if fixes.sets:
         return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
@@ -62,7 +64,7 @@ def _cycle_text(reach, goal: Goal, max_size: int) -> str:
     """Every way to the goal needs a node that itself needs it, so no node no unit makes helps; a kitchen that
     holds a node of the cycle breaks it (the converter's pour water gives back the empty cup its fill takes):
     the smallest such sets, among the nodes the goal depends on (the goal's own nodes excluded)."""
-    text = (f"no set of up to {max_size} nodes no unit makes gives it: every way to make it needs a node that "
+    text = (f"no set of up to {count(max_size, 'node')} no unit makes gives it: every way to make it needs a node that "
             "itself needs it (`foon2pddl check` names the cycle)")
     fixes = first_additions(reach, goal.candidates, None, range(1, min(3, max_size) + 1))
     if fixes.smallest:

@@ -40,6 +40,7 @@ from ..analysis.index import index_of
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
+from ..model.words import count
 from .complete import unreachable_detail
 from .extract import make_tree, ordered_units
 from .result import BUDGET_EXHAUSTED, UNREACHABLE, Retrieval
@@ -100,7 +101,7 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
     while queue:
         if iterations >= budget:
             return Retrieval(None, BUDGET_EXHAUSTED, "greedy",
-                             f"{budget} iterations spent, {len(queue)} objects still queued", iterations)
+                             f"{count(budget, 'iteration')} spent, {count(len(queue), 'object')} still queued", iterations)
         iterations += 1
         if iterations == FIXPOINT_CHECK_AFTER and reach is None:
             answer = unreachable(reachable(foon, kitchen_nodes, targets=goal.candidates))
@@ -145,7 +146,7 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
                     units = ordered_units(ix, done, achiever.__getitem__, in_kitchen.__getitem__,
                                           fired_at.__getitem__)
                     return Retrieval(make_tree(foon, ix, done, units), None, "greedy",
-                                     f"{fired} units fired, {len(units)} kept", iterations)
+                                     f"{count(fired, 'unit')} fired, {len(units)} kept", iterations)
                 progress = True
                 break
         else:

@@ -25,6 +25,7 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..io.parser import read_text
+from ..model.words import count
 from ..pddl.task import Atom
 from .sexpr import SexprError, SList, parse, typed_list
 
@@ -208,7 +209,7 @@ def parse_domain(text: str, path: str = "<skills>") -> SkillDomain:
     for pred, n in PREDICATES.items():
         if arity.get(pred) != n:
             raise _fail(path, preds.line if preds else define.line,
-                        f"the domain must declare the predicate {pred} with {n} parameter(s)")
+                        f"the domain must declare the predicate {pred} with {count(n, 'parameter')}")
     consts = _section(define, ":constants")
     constants = {n for n, t in typed_list(consts.items[1:]) if t == "skill"} if consts else set()
     actions = tuple(_action(x, path) for x in define.items if isinstance(x, SList) and x.head == ":action")

@@ -15,6 +15,7 @@ from collections import Counter
 
 from ..io.recipe_words import recipe_text
 from ..model.physical import PhysicalTrace
+from ..model.words import count
 from .decompose import SkillCall, SkillPlan, StepStatus
 
 __all__ = ["object_names", "skill_plan_recipe", "skill_sentence"]
@@ -66,8 +67,8 @@ def skill_plan_recipe(plan: SkillPlan, trace: PhysicalTrace, hands: int = 1) -> 
     names = object_names(trace)
     params = {a.name: tuple(v for v, _ in a.params) for a in plan.domain.actions}
     verdict = "valid" if plan.replay.ok else "INVALID: " + "; ".join(plan.replay.problems)
-    lines = [f"skill plan ({plan.domain.name}, {hands} hand{'s' if hands > 1 else ''}): {len(plan.steps)} macro "
-             f"steps, {plan.decomposed} decomposed, {len(plan.calls)} skills; skill replay {verdict}"]
+    lines = [f"skill plan ({plan.domain.name}, {count(hands, 'hand')}): "
+             f"{count(len(plan.steps), 'macro step')}, {plan.decomposed} decomposed, {count(len(plan.calls), 'skill')}; skill replay {verdict}"]
     for step in plan.steps:
         lines.append(f"{step.index + 1}. {recipe_text(trace.steps[step.index].unit)}")
         if step.status is not StepStatus.DECOMPOSED:

@@ -13,6 +13,7 @@ Deterministic: same plan, same bytes.
 
 from __future__ import annotations
 
+from ..model.words import count
 from .decompose import MacroSkills, SkillCall, SkillPlan, StepStatus
 from .profile import Robot
 
@@ -55,8 +56,8 @@ def skill_plan_text(plan: SkillPlan, robot: Robot | None = None) -> str:
     robot = robot or Robot()
     params = {a.name: tuple(v for v, _ in a.params) for a in plan.domain.actions}
     verdict = "valid" if plan.replay.ok else "INVALID: " + "; ".join(plan.replay.problems)
-    lines = [f"skill plan ({plan.domain.name}, {robot.hands} hand{'s' if robot.hands > 1 else ''}): "
-             f"{len(plan.steps)} macro steps, {plan.decomposed} decomposed, {len(plan.calls)} skills; "
+    lines = [f"skill plan ({plan.domain.name}, {count(robot.hands, 'hand')}): "
+             f"{count(len(plan.steps), 'macro step')}, {plan.decomposed} decomposed, {count(len(plan.calls), 'skill')}; "
              f"skill replay {verdict}"]
     for step in plan.steps:
         lines.append(_header(step))

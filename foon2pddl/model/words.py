@@ -1,0 +1,27 @@
+"""How a message writes a count with its noun (`1 unit`, `2 units`): one way for every module.
+
+Messages once wrote `1 units`, `1 objects`, `1 plan steps` or `1 unit(s)`; every count a command prints
+goes through `count` (or `plural` when the number is written apart from its noun).
+"""
+
+from __future__ import annotations
+
+__all__ = ["count", "plural"]
+
+#: Endings whose plural adds `es` (`match` -> `matches`).
+_ES = ("s", "x", "z", "ch", "sh")
+
+
+def plural(n: int, noun: str) -> str:
+    """`noun` as a count of `n` takes it: singular for exactly one, else its plural (the last word takes the
+    ending: `plan step` -> `plan steps`; a consonant's `y` -> `ies`; `s`, `x`, `z`, `ch`, `sh` -> `es`)."""
+    if n == 1 or not noun:
+        return noun
+    if noun.endswith("y") and noun[-2:-1] not in ("", *"aeiou"):
+        return noun[:-1] + "ies"
+    return noun + ("es" if noun.endswith(_ES) else "s")
+
+
+def count(n: int, noun: str, *, grouped: bool = False) -> str:
+    """`n noun(s)` as a sentence says it: `1 unit`, `0 units`, `1,845 units` with `grouped` (thousands separated)."""
+    return f"{n:,} {plural(n, noun)}" if grouped else f"{n} {plural(n, noun)}"
