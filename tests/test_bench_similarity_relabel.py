@@ -10,6 +10,7 @@ from bench.similarity import Pair, read_pairs
 from bench.similarity_relabel import (
     LABELS,
     RELAB51,
+    RELAB52,
     RELABEL,
     RELABELLED,
     RELABELLINGS,
@@ -59,14 +60,15 @@ def test_pairing_takes_the_first_label_by_unordered_pair_and_rejects_different_c
         paired(first, second[:1])
 
 
-def test_the_third_labelling_covers_exactly_the_shared_pairs_and_is_the_frozen_file():
-    third = read_relabel(RELAB51, "relab51")
+@pytest.mark.parametrize(("path", "name"), [(RELAB51, "relab51"), (RELAB52, "relab52")])
+def test_the_third_and_fourth_labellings_cover_exactly_the_shared_pairs_and_are_the_frozen_files(path, name):
+    later = read_relabel(path, name)
     first = [p for p in read_pairs() if p.split in RELABELLED]
-    assert {frozenset((p.a, p.b)) for p in third} == {frozenset((p.a, p.b)) for p in first}
-    assert len(third) == len(first) and {p.label for p in third} == set(LABELS)
-    assert {(p.source, p.split) for p in third} == {("relab51", "relab51")}
-    assert hashlib.sha1(RELAB51.read_bytes()).hexdigest() in RUBRIC.read_text(encoding="utf-8")
-    assert [name for name, _ in RELABELLINGS] == ["relabel", "relab51"]
+    assert {frozenset((p.a, p.b)) for p in later} == {frozenset((p.a, p.b)) for p in first}
+    assert len(later) == len(first) and {p.label for p in later} == set(LABELS)
+    assert {(p.source, p.split) for p in later} == {(name, name)}
+    assert hashlib.sha1(path.read_bytes()).hexdigest() in RUBRIC.read_text(encoding="utf-8")
+    assert [name for name, _ in RELABELLINGS] == ["relabel", "relab51", "relab52"]
 
 
 def test_agreements_compare_every_labelling_with_each_later_one_by_ordinal():
@@ -79,6 +81,11 @@ def test_agreements_compare_every_labelling_with_each_later_one_by_ordinal():
     assert tables[("first", "second")][("bad", "marginal")] == 1 and tables[("first", "second")][("good", "good")] == 1
     assert tables[("first", "third")][("good", "marginal")] == 1 and tables[("first", "third")][("bad", "bad")] == 1
     assert tables[("second", "third")][("marginal", "bad")] == 1 and tables[("second", "third")][("good", "marginal")] == 1
+    fourth = [Pair("a", "b", "bad", "relab52", "relab52"), Pair("d", "c", "bad", "relab52", "relab52")]
+    got = agreements([first, second, third, fourth])
+    assert [(x, y) for x, y, _ in got] == [("first", "second"), ("first", "third"), ("first", "fourth"),
+                                           ("second", "third"), ("second", "fourth"), ("third", "fourth")]
+    assert got[-1][2][("marginal", "bad")] == 1 and got[-1][2][("bad", "bad")] == 1
 
 
 def test_subsets_split_a_relabelling_by_the_first_labels_splits():
