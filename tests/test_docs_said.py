@@ -202,3 +202,24 @@ def test_generalization_md_counts_with_the_search_projects_kitchen_are_what_goal
                                       "--kitchen", "tests/data/foon-search-inputs/kitchen.json"])
         assert r.exit_code == 0, r.stderr
         assert f"reachable: {said} of 100 dishes " in r.stdout, (network, r.stdout[:200])
+
+
+def test_generalization_md_gives_the_command_and_commit_of_its_lifted_gen_row(reader_dir):
+    """Stop 52's pass (nc52b): the lifted GEN row of the goals-solved table (67, its times per goal) named no
+    command and no commit ("measured before round 3's category refinements", from c01474a). The page gives the
+    pipeline that plans the recipes' dish nodes on FOON-GEN's lifted PDDL, run here on one recipe, and the row
+    names the commit it was measured at."""
+    section = (ROOT / "docs" / "generalization.md").read_text().split("**Goals solved**", 1)[1][:4000]
+    m = re.search(r"^foon2pddl (goals tests/data/foon-subgraphs [^|\n]+) \| foon2pddl (plan [^\n]+)$", section, re.M)
+    assert m, section[:600]
+    listing, asking = (shlex.split(c) for c in m.groups())
+    assert asking[asking.index("--network") + 1] == "gen" and asking[asking.index("--goals") + 1] == "-", asking
+    one = "tests/data/foon-subgraphs/0001-whipped_cream.txt"
+    listing, asking = ([one if w == "tests/data/foon-subgraphs" else w for w in c] for c in (listing, asking))
+    listed = CliRunner().invoke(main, listing)
+    assert listed.exit_code == 0, listed.stderr
+    r = CliRunner().invoke(main, asking, input=listed.stdout)
+    assert r.exit_code == 0, r.stderr
+    assert re.search(r"^1 goals: 1 solved \(gen-lifted encoding", r.stderr, re.M), r.stderr
+    row = re.search(r"^\| GEN, lifted PDDL \(`absent`\) \| \d+ \| (.*)\|$", section, re.M)
+    assert row and re.search(r"\bat [0-9a-f]{7}\b", row.group(1)), row
