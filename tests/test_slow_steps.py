@@ -564,3 +564,46 @@ def test_a_hint_check_that_skips_a_network_too_large_to_build_says_so(every_step
     lines = r.stderr.splitlines()
     assert lines[-1] == ("--network gen does not make it either; --network exp is not checked (FOON-EXP of a"
                          " 1,845-unit network is too large to build for a hint: run it to see)"), r.stderr
+
+
+#: Runs the console script with `foon2pddl.cli`'s import slowed down (as under heavy load), then a quick command.
+_SLOW_CLI_IMPORT = """
+import sys, time
+from importlib.abc import MetaPathFinder
+
+DELAY = float(sys.argv[1])
+
+class Slow(MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name == "foon2pddl.cli":
+            time.sleep(DELAY)
+        return None
+
+sys.meta_path.insert(0, Slow())
+sys.argv = ["foon2pddl", "--version"]
+from foon2pddl.__main__ import run
+run()
+"""
+
+
+@pytest.mark.parametrize(("delay", "said"), [(2.5, ["loading foon2pddl ..."]), (0.0, [])], ids=["slow", "quick"])
+def test_the_console_script_says_so_when_its_own_modules_load_past_the_budget(delay, said):
+    """The first step that can speak, `loading foon2pddl CMD`, exists once `foon2pddl.cli` (click, the command
+    group) has loaded: at load 23 the interpreter and that import took 2.05 s of wall time for 0.09 s of CPU
+    (stop 51's pass), a silence no step covered. The console script itself says `loading foon2pddl ...` once
+    the budget is spent (`--version` has no step of its own); a quick start says nothing."""
+    import subprocess
+    import sys
+
+    r = subprocess.run([sys.executable, "-c", _SLOW_CLI_IMPORT, str(delay)], capture_output=True, text=True,
+                       timeout=120, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith("foon2pddl, version"), r.stdout
+    assert r.stderr.splitlines() == said, r.stderr
+
+
+def test_the_console_scripts_budget_is_the_clis(monkeypatch):
+    from foon2pddl.__main__ import LOADING_AFTER
+
+    monkeypatch.undo()  # conftest's budget of an hour off: the CLI's own
+    assert LOADING_AFTER == progress.AFTER == 1.5
