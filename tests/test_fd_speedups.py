@@ -162,3 +162,21 @@ def test_the_datalog_model_is_the_original_one_in_its_order(name, tmp_path):
         "before = model(); done = fd_speedups.apply()\n"
         "print(before == model(), len(before) > 100, 'build_model.JoinRule.fire' in done)\n")
     assert _in_translator(script, tmp_path).split() == ["True", "True", "True"]
+
+
+def test_each_replacement_is_installed_once_and_keeps_the_function_it_replaces(tmp_path):
+    # one way to install all four: each installed function names the translator's own (`original`), and a second
+    # apply (the warm server's children import the module again) installs nothing over them
+    script = (
+        "import fd_speedups\n"
+        "from fast_downward.translate import build_model, main, variable_order\n"
+        "from fast_downward.translate.pddl import actions\n"
+        "places = [(variable_order.CausalGraph, 'calculate_topological_pseudo_sort'),\n"
+        "          (actions.PropositionalAction, '__init__'), (build_model.JoinRule, 'fire'),\n"
+        "          (main, 'translate_strips_conditions')]\n"
+        "before = [owner.__dict__[attr] for owner, attr in places]\n"
+        "first = fd_speedups.apply(); installed = [owner.__dict__[attr] for owner, attr in places]\n"
+        "second = fd_speedups.apply(); again = [owner.__dict__[attr] for owner, attr in places]\n"
+        "print(len(first), first == second, [f.original is b for f, b in zip(installed, before)] == [True] * 4,\n"
+        "      [a is f for a, f in zip(again, installed)] == [True] * 4)\n")
+    assert _in_translator(script, tmp_path).split() == ["4", "True", "True", "True"]

@@ -125,8 +125,16 @@ def _cached_conditions(original):
                                 original(conditions, dictionary, ranges, mutex_dict, mutex_ranges))
         return None if hit[1] is None else [dict(c) for c in hit[1]]
 
-    translate_strips_conditions.original = original  # installed: `apply` leaves it as it is
+    translate_strips_conditions.original = original
     return translate_strips_conditions
+
+
+def _as_is(function):
+    """The maker of a replacement that needs nothing of the function it replaces: `function` itself, naming it."""
+    def install(original):
+        function.original = original
+        return function
+    return install
 
 
 def _sha1(module) -> str | None:
@@ -147,20 +155,21 @@ def apply() -> tuple[str, ...]:
         from fast_downward.translate.pddl import actions
     except ImportError:
         return ()
-    targets = {
+    targets = {  # each replacement's maker, given the function it replaces (kept as the replacement's `original`)
         "variable_order.CausalGraph.calculate_topological_pseudo_sort":
-            (variable_order, variable_order.CausalGraph, "calculate_topological_pseudo_sort", _pseudo_sort),
-        "pddl.actions.PropositionalAction.__init__": (actions, actions.PropositionalAction, "__init__", _action_init),
-        "build_model.JoinRule.fire": (build_model, build_model.JoinRule, "fire", _join_fire),
+            (variable_order, variable_order.CausalGraph, "calculate_topological_pseudo_sort", _as_is(_pseudo_sort)),
+        "pddl.actions.PropositionalAction.__init__":
+            (actions, actions.PropositionalAction, "__init__", _as_is(_action_init)),
+        "build_model.JoinRule.fire": (build_model, build_model.JoinRule, "fire", _as_is(_join_fire)),
         "main.translate_strips_conditions": (main, main, "translate_strips_conditions", _cached_conditions),
     }
     done = []
-    for name, (module, owner, attr, replacement) in targets.items():
+    for name, (module, owner, attr, make) in targets.items():
         current = owner.__dict__.get(attr)
-        if current is replacement or hasattr(current, "original"):
+        if hasattr(current, "original"):  # installed before: left as it is
             done.append(name)
         elif current is not None and _sha1(module) == ORIGINALS[name]:
-            setattr(owner, attr, replacement(current) if replacement is _cached_conditions else replacement)
+            setattr(owner, attr, make(current))
             done.append(name)
     return tuple(done)
 
