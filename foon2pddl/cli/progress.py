@@ -35,8 +35,9 @@ import click
 
 #: Seconds a command may stay silent before the step it is in says what it is.
 AFTER = 1.5
-#: Through a pipe, seconds between the lines a step with `beat=True` adds while it runs (its seconds so far).
-BEAT = 2.0
+#: Through a pipe, seconds between the lines a step with `beat=True` adds while it runs (its seconds so far): as
+#: `AFTER`, a margin under the 2 s floor for a late wake-up under load (at 2.0 s, gaps of 2.1-2.2 s at load 16-19).
+BEAT = 1.5
 #: On a terminal: back to the start of the line and clear it (a shorter text leaves nothing behind).
 _REDRAW = "\r\x1b[K"
 #: On a terminal: up to the line a finished step left, and clear it (the next step of its series redraws it).
