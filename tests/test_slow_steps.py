@@ -618,3 +618,27 @@ def test_a_beat_leaves_the_floor_a_margin(monkeypatch):
 
     monkeypatch.undo()  # conftest's beat of an hour off: the CLI's own
     assert progress.BEAT == progress.AFTER <= LIMIT - 0.5
+
+
+def test_a_unified_planning_engine_lookup_beats_through_a_pipe(monkeypatch):
+    """`plan --planner foo` said `looking up planner 'foo' among unified-planning's engines ...` and then nothing
+    for 15.0 s through a pipe (nc52a's pass, load 19: importing unified-planning, one long call, as opening
+    WordNet is): the step beats as WordNet's does."""
+    from dataclasses import replace
+
+    from foon2pddl.cli import plan_cmd
+    from foon2pddl.planners import registry
+
+    def slow_check(name):
+        time.sleep(0.3)
+        return registry.UP_ENGINE.check(name)
+
+    slow = replace(registry.UP_ENGINE, check=slow_check)
+    monkeypatch.setattr(plan_cmd, "UP_ENGINE", slow)
+    monkeypatch.setattr(plan_cmd, "lookup", lambda planner, planner_cmd: slow)
+    monkeypatch.setattr(progress, "BEAT", 0.05)
+    r = run("plan", "--goal", "whipped cream", "--planner", "foo")
+    assert r.exit_code == 2, r.stderr
+    beats = [line for line in r.stderr.splitlines()
+             if re.fullmatch(r"looking up planner 'foo' among unified-planning's engines \.\.\. \d+ s", line)]
+    assert beats, r.stderr
