@@ -220,6 +220,6 @@ def test_generalization_md_gives_the_command_and_commit_of_its_lifted_gen_row(re
     assert listed.exit_code == 0, listed.stderr
     r = CliRunner().invoke(main, asking, input=listed.stdout)
     assert r.exit_code == 0, r.stderr
-    assert re.search(r"^1 goals: 1 solved \(gen-lifted encoding", r.stderr, re.M), r.stderr
+    assert re.search(r"^1 goal: 1 solved \(gen-lifted encoding", r.stderr, re.M), r.stderr
     row = re.search(r"^\| GEN, lifted PDDL \(`absent`\) \| \d+ \| (.*)\|$", section, re.M)
     assert row and re.search(r"\bat [0-9a-f]{7}\b", row.group(1)), row
