@@ -61,7 +61,7 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 
-        with slow_step(f"listing the {count(len(e.substitutions), 'substitution')} with their WordNet senses"):
+        with slow_step(f"listing the {count(len(e.substitutions), 'substitution')} with their WordNet senses", beat=True):
             text = format_pairs(substitution_pairs(e, extra), fmt)
         emit(text, output)
         return
