@@ -366,3 +366,14 @@ def test_the_omelettes_steps_say_what_moves_from_where_into_what_with_which_tool
     assert ("pick-and-place omelette (contains {black pepper, salt}, cooked) from the cooking pan onto the plate "
             "(empty), with the turner (clean)") in steps
     assert not any(s.startswith("crack bowl") or "with the cooking pan" in s or "with the egg" in s for s in steps)
+
+
+def test_a_kitchen_of_object_lines_given_as_a_network_names_the_option_that_takes_it():
+    """nc52a's pass: `stats foon2pddl/data/example_kitchen.txt` (the kitchen README names, FOON-style O/S lines)
+    said only `...:148: error: no functional units in file`, where a JSON kitchen given so names `--kitchen`."""
+    kitchen = ROOT / "foon2pddl" / "data" / "example_kitchen.txt"
+    r = run("stats", kitchen)
+    assert r.exit_code == 2
+    assert r.stderr.startswith(f"{kitchen}:148: error: no functional units in file: it lists objects and no "
+                               "motion ('M') line, as a kitchen or a goal file does"), r.stderr
+    assert "give it with `--kitchen` or with `--goals`" in r.stderr and "Traceback" not in r.stderr
