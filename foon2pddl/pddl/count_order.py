@@ -19,6 +19,11 @@ that reads the tray in the oven. Repeated until no unit moves (at most p^2 moves
 otherwise; only the order, and so which takings share an object, changes. Only in `relational`
 (`instance_counts.derive_counts` with `together`): `instances`' counts are the floor this one is compared with.
 O(p^3 r) at worst for a plan of p units of r roles; plans have tens of units.
+
+Readers first can also count more: the ribs' remove (`0018-barbecue-style_country_ribs.txt:197`), put in as the
+tray's way back, fired after the second cook leaves the oven `off`, and that cook counted an oven of its own (11
+objects in the problem; 10 in the fixpoint's order). So `orders` lists every plan readers first and as it was,
+and `derive_counts` keeps the one that counts fewest objects, readers first on a tie.
 """
 
 from __future__ import annotations
@@ -28,7 +33,7 @@ from collections.abc import Callable, Sequence
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role
 
-__all__ = ["readers_first"]
+__all__ = ["orders", "readers_first"]
 
 
 def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]
@@ -60,3 +65,13 @@ def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[Functiona
         if not moved:
             break
     return tuple(order)
+
+
+def orders(foon: Foon, plans: Sequence[Sequence[int]], own: Sequence[Sequence[int]],
+           roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]) -> tuple[tuple[int, ...], ...]:
+    """The plans `relational`'s counts unfold, distinct, first kept on a tie: `plans` (ways back through what the
+    plan makes) readers first, then as they are, then `own` (ways back through the kitchen only) as they are and
+    readers first (module doc)."""
+    first = tuple(readers_first(foon, p, roles_of) for p in plans)
+    return tuple(dict.fromkeys((*first, *map(tuple, plans), *map(tuple, own),
+                                *(readers_first(foon, p, roles_of) for p in own))))

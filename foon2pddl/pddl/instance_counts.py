@@ -11,7 +11,8 @@ unfolding a delete-free plan backwards:
    after a unit that moves an object out of a node a later unit takes, the
    task's units that lead it back there (`count_returns.with_returns`: the pot
    the cover and uncover bring back from `hot`; `relational`, else a unit of the
-   plan fired again, when that plan counts fewer objects).
+   plan fired again, when that plan counts fewer objects). `relational` keeps, of
+   these plans as they are and readers first, the fewest-counting (`count_order`).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -53,7 +54,7 @@ from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
 from ..model.where import short_path, unit_where
-from .count_order import readers_first
+from .count_order import orders
 from .count_returns import with_returns
 from .count_reuse import reused
 from .count_together import makers_together
@@ -230,10 +231,9 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
-        plans = tuple(dict.fromkeys(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again, plan_made=together)
-                                    for again in (False, stitched)))  # stitched: a unit fired again, when fewer
-        if together:  # `relational`: a unit that only reads a node before the one that moves its object out
-            plans = tuple(dict.fromkeys(readers_first(foon, p, roles_of) for p in plans))
+        ways = {made: tuple(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again, plan_made=made)
+                            for again in (False, stitched)) for made in (False, together)}  # stitched: fired again
+        plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
         reuse = reuse and not (stated or overrides or extra)
