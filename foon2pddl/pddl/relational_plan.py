@@ -8,19 +8,18 @@
   moved or consumed (GEN's garlic, consumed into the rice dish off the plate; not into what the unit makes in it:
   the omelette cooked from the egg mixture in the pan), and what the units put into that label (its node drops the labels,
   `without`: the syrup soaked into the cranberries) when the task's units fill
-  containers of its label with that label (`holders.gained`: the measuring cup the
-  cream was poured into) and its node is no kitchen node, unless it goes onto an object
-  in that container (the lemon juice the carrot in the salad bowl is seasoned with: it
-  is still in the bowl, and the bowl still lists it); else it keeps its contents
-  (a carton, a bag, a packet: the kitchen stocks them). A holder the unit does not
-  name is emptied likewise when the units fill its label with the object's (whichever
-  holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
-  carton; the kitchen adds one listing what it holds when the task has none), and
-  the object simply moves when no node of the task says what a holder of its label
-  holds (a stove, a table), or when its node names no place after the unit (the
-  squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of
-  a holder the unit does not name empties it likewise; all that leaves holders of one
-  label in a unit leaves at once (the beef and the onion leave the pan together).
+  containers of its label with that label (`holders.gained`: the measuring cup the cream was poured into) and its node
+  is no kitchen node, unless it goes onto an object in that container (the lemon juice the carrot in the salad bowl is
+  seasoned with: it is still in the bowl, and the bowl still lists it); else it keeps its contents (a carton, a bag, a
+  packet: the kitchen stocks them), but one no other unit takes or takes from, fired once (`sole`:
+  `relational_reading`), of what goes into a node like its own is emptied: the hamburger's salt `in [bowl]`
+  (`0027-best_hamburger_ever.txt:167`). A holder the unit does not name is emptied likewise when the units fill its
+  label with the object's (whichever holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
+  carton; the kitchen adds one listing what it holds when the task has none), and the object simply moves when no node
+  of the task says what a holder of its label holds (a stove, a table), or when its node names no place after the unit
+  (the squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of a holder the unit does not
+  name empties it likewise; all that leaves holders of one label in a unit leaves at once (the beef and the onion leave
+  the pan together).
   A container poured out whole (`holders.unit_flows`) is emptied of what it held.
   An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
@@ -158,11 +157,12 @@ def called_fills(units: Iterable[FunctionalUnit]) -> frozenset[tuple[str, str]]:
 
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
-              holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset()) -> UnitPlan:
+              holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset(),
+              sole: frozenset[ObjectNode] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holders.gained`; module doc), whose nodes have `labels` and place
-    objects in or on objects of the labels `holding`, and fill holders by the names `called` (`called_fills`)."""
+    objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -175,7 +175,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         if fate in (Fate.SPLITS, Fate.CONSUMED) and src is not None and src.role is not None:
             holder = rels[src.role].role
             made_in = any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role for x in rels)
-            if holder.after is None and holder.before not in kitchen and (holder.label, r.role.label) in filled and not (
+            whole = holder.before not in kitchen or (holder.before in sole and r.after == r.role.before)  # (a split)
+            if holder.after is None and whole and (holder.label, r.role.label) in filled and not (
                     fate is Fate.CONSUMED and made_in):  # (consumed into what the unit makes there: still in it)
                 fate = Fate.MOVES if fate is Fate.SPLITS else fate  # a container an earlier unit filled, which FOON
                 # never empties: the whole leaves it (or is consumed out of it: GEN's garlic rice)

@@ -16,6 +16,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.places import listed, places
 from ..model.scene import SceneObject
 from ..model.where import short_path, unit_where
 from .encoding import LevelInputs
@@ -49,6 +50,8 @@ class Reading:
     renamed: tuple[tuple[FunctionalUnit, str], ...] = ()
     #: (unit, note) per kept unit read as taking a portion out of a container FOON takes again (`taken_again`)
     portions: tuple[tuple[FunctionalUnit, str], ...] = ()
+    #: the kitchen nodes one unit of the task takes, fired once: poured or sprinkled out whole (`plan_unit`'s `sole`)
+    sole: frozenset[ObjectNode] = frozenset()
 
 
 def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]
@@ -81,6 +84,31 @@ def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, Funct
     return out, said
 
 
+def _taken_once(f: Foon, units: Sequence[int], kitchen: frozenset[ObjectNode],
+                filled: frozenset[tuple[str, str]]) -> frozenset[ObjectNode]:
+    """The kitchen containers exactly one of the task's `units` takes, listing something the units put into
+    containers of their label (`filled`): those `plan_unit` may read as poured out whole. O(units x inputs)."""
+    takers: dict[ObjectNode, int] = {}
+    for u in units:
+        for n in f.units[u].inputs:
+            if n in kitchen and any((n.label, x) in filled for x in listed(n)):
+                takers[n] = takers.get(n, 0) + 1
+    return frozenset(n for n, k in takers.items() if k == 1)
+
+
+def _rest_stays(sole: frozenset[ObjectNode], counted: Sequence[tuple[Foon, InstanceCounts]]) -> frozenset[ObjectNode]:
+    """The nodes of `sole` a unit of FOON's plan as counted fires again, or that start holding more objects of
+    what they list than there are of them (a unit that does not name its holder takes from it too: the chocolate
+    cake's sprinkle at `0058-chocolate_cake.txt:17`, beside the pour at `:49`): poured out whole, they would be
+    read empty with something in them. O(sole x kitchen nodes counted + firings x inputs)."""
+    out = {n for net, c in counted for u, k in c.firings if k > 1 for n in net.units[u].inputs} & sole
+    for _, c in counted:
+        at = dict(c.at_node)
+        out |= {n for n in sole for x, k in c.at_node
+                if x.label in listed(n) and any(p[1] == n.label for p in places(x)) and k > at.get(n, 0)}
+    return frozenset(out)
+
+
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
                memo: dict | None = None) -> Reading:
@@ -94,10 +122,12 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     f, units = st.foon, st.units
     if "task" not in memo:
         task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
-        memo["task"] = (task_nodes, frozenset().union(*(gained(f.units[u]) for u in units)),
-                        frozenset(n.label for n in task_nodes), holding_labels(f.units[u] for u in units),
-                        called_fills(f.units[u] for u in units))  # FOON-GEN's `pan`: the cookware
-    task_nodes, filled, labels, holding, called = memo["task"]
+        gains = frozenset().union(*(gained(f.units[u]) for u in units))
+        memo["task"] = (task_nodes, gains, frozenset(n.label for n in task_nodes),
+                        holding_labels(f.units[u] for u in units),
+                        called_fills(f.units[u] for u in units),  # FOON-GEN's `pan`: the cookware
+                        _taken_once(f, units, inp.kitchen, gains))
+    task_nodes, filled, labels, holding, called, once = memo["task"]
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
         key = ("silent", tuple(speakers))
@@ -105,11 +135,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
         return memo[key]
 
-    def plans_of(silent: frozenset[str]) -> tuple:  # the units' reading with these holders silent, made once
-        key = ("plans", silent)
+    def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode]) -> tuple:  # the units' reading, made once
+        key = ("plans", silent, sole)
         if key not in memo:
             plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
-                                                                 holding, called) for u in units})
+                                                                 holding, called, sole) for u in units})
             if "fired" not in memo:  # FOON's own plan as counted, in firing order: the taker it fires first is named
                 found = delete_free_plan(inp.foon, inp.kitchen, inp.candidates, together=True)
                 memo["fired"] = found[0] if found is not None else ()
@@ -126,9 +156,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = plans, drops, said, portions, roles_of
         return memo[key]
 
-    def read(speakers: Sequence[int]) -> Reading:
+    def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
         silent = quiet(speakers)
-        plans, drops, said, portions, roles_of = plans_of(silent)
+        plans, drops, said, portions, roles_of = plans_of(silent, sole)
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
             key = ("counts", id(net), need, id(roles_of), narrow or None)  # `net`: `inp.foon` or `st.through`
@@ -137,15 +167,21 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                                           stated=stated, overrides=overrides, roles_of=roles_of, together=True,
                                           stitched=True, reuse=True)
             return memo[key]
-        counts = count(inp.foon, st.own)
-        counts = counts.widest(count(st.through, st.needed)) if st.origin and narrow is None else counts
+        counted = [(inp.foon, count(inp.foon, st.own))]
+        if st.origin and narrow is None:
+            counted.append((st.through, count(st.through, st.needed)))
+        again = _rest_stays(sole, counted)
+        if again:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
+            return read(speakers, sole - again)
+        counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}
         return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled,
-                       tuple(said[u] for u in kept if u in said), tuple(portions[u] for u in kept if u in portions))
+                       tuple(said[u] for u in kept if u in said), tuple(portions[u] for u in kept if u in portions),
+                       sole)
 
-    first = read(units)
+    first = read(units, once)
     if quiet(first.units) != first.silent:
-        return read(first.units)
+        return read(first.units, first.sole)
     return first
