@@ -10,8 +10,8 @@ from relational_checks import clean_unit_plan
 
 from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
-from foon2pddl.model.goal import resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.count_returns import with_returns
 from foon2pddl.pddl.instance_counts import derive_counts
@@ -47,12 +47,18 @@ def test_a_unit_of_the_plan_fired_again_brings_the_object_back_to_the_node_a_lat
     assert dict(counts.firings) == {0: 1, 1: 2, 2: 2, 3: 1, 4: 1} and counts.unfolded == ()
 
 
-def test_the_relational_task_counts_one_egg_and_a_second_bacon_and_plans_replay_clean():
+def test_the_relational_task_counts_a_second_bacon_wide_and_the_one_on_the_egg_small():
     units = _omelette()
     kitchen = {n("pan", "empty"), n("egg", "whole"), n("bacon", "raw"), n("turner", "clean")}
-    outcome = clean_unit_plan(units, kitchen, units[4].outputs[1])
-    labels = sorted(x.label for x in outcome.task.instances)
+    goal = Goal(GoalSpec("egg"), (units[4].outputs[1],))
+    wide = compile_goal(Foon(units), Kitchen(frozenset(kitchen)), goal, "relational")
+    labels = sorted(x.label for x in wide.task.instances)
     assert labels.count("egg") == 1 and labels.count("bacon") == 2, labels
+    # counted small, the cook takes the pan as the flip left it, a stitch's reading (`relational_reading._as_now`):
+    # the bacon is the one on the flipped egg
+    outcome = clean_unit_plan(units, kitchen, units[4].outputs[1])
+    assert sorted(x.label for x in outcome.task.instances) == ["bacon", "egg", "pan", "turner"]
+    assert sorted(s.unit.motion.label for s in outcome.trace.steps) == ["cook", "crack", "flip", "fry", "sprinkle"]
 
 
 def test_the_plan_with_a_unit_fired_again_is_kept_only_when_it_counts_fewer_objects(monkeypatch):

@@ -7,7 +7,8 @@ kitchen holds: the brownie's cut (`ACT-0010-choco_brownie.txt:384`) takes the ki
 [cutting board])` with `cutting board (contains {brownie})`, a node only the whole recipe makes, while the init
 puts the kitchen's brownie on a board of its own, in that node: 56 objects for a plan that is the cut. Counted
 small (`narrow`, what `planners.solve.plan` tries first): from FOON's own plan alone (no stitched plan beside
-it), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
+it; a unit taking a made node as it was before a later unit moved the object on takes it as that unit left it, when
+that counts fewer, `relational_reading._as_now`), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
 and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
 another cup filled again): the cut, 4 objects. Kept
 when it has fewer objects, with a note that says so (`Compiled.narrowed`). It may have no plan where the wide

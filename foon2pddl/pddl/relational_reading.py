@@ -5,7 +5,8 @@ hold (`relational_plan.quiet_places`), the (holder, content) pairs the task's un
 task's labels and the labels that hold something (`relational_plan.holding_labels`); flows a later unit's input
 says did not happen are dropped (`list_drops.kept_in_place`). The objects come from those readings
 (`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
-for the stitched one; counted small, for FOON's own plan alone, `relational_objects`), or from the scene. A unit
+for the stitched one; counted small, for FOON's own plan alone, `relational_objects`, or for that plan with each unit
+taking a made node as a later unit left the object, when that counts fewer, `_as_now`), or from the scene. A unit
 with a role of a label the task has no object of is left out; when that changes which places the task's units
 name, the units are read again with only the kept ones as speakers (a unit with no objects names no place).
 """
@@ -16,6 +17,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
+from ..model.memo import per_network
 from ..model.places import listed, places
 from ..model.scene import SceneObject
 from ..model.where import short_path, unit_where
@@ -109,6 +111,33 @@ def _rest_stays(sole: frozenset[ObjectNode], counted: Sequence[tuple[Foon, Insta
     return frozenset(out)
 
 
+def _as_now(foon: Foon, st: Stitched) -> Foon | None:
+    """`foon` (FOON's own network) with each unit of a stitch of a made node (`input_stitch._left_by`,
+    `_held_before`: the object as a unit moving it on left it) in the stitched unit's place, indexes unchanged; None
+    when there is none. The muffins' bake takes the pan as the scoop filled it, with the oven the put inside left
+    holding it: FOON's plan unfolded fires every unit making the batter twice, this one once."""
+    sewn = {u: st.foon.units[k] for k, u in sorted(st.origin.items())
+            if any(s.unit == u and s.left_by is not None for s in st.found)}
+    if not sewn:
+        return None
+    made, key = _nows(foon), tuple(sewn)  # one network per set of units: its index is built once (an experiment's goals)
+    if key not in made:
+        while len(made) >= NOWS_KEPT:
+            made.pop(next(iter(made)))
+        made[key] = Foon(tuple(sewn.get(u, x) for u, x in enumerate(foon.units)), foon.level)
+    return made[key]
+
+
+#: Networks `_as_now` keeps per network object.
+NOWS_KEPT = 8
+
+
+@per_network
+def _nows(foon: Foon) -> dict[tuple[int, ...], Foon]:
+    """The networks `_as_now` made of `foon`, by the units it puts a stitched unit in the place of."""
+    return {}
+
+
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
                memo: dict | None = None) -> Reading:
@@ -170,6 +199,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         counted = [(inp.foon, count(inp.foon, st.own))]
         if st.origin and narrow is None:
             counted.append((st.through, count(st.through, st.needed)))
+        elif narrow is not None and (now := _as_now(inp.foon, st)) is not None:
+            other = count(now, st.own)  # small: each unit taking an object as a later unit left it, when fewer
+            counted = [(now, other)] if other.total < counted[0][1].total else counted
         again = _rest_stays(sole, counted)
         if again:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
             return read(speakers, sole - again)
