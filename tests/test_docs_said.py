@@ -177,17 +177,25 @@ def test_generalization_md_gives_the_command_of_its_exp_goals_solved_rows(reader
     page gives the pipeline that asks FOON-EXP for the recipes' dish nodes: run here on one recipe, `goals`' table
     feeds `retrieve --goals -` on FOON-EXP and the batch's count line is what the table's rows read."""
     section = (ROOT / "docs" / "generalization.md").read_text().split("**Goals solved**", 1)[1][:2500]
-    m = re.search(r"^foon2pddl (goals tests/data/foon-subgraphs [^|\n]+) \| foon2pddl (retrieve [^\n]+)$", section, re.M)
+    stderr = _goals_pipeline_on_one_recipe(section, "retrieve", "exp")
+    assert re.search(r"^1 goal: 1 solved", stderr, re.M), stderr
+
+
+def _goals_pipeline_on_one_recipe(section: str, command: str, network: str) -> str:
+    """Runs the page's `foon2pddl goals ... | foon2pddl COMMAND ... --network NETWORK --goals -` pipeline on one
+    recipe instead of the 100, and returns the second command's stderr (its batch count line)."""
+    m = re.search(rf"^foon2pddl (goals tests/data/foon-subgraphs [^|\n]+) \| foon2pddl ({command} [^\n]+)$", section,
+                  re.M)
     assert m, section[:600]
     listing, asking = (shlex.split(c) for c in m.groups())
-    assert asking[asking.index("--network") + 1] == "exp" and asking[asking.index("--goals") + 1] == "-", asking
+    assert asking[asking.index("--network") + 1] == network and asking[asking.index("--goals") + 1] == "-", asking
     one = "tests/data/foon-subgraphs/0001-whipped_cream.txt"
     listing, asking = ([one if w == "tests/data/foon-subgraphs" else w for w in c] for c in (listing, asking))
     listed = CliRunner().invoke(main, listing)
     assert listed.exit_code == 0, listed.stderr
     r = CliRunner().invoke(main, asking, input=listed.stdout)
     assert r.exit_code == 0, r.stderr
-    assert re.search(r"^1 goal: 1 solved", r.stderr, re.M), r.stderr
+    return r.stderr
 
 
 def test_generalization_md_counts_with_the_search_projects_kitchen_are_what_goals_gives(reader_dir):
@@ -210,16 +218,7 @@ def test_generalization_md_gives_the_command_and_commit_of_its_lifted_gen_row(re
     pipeline that plans the recipes' dish nodes on FOON-GEN's lifted PDDL, run here on one recipe, and the row
     names the commit it was measured at."""
     section = (ROOT / "docs" / "generalization.md").read_text().split("**Goals solved**", 1)[1][:4000]
-    m = re.search(r"^foon2pddl (goals tests/data/foon-subgraphs [^|\n]+) \| foon2pddl (plan [^\n]+)$", section, re.M)
-    assert m, section[:600]
-    listing, asking = (shlex.split(c) for c in m.groups())
-    assert asking[asking.index("--network") + 1] == "gen" and asking[asking.index("--goals") + 1] == "-", asking
-    one = "tests/data/foon-subgraphs/0001-whipped_cream.txt"
-    listing, asking = ([one if w == "tests/data/foon-subgraphs" else w for w in c] for c in (listing, asking))
-    listed = CliRunner().invoke(main, listing)
-    assert listed.exit_code == 0, listed.stderr
-    r = CliRunner().invoke(main, asking, input=listed.stdout)
-    assert r.exit_code == 0, r.stderr
-    assert re.search(r"^1 goal: 1 solved \(gen-lifted encoding", r.stderr, re.M), r.stderr
+    stderr = _goals_pipeline_on_one_recipe(section, "plan", "gen")
+    assert re.search(r"^1 goal: 1 solved \(gen-lifted encoding", stderr, re.M), stderr
     row = re.search(r"^\| GEN, lifted PDDL \(`absent`\) \| \d+ \| (.*)\|$", section, re.M)
     assert row and re.search(r"\bat [0-9a-f]{7}\b", row.group(1)), row

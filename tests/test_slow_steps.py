@@ -647,27 +647,34 @@ def test_a_unified_planning_engine_lookup_beats_through_a_pipe(monkeypatch):
     assert beats, r.stderr
 
 
+def _beats_while(monkeypatch, module, name: str, *args) -> list[str]:
+    """Runs the command `args` with `module.name` (its one long call) slowed until the step's line and two beats
+    have been said; returns every line said."""
+    said = _Said()
+    monkeypatch.setattr(progress, "click", said)
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    monkeypatch.setattr(progress, "BEAT", 0.01)
+    long_call = getattr(module, name)
+
+    def slow(*a, **kw):
+        assert said.wait_for(len(said.lines) + 3), said.lines  # the step's line, then beats while it runs
+        return long_call(*a, **kw)
+
+    monkeypatch.setattr(module, name, slow)
+    r = run(*args)
+    assert r.exit_code == 0, r.output
+    return said.lines
+
+
 def test_expand_pairs_beats_while_it_reads_the_senses(monkeypatch):
     """Stop 52's pass (nc52b): `expand --pairs` (generalization.md) on an empty cache said `listing the 10
     substitutions with their WordNet senses ...` once, then nothing for 34.5 s through a pipe (load 20): the senses
     open WordNet, one long call, and the step had no beat, unlike the other long calls."""
     from foon2pddl.generalize import pairs
 
-    said = _Said()
-    monkeypatch.setattr(progress, "click", said)
-    monkeypatch.setattr(progress, "AFTER", 0.0)
-    monkeypatch.setattr(progress, "BEAT", 0.01)
-    listed = pairs.substitution_pairs
-
-    def slow(*args, **kwargs):
-        assert said.wait_for(len(said.lines) + 3), said.lines  # the step's line, then beats while it runs
-        return listed(*args, **kwargs)
-
-    monkeypatch.setattr(pairs, "substitution_pairs", slow)
-    r = run("expand", "--pairs")
-    assert r.exit_code == 0, r.output
-    listing = [line for line in said.lines if line.startswith("listing the 10 substitutions")]
-    assert len(listing) >= 3 and re.fullmatch(r"listing .* \.\.\. \d+ s", listing[-1]), said.lines
+    lines = _beats_while(monkeypatch, pairs, "substitution_pairs", "expand", "--pairs")
+    listing = [line for line in lines if line.startswith("listing the 10 substitutions")]
+    assert len(listing) >= 3 and re.fullmatch(r"listing .* \.\.\. \d+ s", listing[-1]), lines
 
 
 def test_analyze_beats_while_it_draws_the_plot(monkeypatch, tmp_path):
@@ -675,18 +682,6 @@ def test_analyze_beats_while_it_draws_the_plot(monkeypatch, tmp_path):
     then nothing for 15.1 s through a pipe (load 20): matplotlib's import and the figure, one long call."""
     from foon2pddl.analysis import network_report
 
-    said = _Said()
-    monkeypatch.setattr(progress, "click", said)
-    monkeypatch.setattr(progress, "AFTER", 0.0)
-    monkeypatch.setattr(progress, "BEAT", 0.01)
-    drawn = network_report.plot_png
-
-    def slow(*args, **kwargs):
-        assert said.wait_for(len(said.lines) + 3), said.lines  # the step's line, then beats while it runs
-        return drawn(*args, **kwargs)
-
-    monkeypatch.setattr(network_report, "plot_png", slow)
-    r = run("analyze", "--plot", tmp_path / "central.png")
-    assert r.exit_code == 0, r.output
-    drawing = [line for line in said.lines if line.startswith(f"drawing {tmp_path / 'central.png'}")]
-    assert len(drawing) >= 3 and re.fullmatch(r"drawing .* \.\.\. \d+ s", drawing[-1]), said.lines
+    lines = _beats_while(monkeypatch, network_report, "plot_png", "analyze", "--plot", tmp_path / "central.png")
+    drawing = [line for line in lines if line.startswith(f"drawing {tmp_path / 'central.png'}")]
+    assert len(drawing) >= 3 and re.fullmatch(r"drawing .* \.\.\. \d+ s", drawing[-1]), lines
