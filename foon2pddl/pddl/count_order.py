@@ -39,19 +39,27 @@ __all__ = ["orders", "readers_first"]
 def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]
                   ) -> tuple[int, ...]:
     """`plan` with each unit that moves an object out of a node after the later units that only read that node,
-    where no unit between needs it (module doc)."""
+    where no unit between needs it (module doc). A unit's node sets are bit masks over the plan's nodes and its
+    readers are found once, so the O(p^3 r) loop's tests are integer `&`s and set lookups (sets of nodes compared
+    them field by field: 117 s of the 125 s a GEN experiment cell spent counting, at df29bfa)."""
     order = list(plan)
     roles = {u: roles_of(foon.units[u]) for u in order}
-    moved_out = {u: {r.before for r in roles[u] if r.changes and r.before is not None} for u in order}
-    leaves = {u: {r.after for r in roles[u] if r.changes} for u in order}
-    takes: dict[int, set[ObjectNode]] = {u: {r.before for r in roles[u] if r.before is not None} for u in order}
-    read = {u: {r.before for r in roles[u] if r.before is not None and not r.changes} for u in order}
+    bit: dict[ObjectNode, int] = {}  # each node one bit: the loops below intersect ints, never compare nodes
+
+    def nodes(u: int, keep: Callable[[Role], ObjectNode | None]) -> int:
+        return sum({1 << bit.setdefault(n, len(bit)) for r in roles[u] if (n := keep(r)) is not None})
+
+    moved_out = {u: nodes(u, lambda r: r.before if r.changes else None) for u in order}
+    leaves = {u: nodes(u, lambda r: r.after if r.changes else None) for u in order}
+    takes = {u: nodes(u, lambda r: r.before) for u in order}
+    read = {u: nodes(u, lambda r: None if r.changes else r.before) for u in order}
+    readers = {m: {u for u in order if read[u] & moved_out[m]} for m in order if moved_out[m]}
     for _ in range(len(order) ** 2):
         moved = False
         for i, m in enumerate(order):
-            if not moved_out[m]:
+            if not (rs := readers.get(m)):
                 continue
-            j = max((k for k in range(i + 1, len(order)) if read[order[k]] & moved_out[m]), default=None)
+            j = next((k for k in range(len(order) - 1, i, -1) if order[k] in rs), None)  # the last later reader
             if j is None:
                 continue
             if not any(takes[order[k]] & leaves[m] for k in range(i + 1, j + 1)):
