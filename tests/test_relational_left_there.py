@@ -10,7 +10,8 @@ from relational_checks import clean_dish_plan, clean_unit_plan
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.list_drops import kept_in_place
-from foon2pddl.pddl.relational_plan import dustings, plan_unit
+from foon2pddl.pddl.relational_plan import plan_unit
+from foon2pddl.pddl.relational_touched import dustings
 
 DATA = Path(__file__).parent / "data" / "foon-subgraphs"
 

@@ -14,8 +14,9 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.physical import Relation
 from foon2pddl.pddl.holders import Fate, relational_roles
 from foon2pddl.pddl.mutual_lists import mutual_readings
-from foon2pddl.pddl.relational_plan import plan_unit, restated_nodes
+from foon2pddl.pddl.relational_plan import plan_unit
 from foon2pddl.pddl.relational_stitch import kitchen_stitches
+from foon2pddl.pddl.relational_touched import restated_nodes
 
 SUBGRAPHS = Path(__file__).parent / "data" / "foon-subgraphs"
 

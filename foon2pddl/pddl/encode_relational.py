@@ -60,7 +60,7 @@ from ..model.kitchen import Kitchen
 from ..model.pairing import Role
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
-from . import relational_plan
+from . import relational_touched
 from .costs import unit_cost
 from .encode_instances import (
     GOAL_OBJECT,
@@ -90,7 +90,7 @@ from .prune import restoring_units
 from .registry import Compiled
 from .relational_init import kitchen_implied
 from .relational_objects import task_objects
-from .relational_plan import UnitPlan, Way, flow_ways
+from .relational_plan import UnitPlan
 from .relational_stitch import stitch_notes, stitched
 from .relational_sweep import CONSUMED, sweep_effects
 from .restore import discards
@@ -135,9 +135,9 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)
     nodes.update(x.start for x in instances if x.start is not None)
     readings = frozenset(pair for u in units for pair in unit_aliases(f.units[u]))
-    ways = {u: flow_ways(plans[u], nodes, alias, readings) for u in units}
+    ways = {u: relational_touched.flow_ways(plans[u], nodes, alias, readings) for u in units}
     nodes.update(n for w in ways.values() for lst in w.values() for _, _, n in lst if n is not None)
-    empties = relational_plan.every_late_empty({u: plans[u] for u in units}, nodes, alias)
+    empties = relational_touched.every_late_empty({u: plans[u] for u in units}, nodes, alias)
     type_of, types = object_types(table, sorted({x.label for x in instances} | {c.label for c in inp.candidates}),
                             dict(options.categories))
     const = {n: table.name(n.describe() if n.states else f"{n.label} plain", key=("node", n)) for n in sorted(nodes)}
@@ -150,8 +150,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
             inside.setdefault(alias.get(c, c), []).append((n, rel))
     for n, holder in sorted({x for u in units for x in on_parts(f.units[u])}):  # the bacon `on [bread]`: on the
         inside.setdefault(holder, []).extend((n, rel) for rel, _ in places(n)[:1])  # sandwich (`holders` rule 2)
-    dust = relational_plan.dustings(plans[u] for u in units)
-    left = relational_plan.left_nodes([(plans[u], ways[u], empties[u]) for u in units], inside, dust)
+    dust = relational_touched.dustings(plans[u] for u in units)
+    left = relational_touched.left_nodes([(plans[u], ways[u], empties[u]) for u in units], inside, dust)
     stable = {n for n in const if n not in left}
     entered = {n for u in units for k, s in enumerate(plans[u].slots) if s.fate is not Fate.CONSUMED  # an action puts
                for n in (s.portion, plans[u].after_of(k)) if n not in (None, s.rel.role.before)}  # an object there
@@ -212,7 +212,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
 
 
 def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
-                 type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[Way]],
+                 type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[relational_touched.Way]],
                  gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
                  empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str],
                  dust: frozenset[ObjectNode], entered: set[ObjectNode]) -> Action:
@@ -326,14 +326,14 @@ def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNod
             becomes(v, before, CONSUMED)
             if r.source is not None and r.source.role is not None and bound[r.source.role]:
                 sweep += [(var[r.source.role], node, rel, f"{label} alike", ("alike", k, node))
-                          for node, rel in relational_plan.alike_nodes(plan, s, inside)]
+                          for node, rel in relational_touched.alike_nodes(plan, s, inside)]
         elif after is not None and after != before:
             becomes(v, before, after)
         sweep += [(v, node, rel, f"{node.label} on {label}", ("dust", k, node))  # went into what is put there
-                  for node, rel in relational_plan.dusted_nodes(plan, k, inside, dust)]
+                  for node, rel in relational_touched.dusted_nodes(plan, k, inside, dust)]
         if s.fate is Fate.NEW:  # what FOON restates as made was there: it becomes part of the one made
             sweep += [(var[r.target.role], node, rel, f"{label} there", ("there", k, node))
-                      for node, rel in relational_plan.restated_nodes(plan, s, inside)]
+                      for node, rel in relational_touched.restated_nodes(plan, s, inside)]
         cond += sweep_effects(sweep, lambda word, key: names.name(word, key=key), const, type_of, inside)
         src, dst = r.source, r.target
         if s.fate in (Fate.STAYS, Fate.SPLITS) and src is not None and src.role is not None and bound[src.role]:

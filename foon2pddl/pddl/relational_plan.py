@@ -23,16 +23,13 @@
   A container poured out whole (`holders.unit_flows`) is emptied of what it held.
   An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
-  (the bowl of sesame seeds sprinkled over the salad). An object a unit makes in a
-  holder whose node lists it before and after restates what is there, which becomes
-  part of it (`restated_nodes`: the corn on the board); what a unit puts on a holder
-  it leaves silent about its contents (`dustings`: the flour on the floured board), or
-  what a unit's node lists on a holder some unit leaves silent (the spray's olive oil
-  on the bread the flip leaves `toasted`), goes into what a later unit puts there when
-  its list leaves it out (`dusted_nodes`: the melted cheese scooped onto that bread).
+  (the bowl of sesame seeds sprinkled over the salad).
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
   object leaves its node, an emptied container changes node.
+
+What the decisions do to the task's nodes beyond the unit's own roles (the contents poured out with a container,
+the holder emptied late, the corn restated on the board, the flour on the floured board) is `relational_touched`.
 
 Pure; O(r^2) per unit for r roles.
 """
@@ -45,14 +42,11 @@ from dataclasses import dataclass, field
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role
-from ..model.physical import Relation
-from ..model.places import describes_contents, head_of, listed, moved_into, places
+from ..model.places import describes_contents, head_of, listed, places
 from .holders import Fate, Flow, RelRole, gained, relational_roles, unit_flows
-from .relational_init import read_names
 
-__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "Way", "alike_nodes", "called_fills", "consumed_node", "count_roles", "every_late_empty", "flow_ways", "late_empties",
-           "dusted_nodes", "dustings", "holding_labels", "left_nodes", "quiet_places", "restated_nodes", "silent_labels",
-           "plan_unit", "without"]
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
+           "plan_unit", "quiet_places", "silent_labels", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -236,11 +230,6 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
     return tuple(out)
 
 
-#: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
-#: (None: consumed).
-Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
-
-
 def _into_one_staying(rels: Sequence[RelRole], r: RelRole) -> bool:
     """Whether `r` leaves its holder role for a role that stays in that holder (the fold's chips into the batter
     in the bowl, which lists both after the unit): it is still in the holder, inside the other, so all of it goes
@@ -251,150 +240,3 @@ def _into_one_staying(rels: Sequence[RelRole], r: RelRole) -> bool:
     into = rels[dst.role]
     return (into.fate is Fate.STAYS and into.source is not None and into.source.role == src.role
             and into.target is not None and into.target.role == src.role)
-
-
-def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str],
-              readings: frozenset[tuple[str, str]] = frozenset()) -> dict[int, list[Way]]:
-    """Per flow of the unit (by position): every node of its label (read through the task's `alias`: the
-    measuring cup's `pepper` is the black pepper ground into it) placed in a container of the holder's label,
-    or of a name some unit of the task reads as that label (`readings`, its units' `unit_aliases`:
-    `strawberry (in [cup])` poured into the blender cup, in a task that has a cup too), with the node it
-    ends in (moved into the flow's target, or None: consumed)."""
-    out: dict[int, list[Way]] = {}
-    labels = [s.rel.role.label for s in plan.slots]
-    for i, flow in enumerate(plan.flows):
-        ways = []
-        for n in sorted(x for x in nodes if x.label == alias.get(flow.label, flow.label)):
-            for rel, c in places(n)[:1]:
-                if alias.get(c, c) == labels[flow.holder] or (c, labels[flow.holder]) in readings:
-                    ways.append((n, rel, moved_into(n, labels[flow.into]) if flow.into is not None else None))
-        out[i] = ways
-    return out
-
-
-def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
-                 alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
-    """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
-    label that lists the object's label, with the node it becomes (`without` all that leaves holders of that
-    label in the unit: the beef and the onion leave the pan at once, and what was put into them, `Slot.along`)."""
-    out = {}
-    group: dict[str, set[str]] = {}  # holder label -> what leaves holders of it in this unit (all at once)
-    for s in plan.slots:
-        if s.late_empties:
-            group.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).update({s.rel.role.label,
-                                                                                                 *s.along})
-    for k, s in enumerate(plan.slots):
-        if s.late_empties:
-            label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
-            out[k] = [(n, without(n, group[holder], alias)) for n in sorted(
-                x for x in nodes if x.label == holder and describes_contents(x) and label in read_names(listed(x), alias))]
-    return out
-
-
-def every_late_empty(plans: dict[int, UnitPlan], nodes: set[ObjectNode],
-                     alias: dict[str, str]) -> dict[int, dict[int, list[tuple[ObjectNode, ObjectNode]]]]:
-    """`late_empties` of every unit, to a fixpoint: a holder emptied of one thing (salt) may then be emptied
-    of the next (pepper). Adds the nodes holders become to `nodes`."""
-    while True:
-        empties = {u: late_empties(p, nodes, alias) for u, p in plans.items()}
-        grown = {n for e in empties.values() for lst in e.values() for _, n in lst} - nodes
-        if not grown:
-            return empties
-        nodes.update(grown)
-
-
-def alike_nodes(plan: UnitPlan, s: Slot,
-                inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
-    """For a slot consumed out of a holder role whose node after the unit no longer lists its label: the nodes
-    of that label placed in holders of that label (any other such object in that holder is consumed too)."""
-    src = s.rel.source
-    if s.fate is not Fate.CONSUMED or src is None or src.role is None:
-        return []
-    after = plan.after_of(src.role)
-    label = s.rel.role.label
-    if after is None or not describes_contents(after) or label in listed(after):
-        return []
-    return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
-
-
-def restated_nodes(plan: UnitPlan, s: Slot,
-                   inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
-    """For a slot the unit makes (its only role of that label, or the others of the label move out of that holder)
-    in a holder role whose node lists the label before and after the unit: the nodes of that label placed in
-    holders of the holder's label, but those the others leave. FOON restates what is already there (the scoop's
-    output-only `corn (shaved, on [cutting board])` beside the board's `contains {corn}`; the mix's new `potato
-    mixture` in the bowl that lists one; FOON-GEN's scoop and pour takes the corn kernels off the board and
-    restates the shaved corn, both `fruit vegetables`): the object there becomes part of the one made, so the
-    holder never holds two."""
-    dst, label = s.rel.target, s.rel.role.label
-    if s.fate is not Fate.NEW or dst is None or dst.role is None:
-        return []
-    others = [x for x in plan.slots if x.rel.role.label == label]
-    others.remove(s)
-    if not all(x.fate is Fate.MOVES and x.rel.source is not None and x.rel.source.role == dst.role
-               and (x.rel.target is None or x.rel.target.role != dst.role) for x in others):
-        return []
-    holder = plan.slots[dst.role].rel.role
-    after = plan.after_of(dst.role) or holder.before
-    if holder.before is None or label not in listed(holder.before) or label not in listed(after):
-        return []
-    leave = {x.rel.role.before for x in others}
-    return [(n, rel) for n, rel in inside.get(holder.label, ()) if n.label == label and n not in leave]
-
-
-def dustings(plans: Iterable[UnitPlan]) -> frozenset[ObjectNode]:
-    """The nodes units put in or on a role they leave silent about its contents (the sprinkle's `flour (powder, on
-    [cutting board])` beside its `cutting board (floured)`), and the nodes units make of a label L placed at a
-    label C when some unit turns a node of C listing L into one silent about its contents (0012's spray makes
-    `olive oil (on [bread])` and `bread (contains {olive oil})`, the flip leaves `bread (toasted)`), made by the
-    unit that made the node of C turned silent (not every L at a C: other recipes of a universal FOON): what FOON
-    stops counting as the holder's contents."""
-    out, made, hushed = set(), [], {}
-    for p in plans:
-        made.append({n for s in p.slots for n in (s.after, s.portion) if n is not None})
-        for k, s in enumerate(p.slots):
-            into = s.rel.target.role if s.rel.target is not None else None
-            after = p.after_of(into) if into is not None else None
-            if after is not None and not describes_contents(after) and s.fate in (Fate.NEW, Fate.MOVES, Fate.SPLITS):
-                out.add(s.portion if s.fate is Fate.SPLITS else s.after)
-            new, old = p.after_of(k), s.rel.role.before
-            if new is not None and old is not None and describes_contents(old) and not describes_contents(new):
-                hushed[old] = s.rel.role.label
-    # only what the unit that made the hushed node made beside it: the spray's oil, not every L at C
-    out.update(n for nodes in made for old, c in hushed.items() if old in nodes
-               for n in nodes for _, at in places(n)[:1] if at == c and n.label in listed(old))
-    return frozenset(out - {None})
-
-
-def dusted_nodes(plan: UnitPlan, k: int, inside: dict[str, list[tuple[ObjectNode, Relation]]],
-                 dust: frozenset[ObjectNode]) -> list[tuple[ObjectNode, Relation]]:
-    """For a container role whose input node is silent about what it holds and whose node after the unit lists
-    it (`cutting board (floured)` -> `cutting board (contains {dough})`): the nodes among `dust` (`dustings`)
-    placed in holders of its label, of a label that list leaves out and no role of the unit has. What was put
-    there as FOON stopped listing it (the flour sprinkled onto the board) went into what the unit puts there (the
-    dough laid on the flour)."""
-    before, after = plan.slots[k].rel.role.before, plan.after_of(k)
-    if before is None or after is None or describes_contents(before) or not describes_contents(after):
-        return []
-    labels = {s.rel.role.label for s in plan.slots} | listed(after)
-    return [(n, rel) for n, rel in inside.get(plan.slots[k].rel.role.label, ()) if n in dust and n.label not in labels]
-
-
-def left_nodes(units: Iterable[tuple[UnitPlan, dict[int, list[Way]], dict[int, list[tuple[ObjectNode, ObjectNode]]]]],
-               inside: dict[str, list[tuple[ObjectNode, Relation]]], dust: frozenset[ObjectNode]) -> set[ObjectNode]:
-    """The nodes some unit's action moves an object out of (all others are stable), from each unit's plan, flow
-    ways (`flow_ways`) and late empties (`late_empties`); `inside`: per label, the nodes placed in one; `dust`:
-    the task's `dustings`."""
-    left: set[ObjectNode] = set()
-    for p, ways, empties in units:
-        for k, s in enumerate(p.slots):
-            after = p.after_of(k) if s.fate is not Fate.CONSUMED else None
-            if s.rel.role.before is not None and (s.fate is Fate.CONSUMED or (after is not None
-                                                                              and after != s.rel.role.before)):
-                left.add(s.rel.role.before)
-        left.update(n for lst in ways.values() for n, _, _ in lst)
-        left.update(n for lst in empties.values() for n, _ in lst)
-        left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
-        left.update(n for s in p.slots for n, _ in (*alike_nodes(p, s, inside), *restated_nodes(p, s, inside)))
-        left.update(n for k in range(len(p.slots)) for n, _ in dusted_nodes(p, k, inside, dust))
-    return left
