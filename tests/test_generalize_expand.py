@@ -192,3 +192,24 @@ def test_an_exp_tree_names_the_replacement_recorded_at_expansion():
     assert expansion_substitutions(tree, sim) == (Substitution("lemon", "lime", 0.93),)
     unrecorded = FunctionalUnit(copy.inputs, copy.motion, copy.outputs, (Source("r.foon", 3, None, "lemon"),))
     assert expansion_substitutions(TaskTree((unrecorded,), tree.goal), sim)[0].replacement == "lemon juice"
+
+
+def test_expansion_holds_back_full_collections(monkeypatch):
+    """Stop 53's pass (nc53b): `expand tests/data/foon-subgraphs --similarity paper` makes 17,578 units, millions of
+    long-lived objects, and CPython's full collections rescanned them, 1.05 s and 1.18 s each holding the GIL (load
+    17): a step due to say what it did could not speak, 2.1 s silences. Expanding is a build (`model.bulk`)."""
+    import gc
+
+    from foon2pddl.generalize import expand as expand_module
+    from foon2pddl.model import bulk
+
+    thresholds = []
+
+    def watched(*args, **kwargs):
+        thresholds.append(gc.get_threshold()[2])
+        return substitute_unit(*args, **kwargs)
+
+    monkeypatch.setattr(expand_module, "substitute_unit", watched)
+    e = expand(Foon((CUT,)), matrix(["lemon", "lime", "cutting board", "lemon juice"], [("lemon", "lime", 0.93)]),
+               threshold=0.89)
+    assert e.added_units and thresholds and set(thresholds) == {bulk._NEVER}

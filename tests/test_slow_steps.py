@@ -685,3 +685,14 @@ def test_analyze_beats_while_it_draws_the_plot(monkeypatch, tmp_path):
     lines = _beats_while(monkeypatch, network_report, "plot_png", "analyze", "--plot", tmp_path / "central.png")
     drawing = [line for line in lines if line.startswith(f"drawing {tmp_path / 'central.png'}")]
     assert len(drawing) >= 3 and re.fullmatch(r"drawing .* \.\.\. \d+ s", drawing[-1]), lines
+
+
+def test_similarity_beats_while_it_opens_wordnet(monkeypatch):
+    """Stop 53's pass (nc53b): `similarity cilantro banana --senses` (generalization.md) said `comparing 2 labels
+    in WordNet (cook similarity) ...` once, then nothing for 26.1 s through a pipe (load 10): opening WordNet, one
+    long call, and the step had no beat, unlike the other long calls."""
+    from foon2pddl.generalize import modes
+
+    lines = _beats_while(monkeypatch, modes, "make_similarity", "similarity", "cilantro", "banana", "--senses")
+    comparing = [line for line in lines if line.startswith("comparing 2 labels in WordNet")]
+    assert len(comparing) >= 3 and re.fullmatch(r"comparing .* \.\.\. \d+ s", comparing[-1]), lines

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 
 from ..errors import UsageError
 from ..io.steps import Step, silent_step
+from ..model.bulk import bulk
 from ..model.dedupe import dedupe_units
 from ..model.foon import Foon, FunctionalUnit
 from ..model.kitchen import Kitchen
@@ -81,6 +82,7 @@ def is_expanded(unit: FunctionalUnit) -> bool:
     return bool(unit.sources) and unit.sources[0].expanded_from is not None
 
 
+@bulk  # millions of new long-lived objects: full collections rescanning them held the GIL 1.1 s (steps late)
 def expand(
     foon: Foon,
     matrix: SimilarityMatrix | None = None,
