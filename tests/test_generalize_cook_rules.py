@@ -210,3 +210,23 @@ def test_ramen_is_read_as_the_subgraphs_use_it_the_dish_wordnet_lacks(cook):
     assert cook.resolution("ramen").senses == ()
     for a, b in [("noodle", "ramen"), ("pasta", "ramen"), ("egg noodle", "ramen")]:
         assert cook.explain(a, b).rejected == "unknown", (a, b, cook.explain(a, b))
+
+
+def test_a_herb_wordnet_defines_by_another_stands_with_it(cook):
+    """Rule 3's likeness exemption (stop 53): WordNet defines coriander as a "parsley-like herb", so cilantro and
+    coriander (coriander.n.03) stand with parsley though `herb.n.02` covers more than 2 % of the vocabulary; herbs
+    WordNet likens to nothing stay broad (basil~parsley, the rubric's marginal example; rosemary~thyme)."""
+    for a, b in [("cilantro", "parsley"), ("coriander", "parsley")]:
+        assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
+    for a, b in [("basil", "parsley"), ("rosemary", "thyme"), ("cilantro", "banana")]:
+        assert cook(a, b) == 0.0, (a, b, cook.explain(a, b))
+
+
+def test_two_compounds_of_one_head_are_not_rejected_for_their_modifiers_breadth(cook):
+    """Rule 3 for modifiers (stop 53): pan lid and pot lid are one thing (`lid.n.02`) fitted to two others; the
+    modifiers pan~pot meet under `cooking_utensil.n.01` (3.7 % of the vocabulary), which judges what they fit,
+    not what a cook swaps, so the pair stands at the modifiers' Wu-Palmer. Heads of two senses keep rule 3
+    (baking tray~pot), and a modifier pair rejected for another reason stays rejected."""
+    assert cook("pan lid", "pot lid") >= 0.89, cook.explain("pan lid", "pot lid")
+    for a, b in [("baking tray", "pot"), ("container", "spoon"), ("grater", "masher")]:
+        assert cook(a, b) == 0.0, (a, b, cook.explain(a, b))

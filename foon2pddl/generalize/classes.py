@@ -73,6 +73,18 @@ def staple(reader, name: str) -> bool:
     return kinds(reader, name) >= TOOL_CLASS_KINDS and named_kinds(reader, name, GENUS_WORDS) >= STAPLE_SHARE
 
 
+def likened(reader, a: str, b: str) -> bool:
+    """Rule 3's second exemption: whether WordNet defines synset `a` by likeness to `b` or `b` to `a`: the gloss
+    of one names a lemma of the other as "X-like" (coriander.n.03, "parsley-like herb used as seasoning or
+    garnish"). WordNet's own definition says the two do one job, whatever their ancestor covers. Cost: two glosses."""
+    for x, y in ((a, b), (b, a)):
+        gloss = reader.synset(x).definition().lower()
+        if any(re.search(r"\b" + re.escape(n.name().lower().replace("_", " ")) + r"-like\b", gloss)
+               for n in reader.synset(y).lemmas()):
+            return True
+    return False
+
+
 def food_class(reader, name: str) -> bool:
     """Rule 8: whether food synset `name` is a class of foods, the converse of a staple: at least `TOOL_CLASS_KINDS`
     kinds, fewer than `NAMED_SHARE` of them named after it or defined as it by their gloss's genus (`named_kinds`

@@ -22,7 +22,9 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    many kinds of one thing it happens to hold (a matrix of fourteen bottles does not make
    `bottle.n.01` broad). A staple (`staple`: bread, pasta, whose WordNet kinds are mostly
    named or defined after them, `classes.staple`) is never broad with its kinds, unless it is
-   a dish, a bake or a flavorer (`classes.NOT_STAPLES`: sauce, cake) or a compound known by its head.
+   a dish, a bake or a flavorer (`classes.NOT_STAPLES`: sauce, cake) or a compound known by its head. Nor are two
+   senses WordNet defines one by the other (`classes.likened`: coriander, a "parsley-like herb"), nor, in two
+   compounds of one head sense, two tool modifiers (pan lid~pot lid: what one thing fits, not what a cook swaps).
 
 4. Variants (dish compounds) are not substitutes (`variant`), nor are two senses of prepared foods (`dishes`,
    under `NUTRIMENT`: club sandwich~wrap, sandwich~hamburger, buckeye candy~fudge); a stock (`INGREDIENTS`:
@@ -58,7 +60,7 @@ from pathlib import Path
 from ..model.foon import normalize_label
 from .cache import digest
 from .categories import CategoryIndex, index_path, shipped_index
-from .classes import food_class_of_classes, staple, tool_class
+from .classes import food_class_of_classes, likened, staple, tool_class
 from .cook_kin import KinRules, kin
 from .extend import Assignment
 from .senses import Overrides, Resolution, adjective, mixed_roles, parse_overrides, resolve, role_senses
@@ -118,7 +120,8 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 #: The version of the rules, part of a cached matrix's key ("extended": rule 5 files unknown labels; rule 6).
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
-         " dishes, food classes of classes, stand-ins and head compounds, tool class siblings, prepared foods")
+         " dishes, food classes of classes, stand-ins and head compounds, tool class siblings, prepared foods, likeness,"
+         " tools one part fits")
 
 
 def synonyms(found: Evidence) -> bool:
@@ -262,7 +265,8 @@ class CookSimilarity(KinRules):
             found = self._modifier_evidence[(a, b)] = self._compute(a, b)
         return found
 
-    def _compute(self, a: str, b: str) -> Evidence:
+    def _compute(self, a: str, b: str, breadth: float | None = None) -> Evidence:
+        """Rules 1-4 for `a`, `b` (sorted); `breadth` replaces the mode's (rule 3 for two tools one part fits)."""
         fixed = self.overrides.pair(a, b)
         if fixed is not None:
             return Evidence(fixed, rejected="fixed")
@@ -272,23 +276,27 @@ class CookSimilarity(KinRules):
         if not ra.senses or not rb.senses:
             return Evidence(0.0, rejected="unknown")
         if ra.modifier is None and rb.modifier is None:
-            return self._best(ra.senses, rb.senses, 0, (a, b))
+            return self._best(ra.senses, rb.senses, 0, (a, b), breadth)
         if (ra.modifier is None) != (rb.modifier is None) and self.variant(ra if ra.modifier is not None else rb):
             return Evidence(0.0, rejected="variant")
         if ra.modifier is not None and rb.modifier is not None:
             heads = self._best(ra.senses, rb.senses, 0, (a, b))
             mod = self._modifiers(ra.modifier, rb.modifier)
+            if mod.rejected == "broad" and heads.sense_a is not None and heads.sense_a == heads.sense_b and all(
+                    self.reader.synset(x).lexname() == "noun.artifact" for x in (mod.sense_a, mod.sense_b)):
+                mod = self._compute(*sorted((ra.modifier, rb.modifier)), breadth=1.0)  # what one thing fits
             if mod.rejected not in ("", "fixed", "same") and heads.similarity:  # same modifier: the heads decide
                 return Evidence(0.0, mod.ancestor, mod.sense_a, mod.sense_b, mod.breadth, mod.rejected)
             return Evidence(heads.similarity * mod.similarity, heads.ancestor, heads.sense_a, heads.sense_b,
                             heads.breadth, heads.rejected)
-        return self._best(ra.senses, rb.senses, 1, (a, b))
+        return self._best(ra.senses, rb.senses, 1, (a, b), breadth)
 
-    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int, labels: tuple[str, str]
-              ) -> Evidence:
-        """Greatest accepted value over sense pairs (then first in WordNet order), no pair too broad (rule 3) or of
-        two dishes (rule 4); the best rejected one explains a 0. `extra` links are added below one side (a compound under its head); `labels` (the
-        pair's) join the breadth vocabulary."""
+    def _best(self, senses_a: tuple[str, ...], senses_b: tuple[str, ...], extra: int, labels: tuple[str, str],
+              breadth: float | None = None) -> Evidence:
+        """Greatest accepted value over sense pairs (then first in WordNet order), no pair too broad (rule 3: unless
+        a staple with its kind or `likened`, WordNet defining one as like the other) or of two dishes (rule 4); the
+        best rejected one explains a 0. `extra` links are added below one side (a compound under its head); `labels`
+        (the pair's) join the breadth vocabulary; `breadth` replaces the mode's."""
         best = Evidence(0.0)
         rejected = None
         for s in senses_a:
@@ -299,8 +307,9 @@ class CookSimilarity(KinRules):
                 lcs, depth, la, lb = found
                 value = 2.0 * depth / (la + lb + 2 * depth + extra)
                 share = self.coverage(lcs, labels)
-                why = ("broad" if s != t and share > self.breadth
+                why = ("broad" if s != t and share > (self.breadth if breadth is None else breadth)
                        and not self.staple(s, t, lcs, labels[0] if lcs == s else labels[1])
+                       and not likened(self.reader, s, t)
                        else "dishes" if self.dishes(s, t, lcs) else "")
                 if why:
                     if rejected is None or value > rejected.similarity:
