@@ -198,6 +198,11 @@ def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_pa
     assert drawing in lines and lines.index(drawing) < lines.index(  # README's experiment: 2.8 s silent first
         "building the networks (REG, GEN) before the first of 4 cells ...")
     assert f"writing the report and plots ({tmp_path / 'report.md'}) ..." in lines
+    # stop 53 (nc53b): the README's quick run said nothing for 1.7-2.0 s after its bar's last line, every record
+    # parsed again from results.jsonl (6,000 cells)
+    reading = f"reading the results back ({tmp_path / 'results.jsonl'}) ..."
+    assert reading in lines and max(k for k, line in enumerate(lines) if line.startswith("experiment: ")) < \
+        lines.index(reading) < lines.index(f"writing the report and plots ({tmp_path / 'report.md'}) ...")
     assert lines.index("building the networks (REG, GEN) before the first of 4 cells ...") < next(
         k for k, line in enumerate(lines) if line.startswith("experiment: "))  # before the progress line
     quiet = run(*args, "--no-progress", "--fresh")
@@ -696,3 +701,14 @@ def test_similarity_beats_while_it_opens_wordnet(monkeypatch):
     lines = _beats_while(monkeypatch, modes, "make_similarity", "similarity", "cilantro", "banana", "--senses")
     comparing = [line for line in lines if line.startswith("comparing 2 labels in WordNet")]
     assert len(comparing) >= 3 and re.fullmatch(r"comparing .* \.\.\. \d+ s", comparing[-1]), lines
+
+
+def test_the_experiment_beats_while_it_writes_its_report(monkeypatch, tmp_path):
+    """Stop 53's pass (nc53b): the tiny experiment (`--trials 1 --goals 5`) said `writing the report and plots
+    (...) ...` once, then nothing for 9.4 s through a pipe (load 15): matplotlib's import and the plots."""
+    from foon2pddl.experiment import report
+
+    lines = _beats_while(monkeypatch, report, "write_report", "experiment", "--trials", "1", "--goals", "2",
+                         "--networks", "reg", "--solvers", "native-greedy", "-o", tmp_path)
+    writing = [line for line in lines if line.startswith("writing the report and plots")]
+    assert len(writing) >= 3 and re.fullmatch(r"writing .* \.\.\. \d+ s", writing[-1]), lines
