@@ -13,22 +13,8 @@
   the objects in it; every action that puts an object somewhere removes it from
   where it was, so an object is in or on at most one holder.
 * **Actions.** One schema per unit, from the unit's reading in the task (`relational_reading.read_units`:
-  `relational_plan.plan_unit`, `holders.relational_roles`). Per role:
-  - an object that stays where it is while it or its holder changes must be there: `(in ?bowl ?onion)`;
-  - an object that moves must be in its source holder (deleted) and goes into its
-    target (added); a source the unit does not name is left by a quantified delete
-    `(forall (?h - physical-object) (when (in ?h ?x) (not (in ?h ?x))))`, never by one
-    parameter per possible source (seven read-only bowls poured from are not 9^7 groundings); a target the unit
-    does not name is one parameter of its label per unit (the planner picks the oven);
-  - a portion (`SPLITS`) is a not-yet-made object that arrives at the target in
-    the role's output node, while the object it was taken from stays;
-  - a container FOON filled earlier and leaves out of the outputs is emptied of
-    what leaves it (`relational_plan.without`), and says so as a role;
-  - a consumed object goes to `consumed` and leaves its holder, with all of its
-    label there when the holder's node no longer lists it, and with what is in
-    or on it, two levels deep (`relational_sweep`); contents that are
-    no role of the unit follow their container's list (`holders.Flow`), by one
-    quantified conditional effect per node they can be in.
+  `relational_plan.plan_unit`, `holders.relational_roles`), written by `relational_action.unit_action` (its doc
+  says, per role, what it requires, moves, splits, empties and consumes).
 * **Init.** Kitchen objects start in the state of their node; an object whose node
   names a place starts in an object of that label whose node lists it (else one
   silent about its contents); when there is none, a holder of that label is added,
@@ -57,11 +43,9 @@ from ..model.aliases import unit_aliases
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
-from ..model.pairing import Role
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
 from . import relational_touched
-from .costs import unit_cost
 from .encode_instances import (
     GOAL_OBJECT,
     IS,
@@ -75,9 +59,9 @@ from .encode_instances import (
     object_types,
     precedes_facts,
 )
-from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header
 from .holder_words import mismatches, reported
-from .holders import Fate, attached_gaps, held_elsewhere, list_gaps, on_parts
+from .holders import Fate, attached_gaps, list_gaps, on_parts
 from .input_stitch import with_stitches
 from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
@@ -85,22 +69,19 @@ from .list_arrivals import read_arrivals
 from .list_brought import read_brought
 from .live_holders import LIVE, with_live
 from .mutual_lists import mutual_notes, read_mutual
-from .names import NameTable
 from .prune import restoring_units
 from .registry import Compiled
+from .relational_action import IN, ON, unit_action
 from .relational_init import kitchen_implied
 from .relational_objects import task_objects
-from .relational_plan import UnitPlan
 from .relational_stitch import stitch_notes, stitched
-from .relational_sweep import CONSUMED, sweep_effects
-from .restore import discards
+from .relational_sweep import CONSUMED
 from .tallies import tallied
-from .task import Action, Atom, Conditional, PlanningTask, Predicate
+from .task import Atom, PlanningTask, Predicate
 from .untouched import set_aside
 
-__all__ = ["CONSUMED", "IN", "ON", "encode_relational"]
+__all__ = ["CONSUMED", "encode_relational"]
 
-IN, ON = "in", "on"
 #: The note kinds of a relation FOON states that the encoding does not hold (`holders.attached_gaps`) and of a
 #: pair of nodes no unit makes together, read as the kitchen's (`kitchen_pairs`).
 UNHELD, AT_HAND = "relation not modelled", "assumed at hand"
@@ -160,8 +141,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     gaps: list[tuple[str, str, str, object]] = list(drops)  # (container, content, message, unit)
     precede: set[str] = set()
     container_labels = {n.label for n in nodes if describes_contents(n)} & placed
-    actions = [replace(_unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
-                                    container_labels, inside, empties[u], loose, dust, entered), unit=origin.get(u, u))
+    actions = [replace(unit_action(u, plans[u], table, const, stable, type_of, options, precede, ways[u], gaps,
+                                   container_labels, inside, empties[u], loose, dust, entered), unit=origin.get(u, u))
                for u in units]
     live = {origin[u] for u in units if u in origin}  # the stitched units the task has (objects for their labels)
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
@@ -209,192 +190,3 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
                     counted=frozenset(u for u, _ in rd.counts.firings))  # the units of the plan counted from
-
-
-def _unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode, str], stable: set[ObjectNode],
-                 type_of: dict[str, str], options: EncodeOptions, precede: set[str], ways: dict[int, list[relational_touched.Way]],
-                 gaps: list, containers: set[str], inside: dict[str, list[tuple[ObjectNode, Relation]]],
-                 empties: dict[int, list[tuple[ObjectNode, ObjectNode]]], loose: frozenset[str],
-                 dust: frozenset[ObjectNode], entered: set[ObjectNode]) -> Action:
-    """One unit's schema (see the module doc): per role its state change and its holder facts."""
-    slots, unit = plan.slots, plan.unit
-    # Containers FOON filled earlier and leaves out of the outputs are emptied of what leaves them. One of a
-    # label is a parameter (it must be in its node); several of one label (seven bowls poured into the salad
-    # bowl) are emptied by a conditional effect on whichever holds the object, else 9^7 groundings, unless what
-    # leaves one may be in another node of its label (`holders.held_elsewhere`): then each is a parameter.
-    emptied = dict(plan.emptied)
-    per_label = [slots[k].rel.role.label for k in emptied]
-    emptied = {k: n for k, n in emptied.items() if per_label.count(slots[k].rel.role.label) > 1
-               and not held_elsewhere([s.rel for s in slots], k, const)}
-    bound = [s.fate in (Fate.NEW, Fate.MOVES, Fate.CONSUMED)
-             or s.after not in (None, s.rel.role.before) or (s.rel.role.before not in stable and k not in emptied)
-             for k, s in enumerate(slots)]
-    for f in plan.flows:
-        bound[f.holder] = True
-        if f.into is not None:
-            bound[f.into] = True
-    changes = [plan.after_of(k) not in (None, s.rel.role.before) or s.fate is not Fate.STAYS
-               for k, s in enumerate(slots)]
-    grew = True
-    while grew:  # the holders a bound object's facts name are parameters; so is what sits in a changing holder
-        grew = False
-        for k, s in enumerate(slots):
-            src, dst = s.rel.source, s.rel.target
-            need = []
-            if bound[k] and src is not None and src.role is not None and src.role not in emptied:
-                need.append(src.role)
-            if dst is not None and dst.role is not None and (bound[k] or s.fate is Fate.SPLITS):
-                need.append(dst.role)
-            if src is not None and src.role is not None and not bound[k] and (s.fate is Fate.STAYS and changes[src.role]
-                    or s.fate is Fate.SPLITS and (bound[src.role] or s.rel.role.before in entered)):
-                need.append(k)  # it stays in that holder, or a portion comes out of it (of a node an action fills)
-            for j in need:
-                if not bound[j]:
-                    bound[j] = grew = True
-    names = NameTable()
-    var = [f"?{names.name(s.rel.role.label, key=k)}" for k, s in enumerate(slots)]
-    params = [(var[k], type_of[s.rel.role.label]) for k, s in enumerate(slots) if bound[k]]
-    pre: list[Atom] = []
-    add: list[Atom] = []
-    delete: list[Atom] = []
-    cond: list[Conditional] = []
-    first: dict[tuple[str, str], str] = {}
-    late: dict[tuple[Relation, str, int], str] = {}
-
-    def fresh(label: str, key, word: str = "") -> str:
-        v = f"?{names.name(f'{label} {word}'.strip(), key=key)}"
-        params.append((v, type_of[label]))
-        return v
-
-    def state(v: str, label: str, node: ObjectNode | None) -> None:
-        s_ = const[node] if node is not None else NOT_MADE
-        pre.append(Atom(IS, (v, s_)))
-        same = (label, s_)
-        if same in first:
-            pre.append(Atom(PRECEDES, (first[same], v)))
-            precede.add(label)
-        first[same] = v
-
-    def becomes(v: str, old: ObjectNode | None, new: ObjectNode | str) -> None:
-        delete.append(Atom(IS, (v, const[old] if old is not None else NOT_MADE)))
-        add.append(Atom(IS, (v, CONSUMED if isinstance(new, str) else const[new])))
-        if not isinstance(new, str) and new in stable:
-            add.append(Atom(OCCUPIED, (const[new],)))
-
-    def holder_var(place, label: str, k: int, source: bool = False) -> str | None:
-        if place.role is not None:
-            return var[place.role]
-        key = (place.relation, place.holder, k if source else -1)  # a source per object (two breads, two boards)
-        if key not in late:
-            if place.holder not in type_of:
-                return None
-            taken = [h for (rel, c, _), h in late.items() if (rel, c) == key[:2] and not source]  # the first's
-            late[key] = taken[0] if taken else fresh(place.holder, ("late", key), "here")
-            pre.extend(() if taken or source else [Atom(LIVE, (late[key],)), *(  # a target that exists (`live_holders`),
-                Atom(x.rel.source.relation.value, (late[key], var[j])) for j, x in enumerate(slots)  # the one a bound
-                if j != k and bound[j] and x.rel.source is not None and x.rel.source.role is None  # role is at under
-                and x.rel.source.holder == place.holder)])  # that name: one word, one stove (docs/pddl.md)
-        if place.holder in containers:
-            gaps.append((place.holder, label, f"{label} is {place.relation} [{place.holder}], a {place.holder} "
-                         "the unit does not name: nothing says that it lists it", unit))
-        return late[key]
-
-    moving = {s.rel.role.before for s in slots if s.fate is Fate.MOVES}
-    for k, s in enumerate(slots):
-        r = s.rel
-        label, before = r.role.label, r.role.before
-        v = var[k]
-        if s.fate is Fate.SPLITS:  # the portion: a new object where the role's output node says
-            portion = fresh(label, ("portion", k), "portion")
-            state(portion, label, None)
-            becomes(portion, None, s.portion)
-            if r.target is not None and (h := holder_var(r.target, label, k)) is not None:
-                add.append(Atom(r.target.relation.value, (h, portion)))
-        if not bound[k]:
-            if before in stable:  # else a container emptied by a conditional effect: whichever holds the object
-                pre.append(Atom(OCCUPIED, (const[before],)))
-            continue
-        state(v, label, before)
-        after = plan.after_of(k) if bound[k] else s.after
-        # what is in or on a consumed object became part of the mixture too, and so did all of its label in its
-        # holder; what is in or on a container a restoring unit empties is thrown away; a role that moves out of it
-        # goes where its node says (the gyoza filling folded from the wrapper into the dumpling)
-        sweep = [(v, node, rel, f"{node.label} in {label}", ("inside", k, node.label)) for node, rel in
-                 inside.get(label, ()) if node not in moving] if s.fate is Fate.CONSUMED or (
-                     k == 0 and discards(unit)) else []
-        if s.fate is Fate.CONSUMED:
-            becomes(v, before, CONSUMED)
-            if r.source is not None and r.source.role is not None and bound[r.source.role]:
-                sweep += [(var[r.source.role], node, rel, f"{label} alike", ("alike", k, node))
-                          for node, rel in relational_touched.alike_nodes(plan, s, inside)]
-        elif after is not None and after != before:
-            becomes(v, before, after)
-        sweep += [(v, node, rel, f"{node.label} on {label}", ("dust", k, node))  # went into what is put there
-                  for node, rel in relational_touched.dusted_nodes(plan, k, inside, dust)]
-        if s.fate is Fate.NEW:  # what FOON restates as made was there: it becomes part of the one made
-            sweep += [(var[r.target.role], node, rel, f"{label} there", ("there", k, node))
-                      for node, rel in relational_touched.restated_nodes(plan, s, inside)]
-        cond += sweep_effects(sweep, lambda word, key: names.name(word, key=key), const, type_of, inside)
-        src, dst = r.source, r.target
-        if s.fate in (Fate.STAYS, Fate.SPLITS) and src is not None and src.role is not None and bound[src.role]:
-            pre.append(Atom(src.relation.value, (var[src.role], v)))
-            if s.fate is Fate.STAYS and dst is not None and dst.relation != src.relation:
-                delete.append(Atom(src.relation.value, (var[src.role], v)))
-                add.append(Atom(dst.relation.value, (var[src.role], v)))
-        if s.fate in (Fate.MOVES, Fate.CONSUMED) and src is not None:
-            h = None
-            if (src.role is not None and bound[src.role]) or (src.role is None and s.fate is Fate.CONSUMED
-                                                               and not s.late_empties):
-                h = holder_var(src, label, k, source=True)
-            fact = Atom(src.relation.value, (h, v)) if h is not None else None
-            if fact is not None:
-                pre.append(fact)
-                delete.append(fact)
-            else:
-                if src.role in emptied:  # a container FOON filled earlier: emptied of it, whichever it is
-                    f_ = f"?{names.name(f'{src.holder} {k}', key=('emptied', k))}"
-                    there = Atom(src.relation.value, (f_, v))
-                    old, new = slots[src.role].rel.role.before, emptied[src.role]
-                    was = Atom(IS, (f_, const[old]))
-                    now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
-                    cond.append(Conditional((there, was), add=tuple(now), delete=(was,), var=f_,
-                                            type=type_of[slots[src.role].rel.role.label]))
-                f_ = f"?{names.name(f'from {k}', key=('from', k))}"
-                leave = Atom(src.relation.value, (f_, v))
-                cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
-                for old, new in empties.get(k, ()):  # whichever holder the units filled with it: emptied of it,
-                    if any(bound[j] and changes[j] and x.rel.role.before == old for j, x in enumerate(slots)):
-                        continue  # but not one the unit itself changes out of that state: it says how
-                    was = Atom(IS, (f_, const[old]))
-                    now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
-                    cond.append(Conditional((leave, was), add=tuple(now), delete=(was,), var=f_, type=ROOT_TYPE))
-        elif s.fate in (Fate.MOVES, Fate.CONSUMED) and label in loose:  # it leaves the holder FOON does not name
-            f_ = f"?{names.name(f'from {k}', key=('from', k))}"
-            for rel in Relation:
-                leave = Atom(rel.value, (f_, v))
-                cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
-        if s.fate in (Fate.MOVES, Fate.NEW) and dst is not None:
-            h = holder_var(dst, label, k)
-            if h is not None:
-                add.append(Atom(dst.relation.value, (h, v)))
-    for i, flow in enumerate(plan.flows):
-        label = ways[i][0][0].label if ways.get(i) else flow.label  # the object label the list's name reads as
-        if label not in type_of:
-            continue
-        y = f"?{names.name(f'{label} in it', key=('flow', i))}"
-        for node, rel, new in ways.get(i, ()):
-            there, was = Atom(rel.value, (var[flow.holder], y)), Atom(IS, (y, const[node]))
-            now = [Atom(IS, (y, CONSUMED if new is None else const[new]))]
-            if flow.into is not None:
-                now.append(Atom(IN, (var[flow.into], y)))
-            cond.append(Conditional((there, was), add=tuple(now), delete=(there, was), var=y, type=type_of[label]))
-    # a role the unit leaves as it is ends in the node a late empty turns its node into (the oven the tray leaves), by
-    # the emptied node's label (the name the unit uses may be another, FOON-GEN's `pan` for the cookware)
-    emptied_by = {(old.label, old): new for j, s in enumerate(slots) if s.late_empties for old, new in empties.get(j, ())}
-    expected = [Role(s.rel.role.label, s.rel.role.before, None if s.fate in (Fate.SPLITS, Fate.CONSUMED) else
-                     plan.after_of(k) or emptied_by.get((s.rel.role.label, s.rel.role.before)))
-                for k, s in enumerate(slots)]
-    return Action(table.name(f"{unit.motion.label} u{u}", key=("unit", u)), pre=tuple(dict.fromkeys(pre)),
-                  add=tuple(dict.fromkeys(add)), delete=tuple(d for d in dict.fromkeys(delete) if d not in add),
-                  params=tuple(params), conditional=tuple(cond), cost=unit_cost(unit, options.costs, options.rates),
-                  unit=u, comment=unit_comment(unit, u), roles=tuple(zip(expected, bound, strict=True)))
