@@ -5,7 +5,7 @@ never return an object to a kitchen state unless one of them does. In `relationa
 empties its source leaves a bowl `empty`, a measuring cup emptied into the bowl is `measuring cup (empty)`
 again, and a later unit of the plan that takes `bowl (empty)` can take that bowl. `reused` runs the unfolded
 plan forwards (each unit fired its times, in plan order) on objects: a role takes an object in its node when
-one is there (`instance_counts.lanes`' order: roles read the state before the firing, its changes apply
+one is there (`instance_lanes.lanes`' order: roles read the state before the firing, its changes apply
 after), and a kitchen node gets a new object only when none is there at that moment. Only an object left in a
 kitchen node that names no place and lists nothing (`_alone`: `bowl (empty)`, `spoon (clean)`) is taken there
 again, and, as the unfolding counts it, a portion a unit makes in the kitchen node it reads: an object left in

@@ -33,7 +33,7 @@
   strict order on the instances of a label, says so in plain STRIPS (and
   halves the symmetric groundings). A unit whose labels have no instances
   is dropped.
-* **Lanes.** With derived counts, static facts (`instance_counts.lanes`) say
+* **Lanes.** With derived counts, static facts (`instance_lanes.lanes`) say
   what the unfolded plan does with each instance when run on these
   instances: `(lane ?x s t)` per state change (`(lane ?x s s)` for the states
   it is in) and `(together ?a ?b)` for instances changed by one firing. Every
@@ -69,7 +69,8 @@ from ..model.kitchen import Kitchen
 from ..model.pairing import unit_roles
 from .costs import goal_cost, unit_cost
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .instance_counts import InstanceCounts, count_reasons, derive_counts, lanes
+from .instance_counts import InstanceCounts, count_reasons, derive_counts
+from .instance_lanes import lanes
 from .names import NameTable
 from .prune import restoring_units
 from .task import Action, Atom, Instance, PlanningTask, Predicate
