@@ -179,6 +179,15 @@ def test_analyze_says_it_draws_the_plot(every_step_speaks, tmp_path):
     assert any(line.startswith("projecting 101 units") for line in r.stderr.splitlines())
 
 
+def test_analyze_says_it_writes_the_graphml_files(every_step_speaks, tmp_path):
+    """Stop 53's pass (nc53b): `analyze tests/data/foon-subgraphs --top 10 --plot central.png --graphml graphs/`
+    (datasets.md) said nothing for 1.9 s at load 18 (2.2-2.4 s in bench.silence, stops 52-53) between betweenness's
+    last line and `wrote graphs/foon.graphml`: the three graphs built and serialized, outside every step."""
+    said = run("analyze", "--graphml", tmp_path / "graphs").stderr.splitlines()
+    writing = f"writing the GraphML files to {tmp_path / 'graphs'} ..."
+    assert writing in said and said.index(writing) < said.index(f"wrote {tmp_path / 'graphs' / 'foon.graphml'}"), said
+
+
 def test_analyze_says_it_draws_the_plot_before_it_starts_at_the_default_threshold(tmp_path):
     """Drawing the plot (matplotlib's import, the figure) took 2.3 s at load 15 after a silent wait for the
     threshold: it is announced at once, not only after 1.5 s of silence."""

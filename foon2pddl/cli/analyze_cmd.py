@@ -43,7 +43,9 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
     result = analyze(net.foon, int(level), step=slow_step)  # says what it does, and how far betweenness is
     try:
         if graphml is not None:
-            for p in write_graphml(graphml, graphml_graphs(net.foon, result)):
+            with slow_step(f"writing the GraphML files to {graphml}"):  # the graphs and their XML: 1.9 s at load 18
+                written = write_graphml(graphml, graphml_graphs(net.foon, result))
+            for p in written:
                 click.echo(f"wrote {p}", err=True)
         if plot is not None:
             with slow_step(f"drawing {plot}", after=0, beat=True):  # matplotlib and the figure: 2.3 s at load 15, 15 s at 20
