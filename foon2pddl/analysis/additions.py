@@ -42,6 +42,8 @@ class Additions:
     sets: tuple[tuple[ObjectNode, ...], ...]
     max_size: int
     exact: bool
+    #: False when no set of any size works (every way to the goal needs a node that itself needs it)
+    possible: bool = True
 
     @property
     def smallest(self) -> tuple[tuple[ObjectNode, ...], ...]:
@@ -143,7 +145,7 @@ def first_additions(reach: Reachability, goal_nodes: Iterable[ObjectNode], addab
     if addable is not None:
         addable = frozenset(addable)
     if not _some_set_works(reach, goal_nodes, addable):
-        return Additions((), sizes[-1], True)
+        return Additions((), sizes[-1], True, possible=False)
     exact = True
     for size in sizes:
         fixes = smallest_additions(reach, goal_nodes, addable, max_size=size, keep=keep)

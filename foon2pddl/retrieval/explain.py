@@ -49,6 +49,8 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
     fixes = first_additions(reach, goal.candidates, addable, sorted({min(3, max_size), *range(4, max_size + 1)}))
     if fixes.sets:
         return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
+    if not fixes.possible:  # the nodes no unit makes a kitchen lacks too would not help: the cycle is the reason
+        return f"{head}; {_cycle_text(reach, goal, max_size)}"
     exact = fixes.exact
     if exact:
         leaves = blockers(reach, goal.candidates)
