@@ -721,3 +721,33 @@ def test_the_experiment_beats_while_it_writes_its_report(monkeypatch, tmp_path):
                          "--networks", "reg", "--solvers", "native-greedy", "-o", tmp_path)
     writing = [line for line in lines if line.startswith("writing the report and plots")]
     assert len(writing) >= 3 and re.fullmatch(r"writing .* \.\.\. \d+ s", writing[-1]), lines
+
+
+def test_after_a_beating_step_the_silence_counts_from_its_last_line(monkeypatch):
+    """Through a pipe, `plan --goal guacamole --planner pyperplan` beat while it looked the engine up, then planned
+    without a line: 2.2 s between the lookup's last beat and the result (nc53a's pass, load 17). The step after a
+    beating one counted its budget from that step's end, which may come up to `BEAT` seconds after its last
+    line: `BEAT` + `AFTER` of silence. It counts from the last line said."""
+    said = _Said()
+    monkeypatch.setattr(progress, "click", said)
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    with progress.slow_step("looking up planner 'pyperplan'", beat=True):  # BEAT: an hour, no beat comes
+        assert said.wait_for(1)
+        time.sleep(0.3)  # the long call goes on after the step's last line
+    monkeypatch.setattr(progress, "AFTER", 0.2)
+    with progress.slow_step("planning 'guacamole'"):
+        pass  # a quick step: quiet within its budget, but the budget was spent while the lookup ended
+    assert said.lines == ["looking up planner 'pyperplan' ...", "planning 'guacamole' ..."]
+
+
+def test_after_a_step_said_on_a_terminal_the_silence_counts_from_its_end(monkeypatch, capsys):
+    """On a terminal a step's line counts its seconds and ends with its time as the step ends: the next step's
+    budget counts from there."""
+    monkeypatch.setattr(progress.sys.stderr, "isatty", lambda: True, raising=False)
+    monkeypatch.setattr(progress, "AFTER", 0.0)
+    with progress.slow_step("opening WordNet", beat=True):
+        time.sleep(0.3)
+    monkeypatch.setattr(progress, "AFTER", 0.2)  # spent since the step's first line, not since its last
+    with progress.slow_step("next"):
+        pass
+    assert "next" not in capsys.readouterr().err
