@@ -190,12 +190,14 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         plans, drops, said, portions, roles_of = plans_of(silent, sole)
 
         def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-            key = ("counts", id(net), need, id(roles_of), narrow or None)  # `net`: `inp.foon` or `st.through`
+            # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
+            # names no other network while the memo lives
+            key = ("counts", id(net), need, id(roles_of), narrow or None)
             if key not in memo:
-                memo[key] = derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen, inp.candidates,
-                                          stated=stated, overrides=overrides, roles_of=roles_of, together=True,
-                                          stitched=True, reuse=True)
-            return memo[key]
+                memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
+                                               inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
+                                               together=True, stitched=True, reuse=True)
+            return memo[key][1]
         counted = [(inp.foon, count(inp.foon, st.own))]
         if st.origin and narrow is None:
             counted.append((st.through, count(st.through, st.needed)))
