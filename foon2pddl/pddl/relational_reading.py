@@ -185,28 +185,34 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = plans, drops, said, portions, roles_of
         return memo[key]
 
+    def count(net: Foon, need: tuple[int, ...], roles_of: RolesOf) -> InstanceCounts:  # objects for a plan in `net`
+        # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
+        # names no other network while the memo lives
+        key = ("counts", id(net), need, id(roles_of), narrow or None)
+        if key not in memo:
+            memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
+                                           inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
+                                           together=True, stitched=True, reuse=True)
+        return memo[key][1]
+
+    def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
+        counted = [(inp.foon, count(inp.foon, st.own, roles_of))]
+        if st.origin and narrow is None:
+            counted.append((st.through, count(st.through, st.needed, roles_of)))
+        elif narrow is not None and (now := _as_now(inp.foon, st)) is not None:
+            other = count(now, st.own, roles_of)  # small: each unit taking an object as a later unit left it, when fewer
+            counted = [(now, other)] if other.total < counted[0][1].total else counted
+        return counted
+
     def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
         silent = quiet(speakers)
-        plans, drops, said, portions, roles_of = plans_of(silent, sole)
-
-        def count(net: Foon, need: tuple[int, ...]) -> InstanceCounts:  # objects for FOON's plan and the stitched one
-            # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
-            # names no other network while the memo lives
-            key = ("counts", id(net), need, id(roles_of), narrow or None)
-            if key not in memo:
-                memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
-                                               inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
-                                               together=True, stitched=True, reuse=True)
-            return memo[key][1]
-        counted = [(inp.foon, count(inp.foon, st.own))]
-        if st.origin and narrow is None:
-            counted.append((st.through, count(st.through, st.needed)))
-        elif narrow is not None and (now := _as_now(inp.foon, st)) is not None:
-            other = count(now, st.own)  # small: each unit taking an object as a later unit left it, when fewer
-            counted = [(now, other)] if other.total < counted[0][1].total else counted
-        again = _rest_stays(sole, counted)
-        if again:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
-            return read(speakers, sole - again)
+        while True:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
+            plans, drops, said, portions, roles_of = plans_of(silent, sole)
+            counted = counted_by(roles_of)
+            again = _rest_stays(sole, counted)
+            if not again:
+                break
+            sole -= again  # `sole` shrinks every round: at most |sole| rounds
         counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
