@@ -8,6 +8,7 @@ from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, ObjectNode
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 
@@ -27,8 +28,21 @@ def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode, **options):
                       Goal(GoalSpec(goal_node.label), (goal_node,)), **options)
 
 
-def clean_dish_plan(path: Path):
-    """`clean_plan` of a recipe file's (first) dish from its default kitchen, 60 s."""
+def _dish_goal(path: Path) -> tuple[Foon, Goal]:
+    """A recipe file's network and its (first) dish as the goal."""
     foon, _ = load([path])
     dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
-    return clean_plan(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), time_limit=60)
+    return foon, resolve_goal(spec_of_node(dish), foon)
+
+
+def clean_dish_plan(path: Path):
+    """`clean_plan` of a recipe file's (first) dish from its default kitchen, 60 s."""
+    foon, goal = _dish_goal(path)
+    return clean_plan(foon, default_kitchen(foon), goal, time_limit=60)
+
+
+def instances_objects(path: Path) -> int:
+    """How many objects the `instances` problem of a recipe file's (first) dish declares (the floor `relational`
+    is held to, dish by dish)."""
+    foon, goal = _dish_goal(path)
+    return len(compile_goal(foon, default_kitchen(foon), goal, "instances").task.objects)

@@ -6,12 +6,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, inside, n
-from relational_checks import clean_dish_plan, clean_unit_plan
+from relational_checks import clean_dish_plan, clean_unit_plan, instances_objects
 
-from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
-from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.input_stitch import stitches
 
@@ -47,8 +46,5 @@ def test_chocolate_chip_muffins_make_the_batter_once():
     # FOON's plan fires it, every unit making the batter fired twice (68 objects in the problem, `instances` 52)
     path = DATA / "ACT-0009-chocolate_chip_muffin.txt"
     outcome = clean_dish_plan(path)
-    foon, _ = load([path])
-    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
-    instances = compile_goal(foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon), "instances")
-    assert len(outcome.task.objects) < len(instances.task.objects) and outcome.compiled.narrowed
+    assert len(outcome.task.objects) < instances_objects(path) and outcome.compiled.narrowed
     assert [x.label for x in outcome.task.instances].count("muffin pan") == 1

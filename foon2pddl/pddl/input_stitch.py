@@ -40,7 +40,9 @@ pick-and-place's `oven (contains {pizza pan}, on, preheated)` with `pizza pan (c
 [oven])`, which only the bake makes, and the bake leaves `oven (on)`; and a made container node as the one
 another unit taking it leaves listing more, when the unit's own output lists that more and no object of the unit
 is it (`_held_before`: the salt's sprinkle takes the pot the cayenne's sprinkle takes too, and its output lists
-the cayenne pepper).
+the cayenne pepper); and a made container node listing what a mixture another unit taking it makes there was made
+of, as that unit leaves it, when FOON names the mixture by its parts again where it is taken (`_mixed_in`: the
+caesar salad's sprinkle takes the bowl of lettuce, crouton and dressing the mix turns into the salad mix).
 
 What a stitch drops or assumes is said (`Stitch.describe`): the states N has that M lacks are assumed (`uncooked`),
 those M has that N lacks are dropped. Only words are added (a list's items too), or a contents list dropped from a
@@ -73,6 +75,7 @@ class Stitch:
     taker: FunctionalUnit = field(compare=False, repr=False)
     left_by: FunctionalUnit | None = field(default=None, compare=False, repr=False)  # a made input: the unit
     held: bool = field(default=False, compare=False, repr=False)  # `_held_before` (else `_left_by`) read it
+    mixed: str = field(default="", compare=False, repr=False)  # `_mixed_in` read it: the mixture `left_by` made
 
     @property
     def assumed(self) -> tuple[str, ...]:
@@ -88,6 +91,10 @@ class Stitch:
         """`shake takes brussel sprout (...), which no unit makes, as brussel sprout (...): assumes uncooked`."""
         said = [f"{w} {', '.join(x)}" for w, x in (("assumes", self.assumed), ("drops", self.dropped)) if x]
         by = self.left_by.motion.label if self.left_by is not None else ""
+        if self.mixed:
+            return (f"{self.taker.motion.label} takes {self.node.describe()} as {self.reads_as.describe()}, which the "
+                    f"{by} taking that node leaves: the {self.mixed} it makes there lists "
+                    f"{', '.join(sorted(listed(self.node)))}")
         if self.held:
             return (f"{self.taker.motion.label} takes {self.node.describe()} as {self.reads_as.describe()}, which the "
                     f"{by} taking that node leaves: its output lists {', '.join(sorted(listed(self.reads_as) - listed(self.node)))} "
@@ -160,6 +167,7 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
             if n in produced:
                 found.extend(Stitch(u, n, m, unit, foon.units[b]) for m, b in _left_by(foon, made, unit, n))
                 found.extend(Stitch(u, n, m, unit, foon.units[b], True) for m, b in _held_before(foon, u, n))
+                found.extend(Stitch(u, n, m, unit, foon.units[b], mixed=x) for m, b, x in _mixed_in(foon, u, n))
                 continue
             if (p := _place(n, unit)) is None:
                 pick = [m for m in ends.get(n.label, ()) if set(made[m]) - {u} and _words_only_added(n, m)]
@@ -274,6 +282,31 @@ def _held_before(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode,
     found = [(o, v) for v in foon.consumers.get(node, ()) if v != u for o in foon.units[v].outputs
              if o.label == node.label and listed(o) == listed(node) | extra and _rest_same(o, node)]
     return found[:1] if len({m for m, _ in found}) == 1 else []
+
+
+def _mixed_in(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode, int, str]]:
+    """[(M, the unit making it, the mixture's label)] when unit `u` takes the container node `node` listing items
+    no object of the unit is, and exactly one other unit taking `node`, needing nothing `u` makes, leaves its label
+    as M, `node` listing only a mixture X instead, and makes X there listing exactly those items, and a unit takes
+    X with a node of that label listing them all (FOON names the mixture by its parts there too): the caesar
+    salad's sprinkle takes `bowl (contains {lettuce, crouton, salad dressing})`, which the mix taking it leaves
+    `bowl (contains {salad mix})` beside `salad mix (contains {lettuce, crouton, salad dressing}, in [bowl])`, and
+    the last mix takes that salad mix with the bowl listing the lettuce, the crouton and the dressing. The greek
+    salad's grind, which puts in the salt its mix takes, comes before it. O(takers of the node x outputs^2)."""
+    unit, items = foon.units[u], listed(node)
+    objects = {x.label for x in (*unit.inputs, *unit.outputs)}
+    names = dict(unit_aliases(unit))
+    if not items or any(x in objects or names.get(x, x) in objects for x in items):
+        return []
+    found = {(o, v, x) for v in foon.consumers.get(node, ()) if v != u and node not in foon.units[v].outputs
+             and not set(unit.outputs) & set(foon.units[v].inputs)
+             for o in foon.units[v].outputs if o.label == node.label and len(listed(o)) == 1 and _rest_same(o, node)
+             for x in foon.units[v].outputs if {x.label} == listed(o) and listed(x) == items
+             and (p := _place(x, foon.units[v])) is not None and p[1] == node.label}
+    named = [(o, v, x.label) for o, v, x in found if any(
+        any(h.label == node.label and items <= listed(h) for h in foon.units[w].inputs)
+        for w in foon.consumers.get(x, ()))]
+    return sorted(named, key=lambda f: (f[1], f[2]))[:1] if len({m for m, _, _ in named}) == 1 else []
 
 
 def said_less(node: ObjectNode, made: ObjectNode) -> bool:
