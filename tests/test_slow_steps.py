@@ -65,6 +65,17 @@ def test_a_step_that_spoke_restarts_the_budget(monkeypatch, capsys):
     assert steps_said(capsys, "after it") == "announced ...\n"
 
 
+def test_through_a_pipe_the_silence_after_a_step_counts_from_its_last_line(monkeypatch, capsys):
+    """Stop 53's pass (nc53b): `check tests/data/foon-subgraphs` through a pipe went 2.2 s (load 10) from the last
+    beat of `opening WordNet ...` to `checking ... for defects ...`: a log has no closing line, and the next step's
+    budget counted from the WordNet step's end, up to BEAT + AFTER after its last line."""
+    monkeypatch.setattr(progress, "AFTER", 0.2)
+    progress.begin()
+    with progress.slow_step("one long call", after=0):
+        time.sleep(0.3)  # said at once, then silent past the budget before it ends
+    assert steps_said(capsys, "the next step") == "one long call ...\nthe next step ...\n"
+
+
 def test_a_step_inside_an_announced_one_counts_from_its_own_start(monkeypatch, capsys):
     monkeypatch.setattr(progress, "AFTER", 3600.0)
     monkeypatch.setattr(progress, "_quiet_since", time.monotonic() - 7200.0)

@@ -3,8 +3,9 @@
 `slow_step(what)` wraps a step. A watcher thread waits until the command has been
 silent for `AFTER` seconds: counted from the command's start (the process's, when
 run as `foon2pddl`), or from the end of the last step that said what it did (through
-a pipe, a beating step's last line: its call may go on for up to `BEAT` seconds after
-it), so that several short steps in a row cannot add up to a long silence. A step done by
+a pipe, which has no closing line, from that step's last line: its call may go on for up
+to `BEAT` seconds after a beat, or to its end after a step's one line), so that several
+short steps in a row cannot add up to a long silence. A step done by
 then prints nothing (fast runs keep their output). Otherwise it prints `what ...`
 at once; on a terminal the line then counts the seconds and ends with the step's
 time, and in a log it is one line (a step that is one long call, `beat=True`, adds a line with its seconds every
@@ -91,7 +92,7 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
         after = max(0.0, since + AFTER - start)
     done, said = threading.Event(), threading.Event()
     first = start if above is None else above[1]  # a series's line counts from its first step's start
-    last_beat: list[float] = []  # through a pipe, when a beating step said its last line
+    last_line: list[float] = []  # through a pipe, when a said step said its last line (no closing line follows)
 
     def watch() -> None:
         global _quiet_since, _series_line
@@ -102,10 +103,10 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
         _series_line = None
         if not tty:
             click.echo(f"{text()} ...", err=True)
-            last_beat.append(time.monotonic())
+            last_line.append(time.monotonic())
             while beat and not done.wait(BEAT):
                 click.echo(f"{text()} ... {time.monotonic() - first:.0f} s", err=True)
-                last_beat.append(time.monotonic())
+                last_line.append(time.monotonic())
             return
         click.echo(f"{_REDRAW_ABOVE if above else ''}{text()} ...", err=True, nl=False)
         while not done.wait(1.0):
@@ -121,8 +122,8 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
     finally:
         done.set()
         watcher.join()
-        if said.is_set():  # its line no longer says what the command does; a beat's silence goes on after it
-            _quiet_since = last_beat[-1] if beat and last_beat else time.monotonic()
+        if said.is_set():  # its line no longer says what the command does: silent since its last line
+            _quiet_since = last_line[-1] if last_line else time.monotonic()  # a terminal's closing line: its end
 
 
 def inputs(paths) -> str:
