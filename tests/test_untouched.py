@@ -1,7 +1,8 @@
 """`pddl.untouched`: objects no action can touch are set aside from the problem, and no plan changes.
 
 Two oracles: exhaustive search of small random tasks (every state reachable in the whole task, its facts that
-name no object set aside, is a state reachable in the smaller one, and back), and the relational whipped
+name no object set aside and that a condition or the goal reads, is a state reachable in the smaller one, and
+back), and the relational whipped
 cream, whose problem leaves out the carton and the spatula while its plan still names them.
 """
 
@@ -86,7 +87,13 @@ def test_setting_aside_keeps_every_reachable_state_of_the_objects_kept(task):
     assert aside == untouched(task) and {o for o, _ in small.objects} == {o for o, _ in task.objects} - aside
     whole = _reachable(task, type_closure(task))
     kept = _reachable(small, {o: ts for o, ts in type_closure(small).items() if o not in aside})
-    assert {frozenset(a for a in s if not aside & set(a.args)) for s in whole} == kept
+    reads = [a for act in task.actions for a in (*act.pre, *(x for c in act.conditional for x in c.when))]
+    read = [*reads, *task.goal]  # a fact nothing reads (write-only) changes no plan: compared without them
+
+    def seen(state):
+        return frozenset(a for a in state if any(r.predicate == a.predicate and len(r.args) == len(a.args) and all(
+            x == y or x.startswith("?") for x, y in zip(r.args, a.args, strict=True)) for r in read))
+    assert {seen(a for a in s if not aside & set(a.args)) for s in whole} == {seen(s) for s in kept}
     assert set(small.initial_facts) == set(task.init)
 
 
@@ -137,3 +144,29 @@ def test_whipped_cream_problem_leaves_out_the_carton_and_spatula_and_the_plan_st
     assert str(out.status) == "solved" and not replay(out.trace).disagreements
     named = {b.object for s in out.trace.steps for b in s.bindings}
     assert {"carton_1", "spatula_1"} <= named
+
+
+def test_an_object_whose_quantified_effect_sets_a_fact_nothing_reads_is_set_aside():
+    # (occupied s1) is in no precondition, no conditional effect's condition and not the goal: setting it changes
+    # no plan, so the egg that would set it is no reason to keep the egg (the bloody mary's glass of ice, emptied
+    # by the pour that takes the ice out of it, sets `(occupied glass_empty)`, which no unit reads)
+    empties = Conditional((Atom("is", ("?y", "s0")),), add=(Atom("occupied", ("s1",)),), var="?y", type="egg")
+    act = Action("go", (Atom("is", ("?p", "s0")),), (Atom("is", ("?p", "s2")),), params=(("?p", "bowl"),),
+                 conditional=(empties,))
+    init = (Atom("is", ("a", "s0")), Atom("is", ("c", "s0")), Atom("is", ("d", "s1")))
+    task = PlanningTask("d", "p", "relational", 3, (), (act,), init, (Atom("is", ("a", "s2")),), types=TYPES,
+                        objects=OBJECTS)
+    assert untouched(task) == {"b", "c", "d"}
+    reader = Action("read", (Atom("occupied", ("?s",)),), (Atom("is", ("?p", "s1")),),
+                    params=(("?p", "bowl"), ("?s", "state")))
+    assert untouched(replace(task, actions=(act, reader))) == {"b", "d"}  # a condition over any state reads it
+
+
+def test_teriyaki_patty_problem_leaves_out_the_bowl_its_sugar_is_poured_out_of_and_plans():
+    foon, _ = load([SUBGRAPHS / "0057-teriyaki_burger_patty.txt"])
+    goal = resolve_goal(spec_of_node(sorted(x for x in foon.nodes if x.dish is not None)[0]), foon)
+    kitchen = default_kitchen(foon)
+    task = compile_goal(foon, kitchen, goal, "relational", narrow=True).task
+    assert "bowl_2" in {o for o, _ in task.aside} and len(task.objects) == 14
+    out = plan(foon, kitchen, goal, "relational", time_limit=60)
+    assert str(out.status) == "solved" and not replay(out.trace).disagreements

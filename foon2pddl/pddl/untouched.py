@@ -8,16 +8,20 @@ has one and every ground precondition (`(occupied s)`) is reachable; a parameter
 state) takes the constants, and `(is ?p ?s)` over such a parameter needs only some state of `?p`. The fixpoint adds each such action's
 effects for the objects its parameters can take, and each conditional effect's, for the objects its
 quantified variables can take. An object is *untouched* when no parameter of any action can take it, and
-every conditional effect quantified over it that it can meet changes only facts that name it (one that
-would set an `(occupied s)`, or change a fact of another object, keeps it): a carton a portion of cream is
-poured from while it stays in the carton, a spatula only an `(occupied s)` precondition checks, the water
-in a kitchen bowl that only a quantified effect carries along.
+every conditional effect quantified over it that it can meet changes only facts that name it or that no
+condition and no goal can read (*write-only*: an atom no precondition, effect condition or goal atom
+matches, a variable matching anything); one that would set an `(occupied s)` some precondition reads, or
+change a fact of another object, keeps it: a carton a portion of cream is poured from while it stays in
+the carton, a spatula only an `(occupied s)` precondition checks, the water in a kitchen bowl that only a
+quantified effect carries along, the bloody mary's glass of ice, which the pour empties, setting an
+`(occupied glass_empty)` nothing reads.
 
 Why leaving them out keeps every plan (the PDDL has no negative condition, no quantified precondition,
 and a 0-ary goal): no applicable ground action binds an untouched object, so every ground action a plan
 can apply is one of the smaller task; each effect of it on an untouched object changes only facts that
-name that object; so the facts that name no untouched object evolve alike in both tasks, step by step,
-and the goal and every precondition a plan meets are such facts.
+name that object or write-only ones; so the facts that name no untouched object and are not write-only
+evolve alike in both tasks, step by step, and the goal and every precondition a plan meets are such
+facts.
 
 `set_aside(task)` moves them and their initial facts to `PlanningTask.aside`/`aside_init`: the problem
 the planner is given leaves them out, the plan's replay (`initial_facts`) still holds them, so a plan
@@ -46,6 +50,14 @@ def _met(atoms: Iterable[Atom], ground: set[Atom], objects: dict) -> bool:
     return all(a in ground for a in atoms if _ground(a) and not any(x in objects for x in a.args))
 
 
+def _read(atom: Atom, reads: Iterable[Atom]) -> bool:
+    """Whether a condition or the goal can read `atom`: an atom of its predicate whose every argument is a
+    variable or `atom`'s own."""
+    return any(r.predicate == atom.predicate and len(r.args) == len(atom.args)
+               and all(x == y or x.startswith("?") or y.startswith("?") for x, y in zip(r.args, atom.args, strict=True))
+               for r in reads)
+
+
 def untouched(task: PlanningTask) -> frozenset[str]:
     """The task's objects (names) no action can touch and that touch nothing (module doc)."""
     types = type_closure(task)
@@ -72,6 +84,8 @@ def untouched(task: PlanningTask) -> frozenset[str]:
                                                         for s in need)  # a state a parameter names: any it has
                 and all(Atom(p, (x,)) in unary for p in static)]
 
+    reads = [a for act in task.actions for a in (*act.pre, *(x for c in act.conditional for x in c.when))]
+    reads += task.goal
     # an object an action names itself is kept, and a fact naming it is taken as possible
     touched: set[str] = {x for act in task.actions for c in (act.pre, act.add, act.delete, *(
         y.atoms() for y in act.conditional)) for a in c for x in a.args if x in states}
@@ -107,7 +121,7 @@ def untouched(task: PlanningTask) -> frozenset[str]:
                 quant = {v: takers(v, t, c.when) for v, t in c.quantified}
                 add(c.add, {**bind, **quant})
                 for v, xs in quant.items():
-                    if any(v not in a.args for a in (*c.add, *c.delete)):
+                    if any(v not in a.args and _read(a, reads) for a in (*c.add, *c.delete)):
                         leaky.update(xs)
     return frozenset(x for x in objects if x not in touched and x not in leaky)
 
