@@ -29,7 +29,9 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     `brown sugar`, there before the `sugar` is poured in, is no other name for it. A name only an input's place
     uses, of an object the unit leaves in or on one role whose input node's `contains` list names it, means that
     role (the sprinkle's pie `on [baking try]`, left `on [baking tray]` beside `baking tray (contains {apple
-    pie})`, `0086-apple_turnover.txt:523`). Sorted; O(n r^2).
+    pie})`, `0086-apple_turnover.txt:523`). Not a name only input nodes' places use, of objects the role's
+    output node newly lists (`_source`): the unit moves them out of it into the role (the water ice `in [glass]`
+    poured into the highball glass, `0076-bloody_mary.txt:25`). Sorted; O(n r^2).
     """
     roles = unit_roles(unit)
     labels = {r.label for r in roles}
@@ -46,7 +48,7 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
     out = {}
     for name in sorted(set(users) - labels):
         if len(match := [lab for lab in sorted(labels) if head_of(name, lab) and lab not in listers.get(name, ())]) == 1:
-            if not (name in stays and match[0] in listers):
+            if not (name in stays and match[0] in listers) and not _source(roles, name, match[0]):
                 out[name] = match[0]
     lists = {x for r in roles for n in (r.before, r.after) if n for s in n.states if s.label != "with"  # not a place
              for x in (*s.ingredients, s.related if s.label == "contains" else "")} - {""}
@@ -66,3 +68,15 @@ def unit_aliases(unit: FunctionalUnit) -> tuple[tuple[str, str], ...]:
                                                                  for s in r.before.states) for r in roles):
             out[name] = x[1]
     return tuple(sorted(out.items()))
+
+
+def _source(roles, name: str, label: str) -> bool:
+    """`name` is used by input nodes' places only (no list, no output node names it), and the output node of a
+    role of `label` newly lists every object placed there (its input node does not): where the unit moves them
+    from, not that role. O(r)."""
+    moved = [r.label for r in roles if r.before is not None and name in (c for _, c in places(r.before))]
+    if not moved or any(name in listed(n) or n is r.after and name in (c for _, c in places(n))
+                        for r in roles for n in (r.before, r.after) if n is not None):
+        return False
+    return any(r.label == label and r.before is not None and r.after is not None
+               and all(x in listed(r.after) and x not in listed(r.before) for x in moved) for r in roles)

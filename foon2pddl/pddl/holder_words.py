@@ -126,7 +126,9 @@ def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
                  starts: Iterable[ObjectNode | None] = ()) -> tuple[tuple[str, str], ...]:
     """The units' aliases (rule 0) for a whole task, for its replay, plus those of the objects' start nodes
     (`starts`: `bowl (contains {rice})` in a kitchen whose only rice is `white rice`, read against all the
-    task's `labels`). A name that is itself the label of an object of the task, or that is read as different
+    task's `labels`; a place only where a start node of the label it reads lists the object: the kitchen's
+    `oil (in [pan])` beside `cooking pan (contains {oil})`, not the bloody mary's `water ice (in [glass])`
+    beside an empty highball glass). A name that is itself the label of an object of the task, or that is read as different
     labels, is no alias. Sorted pairs."""
     have = set(labels)
     seen: dict[str, set[str]] = {}
@@ -139,12 +141,14 @@ def task_aliases(units: Iterable[FunctionalUnit], labels: Iterable[str],
             if ch == " ":
                 tails.setdefault(lab[k + 1:], set()).add(lab)
     matches: dict[str, list[str]] = {}  # a name's labels by the head-noun rule (`head_of`), read once per name
+    starts = [x for x in starts if x is not None]
     for node in starts:
         for name in (*listed(node), *(c for _, c in places(node))):
             if name not in matches:
                 ends = {name[k + 1:] for k, ch in enumerate(name) if ch == " "} & have
                 matches[name] = sorted((tails.get(name, set()) | ends) - {name})
-            if name not in have and len(matches[name]) == 1:
+            if name not in have and len(matches[name]) == 1 and (name in listed(node) or any(
+                    x.label == matches[name][0] and node.label in listed(x) for x in starts)):
                 seen.setdefault(name, set()).add(matches[name][0])
     return tuple((n, next(iter(ls))) for n, ls in sorted(seen.items()) if len(ls) == 1 and n not in have)
 
