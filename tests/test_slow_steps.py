@@ -786,3 +786,15 @@ def test_after_a_step_said_on_a_terminal_the_silence_counts_from_its_end(monkeyp
     with progress.slow_step("next"):
         pass
     assert "next" not in capsys.readouterr().err
+
+
+def test_the_experiment_beats_while_it_builds_its_networks(monkeypatch, tmp_path):
+    """Stop 53's re-check (nc53b, a fresh clone, empty cache, load 16): the tiny experiment said `building the
+    networks (REG, EXP, GEN) before the first of 30 cells ...` once, then nothing for 38.7 s through a pipe
+    (FOON-EXP's WordNet matrix, one long call): the run's steps beat as the report's does."""
+    from foon2pddl.experiment import runner
+
+    lines = _beats_while(monkeypatch, runner, "build_networks", "experiment", "--trials", "1", "--goals", "2",
+                         "--networks", "reg", "--solvers", "native-greedy", "-o", tmp_path)
+    building = [line for line in lines if line.startswith("building the networks (REG)")]
+    assert len(building) >= 3 and re.fullmatch(r"building .* \.\.\. \d+ s", building[-1]), lines

@@ -149,7 +149,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)
     try:
-        summary = runner.run(config, progress=progress, fresh=fresh, step=step)
+        summary = runner.run(config, progress=progress, fresh=fresh, step=beating)  # its steps: long calls
     except runner.OtherResults as exc:
         raise FoonInputError(exc.path, exc.line, exc.message + "; use another -o directory, or --fresh to discard "
                                                                "them") from None
