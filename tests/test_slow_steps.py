@@ -258,52 +258,34 @@ def test_a_resumed_experiment_says_it_builds_the_networks_for_its_report(every_s
     assert lines.index(building) < lines.index(f"writing the report and plots ({tmp_path / 'report.md'}) ...")
 
 
-def test_the_report_is_drawn_with_the_runs_objects_frozen(tmp_path, monkeypatch):
+def test_the_report_is_drawn_with_the_runs_objects_frozen_and_no_full_collection(tmp_path, monkeypatch):
     """The silence floor's last miss (stop 42: 2.9 s at load 20, at the experiment's end): full garbage collections
     during the report walked every object of the run (its networks, records, views: 0.12-0.22 s of CPU each, 1.2-2.5 s
     of wall at load 20, holding the lock the step's ticking line needs). The run froze them while its cells ran
-    (`experiment.collector`) and unfroze them before the report; they stay frozen until the report is written."""
+    (`experiment.collector`) and unfroze them before the report; they stay frozen until the report is written.
+    With them frozen, a full collection during the report still walked what the report makes (matplotlib's modules,
+    fonts and figures): 1.46 s in one pass at load 16 (nc53a's pass, README's `experiment ... --jobs 2`, a
+    `gc.callbacks` log), during which the step's beat waited for the lock: 2.7 s between its lines through a pipe.
+    The report is drawn with full collections held back (`model.bulk.full_gc_paused`), as they were after."""
     import gc
 
     from foon2pddl.experiment import report
 
     seen = []
     real = report.write_report
+    before = gc.get_threshold()
 
     def spy(*args, **kwargs):
-        seen.append(gc.get_freeze_count())
+        seen.append((gc.get_freeze_count() > 0, gc.get_threshold()[2] > 10 ** 9 or not gc.isenabled()))
         return real(*args, **kwargs)
 
     monkeypatch.setattr(report, "write_report", spy)
     r = run("experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-greedy",
             "-o", tmp_path)
     assert r.exit_code == 0, r.stderr
-    assert seen and seen[0] > 0
+    assert seen == [(True, True)]
     assert gc.get_freeze_count() == 0  # and unfrozen after: a long-lived process keeps collecting them
-
-
-def test_the_report_is_drawn_with_the_collector_off(tmp_path, monkeypatch):
-    """With the run's objects frozen, a full collection during the report still walked what the report makes
-    (matplotlib's modules, fonts and figures): 1.46 s in one pass at load 16 (nc53a's pass, README's `experiment
-    ... --jobs 2`, a `gc.callbacks` log), during which the step's beat waited for the lock: 2.7 s between its lines
-    through a pipe. The report is drawn with the collector off, and it is as it was after."""
-    import gc
-
-    from foon2pddl.experiment import report
-
-    seen = []
-    real = report.write_report
-
-    def spy(*args, **kwargs):
-        seen.append(gc.isenabled())
-        return real(*args, **kwargs)
-
-    monkeypatch.setattr(report, "write_report", spy)
-    r = run("experiment", "--trials", "1", "--goals", "2", "--networks", "reg", "--solvers", "native-greedy",
-            "-o", tmp_path)
-    assert r.exit_code == 0, r.stderr
-    assert seen == [False]
-    assert gc.isenabled()
+    assert gc.isenabled() and gc.get_threshold() == before
 
 
 def test_a_step_says_what_it_does_when_it_speaks(monkeypatch, capsys):

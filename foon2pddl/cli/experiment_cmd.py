@@ -133,6 +133,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     from ..experiment import collector, runner
     from ..experiment.networks import NETWORKS
     from ..experiment.report import ReportData, agreement, invalid_trees, write_report
+    from ..model.bulk import full_gc_paused
     from .progress import slow_step
 
     step = slow_step if progress else runner.silent_step  # --no-progress: no line at all
@@ -184,8 +185,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         data = ReportData(tuple(r for r in summary.records if r.params == first), nets, chosen,
                           tuple(t.summary() for t in summary.trials), meta, swept, summary.records)
         try:
-            with beating(f"writing the report and plots ({report})"), collector.paused():  # 6-9 s, load 15
-                written = write_report(data, out_dir, report)  # matplotlib and the plots; no collection holds a beat
+            with beating(f"writing the report and plots ({report})"), full_gc_paused():  # 6-9 s, load 15
+                written = write_report(data, out_dir, report)  # matplotlib and the plots; no full collection holds a beat
         except OSError as exc:
             raise FoonInputError(str(report), 0, f"cannot write the report: {exc.strerror or exc}") from None
     solved = sum(r.solved for r in summary.records)

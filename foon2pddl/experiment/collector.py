@@ -9,7 +9,7 @@ workers' collections (the recipe in the `gc.freeze` documentation). When the run
 are unfrozen and the collector is as it was, so a long-lived process (a notebook, the tests) keeps
 collecting them once they are dropped. The `experiment` command freezes them again, with the network
 views its report needs, until the report is written (`cli/experiment_cmd.py`), and draws the report with
-the collector off (`paused`): the report's own objects are not walked either.
+full collections held back (`model.bulk.full_gc_paused`): the report's own objects are not walked either.
 """
 
 from __future__ import annotations
@@ -43,16 +43,3 @@ def building() -> Iterator[Callable[[], None]]:
         if enabled:
             gc.enable()
 
-
-@contextmanager
-def paused() -> Iterator[None]:
-    """Collector off inside, as it was after: for a last stretch that makes many objects and keeps them (a report's
-    matplotlib modules, fonts and figures), where a full pass walked them for 1.46 s at load 16, holding the lock
-    a step's line needs."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
