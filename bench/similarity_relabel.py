@@ -1,10 +1,11 @@
 """Blind relabellings of the shared subgraphs' pairs: the modes scored on each, and the labellings' agreement.
 
 `bench/similarity_relabel.tsv` (the second labelling, relab50), `bench/similarity_relab51.tsv` (the third,
-relab51), `bench/similarity_relab52.tsv` (the fourth, relab52) and `bench/similarity_relab53.tsv` (the fifth,
-relab53; the last two from the rubric as first written only) each relabel every pair of the `independent`,
-`fresh`, `tune` and `unsampled` splits of `similarity_pairs.tsv` (the shared subgraphs' labels), by labellers
-who had seen neither the rules nor any earlier label (`similarity_rubric.md`, its last four addenda). Reported
+relab51), `bench/similarity_relab52.tsv` (the fourth, relab52), `bench/similarity_relab53.tsv` (the fifth,
+relab53) and `bench/similarity_relab54.tsv` (the sixth, relab54; the last three from the rubric as first written
+only) each relabel every pair of the `independent`, `fresh`, `tune` and `unsampled` splits of
+`similarity_pairs.tsv` (the shared subgraphs' labels), by labellers who had seen neither the rules nor any earlier
+label (`similarity_rubric.md`, its last five addenda). Reported
 per relabelling and mode: precision and recall of good pairs, with Wilson 95 % intervals (`similarity.score`,
 the same counting as area `similarity`), on all its pairs, on those of the first labels' `held-out` splits and
 on the tuning splits; then, for each labelling (first, second, ...) and each later one, the share of pairs with
@@ -26,14 +27,16 @@ RELABEL = Path(__file__).with_name("similarity_relabel.tsv")
 RELAB51 = Path(__file__).with_name("similarity_relab51.tsv")
 RELAB52 = Path(__file__).with_name("similarity_relab52.tsv")
 RELAB53 = Path(__file__).with_name("similarity_relab53.tsv")
+RELAB54 = Path(__file__).with_name("similarity_relab54.tsv")
 #: The blind relabellings, in the order they were made: (name in the report, file).
-RELABELLINGS = (("relabel", RELABEL), ("relab51", RELAB51), ("relab52", RELAB52), ("relab53", RELAB53))
+RELABELLINGS = (("relabel", RELABEL), ("relab51", RELAB51), ("relab52", RELAB52), ("relab53", RELAB53),
+                ("relab54", RELAB54))
 #: The splits the relabellings cover (the shared subgraphs' labels).
 RELABELLED = ("independent", "fresh", "tune", "unsampled")
 #: The first labels' splits by what they were used for: scored once (`held-out`), or tuning the rules.
 SUBSETS = {"held-out": GROUPS["held-out"], "tuning": ("tune", "unsampled")}
 LABELS = ("good", "marginal", "bad")
-ORDINALS = ("first", "second", "third", "fourth", "fifth")
+ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
 
 
 def read_relabel(path: Path = RELABEL, name: str = "relabel") -> list[Pair]:

@@ -12,6 +12,7 @@ from bench.similarity_relabel import (
     RELAB51,
     RELAB52,
     RELAB53,
+    RELAB54,
     RELABEL,
     RELABELLED,
     RELABELLINGS,
@@ -61,15 +62,16 @@ def test_pairing_takes_the_first_label_by_unordered_pair_and_rejects_different_c
         paired(first, second[:1])
 
 
-@pytest.mark.parametrize(("path", "name"), [(RELAB51, "relab51"), (RELAB52, "relab52"), (RELAB53, "relab53")])
-def test_the_third_fourth_and_fifth_labellings_cover_exactly_the_shared_pairs_and_are_the_frozen_files(path, name):
+@pytest.mark.parametrize(("path", "name"), [(RELAB51, "relab51"), (RELAB52, "relab52"), (RELAB53, "relab53"),
+                                           (RELAB54, "relab54")])
+def test_the_third_to_sixth_labellings_cover_exactly_the_shared_pairs_and_are_the_frozen_files(path, name):
     later = read_relabel(path, name)
     first = [p for p in read_pairs() if p.split in RELABELLED]
     assert {frozenset((p.a, p.b)) for p in later} == {frozenset((p.a, p.b)) for p in first}
     assert len(later) == len(first) and {p.label for p in later} == set(LABELS)
     assert {(p.source, p.split) for p in later} == {(name, name)}
     assert hashlib.sha1(path.read_bytes()).hexdigest() in RUBRIC.read_text(encoding="utf-8")
-    assert [name for name, _ in RELABELLINGS] == ["relabel", "relab51", "relab52", "relab53"]
+    assert [name for name, _ in RELABELLINGS] == ["relabel", "relab51", "relab52", "relab53", "relab54"]
 
 
 def test_agreements_compare_every_labelling_with_each_later_one_by_ordinal():
@@ -91,6 +93,10 @@ def test_agreements_compare_every_labelling_with_each_later_one_by_ordinal():
     got = agreements([first, second, third, fourth, fifth])
     assert len(got) == 10 and [x for x, y, _ in got if y == "fifth"] == ["first", "second", "third", "fourth"]
     assert got[-1][2][("bad", "good")] == 1 and got[-1][2][("bad", "marginal")] == 1
+    sixth = [Pair("c", "d", "good", "relab54", "relab54"), Pair("a", "b", "bad", "relab54", "relab54")]
+    got = agreements([first, second, third, fourth, fifth, sixth])
+    assert len(got) == 15 and [x for x, y, _ in got if y == "sixth"] == ["first", "second", "third", "fourth", "fifth"]
+    assert got[-1][2][("good", "bad")] == 1 and got[-1][2][("marginal", "good")] == 1
 
 
 def test_subsets_split_a_relabelling_by_the_first_labels_splits():
