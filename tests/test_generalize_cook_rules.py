@@ -59,8 +59,9 @@ def test_a_filed_food_class_whose_kinds_go_by_names_of_their_own_is_no_food(cook
                  ("lemon", "lime")]:
         assert cook(a, b) >= 0.89, (a, b, cook.explain(a, b))
     # A label filed by its head and labels of the index are not rule 8's; since stop 51 rule 9 judges a food class
-    # whose kinds are classes for every label (sweetener~sugar, salad green~lettuce: 0, "food class").
-    for a, b in [("lettuce", "salad green"), ("sugar", "sweetener")]:
+    # whose kinds are classes for every label (salad green~lettuce: 0, "food class"; sweetener~sugar, a flavorer
+    # class, stands since stop 54).
+    for a, b in [("lettuce", "salad green")]:
         assert cook.explain(a, b).rejected == "food class", (a, b, cook.explain(a, b))
 
 
@@ -161,14 +162,14 @@ def test_a_class_of_foods_whose_kinds_are_classes_is_no_food(cook):
     """Rule 9 for foods (stop 51, issue 23): a kind pair whose generic is a food class (`classes.food_class`: at
     least 5 kinds, fewer than 10 % named or defined after it) whose kinds are classes of their own (at least
     `CLASS_LEVELS` levels of kinds: sweetening has sugar and syrup, each with kinds) is a category with a member:
-    sweetener~sugar, ~honey, ~maple syrup and a salad-mix label (`salad_green.n.01`) with one green score 0. Kinds
-    of one thing in cuts and sizes stand (chicken~capon, beefsteak~strip steak: two levels), as do two members
-    (honey~sugar) and two labels of the class's own sense (salad mix~spring mix)."""
+    a salad-mix label (`salad_green.n.01`) with one green scores 0. Kinds of one thing in cuts and sizes stand
+    (chicken~capon, beefsteak~strip steak: two levels), as do two members (honey~sugar), two labels of the class's own
+    sense (salad mix~spring mix) and, since stop 54, a flavorer class with its kinds (sweetener~sugar: the test
+    below)."""
     from foon2pddl.generalize.classes import levels
 
     assert levels(cook.reader, "sweetening.n.01") == 4 and levels(cook.reader, "chicken.n.01") == 2
-    for a, b in [("sugar", "sweetener"), ("honey", "sweetener"), ("maple syrup", "sweetener"),
-                 ("lettuce", "salad mix"), ("escarole", "spring mix"), ("lettuce", "salad green")]:
+    for a, b in [("lettuce", "salad mix"), ("escarole", "spring mix"), ("lettuce", "salad green")]:
         e = cook.explain(a, b)
         assert e.similarity == 0.0 and e.rejected == "food class", (a, b, e)
     for a, b in [("honey", "sugar"), ("salad mix", "spring mix"), ("capon", "chicken"), ("beefsteak", "strip steak"),
@@ -230,3 +231,25 @@ def test_two_compounds_of_one_head_are_not_rejected_for_their_modifiers_breadth(
     assert cook("pan lid", "pot lid") >= 0.89, cook.explain("pan lid", "pot lid")
     for a, b in [("baking tray", "pot"), ("container", "spoon"), ("grater", "masher")]:
         assert cook(a, b) == 0.0, (a, b, cook.explain(a, b))
+
+
+def test_a_class_of_foods_defined_by_its_job_stands_with_its_kinds(cook):
+    """Rule 9 for foods spares a class WordNet files under `flavorer.n.01` (stop 54, issue 23): a flavorer is defined
+    by what it does to food ("something added to food primarily for the savor it imparts"; sweetening: "something
+    added to foods to make them taste sweeter"), so its kinds do its job: the rubric's "a label and a more specific
+    kind of it that does the same job" (honey~sugar "as a sweetener"), not "a category and a member". A class filed by
+    what a food is keeps rule 9 (salad green, vegetable: its kinds do different jobs); flavorer and condiment, broad,
+    keep rule 3, as does sweetener with a label outside the reference vocabulary (aspartame: 2.1 %)."""
+    from foon2pddl.generalize.classes import flavorer_class, food_class_of_classes
+
+    assert flavorer_class(cook.reader, "sweetening.n.01") and flavorer_class(cook.reader, "condiment.n.01")
+    assert not flavorer_class(cook.reader, "salad_green.n.01") and not flavorer_class(cook.reader, "vegetable.n.01")
+    for a, b in [("sugar", "sweetener"), ("honey", "sweetener"), ("maple syrup", "sweetener"),
+                 ("brown sugar", "sweetener"), ("corn syrup", "sweetener"), ("sugar syrup", "sweetener")]:
+        e = cook.explain(a, b)
+        assert e.similarity >= 0.89 and e.ancestor == "sweetening.n.01", (a, b, e)
+        assert not food_class_of_classes(cook.reader, e)
+    for a, b in [("lettuce", "salad mix"), ("escarole", "spring mix"), ("lettuce", "salad green")]:
+        assert cook.explain(a, b).rejected == "food class", (a, b, cook.explain(a, b))
+    for a, b in [("aspartame", "sweetener"), ("condiment", "mustard"), ("flavorer", "salt")]:
+        assert cook.explain(a, b).rejected == "broad", (a, b, cook.explain(a, b))

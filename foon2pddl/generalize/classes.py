@@ -8,7 +8,8 @@ not is a class of tools with different jobs (`tool_class`). Counting also the ki
 noun (penne: "pasta in short tubes"), a food noun most of whose kinds are named or defined after it is a staple,
 which rule 3's breadth limit does not reject with its kinds (`staple`: bread, pasta; not herb or sweetener); one
 fewer than 10 % of whose kinds are is a class of foods (`food_class`: citrus, brew), which rule 8 reads for filed labels
-and rule 9 for every label when its kinds are classes too (`food_class_of_classes`: sweetening, salad green).
+and rule 9 for every label when its kinds are classes too (`food_class_of_classes`: salad green; not a flavorer such
+as sweetening, a class WordNet defines by its job, `flavorer_class`).
 Cost: one hyponym closure per synset, cached.
 """
 
@@ -29,7 +30,8 @@ STAPLE_SHARE, GENUS_WORDS = 0.3, 2
 
 #: Rule 3's exemption is for a starch a meal is built on: no flavorer (a sauce's kinds are its flavours, as a herb's
 #: are), no dish and no bake (their kinds are variants, rule 4) unless WordNet also files it as a starch (bread).
-NOT_STAPLES, STARCH = frozenset({"flavorer.n.01", "dish.n.02", "baked_goods.n.01"}), "starches.n.01"
+FLAVORER = "flavorer.n.01"
+NOT_STAPLES, STARCH = frozenset({FLAVORER, "dish.n.02", "baked_goods.n.01"}), "starches.n.01"
 
 #: Rule 9 for foods: a food class with at least this many levels of kinds below it has kinds that are classes too.
 CLASS_LEVELS = 3
@@ -101,14 +103,22 @@ def levels(reader, name: str) -> int:
     return 1 + max(levels(reader, x.name()) for x in below) if below else 0
 
 
+def flavorer_class(reader, name: str) -> bool:
+    """Whether WordNet files synset `name` as a flavorer (`FLAVORER` or below it: sweetening, condiment), a class it
+    defines by what it does to food ("something added to foods to make them taste sweeter"), not by what a food is
+    (vegetable, salad green, poultry): its kinds all do its job (rule 9 for foods spares it, stop 54)."""
+    return FLAVORER in {x.name() for x in reader.synset(name).closure(lambda s: s.hypernyms())} | {name}
+
+
 def food_class_of_classes(reader, found: Evidence) -> bool:
     """Rule 9 for foods: whether `found` is a kind pair whose generic is a class of foods (`food_class`) whose kinds are
-    classes of their own (at least `CLASS_LEVELS` levels of kinds below it): sweetening (sugar and syrup, each with
-    kinds), salad green (lettuce, cress); not a chicken's or a beefsteak's kinds (capon, strip steak: two levels)."""
+    classes of their own (at least `CLASS_LEVELS` levels of kinds below it): salad green (lettuce, cress); not a
+    chicken's or a beefsteak's kinds (capon, strip steak: two levels), nor, since stop 54, a class defined by its job
+    (`flavorer_class`: sweetening, whose kinds sugar and syrup all sweeten)."""
     generic = found.ancestor
     if found.sense_a == found.sense_b or generic not in (found.sense_a, found.sense_b):
         return False
-    return food_class(reader, generic) and levels(reader, generic) >= CLASS_LEVELS
+    return food_class(reader, generic) and levels(reader, generic) >= CLASS_LEVELS and not flavorer_class(reader, generic)
 
 
 def tool_class(reader, found: Evidence) -> bool:

@@ -40,7 +40,8 @@ head nouns and modifiers, `similarity.py`) and changes ten things:
    (beer bottle, water bottle: 35 %) and a bottle stands for them. Two kinds that meet only under such a class do
    different jobs (knife~scissors, scraper~spatula). Every label, filed or in the index. So for
    foods (`food class`): a kind pair whose generic is a food class whose kinds are classes too
-   (`classes.food_class_of_classes`: sweetener~sugar, salad mix~lettuce) is a category with a member.
+   (`classes.food_class_of_classes`: salad mix~lettuce) is a category with a member; not a flavorer, a class WordNet
+   defines by its job (`classes.flavorer_class`: sweetener~sugar stands, stop 54).
 
 Senses are read as in the paper's rule, but a hyphenated WordNet lemma is read whole
 (`senses.resolve(hyphens=True)`: iced-tea spoon is iced-tea_spoon, a kind of teaspoon).
@@ -121,7 +122,7 @@ def cache_tag(breadth: float, overrides: Overrides) -> str:
 RULES = ("rule 5 extended, rule 6, rule 7, rule 8, bare categories, hyphens, adjective modifiers, head kinds, ties,"
          " vessels hold liquids, breadth per pair, tool classes, staples, roles, regional senses, vessels named for food, food classes, starches, stand-ins, synonyms,"
          " dishes, food classes of classes, stand-ins and head compounds, tool class siblings, prepared foods, likeness,"
-         " tools one part fits")
+         " tools one part fits, flavorer classes")
 
 
 def synonyms(found: Evidence) -> bool:
