@@ -112,3 +112,19 @@ def test_merge_says_each_skipped_file_once(tmp_path):
     (tmp_path / "motion.txt").write_text(RATES.read_text())
     r = run("merge", tmp_path)
     assert r.exit_code == 0 and r.stderr.count("motion.txt: warning: skipped") == 1, r.stderr
+
+
+@pytest.mark.parametrize(("text", "skipped"), [
+    ("O\tonion\t0\nS\twhole\nM\tchop\n", "unit has no output objects after its motion line"),
+    ("M\tchop\nO\tonion\t0\nS\tchopped\n", "unit has no input objects before its motion line"),
+])
+def test_a_recipe_whose_every_block_is_skipped_is_not_called_a_kitchen(tmp_path, text, skipped):
+    """nc54a's pass: a recipe of one block with its motion line but no outputs (a truncated file) said `no functional
+    units in file: it lists objects and no motion ('M') line, as a kitchen or a goal file does`: false (line 3 is the
+    motion line), and the warning saying why its one block was skipped was not shown."""
+    recipe = tmp_path / "r.txt"
+    recipe.write_text(text)
+    r = run("stats", recipe)
+    assert r.exit_code == 2 and "Traceback" not in r.stderr
+    assert r.stderr.startswith(f"{recipe}:3: error: no functional units in file: every block was skipped"), r.stderr
+    assert f"line 1: {skipped}" in r.stderr and "no motion ('M') line" not in r.stderr and "--kitchen" not in r.stderr

@@ -356,8 +356,14 @@ class _Reader:
             (inputs if motion is None else outputs).append(self.node(tuple(raws)))
         self.unit(start, inputs, motion, outputs)
         if not self.units:  # reported at the last line of the file (1 when empty)
+            last = max(lineno - final_newline, 1)
+            if self.motion_cache and self.warnings:  # a recipe whose every block was skipped: say why
+                first = self.warnings[0]
+                more = f" (and {len(self.warnings) - 1} more)" if len(self.warnings) > 1 else ""
+                raise FoonSyntaxError(self.path, last, "no functional units in file: every block was skipped: "
+                                                       f"line {first.line}: {first.message}{more}")
             objects = bool(self.node_cache)  # objects and no motion: a kitchen or goal file (O/S lines)
-            raise FoonSyntaxError(self.path, max(lineno - final_newline, 1), "no functional units in file" + (
+            raise FoonSyntaxError(self.path, last, "no functional units in file" + (
                 ": it lists objects and no motion ('M') line, as a kitchen or a goal file does (docs/format.md), "
                 "not a network" if objects else ""), belongs=("kitchen", "goals") if objects else ())
         return ParseResult(Foon(tuple(self.units)), tuple(self.warnings), tuple(dict.fromkeys(self.urls)))
