@@ -678,9 +678,9 @@ def test_a_unified_planning_engine_lookup_beats_through_a_pipe(monkeypatch):
     assert beats, r.stderr
 
 
-def _beats_while(monkeypatch, module, name: str, *args) -> list[str]:
-    """Runs the command `args` with `module.name` (its one long call) slowed until the step's line and two beats
-    have been said; returns every line said."""
+def _beats_while(monkeypatch, module, name: str, *args, code: int = 0) -> list[str]:
+    """Runs the command `args` (exit status `code`) with `module.name` (its one long call) slowed until the step's
+    line and two beats have been said; returns every line said."""
     said = _Said()
     monkeypatch.setattr(progress, "click", said)
     monkeypatch.setattr(progress, "AFTER", 0.0)
@@ -693,7 +693,7 @@ def _beats_while(monkeypatch, module, name: str, *args) -> list[str]:
 
     monkeypatch.setattr(module, name, slow)
     r = run(*args)
-    assert r.exit_code == 0, r.output
+    assert r.exit_code == code, r.output
     return said.lines
 
 
@@ -807,3 +807,14 @@ def test_the_report_step_covers_what_the_report_is_made_of(monkeypatch, tmp_path
             "-o", tmp_path)
     assert r.exit_code == 0, r.stderr
     assert seen == [True], said.lines
+
+
+def test_the_hint_check_beats_while_it_builds_the_other_networks(monkeypatch):
+    """nc54a's pass: `retrieve tests/data/foon-subgraphs --goal ramen` (docs/format.md) said `checking which other
+    network makes it (for a hint) ...` once, then nothing for 12.4 s through a pipe (load 12): building FOON-GEN and
+    planning its lifted task, one long call, and the step had no beat unless WordNet was to open."""
+    from foon2pddl.generalize import hints
+
+    lines = _beats_while(monkeypatch, hints, "networks_that_reach", "retrieve", SUBGRAPHS, "--goal", "ramen", code=1)
+    checking = [line for line in lines if line.startswith("checking which other network makes it (for a hint)")]
+    assert len(checking) >= 3 and re.fullmatch(r"checking .* \.\.\. \d+ s", checking[-1]), lines
