@@ -818,3 +818,40 @@ def test_the_hint_check_beats_while_it_builds_the_other_networks(monkeypatch):
     lines = _beats_while(monkeypatch, hints, "networks_that_reach", "retrieve", SUBGRAPHS, "--goal", "ramen", code=1)
     checking = [line for line in lines if line.startswith("checking which other network makes it (for a hint)")]
     assert len(checking) >= 3 and re.fullmatch(r"checking .* \.\.\. \d+ s", checking[-1]), lines
+
+
+def test_a_batch_plan_explains_each_goal_inside_its_step(monkeypatch, tmp_path):
+    """The known leftover of stop 53's pass, reproduced by stop 54's (bench.silence's pty, empty cache, load 16):
+    `goals ... --dishes --kitchen default | plan ... --goals - --kitchen default --network gen` went 2.1 s from goal 1's
+    closing line to `planning goal 4 of 100 ...`; a stack sampler showed goals 2 and 3 planned within the budget, then
+    the reason goal 3 is unsolvable (`failure_reason`: the kitchen additions' search, 0.6 s) outside every step. A
+    goal's reason is found inside its step."""
+    from contextlib import contextmanager
+
+    from foon2pddl.cli import batch_pddl
+
+    inside: list[bool] = []
+    real_step, real_reason = batch_pddl.slow_step, batch_pddl.failure_reason
+
+    @contextmanager
+    def step(*args, **kwargs):
+        inside.append(True)
+        try:
+            with real_step(*args, **kwargs) as said:
+                yield said
+        finally:
+            inside.pop()
+
+    asked = []
+
+    def reason(*args, **kwargs):
+        asked.append(bool(inside))
+        return real_reason(*args, **kwargs)
+
+    monkeypatch.setattr(batch_pddl, "slow_step", step)
+    monkeypatch.setattr(batch_pddl, "failure_reason", reason)
+    goals = tmp_path / "goals.txt"
+    goals.write_text("guacamole\nlemonade\n")
+    r = run("plan", "--goals", goals, "--encoding", "tree")
+    assert r.exit_code == 1, r.stderr  # the lemonade: unreachable
+    assert asked == [True, True], r.stderr
