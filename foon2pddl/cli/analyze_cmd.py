@@ -48,7 +48,7 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
             for p in written:
                 click.echo(f"wrote {p}", err=True)
         if plot is not None:
-            with slow_step(f"drawing {plot}", after=0, beat=True):  # matplotlib and the figure: 2.3 s at load 15, 15 s at 20
+            with slow_step(f"drawing {plot}", after=0):  # matplotlib and the figure: 2.3 s at load 15, 15 s at 20
                 png = plot_png(result, top)
             atomic_write(plot, png)
             shown = f" (the top {MAX_PLOT_BARS} of each ranking)" if top > MAX_PLOT_BARS else ""

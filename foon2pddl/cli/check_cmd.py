@@ -66,7 +66,7 @@ def check_(paths, as_json, wordnet, output) -> None:
     lemma = None
     if wordnet:  # most of a check's time on a fresh process (11.6 s of 13.3 at load 10 on the shared subgraphs)
         with slow_step("opening WordNet (to tell spelling variants from different words; --no-wordnet: string rules "
-                       "only)", beat=True):
+                       "only)"):
             lemma = wordnet_lemma()
     with slow_step(f"checking {inputs(paths)} for defects"):
         defects = check(foon, scan_paths(net_paths), lemma)

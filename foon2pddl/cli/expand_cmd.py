@@ -55,13 +55,13 @@ def expand_(paths, threshold, similarity, overrides, max_units, kitchen, provena
     extra = load_overrides(overrides)
     labels = vocabulary(net.foon, kit)
     cold = not mode_matrix_is_cached(labels, similarity, extra)  # seconds to minutes: each step said at once
-    matrix = mode_matrix(labels, similarity, extra=extra, step=functools.partial(slow_step, after=0, beat=True) if cold else slow_step)
+    matrix = mode_matrix(labels, similarity, extra=extra, step=functools.partial(slow_step, after=0) if cold else slow_step)
     e = expand(net.foon, matrix, threshold=threshold, max_units=max_units, kitchen=kit, similarity=similarity,
                step=slow_step)  # says how far it is
     if as_pairs:
         from ..generalize.pairs import format_pairs, substitution_pairs
 
-        with slow_step(f"listing the {count(len(e.substitutions), 'substitution')} with their WordNet senses", beat=True):
+        with slow_step(f"listing the {count(len(e.substitutions), 'substitution')} with their WordNet senses"):
             text = format_pairs(substitution_pairs(e, extra), fmt)
         emit(text, output)
         return

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import functools
 import shlex
 import sys
 from contextlib import nullcontext
@@ -137,7 +136,6 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     from .progress import slow_step
 
     step = slow_step if progress else runner.silent_step  # --no-progress: no line at all
-    beating = functools.partial(slow_step, beat=True) if progress else step  # one long call: beats through a pipe
 
     nets = _names(networks, NETWORKS, "networks")
     chosen = _names(solvers, tuple(SOLVERS), "solvers")
@@ -150,7 +148,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
                            swept, scheduler)
     try:
-        summary = runner.run(config, progress=progress, fresh=fresh, step=beating)  # its steps: long calls
+        summary = runner.run(config, progress=progress, fresh=fresh, step=step)
     except runner.OtherResults as exc:
         raise FoonInputError(exc.path, exc.line, exc.message + "; use another -o directory, or --fresh to discard "
                                                                "them") from None
@@ -166,7 +164,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         settle()  # the run's objects, frozen: the report's collections need not walk them
         # what the report is made of is gathered under its step too: its network sizes (the node tables of FOON-EXP
         # and FOON-GEN) took 0.6 s at load 25 outside every step, after the results were read back (stop 54's pass)
-        with beating(f"writing the report and plots ({report})"):
+        with step(f"writing the report and plots ({report})"):
             meta = {
                 "command": command_line(paths, protocol, nets, chosen, jobs, time_limit, out_dir, report, limits, swept),
                 "goal_limits": dict(limits),

@@ -260,8 +260,8 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
         kit = without_banned(kit, constraints)
     building = kind.building or "preparing the {label} network of {units} at level {level}"
     after = 0 if kind.slow_step is not None and kind.slow_step(net, kit) is not None else None  # seconds: at once
-    with slow_step(building.format(label=kind.label, units=count(len(net.foon.units), 'unit', grouped=True), level=level), after=after,
-                   beat=after == 0):  # a slow build opens WordNet: one long call
+    with slow_step(building.format(label=kind.label, units=count(len(net.foon.units), 'unit', grouped=True), level=level),
+                   after=after):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
     if kitchen is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name

@@ -142,7 +142,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     engine = entry is UP_ENGINE  # its check imports unified-planning: seconds, so it says so at once
     what = f"looking up planner {planner_cmd or planner!r}" + (" among unified-planning's engines" if engine else "")
     try:  # before anything is loaded or timed
-        with slow_step(what, after=0 if engine else None, beat=engine):  # one long call: it beats through a pipe
+        with slow_step(what, after=0 if engine else None):
             entry.check(planner if planner_cmd is None else planner_cmd)
     except UnknownPlanner as exc:
         raise click.BadParameter(f"{exc} (or --planner-cmd with a command or a preset: {', '.join(PRESETS)})",

@@ -4,13 +4,12 @@
 silent for `AFTER` seconds: counted from the command's start (the process's, when
 run as `foon2pddl`), or from the end of the last step that said what it did (through
 a pipe, which has no closing line, from that step's last line: its call may go on for up
-to `BEAT` seconds after a beat, or to its end after a step's one line), so that several
-short steps in a row cannot add up to a long silence. A step done by
+to `BEAT` seconds after it), so that several short steps in a row cannot add up to a long silence. A step done by
 then prints nothing (fast runs keep their output). Otherwise it prints `what ...`
 at once; on a terminal the line then counts the seconds and ends with the step's
-time, and in a log it is one line (a step that is one long call, `beat=True`, adds a line with its seconds every
-`BEAT` seconds). Only the message goes to stderr, never to
-stdout, so outputs stay byte-identical however slow the machine is. A line printed
+time; in a log, which has no line that counts, it adds a line with its seconds every `BEAT` seconds
+(a step said once, then silent for its whole length, left a log 16 s without a line: stop 54's pass).
+Only the message goes to stderr, never to stdout, so outputs stay byte-identical however slow the machine is. A line printed
 by other means (a note) is not seen here: after one, a step may speak up early.
 
 A series of steps (`series=NAME`: the shares of one long computation, run one after another with
@@ -37,7 +36,7 @@ import click
 
 #: Seconds a command may stay silent before the step it is in says what it is.
 AFTER = 1.5
-#: Through a pipe, seconds between the lines a step with `beat=True` adds while it runs (its seconds so far): as
+#: Through a pipe, seconds between the lines a said step adds while it runs (its seconds so far): as
 #: `AFTER`, a margin under the 2 s floor for a late wake-up under load (at 2.0 s, gaps of 2.1-2.2 s at load 16-19).
 BEAT = 1.5
 #: On a terminal: back to the start of the line and clear it (a shorter text leaves nothing behind).
@@ -71,15 +70,13 @@ def begin() -> None:
 
 @contextmanager
 def slow_step(what: str | Callable[[], str], after: float | None = None, *,
-              series: str | None = None, beat: bool = False) -> Iterator[threading.Event]:
+              series: str | None = None) -> Iterator[threading.Event]:
     """Say `what ...` on stderr if the wrapped step is still running once the command has been silent
     for `AFTER` seconds, or (when given) after `after` seconds of the step (0: always, at once)
     (module doc). `what` may be a callable, read when the line is printed: a step whose plan changes
     midway (a fallback its own note announced) says what it does then, not what it set out to do.
     `series`: the name of the series of steps this one belongs to (one redrawn line on a terminal).
-    Yields an event set once the line is said (a caller may close a said step with what it found).
-    `beat`: a step that is one long call (opening WordNet) also says, through a pipe, its seconds every `BEAT`
-    seconds (`what ... 4 s`), as a terminal's line counts them."""
+    Yields an event set once the line is said (a caller may close a said step with what it found)."""
     text = what if callable(what) else lambda: what
     global _quiet_since
     start = time.monotonic()
@@ -104,7 +101,7 @@ def slow_step(what: str | Callable[[], str], after: float | None = None, *,
         if not tty:
             click.echo(f"{text()} ...", err=True)
             last_line.append(time.monotonic())
-            while beat and not done.wait(BEAT):
+            while not done.wait(BEAT):
                 click.echo(f"{text()} ... {time.monotonic() - first:.0f} s", err=True)
                 last_line.append(time.monotonic())
             return

@@ -169,8 +169,8 @@ def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level:
     if not _default_kitchen_hint(net, kitchen, spec, level):
         _recipe_file_hint(net, kitchen, spec, level)
     slow = slow_hint(net, kitchen)  # known to take seconds: said at once, not after the silence budget
-    with slow_step(slow or "checking which other network makes it (for a hint)", after=0 if slow else None,
-                   beat=True) as said:  # one long call: WordNet opens (slow), or FOON-GEN is built and planned
+    with slow_step(slow or "checking which other network makes it (for a hint)",
+                   after=0 if slow else None) as said:  # WordNet opens (slow), or FOON-GEN is built and planned
         kinds = networks_that_reach(net, kitchen, spec, level,
                                     confirm={k.name: lambda k=k: _lifted_solves(net, kitchen, spec, level, k.encoding)
                                              for k in NETWORKS.values() if k.encoding is not None})

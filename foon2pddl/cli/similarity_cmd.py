@@ -44,8 +44,7 @@ def similarity(labels, as_pairs, senses, as_json, similarity, overrides, output)
     extra = load_overrides(overrides)
     names = list(dict.fromkeys(labels))
     pairs = list(zip(labels[::2], labels[1::2], strict=True)) if as_pairs or len(labels) == 2 else None
-    # opening WordNet is one long call: the step beats through a pipe
-    with slow_step(f"comparing {count(len(names), 'label')} in WordNet ({similarity} similarity)", beat=True):
+    with slow_step(f"comparing {count(len(names), 'label')} in WordNet ({similarity} similarity)"):
         sim = make_similarity(similarity, extra=extra)
         values = [(a, b, sim(a, b)) for a, b in pairs] if pairs is not None else None
         rows = [[sim(a, b) for b in names] for a in names] if pairs is None else None
