@@ -43,7 +43,8 @@ class EncodeOptions:
     first, for PDDL supertypes; given as data, so the encoders need no category index).
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
-    The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`).
+    The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`), from the
+    plan through the stitches alone with `through`.
     """
 
     prune: bool = True
@@ -54,6 +55,7 @@ class EncodeOptions:
     category_index: CategoryIndex | None = field(default=None, compare=False)
     policy: str = "absent"
     narrow: bool = False
+    through: bool = False
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

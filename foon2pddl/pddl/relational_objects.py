@@ -12,8 +12,10 @@ that counts fewer, `relational_reading._as_now`), in the kitchen with the networ
 and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
 another cup filled again): the cut, 4 objects. Kept
 when it has fewer objects, with a note that says so (`Compiled.narrowed`). It may have no plan where the wide
-task has one (0050's own plan takes the finished omelette from the kitchen, and the plan needs the bacon the
-stitched one sprinkles): `plan` then plans the wide task. A scene's objects are the scene's: never counted small.
+task has one (0050's own plan takes the finished omelette from the kitchen, out of holder reach: the plan needs the bacon
+the stitched one sprinkles). Counted small `through` the stitches: from the plan through them alone (no FOON plan
+beside it; 0050's, with the bacon, 24 objects where wide counts 25): what `plan` tries next when the task of FOON's
+own plan is out of holder reach, then the wide task. A scene's objects are the scene's: never counted small.
 """
 
 from __future__ import annotations
@@ -63,33 +65,36 @@ class TaskObjects:
 
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
-                 overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False) -> TaskObjects:
+                 overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False,
+                 through: bool = False) -> TaskObjects:
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
-    `narrow`: counted small when that gives fewer objects. Counting small reuses the readings counting wide
-    made (`read_units`' memo: units are read again only with other holders silent) and derives its own counts."""
+    `narrow`: counted small when that gives fewer objects, `through` the stitches (a task with none: counted wide).
+    Counting small reuses the readings counting wide made (`read_units`' memo: units are read again only with other
+    holders silent) and derives its own counts."""
     memo: dict = {}  # the units' readings and counts both countings share (`read_units`)
     wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo)
-    if not narrow or scene:
+    if not narrow or scene or (through and not st.origin):
         return wide
     started = wide.implied | {x.start for x in wide.instances if x.start is not None and x.start not in inp.kitchen}
-    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), started, memo)
+    small = _objects(inp, st, scene, stated, overrides, tuple(reserved), started, memo, through)
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(started))
     beside = tuple(u for u in wide.reading.units if u not in small.reading.units)
+    source = "the plan through the stitches" if through else "FOON's own plan"
     return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), beside=beside, narrowed=(
-        "counted small, from FOON's own plan alone" + (f" in the kitchen with {more}, where the objects its "
-                                                       "nodes imply start" if more else "")
+        f"counted small, from {source} alone" + (f" in the kitchen with {more}, where the objects its "
+                                                  "nodes imply start" if more else "")
         + f": {count(len(small.instances), 'object')}, where FOON's plan unfolded counts {len(wide.instances)}"))
 
 
 def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
              overrides: Mapping[str, int], reserved: tuple[str, ...], more: frozenset[ObjectNode] | None,
-             memo: dict) -> TaskObjects:
-    """The objects counted from the reading of the units (`read_units`, small with `more`, sharing `memo`), or the
-    scene's."""
-    rd = read_units(inp, st, scene, stated, overrides, more, memo)
+             memo: dict, through: bool = False) -> TaskObjects:
+    """The objects counted from the reading of the units (`read_units`, small with `more`, `through` the stitches,
+    sharing `memo`), or the scene's."""
+    rd = read_units(inp, st, scene, stated, overrides, more, memo, through)
     f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts
     table = NameTable()
     for name in reserved:

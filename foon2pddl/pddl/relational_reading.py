@@ -140,11 +140,11 @@ def _nows(foon: Foon) -> dict[tuple[int, ...], Foon]:
 
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
-               memo: dict | None = None) -> Reading:
+               memo: dict | None = None, through: bool = False) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
     kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
     give; `narrow`: count small, from FOON's own plan alone (no stitched one beside it) in the kitchen with these
-    nodes too (`relational_objects`). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
+    nodes too (`relational_objects`), from the plan through the stitches alone with `through`. `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
     `overrides` (counted wide, then small): the units' readings by speakers and the counts by plan and kitchen are
     made once (the same values: read twice, they cost a GEN trial's encoding a third more)."""
     memo = {} if memo is None else memo
@@ -196,6 +196,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         return memo[key][1]
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
+        if narrow is not None and through:  # small, the stitched plan alone: FOON's own is out of holder reach
+            return [(st.through, count(st.through, st.needed, roles_of))]
         counted = [(inp.foon, count(inp.foon, st.own, roles_of))]
         if st.origin and narrow is None:
             counted.append((st.through, count(st.through, st.needed, roles_of)))

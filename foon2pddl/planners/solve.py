@@ -160,14 +160,14 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     taken in one order (`pddl.interchangeable`: the planner does not try every bowl of a stack), and
     an action whose parameters multiply is split into a chain of small parts (`pddl.split_actions`, not with
     `optimal`), joined back into the one action in the plan. The outcome keeps the task as compiled.
-    A `relational` task is counted small first (`pddl.relational_objects`): when that has fewer objects and no
-    valid plan within `RETRY_SECONDS` of the planner's CPU time (the `time_limit` when shorter; planners that
-    cannot bound CPU take it as wall time, `PlanRequest.wall_limit`) and `time_limit` of wall time, the task
-    counted wide is planned within what is left of `time_limit` (at least `MIN_REST`), and a note says so; the
-    timings are then both plans'. Each is planned first (not with `optimal`) with only the actions of the units of
-    the plan its objects are counted from (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out
-    and its goal is in holder reach, for any cause), within half its limits (`RETRY_SECONDS` of wall time with
-    none), then whole within what is left (at least `MIN_REST`).
+    A `relational` task is counted small first (`pddl.relational_objects`; FOON's plan out of holder reach: through the
+    stitches alone): when that has fewer objects and no valid plan within `RETRY_SECONDS` of the planner's CPU time (the
+    `time_limit` when shorter; planners that cannot bound CPU take it as wall time, `PlanRequest.wall_limit`) and
+    `time_limit` of wall time, the task counted wide is planned within what is left of `time_limit` (at least
+    `MIN_REST`), and a note says so; the timings are then both plans'. Each is planned first (not with `optimal`) with
+    only the actions of the units of the plan its objects are counted from (`Compiled.counted`,
+    `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any cause), within half
+    its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least `MIN_REST`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -175,12 +175,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         fd.prestart_translator()  # its start-up overlaps the encoding
     timings: dict[str, float] = {}
 
-    def compiled(narrow: bool) -> Compiled:
+    def compiled(narrow: bool, through: bool = False) -> Compiled:
         t0 = time.perf_counter()
         try:
             return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                                 category_index=category_index, constraints=constraints, instances=instances,
-                                categories=categories, narrow=narrow)
+                                categories=categories, narrow=narrow, through=through)
         finally:
             _add(timings, "encode", time.perf_counter() - t0)
 
@@ -237,7 +237,14 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
         return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
 
-    outs = _first_solved(lambda: planned(small, time_limit, short), lambda: planned(compiled(False), rest()))
+    def smallest() -> PlanOutcome:  # FOON's own plan out of holder reach: the plan through the stitches alone next
+        nonlocal small
+        out = planned(small, time_limit, short)
+        if out.result.planner == UNREACHED and (through := compiled(True, through=True)).narrowed:
+            small, out = through, planned(through, time_limit, short)
+        return out
+
+    outs = _first_solved(smallest, lambda: planned(compiled(False), rest()))
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {count(len(small.task.instances), 'object')} counted small gave no valid plan within "
