@@ -6,7 +6,8 @@ task's labels and the labels that hold something (`relational_plan.holding_label
 says did not happen are dropped (`list_drops.kept_in_place`). The objects come from those readings
 (`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
 for the stitched one; counted small, for FOON's own plan alone, `relational_objects`, or for that plan with each unit
-taking a made node as a later unit left the object, when that counts fewer, `_as_now`), or from the scene. A unit
+taking a made node as a later unit left the object, when that counts fewer, `_as_now`, or for the plan through the
+stitches alone, `through`), or from the scene. A unit
 with a role of a label the task has no object of is left out; when that changes which places the task's units
 name, the units are read again with only the kept ones as speakers (a unit with no objects names no place).
 """
