@@ -848,3 +848,37 @@ def test_a_batch_plan_explains_each_goal_inside_its_step(monkeypatch, tmp_path):
     r = run("plan", "--goals", goals, "--encoding", "tree")
     assert r.exit_code == 1, r.stderr  # the lemonade: unreachable
     assert asked == [True, True], r.stderr
+
+
+def test_plan_beats_while_it_plans(monkeypatch):
+    """nc54a's pass: `plan --goal guacamole --optimal` said `planning 'guacamole' (fd, relational encoding, ...) ...`
+    once, then nothing for 2.6 s through a pipe (load 15; `--planner pyperplan --optimal --encoding tree` 2.2 s):
+    encoding, translating and searching, one long call for the command (every said step beats since 749ac1e)."""
+    from foon2pddl.cli import plan_cmd
+
+    lines = _beats_while(monkeypatch, plan_cmd, "plan", "plan", "--goal", "whipped cream", "--encoding", "tree")
+    planning = [line for line in lines if line.startswith("planning 'whipped cream' (fd, tree encoding")]
+    assert len(planning) >= 3 and re.fullmatch(r"planning .* \.\.\. \d+ s", planning[-1]), lines
+
+
+def test_plan_skills_beats_while_it_plans_and_decomposes(monkeypatch):
+    """nc54a's pass: `plan tests/data/foon-subgraphs/0082-homemade_cheese_pizza.txt --goal "cheese pizza" --kitchen
+    base --skills --time-limit 40` (docs/skills.md) said `planning 'cheese pizza' (relational encoding, then
+    instances ...) and each step's robot skills ...`, then its fallback note, then nothing for 29.1 s through a
+    pipe (load 20): the instances plan and 61 steps' skills (every said step beats since 749ac1e)."""
+    from foon2pddl.skills import run as skills_run
+
+    lines = _beats_while(monkeypatch, skills_run, "plan_skills", "plan", "--goal", "whipped cream", "--skills")
+    planning = [line for line in lines if line.startswith("planning 'whipped cream' (relational encoding")]
+    assert len(planning) >= 3 and re.fullmatch(r"planning .* robot skills \.\.\. \d+ s", planning[-1]), lines
+
+
+def test_reading_the_network_beats(monkeypatch):
+    """nc54a's pass (load 21): `merge tests/data/foon-subgraphs --format json -o out/net.json` (json-schema.md) said
+    `reading tests/data/foon-subgraphs ...`, then nothing for 2.4 s through a pipe; `stats out/net.json` 2.2 s:
+    reading and merging the files, one long call (every said step beats since 749ac1e)."""
+    from foon2pddl.io import inputs
+
+    lines = _beats_while(monkeypatch, inputs, "load_network", "stats", SUBGRAPHS)
+    reading = [line for line in lines if line.startswith(f"reading {SUBGRAPHS}")]
+    assert len(reading) >= 3 and re.fullmatch(r"reading .* \.\.\. \d+ s", reading[-1]), lines
