@@ -882,3 +882,37 @@ def test_reading_the_network_beats(monkeypatch):
     lines = _beats_while(monkeypatch, inputs, "load_network", "stats", SUBGRAPHS)
     reading = [line for line in lines if line.startswith(f"reading {SUBGRAPHS}")]
     assert len(reading) >= 3 and re.fullmatch(r"reading .* \.\.\. \d+ s", reading[-1]), lines
+
+
+def test_a_networks_kitchen_strays_are_found_inside_its_step(monkeypatch):
+    """Stop 54's re-check (a fresh clone, stderr through a pipe, load 14): `goals ... --dishes --kitchen default |
+    retrieve ... --goals - --kitchen default --network exp` (generalization.md) went 1.8-2.0 s from the last beat of
+    `building FOON-EXP of 1,845 units ...` to its next line; a stack sampler showed the kitchen's strays (FOON-EXP's
+    node table, 0.3-0.5 s) looked for after the step, outside every step. They are looked for inside it."""
+    from contextlib import contextmanager
+
+    from foon2pddl.generalize.network import NetworkView
+
+    inside: list[bool] = []
+    real_step, real_strays = progress.slow_step, NetworkView.kitchen_strays
+
+    @contextmanager
+    def step(*args, **kwargs):
+        inside.append(True)
+        try:
+            with real_step(*args, **kwargs) as said:
+                yield said
+        finally:
+            inside.pop()
+
+    asked = []
+
+    def strays(self, *args, **kwargs):
+        asked.append(bool(inside))
+        return real_strays(self, *args, **kwargs)
+
+    monkeypatch.setattr(progress, "slow_step", step)
+    monkeypatch.setattr(NetworkView, "kitchen_strays", strays)
+    r = run("retrieve", "--goal", "guacamole", "--kitchen", "default")
+    assert r.exit_code == 0, r.stderr
+    assert asked == [True], r.stderr

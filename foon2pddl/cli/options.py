@@ -263,9 +263,11 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
     with slow_step(building.format(label=kind.label, units=count(len(net.foon.units), 'unit', grouped=True), level=level),
                    after=after):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
-    if kitchen is not None:
+        # inside the step: FOON-EXP's node table, 0.3-0.5 s at load 14, was outside every step (stop 54's re-check)
+        strays = None if kitchen is None else view.kitchen_strays(kit.nodes, net.at(level))
+    if strays is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name
-        warn_kitchen(loaded, net.at(level), [n for n in view.kitchen_strays(kit.nodes, net.at(level)) if n not in places])
+        warn_kitchen(loaded, net.at(level), [n for n in strays if n not in places])
     if utensils is not None:
         view = replace(view, kitchen=with_utensils(view.kitchen, view.foon, read_utensils(utensils)))
     if containment != "strict":
