@@ -916,3 +916,39 @@ def test_a_networks_kitchen_strays_are_found_inside_its_step(monkeypatch):
     r = run("retrieve", "--goal", "guacamole", "--kitchen", "default")
     assert r.exit_code == 0, r.stderr
     assert asked == [True], r.stderr
+
+
+def test_a_batch_reads_its_goal_list_inside_a_step(monkeypatch, tmp_path):
+    """Stop 54's re-check (through a pipe, load 14): `goals ... --dishes | retrieve ... --goals - --network exp` said
+    `loading foon2pddl retrieve ...`, then nothing for 2.0 s: a stack sampler showed `retrieve` waiting for its goal
+    list on standard input (the `goals` before it still reading the network) outside every step. Reading the list
+    is a step: it says what it waits for."""
+    from contextlib import contextmanager
+
+    from foon2pddl.cli import batch
+
+    inside: list[bool] = []
+    real_step, real_read = progress.slow_step, batch.read_goal_list
+
+    @contextmanager
+    def step(*args, **kwargs):
+        inside.append(True)
+        try:
+            with real_step(*args, **kwargs) as said:
+                yield said
+        finally:
+            inside.pop()
+
+    asked = []
+
+    def read(*args, **kwargs):
+        asked.append(bool(inside))
+        return real_read(*args, **kwargs)
+
+    monkeypatch.setattr(progress, "slow_step", step)
+    monkeypatch.setattr(batch, "read_goal_list", read)
+    goals = tmp_path / "goals.txt"
+    goals.write_text("guacamole\n")
+    r = run("retrieve", "--goals", goals)
+    assert r.exit_code == 0, r.stderr
+    assert asked == [True], r.stderr

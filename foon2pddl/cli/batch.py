@@ -44,7 +44,11 @@ def batch_entries(goal: tuple[str, ...], goals_file: Path | None, goal_file: Pat
         except ValueError as exc:
             raise UsageError(f"{exc}: {text!r}") from None
     if goals_file is not None:
-        entries.extend(read_goal_list(goals_file))
+        from .progress import slow_step
+
+        # a step: `goals ... | retrieve --goals -` waited 2.0 s on its standard input without a line (stop 54)
+        with slow_step(f"reading the goals from {'standard input' if str(goals_file) == '-' else goals_file}"):
+            entries.extend(read_goal_list(goals_file))
     if not entries:
         raise UsageError("no goal given (--goal G, repeated, or --goals FILE)")
     return entries
