@@ -813,18 +813,13 @@ def test_the_hint_check_beats_while_it_builds_the_other_networks(monkeypatch):
     assert len(checking) >= 3 and re.fullmatch(r"checking .* \.\.\. \d+ s", checking[-1]), lines
 
 
-def test_a_batch_plan_explains_each_goal_inside_its_step(monkeypatch, tmp_path):
-    """The known leftover of stop 53's pass, reproduced by stop 54's (bench.silence's pty, empty cache, load 16):
-    `goals ... --dishes --kitchen default | plan ... --goals - --kitchen default --network gen` went 2.1 s from goal 1's
-    closing line to `planning goal 4 of 100 ...`; a stack sampler showed goals 2 and 3 planned within the budget, then
-    the reason goal 3 is unsolvable (`failure_reason`: the kitchen additions' search, 0.6 s) outside every step. A
-    goal's reason is found inside its step."""
+def _asked_inside_a_step(monkeypatch, steps, owner, name: str) -> list[bool]:
+    """Wraps `steps.slow_step` (the one the code under test calls) to know when a step is open, and `owner.name` to
+    note at each call whether one is: returns those notes, filled as the command runs."""
     from contextlib import contextmanager
 
-    from foon2pddl.cli import batch_pddl
-
     inside: list[bool] = []
-    real_step, real_reason = batch_pddl.slow_step, batch_pddl.failure_reason
+    real_step, real = steps.slow_step, getattr(owner, name)
 
     @contextmanager
     def step(*args, **kwargs):
@@ -835,14 +830,25 @@ def test_a_batch_plan_explains_each_goal_inside_its_step(monkeypatch, tmp_path):
         finally:
             inside.pop()
 
-    asked = []
+    asked: list[bool] = []
 
-    def reason(*args, **kwargs):
+    def spy(*args, **kwargs):
         asked.append(bool(inside))
-        return real_reason(*args, **kwargs)
+        return real(*args, **kwargs)
 
-    monkeypatch.setattr(batch_pddl, "slow_step", step)
-    monkeypatch.setattr(batch_pddl, "failure_reason", reason)
+    monkeypatch.setattr(steps, "slow_step", step)
+    monkeypatch.setattr(owner, name, spy)
+    return asked
+
+def test_a_batch_plan_explains_each_goal_inside_its_step(monkeypatch, tmp_path):
+    """The known leftover of stop 53's pass, reproduced by stop 54's (bench.silence's pty, empty cache, load 16):
+    `goals ... --dishes --kitchen default | plan ... --goals - --kitchen default --network gen` went 2.1 s from goal 1's
+    closing line to `planning goal 4 of 100 ...`; a stack sampler showed goals 2 and 3 planned within the budget, then
+    the reason goal 3 is unsolvable (`failure_reason`: the kitchen additions' search, 0.6 s) outside every step. A
+    goal's reason is found inside its step."""
+    from foon2pddl.cli import batch_pddl
+
+    asked = _asked_inside_a_step(monkeypatch, batch_pddl, batch_pddl, "failure_reason")
     goals = tmp_path / "goals.txt"
     goals.write_text("guacamole\nlemonade\n")
     r = run("plan", "--goals", goals, "--encoding", "tree")
@@ -889,30 +895,9 @@ def test_a_networks_kitchen_strays_are_found_inside_its_step(monkeypatch):
     retrieve ... --goals - --kitchen default --network exp` (generalization.md) went 1.8-2.0 s from the last beat of
     `building FOON-EXP of 1,845 units ...` to its next line; a stack sampler showed the kitchen's strays (FOON-EXP's
     node table, 0.3-0.5 s) looked for after the step, outside every step. They are looked for inside it."""
-    from contextlib import contextmanager
-
     from foon2pddl.generalize.network import NetworkView
 
-    inside: list[bool] = []
-    real_step, real_strays = progress.slow_step, NetworkView.kitchen_strays
-
-    @contextmanager
-    def step(*args, **kwargs):
-        inside.append(True)
-        try:
-            with real_step(*args, **kwargs) as said:
-                yield said
-        finally:
-            inside.pop()
-
-    asked = []
-
-    def strays(self, *args, **kwargs):
-        asked.append(bool(inside))
-        return real_strays(self, *args, **kwargs)
-
-    monkeypatch.setattr(progress, "slow_step", step)
-    monkeypatch.setattr(NetworkView, "kitchen_strays", strays)
+    asked = _asked_inside_a_step(monkeypatch, progress, NetworkView, "kitchen_strays")
     r = run("retrieve", "--goal", "guacamole", "--kitchen", "default")
     assert r.exit_code == 0, r.stderr
     assert asked == [True], r.stderr
@@ -923,30 +908,9 @@ def test_a_batch_reads_its_goal_list_inside_a_step(monkeypatch, tmp_path):
     `loading foon2pddl retrieve ...`, then nothing for 2.0 s: a stack sampler showed `retrieve` waiting for its goal
     list on standard input (the `goals` before it still reading the network) outside every step. Reading the list
     is a step: it says what it waits for."""
-    from contextlib import contextmanager
-
     from foon2pddl.cli import batch
 
-    inside: list[bool] = []
-    real_step, real_read = progress.slow_step, batch.read_goal_list
-
-    @contextmanager
-    def step(*args, **kwargs):
-        inside.append(True)
-        try:
-            with real_step(*args, **kwargs) as said:
-                yield said
-        finally:
-            inside.pop()
-
-    asked = []
-
-    def read(*args, **kwargs):
-        asked.append(bool(inside))
-        return real_read(*args, **kwargs)
-
-    monkeypatch.setattr(progress, "slow_step", step)
-    monkeypatch.setattr(batch, "read_goal_list", read)
+    asked = _asked_inside_a_step(monkeypatch, progress, batch, "read_goal_list")
     goals = tmp_path / "goals.txt"
     goals.write_text("guacamole\n")
     r = run("retrieve", "--goals", goals)
