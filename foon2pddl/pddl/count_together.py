@@ -1,7 +1,9 @@
 """Which unit makes a container's node and the node of what is in it, in the delete-free plan counts are derived
 from (`instance_counts.delete_free_plan`, `relational`): one unit for both where one does, else the content's from
 a unit that makes it in that container, else the container's from a unit that takes the container where the
-content's maker left it."""
+content's maker left it, else the content's from a chain working it where it lies (`_worked_there`); or, asked
+for the plan with first makers (`first`), where the content's first makers already lead it there (`_there_first`),
+those."""
 
 from __future__ import annotations
 
@@ -12,7 +14,7 @@ from ..model.places import listed, places
 __all__ = ["makers_together"]
 
 
-def makers_together(reach: Reachability, u: int) -> dict[int, int]:
+def makers_together(reach: Reachability, u: int, first: bool = False) -> dict[int, int]:
     """Node id -> the unit to make it, for the pairs of unit `u`'s inputs that are a container's node listing a
     label and that label's node placed in it, made by two units (first achievers), when some unit firing before
     `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
@@ -20,7 +22,9 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
     cup])`, the macaroni's fill into a cup below the faucet: two cups, and no plan has the water in the one poured
     from. The pesto's fill makes both, from the kitchen's `measuring cup (empty)`: its objects are counted. Names
     are read as `u` reads them (rule 0, `unit_aliases`): the apple turnover's heat takes `cooking pan (contains
-    {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node."""
+    {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node.
+    `first`: no chain working the held node where it lies where its first makers already lead it there
+    (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer."""
     ix, out = reach.index, {}
     alias = dict(unit_aliases(reach.foon.units[u]))
     for c in ix.inputs[u]:
@@ -41,7 +45,7 @@ def makers_together(reach: Reachability, u: int) -> dict[int, int]:
             elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
                            and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
-            else:
+            elif not (first and _there_first(reach, c, x)):
                 out.update(_worked_there(reach, u, c, x) or {})
     return out
 
@@ -73,6 +77,28 @@ def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = WORK
                     found := _worked_there(reach, u, c, i, depth - 1)):
                 return {x: m} | found
     return None
+
+
+def _there_first(reach: Reachability, c: int, x: int, depth: int = WORKED_DEPTH) -> bool:
+    """Whether the held node `x`'s first achievers, back through nodes of its label at its place (at most `depth`
+    units), lead to one that makes it in the container's node `c` (`_in_box`) or makes `c` itself: the object is
+    there as first made, and no later maker is looked for (`_worked_there`). The scrambled eggs' cook and stir
+    (`0062-scrambled_eggs.txt:70`) takes `stove (on, with [pan])`, listing the pan, with the pan `contains {egg
+    mixture}, on [stove]`: 0062's pour (`:44`) fills the pan the heat (`0061-club_sandwich.txt:13`) left on the
+    stove it switched on; counted from 0056's pour (`0056-scrambled_eggs.txt:83`), which fires after the cook and
+    stir, the plan had a second pan, stove and bowl and 0056's chain; the garlic breads' remove
+    (`0015-garlic_bread-student-mealz.txt:241`) takes the tray 0015's bake (`:217`) left in the oven, not 0010's
+    (`0010-cheesy_garlic_bread.txt:274`), whose chain fired the garlic butter's twice. O(depth x inputs)."""
+    ix, held = reach.index, reach.index.nodes[x]
+    for _ in range(depth):
+        m = reach.achiever[x]
+        if m < 0 or c in ix.outputs[m] or _in_box(reach, m, c):
+            return m >= 0
+        x = next((i for i in ix.inputs[m] if reach.node_round[i] > 0 and ix.nodes[i].label == held.label
+                  and places(ix.nodes[i]) == places(held)), -1)
+        if x < 0:
+            return False
+    return False
 
 
 def _from_held(reach: Reachability, k: int, c: int, x: int) -> bool:

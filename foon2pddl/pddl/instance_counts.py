@@ -12,7 +12,11 @@ unfolding a delete-free plan backwards:
    task's units that lead it back there (`count_returns.with_returns`: the pot
    the cover and uncover bring back from `hot`; `relational`, else a unit of the
    plan fired again, when that plan counts fewer objects). `relational` keeps, of
-   these plans as they are and readers first, the fewest-counting (`count_order`).
+   these plans as they are and readers first, the fewest-counting (`count_order`);
+   also of the plan whose held nodes keep their first makers where those lead them
+   into the container (`count_together`'s `first`), counted after, so kept only
+   when it counts fewer: the universal scrambled eggs' pan from 0062's own pour,
+   not 0056's (two plans at most: the counting at most doubles).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -102,7 +106,7 @@ class InstanceCounts:
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
-                     together: bool = False) -> tuple[tuple[int, ...], ObjectNode] | None:
+                     together: bool = False, first: bool = False) -> tuple[tuple[int, ...], ObjectNode] | None:
     """A delete-free plan (unit indexes in firing order) for the candidate made in the fewest rounds.
 
     Each needed node is made by its first achiever (`reachability`): following first
@@ -110,7 +114,7 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
     crediting the latest maker can. None when no candidate can be made. `together`
     (`relational`): a container's node and the node of what is in it that one unit takes
     are made by one unit that makes both, when their first achievers differ and such a unit
-    fires before it and needs neither (`count_together`).
+    fires before it and needs neither (`count_together`; `first`: `makers_together`'s).
     """
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
@@ -131,7 +135,7 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
         if u not in chosen:
             chosen.add(u)
             if together:
-                maker.update({k: v for k, v in makers_together(reach, u).items() if k not in seen})
+                maker.update({k: v for k, v in makers_together(reach, u, first).items() if k not in seen})
             stack.extend(ix.inputs[u])
     return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen}), target
 
@@ -231,9 +235,14 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
-        ways = {made: tuple(with_returns(foon, found[0], units, kitchen, roles_of, stitched, again, plan_made=made)
-                            for again in (False, stitched)) for made in (False, together)}  # stitched: fired again
+        def ways_of(plan: tuple[int, ...]) -> dict[bool, tuple[tuple[int, ...], ...]]:  # stitched: fired again
+            return {made: tuple(with_returns(foon, plan, units, kitchen, roles_of, stitched, again, plan_made=made)
+                                for again in (False, stitched)) for made in (False, together)}
+        ways = ways_of(found[0])
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
+        if together and (other := delete_free_plan(foon, kitchen, candidates, True, first=True)) and other != found:
+            more = ways_of(other[0])  # first makers where they lead there (`count_together`): kept when fewer
+            plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
         reuse = reuse and not (stated or overrides or extra)
