@@ -24,6 +24,17 @@ two units do not list L, so the pair (C, L) is one the replay does not check (`P
 reading is reported once with the unit's file:line. O(d r) per dropped label for a path of d units of r roles (d at
 most `DEPTH`), and O(u n) for the later units of the recipe.
 
+An ingredient role consumed out of the unit's own container role is read the same way (`kept_in_place`): when a
+unit on the container's path (`path_taker`) takes the role's very input node again, placed in that container, the
+object stayed there, as `instances` reads it. The shrimp mango salad's vinaigrette mix
+(`0048-shrimp-mango_salad.txt:76`) takes `olive oil (in [bowl])` and `lemon juice (in [bowl])` and leaves no node of
+them; the mix at `:254`, on the bowl's path, takes both nodes again: read as consumed, FOON's plan as counted fired
+the oil's pour (`:4`) and the lemon's chain (`:16` to `:50`) twice (35 objects in the problem, `instances` 34; 28
+read so), unless a unit between them makes that node again (`_made_between`: the egg noodles' pour at
+`0044-egg_noodles_from_scratch.txt:155` brings new flour for the stir at `:162`). The pair is reported and left
+unchecked like a dropped flow's: the replay checks it nowhere in the task (where this reading fires on the four
+sets, FOON's own contradiction at the taker left it unchecked already).
+
 Likewise a container a unit empties because an earlier unit filled it (`relational_plan`) is kept whole when a
 later unit the unit's outputs lead to takes its input node again (`taken_again`): what left it was a portion.
 """
@@ -123,8 +134,9 @@ def _still_there(foon: Foon, recipes: dict[str, list[tuple[tuple[str, int], int]
 
 def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
                   ) -> tuple[dict[int, UnitPlan], list[tuple[str, str, str, FunctionalUnit]]]:
-    """`plans` without the flows a later unit's input says did not happen (module doc), and the readings as
-    (container label, content label, message, unit) gaps, in unit order."""
+    """`plans` without the flows, and with the roles consumed out of the unit's container, that a later unit's input
+    says did not happen (module doc), and the readings as (container label, content label, message, unit) gaps, in
+    unit order."""
     task = frozenset(units)
     recipes = _in_recipes(foon, task)  # `_still_there`'s later units
     out, gaps = dict(plans), []
@@ -145,7 +157,33 @@ def kept_in_place(foon: Foon, units: Iterable[int], plans: dict[int, UnitPlan]
                          plan.unit))
         if len(keep) < len(plan.flows):
             out[u] = replace(plan, flows=tuple(keep))
+        slots = list(out[u].slots)
+        for k, s in enumerate(slots):  # consumed out of a holder role whose path takes its node again: still there
+            src = s.rel.source
+            if s.fate is not Fate.CONSUMED or src is None or src.role is None or s.rel.role.before is None:
+                continue
+            holder = plan.slots[src.role].rel.role
+            after = plan.after_of(src.role) or holder.before
+            taker = path_taker(foon, task, u, after, s.rel.role.label) if after is not None else None
+            if taker is None or s.rel.role.before not in taker.inputs or _made_between(foon, task, s.rel.role.before,
+                                                                                     u, taker):
+                continue
+            slots[k] = replace(s, fate=Fate.STAYS, after=None)
+            gaps.append((holder.label, s.rel.role.label, f"{holder.label} leaves {s.rel.role.label} out of its list, "
+                         f"which {taker.motion.label} at {unit_where(taker, short_path)} takes again: read as still in it",
+                         plan.unit))
+        if slots != list(out[u].slots):
+            out[u] = replace(out[u], slots=tuple(slots))
     return out, gaps
+
+
+def _made_between(foon: Foon, units: frozenset[int], node: ObjectNode, u: int, taker: FunctionalUnit) -> bool:
+    """Whether a unit of `units` makes `node` again after unit `u` and before `taker` in their recipe file: then
+    `taker` takes that unit's object, not the one `u` had (the egg noodles' pour at `:155` between the stirs)."""
+    path, line = _order(foon, u)
+    end = (taker.source.path, taker.source.line) if taker.source is not None else ("", line)
+    return any(v in units and (at := _order(foon, v))[0] == path and line < at[1] and at < end
+               for v in foon.producers.get(node, ()))
 
 
 def _downstream(foon: Foon, units: frozenset[int], u: int) -> frozenset[int]:
