@@ -162,3 +162,23 @@ def test_compile_cli_restore_writes_the_restoring_actions_marked_as_assumed(tmp_
     batch = runner.invoke(main, ["compile", "--goal", "guacamole", "--goal", "salsa", "--encoding", "relational",
                                  "--restore", "-o", str(tmp_path / "batch")])
     assert batch.exit_code == 2 and "one goal at a time" in batch.output
+
+
+def test_the_plan_again_with_fewer_is_bounded_by_cpu_not_by_a_shorter_wall_limit(monkeypatch):
+    # a loaded machine: the planner's wall time runs out whenever it has RETRY_SECONDS of it or less, whatever its
+    # CPU does. The plan again with one knife must not depend on that: it has the caller's wall limit and
+    # RETRY_SECONDS of the planner's CPU (docs/pddl.md says CPU), so the result is the same at any load
+    real, runs = solve.run_planner, []
+
+    def loaded(*args, time_limit=None, cpu_limit=None, **kwargs):
+        runs.append((time_limit, cpu_limit))
+        if time_limit is not None and time_limit <= solve.RETRY_SECONDS:
+            return PlanResult(PlanStatus.TIMEOUT, (), "fd", "time limit (wall)")
+        return real(*args, time_limit=time_limit, cpu_limit=cpu_limit, **kwargs)
+
+    augmented, _ = with_restore(_cuts(), KITCHEN, GOAL)
+    monkeypatch.setattr(solve, "with_restore", lambda *a, **k: (augmented, Kitchen(KITCHEN.nodes, counts=((CLEAN, 3),))))
+    monkeypatch.setattr(solve, "run_planner", loaded)
+    outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational", time_limit=30)
+    assert [o.label for o in outcome.trace.objects].count("knife") == 1, outcome.decoded.notes
+    assert all(cpu is not None and cpu <= solve.RETRY_SECONDS for _, cpu in runs[1:])  # the retry's runs

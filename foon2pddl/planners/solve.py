@@ -143,12 +143,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
          rates: Rates | None = None, category_index: CategoryIndex | None = None,
          up_validate: bool = False, constraints: Constraints | None = None, search=None,
          instances: tuple[tuple[str, int], ...] = (),
-         categories: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> PlanOutcome:
+         categories: tuple[tuple[str, tuple[str, ...]], ...] = (), cpu_limit: float | None = None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted
     ones (default: the shipped index). `time_limit` bounds the planner run (translation
-    and search). Raises UsageError for bad options (encoding, cost mode). When `constraints`
+    and search) in wall time, `cpu_limit` in the CPU seconds of the planner's processes. Raises UsageError for bad options (encoding, cost mode). When `constraints`
     leave no way to make the goal, nothing is compiled and the outcome is `unsolvable`
     (planner `constraints`, an empty task of the encoding); a planner's failure is a
     status, never an exception. `instances`, `categories`: for the
@@ -230,8 +230,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), EXCLUDED, str(exc)), Compiled(empty),
                            timings=timings)
     if not small.narrowed:
-        return planned(small, time_limit)
-    short = min(time_limit or RETRY_SECONDS, RETRY_SECONDS)
+        return planned(small, time_limit, cpu_limit)
+    short = min(time_limit or RETRY_SECONDS, cpu_limit or RETRY_SECONDS, RETRY_SECONDS)
     started = _now()
 
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
@@ -244,7 +244,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
             small, out = through, planned(through, time_limit, short)
         return out
 
-    outs = _first_solved(smallest, lambda: planned(compiled(False), rest()))
+    outs = _first_solved(smallest, lambda: planned(compiled(False), rest(), cpu_limit))
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {count(len(small.task.instances), 'object')} counted small gave no valid plan within "
@@ -273,9 +273,9 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
     allow. When that gives no valid plan (the encoding needs two at once where the unfolded plan reuses one),
     it plans as `plan` does, without them (with its own time limit). A plan that had fewer of the objects in the
     states the restoring units make busy at once than it was given (`planners.copies.busy`: it used them one after
-    another) is made again, with the restoring units and only those (`pddl.restore.fewer`), within
-    `RETRY_SECONDS`; it is kept when valid, else the first plan is. A note gives the counts and which plan was
-    kept."""
+    another) is made again, with the restoring units and only those (`pddl.restore.fewer`), within `RETRY_SECONDS`
+    of the planner's CPU (and the caller's wall limit: a loaded machine gives the same plan); it is kept when valid,
+    else the first plan is. A note gives the counts and which plan was kept."""
     augmented, counted = with_restore(foon, kitchen, goal, level)
     lowered = ", ".join(f"{k} x {n.describe()}" for n, k in counted.counts if (n, k) not in kitchen.counts)
     outs = _first_solved(lambda: plan(augmented, counted, goal, encoding, level, **options),
@@ -293,8 +293,8 @@ def plan_restoring(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEF
     low = fewer(counted, kitchen, back, Counter(o.node for o in outcome.trace.initial),
                 busy(outcome.trace, lambda node, start: back.get(node) == start))
     if low is not None:  # the plan used them one after another: plan again with no more than it had busy at once
-        limit = min(options.get("time_limit") or RETRY_SECONDS, RETRY_SECONDS)
-        tighter = plan(augmented, low, goal, encoding, level, **{**options, "time_limit": limit})
+        cpu = min(options.get("cpu_limit") or RETRY_SECONDS, RETRY_SECONDS)
+        tighter = plan(augmented, low, goal, encoding, level, **{**options, "cpu_limit": cpu})
         said = ", ".join(f"{k} x {n.describe()}" for n, k in low.counts if (n, k) not in counted.counts)
         if tighter.status == PlanStatus.SOLVED:
             outcome, note = tighter, note + f"; planned again with them and the most the plan had in use at once: {said}"
