@@ -116,11 +116,22 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
     are made by one unit that makes both, when their first achievers differ and such a unit
     fires before it and needs neither (`count_together`; `first`: `makers_together`'s).
     """
+    return delete_free_plans(foon, kitchen, candidates, together, (first,))[0]
+
+
+def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], together: bool,
+                      firsts: Sequence[bool]) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
+    """`delete_free_plan` for each of `firsts`, over one fixpoint (`derive_counts` wants both)."""
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
     if not made:
-        return None
+        return (None,) * len(firsts)
     target = min(made, key=lambda c: (reach.round_of(c), c))
+    return tuple((_chosen(reach, target, together, first), target) for first in firsts)
+
+
+def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool) -> tuple[int, ...]:
+    """The units of `delete_free_plan`'s plan for `target`, in firing order."""
     ix = reach.index
     chosen: set[int] = set()
     seen: set[int] = set()
@@ -137,7 +148,7 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
             if together:
                 maker.update({k: v for k, v in makers_together(reach, u, first).items() if k not in seen})
             stack.extend(ix.inputs[u])
-    return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen}), target
+    return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen})
 
 
 def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) -> tuple[int, ...]:
@@ -225,7 +236,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     """
     stated = stated or {}
     overrides = overrides or {}
-    found = delete_free_plan(foon, kitchen, candidates, together)
+    found, *other = delete_free_plans(foon, kitchen, candidates, together, (False, True) if together else (False,))
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)
@@ -240,8 +251,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                                 for again in (False, stitched)) for made in (False, together)}
         ways = ways_of(found[0])
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
-        if together and (other := delete_free_plan(foon, kitchen, candidates, True, first=True)) and other != found:
-            more = ways_of(other[0])  # first makers where they lead there (`count_together`): kept when fewer
+        if other and other[0] != found:
+            more = ways_of(other[0][0])  # first makers where they lead there (`count_together`): kept when fewer
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
