@@ -174,9 +174,14 @@ def _interpreter_helpers() -> set[int]:
     return pids
 
 
-#: Tries at removing a command's directory: a process killed while it wrote there (a worker between the scans
-#: and its SIGKILL) can leave a file in it after a removal, so it is killed again and the removal repeated.
-REMOVALS = 20
+#: How long the removal of a command's directory is retried (seconds of the clock): a process killed while it
+#: wrote there (a worker between the scans and its SIGKILL, or in uninterruptible I/O on a loaded machine, which
+#: finishes its system call before it dies) can leave a file in it after a removal, so it is killed again and the
+#: removal repeated, `REMOVAL_PAUSE` apart, until the directory is gone or this much time has passed. A count of
+#: tries (20, 0.02 s apart) once lost that race under two test suites at once. Costs nothing when the first
+#: removal holds, as it nearly always does.
+REMOVAL_SECONDS = 5.0
+REMOVAL_PAUSE = 0.02
 
 
 @contextmanager
@@ -217,9 +222,10 @@ def _leave_scope(scope: str, token: str, started: int, saved: dict[str, str | No
             else:
                 os.environ[key] = value
         tempfile.tempdir = saved_tempdir
-        for _ in range(REMOVALS):
+        deadline = time.monotonic() + REMOVAL_SECONDS
+        while True:
             shutil.rmtree(scope, ignore_errors=True)
-            if not os.path.lexists(scope):
+            if not os.path.lexists(scope) or time.monotonic() >= deadline:
                 break
             kill_started()
-            time.sleep(0.02)
+            time.sleep(REMOVAL_PAUSE)
