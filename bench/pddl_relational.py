@@ -11,6 +11,9 @@ what no action can touch), translate+search seconds (median, worst). `-v`: one
 line per file and encoding. `--universal`: the merge of all subgraphs (issue 21's universal
 floor), its default kitchen, each reachable dish a goal (as `bench.pddl_instances
 --universal`); a row's `file` is the goal node. As a bench area (`run(ctx)`) it reports the counts.
+`--every K --offset I` / `--sample N --seed S`: only the subgraphs of 0-based sorted index I modulo K, or
+N of them drawn with `random.Random(S)` (`pick`): a universal FOON of subgraphs no rule was tuned on (docs/pddl.md,
+Unseen universal FOONs).
 `--restore`: each task planned with the given encodings' last and again with `plan --restore`
 (`planners.solve.plan_restoring`); on the dishes both plan valid and replay-clean, their objects and
 `copies` (copies used one after another) before and after.
@@ -23,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import collections
+import random
 import statistics
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -119,10 +123,25 @@ def restore_rows(paths: list[Path], encoding: str, time_limit: float, verbose: b
             f"{sum(r[1][2] > 0 for r in pairs)} plans")
 
 
-def universal_rows(shared: Path, time_limit: float, limit: int | None = None,
+def pick(files: list[Path], every: int = 1, offset: int = 0, sample: int | None = None, seed: int = 0) -> list[Path]:
+    """The files of 0-based index `offset` modulo `every` in `files`' order, then `sample` of them drawn with
+    `random.Random(seed)` (all when None), in `files`' order: a seeded subset the same on every machine."""
+    if every < 1 or not 0 <= offset < every:
+        raise ValueError(f"--offset {offset} is not in 0..{every - 1} (--every {every})")
+    chosen = files[offset::every]
+    if sample is None:
+        return chosen
+    if not 0 < sample <= len(chosen):
+        raise ValueError(f"--sample {sample}: there are {len(chosen)} subgraphs to draw from")
+    drawn = set(random.Random(seed).sample(chosen, sample))
+    return [f for f in chosen if f in drawn]
+
+
+def universal_rows(files: list[Path], time_limit: float, limit: int | None = None,
                    encodings: tuple[str, ...] = ENCODINGS) -> Iterator[Row]:
-    """The merged subgraphs, default kitchen, every dish its kitchen can make a goal (sorted; the first `limit`)."""
-    foon, _ = load([shared / "foon-subgraphs"])
+    """The merged `files` (subgraphs), default kitchen, every dish its kitchen can make a goal (sorted; the first
+    `limit`)."""
+    foon, _ = load(files)
     kitchen = default_kitchen(foon)
     dishes = reachable_dishes(foon, kitchen.nodes)
     for dish in dishes[:limit]:
@@ -177,16 +196,22 @@ def main() -> None:
     ap.add_argument("--encodings", default=",".join(ENCODINGS), help="comma-separated, of " + ", ".join(ENCODINGS))
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--restore", action="store_true", help="without and with restoring units: objects and copies")
+    ap.add_argument("--every", type=int, default=1, help="only the subgraphs of sorted index OFFSET modulo EVERY")
+    ap.add_argument("--offset", type=int, default=0)
+    ap.add_argument("--sample", type=int, default=None, help="then N of those subgraphs, drawn with --seed")
+    ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
     shared_data(args.shared)
     encodings = tuple(e for e in args.encodings.split(",") if e)
+    try:
+        files = pick(expand_paths([args.shared / "foon-subgraphs"]), args.every, args.offset, args.sample, args.seed)
+    except ValueError as e:
+        ap.error(str(e))
     if args.restore:
-        print(restore_rows(expand_paths([args.shared / "foon-subgraphs"])[: args.limit], encodings[-1],
-                           args.time_limit, args.verbose))
+        print(restore_rows(files[: args.limit], encodings[-1], args.time_limit, args.verbose))
         return
-    found = (universal_rows(args.shared, args.time_limit, args.limit, encodings) if args.universal
-             else (r for f in expand_paths([args.shared / "foon-subgraphs"])[: args.limit]
-                   for r in check_file(f, args.time_limit, encodings)))
+    found = (universal_rows(files, args.time_limit, args.limit, encodings) if args.universal
+             else (r for f in files[: args.limit] for r in check_file(f, args.time_limit, encodings)))
     rows = []
     for r in found:
         rows.append(r)

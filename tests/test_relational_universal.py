@@ -8,6 +8,7 @@ from node_words import contains, inside, n
 from relational_checks import clean_plan, clean_unit_plan
 
 from bench.pddl_relational import universal_rows
+from foon2pddl.io.files import expand_paths
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
@@ -76,7 +77,7 @@ def test_the_universal_omelette_is_valid_and_clean(universal):
 
 def test_the_bench_plans_the_universal_foons_reachable_dishes_in_order():
     # `python -m bench.pddl_relational --universal`: issue 21's universal floor, one row per goal and encoding
-    rows = list(universal_rows(SHARED, 60.0, limit=1, encodings=("relational",)))
+    rows = list(universal_rows(expand_paths([SHARED / "foon-subgraphs"]), 60.0, limit=1, encodings=("relational",)))
     assert [(r.file, r.encoding, r.status, r.kinds) for r in rows] == [
         ("barbecued ribs (cooked, on [baking tray])", "relational", "solved", ())]
 
@@ -93,7 +94,7 @@ def test_the_universal_bench_plans_the_same_dishes_in_any_merge_order(tmp_path):
         data.mkdir(parents=True)
         (data / "a.txt").write_text(CRACK.replace("{motion}", "crack").replace("{mark}", first))
         (data / "b.txt").write_text(CRACK.replace("{motion}", "break").replace("{mark}", second))
-        rows = list(universal_rows(tmp_path / name, 60.0, encodings=("relational",)))
+        rows = list(universal_rows(expand_paths([data]), 60.0, encodings=("relational",)))
         assert [(r.file, r.status) for r in rows] == [("egg (cracked, in [bowl])", "solved")], name
 
 
