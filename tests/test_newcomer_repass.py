@@ -419,3 +419,23 @@ def test_the_shared_apple_cake_from_the_base_kitchen_names_its_cycle_and_what_br
     goal = resolve_goal(GoalSpec("apple cake"), foon)
     reach = reachable(foon, base_kitchen(foon).nodes | added, goal.candidates)
     assert any(reach.can_make(c) for c in goal.candidates)  # the oracle: the named nodes do make it
+
+
+def test_the_nodes_no_unit_makes_are_counted_when_not_all_are_named():
+    """Stop 55's pass: a kitchen of a knife, a board and `onoin: whole` (a typo) for the guacamole. The reason listed
+    10 nodes no unit makes (avocado ... lime) as if they were all, leaving out the onion the typo lost, the salt,
+    the spoon and the tomato: `blockers` returns its first 10. The list says how many it leaves out."""
+    from foon2pddl.analysis.reachability import blockers, reachable
+    from foon2pddl.api import kitchen_of
+    from foon2pddl.io.inputs import load_network
+    from foon2pddl.model.goal import GoalSpec, resolve_goal
+    from foon2pddl.retrieval.explain import explain_unreachable
+
+    net = load_network([]).at(3)
+    kit = kitchen_of("onoin: whole", "knife", "cutting board: empty")
+    goal = resolve_goal(GoalSpec("guacamole"), net)
+    every = blockers(reachable(net, kit.nodes, goal.candidates), goal.candidates, limit=10**6)
+    assert len(every) > 10 and "onion (whole)" in {n.describe() for n in every}
+    text = explain_unreachable(net, kit.nodes, goal)
+    listed = text.split("each needed on some way to it: ", 1)[1]
+    assert listed == "; ".join(n.describe() for n in every[:10]) + f"; ... ({len(every) - 10} more)"
