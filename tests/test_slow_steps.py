@@ -916,3 +916,36 @@ def test_a_batch_reads_its_goal_list_inside_a_step(monkeypatch, tmp_path):
     r = run("retrieve", "--goals", goals)
     assert r.exit_code == 0, r.stderr
     assert asked == [True], r.stderr
+
+
+def test_retrieve_looks_for_the_kitchen_additions_inside_a_step(monkeypatch, tmp_path):
+    """Stop 55's pass (nc55b): `retrieve ../shared/data/foon-subgraphs --goal 'whipped cream' --kitchen
+    foon-search-inputs/utensils.txt` (a list of utensils given as a kitchen) said `retrieving a tree for ...` and then
+    nothing for 23.2 s through a pipe (load 20-30): the search for the smallest kitchen additions
+    (`explain_unreachable`, 'no set of up to 6 kitchen additions was found') ran after the step, outside every step."""
+    from foon2pddl.cli import retrieve_cmd
+
+    asked = _asked_inside_a_step(monkeypatch, retrieve_cmd, retrieve_cmd, "explain_unreachable")
+    r = run("retrieve", "--goal", "lemonade")
+    assert r.exit_code == 1, r.stderr  # the example kitchen has no lemon
+    assert asked == [True], r.stderr
+
+
+def test_plan_finds_why_there_is_no_plan_inside_a_step(monkeypatch):
+    """The same search behind `plan`'s `reason:` line (`failure_reason`) ran after the planning step."""
+    from foon2pddl.cli import plan_cmd
+
+    asked = _asked_inside_a_step(monkeypatch, plan_cmd, plan_cmd, "failure_reason")
+    r = run("plan", "--goal", "lemonade", "--encoding", "tree")
+    assert r.exit_code == 1, r.stderr
+    assert asked == [True], r.stderr
+
+
+def test_compile_checks_the_goal_can_be_made_inside_a_step(monkeypatch, tmp_path):
+    """... and behind `compile`'s `unreachable` error (`unreachable_reason`), before the compiling step."""
+    from foon2pddl.cli import compile_cmd, reasons
+
+    asked = _asked_inside_a_step(monkeypatch, compile_cmd, reasons, "unreachable_reason")
+    r = run("compile", "--goal", "lemonade", "-o", tmp_path)
+    assert r.exit_code == 1, r.stderr
+    assert asked and all(asked), r.stderr

@@ -202,7 +202,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         steps_view = outcome.compiled.view
         if fmt in STEP_FORMATS and steps_view is not None and outcome.trace is not None and outcome.trace.steps:
             data += steps_view.text(outcome.task, outcome.trace)
-    reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
+    with slow_step(f"finding why there is no plan for {target.describe()!r}"):  # the kitchen additions' search
+        reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
     if fmt == "json":
         data = outcome_json(outcome, timings, data, reason)
     else:
