@@ -52,6 +52,14 @@ def test_scene_objects_are_counted_from_one(tmp_path):
     (["retrieve", "--goal", "guacamole", "--kitchen", RATES], "not a kitchen: give it with `--rates`"),
     (["retrieve", "--goal", "guacamole", "--constraints", SEARCH_INPUTS / "kitchen.json"],
      "not a constraints file: give it with `--kitchen` or with `--goals`"),
+    # stop 55's pass (nc55b): the rates file as a goal list was 129 `unmatched` goals (`chop 0.10`), exit 1, and as
+    # a utensils list `expected one object label a line`; as a kitchen and as PATHS it was named
+    (["retrieve", "--goals", RATES], "this is a motion success-rates file (`motion<TAB>rate` lines), not a goal list: "
+                                     "give it with `--rates`"),
+    (["retrieve", "--goal", "guacamole", "--utensils", RATES], "this is a motion success-rates file "
+                                                               "(`motion<TAB>rate` lines), not a utensils list: give it with `--rates`"),
+    (["retrieve", "--goal", "guacamole", "--constraints", RATES], "this is a motion success-rates file "
+                                                                  "(`motion<TAB>rate` lines), not a constraints file: give it with `--rates`"),
 ])
 def test_a_file_of_another_kind_names_the_option_that_takes_it(args, says):
     """`stats kitchen.json` said `give it as the kitchen or the goal list`, a scene `give it as the kitchen`, a

@@ -27,7 +27,7 @@ from ..model.constraints import Constraint, Constraints, Kind, combine, make_con
 from .foon_lines import CONTROL_CHARS
 from .json_text import key_line, load_json
 from .parser import read_text
-from .rates import Rates
+from .rates import Rates, refuse_rates
 
 #: File key -> constraint kind of its list of labels.
 LIST_KEYS = {"without_motions": Kind.WITHOUT_MOTION, "without": Kind.WITHOUT, "must_use": Kind.MUST_USE}
@@ -74,6 +74,7 @@ def _other_kind(data: object) -> tuple[str, tuple[str, ...]] | None:
 
 def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
     """Parse a constraints document; FoonSyntaxError naming path and line on any problem."""
+    refuse_rates(text, path, "a constraints file")
     data = load_json(text, path)  # located errors for bad JSON, deep nesting, huge integers
     other = _other_kind(data)
     if other:

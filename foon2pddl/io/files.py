@@ -64,11 +64,9 @@ def read_network(path: Path) -> ParseResult:
     try:
         return parse_file(path)
     except FoonSyntaxError:
-        from .rates import looks_like_rates
+        from .rates import refuse_rates
 
-        if looks_like_rates(read_text(path)):  # re-read only on error: say what the file is and where it goes
-            raise FoonSyntaxError(str(path), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
-                                                "not a network", belongs=("rates",)) from None
+        refuse_rates(read_text(path), str(path), "a network")  # re-read only on error: what it is, where it goes
         raise
 
 

@@ -27,6 +27,7 @@ from .json_text import load_json
 from .jsonio import item_lines, node_from_dict
 from .kitchen_files import json_node, looks_like_foon
 from .parser import read_text
+from .rates import refuse_rates
 
 #: A row of the `goals` text table: made (5 columns), round (5), 2 spaces, dish mark (5), node.
 _TABLE_ROW = re.compile(r"^(?:yes  |no   )[ \d]{5}  [* ] {4}(?P<node>\S.*)$")
@@ -94,6 +95,7 @@ def parse_goal_json(text: str, path: str) -> list[GoalEntry]:
 
 def parse_goal_list(text: str, path: str) -> list[GoalEntry]:
     """Goals of a goal-list text in any of the formats of the module doc."""
+    refuse_rates(text, path, "a goal list")
     head = text.lstrip()[:1]
     if head in "[{" and head:
         entries = parse_goal_json(text, path)

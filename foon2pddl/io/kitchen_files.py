@@ -11,7 +11,7 @@ from ..model.kitchen import Kitchen
 from .foon_lines import LINE_ID, NETWORK_NOT_OBJECTS, parse_objects
 from .json_text import item_lines, line_of, load_json, text_problem
 from .parser import read_text
-from .rates import looks_like_rates
+from .rates import refuse_rates
 
 
 def json_node(item: object, path: str, index: int) -> ObjectNode:
@@ -167,9 +167,7 @@ def read_kitchen(path: str | Path) -> Kitchen:
         listed = list(zip(nodes, item_lines(text), strict=True))
     else:
         text = read_text(p)
-        if looks_like_rates(text):
-            raise FoonSyntaxError(str(p), 1, "this is a motion success-rates file (`motion<TAB>rate` lines), "
-                                             "not a kitchen", belongs=("rates",))
+        refuse_rates(text, str(p), "a kitchen")
         if looks_like_foon(text):
             listed = parse_objects(text, str(p))
         else:
@@ -199,6 +197,7 @@ def parse_utensils(text: str, path: str = "<utensils>") -> frozenset[str]:
     from ..model.foon import normalize_label
     from .foon_lines import CONTROL_CHARS
 
+    refuse_rates(text, path, "a utensils list")
     labels = set()
     for lineno, raw in enumerate(text.split("\n"), start=1):  # `\n` only, as every reader
         line = raw.strip()

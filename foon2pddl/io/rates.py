@@ -94,3 +94,11 @@ def looks_like_rates(text: str) -> bool:
         if not tab or not label.strip():
             return False
     return True
+
+
+def refuse_rates(text: str, path: str, what: str) -> None:
+    """Refuse a rates file given as `what` (`a kitchen`, `a goal list`, ...): a located error naming the option that
+    takes it. Stop 55's pass: as a goal list it was 129 `unmatched` goals (`chop 0.10`), exit 1."""
+    if looks_like_rates(text):
+        raise FoonSyntaxError(path, 1, f"this is a motion success-rates file (`motion<TAB>rate` lines), not {what}",
+                              belongs=("rates",))
