@@ -175,7 +175,8 @@ class Progress:
         if self.bar is not None:
             self.bar.write(text, file=self.stream)
         elif self.mode != OFF:
-            print(text, file=self.stream, flush=True)
+            with self._lock:  # not inside a line the ticker prints
+                print(text, file=self.stream, flush=True)
 
     def close(self) -> None:
         """End the bar (or print the last line); once: the Dask run ends it before stopping its workers."""
