@@ -949,3 +949,22 @@ def test_compile_checks_the_goal_can_be_made_inside_a_step(monkeypatch, tmp_path
     r = run("compile", "--goal", "lemonade", "-o", tmp_path)
     assert r.exit_code == 1, r.stderr
     assert asked and all(asked), r.stderr
+
+
+def test_a_solved_plan_never_says_it_is_finding_why_there_is_no_plan(monkeypatch):
+    """`failure_reason` runs after every `plan`, also a solved one (it returns at once then): its step's words
+    (`finding why there is no plan for ...`) were said on a solved plan whenever the command had been silent
+    for `AFTER` seconds by then (a large plan rendered under load). The step wraps the search only when there is
+    no plan; the command's silence is set here as a loaded machine leaves it."""
+    from foon2pddl.cli import plan_cmd
+
+    real = plan_cmd.render_tree
+
+    def rendered_late(*args, **kwargs):
+        progress._quiet_since = time.monotonic() - 10 * progress.AFTER  # silent since long before
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(plan_cmd, "render_tree", rendered_late)
+    r = run("plan", "--goal", "guacamole")
+    assert r.exit_code == 0, r.stderr
+    assert "solved" in r.stderr and "finding why there is no plan" not in r.stderr
