@@ -3,18 +3,20 @@ from (`instance_counts.delete_free_plan`, `relational`): one unit for both where
 a unit that makes it in that container, else the container's from a unit that takes the container where the
 content's maker left it, else the content's from a chain working it where it lies (`_worked_there`); or, asked
 for the plan with first makers (`first`), where the content's first makers already lead it there (`_there_first`),
-those."""
+those; asked for makers by holder reach (`placed`), back along the held node's chain a unit that makes the
+container's node too (`_placed_back`)."""
 
 from __future__ import annotations
 
 from ..analysis.reachability import Reachability
 from ..model.aliases import unit_aliases
+from ..model.foon import ObjectNode
 from ..model.places import listed, places
 
 __all__ = ["makers_together"]
 
 
-def makers_together(reach: Reachability, u: int, first: bool = False) -> dict[int, int]:
+def makers_together(reach: Reachability, u: int, first: bool = False, placed: bool = False) -> dict[int, int]:
     """Node id -> the unit to make it, for the pairs of unit `u`'s inputs that are a container's node listing a
     label and that label's node placed in it, made by two units (first achievers), when some unit firing before
     `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
@@ -24,7 +26,9 @@ def makers_together(reach: Reachability, u: int, first: bool = False) -> dict[in
     are read as `u` reads them (rule 0, `unit_aliases`): the apple turnover's heat takes `cooking pan (contains
     {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node.
     `first`: no chain working the held node where it lies where its first makers already lead it there
-    (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer."""
+    (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer. `placed`:
+    where no rule above chooses, a maker back along the held node's chain that makes the container's node too
+    (`_placed_back`; only for a task whose small counts are out of holder reach, `planners.solve.plan`)."""
     ix, out = reach.index, {}
     alias = dict(unit_aliases(reach.foon.units[u]))
     for c in ix.inputs[u]:
@@ -46,7 +50,7 @@ def makers_together(reach: Reachability, u: int, first: bool = False) -> dict[in
                            and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             elif not (first and _there_first(reach, c, x)):
-                out.update(_worked_there(reach, u, c, x) or {})
+                out.update(_worked_there(reach, u, c, x) or placed and _placed_back(reach, u, c, x) or {})
     return out
 
 
@@ -79,6 +83,34 @@ def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = WORK
     return None
 
 
+def _placed_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_DEPTH) -> dict[int, int] | None:
+    """Node id -> maker for a node `y` on the held node `x`'s chain (`x`, then back through first achievers' inputs
+    of its label at its place, at most `depth` units) and the container's node `c`: a unit other than `y`'s first
+    achiever that makes both, firing before `u` and needing neither (None when a first achiever on the chain makes
+    `c`, or none is found). The even universal half's kofta mix: its cook (`ACT-0053-lentil_kofta-1.txt:92`) takes
+    `stove (on, with [pot])`, first made by the garlic rice's pick-and-place of an empty pot
+    (`0023-garlic_rice.txt:1`), with the pot of lentils on it, whose chain starts with the miso soup's pour
+    (`0033-miso_soup.txt:70`) into a pot on a stove no unit switches on: no plan has the two together (holder
+    reach). The kofta's own pick-and-place (`:25`) makes `pot (contains {water}, on [stove])` and the stove with
+    the pot: counted from it, one pot and one stove. Tie-break: the earliest round, then FOON order (`rank`).
+    O(depth x makers x the first achievers' inputs)."""
+    ix, held = reach.index, reach.index.nodes[x]
+    y = x
+    for _ in range(depth):
+        m = reach.achiever[y]
+        if m < 0 or c in ix.outputs[m]:
+            return None
+        both = [k for k in ix.makers[y] if k != m and c in ix.outputs[k]
+                and 0 <= reach.unit_round[k] < reach.unit_round[u] and not _needs(reach, k, {c, y})]
+        if both:
+            k = min(both, key=lambda k: (reach.unit_round[k], ix.rank[k]))
+            return {y: k, c: k}
+        y = _back(reach, m, held)
+        if y < 0:
+            return None
+    return None
+
+
 def _there_first(reach: Reachability, c: int, x: int, depth: int = WORKED_DEPTH) -> bool:
     """Whether the held node `x`'s first achievers, back through nodes of its label at its place (at most `depth`
     units), lead to one that makes it in the container's node `c` (`_in_box`) or makes `c` itself: the object is
@@ -94,11 +126,18 @@ def _there_first(reach: Reachability, c: int, x: int, depth: int = WORKED_DEPTH)
         m = reach.achiever[x]
         if m < 0 or c in ix.outputs[m] or _in_box(reach, m, c):
             return m >= 0
-        x = next((i for i in ix.inputs[m] if reach.node_round[i] > 0 and ix.nodes[i].label == held.label
-                  and places(ix.nodes[i]) == places(held)), -1)
+        x = _back(reach, m, held)
         if x < 0:
             return False
     return False
+
+
+def _back(reach: Reachability, m: int, held: ObjectNode) -> int:
+    """The input of unit `m` that a unit makes with `held`'s label at its place (the chain `_there_first` and
+    `_placed_back` follow back), or -1."""
+    ix = reach.index
+    return next((i for i in ix.inputs[m] if reach.node_round[i] > 0 and ix.nodes[i].label == held.label
+                 and places(ix.nodes[i]) == places(held)), -1)
 
 
 def _from_held(reach: Reachability, k: int, c: int, x: int) -> bool:

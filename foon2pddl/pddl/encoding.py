@@ -44,7 +44,7 @@ class EncodeOptions:
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
     The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`), from the
-    plan through the stitches alone with `through`.
+    plan through the stitches alone with `through`, with makers by holder reach with `placed`.
     """
 
     prune: bool = True
@@ -56,6 +56,7 @@ class EncodeOptions:
     policy: str = "absent"
     narrow: bool = False
     through: bool = False
+    placed: bool = False
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

@@ -106,7 +106,8 @@ class InstanceCounts:
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
-                     together: bool = False, first: bool = False) -> tuple[tuple[int, ...], ObjectNode] | None:
+                     together: bool = False, first: bool = False, placed: bool = False
+                     ) -> tuple[tuple[int, ...], ObjectNode] | None:
     """A delete-free plan (unit indexes in firing order) for the candidate made in the fewest rounds.
 
     Each needed node is made by its first achiever (`reachability`): following first
@@ -114,23 +115,24 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
     crediting the latest maker can. None when no candidate can be made. `together`
     (`relational`): a container's node and the node of what is in it that one unit takes
     are made by one unit that makes both, when their first achievers differ and such a unit
-    fires before it and needs neither (`count_together`; `first`: `makers_together`'s).
+    fires before it and needs neither (`count_together`; `first`, `placed`: `makers_together`'s).
     """
-    return delete_free_plans(foon, kitchen, candidates, together, (first,))[0]
+    return delete_free_plans(foon, kitchen, candidates, together, (first,), placed)[0]
 
 
 def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], together: bool,
-                      firsts: Sequence[bool]) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
-    """`delete_free_plan` for each of `firsts`, over one fixpoint (`derive_counts` wants both)."""
+                      firsts: Sequence[bool], placed: bool = False) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
+    """`delete_free_plan` for each of `firsts`, over one fixpoint (`derive_counts` wants both); `placed`:
+    `makers_together`'s."""
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
     if not made:
         return (None,) * len(firsts)
     target = min(made, key=lambda c: (reach.round_of(c), c))
-    return tuple((_chosen(reach, target, together, first), target) for first in firsts)
+    return tuple((_chosen(reach, target, together, first, placed), target) for first in firsts)
 
 
-def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool) -> tuple[int, ...]:
+def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool, placed: bool = False) -> tuple[int, ...]:
     """The units of `delete_free_plan`'s plan for `target`, in firing order."""
     ix = reach.index
     chosen: set[int] = set()
@@ -146,7 +148,7 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
         if u not in chosen:
             chosen.add(u)
             if together:
-                maker.update({k: v for k, v in makers_together(reach, u, first).items() if k not in seen})
+                maker.update({k: v for k, v in makers_together(reach, u, first, placed).items() if k not in seen})
             stack.extend(ix.inputs[u])
     return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen})
 
@@ -225,18 +227,20 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
-                  reuse: bool = False) -> InstanceCounts:
+                  reuse: bool = False, placed: bool = False) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
     `extra`: instances added to every place (for measuring the cost of too many); `roles_of`: a unit's
     object roles (default `pairing.unit_roles`, the `instances` encoding's); `together`: `delete_free_plan`'s;
     `stitched`: the task reads inputs no unit makes as `input_stitch` does (`count_returns.with_returns`);
-    `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`).
+    `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`); `placed`:
+    makers by holder reach (`count_together.makers_together`).
     """
     stated = stated or {}
     overrides = overrides or {}
-    found, *other = delete_free_plans(foon, kitchen, candidates, together, (False, True) if together else (False,))
+    found, *other = delete_free_plans(foon, kitchen, candidates, together, (False, True) if together else (False,),
+                                      placed)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)

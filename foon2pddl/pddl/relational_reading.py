@@ -7,7 +7,7 @@ says did not happen are dropped (`list_drops.kept_in_place`). The objects come f
 (`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
 for the stitched one; counted small, for FOON's own plan alone, `relational_objects`, or for that plan with each unit
 taking a made node as a later unit left the object, when that counts fewer, `_as_now`, or for the plan through the
-stitches alone, `through`), or from the scene. A unit
+stitches alone, `through`; with makers by holder reach, `placed`), or from the scene. A unit
 with a role of a label the task has no object of is left out; when that changes which places the task's units
 name, the units are read again with only the kept ones as speakers (a unit with no objects names no place).
 """
@@ -141,11 +141,12 @@ def _nows(foon: Foon) -> dict[tuple[int, ...], Foon]:
 
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
-               memo: dict | None = None, through: bool = False) -> Reading:
+               memo: dict | None = None, through: bool = False, placed: bool = False) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
     kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
     give; `narrow`: count small, from FOON's own plan alone (no stitched one beside it) in the kitchen with these
-    nodes too (`relational_objects`), from the plan through the stitches alone with `through`. `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
+    nodes too (`relational_objects`), from the plan through the stitches alone with `through`, with makers by holder
+    reach with `placed` (`count_together.makers_together`). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
     `overrides` (counted wide, then small): the units' readings by speakers and the counts by plan and kitchen are
     made once (the same values: read twice, they cost a GEN trial's encoding a third more)."""
     memo = {} if memo is None else memo
@@ -189,11 +190,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     def count(net: Foon, need: tuple[int, ...], roles_of: RolesOf) -> InstanceCounts:  # objects for a plan in `net`
         # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
         # names no other network while the memo lives
-        key = ("counts", id(net), need, id(roles_of), narrow or None)
+        key = ("counts", id(net), need, id(roles_of), narrow or None, placed)
         if key not in memo:
             memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
                                            inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
-                                           together=True, stitched=True, reuse=True)
+                                           together=True, stitched=True, reuse=True, placed=placed)
         return memo[key][1]
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside

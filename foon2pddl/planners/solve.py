@@ -146,28 +146,27 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
          categories: tuple[tuple[str, tuple[str, ...]], ...] = (), cpu_limit: float | None = None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
-    `encoding` is any registered encoding; `category_index` is the category index of lifted
-    ones (default: the shipped index). `time_limit` bounds the planner run (translation
-    and search) in wall time, `cpu_limit` in the CPU seconds of the planner's processes. Raises UsageError for bad options (encoding, cost mode). When `constraints`
-    leave no way to make the goal, nothing is compiled and the outcome is `unsolvable`
-    (planner `constraints`, an empty task of the encoding); a planner's failure is a
-    status, never an exception. `instances`, `categories`: for the
-    `instances` encoding (see `pddl.encoding.EncodeOptions`). The planner gets the task without the
-    actions no binding grounds (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground)
-    and without those no reachable state applies (`pddl.holder_reach`: a holder and its content in states no
-    plan has together); when that leaves the goal out of reach, no planner runs and the outcome is `unsolvable`
-    (planner `holder reachability`, the message naming the units). A `relational` task's interchangeable objects are
-    taken in one order (`pddl.interchangeable`: the planner does not try every bowl of a stack), and
-    an action whose parameters multiply is split into a chain of small parts (`pddl.split_actions`, not with
-    `optimal`), joined back into the one action in the plan. The outcome keeps the task as compiled.
+    `encoding` is any registered encoding; `category_index` is the category index of lifted ones (default: the shipped
+    one). `time_limit` bounds the planner run (translation and search) in wall time, `cpu_limit` in the CPU seconds of
+    the planner's processes. Raises UsageError for bad options (encoding, cost mode). When `constraints` leave no way to
+    make the goal, nothing is compiled and the outcome is `unsolvable` (planner `constraints`, an empty task of the
+    encoding); a planner's failure is a status, never an exception. `instances`, `categories`: for the `instances`
+    encoding (see `pddl.encoding.EncodeOptions`). The planner gets the task without the actions no binding grounds
+    (`pddl.prune.drop_unbindable`: same plans, less for it to parse and ground) and without those no reachable state
+    applies (`pddl.holder_reach`: a holder and its content in states no plan has together); when that leaves the goal
+    out of reach, no planner runs and the outcome is `unsolvable` (planner `holder reachability`, the message naming the
+    units). A `relational` task's interchangeable objects are taken in one order (`pddl.interchangeable`: not every bowl
+    of a stack is tried), and an action whose parameters multiply is split into a chain of small parts
+    (`pddl.split_actions`, not with `optimal`), joined back in the plan. The outcome keeps the compiled task.
     A `relational` task is counted small first (`pddl.relational_objects`; FOON's plan out of holder reach: through the
-    stitches alone): when that has fewer objects and no valid plan within `RETRY_SECONDS` of the planner's CPU time (the
-    `time_limit` when shorter; planners that cannot bound CPU take it as wall time, `PlanRequest.wall_limit`) and
-    `time_limit` of wall time, the task counted wide is planned within what is left of `time_limit` (at least
-    `MIN_REST`), and a note says so; the timings are then both plans'. Each is planned first (not with `optimal`) with
-    only the actions of the units of the plan its objects are counted from (`Compiled.counted`,
-    `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any cause), within half
-    its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least `MIN_REST`).
+    stitches alone, then FOON's plan with makers by holder reach): when that has fewer objects and no valid plan within
+    `RETRY_SECONDS` of the planner's CPU time (the `time_limit` when shorter; planners that cannot bound CPU take it as
+    wall time, `PlanRequest.wall_limit`) and `time_limit` of wall time, the task counted wide is planned within what is
+    left of `time_limit` (at least `MIN_REST`), and a note says so; the timings are then both plans'. Each is planned
+    first (not with `optimal`) with only the actions of the units of the plan its objects are counted from
+    (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any
+    cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
+    `MIN_REST`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -175,12 +174,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         fd.prestart_translator()  # its start-up overlaps the encoding
     timings: dict[str, float] = {}
 
-    def compiled(narrow: bool, through: bool = False) -> Compiled:
+    def compiled(narrow: bool, through: bool = False, placed: bool = False) -> Compiled:
         t0 = time.perf_counter()
         try:
             return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                                 category_index=category_index, constraints=constraints, instances=instances,
-                                categories=categories, narrow=narrow, through=through)
+                                categories=categories, narrow=narrow, through=through, placed=placed)
         finally:
             _add(timings, "encode", time.perf_counter() - t0)
 
@@ -237,11 +236,12 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
         return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
 
-    def smallest() -> PlanOutcome:  # FOON's own plan out of holder reach: the plan through the stitches alone next
+    def smallest() -> PlanOutcome:  # out of holder reach: the plan through the stitches alone, then makers by reach
         nonlocal small
         out = planned(small, time_limit, short)
-        if out.result.planner == UNREACHED and (through := compiled(True, through=True)).narrowed:
-            small, out = through, planned(through, time_limit, short)
+        for again in ({"through": True}, {"placed": True}):
+            if out.result.planner == UNREACHED and (other := compiled(True, **again)).narrowed:
+                small, out = other, planned(other, time_limit, short)
         return out
 
     outs = _first_solved(smallest, lambda: planned(compiled(False), rest(), cpu_limit))
