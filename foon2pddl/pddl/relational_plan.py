@@ -205,7 +205,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         slots.append(Slot(r, fate, after, portion, late_empties, along))
     flows = unit_flows(unit)
     for f in flows:  # a container FOON leaves out of the outputs, poured out whole, is emptied of what left it
-        if rels[f.holder].role.after is None:
+        if rels[f.holder].role.after is None and not _stays_in(rels, f):
             drops.setdefault(f.holder, set()).add(f.label)
     emptied = tuple((k, without(rels[k].role.before, labels, alias)) for k, labels in sorted(drops.items()))
     return UnitPlan(unit, tuple(slots), emptied, flows)
@@ -228,6 +228,17 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
         else:
             out.append(Role(label, before, s.after))
     return tuple(out)
+
+
+def _stays_in(rels: Sequence[RelRole], f: Flow) -> bool:
+    """Whether flow `f` goes into a role that stays in the flow's holder (the flip's bacon onto the omelette in
+    the pan, `0050-scrambled_eggs_with_bacon-cheese.txt:255`): it is still in the holder, on the other, so the
+    holder's list keeps it (the cook at `:269` takes the pan listing both)."""
+    if f.into is None:
+        return False
+    into = rels[f.into]
+    return (into.fate is Fate.STAYS and into.source is not None and into.source.role == f.holder
+            and into.target is not None and into.target.role == f.holder)
 
 
 def _into_one_staying(rels: Sequence[RelRole], r: RelRole) -> bool:
