@@ -6,7 +6,7 @@ from __future__ import annotations
 from node_words import contains, inside, n
 from relational_checks import clean_unit_plan
 
-from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
+from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
@@ -199,3 +199,25 @@ def test_a_node_of_the_held_label_beside_a_container_the_kitchen_does_not_fill_l
 
     said = frozenset(kitchen | {n("mayonnaise", inside("bowl"))})
     assert [p.held for p in kitchen_pairs(Foon(units), said)] == []
+
+
+def test_a_kitchen_container_whose_held_label_the_kitchen_places_in_several_states_holds_the_pair():
+    # the universal FOON of the subgraphs of sorted index 2 modulo 3 (docs/pddl.md, Unseen universal FOONs): the
+    # hamburger's sprinkle (0027:74) and the cilantro-lime rice's and gyoza's scrapes (0066:49, 0070:87) take the
+    # kitchen's `bowl (contains {garlic})` with `garlic (minced, in [bowl])`, which only the garlic bread's add
+    # (0015:88) makes, in a bowl of butter too. The kitchen has garlic chopped in a bowl (the ramen's pour takes it,
+    # 0054:33) and peeled in a bowl (the caesar salad's pour, ACT-0080:29): it does not say which garlic its one bowl
+    # of garlic holds, and the taker's words do. The three dishes were unsolvable at once.
+    from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
+
+    chopped, pressed = n("garlic", "chopped", inside("bowl")), n("garlic", "minced", make_state("on", "garlic press"))
+    press = n("garlic", "peeled", make_state("in", "garlic press"))
+    units = (FunctionalUnit((press,), Motion("squeeze"), (pressed,), (Source("bread.txt", 76),)),
+             FunctionalUnit((EMPTY, pressed, BUTTER), Motion("add"), ADD.outputs, (Source("bread.txt", 88),)), POUR)
+    kitchen = {EMPTY, press, BUTTER, CUP, BOWL, chopped, n("garlic", "peeled", inside("bowl"))}
+    assert [(p.taker, p.box, p.held) for p in kitchen_pairs(Foon(units), frozenset(kitchen))] == [
+        (POUR, BOWL, IN_BOWL)]
+    outcome = clean_unit_plan(units, kitchen, GOAL)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
+    # one garlic the kitchen places in a bowl is what its bowl of garlic holds (GEN's plate of whole peppers)
+    assert kitchen_pairs(Foon(units), frozenset(kitchen - {chopped})) == ()

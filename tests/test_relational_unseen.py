@@ -32,3 +32,13 @@ def even():
 def test_an_unseen_universal_dish_is_valid_and_replay_clean(even, prefix):
     dish = next(x for x in sorted(even.dishes) if x.describe().startswith(prefix))
     clean_plan(even, default_kitchen(even), resolve_goal(spec_of_node(dish), even), time_limit=60)
+
+
+@pytest.mark.parametrize("prefix", ["hamburger", "cilantro-lime rice"])
+def test_a_dish_of_the_universal_foon_of_every_third_subgraph_is_valid_and_replay_clean(prefix):
+    # the subgraphs of sorted index 2 modulo 3 (`bench.pddl_relational --every 3 --offset 2`), unseen: the kitchen's
+    # one bowl of garlic, with garlic chopped and peeled in bowls, holds the minced garlic its takers name
+    # (kitchen_pairs); unsolvable at once at ed3d31e
+    third = load(sorted(SUBGRAPHS.iterdir())[2::3])[0]
+    dish = next(x for x in sorted(third.dishes) if x.describe().startswith(prefix))
+    clean_plan(third, default_kitchen(third), resolve_goal(spec_of_node(dish), third), time_limit=60)

@@ -21,8 +21,11 @@ kitchen's (a kitchen node no unit makes has no maker; one a unit makes has it: t
 takes and leaves in the same words, `0031-easy_pancakes.txt:178`, is no bowl at hand), neither a node a stitch
 reads for the taker (`input_stitch.stitched_inputs`: the unit that left it there is known), nor, for a kitchen
 container, a held node the kitchen already says (`relational_init.kitchen_implied`) or another node of the held
-label the kitchen places there (GEN's `plates and trays (contains {peppers})` holds the kitchen's whole peppers, not
-the chopped ones the omelette's pour, `0042-perfect_omelette.txt:79`, takes with it), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
+label the kitchen places there, the only one (GEN's `plates and trays (contains {peppers})` holds the kitchen's whole
+peppers, not the chopped ones the omelette's pour, `0042-perfect_omelette.txt:79`, takes with it; with garlic chopped
+and garlic peeled in bowls the kitchen does not say which its one `bowl (contains {garlic})` holds, and the minced
+garlic the hamburger's sprinkle takes with it is read as the pair, on the universal FOON of the subgraphs of index 2
+modulo 3), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
 (the garlic is in another bowl), and every unit making the container's node leaves beside it a node of L at that
 container other than the pair's (another garlic is in the bowl), and no maker of the one takes the other (the homemade cheese pizza's bake takes
 the pick-and-place's `oven (contains {pizza pan}, on, preheated)` and makes the pan of baked pizza in that oven,
@@ -145,12 +148,14 @@ def _taken_pairs(foon: Foon, kitchen: frozenset[ObjectNode], i: int) -> tuple[Pa
 
 
 def _holds_other(box: ObjectNode, label: str, kitchen: frozenset[ObjectNode]) -> bool:
-    """Whether the kitchen says its `box` holds a node of `label` of its own: it places one in the box's label, no
+    """Whether the kitchen says its `box` holds a node of `label` of its own: it places exactly one in the box's
+    label (two, chopped and peeled garlic in bowls, do not say which the bowl of garlic holds), no
     other kitchen node of that label lists `label` (the whole onion may be in another bowl of onion), and it places
     a node of every label the box lists there (REG's bowl of mayonnaise and onion, whose mayonnaise the kitchen has
     in a jar, is no bowl the kitchen fills: another recipe's whole onion in a bowl is not in it, trial 9 goal 29)."""
-    inside = {k.label for k in kitchen if box.label in {h for _, h in places(k)}}
-    return (label in inside and listed(box) <= inside
+    there = [k for k in kitchen if box.label in {h for _, h in places(k)}]
+    inside = {k.label for k in there}
+    return (sum(k.label == label for k in there) == 1 and listed(box) <= inside
             and not any(k.label == box.label and k != box and label in listed(k) for k in kitchen))
 
 
