@@ -47,7 +47,7 @@ lint: $(STAMP)
 	$(VENV)/bin/ruff check foon2pddl tests bench
 
 pddl: $(STAMP)
-	$(PY) -m foon2pddl.pddl.examples
+	$(PY) -m foon2pddl.cli.examples_cmd
 
 demo: $(STAMP)
 	$(VENV)/bin/foon2pddl plan --goal guacamole

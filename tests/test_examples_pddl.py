@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+import re
+
 import pddl.parser.domain
 import pddl.parser.problem
 import pytest
 from conftest import ROOT
 
+from foon2pddl.cli import progress
+from foon2pddl.cli.examples_cmd import main
 from foon2pddl.pddl.compile import GROUND_ENCODINGS, compile_task
-from foon2pddl.pddl.examples import GOALS, generate, main, stale_files
+from foon2pddl.pddl.examples import GOALS, generate, stale_files
 from foon2pddl.pddl.names import sanitize
 
 PAIRS = [(enc, sanitize(goal)) for enc in GROUND_ENCODINGS for goal in GOALS]
@@ -114,7 +118,8 @@ def test_make_pddl_says_on_stderr_what_it_compiles(tmp_path, capsys):
     (stdout keeps its one summary line)."""
     main([str(tmp_path)])
     out = capsys.readouterr()
-    assert out.err.splitlines() == ["loading the PDDL encodings ..."] + [
+    said = [line for line in out.err.splitlines() if not re.search(r" \.\.\. \d+ s$", line)]  # beats: a slow goal
+    assert said == ["loading the PDDL encodings ..."] + [
         f"compiling '{goal}' ({i} of {len(GOALS)}) in {len(GROUND_ENCODINGS)} encodings ..." for i, goal in enumerate(GOALS, 1)]
     assert out.out.splitlines() == [f"wrote {2 * len(PAIRS)} files under {tmp_path / 'domains'} and "
                                     f"{tmp_path / 'problems'}"]
@@ -127,7 +132,31 @@ def test_make_pddl_speaks_before_loading_the_encodings():
     import subprocess
     import sys
 
-    code = ("import sys, foon2pddl.pddl.examples; "
+    code = ("import sys, foon2pddl.cli.examples_cmd; "
             "print(sorted(m for m in ('foon2pddl.pddl.compile', 'foon2pddl.io.inputs', 'jinja2') if m in sys.modules))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert r.stdout.strip() == "[]", r.stdout
+
+
+def test_make_pddl_beats_through_a_pipe_while_a_goal_compiles(tmp_path, capsys, monkeypatch):
+    """Stop 55's pass (nc55b): `make pddl` said each step once and never again, so at load 30 it went 5.3 s after
+    `loading the PDDL encodings ...` and 2.2-2.7 s per dish without a line. Each step now adds its seconds every
+    `progress.BEAT` s while it runs, as every said step of the CLI does through a pipe."""
+    import time
+
+    import foon2pddl.pddl.compile as compile_module
+
+    real, calls = compile_module.compile_task, []
+
+    def slow_first(*args, **kwargs):
+        calls.append(1)
+        if len(calls) == 1:
+            time.sleep(0.5)  # the first goal's first encoding: several beats long
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(progress, "BEAT", 0.05)
+    monkeypatch.setattr(compile_module, "compile_task", slow_first)
+    main([str(tmp_path)])
+    beats = [line for line in capsys.readouterr().err.splitlines()
+             if re.fullmatch(rf"compiling '{GOALS[0]}' \(1 of {len(GOALS)}\) in \d+ encodings \.\.\. \d+ s", line)]
+    assert len(beats) >= 2, beats

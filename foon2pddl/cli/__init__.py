@@ -25,7 +25,7 @@ from ..io.interrupts import interrupt_exit, sigterm_raises
 from ..planners.cleanup import command_scope
 from . import progress
 
-__all__ = ["COMMANDS", "main", "analyze_cmd", "batch", "batch_pddl", "check_cmd", "compile_cmd", "expand_cmd",
+__all__ = ["COMMANDS", "main", "analyze_cmd", "batch", "batch_pddl", "check_cmd", "compile_cmd", "examples_cmd", "expand_cmd",
            "experiment_cmd", "generalize_cmd", "goals_cmd", "kitchen_note", "merge_cmd", "object_options", "options", "plan_cmd",
            "progress", "reasons", "retrieve_cmd", "similarity_cmd", "skills_cli", "stats_cmd"]
 

@@ -1,8 +1,9 @@
 """Generate `domains/` and `problems/` from the embedded example network (`make pddl`).
 
-`python -m foon2pddl.pddl.examples [ROOT]` writes, for every encoding and every
-goal in `GOALS`, the domain and problem that `foon2pddl compile --goal G
---encoding E` writes for the example network and kitchen (level 3, pruned):
+`make pddl` (`python -m foon2pddl.cli.examples_cmd [ROOT]`, which says each step on
+stderr) writes, for every encoding and every goal in `GOALS`, the domain and problem
+that `foon2pddl compile --goal G --encoding E` writes for the example network and
+kitchen (level 3, pruned):
 `domains/<encoding>/<goal>.pddl` and `problems/<encoding>/<goal>.pddl`.
 A pruned domain depends on its goal, hence one pair per goal. `.pddl` files
 under those directories that are no longer generated are removed.
@@ -10,13 +11,9 @@ under those directories that are no longer generated are removed.
 
 from __future__ import annotations
 
-import sys
-from contextlib import AbstractContextManager, nullcontext
 from pathlib import Path
 
-from ..io.atomic import atomic_write_many
 from ..io.steps import Step, silent_step
-from ..model.words import count
 
 #: Goals a reader recognizes: the dishes of the example recipes the example kitchen can make.
 GOALS = (
@@ -61,25 +58,3 @@ def stale_files(root: Path, files: dict[Path, str]) -> list[Path]:
     """`.pddl` files under ROOT/domains and ROOT/problems that `files` does not hold."""
     found = [p.relative_to(root) for d in ("domains", "problems") for p in sorted((root / d).rglob("*.pddl"))]
     return [p for p in found if p not in files]
-
-
-def _said(what: str) -> AbstractContextManager[None]:
-    """A step that says what it does on stderr at once (each goal takes ~1 s; all of them ~10 s at load 10)."""
-    print(f"{what} ...", file=sys.stderr, flush=True)
-    return nullcontext()
-
-
-def main(argv: list[str] | None = None) -> None:
-    """Write every file under ROOT (default `.`), remove stale ones; say on stderr which goal it compiles."""
-    args = sys.argv[1:] if argv is None else argv
-    root = Path(args[0]) if args else Path(".")
-    files = generate(_said)
-    atomic_write_many({root / p: text for p, text in files.items()})
-    for p in stale_files(root, files):
-        (root / p).unlink()
-        print(f"removed stale {p}")
-    print(f"wrote {count(len(files), 'file')} under {root / 'domains'} and {root / 'problems'}")
-
-
-if __name__ == "__main__":
-    main()
