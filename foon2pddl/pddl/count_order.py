@@ -24,6 +24,15 @@ Readers first can also count more: the ribs' remove (`0018-barbecue-style_countr
 tray's way back, fired after the second cook leaves the oven `off`, and that cook counted an oven of its own (11
 objects in the problem; 10 in the fixpoint's order). So `orders` lists every plan readers first and as it was,
 and `derive_counts` keeps the one that counts fewest objects, readers first on a tie.
+
+Takers last (`takers_last`): a unit T that moves an object out of a node N fires right after the first later unit
+that leaves an object in N, when no unit from T up to that one takes a node T leaves an object in; `count_reuse`
+then gives T the object left there instead of counting another. The shared universal's watermelon lemonade filled
+a measuring cup with water at the faucet (`0075-pesto_linguine.txt:13`, for the pour at
+`0084-watermelon_lemonade.txt:296`) in an early round, before the pour and stir (`:277`) left the juice's cup
+`measuring cup (empty)`: two measuring cups, 24 objects in the problem against `instances`' 23; one, 23, with the
+fill after it. Each plan `orders` lists is listed again takers last, after all of them: kept only when it counts
+fewer. O(p^3 r) at worst, as readers first.
 """
 
 from __future__ import annotations
@@ -33,7 +42,7 @@ from collections.abc import Callable, Sequence
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role
 
-__all__ = ["orders", "readers_first"]
+__all__ = ["orders", "readers_first", "takers_last"]
 
 
 def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]
@@ -75,11 +84,33 @@ def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[Functiona
     return tuple(order)
 
 
+def takers_last(foon: Foon, plan: Sequence[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]
+                ) -> tuple[int, ...]:
+    """`plan` with each unit that moves an object out of a node right after the first later unit that leaves an
+    object in that node, where no unit from the taker up to that one takes a node the taker leaves one in (module
+    doc). Repeated until no unit moves (at most p^2 moves, each O(p r))."""
+    order = list(plan)
+    roles = {u: roles_of(foon.units[u]) for u in order}
+    moved_out = {u: {r.before for r in roles[u] if r.changes and r.before is not None} for u in order}
+    leaves = {u: {r.after for r in roles[u] if r.changes} for u in order}
+    takes = {u: {r.before for r in roles[u] if r.before is not None} for u in order}
+    for _ in range(len(order) ** 2):
+        for i, t in enumerate(order):
+            j = next((k for k in range(i + 1, len(order)) if leaves[order[k]] & moved_out[t]), None)
+            if j is not None and not any(takes[order[k]] & leaves[t] for k in range(i + 1, j + 1)):
+                order.insert(j, order.pop(i))  # T right after L
+                break
+        else:
+            break
+    return tuple(order)
+
+
 def orders(foon: Foon, plans: Sequence[Sequence[int]], own: Sequence[Sequence[int]],
            roles_of: Callable[[FunctionalUnit], tuple[Role, ...]]) -> tuple[tuple[int, ...], ...]:
     """The plans `relational`'s counts unfold, distinct, first kept on a tie: `plans` (ways back through what the
     plan makes) readers first, then as they are, then `own` (ways back through the kitchen only) as they are and
-    readers first (module doc)."""
+    readers first, then each of these takers last (module doc)."""
     first = tuple(readers_first(foon, p, roles_of) for p in plans)
-    return tuple(dict.fromkeys((*first, *map(tuple, plans), *map(tuple, own),
-                                *(readers_first(foon, p, roles_of) for p in own))))
+    listed = tuple(dict.fromkeys((*first, *map(tuple, plans), *map(tuple, own),
+                                  *(readers_first(foon, p, roles_of) for p in own))))
+    return tuple(dict.fromkeys((*listed, *(takers_last(foon, p, roles_of) for p in listed))))

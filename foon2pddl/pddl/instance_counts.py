@@ -12,7 +12,7 @@ unfolding a delete-free plan backwards:
    task's units that lead it back there (`count_returns.with_returns`: the pot
    the cover and uncover bring back from `hot`; `relational`, else a unit of the
    plan fired again, when that plan counts fewer objects). `relational` keeps, of
-   these plans as they are and readers first, the fewest-counting (`count_order`);
+   these plans as they are, readers first and takers last, the fewest-counting (`count_order`);
    also of the plan whose held nodes keep their first makers where those lead them
    into the container (`count_together`'s `first`), counted after, so kept only
    when it counts fewer: the universal scrambled eggs' pan from 0062's own pour,
