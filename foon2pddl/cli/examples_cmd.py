@@ -19,8 +19,9 @@ from .progress import slow_step
 
 
 def _said(what: str, *, series: str | None = None) -> AbstractContextManager[object]:
-    """A step said at once (each goal takes about 1 s, all of them about 10 s at load 10), beating while it runs."""
-    return slow_step(what, 0.0)
+    """A step said at once (each goal takes about 1 s, all of them about 10 s at load 10), beating while it runs
+    (`io.steps.Step`: a step of a `series` shares one redrawn line on a terminal)."""
+    return slow_step(what, 0.0, series=series)
 
 
 def main(argv: list[str] | None = None) -> None:
