@@ -28,7 +28,7 @@ def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode, **options):
                       Goal(GoalSpec(goal_node.label), (goal_node,)), **options)
 
 
-def _dish_goal(path: Path) -> tuple[Foon, Goal]:
+def dish_goal(path: Path) -> tuple[Foon, Goal]:
     """A recipe file's network and its (first) dish as the goal."""
     foon, _ = load([path])
     dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
@@ -37,12 +37,12 @@ def _dish_goal(path: Path) -> tuple[Foon, Goal]:
 
 def clean_dish_plan(path: Path):
     """`clean_plan` of a recipe file's (first) dish from its default kitchen, 60 s."""
-    foon, goal = _dish_goal(path)
+    foon, goal = dish_goal(path)
     return clean_plan(foon, default_kitchen(foon), goal, time_limit=60)
 
 
 def instances_objects(path: Path) -> int:
     """How many objects the `instances` problem of a recipe file's (first) dish declares (the floor `relational`
     is held to, dish by dish)."""
-    foon, goal = _dish_goal(path)
+    foon, goal = dish_goal(path)
     return len(compile_goal(foon, default_kitchen(foon), goal, "instances").task.objects)

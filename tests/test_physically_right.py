@@ -5,10 +5,8 @@ and the relational task with that one object fewer has no plan."""
 from __future__ import annotations
 
 from conftest import SUBGRAPHS
-from relational_checks import clean_plan
+from relational_checks import clean_plan, dish_goal
 
-from foon2pddl.io.files import load
-from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.planners.instance_physical import physical_trace
 from foon2pddl.planners.physical_replay import DisagreementKind, replay
@@ -18,9 +16,8 @@ BLOODY_MARY = SUBGRAPHS / "0076-bloody_mary.txt"
 
 
 def _bloody_mary():
-    foon, _ = load([BLOODY_MARY])
-    dish = sorted(x for x in foon.nodes if x.dish is not None)[0]
-    return foon, default_kitchen(foon), resolve_goal(spec_of_node(dish), foon)
+    foon, goal = dish_goal(BLOODY_MARY)
+    return foon, default_kitchen(foon), goal
 
 
 def test_the_bloody_marys_one_lemon_is_rolled_into_the_glass_and_squeezed_where_it_is_in_no_glass():
