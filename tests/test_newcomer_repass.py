@@ -439,3 +439,39 @@ def test_the_nodes_no_unit_makes_are_counted_when_not_all_are_named():
     text = explain_unreachable(net, kit.nodes, goal)
     listed = text.split("each needed on some way to it: ", 1)[1]
     assert listed == "; ".join(n.describe() for n in every[:10]) + f"; ... ({len(every) - 10} more)"
+
+
+def _typo_guacamole():
+    """The guacamole with a kitchen of a knife, a board and `onoin: whole` (a typo): 17 nodes no unit makes."""
+    from foon2pddl.analysis.reachability import blockers, reachable
+    from foon2pddl.api import kitchen_of
+    from foon2pddl.io.inputs import load_network
+    from foon2pddl.model.goal import GoalSpec, resolve_goal
+
+    net = load_network([]).at(3)
+    kit = kitchen_of("onoin: whole", "knife", "cutting board: empty")
+    goal = resolve_goal(GoalSpec("guacamole"), net)
+    every = blockers(reachable(net, kit.nodes, goal.candidates), goal.candidates, limit=10**6)
+    assert len(every) > 10
+    return net, kit, goal, "; ".join(n.describe() for n in every[:10]) + f"; ... ({len(every) - 10} more)"
+
+
+def test_the_librarys_unreachable_reason_counts_the_missing_nodes_it_leaves_out():
+    """Stop 55's pass: `complete`'s reason (the library's and the experiment's text) cut the missing nodes at 10
+    with no count of the rest, as `explain_unreachable` did before 439d090."""
+    from foon2pddl.retrieval.complete import complete
+
+    net, kit, goal, listed = _typo_guacamole()
+    detail = complete(net, kit.nodes, goal).detail
+    assert detail.endswith("; missing (no unit makes them): " + listed)
+
+
+def test_the_blocking_reason_counts_the_missing_nodes_it_leaves_out():
+    """The same cut in the constrained retrieval's `... even without the constraints` reason."""
+    from foon2pddl.api import constraints_of
+    from foon2pddl.retrieval.constrained import retrieve_constrained
+
+    net, kit, goal, listed = _typo_guacamole()
+    done = retrieve_constrained(net, kit, goal, constraints_of(without=["cilantro"]))
+    assert "even without the constraints" in done.result.detail
+    assert done.result.detail.endswith("; missing (no unit makes them): " + listed)

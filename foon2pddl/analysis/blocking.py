@@ -25,7 +25,7 @@ from ..model.constraints import Constraint, Kind, describe_all, mentions
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from .constraints import Removal
-from .reachability import UNREACHED, blockers, reachable, relevant_units
+from .reachability import UNREACHED, blocker_words, reachable, relevant_units
 
 #: Subsets tried before settling for an irredundant set.
 MAX_CHECKS = 4096
@@ -123,8 +123,8 @@ def explain_blocked(rm: Removal, kitchen: Iterable[ObjectNode], goal: Goal,
     what = repr(goal.describe())
     if relax is None:
         reach = reachable(rm.foon, kitchen, goal.candidates)
-        lacking = blockers(reach, goal.candidates)
-        why = ("; missing (no unit makes them): " + "; ".join(n.describe() for n in lacking)) if lacking else ""
+        lacking = blocker_words(reach, goal.candidates)
+        why = ("; missing (no unit makes them): " + lacking) if lacking else ""
         return Blocking(None, f"{what} cannot be made from the kitchen even without the constraints{why}",
                         True, checks)
     if not relax:

@@ -22,6 +22,7 @@ from itertools import chain, repeat
 from ..model.bulk import drain
 from ..model.foon import Foon, ObjectNode
 from ..model.memo import per_network
+from ..model.words import first_of
 from .fixpoint import UNREACHED, fire
 from .index import FoonIndex, index_of
 
@@ -167,8 +168,10 @@ def _fixpoint(foon: Foon, kitchen: frozenset[ObjectNode], targets: Iterable[Obje
                         scope)
 
 
-#: Blockers remembered per node (the smallest ids), enough for `blockers(..., limit <= SUMMARY)`.
+#: Blockers a reason names (the smallest ids); one more is remembered per node, enough for
+#: `blockers(..., limit <= SUMMARY + 1)`: `blocker_words` learns from it whether any are left out.
 SUMMARY = 10
+_KEPT = SUMMARY + 1
 _SUMMARIES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
@@ -180,7 +183,7 @@ def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = SUMM
     Returns up to `limit` of them in sorted order.
 
     The goals of a batch share one fixpoint and mostly the same unreachable region,
-    so each node's answer (its `SUMMARY` smallest blockers) is remembered per fixpoint:
+    so each node's answer (its `SUMMARY` + 1 smallest blockers) is remembered per fixpoint:
     the region is condensed into strongly connected components (Tarjan, iterative) and
     a component's answer is the smallest of its own unmakeable nodes and its successors'
     answers (the smallest k of a union are among the smallest k of its parts). Each node
@@ -189,12 +192,24 @@ def blockers(reach: Reachability, nodes: Iterable[ObjectNode], limit: int = SUMM
     ix = reach.index
     rounds = reach.node_round
     starts = [i for i in ix.ids(nodes) if rounds[i] == UNREACHED]
-    if limit > SUMMARY:
+    if limit > _KEPT:
         found = _walk(reach, starts)
     else:
         memo = _summaries(reach, starts)
         found = set().union(*(memo[s] for s in starts))
     return tuple(ix.nodes[i] for i in sorted(found)[:limit])
+
+
+def blocker_words(reach: Reachability, nodes: Iterable[ObjectNode]) -> str:
+    """`blockers` of `nodes` in words: the first `SUMMARY` in node order, then `; ... (N more)` ("" when none).
+
+    A cut list must not read as the whole: the remembered answers (`SUMMARY` + 1 per node) tell whether any
+    are left out; only then does the plain search count them (O(unreachable region)).
+    """
+    found = blockers(reach, nodes, _KEPT)
+    if len(found) > SUMMARY:
+        found = blockers(reach, nodes, len(reach.index.nodes))
+    return first_of([n.describe() for n in found], SUMMARY)
 
 
 def _walk(reach: Reachability, starts: list[int]) -> set[int]:
@@ -272,7 +287,7 @@ def _summaries(reach: Reachability, starts: list[int]) -> dict[int, tuple[int, .
                         for x in succ(w):
                             if x not in members:
                                 found.update(memo[x])
-                    answer = tuple(sorted(found)[:SUMMARY])
+                    answer = tuple(sorted(found)[:_KEPT])
                     for w in comp:
                         memo[w] = answer
     return memo

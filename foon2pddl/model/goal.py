@@ -17,7 +17,7 @@ from ..errors import UsageError
 from .containment import is_auxiliary
 from .foon import Foon, ObjectNode, State, make_node
 from .levels import project_node
-from .words import count
+from .words import count, first_of
 
 
 @dataclass(frozen=True)
@@ -54,9 +54,7 @@ class Goal:
         label = self.spec.label
         name = f"{asked!r} (FOON-{network.upper()}: {label!r})" if asked and asked != label else repr(label)
         if self.preferred == "any":
-            shown = "; ".join(f"`{c.describe()}`" for c in self.candidates[:limit])
-            if len(self.candidates) > limit:
-                shown += f"; ... ({len(self.candidates) - limit} more)"
+            shown = first_of([f"`{c.describe()}`" for c in self.candidates], limit)
             return (f"goal {name} names no recipe's dish and no final product (a unit uses each {label!r} node): "
                     f"any of its {count(len(self.candidates), 'node')} will do, the method chooses which "
                     f"(give the states to ask for one): {shown}")
@@ -64,9 +62,7 @@ class Goal:
         what = ("the recipes' dishes" if many else "the recipe's dish") if self.preferred == "dish" else \
             ("the final products (no unit uses them)" if many else "the final product (no unit uses it)")
         chosen = "; ".join(f"`{c.describe()}`" for c in self.candidates)
-        more = "; ".join(f"`{o.describe()}`" for o in self.others[:limit])
-        if len(self.others) > limit:
-            more += f"; ... ({len(self.others) - limit} more)"
+        more = first_of([f"`{o.describe()}`" for o in self.others], limit)
         return (f"goal {name} read as {what}: {chosen}; other {label!r} nodes "
                 f"(give the states to ask for one): {more}")
 

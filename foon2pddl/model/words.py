@@ -1,12 +1,15 @@
-"""How a message writes a count with its noun (`1 unit`, `2 units`): one way for every module.
+"""How a message writes a count with its noun (`1 unit`, `2 units`) and a cut list: one way for every module.
 
 Messages once wrote `1 units`, `1 objects`, `1 plan steps` or `1 unit(s)`; every count a command prints
-goes through `count` (or `plural` when the number is written apart from its noun).
+goes through `count` (or `plural` when the number is written apart from its noun). A list cut short goes
+through `first_of`, so it never reads as the whole.
 """
 
 from __future__ import annotations
 
-__all__ = ["count", "plural"]
+from collections.abc import Sequence
+
+__all__ = ["count", "first_of", "plural"]
 
 #: Endings whose plural adds `es` (`match` -> `matches`).
 _ES = ("s", "x", "z", "ch", "sh")
@@ -25,3 +28,13 @@ def plural(n: int, noun: str) -> str:
 def count(n: int, noun: str, *, grouped: bool = False) -> str:
     """`n noun(s)` as a sentence says it: `1 unit`, `0 units`, `1,845 units` with `grouped` (thousands separated)."""
     return f"{n:,} {plural(n, noun)}" if grouped else f"{n} {plural(n, noun)}"
+
+
+def first_of(items: Sequence[str], limit: int) -> str:
+    """`items` joined by `; `, only the first `limit` of them, then `; ... (N more)` when some are left out.
+
+    >>> first_of(["a", "b", "c"], 2)
+    'a; b; ... (1 more)'
+    """
+    more = f"; ... ({len(items) - limit} more)" if len(items) > limit else ""
+    return "; ".join(items[:limit]) + more

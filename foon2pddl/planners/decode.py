@@ -32,7 +32,7 @@ from ..model.levels import project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation, justify, validate
 from ..model.where import short_path, unit_where
-from ..model.words import count
+from ..model.words import count, first_of
 from ..pddl.compile import as_compiled
 from ..pddl.registry import Compiled, PlanDecodeError
 from ..pddl.task import Atom, PlanningTask, apply_action, type_closure
@@ -225,9 +225,8 @@ def unneeded_steps_note(compiled: Compiled, steps: Sequence[str], tree: TaskTree
             out.append(f"{n} ({unit.motion.label}{src}: {', '.join(o.describe() for o in unit.outputs[:2])})")
     if not out:
         return ()
-    more = f"; ... ({len(out) - shown} more)" if len(out) > shown else ""
     return (f"the planner's plan has {count(len(steps), 'step')}; {len(out)} the goal does not need {'is' if len(out) == 1 else 'are'} left out: "
-            + "; ".join(out[:shown]) + more,)
+            + first_of(out, shown),)
 
 
 def renamed_note(plain: TaskTree, tree: TaskTree) -> tuple[str, ...]:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..analysis.reachability import Reachability, blockers, reachable
+from ..analysis.reachability import Reachability, blocker_words, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from .extract import make_tree, ordered_units
@@ -28,10 +28,10 @@ def none_can_be_made(goal: Goal) -> str:
 
 def unreachable_detail(reach: Reachability, goal: Goal) -> str:
     """Words for why no candidate of `goal` can be made."""
-    lacking = blockers(reach, goal.candidates)
+    lacking = blocker_words(reach, goal.candidates)
     head = none_can_be_made(goal)
     if lacking:
-        return head + "; missing (no unit makes them): " + "; ".join(n.describe() for n in lacking)
+        return head + "; missing (no unit makes them): " + lacking
     return head + " (every way to make them needs a node that itself needs them)"
 
 

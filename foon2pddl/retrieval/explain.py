@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from ..analysis.additions import first_additions
-from ..analysis.reachability import SUMMARY, blockers, reachable
+from ..analysis.reachability import blocker_words, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import default_kitchen
@@ -40,7 +40,7 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
     finds nothing). When none is found the words say which limit was reached, and list
     the unmakeable leaves only when no limit cut the search (then they are what the
     kitchen lacks; otherwise they can be leaves of other recipes, a wrong list): the first
-    `SUMMARY` in node order, then how many more (a cut list must not read as the whole).
+    `SUMMARY` in node order (`blocker_words`), then how many more (a cut list must not read as the whole).
     """
     reach = reachable(foon, kitchen_nodes, goal.candidates)
     if any(reach.can_make(c) for c in goal.candidates):
@@ -54,13 +54,11 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
         return f"{head}; {_cycle_text(reach, goal, max_size)}"
     exact = fixes.exact
     if exact:
-        leaves = blockers(reach, goal.candidates, limit=len(reach.index.nodes))  # all: the words count the rest
+        leaves = blocker_words(reach, goal.candidates)
         if not leaves:
             return f"{head}; {_cycle_text(reach, goal, max_size)}"
-        more = f"; ... ({len(leaves) - SUMMARY} more)" if len(leaves) > SUMMARY else ""
         return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it); "
-                "nodes no unit makes, each needed on some way to it: "
-                + "; ".join(n.describe() for n in leaves[:SUMMARY]) + more)
+                "nodes no unit makes, each needed on some way to it: " + leaves)
     return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
             "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
 
