@@ -126,7 +126,9 @@ def restore_rows(paths: list[Path], encoding: str, time_limit: float, verbose: b
 def pick(files: list[Path], every: int = 1, offset: int = 0, sample: int | None = None, seed: int = 0) -> list[Path]:
     """The files of 0-based index `offset` modulo `every` in `files`' order, then `sample` of them drawn with
     `random.Random(seed)` (all when None), in `files`' order: a seeded subset the same on every machine."""
-    if every < 1 or not 0 <= offset < every:
+    if every < 1:
+        raise ValueError(f"--every {every}: must be 1 or more (every K-th subgraph; 1 takes them all)")
+    if not 0 <= offset < every:
         raise ValueError(f"--offset {offset} is not in 0..{every - 1} (--every {every})")
     chosen = files[offset::every]
     if sample is None:

@@ -28,11 +28,15 @@ def test_a_sample_is_the_seeds_draw_kept_in_sorted_order():
 
 
 @pytest.mark.parametrize("args, says", [(["--every", "2", "--offset", "2"], "--offset 2 is not in 0..1"),
-                                        (["--sample", "0"], "--sample 0: there are")])
+                                        (["--sample", "0"], "--sample 0: there are"),
+                                        (["--every", "0"], "--every 0: must be 1 or more"),
+                                        (["--every", "-3", "--offset", "1"], "--every -3: must be 1 or more")])
 def test_a_subset_that_cannot_be_made_is_a_clear_error(args, says):
+    """Each error names the option that is wrong: `--every 0` said `--offset 0 is not in 0..-1` (stop 55's pass)."""
     r = subprocess.run([sys.executable, "-m", "bench.pddl_relational", "--shared", str(SHARED), *args], cwd=ROOT,
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 2 and says in r.stderr and "Traceback" not in r.stderr
+    assert "0..-" not in r.stderr
 
 
 def test_the_bench_plans_only_the_picked_subgraphs():
