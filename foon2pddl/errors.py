@@ -28,7 +28,7 @@ __all__ = ["INPUTS", "FoonError", "FoonInputError", "FoonSyntaxError", "MissingD
 
 #: The inputs a file can belong to (`FoonError.belongs`), as the library's messages name them.
 INPUTS = {"paths": "as a network (FOON paths)", "kitchen": "as the kitchen", "goals": "as the goal list",
-          "constraints": "as the constraints", "rates": "as the motion rates"}
+          "constraints": "as the constraints", "rates": "as the motion rates", "utensils": "as the utensils list"}
 
 
 def place(path: str, line: int) -> str:

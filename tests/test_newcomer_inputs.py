@@ -14,6 +14,7 @@ from foon2pddl.io.jsonio import read_json
 SCENE = ROOT / "tests" / "data" / "scene" / "whipped_cream_scene.json"
 DIET = ROOT / "docs" / "examples" / "diet-no-egg.json"
 RATES = SEARCH_INPUTS / "motion.txt"
+UTENSILS = SEARCH_INPUTS / "utensils.txt"
 
 
 def run(*args):
@@ -60,6 +61,11 @@ def test_scene_objects_are_counted_from_one(tmp_path):
                                                                "(`motion<TAB>rate` lines), not a utensils list: give it with `--rates`"),
     (["retrieve", "--goal", "guacamole", "--constraints", RATES], "this is a motion success-rates file "
                                                                   "(`motion<TAB>rate` lines), not a constraints file: give it with `--rates`"),
+    # stop 55's pass: a utensils list (one label a line) as PATHS said only `expected an 'O', 'S' or 'M' line`
+    (["stats", UTENSILS], f"{UTENSILS}:1: error: this is a list of objects, one a line (no `O`, `S`, `M` or `//` "
+                          "line), not a network: give it with `--utensils` or with `--kitchen` or with `--goals`"),
+    (["plan", UTENSILS, "--goal", "cup"], "this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), "
+                                          "not a network: give it with `--utensils` or with `--kitchen`"),
 ])
 def test_a_file_of_another_kind_names_the_option_that_takes_it(args, says):
     """`stats kitchen.json` said `give it as the kitchen or the goal list`, a scene `give it as the kitchen`, a
@@ -67,6 +73,21 @@ def test_a_file_of_another_kind_names_the_option_that_takes_it(args, says):
     r = run(*args)
     assert r.exit_code == 2 and says in r.stderr, r.stderr
     assert "Traceback" not in r.output
+
+
+def test_a_kitchen_of_one_node_a_line_given_as_paths_names_the_kitchen_and_goal_options(tmp_path):
+    """Objects with states (`onion: whole`, docs/format.md's node-per-line kitchen) are no utensils list: the
+    error names `--kitchen` and `--goals` only; text that is no list of objects keeps the parser's error."""
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("# on hand\nonion: whole\n2 x bowl: empty\nknife\n")
+    r = run("stats", kitchen)
+    assert r.exit_code == 2, r.output
+    assert (f"{kitchen}:1: error: this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
+            "network: give it with `--kitchen` or with `--goals`\n") in r.stderr
+    prose = tmp_path / "notes.txt"
+    prose.write_text("Onion: whole, in [bowl: empty\n")
+    r = run("stats", prose)
+    assert r.exit_code == 2 and "not a network" not in r.stderr and "expected an 'O', 'S' or 'M' line" in r.stderr
 
 
 def test_the_library_says_where_a_file_goes_in_words():

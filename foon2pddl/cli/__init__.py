@@ -50,7 +50,7 @@ COMMANDS = {
 
 #: The option that takes a file of each kind (`errors.INPUTS`), for an error on a file given to another one.
 OPTIONS = {"paths": "as a PATHS argument", "kitchen": "with `--kitchen`", "goals": "with `--goals`",
-           "constraints": "with `--constraints`", "rates": "with `--rates`"}
+           "constraints": "with `--constraints`", "rates": "with `--rates`", "utensils": "with `--utensils`"}
 
 
 class _Command(click.Command):

@@ -64,9 +64,12 @@ def read_network(path: Path) -> ParseResult:
     try:
         return parse_file(path)
     except FoonSyntaxError:
+        from .kitchen_files import refuse_object_lines
         from .rates import refuse_rates
 
-        refuse_rates(read_text(path), str(path), "a network")  # re-read only on error: what it is, where it goes
+        text = read_text(path)  # re-read only on error: what it is, where it goes
+        refuse_rates(text, str(path), "a network")
+        refuse_object_lines(text, str(path))
         raise
 
 

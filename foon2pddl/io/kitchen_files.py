@@ -151,6 +151,22 @@ def looks_like_foon(text: str) -> bool:
     return False
 
 
+def refuse_object_lines(text: str, path: str) -> None:
+    """Refuse a list of objects, one a line, given as a network (stop 55's pass: `stats utensils.txt` said only
+    `expected an 'O', 'S' or 'M' line`): a located error naming the options that take it. Bare labels (`knife`)
+    may be a utensils list, a kitchen or a goal list; objects with states (`onion: whole`, `2 x bowl`) a kitchen
+    or a goal list. Text that is no such list (a FOON line, a line no goal parses) is left to the parser's error."""
+    try:
+        listed = _node_lines(text, path)
+    except FoonSyntaxError:
+        return
+    if not listed:
+        return
+    bare = all(k is None and not n.states for n, k, _ in listed)
+    raise FoonSyntaxError(path, 1, "this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
+                          "network", belongs=("utensils", "kitchen", "goals") if bare else ("kitchen", "goals"))
+
+
 def read_kitchen(path: str | Path) -> Kitchen:
     """Read a kitchen file: `.json` (a scene, `io.scene_file`, or the search projects' list of nodes),
     FOON-style O/S lines, or one goal-syntax node per line."""
