@@ -86,3 +86,24 @@ def test_make_install_says_each_step_and_runs_pip_through_the_phases():
     assert len(said) >= 4, recipe  # system packages, the environment, the packages, bytecode
     pips = [s for s in steps if "pip install" in s]
     assert pips and all("pip_phases.py" in s and " -q " not in s for s in pips), pips
+
+
+def test_a_phase_counts_its_seconds_from_its_own_start(tmp_path, monkeypatch, capsys):
+    """Stop 55's pass: `pip: still installing the packages into the environment (58 packages) (60 s) ...` came
+    right after the phase began: its seconds counted from pip's start. Here the build phase takes 4 s, then
+    collecting runs 2.5 s: collecting's `still` lines count from 0, not from 4."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pip_phases
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    monkeypatch.setattr(pip_phases, "TICK", 0.0)
+    slow = [sys.executable, "-c", "import time; print('Obtaining file:///x', flush=True); time.sleep(4); "
+                                  "print('Collecting click', flush=True); time.sleep(2.5)"]
+    assert pip_phases.main(["--log", str(tmp_path / "pip.log"), *slow]) == 0
+    said = capsys.readouterr().err.splitlines()
+    building = [int(re.search(r"\((\d+) s\) \.\.\.$", s).group(1)) for s in said if s.startswith("pip: still prep")]
+    collecting = [int(re.search(r"\((\d+) s, 1 collected\)", s).group(1)) for s in said
+                  if s.startswith("pip: still collecting")]
+    assert building and collecting, said
+    assert max(building) >= 3 and collecting[0] <= 2 and collecting == sorted(collecting), said

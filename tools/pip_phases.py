@@ -6,7 +6,7 @@ plain pip prints hundreds of lines.
 
 Runs the pip command with its output going to FILE, and says on stderr when pip enters each phase
 (preparing the project's build, collecting the dependencies, building, installing), with the packages
-counted; a phase still running after `TICK` seconds says so again (on a terminal: one line, redrawn). pip's
+counted; a phase still running after `TICK` seconds says so again, with the seconds since it began (on a terminal: one line, redrawn). pip's
 `ERROR` lines are shown as they come; when pip fails the last `TAIL` lines of its output follow. The exit
 status is pip's. Standard library only: it runs before the virtual environment holds anything else.
 """
@@ -70,7 +70,7 @@ class Phases:
                     what = f"done: {_packages(len(text.split()) - 2)} installed"
                 elif prefix == "Installing collected packages":
                     what += f" ({_packages(len(text.split(':', 1)[1].split(',')))})"
-                self.phase = what
+                self.phase, self.start = what, time.monotonic()  # a `still` line counts from its phase's start
                 self.say(what if prefix == PHASES[-1][0] else what + " ...")
         if text.startswith("Collecting "):
             self.collected += 1
