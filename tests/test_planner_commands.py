@@ -123,3 +123,25 @@ def test_every_preset_runs_and_is_documented(preset):
     assert f"solved (external ({preset})): " in r.stderr and "20 units, valid" in r.stderr
     doc = (ROOT / "docs" / "planning.md").read_text()
     assert f"| `{preset}` | `{PRESETS[preset].template}` |" in doc
+
+
+def test_a_planner_that_dies_in_python_says_its_exception_not_a_cut_traceback():
+    """Stop 56's newcomer pass: pyperplan refusing the relational encoding's `forall` printed the last 8 lines of
+    its stderr, a traceback cut mid-stack (`node.effect.accept(self)`, three `File "..."` frames); the planner's
+    message is its exception line, and the reason line follows (docs/planning.md)."""
+    r = run("plan", "--goal", "whipped cream", "--planner-cmd", "pyperplan")
+    assert r.exit_code == 2
+    error = next(line for line in r.stderr.splitlines() if line.startswith("error (external (pyperplan))"))
+    assert error.endswith("SemanticError: 'Error: unknown predicate forall used in effect of action'"), error
+    assert 'File "' not in r.stderr and "node.effect.accept" not in r.stderr, r.stderr
+    assert "reason: the relational encoding's actions have conditional effects" in r.stderr
+
+
+def test_tail_of_a_traceback_is_its_exception():
+    from foon2pddl.planners.result import tail
+
+    text = "\n".join(["search ...", "Traceback (most recent call last):", '  File "a.py", line 3, in <module>',
+                      "    main()", '  File "b.py", line 9, in main', "    raise ValueError(", "ValueError: bad",
+                      "  more of the message"])
+    assert tail(text) == "ValueError: bad\n  more of the message"
+    assert tail("line 1\nline 2") == "line 1\nline 2"  # no traceback: the last lines as they are

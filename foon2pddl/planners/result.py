@@ -9,6 +9,7 @@ then any arguments separated by single spaces.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 
 from ..status import PlanStatus
@@ -78,6 +79,20 @@ def step_action(step: str) -> str:
     return step.split(" ", 1)[0]
 
 
+#: A Python traceback's frame line (`  File "x.py", line 3, in main`).
+_FRAME = re.compile(r'^\s+File ".*", line \d+')
+
+
 def tail(text: str, lines: int = 8) -> str:
-    """The last lines of a process's output, for error messages."""
-    return "\n".join(text.strip().splitlines()[-lines:])
+    """The last lines of a process's output, for error messages. When it ends in a Python traceback (a planner
+    written in Python that raised: pyperplan on `forall`), its exception: the lines after the last frame and
+    that frame's indented source lines, not a stack cut `lines` from the end. O(n) in the output's lines."""
+    kept = text.strip().splitlines()
+    frames = [i for i, line in enumerate(kept) if _FRAME.match(line)]
+    if frames:
+        after = kept[frames[-1] + 1:]
+        while after and after[0][:1].isspace():
+            after = after[1:]
+        if after:
+            return "\n".join(after[-lines:])
+    return "\n".join(kept[-lines:])
