@@ -21,6 +21,7 @@ from __future__ import annotations
 import io
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from pathlib import Path
 
 from ..io.atomic import atomic_write
 from ..io.steps import Step, silent_step
@@ -218,14 +219,19 @@ def compute_matrix(labels: tuple[str, ...], sim: LabelSimilarity, key: str = "",
 def matrix_is_cached(vocabulary: Iterable[str]) -> bool:
     """Whether the matrix over `vocabulary` is in the disk cache (no WordNet opened, no NLTK import)."""
     labels = tuple(sorted({normalize_label(v) for v in vocabulary} - {""}))
-    return (cache_dir() / "similarity" / f"{matrix_key(labels, shipped_overrides().text)}.npz").is_file()
+    return matrix_file(matrix_key(labels, shipped_overrides().text)).is_file()
+
+
+def matrix_file(key: str) -> Path:
+    """Where the matrix cached under `key` is kept."""
+    return cache_dir() / "similarity" / f"{key}.npz"
 
 
 def cached_matrix(labels: tuple[str, ...], key: str) -> SimilarityMatrix | None:
     """The matrix over `labels` (sorted, normalized) cached under `key`, or None (no WordNet opened)."""
     import numpy as np
 
-    path = cache_dir() / "similarity" / f"{key}.npz"
+    path = matrix_file(key)
     if path.is_file():
         try:
             with np.load(path, allow_pickle=False) as data:
@@ -257,7 +263,7 @@ def similarity_matrix(
         buf = io.BytesIO()
         np.savez(buf, labels=np.array(labels, dtype=str), values=result.values)
         try:
-            atomic_write(cache_dir() / "similarity" / f"{key}.npz", buf.getvalue())
+            atomic_write(matrix_file(key), buf.getvalue())
         except OSError:
             pass  # a read-only cache only costs time
     return result
