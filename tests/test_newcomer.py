@@ -678,6 +678,25 @@ def test_an_input_two_containers_newly_list_goes_into_the_inner_one_said_once(un
     assert text.startswith("scoop and pour whipped cream (chilled) from the jar into the pudding (in [baking tray]"), text
 
 
+
+def test_a_tool_the_step_soils_is_said_with_with_not_as_a_second_thing_worked(universal):
+    """Stop 56's newcomer pass: where FOON records the knife becoming `dirty`, the greek salad's step read `cut lemon
+    (whole), knife (clean), on the cutting board` (the knife a second thing cut; 85 steps of the shared subgraphs),
+    beside `slice sweet pepper (whole), with the knife (clean), ...`. A tool is a tool, soiled or not."""
+    from foon2pddl.io.recipe_words import recipe_text
+
+    foon, _ = universal
+    units = {(u.motion.label, tuple(sorted(i.label for i in u.inputs))): u for u in foon.units}
+    cut = units[("cut", ("cutting board", "knife", "lemon"))]
+    assert recipe_text(cut) == "cut lemon (whole), with the knife (clean), on the cutting board"
+    peel = next(u for u in foon.units if u.motion.label == "peel" and {i.label for i in u.inputs} == {
+        "cucumber", "peeler"})
+    assert recipe_text(peel) == "peel cucumber (whole), with the peeler (clean)"
+    mix = next(u for u in foon.units if u.motion.label == "mix" and "whisk" in {i.label for i in u.inputs}
+               and any(o.label == "pancake batter" for o in u.outputs))  # was `mix whisk (clean), with the egg ...`
+    assert recipe_text(mix) == ("mix bowl (contains {egg white, egg yolk, flour, milk}), with the whisk (clean), "
+                                "making pancake batter (raw) in the bowl")
+
 # -- -o: one convention for every output ---------------------------------------------------------------
 
 #: Every command's output options, each with its kind: a file, a PNG file (`--plot`), or a directory of files.

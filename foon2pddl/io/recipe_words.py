@@ -121,7 +121,8 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
              named: Aliases) -> tuple[list[ObjectNode], ObjectNode | None]:
     """What a step that moves nothing works on, and the container it goes into (or None).
 
-    The inputs that change, but not the container of what the step makes (`making lime juice in the juicer`), nor
+    The inputs that change, but not a tool the step only leaves dirty (`_soiled`: the knife of `cut lemon (whole),
+    with the knife (clean)`), nor the container of what the step makes (`making lime juice in the juicer`), nor
     the holder of another input that changes (the stove under the heated pan, the pan holding the omelette it
     cooks: they are places); when only that container changes, the inputs the step uses up that become what it
     makes (`egg` -> `egg white and yolk`) go into it (`crack egg (uncracked) into the bowl (empty)`); when no
@@ -129,7 +130,7 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
     whisk, in the cooking pan, making omelette ...`)."""
     receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o, named))}
     changing = [i for i in unit.inputs if i.label in new]
-    changed = [i for i in changing if i.label not in receivers]
+    changed = [i for i in changing if i.label not in receivers and not _soiled(i, new)]
     if not changed:
         out_labels = {o.label for o in unit.outputs}
         made = [o.label for o in new.values() if o.label not in by_label]
@@ -139,13 +140,23 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
             else bool(_holders(i, named) & receivers))]  # nothing changes: what is in the container made into
         if used_up:
             return used_up, into
-        changed = changing
+        changed = [i for i in changing if not _soiled(i, new)] or changing
     if not changed:  # FOON says nothing changes (a unit copying its input): every input, as written
         return list(unit.inputs), None
     if len(changed) > 1:
         inside = {h for i in changed for h in _holders(i, named)}
         changed = [i for i in changed if i.label not in inside] or changed
     return changed, None
+
+
+def _soiled(node: ObjectNode, new: dict[str, ObjectNode]) -> bool:
+    """Whether the step only makes `node` dirty (`knife (clean)` -> `knife (dirty)`): a tool it uses, not what
+    it works on, when something else changes too."""
+    after = new.get(node.label)
+    if after is None:
+        return False
+    before_states, after_states = {s.label for s in node.states}, {s.label for s in after.states}
+    return "dirty" in after_states and before_states ^ after_states <= {"clean", "dirty"}
 
 
 def _ordered_places(places: list[ObjectNode], subjects: list[ObjectNode], named: Aliases) -> list[ObjectNode]:
@@ -165,7 +176,8 @@ def recipe_text(unit: FunctionalUnit) -> str:
     `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
     pitcher first as if it were poured. An input moves when its output of the same label is in a
     place state (`in [pitcher]`) other than its own; the containers named so, and the contents of
-    moved objects, are not tools. Without a move: what changes (`_changed`), then the tools and the places,
+    moved objects, are not tools. Without a move: what changes (`_changed`; a tool it only leaves dirty is a
+    tool: `cut lemon (whole), with the knife (clean), ...`), then the tools and the places,
     each said once with its own word (`cut lime (whole), with the knife, on the cutting board`; `mix ..., in the
     bowl`). Labels no input has are what the step makes. A place name is read as the unit's object it names
     (`aliases`). O(n^2) in the unit's n nodes.
