@@ -1,19 +1,24 @@
 """Which unit makes a container's node and the node of what is in it, in the delete-free plan counts are derived
 from (`instance_counts.delete_free_plan`, `relational`): one unit for both where one does, else the content's from
 a unit that makes it in that container, else the container's from a unit that takes the container where the
-content's maker left it, else the content's from a chain working it where it lies (`_worked_there`); or, asked
-for the plan with first makers (`first`), where the content's first makers already lead it there (`_there_first`),
-those; asked for makers by holder reach (`placed`), back along the held node's chain a unit that makes the
-container's node too (`_placed_back`)."""
+content's maker left it, else the content's from a chain working it where it lies (`_worked_there`), else both from
+a unit taking them out of a kitchen container (`_from_kitchen_box`: what that container holds is at hand,
+`AT_HAND`); or, asked for the plan with first makers (`first`), where the content's first makers already lead it
+there (`_there_first`), those; asked for makers by holder reach (`placed`), back along the held node's chain a unit
+that makes the container's node too (`_placed_back`)."""
 
 from __future__ import annotations
 
 from ..analysis.reachability import Reachability
 from ..model.aliases import unit_aliases
-from ..model.foon import ObjectNode
+from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import listed, places
+from .relational_init import kitchen_implied
 
-__all__ = ["makers_together"]
+__all__ = ["AT_HAND", "kitchen_held", "makers_together"]
+
+#: `makers_together`'s maker of a node a kitchen container holds (`kitchen_held`): none, it is at hand.
+AT_HAND = -1
 
 
 def makers_together(reach: Reachability, u: int, first: bool = False, placed: bool = False) -> dict[int, int]:
@@ -50,8 +55,41 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
                            and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             elif not (first and _there_first(reach, c, x)):
-                out.update(_worked_there(reach, u, c, x) or placed and _placed_back(reach, u, c, x) or {})
+                out.update(_worked_there(reach, u, c, x) or _from_kitchen_box(reach, u, c, x)
+                           or placed and _placed_back(reach, u, c, x) or {})
     return out
+
+
+def kitchen_held(kitchen: frozenset[ObjectNode], unit: FunctionalUnit) -> frozenset[ObjectNode]:
+    """The inputs of `unit` that a kitchen container it takes holds, though a unit makes them: not in `kitchen`,
+    placed in or on the container's label, which lists theirs, and said by the kitchen (`relational_init.
+    kitchen_implied`: the completion starts the container's object of that label in that node). The kofta's pour
+    (`ACT-0053-lentil_kofta-1.txt:1`) takes the kitchen's `pitcher (contains {water})` with `water (in [pitcher])`,
+    which on a universal FOON the watermelon lemonade's pour makes too. O(inputs^2)."""
+    boxes = [b for b in unit.inputs if b in kitchen]
+    return frozenset(x for x in unit.inputs if x not in kitchen and any(
+        x.label != b.label and x.label in listed(b) and b.label in {h for _, h in places(x)} for b in boxes)
+        and x in kitchen_implied((x,), kitchen))
+
+
+def _from_kitchen_box(reach: Reachability, u: int, c: int, x: int) -> dict[int, int] | None:
+    """Node id -> maker for the container's node `c` and the held node `x` when no rule above chooses: a unit other
+    than `u` that makes both, taking only kitchen nodes and nodes a kitchen container it takes holds (`kitchen_held`,
+    at hand: `AT_HAND`). In FOON's tree such a node is made by a unit, maybe late, maybe out of `c` and `x`
+    themselves; over objects it is in the container from the start, so the unit fires at once. On the universal
+    FOON of 70 subgraphs drawn with seed 56 the lemonade's pour (`0072-old-fashioned_lemonade.txt:109`) takes
+    `measuring cup (contains {water})`, first made by the mini pizza's turn on, with `water (in [measuring cup])`,
+    first made by the macaroni's fill into a cup below the faucet: two cups. The kofta's pour out of the kitchen's
+    pitcher makes both; its `water (in [pitcher])` only the watermelon lemonade's pour of the cup's water makes,
+    so in FOON's tree the kofta's pour fires after the lemonade's. Tie-break: FOON order (`rank`). O(makers x
+    inputs^2)."""
+    ix = reach.index
+    for m in sorted(set(ix.makers[c]) & set(ix.makers[x]), key=lambda k: ix.rank[k]):
+        unit = reach.foon.units[m]
+        held = kitchen_held(reach.kitchen, unit)
+        if m != u and held and all(n in reach.kitchen or n in held for n in unit.inputs):
+            return {c: m, x: m} | {ix.node_id[n]: AT_HAND for n in held}
+    return None
 
 
 #: How many units deep `_worked_there` follows a held node worked where it lies.

@@ -7,7 +7,9 @@ unfolding a delete-free plan backwards:
    of the kitchen's fixpoint (`analysis.reachability`), each needed node's
    first achiever, in firing order (`relational`: a container's node and its
    content's node one unit takes, from one earlier unit that makes both, else
-   the content's from one that makes it in that container: `count_together`);
+   the content's from one that makes it in that container, else both from one
+   taking them out of a kitchen container, whose contents then count as the
+   kitchen's: `count_together`);
    after a unit that moves an object out of a node a later unit takes, the
    task's units that lead it back there (`count_returns.with_returns`: the pot
    the cover and uncover bring back from `hot`; `relational`, else a unit of the
@@ -61,7 +63,7 @@ from ..model.where import short_path, unit_where
 from .count_order import orders
 from .count_returns import with_returns
 from .count_reuse import reused
-from .count_together import makers_together
+from .count_together import AT_HAND, kitchen_held, makers_together
 
 #: A unit's object roles, for counting what passes through each node.
 RolesOf = Callable[[FunctionalUnit], tuple[Role, ...]]
@@ -143,14 +145,24 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
         n = stack.pop()
         if n in seen or reach.node_round[n] == 0:
             continue
-        seen.add(n)
         u = maker[n] = maker.get(n, reach.achiever[n])
+        if u == AT_HAND:  # a kitchen container holds it (`count_together.kitchen_held`): the kitchen's
+            continue
+        seen.add(n)
         if u not in chosen:
             chosen.add(u)
             if together:
                 maker.update({k: v for k, v in makers_together(reach, u, first, placed).items() if k not in seen})
             stack.extend(ix.inputs[u])
     return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen})
+
+
+def _at_hand(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
+    """The nodes `plan`'s units take that no unit of it makes and a kitchen container holds (`count_together.
+    kitchen_held`, chosen `AT_HAND`): counted as the kitchen's, where the completion starts them. O(plan x inputs)."""
+    made = {o for u in plan for o in foon.units[u].outputs}
+    return frozenset(x for u in plan if any(i not in kitchen and i not in made for i in foon.units[u].inputs)
+                     for x in kitchen_held(kitchen, foon.units[u]) if x not in made)
 
 
 def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) -> tuple[int, ...]:
@@ -259,11 +271,12 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
             more = ways_of(other[0][0])  # first makers where they lead there (`count_together`): kept when fewer
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
-        unfolds = [unfold(foon, p, kitchen, found[1], roles_of, s) for p, s in zip(plans, steps, strict=True)]
+        homes = [kitchen | _at_hand(foon, p, kitchen) for p in plans]  # with what kitchen containers hold
+        unfolds = [unfold(foon, p, k, found[1], roles_of, s) for p, k, s in zip(plans, homes, steps, strict=True)]
         reuse = reuse and not (stated or overrides or extra)
         if reuse:  # objects left in a kitchen node serve later takers
-            unfolds = [(r, c, f) if (r := reused(foon, s[::-1], kitchen, found[1], roles_of)) is not None else (a, c, f)
-                       for (a, c, f), s in zip(unfolds, steps, strict=True)]
+            unfolds = [(r, c, f) if (r := reused(foon, s[::-1], k, found[1], roles_of)) is not None else (a, c, f)
+                       for (a, c, f), k, s in zip(unfolds, homes, steps, strict=True)]
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
         nodes |= set(at_kitchen)
