@@ -209,7 +209,7 @@ def blocker_words(reach: Reachability, nodes: Iterable[ObjectNode]) -> str:
     found = blockers(reach, nodes, _KEPT)
     if len(found) > SUMMARY:
         found = blockers(reach, nodes, len(reach.index.nodes))
-    return first_of([n.describe() for n in found], SUMMARY)
+    return first_of(found, SUMMARY, ObjectNode.describe)
 
 
 def _walk(reach: Reachability, starts: list[int]) -> set[int]:

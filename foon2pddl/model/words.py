@@ -7,9 +7,12 @@ through `first_of`, so it never reads as the whole.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import TypeVar
 
 __all__ = ["count", "first_of", "plural"]
+
+T = TypeVar("T")
 
 #: Endings whose plural adds `es` (`match` -> `matches`).
 _ES = ("s", "x", "z", "ch", "sh")
@@ -30,11 +33,12 @@ def count(n: int, noun: str, *, grouped: bool = False) -> str:
     return f"{n:,} {plural(n, noun)}" if grouped else f"{n} {plural(n, noun)}"
 
 
-def first_of(items: Sequence[str], limit: int) -> str:
-    """`items` joined by `; `, only the first `limit` of them, then `; ... (N more)` when some are left out.
+def first_of(items: Sequence[T], limit: int, show: Callable[[T], str] = str) -> str:
+    """`items` joined by `; `, only the first `limit` of them (each as `show` writes it: only those shown are
+    written), then `; ... (N more)` when some are left out.
 
     >>> first_of(["a", "b", "c"], 2)
     'a; b; ... (1 more)'
     """
     more = f"; ... ({len(items) - limit} more)" if len(items) > limit else ""
-    return "; ".join(items[:limit]) + more
+    return "; ".join(map(show, items[:limit])) + more
