@@ -353,6 +353,21 @@ def test_progress_lines_come_every_interval_while_no_cell_finishes():
     assert all(line.startswith("experiment: 0/100 cells (0.0 %), 0.0 cells/s, elapsed ") for line in lines[1:])
 
 
+def test_the_command_through_a_pipe_gets_a_line_every_beat(tmp_path, monkeypatch):
+    """Stop 56's newcomer pass: `experiment --trials 1 --goals 3` through a pipe said `a progress line every 30 s`
+    at 3.0 s and nothing more until the end at 27.0 s (issue 24's floor: no 2 s without a line). The command's log
+    lines come every `cli.progress.BEAT` (1.5 s), as every other step's beat through a pipe; the API keeps its
+    `LINE_INTERVAL`."""
+    from foon2pddl.cli import progress
+
+    monkeypatch.setattr(progress, "BEAT", 0.01)
+    r = CliRunner().invoke(main, ["experiment", "--trials", "1", "--goals", "3", "--networks", "reg", "--solvers",
+                                  "native-complete", "-o", str(tmp_path)])
+    assert r.exit_code == 0, r.output
+    assert "experiment: 3 cells to run; a progress line every 0.01 s" in r.stderr
+    monkeypatch.undo()
+    assert progress.BEAT <= 1.5
+
 def test_eta_weighs_each_solvers_remaining_cells_by_its_own_time_per_cell():
     """Costliest batches run first: a rate over cells alone predicted 51 min for a run of ~10 (stop 42).
     With groups, the cells left of each (solver, network) are weighed by that group's time per cell."""

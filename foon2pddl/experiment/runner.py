@@ -37,7 +37,7 @@ from . import collector
 from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
 from .networks import NETWORKS, NetworkView
 from .params import PARAMS, Point, check_grid, points
-from .progress import OFF, Progress, default_mode
+from .progress import LINE_INTERVAL, OFF, Progress, default_mode
 from .protocol import Protocol, Trial, identity_difference
 from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
@@ -278,15 +278,17 @@ def run_cells(config: Config, batches: list[Batch], sink: Callable[[Record], Non
             shutil.rmtree(cache, ignore_errors=True)
 
 
-def run(config: Config, progress: bool | str = True, fresh: bool = False, step: Step = silent_step) -> RunSummary:
-    """Run every cell of `config` not already in its results file (all of them when `fresh`);
-    return all records of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode;
-    `step(what)`: a context manager around each slow set-up step (the CLI's `slow_step` says what it is)."""
+def run(config: Config, progress: bool | str = True, fresh: bool = False, step: Step = silent_step,
+        every: float = LINE_INTERVAL) -> RunSummary:
+    """Run every cell of `config` not already in its results file (all of them when `fresh`); return all records
+    of its cells. `progress`: True (a bar on a terminal, lines otherwise), False, or a mode; `step(what)`: a context
+    manager around each slow set-up step (the CLI's `slow_step`); `every`: seconds between log lines (its beat)."""
     with collector.building() as settle:  # no garbage collection while the networks are built
-        return _run(config, progress, fresh, settle, step)
+        return _run(config, progress, fresh, settle, step, every)
 
 
-def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None], step: Step) -> RunSummary:
+def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None], step: Step,
+         every: float) -> RunSummary:
     t0 = time.perf_counter()
     for name in config.solvers:
         get_solver(name)
@@ -296,7 +298,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
     check_grid(config.sweeps)
     check_requirements(config)
     try:
-        return _run_checked(config, progress, fresh, settle, t0, step)
+        return _run_checked(config, progress, fresh, settle, t0, step, every)
     except OSError as exc:  # a full disk, a read-only directory: what was appended stays, a rerun resumes
         where = exc.filename or config.out_dir
         raise FoonInputError(str(where), 0, f"cannot write: {exc.strerror or exc}; the cells recorded so far are "
@@ -304,7 +306,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
 
 
 def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Callable[[], None],
-                 t0: float, step: Step) -> RunSummary:
+                 t0: float, step: Step, every: float) -> RunSummary:
     with step("drawing the trials (kitchens and goals) and reading the cells already run"):
         first = config.points[0]
         trials = trials_at(config, first)
@@ -333,7 +335,7 @@ def _run_checked(config: Config, progress: bool | str, fresh: bool, settle: Call
         groups: Counter = Counter()  # cells per (solver, network): `Progress.left` weighs them
         for b in batches:
             groups[b.solver, b.network] += len(b.goals)
-        bar = Progress(planned, mode, groups=groups)
+        bar = Progress(planned, mode, interval=every, groups=groups)
         for w in warnings:
             bar.note(w)
         t_run = time.perf_counter()
