@@ -157,3 +157,21 @@ def test_a_recipe_whose_every_block_is_skipped_is_not_called_a_kitchen(tmp_path,
     assert r.exit_code == 2 and "Traceback" not in r.stderr
     assert r.stderr.startswith(f"{recipe}:3: error: no functional units in file: every block was skipped"), r.stderr
     assert f"line 1: {skipped}" in r.stderr and "no motion ('M') line" not in r.stderr and "--kitchen" not in r.stderr
+
+
+@pytest.mark.parametrize("given", [SEARCH_INPUTS / "goal_nodes.json", SEARCH_INPUTS / "kitchen.json"])
+def test_a_json_goal_list_as_goal_file_says_it_goes_with_goals(given):
+    """Stop 56's newcomer pass: the shared goal list given as `--goal-file` (one node in FOON O/S lines) said only
+    `goal_nodes.json:1: error: expected an 'O' or 'S' line, '//' or a '#' comment`."""
+    r = run("plan", "--goal-file", given)
+    assert r.exit_code == 2 and "Traceback" not in r.output
+    first = r.stderr.splitlines()[0]
+    assert first.startswith(f"{given}:1: error: a JSON list of ") and "not the one goal node" in first, r.stderr
+    assert first.endswith("give it with `--goals`"), first
+
+
+def test_a_broken_goal_file_keeps_the_parsers_error(tmp_path):
+    bad = tmp_path / "goal.txt"
+    bad.write_text("onion\twhole\n")
+    r = run("retrieve", "--goal-file", bad)
+    assert r.exit_code == 2 and "expected an 'O' or 'S' line" in r.stderr, r.stderr

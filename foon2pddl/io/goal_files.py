@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -100,10 +101,30 @@ def parse_goal_spec(text: str) -> GoalSpec:
 
 
 def read_goal_file(path: str | Path) -> GoalSpec:
-    """A goal file: exactly one object node written as FOON O/S lines."""
+    """A goal file: exactly one object node written as FOON O/S lines. A JSON list (the public `goal_nodes.json`)
+    is refused as what it is, a goal list for `--goals` (stop 56's newcomer pass: it said only `expected an 'O' or
+    'S' line`)."""
     p = Path(path)
-    nodes = parse_objects(read_text(p), str(p))
+    text = read_text(p)
+    try:
+        nodes = parse_objects(text, str(p))
+    except FoonSyntaxError:
+        _refuse_json_list(text, str(p))
+        raise
     if len(nodes) != 1:
         raise FoonSyntaxError(str(p), nodes[1][1] if len(nodes) > 1 else 0,
                               f"goal file must hold exactly one object node, found {len(nodes)}")
     return spec_of_node(nodes[0][0])
+
+
+def _refuse_json_list(text: str, path: str) -> None:
+    """Raise a located error naming `--goals` when `text` is a JSON list (of goal or kitchen nodes); else return."""
+    if not text.lstrip().startswith("["):
+        return
+    try:
+        data = json.loads(text)
+    except ValueError:
+        return
+    if isinstance(data, list):
+        raise FoonSyntaxError(path, 1, f"a JSON list of {len(data)} object(s), not the one goal node in FOON O/S lines "
+                                       "a goal file holds", belongs=("goals",))
