@@ -62,9 +62,9 @@ def test_scene_objects_are_counted_from_one(tmp_path):
     (["retrieve", "--goal", "guacamole", "--constraints", RATES], "this is a motion success-rates file "
                                                                   "(`motion<TAB>rate` lines), not a constraints file: give it with `--rates`"),
     # stop 55's pass: a utensils list (one label a line) as PATHS said only `expected an 'O', 'S' or 'M' line`
-    (["stats", UTENSILS], f"{UTENSILS}:1: error: this is a list of objects, one a line (no `O`, `S`, `M` or `//` "
+    (["stats", UTENSILS], f"{UTENSILS}:1: error: it reads as a list of objects, one a line (no `O`, `S`, `M` or `//` "
                           "line), not a network: give it with `--utensils` or with `--kitchen` or with `--goals`"),
-    (["plan", UTENSILS, "--goal", "cup"], "this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), "
+    (["plan", UTENSILS, "--goal", "cup"], "it reads as a list of objects, one a line (no `O`, `S`, `M` or `//` line), "
                                           "not a network: give it with `--utensils` or with `--kitchen`"),
 ])
 def test_a_file_of_another_kind_names_the_option_that_takes_it(args, says):
@@ -82,12 +82,15 @@ def test_a_kitchen_of_one_node_a_line_given_as_paths_names_the_kitchen_and_goal_
     kitchen.write_text("# on hand\nonion: whole\n2 x bowl: empty\nknife\n")
     r = run("stats", kitchen)
     assert r.exit_code == 2, r.output
-    assert (f"{kitchen}:1: error: this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
+    assert (f"{kitchen}:1: error: it reads as a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
             "network: give it with `--kitchen` or with `--goals`\n") in r.stderr
-    prose = tmp_path / "notes.txt"
-    prose.write_text("Onion: whole, in [bowl: empty\n")
-    r = run("stats", prose)
-    assert r.exit_code == 2 and "not a network" not in r.stderr and "expected an 'O', 'S' or 'M' line" in r.stderr
+    for text in ("Onion: whole, in [bowl: empty\n", "Hello world, this is a note.\nSee the README.\n",
+                 "# notes\nThis file lists: the inputs.\n", "nonsense\tline\n"):
+        prose = tmp_path / "notes.txt"
+        prose.write_text(text)
+        r = run("stats", prose)
+        assert r.exit_code == 2 and "not a network" not in r.stderr, (text, r.stderr)
+        assert "expected an 'O', 'S' or 'M' line" in r.stderr, (text, r.stderr)
 
 
 def test_the_library_says_where_a_file_goes_in_words():

@@ -151,20 +151,27 @@ def looks_like_foon(text: str) -> bool:
     return False
 
 
+#: An object's label as a list of objects writes it: up to 5 words of letters, digits, `'` and `-` (no sentence).
+_LABEL = re.compile(r"[^\W\d_][\w'-]*(?: [\w'-]+){0,4}")
+
+
 def refuse_object_lines(text: str, path: str) -> None:
     """Refuse a list of objects, one a line, given as a network (stop 55's pass: `stats utensils.txt` said only
     `expected an 'O', 'S' or 'M' line`): a located error naming the options that take it. Bare labels (`knife`)
     may be a utensils list, a kitchen or a goal list; objects with states (`onion: whole`, `2 x bowl`) a kitchen
-    or a goal list. Text that is no such list (a FOON line, a line no goal parses) is left to the parser's error."""
+    or a goal list. Text that is no such list (a FOON line, a line whose label is no label but a sentence, a line
+    no goal parses) is left to the parser's error."""
+    lines = [raw.strip() for raw in text.split("\n") if raw.strip() and not raw.strip().startswith("#")]
+    heads = [(_COUNT.match(line).group(2) if _COUNT.match(line) else line).split(":", 1)[0].strip() for line in lines]
+    if not lines or not all(_LABEL.fullmatch(h) for h in heads) or any(line.endswith(".") for line in lines):
+        return
     try:
         listed = _node_lines(text, path)
     except FoonSyntaxError:
         return
-    if not listed:
-        return
     bare = all(k is None and not n.states for n, k, _ in listed)
-    raise FoonSyntaxError(path, 1, "this is a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
-                          "network", belongs=("utensils", "kitchen", "goals") if bare else ("kitchen", "goals"))
+    raise FoonSyntaxError(path, 1, "it reads as a list of objects, one a line (no `O`, `S`, `M` or `//` line), not "
+                          "a network", belongs=("utensils", "kitchen", "goals") if bare else ("kitchen", "goals"))
 
 
 def read_kitchen(path: str | Path) -> Kitchen:
