@@ -93,6 +93,19 @@ def test_a_kitchen_of_one_node_a_line_given_as_paths_names_the_kitchen_and_goal_
         assert "expected an 'O', 'S' or 'M' line" in r.stderr, (text, r.stderr)
 
 
+@pytest.mark.parametrize(("given", "says"), [
+    (RATES, "<stdin>:1: error: this is a motion success-rates file (`motion<TAB>rate` lines), not a network: give it "
+            "with `--rates`"),
+    (UTENSILS, "<stdin>:1: error: it reads as a list of objects, one a line (no `O`, `S`, `M` or `//` line), not a "
+               "network: give it with `--utensils` or with `--kitchen` or with `--goals`"),
+])
+def test_a_file_of_another_kind_on_standard_input_is_named_too(given, says):
+    """`cat utensils.txt | stats -` (and the rates file) said only `expected an 'O', 'S' or 'M' line`, where the
+    same file named as PATHS says what it is."""
+    r = CliRunner().invoke(main, ["stats", "-"], input=given.read_text())
+    assert r.exit_code == 2 and says in r.stderr, r.stderr
+
+
 def test_the_library_says_where_a_file_goes_in_words():
     """Python callers have no options: the same error names the input in words."""
     with pytest.raises(FoonSyntaxError) as info:

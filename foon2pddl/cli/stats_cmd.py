@@ -9,6 +9,7 @@ import click
 
 from ..analysis.stats import format_stats, network_stats
 from ..errors import FoonSyntaxError
+from ..io.files import STDIN_NAME
 from . import main
 from .options import emit, output_option, paths_argument, read_network
 
@@ -31,7 +32,7 @@ def stats(paths, as_json, skip_invalid, output) -> None:
     try:
         net = read_network(paths, skip_invalid, say_skipped=False)  # its report lists every warning
     except FoonSyntaxError as exc:  # a file found under a directory: say how to read the others
-        if skip_invalid or exc.path is None or Path(exc.path) in {Path(p) for p in paths}:
+        if skip_invalid or exc.path in (None, STDIN_NAME) or Path(exc.path) in {Path(p) for p in paths}:
             raise
         raise FoonSyntaxError(exc.path, exc.line, exc.message + "; `--skip-invalid` skips the files that fail to "
                               "parse under a directory (each with a warning)", exc.text) from None

@@ -16,8 +16,9 @@ from .parser import ParseResult, parse_file, parse_text, read_text
 FOON_SUFFIXES = (".txt", ".foon")
 
 
-#: PATHS entry that reads one FOON text from standard input.
+#: PATHS entry that reads one FOON text from standard input, and the name its errors give it.
 STDIN = "-"
+STDIN_NAME = "<stdin>"
 _FOON_LINE = re.compile(r"(?:[OSM]\d*\t|//)")
 
 
@@ -54,22 +55,24 @@ def plainly_not_foon(text: str) -> str:
 
 
 def read_network(path: Path) -> ParseResult:
-    """One network file: FOON text, or the JSON export (`*.json`, see jsonio); `-`: FOON text on standard input."""
-    if str(path) == STDIN:
-        return parse_text(sys.stdin.read(), "<stdin>")
-    if path.suffix.lower() == ".json":
+    """One network file: FOON text, or the JSON export (`*.json`, see jsonio); `-`: FOON text on standard input.
+    A file that does not parse and is of another kind (a rates file, a list of objects) says so, as it is named
+    on standard input too."""
+    stdin = sys.stdin.read() if str(path) == STDIN else None
+    if stdin is None and path.suffix.lower() == ".json":
         from .jsonio import read_json
 
         return ParseResult(read_json(path))
+    name = STDIN_NAME if stdin is not None else str(path)
     try:
-        return parse_file(path)
+        return parse_file(path) if stdin is None else parse_text(stdin, name)
     except FoonSyntaxError:
         from .kitchen_files import refuse_object_lines
         from .rates import refuse_rates
 
-        text = read_text(path)  # re-read only on error: what it is, where it goes
-        refuse_rates(text, str(path), "a network")
-        refuse_object_lines(text, str(path))
+        text = read_text(path) if stdin is None else stdin  # a file is re-read only on error
+        refuse_rates(text, name, "a network")
+        refuse_object_lines(text, name)
         raise
 
 
