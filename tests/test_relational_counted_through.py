@@ -9,6 +9,7 @@ from relational_checks import clean_unit_plan
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl import relational_objects, relational_reading
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.holder_reach import drop_unreachable
 
@@ -50,3 +51,31 @@ def test_a_task_with_no_stitch_is_not_counted_through_them():
     units = UNITS[:1]
     goal, kitchen = Goal(GoalSpec("pan"), (PAN,)), Kitchen(frozenset(KITCHEN))
     assert not compile_goal(Foon(units), kitchen, goal, "relational", narrow=True, through=True).narrowed
+
+
+def test_a_plan_counted_through_an_appliance_s_stitch_names_the_task_s_units(monkeypatch):
+    """The plan through the stitches is counted in `Stitched.through`, which has each appliance's stitched unit of
+    the network after FOON's units, while the task adds only the stitched units it keeps: the odd universal half's
+    caesar salad, counted small through the stitches, fired the stitched sprinkle (`ACT-0080-caesar_salad.txt:345`)
+    at through index 988 of a task of 979 units: an IndexError. Here the lamp's stitch is the network's first, not
+    the task's; the oven's is the plan's: through index 5, the task's index 4 (`Stitched.in_task`)."""
+    units = (FunctionalUnit((n("lamp", "on"),), Motion("turn off"), (n("lamp", "off"),)),
+             FunctionalUnit((n("lamp", "off (ready)"),), Motion("turn on"), (n("lamp", "on", "bright"),)),
+             FunctionalUnit((n("oven", "on"),), Motion("remove"), (n("oven", "off"),)),
+             FunctionalUnit((n("oven", "off (ready)"),), Motion("turn on"), (n("oven", "on", "hot"),)))
+    goal = Goal(GoalSpec("oven"), (n("oven", "on", "hot"),))
+    read = []
+
+    def recording(inp, st, *args):
+        read.append((st, args, relational_reading.read_units(inp, st, *args)))
+        return read[-1][2]
+
+    monkeypatch.setattr(relational_objects, "read_units", recording)
+    through = compile_goal(Foon(units), Kitchen(frozenset({n("oven", "on")})), goal, "relational", narrow=True,
+                           through=True)
+    assert [x.label for x in through.task.instances] == ["oven"]
+    (st, _, rd), = [x for x in read if x[1][-2]]  # the reading counted through the stitches
+    assert len(st.foon.units) == 5 and len(st.through.units) == 6
+    fired = [st.foon.units[u] for u, _ in rd.counts.firings]
+    assert [(u.motion.label, u.inputs) for u in fired] == [("remove", (n("oven", "on"),)),
+                                                           ("turn on", (n("oven", "off"),))]

@@ -109,7 +109,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         options.narrow, options.through, options.placed)
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
-    why = tuple(f"objects: {w}" for w in (*count_reasons(inp.foon, counts, ob.kitchen, rd.roles_of),
+    why = tuple(f"objects: {w}" for w in (*count_reasons(f, counts, ob.kitchen, rd.roles_of),
                                           *((ob.narrowed,) if ob.narrowed else ())))
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
@@ -189,4 +189,4 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
-                    counted=frozenset(u for u, _ in rd.counts.firings))  # the units of the plan counted from
+                    counted=frozenset(origin.get(u, u) for u, _ in rd.counts.firings))  # the units of the plan counted from

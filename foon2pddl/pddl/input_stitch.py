@@ -347,7 +347,9 @@ class Stitched:
     the task's units of it; `origin`: each added unit's index -> the FOON unit it reads (the plan's tree shows
     FOON's unit); `own`: the units FOON's own plan needs; `through`: the network with each added unit in the
     place of the one it reads (an appliance's after FOON's units, beside FOON's own), and `needed`, the units a
-    plan through the stitches needs."""
+    plan through the stitches needs; `in_task`: each unit index of `through` as an index of `foon` (a stitched unit
+    at its added index; one the task does not keep at FOON's unit it reads), so a plan counted through the stitches
+    names the task's units."""
 
     foon: Foon
     units: tuple[int, ...]
@@ -356,6 +358,7 @@ class Stitched:
     own: tuple[int, ...]
     through: Foon
     needed: tuple[int, ...]
+    in_task: tuple[int, ...]
 
 
 def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stitched:
@@ -377,4 +380,6 @@ def with_stitches(foon: Foon, relevant: Callable[[Foon], Sequence[int]]) -> Stit
     origin = {n + k: u for k, u in enumerate(kept)}
     wider = _wider(foon, reads, tuple(kept)) if kept else foon
     units = (*sorted(set(own) | {u for u in used if u < n and u not in kept}), *origin)
-    return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed)
+    added = {(n + beside.index(u) if u in beside else u): n + k for k, u in enumerate(kept)}
+    in_task = tuple(added.get(t, t if t < n else beside[t - n]) for t in range(len(through.units)))
+    return Stitched(wider, units, origin, tuple(s for s in found if s.unit in kept), own, through, needed, in_task)

@@ -54,7 +54,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
@@ -105,6 +105,18 @@ class InstanceCounts:
         unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
         same = (at_node, unmade) == (self.at_node, self.unmade)
         return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused)
+
+    def renumbered(self, index: Sequence[int]) -> InstanceCounts:
+        """These counts with unit `u` of the plan named `index[u]` (the network counted in has other indexes than
+        the task's: `input_stitch.Stitched.in_task`), the firings in their order (a count's reasons name the units
+        in it: a stitched unit where the unit it reads was); firings of units named alike add up, and the unfolded
+        plan is kept only while no unit is in it twice. O(firings)."""
+        firings: Counter[int] = Counter()
+        for u, k in self.firings:
+            firings[index[u]] += k
+        unfolded = tuple(index[u] for u in self.unfolded)
+        return replace(self, firings=tuple(firings.items()),
+                       unfolded=unfolded if len(set(unfolded)) == len(unfolded) else ())
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],

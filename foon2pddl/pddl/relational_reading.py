@@ -218,6 +218,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                 break
             sole -= again  # `sole` shrinks every round: at most |sole| rounds
         counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
+        if narrow is not None and through:  # counted in `st.through`: its plan named by the task's unit indexes
+            counts = counts.renumbered(st.in_task)
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}
