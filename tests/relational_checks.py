@@ -9,6 +9,7 @@ from foon2pddl.model.foon import Foon, ObjectNode
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.planners import solve
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
 
@@ -20,6 +21,21 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
     report = replay(outcome.trace)
     assert report.ok, [d.describe() for d in report.disagreements]
     return outcome
+
+
+def compiled_counts(monkeypatch) -> list[str]:
+    """The counts `planners.solve.plan` compiles from now on, in order: `wide`, `small`, or `small` and the keyword
+    that counts it again (`through`, `placed`)."""
+    seen: list[str] = []
+    real = solve.compile_goal
+
+    def recording(*args, **options):
+        mode = [k for k in ("through", "placed") if options.get(k)]
+        seen.append(" ".join(["small", *mode]) if options.get("narrow") else "wide")
+        return real(*args, **options)
+
+    monkeypatch.setattr(solve, "compile_goal", recording)
+    return seen
 
 
 def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode, **options):

@@ -4,7 +4,7 @@ alone before it is planned wide (`relational_objects.task_objects`' `through`, `
 from __future__ import annotations
 
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import clean_unit_plan, compiled_counts
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
@@ -30,7 +30,7 @@ KITCHEN = (PAN_EGG, EGG, BOWL, BACON, n("plate", "empty"), TAKEN)
 OBJECTS = ["bacon", "bowl", "egg", "omelette", "pan", "plate", "stove"]
 
 
-def test_foon_s_plan_out_of_holder_reach_is_counted_again_through_the_stitches_alone():
+def test_foon_s_plan_out_of_holder_reach_is_counted_again_through_the_stitches_alone(monkeypatch):
     goal, kitchen = Goal(GoalSpec("omelette"), (DISH,)), Kitchen(frozenset(KITCHEN))
     own = compile_goal(Foon(UNITS), kitchen, goal, "relational", narrow=True)
     wide = compile_goal(Foon(UNITS), kitchen, goal, "relational")
@@ -40,7 +40,11 @@ def test_foon_s_plan_out_of_holder_reach_is_counted_again_through_the_stitches_a
     assert sorted(x.label for x in through.task.instances) == OBJECTS
     assert len(wide.task.instances) == 10 and drop_unreachable(through.task)[1] is None
     assert through.narrowed.startswith("counted small, from the plan through the stitches alone")
+    counts = compiled_counts(monkeypatch)
     outcome = clean_unit_plan(UNITS, KITCHEN, DISH, time_limit=60)
+    # `plan`'s gate: small first, out of holder reach, so through the stitches; that one solved: not counted again
+    # with makers by holder reach (`placed`), nor wide
+    assert counts == ["small", "small through"]
     assert sorted(x.label for x in outcome.task.instances) == OBJECTS
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["cook", "sprinkle", "pour"]
     assert any(x.startswith("objects: counted small, from the plan through the stitches alone")

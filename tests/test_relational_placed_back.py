@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 from conftest import SUBGRAPHS
 from node_words import contains, inside, n
-from relational_checks import clean_plan
+from relational_checks import clean_plan, clean_unit_plan, compiled_counts
 
 from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
@@ -85,13 +85,26 @@ def test_the_pot_on_the_stove_is_made_by_the_unit_that_makes_the_stove_holding_i
     assert (labels["pot"], labels["stove"]) == (1, 1), labels
 
 
-def test_the_even_universal_kofta_mix_has_no_more_objects_than_instances(even):
+def test_the_even_universal_kofta_mix_has_no_more_objects_than_instances(even, monkeypatch):
     # issue 21's floor per task: FOON's own plan counted small (16 objects) and the plan through the stitches (16)
     # are out of holder reach at once (the cook's pot of lentils on a stove never switched on), so the wide count was
     # planned: 19 objects, 17 in the problem against `instances`' 15
     dish = next(x for x in sorted(even.dishes) if x.describe().startswith("kofta mix"))
     goal = resolve_goal(spec_of_node(dish), even)
+    counts = compiled_counts(monkeypatch)
     outcome = clean_plan(even, default_kitchen(even), goal, time_limit=60)
+    # `plan`'s gate: small, then through the stitches, both out of holder reach, then with makers by holder reach
+    assert counts == ["small", "small through", "small placed"]
     floor = len(compile_goal(even, default_kitchen(even), goal, "instances", narrow=True).task.objects)
     assert len(outcome.task.objects) <= floor, (len(outcome.task.objects), floor)
     assert any("counted with makers chosen by holder reach: 14 objects" in x for x in outcome.decoded.notes), outcome.decoded.notes
+
+
+def test_a_task_counted_small_in_holder_reach_is_not_counted_again(monkeypatch):
+    # the synthetic kofta counted small is in holder reach and solved: `plan` neither counts it through the stitches
+    # nor with makers by holder reach (nor wide)
+    units, kitchen = _kofta()
+    counts = compiled_counts(monkeypatch)
+    outcome = clean_unit_plan(units, kitchen, units[6].outputs[1])
+    assert outcome.compiled.narrowed.startswith("counted small, from FOON's own plan alone")
+    assert counts == ["small"]
