@@ -82,3 +82,24 @@ def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves(
     # without the reuse, fewer objects than takings can only be a stated count
     stated = InstanceCounts(((EMPTY, 2),), (), ((1, 3),))
     assert count_reasons(Foon(units), stated, KITCHEN) == ("2 x measuring cup (empty): the count stated for it",)
+
+
+def test_the_count_note_tells_a_foon_exp_copy_from_its_original():
+    """Stop 56's newcomer pass: `plan SUBGRAPHS --goal "greek salad" --network exp` said `4 x cutting board
+    (empty): ... fires pick-and-place at 0026-cheddar_frittata.txt:1 x2, pick-and-place at ACT-0034-greek_salad.txt:83,
+    pick-and-place at 0026-cheddar_frittata.txt:1`: a FOON-EXP copy keeps its original's file:line, so one place
+    read as two counts. A copy says what it was expanded from, as the PDDL's action comments do."""
+    from dataclasses import replace
+
+    from foon2pddl.model.foon import Source
+    from foon2pddl.pddl.instance_counts import InstanceCounts, count_reasons
+
+    scoop = _units(sifted=False)[1]
+    original = replace(scoop, sources=(Source("0026-cheddar_frittata.txt", 1),))
+    copy = replace(original, sources=(Source("0026-cheddar_frittata.txt", 1, expanded_from="sugar",
+                                             expanded_to="salt"),))
+    counts = InstanceCounts(((EMPTY, 2),), (), ((0, 1), (1, 1)))
+    assert count_reasons(Foon((original, copy)), counts, KITCHEN) == (
+        "2 x measuring cup (empty): FOON's plan, unfolded, takes one out of that state each time it fires scoop at "
+        "0026-cheddar_frittata.txt:1, scoop at 0026-cheddar_frittata.txt:1 (expanded from sugar), and no unit puts "
+        "one back",)

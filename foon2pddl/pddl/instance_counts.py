@@ -341,6 +341,8 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         for u, t in takers.get(node, ())[:shown]:
             unit = foon.units[u]
             src = f" at {unit_where(unit, short_path)}" if unit.source else ""
+            if unit.source is not None and unit.source.expanded_from:  # a FOON-EXP copy shares its original's line
+                src += f" (expanded from {unit.source.expanded_from})"
             where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
         more = len(takers.get(node, ())) - shown
         again = taken + (node in readers) - k
