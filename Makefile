@@ -23,7 +23,8 @@ $(STAMP): pyproject.toml
 	@echo "make install: 1/4 system packages (WordNet 3.0, Graphviz) ..."
 	@$(MAKE) -s system-deps
 	@echo "make install: 2/4 a virtual environment in $(VENV) ..."
-	$(PYTHON) -m venv $(VENV)
+	@mkdir -p $(VENV)
+	@$(PYTHON) tools/pip_phases.py --log $(VENV)/venv.log --who "make install" --phase "creating a virtual environment in $(VENV)" $(PYTHON) -m venv $(VENV)
 	@echo "make install: 3/4 foon2pddl and its dependencies (pip; a few minutes on a fresh machine) ..."
 	@$(PY) tools/pip_phases.py --log $(VENV)/pip-upgrade.log $(PY) -m pip install --progress-bar off --upgrade pip
 	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'

@@ -107,3 +107,55 @@ def test_a_phase_counts_its_seconds_from_its_own_start(tmp_path, monkeypatch, ca
                   if s.startswith("pip: still collecting")]
     assert building and collecting, said
     assert max(building) >= 3 and collecting[0] <= 2 and collecting == sorted(collecting), said
+
+
+def test_a_phase_says_it_still_runs_within_the_clis_beat():
+    """Issue 24's floor (no 2 s without a line on stderr), which the CLI meets through a pipe with a line every
+    `cli.progress.BEAT` s: `make install` said a pip phase was still running only every 30 s (a fresh clone at
+    40ca45c, load 8: 30.3 s twice while installing the 58 packages, 11.2 s while collecting)."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pip_phases
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    assert pip_phases.TICK < 2.0  # the floor (conftest sets the CLI's BEAT to an hour for every test)
+
+
+def test_a_command_without_pip_phases_is_one_phase_that_says_it_still_runs(tmp_path, monkeypatch, capsys):
+    """`python3 -m venv .venv` (make install's step 2) went 13.5 s without a line at load 8 (the same clone): run
+    through the script as one named phase, it says it is still running, under make install's name."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pip_phases
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    monkeypatch.setattr(pip_phases, "TICK", 0.0)
+    quiet = [sys.executable, "-c", "import time; time.sleep(2.5)"]
+    assert pip_phases.main(["--log", str(tmp_path / "venv.log"), "--who", "make install", "--phase",
+                            "creating a virtual environment in .venv", *quiet]) == 0
+    said = capsys.readouterr().err.splitlines()
+    assert said and all(re.fullmatch(r"make install: still creating a virtual environment in \.venv \(\d+ s\) \.\.\.",
+                                     s) for s in said), said
+
+
+def test_make_install_creates_the_environment_through_the_phases():
+    recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
+    venv = [s for s in recipe.splitlines() if "-m venv" in s]
+    assert venv and all("pip_phases.py" in s and "--phase" in s for s in venv), venv
+
+
+def test_pip_after_done_is_finishing_not_still_done(tmp_path, monkeypatch, capsys):
+    """With the 1.5 s tick, pip's exit after `Successfully installed` said `pip: still done: 58 packages installed
+    (2 s) ...` (the same clone): what runs then is pip finishing."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        import pip_phases
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    monkeypatch.setattr(pip_phases, "TICK", 0.0)
+    slow = [sys.executable, "-c", "import time; print('Successfully installed click-8.1.7', flush=True); "
+                                  "time.sleep(2.5)"]
+    assert pip_phases.main(["--log", str(tmp_path / "pip.log"), *slow]) == 0
+    said = capsys.readouterr().err.splitlines()
+    assert said[0] == "pip: done: 1 package installed" and len(said) > 1, said
+    assert all(re.fullmatch(r"pip: still finishing \(\d+ s\) \.\.\.", s) for s in said[1:]), said

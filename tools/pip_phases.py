@@ -3,12 +3,15 @@
 plain pip prints hundreds of lines.
 
     python3 tools/pip_phases.py --log FILE PIP_COMMAND...
+    python3 tools/pip_phases.py --log FILE --who "make install" --phase TEXT COMMAND...
 
 Runs the pip command with its output going to FILE, and says on stderr when pip enters each phase
 (preparing the project's build, collecting the dependencies, building, installing), with the packages
 counted; a phase still running after `TICK` seconds says so again, with the seconds since it began (on a terminal: one line, redrawn). pip's
 `ERROR` lines are shown as they come; when pip fails the last `TAIL` lines of its output follow. The exit
-status is pip's. Standard library only: it runs before the virtual environment holds anything else.
+status is pip's. `--phase TEXT` runs a command that has no pip phases (`python3 -m venv`) as one phase doing
+TEXT, its lines said under `--who`'s name. Standard library only: it runs before the virtual environment holds
+anything else.
 """
 
 from __future__ import annotations
@@ -19,8 +22,9 @@ import sys
 import threading
 import time
 
-#: Seconds a phase may run without a line before it says it is still running.
-TICK = 30.0
+#: Seconds a phase may run without a line before it says it is still running: the CLI's beat
+#: (`foon2pddl.cli.progress.BEAT`, not importable here), under issue 24's floor of 2 s without a line.
+TICK = 1.5
 #: Lines of pip's output shown when it fails.
 TAIL = 40
 #: On a terminal: back to the start of the line and clear it.
@@ -42,17 +46,17 @@ def _packages(n: int) -> str:
 class Phases:
     """What pip is doing, said on `out` (a phase per line; on a terminal one redrawn line)."""
 
-    def __init__(self, out, tty: bool) -> None:
-        self.out, self.tty = out, tty
+    def __init__(self, out, tty: bool, who: str = "pip") -> None:
+        self.out, self.tty, self.who = out, tty, who
         self.phase, self.collected, self.start, self.said = "", 0, time.monotonic(), time.monotonic()
         self.lock, self.open = threading.Lock(), False  # open: a redrawn line waits for its end
 
     def say(self, text: str, redraw: bool = False) -> None:
         with self.lock:
             if self.tty and redraw:
-                self.out.write(f"{REDRAW}pip: {text}")
+                self.out.write(f"{REDRAW}{self.who}: {text}")
             else:
-                self.out.write(f"{REDRAW if self.open else ''}pip: {text}\n")
+                self.out.write(f"{REDRAW if self.open else ''}{self.who}: {text}\n")
             self.out.flush()
             self.said, self.open = time.monotonic(), self.tty and redraw
 
@@ -72,6 +76,8 @@ class Phases:
                     what += f" ({_packages(len(text.split(':', 1)[1].split(',')))})"
                 self.phase, self.start = what, time.monotonic()  # a `still` line counts from its phase's start
                 self.say(what if prefix == PHASES[-1][0] else what + " ...")
+                if prefix == PHASES[-1][0]:
+                    self.phase = "finishing"  # pip exits after its last line: not `still done`
         if text.startswith("Collecting "):
             self.collected += 1
             if self.tty:
@@ -80,8 +86,9 @@ class Phases:
             self.say(text)
 
     def tick(self, stop: threading.Event) -> None:
-        """Every second until `stop`: a phase silent for TICK seconds says it is still running."""
-        while not stop.wait(1.0):
+        """Every quarter second until `stop` (a check every second made the 1.5 s TICK 2 s): a phase silent
+        for TICK seconds says it is still running."""
+        while not stop.wait(0.25):
             if self.phase and time.monotonic() - self.said >= TICK:
                 count = f", {self.collected} collected" if self.phase == PHASES[1][1] else ""
                 self.say(f"still {self.phase} ({time.monotonic() - self.start:.0f} s{count}) ...", redraw=self.tty)
@@ -90,9 +97,12 @@ class Phases:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--log", required=True, help="file receiving pip's whole output")
+    parser.add_argument("--who", default="pip", help="the name its lines start with")
+    parser.add_argument("--phase", default="", help="what a command without pip's phases does (one phase)")
     parser.add_argument("command", nargs=argparse.REMAINDER, help="the pip command")
     args = parser.parse_args(argv)
-    phases = Phases(sys.stderr, sys.stderr.isatty())
+    phases = Phases(sys.stderr, sys.stderr.isatty(), args.who)
+    phases.phase = args.phase  # said by the caller; it says only that it still runs
     stop = threading.Event()
     ticker = threading.Thread(target=phases.tick, args=(stop,), daemon=True)
     ticker.start()
@@ -109,7 +119,7 @@ def main(argv: list[str] | None = None) -> int:
     ticker.join()
     phases.end()
     if status:
-        sys.stderr.write(f"pip failed (exit status {status}); the end of its output ({args.log} has it all):\n")
+        sys.stderr.write(f"{args.who} failed (exit status {status}); the end of its output ({args.log} has it all):\n")
         sys.stderr.write("".join(f"  {line}\n" for line in lines[-TAIL:]))
     return status
 
