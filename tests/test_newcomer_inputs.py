@@ -183,7 +183,8 @@ def test_a_json_goal_list_as_goal_file_says_it_goes_with_goals(given):
     assert r.exit_code == 2 and "Traceback" not in r.output
     first = r.stderr.splitlines()[0]
     assert first.startswith(f"{given}:1: error: a JSON list of ") and "not the one goal node" in first, r.stderr
-    assert first.endswith("give it with `--goals`"), first
+    assert first.endswith("give it with `--kitchen` or with `--goals`"), first  # kitchen.json is a kitchen
+    assert "(s)" not in first and " objects, not" in first, first  # `model.words.count`, never `object(s)`
 
 
 def test_a_broken_goal_file_keeps_the_parsers_error(tmp_path):

@@ -9,6 +9,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError
 from ..model.foon import State, make_state, normalize_label
 from ..model.goal import GoalSpec, spec_of_node
+from ..model.words import count
 from .foon_lines import parse_objects
 from .json_text import text_problem
 from .parser import read_text
@@ -101,9 +102,9 @@ def parse_goal_spec(text: str) -> GoalSpec:
 
 
 def read_goal_file(path: str | Path) -> GoalSpec:
-    """A goal file: exactly one object node written as FOON O/S lines. A JSON list (the public `goal_nodes.json`)
-    is refused as what it is, a goal list for `--goals` (stop 56's newcomer pass: it said only `expected an 'O' or
-    'S' line`)."""
+    """A goal file: exactly one object node written as FOON O/S lines. A JSON list (the public `goal_nodes.json`,
+    or `kitchen.json`: the same form) is refused as what it is, a list for `--kitchen` or `--goals` (stop 56's
+    newcomer pass: it said only `expected an 'O' or 'S' line`)."""
     p = Path(path)
     text = read_text(p)
     try:
@@ -118,7 +119,8 @@ def read_goal_file(path: str | Path) -> GoalSpec:
 
 
 def _refuse_json_list(text: str, path: str) -> None:
-    """Raise a located error naming `--goals` when `text` is a JSON list (of goal or kitchen nodes); else return."""
+    """Raise a located error naming `--kitchen` and `--goals` when `text` is a JSON list (of kitchen or goal nodes:
+    one form, as `io.parser` names a list of objects given as PATHS); else return."""
     if not text.lstrip().startswith("["):
         return
     try:
@@ -126,5 +128,5 @@ def _refuse_json_list(text: str, path: str) -> None:
     except ValueError:
         return
     if isinstance(data, list):
-        raise FoonSyntaxError(path, 1, f"a JSON list of {len(data)} object(s), not the one goal node in FOON O/S lines "
-                                       "a goal file holds", belongs=("goals",))
+        raise FoonSyntaxError(path, 1, f"a JSON list of {count(len(data), 'object')}, not the one goal node in FOON "
+                                       "O/S lines a goal file holds", belongs=("kitchen", "goals"))
