@@ -102,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("command", nargs=argparse.REMAINDER, help="the pip command")
     args = parser.parse_args(argv)
     phases = Phases(sys.stderr, sys.stderr.isatty(), args.who)
-    phases.phase = args.phase  # said by the caller; it says only that it still runs
+    phases.phase = args.phase or "starting"  # unsaid: only that it still runs (pip's imports, before its first line)
     stop = threading.Event()
     ticker = threading.Thread(target=phases.tick, args=(stop,), daemon=True)
     ticker.start()
