@@ -62,3 +62,14 @@ def instances_objects(path: Path) -> int:
     is held to, dish by dish)."""
     foon, goal = dish_goal(path)
     return len(compile_goal(foon, default_kitchen(foon), goal, "instances").task.objects)
+
+
+def within_instances(foon: Foon, dish_prefix: str):
+    """`clean_plan` of the dish of `foon` whose description starts with `dish_prefix` from its default kitchen (60 s),
+    asserted to have no more objects in its problem than `instances`' task counted small (issue 21's floor)."""
+    dish = next(x for x in sorted(foon.dishes) if x.describe().startswith(dish_prefix))
+    goal = resolve_goal(spec_of_node(dish), foon)
+    outcome = clean_plan(foon, default_kitchen(foon), goal, time_limit=60)
+    floor = len(compile_goal(foon, default_kitchen(foon), goal, "instances", narrow=True).task.objects)
+    assert len(outcome.task.objects) <= floor, (len(outcome.task.objects), floor)
+    return outcome

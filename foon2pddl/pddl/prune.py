@@ -21,6 +21,9 @@ And one for lifted tasks, exact whatever the semantics: `drop_unbindable` drops 
 preconditions no binding of their parameters satisfies (the `instances` encoding's lanes leave most
 unit schemas of a large goal so), which Fast Downward's translator would ground to nothing anyway.
 
+`feeding_units` prunes nothing: the units of a task that make a target or a node such a unit takes, by FOON's
+nodes; the `relational` count adds no holder only the others name (`relational_objects`).
+
 `counted_only` does not preserve solvability: the task's actions of the units a plan fires (the `relational`
 plan the objects are counted from), which `planners.solve.plan` tries before the whole task.
 """
@@ -57,6 +60,26 @@ def relevant_units(foon: Foon, kitchen: Iterable[ObjectNode], targets: Iterable[
                 keep.add(u)
                 stack.extend(i for i in ix.inputs[u] if node_round[i] != 0 and i not in seen)
     return tuple(sorted(keep))
+
+
+def feeding_units(foon: Foon, units: Iterable[int], targets: Iterable[ObjectNode]) -> frozenset[int]:
+    """The `units` of `foon` that feed a target: each makes one of `targets`, or a node a unit so kept takes, to a
+    fixpoint (backward from the targets over the makers among `units`). A unit outside it makes only nodes no unit
+    of `units` takes and no target: the pizza's pick-and-place of an empty bowl onto a surface
+    (`0085-mini_bacon_egg_breakfast_pizza.txt:104`) in a task whose units take no bowl on a surface. O(units x
+    nodes per unit); order does not matter."""
+    units = tuple(units)
+    makers: dict[ObjectNode, list[int]] = {}
+    for u in units:
+        for n in foon.units[u].outputs:
+            makers.setdefault(n, []).append(u)
+    keep: set[int] = set()
+    wanted = set(targets)
+    while wanted:  # each round keeps new units only: at most |units| rounds
+        new = {u for x in wanted for u in makers.get(x, ()) if u not in keep}
+        keep |= new
+        wanted = {x for u in new for x in foon.units[u].inputs}
+    return frozenset(keep)
 
 
 @per_network

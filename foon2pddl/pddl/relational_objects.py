@@ -34,6 +34,7 @@ from .encoding import LevelInputs
 from .holder_words import task_aliases
 from .input_stitch import Stitched
 from .names import NameTable
+from .prune import feeding_units
 from .relational_init import completed_kitchen, scene_instances
 from .relational_reading import Reading, read_units
 from .task import Instance
@@ -117,8 +118,10 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         placed = frozenset(alias.get(c, c) for n in nodes for _, c in places(n))
     else:
         aliases = {u: dict(unit_aliases(f.units[u])) for u in units}  # once per unit, not per place
-        named = {aliases[u].get(c, c)
-                 for u in units for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
+        # a place only a unit feeding nothing names gets no holder (that unit's action then binds none)
+        feeding = feeding_units(f, units, inp.candidates) | {u for u, _ in counts.firings}
+        named = {aliases[u].get(c, c) for u in units if u in feeding
+                 for s in plans[u].slots for n in (s.after, s.portion) for _, c in places(n)}
         instances, alias, placed, held_by, init_notes = completed_kitchen(
             table, counts, [f.units[u] for u in units], rd.have, nodes, named, rd.silent, rd.filled, inp.kitchen,
             [f.units[u] for u, _ in counts.firings])
