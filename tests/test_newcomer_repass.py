@@ -111,8 +111,18 @@ def test_instances_help_names_every_encoding_it_counts_for():
     plan --help said "instances encoding: N objects of LABEL" and the refusal "--encoding instances" only."""
     assert "instances and relational encodings: N objects of LABEL" in " ".join(run("plan", "--help").output.split())
     counted = run("plan", "--goal", "guacamole", "--encoding", "relational", "--instances", "cutting board=2")
-    assert counted.exit_code == 0 and "2 x cutting board (empty): the count stated for it" in counted.stderr
+    assert counted.exit_code == 0 and "2 x cutting board (empty): 2 given, where FOON's unfolded plan takes" in counted.stderr
 
+
+
+def test_a_count_restoring_units_set_is_not_called_stated():
+    """Stop 56's newcomer pass: `plan --goal guacamole --restore` noted `3 x cutting board (empty): the count stated
+    for it`, a count the user never stated (--restore set it: docs/pddl.md, Restoring units)."""
+    r = run("plan", "--goal", "guacamole", "--restore")
+    assert r.exit_code == 0, r.stderr
+    note = next(line for line in r.stderr.splitlines() if line.startswith("note: objects: 3 x cutting board (empty)"))
+    assert "3 given, where FOON's unfolded plan takes 5 (a stated count, restoring units' peak" in note, note
+    assert "the count stated" not in note
 
 PHYSICAL_OPTIONS = (("--restore",), ("--instances", "bowl=2"), ("--instances", "bowl=x"), ("--category-types",))
 

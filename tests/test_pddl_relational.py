@@ -372,7 +372,7 @@ def test_the_task_says_why_it_has_several_objects_of_a_label():
     reasons = count_reasons(foon, counts, kitchen.nodes)
     many = [(n, k) for n, k in counts.at_node if k > 1]
     assert len(reasons) == len(many)
-    assert any(r.startswith("3 x bowl (empty): the count stated for it") for r in reasons)
+    assert any(r.startswith("3 x bowl (empty): 3 given, where FOON's unfolded plan takes") for r in reasons)
 
 
 def test_an_object_the_kitchen_completion_starts_in_a_made_state_does_not_let_a_plan_skip_the_unit():

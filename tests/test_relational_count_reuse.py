@@ -81,7 +81,9 @@ def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves(
         "1 of those takings use one a unit put back in it",)
     # without the reuse, fewer objects than takings can only be a stated count
     stated = InstanceCounts(((EMPTY, 2),), (), ((1, 3),))
-    assert count_reasons(Foon(units), stated, KITCHEN) == ("2 x measuring cup (empty): the count stated for it",)
+    assert count_reasons(Foon(units), stated, KITCHEN) == (
+        "2 x measuring cup (empty): 2 given, where FOON's unfolded plan takes 3 (a stated count, restoring units' "
+        "peak, or the relational encoding's own counting)",)
 
 
 def test_the_count_note_tells_a_foon_exp_copy_from_its_original():

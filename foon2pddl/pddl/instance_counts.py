@@ -317,7 +317,7 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
     units of the unfolded plan that take one out of that state (file:line, x firings), and whether a
     unit that only reads the state keeps one there. FOON's units never return an object to a kitchen
     state unless the network has a unit that does (a wash, an emptying): each taking needs its own object.
-    O(units x roles). Stated and overridden counts are said to be so."""
+    O(units x roles). Stated and overridden counts, and those restoring units set, are said to be given."""
     given = dict(counts.at_node)
     takers: dict[ObjectNode, list[tuple[int, int]]] = {}
     readers: set[ObjectNode] = set()
@@ -335,7 +335,8 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
             continue
         taken = sum(t for _, t in takers.get(node, ()))
         if taken + (node in readers) != k and not (counts.reused and k < taken + (node in readers)):
-            out.append(f"{k} x {node.describe()}: the count stated for it")
+            out.append(f"{k} x {node.describe()}: {k} given, where FOON's unfolded plan takes {taken} (a stated count, "
+                       "restoring units' peak, or the relational encoding's own counting)")
             continue
         where = []
         for u, t in takers.get(node, ())[:shown]:
