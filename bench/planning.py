@@ -23,7 +23,8 @@ from foon2pddl.experiment.protocol import sample_kitchen
 from foon2pddl.io.files import load
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
-from foon2pddl.planners.solve import PHASES, GoalReplanner, plan
+from foon2pddl.planners.goal_replanner import GoalReplanner
+from foon2pddl.planners.solve import PHASES, plan
 from foon2pddl.retrieval.complete import complete
 
 from .harness import Context

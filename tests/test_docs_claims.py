@@ -244,7 +244,7 @@ def _resolves(dotted: str) -> bool:
 
 def test_every_dotted_name_the_docs_give_imports():
     """json-schema.md said `foon2pddl.jsonio` (it is `foon2pddl.io.jsonio`), planning.md
-    `foon2pddl.pddl.solve.GoalReplanner` (in `planners.solve`), retrieval.md `foon2pddl.tasktree.validate`
+    `foon2pddl.pddl.solve.GoalReplanner` (then in `planners.solve`), retrieval.md `foon2pddl.tasktree.validate`
     (in `model.tasktree`): a reader who types them gets an ImportError. Every `foon2pddl.x.y` a page names,
     and every `pddl.x`, `planners.x`, ... it names inside the package, is importable."""
     subpackages = "model|io|analysis|retrieval|generalize|pddl|planners|skills|experiment|cli"

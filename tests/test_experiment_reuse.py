@@ -21,8 +21,9 @@ from foon2pddl.model.goal import Goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.model.tasktree import validate
 from foon2pddl.planners import fd_reuse
+from foon2pddl.planners.goal_replanner import GoalReplanner
 from foon2pddl.planners.sas import parse_sas
-from foon2pddl.planners.solve import GoalReplanner, plan
+from foon2pddl.planners.solve import plan
 
 INDEX = shipped_index()
 

@@ -17,7 +17,7 @@ from foon2pddl.pddl.encode_lifted import encode_lifted
 from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd_reuse
 from foon2pddl.planners import sas as sas_text
-from foon2pddl.planners.solve import GoalReplanner
+from foon2pddl.planners.goal_replanner import GoalReplanner
 from foon2pddl.retrieval.optimal import optimal
 
 

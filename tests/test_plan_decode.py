@@ -13,7 +13,8 @@ from foon2pddl.pddl.task import Action, Atom, PlanningTask, Predicate, candidate
 from foon2pddl.pddl.up_problem import build_up, to_up_problem
 from foon2pddl.planners import up_engine
 from foon2pddl.planners.decode import PlanDecodeError, decode, plan_units
-from foon2pddl.planners.solve import GoalReplanner, plan
+from foon2pddl.planners.goal_replanner import GoalReplanner
+from foon2pddl.planners.solve import plan
 
 
 def node(label, *states):
@@ -183,14 +184,14 @@ def test_doubled_plan_decodes_to_the_same_tree_and_says_so():
     """Issue 11: every step doubled was accepted as a 26-unit tree with repeated units."""
     from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
     from foon2pddl.planners.result import PlanResult
-    from foon2pddl.planners.solve import _finish
+    from foon2pddl.planners.solve import outcome_of
 
     net = load_network([])
     foon = net.at(3)
     kitchen, goal = load_kitchen(None, net, 3), load_goal("guacamole", None, foon)
     once = plan(foon, kitchen, goal, "tree")
     doubled = tuple(s for s in once.result.plan for _ in (0, 1))
-    twice = _finish(PlanResult("solved", doubled, "test"), once.compiled, goal, kitchen.project(3).nodes, {}, False)
+    twice = outcome_of(PlanResult("solved", doubled, "test"), once.compiled, goal, kitchen.project(3).nodes, {}, False)
     assert twice.status == "solved" and twice.tree == once.tree
     assert len(set(twice.tree.units)) == len(twice.tree.units)
     units = sum(once.task.action_for(s.split()[0]).unit is not None for s in once.result.plan)

@@ -13,7 +13,8 @@ from foon2pddl.analysis.reachability import reachable
 from foon2pddl.experiment.protocol import sample_kitchen
 from foon2pddl.model.goal import resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import default_kitchen
-from foon2pddl.planners.solve import GoalReplanner, plan
+from foon2pddl.planners.goal_replanner import GoalReplanner
+from foon2pddl.planners.solve import plan
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ which does the work shared by the goals of the batch (its time is the batch's
 reachability fixpoint (complete, optimal) or the network index (greedy);
 `fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once per run
 from the default kitchen, start each trial from its kitchen and swap goals in
-the translated task (`planners.solve.GoalReplanner`); `fd-state`, `fd-instances`
+the translated task (`planners.goal_replanner.GoalReplanner`); `fd-state`, `fd-instances`
 and `fd-relational` compile and plan each goal afresh with their `encoding`, pruned
 per goal (the physical ones may need a wash or a second bowl where FOON's semantics
 does not, and solve fewer goals than `native-complete`); `fd-lifted-gen` plans over
@@ -242,7 +242,7 @@ class _FdReuse(Prepared):
     """
 
     def __init__(self, setting: Setting, optimal: bool) -> None:
-        from ..planners.solve import GoalReplanner
+        from ..planners.goal_replanner import GoalReplanner
 
         view = setting.view
         self.view = view
@@ -266,7 +266,7 @@ class _FdReuse(Prepared):
 
 def _from_default(setting: Setting):
     """The `tree` replanner from the view's default kitchen serving kitchens within it, built once per process."""
-    from ..planners.solve import GoalReplanner
+    from ..planners.goal_replanner import GoalReplanner
 
     view = setting.view
     key = (id(view), setting.time_limit, setting.cache)  # the translation's own time limit and cache too
@@ -329,7 +329,7 @@ class _LiftedGen(Prepared):
     """
 
     def __init__(self, setting: Setting) -> None:
-        from ..planners.solve import GoalReplanner
+        from ..planners.goal_replanner import GoalReplanner
 
         if setting.view.index is None:
             raise UsageError("fd-lifted-gen needs the GEN network's category index")

@@ -102,7 +102,7 @@ class Encoding:
     semantics solves (an encoding with more physical rules can fail where FOON's data has gaps).
     `kitchen_init`: unpruned, the kitchen changes only the initial state, which holds each kitchen
     node's goal atoms (so a task compiled from one kitchen serves any kitchen within it with its
-    initial state cut down: `planners.solve.GoalReplanner.for_kitchen`).
+    initial state cut down: `planners.goal_replanner.GoalReplanner.for_kitchen`).
     """
 
     name: str
