@@ -18,7 +18,8 @@ system-deps:
 	  if [ -n "$$need" ]; then apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$need; fi; \
 	else echo "not root on Debian: install wordnet-base wordnet-sense-index graphviz yourself (or nltk.download('wordnet'))"; fi
 
-# Each step says what it does; pip's output goes to $(VENV)/pip-*.log, a line per phase to the terminal.
+# Each step says what it does; pip's output goes to $(VENV)/pip-install.log (both pips: one run ticks across
+# the seam), a line per phase to the terminal.
 $(STAMP): pyproject.toml
 	@echo "make install: 1/4 system packages (WordNet 3.0, Graphviz) ..."
 	@$(MAKE) -s system-deps
@@ -26,8 +27,7 @@ $(STAMP): pyproject.toml
 	@mkdir -p $(VENV)
 	@$(PYTHON) tools/pip_phases.py --log $(VENV)/venv.log --who "make install" --phase "creating a virtual environment in $(VENV)" $(PYTHON) -m venv $(VENV)
 	@echo "make install: 3/4 foon2pddl and its dependencies (pip; a few minutes on a fresh machine) ..."
-	@$(PY) tools/pip_phases.py --log $(VENV)/pip-upgrade.log $(PY) -m pip install --progress-bar off --upgrade pip
-	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'
+	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log sh -c "$(PY) -m pip install --progress-bar off --upgrade pip && $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'"
 	@echo "make install: 4/4 compiling foon2pddl's bytecode ..."
 	$(PY) -m compileall -q foon2pddl  # bytecode, as a wheel install writes it (PYTHONDONTWRITEBYTECODE would leave none)
 	@touch $(STAMP)

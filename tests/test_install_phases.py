@@ -176,3 +176,12 @@ def test_pip_starting_says_it_still_starts(tmp_path, monkeypatch, capsys):
     said = capsys.readouterr().err.splitlines()
     first = said.index("pip: collecting the dependencies (downloading any not cached) ...")
     assert first > 0 and all(re.fullmatch(r"pip: still starting \(\d+ s\) \.\.\.", s) for s in said[:first]), said
+
+
+def test_the_pip_upgrade_and_the_install_are_one_run_of_the_phases():
+    """Two runs of pip_phases left 2.2 s without a line between the upgrade's `done` and the install's first phase
+    (a fresh clone at 3b3a53b, load 8): the upgrade's exit, then a new process whose first tick comes TICK s after
+    its start. One run (both pips in one shell command) ticks across the seam."""
+    recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
+    runs = [s for s in recipe.splitlines() if "pip_phases.py" in s and "pip install" in s]
+    assert len(runs) == 1 and "--upgrade pip" in runs[0] and "-e '.[test,gen,experiment]'" in runs[0], runs
