@@ -29,7 +29,8 @@ $(STAMP): pyproject.toml
 	@echo "make install: 3/4 foon2pddl and its dependencies (pip; a few minutes on a fresh machine) ..."
 	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log sh -c "$(PY) -m pip install --progress-bar off --upgrade pip && $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'"
 	@echo "make install: 4/4 compiling foon2pddl's bytecode ..."
-	$(PY) -m compileall -q foon2pddl  # bytecode, as a wheel install writes it (PYTHONDONTWRITEBYTECODE would leave none)
+	@# bytecode, as a wheel install writes it (PYTHONDONTWRITEBYTECODE would leave none)
+	@$(PY) tools/pip_phases.py --log $(VENV)/compileall.log --who "make install" --phase "compiling foon2pddl's bytecode" $(PY) -m compileall -q foon2pddl
 	@touch $(STAMP)
 	@echo "make install: done; run .venv/bin/foon2pddl (README.md)"
 
