@@ -697,6 +697,17 @@ def test_a_tool_the_step_soils_is_said_with_with_not_as_a_second_thing_worked(un
     assert recipe_text(mix) == ("mix bowl (contains {egg white, egg yolk, flour, milk}), with the whisk (clean), "
                                 "making pancake batter (raw) in the bowl")
 
+
+def test_the_objects_account_says_a_soiled_tool_with_with_too():
+    """The relational account under the tree had the same reading: `peel cucumber_1, peeler_1`, `cut lemon_1,
+    knife_1 with cutting_board_1` (the greek salad of the shared subgraphs); a tool the step only soils is one the
+    step uses, as in the recipe words above."""
+    r = run("plan", SUBGRAPHS / "ACT-0034-greek_salad.txt", "--goal", "greek salad")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert any(line.endswith("peel cucumber_1 with peeler_1") for line in account), account
+    assert not any(", peeler_1" in line or ", knife_1 with" in line for line in account), account
+
 # -- -o: one convention for every output ---------------------------------------------------------------
 
 #: Every command's output options, each with its kind: a file, a PNG file (`--plot`), or a directory of files.

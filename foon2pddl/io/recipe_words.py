@@ -121,7 +121,7 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
              named: Aliases) -> tuple[list[ObjectNode], ObjectNode | None]:
     """What a step that moves nothing works on, and the container it goes into (or None).
 
-    The inputs that change, but not a tool the step only leaves dirty (`_soiled`: the knife of `cut lemon (whole),
+    The inputs that change, but not a tool the step only leaves dirty (`soiled`: the knife of `cut lemon (whole),
     with the knife (clean)`), nor the container of what the step makes (`making lime juice in the juicer`), nor
     the holder of another input that changes (the stove under the heated pan, the pan holding the omelette it
     cooks: they are places); when only that container changes, the inputs the step uses up that become what it
@@ -130,7 +130,7 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
     whisk, in the cooking pan, making omelette ...`)."""
     receivers = {p[1] for o in new.values() if o.label not in by_label and (p := _place(o, named))}
     changing = [i for i in unit.inputs if i.label in new]
-    changed = [i for i in changing if i.label not in receivers and not _soiled(i, new)]
+    changed = [i for i in changing if i.label not in receivers and not soiled(i, new.get(i.label))]
     if not changed:
         out_labels = {o.label for o in unit.outputs}
         made = [o.label for o in new.values() if o.label not in by_label]
@@ -140,7 +140,7 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
             else bool(_holders(i, named) & receivers))]  # nothing changes: what is in the container made into
         if used_up:
             return used_up, into
-        changed = [i for i in changing if not _soiled(i, new)] or changing
+        changed = [i for i in changing if not soiled(i, new.get(i.label))] or changing
     if not changed:  # FOON says nothing changes (a unit copying its input): every input, as written
         return list(unit.inputs), None
     if len(changed) > 1:
@@ -149,10 +149,9 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
     return changed, None
 
 
-def _soiled(node: ObjectNode, new: dict[str, ObjectNode]) -> bool:
-    """Whether the step only makes `node` dirty (`knife (clean)` -> `knife (dirty)`): a tool it uses, not what
-    it works on, when something else changes too."""
-    after = new.get(node.label)
+def soiled(node: ObjectNode, after: ObjectNode | None) -> bool:
+    """Whether a step only makes `node` dirty, leaving it `after` (`knife (clean)` -> `knife (dirty)`): a tool it
+    uses, not what it works on, when something else changes too (here and in `pddl.relational_replay`'s words)."""
     if after is None:
         return False
     before_states, after_states = {s.label for s in node.states}, {s.label for s in after.states}

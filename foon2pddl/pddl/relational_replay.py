@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from ..io.recipe_words import soiled
 from ..model.aliases import unit_aliases
 from ..model.foon import ObjectNode
 from ..model.physical import Binding, ObjectState, PhysicalObject, PhysicalTrace, Relation, TraceStep, renamed
@@ -207,13 +208,17 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     holders.update(where)
     rest = [b for b in step.bindings if b.object not in made and b.object not in used and b.object not in holders
             and before[b.object].holder == after[b.object].holder]
-    parts = [step.unit.motion.label, ", ".join(moves), ", ".join(b.object for b in rest if changed(b))]
+    work = [b for b in rest if changed(b)]  # a tool the step only soils is used, not worked (`io.recipe_words`)
+    worked = [b for b in work if b.before is None or not soiled(b.before, b.after)]
+    if not (worked or moves or made or used):
+        worked = work
+    parts = [step.unit.motion.label, ", ".join(moves), ", ".join(b.object for b in worked)]
     if used or made:
         parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
                      + ", ".join(made))
     into = {after[b.object].holder for b in step.bindings if b.before is not None and b.object not in made
             and before[b.object].holder != after[b.object].holder}
-    others = [b.object for b in rest if not changed(b) and not (  # not the contents of where something goes
+    others = [b.object for b in rest if b not in worked and not (  # not the contents of where something goes
         before[b.object].holder in into and any(s.label in _RELATIONS and s.related for s in b.before.states))]
     if others:
         parts.append("with " + ", ".join(others))
