@@ -365,6 +365,7 @@ def test_the_command_through_a_pipe_gets_a_line_every_beat(tmp_path, monkeypatch
                                   "native-complete", "-o", str(tmp_path)])
     assert r.exit_code == 0, r.output
     assert "experiment: 3 cells to run; a progress line every 0.01 s" in r.stderr
+    assert "- 1 trial x 3 goals, hierarchy level 3" in (tmp_path / "report.md").read_text()  # was `1 trials`
     monkeypatch.undo()
     assert progress.BEAT <= 1.5
 
