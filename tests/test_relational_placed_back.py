@@ -14,6 +14,10 @@ from relational_checks import clean_unit_plan, compiled_counts, within_instances
 
 from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
+from foon2pddl.model.goal import Goal, GoalSpec
+from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.holder_reach import drop_unreachable
 from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts
 
 ON_STOVE, WITH_POT = make_state("on", "stove"), make_state("with", "pot")
@@ -101,3 +105,54 @@ def test_a_task_counted_small_in_holder_reach_is_not_counted_again(monkeypatch):
     outcome = clean_unit_plan(units, kitchen, units[6].outputs[1])
     assert outcome.compiled.narrowed.startswith("counted small, from FOON's own plan alone")
     assert counts == ["small"]
+
+
+# Back along the container's chain (`count_together._held_back`): on the universal FOON of 70 subgraphs drawn with
+# seed 55 the southern macaroni's stir (0055:97) takes the beaten egg, first made by the blueberry muffin's blend
+# (ACT-0003:55) in a bowl of butter and sugar, with the bowl of egg, milk, salt, pepper and cheese, whose pours and
+# sprinkles go back to the bowl of egg the omelette's mix (0042:11) beats the egg in. Counted from first makers the
+# plan had the muffin's blend (its hand mixer) and no fork: the mix was left out, and no plan had the beaten egg in
+# the stir's bowl.
+EGG_BOWL, EGG_IN = n("bowl", contains("egg white and yolk")), n("egg white and yolk", inside("bowl"))
+BEATEN = n("egg white and yolk", "beaten", inside("bowl"))
+MILK_BOWL, MILK_IN = n("bowl", contains("egg white and yolk", "milk")), n("milk", inside("bowl"))
+SALT_BOWL = n("bowl", contains("egg white and yolk", "milk", "salt"))
+SAUCE = n("cheese sauce", inside("bowl"))
+
+
+def _macaroni() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
+    """The muffin's blend (0: first in FOON order, so the beaten egg's first maker), the crack, the omelette's mix
+    beating the egg in its bowl, the macaroni's pour of the milk into that bowl, its sprinkle of salt and its stir."""
+    muffin = n("bowl", contains("butter", "egg white and yolk", "sugar"))
+    units = (
+        FunctionalUnit((muffin, EGG_IN, n("hand mixer", "on")), Motion("blend"), (muffin, BEATEN), _at("muffin.txt", 55)),
+        FunctionalUnit((n("bowl", "empty"), n("egg", "uncracked")), Motion("crack"), (EGG_BOWL, EGG_IN),
+                       _at("frittata.txt", 246)),
+        FunctionalUnit((EGG_BOWL, EGG_IN, n("fork", "clean")), Motion("mix"), (EGG_BOWL, BEATEN), _at("omelette.txt", 11)),
+        FunctionalUnit((EGG_BOWL, n("tin can", contains("milk")), n("milk", inside("tin can"))), Motion("pour"),
+                       (MILK_BOWL, MILK_IN), _at("macaroni.txt", 46)),
+        FunctionalUnit((MILK_BOWL, n("spoon", contains("salt")), n("salt", inside("spoon"))), Motion("sprinkle"),
+                       (SALT_BOWL, n("salt", inside("bowl"))), _at("macaroni.txt", 58)),
+        FunctionalUnit((SALT_BOWL, BEATEN, MILK_IN, n("spatula", "clean")), Motion("stir"),
+                       (n("bowl", contains("cheese sauce")), SAUCE), _at("macaroni.txt", 97)),
+    )
+    kitchen = frozenset({muffin, n("hand mixer", "on"), n("bowl", "empty"), n("egg", "uncracked"), n("fork", "clean"),
+                         n("tin can", contains("milk")), n("milk", inside("tin can")), n("spatula", "clean"),
+                         n("spoon", contains("salt")), n("salt", inside("spoon"))})
+    return units, kitchen
+
+
+def test_the_held_node_is_made_back_along_the_containers_chain():
+    units, kitchen = _macaroni()
+    first = delete_free_plan(Foon(units), kitchen, (SAUCE,), together=True)[0]
+    assert {0, 2} & set(first) == {0}, first  # the muffin's blend: its egg is in another bowl
+    placed = delete_free_plan(Foon(units), kitchen, (SAUCE,), together=True, placed=True)[0]
+    assert {0, 2} & set(placed) == {2}, placed  # the mix beats the egg in the bowl the pour and stir take on
+    goal = Goal(GoalSpec("cheese sauce"), (SAUCE,))
+    wide = compile_goal(Foon(units), Kitchen(kitchen), goal, "relational")
+    assert drop_unreachable(wide.task)[1] is not None  # two bowls of egg: out of holder reach
+    small = compile_goal(Foon(units), Kitchen(kitchen), goal, "relational", narrow=True, placed=True)
+    assert small.narrowed.startswith("counted with makers chosen by holder reach: 12 objects"), small.narrowed
+    assert drop_unreachable(small.task)[1] is None
+    labels = {x.label for x in small.task.instances}
+    assert "fork" in labels and "hand mixer" not in labels, labels

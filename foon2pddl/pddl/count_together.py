@@ -5,7 +5,8 @@ content's maker left it, else the content's from a chain working it where it lie
 a unit taking them out of a kitchen container (`_from_kitchen_box`: what that container holds is at hand,
 `AT_HAND`); or, asked for the plan with first makers (`first`), where the content's first makers already lead it
 there (`_there_first`), those; asked for makers by holder reach (`placed`), back along the held node's chain a unit
-that makes the container's node too (`_placed_back`)."""
+that makes the container's node too (`_placed_back`), or back along the container's chain a unit that makes the held
+node in it (`_held_back`)."""
 
 from __future__ import annotations
 
@@ -33,7 +34,8 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
     `first`: no chain working the held node where it lies where its first makers already lead it there
     (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer. `placed`:
     where no rule above chooses, a maker back along the held node's chain that makes the container's node too
-    (`_placed_back`; only for a task whose small counts are out of holder reach, `planners.solve.plan`)."""
+    (`_placed_back`), else one back along the container's chain that makes the held node in it (`_held_back`; only
+    for a task whose small counts are out of holder reach, `planners.solve.plan`)."""
     ix, out = reach.index, {}
     alias = dict(unit_aliases(reach.foon.units[u]))
     for c in ix.inputs[u]:
@@ -56,7 +58,7 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             elif not (first and _there_first(reach, c, x)):
                 out.update(_worked_there(reach, u, c, x) or _from_kitchen_box(reach, u, c, x)
-                           or placed and _placed_back(reach, u, c, x) or {})
+                           or placed and (_placed_back(reach, u, c, x) or _held_back(reach, u, c, x)) or {})
     return out
 
 
@@ -144,6 +146,33 @@ def _placed_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKE
             k = min(both, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             return {y: k, c: k}
         y = _back(reach, m, held)
+        if y < 0:
+            return None
+    return None
+
+
+def _held_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_DEPTH) -> dict[int, int] | None:
+    """Node id -> maker for the held node `x` from a unit that makes it in a node `y` on the container's chain (`c`,
+    then back through first achievers' inputs of its label at its place, at most `depth` units), firing before `u`
+    and not needing `x`: the container reaches `c` from `y` with the object still in it (None when none is found).
+    `_placed_back` mirrored: on the universal FOON of 70 subgraphs drawn with seed 55 the southern macaroni's stir
+    (`0055-southern-baked_macaroni_and_cheese.txt:97`) takes `egg white and yolk (beaten, in [bowl])`, first made by
+    the blueberry muffin's blend (`ACT-0003-blueberry_muffin.txt:55`) in a bowl of butter and sugar, with the bowl
+    of egg, milk, salt, pepper and cheese, whose chain of pours and sprinkles (`:86`, `:72`, `:58`, `:46`) goes back
+    to `bowl (contains {egg white and yolk})`, which the omelette's mix (`0042-perfect_omelette.txt:11`) leaves with
+    the beaten egg in it. Tie-break: the latest node on the chain, then the earliest round, then FOON order (`rank`).
+    O(depth x makers)."""
+    ix, box = reach.index, reach.index.nodes[c]
+    y = c
+    for _ in range(depth):
+        found = [k for k in ix.makers[x] if y in ix.outputs[k] and 0 <= reach.unit_round[k] < reach.unit_round[u]
+                 and not _needs(reach, k, {x})]
+        if found:
+            return {x: min(found, key=lambda k: (reach.unit_round[k], ix.rank[k]))}
+        m = reach.achiever[y]
+        if m < 0:
+            return None
+        y = _back(reach, m, box)
         if y < 0:
             return None
     return None
