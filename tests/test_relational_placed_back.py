@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 from conftest import SUBGRAPHS
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan, compiled_counts, within_instances
+from relational_checks import clean_plan, clean_unit_plan, compiled_counts, within_instances
 
 from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
@@ -156,3 +156,54 @@ def test_the_held_node_is_made_back_along_the_containers_chain():
     assert drop_unreachable(small.task)[1] is None
     labels = {x.label for x in small.task.instances}
     assert "fork" in labels and "hand mixer" not in labels, labels
+
+
+# A unit making both that puts the object back into the container (`count_together._put_back`): on the universal
+# FOON of 70 subgraphs drawn with seed 56 the egg noodles' stir (0044:118) takes `bowl (contains {egg mixture,
+# flour})`, first made by the apple cake's pour (ACT-0068:249) of a bowl of flour `powder`, with `flour (in [bowl],
+# sifted)`, first made by the sift (0044:15) in a bowl of flour alone. The noodles' pour (0044:102) makes both, of
+# the flour the sift left and a pour (0044:29) took into a measuring cup: it needs the sifted flour's node, so no
+# plan from first makers counted it, nor the cup; every task was out of holder reach.
+FLOUR_BOWL, SIFTED = n("bowl", contains("flour")), n("flour", "sifted", inside("bowl"))
+MIX_BOWL, MIX_IN = n("bowl", contains("egg mixture")), n("egg mixture", inside("bowl"))
+BOTH = n("bowl", contains("egg mixture", "flour"))
+DOUGH = n("dough", inside("bowl"))
+
+
+def _noodles() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
+    """The sift, the pour of the sifted flour into a measuring cup, a pour of flour from the bag, the apple cake's
+    pour of that bowl into the egg mixture (the first maker of the stir's bowl: in the round of the noodles' pour,
+    earlier in FOON order), the noodles' pour from the cup, their stir, and the opening of the bag."""
+    cup, in_cup = n("measuring cup", contains("flour")), n("flour", "sifted", inside("measuring cup"))
+    units = (
+        FunctionalUnit((n("bowl", "empty"), n("strainer", contains("flour")), n("flour", "powder", inside("strainer"))),
+                       Motion("sift"), (FLOUR_BOWL, SIFTED), _at("noodles.txt", 15)),
+        FunctionalUnit((FLOUR_BOWL, SIFTED, n("measuring cup", "empty")), Motion("pour"), (cup, in_cup),
+                       _at("noodles.txt", 29)),
+        FunctionalUnit((n("bowl", "empty"), n("bag", contains("flour"), "opened"), n("flour", "powder", inside("bag"))),
+                       Motion("pour"), (FLOUR_BOWL, n("flour", "powder", inside("bowl"))), _at("pancakes.txt", 11)),
+        FunctionalUnit((MIX_BOWL, FLOUR_BOWL, n("flour", "powder", inside("bowl"))), Motion("pour"),
+                       (BOTH, n("bowl", "dirty")), _at("cake.txt", 249)),
+        FunctionalUnit((MIX_BOWL, MIX_IN, cup, in_cup), Motion("pour"), (BOTH, SIFTED), _at("noodles.txt", 102)),
+        FunctionalUnit((BOTH, SIFTED, MIX_IN, n("fork", "clean")), Motion("stir"), (n("bowl", contains("dough")), DOUGH),
+                       _at("noodles.txt", 118)),
+        FunctionalUnit((n("bag", contains("flour")),), Motion("open"), (n("bag", contains("flour"), "opened"),),
+                       _at("pancakes.txt", 4)),
+    )
+    kitchen = frozenset({n("bowl", "empty"), n("strainer", contains("flour")), n("flour", "powder", inside("strainer")),
+                         n("measuring cup", "empty"), n("bag", contains("flour")), n("flour", "powder", inside("bag")),
+                         MIX_BOWL, MIX_IN, n("fork", "clean")})
+    return units, kitchen
+
+
+def test_a_unit_putting_the_object_back_makes_the_container():
+    units, kitchen = _noodles()
+    first = delete_free_plan(Foon(units), kitchen, (DOUGH,), together=True)[0]
+    assert {3, 4} & set(first) == {3}, first  # the apple cake's pour: its flour is not the sifted flour
+    placed = delete_free_plan(Foon(units), kitchen, (DOUGH,), together=True, placed=True)[0]
+    assert {0, 1, 4} <= set(placed) and 3 not in placed, placed  # sift, into the cup, back into the egg mixture
+    outcome = clean_plan(Foon(units), Kitchen(kitchen), Goal(GoalSpec("dough"), (DOUGH,)), time_limit=60)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["sift", "pour", "pour", "stir"]
+    assert [s.unit.sources[0].line for s in outcome.trace.steps] == [15, 29, 102, 118]
+    assert any(x.startswith("objects: the task counted from first makers is out of holder reach: counted wide with "
+                            "makers chosen by holder reach") for x in outcome.decoded.notes), outcome.decoded.notes

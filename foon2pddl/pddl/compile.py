@@ -91,7 +91,7 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
     `instances` and `categories` (category chains) are read by the `instances` encoding,
     `category_index` and `policy` by lifted ones (default: the shipped category index), `narrow` (objects
     counted small, `Compiled.narrowed`; from the plan through the stitches alone with `through`, with makers by
-    holder reach with `placed`) by the `relational` one.
+    holder reach with `placed`, or without `narrow` counted wide with those makers) by the `relational` one.
     With `constraints`, the one place they apply to every encoding (`constraints.py`): the network,
     kitchen and goal are filtered before encoding (GoalExcluded when no candidate remains) and
     must-use objects join the goal after. A goal the kitchen already holds is put in the initial

@@ -4,9 +4,10 @@ a unit that makes it in that container, else the container's from a unit that ta
 content's maker left it, else the content's from a chain working it where it lies (`_worked_there`), else both from
 a unit taking them out of a kitchen container (`_from_kitchen_box`: what that container holds is at hand,
 `AT_HAND`); or, asked for the plan with first makers (`first`), where the content's first makers already lead it
-there (`_there_first`), those; asked for makers by holder reach (`placed`), back along the held node's chain a unit
-that makes the container's node too (`_placed_back`), or back along the container's chain a unit that makes the held
-node in it (`_held_back`)."""
+there (`_there_first`), those; asked for makers by holder reach (`placed`), a unit making both that puts the object
+back into the container for the container's node (`_put_back`), and where no rule chooses, back along the held
+node's chain a unit that makes the container's node too (`_placed_back`), or back along the container's chain a unit
+that makes the held node in it (`_held_back`)."""
 
 from __future__ import annotations
 
@@ -33,7 +34,8 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
     {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node.
     `first`: no chain working the held node where it lies where its first makers already lead it there
     (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer. `placed`:
-    where no rule above chooses, a maker back along the held node's chain that makes the container's node too
+    where no unit makes both without needing either, one that needs only the held node (`_put_back`); where no rule
+    above chooses, a maker back along the held node's chain that makes the container's node too
     (`_placed_back`), else one back along the container's chain that makes the held node in it (`_held_back`; only
     for a task whose small counts are out of holder reach, `planners.solve.plan`)."""
     ix, out = reach.index, {}
@@ -50,6 +52,8 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
                     if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
             if both:
                 out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+            elif placed and (again := _put_back(reach, u, c, x)) is not None:
+                out[c] = again
             elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
                           and _in_box(reach, m, c) and not _needs(reach, m, {x})]:
                 out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
@@ -149,6 +153,20 @@ def _placed_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKE
         if y < 0:
             return None
     return None
+
+
+def _put_back(reach: Reachability, u: int, c: int, x: int) -> int | None:
+    """A unit making both the container's node `c` and the held node `x` that needs `x` (it puts the object back
+    into the container) but not `c`, firing before `u`: it makes `c`, and `x` keeps its maker, the object's earlier
+    node (None when there is none). On the universal FOON of 70 subgraphs drawn with seed 56 the egg noodles' stir
+    (`0044-egg_noodles_from_scratch.txt:118`) takes `bowl (contains {egg mixture, flour})`, first made by the apple
+    cake's pour of a bowl of flour `powder` (`ACT-0068-apple_cake.txt:249`), with `flour (in [bowl], sifted)`: the
+    noodles' pour (`:102`) makes both, of the sifted flour the sift (`:15`) left in a bowl and the pour (`:29`) took
+    into a measuring cup. Tie-break: the earliest round, then FOON order (`rank`). O(makers x their chains)."""
+    ix = reach.index
+    again = [m for m in set(ix.makers[c]) & set(ix.makers[x])
+             if 0 <= reach.unit_round[m] < reach.unit_round[u] and _needs(reach, m, {x}) and not _needs(reach, m, {c})]
+    return min(again, key=lambda m: (reach.unit_round[m], ix.rank[m])) if again else None
 
 
 def _held_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_DEPTH) -> dict[int, int] | None:

@@ -17,7 +17,9 @@ the stitched one sprinkles). Counted small `through` the stitches: from the plan
 beside it; 0050's, with the bacon, 24 objects where wide counts 25): what `plan` tries next when the task of FOON's
 own plan is out of holder reach, then (`placed`) counted as wide with makers chosen by holder reach
 (`count_together._placed_back`: the even universal half's kofta mix, 14 objects where wide counts 19), then the wide
-task. A scene's objects are the scene's: never counted small.
+task; last, when that is out of holder reach too, counted wide with makers by holder reach (`placed` without
+`narrow`: FOON's plan with those makers and the stitched plan beside it, whatever the count). A scene's objects are
+the scene's: never counted small.
 """
 
 from __future__ import annotations
@@ -73,11 +75,12 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
     `narrow`: counted small when that gives fewer objects, `through` the stitches (a task with none: counted wide),
-    `placed`: counted as wide, with makers by holder reach (`count_together._placed_back`), kept when fewer.
+    `placed`: counted as wide, with makers by holder reach (`count_together._placed_back`), kept when fewer;
+    without `narrow`, the wide count with those makers.
     Counting small reuses the readings counting wide made (`read_units`' memo: units are read again only with other
     holders silent) and derives its own counts."""
     memo: dict = {}  # the units' readings and counts both countings share (`read_units`)
-    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo)
+    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow)
     if not narrow or scene or (through and not st.origin):
         return wide
     started = frozenset() if placed else wide.implied | {

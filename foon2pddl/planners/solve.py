@@ -44,6 +44,8 @@ EXCLUDED = "constraints"
 
 #: The planner named by the outcome of a goal no reachable state of the objects applies (`pddl.holder_reach`).
 UNREACHED = "holder reachability"
+#: The note of a task counted wide with makers by holder reach, planned when every other was out of holder reach.
+OUT_OF_REACH = "the task counted from first makers is out of holder reach: counted wide with makers chosen by holder reach"
 
 #: The time limit (s) of a plan with fewer objects than a plan to fall back on: `plan_restoring`'s second plan, and
 #: `plan`'s task counted small (or the caller's, when shorter), there in CPU seconds of the planner's processes (a
@@ -160,7 +162,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     first (not with `optimal`) with only the actions of the units of the plan its objects are counted from
     (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any
     cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
-    `MIN_REST`).
+    `MIN_REST`). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
+    reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -222,13 +225,19 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         empty = PlanningTask("excluded", "excluded", encoding, level, (), (), (), ())
         return PlanOutcome(PlanResult(PlanStatus.UNSOLVABLE, (), EXCLUDED, str(exc)), Compiled(empty),
                            timings=timings)
-    if not small.narrowed:
-        return planned(small, time_limit, cpu_limit)
-    short = min(time_limit or RETRY_SECONDS, cpu_limit or RETRY_SECONDS, RETRY_SECONDS)
     started = _now()
 
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
         return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
+
+    def reached(out: PlanOutcome) -> PlanOutcome:  # out of holder reach: counted wide, with makers by holder reach
+        other = compiled(False, placed=True) if out.result.planner == UNREACHED else None
+        return out if other is None else _noted(planned(other, rest(), cpu_limit), f"objects: {OUT_OF_REACH}, "
+                                                f"{len(other.task.instances)}")
+
+    if not small.narrowed:
+        return reached(planned(small, time_limit, cpu_limit))
+    short = min(time_limit or RETRY_SECONDS, cpu_limit or RETRY_SECONDS, RETRY_SECONDS)
 
     def smallest() -> PlanOutcome:  # out of holder reach: the plan through the stitches alone, then makers by reach
         nonlocal small
@@ -238,7 +247,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
                 small, out = other, planned(other, time_limit, short)
         return out
 
-    outs = _first_solved(smallest, lambda: planned(compiled(False), rest(), cpu_limit))
+    outs = _first_solved(smallest, lambda: reached(planned(compiled(False), rest(), cpu_limit)))
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {count(len(small.task.instances), 'object')} counted small gave no valid plan within "
