@@ -7,7 +7,8 @@ a unit taking them out of a kitchen container (`_from_kitchen_box`: what that co
 there (`_there_first`), those; asked for makers by holder reach (`placed`), a unit making both that puts the object
 back into the container for the container's node (`_put_back`), and where no rule chooses, back along the held
 node's chain a unit that makes the container's node too (`_placed_back`), or back along the container's chain a unit
-that makes the held node in it (`_held_back`)."""
+that makes the held node in it (`_held_back`). A node whose first maker the plan
+does not have may be made by a unit the plan has (`made_in_plan`)."""
 
 from __future__ import annotations
 
@@ -17,7 +18,7 @@ from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import listed, places
 from .relational_init import kitchen_implied
 
-__all__ = ["AT_HAND", "kitchen_held", "makers_together"]
+__all__ = ["AT_HAND", "kitchen_held", "made_in_plan", "makers_together"]
 
 #: `makers_together`'s maker of a node a kitchen container holds (`kitchen_held`): none, it is at hand.
 AT_HAND = -1
@@ -96,6 +97,25 @@ def _from_kitchen_box(reach: Reachability, u: int, c: int, x: int) -> dict[int, 
         if m != u and held and all(n in reach.kitchen or n in held for n in unit.inputs):
             return {c: m, x: m} | {ix.node_id[n]: AT_HAND for n in held}
     return None
+
+
+def made_in_plan(reach: Reachability, chosen: set[int], n: int, by: int) -> int:
+    """The unit to make node `n` (an id) for unit `by`: its first achiever when the delete-free plan so far
+    (`chosen`) has it, else a unit of the plan that makes it, needing neither it nor what `by` makes (through first
+    achievers), else the first achiever. Pulled in for that one node, another recipe's chain also makes nodes the
+    plan's own chain takes, later in firing order, where the unfolding fires it (`instance_counts.unfold` has a node
+    made by the last unit of the plan making it). On the shared universal FOON the 0050 omelette's sprinkle
+    (`0050-scrambled_eggs_with_bacon-cheese.txt:242`) takes `cooking pan (contains {omelette}, on [stove])`, first
+    made by the plain omelette's cook (`0063-plain_omelette_mahalo.txt:140`); its chain's mix (`:73`) makes `bowl
+    (contains {egg mixture})` after 0050's own mix (`:54`), and the egg was cracked twice, salted and peppered for
+    it: 25 objects in the problem, 20 used. 0050's spread (`:227`), in the plan for the omelette the flip takes,
+    makes that pan's node. Tie-break: the earliest round, then FOON order. O(makers x the first achievers' inputs)."""
+    ix = reach.index
+    if reach.achiever[n] in chosen:
+        return reach.achiever[n]
+    took = {n, *ix.outputs[by]}
+    found = [m for m in ix.makers[n] if m in chosen and m != by and not _needs(reach, m, took)]
+    return min(found, key=lambda m: (reach.unit_round[m], ix.rank[m])) if found else reach.achiever[n]
 
 
 #: How many units deep `_worked_there` follows a held node worked where it lies.

@@ -63,7 +63,7 @@ from ..model.where import short_path, unit_where
 from .count_order import orders
 from .count_returns import with_returns
 from .count_reuse import reused
-from .count_together import AT_HAND, kitchen_held, makers_together
+from .count_together import AT_HAND, kitchen_held, made_in_plan, makers_together
 
 #: A unit's object roles, for counting what passes through each node.
 RolesOf = Callable[[FunctionalUnit], tuple[Role, ...]]
@@ -120,42 +120,46 @@ class InstanceCounts:
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
-                     together: bool = False, first: bool = False, placed: bool = False
+                     together: bool = False, first: bool = False, placed: bool = False, in_plan: bool = False
                      ) -> tuple[tuple[int, ...], ObjectNode] | None:
     """A delete-free plan (unit indexes in firing order) for the candidate made in the fewest rounds.
 
-    Each needed node is made by its first achiever (`reachability`): following first
-    achievers back never meets a cycle and never pulls in another recipe's units the way
-    crediting the latest maker can. None when no candidate can be made. `together`
-    (`relational`): a container's node and the node of what is in it that one unit takes
-    are made by one unit that makes both, when their first achievers differ and such a unit
-    fires before it and needs neither (`count_together`; `first`, `placed`: `makers_together`'s).
-    """
-    return delete_free_plans(foon, kitchen, candidates, together, (first,), placed)[0]
+    Each needed node is made by its first achiever (`reachability`): following first achievers back never meets a
+    cycle and never pulls in another recipe's units the way crediting the latest maker can. None when no candidate
+    can be made. `together` (`relational`): a container's node and the node of what is in it that one unit takes are
+    made by one unit that makes both, when their first achievers differ and such a unit fires before it and needs
+    neither (`count_together`; `first`, `placed`, `in_plan`: `_chosen`'s)."""
+    return delete_free_plans(foon, kitchen, candidates, together, ((first, in_plan),), placed)[0]
 
 
 def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], together: bool,
-                      firsts: Sequence[bool], placed: bool = False) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
-    """`delete_free_plan` for each of `firsts`, over one fixpoint (`derive_counts` wants both); `placed`:
-    `makers_together`'s."""
+                      ways: Sequence[tuple[bool, bool]], placed: bool = False) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
+    """`delete_free_plan` for each of `ways` (`first`, `in_plan`) over one fixpoint; `placed`: `makers_together`'s."""
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
     if not made:
-        return (None,) * len(firsts)
+        return (None,) * len(ways)
     target = min(made, key=lambda c: (reach.round_of(c), c))
-    return tuple((_chosen(reach, target, together, first, placed), target) for first in firsts)
+    return tuple((_chosen(reach, target, together, first, placed, in_plan), target) for first, in_plan in ways)
 
 
-def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool, placed: bool = False) -> tuple[int, ...]:
-    """The units of `delete_free_plan`'s plan for `target`, in firing order."""
+def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool, placed: bool = False,
+            in_plan: bool = False) -> tuple[int, ...]:
+    """`delete_free_plan`'s units, in firing order; `in_plan`: a node waits till the stack empties (`made_in_plan`)."""
     ix = reach.index
     chosen: set[int] = set()
     seen: set[int] = set()
     maker: dict[int, int] = {}  # node id -> the unit chosen to make it (`together`)
-    stack = [ix.node_id[target]] if target in ix.node_id else []
-    while stack:
-        n = stack.pop()
+    stack = [(ix.node_id[target], -1)] if target in ix.node_id else []  # (node id, the unit taking it)
+    waiting: list[tuple[int, int]] = []  # `in_plan`: nodes decided once the stack is empty, in the order met
+    while stack or waiting:
+        n, by = waiting.pop(0) if (late := not stack) else stack.pop()  # `late`: a node that waited, decided now
         if n in seen or reach.node_round[n] == 0:
+            continue
+        if late:
+            maker.setdefault(n, made_in_plan(reach, chosen, n, by))
+        elif in_plan and n not in maker and by >= 0 and len(ix.makers[n]) > 1 and reach.achiever[n] not in chosen:
+            waiting.append((n, by))
             continue
         u = maker[n] = maker.get(n, reach.achiever[n])
         if u == AT_HAND:  # a kitchen container holds it (`count_together.kitchen_held`): the kitchen's
@@ -165,7 +169,7 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
             chosen.add(u)
             if together:
                 maker.update({k: v for k, v in makers_together(reach, u, first, placed).items() if k not in seen})
-            stack.extend(ix.inputs[u])
+            stack.extend((i, u) for i in ix.inputs[u])
     return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen})
 
 
@@ -263,8 +267,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     """
     stated = stated or {}
     overrides = overrides or {}
-    found, *other = delete_free_plans(foon, kitchen, candidates, together, (False, True) if together else (False,),
-                                      placed)
+    kinds = ((False, False), (True, False), (False, True)) if together else ((False, False),)  # (first, in_plan)
+    found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)
@@ -279,8 +283,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                                 for again in (False, stitched)) for made in (False, together)}
         ways = ways_of(found[0])
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
-        if other and other[0] != found:
-            more = ways_of(other[0][0])  # first makers where they lead there (`count_together`): kept when fewer
+        for again in dict.fromkeys(o[0] for o in other if o is not None and o != found):  # kept when fewer
+            more = ways_of(again)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         homes = [kitchen | _at_hand(foon, p, kitchen) for p in plans]  # with what kitchen containers hold
