@@ -12,9 +12,9 @@ from collections.abc import Callable
 from functools import lru_cache
 from pathlib import Path
 
-from .foon import FunctionalUnit
+from .foon import FunctionalUnit, Source
 
-__all__ = ["short_path", "shown_path", "unit_where"]
+__all__ = ["short_path", "shown_path", "source_where", "unit_where"]
 
 @lru_cache(maxsize=4096)
 def short_path(path: str) -> str:
@@ -41,3 +41,9 @@ def unit_where(unit: FunctionalUnit, path: Callable[[str], str] = shown_path) ->
     messages, `short_path` (the file name) in generated files."""
     src = unit.source
     return f"{path(src.path)}:{src.line}" if src is not None else "?"
+
+
+def source_where(src: Source, path: Callable[[str], str] = shown_path) -> str:
+    """`FILE:LINE` of one source, then ` (expanded from X)` for a FOON-EXP copy, which shares its original's line
+    (PDDL comments and count reasons: one file:line must not read as two units); `path` as `unit_where`'s."""
+    return f"{path(src.path)}:{src.line}" + (f" (expanded from {src.expanded_from})" if src.expanded_from else "")

@@ -20,7 +20,7 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project, project_node
-from ..model.where import short_path
+from ..model.where import short_path, source_where
 from ..model.words import count
 from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
@@ -125,8 +125,7 @@ def select(inp: LevelInputs, prune: bool) -> Selection:
 
 def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     """Comment lines of a unit's action: index, motion, source recipe files and lines, what it does."""
-    places = [f"{short_path(s.path)}:{s.line}" + (f" (expanded from {s.expanded_from})" if s.expanded_from else "")
-              for s in unit.sources[:3]]
+    places = [source_where(s, short_path) for s in unit.sources[:3]]
     if len(unit.sources) > 3:
         places.append(f"+{len(unit.sources) - 3} more")
     motion = unit.motion.label + ("*" if unit.motion.composite else "")

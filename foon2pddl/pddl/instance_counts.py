@@ -59,7 +59,7 @@ from dataclasses import dataclass, replace
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
-from ..model.where import short_path, unit_where
+from ..model.where import short_path, source_where
 from .count_order import orders
 from .count_returns import with_returns
 from .count_reuse import reused
@@ -345,9 +345,7 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
         where = []
         for u, t in takers.get(node, ())[:shown]:
             unit = foon.units[u]
-            src = f" at {unit_where(unit, short_path)}" if unit.source else ""
-            if unit.source is not None and unit.source.expanded_from:  # a FOON-EXP copy shares its original's line
-                src += f" (expanded from {unit.source.expanded_from})"
+            src = f" at {source_where(unit.source, short_path)}" if unit.source else ""
             where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
         more = len(takers.get(node, ())) - shown
         again = taken + (node in readers) - k
