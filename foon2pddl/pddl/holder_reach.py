@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..model.where import unit_where
+from ..model.words import first_of
 from .task import Action, Atom, PlanningTask
 
 #: A state nothing says: the object may be in any state.
@@ -215,7 +216,7 @@ def drop_unreachable(task: PlanningTask, any_cause: bool = False) -> tuple[Plann
     """`task` without the actions `unreachable` finds and the conditional effects no reachable state fires (the same
     plans; `task` itself when there are none),
     and, when the goal is then out of reach, why: the units whose holder and content no plan has together
-    (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, at most `SHOWN`); None when it may be reached, or
+    (`MOTION at FILE:LINE needs HOLDER holding CONTENT`, the first `SHOWN`, then how many more: `words.first_of`); None when it may be reached, or
     when no holder pair keeps it out of reach (nothing makes a node: the planner's relaxed analysis says so),
     unless `any_cause` (then `NO_STATE`). A task of another encoding is returned as it is."""
     if task.encoding != "relational":
@@ -238,5 +239,5 @@ def drop_unreachable(task: PlanningTask, any_cause: bool = False) -> tuple[Plann
             said.append(f"{unit.motion.label} at {unit_where(unit)} needs {holder} holding {content}"
                         if miss.predicate == "in" else
                         f"{unit.motion.label} at {unit_where(unit)} needs {content} on {holder}")
-    shown = "; ".join(said[:SHOWN]) + (f" (+{len(said) - SHOWN} more)" if len(said) > SHOWN else "")
+    shown = first_of(said, SHOWN)
     return kept, "no reachable state applies what the goal needs" + (f": {shown}" if shown else "")
