@@ -34,7 +34,7 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
     are read as `u` reads them (rule 0, `unit_aliases`): the apple turnover's heat takes `cooking pan (contains
     {butter})` with `butter (cubed, in [pan])`, its pan, which the pork chops' scoop makes with the pan's node.
     `first`: no chain working the held node where it lies where its first makers already lead it there
-    (`_there_first`); `instance_counts.derive_counts` counts both plans and keeps the one counting fewer. `placed`:
+    (`_there_first`); `instance_counts.derive_counts` counts each plan and keeps the one counting fewest. `placed`:
     where no unit makes both without needing either, one that needs only the held node (`_put_back`); where no rule
     above chooses, a maker back along the held node's chain that makes the container's node too
     (`_placed_back`), else one back along the container's chain that makes the held node in it (`_held_back`; only

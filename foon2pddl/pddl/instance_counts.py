@@ -16,9 +16,10 @@ unfolding a delete-free plan backwards:
    plan fired again, when that plan counts fewer objects). `relational` keeps, of
    these plans as they are, readers first and takers last, the fewest-counting (`count_order`);
    also of the plan whose held nodes keep their first makers where those lead them
-   into the container (`count_together`'s `first`), counted after, so kept only
-   when it counts fewer: the universal scrambled eggs' pan from 0062's own pour,
-   not 0056's (two plans at most: the counting at most doubles).
+   into the container (`count_together`'s `first`: the universal scrambled eggs'
+   pan from 0062's own pour, not 0056's) and of the plan taking makers it has
+   (`in_plan`: `count_together.made_in_plan`), each counted after, so kept only
+   when it counts fewer (three plans at most: the counting at most triples).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -128,7 +129,7 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
     cycle and never pulls in another recipe's units the way crediting the latest maker can. None when no candidate
     can be made. `together` (`relational`): a container's node and the node of what is in it that one unit takes are
     made by one unit that makes both, when their first achievers differ and such a unit fires before it and needs
-    neither (`count_together`; `first`, `placed`, `in_plan`: `_chosen`'s)."""
+    neither (`count_together`; `first`, `placed`: `makers_together`'s; `in_plan`: `_chosen`'s)."""
     return delete_free_plans(foon, kitchen, candidates, together, ((first, in_plan),), placed)[0]
 
 
