@@ -14,6 +14,16 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tools" / "pip_phases.py"
 
+
+@pytest.fixture
+def pip_phases(monkeypatch):
+    """tools/pip_phases.py as a module (a script, outside the package), for the tests that run its `main`."""
+    monkeypatch.syspath_prepend(str(SCRIPT.parent))
+    import pip_phases
+
+    return pip_phases
+
+
 #: What pip prints for an editable install, shortened.
 PIP_OUTPUT = """Obtaining file:///work/foon2pddl
   Installing build dependencies: started
@@ -68,12 +78,7 @@ def test_a_failing_pip_shows_its_errors_and_its_exit_status(tmp_path):
     assert said[3:] == ["  Collecting nosuch", "  ERROR: No matching distribution found for nosuch"]
 
 
-def test_a_long_phase_says_it_is_still_running(tmp_path, monkeypatch, capsys):
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
+def test_a_long_phase_says_it_is_still_running(tmp_path, monkeypatch, capsys, pip_phases):
     monkeypatch.setattr(pip_phases, "TICK", 0.0)
     slow = [sys.executable, "-c", "import time; print('Collecting click', flush=True); time.sleep(2.5)"]
     assert pip_phases.main(["--log", str(tmp_path / "pip.log"), *slow]) == 0
@@ -91,15 +96,10 @@ def test_make_install_says_each_step_and_runs_pip_through_the_phases():
     assert pips and all("pip_phases.py" in s and " -q " not in s for s in pips), pips
 
 
-def test_a_phase_counts_its_seconds_from_its_own_start(tmp_path, monkeypatch, capsys):
+def test_a_phase_counts_its_seconds_from_its_own_start(tmp_path, monkeypatch, capsys, pip_phases):
     """Stop 55's pass: `pip: still installing the packages into the environment (58 packages) (60 s) ...` came
     right after the phase began: its seconds counted from pip's start. Here the build phase takes 4 s, then
     collecting runs 2.5 s: collecting's `still` lines count from 0, not from 4."""
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
     monkeypatch.setattr(pip_phases, "TICK", 0.0)
     slow = [sys.executable, "-c", "import time; print('Obtaining file:///x', flush=True); time.sleep(4); "
                                   "print('Collecting click', flush=True); time.sleep(2.5)"]
@@ -112,26 +112,16 @@ def test_a_phase_counts_its_seconds_from_its_own_start(tmp_path, monkeypatch, ca
     assert max(building) >= 3 and collecting[0] <= 2 and collecting == sorted(collecting), said
 
 
-def test_a_phase_says_it_still_runs_within_the_clis_beat():
+def test_a_phase_says_it_still_runs_within_the_clis_beat(pip_phases):
     """Issue 24's floor (no 2 s without a line on stderr), which the CLI meets through a pipe with a line every
     `cli.progress.BEAT` s: `make install` said a pip phase was still running only every 30 s (a fresh clone at
     40ca45c, load 8: 30.3 s twice while installing the 58 packages, 11.2 s while collecting)."""
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
     assert pip_phases.TICK < 2.0  # the floor (conftest sets the CLI's BEAT to an hour for every test)
 
 
-def test_a_command_without_pip_phases_is_one_phase_that_says_it_still_runs(tmp_path, monkeypatch, capsys):
+def test_a_command_without_pip_phases_is_one_phase_that_says_it_still_runs(tmp_path, monkeypatch, capsys, pip_phases):
     """`python3 -m venv .venv` (make install's step 2) went 13.5 s without a line at load 8 (the same clone): run
     through the script as one named phase, it says it is still running, under make install's name."""
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
     monkeypatch.setattr(pip_phases, "TICK", 0.0)
     quiet = [sys.executable, "-c", "import time; time.sleep(2.5)"]
     assert pip_phases.main(["--log", str(tmp_path / "venv.log"), "--who", "make install", "--phase",
@@ -149,16 +139,11 @@ def test_make_install_creates_the_environment_and_the_bytecode_through_the_phase
     assert lines and all("pip_phases.py" in s and "--phase" in s for s in lines), lines
 
 
-def test_pip_after_done_is_finishing_not_still_done(tmp_path, monkeypatch, capsys):
+def test_pip_after_done_is_finishing_not_still_done(tmp_path, monkeypatch, capsys, pip_phases):
     """With the 1.5 s tick, pip's exit after `Successfully installed` said `pip: still done: 58 packages installed
     (2 s) ...` (the same clone): what runs then is pip finishing. The fake pip starts slowly, as a loaded machine's
     does: since 3b3a53b its start ticks `still starting` before the first line (rv56: this test then failed on
     `said[0]` whenever the child took over 0.25 s to print)."""
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
     monkeypatch.setattr(pip_phases, "TICK", 0.0)
     slow = [sys.executable, "-c", "import time; time.sleep(0.6); print('Successfully installed click-8.1.7', "
                                   "flush=True); time.sleep(2.5)"]
@@ -170,14 +155,9 @@ def test_pip_after_done_is_finishing_not_still_done(tmp_path, monkeypatch, capsy
     assert all(re.fullmatch(r"pip: still finishing \(\d+ s\) \.\.\.", s) for s in said[done + 1:]), said
 
 
-def test_pip_starting_says_it_still_starts(tmp_path, monkeypatch, capsys):
+def test_pip_starting_says_it_still_starts(tmp_path, monkeypatch, capsys, pip_phases):
     """pip's start before its first line (its imports) went 1.6-1.8 s without a line at load 7 (a fresh clone at
     16e1306), over 2 s under more load: it is a phase too, `starting`, said only if it lasts."""
-    sys.path.insert(0, str(SCRIPT.parent))
-    try:
-        import pip_phases
-    finally:
-        sys.path.remove(str(SCRIPT.parent))
     monkeypatch.setattr(pip_phases, "TICK", 0.0)
     slow = [sys.executable, "-c", "import time; time.sleep(2.5); print('Collecting click', flush=True)"]
     assert pip_phases.main(["--log", str(tmp_path / "pip.log"), *slow]) == 0
