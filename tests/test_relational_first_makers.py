@@ -90,3 +90,40 @@ def test_the_universal_dish_counted_small_has_no_more_objects_than_instances(uni
     sizes = {enc: len(compile_goal(foon, default_kitchen(foon), goal, enc, narrow=True).task.objects)
              for enc in ("instances", "relational")}
     assert sizes["relational"] <= sizes["instances"], sizes
+
+
+def _garlic_breads() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
+    """Two makers of one node (0010's and 0016's garlic breads on a universal FOON): `bread (contains {garlic
+    butter}, on [cutting board])`. 0010's spread, first in FOON order and so its first achiever, takes the bowl of
+    garlic butter (first made by 0016's mix) and the garlic butter still `in [food processor bowl]` (0010's blend):
+    both chains. 0016's spread makes the node from 0016's mix alone."""
+    fpb, board = "food processor bowl", make_state("on", "cutting board")
+    bowl_gb, in_fpb, in_bowl = n("bowl", contains("garlic butter")), n("garlic butter", inside(fpb)), n(
+        "garlic butter", inside("bowl"))
+    spread = n("bread", contains("garlic butter"), board)
+    units = (
+        FunctionalUnit((n(fpb, contains("butter", "garlic")), n("garlic", "minced", inside(fpb)),
+                        n("butter", inside(fpb))), Motion("blend"), (n(fpb, contains("garlic butter")), in_fpb)),
+        FunctionalUnit((n("bowl", contains("butter", "garlic")), n("garlic", "minced", inside("bowl")),
+                        n("butter", inside("bowl")), n("spoon", "clean")), Motion("mix"),
+                       (bowl_gb, in_bowl, n("spoon", "dirty"))),
+        FunctionalUnit((n("bread", "halved", board), bowl_gb, in_fpb, n("knife", "clean")), Motion("spread"),
+                       (spread, n("garlic butter", make_state("on", "bread")), n("knife", "dirty"))),
+        FunctionalUnit((n("bread", "sliced", board), bowl_gb, in_bowl, n("knife", "clean")), Motion("spread"),
+                       (spread, n("garlic butter", make_state("on", "bread")), n("knife", "dirty"))),
+        FunctionalUnit((spread, n("oven", "on")), Motion("bake"), (n("bread", "baked", contains("garlic butter")),)),
+    )
+    made = {o for u in units for o in u.outputs}
+    return units, frozenset(i for u in units for i in u.inputs if i not in made)
+
+
+def test_of_two_makers_of_one_node_the_counts_keep_the_one_counting_fewer():
+    # the universal FOON's baked garlic bread (odd half 63 objects in the problem against `instances`' 60): counted
+    # from 0010's spread (`0010-cheesy_garlic_bread.txt:176`) the plan had both garlic-butter chains; its plan used
+    # 23 of its 63 objects. Counted with each maker, the one from 0016's spread alone counts fewer.
+    units, kitchen = _garlic_breads()
+    goal = units[-1].outputs
+    assert delete_free_plan(Foon(units), kitchen, goal, together=True)[0] == (0, 1, 2, 4)  # the first achievers
+    counts = derive_counts(Foon(units), range(len(units)), kitchen, goal, together=True, stitched=True, reuse=True)
+    assert {u for u, _ in counts.firings} == {1, 3, 4}
+    assert "food processor bowl" not in counts.labels() and counts.labels()["garlic"] == 1

@@ -18,7 +18,7 @@ from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import listed, places
 from .relational_init import kitchen_implied
 
-__all__ = ["AT_HAND", "kitchen_held", "made_in_plan", "makers_together"]
+__all__ = ["AT_HAND", "kitchen_held", "made_in_plan", "makers_together", "needs"]
 
 #: `makers_together`'s maker of a node a kitchen container holds (`kitchen_held`): none, it is at hand.
 AT_HAND = -1
@@ -50,16 +50,16 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
                     or reach.achiever[x] == reach.achiever[c]):
                 continue
             both = [m for m in set(ix.makers[c]) & set(ix.makers[x])
-                    if 0 <= reach.unit_round[m] < reach.unit_round[u] and not _needs(reach, m, {c, x})]
+                    if 0 <= reach.unit_round[m] < reach.unit_round[u] and not needs(reach, m, {c, x})]
             if both:
                 out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
             elif placed and (again := _put_back(reach, u, c, x)) is not None:
                 out[c] = again
             elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
-                          and _in_box(reach, m, c) and not _needs(reach, m, {x})]:
+                          and _in_box(reach, m, c) and not needs(reach, m, {x})]:
                 out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
             elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
-                           and not _needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
+                           and not needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
                 out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             elif not (first and _there_first(reach, c, x)):
                 out.update(_worked_there(reach, u, c, x) or _from_kitchen_box(reach, u, c, x)
@@ -114,7 +114,7 @@ def made_in_plan(reach: Reachability, chosen: set[int], n: int, by: int) -> int:
     if reach.achiever[n] in chosen:
         return reach.achiever[n]
     took = {n, *ix.outputs[by]}
-    found = [m for m in ix.makers[n] if m in chosen and m != by and not _needs(reach, m, took)]
+    found = [m for m in ix.makers[n] if m in chosen and m != by and not needs(reach, m, took)]
     return min(found, key=lambda m: (reach.unit_round[m], ix.rank[m])) if found else reach.achiever[n]
 
 
@@ -135,7 +135,7 @@ def _worked_there(reach: Reachability, u: int, c: int, x: int, depth: int = WORK
     ix, held = reach.index, reach.index.nodes[x]
     mine = {o for o in ix.outputs[u] if reach.achiever[o] == u}  # what only `u` makes first
     for m in sorted(ix.makers[x], key=lambda k: (reach.unit_round[k], ix.rank[k])):
-        if m == u or reach.unit_round[m] < 0 or depth == WORKED_DEPTH and reach.unit_round[m] <= reach.unit_round[u] or _needs(
+        if m == u or reach.unit_round[m] < 0 or depth == WORKED_DEPTH and reach.unit_round[m] <= reach.unit_round[u] or needs(
                 reach, m, mine):  # one firing by the taker's round is the rules' above (c476cc6: not the same round)
             continue
         if _in_box(reach, m, c):
@@ -165,7 +165,7 @@ def _placed_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKE
         if m < 0 or c in ix.outputs[m]:
             return None
         both = [k for k in ix.makers[y] if k != m and c in ix.outputs[k]
-                and 0 <= reach.unit_round[k] < reach.unit_round[u] and not _needs(reach, k, {c, y})]
+                and 0 <= reach.unit_round[k] < reach.unit_round[u] and not needs(reach, k, {c, y})]
         if both:
             k = min(both, key=lambda k: (reach.unit_round[k], ix.rank[k]))
             return {y: k, c: k}
@@ -185,7 +185,7 @@ def _put_back(reach: Reachability, u: int, c: int, x: int) -> int | None:
     into a measuring cup. Tie-break: the earliest round, then FOON order (`rank`). O(makers x their chains)."""
     ix = reach.index
     again = [m for m in set(ix.makers[c]) & set(ix.makers[x])
-             if 0 <= reach.unit_round[m] < reach.unit_round[u] and _needs(reach, m, {x}) and not _needs(reach, m, {c})]
+             if 0 <= reach.unit_round[m] < reach.unit_round[u] and needs(reach, m, {x}) and not needs(reach, m, {c})]
     return min(again, key=lambda m: (reach.unit_round[m], ix.rank[m])) if again else None
 
 
@@ -204,7 +204,7 @@ def _held_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_
     y = c
     for _ in range(depth):
         found = [k for k in ix.makers[x] if y in ix.outputs[k] and 0 <= reach.unit_round[k] < reach.unit_round[u]
-                 and not _needs(reach, k, {x})]
+                 and not needs(reach, k, {x})]
         if found:
             return {x: min(found, key=lambda k: (reach.unit_round[k], ix.rank[k]))}
         m = reach.achiever[y]
@@ -265,7 +265,7 @@ def _in_box(reach: Reachability, m: int, c: int) -> bool:
     return any(ix.nodes[o].label == box.label and o in ix.inputs[reach.achiever[c]] for o in ix.outputs[m])
 
 
-def _needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
+def needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
     """Whether unit `u` needs one of `nodes` (ids), through first achievers: the hash browns' second mix makes
     `bowl (contains {potato mixture})` and the mixture with the egg, from the bowl the first mix leaves in that
     very node, so it cannot make that node for the unit that takes both."""

@@ -19,7 +19,9 @@ unfolding a delete-free plan backwards:
    into the container (`count_together`'s `first`: the universal scrambled eggs'
    pan from 0062's own pour, not 0056's) and of the plan taking makers it has
    (`in_plan`: `count_together.made_in_plan`), each counted after, so kept only
-   when it counts fewer (three plans at most: the counting at most triples).
+   when it counts fewer (three plans: the counting at most triples); and of each plan
+   with one needed node made by another of its makers that has fewer units and counts
+   fewer as it is (`count_plans._other_makers`), counted after those.
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -57,14 +59,14 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
 from ..model.where import short_path, source_where
 from .count_order import orders
+from .count_plans import delete_free_plan, delete_free_plans
 from .count_returns import with_returns
 from .count_reuse import reused
-from .count_together import AT_HAND, kitchen_held, made_in_plan, makers_together
+from .count_together import kitchen_held
 
 #: A unit's object roles, for counting what passes through each node.
 RolesOf = Callable[[FunctionalUnit], tuple[Role, ...]]
@@ -120,82 +122,12 @@ class InstanceCounts:
                        unfolded=unfolded if len(set(unfolded)) == len(unfolded) else ())
 
 
-def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
-                     together: bool = False, first: bool = False, placed: bool = False, in_plan: bool = False
-                     ) -> tuple[tuple[int, ...], ObjectNode] | None:
-    """A delete-free plan (unit indexes in firing order) for the candidate made in the fewest rounds.
-
-    Each needed node is made by its first achiever (`reachability`): following first achievers back never meets a
-    cycle and never pulls in another recipe's units the way crediting the latest maker can. None when no candidate
-    can be made. `together` (`relational`): a container's node and the node of what is in it that one unit takes are
-    made by one unit that makes both, when their first achievers differ and such a unit fires before it and needs
-    neither (`count_together`; `first`, `placed`: `makers_together`'s; `in_plan`: `_chosen`'s)."""
-    return delete_free_plans(foon, kitchen, candidates, together, ((first, in_plan),), placed)[0]
-
-
-def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], together: bool,
-                      ways: Sequence[tuple[bool, bool]], placed: bool = False) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
-    """`delete_free_plan` for each of `ways` (`first`, `in_plan`) over one fixpoint; `placed`: `makers_together`'s."""
-    reach = reachable(foon, kitchen, candidates)
-    made = [c for c in candidates if reach.can_make(c)]
-    if not made:
-        return (None,) * len(ways)
-    target = min(made, key=lambda c: (reach.round_of(c), c))
-    return tuple((_chosen(reach, target, together, first, placed, in_plan), target) for first, in_plan in ways)
-
-
-def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool, placed: bool = False,
-            in_plan: bool = False) -> tuple[int, ...]:
-    """`delete_free_plan`'s units, in firing order; `in_plan`: a node waits till the stack empties (`made_in_plan`)."""
-    ix = reach.index
-    chosen: set[int] = set()
-    seen: set[int] = set()
-    maker: dict[int, int] = {}  # node id -> the unit chosen to make it (`together`)
-    stack = [(ix.node_id[target], -1)] if target in ix.node_id else []  # (node id, the unit taking it)
-    waiting: list[tuple[int, int]] = []  # `in_plan`: nodes decided once the stack is empty, in the order met
-    while stack or waiting:
-        n, by = waiting.pop(0) if (late := not stack) else stack.pop()  # `late`: a node that waited, decided now
-        if n in seen or reach.node_round[n] == 0:
-            continue
-        if late:
-            maker.setdefault(n, made_in_plan(reach, chosen, n, by))
-        elif in_plan and n not in maker and by >= 0 and len(ix.makers[n]) > 1 and reach.achiever[n] not in chosen:
-            waiting.append((n, by))
-            continue
-        u = maker[n] = maker.get(n, reach.achiever[n])
-        if u == AT_HAND:  # a kitchen container holds it (`count_together.kitchen_held`): the kitchen's
-            continue
-        seen.add(n)
-        if u not in chosen:
-            chosen.add(u)
-            if together:
-                maker.update({k: v for k, v in makers_together(reach, u, first, placed).items() if k not in seen})
-            stack.extend((i, u) for i in ix.inputs[u])
-    return _in_order(reach, chosen, {n: u for n, u in maker.items() if n in seen})
-
-
 def _at_hand(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
     """The nodes `plan`'s units take that no unit of it makes and a kitchen container holds (`count_together.
     kitchen_held`, chosen `AT_HAND`): counted as the kitchen's, where the completion starts them. O(plan x inputs)."""
     made = {o for u in plan for o in foon.units[u].outputs}
     return frozenset(x for u in plan if any(i not in kitchen and i not in made for i in foon.units[u].inputs)
                      for x in kitchen_held(kitchen, foon.units[u]) if x not in made)
-
-
-def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) -> tuple[int, ...]:
-    """`chosen` in firing order, each after the units chosen to make its inputs (`made_by`: node id -> unit): a unit
-    `together` picks may fire in the round of the unit it makes a node for (the tomato soup's turn on)."""
-    out: list[int] = []
-    placed: set[int] = set()
-    waiting = [u for u in reach.fired if u in chosen]
-    while waiting:
-        ready = [u for u in waiting if all(made_by.get(n, u) in placed or made_by.get(n, u) == u
-                                           for n in reach.index.inputs[u])]
-        step = ready or waiting[:1]  # a cycle none of the rules makes: firing order
-        out.extend(step)
-        placed.update(step)
-        waiting = [u for u in waiting if u not in placed]
-    return tuple(out)
 
 
 def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], target: ObjectNode,
@@ -269,7 +201,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     stated = stated or {}
     overrides = overrides or {}
     kinds = ((False, False), (True, False), (False, True)) if together else ((False, False),)  # (first, in_plan)
-    found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed)
+    swapped: list[tuple[int, ...]] = []  # `relational`: a needed node made by another of its makers, kept when fewer
+    found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed, swapped if together else None)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)
@@ -286,6 +219,13 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
         for again in dict.fromkeys(o[0] for o in other if o is not None and o != found):  # kept when fewer
             more = ways_of(again)
+            plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
+        def as_is(plan: tuple[int, ...]) -> int:  # objects `plan` counts unfolded as it is
+            at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), found[1], roles_of)
+            return at.total() + new.total()
+        base = as_is(found[0]) if swapped else 0
+        for alt in [p for p in swapped if len(p) < len(found[0]) and as_is(p) < base]:  # fewer units, fewer objects
+            more = ways_of(alt)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
         homes = [kitchen | _at_hand(foon, p, kitchen) for p in plans]  # with what kitchen containers hold
