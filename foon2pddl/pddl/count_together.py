@@ -52,15 +52,15 @@ def makers_together(reach: Reachability, u: int, first: bool = False, placed: bo
             both = [m for m in set(ix.makers[c]) & set(ix.makers[x])
                     if 0 <= reach.unit_round[m] < reach.unit_round[u] and not needs(reach, m, {c, x})]
             if both:
-                out[c] = out[x] = min(both, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+                out[c] = out[x] = _earliest(reach, both)
             elif placed and (again := _put_back(reach, u, c, x)) is not None:
                 out[c] = again
             elif tied := [m for m in ix.makers[x] if 0 <= reach.unit_round[m] < reach.unit_round[u]
                           and _in_box(reach, m, c) and not needs(reach, m, {x})]:
-                out[x] = min(tied, key=lambda m: (reach.unit_round[m], ix.rank[m]))
+                out[x] = _earliest(reach, tied)
             elif after := [k for k in ix.makers[c] if 0 <= reach.unit_round[k] <= reach.unit_round[u] and k != u
                            and not needs(reach, k, {c}) and _from_held(reach, k, c, x)]:
-                out[c] = min(after, key=lambda k: (reach.unit_round[k], ix.rank[k]))
+                out[c] = _earliest(reach, after)
             elif not (first and _there_first(reach, c, x)):
                 out.update(_worked_there(reach, u, c, x) or _from_kitchen_box(reach, u, c, x)
                            or placed and (_placed_back(reach, u, c, x) or _held_back(reach, u, c, x)) or {})
@@ -115,7 +115,7 @@ def made_in_plan(reach: Reachability, chosen: set[int], n: int, by: int) -> int:
         return reach.achiever[n]
     took = {n, *ix.outputs[by]}
     found = [m for m in ix.makers[n] if m in chosen and m != by and not needs(reach, m, took)]
-    return min(found, key=lambda m: (reach.unit_round[m], ix.rank[m])) if found else reach.achiever[n]
+    return _earliest(reach, found) if found else reach.achiever[n]
 
 
 #: How many units deep `_worked_there` follows a held node worked where it lies.
@@ -167,7 +167,7 @@ def _placed_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKE
         both = [k for k in ix.makers[y] if k != m and c in ix.outputs[k]
                 and 0 <= reach.unit_round[k] < reach.unit_round[u] and not needs(reach, k, {c, y})]
         if both:
-            k = min(both, key=lambda k: (reach.unit_round[k], ix.rank[k]))
+            k = _earliest(reach, both)
             return {y: k, c: k}
         y = _back(reach, m, held)
         if y < 0:
@@ -186,7 +186,7 @@ def _put_back(reach: Reachability, u: int, c: int, x: int) -> int | None:
     ix = reach.index
     again = [m for m in set(ix.makers[c]) & set(ix.makers[x])
              if 0 <= reach.unit_round[m] < reach.unit_round[u] and needs(reach, m, {x}) and not needs(reach, m, {c})]
-    return min(again, key=lambda m: (reach.unit_round[m], ix.rank[m])) if again else None
+    return _earliest(reach, again) if again else None
 
 
 def _held_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_DEPTH) -> dict[int, int] | None:
@@ -206,7 +206,7 @@ def _held_back(reach: Reachability, u: int, c: int, x: int, depth: int = WORKED_
         found = [k for k in ix.makers[x] if y in ix.outputs[k] and 0 <= reach.unit_round[k] < reach.unit_round[u]
                  and not needs(reach, k, {x})]
         if found:
-            return {x: min(found, key=lambda k: (reach.unit_round[k], ix.rank[k]))}
+            return {x: _earliest(reach, found)}
         m = reach.achiever[y]
         if m < 0:
             return None
@@ -263,6 +263,12 @@ def _in_box(reach: Reachability, m: int, c: int) -> bool:
     if c in ix.inputs[m]:
         return not any(ix.nodes[o].label == box.label for o in ix.outputs[m])
     return any(ix.nodes[o].label == box.label and o in ix.inputs[reach.achiever[c]] for o in ix.outputs[m])
+
+
+def _earliest(reach: Reachability, units: list[int]) -> int:
+    """The unit of `units` (not empty) that fires first: the earliest round, then FOON order (`rank`), every rule's
+    tie-break. O(units)."""
+    return min(units, key=lambda m: (reach.unit_round[m], reach.index.rank[m]))
 
 
 def needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
