@@ -5,6 +5,7 @@ order; and the plans with one needed node made by another of its makers (`_other
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Mapping, Sequence
 
 from ..analysis.reachability import Reachability, reachable
@@ -54,13 +55,13 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
     seen: set[int] = set()
     maker: dict[int, int] = dict(preset or {})  # node id -> the unit chosen to make it (`together`, `preset`)
     stack = [(ix.node_id[target], -1)] if target in ix.node_id else []  # (node id, the unit taking it)
-    waiting: list[tuple[int, int]] = []  # `in_plan`: nodes decided once the stack is empty, in the order met
+    waiting: deque[tuple[int, int]] = deque()  # `in_plan`: nodes decided once the stack is empty, in the order met
     while stack or waiting:
-        n, by = waiting.pop(0) if (late := not stack) else stack.pop()  # `late`: a node that waited, decided now
+        n, by = waiting.popleft() if (late := not stack) else stack.pop()  # `late`: a node that waited, decided now
         if n in seen or reach.node_round[n] == 0:
             continue
-        if late:
-            maker.setdefault(n, made_in_plan(reach, chosen, n, by))
+        if late and n not in maker:  # decided now; a maker `together` chose stands (then it never waits below)
+            maker[n] = made_in_plan(reach, chosen, n, by)
         elif in_plan and n not in maker and by >= 0 and len(ix.makers[n]) > 1 and reach.achiever[n] not in chosen:
             waiting.append((n, by))
             continue
