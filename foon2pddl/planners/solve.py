@@ -163,7 +163,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any
     cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
     `MIN_REST`). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
-    reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so.
+    reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
+    replay rejects, or none, leaves the outcome naming the units out of holder reach).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -232,8 +233,13 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 
     def reached(out: PlanOutcome) -> PlanOutcome:  # out of holder reach: counted wide, with makers by holder reach
         other = compiled(False, placed=True) if out.result.planner == UNREACHED else None
-        return out if other is None else _noted(planned(other, rest(), cpu_limit), f"objects: {OUT_OF_REACH}, "
-                                                f"{len(other.task.instances)}")
+        if other is None:
+            return out
+        last = planned(other, rest(), cpu_limit)
+        # a last try, kept only when it solves: a plan the replay rejects (an invalid plan is an `error`) or no plan
+        # leaves the outcome that names the units out of holder reach
+        return _noted(last, f"objects: {OUT_OF_REACH}, {len(other.task.instances)}") \
+            if last.status == PlanStatus.SOLVED else out
 
     if not small.narrowed:
         return reached(planned(small, time_limit, cpu_limit))
