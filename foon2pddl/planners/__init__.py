@@ -17,7 +17,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .result import PlanResult
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action", "cleanup", "commands", "decode",
-           "copies", "executable", "external", "fd", "fd_reuse", "fd_speedups", "foon_places", "instance_physical",
+           "copies", "executable", "external", "fd", "fd_reuse", "fd_speedups", "foon_places", "goal_replanner", "instance_physical",
            "physical_replay", "process", "registry", "result", "sas", "solve", "trace_check", "translate_server", "translator", "up_engine"]
 
 #: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
