@@ -121,7 +121,7 @@ SALT_BOWL = n("bowl", contains("egg white and yolk", "milk", "salt"))
 SAUCE = n("cheese sauce", inside("bowl"))
 
 
-def _macaroni() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
+def macaroni() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
     """The muffin's blend (0: first in FOON order, so the beaten egg's first maker), the crack, the omelette's mix
     beating the egg in its bowl, the macaroni's pour of the milk into that bowl, its sprinkle of salt and its stir."""
     muffin = n("bowl", contains("butter", "egg white and yolk", "sugar"))
@@ -144,7 +144,7 @@ def _macaroni() -> tuple[tuple[FunctionalUnit, ...], frozenset]:
 
 
 def test_the_held_node_is_made_back_along_the_containers_chain():
-    units, kitchen = _macaroni()
+    units, kitchen = macaroni()
     first = delete_free_plan(Foon(units), kitchen, (SAUCE,), together=True)[0]
     assert {0, 2} & set(first) == {0}, first  # the muffin's blend: its egg is in another bowl
     placed = delete_free_plan(Foon(units), kitchen, (SAUCE,), together=True, placed=True)[0]
