@@ -485,3 +485,38 @@ def test_the_blocking_reason_counts_the_missing_nodes_it_leaves_out():
     done = retrieve_constrained(net, kit, goal, constraints_of(without=["cilantro"]))
     assert "even without the constraints" in done.result.detail
     assert done.result.detail.endswith("; missing (no unit makes them): " + listed)
+
+
+# -- stop 57's re-pass -------------------------------------------------------------------------------------
+
+LETTUCE = ROOT / "tests" / "data" / "scene" / "dressed_lettuce.foon"
+DRESSED = "bowl: contains {dressing, lettuce}"
+
+
+@pytest.mark.parametrize("given", [
+    ("--instances", "bowl=1"),  # the count option, on the recipe that whisks the dressing while the lettuce waits
+    ("--kitchen", "one_bowl.txt"),  # the same count in a kitchen file
+])
+def test_a_relational_plan_short_of_stated_objects_names_the_step(tmp_path, given):
+    """`plan` (relational, the default) with one bowl stated where the recipe needs two at once said only "the
+    planner found no plan for the relational encoding ... `--encoding tree`"; the `instances` encoding and a scene
+    name the count. The reason names the step that needs the object the stated count leaves out."""
+    (tmp_path / "one_bowl.txt").write_text("1 x bowl: empty\nbottle: contains {olive oil}\nolive oil: in [bottle]\n"
+                                           "bottle: contains {vinegar}\nvinegar: in [bottle]\nwhisk\nlettuce: chopped\n")
+    option, value = given
+    value = tmp_path / value if option == "--kitchen" else value
+    r = run("plan", LETTUCE, "--goal", DRESSED, option, value)
+    assert r.exit_code == 1, r.output
+    assert ("reason: FOON's semantics makes the goal, but too few physical objects are given: step 4 (pick-and-place) "
+            "needs one more bowl in 'bowl (empty)': the kitchen has 1 there, none free") in r.stderr
+    assert "the planner found no plan" not in r.stderr
+    # the oracle: one more bowl plans
+    assert run("plan", LETTUCE, "--goal", DRESSED, "--instances", "bowl=2").exit_code == 0
+
+
+def test_a_relational_plan_with_no_object_of_a_needed_label_names_it():
+    """`--instances knife=0` (or `0 x knife` in a kitchen file): the guacamole cannot be cut."""
+    r = run("plan", "--goal", "guacamole", "--instances", "knife=0")
+    assert r.exit_code == 1, r.output
+    assert "too few physical objects are given: step " in r.stderr and "needs one more knife in 'knife'" in r.stderr
+

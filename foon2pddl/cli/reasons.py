@@ -2,7 +2,8 @@
 
 A reason never contradicts the planner's status: when FOON's own semantics makes the
 goal, the cause is the encoding's extra conditions (for `instances`, counts stated
-below what the plan uses), never "the planner gave up". A hint names a network only
+below what the plan uses; for `relational` and a scene, the step of FOON's task tree that
+runs out of the stated objects), never "the planner gave up". A hint names a network only
 when the command it suggests succeeds there: EXP by FOON's fixpoint on FOON-EXP, GEN
 by the lifted planner (what `plan --network gen` runs), not by the category-level
 fixpoint, which also "makes" a dish from other categories' ingredients.
@@ -58,6 +59,11 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
         short = short_step(foon, kitchen, goal)
         if short:
             return f"FOON's semantics makes the goal, but the scene has too few objects: {short}", True
+    if encoding == "relational" and (kitchen.stated_counts() or instances):
+        short = short_step(foon, kitchen, goal, dict(instances))
+        if short:
+            return ("FOON's semantics makes the goal, but too few physical objects are given: " + short
+                    + " (raise the count, or drop it to let the count be derived)"), True
     if encoding == "instances":
         from ..pddl.instance_counts import count_shortfalls
 
@@ -125,16 +131,23 @@ def failure_reason(status, encoding: str, task, foon, kitchen, goal, cons,
     return (foreign if makes else fails), makes
 
 
-def short_step(foon, kitchen, goal) -> str | None:
+def short_step(foon, kitchen, goal, counts: dict[str, int] | None = None) -> str | None:
     """Which step of FOON's task tree runs out of a kitchen's counted objects (`planners.executable.schedule`:
-    `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree."""
+    `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree.
+
+    `counts` (label -> N, as `--instances`): only the stated counts and these limit the schedule, every other
+    kitchen node has more objects than the tree has inputs, so a shortfall is always one the user stated.
+    Without `counts`, a node the kitchen gives no count has one object (a scene's objects are all counted)."""
     from ..planners.executable import Verdict, schedule
     from ..retrieval.api import retrieve
 
     tree = retrieve(foon, kitchen, goal).tree
     if tree is None:
         return None
-    done = schedule(tree, kitchen.nodes, stated=kitchen.stated_counts())
+    if counts is not None:
+        plenty = 1 + sum(len(u.inputs) for u in tree.units)  # more than the tree's steps can ever draw
+        counts = {n.label: plenty for u in tree.units for n in u.inputs} | counts
+    done = schedule(tree, kitchen.nodes, counts, stated=kitchen.stated_counts())
     return done.message if done.verdict is Verdict.SHORT else None
 
 
