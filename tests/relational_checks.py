@@ -38,6 +38,28 @@ def compiled_counts(monkeypatch) -> list[str]:
     return seen
 
 
+def planned_counts(monkeypatch) -> list[str]:
+    """The counts `planners.solve.plan` hands on to be planned from now on (holder reach first, then a planner), in
+    order, named as `compiled_counts` names them."""
+    names = compiled_counts(monkeypatch)
+    made: dict[int, tuple[str, object]] = {}  # id of a compiled task -> its count's name (and the task, kept alive)
+    compiling, dropping = solve.compile_goal, solve.drop_unbindable
+    seen: list[str] = []
+
+    def compiled(*args, **options):
+        out = compiling(*args, **options)
+        made[id(out.task)] = (names[-1], out.task)
+        return out
+
+    def planned(task):
+        seen.append(made[id(task)][0])
+        return dropping(task)
+
+    monkeypatch.setattr(solve, "compile_goal", compiled)
+    monkeypatch.setattr(solve, "drop_unbindable", planned)
+    return seen
+
+
 def clean_unit_plan(units, kitchen_nodes, goal_node: ObjectNode, **options):
     """`clean_plan` of `goal_node` over a network of `units` from a kitchen of `kitchen_nodes` (`options`: `plan`'s)."""
     return clean_plan(Foon(tuple(units)), Kitchen(frozenset(kitchen_nodes)),
