@@ -520,3 +520,16 @@ def test_a_relational_plan_with_no_object_of_a_needed_label_names_it():
     assert r.exit_code == 1, r.output
     assert "too few physical objects are given: step " in r.stderr and "needs one more knife in 'knife'" in r.stderr
 
+
+
+def test_a_network_on_standard_input_may_be_the_json_export():
+    """`foon2pddl merge --format json | foon2pddl retrieve - --goal guacamole` said `<stdin>:1: error: expected an
+    'O', 'S' or 'M' line`, while the same JSON in a `.json` file reads (docs/json-schema.md): `-` reads either."""
+    exported = run("merge", "--format", "json")
+    assert exported.exit_code == 0
+    r = CliRunner().invoke(main, ["retrieve", "-", "--goal", "guacamole"], input=exported.stdout)
+    assert r.exit_code == 0, r.output
+    assert "task tree for guacamole (contains {avocado, cilantro, lime juice, onion, salt, tomato}, in [bowl]): " \
+           "20 units" in r.stdout
+    bad = CliRunner().invoke(main, ["stats", "-"], input='{"format": "foon2pddl.foon", "version": 1, "units": [1]}')
+    assert bad.exit_code == 2 and bad.stderr.startswith("<stdin>:1: error: units[0]")

@@ -16,7 +16,8 @@ from .parser import ParseResult, parse_file, parse_text, read_text
 FOON_SUFFIXES = (".txt", ".foon")
 
 
-#: PATHS entry that reads one FOON text from standard input, and the name its errors give it.
+#: PATHS entry that reads one network from standard input (FOON text, or the JSON export: text starting with
+#: `{`, which no FOON line does), and the name its errors give it.
 STDIN = "-"
 STDIN_NAME = "<stdin>"
 _FOON_LINE = re.compile(r"(?:[OSM]\d*\t|//)")
@@ -55,7 +56,7 @@ def plainly_not_foon(text: str) -> str:
 
 
 def read_network(path: Path) -> ParseResult:
-    """One network file: FOON text, or the JSON export (`*.json`, see jsonio); `-`: FOON text on standard input.
+    """One network file: FOON text, or the JSON export (`*.json`, see jsonio); `-`: either on standard input.
     A file that does not parse and is of another kind (a rates file, a list of objects) says so, as it is named
     on standard input too."""
     stdin = sys.stdin.read() if str(path) == STDIN else None
@@ -63,6 +64,10 @@ def read_network(path: Path) -> ParseResult:
         from .jsonio import read_json
 
         return ParseResult(read_json(path))
+    if stdin is not None and stdin.lstrip("\ufeff \t\r\n").startswith("{"):
+        from .jsonio import parse_json
+
+        return ParseResult(parse_json(stdin, STDIN_NAME))
     name = STDIN_NAME if stdin is not None else str(path)
     try:
         return parse_file(path) if stdin is None else parse_text(stdin, name)
