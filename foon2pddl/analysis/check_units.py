@@ -9,7 +9,7 @@ import networkx as nx
 
 from ..model.foon import Foon, ObjectNode
 from ..model.kitchen import default_kitchen, is_base_node
-from ..model.words import count, plural
+from ..model.words import count, first_of, plural
 from .defects import Defect, DefectKind, defect, mentions
 from .index import index_of
 from .reachability import UNREACHED, reachable
@@ -19,8 +19,7 @@ SHOW = 4
 
 
 def _names(nodes: list[ObjectNode]) -> str:
-    text = "; ".join(n.describe() for n in nodes[:SHOW])
-    return text + (f"; ... ({len(nodes)} in all)" if len(nodes) > SHOW else "")
+    return first_of(nodes, SHOW, ObjectNode.describe)
 
 
 def self_supporting(foon: Foon) -> list[Defect]:

@@ -9,6 +9,7 @@ import click
 from ..analysis.check import check, counts, has_errors
 from ..io.files import load
 from ..io.raw_objects import scan_paths
+from ..model.words import first_of
 from . import main
 from .options import emit, output_option, paths_argument
 from .progress import inputs, slow_step
@@ -35,9 +36,8 @@ def format_defects(defects, total: dict[str, int]) -> str:
     lines = []
     for d in defects:
         where = str(d.places[0]) if d.places else "<network>:0"
-        more = [str(p) for p in d.places[1:]]
-        extra = d.total_places - len(d.places)
-        also = f" (also at {', '.join(more)}{f' and {extra} more' if extra > 0 else ''})" if more else ""
+        more = d.places[1:]
+        also = f" (also at {first_of(more, len(more), sep=', ', total=d.total_places - 1)})" if more else ""
         lines.append(f"{where}: {d.severity}: {d.kind}: {d.message}{also}")
     lines.append("defects: " + ", ".join(f"{k} {n}" for k, n in total.items()))
     return "\n".join(lines) + "\n"

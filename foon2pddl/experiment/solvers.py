@@ -28,6 +28,7 @@ from ..errors import UsageError
 from ..model.foon import ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import validate
+from ..model.words import first_of
 from ..status import cell_status
 from .networks import NETWORKS, NetworkView, lifted_networks
 from .records import CellStatus
@@ -122,7 +123,7 @@ def _native_outcome(result, kitchen_nodes, seconds: float, per_item: int = 1) ->
     check = validate(result.tree, kitchen_nodes)
     times["validate"] = time.perf_counter() - t0
     if not check.ok:
-        return Outcome(CellStatus.ERROR, "tree does not validate: " + "; ".join(check.problems[:3]), times,
+        return Outcome(CellStatus.ERROR, "tree does not validate: " + first_of(check.problems, 3), times,
                        len(result.tree), None, False, result.proven_optimal, False, *_bound(result))
     return Outcome(CellStatus.SOLVED, result.detail, times, len(result.tree), None, True, result.proven_optimal,
                    True, *_bound(result), **physical(result.tree, kitchen_nodes, per_item, times))

@@ -28,6 +28,7 @@ from ..model.foon import (
     make_source,
     make_unit,
 )
+from ..model.words import first_of
 from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state, plain_state
 
 
@@ -358,10 +359,8 @@ class _Reader:
         if not self.units:  # reported at the last line of the file (1 when empty)
             last = max(lineno - final_newline, 1)
             if self.motion_cache and self.warnings:  # a recipe whose every block was skipped: say why
-                first = self.warnings[0]
-                more = f" (and {len(self.warnings) - 1} more)" if len(self.warnings) > 1 else ""
-                raise FoonSyntaxError(self.path, last, "no functional units in file: every block was skipped: "
-                                                       f"line {first.line}: {first.message}{more}")
+                said = first_of(self.warnings, 1, lambda w: f"line {w.line}: {w.message}")
+                raise FoonSyntaxError(self.path, last, f"no functional units in file: every block was skipped: {said}")
             objects = bool(self.node_cache)  # objects and no motion: a kitchen or goal file (O/S lines)
             raise FoonSyntaxError(self.path, last, "no functional units in file" + (
                 ": it lists objects and no motion ('M') line, as a kitchen or a goal file does (docs/format.md), "

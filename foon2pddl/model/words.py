@@ -33,12 +33,17 @@ def count(n: int, noun: str, *, grouped: bool = False) -> str:
     return f"{n:,} {plural(n, noun)}" if grouped else f"{n} {plural(n, noun)}"
 
 
-def first_of(items: Sequence[T], limit: int, show: Callable[[T], str] = str) -> str:
-    """`items` joined by `; `, only the first `limit` of them (each as `show` writes it: only those shown are
-    written), then `; ... (N more)` when some are left out.
+def first_of(items: Sequence[T], limit: int, show: Callable[[T], str] = str, *, sep: str = "; ",
+             total: int | None = None) -> str:
+    """`items` joined by `sep`, only the first `limit` of them (each as `show` writes it: only those shown are
+    written), then `... (N more)` when some are left out. `total`: how many there are in all, when `items` is
+    already a cut (a defect keeps its first places and their count).
 
     >>> first_of(["a", "b", "c"], 2)
     'a; b; ... (1 more)'
+    >>> first_of(["a", "b"], 5, sep=", ", total=4)
+    'a, b, ... (2 more)'
     """
-    more = f"; ... ({len(items) - limit} more)" if len(items) > limit else ""
-    return "; ".join(map(show, items[:limit])) + more
+    shown = items[:limit]
+    left = (len(items) if total is None else total) - len(shown)
+    return sep.join(map(show, shown)) + (f"{sep}... ({left} more)" if left > 0 else "")

@@ -21,7 +21,7 @@ from ..model.kitchen import Kitchen
 from ..model.levels import project_node
 from ..model.physical import PhysicalTrace
 from ..model.tasktree import TaskTree, Validation
-from ..model.words import count
+from ..model.words import count, first_of
 from ..pddl.compile import DEFAULT_ENCODING, compile_goal
 from ..pddl.constraints import GoalExcluded
 from ..pddl.holder_reach import drop_unreachable
@@ -106,7 +106,7 @@ class PlanOutcome:
         if self.decode_error:
             return self.decode_error
         if self.result.solved and self.decoded is not None and not self.decoded.ok:
-            return "plan does not validate: " + "; ".join(self.decoded.problems[:3])
+            return "plan does not validate: " + first_of(self.decoded.problems, 3)
         return "" if self.result.solved else self.result.message
 
 

@@ -23,6 +23,7 @@ from ..model.containment import Containment, containment_of, count_inference
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec
 from ..model.tasktree import TaskTree, validate
+from ..model.words import first_of
 from ..status import BatchStatus, batch_status
 from .api import retrieve
 from .explain import explain_unreachable
@@ -89,7 +90,7 @@ def _one(foon, kitchen, entry: GoalEntry, resolve, mode: Containment, reach, met
     units = len(result.tree.units) - count_inference(result.tree.units)
     inferred = tuple(n.describe() for n in check.inferred)
     if not check.ok:
-        return GoalRow(goal.describe(), where, BatchStatus.INVALID, clock() - t0, "; ".join(check.problems[:3]),
+        return GoalRow(goal.describe(), where, BatchStatus.INVALID, clock() - t0, first_of(check.problems, 3),
                        units, inferred, result.probability, result.tree)
     return GoalRow(goal.describe(), where, BatchStatus.SOLVED, clock() - t0, result.detail, units, inferred,
                    result.probability, result.tree)
