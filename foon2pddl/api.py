@@ -30,7 +30,7 @@ from pathlib import Path
 from .errors import UsageError
 from .generalize.categories import CategoryIndex
 from .generalize.network import DEFAULT_NETWORK, NetworkKind, get_network, network_view
-from .io.inputs import Network
+from .io.inputs import Network, flat_paths
 from .io.inputs import load_kitchen as _load_kitchen
 from .io.inputs import load_network as _load_network
 from .io.kitchen_files import read_node_lines
@@ -90,14 +90,21 @@ def constraints_of(*, without_motions: Iterable[str] = (), without: Iterable[str
         raise UsageError(str(exc)) from None
 
 
-def load_network(*paths: str | Path) -> Network:
+def load_network(*paths: str | Path | Iterable[str | Path]) -> Network:
     """The universal FOON of FOON files and directories (merged, duplicates removed); none: the embedded example.
+
+    What the command line's PATHS take: each argument a file or directory, or a list (tuple) of them, so
+    `load_network("a.txt", "recipes/")` and `load_network(["a.txt", "recipes/"])` are one network. A missing
+    path is a FoonInputError; anything else not a path a UsageError naming it.
 
     >>> net = load_network()
     >>> len(net.foon.units), net.is_example
     (101, True)
+    >>> load_network([3])
+    Traceback (most recent call last):
+    foon2pddl.errors.UsageError: load_network: 3 is not a path (give files and directories, or lists of them)
     """
-    return _load_network(paths)
+    return _load_network(flat_paths(paths, "load_network"))
 
 
 def load_kitchen(network: Network, path: str | Path | None = None, level: int = 3) -> Kitchen:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -18,8 +19,6 @@ def net():
 
 
 def test_the_package_namespace_is_the_api():
-    from pathlib import Path
-
     package = Path(fp.__file__).parent
     modules = {p.stem for p in package.glob("*.py")} | {p.name for p in package.iterdir() if p.is_dir()}
     public = {n for n in dir(fp) if not n.startswith("_")}
@@ -32,6 +31,22 @@ def test_missing_paths_are_input_errors(net, tmp_path):
         fp.load_network(tmp_path / "nope.txt")
     with pytest.raises(FoonInputError, match="no such file"):
         fp.load_kitchen(net, tmp_path / "kitchen.txt")
+
+
+def test_load_network_takes_what_the_clis_paths_take(tmp_path):
+    """Issue 24's last pass: `fp.load_network(["dir"])` raised a TypeError. A path, a directory, several, or a
+    list of them load the same network; anything else is a UsageError naming what was given."""
+    data = Path(__file__).parent / "data" / "foon-subgraphs"
+    one, two = sorted(data.iterdir())[:2]
+    units = len(fp.load_network(one, two).foon.units)
+    assert len(fp.load_network([one, two]).foon.units) == units
+    assert len(fp.load_network([str(one)], (str(two),)).foon.units) == units
+    assert len(fp.load_network([data]).foon.units) == len(fp.load_network(str(data)).foon.units)
+    with pytest.raises(FoonInputError, match="no such file"):
+        fp.load_network([tmp_path / "nope.txt"])
+    for bad in (3, [one, 3], [[one]]):
+        with pytest.raises(UsageError, match="load_network: .* is not a path"):
+            fp.load_network(bad)
 
 
 def test_retrieve_under_constraints_and_kinds_matches_the_cli(net):

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import os
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -21,6 +22,17 @@ if TYPE_CHECKING:  # kitchens and goals load when used: `stats` and `merge` need
 def example_path(name: str = "example") -> Path:
     """Path inside the embedded example: `example` (directory of recipes) or `example_kitchen.txt`."""
     return Path(str(resources.files("foon2pddl") / "data" / name))
+
+
+def flat_paths(given: Iterable[object], who: str) -> tuple[Path, ...]:
+    """`given` as paths, each a path or a list (tuple) of paths, flattened one level (the API's call with a
+    list, as the CLI's PATHS take several); UsageError naming `who` and the item for anything else. O(paths)."""
+    def path(x: object) -> Path:
+        if isinstance(x, (str, os.PathLike)):
+            return Path(x)
+        raise UsageError(f"{who}: {x!r} is not a path (give files and directories, or lists of them)")
+
+    return tuple(path(x) for g in given for x in (g if isinstance(g, (list, tuple)) else (g,)))
 
 
 @dataclass(frozen=True)
