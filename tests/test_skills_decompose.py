@@ -76,6 +76,25 @@ def test_two_hands_are_named_and_the_goal_empties_both():
     assert plan.ok
 
 
+def test_with_two_hands_every_skill_line_names_its_hand():
+    """Issue 24's last pass: `plan --skills --hands 2` printed `pick knife_1 from workspace` with no hand, so a
+    reader could not tell which hand does what (the text named only a hand other than the first)."""
+    from foon2pddl.skills.recipe import skill_plan_recipe
+    from foon2pddl.skills.report import skill_plan_text
+
+    t = kitchen_trace(CHOP, POUR)
+    plan = decompose(t, shipped_table(), shipped_domain(), Robot.of(hands=2))
+    assert plan.ok, plan.replay.problems
+    said = [line.strip() for line in skill_plan_text(plan, Robot.of(hands=2)).splitlines()
+            if line.startswith("   ") and not line.strip().startswith("FOON:")]
+    assert len(said) == len(plan.calls)
+    assert all(line.endswith(f"({c.hand.replace('_', ' ')})") for line, c in zip(said, plan.calls, strict=True)), said
+    recipe = skill_plan_recipe(plan, t, hands=2)
+    assert recipe.count("(hand ") == len(plan.calls), recipe
+    one = decompose(t, shipped_table(), shipped_domain())
+    assert "(hand" not in skill_plan_text(one, Robot()) + skill_plan_recipe(one, t)  # one hand: nothing to tell apart
+
+
 def test_micro_problem_holds_the_step_objects_and_their_holders_only():
     t = kitchen_trace(CHOP, POUR)
     problem = micro_problem(t, 1, "pour", Naming(t, shipped_domain(), 1), shipped_domain())

@@ -17,6 +17,7 @@ from ..io.recipe_words import recipe_text
 from ..model.physical import PhysicalTrace
 from ..model.words import count
 from .decompose import SkillCall, SkillPlan, StepStatus
+from .report import with_hand
 
 __all__ = ["object_names", "skill_plan_recipe", "skill_sentence"]
 
@@ -79,6 +80,6 @@ def skill_plan_recipe(plan: SkillPlan, trace: PhysicalTrace, hands: int = 1) -> 
         for c in step.calls:
             holds = bool(c.objects) and any(s.holder == c.objects[0] and s.exists for s in before.values())
             text = skill_sentence(c, params.get(c.skill, ()), names, holds)
-            said.append(text if hands == 1 else f"{text} ({c.hand.replace('_', ' ')})")
+            said.append(with_hand(text, c, hands))
         lines.append("   robot: " + ("; ".join(said) if said else "nothing to do"))
     return "\n".join(lines) + "\n"

@@ -17,13 +17,18 @@ from ..model.words import count
 from .decompose import MacroSkills, SkillCall, SkillPlan, StepStatus
 from .profile import Robot
 
-__all__ = ["call_text", "micro_files", "skill_plan_json", "skill_plan_text"]
+__all__ = ["call_text", "micro_files", "skill_plan_json", "skill_plan_text", "with_hand"]
 
 _REL = {"pick": "from", "take-out": "out of", "place": "on", "put-in": "into"}
 
 
-def call_text(call: SkillCall, params: tuple[str, ...] = ()) -> str:
-    """`pick knife_1 from workspace`, `chop onion_1 with knife_1`: a skill in words."""
+def with_hand(text: str, call: SkillCall, hands: int) -> str:
+    """`text` (a skill in words), then the hand that does it when the robot has several: `... (hand 2)`."""
+    return text if hands == 1 else f"{text} ({call.hand.replace('_', ' ')})"
+
+
+def call_text(call: SkillCall, params: tuple[str, ...] = (), hands: int = 1) -> str:
+    """`pick knife_1 from workspace`, `chop onion_1 with knife_1`: a skill in words (`with_hand`: `hands`)."""
     objs, shape = list(call.objects), params[1:]
     if len(shape) != len(objs):
         text = " ".join([call.skill, *objs])
@@ -39,7 +44,7 @@ def call_text(call: SkillCall, params: tuple[str, ...] = ()) -> str:
         text = f"{call.skill} {objs[0]} {_REL.get(call.skill, 'at')} {objs[1]}"
     else:
         text = " ".join([call.skill, *objs])
-    return text if call.hand == "hand_1" else f"{text} ({call.hand})"
+    return with_hand(text, call, hands)
 
 
 def _header(step: MacroSkills) -> str:
@@ -52,7 +57,8 @@ def _header(step: MacroSkills) -> str:
 
 
 def skill_plan_text(plan: SkillPlan, robot: Robot | None = None) -> str:
-    """The plan for a reader: a summary line, then each macro step with its skills."""
+    """The plan for a reader: a summary line, then each macro step with its skills (each
+    naming its hand when the robot has several)."""
     robot = robot or Robot()
     params = {a.name: tuple(v for v, _ in a.params) for a in plan.domain.actions}
     verdict = "valid" if plan.replay.ok else "INVALID: " + "; ".join(plan.replay.problems)
@@ -63,7 +69,7 @@ def skill_plan_text(plan: SkillPlan, robot: Robot | None = None) -> str:
         lines.append(_header(step))
         if step.what:
             lines.append(f"   FOON: {step.what}")
-        lines += [f"   {call_text(c, params.get(c.skill, ()))}" for c in step.calls]
+        lines += [f"   {call_text(c, params.get(c.skill, ()), robot.hands)}" for c in step.calls]
     return "\n".join(lines) + "\n"
 
 
