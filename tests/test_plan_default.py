@@ -87,7 +87,7 @@ def test_a_scene_kitchen_plans_with_its_ids_without_naming_the_encoding():
     scene = SHARED / "scene" / "whipped_cream_scene.json"
     result = run("--kitchen", str(scene), "--goal", "whipped cream: whipped, in [bowl]")
     assert result.exit_code == 0, result.output
-    assert "pour sugar_1 from fridge_1 into mixing_bowl_1" in result.stdout
+    assert "take sugar_1 out of fridge_1, pour it into mixing_bowl_1" in result.stdout
 
 
 def test_a_batch_plans_the_relational_encoding():

@@ -68,7 +68,9 @@ def test_plan_cli_names_the_scene_ids_in_text_and_json():
     args = ["plan", "--kitchen", str(WHIPPED_SCENE), "--encoding", "relational", "--goal", WHIPPED_GOAL]
     text = CliRunner().invoke(main, args)
     assert text.exit_code == 0, text.output
-    assert "pour sugar_1 from fridge_1 into mixing_bowl_1" in text.stdout
+    # FOON's pour names no source for the sugar: the fridge is where it is kept, not what it is poured from
+    assert "take sugar_1 out of fridge_1, pour it into mixing_bowl_1" in text.stdout
+    assert "pour heavy_cream_2 (a portion of cream_1) from carton_1 into mixing_bowl_1" in text.stdout
     assert "scoop whipped_cream_1 from mixing_bowl_1 into bowl_1 with spatula_1" in text.stdout
     assert "matches no node" not in text.stderr  # the fridge and the counter are places, not stray items
     data = json.loads(CliRunner().invoke(main, [*args, "--format", "json"]).stdout)
@@ -91,7 +93,7 @@ def test_ids_that_are_no_pddl_names_are_sanitized_in_pddl_and_shown_as_given(tmp
     data = json.loads(result.stdout)
     assert data["validation"]["relational"]["ok"]
     texts = [s["text"] for s in data["relational"]["steps"]]
-    assert "pour sucre \u00e9 1 from (define fridge) into mixing_bowl_1" in texts
+    assert "take sucre \u00e9 1 out of (define fridge), pour it into mixing_bowl_1" in texts
     assert "scoop whipped_cream_1 from mixing_bowl_1 into Bowl #1 with spatula_1" in texts
     assert {o["id"] for o in data["relational"]["initial"]} >= set(rename.values())
     assert any(a.split()[1:] and "bowl_1" in a for a in data["plan"])  # the raw plan: PDDL names
@@ -243,3 +245,34 @@ def test_the_instances_object_line_says_what_moves_from_which_bowl_into_which():
     lines = result.stdout.splitlines()
     assert "5. pour lettuce (chopped) from the bowl (contains {lettuce}) into the bowl (contains {dressing})" in lines
     assert any(line.startswith("5. pour lettuce_1 from bowl_1 into bowl_2: ") for line in lines), result.stdout
+
+
+@pytest.mark.parametrize(("relation", "taken"), [("in", "take sugar_1 out of fridge_1"), ("on", "take sugar_1 off shelf_1")])
+def test_an_object_moved_from_a_holder_its_node_does_not_name_is_taken_from_it_first(relation, taken):
+    """Issue 24's last pass: the account said `pour sugar_1 from fridge_1 into mixing_bowl_1`; a cook does not pour
+    from a fridge. A holder the object's node does not name (storage, a shelf) is where it is kept: the account takes
+    it out first; a holder its node names (`in [bag]`) is poured from."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.foon import FunctionalUnit, Motion
+    from foon2pddl.model.physical import Binding, ObjectState, Relation, TraceStep
+    from foon2pddl.pddl.relational_replay import step_words
+
+    store = "fridge_1" if relation == "in" else "shelf_1"
+    rel = Relation.IN if relation == "in" else Relation.ON
+    sugar, bowl = n("sugar", "granulated"), n("bowl", "empty")
+    after_sugar, after_bowl = n("sugar", inside("bowl")), n("bowl", contains("sugar"))
+    step = TraceStep(0, FunctionalUnit((bowl, sugar), Motion("pour"), (after_bowl, after_sugar)),
+                     (Binding("bowl_1", bowl, after_bowl), Binding("sugar_1", sugar, after_sugar)), ())
+    before = {"bowl_1": ObjectState("bowl_1", bowl), "sugar_1": ObjectState("sugar_1", sugar, store, rel),
+              store: ObjectState(store, n(store[:-2]))}
+    after = {**before, "bowl_1": ObjectState("bowl_1", after_bowl),
+             "sugar_1": ObjectState("sugar_1", after_sugar, "bowl_1", Relation.IN)}
+    assert step_words(step, before, after) == f"{taken}, pour it into bowl_1"
+    # in a bag its node names, the sugar is poured from the bag
+    bagged = n("sugar", inside("bag"))
+    step = TraceStep(0, FunctionalUnit((bowl, bagged), Motion("pour"), (after_bowl, after_sugar)),
+                     (Binding("bowl_1", bowl, after_bowl), Binding("sugar_1", bagged, after_sugar)), ())
+    before = {**before, "sugar_1": ObjectState("sugar_1", bagged, "bag_1", Relation.IN),
+              "bag_1": ObjectState("bag_1", n("bag"))}
+    assert step_words(step, before, {**after, "bag_1": before["bag_1"]}) == "pour sugar_1 from bag_1 into bowl_1"
