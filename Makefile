@@ -19,18 +19,16 @@ system-deps:
 	else echo "not root on Debian: install wordnet-base wordnet-sense-index graphviz yourself (or nltk.download('wordnet'))"; fi
 
 # Each step says what it does; pip's output goes to $(VENV)/pip-install.log (both pips: one run ticks across
-# the seam), a line per phase to the terminal.
+# the seam), a line per phase to the terminal. pip_phases says a step's line itself (--first), at once: its
+# first tick then comes TICK s after that line, not after an interpreter's start under load.
 $(STAMP): pyproject.toml
 	@echo "make install: 1/4 system packages (WordNet 3.0, Graphviz) ..."
 	@$(MAKE) -s system-deps
-	@echo "make install: 2/4 a virtual environment in $(VENV) ..."
 	@mkdir -p $(VENV)
-	@$(PYTHON) tools/pip_phases.py --log $(VENV)/venv.log --who "make install" --phase "creating a virtual environment in $(VENV)" $(PYTHON) -m venv $(VENV)
-	@echo "make install: 3/4 foon2pddl and its dependencies (pip; a few minutes on a fresh machine) ..."
-	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log sh -c "$(PY) -m pip install --progress-bar off --upgrade pip && $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'"
-	@echo "make install: 4/4 compiling foon2pddl's bytecode ..."
+	@$(PYTHON) tools/pip_phases.py --log $(VENV)/venv.log --first "make install: 2/4 a virtual environment in $(VENV) ..." --who "make install" --phase "creating a virtual environment in $(VENV)" $(PYTHON) -m venv $(VENV)
+	@$(PY) tools/pip_phases.py --log $(VENV)/pip-install.log --first "make install: 3/4 foon2pddl and its dependencies (pip; a few minutes on a fresh machine) ..." sh -c "$(PY) -m pip install --progress-bar off --upgrade pip && $(PY) -m pip install --progress-bar off -e '.[test,gen,experiment]'"
 	@# bytecode, as a wheel install writes it (PYTHONDONTWRITEBYTECODE would leave none)
-	@$(PY) tools/pip_phases.py --log $(VENV)/compileall.log --who "make install" --phase "compiling foon2pddl's bytecode" $(PY) -m compileall -q foon2pddl
+	@$(PY) tools/pip_phases.py --log $(VENV)/compileall.log --first "make install: 4/4 compiling foon2pddl's bytecode ..." --who "make install" --phase "compiling foon2pddl's bytecode" $(PY) -m compileall -q foon2pddl
 	@touch $(STAMP)
 	@echo "make install: done; run .venv/bin/foon2pddl (README.md)"
 

@@ -90,8 +90,8 @@ def test_a_long_phase_says_it_is_still_running(tmp_path, monkeypatch, capsys, pi
 def test_make_install_says_each_step_and_runs_pip_through_the_phases():
     recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
     steps = recipe.splitlines()
-    said = [s for s in steps if s.startswith("\t@echo ")]
-    assert len(said) >= 4, recipe  # system packages, the environment, the packages, bytecode
+    said = [s for s in steps if s.startswith("\t@echo ") or "--first " in s]  # make's own line, or the script's
+    assert len(said) >= 5, recipe  # system packages, the environment, the packages, bytecode, done
     pips = [s for s in steps if "pip install" in s]
     assert pips and all("pip_phases.py" in s and " -q " not in s for s in pips), pips
 
@@ -173,3 +173,24 @@ def test_the_pip_upgrade_and_the_install_are_one_run_of_the_phases():
     recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
     runs = [s for s in recipe.splitlines() if "pip_phases.py" in s and "pip install" in s]
     assert len(runs) == 1 and "--upgrade pip" in runs[0] and "-e '.[test,gen,experiment]'" in runs[0], runs
+
+
+def test_each_step_of_make_install_is_said_by_the_process_that_runs_it():
+    """Issue 24's last pass: `make install`'s first tick came 2.08 s after the step's line at load 6: make echoed
+    the step, then the script started (an interpreter under load) and ticked only TICK s after its own start.
+    The script says the step's line itself, at once, so its first tick comes TICK s after that line."""
+    recipe = re.search(r"^\$\(STAMP\):.*?\n((?:\t.*\n)+)", (ROOT / "Makefile").read_text(), re.M).group(1)
+    lines = [s.strip() for s in recipe.splitlines() if not s.strip().startswith("@#")]
+    runs = [k for k, s in enumerate(lines) if "pip_phases.py" in s]
+    assert len(runs) == 3 and all("--first" in lines[k] for k in runs), lines
+    assert not any(lines[k - 1].startswith("@echo") for k in runs), lines
+
+
+def test_the_first_line_comes_before_the_command_runs(tmp_path, monkeypatch, capsys, pip_phases):
+    monkeypatch.setattr(pip_phases, "TICK", 3600.0)
+    mark = tmp_path / "ran"
+    quiet = [sys.executable, "-c", f"open({str(mark)!r}, 'w').close()"]
+    assert pip_phases.main(["--log", str(tmp_path / "venv.log"), "--first", "make install: 2/4 a virtual "
+                            "environment ...", "--who", "make install", "--phase", "creating it", *quiet]) == 0
+    assert capsys.readouterr().err.splitlines() == ["make install: 2/4 a virtual environment ..."]
+    assert mark.exists()

@@ -2,15 +2,17 @@
 """`make install`'s pip step: a line per phase on stderr, where `pip -q` said nothing for minutes and
 plain pip prints hundreds of lines.
 
-    python3 tools/pip_phases.py --log FILE PIP_COMMAND...
-    python3 tools/pip_phases.py --log FILE --who "make install" --phase TEXT COMMAND...
+    python3 tools/pip_phases.py --log FILE [--first LINE] PIP_COMMAND...
+    python3 tools/pip_phases.py --log FILE [--first LINE] --who "make install" --phase TEXT COMMAND...
 
 Runs the pip command with its output going to FILE, and says on stderr when pip enters each phase
 (preparing the project's build, collecting the dependencies, building, installing), with the packages
 counted; a phase still running after `TICK` seconds says so again, with the seconds since it began (on a terminal: one line, redrawn). pip's
 `ERROR` lines are shown as they come; when pip fails the last `TAIL` lines of its output follow. The exit
 status is pip's. `--phase TEXT` runs a command that has no pip phases (`python3 -m venv`) as one phase doing
-TEXT, its lines said under `--who`'s name. Standard library only: it runs before the virtual environment holds
+TEXT, its lines said under `--who`'s name. `--first LINE` is said at once, before the command starts: the step's
+own line (`make install: 2/4 ...`), so the first tick comes TICK s after it (an `echo` in the Makefile, then this
+interpreter's start under load, then TICK s left 2.08 s without a line at load 6). Standard library only: it runs before the virtual environment holds
 anything else.
 """
 
@@ -99,8 +101,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--log", required=True, help="file receiving pip's whole output")
     parser.add_argument("--who", default="pip", help="the name its lines start with")
     parser.add_argument("--phase", default="", help="what a command without pip's phases does (one phase)")
+    parser.add_argument("--first", default="", help="a line said at once, before the command starts")
     parser.add_argument("command", nargs=argparse.REMAINDER, help="the pip command")
     args = parser.parse_args(argv)
+    if args.first:
+        sys.stderr.write(args.first + "\n")
+        sys.stderr.flush()
     phases = Phases(sys.stderr, sys.stderr.isatty(), args.who)
     phases.phase = args.phase or "starting"  # unsaid: only that it still runs (pip's imports, before its first line)
     stop = threading.Event()
