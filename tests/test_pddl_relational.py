@@ -355,7 +355,8 @@ def test_every_example_dish_has_a_relational_plan_that_passes_the_replay():
 
 def test_the_task_says_why_it_has_several_objects_of_a_label():
     from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
-    from foon2pddl.pddl.instance_counts import count_reasons, derive_counts
+    from foon2pddl.pddl.count_reasons import count_reasons
+    from foon2pddl.pddl.instance_counts import derive_counts
 
     net = load_network([])
     foon, kitchen = net.at(3), load_kitchen(None, net, 3)

@@ -72,7 +72,8 @@ def test_an_object_left_in_a_kitchen_node_that_names_its_holder_does_not_stand_f
 
 
 def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves():
-    from foon2pddl.pddl.instance_counts import InstanceCounts, count_reasons
+    from foon2pddl.pddl.count_reasons import count_reasons
+    from foon2pddl.pddl.instance_counts import InstanceCounts
 
     units = _units(sifted=False)  # the scoop takes an empty cup; fired 3 times on 2 cups, one came back
     counts = InstanceCounts(((EMPTY, 2),), (), ((1, 3),), reused=True)
@@ -94,7 +95,8 @@ def test_the_count_note_tells_a_foon_exp_copy_from_its_original():
     from dataclasses import replace
 
     from foon2pddl.model.foon import Source
-    from foon2pddl.pddl.instance_counts import InstanceCounts, count_reasons
+    from foon2pddl.pddl.count_reasons import count_reasons
+    from foon2pddl.pddl.instance_counts import InstanceCounts
 
     scoop = _units(sifted=False)[1]
     original = replace(scoop, sources=(Source("0026-cheddar_frittata.txt", 1),))

@@ -68,8 +68,9 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.pairing import unit_roles
 from .costs import goal_cost, unit_cost
+from .count_reasons import count_reasons
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
-from .instance_counts import InstanceCounts, count_reasons, derive_counts
+from .instance_counts import InstanceCounts, derive_counts
 from .instance_lanes import lanes
 from .names import NameTable
 from .prune import restoring_units

@@ -46,6 +46,7 @@ from ..model.kitchen import Kitchen
 from ..model.physical import Relation
 from ..model.places import describes_contents, place_of, places
 from . import relational_touched
+from .count_reasons import count_reasons
 from .encode_instances import (
     GOAL_OBJECT,
     IS,
@@ -63,7 +64,6 @@ from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, he
 from .holder_words import mismatches, reported
 from .holders import Fate, attached_gaps, list_gaps, on_parts
 from .input_stitch import with_stitches
-from .instance_counts import count_reasons
 from .kitchen_pairs import read_pairs
 from .list_arrivals import read_arrivals
 from .list_brought import read_brought
