@@ -533,3 +533,16 @@ def test_a_network_on_standard_input_may_be_the_json_export():
            "20 units" in r.stdout
     bad = CliRunner().invoke(main, ["stats", "-"], input='{"format": "foon2pddl.foon", "version": 1, "units": [1]}')
     assert bad.exit_code == 2 and bad.stderr.startswith("<stdin>:1: error: units[0]")
+
+
+def test_an_instances_count_beats_the_kitchen_count_in_the_relational_reason(tmp_path):
+    """`--instances` is stated after the kitchen's count and wins over it (`instance_counts.derive_counts`: override,
+    then the kitchen's count): with `1 x bowl` in the kitchen file, `bowl=2` and `lettuce=0`, the reason named the
+    kitchen's one bowl at step 4, which the option had raised, not the lettuce the option left out."""
+    (tmp_path / "one_bowl.txt").write_text("1 x bowl: empty\nbottle: contains {olive oil}\nolive oil: in [bottle]\n"
+                                           "bottle: contains {vinegar}\nvinegar: in [bottle]\nwhisk\nlettuce: chopped\n")
+    r = run("plan", LETTUCE, "--goal", DRESSED, "--kitchen", tmp_path / "one_bowl.txt",
+            "--instances", "bowl=2", "--instances", "lettuce=0")
+    assert r.exit_code == 1, r.output
+    assert "too few physical objects are given: step " in r.stderr and "needs one more lettuce in " in r.stderr
+    assert "one more bowl" not in r.stderr
