@@ -5,6 +5,8 @@ problems cut at 3 with no count at all (a plan failing on 7 steps read as failin
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from node_words import n
 
@@ -23,6 +25,25 @@ def test_first_of_cuts_with_a_separator_and_counts_from_a_total():
     # a list already cut elsewhere (a defect keeps its first places and how many there are)
     assert first_of(["a", "b"], 5, sep=", ", total=7) == "a, b, ... (5 more)"
     assert first_of(["a", "b"], 5, total=2) == "a; b"
+
+
+def test_the_count_note_counts_the_takers_it_leaves_out():
+    from foon2pddl.pddl.count_reasons import count_reasons
+    from foon2pddl.pddl.instance_counts import InstanceCounts
+
+    empty = n("cup", "empty")
+    units = tuple(FunctionalUnit((empty, n("salt")), Motion(m), (n("cup", "full"),)) for m in ("scoop", "fill"))
+    counts = InstanceCounts(((empty, 2),), (), ((0, 1), (1, 1)))
+    (note,) = count_reasons(Foon(units), counts, frozenset({empty, n("salt")}), shown=1)
+    assert "fires scoop, ... (1 more), and no unit puts one back" in note, note
+
+
+def test_an_actions_comment_counts_the_sources_it_leaves_out():
+    from foon2pddl.pddl.encoding import unit_comment
+
+    unit = replace(_BROKEN[0], sources=tuple(Source(f"r{i}.txt", i + 1) for i in range(5)))
+    first, _ = unit_comment(unit, 7)
+    assert first == "unit 7: chop from r0.txt:1, r1.txt:2, r2.txt:3, ... (2 more)"
 
 
 def test_a_defect_counts_the_nodes_it_leaves_out():

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 16 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon-5c5f0a9f)
+(define (domain universal_foon-3ac230d8)
   (:requirements :strips :typing)
   (:types
     object_node - object
@@ -100,7 +100,7 @@
   )
 
   (:action functional_unit_23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

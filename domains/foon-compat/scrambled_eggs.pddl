@@ -1,7 +1,7 @@
 ; foon2pddl, encoding foon-compat, level 3: 32 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain universal_foon-af98fa93)
+(define (domain universal_foon-626ff753)
   (:requirements :strips :typing)
   (:types
     object_node - object
@@ -177,7 +177,7 @@
   )
 
   (:action functional_unit_23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -2,10 +2,10 @@
 ; goal: guacamole (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 18 (avocado 1, bowl 1, cilantro 1, cutting board 5, fork 1, guacamole 1, juicer 1, knife 1, lime 1, lime juice 1, onion 1, salt 1, spoon 1, tomato 1)
-; objects: 5 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3, pick-and-place at 07-guacamole.foon:52 (+1 more), and no unit puts one back
+; objects: 5 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, pick-and-place at 07-guacamole.foon:3, pick-and-place at 07-guacamole.foon:52, ... (1 more), and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
-(define (domain foon-instances-cabd809a)
+(define (domain foon-instances-4079d6e7)
   (:requirements :strips :typing)
   (:types
     physical-object - object

@@ -4,7 +4,7 @@
 ; instances: 17 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 1, milk 1, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
-(define (domain foon-instances-0b67f835)
+(define (domain foon-instances-c999fb47)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -124,7 +124,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - physical-object)
     :precondition (and

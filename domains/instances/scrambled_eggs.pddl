@@ -4,7 +4,7 @@
 ; instances: 14 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 1, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
-(define (domain foon-instances-7b7ae683)
+(define (domain foon-instances-93c19915)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -206,7 +206,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - physical-object)
     :precondition (and

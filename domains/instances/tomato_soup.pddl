@@ -5,7 +5,7 @@
 ; objects: 2 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, and no unit puts one back
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
-(define (domain foon-instances-1adf9735)
+(define (domain foon-instances-4d625a69)
   (:requirements :strips :typing)
   (:types
     physical-object - object
@@ -77,7 +77,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - physical-object)
     :precondition (and

@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 17 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 2, milk 2, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
-(define (domain foon-relational-ea4fe03a)
+(define (domain foon-relational-c1573858)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -132,7 +132,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - stove)
     :precondition (and

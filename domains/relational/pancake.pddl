@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 19 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
-(define (domain foon-relational-5a1a3fb3)
+(define (domain foon-relational-d6420c02)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -120,7 +120,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - stove)
     :precondition (and

@@ -2,7 +2,7 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
-(define (domain foon-relational-b5990441)
+(define (domain foon-relational-4ab76182)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -202,7 +202,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - stove)
     :precondition (and

@@ -4,7 +4,7 @@
 ; instances: 17 (basil 1, bowl 1, cutting board 2, immersion blender 1, knife 1, ladle 1, olive oil 2, onion 1, pot 1, stove 1, tomato 1, tomato soup 1, vegetable broth 2, wooden spoon 1)
 ; objects: 2 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
-(define (domain foon-relational-ebfae865)
+(define (domain foon-relational-bdac14ca)
   (:requirements :strips :typing :conditional-effects)
   (:types
     physical-object - object
@@ -81,7 +81,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters (?stove - stove)
     :precondition (and

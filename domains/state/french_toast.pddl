@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 20 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state-0471a1d7)
+(define (domain foon-state-2627af69)
   (:requirements :strips)
   (:constants
     baking_powder
@@ -158,7 +158,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 17 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state-2e7cc5a5)
+(define (domain foon-state-6184c1c2)
   (:requirements :strips)
   (:constants
     baking_powder
@@ -115,7 +115,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding state, level 3: 51 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-state-205726d4)
+(define (domain foon-state-c7b2eac4)
   (:requirements :strips)
   (:constants
     avocado
@@ -230,7 +230,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 15 of 101 units after relevance pruning
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree-67099421)
+(define (domain foon-tree-36ae5d94)
   (:requirements :strips)
   (:predicates
     (bowl_contains_cinnamon_egg_milk_vanilla_extract)  ; bowl (contains {cinnamon, egg, milk, vanilla extract})
@@ -102,7 +102,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

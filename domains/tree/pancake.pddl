@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 16 of 101 units after relevance pruning
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree-e21f0f4a)
+(define (domain foon-tree-1ea55475)
   (:requirements :strips)
   (:predicates
     (baking_powder_in_mixing_bowl)  ; baking powder (in [mixing bowl])
@@ -94,7 +94,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 32 of 101 units after relevance pruning
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree-2e8fc415)
+(define (domain foon-tree-d0948af9)
   (:requirements :strips)
   (:predicates
     (avocado_halved_on_cutting_board)  ; avocado (halved, on [cutting board])
@@ -171,7 +171,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

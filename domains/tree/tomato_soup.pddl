@@ -1,7 +1,7 @@
 ; foon2pddl, encoding tree, level 3: 17 of 101 units after relevance pruning
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
-(define (domain foon-tree-5531a350)
+(define (domain foon-tree-4f6538c2)
   (:requirements :strips)
   (:predicates
     (basil_fresh)  ; basil (fresh)
@@ -47,7 +47,7 @@
   )
 
   (:action turn_on_u23
-    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, +1 more
+    ; unit 23: turn on from 03-scrambled_eggs.foon:80, 04-pancakes.foon:85, 05-french_toast.foon:92, ... (1 more)
     ; turn on: stove (off) -> stove (on)
     :parameters ()
     :precondition (and

@@ -10,6 +10,7 @@ from __future__ import annotations
 from ..model.foon import Foon, ObjectNode
 from ..model.pairing import unit_roles
 from ..model.where import short_path, source_where
+from ..model.words import first_of
 from .instance_counts import InstanceCounts, RolesOf
 
 __all__ = ["count_reasons"]
@@ -33,6 +34,12 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
                 takers.setdefault(r.before, []).append((u, times))
             else:
                 readers.add(r.before)
+
+    def taking(ut: tuple[int, int]) -> str:  # a unit that takes one, where, how many times
+        unit, t = foon.units[ut[0]], ut[1]
+        src = f" at {source_where(unit.source, short_path)}" if unit.source else ""
+        return f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else "")
+
     out = []
     for node, k in sorted(given.items(), key=lambda x: (x[0].label, x[0])):
         if k < 2:
@@ -42,15 +49,9 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
             out.append(f"{k} x {node.describe()}: {k} given, where FOON's unfolded plan takes {taken} (a stated count, "
                        "restoring units' peak, or the relational encoding's own counting)")
             continue
-        where = []
-        for u, t in takers.get(node, ())[:shown]:
-            unit = foon.units[u]
-            src = f" at {source_where(unit.source, short_path)}" if unit.source else ""
-            where.append(f"{unit.motion.label}{src}" + (f" x{t}" if t > 1 else ""))
-        more = len(takers.get(node, ())) - shown
         again = taken + (node in readers) - k
         out.append(f"{k} x {node.describe()}: FOON's plan, unfolded, takes one out of that state each time it fires "
-                   + ", ".join(where) + (f" (+{more} more)" if more > 0 else "")
+                   + first_of(takers.get(node, []), shown, taking, sep=", ")
                    + (f"; {again} of those takings use one a unit put back in it" if again > 0
                       else ", and no unit puts one back")
                    + ("; one more stays for a unit that only reads it" if node in readers else ""))

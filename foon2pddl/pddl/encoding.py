@@ -21,7 +21,7 @@ from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import check_level, project, project_node
 from ..model.where import short_path, source_where
-from ..model.words import count
+from ..model.words import count, first_of
 from .costs import check_costs, goal_cost, unit_cost
 from .names import NameTable
 from .prune import relevant_units
@@ -125,11 +125,9 @@ def select(inp: LevelInputs, prune: bool) -> Selection:
 
 def unit_comment(unit: FunctionalUnit, index: int) -> tuple[str, ...]:
     """Comment lines of a unit's action: index, motion, source recipe files and lines, what it does."""
-    places = [source_where(s, short_path) for s in unit.sources[:3]]
-    if len(unit.sources) > 3:
-        places.append(f"+{len(unit.sources) - 3} more")
+    places = first_of(unit.sources, 3, lambda s: source_where(s, short_path), sep=", ")
     motion = unit.motion.label + ("*" if unit.motion.composite else "")
-    first = f"unit {index}: {motion}" + (f" from {', '.join(places)}" if places else "")
+    first = f"unit {index}: {motion}" + (f" from {places}" if places else "")
     text = unit.describe()
     if len(text) > DESCRIBE_MAX:
         text = text[: DESCRIBE_MAX - 3] + "..."

@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain universal_foon-b56ff802)
+  (:domain universal_foon-159f1fed)
   (:init
     (is_available bowl_empty)
     (is_available bread_sliced)

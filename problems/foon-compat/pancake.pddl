@@ -2,7 +2,7 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
-  (:domain universal_foon-5c5f0a9f)
+  (:domain universal_foon-3ac230d8)
   (:init
     (is_available baking_powder_powder)
     (is_available butter_solid)

@@ -2,7 +2,7 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
-  (:domain universal_foon-af98fa93)
+  (:domain universal_foon-626ff753)
   (:init
     (is_available avocado_whole)
     (is_available black_pepper_ground)

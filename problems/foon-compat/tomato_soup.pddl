@@ -2,7 +2,7 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
-  (:domain universal_foon-2666a12f)
+  (:domain universal_foon-6ea87927)
   (:init
     (is_available basil_fresh)
     (is_available bowl_empty)

@@ -5,7 +5,7 @@
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_french_toast)
-  (:domain foon-instances-9f85c715)
+  (:domain foon-instances-373cb431)
   (:objects
     bowl_1 - physical-object
     bread_1 - physical-object

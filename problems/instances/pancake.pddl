@@ -5,7 +5,7 @@
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_pancake)
-  (:domain foon-instances-0b67f835)
+  (:domain foon-instances-c999fb47)
   (:objects
     baking_powder_1 - physical-object
     butter_1 - physical-object

@@ -5,7 +5,7 @@
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_scrambled_eggs)
-  (:domain foon-instances-7b7ae683)
+  (:domain foon-instances-93c19915)
   (:objects
     black_pepper_1 - physical-object
     bowl_1 - physical-object

@@ -6,7 +6,7 @@
 ; lanes: each instance changes state only as in the unfolded plan
 ; subtypes written as static predicates type_<T> (flat types, for planners without a type hierarchy)
 (define (problem make_tomato_soup)
-  (:domain foon-instances-1adf9735)
+  (:domain foon-instances-4d625a69)
   (:objects
     basil_1 - physical-object
     bowl_1 - physical-object

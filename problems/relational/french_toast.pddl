@@ -4,7 +4,7 @@
 ; instances: 17 (bowl 1, bread 1, butter 1, cinnamon 1, custard 1, egg 1, fork 1, french toast 1, frying pan 1, maple syrup 2, milk 2, plate 1, spatula 1, stove 1, vanilla extract 1)
 ; label mismatch: 05-french_toast.foon:175: plate lists maple syrup, which the unit puts on [french toast]
 (define (problem make_french_toast)
-  (:domain foon-relational-ea4fe03a)
+  (:domain foon-relational-c1573858)
   (:objects
     bowl_1 - bowl
     bread_1 - bread

@@ -4,7 +4,7 @@
 ; instances: 19 (baking powder 1, butter 1, egg 1, flour 1, frying pan 1, ladle 1, maple syrup 2, milk 2, mixing bowl 1, pancake 1, pancake batter 1, plate 1, salt 1, spatula 1, stove 1, sugar 1, whisk 1)
 ; label mismatch: 04-pancakes.foon:178: plate lists maple syrup, which the unit puts on [pancake]
 (define (problem make_pancake)
-  (:domain foon-relational-5a1a3fb3)
+  (:domain foon-relational-d6420c02)
   (:objects
     baking_powder_1 - baking_powder
     butter_1 - butter

@@ -3,7 +3,7 @@
 ; kitchen: example_kitchen.txt (51 nodes)
 ; instances: 15 (black pepper 1, bowl 1, butter 1, egg 1, egg mixture 1, fork 1, frying pan 1, milk 2, plate 1, salt 1, scrambled eggs 1, spatula 1, stove 1, whisk 1)
 (define (problem make_scrambled_eggs)
-  (:domain foon-relational-b5990441)
+  (:domain foon-relational-4ab76182)
   (:objects
     black_pepper_1 - black_pepper
     bowl_1 - bowl

@@ -5,7 +5,7 @@
 ; objects: 2 x cutting board (empty): FOON's plan, unfolded, takes one out of that state each time it fires pick-and-place at 06-tomato_soup.foon:3, pick-and-place at 06-tomato_soup.foon:42, and no unit puts one back
 ; label mismatch: 06-tomato_soup.foon:212: bowl lists basil, which the unit puts on [tomato soup]
 (define (problem make_tomato_soup)
-  (:domain foon-relational-ebfae865)
+  (:domain foon-relational-bdac14ca)
   (:objects
     basil_1 - basil
     bowl_1 - bowl

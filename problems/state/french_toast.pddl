@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain foon-state-0471a1d7)
+  (:domain foon-state-2627af69)
   (:init
     (available baking_powder)
     (available bowl)

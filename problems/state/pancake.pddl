@@ -2,7 +2,7 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
-  (:domain foon-state-2e7cc5a5)
+  (:domain foon-state-6184c1c2)
   (:init
     (available baking_powder)
     (available bowl)

@@ -2,7 +2,7 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
-  (:domain foon-state-205726d4)
+  (:domain foon-state-c7b2eac4)
   (:init
     (available avocado)
     (available baking_powder)

@@ -2,7 +2,7 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
-  (:domain foon-state-2173096e)
+  (:domain foon-state-50517ce2)
   (:init
     (available basil)
     (available bowl)

@@ -2,7 +2,7 @@
 ; goal: french toast (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_french_toast)
-  (:domain foon-tree-67099421)
+  (:domain foon-tree-36ae5d94)
   (:init
     (bowl_empty)
     (bread_sliced)

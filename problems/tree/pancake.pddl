@@ -2,7 +2,7 @@
 ; goal: pancake (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_pancake)
-  (:domain foon-tree-e21f0f4a)
+  (:domain foon-tree-1ea55475)
   (:init
     (baking_powder_powder)
     (butter_solid)

@@ -2,7 +2,7 @@
 ; goal: scrambled eggs (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_scrambled_eggs)
-  (:domain foon-tree-2e8fc415)
+  (:domain foon-tree-d0948af9)
   (:init
     (avocado_whole)
     (black_pepper_ground)

@@ -2,7 +2,7 @@
 ; goal: tomato soup (1 candidate node)
 ; kitchen: example_kitchen.txt (51 nodes)
 (define (problem make_tomato_soup)
-  (:domain foon-tree-5531a350)
+  (:domain foon-tree-4f6538c2)
   (:init
     (basil_fresh)
     (bowl_empty)
