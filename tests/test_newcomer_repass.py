@@ -546,3 +546,16 @@ def test_an_instances_count_beats_the_kitchen_count_in_the_relational_reason(tmp
     assert r.exit_code == 1, r.output
     assert "too few physical objects are given: step " in r.stderr and "needs one more lettuce in " in r.stderr
     assert "one more bowl" not in r.stderr
+
+
+@pytest.mark.parametrize(("goal", "said"), [
+    ("onion: choped", "state 'choped' is on no produced 'onion' node (close: chopped)"),
+    ("guacamole: in [bowel]", "state 'in [bowel]' is on no produced 'guacamole' node (close: in [bowl])"),
+])
+def test_a_goal_state_typed_slightly_wrong_names_the_close_state(goal, said):
+    """`plan --goal "onion: choped"` listed eight produced state combinations and left the reader to spot
+    `chopped` among them; a label typed wrong gets `close matches:`. A state typed wrong gets them too."""
+    r = run("plan", "--goal", goal)
+    assert r.exit_code == 2
+    assert said in r.stderr and "produced states include: " in r.stderr
+    assert "Traceback" not in r.output

@@ -11,6 +11,7 @@ reaches the goal.
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from ..errors import UsageError
@@ -105,6 +106,20 @@ def label_hints(label: str, foon: Foon, limit: int = 5) -> list[str]:
     return close[:limit]
 
 
+def state_hints(wanted: Iterable[State], nodes: Iterable[ObjectNode]) -> str:
+    """For each wanted state that none of `nodes` (one label's produced nodes) has, its close matches among
+    theirs (`'choped'` -> `chopped`, `in [bowel]` -> `in [bowl]`): `state 'choped' is on no such node (close:
+    chopped); `, "" when every wanted state occurs. difflib over the states as written; O(states^2) at worst."""
+    nodes = list(nodes)
+    known = sorted({s.describe() for n in nodes for s in n.states})
+    label = nodes[0].label if nodes else ""
+    out = ""
+    for text in sorted({s.describe() for s in wanted} - set(known)):
+        close = difflib.get_close_matches(text, known, n=3, cutoff=0.6)
+        out += f"state {text!r} is on no produced {label!r} node" + (f" (close: {', '.join(close)})" if close else "") + "; "
+    return out
+
+
 def spec_of_node(node: ObjectNode) -> GoalSpec:
     """The goal that asks for exactly this node."""
     return GoalSpec(node.label, node.states)
@@ -155,7 +170,8 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None, *, listin
     if not found:
         known = sorted({", ".join(s.describe() for s in n.states) for n in same_label})[:8]
         raise UsageError(
-            f"no produced {spec.label!r} node is in states {spec.describe()!r}; produced states include: "
+            f"no produced {spec.label!r} node is in states {spec.describe()!r}; {state_hints(want, same_label)}"
+            "produced states include: "
             + "; ".join(f"({k})" for k in known),
         )
     return Goal(spec, tuple(sorted(found)), level)
