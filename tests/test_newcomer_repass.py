@@ -573,3 +573,24 @@ def test_retrieve_json_says_where_a_goal_it_cannot_make_goes():
     page = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
     assert ("a goal the kitchen cannot make prints no JSON (exit 1, the reason on stderr); `--format jsonl` gives its "
             "row, `status` and `reason`, for one goal too") in page
+
+
+def test_scene_md_says_which_scene_objects_the_compiled_problem_declares(tmp_path):
+    """scene.md said the relational task's `:init` is the scene, "with `(in h x)` / `(on h x)` for every `in`/`on`";
+    `compile --kitchen whipped_cream_scene.json --encoding relational` wrote a problem with five objects, no fridge,
+    no counter and no holder fact (docs/pddl.md, "Objects the problem leaves out"); `--no-prune` writes them all.
+    The page says so, and both halves hold."""
+    page = " ".join((ROOT / "docs" / "scene.md").read_text().split())
+    assert ("the PDDL problem `compile` writes declares only the objects an action can touch (the whipped cream's: "
+            "`bowl_1`, `mixing_bowl_1`, `sugar_1` and the two the plan makes), with their facts") in page
+    scene = ROOT / "tests" / "data" / "scene" / "whipped_cream_scene.json"
+    goal = "whipped cream: whipped, in [bowl]"
+    for extra, out in (((), "pruned"), (("--no-prune",), "whole")):
+        r = run("compile", "--kitchen", scene, "--goal", goal, "--encoding", "relational", *extra, "-o", tmp_path / out)
+        assert r.exit_code == 0, r.output
+    pruned = (tmp_path / "pruned" / "problem.pddl").read_text()
+    objects = pruned.split("(:objects")[1].split(")")[0].split()
+    assert [o for o in objects if o != "-"][::2] == ["bowl_1", "mixing_bowl_1", "sugar_1", "heavy_cream_2",
+                                                      "whipped_cream_1"]
+    whole = (tmp_path / "whole" / "problem.pddl").read_text()
+    assert "(in fridge_1 sugar_1)" not in pruned and "(in fridge_1 sugar_1)" in whole
