@@ -594,3 +594,15 @@ def test_scene_md_says_which_scene_objects_the_compiled_problem_declares(tmp_pat
                                                       "whipped_cream_1"]
     whole = (tmp_path / "whole" / "problem.pddl").read_text()
     assert "(in fridge_1 sugar_1)" not in pruned and "(in fridge_1 sugar_1)" in whole
+
+
+def test_retrieval_md_says_what_a_compile_rows_units_count(tmp_path):
+    """`compile --goals FILE -o DIR` printed `compiled 37 ... guacamole` beside `plan`'s `solved 20`: its `units` are
+    the compiled task's unit actions (`compile --goal guacamole` says `37 unit actions`), retrieval.md said only
+    "functional units". The page says what a `compile` row counts, and it is what `compile` says for one goal."""
+    (tmp_path / "goals.txt").write_text("guacamole\n")
+    row = json.loads(run("compile", "--goals", tmp_path / "goals.txt", "--format", "jsonl", "-o", tmp_path / "set").stdout)
+    one = run("compile", "--goal", "guacamole", "-o", tmp_path / "one")
+    assert row["status"] == "compiled" and f"level 3: {row['units']} unit actions" in one.output
+    page = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
+    assert "status `compiled`, `units` the task's unit actions, as `compile` says for one goal" in page
