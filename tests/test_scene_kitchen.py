@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import pddl.parser.domain
@@ -276,3 +277,34 @@ def test_an_object_moved_from_a_holder_its_node_does_not_name_is_taken_from_it_f
     before = {**before, "sugar_1": ObjectState("sugar_1", bagged, "bag_1", Relation.IN),
               "bag_1": ObjectState("bag_1", n("bag"))}
     assert step_words(step, before, {**after, "bag_1": before["bag_1"]}) == "pour sugar_1 from bag_1 into bowl_1"
+
+
+def test_a_holder_the_unit_names_is_taken_from_in_the_motion():
+    """The shared subgraphs' plans said `take frittata_1 out of cooking_pan_1, pick-and-place it onto plate_1`
+    (0026-cheddar_frittata.txt:441) after b9bb1d1: a holder the unit lists, or one that stands for a place the moved
+    object's node names (`in [pan]`), is what the cook takes from, not storage: `... from cooking_pan_1 onto ...`."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.foon import FunctionalUnit, Motion
+    from foon2pddl.model.physical import Binding, ObjectState, Relation, TraceStep
+    from foon2pddl.pddl.relational_replay import step_words
+
+    pan, plate, food = n("cooking pan", contains("frittata")), n("plate"), n("frittata", "cooked")
+    pan_after, plate_after, food_after = n("cooking pan", "empty"), n("plate", contains("frittata")), n("frittata")
+    step = TraceStep(0, FunctionalUnit((pan, food, plate), Motion("pick-and-place"), (pan_after, food_after,
+                                                                                       plate_after)),
+                     (Binding("cooking_pan_1", pan, pan_after), Binding("frittata_1", food, food_after),
+                      Binding("plate_1", plate, plate_after)), ())
+    before = {"cooking_pan_1": ObjectState("cooking_pan_1", pan), "plate_1": ObjectState("plate_1", plate),
+              "frittata_1": ObjectState("frittata_1", food, "cooking_pan_1", Relation.IN)}
+    after = {"cooking_pan_1": ObjectState("cooking_pan_1", pan_after), "plate_1": ObjectState("plate_1", plate_after),
+             "frittata_1": ObjectState("frittata_1", food_after, "plate_1", Relation.ON)}
+    assert step_words(step, before, after).startswith("pick-and-place frittata_1 from cooking_pan_1 onto plate_1")
+    # the unit's own words, 0026-cheddar_frittata.txt:441: `frittata (..., in [pan])`, the cooking pan no role of it
+    # (the relational encoding's holder for the pan the node names)
+    in_pan = n("frittata", "cooked", inside("pan"))
+    step = replace(step, unit=FunctionalUnit((in_pan, plate), Motion("pick-and-place"), (food_after, plate_after)),
+                   bindings=(Binding("cooking_pan_1", pan, pan_after, role=False),
+                             Binding("frittata_1", in_pan, food_after), Binding("plate_1", plate, plate_after)))
+    before = {**before, "frittata_1": replace(before["frittata_1"], node=in_pan)}
+    assert step_words(step, before, after).startswith("pick-and-place frittata_1 from cooking_pan_1 onto plate_1")

@@ -189,12 +189,15 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     the motion, each object that changes holder (from, into), each other object whose state changes, then
     what the step consumes and makes (in the holder of what it makes), then the objects it only uses (not
     what already sits in a holder something moves into: the dressing the lettuce is poured onto is no tool).
-    A holder the moved object's node does not name (a scene's fridge or shelf: where it is kept, not what
-    the unit pours from) is left first: `take sugar_1 out of fridge_1, pour it into pitcher_1`.
+    An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
+    holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
+    is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or
+    one standing for a place the node names (`sandwich (in [pan])` in a skillet), stays the motion's `from`.
     """
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
     moves, holders, taken = [], set(), []
+    listed = {b.object for b in step.bindings if b.role}  # the objects the unit names
     for m, src in _portions(step, before, after, made):
         moves.append(f"{m} (a portion of {src})" + (f" from {before[src].holder}" if before[src].holder else "")
                      + (f" {'into' if after[m].relation is Relation.IN else 'onto'} {after[m].holder}"
@@ -205,7 +208,7 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
         x, was, now = b.object, before[b.object], after[b.object]
         if b.before is not None and was.holder != now.holder and not now.consumed:
             into = f" {'into' if now.relation is Relation.IN else 'onto'} {now.holder}" if now.holder else ""
-            if was.holder and not _names_holder(b.before, before[was.holder]):
+            if was.holder and was.holder not in listed and not places(b.before):
                 taken.append((x, f"take {x} {'out of' if was.relation is Relation.IN else 'off'} {was.holder}"))
                 moves.append(x + into)
             else:
@@ -234,12 +237,6 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     if len(taken) == len(moves) == 1:  # the one object taken out is the one the motion moves
         parts[1] = "it" + parts[1][len(taken[0][0]):]
     return ", ".join(t for _, t in taken) + ", " + " ".join(p for p in parts if p)
-
-
-def _names_holder(node: ObjectNode, holder: ObjectState) -> bool:
-    """Whether `node` says it is in or on `holder`'s label (`sugar (in [bag])` names its bag; a holder of no
-    known node: nothing to tell, named)."""
-    return holder.node is None or any(label == holder.node.label for _, label in places(node))
 
 
 def relational_text(task: PlanningTask, trace: PhysicalTrace) -> str:
