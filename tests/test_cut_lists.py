@@ -107,3 +107,20 @@ def test_a_batch_tree_that_does_not_validate_counts_the_problems_left_out(monkey
     row = batch._one(Foon(_BROKEN), frozenset(), GoalEntry(GoalSpec("thing 4"), "g.txt", 1), lambda spec: goal,
                      Containment.STRICT, None, "greedy", None, {}, 0.0, lambda: 0.0)
     assert row.reason.endswith("; ... (2 more)"), row.reason
+
+
+def test_a_goal_in_no_produced_state_counts_the_states_it_leaves_out():
+    """`plan --goal "bowl: contains {xyz}"` listed the first 8 of the embedded example's produced bowl states and
+    stopped, with no word of the rest."""
+    from foon2pddl.api import load_network
+    from foon2pddl.errors import UsageError
+    from foon2pddl.io.goal_files import parse_goal_spec
+    from foon2pddl.model.containment import is_auxiliary
+    from foon2pddl.model.goal import resolve_goal
+
+    foon = load_network().foon
+    produced = {n.states for n in foon.produced_by_label["bowl"] if not is_auxiliary(n)}
+    assert len(produced) > 8
+    with pytest.raises(UsageError) as e:
+        resolve_goal(parse_goal_spec("bowl: contains {xyz}"), foon)
+    assert str(e.value).endswith(f"; ... ({len(produced) - 8} more)"), str(e.value)

@@ -168,10 +168,9 @@ def resolve_goal(spec: GoalSpec, foon: Foon, level: int | None = None, *, listin
         wanted = set(want)
         found = [n for n in same_label if wanted <= set(n.states)]
     if not found:
-        known = sorted({", ".join(s.describe() for s in n.states) for n in same_label})[:8]
+        known = sorted({", ".join(s.describe() for s in n.states) for n in same_label})
         raise UsageError(
             f"no produced {spec.label!r} node is in states {spec.describe()!r}; {state_hints(want, same_label)}"
-            "produced states include: "
-            + "; ".join(f"({k})" for k in known),
+            "produced states include: " + first_of(known, 8, lambda k: f"({k})"),
         )
     return Goal(spec, tuple(sorted(found)), level)
