@@ -108,8 +108,8 @@ def label_hints(label: str, foon: Foon, limit: int = 5) -> list[str]:
 
 def state_hints(wanted: Iterable[State], nodes: Iterable[ObjectNode]) -> str:
     """For each wanted state that none of `nodes` (one label's produced nodes) has, its close matches among
-    theirs (`'choped'` -> `chopped`, `in [bowel]` -> `in [bowl]`): `state 'choped' is on no such node (close:
-    chopped); `, "" when every wanted state occurs. difflib over the states as written; O(states^2) at worst."""
+    theirs (`'choped'` -> `chopped`, `in [bowel]` -> `in [bowl]`): `state 'choped' is on no produced 'onion' node
+    (close: chopped); `, "" when every wanted state occurs. difflib over the states as written; O(states^2) at worst."""
     nodes = list(nodes)
     known = sorted({s.describe() for n in nodes for s in n.states})
     label = nodes[0].label if nodes else ""
