@@ -37,10 +37,11 @@ quantified or conditional effect, `:action-costs` with costs.
 
 from __future__ import annotations
 
-from dataclasses import replace
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
 
 from ..model.aliases import unit_aliases
-from ..model.foon import Foon, ObjectNode
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.physical import Relation
@@ -60,11 +61,11 @@ from .encode_instances import (
     object_types,
     precedes_facts,
 )
-from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header
+from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, LevelInputs, at_level, header
 from .holder_words import mismatches, reported
 from .holders import Fate, attached_gaps, list_gaps, on_parts
-from .input_stitch import with_stitches
-from .kitchen_pairs import read_pairs
+from .input_stitch import Stitched, with_stitches
+from .kitchen_pairs import Pair, read_pairs
 from .list_arrivals import read_arrivals
 from .list_brought import read_brought
 from .live_holders import LIVE, with_live
@@ -74,7 +75,7 @@ from .registry import Compiled
 from .relational_action import IN, ON, unit_action
 from .relational_init import kitchen_implied
 from .relational_objects import task_objects
-from .relational_stitch import stitch_notes, stitched
+from .relational_stitch import Stitches, stitch_notes, stitched
 from .relational_sweep import CONSUMED
 from .tallies import tallied
 from .task import Atom, PlanningTask, Predicate
@@ -89,24 +90,21 @@ UNHELD, AT_HAND = "relation not modelled", "assumed at hand"
 
 def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
                       options: EncodeOptions = DEFAULT_OPTIONS) -> Compiled:
-    """The relational task of `goal` over `foon` (see the module doc), with its reports as notes."""
-    inp = at_level(foon, kitchen, goal, level)
-    given = inp.foon.units  # FOON's own: the plan's tree is made of them
-    inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
-    inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
-    inp, brought = read_brought(inp)  # a node a unit takes and leaves, listing what it puts in: before it, less that
-    inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if options.prune
-                                 else tuple(range(len(given))))
-    inp, at_hand = read_pairs(inp, units)  # a container's node and what is in it that no unit makes together: the kitchen's
-    f = inp.foon
-    def relevant(net: Foon) -> tuple[int, ...]:
-        return restoring_units(net, inp.kitchen, inp.candidates) if options.prune else tuple(range(len(net.units)))
-    st = with_stitches(f, relevant)  # inputs no unit makes, read as the node the plan left that object in
+    """The relational task of `goal` over `foon` (see the module doc), with its reports as notes. With
+    `options.memo`, the network's reading (`_read`) and the counts are made once per network, kitchen, goal (the
+    same objects), level, pruning and stated counts, however many counts the caller asks for."""
+    shared = {} if options.memo is None else options.memo
+    key = ("relational", id(foon), id(kitchen), id(goal), level, options.prune, options.instances)
+    if key not in shared:  # the inputs are kept with it: while the memo lives, their ids name no other object
+        shared[key] = (foon, kitchen, goal), _read(foon, kitchen, goal, level, options.prune), {}
+    _, net, counting = shared[key]
+    inp, given, st, at_hand, reads = net.inp, net.given, net.st, net.at_hand, net.reads
+    mutual, arrived, brought = net.mutual, net.arrived, net.brought
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     scene = kitchen.project(level).scene
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
         IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE, LIVE),
-        options.narrow, options.through, options.placed)
+        options.narrow, options.through, options.placed, counting)
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
     why = tuple(f"objects: {w}" for w in (*count_reasons(f, counts, ob.kitchen, rd.roles_of),
@@ -190,3 +188,34 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
                     counted=frozenset(origin.get(u, u) for u, _ in rd.counts.firings))  # the units of the plan counted from
+
+
+@dataclass(frozen=True)
+class _Network:
+    """The network as the task reads it, before any count (`_read`; module doc, "Stitches")."""
+
+    inp: LevelInputs  # the inputs at the task's level, read
+    given: tuple[FunctionalUnit, ...]  # FOON's own units: the plan's tree is made of them
+    mutual: Mapping[ObjectNode, tuple[ObjectNode, FunctionalUnit]]  # two nodes listing each other (`mutual_lists`)
+    arrived: Mapping[int, tuple[FunctionalUnit, str]]  # a list's item arriving with the unit (`list_arrivals`)
+    brought: Mapping[int, tuple]  # a node read before what the unit puts in (`list_brought`)
+    reads: Stitches  # the stitches' readings (`relational_stitch`)
+    at_hand: tuple[Pair, ...]  # the pairs read as at hand (`kitchen_pairs`)
+    st: Stitched  # the network with its stitches (`input_stitch.with_stitches`)
+
+
+def _read(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, prune: bool) -> _Network:
+    """`foon` read for the task of `goal` from `kitchen` at `level` (its relevant units: `prune`'s)."""
+    inp = at_level(foon, kitchen, goal, level)
+    given = inp.foon.units
+    inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
+    inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
+    inp, brought = read_brought(inp)  # a node a unit takes and leaves, listing what it puts in: before it, less that
+    inp, reads, units = stitched(inp, lambda i: restoring_units(i.foon, i.kitchen, i.candidates) if prune
+                                 else tuple(range(len(given))))
+    inp, at_hand = read_pairs(inp, units)  # a container's node and what is in it that no unit makes together: the kitchen's
+
+    def relevant(net: Foon) -> tuple[int, ...]:
+        return restoring_units(net, inp.kitchen, inp.candidates) if prune else tuple(range(len(net.units)))
+    st = with_stitches(inp.foon, relevant)  # inputs no unit makes, read as the node the plan left that object in
+    return _Network(inp, given, mutual, arrived, brought, reads, at_hand, st)

@@ -44,7 +44,9 @@ class EncodeOptions:
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
     The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`), from the
-    plan through the stitches alone with `through`, with makers by holder reach with `placed`.
+    plan through the stitches alone with `through`, with makers by holder reach with `placed`; `memo`, a dict one
+    caller passes to each encoding of one goal (`compile.compile_goal`'s), lets it read the network and derive
+    each count once across them (None: nothing is shared).
     """
 
     prune: bool = True
@@ -57,6 +59,7 @@ class EncodeOptions:
     narrow: bool = False
     through: bool = False
     placed: bool = False
+    memo: dict | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

@@ -71,15 +71,17 @@ class TaskObjects:
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                  overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False,
-                 through: bool = False, placed: bool = False) -> TaskObjects:
+                 through: bool = False, placed: bool = False, memo: dict | None = None) -> TaskObjects:
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
     `narrow`: counted small when that gives fewer objects, `through` the stitches (a task with none: counted wide),
     `placed`: counted as wide, with makers by holder reach (`count_together._placed_back`), kept when fewer;
     without `narrow`, the wide count with those makers.
     Counting small reuses the readings counting wide made (`read_units`' memo: units are read again only with other
-    holders silent) and derives its own counts."""
-    memo: dict = {}  # the units' readings and counts both countings share (`read_units`)
+    holders silent) and derives its own counts; `memo`, when given, is that memo shared with the other countings of
+    the same `inp`, `st`, `stated` and `overrides` (`encode_relational`'s, across `planners.solve.plan`'s counts: the
+    wide count, which each of them starts from, is derived once)."""
+    memo = {} if memo is None else memo  # the units' readings and counts the countings share (`read_units`)
     wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow)
     if not narrow or scene or (through and not st.origin):
         return wide

@@ -164,20 +164,23 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
     `MIN_REST`). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
     reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
-    replay rejects, or none, leaves the outcome naming the units out of holder reach).
+    replay rejects, or none, leaves the outcome naming the units out of holder reach). The counts share one memo
+    (`compile_goal`'s `memo`): the network is read, and each distinct count derived, once per call.
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
 
         fd.prestart_translator()  # its start-up overlaps the encoding
     timings: dict[str, float] = {}
+    counting: dict = {}  # what the compiles of this goal share (its counts: the wide one is each one's start)
 
     def compiled(narrow: bool, through: bool = False, placed: bool = False) -> Compiled:
         t0 = time.perf_counter()
         try:
             return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                                 category_index=category_index, constraints=constraints, instances=instances,
-                                categories=categories, narrow=narrow, through=through, placed=placed)
+                                categories=categories, narrow=narrow, through=through, placed=placed,
+                                memo=counting)
         finally:
             _add(timings, "encode", time.perf_counter() - t0)
 
