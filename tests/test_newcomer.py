@@ -698,6 +698,38 @@ def test_a_tool_the_step_soils_is_said_with_with_not_as_a_second_thing_worked(un
                                 "making pancake batter (raw) in the bowl")
 
 
+#: A spread as FOON writes it (0082's cheese pizza): the sauce the spoon holds ends `on {pizza dough}`, its holder in
+#: braces, then the mozzarella from its bag goes onto the sauced dough.
+SPREADS = (
+    "//\nO\tpizza pan\t0\nS\tcontains\t{pizza dough}\nS\ton\t[surface]\nO\tpizza dough\t0\nS\tflattened\n"
+    "S\ton\t[pizza pan]\nO\tserving spoon\t1\nS\tcontains\t{pizza sauce}\nO\tpizza sauce\t1\nS\tin\t[bowl]\n"
+    "O\tbowl\t0\nS\tcontains\t{pizza sauce}\nM\tpour and spread\nO\tpizza dough\t0\nS\tcontains\t{pizza sauce}\n"
+    "S\tflattened\nS\ton\t[pizza pan]\nO\tpizza sauce\t1\nS\ton\t{pizza dough}\n"
+    "//\nO\tpizza pan\t0\nS\tcontains\t{pizza dough}\nS\ton\t[surface]\nO\tpizza dough\t0\n"
+    "S\tcontains\t{pizza sauce}\nS\ton\t[pizza pan]\nO\tpizza sauce\t0\nS\ton\t{pizza dough}\nO\tbag\t0\n"
+    "S\tcontains\t{mozzarella}\nO\tmozzarella\t1\nS\tshredded\nS\tin\t[bag]\nM\tspread\nO\tpizza dough\t0\n"
+    "S\tcontains\t{mozzarella,pizza sauce}\nS\ton\t[pizza pan]\nO\tmozzarella\t1\nS\tshredded\n"
+    "S\ton\t{pizza dough}\n//\n")
+
+
+def test_a_place_foon_writes_in_braces_is_where_the_object_goes_not_a_tool():
+    """Stop 57's newcomer pass (0082's cheese pizza): FOON writes where a spread thing ends in braces (`pizza sauce
+    (on {pizza dough})`), and the steps read `pour and spread pizza dough (flattened), pizza sauce, with the serving
+    spoon ..., in the bowl` and `spread pizza dough ..., mozzarella (shredded), with the pizza sauce (on {pizza
+    dough}), ..., in the bag`: the sauce a tool, the bowl and the bag places the step happens in. A place state
+    naming one object is that place, `[...]` or `{...}`: the sauce and the mozzarella move onto the dough."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    pour, spread = parse_text(SPREADS, "pizza.txt").foon.units
+    assert recipe_text(pour) == (
+        "pour and spread pizza sauce from the bowl onto the pizza dough (flattened, on [pizza pan]), with the serving"
+        " spoon (contains {pizza sauce}), on the pizza pan (on [surface])")
+    assert recipe_text(spread) == (
+        "spread mozzarella (shredded) from the bag onto the pizza dough (contains {pizza sauce}, on [pizza pan]),"
+        " on the pizza pan (on [surface])")
+
+
 def test_the_objects_account_says_a_soiled_tool_with_with_too():
     """The relational account under the tree had the same reading: `peel cucumber_1, peeler_1`, `cut lemon_1,
     knife_1 with cutting_board_1` (the greek salad of the shared subgraphs); a tool the step only soils is one the

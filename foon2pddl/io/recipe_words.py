@@ -8,11 +8,11 @@ never as a tool.
 
 from __future__ import annotations
 
-from ..model.foon import FunctionalUnit, ObjectNode
+from ..model.foon import FunctionalUnit, ObjectNode, State
 from ..model.pairing import transfer, unit_roles
 from ..model.places import contents, head_of
 
-#: State labels that, naming another input as their related object, say where a step happens.
+#: State labels that, naming another input (`_holder`), say where a step happens.
 PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
 
 #: How a recipe says where an object goes, per place state.
@@ -33,27 +33,35 @@ def aliases(unit: FunctionalUnit) -> Aliases:
     out: Aliases = {}
     for n in (*unit.inputs, *unit.outputs):
         for s in n.states:
-            if s.label in PLACE_WORDS and s.related and s.related not in labels:
-                found = {i.label for i in unit.inputs if head_of(s.related, i.label)}
+            if (h := _holder(s)) and h not in labels:
+                found = {i.label for i in unit.inputs if head_of(h, i.label)}
                 if len(found) == 1:
-                    out[s.related] = found.pop()
+                    out[h] = found.pop()
     return out
 
 
+def _holder(state: State) -> str:
+    """The object a place state names, or "": its related object (`on [pizza pan]`), else the one object it lists
+    (FOON writes a spread's place in braces too: `pizza sauce (on {pizza dough})`, 0082's cheese pizza)."""
+    if state.label not in PLACE_WORDS:
+        return ""
+    return state.related or (state.ingredients[0] if len(state.ingredients) == 1 else "")
+
+
 def _place(node: ObjectNode, named: Aliases | None = None) -> tuple[str, str] | None:
-    """(place word, related object) of the node's first place state, or None; the object as `named` reads it."""
-    found = next(((s.label, s.related) for s in node.states if s.label in PLACE_WORDS and s.related), None)
+    """(place word, holder) of the node's first place state (`_holder`), or None; the holder as `named` reads it."""
+    found = next(((s.label, h) for s in node.states if (h := _holder(s))), None)
     return (found[0], named.get(found[1], found[1])) if found and named else found
 
 
 def _holders(node: ObjectNode, named: Aliases) -> set[str]:
-    """Every object the node's place states name (as `named` reads them)."""
-    return {named.get(s.related, s.related) for s in node.states if s.label in PLACE_WORDS and s.related}
+    """Every object the node's place states name (`_holder`, as `named` reads them)."""
+    return {named.get(h, h) for s in node.states if (h := _holder(s))}
 
 
 def _unplaced(node: ObjectNode) -> str:
     """The node in words without its place state (`lime juice`, `lime (whole)`)."""
-    states = [s.describe() for s in node.states if not (s.label in PLACE_WORDS and s.related)]
+    states = [s.describe() for s in node.states if not _holder(s)]
     return node.label + (f" ({', '.join(states)})" if states else "")
 
 
