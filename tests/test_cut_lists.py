@@ -124,3 +124,48 @@ def test_a_goal_in_no_produced_state_counts_the_states_it_leaves_out():
     with pytest.raises(UsageError) as e:
         resolve_goal(parse_goal_spec("bowl: contains {xyz}"), foon)
     assert str(e.value).endswith(f"; ... ({len(produced) - 8} more)"), str(e.value)
+
+
+# The cut lists 57f8b92 left in their older formats (the stop's re-read, reread57): each now says how many it left out.
+
+
+def test_a_load_whose_every_file_was_skipped_counts_the_files_it_leaves_out(tmp_path):
+    from foon2pddl.io.files import load
+
+    for i in range(5):
+        (tmp_path / f"notes{i}.txt").write_text("shopping list\n")
+    with pytest.raises(FoonSyntaxError) as e:
+        load([tmp_path])
+    assert e.value.message.endswith("(no `O`, `S`, `M` or `//` line); ... (2 more)"), e.value.message
+
+
+def test_an_explain_line_counts_the_avoided_units_it_leaves_out():
+    from foon2pddl.retrieval.constrained import Shaping, explain_line
+
+    line = explain_line(Shaping("without-motion chop", 5, _BROKEN))
+    assert line.endswith("thing 2 (chopped); ... (2 more)"), line
+
+
+def test_a_plan_step_whose_preconditions_fail_counts_those_it_leaves_out():
+    from foon2pddl.pddl.task import Action, Atom, PlanningTask
+    from foon2pddl.planners.decode import apply_step
+
+    pre = tuple(Atom("have", (f"x{i}",)) for i in range(5))
+    task = PlanningTask("d", "p", "tree", 3, (), (Action("go", pre, ()),), (), ())
+    _, why = apply_step(task, set(), "go", 1, {})
+    assert why == "plan step 1 (go): precondition false: (have x0), (have x1), (have x2), ... (2 more)", why
+
+
+def test_an_experiment_plan_failing_foon_simulation_counts_the_problems_left_out():
+    from foon2pddl.experiment.solvers import _plan_outcome
+    from foon2pddl.model.tasktree import validate
+    from foon2pddl.planners.decode import Decoded
+    from foon2pddl.planners.result import PlanResult
+    from foon2pddl.planners.solve import PlanOutcome
+    from foon2pddl.status import PlanStatus
+
+    # an encoding without FOON's semantics (`state`): a valid plan whose tree fails at all five steps
+    outcome = PlanOutcome(PlanResult(PlanStatus.SOLVED, ("a",)), None,
+                          Decoded(_TREE, validate(_TREE, frozenset()), foon_semantics=False))
+    reason = _plan_outcome(outcome, ("a",)).reason
+    assert reason.startswith("tree fails FOON simulation: ") and reason.endswith("; ... (3 more)"), reason

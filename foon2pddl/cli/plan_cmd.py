@@ -13,7 +13,7 @@ from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
 from ..io.tree_formats import DEFAULT_FORMAT, FORMATS, STEP_FORMATS, render_tree
-from ..model.words import count
+from ..model.words import count, first_of
 from ..pddl.compile import PLAN_ENCODING
 from ..planners import DEFAULT_PLANNER
 from ..planners.commands import PRESETS
@@ -216,7 +216,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             summary += f": {count(len(outcome.steps), 'plan step')}, {count(len(outcome.tree), 'unit')}, valid"
             if not outcome.validation.ok:  # state encoding: its semantics are not FOON's
                 summary += (f" under the {encoding} encoding; as a FOON task tree it is not executable: "
-                            + "; ".join(outcome.validation.problems[:2]))
+                            + first_of(outcome.validation.problems, 2))
         else:
             summary += f": {outcome.message or outcome.result.message}"
         click.echo(summary, err=True)

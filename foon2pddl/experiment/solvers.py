@@ -213,8 +213,8 @@ def _plan_outcome(outcome, steps: tuple[str, ...], kitchen_nodes=None, per_item:
     foon_valid = outcome.validation.ok if outcome.validation is not None else None
     validated = None if tree is None else status == CellStatus.SOLVED
     if status == CellStatus.SOLVED:
-        reason = "" if foon_valid is not False else "tree fails FOON simulation: " + "; ".join(
-            outcome.validation.problems[:2])
+        reason = "" if foon_valid is not False else "tree fails FOON simulation: " + first_of(
+            outcome.validation.problems, 2)
         if outcome.trace is not None:  # a plan over physical objects: decoding replayed it object by object
             scheduled: dict = physical_plan(outcome.trace, kitchen_nodes or frozenset(), per_item, times)
         elif kitchen_nodes is not None and foon_valid:

@@ -11,6 +11,7 @@ from ..errors import FoonInputError, FoonSyntaxError, ParseWarning
 from ..model.bulk import full_gc_paused
 from ..model.foon import Foon
 from ..model.merge import merge
+from ..model.words import first_of
 from .parser import ParseResult, parse_file, parse_text, read_text
 
 FOON_SUFFIXES = (".txt", ".foon")
@@ -99,9 +100,9 @@ def _read_all(paths: Iterable[str | Path], skip_invalid: bool) -> tuple[list[Par
                 raise
             skipped.append(ParseWarning(exc.path, exc.line, f"skipped (not a valid network): {exc.message}"))
     if not results:
-        said = "".join(f"; {Path(w.path).name}: {w.message.removeprefix('skipped: ')}" for w in skipped[:3])
-        more = f"; {len(skipped) - 3} more" if len(skipped) > 3 else ""
-        raise FoonSyntaxError(str(next(iter(named), "")), 0, f"no FOON file to read: every file was skipped{said}{more}")
+        said = first_of(skipped, 3, lambda w: f"{Path(w.path).name}: {w.message.removeprefix('skipped: ')}")
+        raise FoonSyntaxError(str(next(iter(named), "")), 0, "no FOON file to read: every file was skipped"
+                              + (f"; {said}" if said else ""))
     return results, skipped
 
 

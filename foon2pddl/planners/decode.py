@@ -338,7 +338,7 @@ def apply_step(task: PlanningTask, state: set[Atom], step: str, n: int,
     missing = [a for a in (Atom(p.predicate, tuple(bind.get(x, x) for x in p.args)) for p in action.pre)
                if a not in state]
     if missing:
-        return state, f"plan step {n} ({step}): precondition false: " + ", ".join(map(_show, missing[:3]))
+        return state, f"plan step {n} ({step}): precondition false: " + first_of(missing, 3, _show, sep=", ")
     return apply_action(state, action, bind, types), None
 
 

@@ -30,7 +30,7 @@ from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, make_node, ma
 from ..model.goal import Goal, GoalSpec
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree, justify
-from ..model.words import count
+from ..model.words import count, first_of
 from .api import kitchen_nodes, retrieve
 from .methods import get_method
 from .result import UNREACHABLE, Retrieval
@@ -193,5 +193,5 @@ def explain_line(s: Shaping) -> str:
     text = f"explain: `{s.constraint}` removes {count(s.removed, 'unit')}"
     if not s.avoided:
         return text + "; the unconstrained tree uses none of them"
-    shown = "; ".join(u.describe() for u in s.avoided[:3]) + ("; ..." if len(s.avoided) > 3 else "")
+    shown = first_of(s.avoided, 3, FunctionalUnit.describe)
     return text + f"; avoided {count(len(s.avoided), 'unit')} of the unconstrained tree: {shown}"
