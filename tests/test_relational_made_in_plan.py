@@ -11,7 +11,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
-from foon2pddl.pddl.instance_counts import delete_free_plan
+from foon2pddl.pddl.instance_counts import delete_free_plan, derive_counts
 
 ON_STOVE, IN_PAN = make_state("on", "stove"), inside("pan")
 # the pan the omelette is spread in, the sprinkle takes, and the cook leaves again for the pour (`C` below)
@@ -78,4 +78,29 @@ def test_one_egg_one_bowl_of_it_and_no_salt_for_the_omelette():
     outcome = clean_unit_plan(units, KITCHEN, DISH, time_limit=60)
     assert sorted(s.unit.motion.label for s in outcome.trace.steps) == sorted(
         ["mix", "pick-and-place", "heat", "pour", "spread", "sprinkle", "flip", "cook", "pour"])  # B's units alone
+    assert sorted(x.label for x in outcome.task.instances) == labels
+
+
+def test_the_swaps_counting_fewer_are_tried_together_and_leave_the_knife_out():
+    # the shared universal's 0050 omelette (20 objects in the problem against `instances`' 18): the plan with makers
+    # it has peels the onion at `0013-creamy_potato_soup.txt:105`, which takes a clean knife and leaves it dirty;
+    # `0026-cheddar_frittata.txt:79` peels it with no knife. Another maker was tried only when the plan had fewer
+    # units, one swap at a time: the first-achiever plan keeps A's chain, and the swap leaving it out keeps the
+    # knife. Units 12 and 13 make the kitchen's cubed butter B's pick-and-place takes; 13 takes the butter alone.
+    block, cubed = n("butter", "block"), n("butter", "cubed")
+    units = (*_units(),
+             FunctionalUnit((block, n("knife", "clean")), Motion("chop"), (cubed, n("knife", "dirty"))),  # 12
+             FunctionalUnit((block,), Motion("crumble"), (cubed,)))  # 13: the same node, no knife
+    kitchen = tuple(k for k in KITCHEN if k != cubed) + (block, n("knife", "clean"))
+    plan, _ = delete_free_plan(Foon(units), frozenset(kitchen), (DISH,), together=True, in_plan=True)
+    assert 12 in plan and 13 not in plan  # the first achiever of the cubed butter: content order (`rank`)
+    counts = derive_counts(Foon(units), range(len(units)), frozenset(kitchen), (DISH,), together=True, stitched=True,
+                           reuse=True)
+    assert {u for u, _ in counts.firings} == {0, 4, 5, 6, 7, 8, 9, 10, 11, 13}
+    goal = Goal(GoalSpec("omelette"), (DISH,))
+    small = compile_goal(Foon(units), Kitchen(frozenset(kitchen)), goal, "relational", narrow=True)
+    labels = sorted(x.label for x in small.task.instances)
+    assert "knife" not in labels and labels.count("egg") == 1 and "salt" not in labels
+    outcome = clean_unit_plan(units, kitchen, DISH, time_limit=60)
+    assert "crumble" in [s.unit.motion.label for s in outcome.trace.steps]
     assert sorted(x.label for x in outcome.task.instances) == labels

@@ -6,13 +6,16 @@ order; and the plans with one needed node made by another of its makers (`_other
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 from ..analysis.reachability import Reachability, reachable
 from ..model.foon import Foon, ObjectNode
 from .count_together import AT_HAND, made_in_plan, makers_together, needs
 
-__all__ = ["delete_free_plan", "delete_free_plans"]
+__all__ = ["Score", "delete_free_plan", "delete_free_plans"]
+
+#: Objects a plan (unit indexes in firing order) for a target node counts, unfolded as it is (`derive_counts`).
+Score = Callable[[tuple[int, ...], ObjectNode], int]
 
 
 def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode],
@@ -30,17 +33,18 @@ def delete_free_plan(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Seq
 
 def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Sequence[ObjectNode], together: bool,
                       ways: Sequence[tuple[bool, bool]], placed: bool = False,
-                      others: list[tuple[int, ...]] | None = None
+                      others: list[tuple[int, ...]] | None = None, score: Score | None = None
                       ) -> tuple[tuple[tuple[int, ...], ObjectNode] | None, ...]:
     """`delete_free_plan` for each of `ways` (`first`, `in_plan`) over one fixpoint; `placed`: `makers_together`'s;
-    `others` gets the plans with a needed node made by another of its makers (`_other_makers`)."""
+    `others` gets the plans with needed nodes made by other makers that count fewer objects by `score`
+    (`_other_makers`)."""
     reach = reachable(foon, kitchen, candidates)
     made = [c for c in candidates if reach.can_make(c)]
     if not made:
         return (None,) * len(ways)
     target = min(made, key=lambda c: (reach.round_of(c), c))
-    if others is not None:
-        others.extend(_other_makers(reach, target, together, placed))
+    if others is not None and score is not None:
+        others.extend(_other_makers(reach, target, together, placed, score))
     return tuple((_chosen(reach, target, together, first, placed, in_plan), target) for first, in_plan in ways)
 
 
@@ -81,29 +85,55 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
     return _in_order(reach, chosen, made)
 
 
-def _other_makers(reach: Reachability, target: ObjectNode, together: bool, placed: bool) -> tuple[tuple[int, ...], ...]:
-    """The plans `_chosen` makes for `target` with one needed node made by another of its makers, one plan per (node,
-    maker), distinct and other than the plan with no node swapped: a maker that fires in the fixpoint and does not
-    need the node through first achievers (`count_together.needs`), in node then FOON order. The universal
-    FOON's baked garlic bread: its first achiever of `bread (contains {garlic butter}, on [cutting board])` is the
-    spread at `0010-cheesy_garlic_bread.txt:176`, taking 0016's bowl of garlic butter and 0010's garlic butter in
-    the food processor bowl, so both garlic-butter chains were counted; the spread at
-    `0016-easy_garlic_bread-one-pot-chef.txt:125` makes that node from 0016's chain alone. `derive_counts` counts
-    each that has fewer units and counts fewer objects unfolded as it is than the plan with no node swapped (only then
-    its ways back and orders, which cost most), after its other plans, and keeps the fewest-counting (the first on a
-    tie). One that trades units for as many others is left: the odd universal half's shrimp mango salad, 33 units
-    either way, counted 49 objects against 50 but had 35 in the problem against 34. O(n x m) plans for
-    n needed nodes of m makers, each O(plan) to choose and unfold."""
+def _other_makers(reach: Reachability, target: ObjectNode, together: bool, placed: bool,
+                  score: Score) -> tuple[tuple[int, ...], ...]:
+    """The plans `_chosen` makes for `target` with one needed node made by another of its makers that count fewer
+    objects by `score` (unfolded as they are) and have fewer units, or swap the one unit for the other and keep the
+    rest where the other takes only some of the one's inputs (`_fewer_units`), one plan per (node, maker): a maker
+    that fires in the fixpoint and does not need the node through first achievers (`count_together.needs`), in node
+    then FOON order; then those swaps together, each kept when it counts fewer again (greedy, in that order), when
+    that is another plan. The universal FOON's baked garlic bread: its first achiever of `bread (contains {garlic
+    butter}, on [cutting board])` is the spread at `0010-cheesy_garlic_bread.txt:176`, taking 0016's bowl of garlic
+    butter and 0010's garlic butter in the food processor bowl, so both garlic-butter chains were counted; the spread
+    at `0016-easy_garlic_bread-one-pot-chef.txt:125` makes that node from 0016's chain alone. `derive_counts` counts
+    each (its ways back and orders, which cost most) after its other plans, and keeps the fewest-counting (the first
+    on a tie). A swap that trades units for as many others is left: the odd universal half's shrimp mango salad, 33
+    units either way (2 for 2), counted 49 objects against 50 but had 35 in the problem against 34; so is one unit for
+    one taking other inputs (the shared universal's macaroni and cheese with bacon and chives: 40 objects in the
+    problem against 39). The shared universal's 0050 omelette needs two swaps at once: its plan peels the onion at
+    `0013-creamy_potato_soup.txt:105`, taking a clean knife it leaves dirty beside the one the chop at
+    `0059-best_black_beans.txt:12` reads (the peel at `0026-cheddar_frittata.txt:79` takes the onion alone), and
+    makes the mixture's egg by a second crack (`0026-cheddar_frittata.txt:246`). O(n x m) plans for n needed nodes
+    of m makers, each O(plan) to choose and score."""
     ix, made = reach.index, {}
     plan = _chosen(reach, target, together, False, placed, made_by=made)
+    least = score(plan, target)
     out: dict[tuple[int, ...], None] = {}
+    kept: list[tuple[int, int]] = []  # the (node, maker) swaps that count fewer alone
     for n, u in sorted(made.items()):
         for m in sorted(ix.makers[n], key=lambda k: ix.rank[k]):
             if m != u and reach.unit_round[m] >= 0 and not needs(reach, m, {n}):
                 other = _chosen(reach, target, together, False, placed, preset={n: m})
-                if other != plan:
+                if other != plan and _fewer_units(reach, other, plan, u, m) and score(other, target) < least:
                     out[other] = None
+                    kept.append((n, m))
+    preset: dict[int, int] = {}
+    best, fewest = plan, least
+    for n, m in kept if len(kept) > 1 else ():  # together: each swap counted on the plan with those kept before
+        both = _chosen(reach, target, together, False, placed, preset={**preset, n: m})
+        if (len(both) < len(best) or len(set(both) ^ set(best)) <= 2) and (k := score(both, target)) < fewest:
+            preset, best, fewest = {**preset, n: m}, both, k
+    if best not in out and best != plan:
+        out[best] = None
     return tuple(out)
+
+
+def _fewer_units(reach: Reachability, alt: Sequence[int], plan: Sequence[int], u: int, m: int) -> bool:
+    """Whether the plan `alt`, `plan` with unit `m` making a node of unit `u`'s, has fewer units, or swaps `u` for
+    `m` alone, `m` taking only some of `u`'s inputs (the peel that takes no knife): it pulls in nothing new."""
+    ix = reach.index
+    return len(alt) < len(plan) or (len(alt) == len(plan) and set(alt) ^ set(plan) == {u, m}
+                                    and set(ix.inputs[m]) < set(ix.inputs[u]))
 
 
 def _in_order(reach: Reachability, chosen: set[int], made_by: dict[int, int]) -> tuple[int, ...]:

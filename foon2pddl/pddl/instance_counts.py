@@ -20,7 +20,8 @@ unfolding a delete-free plan backwards:
    pan from 0062's own pour, not 0056's) and of the plan taking makers it has
    (`in_plan`: `count_together.made_in_plan`), each counted after, so kept only
    when it counts fewer (three plans: the counting at most triples); and of each plan
-   with one needed node made by another of its makers that has fewer units and counts
+   with one needed node made by another of its makers, and with those swaps together,
+   that has fewer units (or one unit for one taking only some of its inputs) and counts
    fewer as it is (`count_plans._other_makers`), counted after those.
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
@@ -200,8 +201,13 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     stated = stated or {}
     overrides = overrides or {}
     kinds = ((False, False), (True, False), (False, True)) if together else ((False, False),)  # (first, in_plan)
-    swapped: list[tuple[int, ...]] = []  # `relational`: a needed node made by another of its makers, kept when fewer
-    found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed, swapped if together else None)
+    swapped: list[tuple[int, ...]] = []  # `relational`: needed nodes made by other makers, counting fewer as they are
+
+    def as_is(plan: tuple[int, ...], target: ObjectNode) -> int:  # objects `plan` counts unfolded as it is
+        at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), target, roles_of)
+        return at.total() + new.total()
+    found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed,
+                                      swapped if together else None, as_is)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)
@@ -219,11 +225,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         for again in dict.fromkeys(o[0] for o in other if o is not None and o != found):  # kept when fewer
             more = ways_of(again)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
-        def as_is(plan: tuple[int, ...]) -> int:  # objects `plan` counts unfolded as it is
-            at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), found[1], roles_of)
-            return at.total() + new.total()
-        base = as_is(found[0]) if swapped else 0
-        for alt in [p for p in swapped if len(p) < len(found[0]) and as_is(p) < base]:  # fewer units, fewer objects
+        for alt in swapped:  # counted after the others, so kept only when fewer
             more = ways_of(alt)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
         steps: list[list[tuple[int, int]]] = [[] for _ in plans]
