@@ -730,6 +730,23 @@ def test_a_place_foon_writes_in_braces_is_where_the_object_goes_not_a_tool():
         " on the pizza pan (on [surface])")
 
 
+def test_what_a_step_uses_up_goes_onto_a_container_it_is_made_on():
+    """0082's breakfast pizza cracks an egg whose white and yolk end `on {pizza dough}`: the step read `crack egg
+    (uncracked) into the pizza dough`, where the omelette's egg goes `into the bowl (empty)` it is made in. What
+    a step uses up goes into or onto its container by the word FOON gives what it makes there."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    crack = parse_text(
+        "//\nO\tpizza dough\t0\nS\tflattened\nO\tegg\t1\nS\tuncracked\nM\tcrack\nO\tpizza dough\t0\n"
+        "S\tflattened\nS\tcontains\t{egg white and yolk}\nO\tegg white and yolk\t0\nS\ton\t{pizza dough}\n//\n"
+        "O\tbowl\t0\nS\tempty\nO\tegg\t1\nS\tuncracked\nM\tcrack\nO\tbowl\t0\nS\tcontains\t{egg white and yolk}\n"
+        "O\tegg white and yolk\t0\nS\tin\t[bowl]\n//\n", "crack.txt").foon.units
+    assert [recipe_text(u) for u in crack] == [
+        "crack egg (uncracked) onto the pizza dough (flattened), making egg white and yolk on the pizza dough",
+        "crack egg (uncracked) into the bowl (empty), making egg white and yolk in the bowl"]
+
+
 def test_the_objects_account_says_a_soiled_tool_with_with_too():
     """The relational account under the tree had the same reading: `peel cucumber_1, peeler_1`, `cut lemon_1,
     knife_1 with cutting_board_1` (the greek salad of the shared subgraphs); a tool the step only soils is one the

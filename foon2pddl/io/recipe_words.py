@@ -228,8 +228,10 @@ def recipe_text(unit: FunctionalUnit) -> str:
         at = {p.label for p in places}
         text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i, named) or ("", ""))[1] in at
                                                    else i.describe() for i in changed)
-        if into is not None:
-            text += f" into the {into.describe()}"
+        if into is not None:  # by the word of what is made there: `crack egg ... onto the pizza dough`
+            word = next((_INTO.get(p[0], p[0]) for o in new.values()
+                         if o.label not in by_label and (p := _place(o, named)) and p[1] == into.label), "into")
+            text += f" {word} the {into.describe()}"
     if tools:
         text += ", with the " + ", ".join(t.describe() for t in tools)
     for word, group in _by_word(_ordered_places(places, changed or [i for i, _, _ in moves], named), unit, named):
