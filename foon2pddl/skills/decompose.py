@@ -55,9 +55,6 @@ class SkillCall:
     objects: tuple[str, ...]
     holders: tuple[str | None, ...]
 
-    def text(self) -> str:
-        return f"{self.skill} {' '.join(self.objects)}" + (f" ({self.hand})" if self.hand != "hand_1" else "")
-
 
 @dataclass(frozen=True)
 class MacroSkills:
