@@ -25,12 +25,12 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
 
 def compiled_counts(monkeypatch) -> list[str]:
     """The counts `planners.solve.plan` compiles from now on, in order: `small` or `wide`, and the keyword that counts
-    it again (`through`, `placed`)."""
+    it again (`through`, `placed`, `own`)."""
     seen: list[str] = []
     real = solve.compile_goal
 
     def recording(*args, **options):
-        mode = [k for k in ("through", "placed") if options.get(k)]
+        mode = [k for k in ("through", "placed", "own") if options.get(k)]
         seen.append(" ".join(["small" if options.get("narrow") else "wide", *mode]))
         return real(*args, **options)
 

@@ -1,8 +1,8 @@
 """`plan` derives each distinct count once per call: its compiles of one goal share a memo (`compile_goal`'s `memo`,
 `EncodeOptions.memo`), so the network is read once and the wide count, which every other count starts from
 (`relational_objects.task_objects`), is derived once, not once per count. The omelette of
-tests/test_relational_placed_gate.py is compiled five ways (small, through the stitches, with makers by holder reach,
-wide, wide with those makers)."""
+tests/test_relational_placed_gate.py is compiled six ways (small, through the stitches, with makers by holder reach,
+wide, FOON's own plan unfolded, wide with those makers)."""
 
 from __future__ import annotations
 
@@ -19,13 +19,13 @@ from foon2pddl.planners.solve import plan
 
 def _derived(monkeypatch) -> list[tuple]:
     """Each count derived from now on, by what it is derived from (the network's units, the plan's units, the
-    kitchen, each unit's roles, the makers' rule)."""
+    kitchen, each unit's roles, the makers' rule, whether other makers' plans count)."""
     seen: list[tuple] = []
     real = relational_reading.derive_counts
 
     def recording(net, need, kitchen, candidates, **options):
         roles = tuple(options["roles_of"](u) for u in net.units)
-        seen.append((net.units, tuple(need), kitchen, roles, options["placed"]))
+        seen.append((net.units, tuple(need), kitchen, roles, options["placed"], options["other_makers"]))
         return real(net, need, kitchen, candidates, **options)
 
     monkeypatch.setattr(relational_reading, "derive_counts", recording)
@@ -36,10 +36,11 @@ def test_each_distinct_count_is_derived_once_per_plan(monkeypatch):
     derived = _derived(monkeypatch)
     names = compiled_counts(monkeypatch)
     plan(*omelette(), GOAL, "relational", time_limit=60)
-    assert names == ["small", "small through", "small placed", "wide", "wide placed"]
+    assert names == ["small", "small through", "small placed", "wide", "wide own", "wide placed"]
     assert [k for k, n in Counter(derived).items() if n > 1] == []
-    # FOON's plan and the stitched one, from first makers and by holder reach (4); small (1); through the stitches (1)
-    assert len(derived) == 6, len(derived)
+    # FOON's plan and the stitched one, from first makers and by holder reach (4); small (1); through the stitches
+    # (1); FOON's own plan unfolded and the stitched one, no other makers' plans (2: the wide task had no plan)
+    assert len(derived) == 8, len(derived)
 
 
 def test_the_shared_memo_gives_the_tasks_each_count_gives_alone():

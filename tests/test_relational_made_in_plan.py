@@ -95,7 +95,7 @@ def test_the_swaps_counting_fewer_are_tried_together_and_leave_the_knife_out():
     plan, _ = delete_free_plan(Foon(units), frozenset(kitchen), (DISH,), together=True, in_plan=True)
     assert 12 in plan and 13 not in plan  # the first achiever of the cubed butter: content order (`rank`)
     counts = derive_counts(Foon(units), range(len(units)), frozenset(kitchen), (DISH,), together=True, stitched=True,
-                           reuse=True)
+                           reuse=True, other_makers=True)
     assert {u for u, _ in counts.firings} == {0, 4, 5, 6, 7, 8, 9, 10, 11, 13}
     goal = Goal(GoalSpec("omelette"), (DISH,))
     small = compile_goal(Foon(units), Kitchen(frozenset(kitchen)), goal, "relational", narrow=True)

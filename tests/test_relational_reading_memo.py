@@ -19,9 +19,11 @@ from foon2pddl.pddl.compile import compile_goal
 def test_a_network_evicted_from_the_as_now_cache_stays_alive_while_a_memo_names_it(monkeypatch):
     seen = []
 
-    def recording(inp, st, scene, stated, overrides, narrow=None, memo=None, through=False, placed=False):
+    def recording(inp, st, scene, stated, overrides, narrow=None, memo=None, through=False, placed=False,
+                  other_makers=True):
         seen.append((inp, memo))
-        return relational_reading.read_units(inp, st, scene, stated, overrides, narrow, memo, through, placed)
+        return relational_reading.read_units(inp, st, scene, stated, overrides, narrow, memo, through, placed,
+                                             other_makers)
 
     monkeypatch.setattr(relational_objects, "read_units", recording)
     foon = Foon((FILL, PUT, BAKE))

@@ -85,13 +85,14 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
                  instances: tuple[tuple[str, int], ...] = (), categories: tuple[tuple[str, tuple[str, ...]], ...] = (),
                  category_index: CategoryIndex | None = None, policy: str = "absent",
                  constraints: Constraints | None = None, narrow: bool = False, through: bool = False,
-                 placed: bool = False, memo: dict | None = None) -> Compiled:
+                 placed: bool = False, memo: dict | None = None, own: bool = False) -> Compiled:
     """Encode `goal` from `kitchen` over `foon` at `level` (UsageError on an unknown encoding or bad options).
 
     `instances` and `categories` (category chains) are read by the `instances` encoding,
     `category_index` and `policy` by lifted ones (default: the shipped category index), `narrow` (objects
     counted small, `Compiled.narrowed`; from the plan through the stitches alone with `through`, with makers by
-    holder reach with `placed`, or without `narrow` counted wide with those makers) by the `relational` one; `memo`:
+    holder reach with `placed`, or without `narrow` counted wide with those makers; `own`: counted wide from FOON's
+    own plan unfolded) by the `relational` one; `memo`:
     a dict the caller passes to every compile of one goal (the same network, kitchen and goal objects), in which the
     `relational` encoding keeps the network's reading and its counts, each derived once across them
     (`planners.solve.plan`'s counts; `EncodeOptions.memo`).
@@ -121,7 +122,7 @@ def compile_goal(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAU
             foon, prune = must_use_cone(foon, kitchen, goal, constraints.must_use), False
     options = EncodeOptions(prune=prune, costs=costs, rates=rates, instances=instances, categories=categories,
                             category_index=category_index, policy=policy, narrow=narrow, through=through,
-                            placed=placed, memo=memo)
+                            placed=placed, memo=memo, own=own)
     compiled = enc.compile(foon, kitchen, goal, level, options)
     if constraints:
         compiled = replace(compiled, task=add_must_use(compiled.task, constraints.must_use))

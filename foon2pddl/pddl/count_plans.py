@@ -96,6 +96,7 @@ def _other_makers(reach: Reachability, target: ObjectNode, together: bool, place
     butter}, on [cutting board])` is the spread at `0010-cheesy_garlic_bread.txt:176`, taking 0016's bowl of garlic
     butter and 0010's garlic butter in the food processor bowl, so both garlic-butter chains were counted; the spread
     at `0016-easy_garlic_bread-one-pot-chef.txt:125` makes that node from 0016's chain alone. `derive_counts` counts
+    (with `other_makers`: every relational count but FOON's own plan unfolded, `EncodeOptions.own`)
     each (its ways back and orders, which cost most) after its other plans, and keeps the fewest-counting (the first
     on a tie). A swap that trades units for as many others is left: the odd universal half's shrimp mango salad, 33
     units either way (2 for 2), counted 49 objects against 50 but had 35 in the problem against 34; so is one unit for

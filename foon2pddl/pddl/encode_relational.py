@@ -104,7 +104,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     scene = kitchen.project(level).scene
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
         IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE, LIVE),
-        options.narrow, options.through, options.placed, counting)
+        options.narrow, options.through, options.placed, counting, options.own)
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
     why = tuple(f"objects: {w}" for w in (*count_reasons(f, counts, ob.kitchen, rd.roles_of),

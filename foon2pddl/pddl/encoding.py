@@ -44,9 +44,10 @@ class EncodeOptions:
     Lifted encodings also take the category index (`category_index`, None: the shipped one)
     and which categorized objects become parameters (`policy`, see `encode_lifted.generalizer`).
     The `relational` encoding counts its objects small when `narrow` (`relational_objects.task_objects`), from the
-    plan through the stitches alone with `through`, with makers by holder reach with `placed`; `memo`, a dict one
-    caller passes to each encoding of one goal (`compile.compile_goal`'s), lets it read the network and derive
-    each count once across them (None: nothing is shared).
+    plan through the stitches alone with `through`, with makers by holder reach with `placed`, and wide from FOON's
+    own plan unfolded, no plan with another maker of a node, with `own` (what `plan` falls back on last); `memo`, a
+    dict one caller passes to each encoding of one goal (`compile.compile_goal`'s), lets it read the network and
+    derive each count once across them (None: nothing is shared).
     """
 
     prune: bool = True
@@ -60,6 +61,7 @@ class EncodeOptions:
     through: bool = False
     placed: bool = False
     memo: dict | None = field(default=None, compare=False, repr=False)
+    own: bool = False
 
     def __post_init__(self) -> None:
         check_costs(self.costs, self.rates)

@@ -22,7 +22,9 @@ unfolding a delete-free plan backwards:
    when it counts fewer (three plans: the counting at most triples); and of each plan
    with one needed node made by another of its makers, and with those swaps together,
    that has fewer units (or one unit for one taking only some of its inputs) and counts
-   fewer as it is (`count_plans._other_makers`), counted after those.
+   fewer as it is (`count_plans._other_makers`), counted after those (`other_makers`;
+   without it, FOON's own plan: what `plan` falls back on last, as such a plan's
+   objects may give no valid plan).
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
@@ -188,7 +190,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
-                  reuse: bool = False, placed: bool = False) -> InstanceCounts:
+                  reuse: bool = False, placed: bool = False, other_makers: bool = False) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
@@ -196,7 +198,9 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     object roles (default `pairing.unit_roles`, the `instances` encoding's); `together`: `delete_free_plan`'s;
     `stitched`: the task reads inputs no unit makes as `input_stitch` does (`count_returns.with_returns`);
     `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`); `placed`:
-    makers by holder reach (`count_together.makers_together`).
+    makers by holder reach (`count_together.makers_together`); `other_makers` (with `together`): the plans with a
+    needed node made by another of its makers count too (`count_plans._other_makers`); the relational counts take
+    them but the one `plan` falls back on last (`EncodeOptions.own`).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -207,7 +211,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), target, roles_of)
         return at.total() + new.total()
     found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed,
-                                      swapped if together else None, as_is)
+                                      swapped if together and other_makers else None, as_is)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
     # stated, overridden or added (else it counts 0 and is left out), so it is looked for only then
     nodes, labels = (start_places(foon, units, kitchen, candidates, roles_of)

@@ -11,7 +11,11 @@ it; a unit taking a made node as it was before a later unit moved the object on 
 that counts fewer, `relational_reading._as_now`), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
 and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
 another cup filled again): the cut, 4 objects. Kept
-when it has fewer objects, with a note that says so (`Compiled.narrowed`). It may have no plan where the wide
+when it has fewer objects, with a note that says so (`Compiled.narrowed`). Every count takes the plans with a needed
+node made by another of its makers too, when they count fewer (`instance_counts.derive_counts`' `other_makers`), but
+counted wide with `own`: FOON's own plan unfolded, what `plan` falls back on last when the wide task took such a plan
+and has no valid plan (the experiment's REG trial 6 macaroni in the pot: 9 objects with the linguine's pour of water,
+unsolvable, 14 for FOON's own plan, solved). It may have no plan where the wide
 task has one (0050's own plan takes the finished omelette from the kitchen, out of holder reach: the plan needs the bacon
 the stitched one sprinkles). Counted small `through` the stitches: from the plan through them alone (no FOON plan
 beside it; 0050's, with the bacon, 24 objects where wide counts 25): what `plan` tries next when the task of FOON's
@@ -71,18 +75,21 @@ class TaskObjects:
 
 def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                  overrides: Mapping[str, int], reserved: Iterable[str], narrow: bool = False,
-                 through: bool = False, placed: bool = False, memo: dict | None = None) -> TaskObjects:
+                 through: bool = False, placed: bool = False, memo: dict | None = None,
+                 own: bool = False) -> TaskObjects:
     """The objects of the task of `st`'s units (module doc): `scene` the kitchen's scene objects (none: counted),
     `stated` and `overrides` the counts the kitchen and options give, `reserved` the names the encoding keeps;
     `narrow`: counted small when that gives fewer objects, `through` the stitches (a task with none: counted wide),
     `placed`: counted as wide, with makers by holder reach (`count_together._placed_back`), kept when fewer;
-    without `narrow`, the wide count with those makers.
+    without `narrow`, the wide count with those makers; `own` (without `narrow`): counted wide from FOON's own plan
+    unfolded, no other makers' plans (module doc).
     Counting small reuses the readings counting wide made (`read_units`' memo: units are read again only with other
     holders silent) and derives its own counts; `memo`, when given, is that memo shared with the other countings of
     the same `inp`, `st`, `stated` and `overrides` (`encode_relational`'s, across `planners.solve.plan`'s counts: the
     wide count, which each of them starts from, is derived once)."""
     memo = {} if memo is None else memo  # the units' readings and counts the countings share (`read_units`)
-    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow)
+    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow,
+                    other_makers=not own)
     if not narrow or scene or (through and not st.origin):
         return wide
     started = frozenset() if placed else wide.implied | {
@@ -102,10 +109,11 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
 
 def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
              overrides: Mapping[str, int], reserved: tuple[str, ...], more: frozenset[ObjectNode] | None,
-             memo: dict, through: bool = False, placed: bool = False) -> TaskObjects:
+             memo: dict, through: bool = False, placed: bool = False, other_makers: bool = True) -> TaskObjects:
     """The objects counted from the reading of the units (`read_units`, small with `more`, `through` the stitches,
-    with makers by holder reach when `placed`, sharing `memo`), or the scene's."""
-    rd = read_units(inp, st, scene, stated, overrides, more, memo, through, placed)
+    with makers by holder reach when `placed`, with other makers' plans when `other_makers`, sharing `memo`), or the
+    scene's."""
+    rd = read_units(inp, st, scene, stated, overrides, more, memo, through, placed, other_makers)
     f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts
     table = NameTable()
     for name in reserved:

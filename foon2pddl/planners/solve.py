@@ -46,6 +46,8 @@ EXCLUDED = "constraints"
 UNREACHED = "holder reachability"
 #: The note of a task counted wide with makers by holder reach, planned when every other was out of holder reach.
 OUT_OF_REACH = "the task counted from first makers is out of holder reach: counted wide with makers chosen by holder reach"
+#: `plan`'s note when the wide task, counted with a needed node made by another of its makers, gave no valid plan
+OWN_PLAN = "the wide count with another maker of a node gave no valid plan"
 
 #: The time limit (s) of a plan with fewer objects than a plan to fall back on: `plan_restoring`'s second plan, and
 #: `plan`'s task counted small (or the caller's, when shorter), there in CPU seconds of the planner's processes (a
@@ -162,7 +164,11 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     first (not with `optimal`) with only the actions of the units of the plan its objects are counted from
     (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any
     cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
-    `MIN_REST`). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
+    `MIN_REST`). When the wide task (or the small one, not fewer) has no valid plan and its count took a plan with a
+    needed node made by another of its makers (`count_plans._other_makers`), the task of FOON's own plan unfolded
+    (`compile_goal(..., own=True)`) is planned within what is left, kept only when it solves, with a note (the
+    experiment's REG trial 6 macaroni in the pot: 9 objects with the linguine's pour of water, no relaxed solution;
+    14 for FOON's own plan, solved). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
     reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
     replay rejects, or none, leaves the outcome naming the units out of holder reach). The counts share one memo
     (`compile_goal`'s `memo`): the network is read, and each distinct count derived, once per call.
@@ -174,13 +180,13 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     timings: dict[str, float] = {}
     counting: dict = {}  # what the compiles of this goal share (its counts: the wide one is each one's start)
 
-    def compiled(narrow: bool, through: bool = False, placed: bool = False) -> Compiled:
+    def compiled(narrow: bool, through: bool = False, placed: bool = False, own: bool = False) -> Compiled:
         t0 = time.perf_counter()
         try:
             return compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                                 category_index=category_index, constraints=constraints, instances=instances,
                                 categories=categories, narrow=narrow, through=through, placed=placed,
-                                memo=counting)
+                                memo=counting, own=own)
         finally:
             _add(timings, "encode", time.perf_counter() - t0)
 
@@ -234,6 +240,15 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     def rest() -> float | None:  # the caller's limit less what the small plan and the wide encoding took
         return None if time_limit is None else max(time_limit - (_now() - started), MIN_REST)
 
+    def own(task: Compiled, out: PlanOutcome) -> PlanOutcome:  # the wide task, no valid plan: FOON's own plan unfolded
+        if out.status == PlanStatus.SOLVED or encoding != "relational" or task.task.instances == (
+                other := compiled(False, own=True)).task.instances:
+            return out
+        last = planned(other, rest(), cpu_limit)
+        return _noted(last, f"objects: {OWN_PLAN}, {len(task.task.instances)}: planned with the "
+                            f"{len(other.task.instances)} FOON's own plan unfolded counts") \
+            if last.status == PlanStatus.SOLVED else out
+
     def reached(out: PlanOutcome) -> PlanOutcome:  # out of holder reach: counted wide, with makers by holder reach
         other = compiled(False, placed=True) if out.result.planner == UNREACHED else None
         if other is None:
@@ -245,7 +260,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
             if last.status == PlanStatus.SOLVED else out
 
     if not small.narrowed:
-        return reached(planned(small, time_limit, cpu_limit))
+        return reached(own(small, planned(small, time_limit, cpu_limit)))
     short = min(time_limit or RETRY_SECONDS, cpu_limit or RETRY_SECONDS, RETRY_SECONDS)
 
     def smallest() -> PlanOutcome:  # out of holder reach: the plan through the stitches alone, then makers by reach
@@ -256,7 +271,11 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
                 small, out = other, planned(other, time_limit, short)
         return out
 
-    outs = _first_solved(smallest, lambda: reached(planned(compiled(False), rest(), cpu_limit)))
+    def widest() -> PlanOutcome:  # counted wide; FOON's own plan unfolded, then makers by holder reach, when no plan
+        wide = compiled(False)
+        return reached(own(wide, planned(wide, rest(), cpu_limit)))
+
+    outs = _first_solved(smallest, widest)
     if len(outs) == 1:
         return outs[0]
     return _noted(outs[1], f"objects: the {count(len(small.task.instances), 'object')} counted small gave no valid plan within "
