@@ -39,7 +39,9 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
 
     Under constraints: the native constrained retrieval's words. Otherwise the missing
     kitchen additions when the fixpoint does not reach the goal; when it does, what in
-    the encoding rules it out (instance counts), else that the planner found no plan.
+    the encoding rules it out (a scene's objects, or under `relational` the stated counts, the step of
+    FOON's task tree that runs short: `short_step`; under `instances`, the counts stated below what the
+    unfolded plan uses), else that the planner found no plan.
     """
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable

@@ -191,8 +191,9 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     what already sits in a holder something moves into: the dressing the lettuce is poured onto is no tool).
     An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
     holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
-    is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or
-    one standing for a place the node names (`sandwich (in [pan])` in a skillet), stays the motion's `from`.
+    is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
+    holder of an object whose node names a place (`sandwich (in [pan])` lifted from a skillet), stays the motion's
+    `from`.
     """
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
