@@ -606,3 +606,14 @@ def test_retrieval_md_says_what_a_compile_rows_units_count(tmp_path):
     assert row["status"] == "compiled" and f"level 3: {row['units']} unit actions" in one.output
     page = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
     assert "status `compiled`, `units` the task's unit actions, as `compile` says for one goal" in page
+
+
+@pytest.mark.parametrize("encoding", ["relational", "instances"])
+def test_a_count_stated_short_says_one_sentence_under_either_encoding(encoding):
+    """`relational` names the step the count runs short at, `instances` the count against the derived one: each in the
+    one sentence (`cli.reasons._too_few`), which ends saying what to do about it."""
+    r = run("plan", "--goal", "guacamole", "--instances", "knife=0", "--encoding", encoding)
+    assert r.exit_code == 1, r.output
+    said = next(line for line in r.stderr.splitlines() if line.startswith("reason: "))
+    assert said.startswith("reason: FOON's semantics makes the goal, but too few physical objects are given: "), said
+    assert "knife" in said and said.endswith(" (raise the count, or drop it to let the count be derived)"), said

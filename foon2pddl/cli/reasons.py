@@ -64,19 +64,23 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
     if encoding == "relational" and (kitchen.stated_counts() or instances):
         short = short_step(foon, kitchen, goal, dict(instances))
         if short:
-            return ("FOON's semantics makes the goal, but too few physical objects are given: " + short
-                    + " (raise the count, or drop it to let the count be derived)"), True
+            return _too_few(short), True
     if encoding == "instances":
         from ..pddl.instance_counts import count_shortfalls
 
         short = count_shortfalls(foon, kitchen.nodes, goal.candidates, stated=kitchen.stated_counts(),
                                  overrides=dict(instances))
         if short:
-            return ("FOON's semantics makes the goal, but too few physical objects are given: "
-                    + "; ".join(s.describe() for s in short)
-                    + " (raise the count, or drop it to let the count be derived)"), True
+            return _too_few("; ".join(s.describe() for s in short)), True
     return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
            "encoding (see its message)" + _try_tree(encoding), True
+
+
+def _too_few(where: str) -> str:
+    """The reason when FOON's semantics makes the goal and a stated count falls short (`where`): one sentence for
+    `relational`'s step (`short_step`) and `instances`' shortfalls (`instance_counts.count_shortfalls`)."""
+    return (f"FOON's semantics makes the goal, but too few physical objects are given: {where}"
+            " (raise the count, or drop it to let the count be derived)")
 
 
 def _try_tree(encoding: str) -> str:
