@@ -54,7 +54,8 @@ OWN_PLAN = "the wide count with another maker of a node gave no valid plan"
 #: loaded machine stretches their wall time: at load 4-5 the odd-index universal FOON's chocolate cake took 18 s of
 #: wall time to translate its small task, 7 s of CPU, and was planned wide, 40 s).
 RETRY_SECONDS = 10.0
-#: The least time a second plan gets when the first used up the limit (so a call ends at most this much late).
+#: The least time a later plan gets when those before it used up the limit: a call may end a few times this late (the
+#: wide task, FOON's own plan unfolded and the holder-reach task each get it, and each whole task after its counted units).
 MIN_REST = 1.0
 #: The clock the time left is measured on (a module name, so a test can set it).
 _now = time.monotonic
@@ -165,11 +166,13 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     (`Compiled.counted`, `pddl.prune.counted_only`; when that leaves some out and its goal is in holder reach, for any
     cause), within half its limits (`RETRY_SECONDS` of wall time with none), then whole within what is left (at least
     `MIN_REST`). When the wide task (or the small one, not fewer) has no valid plan and its count took a plan with a
-    needed node made by another of its makers (`count_plans._other_makers`), the task of FOON's own plan unfolded
-    (`compile_goal(..., own=True)`) is planned within what is left, kept only when it solves, with a note (the
+    needed node made by another of its makers (`count_plans._other_makers`; seen by compiling the other task: its
+    objects differ), the task of FOON's own plan unfolded (`compile_goal(..., own=True)`) is planned within what is left, kept only when it solves, with a note (the
     experiment's REG trial 6 macaroni in the pot: 9 objects with the linguine's pour of water, no relaxed solution;
     14 for FOON's own plan, solved). When the last task planned is out of holder reach, the task counted wide with makers chosen by holder
-    reach (`compile_goal(..., placed=True)`, whatever its count) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
+    reach (`compile_goal(..., placed=True)`, whatever its count; inside the counting the plan with those makers
+    competes with the first makers' one and the fewest-counting is kept, `instance_counts.derive_counts`, so it may
+    be the wide task again: tests/test_relational_placed_gate.py) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
     replay rejects, or none, leaves the outcome naming the units out of holder reach). The counts share one memo
     (`compile_goal`'s `memo`): the network is read, and each distinct count derived, once per call.
     """
