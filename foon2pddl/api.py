@@ -90,7 +90,7 @@ def constraints_of(*, without_motions: Iterable[str] = (), without: Iterable[str
         raise UsageError(str(exc)) from None
 
 
-def load_network(*paths: str | Path | Iterable[str | Path]) -> Network:
+def load_network(*paths: str | Path | list[str | Path] | tuple[str | Path, ...]) -> Network:
     """The universal FOON of FOON files and directories (merged, duplicates removed); none: the embedded example.
 
     What the command line's PATHS take: each argument a file or directory, or a list (tuple) of them, so
