@@ -182,6 +182,11 @@ def _portions(step: TraceStep, before: dict[str, ObjectState], after: dict[str, 
     return out
 
 
+def _into(at: ObjectState) -> str:
+    """` into H` (in) or ` onto H` (on) for the holder `at` puts an object in; empty for none."""
+    return f" {'into' if at.relation is Relation.IN else 'onto'} {at.holder}" if at.holder else ""
+
+
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
     """A step in recipe words with the objects named, O(bindings).
 
@@ -201,14 +206,13 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     listed = {b.object for b in step.bindings if b.role}  # the objects the unit names
     for m, src in _portions(step, before, after, made):
         moves.append(f"{m} (a portion of {src})" + (f" from {before[src].holder}" if before[src].holder else "")
-                     + (f" {'into' if after[m].relation is Relation.IN else 'onto'} {after[m].holder}"
-                        if after[m].holder else ""))
+                     + _into(after[m]))
         holders.update({src, m} | {h for h in (before[src].holder, after[m].holder) if h})
         made.remove(m)
     for b in step.bindings:
         x, was, now = b.object, before[b.object], after[b.object]
         if b.before is not None and was.holder != now.holder and not now.consumed:
-            into = f" {'into' if now.relation is Relation.IN else 'onto'} {now.holder}" if now.holder else ""
+            into = _into(now)
             if was.holder and was.holder not in listed and not places(b.before):
                 taken.append((x, f"take {x} {'out of' if was.relation is Relation.IN else 'off'} {was.holder}"))
                 moves.append(x + into)
