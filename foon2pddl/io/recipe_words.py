@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..model.foon import FunctionalUnit, ObjectNode, State
 from ..model.pairing import transfer, unit_roles
-from ..model.places import contents, head_of
+from ..model.places import contents, head_of, named_holder
 
 #: State labels that, naming another input (`_holder`), say where a step happens.
 PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
@@ -41,11 +41,9 @@ def aliases(unit: FunctionalUnit) -> Aliases:
 
 
 def _holder(state: State) -> str:
-    """The object a place state names, or "": its related object (`on [pizza pan]`), else the one object it lists
-    (FOON writes a spread's place in braces too: `pizza sauce (on {pizza dough})`, 0082's cheese pizza)."""
-    if state.label not in PLACE_WORDS:
-        return ""
-    return state.related or (state.ingredients[0] if len(state.ingredients) == 1 else "")
+    """The object a place state names, or "": `model.places.named_holder` for a place word (`on [pizza pan]`, and
+    `pizza sauce (on {pizza dough})`, 0082's cheese pizza: FOON writes a spread's place in braces too)."""
+    return named_holder(state) if state.label in PLACE_WORDS else ""
 
 
 def _place(node: ObjectNode, named: Aliases | None = None) -> tuple[str, str] | None:

@@ -22,7 +22,7 @@ from functools import lru_cache
 from .foon import ObjectNode, State, make_node, make_state
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "contents", "describes_contents", "head_of", "listed", "moved_into", "place_of", "place_state", "places"]
+__all__ = ["CONTENT_STATES", "contents", "describes_contents", "head_of", "listed", "moved_into", "named_holder", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
@@ -34,13 +34,18 @@ def head_of(name: str, label: str) -> bool:
     return label != name and (label.endswith(" " + name) or name.endswith(" " + label))
 
 
+def named_holder(state: State) -> str:
+    """The one object a state names as where something is, whatever its word: its related object (`[bowl]`), else
+    the one object it lists (`{pizza dough}`: the public data's braces around one holder); "" for none."""
+    return state.related or (state.ingredients[0] if len(state.ingredients) == 1 else "")
+
+
 def place_state(state: State) -> tuple[Relation, str] | None:
     """The place one state names: `(in, bowl)` for `in [bowl]`, `(on, stove)` for `on [stove]`, and for `on
-    {pizza dough}`, the public data's braces around one holder; None for any other state (a bare `on` is an
-    appliance switched on, not a place)."""
-    if state.label not in ("in", "on") or not (state.related or len(state.ingredients) == 1):
-        return None
-    return Relation(state.label), state.related or state.ingredients[0]
+    {pizza dough}`, the public data's braces around one holder (`named_holder`); None for any other state (a bare
+    `on` is an appliance switched on, not a place)."""
+    holder = named_holder(state) if state.label in ("in", "on") else ""
+    return (Relation(state.label), holder) if holder else None
 
 
 #: Nodes whose reading `places`, `listed` and `describes_contents` remember (nodes are immutable; an encoding reads each many times).
