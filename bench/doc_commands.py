@@ -116,3 +116,71 @@ def documented_commands(pages: tuple[Path, ...] = PAGES) -> list[DocCommand]:
             if text not in seen and not is_synopsis(text):
                 seen[text] = DocCommand(str(page.relative_to(ROOT)), number, text, form)
     return list(seen.values())
+
+
+#: A code span of prose (it may run over a line break, not a paragraph's end) and a fenced block.
+_SPAN = re.compile(r"`((?:[^`\n]|\n(?![ \t]*\n))+)`")
+_FENCE = re.compile(r"^```[^\n]*\n(.*?)^```", re.M | re.S)
+#: The commands whose `--goal` a page may show; any other first word is no command (`--goal X` alone).
+_GOAL_COMMANDS = ("retrieve", "compile", "plan")
+
+
+@dataclass(frozen=True)
+class GoalExample:
+    """One `--goal` value a page shows, with the command (and its arguments) it is shown in."""
+
+    page: str
+    line: int
+    command: str  # retrieve | compile | plan; `retrieve` for a bare `--goal X` (the embedded example network)
+    args: tuple[str, ...]  # the command's arguments as shown (`--goal X` among them)
+    goal: str
+
+    @property
+    def where(self) -> str:
+        return f"{self.page}:{self.line}"
+
+
+def _goal_texts(text: str) -> Iterator[tuple[int, str]]:
+    """(line number, text) of every code span of prose and every fenced-block line (`\\` continuations
+    joined) that shows `--goal`, and of every goal in a table row's first code span under `## Goals`."""
+    for m in _FENCE.finditer(text):
+        pending, start = "", 0
+        for offset, line in enumerate(m.group(1).splitlines()):
+            number = text.count("\n", 0, m.start(1)) + 1 + offset
+            start = start if pending else number
+            line = (pending + " " + line.strip()) if pending else line
+            if line.endswith("\\"):
+                pending = line[:-1].rstrip()
+                continue
+            pending = ""
+            line = line.removeprefix("; ").removeprefix("$ ")
+            if "--goal " in line:
+                yield start, line
+    prose = _FENCE.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)  # a fence's backticks open no span
+    goals_table = re.search(r"^## Goals\n(.*?)^#", prose, re.M | re.S)
+    for m in _SPAN.finditer(prose):
+        number = text.count("\n", 0, m.start()) + 1
+        span = " ".join(m.group(1).split())
+        if re.search(r"--goal ", span):
+            yield number, span
+        elif goals_table and goals_table.start(1) <= m.start() < goals_table.end(1) and \
+                text[text.rfind("\n", 0, m.start()) + 1:m.start()] == "| ":
+            yield number, "--goal " + shlex.quote(span)  # a row of the goal syntax table
+
+
+def goal_examples(pages: tuple[Path, ...] = PAGES) -> list[GoalExample]:
+    """Every `--goal` value the pages show (fenced blocks, prose code spans, format.md's goal table), with the
+    command it is shown in; a placeholder value (`--goal G`, `--goal TEXT`) is no example."""
+    out: list[GoalExample] = []
+    for page in pages:
+        for number, shown in _goal_texts(page.read_text()):
+            if is_synopsis(shown):
+                continue
+            words = shlex.split(shown, comments=True)
+            words = words[1:] if words[:1] == ["foon2pddl"] else words
+            command = words[0] if words[:1] and words[0] in _GOAL_COMMANDS else "retrieve"
+            args = tuple(words[1:] if words[:1] == [command] else words[words.index("--goal"):])
+            for before, word in zip(args, args[1:], strict=False):
+                if before == "--goal" and not _PLACEHOLDER.search(word):
+                    out.append(GoalExample(str(page.relative_to(ROOT)), number, command, args, word))
+    return out
