@@ -41,7 +41,7 @@ from .model.foon import Foon, ObjectNode
 from .model.goal import Goal, GoalSpec
 from .model.goal import resolve_goal as _resolve_goal
 from .model.kitchen import Kitchen
-from .pddl.compile import ENCODINGS
+from .pddl.compile import ENCODINGS, encoding_named
 from .pddl.compile import compile_goal as _compile_goal
 from .pddl.registry import Compiled
 from .pddl.render import render
@@ -211,7 +211,7 @@ def compile_goal(network: Network | Foon, kitchen: Kitchen, goal: Goal, encoding
     >>> c.task.domain, c.foon_semantics
     ('universal_foon', True)
     """
-    foon = network.foon if isinstance(network, Network) and ENCODINGS[encoding].lifted else _foon(network, level)
+    foon = network.foon if isinstance(network, Network) and encoding_named(encoding).lifted else _foon(network, level)
     return _compile_goal(foon, kitchen, goal, encoding, level, prune=prune, costs=costs, rates=rates,
                          category_index=category_index)
 
@@ -260,7 +260,7 @@ def plan(network: Network | Foon, kitchen: Kitchen, goal: Goal | str, encoding: 
             raise UsageError(f"network kind {kind.name} plans the {kind.encoding} encoding, not {encoding}")
         encoding = kind.encoding
     cons = constraints if constraints is not None else Constraints()
-    if ENCODINGS[encoding].lifted:
+    if encoding_named(encoding).lifted:
         foon = _network(network).foon
         goal = goal if isinstance(goal, Goal) else resolve_goal(network, goal, level)
     elif kind.as_read or kind.encoding is not None:

@@ -49,6 +49,20 @@ def test_load_network_takes_what_the_clis_paths_take(tmp_path):
             fp.load_network(bad)
 
 
+def test_an_unknown_encoding_is_a_usage_error_naming_the_encodings(net):
+    """Issue 24's tried-again pass (stop 58): `fp.plan(net, kitchen, "guacamole", "relation")` raised a bare
+    `KeyError: 'relation'` (so did `compile_goal` and `plan_goals`), where every other bad argument of the API is a
+    `UsageError` naming the choices, as README's error hierarchy says and `skill_plan` already did."""
+    kitchen = fp.load_kitchen(net)
+    calls = (lambda: fp.plan(net, kitchen, "guacamole", "relation"),
+             lambda: fp.compile_goal(net, kitchen, fp.resolve_goal(net, "guacamole"), "relation"),
+             lambda: fp.plan_goals(net, kitchen, ["guacamole"], "relation"),
+             lambda: fp.skill_plan(net, kitchen, "guacamole", encoding="relation"))
+    for call in calls:
+        with pytest.raises(UsageError, match="encoding must be one of tree, .*relational.*, not 'relation'"):
+            call()
+
+
 def test_retrieve_under_constraints_and_kinds_matches_the_cli(net):
     kitchen = fp.load_kitchen(net)
     no_lime = fp.constraints_of(without=["lime"])
