@@ -725,11 +725,57 @@ def test_a_place_foon_writes_in_braces_is_where_the_object_goes_not_a_tool():
 
     pour, spread = parse_text(SPREADS, "pizza.txt").foon.units
     assert recipe_text(pour) == (
-        "pour and spread pizza sauce from the bowl onto the pizza dough (flattened, on [pizza pan]), with the serving"
-        " spoon (contains {pizza sauce}), on the pizza pan (on [surface])")
+        "pour and spread pizza sauce from the serving spoon onto the pizza dough (flattened, on [pizza pan]), on the"
+        " pizza pan (on [surface])")
     assert recipe_text(spread) == (
         "spread mozzarella (shredded) from the bag onto the pizza dough (contains {pizza sauce}, on [pizza pan]),"
         " on the pizza pan (on [surface])")
+
+
+def test_what_moves_leaves_the_holder_that_lists_it_not_the_one_its_own_node_still_names():
+    """Stop 57's newcomer pass, left then: 0082's cheese pizza scoops the sauce into the serving spoon, and the next
+    step read `pour and spread pizza sauce from the bowl ..., with the serving spoon (contains {pizza sauce})`. FOON
+    lists the sauce in the spoon (0082-homemade_cheese_pizza.txt:380) but leaves the sauce's own node `in [bowl]`
+    (:382): the scoop changed only the spoon. Another input listing what moves (not its own holder, not where it
+    goes) is where it is then: the step pours it from the spoon, which is then no tool as well. Its own holder
+    listing it alone leaves the words as they were."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    alone = SPREADS.split("//\n")[1].replace("O\tserving spoon\t1\nS\tcontains\t{pizza sauce}\n", "")
+    (pour,) = parse_text("//\n" + alone + "//\n", "pizza.txt").foon.units
+    assert recipe_text(pour) == (
+        "pour and spread pizza sauce from the bowl onto the pizza dough (flattened, on [pizza pan]), on the pizza pan"
+        " (on [surface])")
+
+
+def test_things_moved_from_one_holder_say_it_once():
+    """0085's breakfast pizza read `sprinkle onion (peeled, sliced) from the cutting board and bacon (chopped,
+    defrosted) from the cutting board onto the pizza dough ...` (0085-mini_bacon_egg_breakfast_pizza.txt:472: both
+    `on [cutting board]`, the unit lists no board). Things moved from one holder to one place say it once: the
+    unit's only input of that label, or with none a surface they are on. Two holders of one label, each listing
+    one of them (0082's salt and olive oil, each in its own bowl), stay two, and so do things `in [bottle]` with
+    no bottle node (the embedded greek salad's olive oil and vinegar: one bottle each)."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    sprinkle, pour = parse_text(
+        "//\nO\tonion\t1\nS\tsliced\nS\ton\t[cutting board]\nO\tpizza dough\t0\nS\tflattened\nO\tbacon\t1\n"
+        "S\tchopped\nS\ton\t[cutting board]\nM\tsprinkle\nO\tonion\t1\nS\tsliced\nS\ton\t{pizza dough}\n"
+        "O\tbacon\t1\nS\tchopped\nS\ton\t{pizza dough}\nO\tpizza dough\t0\nS\tflattened\n"
+        "S\tcontains\t{bacon,onion}\n"
+        "//\nO\tcontainer\t0\nS\tcontains\t{flour}\nO\tbowl\t1\nS\tcontains\t{salt}\nO\tsalt\t1\nS\tin\t[bowl]\n"
+        "O\tbowl\t1\nS\tcontains\t{olive oil}\nO\tolive oil\t1\nS\tin\t[bowl]\nM\tpour\nO\tcontainer\t0\n"
+        "S\tcontains\t{flour,olive oil,salt}\nO\tsalt\t1\nS\tin\t[container]\nO\tolive oil\t1\n"
+        "S\tin\t[container]\n//\n", "moves.txt").foon.units
+    (bottles,) = parse_text(
+        "//\nO\tbowl\t0\nS\tcontains\t{onion}\nO\tolive oil\t1\nS\tin\t[bottle]\nO\tvinegar\t1\nS\tin\t[bottle]\n"
+        "M\tpour\nO\tbowl\t0\nS\tcontains\t{olive oil,onion,vinegar}\nO\tolive oil\t1\nS\tin\t[bowl]\n"
+        "O\tvinegar\t1\nS\tin\t[bowl]\n//\n", "bottles.txt").foon.units
+    assert recipe_text(sprinkle) == (
+        "sprinkle onion (sliced) and bacon (chopped) from the cutting board onto the pizza dough (flattened)")
+    assert recipe_text(pour) == "pour salt from the bowl and olive oil from the bowl into the container (contains {flour})"
+    assert recipe_text(bottles) == "pour olive oil from the bottle and vinegar from the bottle into the bowl (contains {onion})"
 
 
 def test_what_a_step_uses_up_goes_onto_a_container_it_is_made_on():

@@ -112,6 +112,42 @@ def _source(unit: FunctionalUnit, moved: ObjectNode, label: str, into: ObjectNod
     return found.describe() if found is not None else label
 
 
+def _carrier(unit: FunctionalUnit, moved: ObjectNode, src: tuple[str, str] | None, dst: tuple[str, str],
+             moving: set[str]) -> tuple[str, str] | None:
+    """Where `moved` is when the step begins, if not where its own node says: the first other input that lists it.
+    FOON updates the holder a step fills (0082's scoop: `serving spoon (contains {pizza sauce})`) and leaves the
+    filled thing's own node as it was (`pizza sauce (in [bowl])`), so the next step pours the sauce from the
+    spoon. Not its own holder, nor what it goes into or what holds that (0053's baking tray lists the sauce poured
+    onto the tortilla in it), nor a thing the step moves or one on `moved` (0017's bread `on [baking tray]` that
+    lists the tray). None when no other input lists it. O(inputs x states)."""
+    into = next((i for i in unit.inputs if i.label == dst[1]), None)
+    away = {dst[1], *moving, *(src[1:] if src else ()), *(_holders(into, {}) if into is not None else ())}
+    found = next((j for j in unit.inputs if j.label not in away and moved.label in contents(j)
+                  and moved.label not in _holders(j, {})), None)
+    return ("in", found.label) if found is not None else None
+
+
+def _listed(what: list[tuple[str, str, bool]]) -> str:
+    """Things moved to one place, each with where it comes from (`from the bowl`), the source said once for a run
+    of things from one holder (`onion (sliced) and bacon (chopped) from the cutting board`). (words, source, one):
+    `one` when the source is surely one object: the unit's only input of its label, or, with none, a surface the
+    things are on (a cutting board, a plate). Two bowls, each of one thing, stay two, and so do things `in
+    [bottle]` with no bottle node (the greek salad's olive oil and vinegar, each in its own)."""
+    runs: list[tuple[list[str], str, bool]] = []
+    for words, source, one in what:
+        if runs and one and runs[-1][2] and source and runs[-1][1] == source:
+            runs[-1][0].append(words)
+        else:
+            runs.append(([words], source, one))
+    said = [_and(words) + source for words, source, _ in runs]
+    return _and(said)
+
+
+def _and(items: list[str]) -> str:
+    """`a`, `a and b`, `a, b and c`."""
+    return (", ".join(items[:-1]) + " and " if len(items) > 1 else "") + items[-1]
+
+
 def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
     """(what moves, from which container, into which) when two inputs of one container label trade contents
     (`model.pairing.transfer` over the unit's roles, which say which input becomes which output). None otherwise."""
@@ -194,7 +230,10 @@ def recipe_text(unit: FunctionalUnit) -> str:
     moves = [(i, _place(i, named), _place(new[i.label], named)) for i in unit.inputs
              if i.label in new and _place(new[i.label], named) not in (None, _place(i, named))]
     moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named)
-    said = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}
+    said = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
+    moving = {i.label for i, _, _ in moves}
+    moves = [(i, _carrier(unit, i, src, dst, moving) or src, dst) for i, src, dst in moves]
+    said |= {src[1] for _, src, _ in moves if src}
     between = None if moves else _between(unit)
     changed: list[ObjectNode] = []
     into = None
@@ -204,17 +243,18 @@ def recipe_text(unit: FunctionalUnit) -> str:
                 + f" from the {src.describe()} into the {dst.describe()}")
         said = {src.label} | {i.label for i in what}
     elif moves:
-        parts: list[tuple[list[str], str]] = []  # (what moves from where, into what): one destination said once
+        parts: list[tuple[list[tuple[str, str, bool]], str]] = []  # (what moves from where, into what): `_listed`
         for i, src, dst in moves:
             where = before.get(dst[1])
-            phrase = _unplaced(i) + (f" from the {_source(unit, i, src[1], where)}" if src else "")
+            source = f" from the {_source(unit, i, src[1], where)}" if src else ""
+            kin = sum(j.label == src[1] for j in unit.inputs) if src else 2
+            one = kin == 1 or (kin == 0 and src is not None and src[0] in ("on", "onto"))  # `_listed`
             to = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
             if parts and parts[-1][1] == to:
-                parts[-1][0].append(phrase)
+                parts[-1][0].append((_unplaced(i), source, one))
             else:
-                parts.append(([phrase], to))
-        text = f"{unit.motion.label} " + "; ".join(
-            (", ".join(what[:-1]) + " and " if len(what) > 1 else "") + f"{what[-1]} {to}" for what, to in parts)
+                parts.append(([(_unplaced(i), source, one)], to))
+        text = f"{unit.motion.label} " + "; ".join(f"{_listed(what)} {to}" for what, to in parts)
     else:
         changed, into = _changed(unit, new, by_label, named)
         said = {i.label for i in changed} | ({into.label} if into is not None else set())
