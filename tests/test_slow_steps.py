@@ -165,9 +165,14 @@ def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
     # 24 s at load 14; on a network with a label in no category (`dressing`): with none, WordNet is not opened
     (("categories", "--extend", ROOT / "tests/data/scene/dressed_lettuce.foon"),
      "filing the object labels in no category (through WordNet) ..."),
+    # stop 58's pass: `goals tests/data/foon-subgraphs --network exp --dishes` said `building FOON-EXP ...`, then
+    # nothing for 2.3-2.5 s while it ran the kitchen's fixpoint over FOON-EXP's 7,908 units and wrote its rows (load 8)
+    (("goals", "--network", "exp", "--dishes"), "finding which of the 287 goal candidates of FOON-EXP the kitchen can make ..."),
+    # and with --json, 2.3 s silent after that step while it wrote the 7,334 rows (load 9)
+    (("goals", "--network", "exp", "--json"), "writing the 287 goal candidates as JSON ..."),
 ], ids=["similarity", "expand --pairs", "expand --pairs: senses", "retrieve --network exp", "plan --planner pyperplan", "plan --skills", "plan --up-validate",
         "check", "stats", "stats: its counts", "expand: its output", "generalize: its output",
-        "generalize: compressing", "categories --extend"])
+        "generalize: compressing", "categories --extend", "goals --network exp", "goals --json"])
 def test_a_slow_command_says_what_it_does(every_step_speaks, args, said):
     r = run(*args)
     assert r.exit_code in (0, 1), r.stderr
