@@ -41,6 +41,20 @@ def test_one_knife_runs_short_at_the_spread_unless_washed_or_doubled():
     assert dict(needed(tree, KNIFE_KITCHEN).drawn) == {BREAD: 1, CLEAN: 2, BUTTER: 1}
 
 
+def test_only_what_is_counted_limits_when_uncounted_is_no_limit():
+    """`cli/reasons.short_step` (a count stated too low, `--instances knife=1`) gave every other label "plenty" of
+    objects by hand, as `schedule` had no such mode: `uncounted=None` is it. A label `counts` names, and a node
+    the kitchen states, still limit; every other kitchen node has as many objects as the tree draws."""
+    tree = TaskTree((CUT, SPREAD), BUTTERED)
+    assert schedule(tree, KNIFE_KITCHEN, {"bread": 1}, uncounted=None).ok  # the knife is not counted
+    short = schedule(tree, KNIFE_KITCHEN, {"knife": 1}, uncounted=None)
+    assert (short.verdict, short.step, short.label) == (Verdict.SHORT, 1, "knife")
+    stated = schedule(tree, KNIFE_KITCHEN, uncounted=None, stated={CLEAN: 1})
+    assert (stated.verdict, stated.label) == (Verdict.SHORT, "knife")
+    assert schedule(tree, KNIFE_KITCHEN, uncounted=None).drawn == needed(tree, KNIFE_KITCHEN).drawn
+    assert dict(schedule(tree, KNIFE_KITCHEN, uncounted=2).drawn)[CLEAN] == 2
+
+
 # A salad and its dressing in two bowls at once, then combined into the first.
 EMPTY = n("bowl", "empty")
 LETTUCE, DRESSING = n("lettuce", "chopped"), n("oil")

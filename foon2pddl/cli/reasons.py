@@ -141,11 +141,10 @@ def short_step(foon, kitchen, goal, counts: dict[str, int] | None = None) -> str
     """Which step of FOON's task tree runs out of a kitchen's counted objects (`planners.executable.schedule`:
     `step 3 (pour) needs one more bowl in 'bowl (empty)': ...`), None when none does or there is no tree.
 
-    `counts` (label -> N, as `--instances`): only the stated counts and these limit the schedule, every other
-    kitchen node has more objects than the tree has inputs, so a shortfall is always one the user stated; a label
-    in `counts` is counted by it, not by the kitchen (`instance_counts.derive_counts`'s precedence: override, then
-    the kitchen's count). Without `counts`, a node the kitchen gives no count has one object (a scene's objects are
-    all counted)."""
+    `counts` (label -> N, as `--instances`): only the stated counts and these limit the schedule (`schedule`'s
+    `uncounted=None`), so a shortfall is always one the user stated; a label in `counts` is counted by it, not by
+    the kitchen (`instance_counts.derive_counts`'s precedence: override, then the kitchen's count). Without
+    `counts`, a node the kitchen gives no count has one object (a scene's objects are all counted)."""
     from ..planners.executable import Verdict, schedule
     from ..retrieval.api import retrieve
 
@@ -155,9 +154,7 @@ def short_step(foon, kitchen, goal, counts: dict[str, int] | None = None) -> str
     stated = kitchen.stated_counts()
     if counts is not None:
         stated = {n: k for n, k in stated.items() if n.label not in counts}  # `schedule` takes these first
-        plenty = 1 + sum(len(u.inputs) for u in tree.units)  # more than the tree's steps can ever draw
-        counts = {n.label: plenty for u in tree.units for n in u.inputs} | counts
-    done = schedule(tree, kitchen.nodes, counts, stated=stated)
+    done = schedule(tree, kitchen.nodes, counts, stated=stated, uncounted=1 if counts is None else None)
     return done.message if done.verdict is Verdict.SHORT else None
 
 

@@ -3,8 +3,9 @@
 FOON's semantics is over nodes: once `bowl (empty)` is available it stays
 available, so one bowl serves every unit that needs an empty bowl, even at once.
 `schedule` runs the tree's units in order over physical objects instead: every
-kitchen node holds `counts[label]` objects (default 1: one object per kitchen
-item; `per_item` scales it), each object is in one node at a time, and a unit's
+kitchen node holds `counts[label]` objects (`uncounted` for a label `counts` does
+not name, default 1: one object per kitchen item; None: no limit; `per_item` scales
+both), each object is in one node at a time, and a unit's
 role (`model.pairing.unit_roles`) binds a distinct object in the node the role
 needs: the first by id among the objects in that node, else a fresh kitchen
 object of that node while the node has one left. A utensil or container is thus
@@ -22,7 +23,8 @@ making it would have to fire again; FOON's delete-free order may also turn a mix
 off before a unit that needs it on, which another order would avoid: the schedule
 keeps the tree's order, as a cook reading the tree would); `missing` (no object was ever in that node: the tree is not valid). The
 schedule stops at the first failing step. `needed` gives the objects per kitchen
-node an unlimited kitchen draws (how many more the tree needs). Inference units
+node an unlimited kitchen draws (how many more the tree needs; `uncounted=None`
+with no counts). Inference units
 (`--containment infer`) move no object and are skipped. O(steps x objects).
 """
 
@@ -71,10 +73,11 @@ class Executability:
 
 
 def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mapping[str, int] | None = None,
-             per_item: int = 1, *, unlimited: bool = False,
+             per_item: int = 1, *, uncounted: int | None = 1,
              stated: Mapping[ObjectNode, int] | None = None) -> Executability:
     """Run `tree`'s units in order over the kitchen's objects (see the module doc); `stated`: objects per
-    kitchen node where the kitchen says how many (a scene's), before `counts` per label."""
+    kitchen node where the kitchen says how many (a scene's), before `counts` per label, before `uncounted`
+    (objects per node of any other label; None: as many as the tree draws, so only what is counted limits)."""
     kitchen = frozenset(kitchen_nodes)
     counts = counts or {}
     stated = stated or {}
@@ -114,8 +117,9 @@ def schedule(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode], counts: Mappin
                 continue
             what = role.before.describe()
             if role.before in kitchen:
-                limit = stated.get(role.before, counts.get(role.label, 1) * per_item)
-                if unlimited or drawn.get(role.before, 0) < limit:
+                each = counts.get(role.label, uncounted)  # objects per kitchen node of the label; None: no limit
+                limit = stated[role.before] if role.before in stated else None if each is None else each * per_item
+                if limit is None or drawn.get(role.before, 0) < limit:
                     drawn[role.before] = drawn.get(role.before, 0) + 1
                     names.append(new_object(role.label, role.before))
                     continue
@@ -188,5 +192,5 @@ def short_message(step: int, motion: str, label: str, node: ObjectNode, limit: i
 
 def needed(tree: TaskTree, kitchen_nodes: Iterable[ObjectNode]) -> Executability:
     """The schedule with an unlimited kitchen: `drawn` says how many objects each kitchen node must hold."""
-    return schedule(tree, kitchen_nodes, unlimited=True)
+    return schedule(tree, kitchen_nodes, uncounted=None)
 
