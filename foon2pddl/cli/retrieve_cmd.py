@@ -19,7 +19,7 @@ from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
 from ..retrieval.result import UNREACHABLE
 from . import main
-from .batch import TREE_EXTENSIONS, batch_entries, finish, write_files
+from .batch import batch_entries, finish, write_trees
 from .options import (
     check_output,
     chosen_similarity,
@@ -191,8 +191,7 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
     table_fmt = fmt if fmt in TABLE_FORMATS else "text"
     if output is not None:
         tree_fmt = fmt if fmt in FORMATS else DEFAULT_FORMAT
-        texts = [None if r.tree is None else render_tree(r.tree, tree_fmt, kitchen=view.kitchen) for r in found]
-        write_files(output, rows, texts, TREE_EXTENSIONS[tree_fmt])
+        write_trees(output, rows, [r.tree for r in found], tree_fmt, view.kitchen)
     finish(rows, table_fmt, f"{method}, containment {containment}")
 
 
