@@ -10,7 +10,7 @@ from click.testing import CliRunner
 from conftest import SUBGRAPHS
 
 from foon2pddl.cli import main
-from foon2pddl.model.words import count, plural
+from foon2pddl.model.words import count, plural, prose_list
 
 #: A count of one with a plural noun, or a noun hedged with `(s)`.
 WRONG = re.compile(r"(?<![\d.,])1 (?:[a-z-]+ )?(?:units|objects|nodes|steps|files|labels|motions|components|goals|"
@@ -33,6 +33,12 @@ def test_count(n, noun, said):
 def test_grouped_count_and_bare_plural():
     assert count(1845, "unit", grouped=True) == "1,845 units"
     assert plural(1, "node") == "node" and plural(7, "node") == "nodes"
+
+
+def test_a_list_reads_as_prose_one_way():
+    """`a, b and c`: the recipe words (io/recipe_words, dbd1282) and `retrieve`'s kitchen additions
+    (retrieval/explain) each wrote this joiner; both now say a list through `prose_list`."""
+    assert [prose_list(list("abc")[:n]) for n in (1, 2, 3)] == ["a", "a and b", "a, b and c"]
 
 
 @pytest.fixture

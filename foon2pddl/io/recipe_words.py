@@ -11,6 +11,7 @@ from __future__ import annotations
 from ..model.foon import FunctionalUnit, ObjectNode, State
 from ..model.pairing import transfer, unit_roles
 from ..model.places import contents, head_of, named_holder
+from ..model.words import prose_list
 
 #: State labels that, naming another input (`_holder`), say where a step happens.
 PLACE_WORDS = ("on", "in", "inside", "into", "onto", "under", "over", "above", "below")
@@ -139,13 +140,8 @@ def _listed(what: list[tuple[str, str, bool]]) -> str:
             runs[-1][0].append(words)
         else:
             runs.append(([words], source, one))
-    said = [_and(words) + source for words, source, _ in runs]
-    return _and(said)
-
-
-def _and(items: list[str]) -> str:
-    """`a`, `a and b`, `a, b and c`."""
-    return (", ".join(items[:-1]) + " and " if len(items) > 1 else "") + items[-1]
+    said = [prose_list(words) + source for words, source, _ in runs]
+    return prose_list(said)
 
 
 def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:

@@ -1,4 +1,5 @@
-"""How a message writes a count with its noun (`1 unit`, `2 units`) and a cut list: one way for every module.
+"""How a message writes a count with its noun (`1 unit`, `2 units`), a cut list and a list in prose (`a, b and c`):
+one way for every module.
 
 Messages once wrote `1 units`, `1 objects`, `1 plan steps` or `1 unit(s)`; every count a command prints
 goes through `count` (or `plural` when the number is written apart from its noun). A list cut short goes
@@ -10,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import TypeVar
 
-__all__ = ["count", "first_of", "plural"]
+__all__ = ["count", "first_of", "plural", "prose_list"]
 
 T = TypeVar("T")
 
@@ -47,3 +48,13 @@ def first_of(items: Sequence[T], limit: int, show: Callable[[T], str] = str, *, 
     shown = items[:limit]
     left = (len(items) if total is None else total) - len(shown)
     return sep.join(map(show, shown)) + (f"{sep}... ({left} more)" if left > 0 else "")
+
+
+def prose_list(items: Sequence[str]) -> str:
+    """`items` as prose lists them: `a`, `a and b`, `a, b and c` (the recipe words and the kitchen additions of
+    `retrieve`'s explanation say a list so).
+
+    >>> prose_list(["a", "b", "c"])
+    'a, b and c'
+    """
+    return (", ".join(items[:-1]) + " and " if len(items) > 1 else "") + items[-1]

@@ -13,7 +13,7 @@ from ..analysis.reachability import blocker_words, reachable
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import default_kitchen
-from ..model.words import count
+from ..model.words import count, prose_list
 from .complete import none_can_be_made
 
 
@@ -21,7 +21,7 @@ def additions_text(sets, shown: int = 3) -> str:
     """`add 'a' and 'b'; or add 'c'` (backquoted node names): the first `shown` sets, and how many more there are."""
     def one(nodes) -> str:
         names = [f"`{n.describe()}`" for n in nodes]
-        return "add " + (", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else names[0])
+        return "add " + prose_list(names)
 
     text = "; or ".join(one(s) for s in sets[:shown])
     return text + (f" (or {len(sets) - shown} more ways of that size)" if len(sets) > shown else "")
