@@ -25,7 +25,8 @@ import time
 
 from foon2pddl.experiment.networks import build_view
 from foon2pddl.experiment.protocol import Protocol, draw
-from foon2pddl.experiment.solvers import SOLVERS, Setting
+from foon2pddl.experiment.setting import Setting
+from foon2pddl.experiment.solvers import SOLVERS
 from foon2pddl.io.inputs import load_network
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.planners import translator

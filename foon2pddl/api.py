@@ -352,7 +352,8 @@ def run_experiment(out_dir: str | Path, *paths: str | Path, networks: Iterable[s
     summary (`experiment.runner.RunSummary`: records, cells ran and reused, seconds)."""
     from .experiment import runner
     from .experiment.protocol import Protocol
-    from .experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, get_solver
+    from .experiment.setting import DEFAULT_TIME_LIMIT
+    from .experiment.solvers import DEFAULT_SOLVERS, get_solver
     from .generalize.network import NETWORKS
 
     counts = {k: v for k, v in (("trials", trials), ("goals", goals)) if v is not None}

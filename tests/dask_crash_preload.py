@@ -10,7 +10,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from foon2pddl.experiment.solvers import SOLVERS, Prepared, Solver
+from foon2pddl.experiment.setting import Prepared
+from foon2pddl.experiment.solvers import SOLVERS, Solver
 
 
 class _CrashOnce(Prepared):

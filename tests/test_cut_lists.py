@@ -87,10 +87,10 @@ def test_a_plan_that_does_not_validate_counts_the_problems_left_out():
 
 
 def test_an_experiment_tree_that_does_not_validate_counts_the_problems_left_out():
-    from foon2pddl.experiment.solvers import _native_outcome
+    from foon2pddl.experiment.outcomes import native_outcome
     from foon2pddl.retrieval.result import Retrieval
 
-    outcome = _native_outcome(Retrieval(_TREE, None, "greedy"), frozenset(), 0.0)
+    outcome = native_outcome(Retrieval(_TREE, None, "greedy"), frozenset(), 0.0)
     assert outcome.reason.startswith("tree does not validate: ") and outcome.reason.endswith("; ... (2 more)")
 
 
@@ -157,7 +157,7 @@ def test_a_plan_step_whose_preconditions_fail_counts_those_it_leaves_out():
 
 
 def test_an_experiment_plan_failing_foon_simulation_counts_the_problems_left_out():
-    from foon2pddl.experiment.solvers import _plan_outcome
+    from foon2pddl.experiment.outcomes import plan_outcome
     from foon2pddl.model.tasktree import validate
     from foon2pddl.planners.decode import Decoded
     from foon2pddl.planners.result import PlanResult
@@ -167,5 +167,5 @@ def test_an_experiment_plan_failing_foon_simulation_counts_the_problems_left_out
     # an encoding without FOON's semantics (`state`): a valid plan whose tree fails at all five steps
     outcome = PlanOutcome(PlanResult(PlanStatus.SOLVED, ("a",)), None,
                           Decoded(_TREE, validate(_TREE, frozenset()), foon_semantics=False))
-    reason = _plan_outcome(outcome, ("a",)).reason
+    reason = plan_outcome(outcome, ("a",)).reason
     assert reason.startswith("tree fails FOON simulation: ") and reason.endswith("; ... (3 more)"), reason

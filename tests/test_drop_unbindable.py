@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 from foon2pddl.analysis.reachability import reachable
 from foon2pddl.experiment.networks import build_view
 from foon2pddl.experiment.protocol import sample_kitchen
-from foon2pddl.experiment.solvers import Setting, get_solver
+from foon2pddl.experiment.setting import Setting
+from foon2pddl.experiment.solvers import get_solver
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl import prune
 from foon2pddl.pddl.compile import compile_goal

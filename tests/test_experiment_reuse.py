@@ -11,9 +11,11 @@ import random
 import pytest
 
 from foon2pddl.experiment import worker
+from foon2pddl.experiment.fd_solvers import OPTIMAL_SEARCH
 from foon2pddl.experiment.networks import build_view
 from foon2pddl.experiment.protocol import sample_kitchen
-from foon2pddl.experiment.solvers import OPTIMAL_SEARCH, Setting, get_solver
+from foon2pddl.experiment.setting import Setting
+from foon2pddl.experiment.solvers import get_solver
 from foon2pddl.generalize.categories import shipped_index
 from foon2pddl.io.inputs import example_path
 from foon2pddl.io.kitchen_files import read_kitchen

@@ -8,7 +8,7 @@ import random
 
 import pytest
 
-from foon2pddl.experiment.solvers import OPTIMAL_SEARCH
+from foon2pddl.experiment.fd_solvers import OPTIMAL_SEARCH
 from foon2pddl.generalize import relevance
 from foon2pddl.generalize.categories import load_index
 from foon2pddl.model.goal import resolve_goal, spec_of_node

@@ -56,8 +56,9 @@ def test_a_registered_method_is_used_by_retrieve_and_the_experiment():
 
 
 def test_the_experiment_native_solver_runs_retrieve(monkeypatch):
-    """`experiment.solvers._Native` goes through `retrieve` (candidate check included), not its own dispatch."""
+    """`experiment.native_solver.Native` goes through `retrieve` (candidate check included), not its own dispatch."""
     from foon2pddl.experiment import solvers
+    from foon2pddl.experiment.setting import Setting
     from foon2pddl.retrieval import api
 
     calls = []
@@ -80,7 +81,7 @@ def test_the_experiment_native_solver_runs_retrieve(monkeypatch):
 
     from foon2pddl.model.kitchen import Kitchen
 
-    setting = solvers.Setting(View(), Kitchen(frozenset({WHOLE, KNIFE})))
+    setting = Setting(View(), Kitchen(frozenset({WHOLE, KNIFE})))
     for name in ("native-greedy", "native-complete", "native-optimal"):
         outcome = solvers.get_solver(name).prepare(setting).solve(CHOPPED)
         assert outcome.status == "solved" and outcome.units == 1

@@ -9,7 +9,8 @@ import pytest
 from foon2pddl.experiment.networks import build_view
 from foon2pddl.experiment.protocol import Protocol, draw
 from foon2pddl.experiment.records import CellStatus
-from foon2pddl.experiment.solvers import SOLVERS, Setting
+from foon2pddl.experiment.setting import Setting
+from foon2pddl.experiment.solvers import SOLVERS
 from foon2pddl.io.inputs import load_network
 from foon2pddl.planners import solve as planners_solve
 

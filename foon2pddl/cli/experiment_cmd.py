@@ -13,7 +13,8 @@ from ..errors import FoonInputError, did_you_mean
 from ..experiment.params import PARAMS, parse_sweep
 from ..experiment.protocol import DEFAULT_GOALS, DEFAULT_KITCHEN_FRACTION, DEFAULT_SEED, DEFAULT_TRIALS, Protocol
 from ..experiment.provenance import code_version, describe
-from ..experiment.solvers import DEFAULT_SOLVERS, DEFAULT_TIME_LIMIT, SOLVERS
+from ..experiment.setting import DEFAULT_TIME_LIMIT
+from ..experiment.solvers import DEFAULT_SOLVERS, SOLVERS
 from ..generalize.modes import DEFAULT_MODE, SIMILARITY_MODES
 from ..model.words import count
 from . import main

@@ -3,7 +3,9 @@
 - `protocol`: seeded trials (random kitchens, random goals);
 - `params`: the sweepable parameters (one registry entry each) and the points of a sweep;
 - `networks`: the REG, EXP and GEN views of a network (kitchen and goal mapped);
-- `solvers`: the registry of solvers compared (role in the report, cost order);
+- `solvers`: the registry of solvers compared (role in the report, cost order); `setting`: what a solver is
+  prepared for and the prepared solver's interface; `native_solver`, `fd_solvers`: the prepared solvers;
+  `outcomes`: a solver's answer for one goal, its tree validated and scheduled;
 - `records`: one JSON line per (trial, goal, network, solver, swept values); cell statuses;
 - `worker`: one task = a batch of cells; networks and prepared solvers cached per process;
 - `engine`: where tasks run (this process, or Dask: a LocalCluster or a cluster's scheduler);
@@ -14,5 +16,6 @@
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bans", "collector", "engine", "networks", "params", "physical", "plots", "progress", "protocol",
-           "provenance", "records", "render", "report", "runner", "solvers", "tables", "worker"]
+__all__ = ["bans", "collector", "engine", "fd_solvers", "native_solver", "networks", "outcomes", "params", "physical",
+           "plots", "progress", "protocol", "provenance", "records", "render", "report", "runner", "setting", "solvers",
+           "tables", "worker"]

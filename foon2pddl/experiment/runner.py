@@ -1,16 +1,13 @@
 """Running an experiment: the grid of cells, what is already done, batches to an engine, records appended.
 
-The cells (point of the sweep, trial, goal, network, solver) not already in
-the results file are grouped into batches of at most `CHUNK` goals of one
-(point, trial, network, solver), so that what a solver prepares once (a
-fixpoint, an FD translation) serves the goals of the batch, and a lost task
-loses little. Batches run in this process (`jobs` 1) or on Dask (`engine.py`:
-a LocalCluster of `jobs` workers, or an existing cluster's `scheduler`),
-costliest solvers and largest networks first; every finished cell is appended
-to the JSONL file at once in this process. A rerun reads the file and skips the
-cells already done: an interrupted run resumes, and cells that ended in an
-error or were lost with their worker are redone, as are cells recorded for
-another goal or under another time limit (`records.reusable`).
+The cells (point of the sweep, trial, goal, network, solver) not already in the results file are grouped into
+batches of at most `CHUNK` goals of one (point, trial, network, solver), so that what a solver prepares once (a
+fixpoint, an FD translation) serves the goals of the batch, and a lost task loses little. Batches run in this
+process (`jobs` 1) or on Dask (`engine.py`: a LocalCluster of `jobs` workers, or an existing cluster's
+`scheduler`), costliest solvers and largest networks first; every finished cell is appended to the JSONL file at
+once in this process. A rerun reads the file and skips the cells already done: an interrupted run resumes, and
+cells that ended in an error or were lost with their worker are redone, as are cells recorded for another goal
+or under another time limit (`records.reusable`).
 
 Before any work (no file written, no network built) `check_requirements` refuses a
 run whose networks or engine need something missing (WordNet for EXP, Dask for
@@ -41,7 +38,8 @@ from .progress import LINE_INTERVAL, OFF, Progress, default_mode
 from .protocol import Protocol, Trial, identity_difference
 from .provenance import code_version
 from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
-from .solvers import DEFAULT_TIME_LIMIT, SOLVERS, get_solver
+from .setting import DEFAULT_TIME_LIMIT
+from .solvers import SOLVERS, get_solver
 from .worker import Batch, Job, draw_at, fingerprint, has_view, input_files, view
 
 __all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]

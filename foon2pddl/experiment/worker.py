@@ -30,10 +30,12 @@ from ..errors import FoonError, FoonInputError
 from ..io.files import expand_paths
 from ..io.inputs import Network, example_path, load_network
 from .networks import DEFAULT_NETWORK, NetworkView, build_view
+from .outcomes import Outcome
 from .params import Point, label, network_hooks, network_key, protocol_at, transform_kitchen, transform_network
 from .protocol import Draw, Protocol, Trial, draw
 from .records import CellStatus, Record
-from .solvers import Outcome, Setting, get_solver
+from .setting import Setting
+from .solvers import get_solver
 
 #: Longest reason kept in a record (unreachable goals can list many missing nodes).
 REASON_MAX = 300
@@ -58,7 +60,7 @@ def fingerprint(paths: Sequence[str]) -> str:
 class Job:
     """What every task of a run shares: the inputs (paths and their fingerprint), protocol and time limit;
     `cache`, a directory of Fast Downward translations the run's processes share (local runs only:
-    `solvers.Setting`)."""
+    `setting.Setting`)."""
 
     paths: tuple[str, ...]
     fingerprint: str
