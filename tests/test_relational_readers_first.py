@@ -112,3 +112,83 @@ def test_of_the_orders_the_one_that_counts_fewest_is_kept():
     # the problem); FOON's own order counts one oven (10): of the orders, the one that counts fewest is kept
     assert labels.count("oven") == 1
     assert len(compiled.task.objects) <= 10
+
+
+def _readers_first_as_stated(foon, plan, roles_of):
+    """The rule as the module doc states it, walking the plan between M and R on every test: the oracle the
+    position-indexed `readers_first` must agree with (O(p^3 r))."""
+    order = list(plan)
+    roles = {u: roles_of(foon.units[u]) for u in order}
+    moved_out = {u: {r.before for r in roles[u] if r.changes} for u in order}
+    leaves = {u: {r.after for r in roles[u] if r.changes} for u in order}
+    takes = {u: {r.before for r in roles[u]} - {None} for u in order}
+    read = {u: {r.before for r in roles[u] if not r.changes} - {None} for u in order}
+
+    def moved(order: list[int]) -> list[int] | None:  # the order after the first move the rule makes (None: none)
+        for i, m in enumerate(order):
+            j = next((k for k in range(len(order) - 1, i, -1) if read[order[k]] & moved_out[m]), None)
+            if j is not None and not any(takes[order[k]] & leaves[m] for k in range(i + 1, j + 1)):
+                return [*order[:i], *order[i + 1:j + 1], m, *order[j + 1:]]
+            if j is not None and not any(takes[order[j]] & leaves[order[k]] for k in range(i, j)):
+                return [*order[:i], order[j], *order[i:j], *order[j + 1:]]
+        return None
+
+    for _ in range(len(order) ** 2):
+        if (after := moved(order)) is None:
+            break
+        order = after
+    return tuple(order)
+
+
+def test_readers_first_agrees_with_the_rule_as_stated_on_the_plans_the_counts_order(monkeypatch):
+    # every plan the relational counts of three recipes hand to `readers_first`, as handed, with a unit twice
+    # (`count_returns.with_returns` fires one again) and in 20 seeded shuffles, against the rule walked out step by step
+    import random
+
+    import foon2pddl.pddl.count_order as count_order
+
+    seen: list[tuple] = []
+    fast = count_order.readers_first
+
+    def recorded(foon, plan, roles_of):
+        seen.append((foon, tuple(plan), roles_of))
+        return fast(foon, plan, roles_of)
+
+    monkeypatch.setattr(count_order, "readers_first", recorded)
+    for name in ("0058-chocolate_cake.txt", "0035-oven-baked_sweet_potato_fries.txt", "0018-barbecue-style_country_ribs.txt"):
+        _counted_small(name)
+    assert len(seen) >= 6
+    moved, rng = 0, random.Random(58)
+    for foon, plan, roles_of in seen:
+        for order in (plan, (*plan, plan[0]), *(tuple(rng.sample(plan, len(plan))) for _ in range(20))):
+            got = fast(foon, order, roles_of)
+            assert got == _readers_first_as_stated(foon, order, roles_of), order
+            moved += got != order
+    assert moved > len(seen)  # the rule moved units, not just handed plans back
+
+
+def test_readers_first_agrees_with_the_rule_as_stated_on_random_roles():
+    # 400 seeded plans of units with random roles over six nodes (read, kept, moved, new; a unit listed twice too):
+    # the cases the recipes above never meet (a reader that also takes what the mover leaves, a mover that leaves
+    # what the reader takes) decide which of the two moves is made
+    import random
+
+    from foon2pddl.model.pairing import Role
+
+    rng = random.Random(58)
+    pool = [n("pot", f"s{k}") for k in range(6)]
+    units = tuple(FunctionalUnit((pool[0],), Motion(f"step {i}"), (pool[1],)) for i in range(10))
+    moved = 0
+    for _ in range(400):
+        roles: dict[FunctionalUnit, tuple[Role, ...]] = {}
+        for unit in units:
+            picked = []
+            for _ in range(rng.randint(1, 3)):
+                a, b = rng.sample(pool, 2)
+                picked.append(Role("pot", *rng.choice(((a, None), (a, a), (a, b), (None, b)))))
+            roles[unit] = tuple(picked)
+        plan = tuple(rng.choice(range(len(units))) for _ in range(rng.randint(4, 12)))
+        got = readers_first(Foon(units), plan, roles.__getitem__)
+        assert got == _readers_first_as_stated(Foon(units), plan, roles.__getitem__), plan
+        moved += got != plan
+    assert moved > 100
