@@ -261,6 +261,21 @@ def test_the_experiment_says_its_set_up_and_its_report(every_step_speaks, tmp_pa
     assert quiet.exit_code == 0 and said_steps(quiet.stderr) == []  # --no-progress: no line at all
 
 
+def test_the_experiment_says_it_checks_its_scheduler(every_step_speaks, tmp_path):
+    """Stop 58's pass: `experiment --scheduler tcp://10.255.255.1:8786`, a host that never answers, waited out the
+    10 s handshake without a line (11.4 s, then exit 2). The check is a step (here a port nothing listens on:
+    refused at once, the step said first)."""
+    import socket
+
+    with socket.create_server(("127.0.0.1", 0)) as server:
+        port = server.getsockname()[1]
+    address = f"tcp://127.0.0.1:{port}"
+    r = run("experiment", "--scheduler", address, "--trials", "1", "--goals", "1", "-o", tmp_path / "exp")
+    assert r.exit_code == 2, r.stderr
+    assert f"checking the Dask scheduler {address} (its handshake, within 10 s) ..." in said_steps(r.stderr), r.stderr
+    assert "cannot reach the Dask scheduler" in r.stderr and not (tmp_path / "exp").exists()
+
+
 def test_the_experiment_says_it_stops_its_dask_workers(every_step_speaks, tmp_path):
     """README's `experiment ... --jobs 2` went 2.3 s without a line after its bar reached 100 % (bench.silence,
     load 15, stop 49's pass): the local cluster's workers were being stopped. That step says so."""

@@ -90,17 +90,19 @@ def _recv(sock: socket.socket, n: int, deadline: float) -> bytes:
     return data
 
 
-def check_scheduler(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
+def check_scheduler(address: str, timeout: float = CONNECT_TIMEOUT, step: Step = silent_step) -> None:
     """Fail fast unless `address` is a Dask scheduler: well formed, accepting connections, and sending a
     Dask handshake (an 8-byte little-endian length, then that many bytes, at most HANDSHAKE_MAX) within
     `timeout` seconds. A Dask scheduler writes its handshake first, so nothing is sent to the port:
-    a silent port or an HTTP server (which waits for a request) fails here, not in Dask's client."""
+    a silent port or an HTTP server (which waits for a request) fails here, not in Dask's client.
+    The wait is a `step` (the CLI says it): a host that never answers left 11.4 s without a line (stop 58)."""
     where = parse_scheduler(address)
     if where is None:
         return
     deadline = time.monotonic() + timeout
     try:
-        with socket.create_connection(where, timeout=timeout) as sock:
+        with step(f"checking the Dask scheduler {address} (its handshake, within {timeout:g} s)"), \
+                socket.create_connection(where, timeout=timeout) as sock:
             size = int.from_bytes(_recv(sock, 8, deadline), "little")
             if not 0 < size <= HANDSHAKE_MAX:
                 raise FoonError(f"{address} is not a Dask scheduler (its first message claims {size} bytes)")

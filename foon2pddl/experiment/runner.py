@@ -230,7 +230,7 @@ def check_protocol(config: Config, trials: tuple[Trial, ...]) -> float | None:
     return old_limit if isinstance(old_limit, int | float) and not isinstance(old_limit, bool) else None
 
 
-def check_requirements(config: Config) -> None:
+def check_requirements(config: Config, step: Step = silent_step) -> None:
     """Refuse, before any work, a run that needs what is missing: a network kind's dependencies (WordNet for
     EXP), Dask for a cluster, a scheduler that is not one (MissingDependencyError, UsageError, FoonError)."""
     for name in config.networks:
@@ -238,7 +238,7 @@ def check_requirements(config: Config) -> None:
     if config.scheduler is not None or config.jobs > 1:
         require_dask()
     if config.scheduler is not None:
-        check_scheduler(config.scheduler)
+        check_scheduler(config.scheduler, step=step)  # a host that never answers: its 10 s, said
 
 
 # -- running -------------------------------------------------------------------------------------
@@ -294,7 +294,7 @@ def _run(config: Config, progress: bool | str, fresh: bool, settle: Callable[[],
         if name not in NETWORKS:
             raise UsageError(f"unknown network {name!r} (expected one of {', '.join(NETWORKS)})")
     check_grid(config.sweeps)
-    check_requirements(config)
+    check_requirements(config, step)
     try:
         return _run_checked(config, progress, fresh, settle, t0, step, every)
     except OSError as exc:  # a full disk, a read-only directory: what was appended stays, a rerun resumes
