@@ -778,6 +778,31 @@ def test_things_moved_from_one_holder_say_it_once():
     assert recipe_text(bottles) == "pour olive oil from the bottle and vinegar from the bottle into the bowl (contains {onion})"
 
 
+def test_a_thing_named_only_in_lists_moves_from_the_holder_that_lists_it():
+    """0085's breakfast pizza names its sour cream only in lists (0085-mini_bacon_egg_breakfast_pizza.txt:427,
+    :435), and the steps read `scoop scraper (clean), with the bottle (contains {sour cream})` and `spread pizza
+    dough (flattened), with the scraper (contains {sour cream}), ...`. A container's new node newly lists it, and
+    another input lists it: it moves from that one. A pan listing what is cooked in it is no source of the dish
+    it holds (0060's black beans stirred in the pan), and `rice` beside a `white rice` node is that node."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    scoop, spread, stir, pour = parse_text(
+        "//\nO\tscraper\t1\nS\tclean\nO\tbottle\t0\nS\tcontains\t{sour cream}\nM\tscoop\nO\tscraper\t1\n"
+        "S\tcontains\t{sour cream}\n"
+        "//\nO\tpizza dough\t0\nS\tflattened\nO\tscraper\t1\nS\tcontains\t{sour cream}\nM\tspread\n"
+        "O\tpizza dough\t0\nS\tflattened\nS\tcontains\t{sour cream}\n"
+        "//\nO\tblack bean\t0\nS\tuncooked\nS\tin\t[pan]\nO\tcooking pan\t0\nS\tcontains\t{black bean,garlic}\n"
+        "O\tspoon\t1\nM\tstir\nO\tblack bean\t0\nS\tcontains\t{garlic}\nS\tin\t[pan]\n"
+        "//\nO\tbowl\t0\nS\tempty\nO\tcooker\t0\nS\tcontains\t{rice,water}\nO\twhite rice\t1\nS\tcooked\n"
+        "S\tin\t[cooker]\nM\tpour\nO\tbowl\t0\nS\tcontains\t{rice,water}\nO\twhite rice\t1\nS\tcooked\n"
+        "S\tin\t[bowl]\n//\n", "lists.txt").foon.units
+    assert recipe_text(scoop) == "scoop sour cream from the bottle into the scraper (clean)"
+    assert recipe_text(spread) == "spread sour cream from the scraper into the pizza dough (flattened)"
+    assert recipe_text(stir) == "stir black bean (uncooked), with the spoon, in the cooking pan (contains {black bean, garlic})"
+    assert recipe_text(pour) == "pour white rice (cooked) and water from the cooker into the bowl (empty)"
+
+
 def test_what_a_step_uses_up_goes_onto_a_container_it_is_made_on():
     """0082's breakfast pizza cracks an egg whose white and yolk end `on {pizza dough}`: the step read `crack egg
     (uncracked) into the pizza dough`, where the omelette's egg goes `into the bowl (empty)` it is made in. What

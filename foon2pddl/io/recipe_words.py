@@ -113,6 +113,25 @@ def _source(unit: FunctionalUnit, moved: ObjectNode, label: str, into: ObjectNod
     return found.describe() if found is not None else label
 
 
+def _listed_only(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
+                 said: set[str], named: Aliases) -> list[tuple[ObjectNode, tuple[str, str], tuple[str, str]]]:
+    """(what, (`in`, from), (`in`, into)) for a thing FOON names only in containers' lists: a container's new node
+    newly lists it, no node of the unit has its label or one word for it (`rice` beside `white rice`), and another
+    input lists it that does not hold the container (0085's `scoop`: the bottle (contains {sour cream}) and the
+    scraper (clean) -> scraper (contains {sour cream}): `scoop sour cream from the bottle into the scraper
+    (clean)`; not the pan's oil and onion that FOON lists again in the mixture cooked in it). The thing is a node
+    of its label alone. O(containers x inputs x labels)."""
+    labels = {n.label for n in (*unit.inputs, *unit.outputs)} | said
+    out = []
+    for label, container in new.items():
+        around = _holders(container, named) | (_holders(before[label], named) if label in before else set())
+        for thing in sorted(contents(container) - contents(before[label]) if label in before else ()):
+            source = next((j for j in unit.inputs if j.label not in around | {label} and thing in contents(j)), None)
+            if source is not None and not any(t == thing or head_of(thing, t) for t in labels):
+                out.append((ObjectNode(thing), ("in", source.label), ("in", label)))
+    return out
+
+
 def _carrier(unit: FunctionalUnit, moved: ObjectNode, src: tuple[str, str] | None, dst: tuple[str, str],
              moving: set[str]) -> tuple[str, str] | None:
     """Where `moved` is when the step begins, if not where its own node says: the first other input that lists it.
@@ -226,6 +245,7 @@ def recipe_text(unit: FunctionalUnit) -> str:
     moves = [(i, _place(i, named), _place(new[i.label], named)) for i in unit.inputs
              if i.label in new and _place(new[i.label], named) not in (None, _place(i, named))]
     moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named)
+    moves += _listed_only(unit, new, before, {i.label for i, _, _ in moves}, named)
     said = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
     moving = {i.label for i, _, _ in moves}
     moves = [(i, _carrier(unit, i, src, dst, moving) or src, dst) for i, src, dst in moves]
