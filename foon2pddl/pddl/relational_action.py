@@ -10,7 +10,11 @@ its holder facts, from the unit's reading in the task (`relational_plan.UnitPlan
 - a portion (`SPLITS`) is a not-yet-made object that arrives at the target in
   the role's output node, while the object it was taken from stays;
 - a container FOON filled earlier and leaves out of the outputs is emptied of
-  what leaves it (`relational_plan.without`), and says so as a role;
+  what leaves it (`relational_plan.without`), and says so as a role; so is a holder
+  the unit does not name (`relational_touched.late_empties`); an object sitting in
+  such a holder in a node of a label its new node drops becomes part of what
+  leaves, consumed (`_with_it`: the water beside FOON-GEN's bulgur, stirred out of
+  a bowl that becomes `bowls (empty)`);
 - a consumed object goes to `consumed` and leaves its holder, with all of its
   label there when the holder's node no longer lists it, and with what is in
   or on it, two levels deep (`relational_sweep`); contents that are
@@ -182,9 +186,13 @@ def unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode
                                                                and not s.late_empties):
                 h = holder_var(src, label, k, source=True)
             fact = Atom(src.relation.value, (h, v)) if h is not None else None
+            dropped = dict(relational_touched.emptied_sources(plan, k, empties.get(k, [])))
             if fact is not None:
                 pre.append(fact)
                 delete.append(fact)
+                for old, new in dropped.items():  # what the emptied holder's new node drops goes with it (once)
+                    cond += [c for c in _with_it(h, (), old, new, plan, k, inside, const, type_of, names)
+                             if c not in cond]
             else:
                 if src.role in emptied:  # a container FOON filled earlier: emptied of it, whichever it is
                     f_ = f"?{names.name(f'{src.holder} {k}', key=('emptied', k))}"
@@ -192,8 +200,10 @@ def unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode
                     old, new = slots[src.role].rel.role.before, emptied[src.role]
                     was = Atom(IS, (f_, const[old]))
                     now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
-                    cond.append(Conditional((there, was), add=tuple(now), delete=(was,), var=f_,
-                                            type=type_of[slots[src.role].rel.role.label]))
+                    hold = type_of[slots[src.role].rel.role.label]
+                    cond.append(Conditional((there, was), add=tuple(now), delete=(was,), var=f_, type=hold))
+                    if old in dropped:
+                        cond += _with_it(f_, (there, was), old, new, plan, k, inside, const, type_of, names, hold)
                 f_ = f"?{names.name(f'from {k}', key=('from', k))}"
                 leave = Atom(src.relation.value, (f_, v))
                 cond.append(Conditional((leave,), delete=(leave,), var=f_, type=ROOT_TYPE))
@@ -203,6 +213,9 @@ def unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode
                     was = Atom(IS, (f_, const[old]))
                     now = [Atom(IS, (f_, const[new]))] + ([Atom(OCCUPIED, (const[new],))] if new in stable else [])
                     cond.append(Conditional((leave, was), add=tuple(now), delete=(was,), var=f_, type=ROOT_TYPE))
+                    if old in dropped:  # and of what its new node drops with it
+                        cond += _with_it(f_, (leave, was), old, new, plan, k, inside, const, type_of, names,
+                                         ROOT_TYPE)
         elif s.fate in (Fate.MOVES, Fate.CONSUMED) and label in loose:  # it leaves the holder FOON does not name
             f_ = f"?{names.name(f'from {k}', key=('from', k))}"
             for rel in Relation:
@@ -233,3 +246,24 @@ def unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode
                   add=tuple(dict.fromkeys(add)), delete=tuple(d for d in dict.fromkeys(delete) if d not in add),
                   params=tuple(params), conditional=tuple(cond), cost=unit_cost(unit, options.costs, options.rates),
                   unit=u, comment=unit_comment(unit, u), roles=tuple(zip(expected, bound, strict=True)))
+
+
+def _with_it(h: str, when: tuple[Atom, ...], old: ObjectNode, new: ObjectNode, plan: UnitPlan, k: int,
+             inside: dict[str, list[tuple[ObjectNode, Relation]]], const: dict[ObjectNode, str],
+             type_of: dict[str, str], names: NameTable, hold: str | None = None) -> list[Conditional]:
+    """Role `k` of `plan` moves or is consumed out of holder `h`, which goes from `old` to `new` (`when` it is in
+    `old` and holds the role's object, for a holder quantified over `hold`; always for a bound one): every object
+    in it in a node `relational_touched.dropped_nodes` gives (a label `new` drops, not the role's own) becomes part
+    of what leaves (consumed), so the holder holds nothing its new node does not list (GEN's kofta: the water beside
+    the bulgur stirred out of the bowl; the units put water into grains, so the bowl's list dropped it with the
+    bulgur)."""
+    label = plan.slots[k].rel.role.label
+    out = []
+    for node, rel in relational_touched.dropped_nodes(plan, k, old, new, inside):
+        if node.label not in type_of:
+            continue
+        y = f"?{names.name(f'{node.label} with {label}', key=('with', k if when else -1, h, node))}"  # one per holder
+        there, was = Atom(rel.value, (h, y)), Atom(IS, (y, const[node]))
+        out.append(Conditional((*when, there, was), add=(Atom(IS, (y, CONSUMED)),), delete=(there, was), var=y,
+                               type=type_of[node.label], more=((h, hold),) if hold is not None else ()))
+    return out

@@ -9,6 +9,12 @@ task it does not name, and the relational encoding needs them to move, empty or 
   fill with the object leaving it (`Slot.late_empties`), no longer lists what leaves holders of its label.
 * **Alike** (`alike_nodes`): consumed out of a holder whose node after no longer lists the label, any other
   object of that label in such a holder is consumed too.
+* **Dropped** (`dropped_nodes`, `emptied_sources`): moved or consumed out of a holder the unit empties (a container
+  an earlier unit filled, or one the unit does not name), whose new node drops labels with it (what the task's units
+  put into the object that leaves, `Slot.along`), every object of a dropped label sitting in that holder itself
+  becomes part of what leaves (consumed; not the object's own label, nor the nodes of the unit's roles): FOON-GEN's kofta stirs the bulgur out of `bowls (contains {grains, water
+  and ice})`, which becomes `bowls (empty)` because units put water into grains, while the kitchen's water sits in
+  the bowl beside the bulgur (`ACT-0053-lentil_kofta-1.txt:150`).
 * **Restated** (`restated_nodes`): an object a unit makes in a holder whose node lists it before and after
   restates what is there, which becomes part of it (the corn on the board).
 * **Dust** (`dustings`, `dusted_nodes`): what a unit puts on a holder it leaves silent about its contents (the
@@ -34,8 +40,8 @@ from .holders import Fate
 from .relational_init import read_names
 from .relational_plan import Slot, UnitPlan, without
 
-__all__ = ["Way", "alike_nodes", "dusted_nodes", "dustings", "every_late_empty", "flow_ways", "late_empties",
-           "left_nodes", "restated_nodes"]
+__all__ = ["Way", "alike_nodes", "dropped_nodes", "dusted_nodes", "dustings", "emptied_sources", "every_late_empty",
+           "flow_ways", "late_empties", "left_nodes", "restated_nodes"]
 
 
 #: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
@@ -105,6 +111,33 @@ def alike_nodes(plan: UnitPlan, s: Slot,
     if after is None or not describes_contents(after) or label in listed(after):
         return []
     return [(n, rel) for n, rel in inside.get(plan.slots[src.role].rel.role.label, ()) if n.label == label]
+
+
+def dropped_nodes(plan: UnitPlan, k: int, old: ObjectNode, new: ObjectNode,
+                  inside: dict[str, list[tuple[ObjectNode, Relation]]]) -> list[tuple[ObjectNode, Relation]]:
+    """For slot `k` leaving a holder that goes from `old` to `new` (`emptied_sources`): the nodes placed in or on a
+    holder of `old`'s label whose label `old` lists and `new` no longer does, but the slot's own label (another rice
+    in the bowl is no part of the rice that leaves) and the nodes of the unit's roles (the unit says what becomes
+    of them): an object in one, left there, would sit in a holder whose list drops it."""
+    gone = listed(old) - listed(new) - {plan.slots[k].rel.role.label}
+    roles = {s.rel.role.before for s in plan.slots}
+    return [(n, rel) for n, rel in inside.get(old.label, ()) if n.label in gone and n not in roles]
+
+
+def emptied_sources(plan: UnitPlan, k: int,
+                    empties: list[tuple[ObjectNode, ObjectNode]]) -> list[tuple[ObjectNode, ObjectNode]]:
+    """For a slot moved or consumed out of a holder the unit empties: (node before, node after) of each node that
+    holder may be in, the late empties `empties` of a holder the unit does not name, or the emptied holder role's
+    (none when the slot stays, splits or is made, or its holder stays as it is)."""
+    s = plan.slots[k]
+    if s.fate not in (Fate.MOVES, Fate.CONSUMED) or s.rel.source is None:
+        return []
+    src = s.rel.source.role
+    if src is None:
+        return list(empties)
+    new = dict(plan.emptied).get(src)
+    old = plan.slots[src].rel.role.before
+    return [(old, new)] if new is not None and old is not None else []
 
 
 def restated_nodes(plan: UnitPlan, s: Slot,
@@ -187,4 +220,6 @@ def left_nodes(units: Iterable[tuple[UnitPlan, dict[int, list[Way]], dict[int, l
         left.update(n for s in p.slots if s.fate is Fate.CONSUMED for n, _ in inside.get(s.rel.role.label, ()))
         left.update(n for s in p.slots for n, _ in (*alike_nodes(p, s, inside), *restated_nodes(p, s, inside)))
         left.update(n for k in range(len(p.slots)) for n, _ in dusted_nodes(p, k, inside, dust))
+        left.update(n for k in range(len(p.slots)) for old, new in emptied_sources(p, k, empties.get(k, []))
+                    for n, _ in dropped_nodes(p, k, old, new, inside))
     return left
