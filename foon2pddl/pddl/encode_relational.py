@@ -25,7 +25,8 @@
   that list each other, read as one on the other (`mutual_lists`); a list's item no object of the unit is, taken
   there on the container's path in a node no unit makes, read as arriving with the unit (`list_arrivals`); a node
   a unit takes and leaves listing what it puts in, read before it as the node without that (`list_brought`); a
-  container's node and what is in it, taken together and made together by no unit, as at hand (`kitchen_pairs`).
+  container's node and what is in it, taken together and made together by no unit, as at hand (`kitchen_pairs`); a
+  product naming no place, read in the one container the unit leaves listing it (`list_placed`).
 * **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
   name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
@@ -68,6 +69,7 @@ from .input_stitch import Stitched, with_stitches
 from .kitchen_pairs import Pair, read_pairs
 from .list_arrivals import read_arrivals
 from .list_brought import read_brought
+from .list_placed import read_placed
 from .live_holders import LIVE, with_live
 from .mutual_lists import mutual_notes, read_mutual
 from .prune import restoring_units
@@ -99,7 +101,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         shared[key] = (foon, kitchen, goal), _read(foon, kitchen, goal, level, options.prune), {}
     _, net, counting = shared[key]
     inp, given, st, at_hand, reads = net.inp, net.given, net.st, net.at_hand, net.reads
-    mutual, arrived, brought = net.mutual, net.arrived, net.brought
+    mutual, arrived, brought, placed_at = net.mutual, net.arrived, net.brought, net.placed
     f, units, origin, sewn = st.foon, st.units, st.origin, st.found
     scene = kitchen.project(level).scene
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
@@ -146,7 +148,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     # what the kitchen implies (its objects where its holders say, the holders its objects are in): the tree
     # check's kitchen too; a candidate an object starts in beyond it is reached only by what units make
     moved = (kitchen_implied((x.start for x in instances), inp.kitchen) | ob.implied | {x.node for x in sewn if x.unit in live}
-             | {n for x in at_hand for n in (x.box, x.held)})
+             | {n for x in at_hand for n in (x.box, x.held)} | {n for u in units for n in f.units[u].inputs if n in net.at})
     early = {c for c in inp.candidates if c not in moved and c not in inp.kitchen
              and any(x.start == c for x in instances)}
     actions.extend(goal_actions_over_objects(inp.candidates, stable, table, const, type_of, options, early))
@@ -167,7 +169,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
              if (f.units[u], m) not in unheld]
     found += [(unit, msg) for _, _, msg, unit in gaps] + stitch_notes(reads) + mutual_notes(
         mutual, {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)})
-    found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [x[u] for x in (arrived, brought) for u in units if u in x]
+    found += [(x.taker, x.describe()) for x in sewn if x.unit in live] + [x[u] for x in (arrived, brought, placed_at) for u in units if u in x]
     found += rd.renamed + rd.portions + ob.init_notes
     told = [(kind, reported(x)) for kind, x in (("label mismatch", found), (UNHELD, unheld),
                                                 (AT_HAND, [(x.taker, x.describe()) for x in at_hand]))]
@@ -202,12 +204,15 @@ class _Network:
     reads: Stitches  # the stitches' readings (`relational_stitch`)
     at_hand: tuple[Pair, ...]  # the pairs read as at hand (`kitchen_pairs`)
     st: Stitched  # the network with its stitches (`input_stitch.with_stitches`)
+    placed: Mapping[int, tuple]  # a product naming no place, read in the container listing it (`list_placed`)
+    at: frozenset[ObjectNode]  # the nodes so read (the tree's check takes them as given)
 
 
 def _read(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, prune: bool) -> _Network:
     """`foon` read for the task of `goal` from `kitchen` at `level` (its relevant units: `prune`'s)."""
     inp = at_level(foon, kitchen, goal, level)
     given = inp.foon.units
+    inp, placed, at = read_placed(inp)  # a product naming no place: in the one container listing it
     inp, mutual = read_mutual(inp)  # two nodes listing each other: one is on the other
     inp, arrived = read_arrivals(inp)  # a list's item no object of the unit is, taken there later: put in too
     inp, brought = read_brought(inp)  # a node a unit takes and leaves, listing what it puts in: before it, less that
@@ -218,4 +223,4 @@ def _read(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, prune: bool) -> 
     def relevant(net: Foon) -> tuple[int, ...]:
         return restoring_units(net, inp.kitchen, inp.candidates) if prune else tuple(range(len(net.units)))
     st = with_stitches(inp.foon, relevant)  # inputs no unit makes, read as the node the plan left that object in
-    return _Network(inp, given, mutual, arrived, brought, reads, at_hand, st)
+    return _Network(inp, given, mutual, arrived, brought, reads, at_hand, st, placed, at)

@@ -99,7 +99,7 @@ from ..model.places import describes_contents, listed, moved_into, place_of, pla
 from .holder_words import UnitWords, newly_listed, part_of, renamed, takers, unit_words
 
 __all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "held_elsewhere", "list_gaps", "on_parts",
-           "relational_roles", "unit_aliases", "unit_flows"]
+           "placed_products", "relational_roles", "unit_aliases", "unit_flows"]
 
 
 class Fate(StrEnum):
@@ -268,6 +268,20 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         keeps = src is not None and src.role is not None and _keeps(after[src.role], r.label) and k not in held
         result.append(RelRole(r, out_nodes[k], Fate.SPLITS if keeps else Fate.MOVES, src, dst))
     return tuple(result)
+
+
+@lru_cache(maxsize=1 << 14)
+def placed_products(unit: FunctionalUnit) -> tuple[tuple[ObjectNode, ObjectNode], ...]:
+    """(output node, that node placed) per product whose output node names no place, beside the one role there
+    before the unit whose output node newly lists it (rule 3; `list_placed`): in that role, `on` it where the unit's
+    nodes say `on` (0086's `filling (contains {...})` beside `cooking pan (contains {filling})`). O(r^2)."""
+    read, out = unit_words(unit), []
+    for k, r in enumerate(read.roles):
+        into = [j for j in takers(unit, r.label, k) if read.roles[j].before is not None]
+        if r.before is None and r.after is not None and place_of(read.after[k]) is None and len(into) == 1:
+            holder = read.roles[into[0]].label
+            out.append((r.after, moved_into(r.after, holder, _relation((*read.before, *read.after), holder))))
+    return tuple(out)
 
 
 @lru_cache(maxsize=1 << 14)
