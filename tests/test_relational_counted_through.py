@@ -78,7 +78,7 @@ def test_a_plan_counted_through_an_appliance_s_stitch_names_the_task_s_units(mon
     through = compile_goal(Foon(units), Kitchen(frozenset({n("oven", "on")})), goal, "relational", narrow=True,
                            through=True)
     assert [x.label for x in through.task.instances] == ["oven"]
-    (st, _, rd), = [x for x in read if x[1][-3]]  # the reading counted through the stitches (`through`)
+    (st, _, rd), = [x for x in read if x[1][5]]  # the reading counted through the stitches (`through`)
     assert len(st.foon.units) == 5 and len(st.through.units) == 6
     fired = [st.foon.units[u] for u, _ in rd.counts.firings]
     assert [(u.motion.label, u.inputs) for u in fired] == [("remove", (n("oven", "on"),)),

@@ -20,10 +20,10 @@ def test_a_network_evicted_from_the_as_now_cache_stays_alive_while_a_memo_names_
     seen = []
 
     def recording(inp, st, scene, stated, overrides, narrow=None, memo=None, through=False, placed=False,
-                  other_makers=True):
+                  other_makers=True, refill=True):
         seen.append((inp, memo))
         return relational_reading.read_units(inp, st, scene, stated, overrides, narrow, memo, through, placed,
-                                             other_makers)
+                                             other_makers, refill)
 
     monkeypatch.setattr(relational_objects, "read_units", recording)
     foon = Foon((FILL, PUT, BAKE))

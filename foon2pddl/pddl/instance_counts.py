@@ -89,6 +89,9 @@ class InstanceCounts:
     unfolded: tuple[int, ...] = ()
     #: an object the plan leaves in a kitchen node serves a later taker there (`count_reuse`)
     reused: bool = False
+    #: a container a unit fills, left in a kitchen node, serves a later taker in place of a kitchen one
+    #: (`count_reuse._filled`): fewer objects at that node than the plan's count without that reuse
+    filled: bool = False
 
     def labels(self) -> dict[str, int]:
         """Label -> total instances."""
@@ -109,7 +112,8 @@ class InstanceCounts:
         at_node = tuple(sorted((Counter(dict(self.at_node)) | Counter(dict(other.at_node))).items()))
         unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
         same = (at_node, unmade) == (self.at_node, self.unmade)
-        return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused)
+        return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused,
+                              self.filled or other.filled)
 
     def renumbered(self, index: Sequence[int]) -> InstanceCounts:
         """These counts with unit `u` of the plan named `index[u]` (the network counted in has other indexes than
@@ -190,7 +194,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
-                  reuse: bool = False, placed: bool = False, other_makers: bool = False) -> InstanceCounts:
+                  reuse: bool = False, placed: bool = False, other_makers: bool = False,
+                  filled: bool = True) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
@@ -200,7 +205,9 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`); `placed`:
     makers by holder reach (`count_together.makers_together`); `other_makers` (with `together`): the plans with a
     needed node made by another of its makers count too (`count_plans._other_makers`); the relational counts take
-    them but the one `plan` falls back on last (`EncodeOptions.own`).
+    them but the one `plan` falls back on last (`EncodeOptions.own`); `filled` (with `reuse`): a container a unit
+    fills in a kitchen node serves a later taker too (`count_reuse._filled`), for the plan chosen without it: fewer
+    objects for that plan, never another plan (`InstanceCounts.filled` says when it lowered the count).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -210,6 +217,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     def as_is(plan: tuple[int, ...], target: ObjectNode) -> int:  # objects `plan` counts unfolded as it is
         at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), target, roles_of)
         return at.total() + new.total()
+    lowered = False  # a container filled in a kitchen node serves a later taker: fewer for the plan chosen
     found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed,
                                       swapped if together and other_makers else None, as_is)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
@@ -237,10 +245,12 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         unfolds = [unfold(foon, p, k, found[1], roles_of, s) for p, k, s in zip(plans, homes, steps, strict=True)]
         reuse = reuse and not (stated or overrides or extra)
         if reuse:  # objects left in a kitchen node serve later takers
-            unfolds = [(r, c, f) if (r := reused(foon, s[::-1], k, found[1], roles_of)) is not None else (a, c, f)
-                       for (a, c, f), k, s in zip(unfolds, homes, steps, strict=True)]
+            unfolds = [(r, c, f) if (r := reused(foon, s[::-1], k, found[1], roles_of, False)) is not None
+                       else (a, c, f) for (a, c, f), k, s in zip(unfolds, homes, steps, strict=True)]
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
+        if reuse and filled and (r := reused(foon, steps[best][::-1], homes[best], found[1], roles_of)) is not None:
+            at_kitchen, lowered = r, r != at_kitchen
         nodes |= set(at_kitchen)
         labels |= set(created)
 
@@ -258,7 +268,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
              and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
     once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
     unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
-    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None)
+    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None,
+                          lowered)
 
 
 @dataclass(frozen=True)

@@ -142,13 +142,14 @@ def _nows(foon: Foon) -> dict[tuple[int, ...], Foon]:
 def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
                overrides: Mapping[str, int], narrow: frozenset[ObjectNode] | None = None,
                memo: dict | None = None, through: bool = False, placed: bool = False,
-               other_makers: bool = True) -> Reading:
+               other_makers: bool = True, refill: bool = True) -> Reading:
     """The reading of `st`'s units (module doc); `inp.foon` is the network FOON's own plan runs in, `scene` the
     kitchen's scene objects (none: counts derived), `stated` and `overrides` the counts the kitchen and options
     give; `narrow`: count small, from FOON's own plan alone (no stitched one beside it) in the kitchen with these
     nodes too (`relational_objects`), from the plan through the stitches alone with `through`, with makers by holder
     reach with `placed` (`count_together.makers_together`), and the plans with a needed node made by another of its
-    makers counted too with `other_makers` (`instance_counts.derive_counts`; without: FOON's own plan unfolded). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
+    makers counted too with `other_makers` (`instance_counts.derive_counts`; without: FOON's own plan unfolded), and a
+    container a unit fills in a kitchen node taken again with `refill` (`count_reuse._filled`). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
     `overrides` (counted wide, then small): the units' readings by speakers and the counts by plan and kitchen are
     made once (the same values: read twice, they cost a GEN trial's encoding a third more)."""
     memo = {} if memo is None else memo
@@ -192,12 +193,12 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     def count(net: Foon, need: tuple[int, ...], roles_of: RolesOf) -> InstanceCounts:  # objects for a plan in `net`
         # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
         # names no other network while the memo lives
-        key = ("counts", id(net), need, id(roles_of), narrow or None, placed, other_makers)
+        key = ("counts", id(net), need, id(roles_of), narrow or None, placed, other_makers, refill)
         if key not in memo:
             memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
                                            inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
                                            together=True, stitched=True, reuse=True, placed=placed,
-                                           other_makers=other_makers)
+                                           other_makers=other_makers, filled=refill)
         return memo[key][1]
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
