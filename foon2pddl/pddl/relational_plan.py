@@ -26,7 +26,8 @@
   (the bowl of sesame seeds sprinkled over the salad).
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
-  object leaves its node, an emptied container changes node.
+  object leaves its node, an emptied container changes node; so does a read-only role FOON leaves out of the
+  outputs that is the only one listing an object leaving a holder the unit does not name (`_late_listers`).
 
 What the decisions do to the task's nodes beyond the unit's own roles (the contents poured out with a container,
 the holder emptied late, the corn restated on the board, the flour on the floured board) is `relational_touched`.
@@ -214,7 +215,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
 def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
     """The object roles `instance_counts.derive_counts` unfolds for this unit (module doc)."""
     out: list[Role] = []
-    emptied = dict(plan.emptied)
+    emptied = {**_late_listers(plan), **dict(plan.emptied)}
     for k, s in enumerate(plan.slots):
         label, before = s.rel.role.label, s.rel.role.before
         if s.fate is Fate.NEW:
@@ -228,6 +229,23 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
         else:
             out.append(Role(label, before, s.after))
     return tuple(out)
+
+
+def _late_listers(plan: UnitPlan) -> dict[int, ObjectNode]:
+    """Role index -> its node without what leaves it, for each role FOON leaves out of the outputs whose node is
+    the only one of the unit listing an object that leaves a holder the unit does not name (`Slot.late_empties`):
+    whichever holds it is emptied of it, and the unit takes that one listing it. The stitched sprinkle takes `bacon
+    (fried, on [sheet])`, the pour's node, with `plate (contains {bacon})` (`0050-scrambled_eggs_with_bacon-
+    cheese.txt:242`): the plate is left empty for the pour at `:288`. O(r^2)."""
+    gone: dict[int, set[str]] = {}
+    for s in plan.slots:
+        if not s.late_empties:
+            continue
+        lists = [k for k, t in enumerate(plan.slots) if t.rel.role.before is not None
+                 and s.rel.role.label in listed(t.rel.role.before) and t.rel.role.label != s.rel.role.label]
+        if len(lists) == 1 and plan.slots[lists[0]].after is None and plan.slots[lists[0]].fate is Fate.STAYS:
+            gone.setdefault(lists[0], set()).add(s.rel.role.label)
+    return {k: without(plan.slots[k].rel.role.before, labels) for k, labels in gone.items()}
 
 
 def _stays_in(rels: Sequence[RelRole], f: Flow) -> bool:
