@@ -116,7 +116,7 @@ def test_of_the_orders_the_one_that_counts_fewest_is_kept():
 
 def _readers_first_as_stated(foon, plan, roles_of):
     """The rule as the module doc states it, walking the plan between M and R on every test: the oracle the
-    position-indexed `readers_first` must agree with (O(p^3 r))."""
+    position-indexed `readers_first` must agree with (O(p^4 r): p^2 passes of O(p^2 r))."""
     order = list(plan)
     roles = {u: roles_of(foon.units[u]) for u in order}
     moved_out = {u: {r.before for r in roles[u] if r.changes} for u in order}

@@ -21,7 +21,7 @@ again and went round that cycle up to the p^2 cap (4,900-5,476 moves, most of th
 order the cap stops at is read off the cycle instead (the same order). The plan unfolds as before
 otherwise; only the order, and so which takings share an object, changes. Only in `relational`
 (`instance_counts.derive_counts` with `together`): `instances`' counts are the floor this one is compared with.
-O(p^3 r) at worst for a plan of p units of r roles; plans have tens of units.
+O(p^3 u) at worst for a plan of p units (`readers_first`'s doc); plans have tens of units.
 
 Readers first can also count more: the ribs' remove (`0018-barbecue-style_country_ribs.txt:197`), put in as the
 tray's way back, fired after the second cook leaves the oven `off`, and that cook counted an oven of its own (11
@@ -35,7 +35,7 @@ a measuring cup with water at the faucet (`0075-pesto_linguine.txt:13`, for the 
 `0084-watermelon_lemonade.txt:296`) in an early round, before the pour and stir (`:277`) left the juice's cup
 `measuring cup (empty)`: two measuring cups, 24 objects in the problem against `instances`' 23; one, 23, with the
 fill after it. Each plan `orders` lists is listed again takers last, after all of them: kept only when it counts
-fewer. O(p^3 r) at worst, as readers first.
+fewer. O(p^4 r) at worst for p units of r roles (`takers_last`'s doc).
 """
 
 from __future__ import annotations
@@ -54,8 +54,9 @@ def readers_first(foon: Foon, plan: Sequence[int], roles_of: Callable[[Functiona
     where no unit between needs it (module doc). A unit's node sets are bit masks over the plan's nodes, and for each
     unit the units that read what it moves out, take what it leaves and leave what it takes are found once: a pass
     looks only at those units' positions, never walks the plan between two units; an order met again is a cycle, and
-    the order after the p^2 moves is read off it (module doc). O(p^2 (p + u)) at worst for p units, u the most
-    positions of related units; a plan may list a unit twice (`count_returns.with_returns`)."""
+    the order after the p^2 moves is read off it (module doc). O(p^3 u) at worst for p units, u the most positions
+    of a unit's related units: at most p^2 passes, each O(p) to index the positions, then O(u) for each unit tried
+    before the one that moves; a plan may list a unit twice (`count_returns.with_returns`)."""
     order = list(plan)
     units = set(order)
     roles = {u: roles_of(foon.units[u]) for u in units}
@@ -108,7 +109,8 @@ def takers_last(foon: Foon, plan: Sequence[int], roles_of: Callable[[FunctionalU
                 ) -> tuple[int, ...]:
     """`plan` with each unit that moves an object out of a node right after the first later unit that leaves an
     object in that node, where no unit from the taker up to that one takes a node the taker leaves one in (module
-    doc). Repeated until no unit moves (at most p^2 moves, each O(p r))."""
+    doc). Repeated until no unit moves: at most p^2 passes, each O(p^2 r) (for each unit, a walk of the plan after
+    it), so O(p^4 r) at worst for p units of r roles."""
     order = list(plan)
     roles = {u: roles_of(foon.units[u]) for u in order}
     moved_out = {u: {r.before for r in roles[u] if r.changes and r.before is not None} for u in order}
