@@ -240,3 +240,17 @@ def test_dishes_of_a_network_that_marks_none_say_so_and_name_the_whole_list():
     assert "`goals` without --dishes lists every goal candidate" in r.stderr, r.stderr
     marked = CliRunner().invoke(main, ["goals", "--dishes"])
     assert marked.exit_code == 0 and "marked as a recipe's dish" not in marked.stderr
+
+
+def test_the_legend_names_a_network_not_taken_as_read():
+    """The legend says which network it counts on (` on FOON-GEN`), and nothing for the one taken as read; the slow
+    step (` of FOON-EXP`, tests/test_slow_steps.py) names it through the same helper."""
+    from click.testing import CliRunner
+
+    from foon2pddl.cli import main
+    from foon2pddl.cli.goals_cmd import _which_foon
+
+    for network, said in (("gen", " on FOON-GEN (round"), ("reg", " can be made from foon2pddl/data/example_kitchen.txt (round")):
+        r = CliRunner().invoke(main, ["goals", "--dishes", "--network", network])
+        assert r.exit_code == 0 and said in r.stdout.splitlines()[0], r.output
+    assert (_which_foon("of", "exp"), _which_foon("on", "reg")) == (" of FOON-EXP", "")

@@ -28,12 +28,19 @@ def goal_rows(foon: Foon, reach: Reachability) -> list[dict]:
     return rows
 
 
+def _which_foon(word: str, network: str) -> str:
+    """` on FOON-EXP` (`word`, then the network's name) for a network not taken as read; nothing for the one as read:
+    the table's legend and the slow step name the network alike."""
+    kind = NETWORKS[network]
+    return "" if kind.as_read else f" {word} FOON-{kind.label}"
+
+
 def format_rows(rows: list[dict], kitchen_source: str, network: str = DEFAULT_NETWORK,
                 counted: tuple[int, int, str] | None = None) -> str:
     """Text table: the legend and a column header first, then `yes      3  *    node` per goal. The legend counts
     `counted` (made, of how many, what: `goal candidates`, `dishes`) when the rows are only the reachable ones."""
     made, total, what = counted or (sum(r["reachable"] for r in rows), len(rows), "goal candidates")
-    net = "" if NETWORKS[network].as_read else f" on FOON-{NETWORKS[network].label}"
+    net = _which_foon("on", network)
     listed = "; only those are listed" if counted and len(rows) < total else ""
     lines = [f"reachable: {made} of {total} {what} can be made from {kitchen_source}{net}{listed} "
              "(round = sequential steps needed; * = a recipe's dish)",
@@ -60,7 +67,7 @@ def goals(paths, kitchen, level, network, as_json, only_reachable, only_dishes, 
     """
     _, view = load_view(paths, kitchen, level, network)
     foon, kit = view.foon, view.kitchen
-    of = "" if NETWORKS[network].as_read else f" of FOON-{NETWORKS[network].label}"
+    of = _which_foon("of", network)
     # FOON-EXP of the shared subgraphs: 2.3-2.5 s silent after its build at load 8 (stop 58's pass)
     with slow_step(f"finding which of the {count(len(foon.producers), 'goal candidate', grouped=True)}{of} "
                    "the kitchen can make"):
