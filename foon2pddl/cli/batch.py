@@ -12,6 +12,7 @@ from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS, file_names, format_table, summary
 from ..io.goal_files import parse_goal_spec
 from ..io.goal_lists import GoalEntry, read_goal_list
+from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
 from ..model.words import count
 from .progress import slow_step
@@ -73,7 +74,8 @@ def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None
         raise FoonInputError(str(directory), 0, f"cannot write: {exc.strerror or exc}") from None
 
 
-def write_trees(directory: Path, rows: list[dict], trees: Sequence[TaskTree | None], fmt: str, kitchen) -> None:
+def write_trees(directory: Path, rows: list[dict], trees: Sequence[TaskTree | None], fmt: str,
+                kitchen: Kitchen) -> None:
     """Each row's task tree (None: no file) in `fmt`, written by `write_files`, under a step that says so: drawing
     171 trees with Graphviz left `retrieve --goals - --format svg -o DIR` 20.9 s silent (stop 58's pass)."""
     from ..io.tree_formats import render_tree
