@@ -1,18 +1,13 @@
 """The solvers an experiment compares, by name, each prepared once per (trial, network).
 
-A solver is prepared for one network view and one trial kitchen (`prepare`),
-which does the work shared by the goals of the batch (its time is the batch's
-`setup`), then answers goals one by one (`solve`). Native solvers share the
-reachability fixpoint (complete, optimal) or the network index (greedy);
-`fd-tree` and `fd-tree-opt` translate the unpruned `tree` encoding once per run
-from the default kitchen, start each trial from its kitchen and swap goals in
-the translated task (`planners.goal_replanner.GoalReplanner`); `fd-state`, `fd-instances`
-and `fd-relational` compile and plan each goal afresh with their `encoding`, pruned
-per goal (the physical ones may need a wash or a second bowl where FOON's semantics
-does not, and solve fewer goals than `native-complete`); `fd-lifted-gen` plans over
-the concrete network with category types, on GEN only, translated once per trial
-too. Every tree a solver returns is validated by simulation from the kitchen the
-solver was given; a tree that fails is an `error`.
+A solver is prepared for one network view and one trial kitchen (`prepare`, given a `setting.Setting`), which
+does the work shared by the goals of the batch (its time is the batch's `setup`), then answers goals one by one
+(`solve`). What each prepares is its class's doc: the native solvers in `native_solver` (the reachability fixpoint
+or the network index), the Fast Downward ones in `fd_solvers` (`fd-tree` and `fd-tree-opt`: one translation per
+run, goals swapped in; `fd-state`, `fd-instances` and `fd-relational`: compiled per goal, the physical ones may
+need a wash or a second bowl where FOON's semantics does not, and solve fewer goals than `native-complete`;
+`fd-lifted-gen`: GEN only, one translation per trial). Every tree a solver returns is validated by simulation
+from the kitchen the solver was given; a tree that fails is an `error` (`outcomes`).
 """
 
 from __future__ import annotations
