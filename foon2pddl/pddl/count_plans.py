@@ -49,17 +49,19 @@ def delete_free_plans(foon: Foon, kitchen: frozenset[ObjectNode], candidates: Se
 
 
 def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool, placed: bool = False,
-            in_plan: bool = False, preset: Mapping[int, int] | None = None, made_by: dict[int, int] | None = None
-            ) -> tuple[int, ...]:
+            in_plan: bool = False, preset: Mapping[int, int] | None = None, made_by: dict[int, int] | None = None,
+            most: int | None = None) -> tuple[int, ...] | None:
     """The units of `delete_free_plan`'s plan for `target`, in firing order; `in_plan`: a node waits till the stack
     empties (`count_together.made_in_plan`); `preset`: node id -> the unit that makes it whatever the rules say
-    (`_other_makers`); `made_by` gets node id -> the unit chosen to make it."""
+    (`_other_makers`); `made_by` gets node id -> the unit chosen to make it; `most`: None as soon as the plan has
+    more units than that (`_other_makers` keeps no longer plan: the walk stops there)."""
     ix = reach.index
     chosen: set[int] = set()
     seen: set[int] = set()
     maker: dict[int, int] = dict(preset or {})  # node id -> the unit chosen to make it (`together`, `preset`)
     stack = [(ix.node_id[target], -1)] if target in ix.node_id else []  # (node id, the unit taking it)
     waiting: deque[tuple[int, int]] = deque()  # `in_plan`: nodes decided once the stack is empty, in the order met
+    size = 0  # the units chosen that fire: the plan's length
     while stack or waiting:
         n, by = waiting.popleft() if (late := not stack) else stack.pop()  # `late`: a node that waited, decided now
         if n in seen or reach.node_round[n] == 0:
@@ -75,6 +77,8 @@ def _chosen(reach: Reachability, target: ObjectNode, together: bool, first: bool
         seen.add(n)
         if u not in chosen:
             chosen.add(u)
+            if most is not None and (size := size + (reach.unit_round[u] >= 0)) > most:  # the units it lists
+                return None
             if together:
                 maker.update({k: v for k, v in makers_together(reach, u, first, placed).items()
                               if k not in seen and k not in (preset or ())})
@@ -114,15 +118,16 @@ def _other_makers(reach: Reachability, target: ObjectNode, together: bool, place
     for n, u in sorted(made.items()):
         for m in sorted(ix.makers[n], key=lambda k: ix.rank[k]):
             if m != u and reach.unit_round[m] >= 0 and not needs(reach, m, {n}):
-                other = _chosen(reach, target, together, False, placed, preset={n: m})
-                if other != plan and _fewer_units(reach, other, plan, u, m) and score(other, target) < least:
+                other = _chosen(reach, target, together, False, placed, preset={n: m}, most=len(plan))
+                if other not in (None, plan) and _fewer_units(reach, other, plan, u, m) and score(other, target) < least:
                     out[other] = None
                     kept.append((n, m))
     preset: dict[int, int] = {}
     best, fewest = plan, least
     for n, m in kept if len(kept) > 1 else ():  # together: each swap counted on the plan with those kept before
-        both = _chosen(reach, target, together, False, placed, preset={**preset, n: m})
-        if (len(both) < len(best) or len(set(both) ^ set(best)) <= 2) and (k := score(both, target)) < fewest:
+        both = _chosen(reach, target, together, False, placed, preset={**preset, n: m}, most=len(best) + 2)
+        if both is not None and (len(both) < len(best) or len(set(both) ^ set(best)) <= 2) and (
+                k := score(both, target)) < fewest:
             preset, best, fewest = {**preset, n: m}, both, k
     if best not in out and best != plan:
         out[best] = None
