@@ -124,14 +124,15 @@ def test_of_two_makers_of_one_node_the_counts_keep_the_one_counting_fewer():
     units, kitchen = _garlic_breads()
     goal = units[-1].outputs
     assert delete_free_plan(Foon(units), kitchen, goal, together=True)[0] == (0, 1, 2, 4)  # the first achievers
-    counts = derive_counts(Foon(units), range(len(units)), kitchen, goal, together=True, stitched=True, reuse=True,
-                           other_makers=True)
+    counts = derive_counts(Foon(units), range(len(units)), kitchen, goal, together=True, stitched=True, reuse=True)
     assert {u for u, _ in counts.firings} == {1, 3, 4}
+    assert counts.other_maker  # the counts say so: without other makers' plans they differ
     assert "food processor bowl" not in counts.labels() and counts.labels()["garlic"] == 1
     # without them, FOON's own plan unfolded: what `plan` falls back on last when a task counted with them has no
     # valid plan (the experiment's REG trial 6 lost goals when nothing did, tests/test_relational_wide_count.py)
-    counts = derive_counts(Foon(units), range(len(units)), kitchen, goal, together=True, stitched=True, reuse=True)
-    assert {u for u, _ in counts.firings} == {0, 1, 2, 4}
+    counts = derive_counts(Foon(units), range(len(units)), kitchen, goal, together=True, stitched=True, reuse=True,
+                           other_makers=False)
+    assert {u for u, _ in counts.firings} == {0, 1, 2, 4} and not counts.other_maker
     compiled = [compile_goal(Foon(units), Kitchen(kitchen), Goal(GoalSpec("bread"), goal), "relational", own=own)
                 for own in (False, True)]
     assert ["food processor bowl" in {x.label for x in c.task.instances} for c in compiled] == [False, True]

@@ -92,6 +92,9 @@ class InstanceCounts:
     #: a container a unit fills, left in a kitchen node, serves a later taker in place of a kitchen one
     #: (`count_reuse._filled`): fewer objects at that node than the plan's count without that reuse
     filled: bool = False
+    #: the plan counted has a needed node made by another of its makers (`count_plans._other_makers`): only then do
+    #: the counts without those plans (`derive_counts(other_makers=False)`, FOON's own plan unfolded) differ
+    other_maker: bool = False
 
     def labels(self) -> dict[str, int]:
         """Label -> total instances."""
@@ -113,7 +116,7 @@ class InstanceCounts:
         unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
         same = (at_node, unmade) == (self.at_node, self.unmade)
         return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused,
-                              self.filled or other.filled)
+                              self.filled or other.filled, self.other_maker or other.other_maker)
 
     def renumbered(self, index: Sequence[int]) -> InstanceCounts:
         """These counts with unit `u` of the plan named `index[u]` (the network counted in has other indexes than
@@ -194,7 +197,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   candidates: Sequence[ObjectNode], *, stated: Mapping[ObjectNode, int] | None = None,
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
-                  reuse: bool = False, placed: bool = False, other_makers: bool = False,
+                  reuse: bool = False, placed: bool = False, other_makers: bool = True,
                   filled: bool = True) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
@@ -205,9 +208,11 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     `reuse`: an object the unfolded plan leaves in a kitchen node serves a later taker (`count_reuse`); `placed`:
     makers by holder reach (`count_together.makers_together`); `other_makers` (with `together`): the plans with a
     needed node made by another of its makers count too (`count_plans._other_makers`); the relational counts take
-    them but the one `plan` falls back on last (`EncodeOptions.own`); `filled` (with `reuse`): a container a unit
-    fills in a kitchen node serves a later taker too (`count_reuse._filled`), for the plan chosen without it: fewer
-    objects for that plan, never another plan (`InstanceCounts.filled` says when it lowered the count).
+    them but the one `plan` falls back on last (`EncodeOptions.own`); those plans are counted after the others, so
+    counts that keep none of them (`InstanceCounts.other_maker` false) are those without them. `filled` (with
+    `reuse`): a container a unit fills in a kitchen node serves a later taker too (`count_reuse._filled`), for the
+    plan chosen without it: fewer objects for that plan, never another plan (`InstanceCounts.filled` says when it
+    lowered the count).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -228,6 +233,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         at_kitchen: Counter[ObjectNode] = Counter(dict.fromkeys(nodes, 1))
         created: Counter[str] = Counter(dict.fromkeys(labels, 1))
         firings: dict[int, int] = {}
+        other_maker = False
     else:
         changing = changers(foon, units, roles_of)  # the units on ways back, found once for every plan below
 
@@ -240,6 +246,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         for again in dict.fromkeys(o[0] for o in other if o is not None and o != found):  # kept when fewer
             more = ways_of(again)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
+        unswapped = len(plans)  # the plans counted without `other_makers`: a prefix of all of them
         for alt in swapped:  # counted after the others, so kept only when fewer
             more = ways_of(alt)
             plans = tuple(dict.fromkeys((*plans, *orders(foon, more[True], more[False], roles_of))))
@@ -252,6 +259,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                        else (a, c, f) for (a, c, f), k, s in zip(unfolds, homes, steps, strict=True)]
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
+        other_maker = best >= unswapped
         if reuse and filled and (r := reused(foon, steps[best][::-1], homes[best], found[1], roles_of)) is not None:
             at_kitchen, lowered = r, r != at_kitchen
         nodes |= set(at_kitchen)
@@ -272,7 +280,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
     unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None,
-                          lowered)
+                          lowered, other_maker)
 
 
 @dataclass(frozen=True)

@@ -199,6 +199,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                                            inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
                                            together=True, stitched=True, reuse=True, placed=placed,
                                            other_makers=other_makers, filled=refill)
+            if other_makers and not memo[key][1].other_maker:  # the same counts without other makers' plans:
+                memo.setdefault(key[:6] + (False, *key[7:]), memo[key])  # FOON's own plan unfolded counts them again no more
         return memo[key][1]
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
