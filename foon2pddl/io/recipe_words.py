@@ -150,9 +150,8 @@ def _carrier(unit: FunctionalUnit, moved: ObjectNode, src: tuple[str, str] | Non
 def _listed(what: list[tuple[str, str, bool]]) -> str:
     """Things moved to one place, each with where it comes from (`from the bowl`), the source said once for a run
     of things from one holder (`onion (sliced) and bacon (chopped) from the cutting board`). (words, source, one):
-    `one` when the source is surely one object: the unit's only input of its label, or, with none, a surface the
-    things are on (a cutting board, a plate). Two bowls, each of one thing, stay two, and so do things `in
-    [bottle]` with no bottle node (the greek salad's olive oil and vinegar, each in its own)."""
+    `one` when the source is surely one object (`_one_source`). Two bowls, each of one thing, stay two, and so do
+    things `in [bottle]` with no bottle node (the greek salad's olive oil and vinegar, each in its own)."""
     runs: list[tuple[list[str], str, bool]] = []
     for words, source, one in what:
         if runs and one and runs[-1][2] and source and runs[-1][1] == source:
@@ -161,6 +160,16 @@ def _listed(what: list[tuple[str, str, bool]]) -> str:
             runs.append(([words], source, one))
     said = [prose_list(words) + source for words, source, _ in runs]
     return prose_list(said)
+
+
+def _one_source(unit: FunctionalUnit, src: tuple[str, str] | None) -> bool:
+    """Whether the place `src` (relation, holder label) a thing moves from is surely one object, so that things
+    moved from it are said to come from it once (`_listed`): the unit's only input of that label, or, with none, a
+    surface the thing is on (a cutting board, a plate). O(inputs)."""
+    if src is None:
+        return False
+    kin = sum(j.label == src[1] for j in unit.inputs)
+    return kin == 1 or (kin == 0 and src[0] in ("on", "onto"))
 
 
 def _between(unit: FunctionalUnit) -> tuple[list[ObjectNode], ObjectNode, ObjectNode] | None:
@@ -246,8 +255,8 @@ def recipe_text(unit: FunctionalUnit) -> str:
              if i.label in new and _place(new[i.label], named) not in (None, _place(i, named))]
     moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named)
     moves += _listed_only(unit, new, before, {i.label for i, _, _ in moves}, named)
-    said = {i.label for i, _, _ in moves} | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
     moving = {i.label for i, _, _ in moves}
+    said = moving | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
     moves = [(i, _carrier(unit, i, src, dst, moving) or src, dst) for i, src, dst in moves]
     said |= {src[1] for _, src, _ in moves if src}
     between = None if moves else _between(unit)
@@ -263,8 +272,7 @@ def recipe_text(unit: FunctionalUnit) -> str:
         for i, src, dst in moves:
             where = before.get(dst[1])
             source = f" from the {_source(unit, i, src[1], where)}" if src else ""
-            kin = sum(j.label == src[1] for j in unit.inputs) if src else 2
-            one = kin == 1 or (kin == 0 and src is not None and src[0] in ("on", "onto"))  # `_listed`
+            one = _one_source(unit, src)
             to = f"{_INTO.get(dst[0], dst[0])} the {where.describe() if where else dst[1]}"
             if parts and parts[-1][1] == to:
                 parts[-1][0].append((_unplaced(i), source, one))
