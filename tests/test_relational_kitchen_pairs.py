@@ -243,3 +243,61 @@ def test_no_pair_read_gives_the_gen_kofta_goals_a_plan_the_replay_rejects() -> N
     assert [str(r.status) for r in records if str(r.status) not in ("solved", "unsolvable")] == [], [
         r.reason for r in records]
     assert all(r.validated for r in records if str(r.status) == "solved")
+
+
+# A maker of the container's node that moves the container on from the pair's own container node (out of the
+# microwave the put inside took it into) leaves the pair only where it already was: no other way to the pair. On the
+# universal FOON of 70 subgraphs drawn with seed 55 the crayfish wrap's spread (ACT-0077:12) takes `bowl (contains
+# {butter})` with `butter (in [bowl], stick)`, which only the blueberry muffin's pick-and-place (ACT-0003:18) makes,
+# in a bowl of sugar too; the garlic bread's pick-and-place (0016:15) makes the bowl with the butter not `stick`,
+# and its remove (0016:62) takes the bowl out of the microwave, naming no butter: the pair was not read, and the wrap
+# was out of holder reach.
+STICK_IN, BUTTER_BOWL = n("butter", "stick", inside("bowl")), n("bowl", contains("butter"))
+PACKET_STICK, SUGAR_BOWL, OFF = n("butter", "stick", inside("packet")), n("bowl", contains("sugar")), n("microwave", "off")
+IN_OVEN, HOLDING = n("bowl", contains("butter"), inside("microwave")), n("microwave", contains("bowl"), "off")
+MUFFIN_PLACE = FunctionalUnit((SUGAR_BOWL, PACKET_STICK), Motion("pick-and-place"),
+                              (n("bowl", contains("butter", "sugar")), STICK_IN), (Source("muffin.txt", 18),))
+BREAD_PLACE = FunctionalUnit((EMPTY, PACKET_STICK), Motion("pick-and-place"),
+                             (BUTTER_BOWL, n("butter", inside("bowl"))), (Source("bread.txt", 15),))
+PUT_INSIDE = FunctionalUnit((BUTTER_BOWL, OFF), Motion("put inside"), (IN_OVEN, HOLDING), (Source("bread.txt", 26),))
+REMOVE = FunctionalUnit((HOLDING, IN_OVEN), Motion("remove"), (OFF, BUTTER_BOWL), (Source("bread.txt", 62),))
+BUTTERED = n("tortilla", "buttered")
+SPREAD = FunctionalUnit((n("tortilla", "plain"), BUTTER_BOWL, STICK_IN, KNIFE), Motion("spread"), (BUTTERED,),
+                        (Source("wrap.txt", 12),))
+
+
+def test_a_container_moved_on_from_the_pairs_own_node_makes_no_other_way_to_it():
+    units = (MUFFIN_PLACE, BREAD_PLACE, PUT_INSIDE, REMOVE, SPREAD)
+    outcome = clean_unit_plan(units, {EMPTY, SUGAR_BOWL, PACKET_STICK, OFF, n("tortilla", "plain"), KNIFE}, BUTTERED)
+    assert [s.unit.motion.label for s in outcome.trace.steps] == ["spread"]
+    assert outcome.validation.ok
+    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+        "assumed at hand: wrap.txt:12: spread takes bowl (contains {butter}) with butter (in [bowl], stick), which no "
+        "unit makes together (pick-and-place at bread.txt:15 makes the bowl beside butter (in [bowl]); pick-and-place "
+        "at muffin.txt:18 makes the butter beside bowl (contains {butter, sugar})): read as the kitchen's"]
+
+
+# The cycle is no other way only between two made nodes: with the held node the kitchen's, the pair stays unread.
+# On the shared universal FOON the french toast's pour (0037:63) and the italian sausage's (0041:115) take `bowl
+# (contains {butter})` with the kitchen's `butter (cubed, in [bowl])`; every maker of the bowl but the garlic bread's
+# remove (0016:62) leaves another butter beside it. Read as the kitchen's, its bowl of butter was taken for the
+# turkey sandwich's spread (0049:25) and the garlic bread's add (0016:74), which take that bowl node with other
+# butter: FOON's plan, unfolded for the counts, fired the pick-and-place (0016:15) once, not twice, and each task
+# held one object more (the sandwich 14 -> 15, the garlic bread with parsley 19 -> 20), none of them needing the pour.
+CUBED, SKILLET = n("butter", "cubed", inside("bowl")), n("skillet", "heated")
+TOAST_POUR = FunctionalUnit((BUTTER_BOWL, CUBED, SKILLET), Motion("pour"),
+                            (n("butter", "cubed", inside("pan")), n("skillet", contains("butter"))),
+                            (Source("toast.txt", 63),))
+HEAT = FunctionalUnit((IN_OVEN, n("butter", inside("bowl")), HOLDING), Motion("heat"),
+                      (n("butter", "softened", inside("bowl")), HOLDING), (Source("bread.txt", 46),))
+
+
+def test_a_container_moved_on_is_no_other_way_to_a_pair_of_a_kitchen_node():
+    from foon2pddl.pddl.kitchen_pairs import kitchen_pairs
+    units = (BREAD_PLACE, PUT_INSIDE, HEAT, REMOVE, TOAST_POUR)  # no stitch: the heat moves the butter on
+    assert kitchen_pairs(Foon(units), frozenset({EMPTY, PACKET_STICK, OFF, CUBED, SKILLET})) == ()
+    # both made (the butter of the pair from another unit's pick-and-place): the cycle is set aside, the pair read
+    made = FunctionalUnit((EMPTY, n("butter", "cubed")), Motion("pick-and-place"),
+                          (n("bowl", contains("butter", "sugar")), CUBED), (Source("muffin.txt", 18),))
+    assert [(p.taker, p.held) for p in kitchen_pairs(Foon((*units, made)), frozenset(
+        {EMPTY, PACKET_STICK, OFF, n("butter", "cubed"), SKILLET}))] == [(TOAST_POUR, CUBED)]

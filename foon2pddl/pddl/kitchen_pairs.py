@@ -27,7 +27,11 @@ and garlic peeled in bowls the kitchen does not say which its one `bowl (contain
 garlic the hamburger's sprinkle takes with it is read as the pair, on the universal FOON of the subgraphs of index 2
 modulo 3), no unit makes both, every unit making the held node leaves beside it a node of the container's label other than the pair's
 (the garlic is in another bowl), and every unit making the container's node leaves beside it a node of L at that
-container other than the pair's (another garlic is in the bowl), and no maker of the one takes the other (the homemade cheese pizza's bake takes
+container other than the pair's (another garlic is in the bowl), a maker that makes the node only from that very
+node aside when both nodes are made (`_moved_on`: the garlic bread's remove of the bowl of butter from the microwave
+the put inside took it into leaves the pair only where it already was; with the held node the kitchen's, the french
+toast's cubed butter, the pair stays unread: its kitchen bowl was counted for the turkey sandwich's spread, which
+takes that bowl node with other butter, one object more in its task), and no maker of the one takes the other (the homemade cheese pizza's bake takes
 the pick-and-place's `oven (contains {pizza pan}, on, preheated)` and makes the pan of baked pizza in that oven,
 which the remove takes with that oven node: one oven in two units' words, which `input_stitch` reads). Then no
 unit's outputs have the pair, and none
@@ -139,12 +143,24 @@ def _taken_pairs(foon: Foon, kitchen: frozenset[ObjectNode], i: int) -> tuple[Pa
                 continue
             if box in kitchen and _holds_other(box, held.label, kitchen):
                 continue  # the kitchen says what of that label its container holds (the plate of whole peppers)
-            boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers]
-            helds = [(m, _beside(m, box.label)) for m in held_makers]
+            cycle = bool(box_makers) and bool(held_makers)  # both made: a maker from the node itself is no way
+            boxes = [(m, _beside(m, held.label, box.label)) for m in box_makers if not (cycle and _moved_on(foon, m, box))]
+            helds = [(m, _beside(m, box.label)) for m in held_makers if not (cycle and _moved_on(foon, m, held))]
             if all(o is not None and o != held and held not in m.inputs for m, o in boxes) and all(
                     o is not None and o != box and box not in m.inputs for m, o in helds):
                 out.append(Pair(u, box, held, tuple(boxes), tuple(helds)))  # type: ignore[arg-type]
     return tuple(out)
+
+
+def _moved_on(foon: Foon, maker: FunctionalUnit, node: ObjectNode) -> bool:
+    """Whether `maker` makes `node` only from `node` itself: it takes a node of `node`'s label, and every unit
+    making each such input takes `node` (the garlic bread's remove, `0016-easy_garlic_bread-one-pot-chef.txt:62`,
+    makes `bowl (contains {butter})` from the bowl in the microwave, which only the put inside at `:26` makes, from
+    `bowl (contains {butter})`). It leaves the pair only where the pair already was, so it is no other way to it.
+    O(i m) for i inputs of `maker` and m makers of each."""
+    made = foon.producers
+    taken = [i for i in maker.inputs if i.label == node.label]
+    return bool(taken) and all(made.get(i) and all(node in foon.units[k].inputs for k in made[i]) for i in taken)
 
 
 def _holds_other(box: ObjectNode, label: str, kitchen: frozenset[ObjectNode]) -> bool:
