@@ -749,6 +749,22 @@ def test_what_moves_leaves_the_holder_that_lists_it_not_the_one_its_own_node_sti
         " (on [surface])")
 
 
+
+def test_what_holds_where_a_thing_goes_is_no_source_under_the_name_a_place_gives_it():
+    """The end-of-stop re-read (stop 58): dbd1282's `_carrier` (another input listing what moves is where it is
+    then, but not what holds where it goes) read holders without the unit's aliases, where every other place of
+    the step's words reads them through `aliases`. A tortilla `on [tray]` beside the `baking tray` that lists the
+    sauce (as 0053's tray lists the sauce poured onto the tortilla in it) read `pour sauce from the baking tray
+    onto the tortilla`: the sauce is in the bowl, and the tray holds the tortilla it goes onto."""
+    from foon2pddl.io.parser import parse_text
+    from foon2pddl.io.recipe_words import recipe_text
+
+    (pour,) = parse_text(
+        "//\nO\tbowl\t1\nS\tcontains\t{sauce}\nO\tsauce\t1\nS\tin\t[bowl]\nO\ttortilla\t0\nS\ton\t[tray]\n"
+        "O\tbaking tray\t0\nS\tcontains\t{sauce,tortilla}\nM\tpour\nO\tbowl\t1\nS\tempty\nO\tsauce\t1\n"
+        "S\ton\t[tortilla]\nO\ttortilla\t0\nS\tcontains\t{sauce}\nS\ton\t[tray]\n//\n", "tray.txt").foon.units
+    assert recipe_text(pour) == "pour sauce from the bowl onto the tortilla (on [tray]), on the baking tray"
+
 def test_things_moved_from_one_holder_say_it_once():
     """0085's breakfast pizza read `sprinkle onion (peeled, sliced) from the cutting board and bacon (chopped,
     defrosted) from the cutting board onto the pizza dough ...` (0085-mini_bacon_egg_breakfast_pizza.txt:472: both

@@ -133,17 +133,19 @@ def _listed_only(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[
 
 
 def _carrier(unit: FunctionalUnit, moved: ObjectNode, src: tuple[str, str] | None, dst: tuple[str, str],
-             moving: set[str]) -> tuple[str, str] | None:
+             moving: set[str], named: Aliases) -> tuple[str, str] | None:
     """Where `moved` is when the step begins, if not where its own node says: the first other input that lists it.
     FOON updates the holder a step fills (0082's scoop: `serving spoon (contains {pizza sauce})`) and leaves the
     filled thing's own node as it was (`pizza sauce (in [bowl])`), so the next step pours the sauce from the
     spoon. Not its own holder, nor what it goes into or what holds that (0053's baking tray lists the sauce poured
     onto the tortilla in it), nor a thing the step moves or one on `moved` (0017's bread `on [baking tray]` that
-    lists the tray). None when no other input lists it. O(inputs x states)."""
+    lists the tray). Holders are read through the unit's `named` aliases, as every place in the step's words (a
+    tortilla `on [tray]` beside the `baking tray` that lists the sauce: the tray holds where it goes). None when no
+    other input lists it. O(inputs x states)."""
     into = next((i for i in unit.inputs if i.label == dst[1]), None)
-    away = {dst[1], *moving, *(src[1:] if src else ()), *(_holders(into, {}) if into is not None else ())}
+    away = {dst[1], *moving, *(src[1:] if src else ()), *(_holders(into, named) if into is not None else ())}
     found = next((j for j in unit.inputs if j.label not in away and moved.label in contents(j)
-                  and moved.label not in _holders(j, {})), None)
+                  and moved.label not in _holders(j, named)), None)
     return ("in", found.label) if found is not None else None
 
 
@@ -257,7 +259,7 @@ def recipe_text(unit: FunctionalUnit) -> str:
     moves += _listed_only(unit, new, before, {i.label for i, _, _ in moves}, named)
     moving = {i.label for i, _, _ in moves}
     said = moving | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
-    moves = [(i, _carrier(unit, i, src, dst, moving) or src, dst) for i, src, dst in moves]
+    moves = [(i, _carrier(unit, i, src, dst, moving, named) or src, dst) for i, src, dst in moves]
     said |= {src[1] for _, src, _ in moves if src}
     between = None if moves else _between(unit)
     changed: list[ObjectNode] = []
