@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from foon2pddl.io.files import load
-from foon2pddl.model.foon import Foon, ObjectNode
+from foon2pddl.model.foon import Foon, FunctionalUnit, ObjectNode
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.model.pairing import Role
 from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.relational_plan import count_roles, plan_unit
 from foon2pddl.planners import solve
 from foon2pddl.planners.physical_replay import replay
 from foon2pddl.planners.solve import plan
@@ -21,6 +24,14 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
     report = replay(outcome.trace)
     assert report.ok, [d.describe() for d in report.disagreements]
     return outcome
+
+
+def alone_roles(kitchen: frozenset[ObjectNode]) -> Callable[[FunctionalUnit], tuple[Role, ...]]:
+    """The relational reading of each unit alone from `kitchen` (`relational_plan.plan_unit`: nothing silent, nothing
+    stitched), as the roles `instance_counts.derive_counts` and `count_order` take (`count_roles`)."""
+    def roles_of(unit: FunctionalUnit) -> tuple[Role, ...]:
+        return count_roles(plan_unit(unit, kitchen, frozenset(), frozenset(), frozenset(), frozenset(), frozenset()))
+    return roles_of
 
 
 def compiled_counts(monkeypatch) -> list[str]:

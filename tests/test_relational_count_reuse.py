@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, inside, n
-from relational_checks import clean_dish_plan, clean_unit_plan
+from relational_checks import alone_roles, clean_dish_plan, clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
 from foon2pddl.pddl.instance_counts import derive_counts
@@ -36,12 +36,8 @@ def _units(sifted: bool) -> tuple[FunctionalUnit, ...]:
 
 
 def _cups(units, reuse: bool) -> int:
-    from foon2pddl.pddl.relational_plan import count_roles, plan_unit
-
-    def roles_of(unit):  # the relational reading of each unit alone
-        return count_roles(plan_unit(unit, KITCHEN, frozenset(), frozenset(), frozenset(), frozenset(), frozenset()))
-    counts = derive_counts(Foon(units), range(len(units)), KITCHEN, (GOAL,), roles_of=roles_of, together=True,
-                           stitched=True, reuse=reuse)
+    counts = derive_counts(Foon(units), range(len(units)), KITCHEN, (GOAL,), roles_of=alone_roles(KITCHEN),
+                           together=True, stitched=True, reuse=reuse)
     return counts.labels()["measuring cup"]
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import alone_roles, clean_unit_plan
 
 from foon2pddl.io.files import load
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
@@ -16,7 +16,6 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.count_order import readers_first
 from foon2pddl.pddl.instance_counts import derive_counts
-from foon2pddl.pddl.relational_plan import count_roles, plan_unit
 
 KITCHEN = frozenset({n("mixer", "off"), n("bowl", "empty"), n("bag", contains("flour")), n("flour", inside("bag")),
                      n("box", contains("sugar")), n("sugar", inside("box"))})
@@ -42,8 +41,7 @@ def _units() -> tuple[FunctionalUnit, ...]:
     )
 
 
-def _roles_of(unit):  # the relational reading of each unit alone
-    return count_roles(plan_unit(unit, KITCHEN, frozenset(), frozenset(), frozenset(), frozenset(), frozenset()))
+_roles_of = alone_roles(KITCHEN)  # the relational reading of each unit alone
 
 
 def _counted_small(name: str):

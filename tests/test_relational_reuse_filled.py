@@ -11,14 +11,13 @@ the pour a kitchen cup of its own, with its water, which no plan touched (46 obj
 from __future__ import annotations
 
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import alone_roles, clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.instance_counts import derive_counts
-from foon2pddl.pddl.relational_plan import count_roles, plan_unit
 
 CUP_OF_WATER, EMPTY_CUP = n("measuring cup", contains("water")), n("measuring cup", "clean", "empty")
 TAP_WATER = n("water", make_state("from", "faucet"), inside("measuring cup"))
@@ -36,10 +35,8 @@ UNITS = (FILL, POUR, OTHER)
 
 def _cups(kitchen: frozenset, units=UNITS, goal=GOAL) -> int:
     """The measuring cups counted for `goal` over `units`, each unit read alone (`relational_plan.plan_unit`)."""
-    def roles_of(unit):
-        return count_roles(plan_unit(unit, kitchen, frozenset(), frozenset(), frozenset(), frozenset(), frozenset()))
-    counts = derive_counts(Foon(units), range(len(units)), kitchen, (goal,), roles_of=roles_of, together=True,
-                           stitched=True, reuse=True)
+    counts = derive_counts(Foon(units), range(len(units)), kitchen, (goal,), roles_of=alone_roles(kitchen),
+                           together=True, stitched=True, reuse=True)
     return counts.labels()["measuring cup"]
 
 

@@ -7,7 +7,7 @@ problem against `instances`' 23)."""
 from __future__ import annotations
 
 from node_words import contains, inside, n
-from relational_checks import clean_unit_plan
+from relational_checks import alone_roles, clean_unit_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
 from foon2pddl.model.goal import resolve_goal, spec_of_node
@@ -15,7 +15,6 @@ from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.count_order import takers_last
 from foon2pddl.pddl.instance_counts import derive_counts
-from foon2pddl.pddl.relational_plan import count_roles, plan_unit
 
 KITCHEN = frozenset({n("cup", "empty"), n("jug", contains("water")), n("water", inside("jug")),
                      n("cup", contains("juice")), n("juice", inside("cup")), n("pitcher", "dirty")})
@@ -39,8 +38,7 @@ def _units() -> tuple[FunctionalUnit, ...]:
     )
 
 
-def _roles_of(unit):  # the relational reading of each unit alone
-    return count_roles(plan_unit(unit, KITCHEN, frozenset(), frozenset(), frozenset(), frozenset(), frozenset()))
+_roles_of = alone_roles(KITCHEN)  # the relational reading of each unit alone
 
 
 def test_the_water_is_poured_after_the_juice_left_its_cup_empty():
