@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 from node_words import contains, inside, n
 from relational_checks import clean_unit_plan
 
@@ -30,14 +32,25 @@ POUR = FunctionalUnit((CUP, BOWL, IN_BOWL), Motion("pour"),
 KITCHEN = {EMPTY, PEELED, MINCED, BUTTER, CUP}
 
 
+def _at_hand(notes: Iterable[str]) -> list[str]:
+    """The notes that read a pair as the kitchen's."""
+    return [x for x in notes if x.startswith("assumed at hand")]
+
+
+def _plans_from_the_pair_at_hand(outcome, motions: list[str], notes: list[str]) -> None:
+    """The plan is these steps, valid (the tree check takes the pair as the task reads it), and the pairs read at
+    hand are these notes."""
+    assert [s.unit.motion.label for s in outcome.trace.steps] == motions
+    assert outcome.validation.ok
+    assert _at_hand(outcome.compiled.notes) == notes
+
+
 def test_a_pair_no_unit_makes_together_is_the_kitchens():
     outcome = clean_unit_plan((PLACE, ADD, POUR), KITCHEN, GOAL)
-    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
-    assert outcome.validation.ok  # the tree check takes the pair as the task reads it
-    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+    _plans_from_the_pair_at_hand(outcome, ["pour"], [
         "assumed at hand: dressing.txt:29: pour takes bowl (contains {garlic}) with garlic (in [bowl], minced), "
         "which no unit makes together (pick-and-place at soup.txt:65 makes the bowl beside garlic (in [bowl], "
-        "peeled); add at bread.txt:88 makes the garlic beside bowl (contains {butter, garlic})): read as the kitchen's"]
+        "peeled); add at bread.txt:88 makes the garlic beside bowl (contains {butter, garlic})): read as the kitchen's"])
 
 
 def test_a_pair_one_unit_makes_is_made():
@@ -46,7 +59,7 @@ def test_a_pair_one_unit_makes_is_made():
     both = FunctionalUnit((EMPTY, press), Motion("pour"), (BOWL, IN_BOWL), (Source("bread.txt", 99),))
     outcome = clean_unit_plan((PLACE, ADD, both, POUR), KITCHEN | {press}, GOAL)
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour", "pour"]
-    assert not [x for x in outcome.compiled.notes if x.startswith("assumed at hand")]
+    assert not _at_hand(outcome.compiled.notes)
 
 
 def test_a_pair_a_unit_may_finish_in_place_is_not_read():
@@ -56,7 +69,7 @@ def test_a_pair_a_unit_may_finish_in_place_is_not_read():
                            (IN_BOWL,), (Source("soup.txt", 70),))
     compiled = compile_goal(Foon((PLACE, ADD, mince, POUR)), Kitchen(frozenset(KITCHEN | {n("knife", "clean")})),
                             Goal(GoalSpec("garlic"), (GOAL,)), "relational")
-    assert not [x for x in compiled.notes if x.startswith("assumed at hand")]
+    assert not _at_hand(compiled.notes)
     assert BOWL not in compiled.placed and IN_BOWL not in compiled.placed
 
 
@@ -84,7 +97,7 @@ def test_a_task_that_takes_no_pair_reads_none():
     empty = FunctionalUnit((BOWL,), Motion("empty"), (n("bowl", "empty", "dirty"),), (Source("beans.txt", 61),))
     outcome = clean_unit_plan((PLACE, ADD, POUR, empty), KITCHEN, n("bowl", "empty", "dirty"))
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["pick-and-place", "empty"]
-    assert not [x for x in outcome.compiled.notes if x.startswith("assumed at hand")]
+    assert not _at_hand(outcome.compiled.notes)
 
 
 # One node of the pair is the kitchen's, the other only units make, each beside another node of the pair's other
@@ -109,12 +122,10 @@ def test_a_pair_whose_held_node_is_the_kitchens_is_the_kitchens():
     kitchen = {EMPTY, n("flour", inside("bag")), TABLE, FLOUR_IN, n("bowl", contains("butter", "flour")),
                n("butter", inside("bowl"))}
     outcome = clean_unit_plan((FLOUR_POUR, ROUX, SPRINKLE), kitchen | {n("pot", "hot")}, FLOURED)
-    assert [s.unit.motion.label for s in outcome.trace.steps] == ["sprinkle"]
-    assert outcome.validation.ok
-    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+    _plans_from_the_pair_at_hand(outcome, ["sprinkle"], [
         "assumed at hand: pie.txt:335: sprinkle takes bowl (contains {flour}) with flour (in [bowl]), which no unit "
         "makes together (the flour is the kitchen's; pour at pancakes.txt:15 makes the bowl beside flour (in [bowl], "
-        "powder)): read as the kitchen's"]
+        "powder)): read as the kitchen's"])
 
 
 MAYO_BOWL, ONION_IN = n("bowl", contains("mayonnaise", "onion")), n("onion", "chopped", inside("bowl"))
@@ -131,12 +142,10 @@ TUNA_POUR = FunctionalUnit((MAYO_BOWL, n("mayonnaise", inside("bowl")), ONION_IN
 def test_a_pair_whose_container_is_the_kitchens_is_the_kitchens():
     kitchen = {EMPTY, n("onion", "peeled"), KNIFE, MAYO_BOWL, n("mayonnaise", inside("bowl")), TUNA_BOWL}
     outcome = clean_unit_plan((CHOP, ONION_POUR, TUNA_POUR), kitchen, MIXED)
-    assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour"]
-    assert outcome.validation.ok
-    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+    _plans_from_the_pair_at_hand(outcome, ["pour"], [
         "assumed at hand: tuna.txt:32: pour takes bowl (contains {mayonnaise, onion}) with onion (chopped, in [bowl]), "
         "which no unit makes together (the bowl is the kitchen's; pour at beans.txt:24 makes the onion beside bowl "
-        "(contains {onion})): read as the kitchen's"]
+        "(contains {onion})): read as the kitchen's"])
 
 
 def test_a_pair_of_two_kitchen_nodes_reads_nothing():
@@ -269,12 +278,10 @@ SPREAD = FunctionalUnit((n("tortilla", "plain"), BUTTER_BOWL, STICK_IN, KNIFE), 
 def test_a_container_moved_on_from_the_pairs_own_node_makes_no_other_way_to_it():
     units = (MUFFIN_PLACE, BREAD_PLACE, PUT_INSIDE, REMOVE, SPREAD)
     outcome = clean_unit_plan(units, {EMPTY, SUGAR_BOWL, PACKET_STICK, OFF, n("tortilla", "plain"), KNIFE}, BUTTERED)
-    assert [s.unit.motion.label for s in outcome.trace.steps] == ["spread"]
-    assert outcome.validation.ok
-    assert [x for x in outcome.compiled.notes if x.startswith("assumed at hand")] == [
+    _plans_from_the_pair_at_hand(outcome, ["spread"], [
         "assumed at hand: wrap.txt:12: spread takes bowl (contains {butter}) with butter (in [bowl], stick), which no "
         "unit makes together (pick-and-place at bread.txt:15 makes the bowl beside butter (in [bowl]); pick-and-place "
-        "at muffin.txt:18 makes the butter beside bowl (contains {butter, sugar})): read as the kitchen's"]
+        "at muffin.txt:18 makes the butter beside bowl (contains {butter, sugar})): read as the kitchen's"])
 
 
 # The cycle is no other way only between two made nodes: with the held node the kitchen's, the pair stays unread.
