@@ -8,6 +8,8 @@ never as a tool.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 from ..model.foon import FunctionalUnit, ObjectNode, State
 from ..model.pairing import transfer, unit_roles
 from ..model.places import contents, head_of, named_holder
@@ -24,6 +26,10 @@ _AT = {"in": "in", "inside": "in", "into": "in", "on": "on", "onto": "on"}
 
 #: A unit's place names read as its objects' labels (`aliases`): `pan` -> `cooking pan`.
 Aliases = dict[str, str]
+
+#: Place words that put a thing on its holder; the others of PLACE_WORDS that say `in` (`_said_at`).
+_ON_WORDS = ("on", "onto")
+_IN_WORDS = ("in", "inside", "into")
 
 
 def aliases(unit: FunctionalUnit) -> Aliases:
@@ -53,6 +59,37 @@ def _place(node: ObjectNode, named: Aliases | None = None) -> tuple[str, str] | 
     return (found[0], named.get(found[1], found[1])) if found and named else found
 
 
+def _said_at(unit: FunctionalUnit, named: Aliases) -> dict[str, int]:
+    """Holder label -> how many place states of the unit's nodes say `on` it, less those saying `in` it."""
+    out: dict[str, int] = {}
+    for n in (*unit.inputs, *unit.outputs):
+        for s in n.states:
+            if (h := _holder(s)) and s.label in _ON_WORDS + _IN_WORDS:
+                h = named.get(h, h)
+                out[h] = out.get(h, 0) + (1 if s.label in _ON_WORDS else -1)
+    return out
+
+
+def surfaces(units: Iterable[FunctionalUnit]) -> frozenset[str]:
+    """The labels the units' nodes put things `on` more often than `in` (`on {pizza dough}`, `on [plate]`), each
+    unit's place names read through its `aliases`: where a step whose own nodes do not say it puts a thing
+    (`_onto`). O(nodes)."""
+    total: dict[str, int] = {}
+    for u in units:
+        for h, k in _said_at(u, aliases(u)).items():
+            total[h] = total.get(h, 0) + k
+    return frozenset(h for h, k in total.items() if k > 0)
+
+
+def _onto(unit: FunctionalUnit, label: str, named: Aliases, on: frozenset[str]) -> tuple[str, str]:
+    """(`on` or `in`, label): how a thing FOON names only in `label`'s list goes there. The unit's own nodes
+    decide when they say `on` it more often than `in`, or the reverse (0042's pour onto the plate its tomato is
+    `on`); else the recipe's `surfaces` `on` (0085's sour cream spread on the pizza dough, which later steps put
+    the onion `on`); else `in`."""
+    k = _said_at(unit, named).get(label, 0)
+    return ("on" if k > 0 or (k == 0 and label in on) else "in"), label
+
+
 def _holders(node: ObjectNode, named: Aliases) -> set[str]:
     """Every object the node's place states name (`_holder`, as `named` reads them)."""
     return {named.get(h, h) for s in node.states if (h := _holder(s))}
@@ -78,8 +115,8 @@ def _becomes(unit: FunctionalUnit, new: dict[str, ObjectNode]) -> dict[str, Obje
 
 
 def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
-            moved: set[str], named: Aliases) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
-    """(input, its place, (`in`, container)) for each input that a container's new node newly lists while the
+            moved: set[str], named: Aliases, on: frozenset[str]) -> list[tuple[ObjectNode, tuple[str, str] | None, tuple[str, str]]]:
+    """(input, its place, (`in` or `on`: `_onto`, container)) for each input that a container's new node newly lists while the
     unit gives it no node of its own (0001's `pour*`: the cream and the sugar only in the mixing bowl's list);
     not an input already in it, or beside it in one holder (stirred in the pot where both are), unless another
     container of its label lists it (the salt sprinkled from one bowl into the other). An input two
@@ -100,7 +137,7 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
     out = []
     for i, labels in into.items():
         inner = [c for c in labels if (_place(new[c], named) or ("", ""))[1] in labels]
-        out.append((i, _place(i, named), ("in", (inner or labels)[0])))
+        out.append((i, _place(i, named), _onto(unit, (inner or labels)[0], named, on)))
     return out
 
 
@@ -114,8 +151,9 @@ def _source(unit: FunctionalUnit, moved: ObjectNode, label: str, into: ObjectNod
 
 
 def _listed_only(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, ObjectNode],
-                 said: set[str], named: Aliases) -> list[tuple[ObjectNode, tuple[str, str], tuple[str, str]]]:
-    """(what, (`in`, from), (`in`, into)) for a thing FOON names only in containers' lists: a container's new node
+                 said: set[str], named: Aliases, on: frozenset[str]
+                 ) -> list[tuple[ObjectNode, tuple[str, str], tuple[str, str]]]:
+    """(what, (`in`, from), (`in` or `on`: `_onto`, into)) for a thing FOON names only in containers' lists: a container's new node
     newly lists it, no node of the unit has its label or one word for it (`rice` beside `white rice`), and another
     input lists it that does not hold the container (0085's `scoop`: the bottle (contains {sour cream}) and the
     scraper (clean) -> scraper (contains {sour cream}): `scoop sour cream from the bottle into the scraper
@@ -128,7 +166,7 @@ def _listed_only(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[
         for thing in sorted(contents(container) - contents(before[label]) if label in before else ()):
             source = next((j for j in unit.inputs if j.label not in around | {label} and thing in contents(j)), None)
             if source is not None and not any(t == thing or head_of(thing, t) for t in labels):
-                out.append((ObjectNode(thing), ("in", source.label), ("in", label)))
+                out.append((ObjectNode(thing), ("in", source.label), _onto(unit, label, named, on)))
     return out
 
 
@@ -237,7 +275,7 @@ def _ordered_places(places: list[ObjectNode], subjects: list[ObjectNode], named:
     return out + [p for p in places if p not in out]
 
 
-def recipe_text(unit: FunctionalUnit) -> str:
+def recipe_text(unit: FunctionalUnit, on: frozenset[str] = frozenset()) -> str:
     """A step in a cook's words: what moves, from where, into what, with which tool, and what it makes.
 
     `pour sugar (granulated) into the pitcher (contains {lime juice})`, where `step_text` lists the
@@ -247,7 +285,8 @@ def recipe_text(unit: FunctionalUnit) -> str:
     tool: `cut lemon (whole), with the knife (clean), ...`), then the tools and the places,
     each said once with its own word (`cut lime (whole), with the knife, on the cutting board`; `mix ..., in the
     bowl`). Labels no input has are what the step makes. A place name is read as the unit's object it names
-    (`aliases`). O(n^2) in the unit's n nodes.
+    (`aliases`). A thing named only in a container's list goes `into` or `onto` it as `_onto` reads the unit and
+    `on`, the labels the recipe puts things on (`surfaces` of its units). O(n^2) in the unit's n nodes.
     """
     named = aliases(unit)
     new = {o.label: o for o in unit.outputs if o not in unit.inputs}
@@ -255,8 +294,8 @@ def recipe_text(unit: FunctionalUnit) -> str:
     before = {**by_label, **_becomes(unit, new)}
     moves = [(i, _place(i, named), _place(new[i.label], named)) for i in unit.inputs
              if i.label in new and _place(new[i.label], named) not in (None, _place(i, named))]
-    moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named)
-    moves += _listed_only(unit, new, before, {i.label for i, _, _ in moves}, named)
+    moves += _filled(unit, new, before, {i.label for i, _, _ in moves}, named, on)
+    moves += _listed_only(unit, new, before, {i.label for i, _, _ in moves}, named, on)
     moving = {i.label for i, _, _ in moves}
     said = moving | {p[1] for _, a, b in moves for p in (a, b) if p}  # the stale holder too
     moves = [(i, _carrier(unit, i, src, dst, moving, named) or src, dst) for i, src, dst in moves]

@@ -21,7 +21,7 @@ from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
 from ..model.words import count
 from .jsonio import node_to_dict
-from .recipe_words import PLACE_WORDS, recipe_text
+from .recipe_words import PLACE_WORDS, recipe_text, surfaces
 from .writer import write_units
 
 FORMATS = ("recipe", "steps", "foon", "json", "dot", "svg")
@@ -120,8 +120,10 @@ def _numbered(tree: TaskTree, used: list[ObjectNode] | None, say) -> str:
 
 
 def _recipe(tree: TaskTree, used: list[ObjectNode] | None) -> str:
-    """The steps in a cook's words (`recipe_text`), numbered as `steps` numbers them."""
-    return _numbered(tree, used, recipe_text)
+    """The steps in a cook's words (`recipe_text`, with the `surfaces` of the tree's units), numbered as `steps`
+    numbers them."""
+    on = surfaces(tree.units)
+    return _numbered(tree, used, lambda u: recipe_text(u, on))
 
 
 def _steps(tree: TaskTree, used: list[ObjectNode] | None) -> str:

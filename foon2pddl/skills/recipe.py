@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections import Counter
 
-from ..io.recipe_words import recipe_text
+from ..io.recipe_words import recipe_text, surfaces
 from ..model.physical import PhysicalTrace
 from ..model.words import count
 from .decompose import SkillCall, SkillPlan, StepStatus
@@ -68,10 +68,11 @@ def skill_plan_recipe(plan: SkillPlan, trace: PhysicalTrace, hands: int = 1) -> 
     names = object_names(trace)
     params = {a.name: tuple(v for v, _ in a.params) for a in plan.domain.actions}
     verdict = "valid" if plan.replay.ok else "INVALID: " + "; ".join(plan.replay.problems)
+    on = surfaces(s.unit for s in trace.steps)  # the recipe's words, as `retrieve` says them
     lines = [f"skill plan ({plan.domain.name}, {count(hands, 'hand')}): "
              f"{count(len(plan.steps), 'macro step')}, {plan.decomposed} decomposed, {count(len(plan.calls), 'skill')}; skill replay {verdict}"]
     for step in plan.steps:
-        lines.append(f"{step.index + 1}. {recipe_text(trace.steps[step.index].unit)}")
+        lines.append(f"{step.index + 1}. {recipe_text(trace.steps[step.index].unit, on)}")
         if step.status is not StepStatus.DECOMPOSED:
             lines.append(f"   robot: nothing planned ({step.status} step, kept as is): {step.reason}")
             continue

@@ -1,0 +1,50 @@
+"""Steps in a cook's words (`io.recipe_words`): where a thing goes, `into` or `onto`, as FOON says it."""
+
+from __future__ import annotations
+
+from conftest import SUBGRAPHS
+
+from foon2pddl.io.parser import parse_file
+from foon2pddl.io.recipe_words import recipe_text
+from foon2pddl.io.tree_formats import render_tree
+from foon2pddl.model.tasktree import TaskTree
+
+
+def _steps(name: str) -> list[str]:
+    """The recipe lines of one shared subgraph's units, read as one task tree (their order in the file)."""
+    units = parse_file(SUBGRAPHS / name).foon.units
+    return render_tree(TaskTree(units, units[-1].outputs[0]), "recipe").splitlines()[1:]
+
+
+def _unit(name: str, line: int):
+    return next(u for u in parse_file(SUBGRAPHS / name).foon.units if u.sources[0].line == line)
+
+
+def test_a_thing_named_only_in_lists_goes_onto_what_the_recipe_puts_things_on():
+    """Stop 58's F18: 0085's spread read `spread sour cream from the scraper into the pizza dough (flattened, ...)`
+    (0085-mini_bacon_egg_breakfast_pizza.txt:435): the sour cream is named only in lists, and the destination was
+    always `in`. The unit says nothing of how things sit at the dough, but the recipe does: the onion, the bacon
+    and the egg go `on {pizza dough}` (:494, :498, :522). The sea salt and pepper sprinkled at :452 likewise."""
+    steps = _steps("0085-mini_bacon_egg_breakfast_pizza.txt")
+    assert any(". spread sour cream from the scraper onto the pizza dough (flattened, on [parchment paper])" in s
+               for s in steps), steps
+    assert any(". sprinkle sea salt (granulated) and pepper from the bottle onto the pizza dough (contains {sour cream}"
+               in s for s in steps), steps
+    assert not any("into the pizza dough" in s for s in steps), steps
+
+
+def test_an_input_a_container_newly_lists_goes_onto_it_when_the_step_says_so():
+    """0042's pour (0042-perfect_omelette.txt:79) read `pour onion ... and sweet pepper ... into the plate (contains
+    {tomato})`, where the unit itself puts the tomato, the onion and the pepper `on [plate]`: the step's own nodes
+    decide, with no recipe around it."""
+    pour = _unit("0042-perfect_omelette.txt", 79)
+    assert recipe_text(pour).endswith("onto the plate (contains {tomato})"), recipe_text(pour)
+
+
+def test_a_bowl_things_go_in_stays_into():
+    """The caesar salad's bowl (ACT-0080-caesar_salad.txt:291): its nodes say `in [bowl]` 22 times and `on` twice,
+    the unit once `in`: the croutons go into it, alone or in the recipe."""
+    pour = _unit("ACT-0080-caesar_salad.txt", 291)
+    assert recipe_text(pour) == (
+        "pour crouton from the bowl (contains {crouton}) into the bowl (coated {garlic}, contains {lettuce})")
+    assert any(s.endswith(". " + recipe_text(pour)) for s in _steps("ACT-0080-caesar_salad.txt"))
