@@ -846,6 +846,81 @@ def test_the_objects_account_says_a_soiled_tool_with_with_too():
     assert any(line.endswith("peel cucumber_1 with peeler_1") for line in account), account
     assert not any(", peeler_1" in line or ", knife_1 with" in line for line in account), account
 
+
+def _step(unit_in, motion, unit_out, bindings, before, after):
+    """step_words of one step: `bindings` (id, node before, node after), `before`/`after` (id -> (node, holder,
+    relation, consumed))."""
+    from foon2pddl.model.foon import FunctionalUnit, Motion
+    from foon2pddl.model.physical import Binding, ObjectState, TraceStep
+    from foon2pddl.pddl.relational_replay import step_words
+
+    step = TraceStep(0, FunctionalUnit(unit_in, Motion(motion), unit_out),
+                     tuple(Binding(x, b, a) for x, b, a in bindings), ())
+    snap = lambda states: {x: ObjectState(x, *v) for x, v in states.items()}  # noqa: E731
+    return step_words(step, snap(before), snap(after))
+
+
+def test_the_objects_account_sets_what_a_move_changes_off_from_where_it_goes():
+    """Issue 24's tried-again pass: the greek salad's last step read `pick-and-place feta_cheese_2 from spoon_1
+    into bowl_4 greek_salad_1` (ACT-0034-greek_salad.txt, 24 such steps on the 100 shared subgraphs: `sprinkle milk_2
+    from spoon_1 into bowl_1 tomato_soup_2`): the salad the feta goes to is no part of the bowl's name."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.physical import Relation
+
+    feta, salad, bowl = n("feta cheese", inside("spoon")), n("salad", contains("tomato"), inside("bowl")), n(
+        "bowl", contains("salad"))
+    feta2, salad2 = n("feta cheese", inside("bowl")), n("salad", contains("feta cheese", "tomato"), inside("bowl"))
+    words = _step((bowl, salad, feta), "pick-and-place", (salad2, feta2),
+                  [("feta_1", feta, feta2), ("salad_1", salad, salad2)],
+                  {"feta_1": (feta, "spoon_1", Relation.IN), "salad_1": (salad, "bowl_1", Relation.IN),
+                   "spoon_1": (n("spoon"),), "bowl_1": (bowl,)},
+                  {"feta_1": (feta2, "bowl_1", Relation.IN), "salad_1": (salad2, "bowl_1", Relation.IN),
+                   "spoon_1": (n("spoon"),), "bowl_1": (bowl,)})
+    assert words == "pick-and-place feta_1 from spoon_1 into bowl_1, changing salad_1"
+
+
+def test_the_objects_account_says_what_a_step_uses_up_without_making_anything():
+    """The same pass: `pour onion_1 from cutting_board_2 into cooking_pan_1 butter_2 -> ` (an arrow to nothing, 14
+    steps on the 100 shared subgraphs): the butter the onion is fried in is used up, and the step makes nothing."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.foon import make_state
+    from foon2pddl.model.physical import Relation
+
+    onion, butter = n("onion", "chopped", make_state("on", "cutting board")), n("butter", inside("pan"))
+    pan = n("pan", contains("butter"))
+    onion2, pan2 = n("onion", "chopped", inside("pan")), n("pan", contains("onion"))
+    words = _step((pan, butter, onion), "pour", (pan2, onion2),
+                  [("onion_1", onion, onion2), ("butter_1", butter, None), ("pan_1", pan, pan2)],
+                  {"onion_1": (onion, "board_1", Relation.ON), "butter_1": (butter, "pan_1", Relation.IN),
+                   "pan_1": (pan,), "board_1": (n("cutting board"),)},
+                  {"onion_1": (onion2, "pan_1", Relation.IN), "butter_1": (butter, "pan_1", Relation.IN, True),
+                   "pan_1": (pan2,), "board_1": (n("cutting board"),)})
+    assert words == "pour onion_1 from board_1 into pan_1, using up butter_1"
+
+
+def test_the_objects_account_says_the_board_an_object_is_cut_on_as_a_place():
+    """The same pass: `cut avocado_1 with cutting_board_1, knife_1` (the guacamole, every cut and chop on a board):
+    the board the avocado lies on is where it is cut, not a tool, as the recipe's words say (`cut avocado (whole),
+    with the knife, on the cutting board`)."""
+    r = run("plan", "--goal", "guacamole")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert "2. cut avocado_1 on cutting_board_1 with knife_1" in account, account
+    assert not any("with cutting_board" in line for line in account), account
+
+
+def test_no_objects_account_line_runs_two_parts_together():
+    """The greek salad of the shared subgraphs, whose account had both glitches above."""
+    import re
+
+    r = run("plan", SUBGRAPHS / "ACT-0034-greek_salad.txt", "--goal", "greek salad")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert account[-1] == "41. pick-and-place feta_cheese_2 from spoon_1 into bowl_4, changing greek_salad_1"
+    assert not [line for line in account if re.search(r"(into|onto) \w+_\d+ \w+_\d+|-> *$|->  ", line)]
+
 # -- -o: one convention for every output ---------------------------------------------------------------
 
 #: Every command's output options, each with its kind: a file, a PNG file (`--plot`), or a directory of files.

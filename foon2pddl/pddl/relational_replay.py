@@ -191,9 +191,11 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     """A step in recipe words with the objects named, O(bindings).
 
     `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
-    the motion, each object that changes holder (from, into), each other object whose state changes, then
-    what the step consumes and makes (in the holder of what it makes), then the objects it only uses (not
-    what already sits in a holder something moves into: the dressing the lettuce is poured onto is no tool).
+    the motion, each object that changes holder (from, into), each other object whose state changes (after a
+    move: `into bowl_4, changing greek_salad_1`) and where it stays (`cut avocado_1 on cutting_board_1`), then
+    what the step consumes and makes (in the holder of what it makes; used up with nothing made: `, using up
+    butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
+    holder something moves into: the dressing the lettuce is poured onto is no tool).
     An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
     holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
     is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
@@ -227,14 +229,25 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     worked = [b for b in work if b.before is None or not soiled(b.before, b.after)]
     if not (worked or moves or made or used):
         worked = work
-    parts = [step.unit.motion.label, ", ".join(moves), ", ".join(b.object for b in worked)]
-    if used or made:
-        parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
-                     + ", ".join(made))
+    said = ", ".join(moves)
+    if worked:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
+        names = ", ".join(b.object for b in worked)
+        said = f"{said}, changing {names}" if said else names
     into = {after[b.object].holder for b in step.bindings if b.before is not None and b.object not in made
             and before[b.object].holder != after[b.object].holder}
     others = [b.object for b in rest if b not in worked and not (  # not the contents of where something goes
         before[b.object].holder in into and any(s.label in _RELATIONS and s.related for s in b.before.states))]
+    # where a worked object stays is a place, not a tool: `cut avocado_1 on cutting_board_1 with knife_1`
+    at = {before[b.object].holder: before[b.object].relation for b in worked
+          if before[b.object].holder in others and after[b.object].holder == before[b.object].holder}
+    said += "".join(f" {'on' if rel is Relation.ON else 'in'} {h}" for h, rel in at.items())
+    parts = [step.unit.motion.label, said]
+    if made:
+        parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
+                     + ", ".join(made))
+    elif used:  # used up, nothing made: `pour onion_1 from board_1 into pan_1, using up butter_1`
+        parts[1] += (", " if said else "") + "using up " + ", ".join(used)
+    others = [x for x in others if x not in at]
     if others:
         parts.append("with " + ", ".join(others))
     if not taken:
