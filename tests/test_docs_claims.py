@@ -653,3 +653,16 @@ def test_pddl_md_quotes_what_compile_prints_for_a_missing_file(tmp_path):
         r = CliRunner().invoke(main, ["compile", "--goal", "guacamole", "-o", str(tmp_path), *args])
         assert r.exit_code == 2 and r.stderr.startswith("nope.json: error: "), r.stderr
         assert f"`{r.stderr.strip()}`" in text, r.stderr
+
+
+def test_extending_md_names_what_the_guacamole_pours():
+    """extending.md's network-kind example says the guacamole cannot be made without pour units because `its salt
+    is poured`; the tree sprinkles its salt and pours its lime juice (issue 24's tried-again pass). The thing the
+    comment names is what the guacamole's tree pours."""
+    text = (ROOT / "docs" / "extending.md").read_text()
+    poured = re.search(r"network_kind=\"nopour\"\).reason\s+# its (.+?) is poured", text)
+    assert poured, "the nopour example's comment"
+    r = CliRunner().invoke(main, ["retrieve", "--goal", "guacamole"])
+    assert r.exit_code == 0, r.stderr
+    pours = [line for line in r.stdout.splitlines() if re.match(r"\d+\. pour ", line)]
+    assert pours and any(line.split(". ", 1)[1].startswith(f"pour {poured.group(1)}") for line in pours), pours
