@@ -1056,3 +1056,16 @@ def test_wordnet_opens_with_full_collections_held_back(monkeypatch):
     assert wordnet.reader().synsets("cilantro")  # built anew: the cached reader is this one from now on
     assert seen == [True]
     assert gc.isenabled() and gc.get_threshold() == before
+
+
+def test_a_plan_without_a_plan_says_its_outcome_before_searching_why(every_step_speaks):
+    """Stop 58's note: `plan --goal guacamole --time-limit 0.01` printed `finding why there is no plan for ...`
+    before its `timeout (...)` line, so the search for a reason read as part of the planning. The outcome comes
+    first, then the step that finds why, then the reason it found."""
+    r = run("plan", "--goal", "guacamole", "--time-limit", "0.01")
+    assert r.exit_code != 0, r.stderr
+    lines = r.stderr.splitlines()
+    outcome = next(k for k, line in enumerate(lines) if line.startswith("timeout ("))
+    finding = next(k for k, line in enumerate(lines) if line.startswith("finding why there is no plan"))
+    reason = next(k for k, line in enumerate(lines) if line.startswith("reason: "))
+    assert outcome < finding < reason, r.stderr

@@ -203,14 +203,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         steps_view = outcome.compiled.view
         if fmt in STEP_FORMATS and steps_view is not None and outcome.trace is not None and outcome.trace.steps:
             data += steps_view.text(outcome.task, outcome.trace)
-    # the kitchen additions' search, a step only without a plan (a solved plan's step would say a false thing)
-    searching = (nullcontext() if status == "solved"
-                 else slow_step(f"finding why there is no plan for {target.describe()!r}"))
-    with searching:
-        reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
-    if fmt == "json":
-        data = outcome_json(outcome, timings, data, reason)
-    else:
+    if fmt != "json":  # the outcome first, then the search for why there is no plan (its step and reason)
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
             summary += f": {count(len(outcome.steps), 'plan step')}, {count(len(outcome.tree), 'unit')}, valid"
@@ -224,6 +217,14 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
             click.echo("note: " + note, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
             expansion_notes(outcome.tree, view.matrix)
+    # the kitchen additions' search, a step only without a plan (a solved plan's step would say a false thing)
+    searching = (nullcontext() if status == "solved"
+                 else slow_step(f"finding why there is no plan for {target.describe()!r}"))
+    with searching:
+        reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
+    if fmt == "json":
+        data = outcome_json(outcome, timings, data, reason)
+    else:
         if reason is not None:
             click.echo("reason: " + reason, err=True)
         if explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes:
