@@ -27,10 +27,6 @@ _AT = {"in": "in", "inside": "in", "into": "in", "on": "on", "onto": "on"}
 #: A unit's place names read as its objects' labels (`aliases`): `pan` -> `cooking pan`.
 Aliases = dict[str, str]
 
-#: Place words that put a thing on its holder; the others of PLACE_WORDS that say `in` (`_said_at`).
-_ON_WORDS = ("on", "onto")
-_IN_WORDS = ("in", "inside", "into")
-
 
 def aliases(unit: FunctionalUnit) -> Aliases:
     """The place names of `unit` that no object of it has as label, each read as the one input label it names by
@@ -60,13 +56,14 @@ def _place(node: ObjectNode, named: Aliases | None = None) -> tuple[str, str] | 
 
 
 def _said_at(unit: FunctionalUnit, named: Aliases) -> dict[str, int]:
-    """Holder label -> how many place states of the unit's nodes say `on` it, less those saying `in` it."""
+    """Holder label -> how many place states of the unit's nodes say `on` it, less those saying `in` it (as `_AT`
+    reads each place word)."""
     out: dict[str, int] = {}
     for n in (*unit.inputs, *unit.outputs):
         for s in n.states:
-            if (h := _holder(s)) and s.label in _ON_WORDS + _IN_WORDS:
+            if (h := _holder(s)) and (word := _AT.get(s.label)):
                 h = named.get(h, h)
-                out[h] = out.get(h, 0) + (1 if s.label in _ON_WORDS else -1)
+                out[h] = out.get(h, 0) + (1 if word == "on" else -1)
     return out
 
 
