@@ -27,7 +27,8 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from foon2pddl.experiment import runner
+from foon2pddl.experiment import grid, runner
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol
 
 from .harness import Context
@@ -37,8 +38,8 @@ NATIVE = ("native-greedy", "native-complete", "native-optimal")
 NETWORKS = ("reg", "exp", "gen")
 
 
-def _config(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], out: Path) -> runner.Config:
-    return runner.Config(paths, protocol, NETWORKS, solvers, out, jobs=2)
+def _config(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], out: Path) -> Config:
+    return Config(paths, protocol, NETWORKS, solvers, out, jobs=2)
 
 
 def _run(paths: tuple[str, ...], protocol: Protocol, solvers: tuple[str, ...], out: Path) -> runner.RunSummary:
@@ -95,7 +96,7 @@ def _cli_run(paths: tuple[str, ...], protocol: Protocol, out: Path) -> float:
     return time.perf_counter() - t0
 
 
-def _timed_runs(config: runner.Config, repeat: int) -> float:
+def _timed_runs(config: Config, repeat: int) -> float:
     """Median wall time of `repeat` fresh runs of `config` (each into its own directory)."""
     times = []
     for i in range(repeat):
@@ -118,16 +119,16 @@ def run_scaling(ctx: Context) -> None:
     repeat = max(1, min(ctx.repeat, 3))
     with tempfile.TemporaryDirectory(prefix="foon2pddl-bench-dask-") as tmp:
         grids = {
-            "mixed": runner.Config(paths, Protocol(trials=2, goals=10 if ctx.quick else 40), ("reg", "gen"),
-                                   (*NATIVE, "fd-tree"), Path(tmp) / "mixed"),
-            "cheap": runner.Config(paths, Protocol(trials=4, goals=100), ("reg",), ("native-complete",),
-                                   Path(tmp) / "cheap"),
+            "mixed": Config(paths, Protocol(trials=2, goals=10 if ctx.quick else 40), ("reg", "gen"),
+                            (*NATIVE, "fd-tree"), Path(tmp) / "mixed"),
+            "cheap": Config(paths, Protocol(trials=4, goals=100), ("reg",), ("native-complete",),
+                            Path(tmp) / "cheap"),
         }
         here, walls = {}, {}
         for name, config in grids.items():
             runner.views(config)
             here[name] = _timed_runs(config, repeat)
-            ctx.report(AREA, f"{name} grid in one process", here[name], "s", f"{len(runner.cell_keys(config))} cells")
+            ctx.report(AREA, f"{name} grid in one process", here[name], "s", f"{len(grid.cell_keys(config))} cells")
         for workers in (1, 2):
             with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                           dashboard_address=":0") as cluster:
@@ -140,7 +141,7 @@ def run_scaling(ctx: Context) -> None:
                                walls[(name, workers)], "s")
         ctx.report(AREA, "Dask speed-up, 2 workers against 1 (mixed grid)", walls[("mixed", 1)] / walls[("mixed", 2)],
                    "x", "2 cores")
-        cells = len(runner.cell_keys(grids["cheap"]))
+        cells = len(grid.cell_keys(grids["cheap"]))
         ctx.report(AREA, "Dask overhead per cell (cheap grid, 1 worker against one process)",
                    (walls[("cheap", 1)] - here["cheap"]) / cells * 1000, "ms",
-                   f"{cells} cells in batches of {runner.CHUNK}")
+                   f"{cells} cells in batches of {grid.CHUNK}")

@@ -351,6 +351,7 @@ def run_experiment(out_dir: str | Path, *paths: str | Path, networks: Iterable[s
     `protocol` takes `kitchen_fraction`, `seed`, `level`, `threshold`, `similarity`. Returns the run's
     summary (`experiment.runner.RunSummary`: records, cells ran and reused, seconds)."""
     from .experiment import runner
+    from .experiment.config import Config
     from .experiment.protocol import Protocol
     from .experiment.setting import DEFAULT_TIME_LIMIT
     from .experiment.solvers import DEFAULT_SOLVERS, get_solver
@@ -359,8 +360,8 @@ def run_experiment(out_dir: str | Path, *paths: str | Path, networks: Iterable[s
     counts = {k: v for k, v in (("trials", trials), ("goals", goals)) if v is not None}
     nets = tuple(get_network(n).name for n in (networks if networks is not None else NETWORKS))
     chosen = tuple(get_solver(s).name for s in (solvers if solvers is not None else DEFAULT_SOLVERS))
-    config = runner.Config(tuple(str(p) for p in paths), Protocol(**counts, **protocol), nets, chosen, Path(out_dir),
-                           jobs, DEFAULT_TIME_LIMIT if time_limit is None else time_limit)
+    config = Config(tuple(str(p) for p in paths), Protocol(**counts, **protocol), nets, chosen, Path(out_dir),
+                    jobs, DEFAULT_TIME_LIMIT if time_limit is None else time_limit)
     return runner.run(config, progress=progress)
 
 

@@ -12,7 +12,8 @@ from hypothesis import strategies as st
 
 from foon2pddl.cli import main
 from foon2pddl.errors import UsageError
-from foon2pddl.experiment import runner
+from foon2pddl.experiment import grid, runner
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol, derive_seed, goal_pool, make_trials, sample_kitchen
 from foon2pddl.experiment.records import Record, open_for_append, read_records
 from foon2pddl.experiment.report import ReportData, agreement, agreement_md, to_csv, trial_times
@@ -201,7 +202,7 @@ def test_complete_and_fd_tree_agree_and_every_tree_validates(full_run):
 
 
 def test_resume_after_truncation_redoes_nothing_finished(reg, tmp_path):
-    config = runner.Config((), Protocol(trials=2, goals=5), ("reg", "gen"), NATIVE, tmp_path)
+    config = Config((), Protocol(trials=2, goals=5), ("reg", "gen"), NATIVE, tmp_path)
     first = runner.run(config, progress=False)
     assert first.ran == 2 * 5 * 2 * 3 and first.skipped == 0
     path = config.results_path
@@ -215,7 +216,7 @@ def test_resume_after_truncation_redoes_nothing_finished(reg, tmp_path):
     assert runner.run(config, progress=False).ran == 0
 
 
-def _interrupt_after(config: runner.Config, cells: int, monkeypatch) -> list:
+def _interrupt_after(config: Config, cells: int, monkeypatch) -> list:
     """Run `config`, interrupted (as by Ctrl-C) after `cells` records were written; the keys written."""
     real_append, calls = runner.append, []
 
@@ -233,7 +234,7 @@ def _interrupt_after(config: runner.Config, cells: int, monkeypatch) -> list:
 
 
 def test_interrupted_run_resumes(tmp_path, monkeypatch):
-    config = runner.Config((), Protocol(trials=2, goals=4), ("reg",), NATIVE, tmp_path)
+    config = Config((), Protocol(trials=2, goals=4), ("reg",), NATIVE, tmp_path)
     calls = _interrupt_after(config, 9, monkeypatch)
     assert set(read_records(config.results_path)) == set(calls)
     again = runner.run(config, progress=False)
@@ -241,8 +242,8 @@ def test_interrupted_run_resumes(tmp_path, monkeypatch):
 
 
 def test_goal_limit_asks_a_solver_the_first_goals_only(tmp_path):
-    config = runner.Config((), Protocol(trials=2, goals=5), ("reg",), ("native-complete", "native-optimal"),
-                           tmp_path, goal_limits=(("native-optimal", 2),))
+    config = Config((), Protocol(trials=2, goals=5), ("reg",), ("native-complete", "native-optimal"),
+                    tmp_path, goal_limits=(("native-optimal", 2),))
     summary = runner.run(config, progress=False)
     asked = sorted((r.trial, r.goal) for r in summary.records if r.solver == "native-optimal")
     assert asked == [(1, 1), (1, 2), (2, 1), (2, 2)]
@@ -302,7 +303,7 @@ def test_trial_time_counts_the_shared_setup_once():
 
 
 def test_interrupted_run_logs_the_cells_it_completed_not_the_planned_ones(tmp_path, monkeypatch):
-    config = runner.Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path)
+    config = Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path)
     _interrupt_after(config, 4, monkeypatch)
     again = runner.run(config, progress=False)
     assert again.ran == 2
@@ -395,18 +396,18 @@ def test_a_probe_of_every_solver_and_network_runs_first_and_the_rest_stays_costl
     """Every group's time per cell is known early (`Progress.left`) from a probe of its first goals; the rest keeps
     the costliest-first order (a 1-trial run whose probes were whole first batches left fd-relational's second
     halves last: one worker busy 316 s, the other 180 s, of 333 s)."""
-    config = runner.Config((), Protocol(trials=2, goals=runner.CHUNK + 4), ("reg", "gen"),
+    config = Config((), Protocol(trials=2, goals=grid.CHUNK + 4), ("reg", "gen"),
                            ("native-complete", "fd-relational"), tmp_path)
-    batches = runner.plan_batches(config, set())
+    batches = grid.plan_batches(config, set())
     head = [(b.solver, b.network, b.trial.index, b.goals) for b in batches[:4]]
-    probe = tuple(range(1, runner.PROBE + 1))
+    probe = tuple(range(1, grid.PROBE + 1))
     assert head == [("fd-relational", "gen", 1, probe), ("fd-relational", "reg", 1, probe), ("native-complete", "gen", 1, probe),
                     ("native-complete", "reg", 1, probe)]
     rest = [(b.solver, b.network, b.trial.index, b.goals[0]) for b in batches[4:]]
     assert rest == sorted(rest, key=lambda o: (o[0] != "fd-relational", o[1] != "gen", o[2], o[3]))
-    assert rest[0] == ("fd-relational", "gen", 1, runner.PROBE + 1)  # the probed batch goes on where its probe ended
+    assert rest[0] == ("fd-relational", "gen", 1, grid.PROBE + 1)  # the probed batch goes on where its probe ended
     assert sorted(g for b in batches for g in b.goals if (b.solver, b.network, b.trial.index) == ("fd-relational", "reg", 1)) \
-        == list(range(1, runner.CHUNK + 5))
+        == list(range(1, grid.CHUNK + 5))
 
 
 # -- sweeps --------------------------------------------------------------------------------------
@@ -451,8 +452,8 @@ def test_a_parameter_is_one_registry_entry_with_a_kitchen_hook(monkeypatch, tmp_
 
     monkeypatch.setitem(PARAMS, "kitchen-size", Param("kitchen-size", int, TRIAL, "kitchen nodes kept",
                                                       kitchen=keep_first))
-    config = runner.Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path,
-                           sweeps=(("kitchen-size", (0, 10_000)),))
+    config = Config((), Protocol(trials=1, goals=6), ("reg",), ("native-complete",), tmp_path,
+                    sweeps=(("kitchen-size", (0, 10_000)),))
     summary = runner.run(config, progress=False)
     by = {v: [r for r in summary.records if r.params == {"kitchen-size": v}] for v in (0, 10_000)}
     assert len(by[0]) == len(by[10_000]) == 6
@@ -466,25 +467,25 @@ def test_bad_sweeps_exit_2():
 
 
 def test_batches_are_chunks_except_for_solvers_with_a_costly_preparation(tmp_path):
-    goals = runner.CHUNK + 5
-    config = runner.Config((), Protocol(trials=2, goals=goals), ("reg",), ("native-complete", "fd-tree"), tmp_path)
-    batches = runner.plan_batches(config, set())
+    goals = grid.CHUNK + 5
+    config = Config((), Protocol(trials=2, goals=goals), ("reg",), ("native-complete", "fd-tree"), tmp_path)
+    batches = grid.plan_batches(config, set())
     sizes = sorted((b.solver, b.trial.index, len(b.goals)) for b in batches)
-    probe = runner.PROBE  # the first batch of each (solver, network) gives its first goals as a probe, but a
+    probe = grid.PROBE  # the first batch of each (solver, network) gives its first goals as a probe, but a
     # solver prepared once per batch (fd-tree) probes with its whole first batch: split, trial 1's preparation ran
     # twice (review rv43: fd-lifted-gen's GEN setup 6.4 s and 10.9 s)
     assert sizes == sorted([("fd-tree", 1, goals), ("fd-tree", 2, goals),
-                            ("native-complete", 1, probe), ("native-complete", 1, runner.CHUNK - probe),
+                            ("native-complete", 1, probe), ("native-complete", 1, grid.CHUNK - probe),
                             ("native-complete", 1, 5), ("native-complete", 2, 5),
-                            ("native-complete", 2, runner.CHUNK)])
+                            ("native-complete", 2, grid.CHUNK)])
     assert batches[0].solver == "fd-tree"  # costliest first
     done = {(1, g, "reg", "fd-tree", ()) for g in range(1, 11)}
-    assert [len(b.goals) for b in runner.plan_batches(config, done) if b.solver == "fd-tree"] == [
+    assert [len(b.goals) for b in grid.plan_batches(config, done) if b.solver == "fd-tree"] == [
         goals - 10, goals]
 
 
 def test_fd_instances_solves_only_what_native_complete_solves_and_validates(tmp_path):
-    config = runner.Config((), Protocol(trials=1, goals=4), ("reg",), ("native-complete", "fd-instances"), tmp_path)
+    config = Config((), Protocol(trials=1, goals=4), ("reg",), ("native-complete", "fd-instances"), tmp_path)
     summary = runner.run(config, progress=False)
     by = {(r.solver, r.goal): r for r in summary.records}
     instances = [r for r in summary.records if r.solver == "fd-instances"]

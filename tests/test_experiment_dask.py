@@ -15,7 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from foon2pddl.experiment import runner
+from foon2pddl.experiment import grid, runner
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol
 from foon2pddl.experiment.records import CellStatus, Record
 from foon2pddl.experiment.solvers import SOLVERS
@@ -32,7 +33,7 @@ def _comparable(records) -> dict:
 
 
 def test_local_cluster_of_two_workers_equals_one_process(tmp_path):
-    config = runner.Config((), Protocol(trials=2, goals=5), ("reg", "gen"), SOLVED, tmp_path / "one")
+    config = Config((), Protocol(trials=2, goals=5), ("reg", "gen"), SOLVED, tmp_path / "one")
     one = runner.run(config, progress=False)
     two = runner.run(replace(config, out_dir=tmp_path / "two", jobs=2), progress=False)
     assert one.ran == two.ran == 2 * 5 * 2 * len(SOLVED)
@@ -109,15 +110,15 @@ def test_scheduler_path_with_a_killed_worker_resumes_every_cell_exactly_once(tmp
         sys.path.remove(str(ROOT / "tests"))
     monkeypatch.setitem(SOLVERS, "crash-once", dask_crash_preload.CRASH_ONCE)
     protocol = Protocol(trials=2, goals=6)
-    reference = runner.run(runner.Config((), protocol, ("reg", "gen"), ("native-complete",), tmp_path / "ref"),
+    reference = runner.run(Config((), protocol, ("reg", "gen"), ("native-complete",), tmp_path / "ref"),
                            progress=False)
     crash_goal = next(r.goal_label for r in reference.records if r.trial == 1 and r.goal == 3 and r.network == "reg")
     monkeypatch.setenv("FOON2PDDL_CRASH_MARKER", env["FOON2PDDL_CRASH_MARKER"])
     env["FOON2PDDL_CRASH_GOAL"] = crash_goal
     _start_workers(address, env, start)
 
-    config = runner.Config((), protocol, ("reg", "gen"), ("crash-once", "native-complete"), tmp_path / "run",
-                           scheduler=address)
+    config = Config((), protocol, ("reg", "gen"), ("crash-once", "native-complete"), tmp_path / "run",
+                    scheduler=address)
     first = runner.run(config, progress=False)
     assert Path(env["FOON2PDDL_CRASH_MARKER"]).exists()  # a worker really died mid-run
     lost = [r for r in first.records if r.status == CellStatus.LOST]
@@ -129,7 +130,7 @@ def test_scheduler_path_with_a_killed_worker_resumes_every_cell_exactly_once(tmp
     assert again.ran == len(lost) and again.lost == 0
     lines = [Record.from_json(x) for x in config.results_path.read_text().splitlines()]
     answered = Counter(r.key for r in lines if r.status != CellStatus.LOST)
-    assert set(answered) == runner.cell_keys(config) and set(answered.values()) == {1}
+    assert set(answered) == grid.cell_keys(config) and set(answered.values()) == {1}
     mine = {k[:3] + ("native-complete",) + k[4:]: r for k, r in _comparable(again.records).items()
             if k[3] == "crash-once"}
     ref = _comparable(reference.records)

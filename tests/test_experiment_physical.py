@@ -11,6 +11,7 @@ from dataclasses import replace
 import pytest
 
 from foon2pddl.experiment import physical, runner
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol
 from foon2pddl.experiment.records import CellStatus, Record
 from foon2pddl.experiment.render import table2_physical, verdicts_md
@@ -23,9 +24,9 @@ def runs(tmp_path_factory):
     """One trial of 40 goals on REG and GEN, with one and with two objects per kitchen item."""
     out = {}
     for per_item in (1, 2):
-        config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=40, objects_per_item=per_item),
-                               networks=("reg", "gen"), solvers=("native-complete", "fd-lifted-gen"),
-                               out_dir=tmp_path_factory.mktemp(f"per{per_item}"))
+        config = Config(paths=(), protocol=Protocol(trials=1, goals=40, objects_per_item=per_item),
+                        networks=("reg", "gen"), solvers=("native-complete", "fd-lifted-gen"),
+                        out_dir=tmp_path_factory.mktemp(f"per{per_item}"))
         out[per_item] = (config, runner.run(config, progress=False))
     return out
 
@@ -198,8 +199,8 @@ def test_a_solver_replays_holders_exactly_when_its_encoding_has_them(monkeypatch
 
 
 def test_fd_relational_plans_are_replayed_and_reported_beside_the_native_trees(tmp_path):
-    config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=12), networks=("reg",),
-                           solvers=("native-complete", "fd-relational"), out_dir=tmp_path)
+    config = Config(paths=(), protocol=Protocol(trials=1, goals=12), networks=("reg",),
+                    solvers=("native-complete", "fd-relational"), out_dir=tmp_path)
     summary = runner.run(config, progress=False)
     relational = [r for r in summary.records if r.solver == "fd-relational"]
     assert relational and not [r for r in relational if r.status == CellStatus.ERROR]
@@ -255,8 +256,8 @@ def test_a_physical_plan_fits_the_kitchen_exactly_when_scheduling_its_tree_does(
 
 
 def test_fd_instances_plans_that_need_more_objects_say_how_many_and_where(tmp_path):
-    config = runner.Config(paths=(), protocol=Protocol(trials=1, goals=40), networks=("reg",),
-                           solvers=("native-complete", "fd-instances"), out_dir=tmp_path)
+    config = Config(paths=(), protocol=Protocol(trials=1, goals=40), networks=("reg",),
+                    solvers=("native-complete", "fd-instances"), out_dir=tmp_path)
     summary = runner.run(config, progress=False)
     plans = [r for r in summary.records if r.solver == "fd-instances" and r.solved]
     assert plans and all(r.repeated is not None and r.plan_length >= r.units for r in plans)

@@ -11,9 +11,10 @@ import random
 import pytest
 
 from foon2pddl.experiment import worker
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.fd_solvers import OPTIMAL_SEARCH
 from foon2pddl.experiment.networks import build_view
-from foon2pddl.experiment.protocol import sample_kitchen
+from foon2pddl.experiment.protocol import Protocol, sample_kitchen
 from foon2pddl.experiment.setting import Setting
 from foon2pddl.experiment.solvers import get_solver
 from foon2pddl.generalize.categories import shipped_index
@@ -118,7 +119,7 @@ def test_a_local_run_shares_a_private_cache_and_removes_it(tmp_path, monkeypatch
 
     monkeypatch.setattr(runner, "run_here", lambda batches, job, sink, progress: [
         sink(r) or progress.update() for b in batches for r in spy(b, job)])
-    config = runner.Config(paths=(), protocol=runner.Protocol(trials=1, goals=3), networks=("reg",),
+    config = Config(paths=(), protocol=Protocol(trials=1, goals=3), networks=("reg",),
                            solvers=("fd-tree", "fd-tree-opt"), out_dir=tmp_path / "out")
     summary = runner.run(config, progress=False)
     assert len(summary.records) == 6 and all(r.status != "error" for r in summary.records)

@@ -12,7 +12,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.errors import FoonError
-from foon2pddl.experiment import runner, worker
+from foon2pddl.experiment import grid, runner, worker
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol, draw, goal_pool, make_trial
 from foon2pddl.experiment.records import CellStatus, Record
 from foon2pddl.model.kitchen import default_kitchen
@@ -31,26 +32,26 @@ def test_draw_equals_trials_drawn_one_by_one(reg):
     assert [t.index for t in drawn.trials] == [1, 2, 3, 4]
 
 
-def _config(tmp_path, **kw) -> runner.Config:
-    return runner.Config((), Protocol(trials=2, goals=12), ("reg", "gen"), ("native-complete", "native-greedy"),
-                         tmp_path, **kw)
+def _config(tmp_path, **kw) -> Config:
+    return Config((), Protocol(trials=2, goals=12), ("reg", "gen"), ("native-complete", "native-greedy"),
+                  tmp_path, **kw)
 
 
 def test_trials_are_drawn_once_per_point_of_the_sweep(tmp_path):
     config = _config(tmp_path, sweeps=(("kitchen-fraction", (0.5, 0.9)), ("banned-motions", (0, 2))))
     for point in config.points:
-        assert runner.trials_at(config, point) is runner.trials_at(config, point)  # cached, not redrawn
-    by_fraction = {dict(p)["kitchen-fraction"]: runner.trials_at(config, p) for p in config.points}
+        assert grid.trials_at(config, point) is grid.trials_at(config, point)  # cached, not redrawn
+    by_fraction = {dict(p)["kitchen-fraction"]: grid.trials_at(config, p) for p in config.points}
     assert len(by_fraction[0.5][0].kitchen) < len(by_fraction[0.9][0].kitchen)
     # a network hook (banned motions) changes what can be made, not what is asked
     half = [p for p in config.points if dict(p)["kitchen-fraction"] == 0.5]
-    assert runner.trials_at(config, half[0]) == runner.trials_at(config, half[1])
+    assert grid.trials_at(config, half[0]) == grid.trials_at(config, half[1])
 
 
 def test_a_task_names_its_trial_and_the_worker_resolves_the_same_batch(tmp_path):
     config = _config(tmp_path, sweeps=(("kitchen-fraction", (0.5, 0.9)), ("banned-motions", (0, 1))))
     job = worker.Job(config.paths, worker.fingerprint(config.paths), config.protocol, config.time_limit)
-    batches = runner.plan_batches(config, set())
+    batches = grid.plan_batches(config, set())
     assert len(batches) == 4 * 2 * 2 * 2 + 2 * 2  # points x trials x networks x solvers, a probe per solver/network
     for batch in batches:
         ref = batch.ref()
@@ -65,7 +66,7 @@ def test_a_task_names_its_trial_and_the_worker_resolves_the_same_batch(tmp_path)
 def test_a_worker_that_draws_other_goals_answers_with_errors_not_wrong_cells(tmp_path):
     config = _config(tmp_path)
     job = worker.Job(config.paths, worker.fingerprint(config.paths), config.protocol, config.time_limit)
-    batch = runner.plan_batches(config, set())[0]
+    batch = grid.plan_batches(config, set())[0]
     ref = batch.ref()
     wrong = replace(ref, labels=(*ref.labels[1:], ref.labels[0]))
     with pytest.raises(FoonError, match="other goals"):

@@ -21,6 +21,7 @@ from conftest import ROOT
 
 from foon2pddl.cli import main
 from foon2pddl.experiment import runner
+from foon2pddl.experiment.config import Config
 from foon2pddl.experiment.protocol import Protocol
 from foon2pddl.experiment.records import CellStatus, Record, read_records
 
@@ -28,8 +29,8 @@ HOOKS = ROOT / "tests" / "hooks"
 SMALL = ("--trials", "1", "--goals", "3", "--solvers", "native-greedy", "--no-progress")
 
 
-def config(out: Path, **kw) -> runner.Config:
-    return runner.Config((), Protocol(trials=1, goals=3), ("reg", "gen"), ("native-greedy",), out, **kw)
+def config(out: Path, **kw) -> Config:
+    return Config((), Protocol(trials=1, goals=3), ("reg", "gen"), ("native-greedy",), out, **kw)
 
 
 def comparable(records) -> dict:
@@ -161,8 +162,8 @@ def test_full_disk_is_an_error_and_a_resume_completes_the_run(tmp_path):
     r = foon2pddl(*args)
     assert r.returncode == 0, r.stderr
     assert f"{20 - len(kept)} cells run, {len(kept)} reused" in r.stdout
-    whole = runner.run(runner.Config((), Protocol(trials=2, goals=5), ("reg", "gen"), ("native-greedy",),
-                                     tmp_path / "ref"), progress=False)
+    whole = runner.run(Config((), Protocol(trials=2, goals=5), ("reg", "gen"), ("native-greedy",),
+                              tmp_path / "ref"), progress=False)
     assert comparable(read_records(out / "results.jsonl").values()) == comparable(whole.records)
 
 

@@ -131,6 +131,7 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
     command again to redo them); 130 interrupted.
     """
     from ..experiment import collector, runner
+    from ..experiment.config import Config
     from ..experiment.networks import NETWORKS
     from ..experiment.report import ReportData, agreement, invalid_trees, write_report
     from ..model.bulk import full_gc_paused
@@ -146,8 +147,8 @@ def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, s
         click.echo("warning: --sensitivity is replaced by --sweep kitchen-fraction=V1,V2,...; ignored", err=True)
     protocol = Protocol(trials, goals, fraction, seed, level, similarity=similarity, objects_per_item=per_item)
     report = report or out_dir / "report.md"
-    config = runner.Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
-                           swept, scheduler)
+    config = Config(tuple(str(p) for p in paths), protocol, nets, chosen, out_dir, jobs, time_limit, limits,
+                    swept, scheduler)
     try:
         summary = runner.run(config, progress=progress, fresh=fresh, step=step, every=BEAT)
     except runner.OtherResults as exc:

@@ -9,13 +9,14 @@
 - `records`: one JSON line per (trial, goal, network, solver, swept values); cell statuses;
 - `worker`: one task = a batch of cells; networks and prepared solvers cached per process;
 - `engine`: where tasks run (this process, or Dask: a LocalCluster or a cluster's scheduler);
-- `runner`: the grid, what is already done, resumable runs;
+- `config`: what defines a run; `grid`: its cells and the batches they run in;
+- `runner`: what is already done, resumable runs;
 - `progress`: a bar on a terminal, periodic lines otherwise;
 - `tables`, `render`, `plots`, `report`: report rows, Markdown and CSV, PNG plots, the written report;
 - `physical`: report rows for success as physical execution (schedule verdicts of the trees).
 """
 
 #: The package's modules (import them by name).
-__all__ = ["bans", "collector", "engine", "fd_solvers", "native_solver", "networks", "outcomes", "params", "physical",
-           "plots", "progress", "protocol", "provenance", "records", "render", "report", "runner", "setting", "solvers",
-           "tables", "worker"]
+__all__ = ["bans", "collector", "config", "engine", "fd_solvers", "grid", "native_solver", "networks", "outcomes", "params",
+           "physical", "plots", "progress", "protocol", "provenance", "records", "render", "report", "runner", "setting",
+           "solvers", "tables", "worker"]

@@ -9,7 +9,7 @@ The lines come from a ticker thread, not from finished cells alone: a Dask task 
 went 57 s without a line, stop 55). With a test's clock (not `time.monotonic`) `update` alone
 prints them.
 
-Batches run costliest first (`runner.plan_batches`), so a rate over cells alone predicts
+Batches run costliest first (`grid.plan_batches`), so a rate over cells alone predicts
 the cheap cells at the rate of the costly ones (`ETA 42 min 47 s` 2 min 23 s into a 2-trial run
 with `fd-relational` that took 5 min 01 s). Given `groups`
 (the cells planned per solver and network), the estimate weighs each group's cells left

@@ -1,10 +1,9 @@
-"""Running an experiment: the grid of cells, what is already done, batches to an engine, records appended.
+"""Running an experiment: what is already done, batches to an engine, records appended.
 
 The cells (point of the sweep, trial, goal, network, solver) not already in the results file are grouped into
-batches of at most `CHUNK` goals of one (point, trial, network, solver), so that what a solver prepares once (a
-fixpoint, an FD translation) serves the goals of the batch, and a lost task loses little. Batches run in this
-process (`jobs` 1) or on Dask (`engine.py`: a LocalCluster of `jobs` workers, or an existing cluster's
-`scheduler`), costliest solvers and largest networks first; every finished cell is appended to the JSONL file at
+batches (`grid.plan_batches`: at most `grid.CHUNK` goals of one point, trial, network and solver, costliest solvers
+and largest networks first). Batches run in this process (`jobs` 1) or on Dask (`engine.py`: a LocalCluster of
+`jobs` workers, or an existing cluster's `scheduler`); every finished cell is appended to the JSONL file at
 once in this process. A rerun reads the file and skips the cells already done: an interrupted run resumes, and
 cells that ended in an error or were lost with their worker are redone, as are cells recorded for another goal
 or under another time limit (`records.reusable`).
@@ -23,76 +22,30 @@ import shutil
 import tempfile
 import time
 from collections import Counter
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 from ..io.steps import Step, silent_step
 from . import collector
-from .engine import NO_WORKER_LIMIT, check_scheduler, require_dask, run_dask, run_here
+from .config import Config
+from .engine import check_scheduler, require_dask, run_dask, run_here
+from .grid import cell_keys, cell_labels, cells, plan_batches, trials_at
 from .networks import NETWORKS, NetworkView
-from .params import PARAMS, Point, check_grid, points
+from .params import Point, check_grid
 from .progress import LINE_INTERVAL, OFF, Progress, default_mode
-from .protocol import Protocol, Trial, identity_difference
+from .protocol import Trial, identity_difference
 from .provenance import code_version
-from .records import Key, Record, append, open_for_append, params_key, read_records, reusable
-from .setting import DEFAULT_TIME_LIMIT
-from .solvers import SOLVERS, get_solver
+from .records import Key, Record, append, open_for_append, read_records, reusable
+from .solvers import get_solver
 from .worker import Batch, Job, draw_at, fingerprint, has_view, input_files, view
 
-__all__ = ["Config", "RunSummary", "run", "views", "cell_keys", "input_files", "fingerprint", "read_runs"]
+__all__ = ["RunSummary", "run", "views", "input_files", "fingerprint", "read_runs"]
 
-RESULTS = "results.jsonl"
 PROTOCOL = "protocol.json"
 RUNS = "runs.jsonl"  # a line per invocation that computed cells: cells, jobs, seconds (cells, set-up), code
-#: Most goals in one task (a lost task loses at most this many cells). 50 rather than 25: half the
-#: tasks and result messages, ~1 s less on the default protocol's native solvers (21.2 vs 22.2 s, median
-#: of 3); the costliest batches start first, so the tail stays short.
-CHUNK = 50
-#: Goals of the probe of each (solver, network) that runs before the rest (`plan_batches`).
-PROBE = 2
-
-
-@dataclass(frozen=True)
-class Config:
-    """Everything that defines a run: inputs, protocol, sweeps, what to compare, where results go, how to run."""
-
-    paths: tuple[str, ...]
-    protocol: Protocol
-    networks: tuple[str, ...]
-    solvers: tuple[str, ...]
-    out_dir: Path
-    jobs: int = 1
-    time_limit: float = DEFAULT_TIME_LIMIT
-    goal_limits: tuple[tuple[str, int], ...] = ()  # (solver, n): that solver gets the first n goals of a trial
-    sweeps: tuple[tuple[str, tuple], ...] = ()  # (parameter, values): the grid is run at every combination
-    scheduler: str | None = None  # a Dask scheduler's address: run there instead of locally
-    no_worker_limit: float = NO_WORKER_LIMIT  # seconds without a live Dask worker before pending cells are lost
-
-    @property
-    def results_path(self) -> Path:
-        return self.out_dir / RESULTS
-
-    @property
-    def points(self) -> tuple[Point, ...]:
-        return points(self.sweeps)
-
-    def goals_for(self, solver: str, trial: Trial) -> range:
-        """1-based indexes of the goals of `trial` that `solver` is asked (goal samples are prefix-stable)."""
-        limit = dict(self.goal_limits).get(solver, len(trial.goals))
-        return range(1, min(limit, len(trial.goals)) + 1)
-
-    def identity(self) -> dict:
-        """What results in this directory depend on: the protocol (swept parameters aside) and the inputs."""
-        swept = [name for name, _ in self.sweeps]
-        base = self.protocol.identity()
-        for name in swept:
-            base.pop(PARAMS[name].field or "", None)
-        if swept:
-            base["swept"] = sorted(swept)
-        return {**base, "inputs": fingerprint(self.paths)}
 
 
 @dataclass(frozen=True)
@@ -111,81 +64,6 @@ class RunSummary:
     points: tuple[Point, ...] = ((),)
     lost: int = 0  # cells of this invocation lost with their worker (a rerun redoes them)
     cell_seconds: float = 0.0  # of `seconds`, those running the cells (the progress bar's elapsed time)
-
-
-# -- the grid ------------------------------------------------------------------------------------
-
-def trials_at(config: Config, point: Point) -> tuple[Trial, ...]:
-    """The trials at one point of the sweep (`worker.draw_at`: drawn once per process)."""
-    return draw_at(config.paths, config.protocol, point).trials
-
-
-Cell = tuple[Point, Trial, str, str, int]
-
-
-def cells(config: Config) -> list[Cell]:
-    """Every cell of the run as (point, trial, network, solver, goal), solvers only on their networks."""
-    out = []
-    for point in config.points:
-        trials = trials_at(config, point)
-        for solver in config.solvers:
-            spec = get_solver(solver)
-            for network in config.networks:
-                if spec.applies_to(network):
-                    out.extend((point, t, network, solver, g) for t in trials for g in config.goals_for(solver, t))
-    return out
-
-
-def _params_keys(config: Config) -> dict[Point, tuple]:
-    return {p: params_key(dict(p)) for p in config.points}
-
-
-def cell_keys(config: Config, grid: Sequence[Cell] | None = None) -> set[Key]:
-    """Every cell key of the run (of `grid`, the run's `cells`, when the caller has them)."""
-    return set(cell_labels(config, grid))
-
-
-def cell_labels(config: Config, grid: Sequence[Cell] | None = None) -> dict[Key, str]:
-    """Every cell key of the run -> the label of its goal as drawn now (`grid`: the run's `cells`)."""
-    params = _params_keys(config)
-    return {(t.index, g, n, s, params[p]): t.goals[g - 1].describe()
-            for p, t, n, s, g in (cells(config) if grid is None else grid)}
-
-
-def plan_batches(config: Config, done: set[Key], grid: Sequence[Cell] | None = None) -> list[Batch]:
-    """Batches of at most CHUNK pending goals (all of them for solvers whose preparation is costly, such as a
-    Fast Downward translation), costliest solvers and largest networks first, after a probe of the first PROBE
-    goals of every (solver, network) in that order; `grid`: the run's `cells`."""
-    pending: dict[tuple, list[int]] = {}
-    trial_of: dict[tuple, Trial] = {}
-    params = _params_keys(config)
-    for point, trial, network, solver, goal in (cells(config) if grid is None else grid):
-        if (trial.index, goal, network, solver, params[point]) in done:
-            continue
-        group = (point, trial.index, network, solver)
-        pending.setdefault(group, []).append(goal)
-        trial_of[group] = trial
-    batches = []
-    for group, goals in pending.items():
-        size = len(goals) if SOLVERS[group[3]].whole_batches else CHUNK
-        batches.extend(Batch(trial_of[group], group[2], group[3], tuple(goals[i:i + size]), group[0])
-                       for i in range(0, len(goals), size))
-
-    def order(b: Batch) -> tuple:
-        n = NETWORKS[b.network].schedule  # batches on larger networks start first (better load balance)
-        return (-SOLVERS[b.solver].cost, n, config.points.index(b.point), b.trial.index, b.goals[0])
-
-    probes, rest, probed = [], [], set()  # the first PROBE goals of every (solver, network) first: its time
-    for b in sorted(batches, key=order):  # per cell is known early (`Progress.left`); the rest keeps the order
-        if (b.solver, b.network) in probed:
-            rest.append(b)
-            continue
-        probed.add((b.solver, b.network))
-        split = len(b.goals) > PROBE and not SOLVERS[b.solver].whole_batches  # (split, one prepares twice)
-        probes.append(replace(b, goals=b.goals[:PROBE]) if split else b)
-        if split:
-            rest.append(replace(b, goals=b.goals[PROBE:]))
-    return probes + rest
 
 
 # -- protocol.json -------------------------------------------------------------------------------
