@@ -36,7 +36,8 @@ from foon2pddl.pddl.render import render
 from foon2pddl.planners import fd
 from foon2pddl.planners.executable import needed, schedule
 from foon2pddl.planners.instance_physical import physical_trace
-from foon2pddl.planners.physical_replay import DisagreementKind, replay
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.replay_findings import DisagreementKind
 from foon2pddl.retrieval.api import retrieve
 
 from .harness import Context, reachable_dishes, run_main, shared_data

@@ -11,8 +11,8 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.tasktree import TaskTree
 from foon2pddl.planners.executable import Verdict, needed, schedule
-from foon2pddl.planners.physical_replay import DisagreementKind as K
 from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.replay_findings import DisagreementKind as K
 from foon2pddl.retrieval.api import retrieve
 
 

@@ -16,8 +16,8 @@ from foon2pddl.pddl.task import Instance, PlanningTask
 from foon2pddl.planners import fd
 from foon2pddl.planners.instance_physical import HolderEvidence as E
 from foon2pddl.planners.instance_physical import physical_trace
-from foon2pddl.planners.physical_replay import DisagreementKind as K
 from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.replay_findings import DisagreementKind as K
 
 
 def unit(motion, ins, outs, line=1):

@@ -10,8 +10,9 @@ from physical_world import World, contents, node, random_world, salsa_world, wit
 
 from foon2pddl.model.physical import Binding, ObjectState
 from foon2pddl.model.places import listed, places
-from foon2pddl.planners.physical_replay import HOLDER_KINDS, replay
-from foon2pddl.planners.physical_replay import DisagreementKind as K
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.replay_findings import HOLDER_KINDS
+from foon2pddl.planners.replay_findings import DisagreementKind as K
 
 
 def kinds(trace) -> set[K]:

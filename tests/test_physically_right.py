@@ -9,7 +9,8 @@ from relational_checks import clean_plan, dish_goal
 
 from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.planners.instance_physical import physical_trace
-from foon2pddl.planners.physical_replay import DisagreementKind, replay
+from foon2pddl.planners.physical_replay import replay
+from foon2pddl.planners.replay_findings import DisagreementKind
 from foon2pddl.planners.solve import plan
 
 BLOODY_MARY = SUBGRAPHS / "0076-bloody_mary.txt"
