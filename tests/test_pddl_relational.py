@@ -22,8 +22,10 @@ from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.physical import Relation
 from foon2pddl.model.places import listed, place_of
 from foon2pddl.pddl.compile import ENCODINGS, compile_goal, compile_task
+from foon2pddl.pddl.holder_flows import unit_flows
+from foon2pddl.pddl.holder_gaps import list_gaps
 from foon2pddl.pddl.holder_words import mismatches, task_aliases
-from foon2pddl.pddl.holders import Fate, list_gaps, relational_roles, unit_flows
+from foon2pddl.pddl.holders import Fate, relational_roles
 from foon2pddl.pddl.relational_plan import without
 from foon2pddl.pddl.relational_replay import relational_trace
 from foon2pddl.pddl.render import render

@@ -10,7 +10,8 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_source, make
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
-from foon2pddl.pddl.holders import list_gaps, relational_roles
+from foon2pddl.pddl.holder_gaps import list_gaps
+from foon2pddl.pddl.holders import relational_roles
 from foon2pddl.pddl.relational_init import holder_init, implied_contents
 from foon2pddl.pddl.task import Instance
 from foon2pddl.planners.solve import plan

@@ -14,7 +14,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_s
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
-from foon2pddl.pddl.holders import gained
+from foon2pddl.pddl.holder_flows import gained
 from foon2pddl.pddl.list_drops import taken_again
 from foon2pddl.pddl.relational_plan import plan_unit
 

@@ -12,7 +12,7 @@ from foon2pddl.io.files import expand_paths
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
-from foon2pddl.pddl.holders import list_gaps
+from foon2pddl.pddl.holder_gaps import list_gaps
 from foon2pddl.pddl.instance_counts import delete_free_plan
 from foon2pddl.pddl.relational_plan import plan_unit
 from foon2pddl.planners.physical_replay import replay

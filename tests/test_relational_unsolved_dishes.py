@@ -11,7 +11,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_node, make_s
 from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.model.pairing import unit_roles
 from foon2pddl.model.places import listed
-from foon2pddl.pddl.holders import Flow, unit_flows
+from foon2pddl.pddl.holder_flows import Flow, unit_flows
 from foon2pddl.pddl.input_stitch import stitches
 from foon2pddl.pddl.list_drops import kept_in_place
 from foon2pddl.pddl.relational_plan import plan_unit

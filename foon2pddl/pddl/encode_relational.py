@@ -27,7 +27,7 @@
   a unit takes and leaves listing what it puts in, read before it as the node without that (`list_brought`); a
   container's node and what is in it, taken together and made together by no unit, as at hand (`kitchen_pairs`); a
   product naming no place, read in the one container the unit leaves listing it (`list_placed`).
-* **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holders.list_gaps`), stitches, and
+* **Reports.** Label readings and contradictions (`holder_words.mismatches`, `holder_gaps.list_gaps`), stitches, and
   every object the unit puts where its node does not say what the holder holds (a target the unit does not
   name: `sandwich (on [plate])` with no plate in the unit), once per task with the unit's file:line; the last
   two are the (container, content) pairs the replay does not check.
@@ -63,8 +63,9 @@ from .encode_instances import (
     precedes_facts,
 )
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, LevelInputs, at_level, header
+from .holder_gaps import attached_gaps, list_gaps
 from .holder_words import mismatches, reported
-from .holders import Fate, attached_gaps, list_gaps, on_parts
+from .holders import Fate, on_parts
 from .input_stitch import Stitched, with_stitches
 from .kitchen_pairs import Pair, read_pairs
 from .list_arrivals import read_arrivals
@@ -85,7 +86,7 @@ from .untouched import set_aside
 
 __all__ = ["CONSUMED", "encode_relational"]
 
-#: The note kinds of a relation FOON states that the encoding does not hold (`holders.attached_gaps`) and of a
+#: The note kinds of a relation FOON states that the encoding does not hold (`holder_gaps.attached_gaps`) and of a
 #: pair of nodes no unit makes together, read as the kitchen's (`kitchen_pairs`).
 UNHELD, AT_HAND = "relation not modelled", "assumed at hand"
 

@@ -61,18 +61,18 @@ Rules, in order (each reads only the unit itself):
    and so is one sitting, with no output node, where the unit makes a new object (`garlic (in [bowl])` where `meat
    mix (in [bowl])` is made). A source the unit does not name is decided by the encoding, which knows the task's
    nodes (`Fate.MOVES` here).
-5. **Contents that are not roles.** A container whose output node drops a label its
+5. **Contents that are not roles** (`holder_flows.unit_flows`). A container whose output node drops a label its
    input node lists, with no role of that label that may be in it (a role of the
    label taken from a holder of another label, or consumed from no place, is another
    object: the flour the cup lists beside the mix's `flour (in [bowl])`): what is of that label in it
-   follows into the role whose output node newly lists it (`Flow.into`), or became
-   part of the mixture (`Flow.into` None; also when that role is a product the unit makes).
+   follows into the role whose output node newly lists it (`holder_flows.Flow`), or became
+   part of the mixture (`into` None; also when that role is a product the unit makes).
    A container FOON leaves out of the outputs, or gives an output node silent about its
    contents (`bowl (dirty)`), whose contents another role's output node newly lists,
    was poured out whole (`bowl (contains {tuna})` into the bowl of mayonnaise): its
    contents follow, and the task empties it (`list_drops`: unless a later unit takes
    a label the list dropped from that container).
-6. **Contradictions** (`list_gaps`): an object in a C whose only C does not list it
+6. **Contradictions** (`holder_gaps.list_gaps`): an object in a C whose only C does not list it
    (rule 2), a product placed in a container whose output node describes its
    contents and does not list it, an object placed on a part of another role (rule 2),
    and a label an output node newly lists that no role of the unit is. No plan can satisfy both words, so the
@@ -93,13 +93,13 @@ from functools import lru_cache
 
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node
-from ..model.pairing import Role, unit_roles
+from ..model.pairing import Role
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
 from .holder_words import UnitWords, newly_listed, part_of, renamed, takers, unit_words
 
-__all__ = ["Fate", "Flow", "Place", "RelRole", "attached_gaps", "gained", "held_elsewhere", "list_gaps", "on_parts",
-           "placed_products", "relational_roles", "unit_aliases", "unit_flows"]
+__all__ = ["Fate", "Place", "RelRole", "held_elsewhere", "on_parts", "placed_products", "relational_roles", "still_holds",
+           "unit_aliases"]
 
 
 class Fate(StrEnum):
@@ -140,16 +140,6 @@ class RelRole:
             self.fate is not Fate.SPLITS and self.after is not None and self.after != self.role.before)
 
 
-@dataclass(frozen=True)
-class Flow:
-    """Rule 5: what is of `label` in the container role `holder` (and is no role of the unit) goes into role
-    `into`, or is consumed (`into` None)."""
-
-    label: str
-    holder: int
-    into: int | None
-
-
 def _relation(nodes: tuple[ObjectNode | None, ...], holder: str) -> Relation:
     """How the unit's nodes place things at `holder`: `on` when they say `on [holder]` more often than `in
     [holder]` (the onion and pepper poured onto the plate of tomato, `on [plate]` in the unit), else `in`."""
@@ -187,7 +177,7 @@ def _given(read: UnitWords) -> list[ObjectNode | None]:
     return [read.after[k] if r.after is not None else None for k, r in enumerate(read.roles)]
 
 
-def _keeps(node: ObjectNode | None, label: str) -> bool:
+def still_holds(node: ObjectNode | None, label: str) -> bool:
     """Whether a holder in `node` still holds something of `label` by FOON's words (rule 4)."""
     return node is not None and describes_contents(node) and label in listed(node)
 
@@ -265,7 +255,7 @@ def relational_roles(unit: FunctionalUnit) -> tuple[RelRole, ...]:
         if same:
             result.append(RelRole(r, out_nodes[k], Fate.STAYS, src, dst))
             continue
-        keeps = src is not None and src.role is not None and _keeps(after[src.role], r.label) and k not in held
+        keeps = src is not None and src.role is not None and still_holds(after[src.role], r.label) and k not in held
         result.append(RelRole(r, out_nodes[k], Fate.SPLITS if keeps else Fate.MOVES, src, dst))
     return tuple(result)
 
@@ -282,110 +272,6 @@ def placed_products(unit: FunctionalUnit) -> tuple[tuple[ObjectNode, ObjectNode]
             holder = read.roles[into[0]].label
             out.append((r.after, moved_into(r.after, holder, _relation((*read.before, *read.after), holder))))
     return tuple(out)
-
-
-@lru_cache(maxsize=1 << 14)
-def gained(unit: FunctionalUnit) -> frozenset[tuple[str, str]]:
-    """(holder label, content label) for every label a role's output node lists and its input node does not:
-    what the unit puts into something (names read through the unit's aliases)."""
-    return frozenset((r.label, x) for r, new in zip(unit_roles(unit), newly_listed(unit), strict=True) for x in new)
-
-
-@lru_cache(maxsize=1 << 14)
-def unit_flows(unit: FunctionalUnit) -> tuple[Flow, ...]:
-    """Rule 5: for every container role whose output node drops a label no role of the unit has, where what is
-    of that label in it goes. O(r^2)."""
-    read = unit_words(unit)
-    roles, before, after = read.roles, read.before, read.after
-    labels = {r.label for r in roles}
-    rels = relational_roles(unit)
-    out = []
-    for h, r in enumerate(roles):
-        if r.before is None or not (describes_contents(after[h]) or describes_contents(before[h])):
-            continue
-        if r.after is None or not describes_contents(after[h]):  # poured out whole (no output node, or one silent
-            # about its contents: `bowl (dirty)`): what another role's output node newly lists follows
-            for lab in sorted(listed(before[h]) - labels):
-                into = [j for j in takers(unit, lab, h) if roles[j].before is not None]
-                if into:
-                    out.append(Flow(lab, h, into[0]))
-            continue
-        # a role of the label taken from a holder of another label, or consumed from no place, is another
-        # object: what is of that label in this one goes too (the flour the cup lists, beside the mix's `flour
-        # (in [bowl])`; the lemon in the glass, beside the lemon squeezed into it)
-        elsewhere = {x.role.label for x in rels if (x.source.holder != r.label if x.source is not None
-                                                     else x.fate is Fate.CONSUMED)}
-        for lab in sorted(listed(before[h]) - listed(after[h]) - (labels - elsewhere)):
-            into = takers(unit, lab, h)
-            out.append(Flow(lab, h, into[0] if into and roles[into[0]].before is not None else None))
-    return tuple(out)
-
-
-def list_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
-    """Rule 6: where the unit's own output nodes contradict each other about a container's contents.
-
-    (container label, content label, message) for: an input node placed `in [C]` whose only C lists its
-    contents without it (rule 2 binds it late); an output node placed `in [C]`/`on [C]` while C's output
-    node describes its contents and does not list it (`salad (in [salad bowl])` and `carrot salad (in [salad
-    bowl])` made, the bowl `contains {salad}`); and a label C's output node newly lists that no role of the
-    unit is, nor is read as (rule 0), or that the unit leaves `attached to [C]` (the watermelon lemonade's
-    `blender (with [cup])` beside `blender cup (attached to [blender])`: a relation, not in or on, that no holder
-    fact holds); and a holder whose output node still lists an object that leaves it whole (rule 4: the mixer still
-    `with [bowl]` as the blend's bowl leaves it). No plan can satisfy both words, so the task reports them and its replay
-    does not check that pair. Names read through the unit's aliases; O(r^2) for r roles.
-    """
-    read = unit_words(unit)
-    roles = read.roles
-    labels = {r.label for r in roles}
-    out = []
-    outs = [(r.label, read.after[k]) for k, r in enumerate(roles) if r.after is not None]
-    sides = [(r.label, read.after[k]) for k, r in enumerate(roles)]  # every role after the unit
-    for label, node in outs:
-        place = place_of(node)
-        if place is None:
-            continue
-        holders = [n for lab, n in sides if lab == place[1] and describes_contents(n)]
-        if holders and not any(label in listed(n) for n in holders):
-            out.append((place[1], label, f"{label} is {place[0]} [{place[1]}], whose node after the unit does not "
-                        "list it"))
-    rels = relational_roles(unit)
-    for k, r in enumerate(roles):  # rule 2: the only holder the unit has lists its contents without it
-        src = rels[k].source
-        mine = [j for j, x in enumerate(roles) if j != k and src is not None and x.label == src.holder
-                and read.before[j] is not None]
-        if r.before is not None and src is not None and src.role is None and mine and all(
-                describes_contents(read.before[j]) for j in mine):
-            out.append((src.holder, r.label, f"{r.label} is {src.relation} [{src.holder}], whose node before the "
-                        "unit does not list it: which one holds it is left to the plan"))
-    for k, x in enumerate(rels):  # rule 4: the whole, holding the unit's objects, leaves a holder that lists it still
-        if x.fate is Fate.MOVES and x.source is not None and x.source.role is not None and _keeps(
-                read.after[x.source.role], x.role.label) and any(y.source and y.source.role == k for y in rels):
-            out.append((x.source.holder, x.role.label, f"{x.source.holder} lists {x.role.label} after the unit, which "
-                        "leaves it whole with what is in it"))
-    for node, holder in on_parts(unit):  # rule 2: placed on a part of another role (the bread of the sandwich)
-        (rel, part), = places(node)[:1]
-        out.append((holder, node.label, f"{node.label} is {rel} [{part}], which {holder} lists: read as {rel} the {holder}"))
-    for r, new in zip(roles, newly_listed(unit), strict=True):
-        out += [(r.label, x, f"{r.label} lists {x}, which no object of the unit is") for x in sorted(new - labels)]
-        for label, node in outs:
-            place = place_of(node)
-            if label in new and place is not None and place[1] != r.label:
-                out.append((r.label, label, f"{r.label} lists {label}, which the unit puts {place[0]} [{place[1]}]"))
-    return tuple(dict.fromkeys(out + list(attached_gaps(unit))))
-
-
-def attached_gaps(unit: FunctionalUnit) -> tuple[tuple[str, str, str], ...]:
-    """The gaps of `list_gaps` that are no contradiction of FOON's words but a relation the encoding does not
-    hold: a label C's output node newly lists while the unit leaves that object `attached to [C]` (FOON's labels
-    agree; the task notes them as a relation not modelled, not as a label mismatch)."""
-    read = unit_words(unit)
-    outs = [(r.label, read.after[k]) for k, r in enumerate(read.roles) if r.after is not None]
-    return tuple(dict.fromkeys(
-        (r.label, label, f"{r.label} lists {label}, which the unit leaves attached to [{r.label}]: a relation the "
-         "encoding does not hold (only in and on), so the replay does not check it")
-        for r, new in zip(read.roles, newly_listed(unit), strict=True) for label, node in outs
-        if label in new and place_of(node) is None
-        and any(s.label == "attached to" and s.related == r.label for s in node.states)))
 
 
 def held_elsewhere(rels: Sequence[RelRole], k: int, nodes: Iterable[ObjectNode]) -> bool:

@@ -18,7 +18,7 @@ its holder facts, from the unit's reading in the task (`relational_plan.UnitPlan
 - a consumed object goes to `consumed` and leaves its holder, with all of its
   label there when the holder's node no longer lists it, and with what is in
   or on it, two levels deep (`relational_sweep`); contents that are
-  no role of the unit follow their container's list (`holders.Flow`), by one
+  no role of the unit follow their container's list (`holder_flows.Flow`), by one
   quantified conditional effect per node they can be in.
 
 Which roles are parameters: a role whose object changes or moves, the holders a bound object's facts name, and

@@ -41,7 +41,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     with none, into a holder to add: one per label C, listing
     everything that starts in it (`implied`; a `cutting board (clean)` a unit will fill is no place for the
     avocado the kitchen has on a board), and one more per further object of a label the task's units put into
-    holders of label C (`filled`, `holders.gained`): a unit taking it out of such a holder empties the holder
+    holders of label C (`filled`, `holder_flows.gained`): a unit taking it out of such a holder empties the holder
     (`relational_plan`), so two butters `in [bowl]` get two bowls listing butter, where one bowl holding both
     was left empty with the second in it. A holder added for a `silent` label is one plain node (`surface`),
     listing nothing, for every object placed there: its contents are not checked, as a place that says nothing of

@@ -61,7 +61,7 @@ class TaskObjects:
     the notes on the kitchen's reading in `:init` (`init_notes`: where the completion's holders start,
     `relational_init.started_notes`, and kitchen nodes read as placed in a kitchen container); counted small, the
     units the wide count reads that this one does not (`beside`): the small task starts where they lead, so the pairs
-    FOON contradicts itself about in them (`holders.list_gaps`) are its own too (0086's pie starts with the filling
+    FOON contradicts itself about in them (`holder_gaps.list_gaps`) are its own too (0086's pie starts with the filling
     the fold at `0086-apple_turnover.txt:418` puts in it, which the dish's list drops)."""
 
     reading: Reading

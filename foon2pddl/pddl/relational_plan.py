@@ -8,7 +8,7 @@
   moved or consumed (GEN's garlic, consumed into the rice dish off the plate; not into what the unit makes in it:
   the omelette cooked from the egg mixture in the pan), and what the units put into that label (its node drops the labels,
   `without`: the syrup soaked into the cranberries) when the task's units fill
-  containers of its label with that label (`holders.gained`: the measuring cup the cream was poured into) and its node
+  containers of its label with that label (`holder_flows.gained`: the measuring cup the cream was poured into) and its node
   is no kitchen node, unless it goes onto an object in that container (the lemon juice the carrot in the salad bowl is
   seasoned with: it is still in the bowl, and the bowl still lists it); else it keeps its contents (a carton, a bag, a
   packet: the kitchen stocks them), but one no other unit takes or takes from, fired once (`sole`:
@@ -20,7 +20,7 @@
   (the squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of a holder the unit does not
   name empties it likewise; all that leaves holders of one label in a unit leaves at once (the beef and the onion leave
   the pan together).
-  A container poured out whole (`holders.unit_flows`) is emptied of what it held.
+  A container poured out whole (`holder_flows.unit_flows`) is emptied of what it held.
   An ingredient consumed into a product made elsewhere,
   out of a kitchen container FOON leaves listing it, was only partly used: it stays
   (the bowl of sesame seeds sprinkled over the salad).
@@ -44,7 +44,8 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role
 from ..model.places import describes_contents, head_of, listed, places
-from .holders import Fate, Flow, RelRole, gained, relational_roles, unit_flows
+from .holder_flows import Flow, gained, unit_flows
+from .holders import Fate, RelRole, relational_roles
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
            "plan_unit", "quiet_places", "silent_labels", "without"]
@@ -95,7 +96,7 @@ class Slot:
 @dataclass(frozen=True)
 class UnitPlan:
     """A unit in a task: its slots (one per role), the read-only holders it empties (role index -> their new
-    node), and the contents that are no role (`holders.Flow`)."""
+    node), and the contents that are no role (`holder_flows.Flow`)."""
 
     unit: FunctionalUnit
     slots: tuple[Slot, ...]
@@ -156,7 +157,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
               sole: frozenset[ObjectNode] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
-    says ((holder label, content label), `holders.gained`; module doc), whose nodes have `labels` and place
+    says ((holder label, content label), `holder_flows.gained`; module doc), whose nodes have `labels` and place
     objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))

@@ -1,7 +1,7 @@
 """How the `relational` encoding reads a task's units, and the objects that reading needs.
 
 Each unit of the task is read by `relational_plan.plan_unit`, given the holders that say nothing of what they
-hold (`relational_plan.quiet_places`), the (holder, content) pairs the task's units fill (`holders.gained`), the
+hold (`relational_plan.quiet_places`), the (holder, content) pairs the task's units fill (`holder_flows.gained`), the
 task's labels and the labels that hold something (`relational_plan.holding_labels`); flows a later unit's input
 says did not happen are dropped (`list_drops.kept_in_place`). The objects come from those readings
 (`instance_counts.derive_counts` with `relational_plan.count_roles`; with stitches, enough for FOON's own plan and
@@ -23,7 +23,7 @@ from ..model.places import listed, places
 from ..model.scene import SceneObject
 from ..model.where import short_path, unit_where
 from .encoding import LevelInputs
-from .holders import gained
+from .holder_flows import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, delete_free_plan, derive_counts
 from .list_drops import kept_in_place, taken_again

@@ -3,7 +3,7 @@
 `relational_plan` decides what becomes of each object a unit names; the unit's action also reaches nodes of the
 task it does not name, and the relational encoding needs them to move, empty or consume the objects there:
 
-* **Flows** (`flow_ways`): the contents poured out with a container (`holders.unit_flows`), every node of the
+* **Flows** (`flow_ways`): the contents poured out with a container (`holder_flows.unit_flows`), every node of the
   flow's label placed in a container of the holder's label, moved into the flow's target or consumed.
 * **Late empties** (`late_empties`, `every_late_empty`): a holder the unit does not name, which the task's units
   fill with the object leaving it (`Slot.late_empties`), no longer lists what leaves holders of its label.
@@ -44,7 +44,7 @@ __all__ = ["Way", "alike_nodes", "dropped_nodes", "dusted_nodes", "dustings", "e
            "flow_ways", "late_empties", "left_nodes", "restated_nodes"]
 
 
-#: One way a flow (`holders.Flow`) meets an object: its node, the relation to the container, its node after
+#: One way a flow (`holder_flows.Flow`) meets an object: its node, the relation to the container, its node after
 #: (None: consumed).
 Way = tuple[ObjectNode, Relation, "ObjectNode | None"]
 
