@@ -31,7 +31,7 @@ def run() -> None:
 
 #: Seconds of silence from the process's start after which the console script says it is loading (the CLI's
 #: `progress.AFTER`, which cannot be imported before the CLI loads; a test checks they agree).
-LOADING_AFTER = 1.5
+LOADING_AFTER = 1.0
 
 
 class _Loading:

@@ -357,7 +357,7 @@ def test_progress_lines_come_every_interval_while_no_cell_finishes():
 def test_the_command_through_a_pipe_gets_a_line_every_beat(tmp_path, monkeypatch):
     """Stop 56's newcomer pass: `experiment --trials 1 --goals 3` through a pipe said `a progress line every 30 s`
     at 3.0 s and nothing more until the end at 27.0 s (issue 24's floor: no 2 s without a line). The command's log
-    lines come every `cli.progress.BEAT` (1.5 s), as every other step's beat through a pipe; the API keeps its
+    lines come every `cli.progress.BEAT` (1 s), as every other step's beat through a pipe; the API keeps its
     `LINE_INTERVAL`."""
     from foon2pddl.cli import progress
 
@@ -368,7 +368,7 @@ def test_the_command_through_a_pipe_gets_a_line_every_beat(tmp_path, monkeypatch
     assert "experiment: 3 cells to run; a progress line every 0.01 s" in r.stderr
     assert "- 1 trial x 3 goals, hierarchy level 3" in (tmp_path / "report.md").read_text()  # was `1 trials`
     monkeypatch.undo()
-    assert progress.BEAT <= 1.5
+    assert progress.BEAT <= 1.0
 
 def test_eta_weighs_each_solvers_remaining_cells_by_its_own_time_per_cell():
     """Costliest batches run first: a rate over cells alone predicted 51 min for a run of ~10 (stop 42).

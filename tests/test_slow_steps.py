@@ -233,7 +233,7 @@ def test_analyze_says_it_writes_the_graphml_files(every_step_speaks, tmp_path):
 
 def test_analyze_says_it_draws_the_plot_before_it_starts_at_the_default_threshold(tmp_path):
     """Drawing the plot (matplotlib's import, the figure) took 2.3 s at load 15 after a silent wait for the
-    threshold: it is announced at once, not only after 1.5 s of silence."""
+    threshold: it is announced at once, not only after `AFTER` seconds of silence."""
     said = run("analyze", "--plot", tmp_path / "central.png").stderr.splitlines()
     drawing = f"drawing {tmp_path / 'central.png'} ..."
     assert drawing in said and said.index(drawing) < said.index(f"wrote {tmp_path / 'central.png'}")
@@ -680,18 +680,23 @@ def test_the_console_scripts_budget_is_the_clis(monkeypatch):
     from foon2pddl.__main__ import LOADING_AFTER
 
     monkeypatch.undo()  # conftest's budget of an hour off: the CLI's own
-    assert LOADING_AFTER == progress.AFTER == 1.5
+    assert LOADING_AFTER == progress.AFTER
 
 
 def test_a_beat_leaves_the_floor_a_margin(monkeypatch):
     """Through a pipe a step that is one long call (the WordNet matrix of a hint check) added a line every 2.0 s,
     the floor itself (issue 24: no 2 s without a line): at load 16-19 a wake-up came 0.1-0.2 s late, gaps of
-    2.1-2.2 s between its lines (nc52a's pass, `retrieve --goal lemonade` on an empty cache). A beat comes as
-    early as the first line of a step does (`AFTER`), leaving the same margin."""
+    2.1-2.2 s between its lines (nc52a's pass, `retrieve --goal lemonade` on an empty cache). At 1.5 s a beat left
+    0.5 s, and stop 58's pass saw one come 0.88 s late (`retrieve --goal "greek salad" --network exp`, `building
+    FOON-EXP ... 2 s` then 2.38 s without a line, load 8.7): a wake-up waits for the interpreter lock, which a long
+    call in C (a collection, a module's `dlopen`) holds however short the beat. A beat, and the first line of a step
+    (`AFTER`), come with a margin of a second, more than any late wake-up seen; the first line is as late as a
+    beat, so the console script's own (`LOADING_AFTER`) is too."""
     from bench.silence import LIMIT
+    from foon2pddl.__main__ import LOADING_AFTER
 
     monkeypatch.undo()  # conftest's beat of an hour off: the CLI's own
-    assert progress.BEAT == progress.AFTER <= LIMIT - 0.5
+    assert progress.BEAT == progress.AFTER == LOADING_AFTER <= LIMIT - 1.0
 
 
 def test_a_unified_planning_engine_lookup_beats_through_a_pipe(monkeypatch):

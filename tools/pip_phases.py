@@ -26,7 +26,7 @@ import time
 
 #: Seconds a phase may run without a line before it says it is still running: the CLI's beat
 #: (`foon2pddl.cli.progress.BEAT`, not importable here), under issue 24's floor of 2 s without a line.
-TICK = 1.5
+TICK = 1.0
 #: Lines of pip's output shown when it fails.
 TAIL = 40
 #: On a terminal: back to the start of the line and clear it.

@@ -117,7 +117,7 @@ def command_line(paths, protocol: Protocol, networks, solvers, jobs: int, time_l
               help="Ask SOLVER only the first N goals of each trial (for slow solvers; repeatable).")
 @click.option("--fresh", is_flag=True, help="Discard results already in DIR instead of resuming.")
 @click.option("--progress/--no-progress", default=True, show_default=True,
-              help="Progress on stderr: a bar on a terminal, otherwise a line every 1.5 s (cells done, rate, ETA).")
+              help="Progress on stderr: a bar on a terminal, otherwise a line every second (cells done, rate, ETA).")
 def experiment(paths, trials, goals, fraction, networks, solvers, seed, level, similarity, per_item, jobs, scheduler,
                time_limit, out_dir,
                report, sweeps, sensitivity, goal_limits, fresh, progress) -> None:

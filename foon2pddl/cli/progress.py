@@ -34,11 +34,13 @@ from contextlib import contextmanager
 
 import click
 
-#: Seconds a command may stay silent before the step it is in says what it is.
-AFTER = 1.5
-#: Through a pipe, seconds between the lines a said step adds while it runs (its seconds so far): as
-#: `AFTER`, a margin under the 2 s floor for a late wake-up under load (at 2.0 s, gaps of 2.1-2.2 s at load 16-19).
-BEAT = 1.5
+#: Seconds a command may stay silent before the step it is in says what it is: a second under the 2 s floor, for
+#: a wake-up that waits for the interpreter lock while a long call in C holds it (0.88 s late once at load 8.7;
+#: at 1.5 s that left a gap of 2.38 s).
+AFTER = 1.0
+#: Through a pipe, seconds between the lines a said step adds while it runs (its seconds so far): as `AFTER`, the
+#: same margin (at 2.0 s, gaps of 2.1-2.2 s at load 16-19; at 1.5 s, one of 2.38 s at load 8.7).
+BEAT = 1.0
 #: On a terminal: back to the start of the line and clear it (a shorter text leaves nothing behind).
 _REDRAW = "\r\x1b[K"
 #: On a terminal: up to the line a finished step left, and clear it (the next step of its series redraws it).

@@ -33,7 +33,7 @@ LINES = "lines"
 OFF = "off"
 
 #: Seconds between two progress lines when stderr is not a terminal, from Python (`runner.run`'s `every`); the
-#: command passes its beat (`cli.progress.BEAT`, 1.5 s: issue 24's floor, no 2 s without a line).
+#: command passes its beat (`cli.progress.BEAT`, 1 s: issue 24's floor, no 2 s without a line).
 LINE_INTERVAL = 30.0
 #: The estimated time left is shown once this share of the cells is done (and at least `ETA_MIN_CELLS`):
 #: the first cells include start-up (workers, networks built per trial), and a rate from them
