@@ -205,6 +205,10 @@ def test_blocks_that_are_not_units_are_skipped_with_a_warning(block, problem):
     (UNIT + "M2\tstir\n", 8, "second motion line"),
     ("O1\tbo\x00wl\t0\n", 1, "control character"),
     ("O1\tbowl\t0\nX\tbowl\n", 2, "expected an 'O', 'S' or 'M' line"),
+    # issue 24's tried-again pass: a FOON file written with spaces said `expected an 'O', 'S' or 'M' line` of an O line
+    ("//\nO bowl 0\nS empty\n", 2, "'O' line with its fields separated by spaces: FOON separates them with tabs"),
+    (UNIT + "//\nO1\tbowl\t0\nS2 contains {egg}\n", 10, "'S' line with its fields separated by spaces"),
+    (UNIT + "M2 stir\n", 8, "'M' line with its fields separated by spaces"),
     ("O\tx\nM\t**\nO\ty\n", 2, "no label before '*'"),
     ("O\tx\nS\tin\t[a]\t[b]\nM\tm\nO\ty\n", 2, "two related objects"),
     ("", 1, "no functional units"),

@@ -15,6 +15,8 @@ from ..model.foon import Motion, ObjectNode, State, make_node, make_state, norma
 
 #: the head of a FOON line: `O`, `S` or `M` and an optional id.
 LINE_ID = re.compile(r"[OSM]\d*")
+#: A FOON line head followed by spaces where the format has a tab (`O bowl 0`, `S2 contains {egg}`).
+_SPACED = re.compile(r"[OSM]\d* +\S")
 CONTROL_CHARS = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _INT = re.compile(r"\d+")
 #: Longest integer read (Python's default int-string limit): longer ones are errors, never ValueError.
@@ -69,6 +71,9 @@ def _classify(raw: str, fail) -> tuple:
     head = fields[0]
     kind = head[:1]
     if kind not in "OSM" or not LINE_ID.fullmatch(head):
+        if _SPACED.match(head):  # `O bowl 0`: a FOON line typed with spaces, not the format's tabs
+            raise fail(f"'{kind}' line with its fields separated by spaces: FOON separates them with tabs "
+                       f"(expected '{kind}<id><TAB><label>')")
         raise fail("expected an 'O', 'S' or 'M' line, '//' or a '#' comment")
     if len(fields) < 2 or not fields[1]:
         raise fail(f"'{kind}' line has no label (expected '{kind}<id><TAB><label>')")
