@@ -35,6 +35,19 @@ def test_json_list_items_are_counted_from_one(tmp_path, text, says, option):
     assert r.exit_code == 2 and f"{document}{says}" in r.stderr
 
 
+@pytest.mark.parametrize("option", ["--kitchen", "--goals"])
+def test_a_json_item_key_typed_wrong_is_an_error(tmp_path, option):
+    """Issue 24's tried-again pass: a kitchen item `{"label": "avocado", "state": ["whole"]}` (`state` for `states`)
+    was read as a bare avocado, its states dropped without a word (the one hint a `matches no node` warning); a
+    scene's or a constraints file's unknown key is an error, as a typo must be."""
+    document = tmp_path / "k.json"
+    document.write_text('[{"label": "bowl", "states": ["empty"]},\n {"label": "avocado", "state": ["whole"]}]')
+    r = run("retrieve", option, document, *(["--goal", "guacamole"] if option == "--kitchen" else []))
+    assert r.exit_code == 2, r.output
+    assert (f"{document}:2: error: item 2 (avocado): unknown key 'state' (expected one of label, states, "
+            "ingredients, container)") in r.stderr
+
+
 def test_scene_objects_are_counted_from_one(tmp_path):
     """The scene reader said `object 1: 'id' must be ...` of the scene's second object."""
     scene = tmp_path / "s.json"

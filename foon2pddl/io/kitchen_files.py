@@ -14,6 +14,10 @@ from .parser import read_text
 from .rates import refuse_rates
 
 
+#: The keys of a kitchen or goal item in the JSON convention; any other is an error.
+ITEM_KEYS = ("label", "states", "ingredients", "container")
+
+
 def json_node(item: object, path: str, index: int) -> ObjectNode:
     """One `{"label", "states", "ingredients", "container"}` item of the JSON convention.
 
@@ -30,6 +34,10 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
     problem = text_problem(label, "label")
     if problem:
         raise FoonSyntaxError(path, 0, f"item {index + 1}: {problem}")
+    unknown = [k for k in item if k not in ITEM_KEYS]
+    if unknown:  # a typo (`state`) must not drop what it holds without a word
+        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): unknown key {unknown[0]!r} (expected one of "
+                                       f"{', '.join(ITEM_KEYS)})")
     if not isinstance(states_raw, list) or not all(isinstance(s, str) for s in states_raw):
         raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): 'states' must be a list of strings")
     if not isinstance(ingredients, list) or not all(isinstance(s, str) for s in ingredients):
