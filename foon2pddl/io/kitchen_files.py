@@ -13,7 +13,6 @@ from .json_text import item_lines, line_of, load_json, text_problem
 from .parser import read_text
 from .rates import refuse_rates
 
-
 #: The keys of a kitchen or goal item in the JSON convention; any other is an error.
 ITEM_KEYS = ("label", "states", "ingredients", "container")
 
