@@ -8,7 +8,7 @@ never as a tool.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 
 from ..model.foon import FunctionalUnit, ObjectNode, State
 from ..model.pairing import transfer, unit_roles
@@ -87,6 +87,15 @@ def _onto(unit: FunctionalUnit, label: str, named: Aliases, on: frozenset[str]) 
     return ("on" if k > 0 or (k == 0 and label in on) else "in"), label
 
 
+def _lister(unit: FunctionalUnit, thing: str, *, of: str | None = None, but: ObjectNode | None = None,
+            away: Collection[str] = (), not_on: Aliases | None = None) -> ObjectNode | None:
+    """Where `thing` is, as FOON's lists say: the first input whose contents list it, of label `of` when given,
+    not the node `but`, of no label in `away`, and with `not_on` (the unit's aliases) not itself in or on `thing`
+    (0017's tray the bread is on); None when none. O(inputs x states)."""
+    return next((j for j in unit.inputs if thing in contents(j) and (of is None or j.label == of) and j is not but
+                 and j.label not in away and not (not_on is not None and thing in _holders(j, not_on))), None)
+
+
 def _holders(node: ObjectNode, named: Aliases) -> set[str]:
     """Every object the node's place states name (`_holder`, as `named` reads them)."""
     return {named.get(h, h) for s in node.states if (h := _holder(s))}
@@ -126,7 +135,7 @@ def _filled(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[str, 
         added = contents(container) - contents(before[label])
         for i in unit.inputs:
             place = _place(i, named)
-            elsewhere = any(j.label == label and j is not before[label] and i.label in contents(j) for j in unit.inputs)
+            elsewhere = _lister(unit, i.label, of=label, but=before[label]) is not None
             if (i.label in added and i.label not in new and i.label not in moved
                     and ((place or ("", ""))[1] != label or elsewhere)
                     and not (place and place == _place(before[label], named))):
@@ -143,7 +152,7 @@ def _source(unit: FunctionalUnit, moved: ObjectNode, label: str, into: ObjectNod
     (`from the bowl (contains {salt}) into the bowl (contains {egg white and yolk})`), else by its label."""
     if into is None or into.label != label:
         return label
-    found = next((j for j in unit.inputs if j.label == label and j is not into and moved.label in contents(j)), None)
+    found = _lister(unit, moved.label, of=label, but=into)
     return found.describe() if found is not None else label
 
 
@@ -161,7 +170,7 @@ def _listed_only(unit: FunctionalUnit, new: dict[str, ObjectNode], before: dict[
     for label, container in new.items():
         around = _holders(container, named) | (_holders(before[label], named) if label in before else set())
         for thing in sorted(contents(container) - contents(before[label]) if label in before else ()):
-            source = next((j for j in unit.inputs if j.label not in around | {label} and thing in contents(j)), None)
+            source = _lister(unit, thing, away=around | {label})
             if source is not None and not any(t == thing or head_of(thing, t) for t in labels):
                 out.append((ObjectNode(thing), ("in", source.label), _onto(unit, label, named, on)))
     return out
@@ -179,8 +188,7 @@ def _carrier(unit: FunctionalUnit, moved: ObjectNode, src: tuple[str, str] | Non
     other input lists it. O(inputs x states)."""
     into = next((i for i in unit.inputs if i.label == dst[1]), None)
     away = {dst[1], *moving, *(src[1:] if src else ()), *(_holders(into, named) if into is not None else ())}
-    found = next((j for j in unit.inputs if j.label not in away and moved.label in contents(j)
-                  and moved.label not in _holders(j, named)), None)
+    found = _lister(unit, moved.label, away=away, not_on=named)
     return ("in", found.label) if found is not None else None
 
 
