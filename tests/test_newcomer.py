@@ -985,3 +985,13 @@ def test_batch_retrieve_and_batch_plan_say_what_an_unreachable_goal_needs_in_the
         assert "missing (no unit makes them)" not in r.stdout
     single = run("retrieve", "--goal", "lemonade")
     assert words in single.stderr
+
+
+def test_a_category_typed_wrong_under_gen_plan_names_the_close_categories():
+    """Issue 24's tried-again pass: `plan --network gen --goal beverage` (the singular) said `unknown object label
+    'beverage'` with no close match, where `retrieve --network gen --goal beverage` says `close matches: beverages`
+    and `plan --network gen --goal beverages` plans (docs/format.md: an unknown label lists its close matches)."""
+    r = run("plan", "--network", "gen", "--goal", "beverage")
+    assert r.exit_code == 2, r.output
+    assert "unknown object label 'beverage'" in r.stderr and "close categories: beverages" in r.stderr, r.stderr
+    assert "close categories" not in run("plan", "--network", "gen", "--goal", "unicorn").stderr

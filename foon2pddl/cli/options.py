@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 from pathlib import Path
 
 import click
@@ -323,10 +324,14 @@ def lifted_goal(view, spec):
     try:
         return view.resolve(spec)
     except FoonError as exc:
-        found = category_goal(spec, view.foon, load_index())
-        if found is None:
+        index = load_index()
+        found = category_goal(spec, view.foon, index)
+        if found is None:  # the categories made here close to it (`beverage` -> `beverages`), as labels get theirs
+            made = sorted({c for label in view.foon.produced_by_label if (c := index.choose(label)) is not None})
+            close = difflib.get_close_matches(spec.label, made, n=5, cutoff=0.6)
             raise UsageError(f"{exc.message}; `foon2pddl goals --network gen` lists the categories it also takes, "
-                             "when they are made on this network") from None
+                             "when they are made on this network"
+                             + (f" (close categories: {', '.join(close)})" if close else "")) from None
         return found
 
 
