@@ -666,3 +666,15 @@ def test_extending_md_names_what_the_guacamole_pours():
     assert r.exit_code == 0, r.stderr
     pours = [line for line in r.stdout.splitlines() if re.match(r"\d+\. pour ", line)]
     assert pours and any(line.split(". ", 1)[1].startswith(f"pour {poured.group(1)}") for line in pours), pours
+
+
+def test_readme_lists_every_sweepable_parameter():
+    """README's sweep paragraph listed six parameters; `--sweep` takes seven (`objects-per-item` too, as its own
+    error message says: `expected one of kitchen-fraction, ..., objects-per-item, ...`): issue 24's tried-again
+    pass. The list is the registry's."""
+    from foon2pddl.experiment.params import PARAMS
+
+    text = (ROOT / "README.md").read_text()
+    listed = re.search(r"runs the grid at every combination of values\s*\(([^)]*)\)", text)
+    assert listed, "README's sweep paragraph"
+    assert set(re.findall(r"`([a-z-]+)`", listed.group(1))) == set(PARAMS)
