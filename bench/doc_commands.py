@@ -8,6 +8,7 @@ Three forms are read, in page order:
 - inline commands: a `` `foon2pddl ...` `` span of prose with options or arguments (`` `foon2pddl plan` ``
   names the command).
 A synopsis (`[--option ...]`, an upper-case placeholder such as `G`, `FILE|-`, `PATHS`) is no command.
+Every reader of a page's fenced blocks, here and in tests/, reads them through `blocks` (and `joined`, `prose`).
 """
 
 from __future__ import annotations
@@ -29,6 +30,59 @@ _OUTPUTS = {"-o", "--output", "--plot", "--graphml", "--plan-file", "--report"}
 
 
 @dataclass(frozen=True)
+class Block:
+    """A fenced block of a page: its info string (`python`; "" for none), the line number of its first line (the
+    one under the opening fence), its lines."""
+
+    lang: str
+    start: int
+    lines: tuple[str, ...]
+
+
+def blocks(text: str) -> list[Block]:
+    """The page's fenced blocks, in order: a line starting with ``` opens one and the next such line closes it (an
+    unclosed one runs to the page's end). O(lines)."""
+    out: list[Block] = []
+    open_at: tuple[str, int] | None = None
+    lines = text.splitlines()
+    for number, line in enumerate(lines, start=1):
+        if not line.startswith("```"):
+            continue
+        if open_at is None:
+            open_at = (line[3:].strip(), number + 1)
+        else:
+            out.append(Block(open_at[0], open_at[1], tuple(lines[open_at[1] - 1:number - 1])))
+            open_at = None
+    if open_at is not None:
+        out.append(Block(open_at[0], open_at[1], tuple(lines[open_at[1] - 1:])))
+    return out
+
+
+def joined(block: Block) -> Iterator[tuple[int, int, str]]:
+    """(first line number, last line number, text) of each line of `block`, a `\\` continuation joined to the next
+    line (stripped, one space between); a continuation the block ends in is dropped."""
+    pending, first = "", 0
+    for number, line in enumerate(block.lines, start=block.start):
+        first = first if pending else number
+        line = (pending + " " + line.strip()) if pending else line
+        if line.endswith("\\"):
+            pending = line[:-1].rstrip()
+            continue
+        pending = ""
+        yield first, number, line
+
+
+def prose(text: str) -> str:
+    """The page with its fenced blocks, fences included, blanked (each character a space, line breaks kept): what
+    is outside them, at its own offsets."""
+    lines = text.splitlines(keepends=True)
+    for b in blocks(text):
+        for k in range(b.start - 2, min(b.start - 1 + len(b.lines) + 1, len(lines))):
+            lines[k] = "".join(c if c == "\n" else " " for c in lines[k])
+    return "".join(lines)
+
+
+@dataclass(frozen=True)
 class DocCommand:
     """One documented command: where it is shown and its shell text."""
 
@@ -46,43 +100,34 @@ def transcripts(text: str) -> list[tuple[str, list[str]]]:
     """(command, documented output lines) for every `$ foon2pddl` line in fenced blocks whose command
     reads only the checkout (the embedded example and the shipped test corpus, not `../`)."""
     out: list[tuple[str, list[str]]] = []
-    fenced, transcript = False, False
-    for line in text.splitlines():
-        if line.startswith("```"):
-            fenced, transcript = not fenced, False
-        elif fenced and line.startswith("$ foon2pddl "):
-            command = line[len("$ foon2pddl "):]
-            transcript = "../" not in command
-            if transcript:
-                out.append((command, []))
-        elif fenced and transcript and line:
-            out[-1][1].append(line)
+    for block in blocks(text):
+        transcript = False
+        for line in block.lines:
+            if line.startswith("$ foon2pddl "):
+                command = line[len("$ foon2pddl "):]
+                transcript = "../" not in command
+                if transcript:
+                    out.append((command, []))
+            elif transcript and line:
+                out[-1][1].append(line)
     return out
 
 
 def _shown(text: str) -> Iterator[tuple[int, str, str]]:
-    """(line number, command text, form) of every command a page shows, synopses included."""
-    fenced, pending = False, ""
-    for number, line in enumerate(text.splitlines(), start=1):
-        if line.startswith("```"):
-            fenced, pending = not fenced, ""
-            continue
-        if not fenced:
-            for m in _INLINE.finditer(line):
-                if " " in m.group(1).strip()[len("foon2pddl "):]:  # `foon2pddl plan` names the command
-                    yield number, m.group(1), "inline"
-            continue
-        for prompt in ("$ ", "; $ "):
-            if line.startswith(prompt + "foon2pddl "):
-                yield number, line[len(prompt):], "transcript"
-        if pending:
-            line = pending + " " + line.strip()
-        if line.endswith("\\"):
-            pending = line[:-1].rstrip()
-            continue
-        pending = ""
-        if line.startswith("foon2pddl "):
-            yield number, line, "block"
+    """(line number, command text, form) of every command a page shows, synopses included, in line order (a
+    command over `\\` continuations at its last line)."""
+    shown: list[tuple[int, str, str]] = []
+    for number, line in enumerate(prose(text).splitlines(), start=1):
+        for m in _INLINE.finditer(line):
+            if " " in m.group(1).strip()[len("foon2pddl "):]:  # `foon2pddl plan` names the command
+                shown.append((number, m.group(1), "inline"))
+    for block in blocks(text):
+        for number, line in enumerate(block.lines, start=block.start):
+            for prompt in ("$ ", "; $ "):
+                if line.startswith(prompt + "foon2pddl "):
+                    shown.append((number, line[len(prompt):], "transcript"))
+        shown += [(last, line, "block") for _, last, line in joined(block) if line.startswith("foon2pddl ")]
+    yield from sorted(shown, key=lambda s: s[0])
 
 
 def is_synopsis(command: str) -> bool:
@@ -118,9 +163,8 @@ def documented_commands(pages: tuple[Path, ...] = PAGES) -> list[DocCommand]:
     return list(seen.values())
 
 
-#: A code span of prose (it may run over a line break, not a paragraph's end) and a fenced block.
+#: A code span of prose (it may run over a line break, not a paragraph's end).
 _SPAN = re.compile(r"`((?:[^`\n]|\n(?![ \t]*\n))+)`")
-_FENCE = re.compile(r"^```[^\n]*\n(.*?)^```", re.M | re.S)
 #: The commands whose `--goal` a page may show; any other first word is no command (`--goal X` alone).
 _GOAL_COMMANDS = ("retrieve", "compile", "plan")
 
@@ -143,22 +187,14 @@ class GoalExample:
 def _goal_texts(text: str) -> Iterator[tuple[int, str]]:
     """(line number, text) of every code span of prose and every fenced-block line (`\\` continuations
     joined) that shows `--goal`, and of every goal in a table row's first code span under `## Goals`."""
-    for m in _FENCE.finditer(text):
-        pending, start = "", 0
-        for offset, line in enumerate(m.group(1).splitlines()):
-            number = text.count("\n", 0, m.start(1)) + 1 + offset
-            start = start if pending else number
-            line = (pending + " " + line.strip()) if pending else line
-            if line.endswith("\\"):
-                pending = line[:-1].rstrip()
-                continue
-            pending = ""
+    for block in blocks(text):
+        for start, _, line in joined(block):
             line = line.removeprefix("; ").removeprefix("$ ")
             if "--goal " in line:
                 yield start, line
-    prose = _FENCE.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)  # a fence's backticks open no span
-    goals_table = re.search(r"^## Goals\n(.*?)^#", prose, re.M | re.S)
-    for m in _SPAN.finditer(prose):
+    outside = prose(text)  # a fence's backticks open no span
+    goals_table = re.search(r"^## Goals\n(.*?)^#", outside, re.M | re.S)
+    for m in _SPAN.finditer(outside):
         number = text.count("\n", 0, m.start()) + 1
         span = " ".join(m.group(1).split())
         if re.search(r"--goal ", span):

@@ -11,14 +11,10 @@ from __future__ import annotations
 import doctest
 import importlib
 import os
-import re
-from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
-PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
-_BLOCK = re.compile(r"^```python\n(.*?)^```", re.M | re.S)
+from bench.doc_commands import PAGES, ROOT, blocks
 
 #: Modules not imported for doctests: the entry points run code at import.
 NOT_IMPORTED = {"foon2pddl.__main__"}
@@ -27,8 +23,9 @@ NOT_IMPORTED = {"foon2pddl.__main__"}
 def _blocks() -> list[tuple[str, str]]:
     out = []
     for page in PAGES:
-        for k, m in enumerate(_BLOCK.finditer(page.read_text()), start=1):
-            out.append((f"{page.relative_to(ROOT)}#{k}", m.group(1)))
+        python = [b for b in blocks(page.read_text()) if b.lang == "python"]
+        out += [(f"{page.relative_to(ROOT)}#{k}", "".join(line + "\n" for line in b.lines))
+                for k, b in enumerate(python, start=1)]
     return out
 
 

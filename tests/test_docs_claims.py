@@ -18,7 +18,7 @@ import pytest
 from click.testing import CliRunner
 from conftest import ROOT
 
-from bench.doc_commands import PAGES, documented_commands, missing_inputs
+from bench.doc_commands import PAGES, blocks, documented_commands, missing_inputs
 from foon2pddl.cli import main
 
 #: A paragraph's pointer into the transcript under it: "... poured into the avocado's bowl at step 10".
@@ -29,11 +29,13 @@ def _pointed_steps() -> list[tuple[str, str, str, int]]:
     """(page, command, verb, step) for every "<verb> ... at step N" in the prose just above a transcript."""
     out = []
     for page in PAGES:
-        text = page.read_text()
-        for block in re.finditer(r"^```\n\$ foon2pddl (.*)$", text, re.M):
-            before = text[:block.start()].rstrip().rsplit("\n\n", 1)[-1]  # the paragraph above the block
+        lines = page.read_text().splitlines()
+        for block in blocks("\n".join(lines)):
+            if block.lang or not block.lines or not block.lines[0].startswith("$ foon2pddl "):
+                continue
+            before = "\n".join(lines[:block.start - 2]).rstrip().rsplit("\n\n", 1)[-1]  # the paragraph above it
             for m in _AT_STEP.finditer(before):
-                out.append((page.name, block.group(1), m.group(1), int(m.group(2))))
+                out.append((page.name, block.lines[0][len("$ foon2pddl "):], m.group(1), int(m.group(2))))
     return out
 
 
@@ -428,14 +430,14 @@ def test_every_experiment_command_shown_says_how_long_it_runs():
     assert len(shown) >= 3
     silent = []
     for command in shown:
-        lines = (ROOT / command.page).read_text().splitlines()
+        text = (ROOT / command.page).read_text()
+        lines = text.splitlines()
         if command.form == "inline":  # the paragraph it is in (stop 45: constraints.md's 52,000-cell sweep)
             start = max((i for i in range(command.line) if not lines[i].strip()), default=-1) + 1
             paragraph = "\n".join(lines[start:]).split("\n\n")[0]
-        else:
-            lines = lines[command.line:]
-            close = next(i for i, line in enumerate(lines) if line.startswith("```"))
-            paragraph = "\n".join(lines[close + 1:]).strip().split("\n\n")[0]
+        else:  # the paragraph after the block it is in
+            block = next(b for b in blocks(text) if b.start <= command.line < b.start + len(b.lines))
+            paragraph = "\n".join(lines[block.start + len(block.lines):]).strip().split("\n\n")[0]
         if not (re.search(r"\d s\b|\d s wall|\d min\b", paragraph) and _COMMIT.search(paragraph)):
             silent.append(command.where)
     assert not silent, f"experiment commands with no run time (and commit) in the paragraph after them: {silent}"

@@ -12,6 +12,7 @@ import pytest
 from click.testing import CliRunner
 from conftest import ROOT
 
+from bench.doc_commands import blocks, prose
 from foon2pddl.cli import main
 from foon2pddl.io.jsonio import parse_json
 
@@ -176,13 +177,14 @@ def test_planning_md_says_what_its_planner_cmd_examples_need():
     with `no executable './my-downward/fast-downward.py'`: the page did not say it needs a Fast Downward checkout
     there. Every relative executable a shown command needs and the repository lacks is named in the prose."""
     text = (ROOT / "docs" / "planning.md").read_text()
-    prose = re.sub(r"```.*?```", "", text, flags=re.S)
-    block = text.split("so both of these work", 1)[1].split("```", 2)[1]
-    commands = [words[words.index("--planner-cmd") + 1] for words in map(shlex.split, block.splitlines())
+    said_at = text[:text.index("so both of these work")].count("\n") + 1
+    block = next(b for b in blocks(text) if b.start > said_at)  # the block the sentence introduces
+    commands = [words[words.index("--planner-cmd") + 1] for words in map(shlex.split, block.lines)
                 if "--planner-cmd" in words]
     needed = {shlex.split(c)[0] for c in commands}
     needed = {w for w in needed if w.startswith("./") and not (ROOT / w).exists()}
-    assert [w for w in needed if f"`{w.rsplit('/', 1)[0]}`" not in prose] == []
+    assert needed, commands  # the block read is the one with the `--planner-cmd` commands
+    assert [w for w in needed if f"`{w.rsplit('/', 1)[0]}`" not in prose(text)] == []
 
 
 def test_readme_layout_names_each_packages_own_files():

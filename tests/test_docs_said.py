@@ -13,13 +13,13 @@ import pytest
 from click.testing import CliRunner
 from conftest import ROOT
 
-from bench.doc_commands import PAGES
+from bench.doc_commands import PAGES, prose
 from foon2pddl.cli import main
 
 
 def _prose(page) -> str:
     """A page's text outside fenced blocks, its whitespace runs read as one space (claims wrap lines)."""
-    return " ".join(re.sub(r"```.*?```", " ", page.read_text(), flags=re.S).split())
+    return " ".join(prose(page.read_text()).split())
 
 
 def _matches(quote: str, line: str) -> bool:

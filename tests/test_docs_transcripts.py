@@ -19,7 +19,7 @@ from click.testing import CliRunner
 from conftest import ROOT
 
 from bench.doc_commands import PAGES as DOCS
-from bench.doc_commands import documented_commands, is_synopsis, missing_inputs, transcripts
+from bench.doc_commands import blocks, documented_commands, is_synopsis, joined, missing_inputs, prose, transcripts
 from foon2pddl.cli import main
 
 CASES = [case for doc in DOCS for case in transcripts(doc.read_text())]
@@ -42,6 +42,23 @@ def test_every_form_of_a_documented_command_is_read():
     assert sweep.endswith("--sweep level=2,3 -o out/sweep")  # the `\\` continuation joined
     assert shown["foon2pddl expand --pairs"].form == "inline"
     assert "foon2pddl plan" not in shown and not any(c.startswith("foon2pddl compile --goal G") for c in shown)
+
+
+def test_every_reader_of_fenced_blocks_reads_them_one_way():
+    """Stop 58's re-read F8: `_shown` and `_goal_texts` each read a page's fenced blocks their own way (a toggle, a
+    regex), each joining `\\` continuations and stripping prompts itself, and tests/ had four more. One reading:
+    `blocks` (the info string, the first line's number, the lines; an unclosed block runs to the end), `joined`
+    (continuations), `prose` (what is outside the blocks, at its own offsets)."""
+    page = ("Run `foon2pddl plan --goal x`.\n\n```python\nprint(1)\n```\ntext\n```\n$ foon2pddl retrieve --goal a\n"
+            "out line\nfoon2pddl plan --goal b \\\n  --time-limit 5\n```\n```\nfoon2pddl goals\n")
+    python, shell, unclosed = blocks(page)
+    assert (python.lang, python.start, python.lines) == ("python", 4, ("print(1)",))
+    assert (shell.lang, shell.start, shell.lines[0]) == ("", 8, "$ foon2pddl retrieve --goal a")
+    assert (unclosed.start, unclosed.lines) == (14, ("foon2pddl goals",))
+    assert list(joined(shell))[-1] == (10, 11, "foon2pddl plan --goal b --time-limit 5")
+    outside = prose(page)
+    assert len(outside) == len(page) and outside.splitlines()[5] == "text" and "print" not in outside
+    assert transcripts(page) == [("retrieve --goal a", ["out line", "foon2pddl plan --goal b \\", "  --time-limit 5"])]
 
 
 @pytest.mark.parametrize(("command", "synopsis"), [
@@ -112,21 +129,16 @@ def file_excerpts(text: str) -> list[tuple[str, dict[str, list[str]]]]:
     """(compile command, {file name: documented lines}) for every fenced block opening with
     `; $ foon2pddl compile ... -o out/`, its files introduced by `; out/NAME` lines."""
     out: list[tuple[str, dict[str, list[str]]]] = []
-    block: list[str] | None = None
-    for line in text.splitlines():
-        if line.startswith("```"):
-            if block and block[0].startswith("; $ foon2pddl compile "):
-                files: dict[str, list[str]] = {}
-                current = None
-                for item in block[1:]:
-                    if item.startswith("; out/"):
-                        current = files.setdefault(item[len("; out/"):], [])
-                    elif current is not None:
-                        current.append(item)
-                out.append((block[0][len("; $ foon2pddl "):], files))
-            block = [] if block is None else None
-        elif block is not None:
-            block.append(line)
+    for block in blocks(text):
+        if block.lines and block.lines[0].startswith("; $ foon2pddl compile "):
+            files: dict[str, list[str]] = {}
+            current = None
+            for item in block.lines[1:]:
+                if item.startswith("; out/"):
+                    current = files.setdefault(item[len("; out/"):], [])
+                elif current is not None:
+                    current.append(item)
+            out.append((block.lines[0][len("; $ foon2pddl "):], files))
     return out
 
 
