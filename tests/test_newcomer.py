@@ -995,3 +995,14 @@ def test_a_category_typed_wrong_under_gen_plan_names_the_close_categories():
     assert r.exit_code == 2, r.output
     assert "unknown object label 'beverage'" in r.stderr and "close categories: beverages" in r.stderr, r.stderr
     assert "close categories" not in run("plan", "--network", "gen", "--goal", "unicorn").stderr
+
+
+def test_the_objects_account_says_where_the_thing_poured_onto_stands():
+    """After 60cd616 the pancake's last step read `pour maple_syrup_2 (a portion of maple_syrup_1) from bottle_1 onto
+    pancake_1, changing plate_1` (the soup's basil, the fruit salad's cream the same): the plate the pancake lies on
+    is where the syrup goes, said as the place of what it is poured onto."""
+    r = run("plan", "--goal", "pancake")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert account[-1] == ("14. pour maple_syrup_2 (a portion of maple_syrup_1) from bottle_1 onto pancake_1 on "
+                           "plate_1"), account

@@ -192,7 +192,8 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
 
     `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
     the motion, each object that changes holder (from, into), each other object whose state changes (after a
-    move: `into bowl_4, changing greek_salad_1`) and where it stays (`cut avocado_1 on cutting_board_1`), then
+    move: `into bowl_4, changing greek_salad_1`; one that holds where a move goes is that place: `onto pancake_1 on
+    plate_1`) and where it stays (`cut avocado_1 on cutting_board_1`), then
     what the step consumes and makes (in the holder of what it makes; used up with nothing made: `, using up
     butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
     holder something moves into: the dressing the lettuce is poured onto is no tool).
@@ -204,11 +205,12 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     """
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
-    moves, holders, taken = [], set(), []
+    moves, dests, holders, taken = [], [], set(), []
     listed = {b.object for b in step.bindings if b.role}  # the objects the unit names
     for m, src in _portions(step, before, after, made):
         moves.append(f"{m} (a portion of {src})" + (f" from {before[src].holder}" if before[src].holder else "")
                      + _into(after[m]))
+        dests.append(after[m].holder)
         holders.update({src, m} | {h for h in (before[src].holder, after[m].holder) if h})
         made.remove(m)
     for b in step.bindings:
@@ -220,6 +222,7 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
                 moves.append(x + into)
             else:
                 moves.append(f"{x}" + (f" from {was.holder}" if was.holder else "") + into)
+            dests.append(now.holder)
             holders.update(h for h in (was.holder, now.holder) if h)
     where = sorted({after[m].holder for m in made if after[m].holder})
     holders.update(where)
@@ -229,6 +232,14 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     worked = [b for b in work if b.before is None or not soiled(b.before, b.after)]
     if not (worked or moves or made or used):
         worked = work
+    # a changed object that holds where a move goes is its place: `onto pancake_1 on plate_1`
+    seated, stands = {b.object for b in worked}, set()
+    for d, i in {d: i for i, d in enumerate(dests) if d}.items():  # the last move into each destination
+        was_at, now_at = before.get(d), after.get(d)
+        if now_at is not None and was_at is not None and now_at.holder in seated and was_at.holder == now_at.holder:
+            moves[i] += f" {'on' if now_at.relation is Relation.ON else 'in'} {now_at.holder}"
+            stands.add(now_at.holder)
+    worked = [b for b in worked if b.object not in stands]
     said = ", ".join(moves)
     if worked:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
         names = ", ".join(b.object for b in worked)
@@ -247,7 +258,7 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
                      + ", ".join(made))
     elif used:  # used up, nothing made: `pour onion_1 from board_1 into pan_1, using up butter_1`
         parts[1] += (", " if said else "") + "using up " + ", ".join(used)
-    others = [x for x in others if x not in at]
+    others = [x for x in others if x not in at and x not in stands]
     if others:
         parts.append("with " + ", ".join(others))
     if not taken:
