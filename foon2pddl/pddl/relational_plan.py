@@ -17,7 +17,11 @@
   label with the object's (whichever holds it: `Slot.late_empties`), keeps its contents when they do not (it may be a
   carton; the kitchen adds one listing what it holds when the task has none), and the object simply moves when no node
   of the task says what a holder of its label holds (a stove, a table), or when its node names no place after the unit
-  (the squeezer that ends `dirty`: it leaves the surface whole). An object consumed out of a holder the unit does not
+  (the squeezer that ends `dirty`: it leaves the surface whole), or when a unit of the task made it and no node of
+  the task lists its label in a holder of that label (`listings`: the loaf the attach made on a board, moved onto the
+  foil, `0016-easy_garlic_bread-one-pot-chef.txt:157`; the garlic bread baked in an oven whose nodes list the loaf,
+  taken out at `:221`): nothing says that holder keeps some (`lists`; a unit FOON's plan as counted fires again is
+  read with none, `relational_reading._fired_again`). An object consumed out of a holder the unit does not
   name empties it likewise; all that leaves holders of one label in a unit leaves at once (the beef and the onion leave
   the pan together).
   A container poured out whole (`holder_flows.unit_flows`) is emptied of what it held.
@@ -48,7 +52,7 @@ from .holder_flows import Flow, gained, unit_flows
 from .holders import Fate, RelRole, relational_roles
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
-           "plan_unit", "quiet_places", "silent_labels", "without"]
+           "listings", "plan_unit", "quiet_places", "silent_labels", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -135,6 +139,12 @@ def quiet_places(nodes: Iterable[ObjectNode], units: Iterable[FunctionalUnit],
                                    if c not in names and not any(head_of(c, x) for x in names)}
 
 
+def listings(nodes: Iterable[ObjectNode]) -> frozenset[tuple[str, str]]:
+    """(holder label, content label) for every label one of `nodes` lists (`places.listed`): the holders a task
+    says hold that label."""
+    return frozenset((x.label, c) for x in nodes for c in listed(x))
+
+
 def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str],
            called: frozenset[tuple[str, str]]) -> bool:
     """Whether the task's units fill holders named `holder` (or, when no object of the task has that label, a
@@ -154,11 +164,14 @@ def called_fills(units: Iterable[FunctionalUnit]) -> frozenset[tuple[str, str]]:
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
               holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset(),
-              sole: frozenset[ObjectNode] = frozenset()) -> UnitPlan:
+              sole: frozenset[ObjectNode] = frozenset(),
+              lists: frozenset[tuple[str, str]] | None = None) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holder_flows.gained`; module doc), whose nodes have `labels` and place
-    objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`."""
+    objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`;
+    `lists`: (holder label, content label) for every label a node of the task lists (`listings`; None: not known,
+    every holder the unit does not name may keep a portion)."""
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -195,8 +208,12 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                 # whichever container holds it is emptied of it (it ends in no place; it holds objects a portion
                 # would leave behind: the buttered bread leaves the plate whole, the butter in it with it)
                 late_empties = True
-            else:
+            elif lists is None or r.role.before in kitchen or (src.holder, r.role.label) in lists:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
+            else:  # made by a unit of the task, in a holder no node of the task lists it in: nothing says that
+                # holder keeps some, so the whole leaves whichever holds it (the loaf off the board,
+                # `0016-easy_garlic_bread-one-pot-chef.txt:157`)
+                late_empties = True
         if fate is Fate.SPLITS and _into_one_staying(rels, r):
             fate = Fate.MOVES  # into a mixture that stays in the holder: still in it, so the holder's list holds
         if fate is Fate.SPLITS:

@@ -27,7 +27,7 @@ from .holder_flows import gained
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, delete_free_plan, derive_counts
 from .list_drops import kept_in_place, taken_again
-from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, plan_unit, quiet_places
+from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, listings, plan_unit, quiet_places
 
 __all__ = ["Reading", "read_units"]
 
@@ -112,6 +112,15 @@ def _rest_stays(sole: frozenset[ObjectNode], counted: Sequence[tuple[Foon, Insta
     return frozenset(out)
 
 
+def _fired_again(counted: Sequence[tuple[Foon, InstanceCounts]]) -> frozenset[FunctionalUnit]:
+    """The units FOON's plan as counted fires more than once. A made object such a unit takes whole from a holder
+    no node lists it in (`relational_plan.listings`) is read as a portion again: the second firing takes what the
+    first left (the pigs in a blanket's pick-and-place onto the tray, `0052-pigs_in_a_blanket.txt:89`, fired twice
+    by the plan unfolded, whose bake and last pick-and-place take trays its output node names; whole, the roll and
+    what it takes fired twice too, 15 -> 16 objects on the odd half). O(firings)."""
+    return frozenset(net.units[u] for net, c in counted for u, k in c.firings if k > 1)
+
+
 def _as_now(foon: Foon, st: Stitched) -> Foon | None:
     """`foon` (FOON's own network) with each unit of a stitch of a made node (`input_stitch._left_by`,
     `_held_before`: the object as a unit moving it on left it) in the stitched unit's place, indexes unchanged; None
@@ -160,8 +169,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         memo["task"] = (task_nodes, gains, frozenset(n.label for n in task_nodes),
                         holding_labels(f.units[u] for u in units),
                         called_fills(f.units[u] for u in units),  # FOON-GEN's `pan`: the cookware
-                        _taken_once(f, units, inp.kitchen, gains))
-    task_nodes, filled, labels, holding, called, once = memo["task"]
+                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes))
+    task_nodes, filled, labels, holding, called, once, lists = memo["task"]
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
         key = ("silent", tuple(speakers))
@@ -169,11 +178,14 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
         return memo[key]
 
-    def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode]) -> tuple:  # the units' reading, made once
-        key = ("plans", silent, sole)
+    def plan_of(u: int, silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> UnitPlan:
+        return plan_unit(f.units[u], inp.kitchen, silent, filled, labels, holding, called, sole,
+                         None if u in split else lists)
+
+    def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> tuple:  # made once
+        key = ("plans", silent, sole, split)
         if key not in memo:
-            plans, drops = kept_in_place(f, units, {u: plan_unit(f.units[u], inp.kitchen, silent, filled, labels,
-                                                                 holding, called, sole) for u in units})
+            plans, drops = kept_in_place(f, units, {u: plan_of(u, silent, sole, split) for u in units})
             if "fired" not in memo:  # FOON's own plan as counted, in firing order: the taker it fires first is named
                 found = delete_free_plan(inp.foon, inp.kitchen, inp.candidates, together=True)
                 memo["fired"] = found[0] if found is not None else ()
@@ -215,14 +227,17 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         return counted
 
     def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
-        silent = quiet(speakers)
+        silent, split = quiet(speakers), frozenset()
         while True:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
-            plans, drops, said, portions, roles_of = plans_of(silent, sole)
+            plans, drops, said, portions, roles_of = plans_of(silent, sole, split)
             counted = counted_by(roles_of)
             again = _rest_stays(sole, counted)
-            if not again:
+            fired = _fired_again(counted)  # a made object it takes whole from a holder no node lists it in: a portion
+            more = frozenset(u for u in units if u not in split and f.units[u] in fired
+                             and plan_of(u, silent, sole, split) != plan_of(u, silent, sole, split | {u}))
+            if not again and not more:
                 break
-            sole -= again  # `sole` shrinks every round: at most |sole| rounds
+            sole, split = sole - again, split | more  # `sole` shrinks, `split` grows: at most |sole| + |units| rounds
         counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
         if narrow is not None and through:  # counted in `st.through`: its plan named by the task's unit indexes
             counts = counts.renumbered(st.in_task)
