@@ -40,6 +40,10 @@ def test_goal_syntax(text, label, states):
     ("bowl: in [pot]]", "unbalanced bracket"),
     ("bowl: [pot]", "cannot read state"),
     ("bowl: in [pot] extra", "cannot read state"),
+    # issue 24's tried-again pass: a node as the tools print it, cut short, read as the label 'guacamole (in [bowl]'
+    ("guacamole (in [bowl]", r"unbalanced parenthesis in the label 'guacamole \(in \[bowl\]'"),
+    ("onion (chopped", "unbalanced parenthesis"),
+    ("onion chopped)", "unbalanced parenthesis"),
 ])
 def test_goal_syntax_errors(text, problem):
     with pytest.raises(ValueError, match=problem):

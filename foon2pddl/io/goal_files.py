@@ -95,6 +95,9 @@ def parse_goal_spec(text: str) -> GoalSpec:
     label = normalize_label(label)
     if not label:
         raise ValueError("goal has no object label (expected 'label' or 'label: state, ...')")
+    if "(" in label or ")" in label:  # a printed node cut short: `guacamole (in [bowl]`, no label of the data
+        raise ValueError(f"unbalanced parenthesis in the label {label!r} (a node as the tools print it is "
+                         "'label (state, ...)')")
     if not sep:
         return GoalSpec(label)
     states = [parse_state_text(part) for part in _split_states(rest)]
