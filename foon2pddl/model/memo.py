@@ -10,9 +10,13 @@ from __future__ import annotations
 import functools
 import weakref
 from collections.abc import Callable
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .foon import Foon
 
 T = TypeVar("T")
+R = TypeVar("R")
 
 
 def per_network(fn: Callable[..., T]) -> Callable[..., T]:
@@ -33,3 +37,17 @@ def per_network(fn: Callable[..., T]) -> Callable[..., T]:
 
     wrapper.cache = cache  # type: ignore[attr-defined]
     return wrapper
+
+
+def per_network_reading(read: Callable[[Foon], R],
+                        rewrite: Callable[[Foon, R], Foon]) -> Callable[[Foon], tuple[Foon | None, R]]:
+    """`foon -> (rewrite(foon, reading), reading)` with `reading = read(foon)`, once per network object: the
+    network read another way where FOON's words say so, and the readings for the task's notes (`pddl.list_placed`,
+    `pddl.list_arrivals`, `pddl.list_brought`, `pddl.mutual_lists`). The network is None when the reading is empty
+    (falsy): a cached value holding the network it is keyed by would keep that key alive, never dropped."""
+
+    def both(foon: Foon) -> tuple[Foon | None, R]:
+        reading = read(foon)
+        return (rewrite(foon, reading) if reading else None), reading
+
+    return per_network(both)

@@ -27,7 +27,7 @@ from dataclasses import replace
 
 from ..model.aliases import unit_aliases
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
-from ..model.memo import per_network
+from ..model.memo import per_network_reading
 from ..model.pairing import unit_roles
 from ..model.places import listed, place_of
 from ..model.where import short_path, unit_where
@@ -62,15 +62,13 @@ def arrivals(foon: Foon) -> dict[int, tuple[ObjectNode, FunctionalUnit]]:
     return out
 
 
-@per_network
-def _arrived_network(foon: Foon) -> tuple[Foon | None, dict[int, tuple[ObjectNode, FunctionalUnit]]]:
-    """The network with each unit of `arrivals` giving its node (None when there is none: the cache must not keep
-    its own key alive), and the readings: once per network object."""
-    found = arrivals(foon)
-    if not found:
-        return None, found
+def _network(foon: Foon, found: dict[int, tuple[ObjectNode, FunctionalUnit]]) -> Foon:
+    """The network with each unit of `found` giving its node too."""
     units = tuple(replace(x, outputs=(*x.outputs, found[u][0])) if u in found else x for u, x in enumerate(foon.units))
-    return Foon(units, foon.level), found
+    return Foon(units, foon.level)
+
+
+_arrived_network = per_network_reading(arrivals, _network)
 
 
 def read_arrivals(inp: LevelInputs) -> tuple[LevelInputs, dict[int, tuple[FunctionalUnit, str]]]:

@@ -28,7 +28,7 @@ from dataclasses import replace
 
 from ..analysis.reachability import reachable
 from ..model.foon import Foon, ObjectNode
-from ..model.memo import per_network
+from ..model.memo import per_network, per_network_reading
 from ..model.places import listed
 from .encoding import LevelInputs
 
@@ -66,11 +66,7 @@ def _network(foon: Foon, found: dict[int, tuple[ObjectNode, ObjectNode, tuple[st
                       if u in found else x for u, x in enumerate(foon.units)), foon.level)
 
 
-@per_network
-def _brought_network(foon: Foon) -> tuple[Foon | None, dict[int, tuple[ObjectNode, ObjectNode, tuple[str, ...]]]]:
-    """`_network` of all `brought` (None when there is none), and the readings: once per network object."""
-    found = brought(foon)
-    return (_network(foon, found) if found else None), found
+_brought_network = per_network_reading(brought, _network)
 
 
 #: Networks of some of the readings (`_network`) `read_brought` keeps per network object.

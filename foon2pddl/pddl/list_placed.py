@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
-from ..model.memo import per_network
+from ..model.memo import per_network_reading
 from .encoding import LevelInputs
 from .holders import placed_products
 
@@ -43,11 +43,7 @@ def _network(foon: Foon, placed: dict[ObjectNode, ObjectNode]) -> Foon:
                               outputs=tuple(placed.get(o, o) for o in x.outputs)) for x in foon.units), foon.level)
 
 
-@per_network
-def _placed_network(foon: Foon) -> tuple[Foon | None, dict[ObjectNode, ObjectNode]]:
-    """`_network` of `placed_nodes` (None when there is none), and those nodes: once per network object."""
-    placed = placed_nodes(foon)
-    return (_network(foon, placed) if placed else None), placed
+_placed_network = per_network_reading(placed_nodes, _network)
 
 
 def read_placed(inp: LevelInputs) -> tuple[LevelInputs, dict[int, tuple[FunctionalUnit, str]],

@@ -17,7 +17,7 @@ from collections.abc import Collection
 from dataclasses import replace
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode, make_node, make_state
-from ..model.memo import per_network
+from ..model.memo import per_network_reading
 from ..model.places import listed, places
 from .encoding import LevelInputs
 
@@ -59,21 +59,20 @@ def mutual_readings(foon: Foon) -> dict[ObjectNode, tuple[ObjectNode, Functional
     return out
 
 
-@per_network
-def _mutual_network(foon: Foon) -> tuple[Foon | None, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
-    """The network with every node of `mutual_readings` read so (None when there is none: the cache must not keep
-    its own key alive), and the readings: once per network object (an experiment encodes a hundred goals over
-    one network)."""
-    reads = mutual_readings(foon)
-    if not reads:
-        return None, reads
+def _network(foon: Foon, reads: dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]) -> Foon:
+    """The network with every node of `reads` read so (a unit given one node twice keeps it once)."""
 
     def unit(u: FunctionalUnit) -> FunctionalUnit:
         ins = tuple(dict.fromkeys(reads[n][0] if n in reads else n for n in u.inputs))
         outs = tuple(dict.fromkeys(reads[n][0] if n in reads else n for n in u.outputs))
         return FunctionalUnit(ins, u.motion, outs, u.sources)
 
-    return Foon(tuple(map(unit, foon.units)), foon.level), reads
+    return Foon(tuple(map(unit, foon.units)), foon.level)
+
+
+#: `_network` of `mutual_readings`, and the readings: once per network object (an experiment encodes a hundred
+#: goals over one network).
+_mutual_network = per_network_reading(mutual_readings, _network)
 
 
 def read_mutual(inp: LevelInputs) -> tuple[LevelInputs, dict[ObjectNode, tuple[ObjectNode, FunctionalUnit]]]:
