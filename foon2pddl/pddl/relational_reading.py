@@ -57,6 +57,20 @@ class Reading:
     sole: frozenset[ObjectNode] = frozenset()
 
 
+@dataclass(frozen=True)
+class _CountsKey:
+    """The memo key of one count in `read_units`: the network and the roles reader by identity (the memo holds
+    both, so an id names no other object while it lives), the plan's units, and the switches it was counted with."""
+
+    net: int
+    need: tuple[int, ...]
+    roles_of: int
+    narrow: frozenset[ObjectNode] | None
+    placed: bool
+    other_makers: bool
+    refill: bool
+
+
 def _short_of_goal(plans: dict[int, UnitPlan], makers: Mapping[ObjectNode, FunctionalUnit]
                    ) -> tuple[dict[int, UnitPlan], dict[int, tuple[FunctionalUnit, str]]]:
     """`plans` with every node a unit only implies for an object (its `after` or `portion` node, not one of the
@@ -205,14 +219,14 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     def count(net: Foon, need: tuple[int, ...], roles_of: RolesOf) -> InstanceCounts:  # objects for a plan in `net`
         # `net`: `inp.foon`, `st.through` or `_as_now`'s (a cache of `NOWS_KEPT`); the memo holds it, so its id
         # names no other network while the memo lives
-        key = ("counts", id(net), need, id(roles_of), narrow or None, placed, other_makers, refill)
+        key = _CountsKey(id(net), need, id(roles_of), narrow or None, placed, other_makers, refill)
         if key not in memo:
             memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
                                            inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
                                            together=True, stitched=True, reuse=True, placed=placed,
                                            other_makers=other_makers, filled=refill)
             if other_makers and not memo[key][1].other_maker:  # the same counts without other makers' plans:
-                memo.setdefault(key[:6] + (False, *key[7:]), memo[key])  # FOON's own plan unfolded counts them again no more
+                memo.setdefault(replace(key, other_makers=False), memo[key])  # FOON's own plan unfolded counts them again no more
         return memo[key][1]
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
