@@ -147,7 +147,7 @@ def test_an_object_a_kitchen_container_lists_never_starts_in_a_node_only_a_unit_
                                                       n("faucet", "off"), n("bowl", contains("flour")),
                                                       n("flour", inside("bowl"))], dough)
     assert [u.motion.label for u in outcome.tree.units] == ["turn on", "fill", "pour"]
-    # the fill's cup serves the pour (`count_reuse._filled`): no kitchen cup of water is counted; stated, one is
+    # the fill's cup serves the pour (`count_reuse._refilled_with`): no kitchen cup of water is counted; stated, one is
     assert "water" not in {x.label for x in outcome.task.instances if x.start is not None}
     outcome = clean_unit_plan([turn_on, fill, pour], [n("cup", contains("water")), n("cup", "empty"),
                                                       n("faucet", "off"), n("bowl", contains("flour")),

@@ -11,11 +11,11 @@ kitchen node that names no place and lists nothing (`_alone`: `bowl (empty)`, `s
 again, and, as the unfolding counts it, a portion a unit makes in the kitchen node it reads: an object left in
 `garlic (in [bowl], peeled)` is in a bowl of its own, not the kitchen's `bowl (contains {garlic})` a later pour
 takes with it (the caesar salad, `ACT-0080-caesar_salad.txt:29`: no state applied the pour). A container
-left in a kitchen node with everything it lists put in it by the same firing (`_filled`: the turn on at
+left in a kitchen node with everything it lists put in it by the same firing (`_refilled_with`: the turn on at
 `0085-mini_bacon_egg_breakfast_pizza.txt:231` leaves `measuring cup (contains {water})` holding `water (from
 [faucet], in [measuring cup])`) is taken there again by a unit that takes it with those contents' nodes (the pour
 at `:251`), as it would be were the node no kitchen node: what it holds is what the taker pairs with it. That one
-(`filled`, `instance_counts.derive_counts`') only lowers the counts of the plan chosen without it, never chooses
+(`refill`, `instance_counts.derive_counts`') only lowers the counts of the plan chosen without it, never chooses
 another plan: the kitchen container it stands for goes, and with it the node the completion starts its contents in,
 which another count may take from the kitchen (`relational_objects.task_objects`). The plan
 runs on these counts by construction, so the task stays solvable whenever FOON's semantics makes the goal; a node
@@ -36,12 +36,12 @@ __all__ = ["reused"]
 
 
 def reused(foon: Foon, steps: Sequence[tuple[int, int]], kitchen: frozenset[ObjectNode], target: ObjectNode,
-           roles_of: Callable[[FunctionalUnit], tuple[Role, ...]], filled: bool = True) -> Counter[ObjectNode] | None:
+           roles_of: Callable[[FunctionalUnit], tuple[Role, ...]], refill: bool = True) -> Counter[ObjectNode] | None:
     """Per kitchen node, the objects the plan `steps` ((unit, times) in firing order) needs to start there when
     an object a firing leaves in a kitchen node serves a later taker (module doc); the goal `target` must hold
     one at the end. None when the plan does not run (a node no kitchen holds has no object when a role takes
-    it): the unfolding's counts stand. `filled`: a container left filled in a kitchen node is taken again too
-    (`_filled`)."""
+    it): the unfolding's counts stand. `refill`: a container left filled in a kitchen node is taken again too
+    (`_refilled_with`)."""
     there: Counter[ObjectNode] = Counter()  # objects in each node now
     start: Counter[ObjectNode] = Counter()
     left_in: dict[ObjectNode, list[frozenset[ObjectNode]]] = {}  # kitchen node -> per container left there, its contents
@@ -66,7 +66,7 @@ def reused(foon: Foon, steps: Sequence[tuple[int, int]], kitchen: frozenset[Obje
                         there[r.before] -= 1
                     if r.after not in kitchen or _alone(r.after) or (r.before is None and r.after in read):
                         there[r.after] += 1
-                    elif filled and (inside := _filled(r, roles, kitchen)) is not None:
+                    elif refill and (inside := _refilled_with(r, roles, kitchen)) is not None:
                         left_in.setdefault(r.after, []).append(inside)
     if there[target] < 1:
         if target not in kitchen:
@@ -82,7 +82,7 @@ def _alone(node: ObjectNode) -> bool:
     return not places(node) and not listed(node)
 
 
-def _filled(container: Role, roles: Sequence[Role], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode] | None:
+def _refilled_with(container: Role, roles: Sequence[Role], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode] | None:
     """The nodes the firing of `roles` leaves in or on `container`'s object, when they are everything its node
     after lists, each of a label it lists, placed in or on its label, and no kitchen node (so counted where they
     are); None otherwise: the container holds what the kitchen's node pairs with it, or more than its firing put

@@ -90,8 +90,9 @@ class InstanceCounts:
     #: an object the plan leaves in a kitchen node serves a later taker there (`count_reuse`)
     reused: bool = False
     #: a container a unit fills, left in a kitchen node, serves a later taker in place of a kitchen one
-    #: (`count_reuse._filled`): fewer objects at that node than the plan's count without that reuse
-    filled: bool = False
+    #: (`count_reuse._refilled_with`; `derive_counts`' `refill`): fewer objects at that node than the plan's count
+    #: without that reuse
+    refilled: bool = False
     #: the plan counted has a needed node made by another of its makers (`count_plans._other_makers`): only then do
     #: the counts without those plans (`derive_counts(other_makers=False)`, FOON's own plan unfolded) differ
     other_maker: bool = False
@@ -116,7 +117,7 @@ class InstanceCounts:
         unmade = tuple(sorted((Counter(dict(self.unmade)) | Counter(dict(other.unmade))).items()))
         same = (at_node, unmade) == (self.at_node, self.unmade)
         return InstanceCounts(at_node, unmade, self.firings, self.unfolded if same else (), self.reused or other.reused,
-                              self.filled or other.filled, self.other_maker or other.other_maker)
+                              self.refilled or other.refilled, self.other_maker or other.other_maker)
 
     def renumbered(self, index: Sequence[int]) -> InstanceCounts:
         """These counts with unit `u` of the plan named `index[u]` (the network counted in has other indexes than
@@ -198,7 +199,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
                   reuse: bool = False, placed: bool = False, other_makers: bool = True,
-                  filled: bool = True) -> InstanceCounts:
+                  refill: bool = True) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
@@ -209,10 +210,10 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     makers by holder reach (`count_together.makers_together`); `other_makers` (with `together`): the plans with a
     needed node made by another of its makers count too (`count_plans._other_makers`); the relational counts take
     them but the one `plan` falls back on last (`EncodeOptions.own`); those plans are counted after the others, so
-    counts that keep none of them (`InstanceCounts.other_maker` false) are those without them. `filled` (with
-    `reuse`): a container a unit fills in a kitchen node serves a later taker too (`count_reuse._filled`), for the
-    plan chosen without it: fewer objects for that plan, never another plan (`InstanceCounts.filled` says when it
-    lowered the count).
+    counts that keep none of them (`InstanceCounts.other_maker` false) are those without them. `refill` (with
+    `reuse`): a container a unit fills in a kitchen node serves a later taker too (`count_reuse._refilled_with`), for
+    the plan chosen without it: fewer objects for that plan, never another plan (`InstanceCounts.refilled` says when
+    it lowered the count).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -222,7 +223,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     def as_is(plan: tuple[int, ...], target: ObjectNode) -> int:  # objects `plan` counts unfolded as it is
         at, new, _ = unfold(foon, plan, kitchen | _at_hand(foon, plan, kitchen), target, roles_of)
         return at.total() + new.total()
-    lowered = False  # a container filled in a kitchen node serves a later taker: fewer for the plan chosen
+    refilled = False  # a container filled in a kitchen node serves a later taker: fewer for the plan chosen
     found, *other = delete_free_plans(foon, kitchen, candidates, together, kinds, placed,
                                       swapped if together and other_makers else None, as_is)
     # where instances can start: with a plan, a place the plan does not use gets an object only when counts are
@@ -260,8 +261,8 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
         other_maker = best >= unswapped
-        if reuse and filled and (r := reused(foon, steps[best][::-1], homes[best], found[1], roles_of)) is not None:
-            at_kitchen, lowered = r, r != at_kitchen
+        if reuse and refill and (r := reused(foon, steps[best][::-1], homes[best], found[1], roles_of)) is not None:
+            at_kitchen, refilled = r, r != at_kitchen
         nodes |= set(at_kitchen)
         labels |= set(created)
 
@@ -280,7 +281,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
     unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
     return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None,
-                          lowered, other_maker)
+                          refilled, other_maker)
 
 
 @dataclass(frozen=True)

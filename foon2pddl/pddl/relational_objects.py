@@ -11,7 +11,7 @@ it; a unit taking a made node as it was before a later unit moved the object on 
 that counts fewer, `relational_reading._as_now`), in the kitchen with the network's nodes the objects the completion adds start in (the holders its nodes imply,
 and what kitchen containers list: the kofta's pour takes the water of the kitchen's cup below the faucet, not
 another cup filled again): the cut, 4 objects. Those nodes are read from the wide count, and also from the wide
-count without a container a unit fills in a kitchen node taken again (`count_reuse._filled`) when that lowered it:
+count without a container a unit fills in a kitchen node taken again (`count_reuse._refilled_with`) when that lowered it:
 the kitchen bowl of flour it stands for goes, and with it `flour (in [bowl], powder)`, where the small count takes
 the flour from the kitchen (the blueberry muffin on the universal FOON of 70 subgraphs drawn with seed 56: 41
 objects in the problem, 44 when read from the wide count alone); the small count of fewer objects is kept. Kept
@@ -100,7 +100,7 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
         return wide
     # where the wide task's objects start, also without a filled container taken again when that lowered its
     # count (its contents' node is one the small count may take from the kitchen): the small count of fewer objects
-    bases = [wide] if placed or not wide.reading.counts.filled else [
+    bases = [wide] if placed or not wide.reading.counts.refilled else [
         wide, _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, refill=False)]
     starts = dict.fromkeys(frozenset() if placed else base.implied | {
         x.start for x in base.instances if x.start is not None and x.start not in inp.kitchen} for base in bases)

@@ -172,9 +172,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     nodes too (`relational_objects`), from the plan through the stitches alone with `through`, with makers by holder
     reach with `placed` (`count_together.makers_together`), and the plans with a needed node made by another of its
     makers counted too with `other_makers` (`instance_counts.derive_counts`; without: FOON's own plan unfolded), and a
-    container a unit fills in a kitchen node taken again with `refill` (`count_reuse._filled`). `memo`: a dict shared by the calls with the same `inp`, `st`, `stated` and
-    `overrides` (counted wide, then small): the units' readings by speakers and the counts by plan and kitchen are
-    made once (the same values: read twice, they cost a GEN trial's encoding a third more)."""
+    container a unit fills in a kitchen node taken again with `refill` (`count_reuse._refilled_with`; another idea
+    than `Reading.filled`, the (holder, content) label pairs the units fill). `memo`: a dict shared by the calls with
+    the same `inp`, `st`, `stated` and `overrides` (counted wide, then small): the units' readings by speakers and
+    the counts by plan and kitchen are made once (the same values: read twice, they cost a GEN trial's encoding a
+    third more)."""
     memo = {} if memo is None else memo
     f, units = st.foon, st.units
     if "task" not in memo:
@@ -224,7 +226,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = net, derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen,
                                            inp.candidates, stated=stated, overrides=overrides, roles_of=roles_of,
                                            together=True, stitched=True, reuse=True, placed=placed,
-                                           other_makers=other_makers, filled=refill)
+                                           other_makers=other_makers, refill=refill)
             if other_makers and not memo[key][1].other_maker:  # the same counts without other makers' plans:
                 memo.setdefault(replace(key, other_makers=False), memo[key])  # FOON's own plan unfolded counts them again no more
         return memo[key][1]
