@@ -680,3 +680,18 @@ def test_readme_lists_every_sweepable_parameter():
     listed = re.search(r"runs the grid at every combination of values\s*\(([^)]*)\)", text)
     assert listed, "README's sweep paragraph"
     assert set(re.findall(r"`([a-z-]+)`", listed.group(1))) == set(PARAMS)
+
+
+def test_retrieval_md_quotes_the_breakfast_pizza_as_retrieve_says_it():
+    """retrieval.md quoted `spread sour cream from the scraper into the pizza dough (...)` after 14727fa made the step
+    say `onto the pizza dough` (issue 24's tried-again pass). Every quote of the breakfast pizza's steps there (a
+    quote naming its sour cream or its bacon) is what `retrieve` prints, up to its `...`."""
+    text = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
+    quotes = re.findall(r"`([a-z]+ (?:sour cream|onion \(peeled, sliced\) and bacon)[^`]*)`", text)
+    assert len(quotes) >= 3, quotes
+    r = CliRunner().invoke(main, ["retrieve", str(ROOT / "tests/data/foon-subgraphs/0085-mini_bacon_egg_breakfast_pizza.txt"),
+                                  "--goal", "eggs and bacon pizza"])
+    assert r.exit_code == 0, r.stderr
+    said = " ".join(r.stdout.split())
+    for q in quotes:
+        assert " ".join(q.split(" (...)")[0].split(" ...")[0].split()) in said, q
