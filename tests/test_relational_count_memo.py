@@ -2,15 +2,21 @@
 `EncodeOptions.memo`), so the network is read once and the wide count, which every other count starts from
 (`relational_objects.task_objects`), is derived once, not once per count. The omelette of
 tests/test_relational_placed_gate.py is compiled six ways (small, through the stitches, with makers by holder reach,
-wide, FOON's own plan unfolded, wide with those makers)."""
+wide, FOON's own plan unfolded, wide with those makers). A count is derived again only when a unit it read has other
+roles now (`relational_reading._asking`): the lemonade of `0072-old-fashioned_lemonade.txt` reads its units again with
+the same roles (4 counts derived, 3 distinct)."""
 
 from __future__ import annotations
 
 from collections import Counter
 
+from conftest import SUBGRAPHS
 from relational_checks import compiled_counts
 from test_relational_placed_gate import GOAL, omelette
 
+from foon2pddl.io.files import load
+from foon2pddl.model.goal import resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import default_kitchen
 from foon2pddl.pddl import relational_reading
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.render import render
@@ -19,13 +25,15 @@ from foon2pddl.planners.solve import plan
 
 def _derived(monkeypatch) -> list[tuple]:
     """Each count derived from now on, by what it is derived from (the network's units, the plan's units, the
-    kitchen, each unit's roles, the makers' rule, whether other makers' plans count)."""
+    kitchen, each unit's roles, the makers' rule, whether other makers' plans count, whether a filled container is
+    taken again)."""
     seen: list[tuple] = []
     real = relational_reading.derive_counts
 
     def recording(net, need, kitchen, candidates, **options):
         roles = tuple(options["roles_of"](u) for u in net.units)
-        seen.append((net.units, tuple(need), kitchen, roles, options["placed"], options["other_makers"]))
+        seen.append((net.units, tuple(need), kitchen, roles, options["placed"], options["other_makers"],
+                     options["refill"]))
         return real(net, need, kitchen, candidates, **options)
 
     monkeypatch.setattr(relational_reading, "derive_counts", recording)
@@ -44,6 +52,20 @@ def test_each_distinct_count_is_derived_once_per_plan(monkeypatch):
     assert len(derived) == 6, len(derived)
 
 
+def test_a_count_read_again_with_the_same_roles_is_derived_once(monkeypatch):
+    foon, _ = load([SUBGRAPHS / "0072-old-fashioned_lemonade.txt"])
+    goal = resolve_goal(spec_of_node(min(n for n in foon.nodes if n.dish is not None)), foon)
+    modes = ({"narrow": True}, {"narrow": True, "through": True}, {"narrow": True, "placed": True}, {}, {"own": True},
+             {"placed": True})
+    derived, memo = _derived(monkeypatch), {}
+    tasks = [compile_goal(foon, default_kitchen(foon), goal, "relational", memo=memo, **mode) for mode in modes]
+    assert [k for k, n in Counter(derived).items() if n > 1] == []
+    assert len(derived) == 3, len(derived)
+    for mode, shared in zip(modes, tasks, strict=True):  # each as counted afresh, with a memo of its own
+        assert render(shared.task) == render(compile_goal(foon, default_kitchen(foon), goal, "relational",
+                                                          **mode).task), mode
+
+
 def test_the_shared_memo_gives_the_tasks_each_count_gives_alone():
     foon, kitchen = omelette()
     memo: dict = {}
@@ -53,3 +75,4 @@ def test_the_shared_memo_gives_the_tasks_each_count_gives_alone():
         alone = compile_goal(foon, kitchen, GOAL, "relational", **mode)
         assert render(shared.task) == render(alone.task), mode
         assert (shared.notes, shared.narrowed) == (alone.notes, alone.narrowed), mode
+
