@@ -69,10 +69,15 @@ def test_a_count_read_again_with_the_same_roles_is_derived_once(monkeypatch):
 def test_the_shared_memo_gives_the_tasks_each_count_gives_alone():
     foon, kitchen = omelette()
     memo: dict = {}
+    tasks = []
     for mode in ({"narrow": True}, {"narrow": True, "through": True}, {"narrow": True, "placed": True}, {},
                  {"own": True}, {"placed": True}):
         shared = compile_goal(foon, kitchen, GOAL, "relational", memo=memo, **mode)
         alone = compile_goal(foon, kitchen, GOAL, "relational", **mode)
         assert render(shared.task) == render(alone.task), mode
         assert (shared.notes, shared.narrowed) == (alone.notes, alone.narrowed), mode
+        tasks.append(shared)
+    # small with makers by holder reach (not kept), FOON's own plan unfolded (no other maker's plan) and wide with
+    # makers by holder reach (the first makers') count as the wide count does: its task, encoded once
+    assert all(t.task is tasks[3].task for t in tasks[2:]), [len(t.task.instances) for t in tasks]
 

@@ -108,6 +108,11 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
         IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE, LIVE),
         options.narrow, options.through, options.placed, counting, options.own)
+    # the wide objects are one per reading (`relational_objects._objects`): a count equal to one encoded before is
+    # that task (FOON's own plan unfolded or makers by holder reach counting as the wide count: `plan` compiles it once)
+    done = ("encoded", id(ob), options.costs, id(options.rates), options.categories) if not ob.narrowed else None
+    if done in counting:
+        return counting[done][1]
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
     why = tuple(f"objects: {w}" for w in (*count_reasons(f, counts, ob.kitchen, rd.roles_of),
@@ -189,8 +194,11 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = with_live(task)  # late-bound targets exist: (live x), made to consumed
     task = set_aside(task) if options.prune else task  # untouched objects: out of the problem, not the replay
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
-    return Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
-                    counted=frozenset(origin.get(u, u) for u, _ in rd.counts.firings))  # the units of the plan counted from
+    out = Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
+                   counted=frozenset(origin.get(u, u) for u, _ in rd.counts.firings))  # the units of the plan counted from
+    if done is not None:
+        counting[done] = options, out  # the options kept: their rates' id names no other while the memo lives
+    return out
 
 
 @dataclass(frozen=True)

@@ -124,8 +124,14 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
              refill: bool = True) -> TaskObjects:
     """The objects counted from the reading of the units (`read_units`, small with `more`, `through` the stitches,
     with makers by holder reach when `placed`, with other makers' plans when `other_makers`, a filled container taken
-    again when `refill`, sharing `memo`), or the scene's."""
+    again when `refill`, sharing `memo`), or the scene's. Counted wide (no `more`), one object per reading in
+    `memo`: a reading is its units' readings (`read_units`' memo, by silent holders and `sole`) and its counts, so
+    counts equal to ones read before (FOON's own plan unfolded that took no other maker's plan, makers by holder
+    reach that chose the first makers) give the objects made then, which `encode_relational` encodes once."""
     rd = read_units(inp, st, scene, stated, overrides, more, memo, through, placed, other_makers, refill)
+    key = ("objects", rd.silent, rd.sole, rd.counts) if more is None else None
+    if key is not None and key in memo:
+        return memo[key]
     f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts
     table = NameTable()
     for name in reserved:
@@ -150,6 +156,8 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
         instances, alias, placed, held_by, init_notes = completed_kitchen(
             table, counts, [f.units[u] for u in units], rd.have, nodes, named, rd.silent, rd.filled, inp.kitchen,
             [f.units[u] for u, _ in counts.firings])
-    more = more or frozenset()
-    return TaskObjects(rd, table, tuple(instances), alias, placed, held_by | more, frozenset(nodes),
-                       inp.kitchen | more, init_notes=init_notes)
+    out = TaskObjects(rd, table, tuple(instances), alias, placed, held_by | (more or frozenset()), frozenset(nodes),
+                      inp.kitchen | (more or frozenset()), init_notes=init_notes)
+    if key is not None:
+        memo[key] = out
+    return out

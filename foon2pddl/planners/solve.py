@@ -174,7 +174,8 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     competes with the first makers' one and the fewest-counting is kept, `instance_counts.derive_counts`, so it may
     be the wide task again: tests/test_relational_placed_gate.py) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
     replay rejects, or none, leaves the outcome naming the units out of holder reach). The counts share one memo
-    (`compile_goal`'s `memo`): the network is read, and each distinct count derived, once per call.
+    (`compile_goal`'s `memo`): the network is read, each distinct count derived, and each distinct wide task encoded
+    and planned, once per call (a count equal to the wide one gives that task: `encode_relational`).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
@@ -254,7 +255,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
 
     def reached(out: PlanOutcome) -> PlanOutcome:  # out of holder reach: counted wide, with makers by holder reach
         other = compiled(False, placed=True) if out.result.planner == UNREACHED else None
-        if other is None:
+        if other is None or other.task is out.task:  # the task just found out of holder reach (its count the same)
             return out
         last = planned(other, rest(), cpu_limit)
         # a last try, kept only when it solves: a plan the replay rejects (an invalid plan is an `error`) or no plan
