@@ -11,14 +11,17 @@ from __future__ import annotations
 from collections import Counter
 
 from conftest import SUBGRAPHS
-from relational_checks import compiled_counts
+from relational_checks import alone_roles, compiled_counts
 from test_relational_placed_gate import GOAL, omelette
+from test_relational_reuse_filled import BATTER, MIX, PANTRY, SIFT
 
 from foon2pddl.io.files import load
-from foon2pddl.model.goal import resolve_goal, spec_of_node
-from foon2pddl.model.kitchen import default_kitchen
+from foon2pddl.model.foon import Foon
+from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl import relational_reading
 from foon2pddl.pddl.compile import compile_goal
+from foon2pddl.pddl.instance_counts import derive_counts
 from foon2pddl.pddl.render import render
 from foon2pddl.planners.solve import plan
 
@@ -81,3 +84,20 @@ def test_the_shared_memo_gives_the_tasks_each_count_gives_alone():
     # makers by holder reach (the first makers') count as the wide count does: its task, encoded once
     assert all(t.task is tasks[3].task for t in tasks[2:]), [len(t.task.instances) for t in tasks]
 
+
+def test_the_counts_without_a_filled_container_taken_again_come_with_those_with_it(monkeypatch):
+    # the muffin's shape (tests/test_relational_reuse_filled.py): counted wide, the bowl the pour fills serves the
+    # mix; the small count's kitchen is read with and without that, and the counts without it are the same
+    # derivation less its last step (`derive_counts`' `unfilled`): none is derived for them alone
+    foon, kitchen = Foon((SIFT, MIX)), frozenset(PANTRY)
+    unfilled: list = []
+    counts = derive_counts(foon, range(2), kitchen, (BATTER,), roles_of=alone_roles(kitchen), together=True,
+                           stitched=True, reuse=True, unfilled=unfilled)
+    assert counts.refilled and unfilled == [derive_counts(foon, range(2), kitchen, (BATTER,),
+                                                        roles_of=alone_roles(kitchen), together=True, stitched=True,
+                                                        reuse=True, refill=False)]
+    assert unfilled[0].total > counts.total
+    derived = _derived(monkeypatch)
+    small = compile_goal(foon, Kitchen(kitchen), Goal(GoalSpec("batter"), (BATTER,)), "relational", narrow=True)
+    assert small.narrowed and [d for d in derived if not d[-1]] == []
+    assert derived  # the wide count, the small ones

@@ -199,7 +199,7 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
                   overrides: Mapping[str, int] | None = None, extra: int = 0,
                   roles_of: RolesOf = unit_roles, together: bool = False, stitched: bool = False,
                   reuse: bool = False, placed: bool = False, other_makers: bool = True,
-                  refill: bool = True) -> InstanceCounts:
+                  refill: bool = True, unfilled: list[InstanceCounts] | None = None) -> InstanceCounts:
     """Instance counts for a task made of `units` (see the module doc).
 
     `stated`: kitchen node -> count from the kitchen file; `overrides`: label -> count per place;
@@ -213,7 +213,9 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
     counts that keep none of them (`InstanceCounts.other_maker` false) are those without them. `refill` (with
     `reuse`): a container a unit fills in a kitchen node serves a later taker too (`count_reuse._refilled_with`), for
     the plan chosen without it: fewer objects for that plan, never another plan (`InstanceCounts.refilled` says when
-    it lowered the count).
+    it lowered the count); `unfilled` gets the counts `refill=False` gives, the same derivation less that last step,
+    so that a caller wanting both derives once (`relational_reading.read_units`: the small count's kitchen is read
+    with and without it).
     """
     stated = stated or {}
     overrides = overrides or {}
@@ -261,9 +263,9 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         best = min(range(len(plans)), key=lambda i: (unfolds[i][0].total() + unfolds[i][1].total(), i))
         found, (at_kitchen, created, firings) = (plans[best], found[1]), unfolds[best]
         other_maker = best >= unswapped
+        plain = at_kitchen  # the counts without the filled container taken again (`unfilled`)
         if reuse and refill and (r := reused(foon, steps[best][::-1], homes[best], found[1], roles_of)) is not None:
             at_kitchen, refilled = r, r != at_kitchen
-        nodes |= set(at_kitchen)
         labels |= set(created)
 
     def count(derived: int, label: str, node: ObjectNode | None = None) -> int:
@@ -273,15 +275,20 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
             return stated[node]
         return derived + extra
 
-    counted = {n: k for n in nodes if (k := count(at_kitchen[n], n.label, n)) > 0}  # sorted once filtered
-    at_node = tuple((n, counted[n]) for n in sorted(counted))
-    unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
-    exact = (found is not None and at_node == tuple((n, at_kitchen[n]) for n in sorted(n for n in nodes if at_kitchen[n] > 0))
-             and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
-    once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
-    unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
-    return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None,
-                          refilled, other_maker)
+    def finished(at_kitchen: Counter[ObjectNode], refilled: bool) -> InstanceCounts:  # at the places found
+        places = nodes | set(at_kitchen)
+        counted = {n: k for n in places if (k := count(at_kitchen[n], n.label, n)) > 0}  # sorted once filtered
+        at_node = tuple((n, counted[n]) for n in sorted(counted))
+        unmade = tuple((label, k) for label in sorted(labels) if (k := count(created[label], label)) > 0)
+        exact = (found is not None and at_node == tuple((n, at_kitchen[n]) for n in sorted(n for n in places if at_kitchen[n] > 0))
+                 and unmade == tuple((label, created[label]) for label in sorted(labels) if created[label] > 0))
+        once = found is not None and len(set(found[0])) == len(found[0])  # a unit fired again (`with_returns`): none
+        unfolded = tuple(u for u in found[0] if u in firings) if exact and once else ()
+        return InstanceCounts(at_node, unmade, tuple(sorted(firings.items())), unfolded, reuse and found is not None,
+                              refilled, other_maker)
+    if unfilled is not None:
+        unfilled.append(finished(at_kitchen if found is None else plain, False))
+    return finished(at_kitchen, refilled)
 
 
 @dataclass(frozen=True)

@@ -239,12 +239,16 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             if all(roles_of(unit) == roles for unit, roles in asked):
                 return counts
         asked: dict[FunctionalUnit, tuple] = {}
+        unfilled: list[InstanceCounts] = []  # with `refill`, the counts without it too: derived once for both
         counts = derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen, inp.candidates,
                                stated=stated, overrides=overrides, roles_of=_asking(roles_of, asked), together=True,
-                               stitched=True, reuse=True, placed=placed, other_makers=other_makers, refill=refill)
-        derived.append((tuple(asked.items()), counts))
-        if other_makers and not counts.other_maker:  # the same counts without other makers' plans: FOON's own
-            memo.setdefault(replace(key, other_makers=False), (net, []))[1].append(derived[-1])  # plan unfolded counts them again no more
+                               stitched=True, reuse=True, placed=placed, other_makers=other_makers, refill=refill,
+                               unfilled=unfilled if refill else None)
+        asked_once = tuple(asked.items())  # without `refill` the derivation asks no more (one step less)
+        for fill, made in ((refill, counts), *((False, c) for c in unfilled)):
+            memo.setdefault(replace(key, refill=fill), (net, []))[1].append((asked_once, made))
+            if other_makers and not made.other_maker:  # the same counts without other makers' plans: FOON's own
+                memo.setdefault(replace(key, other_makers=False, refill=fill), (net, []))[1].append((asked_once, made))  # plan unfolded counts them again no more
         return counts
 
     def counted_by(roles_of: RolesOf) -> list[tuple[Foon, InstanceCounts]]:  # FOON's own plan's, the stitched one's beside
