@@ -51,3 +51,29 @@ def test_a_role_the_unit_keeps_listing_is_not_counted_empty():
     task = compile_goal(Foon((UNITS[0], kept, UNITS[2])), Kitchen(frozenset(KITCHEN)),
                         Goal(GoalSpec("omelette"), (DISH,)), "relational").task
     assert [x.label for x in task.instances].count("plate") == 2
+
+
+# the same shape with salt sprinkled onto the bacon in the pan first: the plate lists the bacon and the salt in it,
+# and the bacon leaves it with the salt (`Slot.along`); the count reads that late emptying as the action does
+# (`relational_plan.late_emptied`), so the plate is counted empty, not left listing the salt (F15 of stop 58)
+SALTED, PAN_SALTED = n("bacon", "fried", contains("salt"), inside("pan")), n("pan", contains("bacon", "salt"))
+PLATE_SALTED = n("plate", contains("bacon", "salt"))
+SALTED_UNITS = (
+    FunctionalUnit((n("pan", contains("bacon")), n("bacon", "fried", inside("pan")), n("shaker", contains("salt")),
+                    n("salt", inside("shaker"))), Motion("sprinkle"), (PAN_SALTED, SALTED, n("shaker", "empty"))),
+    FunctionalUnit((PAN_SALTED, SALTED, n("plate", "empty")), Motion("pour"),
+                   (n("pan", "empty"), n("bacon", "fried", contains("salt"), ON("sheet")), PLATE_SALTED)),
+    FunctionalUnit((PLATE_SALTED, n("bacon", "fried", contains("salt"), ON("plate")), SKILLET, OMELETTE),
+                   Motion("sprinkle"), SPRINKLED),
+    UNITS[2])
+SALTED_KITCHEN = (*KITCHEN, n("shaker", contains("salt")), n("salt", inside("shaker")))
+
+
+def test_the_plate_is_counted_empty_of_what_was_put_into_the_bacon_too():
+    goal, kitchen = Goal(GoalSpec("omelette"), (DISH,)), Kitchen(frozenset(SALTED_KITCHEN))
+    for options in ({"narrow": True, "through": True}, {}):
+        task = compile_goal(Foon(SALTED_UNITS), kitchen, goal, "relational", **options).task
+        # one plate (two before: the count left it listing the salt, which the action takes off it with the bacon)
+        assert [x.label for x in task.instances].count("plate") == 1
+    outcome = clean_unit_plan(SALTED_UNITS, SALTED_KITCHEN, DISH, time_limit=60)
+    assert [x.name for x in outcome.task.instances if x.label == "plate"] == ["plate_1"]

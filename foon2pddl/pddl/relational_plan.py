@@ -31,7 +31,7 @@
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
   object leaves its node, an emptied container changes node; so does a read-only role FOON leaves out of the
-  outputs that is the only one listing an object leaving a holder the unit does not name (`_late_listers`).
+  outputs whose node a late emptying changes, read as the action reads it (`late_emptied`).
 
 What the decisions do to the task's nodes beyond the unit's own roles (the contents poured out with a container,
 the holder emptied late, the corn restated on the board, the flour on the floured board) is `relational_touched`.
@@ -41,7 +41,7 @@ Pure; O(r^2) per unit for r roles.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from ..model.aliases import unit_aliases
@@ -52,7 +52,7 @@ from .holder_flows import Flow, gained, unit_flows
 from .holders import Fate, RelRole, relational_roles
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
-           "listings", "plan_unit", "quiet_places", "silent_labels", "without"]
+           "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -230,11 +230,16 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
     return UnitPlan(unit, tuple(slots), emptied, flows)
 
 
-def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
-    """The object roles `instance_counts.derive_counts` unfolds for this unit (module doc)."""
+def count_roles(plan: UnitPlan, alias: Mapping[str, str] | None = None) -> tuple[Role, ...]:
+    """The object roles `instance_counts.derive_counts` unfolds for this unit (module doc), names read through the
+    task's `alias` (`holder_words.task_aliases` of its units: the pour's plate it calls `sheet`)."""
     out: list[Role] = []
-    emptied = {**_late_listers(plan), **dict(plan.emptied)}
+    alias = alias or {}
+    emptied = dict(plan.emptied)
     for k, s in enumerate(plan.slots):
+        if k not in emptied and s.after is None and s.fate is Fate.STAYS and s.rel.role.before is not None:
+            if (late := late_emptied(plan, s.rel.role.before, alias)) is not None:
+                emptied[k] = late  # whichever holder of its node the objects leave: the action empties it so
         label, before = s.rel.role.label, s.rel.role.before
         if s.fate is Fate.NEW:
             out.append(Role(label, None, s.rel.after))
@@ -249,21 +254,29 @@ def count_roles(plan: UnitPlan) -> tuple[Role, ...]:
     return tuple(out)
 
 
-def _late_listers(plan: UnitPlan) -> dict[int, ObjectNode]:
-    """Role index -> its node without what leaves it, for each role FOON leaves out of the outputs whose node is
-    the only one of the unit listing an object that leaves a holder the unit does not name (`Slot.late_empties`):
-    whichever holds it is emptied of it, and the unit takes that one listing it. The stitched sprinkle takes `bacon
-    (fried, on [sheet])`, the pour's node, with `plate (contains {bacon})` (`0050-scrambled_eggs_with_bacon-
-    cheese.txt:242`): the plate is left empty for the pour at `:288`. O(r^2)."""
-    gone: dict[int, set[str]] = {}
+def _late_leaving(plan: UnitPlan, alias: Mapping[str, str]) -> dict[str, frozenset[str]]:
+    """Holder label (a name read through `alias`) -> all that leaves holders of it late in the unit, at once
+    (`Slot.late_empties`): the objects' labels and what the task's units put into them (`Slot.along`: the paprika
+    kneaded into the kofta mix; the beef and the onion leave the pan together). O(r)."""
+    out: dict[str, set[str]] = {}
     for s in plan.slots:
-        if not s.late_empties:
-            continue
-        lists = [k for k, t in enumerate(plan.slots) if t.rel.role.before is not None
-                 and s.rel.role.label in listed(t.rel.role.before) and t.rel.role.label != s.rel.role.label]
-        if len(lists) == 1 and plan.slots[lists[0]].after is None and plan.slots[lists[0]].fate is Fate.STAYS:
-            gone.setdefault(lists[0], set()).add(s.rel.role.label)
-    return {k: without(plan.slots[k].rel.role.before, labels) for k, labels in gone.items()}
+        if s.late_empties:
+            out.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).update({s.rel.role.label,
+                                                                                               *s.along})
+    return {h: frozenset(x) for h, x in out.items()}
+
+
+def late_emptied(plan: UnitPlan, node: ObjectNode, alias: Mapping[str, str]) -> ObjectNode | None:
+    """The node a holder in `node` ends in when the unit's objects leave holders the unit does not name
+    (`Slot.late_empties`): `without` all that leaves holders of its label (`_late_leaving`), when `node` says what it
+    holds and lists one of those objects (names read through `alias`); else None. The one reading of a late emptying,
+    for the action (`relational_touched.late_empties`: whichever holder of that node holds the object is emptied) and
+    for the count (`count_roles`: a role FOON leaves out of the outputs ends so). O(r + l) for l listed names."""
+    left = [s.rel.role.label for s in plan.slots
+            if s.late_empties and alias.get(s.rel.source.holder, s.rel.source.holder) == node.label]
+    if not left or not describes_contents(node) or not {alias.get(x, x) for x in listed(node)} & set(left):
+        return None
+    return without(node, _late_leaving(plan, alias)[node.label], dict(alias))
 
 
 def _stays_in(rels: Sequence[RelRole], f: Flow) -> bool:

@@ -24,6 +24,7 @@ from ..model.scene import SceneObject
 from ..model.where import short_path, unit_where
 from .encoding import LevelInputs
 from .holder_flows import gained
+from .holder_words import task_aliases
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, delete_free_plan, derive_counts
 from .list_drops import kept_in_place, taken_again
@@ -197,8 +198,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         memo["task"] = (task_nodes, gains, frozenset(n.label for n in task_nodes),
                         holding_labels(f.units[u] for u in units),
                         called_fills(f.units[u] for u in units),  # FOON-GEN's `pan`: the cookware
-                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes))
-    task_nodes, filled, labels, holding, called, once, lists = memo["task"]
+                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes),
+                        dict(task_aliases([f.units[u] for u in units], {n.label for n in task_nodes})))
+    task_nodes, filled, labels, holding, called, once, lists, alias = memo["task"]
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
         key = ("silent", tuple(speakers))
@@ -225,7 +227,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
 
             def roles_of(unit):  # asked once per unit and plan position by the counts: read once
                 if unit not in roles:
-                    roles[unit] = count_roles(by_unit[unit]) if unit in by_unit else ()
+                    roles[unit] = count_roles(by_unit[unit], alias) if unit in by_unit else ()
                 return roles[unit]
             memo[key] = plans, drops, said, portions, roles_of
         return memo[key]

@@ -38,7 +38,7 @@ from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, places
 from .holders import Fate
 from .relational_init import read_names
-from .relational_plan import Slot, UnitPlan, without
+from .relational_plan import Slot, UnitPlan, late_emptied
 
 __all__ = ["Way", "alike_nodes", "dropped_nodes", "dusted_nodes", "dustings", "emptied_sources", "every_late_empty",
            "flow_ways", "late_empties", "left_nodes", "restated_nodes"]
@@ -71,19 +71,15 @@ def flow_ways(plan: UnitPlan, nodes: Iterable[ObjectNode], alias: dict[str, str]
 def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
                  alias: dict[str, str]) -> dict[int, list[tuple[ObjectNode, ObjectNode]]]:
     """Per slot that empties a holder the unit does not name (`Slot.late_empties`): every node of the holder's
-    label that lists the object's label, with the node it becomes (`without` all that leaves holders of that
-    label in the unit: the beef and the onion leave the pan at once, and what was put into them, `Slot.along`)."""
+    label that lists the object's label, with the node it becomes (`relational_plan.late_emptied`, which the count
+    reads too: without all that leaves holders of that label in the unit, the beef and the onion leave the pan at
+    once, and what was put into them, `Slot.along`)."""
     out = {}
-    group: dict[str, set[str]] = {}  # holder label -> what leaves holders of it in this unit (all at once)
-    for s in plan.slots:
-        if s.late_empties:
-            group.setdefault(alias.get(s.rel.source.holder, s.rel.source.holder), set()).update({s.rel.role.label,
-                                                                                                 *s.along})
     for k, s in enumerate(plan.slots):
         if s.late_empties:
             label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
-            out[k] = [(n, without(n, group[holder], alias)) for n in sorted(
-                x for x in nodes if x.label == holder and describes_contents(x) and label in read_names(listed(x), alias))]
+            out[k] = [(n, new) for n in sorted(x for x in nodes if x.label == holder and label in read_names(listed(x), alias))
+                      if (new := late_emptied(plan, n, alias)) is not None]
     return out
 
 
