@@ -14,7 +14,11 @@ another cup filled again): the cut, 4 objects. Those nodes are read from the wid
 count without a container a unit fills in a kitchen node taken again (`count_reuse._refilled_with`) when that lowered it:
 the kitchen bowl of flour it stands for goes, and with it `flour (in [bowl], powder)`, where the small count takes
 the flour from the kitchen (the blueberry muffin on the universal FOON of 70 subgraphs drawn with seed 56: 41
-objects in the problem, 44 when read from the wide count alone); the small count of fewer objects is kept. Kept
+objects in the problem, 44 when read from the wide count alone); the small count of fewer objects is kept. A node
+of those that a unit the small plan fires makes anyway gets no kitchen object when the count without it has fewer
+objects and fires the same units (`_made_anyway`: the `same` set's 0050 omelette, 21 -> 20 objects in the problem;
+without the second condition its cheesy garlic bread, whose count then fired another recipe's chain twice, 44 ->
+47). Kept
 when it has fewer objects, with a note that says so (`Compiled.narrowed`). Every count takes the plans with a needed
 node made by another of its makers too, when they count fewer (`instance_counts.derive_counts`' `other_makers`), but
 counted wide with `own`: FOON's own plan unfolded, what `plan` falls back on last when the wide task took such a plan
@@ -107,6 +111,10 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     smalls = [(_objects(inp, st, scene, stated, overrides, tuple(reserved), None if placed else started, memo,
                         through, placed), started) for started in starts]
     small, started = min(smalls, key=lambda s: len(s[0].instances))  # the first of equals
+    if not placed and (made := _made_anyway(st, small, started)):  # the plan makes them: no kitchen objects for them
+        fewer = _objects(inp, st, scene, stated, overrides, tuple(reserved), started - made, memo, through)
+        if len(fewer.instances) < len(small.instances) and _same_plan(fewer, small):
+            small, started = fewer, started - made
     if len(small.instances) >= len(wide.instances):
         return wide
     more = ", ".join(n.describe() for n in sorted(started))
@@ -116,6 +124,23 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     return replace(small, init_notes=tuple(dict.fromkeys(wide.init_notes + small.init_notes)), beside=beside, narrowed=(
         how + (f" in the kitchen with {more}, where the objects its nodes imply start" if more else "")
         + f": {count(len(small.instances), 'object')}, where FOON's plan unfolded counts {len(wide.instances)}"))
+
+
+def _made_anyway(st: Stitched, small: TaskObjects, started: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
+    """The nodes of `started` the small count starts objects in that a unit its plan fires makes too: beside the
+    plain omelette, whose kitchen pan `cooking pan (empty, on [stove])` (`0063-plain_omelette_mahalo.txt:94`) starts
+    on a stove in `stove (on, with [pan])`, the 0050 omelette's cooks take that node from the kitchen, and the
+    pick-and-place at `0050-scrambled_eggs_with_bacon-cheese.txt:123`, fired for the pans, makes it. Left out only
+    when the count then fires the same units (`_same_plan`): a node the plan makes only by firing more is no node it
+    makes anyway. O(firings x outputs)."""
+    counts = small.reading.counts
+    made = {o for u, _ in counts.firings for o in st.foon.units[u].outputs}
+    return frozenset(n for n, k in counts.at_node if k > 0 and n in started and n in made)
+
+
+def _same_plan(a: TaskObjects, b: TaskObjects) -> bool:
+    """Whether two counts fire the same units as often (their plans differ only in where objects start)."""
+    return sorted(a.reading.counts.firings) == sorted(b.reading.counts.firings)
 
 
 def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
