@@ -65,7 +65,9 @@ def test_a_count_read_again_with_the_same_roles_is_derived_once(monkeypatch):
     derived, memo = _derived(monkeypatch), {}
     tasks = [compile_goal(foon, default_kitchen(foon), goal, "relational", memo=memo, **mode) for mode in modes]
     assert [k for k, n in Counter(derived).items() if n > 1] == []
-    assert len(derived) == 3, len(derived)
+    # one more than 3d97747 counted: the small count once more, without the kitchen nodes its plan makes anyway
+    # (`relational_objects._made_anyway`, 9923ed2: a distinct count; here not kept, the lemon on the board stays)
+    assert len(derived) == 4, len(derived)
     for mode, shared in zip(modes, tasks, strict=True):  # each as counted afresh, with a memo of its own
         assert render(shared.task) == render(compile_goal(foon, default_kitchen(foon), goal, "relational",
                                                           **mode).task), mode
