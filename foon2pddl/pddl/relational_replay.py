@@ -187,6 +187,11 @@ def _into(at: ObjectState) -> str:
     return f" {'into' if at.relation is Relation.IN else 'onto'} {at.holder}" if at.holder else ""
 
 
+def _at(relation: Relation | None, holder: str) -> str:
+    """` on H` (on) or ` in H` (any other relation): where an object stays, said as a place."""
+    return f" {'on' if relation is Relation.ON else 'in'} {holder}"
+
+
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
     """A step in recipe words with the objects named, O(bindings).
 
@@ -237,7 +242,7 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     for d, i in {d: i for i, d in enumerate(dests) if d}.items():  # the last move into each destination
         was_at, now_at = before.get(d), after.get(d)
         if now_at is not None and was_at is not None and now_at.holder in seated and was_at.holder == now_at.holder:
-            moves[i] += f" {'on' if now_at.relation is Relation.ON else 'in'} {now_at.holder}"
+            moves[i] += _at(now_at.relation, now_at.holder)
             stands.add(now_at.holder)
     worked = [b for b in worked if b.object not in stands]
     said = ", ".join(moves)
@@ -251,7 +256,7 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     # where a worked object stays is a place, not a tool: `cut avocado_1 on cutting_board_1 with knife_1`
     at = {before[b.object].holder: before[b.object].relation for b in worked
           if before[b.object].holder in others and after[b.object].holder == before[b.object].holder}
-    said += "".join(f" {'on' if rel is Relation.ON else 'in'} {h}" for h, rel in at.items())
+    said += "".join(_at(rel, h) for h, rel in at.items())
     parts = [step.unit.motion.label, said]
     if made:
         parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
