@@ -7,6 +7,7 @@ from conftest import SUBGRAPHS
 from foon2pddl.io.parser import parse_file
 from foon2pddl.io.recipe_words import recipe_text
 from foon2pddl.io.tree_formats import render_tree
+from foon2pddl.model.foon import FunctionalUnit
 from foon2pddl.model.tasktree import TaskTree
 
 
@@ -16,7 +17,8 @@ def _steps(name: str) -> list[str]:
     return render_tree(TaskTree(units, units[-1].outputs[0]), "recipe").splitlines()[1:]
 
 
-def _unit(name: str, line: int):
+def _unit(name: str, line: int) -> FunctionalUnit:
+    """The unit of one shared subgraph its file gives at `line` (its first source, as `file:line` cites it)."""
     return next(u for u in parse_file(SUBGRAPHS / name).foon.units if u.sources[0].line == line)
 
 

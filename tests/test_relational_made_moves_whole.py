@@ -201,6 +201,8 @@ def _pigs_task(**options):
 
 
 def test_a_unit_the_plan_fires_again_takes_a_portion_of_a_made_object(monkeypatch):
+    """The exception to the rule (`relational_reading._fired_again`): the pick-and-place onto the tray that FOON's
+    plan unfolded fires twice takes a portion of the pigs, and switched off, the roll and what it takes fire again."""
     for options in ({"narrow": True}, {}):
         task = _pigs_task(**options)
         # the second firing takes a portion of the pigs the first left on the board: 13 objects in the problem
