@@ -52,6 +52,7 @@ from .retrieval.api import retrieve as _retrieve
 from .retrieval.batch import GoalRow
 from .retrieval.result import Retrieval
 from .skills.run import SkillOutcome
+from .status import BatchStatus, PlanStatus
 
 __all__ = ["ENCODINGS", "Compiled", "Constraints", "Foon", "Goal", "GoalPlan", "GoalRow", "Kitchen", "Network",
            "PlanOutcome", "Retrieval", "compile_goal", "constraints_of", "kitchen_of", "load_kitchen", "load_network",
@@ -188,8 +189,7 @@ def retrieve(network: Network | Foon, kitchen: Kitchen | Iterable[ObjectNode], g
 
 def _view(network: Network | Foon, kind: NetworkKind, level: int, kitchen: Kitchen, cons: Constraints,
           goal: Goal | str | GoalSpec):
-    """The view of `kind` (built from the kitchen without its banned objects when the kind substitutes them)
-    and the goal resolved on it."""
+    """The view of `kind` (from the kitchen without its banned objects when the kind substitutes them) and the goal."""
     from .generalize.network import Substitutes
 
     kit = kitchen.project(level)
@@ -319,15 +319,19 @@ class GoalPlan:
     outcome: PlanOutcome | None
     reason: str = ""
 
+    @property
+    def status(self) -> PlanStatus | BatchStatus:
+        """The outcome's status, or `unmatched` for a goal naming no produced node (as `retrieve_goals` rows say)."""
+        return self.outcome.status if self.outcome is not None else BatchStatus.UNMATCHED
+
 
 def plan_goals(network: Network | Foon, kitchen: Kitchen, goals: Iterable[str | GoalSpec], encoding: str = "tree",
                **options) -> list[GoalPlan]:
     """`plan` for each goal, in order (`options` as `plan`'s); a goal that names no produced node is reported.
 
     >>> net = load_network()
-    >>> [(p.goal, p.outcome.status if p.outcome else p.reason[:20])
-    ...  for p in plan_goals(net, load_kitchen(net), ["guacamole", "unicorn"])]
-    [('guacamole', <PlanStatus.SOLVED: 'solved'>), ('unicorn', 'unknown object label')]
+    >>> [(p.goal, str(p.status), p.reason[:20]) for p in plan_goals(net, load_kitchen(net), ["guacamole", "unicorn"])]
+    [('guacamole', 'solved', ''), ('unicorn', 'unmatched', 'unknown object label')]
     """
     rows = []
     for g in goals:

@@ -91,3 +91,16 @@ def test_batches_and_the_experiment(net, tmp_path):
     assert rows[0].outcome.status == "solved" and rows[1].outcome is None and "unicorn" in rows[1].reason
     summary = fp.run_experiment(tmp_path, networks=["reg"], solvers=["native-complete"], trials=1, goals=3)
     assert summary.ran == 3 and (tmp_path / "results.jsonl").is_file()
+
+
+def test_plan_goals_rows_have_a_status_as_retrieve_goals_rows_do(net):
+    """README shows `[str(r.status) for r in fp.retrieve_goals(...)]`; the same comprehension over `plan_goals` raised
+    `AttributeError: 'GoalPlan' object has no attribute 'status'` (stop 59's newcomer pass). A goal naming no produced
+    node is `unmatched` in both, as in a batch `plan` run."""
+    kitchen = fp.load_kitchen(net)
+    goals = ["guacamole", "lemonade", "unicorn"]
+    planned = [str(r.status) for r in fp.plan_goals(net, kitchen, goals)]
+    retrieved = [str(r.status) for r in fp.retrieve_goals(net, kitchen, goals)]
+    assert planned[0] == retrieved[0] == "solved"
+    assert planned[2] == retrieved[2] == "unmatched"
+    assert planned[1] != "solved"
