@@ -16,6 +16,7 @@ from .names import NameTable
 from .task import Instance
 
 __all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_implied", "kitchen_placed",
+           "placed_since_start",
            "named_objects", "read_names", "scene_instances", "unplaced"]
 
 
@@ -107,6 +108,27 @@ def same_place_steps(units: Iterable[FunctionalUnit]) -> dict[ObjectNode, frozen
             out.setdefault(a, set()).update(b for b in u.outputs if b.label == a.label and b != a
                                             and place_of(b) == place_of(a))
     return {a: frozenset(b) for a, b in out.items()}
+
+
+def placed_since_start(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
+    """The nodes naming a place whose objects are where the kitchen started them: a kitchen node that names one, and
+    a node every unit of `units` making it makes of inputs of its label all at its place and so placed (the peel at
+    `0085-mini_bacon_egg_breakfast_pizza.txt:3` leaves the kitchen's onion `in [bowl]`); not one a unit puts there
+    or makes there new (the buttered bread the pick-and-place at `0049-turkey_sandwich.txt:1` put on a board).
+    The least fixpoint: a node only a cycle of units makes is not. O(passes x unit sizes), passes at most the nodes."""
+    makers: dict[ObjectNode, list[tuple[ObjectNode, ...]]] = {}
+    for u in units:
+        for b in u.outputs:
+            if b not in kitchen and places(b):
+                makers.setdefault(b, []).append(tuple(a for a in u.inputs if a.label == b.label))
+    out = {n for n in kitchen if places(n)}
+    grew = True
+    while grew:
+        more = {b for b, ways in makers.items() if b not in out and all(
+            ins and all(places(a) == places(b) and a in out for a in ins) for ins in ways)}
+        out |= more
+        grew = bool(more)
+    return frozenset(out)
 
 
 def started_notes(units: Sequence[FunctionalUnit], starts: Iterable[ObjectNode | None], implied: Iterable[ObjectNode],

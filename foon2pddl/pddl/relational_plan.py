@@ -31,7 +31,9 @@
 * **Counts.** `count_roles` turns the decisions into the object roles that
   `instance_counts.derive_counts` unfolds: a portion is a new object, a consumed
   object leaves its node, an emptied container changes node; so does a read-only role FOON leaves out of the
-  outputs whose node a late emptying changes, read as the action reads it (`late_emptied`).
+  outputs whose node a late emptying changes, read as the action reads it (`late_emptied`); and, counted in a
+  kitchen that starts an object leaving a holder the unit does not name in such a holder alone, that holder, which
+  is no role of the unit (`_late_holders`).
 
 What the decisions do to the task's nodes beyond the unit's own roles (the contents poured out with a container,
 the holder emptied late, the corn restated on the board, the flour on the floured board) is `relational_touched`.
@@ -52,7 +54,7 @@ from .holder_flows import Flow, gained, unit_flows
 from .holders import Fate, RelRole, relational_roles
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
-           "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "without"]
+           "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "taken_with", "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -230,9 +232,14 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
     return UnitPlan(unit, tuple(slots), emptied, flows)
 
 
-def count_roles(plan: UnitPlan, alias: Mapping[str, str] | None = None) -> tuple[Role, ...]:
+def count_roles(plan: UnitPlan, alias: Mapping[str, str] | None = None, kitchen: frozenset[ObjectNode] = frozenset(),
+                started: frozenset[ObjectNode] = frozenset(),
+                taken: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()) -> tuple[Role, ...]:
     """The object roles `instance_counts.derive_counts` unfolds for this unit (module doc), names read through the
-    task's `alias` (`holder_words.task_aliases` of its units: the pour's plate it calls `sheet`)."""
+    task's `alias` (`holder_words.task_aliases` of its units: the pour's plate it calls `sheet`), counted in
+    `kitchen`, whose objects are where it started them in the nodes `started` (`relational_init.placed_since_start`),
+    in a task whose units take the pairs `taken` (an object's node, a node listing it: `taken_with`): the holders it
+    starts them in that the unit empties without naming (`_late_holders`)."""
     out: list[Role] = []
     alias = alias or {}
     emptied = dict(plan.emptied)
@@ -251,7 +258,44 @@ def count_roles(plan: UnitPlan, alias: Mapping[str, str] | None = None) -> tuple
             out.append(Role(label, before, emptied[k]))
         else:
             out.append(Role(label, before, s.after))
+    return tuple(out) + _late_holders(plan, kitchen, started, taken)
+
+
+def _late_holders(plan: UnitPlan, kitchen: frozenset[ObjectNode], started: frozenset[ObjectNode],
+                  taken: frozenset[tuple[ObjectNode, ObjectNode]]) -> tuple[Role, ...]:
+    """A role per holder the unit empties without naming it (`Slot.late_empties`, out of the holder it is in), of
+    an object whose node is where the kitchen started it (`started`: no unit put it there): the one node of
+    `kitchen` of that holder's label (read through the unit's aliases) that names no place and lists that object
+    alone, where the completion starts it (`relational_init.holder_init`), goes to that node without it, when that is a kitchen node too (a later taker of it takes that
+    holder again, `count_reuse`; a node no kitchen has would credit the unit with making it). Uncounted, that holder
+    is added after the count, and a later taker of it empty gets a holder of its own: the eggs and bacon pizza's
+    onion leaves `bowl (contains {onion})` at `0085-mini_bacon_egg_breakfast_pizza.txt:12`, and the pick-and-place
+    at `:104` takes `bowl (empty)`. A kitchen with no such node (the wide count's, before the completion adds it),
+    or two, counts none; nor does a unit that names an object of the holder's label, nor one whose object's node a
+    unit of the task takes with that holder node (`taken`): its takers count it, and the completion starts the
+    object in theirs (`holder_init`'s `paired`: the chocolate cake's flour, sprinkled at `0058-chocolate_cake.txt:17`
+    out of a bowl the unit does not name, is in the bowl the pour at `:49` takes with it: one bowl of flour, two
+    counted so). O(slots x kitchen)."""
+    out: list[Role] = []
+    for s in plan.slots:
+        src, label = s.rel.source, s.rel.role.label
+        if not s.late_empties or src is None or src.role is not None or s.rel.role.before not in started:
+            continue
+        holder = dict(unit_aliases(plan.unit)).get(src.holder, src.holder)
+        if any(t.rel.role.label == holder for t in plan.slots):
+            continue  # the unit names one of that label: which holds the object is the unit's reading (two breads
+            # on [cutting board] and one board listing bread, `0061-club_sandwich.txt:180`), no holder to add
+        homes = [x for x in kitchen if x.label == holder and listed(x) == {label} and not places(x)
+                 and (s.rel.role.before, x) not in taken]
+        if len(homes) == 1 and (emptied := without(homes[0], {label} | s.along)) in kitchen:
+            out.append(Role(holder, homes[0], emptied))
     return tuple(out)
+
+
+def taken_with(units: Iterable[FunctionalUnit]) -> frozenset[tuple[ObjectNode, ObjectNode]]:
+    """(an object's node, a node listing its label) for every two inputs one of `units` takes together: the holder
+    that unit reads the object in (`_late_holders`). O(sum of inputs^2)."""
+    return frozenset((a, h) for u in units for a in u.inputs for h in u.inputs if h != a and a.label in listed(h))
 
 
 def _late_leaving(plan: UnitPlan, alias: Mapping[str, str]) -> dict[str, frozenset[str]]:

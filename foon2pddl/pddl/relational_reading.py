@@ -28,7 +28,17 @@ from .holder_words import task_aliases
 from .input_stitch import Stitched
 from .instance_counts import InstanceCounts, RolesOf, delete_free_plan, derive_counts
 from .list_drops import kept_in_place, taken_again
-from .relational_plan import UnitPlan, called_fills, count_roles, holding_labels, listings, plan_unit, quiet_places
+from .relational_init import placed_since_start
+from .relational_plan import (
+    UnitPlan,
+    called_fills,
+    count_roles,
+    holding_labels,
+    listings,
+    plan_unit,
+    quiet_places,
+    taken_with,
+)
 
 __all__ = ["Reading", "read_units"]
 
@@ -201,6 +211,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                         _taken_once(f, units, inp.kitchen, gains), listings(task_nodes),
                         dict(task_aliases([f.units[u] for u in units], {n.label for n in task_nodes})))
     task_nodes, filled, labels, holding, called, once, lists, alias = memo["task"]
+    home = inp.kitchen | narrow if narrow else inp.kitchen  # the kitchen the counts are derived in
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
         key = ("silent", tuple(speakers))
@@ -222,14 +233,24 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             plans, portions = taken_again(f, units, plans, memo["fired"])
             plans, said = _short_of_goal(plans, {c: f.units[u] for u in units for c in f.units[u].outputs
                                                  if c in inp.candidates})
-            by_unit = {f.units[u]: p for u, p in plans.items()}
-            roles: dict[FunctionalUnit, tuple] = {}
+            memo[key] = plans, drops, said, portions, {f.units[u]: p for u, p in plans.items()}
+        return memo[key]
+
+    def roles_in(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> RolesOf:
+        key = ("roles", silent, sole, split, home)  # counted in `home`: read once per unit
+        if key not in memo:
+            by_unit, roles = plans_of(silent, sole, split)[4], {}
+            if ("started", home) not in memo:  # where the kitchen's objects still are: once per counting kitchen
+                memo["started", home] = placed_since_start([f.units[u] for u in units], home)
+            if "taken" not in memo:  # (object, holder) node pairs the task's units take together
+                memo["taken"] = taken_with(f.units[u] for u in units)
+            started, taken = memo["started", home], memo["taken"]
 
             def roles_of(unit):  # asked once per unit and plan position by the counts: read once
                 if unit not in roles:
-                    roles[unit] = count_roles(by_unit[unit], alias) if unit in by_unit else ()
+                    roles[unit] = count_roles(by_unit[unit], alias, home, started, taken) if unit in by_unit else ()
                 return roles[unit]
-            memo[key] = plans, drops, said, portions, roles_of
+            memo[key] = roles_of
         return memo[key]
 
     def count(net: Foon, need: tuple[int, ...], roles_of: RolesOf) -> InstanceCounts:  # objects for a plan in `net`
@@ -242,7 +263,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
                 return counts
         asked: dict[FunctionalUnit, tuple] = {}
         unfilled: list[InstanceCounts] = []  # with `refill`, the counts without it too: derived once for both
-        counts = derive_counts(net, need, inp.kitchen | narrow if narrow else inp.kitchen, inp.candidates,
+        counts = derive_counts(net, need, home, inp.candidates,
                                stated=stated, overrides=overrides, roles_of=_asking(roles_of, asked), together=True,
                                stitched=True, reuse=True, placed=placed, other_makers=other_makers, refill=refill,
                                unfilled=unfilled if refill else None)
@@ -267,7 +288,8 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
         silent, split = quiet(speakers), frozenset()
         while True:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
-            plans, drops, said, portions, roles_of = plans_of(silent, sole, split)
+            plans, drops, said, portions, _ = plans_of(silent, sole, split)
+            roles_of = roles_in(silent, sole, split)
             counted = counted_by(roles_of)
             again = _rest_stays(sole, counted)
             fired = _fired_again(counted)  # a made object it takes whole from a holder no node lists it in: a portion
