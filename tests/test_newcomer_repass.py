@@ -515,7 +515,7 @@ def test_a_relational_plan_short_of_stated_objects_names_the_step(tmp_path, give
 
 
 def test_a_relational_plan_with_no_object_of_a_needed_label_names_it():
-    """`--instances knife=0` (or `0 x knife` in a kitchen file): the guacamole cannot be cut."""
+    """`--instances knife=0`: the guacamole cannot be cut (a kitchen file's `0 x knife` is an error naming its line)."""
     r = run("plan", "--goal", "guacamole", "--instances", "knife=0")
     assert r.exit_code == 1, r.output
     assert "too few physical objects are given: step " in r.stderr and "needs one more knife in 'knife'" in r.stderr

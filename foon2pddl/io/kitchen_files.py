@@ -118,6 +118,8 @@ def _node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None, int]
         first = first or lineno
         counted = _COUNT.match(line)
         count = int(counted.group(1)) if counted else None
+        if count == 0:  # "none" to a count, "one" to FOON's semantics: neither reading is safe to pick silently
+            raise FoonSyntaxError(path, lineno, "a count of 0 lists no object: remove the line, or count at least 1", line)
         try:
             spec = parse_goal_spec(counted.group(2) if counted else line)
         except ValueError as exc:
