@@ -20,7 +20,7 @@ from importlib import resources
 from pathlib import Path
 
 from ..errors import FoonInputError, FoonSyntaxError
-from ..io.json_text import key_line, load_json
+from ..io.json_text import key_line, load_json, unknown_key
 
 #: Lexicographer files whose noun senses can name a kitchen object.
 KITCHEN_LEXNAMES: frozenset[str] = frozenset(
@@ -67,10 +67,8 @@ def parse_overrides(text: str, path: str) -> Overrides:
     """Read `{"senses": {label: [synset, ...]}, "pairs": [[a, b, value], ...], "forbidden": [[a, b], ...]}`
     (every key optional, `_comment` a note); errors name the file, and the line of an unknown or repeated key."""
     data = load_json(text, path)
-    for key in data if isinstance(data, dict) else ():
-        if key not in OVERRIDE_KEYS:
-            raise FoonSyntaxError(path, key_line(text, key),
-                                  f"unknown key {key!r} (expected one of {', '.join(OVERRIDE_KEYS)})")
+    if isinstance(data, dict) and (bad := unknown_key(data, OVERRIDE_KEYS)) is not None:
+        raise FoonSyntaxError(path, key_line(text, bad[0]), bad[1])
     if not isinstance(data, dict) or not isinstance(data.get("senses", {}), dict) \
             or not isinstance(data.get("pairs", []), list):
         raise FoonInputError(path, 0, "expected {\"senses\": {label: [synset, ...]}, \"pairs\": [[a, b, value], ...]}")

@@ -25,7 +25,7 @@ from pathlib import Path
 from ..errors import FoonSyntaxError, UsageError
 from ..model.constraints import Constraint, Constraints, Kind, combine, make_constraints
 from .foon_lines import CONTROL_CHARS
-from .json_text import key_line, load_json
+from .json_text import key_line, load_json, unknown_key
 from .parser import read_text
 from .rates import Rates, refuse_rates
 
@@ -81,9 +81,8 @@ def parse_constraints(text: str, path: str = "<constraints>") -> Constraints:
         raise FoonSyntaxError(path, 1, other[0], belongs=other[1])
     if not isinstance(data, dict):
         raise FoonSyntaxError(path, 1, "a constraints file is a JSON object")
-    for key in data:
-        if key not in KEYS:
-            raise FoonSyntaxError(path, key_line(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
+    if (bad := unknown_key(data, KEYS)) is not None:
+        raise FoonSyntaxError(path, key_line(text, bad[0]), bad[1])
     items = [Constraint(kind, v, path) for key, kind in LIST_KEYS.items()
              for v in _labels(data.get(key, []), path, key_line(text, key), key)]
     rates: list[tuple[str, float]] = []

@@ -116,6 +116,15 @@ def key_line(text: str, key: str) -> int:
     return text.count("\n", 0, at) + 1 if at >= 0 else 1
 
 
+def unknown_key(keys, allowed) -> tuple[str, str] | None:
+    """The first of `keys` (a JSON object's) not in `allowed`, with the words every reader of a JSON file says it in
+    (`unknown key 'state' (expected one of ...)`: a typo must not drop what it holds without a word), else None."""
+    for key in keys:
+        if key not in allowed:
+            return key, f"unknown key {key!r} (expected one of {', '.join(allowed)})"
+    return None
+
+
 def text_problem(value: str, what: str) -> str | None:
     """Why `value` cannot be label text (`what` names it in the message), else None."""
     if CONTROL_CHARS.search(value):

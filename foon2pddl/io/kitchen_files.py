@@ -9,7 +9,7 @@ from ..errors import FoonSyntaxError
 from ..model.foon import ObjectNode, State, make_node, make_state
 from ..model.kitchen import Kitchen
 from .foon_lines import LINE_ID, NETWORK_NOT_OBJECTS, parse_objects
-from .json_text import item_lines, line_of, load_json, text_problem
+from .json_text import item_lines, line_of, load_json, text_problem, unknown_key
 from .parser import read_text
 from .rates import refuse_rates
 
@@ -33,10 +33,8 @@ def json_node(item: object, path: str, index: int) -> ObjectNode:
     problem = text_problem(label, "label")
     if problem:
         raise FoonSyntaxError(path, 0, f"item {index + 1}: {problem}")
-    unknown = [k for k in item if k not in ITEM_KEYS]
-    if unknown:  # a typo (`state`) must not drop what it holds without a word
-        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): unknown key {unknown[0]!r} (expected one of "
-                                       f"{', '.join(ITEM_KEYS)})")
+    if (bad := unknown_key(item, ITEM_KEYS)) is not None:
+        raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): {bad[1]}")
     if not isinstance(states_raw, list) or not all(isinstance(s, str) for s in states_raw):
         raise FoonSyntaxError(path, 0, f"item {index + 1} ({label}): 'states' must be a list of strings")
     if not isinstance(ingredients, list) or not all(isinstance(s, str) for s in ingredients):

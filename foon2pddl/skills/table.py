@@ -21,7 +21,7 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..io.foon_lines import CONTROL_CHARS
-from ..io.json_text import load_json
+from ..io.json_text import load_json, unknown_key
 from ..io.parser import read_text
 from ..model.foon import normalize_label
 from .domain import SkillDomain
@@ -70,9 +70,8 @@ def parse_table(text: str, path: str = "<motions>") -> MotionTable:
     data = load_json(text, path)
     if not isinstance(data, dict) or not isinstance(data.get("motions"), dict):
         raise FoonSyntaxError(path, 1, 'a motion table is a JSON object with "motions": {motion: skill}')
-    for key in data:
-        if key not in KEYS:
-            raise FoonSyntaxError(path, _line(text, key), f"unknown key {key!r} (expected one of {', '.join(KEYS)})")
+    if (bad := unknown_key(data, KEYS)) is not None:
+        raise FoonSyntaxError(path, _line(text, bad[0]), bad[1])
     pairs = _pairs(data["motions"], text, path)
     hand = data.get("by_hand", {})
     if not isinstance(hand, dict):
