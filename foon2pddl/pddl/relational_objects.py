@@ -150,11 +150,12 @@ def _objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], state
     """The objects counted from the reading of the units (`read_units`, small with `more`, `through` the stitches,
     with makers by holder reach when `placed`, with other makers' plans when `other_makers`, a filled container taken
     again when `refill`, sharing `memo`), or the scene's. Counted wide (no `more`), one object per reading in
-    `memo`: a reading is its units' readings (`read_units`' memo, by silent holders and `sole`) and its counts, so
+    `memo`: a reading is its units' readings (`read_units`' memo, by silent holders, `sole` and the units read as
+    taking a portion, which its `roles_of` names: one per such reading while the memo holds it) and its counts, so
     counts equal to ones read before (FOON's own plan unfolded that took no other maker's plan, makers by holder
     reach that chose the first makers) give the objects made then, which `encode_relational` encodes once."""
     rd = read_units(inp, st, scene, stated, overrides, more, memo, through, placed, other_makers, refill)
-    key = ("objects", rd.silent, rd.sole, rd.counts) if more is None else None
+    key = ("objects", rd.silent, rd.sole, id(rd.roles_of), rd.counts) if more is None else None
     if key is not None and key in memo:
         return memo[key]
     f, units, plans, counts = st.foon, rd.units, rd.plans, rd.counts

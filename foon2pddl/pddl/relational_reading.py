@@ -220,8 +220,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         return memo[key]
 
     def plan_of(u: int, silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> UnitPlan:
-        return plan_unit(f.units[u], inp.kitchen, silent, filled, labels, holding, called, sole,
-                         None if u in split else lists)
+        key = ("plan", u, silent, sole, u in split)  # `split` matters only by whether it holds `u`: read once
+        if key not in memo:
+            memo[key] = plan_unit(f.units[u], inp.kitchen, silent, filled, labels, holding, called, sole,
+                                  None if u in split else lists)
+        return memo[key]
 
     def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> tuple:  # made once
         key = ("plans", silent, sole, split)
@@ -287,7 +290,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
 
     def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
         silent, split = quiet(speakers), frozenset()
-        while True:  # a kitchen container a unit the plan fires again takes, or another takes from: the rest stays
+        while True:  # two fixpoints at once: a kitchen container a unit the plan fires again takes, or another
+            # takes from, leaves the rest where it stays (`sole` shrinks); a made object a unit fired again takes whole
+            # from a holder no node lists it in is a portion (`split` grows)
             plans, drops, said, portions, _ = plans_of(silent, sole, split)
             roles_of = roles_in(silent, sole, split)
             counted = counted_by(roles_of)
