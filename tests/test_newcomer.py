@@ -911,6 +911,48 @@ def test_the_objects_account_says_the_board_an_object_is_cut_on_as_a_place():
     assert not any("with cutting_board" in line for line in account), account
 
 
+def test_the_objects_account_says_where_a_changed_object_sits_outward():
+    """Issue 24's account read `heat butter_2, microwave_1 in bowl_1` (the garlic bread of the shared subgraphs:
+    FOON heats the butter in the bowl in the microwave, the microwave going off): the appliance read as a second
+    thing heated, in the bowl. A changed object holding another's place is that place, said outward from it."""
+    r = run("plan", SUBGRAPHS / "0016-easy_garlic_bread-one-pot-chef.txt", "--goal", "garlic bread")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert "6. heat butter_2 in bowl_1 in microwave_1" in account, account
+    assert not any("microwave_1 in" in line for line in account), account
+
+
+def test_the_objects_account_says_a_pan_and_what_it_cooks_as_contents_and_place():
+    """The same shape on a stove: `cook skillet_1, french_toast_1 on stove_1` (0037, and the omelettes' `cook
+    cooking_pan_1, omelette_1 on stove_1`): the toast cooks in the skillet on the stove, both changing; and an
+    unchanged holder's holder the step names is a place too (`heat peanut_mixture_1 in bowl_4 with microwave_2`)."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.foon import make_state
+    from foon2pddl.model.physical import Relation
+
+    toast, toast2 = n("french toast", inside("skillet")), n("french toast", "cooked", inside("skillet"))
+    pan, pan2 = n("skillet", contains("french toast"), make_state("on", "stove")), n(
+        "skillet", "hot", contains("french toast"), make_state("on", "stove"))
+    stove = n("stove", "on", contains("skillet"))
+    words = _step((toast, pan, stove), "cook", (toast2, pan2),
+                  [("skillet_1", pan, pan2), ("toast_1", toast, toast2), ("stove_1", stove, stove)],
+                  {"toast_1": (toast, "skillet_1", Relation.IN), "skillet_1": (pan, "stove_1", Relation.ON),
+                   "stove_1": (stove,)},
+                  {"toast_1": (toast2, "skillet_1", Relation.IN), "skillet_1": (pan2, "stove_1", Relation.ON),
+                   "stove_1": (stove,)})
+    assert words == "cook toast_1 in skillet_1 on stove_1"
+    mix, mix2 = n("peanut mixture", inside("bowl")), n("peanut mixture", "hot", inside("bowl"))
+    bowl, oven = n("bowl", contains("peanut mixture"), inside("microwave")), n("microwave", contains("bowl"))
+    words = _step((mix, bowl, oven), "heat", (mix2, bowl, oven),
+                  [("mix_1", mix, mix2), ("bowl_4", bowl, bowl), ("microwave_2", oven, oven)],
+                  {"mix_1": (mix, "bowl_4", Relation.IN), "bowl_4": (bowl, "microwave_2", Relation.IN),
+                   "microwave_2": (oven,)},
+                  {"mix_1": (mix2, "bowl_4", Relation.IN), "bowl_4": (bowl, "microwave_2", Relation.IN),
+                   "microwave_2": (oven,)})
+    assert words == "heat mix_1 in bowl_4 in microwave_2"
+
+
 def test_no_objects_account_line_runs_two_parts_together():
     """The greek salad of the shared subgraphs, whose account had both glitches above."""
     import re

@@ -192,14 +192,29 @@ def _at(relation: Relation | None, holder: str) -> str:
     return f" {'on' if relation is Relation.ON else 'in'} {holder}"
 
 
+def _outward(x: str, fixed: set[str], before: dict[str, ObjectState],
+             after: dict[str, ObjectState]) -> tuple[tuple[Relation | None, str], ...]:
+    """(relation, holder) from `x`'s holder outward, while the holder is in `fixed` and each link stays put:
+    `in bowl_1`, then `in microwave_1` when the step names the microwave. O(depth); a cycle stops it."""
+    out: list[tuple[Relation | None, str]] = []
+    seen = {x}
+    while (was := before.get(x)) is not None and was.holder in fixed and was.holder not in seen \
+            and after[x].holder == was.holder:
+        out.append((was.relation, was.holder))
+        seen.add(x := was.holder)
+    return tuple(out)
+
+
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
     """A step in recipe words with the objects named, O(bindings).
 
     `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
     the motion, each object that changes holder (from, into), each other object whose state changes (after a
     move: `into bowl_4, changing greek_salad_1`; one that holds where a move goes is that place: `onto pancake_1 on
-    plate_1`) and where it stays (`cut avocado_1 on cutting_board_1`), then
-    what the step consumes and makes (in the holder of what it makes; used up with nothing made: `, using up
+    plate_1`) and where it stays, outward while the step names the holders (`cut avocado_1 on cutting_board_1`;
+    `heat butter_2 in bowl_1 in microwave_1`: a changed object holding another's place is said as that place), then
+    what the step consumes and makes (in the holder of what it makes and where that stays: `bake in baking_tray_1 in
+    oven_1: ...`; used up with nothing made: `, using up
     butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
     holder something moves into: the dressing the lettuce is poured onto is no tool).
     An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
@@ -245,21 +260,28 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
             moves[i] += _at(now_at.relation, now_at.holder)
             stands.add(now_at.holder)
     worked = [b for b in worked if b.object not in stands]
-    said = ", ".join(moves)
-    if worked:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
-        names = ", ".join(b.object for b in worked)
-        said = f"{said}, changing {names}" if said else names
     into = {after[b.object].holder for b in step.bindings if b.before is not None and b.object not in made
             and before[b.object].holder != after[b.object].holder}
     others = [b.object for b in rest if b not in worked and not (  # not the contents of where something goes
         before[b.object].holder in into and any(s.label in _RELATIONS and s.related for s in b.before.states))]
-    # where a worked object stays is a place, not a tool: `cut avocado_1 on cutting_board_1 with knife_1`
-    at = {before[b.object].holder: before[b.object].relation for b in worked
-          if before[b.object].holder in others and after[b.object].holder == before[b.object].holder}
-    said += "".join(_at(rel, h) for h, rel in at.items())
+    # where a worked object stays is a place, not a tool, and so is where that place stays when the step names it:
+    # `cut avocado_1 on cutting_board_1 with knife_1`, `heat butter_2 in bowl_1 in microwave_1`
+    fixed = set(others) | {b.object for b in worked}
+    chains = {b.object: _outward(b.object, fixed, before, after) for b in worked}
+    rooms = {w: _outward(w, fixed, before, after) for w in where}
+    at = {h for chain in (*chains.values(), *rooms.values()) for _, h in chain}
+    groups: dict[tuple[tuple[Relation | None, str], ...], list[str]] = {}
+    for b in worked:  # a worked object holding another's place is said as that place (the microwave going off)
+        if b.object not in at:
+            groups.setdefault(chains[b.object], []).append(b.object)
+    said = ", ".join(moves)
+    if groups:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
+        names = ", ".join(", ".join(xs) + "".join(_at(rel, h) for rel, h in chain) for chain, xs in groups.items())
+        said = f"{said}, changing {names}" if said else names
     parts = [step.unit.motion.label, said]
     if made:
-        parts.append((f"in {', '.join(where)}: " if where else "") + ", ".join(used) + (" -> " if used else "")
+        rooms_said = ", ".join(w + "".join(_at(rel, h) for rel, h in rooms[w]) for w in where)
+        parts.append((f"in {rooms_said}: " if where else "") + ", ".join(used) + (" -> " if used else "")
                      + ", ".join(made))
     elif used:  # used up, nothing made: `pour onion_1 from board_1 into pan_1, using up butter_1`
         parts[1] += (", " if said else "") + "using up " + ", ".join(used)
