@@ -1048,3 +1048,21 @@ def test_the_objects_account_says_where_the_thing_poured_onto_stands():
     account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
     assert account[-1] == ("14. pour maple_syrup_2 (a portion of maple_syrup_1) from bottle_1 onto pancake_1 on "
                            "plate_1"), account
+
+
+def test_an_unknown_goal_on_paths_names_the_listing_of_those_paths(tmp_path):
+    """Stop 60's pass: `plan 0024-peanut_butter_and_jelly.txt --goal "peanut butter and jelly"` said '`foon2pddl
+    goals` lists every goal', which lists the embedded example's goals, not the file's; a batch row said the same.
+    The listing the error names is run on the same PATHS (and network), so it lists the goals asked about."""
+    recipe = SUBGRAPHS / "0024-peanut_butter_and_jelly.txt"
+    single = run("plan", recipe, "--goal", "peanut butter and jelly")
+    assert single.exit_code == 2, single.output
+    listing = f"`foon2pddl goals {recipe}` lists every goal"
+    assert listing in single.stderr, single.stderr
+    batch = run("retrieve", recipe, "--goal", "peanut butter and jelly", "--goal", "sandwich")
+    assert listing in batch.stdout, batch.stdout
+    compiled = run("compile", recipe, "--network", "gen", "--goal", "peanut butter and jelly", "--goal", "sandwich",
+                   "-o", tmp_path / "out")
+    assert f"`foon2pddl goals {recipe} --network gen` lists" in compiled.stdout, compiled.stdout
+    listed = run("goals", recipe)
+    assert listed.exit_code == 0 and "sandwich (contains {jelly, peanut butter}, on [plate])" in listed.stdout

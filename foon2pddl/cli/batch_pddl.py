@@ -14,6 +14,7 @@ from ..model.words import count
 from ..pddl.task import goal_at_start
 from ..status import BatchStatus, PlanStatus
 from .batch import finish, write_trees
+from .goal_listing import goals_listing
 from .options import lifted_goal
 from .progress import slow_step
 from .reasons import ALREADY_HELD, failure_reason, unreachable_reason
@@ -24,7 +25,7 @@ def _resolve(view, entry, encoding: str | None = None):
     try:
         if encoding == "gen-lifted":
             return lifted_goal(view, entry.spec), None
-        return resolve_goal(view.map_goal(entry.spec), view.foon), None
+        return resolve_goal(view.map_goal(entry.spec), view.foon, listing=goals_listing()), None
     except FoonError as exc:  # the goal names no node (UsageError)
         return None, exc.message
 

@@ -10,6 +10,7 @@ import click
 from ..errors import FoonInputError, UsageError
 from ..io.atomic import atomic_write
 from ..model.words import count
+from .goal_listing import goals_listing
 from .object_options import category_types_option, check_physical_options, instances_option
 
 paths_argument = click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
@@ -295,13 +296,10 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
     """
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one of --goal and --goal-file")
-    from ..generalize.network import DEFAULT_NETWORK
     from ..io.inputs import goal_spec
     from ..model.goal import level_loss
 
-    ctx = click.get_current_context(silent=True)
-    network = (ctx.params.get("network") if ctx is not None else None) or DEFAULT_NETWORK
-    listing = "foon2pddl goals" + ("" if network == DEFAULT_NETWORK else f" --network {network}")
+    listing = goals_listing()
     try:  # a goal that does not read or that nothing makes is a bad value of its option (README)
         spec = goal_spec(goal, goal_file)
         loss = level_loss(spec, level)
@@ -322,14 +320,14 @@ def lifted_goal(view, spec):
     from ..generalize.compress import category_goal
 
     try:
-        return view.resolve(spec)
+        return view.resolve(spec, goals_listing())
     except FoonError as exc:
         index = load_index()
         found = category_goal(spec, view.foon, index)
         if found is None:  # the categories made here close to it (`beverage` -> `beverages`), as labels get theirs
             made = sorted({c for label in view.foon.produced_by_label if (c := index.choose(label)) is not None})
             close = difflib.get_close_matches(spec.label, made, n=5, cutoff=0.6)
-            raise UsageError(f"{exc.message}; `foon2pddl goals --network gen` lists the categories it also takes, "
+            raise UsageError(f"{exc.message}; `{goals_listing()}` lists the categories it also takes, "
                              "when they are made on this network"
                              + (f" (close categories: {', '.join(close)})" if close else "")) from None
         return found

@@ -20,6 +20,7 @@ from ..retrieval.optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
 from ..retrieval.result import UNREACHABLE
 from . import main
 from .batch import batch_entries, finish, write_trees
+from .goal_listing import goals_listing
 from .options import (
     check_output,
     chosen_similarity,
@@ -183,9 +184,10 @@ def _batch(view, entries, method, rates, fmt, limits: dict, output, containment)
 
     if view.note:
         click.echo(view.note, err=True)
+    listing = goals_listing()
     with slow_step(f"retrieving trees for {count(len(entries), 'goal')} ({method})"):
         found = solve_goals(view.foon, view.kitchen.nodes, entries,
-                            lambda spec: resolve_goal(view.map_goal(spec), view.foon),
+                            lambda spec: resolve_goal(view.map_goal(spec), view.foon, listing=listing),
                             method=method, rates=rates, **limits)
     rows = [r.as_dict() for r in found]
     table_fmt = fmt if fmt in TABLE_FORMATS else "text"
