@@ -7,7 +7,8 @@ passes the relational replay (`planners.physical_replay`, zero disagreements;
 `instances` traces have no holders, so its figure counts what a holder-blind
 plan gets wrong), disagreements by kind, unit steps and objects per task
 (median, worst; and those the PDDL problem declares: `pddl.untouched` sets aside
-what no action can touch), translate+search seconds (median, worst). `-v`: one
+what no action can touch), translate+search seconds (median, worst), and with more than one encoding the unit
+steps of each on the dishes all solve (median, total). `-v`: one
 line per file and encoding. `--universal`: the merge of all subgraphs (issue 21's universal
 floor), its default kitchen, each reachable dish a goal (as `bench.pddl_instances
 --universal`); a row's `file` is the goal node. As a bench area (`run(ctx)`) it reports the counts.
@@ -175,7 +176,22 @@ def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
             line += (f"; unit steps median {statistics.median(r.steps for r in solved):.0f}; "
                      f"translate+search median {statistics.median(secs):.2f} s, worst {max(secs):.2f} s")
         lines.append(line)
+    if len(encodings) > 1:
+        lines.append(common_steps(rows, encodings))
     return "\n".join(lines)
+
+
+def common_steps(rows: list[Row], encodings: tuple[str, ...]) -> str:
+    """Plan length (unit steps) per encoding on the dishes every one of `encodings` solves: each encoding's
+    median and total over the same dishes, so lengths compare plan for plan (issue 21's "plan length against
+    `instances` and `tree`")."""
+    solved = {(r.file, r.encoding): r.steps for r in rows if r.status == "solved"}
+    files = sorted({r.file for r in rows if all((r.file, e) in solved for e in encodings)})
+    if not files:
+        return "on the dishes every encoding solves (0): no plan length to compare"
+    parts = [f"{e} median {statistics.median(solved[f, e] for f in files):.0f}, "
+             f"total {sum(solved[f, e] for f in files):,}" for e in encodings]
+    return f"unit steps on the {len(files)} dishes every encoding solves: " + "; ".join(parts)
 
 
 def run(ctx: Context) -> None:
