@@ -395,7 +395,7 @@ def test_a_slow_plan_announces_itself(monkeypatch):
     monkeypatch.setattr(progress, "AFTER", 0.0)  # every step counts as slow: each says what it is
     r = run("plan", "--goal", "guacamole")
     assert r.exit_code == 0
-    assert "planning 'guacamole' (fd, relational encoding, time limit 300 s) ..." in r.stderr  # plan's default
+    assert "planning 'guacamole' (fd, relational encoding, planner time limit 300 s) ..." in r.stderr  # plan's default
     assert "reading the embedded example ..." in r.stderr
     monkeypatch.setattr(progress, "AFTER", 60.0)
     quiet = run("plan", "--goal", "guacamole")

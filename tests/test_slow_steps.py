@@ -155,7 +155,7 @@ def test_a_unified_planning_engine_is_announced_before_its_import(monkeypatch):
      "planning 'whipped cream' (relational encoding, then instances if it finds no plan in 75 s) and each step's robot skills ..."),
     # stop 47's pass: --up-validate's validation (8-13 s at load 14-17) ran under a line naming only the planning
     (("plan", "--goal", "whipped cream", "--encoding", "tree", "--up-validate"),
-     "planning 'whipped cream' (fd, tree encoding, time limit 300 s, then validating the plan with unified-planning) ..."),
+     "planning 'whipped cream' (fd, tree encoding, planner time limit 300 s, then validating the plan with unified-planning) ..."),
     (("check", SUBGRAPHS), f"checking {SUBGRAPHS} for defects ..."),
     (("stats", SUBGRAPHS), f"reading {SUBGRAPHS} ..."),
     (("stats", SUBGRAPHS), "counting nodes and labels at each level ..."),  # 2.4 s silent at load 12

@@ -189,7 +189,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                                 categories=category_chains(foon) if category_types else ())
     then = ", then validating the plan with unified-planning" if up_validate else ""  # 8-13 s at load 14-17
     with slow_step(f"planning {target.describe()!r} ({planner_cmd or planner}, {encoding} encoding, "
-                   f"time limit {time_limit:g} s{then})"):
+                   f"planner time limit {time_limit:g} s{then})"):
         outcome = (plan_restoring if restore else plan)(
                        foon, kit, target, encoding, level, planner=planner, planner_cmd=planner_cmd,
                        optimal=optimal, time_limit=time_limit, prune=prune, costs=costs, rates=motion_rates,
