@@ -1,6 +1,6 @@
 """foon2pddl: FOON functional object-oriented networks to PDDL, with native task tree retrieval.
 
-The public Python API (`api.py`), importable from the package itself:
+The public Python API (the `api` package), importable from the package itself:
 
 >>> import foon2pddl as fp
 >>> net = fp.load_network()                       # files and directories, or none: the embedded example

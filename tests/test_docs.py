@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import doctest
 import importlib
-import os
 
 import pytest
 
@@ -69,6 +68,22 @@ def test_some_public_functions_have_examples():
     import foon2pddl.api as api
 
     with_examples = [n for n in api.__all__ if ">>>" in (getattr(getattr(api, n), "__doc__", "") or "")
-                     and callable(getattr(api, n)) and getattr(api, n).__module__ == api.__name__]
+                     and callable(getattr(api, n)) and getattr(api, n).__module__.startswith(api.__name__ + ".")]
     assert len(with_examples) >= 6, with_examples
-    assert os.path.basename(api.__file__) == "api.py"
+
+
+def test_the_api_package_holds_each_public_function_in_one_module_by_what_it_does():
+    """api.py reached the 400-line limit (stop 59's re-read F6) and was split by what it holds: `inputs`
+    (network, kitchen, goal, constraints), `solve` (one goal), `batches` (many goals, the experiment); the
+    package re-exports every public name, so `foon2pddl.X` and `foon2pddl.api.X` are the one object."""
+    import foon2pddl
+    import foon2pddl.api as api
+
+    where = {n: getattr(api, n).__module__ for n in api.__all__ if callable(getattr(api, n))
+             and getattr(api, n).__module__.startswith(api.__name__)}
+    assert {where[n] for n in ("load_network", "load_kitchen", "kitchen_of", "resolve_goal", "constraints_of")} \
+        == {"foon2pddl.api.inputs"}, where
+    assert {where[n] for n in ("retrieve", "compile_goal", "to_pddl", "plan", "skill_plan")} \
+        == {"foon2pddl.api.solve"}, where
+    assert {where[n] for n in ("retrieve_goals", "plan_goals", "run_experiment")} == {"foon2pddl.api.batches"}, where
+    assert all(getattr(foon2pddl, n) is getattr(api, n) for n in foon2pddl.__all__ if n != "__version__")
