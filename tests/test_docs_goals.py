@@ -16,7 +16,7 @@ from conftest import ROOT
 
 from bench.doc_commands import goal_examples
 from foon2pddl.cli import main
-from foon2pddl.cli.options import load_pddl_view, load_view, view_goal
+from foon2pddl.cli.loading import load_pddl_view, load_view, view_goal
 
 EXAMPLES = goal_examples()
 

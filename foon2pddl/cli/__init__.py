@@ -26,8 +26,8 @@ from ..planners.cleanup import command_scope
 from . import progress
 
 __all__ = ["COMMANDS", "main", "analyze_cmd", "batch", "batch_pddl", "check_cmd", "compile_cmd", "examples_cmd", "expand_cmd",
-           "experiment_cmd", "generalize_cmd", "goal_listing", "goals_cmd", "kitchen_note", "merge_cmd", "object_options", "options", "plan_cmd",
-           "progress", "reasons", "retrieve_cmd", "similarity_cmd", "skills_cli", "stats_cmd"]
+           "experiment_cmd", "generalize_cmd", "goal_listing", "goals_cmd", "kitchen_note", "loading", "merge_cmd", "object_options", "options",
+           "outputs", "plan_cmd", "progress", "reasons", "retrieve_cmd", "similarity_cmd", "skills_cli", "stats_cmd"]
 
 #: Command name -> the module (in this package) that defines it. The group imports a command's
 #: module only when that command runs (or `--help` lists them all), so `foon2pddl --version` and

@@ -8,7 +8,9 @@ import click
 
 from ..errors import FoonInputError
 from . import main
-from .options import emit, output_option, paths_argument, read_network
+from .loading import read_network
+from .options import output_option, paths_argument
+from .outputs import emit
 from .progress import slow_step
 
 

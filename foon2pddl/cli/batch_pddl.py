@@ -15,7 +15,7 @@ from ..pddl.task import goal_at_start
 from ..status import BatchStatus, PlanStatus
 from .batch import finish, write_trees
 from .goal_listing import goals_listing
-from .options import lifted_goal
+from .loading import lifted_goal
 from .progress import slow_step
 from .reasons import ALREADY_HELD, failure_reason, unreachable_reason
 

@@ -11,7 +11,8 @@ from ..io.files import load
 from ..io.raw_objects import scan_paths
 from ..model.words import first_of
 from . import main
-from .options import emit, output_option, paths_argument
+from .options import output_option, paths_argument
+from .outputs import emit
 from .progress import inputs, slow_step
 
 

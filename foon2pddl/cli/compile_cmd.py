@@ -20,20 +20,10 @@ from ..pddl.untyped import untyped
 from . import main
 from .batch import batch_entries
 from .batch_pddl import compile_batch
+from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal
 from .object_options import category_chains, checked_instances
-from .options import (
-    check_output,
-    constraint_inputs,
-    constraints_options,
-    costs_option,
-    load_pddl_view,
-    pddl_task_options,
-    prune_option,
-    rates_option,
-    reject_lifted_constraints,
-    single_goal,
-    view_goal,
-)
+from .options import constraints_options, costs_option, pddl_task_options, prune_option, rates_option, single_goal
+from .outputs import check_output
 from .progress import slow_step
 from .reasons import ALREADY_HELD
 

@@ -8,16 +8,9 @@ import click
 
 from ..model.words import count
 from . import main
-from .options import (
-    emit,
-    emit_network,
-    kitchen_option,
-    load_overrides,
-    output_option,
-    paths_argument,
-    read_network,
-    similarity_options,
-)
+from .loading import load_overrides, read_network
+from .options import kitchen_option, output_option, paths_argument, similarity_options
+from .outputs import emit, emit_network
 from .progress import slow_step
 
 

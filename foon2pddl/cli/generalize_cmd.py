@@ -8,7 +8,9 @@ import click
 
 from ..model.words import count
 from . import main
-from .options import emit, emit_network, output_option, paths_argument, read_network
+from .loading import read_network
+from .options import output_option, paths_argument
+from .outputs import emit, emit_network
 from .progress import slow_step
 
 categories_option = click.option("--categories", "categories", type=click.Path(path_type=Path), default=None,

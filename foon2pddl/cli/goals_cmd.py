@@ -13,7 +13,9 @@ from ..model.where import shown_path
 from ..model.words import count
 from ..retrieval import Reachability, reachable
 from . import main
-from .options import emit, kitchen_option, level_option, load_view, network_option, output_option, paths_argument
+from .loading import load_view
+from .options import kitchen_option, level_option, network_option, output_option, paths_argument
+from .outputs import emit
 from .progress import slow_step
 
 

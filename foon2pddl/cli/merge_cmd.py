@@ -8,7 +8,9 @@ from ..io.jsonio import write_json
 from ..io.writer import write_foon
 from ..model.words import count
 from . import main
-from .options import emit, level_option, output_option, paths_argument, read_network
+from .loading import read_network
+from .options import level_option, output_option, paths_argument
+from .outputs import emit
 
 
 @main.command("merge")

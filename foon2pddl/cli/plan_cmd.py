@@ -23,24 +23,19 @@ from ..planners.solve import PHASES, PlanOutcome, plan, plan_restoring
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
+from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal
 from .object_options import category_chains, checked_instances
 from .options import (
-    check_output,
     check_time_limit,
-    constraint_inputs,
     constraints_options,
     costs_option,
-    emit,
     encoding_given,
-    expansion_notes,
-    load_pddl_view,
     pddl_task_options,
     prune_option,
     rates_option,
-    reject_lifted_constraints,
     single_goal,
-    view_goal,
 )
+from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
 from .reasons import explained, failure_reason, networks_hint
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options

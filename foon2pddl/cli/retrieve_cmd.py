@@ -21,21 +21,17 @@ from ..retrieval.result import UNREACHABLE
 from . import main
 from .batch import batch_entries, finish, write_trees
 from .goal_listing import goals_listing
+from .loading import constraint_inputs, load_view, view_goal
 from .options import (
-    check_output,
     chosen_similarity,
-    constraint_inputs,
     constraints_options,
-    emit,
-    expansion_notes,
     goal_input_options,
     level_option,
-    load_view,
     network_option,
     rates_option,
     single_goal,
-    view_goal,
 )
+from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
 from .reasons import gen_reading_note, networks_hint
 

@@ -10,7 +10,9 @@ from ..errors import UsageError
 from ..model.foon import normalize_label
 from ..model.words import count
 from . import main
-from .options import emit, load_overrides, output_option, similarity_options
+from .loading import load_overrides
+from .options import output_option, similarity_options
+from .outputs import emit
 from .progress import slow_step
 
 

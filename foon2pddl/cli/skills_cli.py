@@ -13,7 +13,7 @@ from ..model.words import count
 from ..pddl.compile import ENCODINGS
 from ..pddl.constraints import GoalExcluded
 from ..status import PlanStatus
-from .options import emit
+from .outputs import emit
 from .progress import slow_step
 from .reasons import why_unsolvable
 

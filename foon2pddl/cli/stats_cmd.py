@@ -11,7 +11,9 @@ from ..analysis.stats import format_stats, network_stats
 from ..errors import FoonSyntaxError
 from ..io.files import STDIN_NAME
 from . import main
-from .options import emit, output_option, paths_argument, read_network
+from .loading import read_network
+from .options import output_option, paths_argument
+from .outputs import emit
 
 
 @main.command("stats")
