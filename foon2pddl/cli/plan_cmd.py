@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import time
+from collections.abc import Sequence
 from contextlib import nullcontext
 from pathlib import Path
 
@@ -37,7 +38,7 @@ from .options import (
 )
 from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
-from .reasons import explained, failure_reason, networks_hint
+from .reasons import explained, failure_reason, hint_lines, hint_words, networks_hint
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 
@@ -47,9 +48,9 @@ def timing_line(timings: dict[str, float]) -> str:
 
 
 def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str | None,
-                 reason: str | None = None) -> str:
+                 reason: str | None = None, hints: Sequence[str] = ()) -> str:
     """The outcome as one JSON document (status, plan, phases, validation, tree; `reason`: why there is no plan,
-    the words the text output's `reason:` line gives)."""
+    the words the text output's `reason:` line gives; `hints`: those of its `hint:` lines)."""
     d = outcome.decoded
 
     def check(v):
@@ -64,6 +65,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "planner": outcome.result.planner,
         "message": outcome.message or outcome.result.message,
         "reason": reason,
+        "hints": list(hints),
         "encoding": outcome.task.encoding,
         "level": outcome.task.level,
         "plan": list(outcome.steps),
@@ -217,12 +219,14 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                  else slow_step(f"finding why there is no plan for {target.describe()!r}"))
     with searching:
         reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
+    hinted = explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes
     if fmt == "json":
-        data = outcome_json(outcome, timings, data, reason)
+        hints = hint_words(hint_lines(net, kit, single_goal(goal), goal_file, level)) if hinted else []
+        data = outcome_json(outcome, timings, data, reason, hints)
     else:
         if reason is not None:
             click.echo("reason: " + reason, err=True)
-        if explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes:
+        if hinted:
             networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.echo("phases: " + timing_line(timings), err=True)
     if data is not None:
