@@ -1066,3 +1066,17 @@ def test_an_unknown_goal_on_paths_names_the_listing_of_those_paths(tmp_path):
     assert f"`foon2pddl goals {recipe} --network gen` lists" in compiled.stdout, compiled.stdout
     listed = run("goals", recipe)
     assert listed.exit_code == 0 and "sandwich (contains {jelly, peanut butter}, on [plate])" in listed.stdout
+
+
+def test_the_objects_account_at_level_1_says_what_a_step_makes_as_made():
+    """Stop 60's pass: `plan --goal guacamole --level 1` printed the tree's `squeeze lime, juicer, making lime juice`,
+    then the account `squeeze lime_juice_1 with lime_1, juicer_1` and `mix guacamole_1 with bowl_1, avocado_1, ...`:
+    lime juice squeezed with a lime. At level 1 no object changes state, so nothing was worked and every input read
+    as a tool; a step that only makes something names its objects, then what it makes, as the recipe's words do."""
+    r = run("plan", "--goal", "guacamole", "--level", "1")
+    assert r.exit_code == 0, r.stderr
+    tree, account = r.stdout.split("objects, step by step (relational encoding):")
+    assert "1. squeeze lime, juicer, making lime juice" in tree.splitlines(), tree
+    assert account.splitlines()[1:] == [
+        "1. squeeze lime_1, juicer_1, making lime_juice_1",
+        "2. mix bowl_1, avocado_1, lime_juice_1, onion_1, tomato_1, cilantro_1, salt_1, fork_1, making guacamole_1"]

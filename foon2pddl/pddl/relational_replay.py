@@ -216,7 +216,9 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     what the step consumes and makes (in the holder of what it makes and where that stays: `bake in baking_tray_1 in
     oven_1: ...`; used up with nothing made: `, using up
     butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
-    holder something moves into: the dressing the lettuce is poured onto is no tool).
+    holder something moves into: the dressing the lettuce is poured onto is no tool). A step that only makes
+    something (at level 1 no state changes) names its objects, then what it makes, as the recipe's words do:
+    `squeeze lime_1, juicer_1, making lime_juice_1`, not lime juice squeezed with a lime.
     An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
     holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
     is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
@@ -278,6 +280,9 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     if groups:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
         names = ", ".join(", ".join(xs) + "".join(_at(rel, h) for rel, h in chain) for chain, xs in groups.items())
         said = f"{said}, changing {names}" if said else names
+    others = [x for x in others if x not in at and x not in stands]
+    if made and not (said or used or where):  # only made (level 1: no state changes): as the recipe's words
+        return f"{step.unit.motion.label} {', '.join(others)}{', ' if others else ''}making {', '.join(made)}"
     parts = [step.unit.motion.label, said]
     if made:
         rooms_said = ", ".join(w + "".join(_at(rel, h) for rel, h in rooms[w]) for w in where)
@@ -285,7 +290,6 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
                      + ", ".join(made))
     elif used:  # used up, nothing made: `pour onion_1 from board_1 into pan_1, using up butter_1`
         parts[1] += (", " if said else "") + "using up " + ", ".join(used)
-    others = [x for x in others if x not in at and x not in stands]
     if others:
         parts.append("with " + ", ".join(others))
     if not taken:
