@@ -193,6 +193,12 @@ def test_an_unknown_goal_names_the_command_listing_this_networks_goals():
     assert lifted.exit_code == 2 and "`foon2pddl goals --network gen` lists the categories" in lifted.stderr
     listed = runner.invoke(main, ["goals", "--network", "gen"])
     assert listed.exit_code == 0 and " beverages" in listed.stdout
+    # the lifted encoding on the regular network: its categories are listed on GEN, not by the regular listing
+    # (15c195c named the run's network there: `foon2pddl goals` lists no category)
+    regular = runner.invoke(main, ["plan", "--encoding", "gen-lifted", "--goal", "beverage drink"])
+    assert regular.exit_code == 2, regular.stderr
+    assert "`foon2pddl goals` lists every goal" in regular.stderr, regular.stderr
+    assert "`foon2pddl goals --network gen` lists the categories" in regular.stderr, regular.stderr
 
 
 def test_the_legend_names_the_embedded_kitchen_by_its_path_in_the_package():

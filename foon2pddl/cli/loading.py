@@ -125,7 +125,7 @@ def lifted_goal(view, spec):
         if found is None:  # the categories made here close to it (`beverage` -> `beverages`), as labels get theirs
             made = sorted({c for label in view.foon.produced_by_label if (c := index.choose(label)) is not None})
             close = difflib.get_close_matches(spec.label, made, n=5, cutoff=0.6)
-            raise UsageError(f"{exc.message}; `{goals_listing()}` lists the categories it also takes, "
+            raise UsageError(f"{exc.message}; `{goals_listing('gen')}` lists the categories it also takes, "
                              "when they are made on this network"
                              + (f" (close categories: {', '.join(close)})" if close else "")) from None
         return found
