@@ -19,6 +19,7 @@ from foon2pddl.model.kitchen import Kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.relational_init import placed_since_start
 from foon2pddl.pddl.relational_plan import count_roles, plan_unit, taken_with
+from foon2pddl.pddl.relational_touched import late_empties
 
 ON = lambda holder: make_state("on", holder)  # noqa: E731
 ONION_IN = n("onion", "whole", inside("bowl"))
@@ -102,3 +103,44 @@ def test_placed_since_start_follows_units_that_leave_an_object_where_it_is():
     assert placed_since_start(units, kitchen) == {ONION_IN, peeled, n("bread", "toasted", ON("board"))}
     # a bread on the board from the kitchen too: the counts take that node from the kitchen, not from its maker
     assert placed_since_start(units, kitchen | {on_board}) >= {on_board, buttered}
+
+
+# The pizza's shape with the bowls named `mixing bowl`: the onion starts `in [bowl]`, a name only the last pour's
+# output uses for its mixing bowl (`unit_aliases`), which the task reads as the mixing bowl (`task_aliases`: no
+# object of the task is a `bowl`); the completion starts the onion in `mixing bowl (contains {onion})`.
+MIXING = "mixing bowl"
+PLACED_MIXING = n(MIXING, "empty", ON("surface"))
+FLOUR_MIXING = n(MIXING, contains("flour"), ON("surface"))
+MIXED = n(MIXING, contains("flour", "onion"), ON("surface"))
+RENAMED = (
+    UNITS[0], UNITS[1],
+    FunctionalUnit((n(MIXING, "empty"),), Motion("pick-and-place"), (PLACED_MIXING,)),
+    FunctionalUnit((n("bag", contains("flour")), n("flour", "powder", inside("bag")), PLACED_MIXING), Motion("pour"),
+                   (FLOUR_MIXING, n("flour", "powder", inside(MIXING)))),
+    FunctionalUnit((n("board", contains("onion")), n("onion", "chopped", ON("board")), FLOUR_MIXING), Motion("pour"),
+                   (MIXED, n("onion", "chopped", inside("bowl")), n("board", "empty"))),
+)
+RENAMED_KITCHEN = (*(x for x in KITCHEN if x.label != "bowl"), n(MIXING, "empty"))
+
+
+def test_the_holder_is_read_by_the_tasks_names_as_the_action_empties_it():
+    """The count reads the holder the onion leaves as the action does (`relational_plan.late_emptied` through the
+    task's aliases): one mixing bowl, as one bowl above (two when the count read `bowl` by the unit's own names)."""
+    outcome = clean_unit_plan(RENAMED, RENAMED_KITCHEN, MIXED, time_limit=60)
+    assert [x.label for x in outcome.task.instances].count(MIXING) == 1
+    holder = n(MIXING, contains("onion"))
+    home = frozenset(RENAMED_KITCHEN) | {holder}
+    alias = {"bowl": MIXING}
+    unit = plan_unit(RENAMED[0], frozenset(RENAMED_KITCHEN), frozenset(), frozenset({(MIXING, "onion")}))
+    counted = [(r.before, r.after) for r in count_roles(unit, alias, home, placed_since_start(RENAMED, home, alias),
+                                                        taken_with(RENAMED, alias)) if r.label == MIXING]
+    emptied = late_empties(unit, home, alias)[1]  # the action's: the onion's slot
+    assert counted == emptied == [(holder, n(MIXING, "empty"))]
+    # where the kitchen started the onion and what a unit takes it with read by the same names: peeled `in [mixing
+    # bowl]`, it is still in the bowl it started `in`; a pot listing `rice` holds the white rice taken with it
+    peeled = n("onion", "peeled", inside(MIXING))
+    peel = FunctionalUnit((ONION_IN,), Motion("peel"), (peeled,))
+    assert peeled in placed_since_start((peel,), home, alias) - placed_since_start((peel,), home)
+    rice, pot = n("white rice", inside("pot")), n("pot", contains("rice"))
+    boil = FunctionalUnit((rice, pot), Motion("boil"), (n("white rice", "boiled", inside("pot")),))
+    assert (rice, pot) in taken_with((boil,), {"rice": "white rice"}) - taken_with((boil,))

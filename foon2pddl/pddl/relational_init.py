@@ -11,7 +11,7 @@ from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
 from ..model.scene import SceneObject
-from .holder_words import task_aliases
+from .holder_words import aliased, task_aliases
 from .names import NameTable
 from .task import Instance
 
@@ -110,12 +110,19 @@ def same_place_steps(units: Iterable[FunctionalUnit]) -> dict[ObjectNode, frozen
     return {a: frozenset(b) for a, b in out.items()}
 
 
-def placed_since_start(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
+def placed_since_start(units: Sequence[FunctionalUnit], kitchen: frozenset[ObjectNode],
+                       alias: dict[str, str] | None = None) -> frozenset[ObjectNode]:
     """The nodes naming a place whose objects are where the kitchen started them: a kitchen node that names one, and
-    a node every unit of `units` making it makes of inputs of its label all at its place and so placed (the peel at
+    a node every unit of `units` making it makes of inputs of its label all at its place (names read through the
+    task's `alias`, as `relational_plan.late_emptied` reads the holder) and so placed (the peel at
     `0085-mini_bacon_egg_breakfast_pizza.txt:3` leaves the kitchen's onion `in [bowl]`); not one a unit puts there
     or makes there new (the buttered bread the pick-and-place at `0049-turkey_sandwich.txt:1` put on a board).
     The least fixpoint: a node only a cycle of units makes is not. O(passes x unit sizes), passes at most the nodes."""
+    alias = alias or {}
+
+    def at(n: ObjectNode) -> tuple[tuple[Relation, str], ...]:
+        return places(aliased(n, alias))
+
     makers: dict[ObjectNode, list[tuple[ObjectNode, ...]]] = {}
     for u in units:
         for b in u.outputs:
@@ -125,7 +132,7 @@ def placed_since_start(units: Sequence[FunctionalUnit], kitchen: frozenset[Objec
     grew = True
     while grew:
         more = {b for b, ways in makers.items() if b not in out and all(
-            ins and all(places(a) == places(b) and a in out for a in ins) for ins in ways)}
+            ins and all(at(a) == at(b) and a in out for a in ins) for ins in ways)}
         out |= more
         grew = bool(more)
     return frozenset(out)

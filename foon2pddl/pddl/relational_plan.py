@@ -52,6 +52,7 @@ from ..model.pairing import Role
 from ..model.places import describes_contents, head_of, listed, places
 from .holder_flows import Flow, gained, unit_flows
 from .holders import Fate, RelRole, relational_roles
+from .relational_init import read_names
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
            "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "taken_with", "without"]
@@ -258,15 +259,16 @@ def count_roles(plan: UnitPlan, alias: Mapping[str, str] | None = None, kitchen:
             out.append(Role(label, before, emptied[k]))
         else:
             out.append(Role(label, before, s.after))
-    return tuple(out) + _late_holders(plan, kitchen, started, taken)
+    return tuple(out) + _late_holders(plan, alias, kitchen, started, taken)
 
 
-def _late_holders(plan: UnitPlan, kitchen: frozenset[ObjectNode], started: frozenset[ObjectNode],
-                  taken: frozenset[tuple[ObjectNode, ObjectNode]]) -> tuple[Role, ...]:
+def _late_holders(plan: UnitPlan, alias: Mapping[str, str], kitchen: frozenset[ObjectNode],
+                  started: frozenset[ObjectNode], taken: frozenset[tuple[ObjectNode, ObjectNode]]) -> tuple[Role, ...]:
     """A role per holder the unit empties without naming it (`Slot.late_empties`, out of the holder it is in), of
     an object whose node is where the kitchen started it (`started`: no unit put it there): the one node of
-    `kitchen` of that holder's label (read through the unit's aliases) that names no place and lists that object
-    alone, where the completion starts it (`relational_init.holder_init`), goes to that node without it, when that is a kitchen node too (a later taker of it takes that
+    `kitchen` of that holder's label that names no place and lists that object alone, where the completion starts it
+    (`relational_init.holder_init`), goes to the node the action empties it to (`late_emptied`: names read through the
+    task's `alias`, as the action reads them), when that is a kitchen node too (a later taker of it takes that
     holder again, `count_reuse`; a node no kitchen has would credit the unit with making it). Uncounted, that holder
     is added after the count, and a later taker of it empty gets a holder of its own: the eggs and bacon pizza's
     onion leaves `bowl (contains {onion})` at `0085-mini_bacon_egg_breakfast_pizza.txt:12`, and the pick-and-place
@@ -281,21 +283,25 @@ def _late_holders(plan: UnitPlan, kitchen: frozenset[ObjectNode], started: froze
         src, label = s.rel.source, s.rel.role.label
         if not s.late_empties or src is None or src.role is not None or s.rel.role.before not in started:
             continue
-        holder = dict(unit_aliases(plan.unit)).get(src.holder, src.holder)
+        holder = alias.get(src.holder, src.holder)
         if any(t.rel.role.label == holder for t in plan.slots):
             continue  # the unit names one of that label: which holds the object is the unit's reading (two breads
             # on [cutting board] and one board listing bread, `0061-club_sandwich.txt:180`), no holder to add
-        homes = [x for x in kitchen if x.label == holder and listed(x) == {label} and not places(x)
-                 and (s.rel.role.before, x) not in taken]
-        if len(homes) == 1 and (emptied := without(homes[0], {label} | s.along)) in kitchen:
+        homes = [x for x in kitchen if x.label == holder and read_names(listed(x), alias) == {label}
+                 and not places(x) and (s.rel.role.before, x) not in taken]
+        if len(homes) == 1 and (emptied := late_emptied(plan, homes[0], alias)) in kitchen:
             out.append(Role(holder, homes[0], emptied))
     return tuple(out)
 
 
-def taken_with(units: Iterable[FunctionalUnit]) -> frozenset[tuple[ObjectNode, ObjectNode]]:
-    """(an object's node, a node listing its label) for every two inputs one of `units` takes together: the holder
-    that unit reads the object in (`_late_holders`). O(sum of inputs^2)."""
-    return frozenset((a, h) for u in units for a in u.inputs for h in u.inputs if h != a and a.label in listed(h))
+def taken_with(units: Iterable[FunctionalUnit],
+               alias: Mapping[str, str] | None = None) -> frozenset[tuple[ObjectNode, ObjectNode]]:
+    """(an object's node, a node listing its label, names read through the task's `alias` as `_late_holders` reads
+    them) for every two inputs one of `units` takes together: the holder that unit reads the object in. O(sum of
+    inputs^2)."""
+    alias = alias or {}
+    return frozenset((a, h) for u in units for a in u.inputs for h in u.inputs
+                     if h != a and a.label in read_names(listed(h), alias))
 
 
 def _late_leaving(plan: UnitPlan, alias: Mapping[str, str]) -> dict[str, frozenset[str]]:

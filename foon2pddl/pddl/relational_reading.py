@@ -244,9 +244,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         if key not in memo:
             by_unit, roles = plans_of(silent, sole, split)[4], {}
             if ("started", home) not in memo:  # where the kitchen's objects still are: once per counting kitchen
-                memo["started", home] = placed_since_start([f.units[u] for u in units], home)
+                memo["started", home] = placed_since_start([f.units[u] for u in units], home, alias)
             if "taken" not in memo:  # (object, holder) node pairs the task's units take together
-                memo["taken"] = taken_with(f.units[u] for u in units)
+                memo["taken"] = taken_with((f.units[u] for u in units), alias)
             started, taken = memo["started", home], memo["taken"]
 
             def roles_of(unit):  # asked once per unit and plan position by the counts: read once
