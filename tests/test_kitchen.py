@@ -110,6 +110,10 @@ def test_json_errors_name_the_item(tmp_path):
     ("# nothing\n", 0, "lists no object nodes"),
     # `0 x bowl` read as a bowl by retrieve and as none by plan (stop 59's newcomer pass): one reading, an error
     ("onion: whole\n0 x bowl: empty\n", 2, "a count of 0 lists no object"),
+    # read as the labels `-1 x bowl`, `1.5 x bowl`, `2 x`, each a warning only (stop 60's newcomer pass)
+    ("onion: whole\n-1 x bowl: empty\n", 2, "a count of -1: a count is a whole number of at least 1"),
+    ("1.5 x bowl: empty\n", 1, "a count of 1.5: a count is a whole number of at least 1"),
+    ("onion: whole\n2 x\n", 2, "a count of 2: a count is a whole number of at least 1, then the node"),
 ])
 def test_kitchen_file_errors_name_the_line(tmp_path, text, line, expected):
     path = tmp_path / "k.txt"

@@ -88,6 +88,8 @@ def _not_a_kitchen(data: object) -> tuple[str, tuple[str, ...]]:
 
 #: `2 x bowl: empty`: a node-per-line kitchen entry with an instance count.
 _COUNT = re.compile(r"(\d+)\s*[x\u00d7]\s+(\S.*)\Z")
+#: what reads as a count but is none: `-1 x bowl`, `1.5 x bowl`, `2 x` with no node after it.
+_NOT_A_COUNT = re.compile(r"([-+]?\d*[.,]?\d+)\s*[x\u00d7](?:\s|\Z)")
 
 
 def read_node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None]]:
@@ -118,6 +120,10 @@ def _node_lines(text: str, path: str) -> list[tuple[ObjectNode, int | None, int]
         count = int(counted.group(1)) if counted else None
         if count == 0:  # "none" to a count, "one" to FOON's semantics: neither reading is safe to pick silently
             raise FoonSyntaxError(path, lineno, "a count of 0 lists no object: remove the line, or count at least 1", line)
+        wrong = None if counted else _NOT_A_COUNT.match(line)
+        if wrong:  # else read as the label `-1 x bowl`, matching no node: a warning, the line's objects lost
+            raise FoonSyntaxError(path, lineno, f"a count of {wrong.group(1)}: a count is a whole number of at least 1, "
+                                  "then the node (`2 x bowl: empty`)", line)
         try:
             spec = parse_goal_spec(counted.group(2) if counted else line)
         except ValueError as exc:
