@@ -102,7 +102,7 @@ def _set(path, value):
     (_set(("units", 0, "outputs", 0, "states", 1, "related"), ["bowl"]), "units[0].outputs[0].states[1].related",
      "must be a string"),
     (_set(("units", 0, "inputs", 0, "states", 0, "colour"), "red"), "units[0].inputs[0].states[0].colour",
-     "unknown field 'colour'"),
+     "unknown key 'colour' in state (expected one of label, related, ingredients)"),
     (_set(("units", 0, "inputs", 0, "motion_flag"), True), "units[0].inputs[0].motion_flag", "must be an integer"),
     (_set(("units", 0, "inputs", 0, "dish"), "3"), "units[0].inputs[0].dish", "must be an integer"),
     (_set(("units", 0, "motion", "label"), "pour*"), "units[0].motion.label", "composite"),

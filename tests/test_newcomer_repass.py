@@ -304,7 +304,8 @@ def test_a_misspelt_json_field_is_named_as_the_typo(tmp_path):
     bad.write_text(export.stdout.replace('"states"', '"stats"', 1))
     r = run("stats", bad)
     assert r.exit_code == 2 and "Traceback" not in r.output
-    assert "units[0].inputs[0].stats: unknown field 'stats' in object node: did you mean 'states'?" in r.stderr
+    assert ("units[0].inputs[0].stats: unknown key 'stats' in object node: did you mean 'states'? (expected one of "
+            "label, states, motion_flag, goal, dish)") in r.stderr, r.stderr
 
 
 def test_a_misspelt_command_names_the_closest_one():

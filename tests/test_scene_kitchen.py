@@ -152,7 +152,8 @@ BOWL = {"id": "bowl_1", "label": "bowl", "states": ["empty"]}
     ([BOWL, {"id": "egg_1", "label": "egg", "states": ["whole [bowl"]}], 1, "cannot read state"),
     ([BOWL, {"id": "egg_1", "label": "egg", "states": ["whole\u0007"]}], 1, "control character in state"),
     ([BOWL, {"id": "egg_1", "label": "egg", "states": "whole"}], 1, "'states' must be a list of strings"),
-    ([BOWL, {"id": "egg_1", "label": "egg", "colour": "white"}], 1, "unknown key 'colour'"),
+    ([BOWL, {"id": "egg_1", "label": "egg", "colour": "white"}], 1,
+     "object 2: unknown key 'colour' (expected one of id, label, states, in, on)"),
     ([BOWL, {"id": "", "label": "egg"}], 1, "'id' must be a non-empty string"),
     ([BOWL, {"id": "egg_1", "label": "egg", "in": "egg_1"}], 1, "cannot hold itself"),
     ([{**BOWL, "in": "pot_1"}, {"id": "pot_1", "label": "pot", "in": "bowl_1"}], 0, "cycle"),
@@ -171,7 +172,9 @@ def test_a_bad_scene_is_a_located_error_never_a_traceback(tmp_path, objects, ind
 
 
 def test_a_scene_document_is_checked_as_a_whole(tmp_path):
-    for data, message in [({"objects": []}, "non-empty list"), ({"objects": [BOWL], "robot": 1}, "unknown key 'robot'"),
+    for data, message in [({"objects": []}, "non-empty list"), ({"objects": [BOWL], "robot": 1},
+                                                                 "unknown key 'robot' (expected one of objects, $schema, "
+                                                                 "description, name)"),
                           ({"things": []}, "or a scene")]:
         path = tmp_path / "s.json"
         path.write_text(json.dumps(data))

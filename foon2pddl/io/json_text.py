@@ -116,12 +116,15 @@ def key_line(text: str, key: str) -> int:
     return text.count("\n", 0, at) + 1 if at >= 0 else 1
 
 
-def unknown_key(keys, allowed) -> tuple[str, str] | None:
+def unknown_key(keys, allowed, within: str = "", meant: str | None = None) -> tuple[str, str] | None:
     """The first of `keys` (a JSON object's) not in `allowed`, with the words every reader of a JSON file says it in
-    (`unknown key 'state' (expected one of ...)`: a typo must not drop what it holds without a word), else None."""
+    (`unknown key 'state' (expected one of ...)`: a typo must not drop what it holds without a word), else None.
+    `within` names the kind of object (`unknown key 'colour' in state`), `meant` the allowed key a typo stands for
+    (`: did you mean 'states'?`)."""
     for key in keys:
         if key not in allowed:
-            return key, f"unknown key {key!r} (expected one of {', '.join(allowed)})"
+            return key, (f"unknown key {key!r}" + (f" in {within}" if within else "")
+                         + (f": did you mean {meant!r}?" if meant else "") + f" (expected one of {', '.join(allowed)})")
     return None
 
 

@@ -18,7 +18,7 @@ from ..errors import FoonSyntaxError
 from ..model.foon import Foon, FunctionalUnit, Motion, ObjectNode, Source, State, make_node, make_state, normalize_label
 from ..model.levels import LEVELS
 from .constraints_file import is_constraints
-from .json_text import decode_tracked, line_of, load_json, text_problem
+from .json_text import decode_tracked, line_of, load_json, text_problem, unknown_key
 from .parser import read_text
 
 FORMAT = "foon2pddl.foon"
@@ -112,17 +112,17 @@ def _pointer(where: tuple[str | int, ...]) -> str:
 def _fields(data: Any, where: tuple, what: str, required: tuple[str, ...], optional: tuple[str, ...]) -> dict:
     if not isinstance(data, dict):
         raise _Invalid(where, f"expected {what} (a JSON object), found {_kind(data)}")
-    unknown = sorted(set(data) - set(required) - set(optional))
-    allowed = ", ".join(required + optional)
+    allowed = required + optional
     for key in required:
         if key not in data:
-            typo = difflib.get_close_matches(key, unknown, n=1)  # `stats` for `states`: name what the file has
+            # `stats` for `states`: name what the file has
+            typo = difflib.get_close_matches(key, [k for k in data if k not in allowed], n=1)
             if typo:
-                raise _Invalid(where + (typo[0],), f"unknown field {typo[0]!r} in {what}: did you mean {key!r}? "
-                                                   f"(allowed: {allowed})")
+                _, words = unknown_key(typo, allowed, what, meant=key)
+                raise _Invalid(where + (typo[0],), words)
             raise _Invalid(where, f"{what} lacks the required field {key!r}")
-    if unknown:
-        raise _Invalid(where + (unknown[0],), f"unknown field {unknown[0]!r} in {what} (allowed: {allowed})")
+    if (bad := unknown_key(data, allowed, what)) is not None:
+        raise _Invalid(where + (bad[0],), bad[1])
     return data
 
 

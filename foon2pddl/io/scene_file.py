@@ -17,7 +17,7 @@ from ..model.foon import Foon, make_node
 from ..model.kitchen import Kitchen, scene_kitchen
 from ..model.physical import Relation
 from ..model.scene import SceneObject, SceneProblem, place_scene
-from .json_text import line_of, text_problem
+from .json_text import line_of, text_problem, unknown_key
 
 __all__ = ["KEYS", "OBJECT_KEYS", "is_scene", "placed_scene", "scene_of"]
 
@@ -51,9 +51,8 @@ def _object(item: Any, k: int) -> SceneObject:
 
     if not isinstance(item, dict):
         raise ValueError(f"object {k}: expected a JSON object with 'id' and 'label'")
-    unknown = sorted(set(item) - set(OBJECT_KEYS))
-    if unknown:
-        raise ValueError(f"object {k}: unknown key {unknown[0]!r} (expected {', '.join(OBJECT_KEYS)})")
+    if (bad := unknown_key(item, OBJECT_KEYS)) is not None:
+        raise ValueError(f"object {k}: {bad[1]}")
     oid = _string(item, "id", f"object {k}")
     where = f"object {oid!r}"
     label = _string(item, "label", where)
@@ -83,9 +82,8 @@ def _object(item: Any, k: int) -> SceneObject:
 
 def scene_of(data: dict, text: str, path: str) -> Kitchen:
     """The scene kitchen of a decoded scene document (`text` locates problems), its nodes not yet completed."""
-    unknown = sorted(set(data) - set(KEYS))
-    if unknown:
-        raise FoonSyntaxError(path, line_of(text, ()), f"unknown key {unknown[0]!r} (expected {', '.join(KEYS)})")
+    if (bad := unknown_key(data, KEYS)) is not None:
+        raise FoonSyntaxError(path, line_of(text, ()), bad[1])
     items = data["objects"]
     if not isinstance(items, list) or not items:
         raise FoonSyntaxError(path, line_of(text, ("objects",)), "'objects' must be a non-empty list of objects")
