@@ -9,7 +9,7 @@ from node_words import contains, inside, n
 from relational_checks import clean_dish_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, Source, make_state
-from foon2pddl.pddl.count_returns import with_returns
+from foon2pddl.pddl.count_returns import changers, with_returns
 from foon2pddl.pddl.input_stitch import stitches
 from foon2pddl.pddl.list_arrivals import arrivals
 
@@ -121,3 +121,18 @@ def test_easy_tomato_soup_is_solved_and_replay_clean_with_one_pot_and_one_of_eac
     # before, and a translation that did not end)
     assert sum(1 for x in outcome.task.instances if x.label == "tomato") == 1
     assert any("uncover takes pot (" in note and "drops hot" in note for note in outcome.compiled.notes)
+
+
+def test_one_changers_shared_by_many_plans_finds_the_ways_back_each_finds_alone():
+    # `instance_counts.derive_counts` hands one `changers` to every plan it puts ways back in: what it keeps from a
+    # node must not depend on the plan (units already in it are no step), nor on `stitched`
+    _, units = _pot()
+    foon = Foon(units)
+    kitchen = frozenset({units[0].inputs[0], units[0].inputs[1], n("spoon", "clean"), n("pot lid", "clean")})
+    shared = changers(foon, range(5))
+    calls = [((0, 1, 4), True), ((0, 1, 2, 4), True), ((0, 1, 4), False), ((0, 1, 3, 4), True), ((0, 1, 4), True)]
+    found = [with_returns(foon, plan, range(5), kitchen, stitched=s, changing=shared) for plan, s in calls]
+    assert found == [with_returns(foon, plan, range(5), kitchen, stitched=s) for plan, s in calls]
+    # the first fills what it keeps from the pot's nodes, stitched; the third reads them unstitched (no way
+    # back); the second and fourth have the cover or the uncover in the plan (no way back without it)
+    assert found == [(0, 1, 2, 3, 4), (0, 1, 2, 4), (0, 1, 4), (0, 1, 3, 4), (0, 1, 2, 3, 4)]

@@ -24,12 +24,14 @@ pan `contains {omelette}` and the cook after it takes the pan `contains {bacon, 
 sprinkle before the flip makes from the flip's node, so a second bacon is sprinkled, not a second omelette's whole
 chain counted (`instance_counts.derive_counts` keeps that plan when its counts are fewer). Else the plan stays
 (a second object it is).
-O(p^2 r) for a plan of p units of r roles, plus O(n s r) per way back for n nodes reached and s spare units.
+O(p^2 r) for a plan of p units of r roles, plus O(n s) per way back for n nodes reached and s spare units;
+what each node offers as a step is found once per `changers` (`Changers.steps_from`, O(s r) a node).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, unit_roles
@@ -41,10 +43,37 @@ __all__ = ["RETURN_DEPTH", "Changers", "changers", "with_returns"]
 RETURN_DEPTH = 4
 
 
-#: label -> the task's units with a role changing an object of that label out of a node, in the task's order: (unit,
-#: its roles, the nodes of that label it changes one out of, whether a unit makes none of those: a stitched way may
-#: take it in a node that says more)
-Changers = dict[str, list[tuple[int, tuple[Role, ...], frozenset[ObjectNode], bool]]]
+#: One unit that may be on a way back from a node: (unit, its step, the nodes its other roles take, the nodes its
+#: roles leave).
+Step = tuple[int, Role, tuple[ObjectNode, ...], frozenset[ObjectNode]]
+
+
+@dataclass(frozen=True, eq=False)
+class Changers:
+    """The task's units with a role changing an object out of a node, by label (`by_label`), in the task's order:
+    (unit, its roles, the nodes of that label it changes one out of, whether a unit makes none of those: a stitched
+    way may take it in a node that says more, and those roles in role order, each with whether a unit makes none of
+    its node). `steps_from` keeps what `_way_back` finds from a node: the many ways back of one count
+    (`instance_counts.derive_counts`: a thousand in GEN trial 10 goal 57) walk from the same few nodes."""
+
+    by_label: dict[str, list[tuple[int, tuple[Role, ...], frozenset[ObjectNode], bool, tuple[tuple[Role, bool], ...]]]]
+    _from: dict[tuple[ObjectNode, bool], tuple[Step, ...]] = field(default_factory=dict)
+
+    def steps_from(self, node: ObjectNode, stitched: bool) -> tuple[Step, ...]:
+        """The units that may change an object out of `node` (the others have no step from it), in order: those
+        with a role from it, and, `stitched`, those with one from a node no unit makes; each with its step, its
+        first role from `node`, or, stitched, from a node no unit makes that says less (`said_less`), and the
+        nodes its other roles take and those its roles leave. Found once per node: O(units of its label x roles)."""
+        key = (node, stitched)
+        if (found := self._from.get(key)) is None:
+            found = self._from[key] = tuple(
+                (v, step, tuple(r.before for r in roles if r.before is not None and r is not step),
+                 frozenset(r.after for r in roles if r.after is not None))
+                for v, roles, out_of, unmade, tries in self.by_label.get(node.label, ())
+                if node in out_of or (stitched and unmade)
+                if (step := next((r for r, new in tries if r.before == node
+                                  or (stitched and new and said_less(r.before, node))), None)) is not None)
+        return found
 
 
 def changers(foon: Foon, units: Iterable[int], roles_of: Callable[[FunctionalUnit], tuple[Role, ...]] = unit_roles
@@ -52,46 +81,36 @@ def changers(foon: Foon, units: Iterable[int], roles_of: Callable[[FunctionalUni
     """The units of `units` that may be on a way back, by label (`Changers`): `instance_counts.derive_counts` finds
     them once for the many plans it puts ways back in (each way back looked them up again: 63 of the 305 s a GEN
     experiment cell spent under cProfile). O(units x roles)."""
-    out: Changers = {}
+    out: dict[str, list] = {}
     for v in units:
         roles = roles_of(foon.units[v])
-        out_of = [r.before for r in roles if r.changes and r.before is not None]
-        for label in dict.fromkeys(n.label for n in out_of):
-            nodes = frozenset(n for n in out_of if n.label == label)
-            out.setdefault(label, []).append((v, roles, nodes, any(n not in foon.producers for n in nodes)))
-    return out
+        out_of = [r for r in roles if r.changes and r.before is not None]
+        for label in dict.fromkeys(r.before.label for r in out_of):
+            tries = tuple((r, r.before not in foon.producers) for r in out_of if r.before.label == label)
+            out.setdefault(label, []).append((v, roles, frozenset(r.before for r, _ in tries),
+                                              any(new for _, new in tries), tries))
+    return Changers(out)
 
 
-def _way_back(foon: Foon, start: ObjectNode, end: ObjectNode, steps: Changers, kitchen: frozenset[ObjectNode],
+def _way_back(start: ObjectNode, end: ObjectNode, steps: Changers, spent: set[int], kitchen: frozenset[ObjectNode],
               stitched: bool) -> list[int]:
-    """The fewest units of `steps` (the spare units that may change an object of a label; at most `RETURN_DEPTH`)
-    that change an object from `start` back to `end`, one after the other, each taking otherwise only kitchen nodes
-    and nodes the units before it make; [] if none. Breadth-first, each node reached once (a universal FOON has
-    hundreds of spare units)."""
+    """The fewest units of `steps` but those in `spent` (the spare units that may change an object of a label; at
+    most `RETURN_DEPTH`) that change an object from `start` back to `end`, one after the other, each taking
+    otherwise only kitchen nodes and nodes the units before it make; [] if none. Breadth-first, each node reached
+    once (a universal FOON has hundreds of spare units)."""
     frontier: list[tuple[ObjectNode, list[int], frozenset[ObjectNode]]] = [(start, [], frozenset())]
     seen = {start}
-
-    def able(node: ObjectNode) -> list[tuple[int, tuple[Role, ...]]]:
-        """The spare units that may change an object out of `node` (the others have no step from it), in order:
-        those with a role from it, and, stitched, those with one from a node no unit makes."""
-        return [(v, roles) for v, roles, out_of, unmade in steps.get(node.label, ())
-                if node in out_of or (stitched and unmade)]
-
     for _ in range(RETURN_DEPTH):
         nxt = []
         for node, path, made in frontier:
-            for v, roles in able(node):
-                step = next((r for r in roles if r.changes and r.before is not None and r.before.label == node.label
-                             and (r.before == node or (stitched and r.before not in foon.producers
-                                                       and said_less(r.before, node)))), None)
-                if v in path or step is None or any(r.before is not None and r is not step and r.before not in kitchen
-                                                    and r.before not in made for r in roles):
+            for v, step, others, leaves in steps.steps_from(node, stitched):
+                if v in spent or v in path or any(b not in kitchen and b not in made for b in others):
                     continue
                 if step.after == end:
                     return [*path, v]
                 if step.after is not None and step.after not in seen:
                     seen.add(step.after)
-                    nxt.append((step.after, [*path, v], made | {r.after for r in roles if r.after is not None}))
+                    nxt.append((step.after, [*path, v], made | leaves))
         frontier = nxt
     return []
 
@@ -112,7 +131,7 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
     """`plan` with the ways back of the task's `units` put in (module doc); `again`: a unit of the plan fired
     again where no unit of the task leads back; `plan_made`: a unit on the way may also take a node a unit of the
     plan up to that unit makes; `changing`: `changers` of `units` (found here when a way back is looked for)."""
-    planned = set(plan)
+    spent = set(plan)  # the units no way back takes: the plan's and those on the ways back put in
     order = list(plan)
     steps: Changers | None = None  # the spare units, found when a way back is first looked for
     taken = [roles_of(foon.units[m]) for m in plan]
@@ -129,12 +148,11 @@ def with_returns(foon: Foon, plan: Sequence[int], units: Iterable[int], kitchen:
             if r.before not in later[i + 1]:
                 continue
             if steps is None:
-                steps = {k: [x for x in xs if x[0] not in planned]
-                         for k, xs in (changers(foon, units, roles_of) if changing is None else changing).items()}
-            if back := _way_back(foon, r.after, r.before, steps, kitchen | made if plan_made else kitchen, stitched):
+                steps = changers(foon, units, roles_of) if changing is None else changing
+            if back := _way_back(r.after, r.before, steps, spent, kitchen | made if plan_made else kitchen, stitched):
                 at = order.index(m) + 1
                 order[at:at] = back
-                steps = {k: [x for x in xs if x[0] not in back] for k, xs in steps.items()}
+                spent.update(back)
             elif again and (repeat := _again(plan, taken, i, r)) is not None:
                 at = order.index(m) + 1
                 order[at:at] = [repeat]
