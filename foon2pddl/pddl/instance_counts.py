@@ -241,9 +241,11 @@ def derive_counts(foon: Foon, units: Sequence[int], kitchen: frozenset[ObjectNod
         changing = changers(foon, units, roles_of)  # the units on ways back, found once for every plan below
 
         def ways_of(plan: tuple[int, ...]) -> dict[bool, tuple[tuple[int, ...], ...]]:  # stitched: fired again
-            return {made: tuple(with_returns(foon, plan, units, kitchen, roles_of, stitched, again, plan_made=made,
-                                             changing=changing)
-                                for again in (False, stitched)) for made in (False, together)}
+            # each distinct (made, again) put in once: without `stitched` or `together` two of them are the same
+            put = {(made, again): with_returns(foon, plan, units, kitchen, roles_of, stitched, again, plan_made=made,
+                                               changing=changing)
+                   for made in dict.fromkeys((False, together)) for again in dict.fromkeys((False, stitched))}
+            return {made: tuple(put[made, again] for again in (False, stitched)) for made in (False, together)}
         ways = ways_of(found[0])
         plans = orders(foon, ways[True], ways[False], roles_of) if together else tuple(dict.fromkeys(ways[False]))
         for again in dict.fromkeys(o[0] for o in other if o is not None and o != found):  # kept when fewer
