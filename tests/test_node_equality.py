@@ -46,3 +46,12 @@ def test_equality_ignores_marks_and_other_types():
     assert a != make_node("egg", [make_state("cracked")])
     assert a != "egg" and make_state("whole") != ("whole", "", ())
     assert (a == object()) is False
+
+
+@given(_NODES, _NODES)
+def test_a_node_built_without_make_node_compares_by_its_fields(a, b):
+    # `ObjectNode.__eq__` reads the hash `make_node` keeps; a node from the dataclass constructor has none until hashed
+    c = ObjectNode(b.label, b.states)
+    assert (a == c) == (c == a) == (_fields(a) == _fields(b))
+    assert c == b and ObjectNode(b.label, b.states) == c
+

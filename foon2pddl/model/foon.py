@@ -107,8 +107,15 @@ class ObjectNode(_HashOnce):
         and after the unit), without building tuples."""
         if other.__class__ is not self.__class__:
             return NotImplemented
-        return self is other or (hash(self) == hash(other) and self.label == other.label
-                                 and self.states == other.states)
+        if self is other:
+            return True
+        try:  # the kept hashes read directly: two calls of `__hash__` were a third of the time of this method
+            if self._hash != other._hash:
+                return False
+        except AttributeError:  # a node built without `make_node`, not hashed yet
+            if hash(self) != hash(other):
+                return False
+        return self.label == other.label and self.states == other.states
 
     def _identity(self) -> tuple:
         return (self.label, self.states)
