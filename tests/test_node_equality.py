@@ -55,3 +55,10 @@ def test_a_node_built_without_make_node_compares_by_its_fields(a, b):
     assert (a == c) == (c == a) == (_fields(a) == _fields(b))
     assert c == b and ObjectNode(b.label, b.states) == c
 
+
+def test_equal_states_are_one_object():
+    # nodes of one value from different units then compare their states by identity (`make_state`)
+    one = make_state("In", "bowl", ["egg", "salt"])
+    assert make_state("in", " Bowl", ["salt", "egg", "salt"]) is one
+    assert make_state("in", "bowl", ["egg"]) is not one
+    assert make_node("egg", [one]).states[0] is make_node("egg", [make_state("in", "bowl", ["salt", "egg"])]).states[0]
