@@ -12,6 +12,8 @@ does not have may be made by a unit the plan has (`made_in_plan`)."""
 
 from __future__ import annotations
 
+import weakref
+
 from ..analysis.reachability import Reachability
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode
@@ -24,7 +26,30 @@ __all__ = ["AT_HAND", "kitchen_held", "made_in_plan", "makers_together", "needs"
 AT_HAND = -1
 
 
+#: What `makers_together` and `needs` found on a fixpoint, kept while it lives (keyed by identity: a `Reachability`
+#: is immutable): `count_plans._chosen` asks the makers of the same units again for each plan it makes (163,603 calls
+#: for 2,753 plans in GEN trial 10 goal 57), and the rules ask which nodes a unit needs as often (113,516 walks).
+_KEPT: weakref.WeakKeyDictionary[Reachability, tuple[dict[tuple[int, bool, bool], dict[int, int]],
+                                                     dict[int, frozenset[int]]]] = weakref.WeakKeyDictionary()
+
+
+def _kept(reach: Reachability) -> tuple[dict[tuple[int, bool, bool], dict[int, int]], dict[int, frozenset[int]]]:
+    """`_KEPT`'s (makers together by (unit, first, placed), nodes needed by unit) of `reach`."""
+    if (kept := _KEPT.get(reach)) is None:
+        kept = _KEPT[reach] = ({}, {})
+    return kept
+
+
 def makers_together(reach: Reachability, u: int, first: bool = False, placed: bool = False) -> dict[int, int]:
+    """`_makers_together`, found once per fixpoint, unit and flags (`_KEPT`); the mapping is shared: not to be
+    changed."""
+    together = _kept(reach)[0]
+    if (found := together.get(key := (u, first, placed))) is None:
+        found = together[key] = _makers_together(reach, u, first, placed)
+    return found
+
+
+def _makers_together(reach: Reachability, u: int, first: bool = False, placed: bool = False) -> dict[int, int]:
     """Node id -> the unit to make it, for the pairs of unit `u`'s inputs that are a container's node listing a
     label and that label's node placed in it, made by two units (first achievers), when some unit firing before
     `u` makes both. On a universal FOON the onigiri's pour takes `measuring cup (contains {water})`, whose first
@@ -274,13 +299,23 @@ def _earliest(reach: Reachability, units: list[int]) -> int:
 def needs(reach: Reachability, u: int, nodes: set[int]) -> bool:
     """Whether unit `u` needs one of `nodes` (ids), through first achievers: the hash browns' second mix makes
     `bowl (contains {potato mixture})` and the mixture with the egg, from the bowl the first mix leaves in that
-    very node, so it cannot make that node for the unit that takes both."""
-    seen, stack = set(), list(reach.index.inputs[u])
-    while stack:
-        n = stack.pop()
-        if n in nodes:
-            return True
-        if n not in seen and reach.node_round[n] > 0:
-            seen.add(n)
-            stack.extend(reach.index.inputs[reach.achiever[n]])
-    return False
+    very node, so it cannot make that node for the unit that takes both. The nodes `u` needs are walked once per
+    fixpoint (`_needed`)."""
+    return not _needed(reach, u).isdisjoint(nodes)
+
+
+def _needed(reach: Reachability, u: int) -> frozenset[int]:
+    """The nodes (ids) unit `u` needs through first achievers: its inputs and, for each such node a unit makes,
+    its first achiever's inputs, and so on. Kept per fixpoint and unit (`_KEPT`); O(nodes + edges) once."""
+    needed = _kept(reach)[1]
+    if (found := needed.get(u)) is None:
+        seen: set[int] = set()
+        met, stack = set(reach.index.inputs[u]), list(reach.index.inputs[u])
+        while stack:
+            n = stack.pop()
+            if n not in seen and reach.node_round[n] > 0:
+                seen.add(n)
+                met.update(ins := reach.index.inputs[reach.achiever[n]])
+                stack.extend(ins)
+        found = needed[u] = frozenset(met)
+    return found
