@@ -179,15 +179,11 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
     return None
 
 
-def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> list[str]:
+def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan (or that
-    neither would); returns the words of the `hint:` lines said, for the outputs that carry them (`plan --format
-    json`'s `hints`)."""
-    said = []
+    neither would); `plan --format json` holds the same lines' words instead (`hint_lines`, `hint_words`)."""
     for line in hint_lines(net, kitchen, goal, goal_file, level):  # each as found: the network check takes seconds
         click.echo(line, err=True)
-        said.append(line)
-    return hint_words(said)
 
 
 #: How a hint's line starts: what would make the goal (the lines `hint_lines` gives that do not are what was checked).
