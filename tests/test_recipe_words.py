@@ -50,3 +50,17 @@ def test_a_bowl_things_go_in_stays_into():
     assert recipe_text(pour) == (
         "pour crouton from the bowl (contains {crouton}) into the bowl (coated {garlic}, contains {lettuce})")
     assert any(s.endswith(". " + recipe_text(pour)) for s in _steps("ACT-0080-caesar_salad.txt"))
+
+
+def test_a_place_that_holds_a_place_is_said_as_a_place_outward():
+    """Issue 24's `heat butter (in [bowl]), microwave (contains {bowl}, on)` (0016-easy_garlic_bread-one-pot-chef.txt:46):
+    the microwave holds the bowl the butter is in, so it is where the butter heats, not a second thing heated; and
+    the apple turnover's `bake oven (contains {baking tray}, on, preheated), apple pie (...)` (0086:594). A place
+    inside another place gets its own word (`in the baking tray ..., oven (on, ...)` ran them together)."""
+    heat = recipe_text(_unit("0016-easy_garlic_bread-one-pot-chef.txt", 46))
+    assert heat == "heat butter, in the bowl (in [microwave]), in the microwave (contains {bowl}, on)", heat
+    bake = recipe_text(_unit("0086-apple_turnover.txt", 594))
+    assert bake.startswith("bake apple pie (") and bake.endswith(
+        ", on the baking tray (in [oven]), in the oven (contains {baking tray}, on, preheated)"), bake
+    fries = _steps("0035-oven-baked_sweet_potato_fries.txt")
+    assert any(s.endswith("in the baking tray (in [oven]), in the oven (on, with [baking tray])") for s in fries), fries

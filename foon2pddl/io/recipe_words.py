@@ -254,8 +254,13 @@ def _changed(unit: FunctionalUnit, new: dict[str, ObjectNode], by_label: dict[st
         changed = [i for i in changing if not soiled(i, new.get(i.label))] or changing
     if not changed:  # FOON says nothing changes (a unit copying its input): every input, as written
         return list(unit.inputs), None
-    if len(changed) > 1:
-        inside = {h for i in changed for h in _holders(i, named)}
+    if len(changed) > 1:  # what holds a changed input, or holds its holder (the microwave round the bowl), is a place
+        inputs = {i.label: i for i in unit.inputs}
+        inside, todo = set(), [h for i in changed for h in _holders(i, named)]
+        while todo:
+            if (h := todo.pop()) not in inside:
+                inside.add(h)
+                todo += _holders(inputs[h], named) if h in inputs else []
         changed = [i for i in changed if i.label not in inside] or changed
     return changed, None
 
@@ -357,7 +362,7 @@ def _by_word(places: list[ObjectNode], unit: FunctionalUnit, named: Aliases) -> 
     for p in places:
         word = next((w for n in unit.inputs if (w := _place(n, named)) and w[1] == p.label), ("on", ""))[0]
         word = _AT.get(word, word)
-        if runs and runs[-1][0] == word:
+        if runs and runs[-1][0] == word and not any(p.label in _holders(q, named) for q in runs[-1][1]):
             runs[-1][1].append(p)
         else:
             runs.append((word, [p]))
