@@ -1080,3 +1080,21 @@ def test_the_objects_account_at_level_1_says_what_a_step_makes_as_made():
     assert account.splitlines()[1:] == [
         "1. squeeze lime_1, juicer_1, making lime_juice_1",
         "2. mix bowl_1, avocado_1, lime_juice_1, onion_1, tomato_1, cilantro_1, salt_1, fork_1, making guacamole_1"]
+
+
+def test_a_plan_of_a_goal_foons_semantics_does_not_make_says_so():
+    """Stop 60's pass: `retrieve tests/data/foon-subgraphs --goal ramen` (docs/format.md's base-kitchen example)
+    says it cannot be made (add `soup broth (in [pot])`), while `plan` on the same network and kitchen said
+    `solved: ..., valid` with no word on the difference: the relational encoding read the scoop's `soup broth (in
+    [pot])` as the stirred broth (one of its `label mismatch:` notes). The plan now says FOON's own semantics does
+    not make the goal, and on what it rests; a goal FOON's semantics makes gets no such note."""
+    recipe = SUBGRAPHS / "0054-quick_ramen_noodles.txt"
+    native = run("retrieve", recipe, "--goal", "ramen", "--kitchen", "base")
+    assert native.exit_code == 1 and "add `soup broth (in [pot])`" in native.stderr, native.stderr
+    planned = run("plan", recipe, "--goal", "ramen", "--kitchen", "base")
+    assert planned.exit_code == 0, planned.stderr
+    assert ("note: FOON's own semantics does not make 'ramen' from this kitchen (`retrieve` and `--encoding tree` "
+            "answer unreachable): the plan rests on the relational encoding's readings of the data (its "
+            "`label mismatch:` notes)") in planned.stderr, planned.stderr
+    made = run("plan", recipe, "--goal", "ramen")
+    assert made.exit_code == 0 and "FOON's own semantics does not make" not in made.stderr, made.stderr

@@ -38,7 +38,7 @@ from .options import (
 )
 from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
-from .reasons import explained, failure_reason, hint_lines, hint_words, networks_hint
+from .reasons import beyond_foon_note, explained, failure_reason, hint_lines, hint_words, networks_hint
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 
@@ -212,6 +212,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         click.echo(summary, err=True)
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
+        if status == "solved" and (beyond := beyond_foon_note(foon, kit, target, encoding)):
+            click.echo("note: " + beyond, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
             expansion_notes(outcome.tree, view.matrix)
     # the kitchen additions' search, a step only without a plan (a solved plan's step would say a false thing)

@@ -179,6 +179,23 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
     return None
 
 
+def beyond_foon_note(foon, kitchen, goal, encoding: str) -> str | None:
+    """A solved plan's note when FOON's own semantics does not make `goal` from `kitchen`, which `retrieve` and
+    `--encoding tree` then answer unreachable: the relational encoding's readings of the data (its `label mismatch:`
+    notes, docs/pddl.md) made it. None when the fixpoint reaches a candidate, and for a lifted encoding (it grounds
+    categories to kitchen objects the concrete fixpoint does not see). O(the goal's relevant units)."""
+    from ..analysis.reachability import reachable
+    from ..pddl.compile import encoding_named
+
+    if encoding_named(encoding).lifted or not hasattr(goal, "candidates"):
+        return None
+    if any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates):
+        return None
+    return (f"FOON's own semantics does not make {goal.describe()!r} from this kitchen (`retrieve` and "
+            f"`--encoding tree` answer unreachable): the plan rests on the {encoding} encoding's readings of the "
+            "data (its `label mismatch:` notes)")
+
+
 def networks_hint(net, kitchen, goal: str | None, goal_file: Path | None, level: int) -> None:
     """After REG cannot make a goal: say (stderr) which of `--network exp`/`gen` would, for retrieve and plan (or that
     neither would); `plan --format json` holds the same lines' words instead (`hint_lines`, `hint_words`)."""
