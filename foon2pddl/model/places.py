@@ -22,7 +22,7 @@ from functools import lru_cache
 from .foon import ObjectNode, State, make_node, make_state
 from .physical import Relation
 
-__all__ = ["CONTENT_STATES", "contents", "describes_contents", "head_of", "listed", "moved_into", "named_holder", "place_of", "place_state", "places"]
+__all__ = ["CONTENT_STATES", "contents", "describes_contents", "head_of", "holds_unsaid", "listed", "moved_into", "named_holder", "place_of", "place_state", "places"]
 
 #: The states that say what is in or on an object: `contains {a, b}`, `empty`, `with [foil]`.
 CONTENT_STATES = frozenset({"contains", "empty", "with"})
@@ -86,11 +86,19 @@ def contents(node: ObjectNode) -> frozenset[str]:
     return frozenset(i for s in node.states if s.label == "contains" for i in s.ingredients)
 
 
+def holds_unsaid(node: ObjectNode | None) -> bool:
+    """Whether the node has a `contains` that names nothing: FOON's level 2 keeps the state and drops its list
+    (`bowl (contains {onion, salt})` is `bowl (contains)` there), and `0082-homemade_cheese_pizza.txt:492` writes one
+    at level 3. It says that the object holds something, not what: no list of nothing (that is `empty`)."""
+    return node is not None and any(s.label == "contains" and not s.related and not s.ingredients for s in node.states)
+
+
 @lru_cache(maxsize=READ_KEPT)
 def describes_contents(node: ObjectNode | None) -> bool:
     """Whether the node says what is in or on the object (`contains`, `empty`, `with`): a node that does not
-    (`cutting board (dirty)`, `bowl (clean)`) is silent about its contents, and nothing is checked of them."""
-    return node is not None and any(s.label in CONTENT_STATES for s in node.states)
+    (`cutting board (dirty)`, `bowl (clean)`), or that `holds_unsaid` (what it holds is left out, beside whatever
+    else it names), is silent about its contents, and nothing is checked of them."""
+    return node is not None and any(s.label in CONTENT_STATES for s in node.states) and not holds_unsaid(node)
 
 
 def moved_into(node: ObjectNode, holder: str, relation: Relation = Relation.IN) -> ObjectNode:

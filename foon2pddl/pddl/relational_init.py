@@ -9,7 +9,7 @@ from functools import lru_cache
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
-from ..model.places import describes_contents, listed, moved_into, place_of, place_state, places
+from ..model.places import describes_contents, holds_unsaid, listed, moved_into, place_of, place_state, places
 from ..model.scene import SceneObject
 from .holder_words import aliased, task_aliases
 from .names import NameTable
@@ -34,7 +34,9 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
 
     An object whose node names `in [C]` goes into an object of label C whose node lists its label (the
     first not yet given one of that label), else, when no node of the task says what a C holds (`silent`:
-    a stove, a table), into the first C, else into the first C whose node a unit takes with the object's
+    a stove, a table), into the first C, else into a C that holds what it does not say (`model.places.holds_unsaid`:
+    level 2's `bowl (contains)`), one not yet given an object first, else into the first C whose node a unit takes
+    with the object's
     (`paired`: the watermelon lemonade's pour takes `strainer (clean, empty, on [measuring cup])` with
     `measuring cup (clean, empty)`, FOON's contradiction the task reports; not when a unit takes the object's
     node with a C's node that lists it: the garlic-parmesan chicken's pour takes the spoon of basil and the spoon
@@ -44,7 +46,9 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     avocado the kitchen has on a board), and one more per further object of a label the task's units put into
     holders of label C (`filled`, `holder_flows.gained`): a unit taking it out of such a holder empties the holder
     (`relational_plan`), so two butters `in [bowl]` get two bowls listing butter, where one bowl holding both
-    was left empty with the second in it. A holder added for a `silent` label is one plain node (`surface`),
+    was left empty with the second in it; a C of the task's nodes that holds what it does not say and names no
+    place, when no node lists it all (level 2: the garlic rice's `cutting board (contains)`, which the chop takes,
+    where a `cutting board (contains {garlic})` is no node of the level). A holder added for a `silent` label is one plain node (`surface`),
     listing nothing, for every object placed there: its contents are not checked, as a place that says nothing of
     what it holds, and a unit may take them off it whole (the ribs' garlic scooped off the surface the kitchen
     has it on, in a task where another unit's output names a surface: listing the garlic, the surface
@@ -63,6 +67,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     # an object's node a unit takes with a node of label C that lists it: that unit's C holds it, no other C it takes
     claimed = {(a, b.label) for a, b in paired if a is not None and a.label in read_names(listed(b), alias)}
     used: set[tuple[str, str]] = set()
+    given: set[str] = set()  # the holders given an object
     wanted: dict[str, dict[str, int]] = {}
     picks: dict[str, tuple[str, Relation] | tuple[str, None]] = {}
     plain: set[str] = set()
@@ -74,7 +79,10 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         pool = [h for h in by_label.get(label, ()) if h.name != x.name]
         listing = [h for h in pool if x.label in read_names(listed(h.start), alias)]
         free = [h for h in listing if (h.name, x.label) not in used]
-        quiet = [h for h in pool if not describes_contents(h.start)] if label in silent else []
+        if label in silent:
+            quiet = [h for h in pool if not describes_contents(h.start)]
+        else:  # holders holding what they do not say (level 2's `bowl (contains)`): one each while there are more
+            quiet = sorted((h for h in pool if holds_unsaid(h.start)), key=lambda h: h.name in given)
         together = [h for h in pool if (x.start, h.start) in paired and (x.start, label) not in claimed]
         pick = (free or listing or quiet or together or [None])[0]
         if pick is None and label in silent:  # a holder that says nothing of what it holds: one, in no list
@@ -87,13 +95,18 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
             picks[x.name] = (label, None)
             continue
         used.add((pick.name, x.label))
+        given.add(pick.name)
         picks[x.name] = (pick.name, rel)
     met = held_met([x.start for x in instances if x.name in picks and picks[x.name][1] is None], follows, paired)
     listing_nodes: dict[tuple[str, frozenset[str]], ObjectNode] = {}
+    unsaid: dict[str, ObjectNode] = {}  # per label, a node holding what it does not say (level 2's `bowl (contains)`)
     for n in sorted(nodes, key=lambda n: (n.label not in wanted or met.get(n.label, set()).isdisjoint(_reached([n], follows)), n)):
         if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
             listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
-    implied = [make_node(label, []) for label in sorted(plain)] + [listing_nodes.get((label, frozenset(items)), make_node(label, [make_state("contains", "", sorted(items))]))
+            if holds_unsaid(n):
+                unsaid.setdefault(n.label, n)
+    implied = [make_node(label, []) for label in sorted(plain)] + [listing_nodes.get((label, frozenset(items)), unsaid.get(
+               label, make_node(label, [make_state("contains", "", sorted(items))])))
                for label, counts in sorted(wanted.items())
                for items in (frozenset(x for x, k in counts.items() if k > i) for i in range(max(counts.values())))]
     return [Instance(x.name, x.label, x.start, *picks[x.name]) if x.name in picks and picks[x.name][1] is not None
