@@ -206,7 +206,7 @@ def _outward(x: str, fixed: set[str], before: dict[str, ObjectState],
 
 
 def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
-    """A step in recipe words with the objects named, O(bindings).
+    """A step in recipe words with the objects named, O(bindings x depth), depth how many holders `_outward` says outward.
 
     `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
     the motion, each object that changes holder (from, into), each other object whose state changes (after a
