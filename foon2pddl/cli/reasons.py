@@ -159,6 +159,15 @@ def short_step(foon, kitchen, goal, counts: dict[str, int] | None = None) -> str
     return done.message if done.verdict is Verdict.SHORT else None
 
 
+def foon_makes(foon, kitchen, goal) -> bool:
+    """Whether FOON's own semantics makes a candidate of the ground `goal` from `kitchen`: the fixpoint over the
+    units that can contribute to the candidates, the same answer for them as the whole one (`reachable`);
+    O(the goal's relevant units). The one test of `unreachable_reason` and `beyond_foon_note`."""
+    from ..analysis.reachability import reachable
+
+    return any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates)
+
+
 def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True) -> str | None:
     """Why nothing makes `goal` from `kitchen` (the words `retrieve` gives), or None when something may.
 
@@ -167,12 +176,9 @@ def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True)
     `fixpoint=False` skips the first test: a lifted encoding grounds categories to kitchen objects the
     concrete network's fixpoint does not see (the recipe's lemon, the kitchen's lime).
     """
-    from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
 
-    # the fixpoint over the units that can contribute to the candidates: the same answer for them (`reachable`)
-    if fixpoint and hasattr(goal, "candidates") and not any(
-            reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates):
+    if fixpoint and hasattr(goal, "candidates") and not foon_makes(foon, kitchen, goal):
         return explain_unreachable(foon, kitchen.nodes, goal)
     if task is not None and not any(a.unit is not None for a in task.actions) and not set(task.goal) <= set(task.init):
         return "no unit of the network is left on a way to it, and the kitchen does not hold it"
@@ -184,12 +190,9 @@ def beyond_foon_note(foon, kitchen, goal, encoding: str) -> str | None:
     `--encoding tree` then answer unreachable: the relational encoding's readings of the data (its `label mismatch:`
     notes, docs/pddl.md) made it. None when the fixpoint reaches a candidate, and for a lifted encoding (it grounds
     categories to kitchen objects the concrete fixpoint does not see). O(the goal's relevant units)."""
-    from ..analysis.reachability import reachable
     from ..pddl.compile import encoding_named
 
-    if encoding_named(encoding).lifted or not hasattr(goal, "candidates"):
-        return None
-    if any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates):
+    if encoding_named(encoding).lifted or not hasattr(goal, "candidates") or foon_makes(foon, kitchen, goal):
         return None
     return (f"FOON's own semantics does not make {goal.describe()!r} from this kitchen (`retrieve` and "
             f"`--encoding tree` answer unreachable): the plan rests on the {encoding} encoding's readings of the "
