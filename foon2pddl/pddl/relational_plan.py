@@ -324,7 +324,7 @@ def late_emptied(plan: UnitPlan, node: ObjectNode, alias: Mapping[str, str]) -> 
     for the count (`count_roles`: a role FOON leaves out of the outputs ends so). O(r + l) for l listed names."""
     left = [s.rel.role.label for s in plan.slots
             if s.late_empties and alias.get(s.rel.source.holder, s.rel.source.holder) == node.label]
-    if not left or not describes_contents(node) or not {alias.get(x, x) for x in listed(node)} & set(left):
+    if not left or not describes_contents(node) or read_names(listed(node), alias).isdisjoint(left):
         return None
     return without(node, _late_leaving(plan, alias)[node.label], dict(alias))
 
