@@ -6,11 +6,10 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError
 from . import main
 from .loading import read_network
 from .options import output_option, paths_argument
-from .outputs import emit
+from .outputs import cannot_write, emit
 from .progress import slow_step
 
 
@@ -56,5 +55,5 @@ def analyze_(paths, top, level, as_json, graphml, plot, output) -> None:
             shown = f" (the top {MAX_PLOT_BARS} of each ranking)" if top > MAX_PLOT_BARS else ""
             click.echo(f"wrote {plot}{shown}", err=True)
     except OSError as exc:
-        raise FoonInputError(str(graphml if plot is None else plot), 0, f"cannot write: {exc.strerror or exc}") from None
+        raise cannot_write(graphml if plot is None else plot, exc) from None
     emit(to_json(result, top) if as_json else format_text(result, top), output)

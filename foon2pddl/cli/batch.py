@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError, UsageError
+from ..errors import UsageError
 from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS, file_names, format_table, summary
 from ..io.goal_files import parse_goal_spec
@@ -15,6 +15,7 @@ from ..io.goal_lists import GoalEntry, read_goal_list
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
 from ..model.words import count
+from .outputs import cannot_write
 from .progress import slow_step
 
 #: File name extension per task tree format.
@@ -71,7 +72,7 @@ def write_files(directory: Path, rows: list[dict], contents: Sequence[str | None
     try:
         atomic_write_many(files)
     except OSError as exc:
-        raise FoonInputError(str(directory), 0, f"cannot write: {exc.strerror or exc}") from None
+        raise cannot_write(directory, exc) from None
 
 
 def write_trees(directory: Path, rows: list[dict], trees: Sequence[TaskTree | None], fmt: str,

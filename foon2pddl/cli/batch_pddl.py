@@ -5,7 +5,7 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-from ..errors import FoonError, FoonInputError
+from ..errors import FoonError
 from ..io.batch_report import file_names
 from ..model.constraints import Constraints
 from ..model.containment import count_inference, inferred_nodes
@@ -16,6 +16,7 @@ from ..status import BatchStatus, PlanStatus
 from .batch import finish, write_trees
 from .goal_listing import goals_listing
 from .loading import lifted_goal
+from .outputs import cannot_write
 from .progress import slow_step
 from .reasons import ALREADY_HELD, failure_reason, unreachable_reason
 
@@ -87,7 +88,7 @@ def compile_batch(view, entries, encoding: str, level: int, prune: bool, costs, 
         try:
             atomic_write_many(files)
         except OSError as exc:
-            raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
+            raise cannot_write(output_dir, exc) from None
     finish(rows, table_fmt, f"{encoding} encoding" + (", one shared domain" if shared else ""),
            solved=lambda r: r["status"] == BatchStatus.COMPILED)
 

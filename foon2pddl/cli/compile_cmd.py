@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..errors import FoonInputError, UsageError
+from ..errors import UsageError
 from ..generalize.network import DEFAULT_NETWORK
 from ..io.atomic import atomic_write_many
 from ..io.batch_report import TABLE_FORMATS
@@ -23,7 +23,7 @@ from .batch_pddl import compile_batch
 from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal
 from .object_options import category_chains, checked_instances
 from .options import constraints_options, costs_option, pddl_task_options, prune_option, rates_option, single_goal
-from .outputs import check_output
+from .outputs import cannot_write, check_output
 from .progress import slow_step
 from .reasons import ALREADY_HELD
 
@@ -125,7 +125,7 @@ def compile_(paths, goal, goals_file, goal_file, kitchen, utensils, containment,
     try:
         atomic_write_many(files)
     except OSError as exc:
-        raise FoonInputError(str(output_dir), 0, f"cannot write: {exc.strerror or exc}") from None
+        raise cannot_write(output_dir, exc) from None
     units = sum(a.unit is not None for a in task.actions)
     click.echo(f"wrote {output_dir / 'domain.pddl'} and {output_dir / 'problem.pddl'} "
                f"({task.encoding} encoding, level {task.level}: {units} unit actions, "

@@ -12,6 +12,11 @@ from ..io.atomic import atomic_write
 from .options import chosen_similarity
 
 
+def cannot_write(path: Path | str, exc: OSError) -> FoonInputError:
+    """The error of an output `path` that cannot be written (exit 2), in the words every command says it in."""
+    return FoonInputError(str(path), 0, f"cannot write: {exc.strerror or exc}")
+
+
 def emit(text: str, output: Path | None) -> None:
     """Print `text`, or write it atomically to `output`."""
     if output is None:
@@ -20,20 +25,19 @@ def emit(text: str, output: Path | None) -> None:
         try:
             atomic_write(output, text)
         except OSError as exc:
-            raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
+            raise cannot_write(output, exc) from None
 
 
 def check_output(output: Path | None, directory: bool = False) -> None:
     """Fail now (exit 2) when `output` cannot be written, before any long work runs."""
     if output is None:
         return
-    from ..errors import FoonInputError
     from ..io.atomic import check_writable
 
     try:
         check_writable(output, directory)
     except OSError as exc:
-        raise FoonInputError(str(output), 0, f"cannot write: {exc.strerror or exc}") from None
+        raise cannot_write(output, exc) from None
 
 
 def emit_network(foon, fmt: str, provenance: bool, header: str, output: Path | None) -> None:
