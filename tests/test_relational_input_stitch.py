@@ -10,6 +10,7 @@ from relational_checks import clean_dish_plan
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.input_stitch import stitches, with_stitches
 from foon2pddl.pddl.instance_counts import InstanceCounts
 from foon2pddl.pddl.prune import restoring_units
@@ -265,3 +266,22 @@ def test_of_several_units_making_the_container_the_stitch_reads_the_one_whose_no
     # two such candidates stay ambiguous
     twin = cook("bacon", "cheese")
     assert stitches(Foon((*others, ours, twin, pour)), range(5)) == ()
+
+
+# the bag with its spoon: the add and the shake each dirty a clean spoon; without the sprout the shake takes in the
+# kitchen, FOON's own plan is none, and the plan through the stitch is the only one (newcomer60: the universal
+# ramen in its base kitchen, `plan`'s default on a merged network)
+CLEAN, DIRTY = n("spoon", "clean"), n("spoon", "dirty")
+SPOONED = Foon((FunctionalUnit((*ADD.inputs, CLEAN), ADD.motion, (*ADD.outputs, DIRTY)),
+                FunctionalUnit((*SHAKE.inputs, CLEAN), SHAKE.motion, (*SHAKE.outputs, DIRTY))))
+NO_TAKEN = Kitchen(frozenset({EMPTY_BAG, BOARD_SPROUT, n("salt", "granulated"), CLEAN}))
+
+
+def test_the_objects_notes_name_the_plan_through_the_stitches_when_foons_own_is_none():
+    # the two spoons are the plan through the stitch's, where the notes said "2 given, where FOON's unfolded plan
+    # takes 0" (the ramen's "8 x bowl (empty): 8 given")
+    wide = compile_goal(SPOONED, NO_TAKEN, Goal(GoalSpec("brussel sprout"), (SHAKEN,)), "relational")
+    (spoons,) = [x for x in wide.notes if x.startswith("objects: 2 x spoon (clean)")]
+    assert "FOON's plan through its stitched units, unfolded, takes one out of that state each time it fires" in spoons
+    assert "fires add, shake, and no unit puts one back" in spoons and "given" not in spoons, spoons
+

@@ -17,12 +17,15 @@ __all__ = ["count_reasons"]
 
 
 def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectNode],
-                  roles_of: RolesOf = unit_roles, shown: int = 4) -> tuple[str, ...]:
+                  roles_of: RolesOf = unit_roles, shown: int = 4, through: bool = False) -> tuple[str, ...]:
     """Why the task has several objects in one kitchen state: per kitchen node given k > 1 objects, the
     units of the unfolded plan that take one out of that state (file:line, x firings), and whether a
     unit that only reads the state keeps one there. FOON's units never return an object to a kitchen
     state unless the network has a unit that does (a wash, an emptying): each taking needs its own object.
-    O(units x roles). Stated and overridden counts, and those restoring units set, are said to be given."""
+    O(units x roles). Stated and overridden counts, and those restoring units set, are said to be given. `through`:
+    the counts unfolded the plan through the stitched units (the relational encoding's, where FOON's own plan is
+    none), which the sentences name."""
+    plan = " through its stitched units" if through else ""
     given = dict(counts.at_node)
     takers: dict[ObjectNode, list[tuple[int, int]]] = {}
     readers: set[ObjectNode] = set()
@@ -46,11 +49,11 @@ def count_reasons(foon: Foon, counts: InstanceCounts, kitchen: frozenset[ObjectN
             continue
         taken = sum(t for _, t in takers.get(node, ()))
         if taken + (node in readers) != k and not (counts.reused and k < taken + (node in readers)):
-            out.append(f"{k} x {node.describe()}: {k} given, where FOON's unfolded plan takes {taken} (a stated count, "
+            out.append(f"{k} x {node.describe()}: {k} given, where FOON's unfolded plan{plan} takes {taken} (a stated count, "
                        "restoring units' peak, or the relational encoding's own counting)")
             continue
         again = taken + (node in readers) - k
-        out.append(f"{k} x {node.describe()}: FOON's plan, unfolded, takes one out of that state each time it fires "
+        out.append(f"{k} x {node.describe()}: FOON's plan{plan}, unfolded, takes one out of that state each time it fires "
                    + first_of(takers.get(node, []), shown, taking, sep=", ")
                    + (f"; {again} of those takings use one a unit put back in it" if again > 0
                       else ", and no unit puts one back")

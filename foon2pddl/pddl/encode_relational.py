@@ -115,8 +115,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         return counting[done][1]
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
-    why = tuple(f"objects: {w}" for w in (*count_reasons(f, counts, ob.kitchen, rd.roles_of),
-                                          *((ob.narrowed,) if ob.narrowed else ())))
+    reasons = count_reasons(f, rd.explained or counts, ob.kitchen, rd.roles_of, through=rd.explained is not None)
+    why = tuple(f"objects: {w}" for w in (*reasons, *((ob.narrowed,) if ob.narrowed else ())))
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it
     loose = frozenset(x.label for x in instances if x.holder is not None and place_of(x.start) is None)

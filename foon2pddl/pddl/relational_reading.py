@@ -66,6 +66,10 @@ class Reading:
     portions: tuple[tuple[FunctionalUnit, str], ...] = ()
     #: the kitchen nodes one unit of the task takes, fired once: poured or sprinkled out whole (`plan_unit`'s `sole`)
     sole: frozenset[ObjectNode] = frozenset()
+    #: where the plan through the stitches was counted alone, or FOON's own plan was none (no firings) and that plan
+    #: was counted beside it: `counts` with that plan's firings, named by the task's units, to say why the counts are
+    #: what they are (`count_reasons`); None where FOON's own plan says it. For the notes only, no part of the task
+    explained: InstanceCounts | None = None
 
 
 @dataclass(frozen=True)
@@ -306,12 +310,15 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
         if narrow is not None and through:  # counted in `st.through`: its plan named by the task's unit indexes
             counts = counts.renumbered(st.in_task)
+        explained = counts if narrow is not None and through else (  # the plan through the stitches says why
+            replace(counts, firings=counted[1][1].renumbered(st.in_task).firings)  # FOON's own plan none
+            if len(counted) > 1 and not counts.firings and counted[1][1].firings else None)
         have = counts.labels() if not scene else {**dict.fromkeys((o.label for o in scene), 1), **dict(counts.unmade)}
         kept = tuple(u for u in units if all(s.rel.role.label in have for s in plans[u].slots))
         acting = {f.units[u] for u in kept}
         return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled,
                        tuple(said[u] for u in kept if u in said), tuple(portions[u] for u in kept if u in portions),
-                       sole)
+                       sole, explained)
 
     first = read(units, once)
     if quiet(first.units) != first.silent:
