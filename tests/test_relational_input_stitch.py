@@ -5,8 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from node_words import contains, inside, n
-from relational_checks import clean_dish_plan
+from relational_checks import clean_dish_plan, clean_plan
 
+from foon2pddl.api.inputs import load_kitchen, load_network, resolve_goal
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion, make_state
 from foon2pddl.model.goal import Goal, GoalSpec
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
@@ -285,3 +286,24 @@ def test_the_objects_notes_name_the_plan_through_the_stitches_when_foons_own_is_
     assert "FOON's plan through its stitched units, unfolded, takes one out of that state each time it fires" in spoons
     assert "fires add, shake, and no unit puts one back" in spoons and "given" not in spoons, spoons
 
+
+def test_a_small_count_of_no_objects_is_no_count():
+    # counted small from FOON's own plan alone, which is none: no objects, a task the planner proves unsolvable, and
+    # `plan` said "the 0 objects counted small gave no valid plan" before it planned the wide task; the plan through
+    # the stitches alone is the small count, here as many objects as the wide one (the universal ramen: 65 objects
+    # where the wide count has 73)
+    outcome = clean_plan(SPOONED, NO_TAKEN, Goal(GoalSpec("brussel sprout"), (SHAKEN,)))
+    notes = (*outcome.compiled.notes, *outcome.decoded.notes)
+    assert not any("counted small" in x for x in notes), notes
+
+
+def test_where_foons_own_plan_is_none_the_small_count_is_the_plan_through_the_stitches():
+    # the ramen of the universal FOON in its base kitchen (`plan`'s default there): no plan of FOON's own reaches it
+    # (`retrieve` says unreachable), the plan through the scoop's stitch does; counted small from FOON's own plan it
+    # had no objects, and `plan` planned the wide count's 73 objects (34 units) where this one has 65 (29 units)
+    net = load_network(DATA)
+    kitchen, goal, memo = load_kitchen(net, "base"), resolve_goal(net, "ramen"), {}
+    wide = compile_goal(net.foon, kitchen, goal, "relational", memo=memo)
+    small = compile_goal(net.foon, kitchen, goal, "relational", narrow=True, memo=memo)
+    assert small.narrowed.startswith("counted small, from the plan through the stitches alone"), small.narrowed
+    assert 0 < len(small.task.instances) < len(wide.task.instances)

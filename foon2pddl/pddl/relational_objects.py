@@ -30,8 +30,10 @@ beside it; 0050's, with the bacon, 24 objects where wide counts 25): what `plan`
 own plan is out of holder reach, then (`placed`) counted as wide with makers chosen by holder reach
 (`count_together._placed_back`: the even universal half's kofta mix, 14 objects where wide counts 19), then the wide
 task; last, when that is out of holder reach too, counted wide with makers by holder reach (`placed` without
-`narrow`: FOON's plan with those makers and the stitched plan beside it, whatever the count). A scene's objects are
-the scene's: never counted small.
+`narrow`: FOON's plan with those makers and the stitched plan beside it, whatever the count). A small count of no
+objects is none (FOON's own plan is none from this kitchen: no plan was counted): with stitches, the count from the
+plan through them alone is the small count (the universal ramen in its base kitchen: 65 objects, where wide counts 73),
+else the wide task is the one. A scene's objects are the scene's: never counted small.
 """
 
 from __future__ import annotations
@@ -98,6 +100,7 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     count, and from it without a filled container taken again when that lowered it (module doc): at most two small
     counts, the one of fewer objects kept."""
     memo = {} if memo is None else memo  # the units' readings and counts the countings share (`read_units`)
+    reserved = tuple(reserved)
     wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow,
                     other_makers=not own)
     if not narrow or scene or (through and not st.origin):
@@ -115,7 +118,9 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
         fewer = _objects(inp, st, scene, stated, overrides, tuple(reserved), started - made, memo, through)
         if len(fewer.instances) < len(small.instances) and _same_plan(fewer, small):
             small, started = fewer, started - made
-    if len(small.instances) >= len(wide.instances):
+    if not small.instances and not through and not placed and st.origin:  # FOON's own plan is none: its small count
+        return task_objects(inp, st, scene, stated, overrides, reserved, True, True, False, memo)  # the stitches'
+    if not small.instances or len(small.instances) >= len(wide.instances):  # no objects: no count (no plan counted)
         return wide
     more = ", ".join(n.describe() for n in sorted(started))
     beside = tuple(u for u in wide.reading.units if u not in small.reading.units)
