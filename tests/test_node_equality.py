@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from foon2pddl.model.foon import ObjectNode, State, make_node, make_state
@@ -23,6 +23,7 @@ def _fields(x: ObjectNode | State) -> tuple:
     return tuple(getattr(x, f.name) for f in dataclasses.fields(x) if f.compare)
 
 
+@settings(deadline=None)  # a loaded machine stretches one example past the default 200 ms
 @given(_NODES, _NODES)
 def test_node_equality_is_field_equality(a, b):
     assert (a == b) == (_fields(a) == _fields(b))
@@ -32,6 +33,7 @@ def test_node_equality_is_field_equality(a, b):
         assert hash(a) == hash(b)
 
 
+@settings(deadline=None)
 @given(_STATES, _STATES)
 def test_state_equality_is_field_equality(a, b):
     assert (a == b) == (_fields(a) == _fields(b))
@@ -48,6 +50,7 @@ def test_equality_ignores_marks_and_other_types():
     assert (a == object()) is False
 
 
+@settings(deadline=None)  # a loaded machine stretches one example past the default 200 ms
 @given(_NODES, _NODES)
 def test_a_node_built_without_make_node_compares_by_its_fields(a, b):
     # `ObjectNode.__eq__` reads the hash `make_node` keeps; a node from the dataclass constructor has none until hashed
