@@ -5,7 +5,7 @@ gives a task's report lines with their units' file:line."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -15,7 +15,7 @@ from ..model.pairing import Role, unit_roles
 from ..model.places import listed, places
 from ..model.where import short_path, unit_where
 
-__all__ = ["UnitWords", "aliased", "mismatches", "newly_listed", "part_of", "renamed", "reported", "takers", "task_aliases",
+__all__ = ["UnitWords", "aliased", "mismatches", "newly_listed", "part_of", "read_names", "renamed", "reported", "takers", "task_aliases",
            "unit_words"]
 
 
@@ -79,6 +79,11 @@ def part_of(labels: Sequence[str], before: Sequence[ObjectNode | None], after: S
     takers = [j for j in range(len(labels)) if j != k and before[j] is not None and after[j] is not None
               and labels[j] not in named and {labels[k], holder} <= listed(after[j])]
     return takers[0] if len(takers) == 1 else None
+
+
+def read_names(names: Iterable[str], alias: Mapping[str, str]) -> frozenset[str]:
+    """`names` read through the task's aliases (`task_aliases`): `salad` as `carrot salad`."""
+    return frozenset(alias.get(x, x) for x in names)
 
 
 def aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None:

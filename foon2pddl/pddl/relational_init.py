@@ -11,18 +11,13 @@ from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, holds_unsaid, listed, moved_into, place_of, place_state, places
 from ..model.scene import SceneObject
-from .holder_words import aliased, task_aliases
+from .holder_words import aliased, read_names, task_aliases
 from .names import NameTable
 from .task import Instance
 
 __all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_implied", "kitchen_placed",
            "placed_since_start",
-           "named_objects", "read_names", "scene_instances", "unplaced"]
-
-
-def read_names(names: frozenset[str], alias: dict[str, str]) -> frozenset[str]:
-    """`names` read through the task's aliases (`holder_words.task_aliases`): `salad` as `carrot salad`."""
-    return frozenset(alias.get(x, x) for x in names)
+           "named_objects", "scene_instances", "unplaced"]
 
 
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,

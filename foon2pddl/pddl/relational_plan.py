@@ -51,8 +51,8 @@ from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role
 from ..model.places import describes_contents, head_of, listed, places
 from .holder_flows import Flow, gained, unit_flows
+from .holder_words import read_names
 from .holders import Fate, RelRole, relational_roles
-from .relational_init import read_names
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
            "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "taken_with", "without"]

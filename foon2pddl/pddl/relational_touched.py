@@ -36,8 +36,8 @@ from collections.abc import Iterable
 from ..model.foon import ObjectNode
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, places
+from .holder_words import read_names
 from .holders import Fate
-from .relational_init import read_names
 from .relational_plan import Slot, UnitPlan, late_emptied
 
 __all__ = ["Way", "alike_nodes", "dropped_nodes", "dusted_nodes", "dustings", "emptied_sources", "every_late_empty",
