@@ -4,6 +4,7 @@ are built here for the cases found on files the test corpus does not hold."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -1098,3 +1099,14 @@ def test_a_plan_of_a_goal_foons_semantics_does_not_make_says_so():
             "`label mismatch:` notes)") in planned.stderr, planned.stderr
     made = run("plan", recipe, "--goal", "ramen")
     assert made.exit_code == 0 and "FOON's own semantics does not make" not in made.stderr, made.stderr
+
+
+def test_the_json_of_a_plan_foons_semantics_does_not_make_says_so_too():
+    """rv60 on 388532d: the note reached the text output only; `plan --format json` carries its words as
+    `beyond_foon` (null where FOON's semantics makes the goal), as 1e1516c's `hints` carry the `hint:` lines."""
+    recipe = SUBGRAPHS / "0054-quick_ramen_noodles.txt"
+    beyond = json.loads(run("plan", recipe, "--goal", "ramen", "--kitchen", "base", "--format", "json").stdout)
+    assert beyond["status"] == "solved" and beyond["beyond_foon"].startswith(
+        "FOON's own semantics does not make 'ramen' from this kitchen"), beyond["beyond_foon"]
+    made = json.loads(run("plan", recipe, "--goal", "ramen", "--format", "json").stdout)
+    assert made["status"] == "solved" and made["beyond_foon"] is None

@@ -48,9 +48,10 @@ def timing_line(timings: dict[str, float]) -> str:
 
 
 def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str | None,
-                 reason: str | None = None, hints: Sequence[str] = ()) -> str:
+                 reason: str | None = None, hints: Sequence[str] = (), beyond_foon: str | None = None) -> str:
     """The outcome as one JSON document (status, plan, phases, validation, tree; `reason`: why there is no plan,
-    the words the text output's `reason:` line gives; `hints`: those of its `hint:` lines)."""
+    the words the text output's `reason:` line gives; `hints`: those of its `hint:` lines; `beyond_foon`: those of
+    its note on a solved plan FOON's own semantics does not make, `cli.reasons.beyond_foon_note`)."""
     d = outcome.decoded
 
     def check(v):
@@ -66,6 +67,7 @@ def outcome_json(outcome: PlanOutcome, timings: dict[str, float], tree_json: str
         "message": outcome.message or outcome.result.message,
         "reason": reason,
         "hints": list(hints),
+        "beyond_foon": beyond_foon,
         "encoding": outcome.task.encoding,
         "level": outcome.task.level,
         "plan": list(outcome.steps),
@@ -200,6 +202,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         steps_view = outcome.compiled.view
         if fmt in STEP_FORMATS and steps_view is not None and outcome.trace is not None and outcome.trace.steps:
             data += steps_view.text(outcome.task, outcome.trace)
+    beyond = beyond_foon_note(foon, kit, target, encoding) if status == "solved" else None
     if fmt != "json":  # the outcome first, then the search for why there is no plan (its step and reason)
         summary = f"{status} ({outcome.result.planner})"
         if status == "solved":
@@ -212,7 +215,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
         click.echo(summary, err=True)
         for note in outcome.decoded.notes if outcome.decoded is not None else ():
             click.echo("note: " + note, err=True)
-        if status == "solved" and (beyond := beyond_foon_note(foon, kit, target, encoding)):
+        if beyond is not None:
             click.echo("note: " + beyond, err=True)
         if status == "solved" and NETWORKS[network].substitutes is Substitutes.SIMILAR and not cons.items:
             expansion_notes(outcome.tree, view.matrix)
@@ -224,7 +227,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     hinted = explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes
     if fmt == "json":
         hints = hint_words(hint_lines(net, kit, single_goal(goal), goal_file, level)) if hinted else []
-        data = outcome_json(outcome, timings, data, reason, hints)
+        data = outcome_json(outcome, timings, data, reason, hints, beyond)
     else:
         if reason is not None:
             click.echo("reason: " + reason, err=True)
