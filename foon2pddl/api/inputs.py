@@ -101,8 +101,8 @@ def kitchen_of(*items: str | ObjectNode, level: int = 3) -> Kitchen:
     return Kitchen(frozenset(nodes), 3, counts=counts).project(level)
 
 
-def resolve_goal(network: Network | Foon, goal: str | GoalSpec, level: int = 3) -> Goal:
-    """The goal `'label'`, `'label: state, state [obj]'` or `'label: contains {a, b}'`: the network's nodes it matches.
+def resolve_goal(network: Network | Foon, goal: Goal | str | GoalSpec, level: int = 3) -> Goal:
+    """The goal `'label'`, `'label: state, state [obj]'` or `'label: contains {a, b}'`: the network's nodes it matches (a resolved `Goal` by its spec, again).
 
     Raises UsageError naming close labels when nothing matches.
 
