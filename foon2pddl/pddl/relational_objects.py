@@ -101,21 +101,21 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     counts, the one of fewer objects kept."""
     memo = {} if memo is None else memo  # the units' readings and counts the countings share (`read_units`)
     reserved = tuple(reserved)
-    wide = _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, placed=placed and not narrow,
+    wide = _objects(inp, st, scene, stated, overrides, reserved, None, memo, placed=placed and not narrow,
                     other_makers=not own)
     if not narrow or scene or (through and not st.origin):
         return wide
     # where the wide task's objects start, also without a filled container taken again when that lowered its
     # count (its contents' node is one the small count may take from the kitchen): the small count of fewer objects
     bases = [wide] if placed or not wide.reading.counts.refilled else [
-        wide, _objects(inp, st, scene, stated, overrides, tuple(reserved), None, memo, refill=False)]
+        wide, _objects(inp, st, scene, stated, overrides, reserved, None, memo, refill=False)]
     starts = dict.fromkeys(frozenset() if placed else base.implied | {
         x.start for x in base.instances if x.start is not None and x.start not in inp.kitchen} for base in bases)
-    smalls = [(_objects(inp, st, scene, stated, overrides, tuple(reserved), None if placed else started, memo,
+    smalls = [(_objects(inp, st, scene, stated, overrides, reserved, None if placed else started, memo,
                         through, placed), started) for started in starts]
     small, started = min(smalls, key=lambda s: len(s[0].instances))  # the first of equals
     if not placed and (made := _made_anyway(st, small, started)):  # the plan makes them: no kitchen objects for them
-        fewer = _objects(inp, st, scene, stated, overrides, tuple(reserved), started - made, memo, through)
+        fewer = _objects(inp, st, scene, stated, overrides, reserved, started - made, memo, through)
         if len(fewer.instances) < len(small.instances) and _same_plan(fewer, small):
             small, started = fewer, started - made
     if not small.instances and not through and not placed and st.origin:  # FOON's own plan is none: its small count
