@@ -116,6 +116,7 @@ def lifted_goal(view, spec):
     from ..errors import FoonError
     from ..generalize.categories import load_index
     from ..generalize.compress import category_goal
+    from ..generalize.network import NETWORKS
 
     try:
         return view.resolve(spec, goals_listing())
@@ -125,7 +126,8 @@ def lifted_goal(view, spec):
         if found is None:  # the categories made here close to it (`beverage` -> `beverages`), as labels get theirs
             made = sorted({c for label in view.foon.produced_by_label if (c := index.choose(label)) is not None})
             close = difflib.get_close_matches(spec.label, made, n=5, cutoff=0.6)
-            raise UsageError(f"{exc.message}; `{goals_listing('gen')}` lists the categories it also takes, "
+            lifted = next(k.name for k in NETWORKS.values() if k.encoding == "gen-lifted")  # the kind that plans it
+            raise UsageError(f"{exc.message}; `{goals_listing(lifted)}` lists the categories it also takes, "
                              "when they are made on this network"
                              + (f" (close categories: {', '.join(close)})" if close else "")) from None
         return found
