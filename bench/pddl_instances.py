@@ -76,7 +76,7 @@ PLANNERS = {
 def check_goal(name: str, foon: Foon, kitchen: Kitchen, dish: ObjectNode, time_limit: float, extra: int = 0,
                planner: str = "lama") -> Row:
     goal = resolve_goal(spec_of_node(dish), foon)
-    native = any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates)
+    native = reachable(foon, kitchen.nodes, goal.candidates).makes_any(goal.candidates)
     tree_task = compile_task(foon, kitchen, goal, "tree")
     tree = fd.solve(*render(tree_task), time_limit=time_limit)
     tree_units = sum(tree_task.action_for(s.split()[0]).unit is not None for s in tree.plan)

@@ -96,7 +96,7 @@ def check_file(path: Path, level: int = 3, prune: bool = True, time_limit: float
     kitchen = default_kitchen(foon)
     reach = reachable(project(foon, level), kitchen.project(level).nodes)
     cands = {project_node(c, level) for c in goal.candidates}
-    native = any(reach.can_make(c) for c in cands)
+    native = reach.makes_any(cands)
     why = ""
     if not native:
         lacks = blockers(reach, cands, 3)

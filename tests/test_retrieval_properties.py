@@ -97,6 +97,19 @@ def test_fixpoint_matches_naive_closure(problem):
             assert reach.round_of(n) == 1 + max((reach.round_of(i) for i in foon.units[u].inputs), default=0)
 
 
+
+@settings(max_examples=300, deadline=None)
+@given(problems(), st.lists(st.sampled_from(POOL), max_size=4))
+def test_makes_any_is_the_goal_test_of_the_closure(problem, others):
+    """`makes_any` holds exactly when the closure holds one of the nodes: the goal's candidates, others (some
+    outside the network), none; read once, as a generator, and on the goal's own cone (`targets`)."""
+    foon, kitchen, goal = problem
+    closure = naive_closure(foon.units, kitchen)
+    whole, cone = reachable(foon, kitchen), reachable(foon, kitchen, goal.candidates)
+    for nodes in (goal.candidates, others, [*others, *goal.candidates], ()):
+        assert whole.makes_any(n for n in nodes) == bool(closure & set(nodes)), nodes
+    assert cone.makes_any(goal.candidates) == bool(closure & set(goal.candidates))
+
 def naive_blockers(foon, kitchen, nodes):
     """Unmakeable nodes without a maker that the unmakeable `nodes` depend on (plain search on the units)."""
     made = naive_closure(foon.units, kitchen)

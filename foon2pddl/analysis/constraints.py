@@ -112,10 +112,10 @@ class Removal:
         kitchen = frozenset(kitchen)
         if not needs:  # only the goal's cone needs to run
             reach = reachable(self.foon, kitchen, cands, skip)
-            return any(reach.can_make(c) for c in cands)
+            return reach.makes_any(cands)
         reach = reachable(self.foon, kitchen, None, skip)
         fired = set(reach.fired)
-        return any(reach.can_make(c) for c in cands) and all(self.users[x] & fired for x in needs)
+        return reach.makes_any(cands) and all(self.users[x] & fired for x in needs)
 
 
 def _motion_units(ix, motion: str) -> frozenset[int]:

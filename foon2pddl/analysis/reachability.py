@@ -53,6 +53,11 @@ class Reachability:
         i = self.index.node_id.get(node)
         return node in self.kitchen if i is None else self.node_round[i] != UNREACHED
 
+    def makes_any(self, nodes: Iterable[ObjectNode]) -> bool:
+        """Whether the kitchen can make at least one of `nodes` (a goal's candidates): the goal test of
+        retrieval, planning and the reasons. O(len(nodes)), stops at the first makeable one."""
+        return any(map(self.can_make, nodes))
+
     def round_of(self, node: ObjectNode) -> int | None:
         """0 for a kitchen node, the round a unit first makes it, or None when it cannot be made."""
         i = self.index.node_id.get(node)

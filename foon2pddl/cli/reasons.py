@@ -56,7 +56,7 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
         return "native retrieval finds a tree under the constraints; the planner did not (see its message)" \
             + _try_tree(encoding), True
     reach = reachable(foon, kitchen.nodes)
-    if not any(reach.can_make(c) for c in goal.candidates):
+    if not reach.makes_any(goal.candidates):
         return explain_unreachable(foon, kitchen.nodes, goal), False
     if kitchen.scene:
         short = short_step(foon, kitchen, goal)
@@ -165,7 +165,7 @@ def foon_makes(foon, kitchen, goal) -> bool:
     O(the goal's relevant units). The one test of `unreachable_reason` and `beyond_foon_note`."""
     from ..analysis.reachability import reachable
 
-    return any(reachable(foon, kitchen.nodes, goal.candidates).can_make(c) for c in goal.candidates)
+    return reachable(foon, kitchen.nodes, goal.candidates).makes_any(goal.candidates)
 
 
 def unreachable_reason(foon, kitchen, goal, task=None, *, fixpoint: bool = True) -> str | None:
@@ -263,7 +263,7 @@ def _default_kitchen_hint(net, kitchen, spec, level: int) -> str:
     except FoonError:
         return ""
     reach = reachable(foon, default_kitchen(foon).nodes)
-    if any(reach.can_make(c) for c in goal.candidates):
+    if reach.makes_any(goal.candidates):
         return (HINT + "`--kitchen default` can make it: the network's default kitchen holds the half-made "
                 "dishes the base kitchen leaves out")
     return ""
@@ -295,7 +295,7 @@ def _recipe_file_hint(net, kitchen, spec, level: int) -> str:
     for path in sorted({s.path for u in makers for s in foon.units[u].sources})[:5]:
         alone = Foon(tuple(u for u in foon.units if any(s.path == path for s in u.sources)), foon.level)
         reach = reachable(alone, default_kitchen(alone).nodes, goal.candidates)
-        if any(reach.can_make(c) for c in goal.candidates):
+        if reach.makes_any(goal.candidates):
             command = shlex.join(["foon2pddl", click.get_current_context().info_name, path, "--goal", spec.describe()])
             return (HINT + f"{path} alone makes it from its own starting nodes (`{command}`); in this merge "
                     "other recipes' units make some of them, so no kitchen of the merge holds them")

@@ -200,7 +200,7 @@ def _made_with_banned(net, view, kitchen_path, level: int, target) -> bool:
 
     full = view.map_kitchen(load_kitchen(kitchen_path, net, level))
     reach = reachable(view.foon, full.nodes, target.candidates)
-    return any(reach.can_make(c) for c in target.candidates)
+    return reach.makes_any(target.candidates)
 
 
 def _substituted(net, kitchen_path, network, level, foon, kit, target, cons, method, rates, limits, matrix=None):

@@ -114,7 +114,7 @@ class FdFresh(Prepared):
         goal = self.view.goal_of(node)
         if self.reach is not None:
             t0 = time.perf_counter()
-            if not any(self.reach.can_make(c) for c in goal.candidates):
+            if not self.reach.makes_any(goal.candidates):
                 return Outcome(CellStatus.UNSOLVABLE, "no task tree reaches the goal from the kitchen, so no plan "
                                f"of the {self.encoding} encoding does", {"reachability": time.perf_counter() - t0})
         outcome = plan(foon, self.kitchen, goal, self.encoding, foon.level, time_limit=self.time_limit)

@@ -60,7 +60,7 @@ def networks_that_reach(net: Network, kitchen: Kitchen, spec: GoalSpec, level: i
         except (FoonError, OSError):
             continue  # no WordNet, the goal has no counterpart there, or the category index is unreadable
         reach = reachable(view.foon, view.kitchen.nodes, goal.candidates)
-        if any(reach.can_make(c) for c in goal.candidates) and (kind.name not in confirm or confirm[kind.name]()):
+        if reach.makes_any(goal.candidates) and (kind.name not in confirm or confirm[kind.name]()):
             found.append(kind.name)
     return found
 

@@ -43,7 +43,7 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
     `SUMMARY` in node order (`blocker_words`), then how many more (a cut list must not read as the whole).
     """
     reach = reachable(foon, kitchen_nodes, goal.candidates)
-    if any(reach.can_make(c) for c in goal.candidates):
+    if reach.makes_any(goal.candidates):
         return f"{goal.describe()!r} can be made from the kitchen"
     addable = default_kitchen(foon).nodes
     head = none_can_be_made(goal)

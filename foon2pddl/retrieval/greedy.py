@@ -68,7 +68,7 @@ def greedy(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
     kitchen_nodes = frozenset(kitchen_nodes)
 
     def unreachable(reach: Reachability) -> Retrieval | None:
-        if any(reach.can_make(c) for c in goal.candidates):
+        if reach.makes_any(goal.candidates):
             return None
         return Retrieval(None, UNREACHABLE, "greedy", unreachable_detail(reach, goal))
 
