@@ -1,7 +1,7 @@
 """The `relational` encoding against `instances` and `tree` on each subgraph alone (dish goal, default kitchen).
 
-`python -m bench.pddl_relational [--shared DIR] [--universal] [--time-limit S] [--limit N] [--encodings E,E] [-v]`
-plans every subgraph with `tree`, `instances` and `relational` (`planners.solve.plan`,
+`python -m bench.pddl_relational [--shared DIR] [--universal] [--time-limit S] [--limit N] [--encodings E,E]
+[--level L] [-v]` plans every subgraph with `tree`, `instances` and `relational` (`planners.solve.plan`,
 Fast Downward lama-first) and reports per encoding: solved, plans whose trace
 passes the relational replay (`planners.physical_replay`, zero disagreements;
 `instances` traces have no holders, so its figure counts what a holder-blind
@@ -15,6 +15,8 @@ floor), its default kitchen, each reachable dish a goal (as `bench.pddl_instance
 `--every K --offset I` / `--sample N --seed S`: only the subgraphs of 0-based sorted index I modulo K, or
 N of them drawn with `random.Random(S)` (`pick`): a universal FOON of subgraphs no rule was tuned on (docs/pddl.md,
 Unseen universal FOONs).
+`--level 2` (or 1): every network, kitchen and goal projected to that level first (`model.levels.project`, as
+`plan --level` does).
 `--restore`: each task planned with the given encodings' last and again with `plan --restore`
 (`planners.solve.plan_restoring`); on the dishes both plan valid and replay-clean, their objects and
 `copies` (copies used one after another) before and after.
@@ -38,6 +40,7 @@ from foon2pddl.io.files import expand_paths, load
 from foon2pddl.model.foon import Foon
 from foon2pddl.model.goal import Goal, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
+from foon2pddl.model.levels import LEVELS, project
 from foon2pddl.pddl.restore import is_restoring
 from foon2pddl.planners.copies import copies
 from foon2pddl.planners.physical_replay import replay
@@ -62,24 +65,25 @@ class Row:
     message: str = ""
 
 
-def check_file(path: Path, time_limit: float, encodings: tuple[str, ...] = ENCODINGS) -> list[Row]:
+def check_file(path: Path, time_limit: float, encodings: tuple[str, ...] = ENCODINGS, level: int = 3) -> list[Row]:
     foon, _ = load([path])
     dishes = sorted(n for n in foon.nodes if n.dish is not None)
     if not dishes:
         return []
+    kitchen, foon = default_kitchen(foon), project(foon, level)
     try:
         goal = resolve_goal(spec_of_node(dishes[0]), foon)
     except FoonError:
         return []
-    return check_goal(path.name, foon, default_kitchen(foon), goal, time_limit, encodings)
+    return check_goal(path.name, foon, kitchen, goal, time_limit, encodings, level)
 
 
 def check_goal(name: str, foon: Foon, kitchen: Kitchen, goal: Goal, time_limit: float,
-               encodings: tuple[str, ...] = ENCODINGS) -> list[Row]:
-    """One row per encoding: `goal` planned over `foon` from `kitchen`, its trace replayed."""
+               encodings: tuple[str, ...] = ENCODINGS, level: int = 3) -> list[Row]:
+    """One row per encoding: `goal` planned over `foon` (at `level`) from `kitchen`, its trace replayed."""
     rows = []
     for enc in encodings:
-        out = plan(foon, kitchen, goal, enc, time_limit=time_limit)
+        out = plan(foon, kitchen, goal, enc, level, time_limit=time_limit)
         seconds = out.timings.get("translate", 0.0) + out.timings.get("search", 0.0)
         kinds: tuple[str, ...] = ()
         if out.trace is not None:
@@ -141,15 +145,16 @@ def pick(files: list[Path], every: int = 1, offset: int = 0, sample: int | None 
 
 
 def universal_rows(files: list[Path], time_limit: float, limit: int | None = None,
-                   encodings: tuple[str, ...] = ENCODINGS) -> Iterator[Row]:
+                   encodings: tuple[str, ...] = ENCODINGS, level: int = 3) -> Iterator[Row]:
     """The merged `files` (subgraphs), default kitchen, every dish its kitchen can make a goal (sorted; the first
-    `limit`)."""
+    `limit`), all at `level`."""
     foon, _ = load(files)
     kitchen = default_kitchen(foon)
-    dishes = reachable_dishes(foon, kitchen.nodes)
+    foon = project(foon, level)
+    dishes = reachable_dishes(foon, kitchen.project(level).nodes)
     for dish in dishes[:limit]:
         yield from check_goal(dish.describe(), foon, kitchen, resolve_goal(spec_of_node(dish), foon), time_limit,
-                              encodings)
+                              encodings, level)
 
 
 def summary(rows: list[Row], encodings: tuple[str, ...] = ENCODINGS) -> str:
@@ -212,6 +217,7 @@ def main() -> None:
     ap.add_argument("--time-limit", type=float, default=60.0)
     ap.add_argument("--limit", type=int, default=None)
     ap.add_argument("--encodings", default=",".join(ENCODINGS), help="comma-separated, of " + ", ".join(ENCODINGS))
+    ap.add_argument("--level", type=int, choices=LEVELS, default=3, help="project network, kitchen and goal first")
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--restore", action="store_true", help="without and with restoring units: objects and copies")
     ap.add_argument("--every", type=int, default=1, help="only the subgraphs of sorted index OFFSET modulo EVERY")
@@ -228,8 +234,8 @@ def main() -> None:
     if args.restore:
         print(restore_rows(files[: args.limit], encodings[-1], args.time_limit, args.verbose))
         return
-    found = (universal_rows(files, args.time_limit, args.limit, encodings) if args.universal
-             else (r for f in files[: args.limit] for r in check_file(f, args.time_limit, encodings)))
+    found = (universal_rows(files, args.time_limit, args.limit, encodings, args.level) if args.universal
+             else (r for f in files[: args.limit] for r in check_file(f, args.time_limit, encodings, args.level)))
     rows = []
     for r in found:
         rows.append(r)

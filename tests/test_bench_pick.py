@@ -46,3 +46,14 @@ def test_the_bench_plans_only_the_picked_subgraphs():
     assert r.returncode == 0, r.stderr
     assert [line.split("\t")[0] for line in r.stdout.splitlines() if "\trelational\t" in line] == [
         "0002-bacon_macaroni_and_cheese.txt", "0052-pigs_in_a_blanket.txt"]
+
+
+def test_level_2_plans_the_network_kitchen_and_goal_projected():
+    """`--level 2` (issue 21's level-2 figures): the subgraph is planned at FOON's object+state level, as `plan
+    --level 2` does: whipped cream's level-2 task merges nodes that differ only by their lists (fewer objects)."""
+    from bench.pddl_relational import check_file
+
+    path = SHARED / "foon-subgraphs" / "0001-whipped_cream.txt"
+    (three,), (two,) = (check_file(path, 60.0, ("relational",), level) for level in (3, 2))
+    assert three.status == two.status == "solved" and not two.kinds
+    assert two.objects < three.objects
