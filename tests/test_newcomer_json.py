@@ -62,3 +62,36 @@ def test_a_dish_the_merge_cannot_make_from_its_kitchen_names_the_recipe_file_tha
         again = run(*shlex.split(suggested))
         assert again.exit_code == 0, again.output
     assert not any("alone makes it" in line for line in run("retrieve", "--goal", "lemonade").stderr.splitlines())
+
+
+def test_retrieve_json_of_a_goal_it_cannot_make_is_a_document_with_the_reason_hints_and_additions(tmp_path,
+                                                                                                   monkeypatch):
+    """Issue 24's leftover (stop 60): `retrieve --format json` printed no JSON for a goal it cannot make; the text
+    output gives the reason and the hint. The document holds them: `status`, `reason` (the words after the text's
+    `cannot make ...:`), `hints` (its `hint:` lines' words) and `additions` (each way to add to the kitchen)."""
+    monkeypatch.setenv("FOON2PDDL_CACHE", str(tmp_path / "cache"))
+    text = run("retrieve", "--goal", "lemonade")
+    assert text.exit_code == 1
+    said = [line.removeprefix("hint: ") for line in text.stderr.splitlines() if line.startswith("hint: ")]
+    assert said and said[0].startswith("--network exp and --network gen can make it")
+    r = run("retrieve", "--goal", "lemonade", "--format", "json")
+    assert r.exit_code == 1, r.output
+    data = json.loads(r.stdout)
+    assert data["status"] == "unreachable" and data["method"] == "complete"
+    assert data["goal"] == "lemonade"
+    cannot = next(line for line in text.stderr.splitlines() if line.startswith("cannot make"))
+    assert cannot.endswith(": " + data["reason"]) and "add `lemon (whole)`" in data["reason"]
+    assert data["hints"] == said
+    (lemon,), = data["additions"]  # one way, one node, in the node schema of the tree's steps
+    assert lemon["label"] == "lemon" and lemon["states"] == [{"label": "whole"}]
+    assert "hint:" not in r.stderr and "cannot make" not in r.stderr  # the document says them
+    out = tmp_path / "tree.json"  # -o FILE gets the document too
+    assert run("retrieve", "--goal", "lemonade", "--format", "json", "-o", out).exit_code == 1
+    assert json.loads(out.read_text()) == data
+
+
+def test_retrieve_json_under_a_constraint_that_rules_out_every_tree_has_no_additions():
+    r = run("retrieve", "--goal", "guacamole", "--without-motion", "cut", "--format", "json")
+    assert r.exit_code == 1, r.output
+    data = json.loads(r.stdout)
+    assert data["status"] == "unreachable" and data["reason"] and data["additions"] == [] and data["hints"] == []

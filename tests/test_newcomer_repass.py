@@ -565,15 +565,17 @@ def test_a_goal_state_typed_slightly_wrong_names_the_close_state(goal, said):
 def test_retrieve_json_says_where_a_goal_it_cannot_make_goes():
     """`retrieve --goal lemonade --format json` (no lemon in the example kitchen) printed nothing on standard output,
     exit 1, the reason on stderr; `plan --format json` prints a document with `status` and `reason`. A script reading
-    the JSON got empty input, and retrieval.md's `json` named only a tree's fields. The page says what a goal the
-    kitchen cannot make gives, and that `--format jsonl` gives its row for one goal too."""
+    the JSON got empty input, and retrieval.md's `json` named only a tree's fields. Since stop 61 it prints a
+    document of its own (tests/test_newcomer_json.py); the page names its keys, and `--format jsonl` gives the row."""
     r = run("retrieve", "--goal", "lemonade", "--format", "json")
-    assert r.exit_code == 1 and r.stdout == "" and "cannot make 'lemonade'" in r.stderr
+    assert r.exit_code == 1 and json.loads(r.stdout)["status"] == "unreachable"
     row = json.loads(run("retrieve", "--goal", "lemonade", "--format", "jsonl").stdout)
     assert row["status"] == "unreachable" and "add `lemon (whole)`" in row["reason"]
     page = " ".join((ROOT / "docs" / "retrieval.md").read_text().split())
-    assert ("a goal the kitchen cannot make prints no JSON (exit 1, the reason on stderr); `--format jsonl` gives its "
-            "row, `status` and `reason`, for one goal too") in page
+    assert ("A goal with no tree gives a document of its own (exit 1): `goal`, `status` and `reason` (the batch "
+            "row's, below: the words the text output prints after `cannot make ...:`), `method`, `hints` (the words "
+            "of the text output's `hint:` lines) and `additions`") in page
+    assert "`--format jsonl` gives its row for one goal too" in page
 
 
 def test_scene_md_says_which_scene_objects_the_compiled_problem_declares(tmp_path):

@@ -974,10 +974,10 @@ def test_retrieve_looks_for_the_kitchen_additions_inside_a_step(monkeypatch, tmp
     """Stop 55's pass (nc55b): `retrieve ../shared/data/foon-subgraphs --goal 'whipped cream' --kitchen
     foon-search-inputs/utensils.txt` (a list of utensils given as a kitchen) said `retrieving a tree for ...` and then
     nothing for 23.2 s through a pipe (load 20-30): the search for the smallest kitchen additions
-    (`explain_unreachable`, 'no set of up to 6 kitchen additions was found') ran after the step, outside every step."""
+    (`explain_unreachable`, now `why_unreachable`, 'no set of up to 6 kitchen additions was found') ran after the step, outside every step."""
     from foon2pddl.cli import retrieve_cmd
 
-    asked = _asked_inside_a_step(monkeypatch, retrieve_cmd, retrieve_cmd, "explain_unreachable")
+    asked = _asked_inside_a_step(monkeypatch, retrieve_cmd, retrieve_cmd, "why_unreachable")
     r = run("retrieve", "--goal", "lemonade")
     assert r.exit_code == 1, r.stderr  # the example kitchen has no lemon
     assert asked == [True], r.stderr

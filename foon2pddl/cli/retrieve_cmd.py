@@ -9,15 +9,16 @@ import click
 from ..errors import UsageError
 from ..generalize.network import NETWORKS, Substitutes
 from ..io.batch_report import TABLE_FORMATS
-from ..io.tree_formats import DEFAULT_FORMAT
+from ..io.tree_formats import DEFAULT_FORMAT, no_tree_json
 from ..model.containment import count_inference, inferred_nodes
 from ..model.words import count
 from ..retrieval import FORMATS, METHODS, render_tree, retrieve
 from ..retrieval.constrained import constraint_notes, explain_line, retrieve_constrained, shaping
-from ..retrieval.explain import explain_unreachable
+from ..retrieval.explain import why_unreachable
 from ..retrieval.greedy import DEFAULT_BUDGET
 from ..retrieval.optimal import DEFAULT_NODE_LIMIT, DEFAULT_TIME_LIMIT
 from ..retrieval.result import UNREACHABLE
+from ..status import batch_status
 from . import main
 from .batch import batch_entries, finish, write_trees
 from .goal_listing import goals_listing
@@ -33,7 +34,7 @@ from .options import (
 )
 from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
-from .reasons import gen_reading_note, networks_hint
+from .reasons import gen_reading_note, hint_lines, hint_words, networks_hint
 
 
 class Limit(click.ParamType):
@@ -143,19 +144,27 @@ def retrieve_(paths, goal, goals_file, goal_file, kitchen, utensils, containment
     if result.tree is None:
         # constraints explain themselves, unless the goal cannot be made even without them
         plain = result.reason == UNREACHABLE and (done is None or (done.blocking and done.blocking.relax is None))
-        detail = result.detail
+        detail, additions = result.detail, ()
         if plain:  # the smallest kitchen additions: 23 s at load 20-30 for a kitchen of utensils alone (stop 55)
             with slow_step(f"looking for the smallest kitchen additions that make {target.describe()!r}"):
-                detail = explain_unreachable(foon, kit.nodes, target)
-        if plain and done is not None:
+                why = why_unreachable(foon, kit.nodes, target)
+            detail, additions = why.text, why.additions
+        if plain and done is not None:  # additions make it without the constraints, not under them
+            additions = ()
             if not kind.as_read and _made_with_banned(net, view, kitchen, level, target):
                 detail = ("the constraints rule out every tree: without them the kitchen makes it (an object "
                           "ban also takes the object out of the kitchen, and no allowed object stands in for it)")
             else:
                 detail = "even without the constraints: " + detail
-        click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
-        if plain and kind.as_read and done is None:
-            networks_hint(net, kit, single_goal(goal), goal_file, level)
+        hinted = plain and kind.as_read and done is None
+        if fmt == "json":  # one document: what the text run prints on stderr
+            hints = hint_words(hint_lines(net, kit, single_goal(goal), goal_file, level)) if hinted else []
+            emit(no_tree_json(target.describe(), method, batch_status(result.reason), f"{result.reason}: {detail}",
+                              hints, additions), output)
+        else:
+            click.echo(f"cannot make {target.describe()!r} ({method}): {result.reason}: {detail}", err=True)
+            if hinted:
+                networks_hint(net, kit, single_goal(goal), goal_file, level)
         click.get_current_context().exit(1)
     emit(render_tree(result.tree, fmt, kitchen=kit), output)
     if kind.substitutes is Substitutes.SIMILAR and not cons.items:

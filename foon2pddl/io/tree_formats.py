@@ -13,7 +13,7 @@ from __future__ import annotations
 import json
 import shutil
 import subprocess
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
@@ -158,6 +158,16 @@ def _json(tree: TaskTree, used: list[ObjectNode] | None) -> str:
     }
     if used is not None:
         data["from_kitchen"] = [node_to_dict(n) for n in used]
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def no_tree_json(goal: str, method: str, status: str, reason: str, hints: Sequence[str] = (),
+                 additions: Iterable[Iterable[ObjectNode]] = ()) -> str:
+    """`--format json` for a goal with no tree: the batch row's `goal`, `status` and `reason` (the words after the
+    text output's `cannot make ...:`), the `method`, the `hints` (its `hint:` lines' words) and the kitchen
+    `additions` its reason names (each a way: the nodes to add, in the node schema of the tree's steps)."""
+    data = {"goal": goal, "status": status, "method": method, "reason": reason, "hints": list(hints),
+            "additions": [[node_to_dict(n) for n in way] for way in additions]}
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 

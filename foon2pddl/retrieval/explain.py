@@ -7,6 +7,7 @@ keep the cheap `complete.unreachable_detail`).
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass
 
 from ..analysis.additions import first_additions
 from ..analysis.reachability import blocker_words, reachable
@@ -31,8 +32,23 @@ def additions_text(sets, shown: int = 3) -> str:
 MAX_ADDITIONS = 6
 
 
+@dataclass(frozen=True)
+class Unreachable:
+    """Why a goal cannot be made: the words `retrieve` and `plan` print, and the kitchen additions they name
+    (each a set of nodes that, added to the kitchen, makes the goal; none when no small set was found)."""
+
+    text: str
+    additions: tuple[tuple[ObjectNode, ...], ...] = ()
+
+
 def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
                         max_size: int = MAX_ADDITIONS) -> str:
+    """The words of `why_unreachable`."""
+    return why_unreachable(foon, kitchen_nodes, goal, max_size).text
+
+
+def why_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: Goal,
+                    max_size: int = MAX_ADDITIONS) -> Unreachable:
     """Why no candidate of `goal` can be made from the kitchen: the smallest sets of nodes a kitchen
     could hold (the network's default kitchen) that make it.
 
@@ -44,32 +60,34 @@ def explain_unreachable(foon: Foon, kitchen_nodes: Iterable[ObjectNode], goal: G
     """
     reach = reachable(foon, kitchen_nodes, goal.candidates)
     if reach.makes_any(goal.candidates):
-        return f"{goal.describe()!r} can be made from the kitchen"
+        return Unreachable(f"{goal.describe()!r} can be made from the kitchen")
     addable = default_kitchen(foon).nodes
     head = none_can_be_made(goal)
     fixes = first_additions(reach, goal.candidates, addable, sorted({min(3, max_size), *range(4, max_size + 1)}))
     if fixes.sets:
-        return f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest)
+        return Unreachable(f"{head}; smallest kitchen additions that make it: " + additions_text(fixes.smallest),
+                           fixes.smallest)
     if not fixes.possible:  # the nodes no unit makes a kitchen lacks too would not help: the cycle is the reason
-        return f"{head}; {_cycle_text(reach, goal, max_size)}"
+        return _cycle(reach, goal, max_size, head)
     exact = fixes.exact
     if exact:
         leaves = blocker_words(reach, goal.candidates)
         if not leaves:
-            return f"{head}; {_cycle_text(reach, goal, max_size)}"
-        return (f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} makes it); "
-                "nodes no unit makes, each needed on some way to it: " + leaves)
-    return (f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search keeps the "
-            "16 smallest sets per node, so it may have missed one; the goal may need more additions)")
+            return _cycle(reach, goal, max_size, head)
+        return Unreachable(f"{head}; it needs more than {max_size} kitchen additions (no set of up to {max_size} "
+                           "makes it); nodes no unit makes, each needed on some way to it: " + leaves)
+    return Unreachable(f"{head}; no set of up to {max_size} kitchen additions was found to make it (the search "
+                       "keeps the 16 smallest sets per node, so it may have missed one; the goal may need more "
+                       "additions)")
 
 
-def _cycle_text(reach, goal: Goal, max_size: int) -> str:
+def _cycle(reach, goal: Goal, max_size: int, head: str) -> Unreachable:
     """Every way to the goal needs a node that itself needs it, so no node no unit makes helps; a kitchen that
     holds a node of the cycle breaks it (the converter's pour water gives back the empty cup its fill takes):
     the smallest such sets, among the nodes the goal depends on (the goal's own nodes excluded)."""
-    text = (f"no set of up to {count(max_size, 'node')} no unit makes gives it: every way to make it needs a node that "
-            "itself needs it (`foon2pddl check` names the cycle)")
+    text = (f"{head}; no set of up to {count(max_size, 'node')} no unit makes gives it: every way to make it needs a "
+            "node that itself needs it (`foon2pddl check` names the cycle)")
     fixes = first_additions(reach, goal.candidates, None, range(1, min(3, max_size) + 1))
     if fixes.smallest:
         text += "; a kitchen that holds one of the cycle's nodes breaks it: " + additions_text(fixes.smallest)
-    return text
+    return Unreachable(text, fixes.smallest)
