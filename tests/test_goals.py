@@ -8,7 +8,7 @@ import pytest
 
 from foon2pddl.errors import FoonSyntaxError, UsageError
 from foon2pddl.io.goal_files import parse_goal_spec, read_goal_file
-from foon2pddl.io.inputs import goal_spec, load_goal
+from foon2pddl.io.inputs import load_goal, load_goal_spec
 from foon2pddl.io.parser import parse_text
 from foon2pddl.model.foon import State, make_node, make_state
 from foon2pddl.model.goal import GoalSpec, resolve_goal, spec_of_node
@@ -167,13 +167,13 @@ def test_goal_file_holds_one_object_node(tmp_path):
         read_goal_file(path)
 
 
-def test_goal_spec_needs_exactly_one_source(tmp_path):
+def test_load_goal_spec_needs_exactly_one_source(tmp_path):
     with pytest.raises(UsageError, match="exactly one goal"):
-        goal_spec(None, None)
+        load_goal_spec(None, None)
     with pytest.raises(UsageError, match="exactly one"):
-        goal_spec("onion", tmp_path / "g.txt")
+        load_goal_spec("onion", tmp_path / "g.txt")
     with pytest.raises(UsageError, match="unbalanced"):
-        goal_spec("onion: in [bowl", None)
+        load_goal_spec("onion: in [bowl", None)
     assert load_goal("onion: chopped", None, FOON).candidates == (node("onion", "chopped"),)
 
 

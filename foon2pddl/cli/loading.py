@@ -94,12 +94,12 @@ def view_goal(view, goal: str | None, goal_file: Path | None, level: int, encodi
     """
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one of --goal and --goal-file")
-    from ..io.inputs import goal_spec
+    from ..io.inputs import load_goal_spec
     from ..model.goal import level_loss
 
     listing = goals_listing()
     try:  # a goal that does not read or that nothing makes is a bad value of its option (README)
-        spec = goal_spec(goal, goal_file)
+        spec = load_goal_spec(goal, goal_file)
         loss = level_loss(spec, level)
         if loss:
             click.echo(f"warning: {loss}", err=True)

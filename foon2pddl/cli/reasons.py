@@ -220,10 +220,10 @@ def hint_lines(net, kitchen, goal: str | None, goal_file: Path | None, level: in
     alone, `hint: ` the networks that make the goal, else which were checked and which were not."""
     from ..generalize.hints import hinted_kinds, networks_that_reach, slow_hint
     from ..generalize.network import NETWORKS
-    from ..io.inputs import goal_spec
+    from ..io.inputs import load_goal_spec
     from .progress import slow_step
 
-    spec = goal_spec(goal, goal_file)
+    spec = load_goal_spec(goal, goal_file)
     first = _default_kitchen_hint(net, kitchen, spec, level) or _recipe_file_hint(net, kitchen, spec, level)
     if first:
         yield first
@@ -325,10 +325,10 @@ def gen_reading_note(view, goal: str | None, goal_file: Path | None, made) -> st
     says when the tree makes another dish of the category than the one asked for."""
     from ..errors import FoonError
     from ..generalize.compress import abstract_goal
-    from ..io.inputs import goal_spec
+    from ..io.inputs import load_goal_spec
     from ..model.goal import resolve_goal, spec_of_node
 
-    spec = goal_spec(goal, goal_file)
+    spec = load_goal_spec(goal, goal_file)
     read = view.map_goal(spec)
     if read == spec:
         return ""

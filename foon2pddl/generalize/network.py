@@ -23,7 +23,7 @@ from enum import StrEnum
 from pathlib import Path
 
 from ..errors import UsageError
-from ..io.inputs import Network, goal_spec
+from ..io.inputs import Network, load_goal_spec
 from ..model.constraints import node_labels
 from ..model.foon import Foon, ObjectNode
 from ..model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
@@ -73,7 +73,7 @@ class NetworkView:
 
     def goal(self, goal: str | None, goal_file: str | Path | None, listing: str = "foon2pddl goals") -> Goal:
         """The user's goal (its text, or a goal file) mapped and resolved against this network."""
-        return self.resolve(goal_spec(goal, goal_file), listing)
+        return self.resolve(load_goal_spec(goal, goal_file), listing)
 
     def resolve(self, spec: GoalSpec, listing: str = "foon2pddl goals") -> Goal:
         """A goal as the user wrote it, mapped and resolved against this network (`listing`: the command listing

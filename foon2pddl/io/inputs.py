@@ -81,7 +81,7 @@ def load_kitchen(path: str | Path | None, network: Network, level: int) -> Kitch
     return kitchen.project(level)
 
 
-def goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
+def load_goal_spec(goal: str | None, goal_file: str | Path | None) -> GoalSpec:
     """The goal from its text or from a goal file; exactly one must be given (UsageError otherwise)."""
     if (goal is None) == (goal_file is None):
         raise UsageError("give exactly one goal: as text or as a goal file")
@@ -99,4 +99,4 @@ def load_goal(goal: str | None, goal_file: str | Path | None, foon: Foon) -> Goa
     """Resolve the user's goal against a network (at the network's level)."""
     from ..model.goal import resolve_goal
 
-    return resolve_goal(goal_spec(goal, goal_file), foon)
+    return resolve_goal(load_goal_spec(goal, goal_file), foon)
