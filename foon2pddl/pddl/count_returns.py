@@ -54,7 +54,13 @@ class Changers:
     (unit, its roles, the nodes of that label it changes one out of, whether a unit makes none of those: a stitched
     way may take it in a node that says more, and those roles in role order, each with whether a unit makes none of
     its node). `steps_from` keeps what `_way_back` finds from a node: the many ways back of one count
-    (`instance_counts.derive_counts`: a thousand in GEN trial 10 goal 57) walk from the same few nodes."""
+    (`instance_counts.derive_counts`: a thousand in GEN trial 10 goal 57) walk from the same few nodes.
+
+    Frozen but for `_from`, the cache `steps_from` fills: pddl/'s one frozen object that caches. That is sound
+    because an answer depends only on its key (node, stitched) and on `by_label`, which nothing changes once
+    `changers` builds it, never on the plan asking; a Changers shared by many plans answers as fresh ones do
+    (tests/test_relational_tomato_soup.py). Not an lru_cache: one Changers lives for one count's plans, and its
+    cache goes with it (eq=False: hashed by identity, never compared)."""
 
     by_label: dict[str, list[tuple[int, tuple[Role, ...], frozenset[ObjectNode], bool, tuple[tuple[Role, bool], ...]]]]
     _from: dict[tuple[ObjectNode, bool], tuple[Step, ...]] = field(default_factory=dict)
