@@ -1110,3 +1110,32 @@ def test_the_json_of_a_plan_foons_semantics_does_not_make_says_so_too():
         "FOON's own semantics does not make 'ramen' from this kitchen"), beyond["beyond_foon"]
     made = json.loads(run("plan", recipe, "--goal", "ramen", "--format", "json").stdout)
     assert made["status"] == "solved" and made["beyond_foon"] is None
+
+
+def test_the_objects_account_says_a_vessel_poured_from_is_taken_off_its_place_not_poured():
+    """Issue 24's pass at stop 61: the orange juice (0073-orange_juice.txt:86, the juice poured from the squeezer,
+    whose output `squeezer (dirty)` no longer says `on [surface]`) read `pour squeezer_1 from surface_1,
+    orange_juice_1 from squeezer_1 into drinking_glass_1`: the squeezer poured into the glass. It is lifted off the
+    surface to pour from, as a scene's sugar is taken out of its fridge (docs/scene.md)."""
+    from node_words import contains, inside, n
+
+    from foon2pddl.model.foon import make_state
+    from foon2pddl.model.physical import Relation
+
+    squeezer = n("squeezer", contains("orange juice"), make_state("on", "surface"))
+    juice, glass = n("orange juice", inside("squeezer")), n("drinking glass", "empty")
+    squeezer2, juice2, glass2 = n("squeezer", "dirty"), n("orange juice", inside("cup")), n(
+        "drinking glass", contains("orange juice"))
+    words = _step((squeezer, juice, glass), "pour", (squeezer2, glass2, juice2),
+                  [("squeezer_1", squeezer, squeezer2), ("juice_1", juice, juice2), ("glass_1", glass, glass2),
+                   ("surface_1", n("surface"), None)],
+                  {"squeezer_1": (squeezer, "surface_1", Relation.ON), "juice_1": (juice, "squeezer_1", Relation.IN),
+                   "glass_1": (glass,), "surface_1": (n("surface"),)},
+                  {"squeezer_1": (squeezer2,), "juice_1": (juice2, "glass_1", Relation.IN),
+                   "glass_1": (glass2,), "surface_1": (n("surface"),)})
+    assert words == "take squeezer_1 off surface_1, pour juice_1 from squeezer_1 into glass_1"
+    r = run("plan", SUBGRAPHS / "0073-orange_juice.txt", "--goal", "orange juice")
+    assert r.exit_code == 0, r.stderr
+    account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
+    assert "7. take squeezer_1 off surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1" in account, \
+        account

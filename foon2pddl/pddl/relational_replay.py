@@ -223,7 +223,9 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
     is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
     holder of an object whose node names a place (`sandwich (in [pan])` lifted from a skillet), stays the motion's
-    `from`.
+    `from`. A holder something is poured out of that itself leaves its place for none (FOON's output
+    `squeezer (dirty)` no longer `on [surface]`) is lifted to pour from, not poured: `take squeezer_1 off
+    surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1`.
     """
     made = [b.object for b in step.bindings if b.before is None]
     used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
@@ -235,9 +237,16 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
         dests.append(after[m].holder)
         holders.update({src, m} | {h for h in (before[src].holder, after[m].holder) if h})
         made.remove(m)
+    poured_from = {before[b.object].holder for b in step.bindings  # what something leaves by this step
+                   if b.before is not None and before[b.object].holder != after[b.object].holder}
+    lifted = []
     for b in step.bindings:
         x, was, now = b.object, before[b.object], after[b.object]
         if b.before is not None and was.holder != now.holder and not now.consumed:
+            if was.holder and now.holder is None and x in poured_from:  # lifted to pour from, not itself poured
+                lifted.append((x, f"take {x} {'out of' if was.relation is Relation.IN else 'off'} {was.holder}"))
+                holders.add(was.holder)
+                continue
             into = _into(now)
             if was.holder and was.holder not in listed and not places(b.before):
                 taken.append((x, f"take {x} {'out of' if was.relation is Relation.IN else 'off'} {was.holder}"))
@@ -289,14 +298,15 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
         parts.append((f"in {rooms_said}: " if where else "") + ", ".join(used) + (" -> " if used else "")
                      + ", ".join(made))
     elif used:  # used up, nothing made: `pour onion_1 from board_1 into pan_1, using up butter_1`
-        parts[1] += (", " if said else "") + "using up " + ", ".join(used)
+        said = said or ", ".join(x for x, _ in lifted)  # `take pot_1 off stove_2, drain pot_1, using up water_1`
+        parts[1] = said + (", " if said else "") + "using up " + ", ".join(used)
     if others:
         parts.append("with " + ", ".join(others))
-    if not taken:
+    if not (taken or lifted):
         return " ".join(p for p in parts if p)
     if len(taken) == len(moves) == 1:  # the one object taken out is the one the motion moves
         parts[1] = "it" + parts[1][len(taken[0][0]):]
-    return ", ".join(t for _, t in taken) + ", " + " ".join(p for p in parts if p)
+    return ", ".join(t for _, t in (*taken, *lifted)) + ", " + " ".join(p for p in parts if p)
 
 
 def relational_text(task: PlanningTask, trace: PhysicalTrace) -> str:
