@@ -1139,3 +1139,19 @@ def test_the_objects_account_says_a_vessel_poured_from_is_taken_off_its_place_no
     account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
     assert "7. take squeezer_1 off surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1" in account, \
         account
+
+
+def test_plan_network_gen_warns_only_of_kitchen_items_its_lifted_encoding_cannot_use(tmp_path):
+    """Issue 24's pass at stop 61: `plan 0073-orange_juice.txt --network gen --kitchen K` with `cup: empty` in K
+    warned `kitchen item `cup: empty` matches no node of the network`, then poured the juice into that cup (the
+    cup is a drinking vessel, GEN's category of the recipe's glass); `retrieve --network gen` gave no warning."""
+    kitchen = write(tmp_path / "oj.txt", "orange: whole\ncolander: empty\nfaucet: off\ncutting board: empty, on "
+                    "[surface]\nknife: clean\nsqueezer: clean, on [surface]\ncup: empty\nunicorn: whole\n")
+    args = (SUBGRAPHS / "0073-orange_juice.txt", "--kitchen", kitchen, "--goal", "orange juice", "--network", "gen")
+    planned, retrieved = run("plan", *args), run("retrieve", *args)
+    assert planned.exit_code == 0 and retrieved.exit_code == 0, planned.stderr + retrieved.stderr
+    assert "cup (empty)" in planned.stdout.split("\n")[1], planned.stdout
+    for r in (planned, retrieved):
+        warned = [line for line in r.stderr.splitlines() if "matches no node" in line]
+        assert warned == [f"{kitchen}:8: warning: kitchen item `unicorn: whole` matches no node of the network"], \
+            r.stderr

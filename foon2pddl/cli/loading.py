@@ -31,14 +31,15 @@ def read_network(paths, skip_invalid: bool = False, say_skipped: bool = True):
 
 
 def load_view(paths, kitchen: Path | None, level: int, network: str, containment: str = "strict",
-              utensils: Path | None = None, constraints=None):
+              utensils: Path | None = None, constraints=None, strays_network: str | None = None):
     """The loaded network and its `--network` view (network, kitchen and goal mapping at `level`).
 
     The one place the retrieve, compile and plan commands turn PATHS, --kitchen, --level,
     --network, --utensils and --containment into what they search: utensils extend the
     kitchen, and under `infer` the network gets the containment rule's inference units.
     With `constraints`, EXP and GEN are built from the kitchen without its banned objects
-    (so substitutes come from allowed ones).
+    (so substitutes come from allowed ones). Kitchen items are checked against `strays_network`'s view when
+    given (the kind whose lifted encoding plans over this one: a cup is a drinking vessel it can use).
     """
     from dataclasses import replace
 
@@ -64,7 +65,11 @@ def load_view(paths, kitchen: Path | None, level: int, network: str, containment
                    after=after):
         view = network_view(net, network, level, kit, similarity=chosen_similarity())
         # inside the step: FOON-EXP's node table, 0.3-0.5 s at load 14, was outside every step (stop 54's re-check)
-        strays = None if kitchen is None else view.kitchen_strays(kit.nodes, net.at(level))
+        strays = None
+        if kitchen is not None:
+            seen = view if strays_network in (None, network) else network_view(
+                net, strays_network, level, kit, similarity=chosen_similarity())
+            strays = seen.kitchen_strays(kit.nodes, net.at(level))
     if strays is not None:
         places = kit.holder_nodes()  # a scene's fridge and counter are places, not items FOON must name
         warn_kitchen(loaded, net.at(level), [n for n in strays if n not in places])
@@ -146,18 +151,18 @@ def load_pddl_view(paths, kitchen: Path | None, level: int, network: str, encodi
     from ..generalize.network import NETWORKS
     from ..pddl.compile import ENCODINGS
 
-    own = NETWORKS[network].encoding
+    own, lifted = NETWORKS[network].encoding, None
     if own is not None and not (encoding_given() and encoding == "tree"):
         if encoding_given() and encoding != own:
             raise UsageError(f"--network {network} compiles the {own} encoding, or FOON's tree over its nodes with "
                              "--encoding tree; drop --encoding")
         if costs is not None and not ENCODINGS[own].costs:
             raise UsageError(f"--network {network} does not support --costs")
-        encoding, network = own, next(iter(NETWORKS))
+        encoding, lifted, network = own, network, next(iter(NETWORKS))
     if costs is not None and not ENCODINGS[encoding].costs:
         raise UsageError(f"--encoding {encoding} does not support --costs")
     check_physical_options(encoding, restore, instances, category_types)
-    net, view = load_view(paths, kitchen, level, network, containment, utensils)
+    net, view = load_view(paths, kitchen, level, network, containment, utensils, strays_network=lifted)
     return net, view, encoding
 
 
