@@ -13,7 +13,7 @@ and that a later unit of the plan takes, the fewest units of the task outside th
 that change the object from the role's output node back to N, one after the other, each taking otherwise only
 kitchen nodes and nodes the units before it on the way make (`_way_back`), are inserted after that unit, each
 unit once. With `stitched` (a task that reads inputs no unit makes as `input_stitch` does), a unit on the way
-may take the object in a node no unit makes that says less than the one it is in (`input_stitch.said_less`: the
+may take the object in a node no unit makes that says less than the one it is in (`said_words.said_less`: the
 uncover's pot, no longer `hot`, is the cover's). With `plan_made` (`relational`), a unit on the way may also take a node a unit of the plan up to that unit makes:
 the fries' remove (`0035-oven-baked_sweet_potato_fries.txt:212`) takes the oven the put inside leaves `with
 [baking tray]` (`count_order.readers_first` then fires it after the bake). The way is searched breadth-first over the spare units with a
@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.pairing import Role, unit_roles
-from .input_stitch import said_less
+from .said_words import said_less
 
 __all__ = ["RETURN_DEPTH", "Changers", "changers", "with_returns"]
 

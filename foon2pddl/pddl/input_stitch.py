@@ -15,7 +15,7 @@ A stitch reads the input as the made node, on FOON's evidence in the unit itself
 * the made node M read for N: of label L, at the same place (read through its unit's names), made by a unit
   other than this one, and the latest such node (no other unit takes it and leaves an L at that place: the pizza's parsley is sprinkled on before the pick-and-place, so the pizza before the
   sprinkle is not read for the pizza it takes); one made by a unit that makes the container's node, else the
-  only one, of those the input only adds words to (`_words_only_added`: four cooks leave the universal FOON's
+  only one, of those the input only adds words to (`said_words.words_only_added`: four cooks leave the universal FOON's
   `cooking pan (contains {omelette})`, and only one omelette lists no more than the pour's), unless a unit making the container's node took N itself (it put that very object there, and the
   relational reading moves it: on the universal FOON the grilled cheese's pour takes `mustard (ground, in
   [bowl])` into the bowl of cheddar, and the mix takes that node again; the potato salad's `mustard (in
@@ -24,7 +24,7 @@ A stitch reads the input as the made node, on FOON's evidence in the unit itself
   `filling (contains {...}, in [cooking pan])`). Anything else is ambiguous and not stitched.
 
 Without such a container, the input is read as the one made node of its label at its place that no unit takes,
-that says all the input says and more (`said_less`), and whose unit made another input of this unit: the
+that says all the input says and more (`said_words.said_less`), and whose unit made another input of this unit: the
 uncover's `pot (contains {soup}, covered [pot lid], on [stove])` for the cover's `..., hot, ...` (0011), the cover
 having put on the `pot lid (on [pot])` the uncover takes: where a unit left the object, and nothing goes on from.
 The shared maker, not the recipe file, ties the two (a universal FOON written as one file has every recipe in it).
@@ -46,7 +46,7 @@ caesar salad's sprinkle takes the bowl of lettuce, crouton and dressing the mix 
 
 What a stitch drops or assumes is said (`Stitch.describe`): the states N has that M lacks are assumed (`uncooked`),
 those M has that N lacks are dropped. Only words are added (a list's items too), or a contents list dropped from a
-node that names none (`_words_only_added`). The stitched unit is one more action beside FOON's own (`with_stitches`): the plan's trace
+node that names none (`said_words.words_only_added`). The stitched unit is one more action beside FOON's own (`with_stitches`): the plan's trace
 holds M for the object (what the plan made); the tree keeps FOON's unit, and its check takes N as given by the
 stitch (`Compiled.placed`). O(u n^2) in the network's units.
 """
@@ -55,15 +55,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
 
 from ..model.aliases import unit_aliases
-from ..model.foon import Foon, FunctionalUnit, ObjectNode, State, make_state
+from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.memo import per_network
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, place_of, places
+from .said_words import rest_same, said_less, unsaid_by, words_only_added
 
-__all__ = ["Stitch", "Stitched", "said_less", "stitched_inputs", "stitches", "with_stitches"]
+__all__ = ["Stitch", "Stitched", "stitched_inputs", "stitches", "with_stitches"]
 
 
 @dataclass(frozen=True)
@@ -81,12 +81,12 @@ class Stitch:
     @property
     def assumed(self) -> tuple[str, ...]:
         """The states the unit's node says and the made node does not (`uncooked`), places aside."""
-        return _words(self.node, self.reads_as)
+        return unsaid_by(self.node, self.reads_as)
 
     @property
     def dropped(self) -> tuple[str, ...]:
         """The states the made node says and the unit's node does not, places aside."""
-        return _words(self.reads_as, self.node)
+        return unsaid_by(self.reads_as, self.node)
 
     def describe(self) -> str:
         """`shake takes brussel sprout (...), which no unit makes, as brussel sprout (...): assumes uncooked`."""
@@ -103,35 +103,6 @@ class Stitch:
         return (f"{self.taker.motion.label} takes {self.node.describe()}, "
                 f"{f'with what only the {by} makes' if by else 'which no unit makes'}, as {self.reads_as.describe()}"
                 f"{f', which the {by} leaves' if by else ''}{': ' + '; '.join(said) if said else ': its place by another name'}")
-
-
-@lru_cache(maxsize=1 << 16)
-def _said(node: ObjectNode, placed: bool = True) -> frozenset:
-    """What a node says, as words: its states, a `contains` list item by item (`contains {a, b}` says `a` and
-    `b`), a state with a word in parentheses as both words (`off (ready)` says `off` and `ready`); places only
-    when `placed` is False. Cached per node (its states are its identity): `count_returns`' ways back ask it of
-    the same few hundred nodes millions of times (3.7 million calls in GEN trial 10 goal 57)."""
-    return frozenset(w for x in node.states if not (placed and x.label in ("in", "on"))
-                     for w in ([("contains", i) for i in (*x.ingredients, x.related) if i] if x.label == "contains"
-                               else _qualified(x)))
-
-
-def _qualified(state: State) -> tuple[State, ...]:
-    """`off (ready)` as `off` and `ready` (FOON's one state of that form: the switch is off, the appliance is
-    ready); any other state as itself."""
-    head, paren, rest = state.label.partition(" (")
-    if not paren or not rest.endswith(")") or state.related or state.ingredients:
-        return (state,)
-    return make_state(head), make_state(rest[:-1])
-
-
-def _words(a: ObjectNode, b: ObjectNode) -> tuple[str, ...]:
-    """What `a` says and `b` does not, described (a list's items as one `contains {...}`); places only when `b`
-    names none (else they are one place by two names)."""
-    extra = _said(a, place_of(b) is not None) - _said(b, False)
-    items = sorted(w[1] for w in extra if isinstance(w, tuple))
-    return tuple(sorted(w.describe() for w in extra if not isinstance(w, tuple))) + (
-        (f"contains {{{', '.join(items)}}}",) if items else ())
 
 
 def _place(node: ObjectNode, unit: FunctionalUnit, made: bool = False) -> tuple[Relation, str] | None:
@@ -173,7 +144,7 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
                 found.extend(Stitch(u, n, m, unit, foon.units[b], mixed=x) for m, b, x in _mixed_in(foon, u, n))
                 continue
             if (p := _place(n, unit)) is None:
-                pick = [m for m in ends.get(n.label, ()) if set(made[m]) - {u} and _words_only_added(n, m)]
+                pick = [m for m in ends.get(n.label, ()) if set(made[m]) - {u} and words_only_added(n, m)]
                 if len(pick) == 1 and not describes_contents(n):
                     found.append(Stitch(u, n, pick[0], unit))
                 continue
@@ -184,7 +155,7 @@ def stitches(foon: Foon, units: Sequence[int]) -> tuple[Stitch, ...]:
             by_holder = [m for m in cands if any(set(made[h]) & set(made[m]) for h in holders)]
             took = any(n in foon.units[b].inputs for h in holders for b in made[h])  # it put this very object there
             # of several, the one the input only adds words to (the omelette listing bacon, not black pepper)
-            pick = [m for m in (by_holder if by_holder or took else cands) if _words_only_added(n, m)]
+            pick = [m for m in (by_holder if by_holder or took else cands) if words_only_added(n, m)]
             if holders and len(pick) == 1:
                 found.append(Stitch(u, n, pick[0], unit))
             elif len(left := [m for m in cands if m not in foon.consumers and said_less(n, m) and any(
@@ -267,7 +238,7 @@ def _left_by(foon: Foon, made: dict[ObjectNode, list[int]], unit: FunctionalUnit
                 return []
             by = b
             left |= {o for o in maker.outputs if o.label == node.label}
-    return [(m, by)] if len(left) == 1 and (m := left.pop()) != node and _words_only_added(node, m) else []
+    return [(m, by)] if len(left) == 1 and (m := left.pop()) != node and words_only_added(node, m) else []
 
 
 def _held_before(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode, int]]:
@@ -283,7 +254,7 @@ def _held_before(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode,
     if not extra:
         return []
     found = [(o, v) for v in foon.consumers.get(node, ()) if v != u for o in foon.units[v].outputs
-             if o.label == node.label and listed(o) == listed(node) | extra and _rest_same(o, node)]
+             if o.label == node.label and listed(o) == listed(node) | extra and rest_same(o, node)]
     return found[:1] if len({m for m, _ in found}) == 1 else []
 
 
@@ -303,35 +274,13 @@ def _mixed_in(foon: Foon, u: int, node: ObjectNode) -> list[tuple[ObjectNode, in
         return []
     found = {(o, v, x) for v in foon.consumers.get(node, ()) if v != u and node not in foon.units[v].outputs
              and not set(unit.outputs) & set(foon.units[v].inputs)
-             for o in foon.units[v].outputs if o.label == node.label and len(listed(o)) == 1 and _rest_same(o, node)
+             for o in foon.units[v].outputs if o.label == node.label and len(listed(o)) == 1 and rest_same(o, node)
              for x in foon.units[v].outputs if {x.label} == listed(o) and listed(x) == items
              and (p := _place(x, foon.units[v])) is not None and p[1] == node.label}
     named = [(o, v, x.label) for o, v, x in found if any(
         any(h.label == node.label and items <= listed(h) for h in foon.units[w].inputs)
         for w in foon.consumers.get(x, ()))]
     return sorted(named, key=lambda f: (f[1], f[2]))[:1] if len({m for m, _, _ in named}) == 1 else []
-
-
-def said_less(node: ObjectNode, made: ObjectNode) -> bool:
-    """Whether `node` says less than `made` and nothing else (places aside): the uncover's `pot (contains {soup},
-    covered [pot lid], on [stove])` for the cover's `pot (contains {soup}, covered [pot lid], hot, on [stove])`."""
-    return _said(node) < _said(made)
-
-
-def _rest_same(a: ObjectNode, b: ObjectNode) -> bool:
-    """Whether two nodes say the same but their lists."""
-    return {x for x in _said(a, False) if not isinstance(x, tuple)} == {x for x in _said(b, False) if not isinstance(x, tuple)}
-
-
-def _words_only_added(node: ObjectNode, made: ObjectNode) -> bool:
-    """Whether reading `made` for `node` only assumes words (`node` says all `made` says, and more: `uncooked`, or
-    more items of a list, the omelette that lists the egg mixture it was made of beside the bacon), or only drops
-    the contents list of a node that names no contents (`soup broth (in [pot])` for the stirred broth that lists
-    its stocks): never a state against its opposite (`uncooked` for `cooked`). Places aside (they are one)."""
-    said, was = _said(node), _said(made)
-    dropped = was - said
-    return not dropped or (said <= was and all(isinstance(w, tuple) for w in dropped)
-                           and not any(isinstance(w, tuple) for w in said))
 
 
 def _changed_there(foon: Foon, units: frozenset[int], node: ObjectNode, place: tuple[object, str], but: int) -> bool:
