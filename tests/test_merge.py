@@ -28,11 +28,11 @@ from foon2pddl.model.foon import (
     Source,
     make_node,
     make_state,
-    node_table,
 )
 from foon2pddl.model.levels import project
 from foon2pddl.model.memo import per_network
 from foon2pddl.model.merge import merge
+from foon2pddl.model.node_table import node_table
 
 FILES = expand_paths([SUBGRAPHS])
 

@@ -18,7 +18,8 @@ from foon2pddl.io.files import expand_paths
 from foon2pddl.io.foon_lines import _classify, _parse_state, parse_objects, plain_state
 from foon2pddl.io.parser import _comment_head, _plain, _Reader, parse_file, parse_text
 from foon2pddl.io.writer import write_foon
-from foon2pddl.model.foon import Motion, State, make_node, make_source, make_state, make_unit, node_table
+from foon2pddl.model.foon import Motion, State, make_node, make_source, make_state, make_unit
+from foon2pddl.model.node_table import node_table
 
 UNIT = "O1\tbowl\t1\nS1\tempty\nO2\tegg\t1\nS2\twhole\nM1\tcrack\t0:01\t0:05\nO1\tbowl\t0\nS3\tcontains\t{egg}\n"
 

@@ -17,8 +17,9 @@ from operator import attrgetter, itemgetter
 from typing import TypeVar
 
 from ..model.bulk import bulk, drain
-from ..model.foon import Foon, NodeTable, ObjectNode
+from ..model.foon import Foon, ObjectNode
 from ..model.memo import per_network
+from ..model.node_table import NodeTable
 
 T = TypeVar("T")
 

@@ -20,7 +20,6 @@ from ..model.foon import (
     Foon,
     FunctionalUnit,
     Motion,
-    NodeTable,
     ObjectNode,
     Source,
     State,
@@ -28,6 +27,7 @@ from ..model.foon import (
     make_source,
     make_unit,
 )
+from ..model.node_table import NodeTable
 from ..model.words import first_of
 from .foon_lines import _SKIP, _classify, _parse_motion, _parse_state, plain_state
 

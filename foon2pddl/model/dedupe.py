@@ -1,7 +1,7 @@
 """Networks without duplicate units: units equal by motion label and node sets are merged, provenance joined.
 
 A parser's or a merge's units often repeat a unit of another recipe; `deduped` keeps the first of each group and
-compares units by node numbers (`foon.NodeTable`), so no node is hashed per occurrence.
+compares units by node numbers (`node_table.NodeTable`), so no node is hashed per occurrence.
 """
 
 from __future__ import annotations
@@ -11,7 +11,8 @@ from itertools import compress
 from operator import attrgetter, ne
 
 from .bulk import bulk
-from .foon import Foon, FunctionalUnit, NodeTable, node_table
+from .foon import Foon, FunctionalUnit
+from .node_table import NodeTable, node_table
 
 _MOTION_LABEL = attrgetter("motion.label")
 

@@ -9,13 +9,14 @@ provenance) are excluded from equality and hashing.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from itertools import chain, compress, repeat
 from operator import attrgetter, is_not
 
-from .bulk import bulk, drain
+from .bulk import bulk
+from .node_table import NodeTable, first_objects, node_table, unit_index
 from .words import count
 
 _WS = re.compile(r"\s+")
@@ -290,7 +291,7 @@ class Foon:
 
     @cached_property
     @bulk
-    def table(self) -> NodeTable:
+    def table(self) -> NodeTable[ObjectNode]:
         """The network's nodes numbered (`NodeTable`): what network-sized passes work on instead of hashing nodes."""
         return node_table(self.units)
 
@@ -303,7 +304,7 @@ class Foon:
     @bulk
     def producers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that output it."""
-        return _index(self.table.outputs, first_objects(self.units, self.table.outputs, "outputs"))
+        return unit_index(self.table.outputs, first_objects(self.units, self.table.outputs, "outputs"))
 
     @cached_property
     @bulk
@@ -318,7 +319,7 @@ class Foon:
     @bulk
     def consumers(self) -> dict[ObjectNode, tuple[int, ...]]:
         """Node -> indexes of the units that take it as input."""
-        return _index(self.table.inputs, first_objects(self.units, self.table.inputs, "inputs"))
+        return unit_index(self.table.inputs, first_objects(self.units, self.table.inputs, "inputs"))
 
     @cached_property
     def dishes(self) -> frozenset[ObjectNode]:
@@ -331,58 +332,3 @@ class Foon:
         """Distinct motion labels, sorted."""
         return tuple(sorted({u.motion.label for u in self.units}))
 
-
-@dataclass(frozen=True, eq=False)
-class NodeTable:
-    """A network's distinct nodes numbered 0.. in order of first appearance (inputs, then outputs, unit by
-    unit), and each unit's inputs and outputs as those numbers, in the order the unit lists them.
-
-    Network-sized passes (indexes, kitchens, duplicate units) look nodes up by number instead of
-    hashing them: an `ObjectNode`'s hash is a Python-level call, a number's is not.
-    """
-
-    nodes: tuple[ObjectNode, ...]
-    inputs: tuple[tuple[int, ...], ...]
-    outputs: tuple[tuple[int, ...], ...]
-
-
-def node_table(units: Iterable[FunctionalUnit]) -> NodeTable:
-    """Number the nodes of `units` (`NodeTable`). Linear: node objects recur across units (a parser shares
-    them), so each distinct object is hashed once and every occurrence is found by identity, in C loops."""
-    units = tuple(units)
-    objects: dict[int, ObjectNode] = {}  # id(object) -> object, in order of first appearance
-    for u in units:
-        objects.update(zip(map(id, u.inputs), u.inputs, strict=True))
-        objects.update(zip(map(id, u.outputs), u.outputs, strict=True))
-    number: dict[ObjectNode, int] = {}  # equal objects share a number: the first one seen stands for them
-    setdefault = number.setdefault
-    by_object = dict(zip(objects, [setdefault(n, len(number)) for n in objects.values()], strict=True))
-    look = by_object.__getitem__
-    return NodeTable(tuple(number),
-                     tuple(tuple(map(look, map(id, u.inputs))) for u in units),
-                     tuple(tuple(map(look, map(id, u.outputs))) for u in units))
-
-
-def first_objects(units: Sequence[FunctionalUnit], ids: tuple[tuple[int, ...], ...],
-                  side: str) -> dict[int, ObjectNode]:
-    """Node number -> the first object listed for it on `side` (`inputs` or `outputs`, with `ids` the table's
-    numbers of that side), in order of first appearance there. Equal nodes may differ in what is not their
-    identity (motion flag, goal and dish marks); the first one listed stands for them, as in a set or dict of
-    nodes built by going through the units. One C-level pass of `dict.setdefault` (the first write wins)."""
-    first: dict[int, ObjectNode] = {}
-    drain(map(first.setdefault, chain.from_iterable(ids), chain.from_iterable(map(attrgetter(side), units))))
-    return first
-
-
-def _index(side: tuple[tuple[int, ...], ...], objects: dict[int, ObjectNode]) -> dict[ObjectNode, tuple[int, ...]]:
-    """Node -> indexes of the units listing it on `side`, for the nodes some unit lists there (first appearance;
-    `objects`: `first_objects` of that side)."""
-    acc: dict[int, list[int]] = {}
-    for i, ids in enumerate(side):
-        for n in ids:
-            got = acc.get(n)
-            if got is None:
-                acc[n] = [i]
-            elif got[-1] != i:  # a node listed twice on one side counts once
-                got.append(i)
-    return {objects[n]: tuple(v) for n, v in acc.items()}

@@ -12,9 +12,10 @@ from dataclasses import dataclass, field, replace
 from itertools import chain
 
 from .bulk import bulk
-from .foon import Foon, NodeTable, ObjectNode, first_objects
+from .foon import Foon, ObjectNode
 from .levels import project_node
 from .memo import per_network
+from .node_table import NodeTable, first_objects
 from .scene import SceneObject
 from .words import count
 
