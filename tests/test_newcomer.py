@@ -1155,3 +1155,17 @@ def test_plan_network_gen_warns_only_of_kitchen_items_its_lifted_encoding_cannot
         warned = [line for line in r.stderr.splitlines() if "matches no node" in line]
         assert warned == [f"{kitchen}:8: warning: kitchen item `unicorn: whole` matches no node of the network"], \
             r.stderr
+
+
+@pytest.mark.parametrize("command", ["plan", "compile"])
+def test_a_constraint_that_matches_nothing_is_warned_by_plan_and_compile_too(tmp_path, command):
+    """Issue 24's pass at stop 61: `retrieve --goal guacamole --without-motion scop` (scoop typed wrong) warns that no
+    unit mentions 'scop'; `plan` and `compile` said nothing and planned the scoop (docs/constraints.md: a constraint
+    that matches nothing in the network gets a warning)."""
+    out = ("-o", tmp_path / "out") if command == "compile" else ()
+    r = run(command, "--goal", "guacamole", "--without-motion", "scop", "--without", "avocadoo", *out)
+    assert r.exit_code == 0, r.stderr
+    assert "warning: no unit of the network mentions 'scop' (`without-motion scop`, from <options>)" in r.stderr
+    assert "warning: no unit of the network mentions 'avocadoo' (`without avocadoo`, from <options>)" in r.stderr
+    kept = run(command, "--goal", "guacamole", "--without-motion", "whisk", *out)
+    assert "warning:" not in kept.stderr, kept.stderr

@@ -20,7 +20,7 @@ from ..pddl.untyped import untyped
 from . import main
 from .batch import batch_entries
 from .batch_pddl import compile_batch
-from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal
+from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal, warn_unmatched_constraints
 from .object_options import category_chains, checked_instances
 from .options import constraints_options, costs_option, pddl_task_options, prune_option, rates_option, single_goal
 from .outputs import cannot_write, check_output
@@ -42,6 +42,7 @@ def build_task(paths, goal: str | None, goal_file: Path | None, kitchen: Path | 
     _, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
                                        restore=restore, instances=instances, category_types=category_types)
     target = view_goal(view, single_goal(goal) if isinstance(goal, tuple) else goal, goal_file, level, encoding)
+    warn_unmatched_constraints(view.foon, cons)
     from .reasons import unreachable_reason
 
     fixpoint = not encoding_named(encoding).lifted  # (see `unreachable_reason`)

@@ -189,6 +189,19 @@ def constraint_inputs(files, without_motions, without, must_use, rates: Path | N
     return cons, motion_rates, costs
 
 
+def warn_unmatched_constraints(foon, cons) -> None:
+    """Warn (stderr) about each constraint that matches nothing in `foon`, in `retrieve`'s words
+    (docs/constraints.md): a typo (`--without-motion scop`) must not plan as if no constraint were given."""
+    if not cons.items:
+        return
+    from ..analysis.constraints import removal
+    from ..retrieval.constrained import constraint_notes
+
+    for line in constraint_notes(removal(foon, cons)):
+        if not line.startswith("constraints: "):  # what each removes: retrieve's summary, not a warning
+            click.echo(line, err=True)
+
+
 def reject_lifted_constraints(network: str, cons) -> None:
     """A network with its own encoding (GEN's lifted one) takes no constraints in the PDDL commands, in that
     encoding or in `--encoding tree` over its nodes (native `retrieve --network gen` does)."""

@@ -24,7 +24,13 @@ from ..planners.solve import PHASES, PlanOutcome, plan, plan_restoring
 from . import main
 from .batch import TREE_EXTENSIONS, batch_entries
 from .batch_pddl import plan_batch
-from .loading import constraint_inputs, load_pddl_view, reject_lifted_constraints, view_goal
+from .loading import (
+    constraint_inputs,
+    load_pddl_view,
+    reject_lifted_constraints,
+    view_goal,
+    warn_unmatched_constraints,
+)
 from .object_options import category_chains, checked_instances
 from .options import (
     check_time_limit,
@@ -176,6 +182,7 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     net, view, encoding = load_pddl_view(paths, kitchen, level, network, encoding, costs, containment, utensils,
                                          restore=restore, instances=instances, category_types=category_types)
     foon, kit, target = view.foon, view.kitchen, view_goal(view, single_goal(goal), goal_file, level, encoding)
+    warn_unmatched_constraints(foon, cons)
     counts = checked_instances(instances, encoding, foon)
     load_s = time.perf_counter() - t0
     if skills:
