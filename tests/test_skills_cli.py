@@ -376,3 +376,21 @@ def test_no_second_encoding_is_tried_where_foons_semantics_cannot_make_the_goal(
     assert result.exit_code == 1, result.output
     assert "instances" not in result.stderr, result.stderr
     assert "\nreason: " in "\n" + result.stderr, result.stderr
+
+
+def test_a_skill_table_error_names_the_shipped_domain_by_a_path_that_opens(tmp_path):
+    """newcomer60: `plan --skills --skill-table my.json` with a skill the domain lacks said `motion 'chop' maps to
+    skill 'slash', which <shipped>/skills.pddl does not define`: `<shipped>` is no path a user can open. The shipped
+    files are named by their path in the package (`model.where.shown_path`, as the embedded example is), and
+    the JSON's `domain` says the same."""
+    from conftest import ROOT
+
+    table = tmp_path / "my.json"
+    table.write_text(json.dumps({"motions": {"chop": "slash"}}))
+    result = run("--goal", "whipped cream", "--skills", "--skill-table", str(table))
+    assert result.exit_code == 2, result.output
+    said = "which foon2pddl/data/skills/skills.pddl does not define"
+    assert said in result.stderr and "<shipped>" not in result.stderr, result.stderr
+    assert (ROOT / "foon2pddl" / "data" / "skills" / "skills.pddl").is_file()
+    ok = run("--goal", "whipped cream", "--skills", "--format", "json")
+    assert ok.exit_code == 0 and json.loads(ok.stdout)["domain"] == "foon2pddl/data/skills/skills.pddl"

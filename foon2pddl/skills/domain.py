@@ -25,6 +25,7 @@ from pathlib import Path
 
 from ..errors import FoonSyntaxError
 from ..io.parser import read_text
+from ..model.where import shown_path
 from ..model.words import count
 from ..pddl.task import Atom
 from .sexpr import SexprError, SList, parse, typed_list
@@ -234,6 +235,7 @@ def read_domain(path: str | Path) -> SkillDomain:
 
 
 def shipped_domain() -> SkillDomain:
-    """The domain shipped with foon2pddl (`foon2pddl/data/skills/skills.pddl`)."""
+    """The domain shipped with foon2pddl, named by its path in the package (`foon2pddl/data/skills/skills.pddl`,
+    `shown_path`: a path a user can open, wherever the package is installed, in messages and JSON alike)."""
     ref = resources.files("foon2pddl") / "data" / "skills" / DEFAULT_DOMAIN
-    return parse_domain(ref.read_text(), f"<shipped>/{DEFAULT_DOMAIN}")
+    return parse_domain(ref.read_text(), shown_path(str(ref)))

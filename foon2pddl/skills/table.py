@@ -24,6 +24,7 @@ from ..io.foon_lines import CONTROL_CHARS
 from ..io.json_text import load_json, unknown_key
 from ..io.parser import read_text
 from ..model.foon import normalize_label
+from ..model.where import shown_path
 from .domain import SkillDomain
 
 __all__ = ["Coverage", "MotionTable", "coverage", "parse_table", "read_table", "shipped_table"]
@@ -108,8 +109,9 @@ def read_table(path: str | Path) -> MotionTable:
 
 
 def shipped_table() -> MotionTable:
+    """The motion table shipped with foon2pddl, named by its path in the package (`shipped_domain`'s way)."""
     ref = resources.files("foon2pddl") / "data" / "skills" / "motions.json"
-    return parse_table(ref.read_text(), "<shipped>/motions.json")
+    return parse_table(ref.read_text(), shown_path(str(ref)))
 
 
 @dataclass(frozen=True)
