@@ -22,6 +22,7 @@ O(steps x (facts + objects)).
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from ..io.recipe_words import soiled
 from ..model.aliases import unit_aliases
@@ -205,30 +206,26 @@ def _outward(x: str, fixed: set[str], before: dict[str, ObjectState],
     return tuple(out)
 
 
-def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
-    """A step in recipe words with the objects named, O(bindings x depth), depth how many holders `_outward` says outward.
+@dataclass(frozen=True)
+class _Moves:
+    """Where a step moves things (`_moved`): each move said (`x from h into g`), where each goes, the holders the
+    moves name, the objects first taken out of a holder the unit does not list, the holders lifted to pour from,
+    and what the step makes that is no portion."""
 
-    `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
-    the motion, each object that changes holder (from, into), each other object whose state changes (after a
-    move: `into bowl_4, changing greek_salad_1`; one that holds where a move goes is that place: `onto pancake_1 on
-    plate_1`) and where it stays, outward while the step names the holders (`cut avocado_1 on cutting_board_1`;
-    `heat butter_2 in bowl_1 in microwave_1`: a changed object holding another's place is said as that place), then
-    what the step consumes and makes (in the holder of what it makes and where that stays: `bake in baking_tray_1 in
-    oven_1: ...`; used up with nothing made: `, using up
-    butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
-    holder something moves into: the dressing the lettuce is poured onto is no tool). A step that only makes
-    something (at level 1 no state changes) names its objects, then what it makes, as the recipe's words do:
-    `squeeze lime_1, juicer_1, making lime_juice_1`, not lime juice squeezed with a lime.
-    An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
-    holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
-    is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
-    holder of an object whose node names a place (`sandwich (in [pan])` lifted from a skillet), stays the motion's
-    `from`. A holder something is poured out of that itself leaves its place for none (FOON's output
-    `squeezer (dirty)` no longer `on [surface]`) is lifted to pour from, not poured: `take squeezer_1 off
-    surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1`.
-    """
+    said: tuple[str, ...]
+    dests: tuple[str | None, ...]
+    holders: frozenset[str]
+    taken: tuple[tuple[str, str], ...]
+    lifted: tuple[tuple[str, str], ...]
+    made: tuple[str, ...]
+
+
+def _moved(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> _Moves:
+    """The first rule of where a thing is said: what changes holder, from where, into what. A portion made of a
+    surviving object (`m (a portion of s) from h into g`), each bound object whose holder changes, a holder the
+    unit does not list left first (`take x out of fridge_1`), and a holder something is poured out of that
+    leaves its place for none, lifted (`take squeezer_1 off surface_1`). O(bindings)."""
     made = [b.object for b in step.bindings if b.before is None]
-    used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
     moves, dests, holders, taken = [], [], set(), []
     listed = {b.object for b in step.bindings if b.role}  # the objects the unit names
     for m, src in _portions(step, before, after, made):
@@ -255,21 +252,74 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
                 moves.append(f"{x}" + (f" from {was.holder}" if was.holder else "") + into)
             dests.append(now.holder)
             holders.update(h for h in (was.holder, now.holder) if h)
+    return _Moves(tuple(moves), tuple(dests), frozenset(holders), tuple(taken), tuple(lifted), tuple(made))
+
+
+def _seated(moves: list[str], dests: Sequence[str | None], worked: set[str], before: dict[str, ObjectState],
+            after: dict[str, ObjectState]) -> set[str]:
+    """The second rule: a changed object (in `worked`) that holds where a move goes is that move's place
+    (`onto pancake_1 on plate_1`): said after the last move into each destination (`moves` is extended in
+    place), and returned, so that it is not said again as changed. O(moves)."""
+    stands = set()
+    for d, i in {d: i for i, d in enumerate(dests) if d}.items():  # the last move into each destination
+        was_at, now_at = before.get(d), after.get(d)
+        if now_at is not None and was_at is not None and now_at.holder in worked and was_at.holder == now_at.holder:
+            moves[i] += _at(now_at.relation, now_at.holder)
+            stands.add(now_at.holder)
+    return stands
+
+
+def _stays(worked: list[str], fixed: set[str], where: list[str], before: dict[str, ObjectState],
+           after: dict[str, ObjectState]) -> tuple[dict[tuple[tuple[Relation | None, str], ...], list[str]],
+                                                   dict[str, tuple[tuple[Relation | None, str], ...]], set[str]]:
+    """The third rule: where a worked object, and the holder of what the step makes (`where`), stay, outward while
+    the step names the holders (`fixed`; `_outward`): the worked objects grouped by that chain (`cut avocado_1 on
+    cutting_board_1`), the chain of each holder in `where`, and the holders some chain says (a worked object
+    holding another's place is said as that place, not as changed). O(objects x depth)."""
+    chains = {x: _outward(x, fixed, before, after) for x in worked}
+    rooms = {w: _outward(w, fixed, before, after) for w in where}
+    at = {h for chain in (*chains.values(), *rooms.values()) for _, h in chain}
+    groups: dict[tuple[tuple[Relation | None, str], ...], list[str]] = {}
+    for x in worked:  # a worked object holding another's place is said as that place (the microwave going off)
+        if x not in at:
+            groups.setdefault(chains[x], []).append(x)
+    return groups, rooms, at
+
+
+def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> str:
+    """A step in recipe words with the objects named, O(bindings x depth), depth how many holders `_outward` says outward.
+
+    `pour sugar_1 from bag_1 into pitcher_1`; `mix in bowl_2: lettuce_1, tomato_1 -> salad_1 with spoon_1`:
+    the motion, each object that changes holder (from, into), each other object whose state changes (after a
+    move: `into bowl_4, changing greek_salad_1`; one that holds where a move goes is that place: `onto pancake_1 on
+    plate_1`) and where it stays, outward while the step names the holders (`cut avocado_1 on cutting_board_1`;
+    `heat butter_2 in bowl_1 in microwave_1`: a changed object holding another's place is said as that place), then
+    what the step consumes and makes (in the holder of what it makes and where that stays: `bake in baking_tray_1 in
+    oven_1: ...`; used up with nothing made: `, using up
+    butter_1`), then the objects it only uses (not where a changed object stays, nor what already sits in a
+    holder something moves into: the dressing the lettuce is poured onto is no tool). A step that only makes
+    something (at level 1 no state changes) names its objects, then what it makes, as the recipe's words do:
+    `squeeze lime_1, juicer_1, making lime_juice_1`, not lime juice squeezed with a lime.
+    An object whose node names no place (`sugar (granulated)`: FOON's unit names no source) moved out of a
+    holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
+    is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
+    holder of an object whose node names a place (`sandwich (in [pan])` lifted from a skillet), stays the motion's
+    `from`. A holder something is poured out of that itself leaves its place for none (FOON's output
+    `squeezer (dirty)` no longer `on [surface]`) is lifted to pour from, not poured: `take squeezer_1 off
+    surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1`.
+    """
+    moved = _moved(step, before, after)
+    made, moves, taken, lifted = list(moved.made), list(moved.said), moved.taken, moved.lifted
+    used = [b.object for b in step.bindings if after[b.object].consumed and not before[b.object].consumed]
     where = sorted({after[m].holder for m in made if after[m].holder})
-    holders.update(where)
+    holders = moved.holders | set(where)
     rest = [b for b in step.bindings if b.object not in made and b.object not in used and b.object not in holders
             and before[b.object].holder == after[b.object].holder]
     work = [b for b in rest if changed(b)]  # a tool the step only soils is used, not worked (`io.recipe_words`)
     worked = [b for b in work if b.before is None or not soiled(b.before, b.after)]
     if not (worked or moves or made or used):
         worked = work
-    # a changed object that holds where a move goes is its place: `onto pancake_1 on plate_1`
-    seated, stands = {b.object for b in worked}, set()
-    for d, i in {d: i for i, d in enumerate(dests) if d}.items():  # the last move into each destination
-        was_at, now_at = before.get(d), after.get(d)
-        if now_at is not None and was_at is not None and now_at.holder in seated and was_at.holder == now_at.holder:
-            moves[i] += _at(now_at.relation, now_at.holder)
-            stands.add(now_at.holder)
+    stands = _seated(moves, moved.dests, {b.object for b in worked}, before, after)
     worked = [b for b in worked if b.object not in stands]
     into = {after[b.object].holder for b in step.bindings if b.before is not None and b.object not in made
             and before[b.object].holder != after[b.object].holder}
@@ -277,14 +327,8 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
         before[b.object].holder in into and any(s.label in _RELATIONS and s.related for s in b.before.states))]
     # where a worked object stays is a place, not a tool, and so is where that place stays when the step names it:
     # `cut avocado_1 on cutting_board_1 with knife_1`, `heat butter_2 in bowl_1 in microwave_1`
-    fixed = set(others) | {b.object for b in worked}
-    chains = {b.object: _outward(b.object, fixed, before, after) for b in worked}
-    rooms = {w: _outward(w, fixed, before, after) for w in where}
-    at = {h for chain in (*chains.values(), *rooms.values()) for _, h in chain}
-    groups: dict[tuple[tuple[Relation | None, str], ...], list[str]] = {}
-    for b in worked:  # a worked object holding another's place is said as that place (the microwave going off)
-        if b.object not in at:
-            groups.setdefault(chains[b.object], []).append(b.object)
+    groups, rooms, at = _stays([b.object for b in worked], set(others) | {b.object for b in worked}, where,
+                               before, after)
     said = ", ".join(moves)
     if groups:  # after a move, what else it changes: `into bowl_4, changing greek_salad_1`
         names = ", ".join(", ".join(xs) + "".join(_at(rel, h) for rel, h in chain) for chain, xs in groups.items())
