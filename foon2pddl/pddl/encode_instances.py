@@ -72,6 +72,7 @@ from .count_reasons import count_reasons
 from .encoding import DEFAULT_OPTIONS, GOAL_REACHED, EncodeOptions, at_level, header, unit_comment
 from .instance_counts import InstanceCounts, derive_counts
 from .instance_lanes import lanes
+from .instance_names import counted_objects
 from .names import NameTable
 from .prune import restoring_units
 from .task import Action, Atom, Instance, PlanningTask, Predicate
@@ -216,19 +217,9 @@ def encode_instances(
 
 def _instances(table: NameTable, counts: InstanceCounts,
                const: dict[ObjectNode, str]) -> tuple[list[Instance], list[Atom], set[str]]:
-    """Instance objects numbered per label, their initial states."""
-    starts: dict[str, list[ObjectNode | None]] = {}
-    for node, k in counts.at_node:
-        starts.setdefault(node.label, []).extend([node] * k)
-    for label, k in counts.unmade:
-        starts.setdefault(label, []).extend([None] * k)
-    instances, init = [], []
-    for label in sorted(starts):
-        for k, node in enumerate(starts[label], start=1):
-            name = table.name(f"{label} {k}", key=("instance", label, k))
-            instances.append(Instance(name, label, node))
-            init.append(Atom(IS, (name, NOT_MADE if node is None else const[node])))
-    return instances, init, set()
+    """Instance objects numbered per label (`instance_names.counted_objects`), their initial states."""
+    instances = counted_objects(table, counts)
+    return instances, [Atom(IS, (x.name, NOT_MADE if x.start is None else const[x.start])) for x in instances], set()
 
 
 def count_lines(counts: InstanceCounts) -> tuple[str, ...]:

@@ -10,14 +10,14 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, holds_unsaid, listed, moved_into, place_of, place_state, places
-from ..model.scene import SceneObject
 from .holder_words import aliased, read_names, task_aliases
+from .instance_names import counted_objects, named_objects
 from .names import NameTable
 from .task import Instance
 
-__all__ = ["completed_kitchen", "counted_objects", "holder_init", "implied_contents", "kitchen_implied", "kitchen_placed",
+__all__ = ["completed_kitchen", "holder_init", "implied_contents", "kitchen_implied", "kitchen_placed",
            "placed_since_start",
-           "named_objects", "scene_instances", "unplaced"]
+           "unplaced"]
 
 
 def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
@@ -303,41 +303,6 @@ def kitchen_implied(nodes: Iterable[ObjectNode | None], kitchen: Iterable[Object
 def _unplaced_all(kitchen: frozenset[ObjectNode]) -> frozenset[ObjectNode]:
     """The kitchen's nodes with their places dropped (cached: the kitchen stitches ask once per kitchen node)."""
     return frozenset(unplaced(k) for k in kitchen)
-
-
-def named_objects(table: NameTable, instances: list[Instance], nodes: Iterable[ObjectNode]) -> list[Instance]:
-    """`instances` plus one object per node of `nodes`, numbered after its label's last one."""
-    out = list(instances)
-    for node in nodes:
-        k = 1 + sum(x.label == node.label for x in out)
-        out.append(Instance(table.name(f"{node.label} {k}", key=("instance", node.label, k)), node.label, node))
-    return out
-
-
-def counted_objects(table: NameTable, counts) -> list[Instance]:
-    """The counted objects, numbered per label: kitchen ones in their nodes, then the not yet made."""
-    starts: dict[str, list[ObjectNode | None]] = {}
-    for node, k in counts.at_node:
-        starts.setdefault(node.label, []).extend([node] * k)
-    for label, k in counts.unmade:
-        starts.setdefault(label, []).extend([None] * k)
-    return [Instance(table.name(f"{label} {k}", key=("instance", label, k)), label, node)
-            for label in sorted(starts) for k, node in enumerate(starts[label], start=1)]
-
-
-def scene_instances(table: NameTable, scene: Iterable[SceneObject], unmade: Iterable[tuple[str, int]]) -> list[Instance]:
-    """A scene's objects as the task's objects (`model.scene`): named by their ids (through `table`, so no id
-    can break or inject into PDDL), in their nodes, in or on their holders; then the `unmade` objects (label,
-    count) the units make, numbered per label after the scene's objects of that label (`vinegar_2`)."""
-    objs = sorted(scene)
-    name = {o.id: table.name(o.id, key=("scene", o.id)) for o in objs}
-    out = [Instance(name[o.id], o.label, o.node, name[o.holder] if o.holder is not None else None, o.relation,
-                    o.id) for o in objs]
-    for label, k in unmade:
-        first = 1 + sum(o.label == label for o in objs)
-        out += [Instance(table.name(f"{label} {i}", key=("instance", label, i)), label)
-                for i in range(first, first + k)]
-    return out
 
 
 def completed_kitchen(table: NameTable, counts, units: Sequence[FunctionalUnit], have: Iterable[str],

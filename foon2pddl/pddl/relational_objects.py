@@ -49,9 +49,10 @@ from ..model.words import count
 from .encoding import LevelInputs
 from .holder_words import task_aliases
 from .input_stitch import Stitched
+from .instance_names import scene_instances
 from .names import NameTable
 from .prune import feeding_units
-from .relational_init import completed_kitchen, scene_instances
+from .relational_init import completed_kitchen
 from .relational_reading import Reading, read_units
 from .task import Instance
 
