@@ -23,7 +23,7 @@ import shutil
 import signal
 import tempfile
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import ExitStack, contextmanager
 
 MARK = "FOON2PDDL_RUN"
@@ -120,6 +120,15 @@ def _kill(pids: list[int]) -> None:
             os.kill(pid, signal.SIGKILL)
         except (ProcessLookupError, PermissionError):
             pass
+
+
+def kill_group(pid: int, otherwise: Callable[[], object] = lambda: None) -> None:
+    """SIGKILL the process group `pid` leads; `otherwise()` (kill the leader alone, or nothing) when the group is
+    gone or not ours to kill: a planner run's, a UP engine's or the translator server's group."""
+    try:
+        os.killpg(pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        otherwise()
 
 
 def kill_marked(token: str, name: str = MARK, rounds: int = 5) -> None:

@@ -21,7 +21,6 @@ import errno
 import math
 import os
 import resource
-import signal
 import subprocess
 import time
 from collections.abc import Mapping, Sequence
@@ -29,7 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..io.interrupts import signals_deferred
-from .cleanup import MARK, kill_marked, new_token
+from .cleanup import MARK, kill_group, kill_marked, new_token
 
 #: Output file of a run, in its working directory.
 OUTPUT_FILE = "planner-output.log"
@@ -199,10 +198,7 @@ def _end(proc: subprocess.Popen | None, token: str) -> None:
     """Kill the run's process group (while its leader is unreaped, so the group id is still ours),
     then every process carrying the run's mark, and reap the leader."""
     if proc is not None and proc.returncode is None:
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            proc.kill()
+        kill_group(proc.pid, proc.kill)
     kill_marked(token)
     if proc is not None:
         proc.wait()

@@ -27,7 +27,7 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from .cleanup import MARK, new_token
+from .cleanup import MARK, kill_group, new_token
 from .process import OUTPUT_FILE, ProcessRun, bounded_timeout, cpu_limit, read_capped
 
 SWITCH = "FOON2PDDL_WARM_TRANSLATOR"
@@ -65,10 +65,7 @@ class _Server:
         return json.loads(line)
 
     def close(self) -> None:
-        try:
-            os.killpg(self.proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        kill_group(self.proc.pid)
         for stream in (self.proc.stdin, self.proc.stdout):
             try:
                 stream.close()
@@ -143,10 +140,7 @@ def _run_locked(args: list[str], cwd: Path, timeout: float | None, bin_dir: Path
         _drop()
     finally:
         if not finished:  # time limit, or an interrupt while waiting: end the child, then the server's wait
-            try:
-                os.killpg(pid, signal.SIGKILL)
-            except (ProcessLookupError, PermissionError):
-                pass
+            kill_group(pid)
             _settle()
     seconds = time.perf_counter() - t0
     output, size = read_capped(cwd / OUTPUT_FILE)

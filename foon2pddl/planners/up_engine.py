@@ -13,14 +13,13 @@ from __future__ import annotations
 
 import multiprocessing
 import os
-import signal
 import tempfile
 import time
 from typing import Any
 
 from ..io.interrupts import signals_deferred
 from ..pddl.task import PlanningTask
-from .cleanup import MARK, kill_marked, new_token
+from .cleanup import MARK, kill_group, kill_marked, new_token
 from .process import bounded_timeout
 from .result import PlanResult
 
@@ -145,10 +144,7 @@ def solve(task: PlanningTask | tuple[str, str], engine: str, *, optimal: bool = 
         finally:
             with signals_deferred():
                 if proc.is_alive():
-                    try:
-                        os.killpg(proc.pid, signal.SIGKILL)
-                    except (ProcessLookupError, PermissionError):
-                        proc.kill()
+                    kill_group(proc.pid, proc.kill)
                 kill_marked(token)
                 if proc.pid is not None:
                     proc.join()
