@@ -1169,3 +1169,17 @@ def test_a_constraint_that_matches_nothing_is_warned_by_plan_and_compile_too(tmp
     assert "warning: no unit of the network mentions 'avocadoo' (`without avocadoo`, from <options>)" in r.stderr
     kept = run(command, "--goal", "guacamole", "--without-motion", "whisk", *out)
     assert "warning:" not in kept.stderr, kept.stderr
+
+
+def test_a_goal_file_in_the_goal_syntax_names_the_options_that_take_it(tmp_path):
+    """Issue 24's pass at stop 61: `plan --goal-file g.txt` with `guacamole` in it (one goal a line, as `--goals` and
+    kitchens take them) said only `g.txt:1: error: expected an 'O' or 'S' line, '//' or a '#' comment`; a JSON list
+    there names the options that take it since stop 56, and so does a list in the goal syntax now."""
+    goals = write(tmp_path / "g.txt", "# my goal\nguacamole\n")
+    r = run("plan", "--goal-file", goals)
+    assert r.exit_code == 2 and "Traceback" not in r.output, r.output
+    assert f"{goals}:2: error: 1 goal in the goal syntax, one a line, not the one goal node in FOON O/S lines a goal " \
+           "file holds: give it with `--goals`" in r.stderr, r.stderr
+    assert run("plan", "--goals", goals).exit_code == 0
+    broken = write(tmp_path / "b.txt", "O\tguacamole\t1\nX\tin\t[bowl]\n")  # FOON lines with a mistake: the parser's
+    assert "expected an 'O' or 'S' line" in run("plan", "--goal-file", broken).stderr

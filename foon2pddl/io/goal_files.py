@@ -107,18 +107,36 @@ def parse_goal_spec(text: str) -> GoalSpec:
 def read_goal_file(path: str | Path) -> GoalSpec:
     """A goal file: exactly one object node written as FOON O/S lines. A JSON list (the public `goal_nodes.json`,
     or `kitchen.json`: the same form) is refused as what it is, a list for `--kitchen` or `--goals` (stop 56's
-    newcomer pass: it said only `expected an 'O' or 'S' line`)."""
+    newcomer pass: it said only `expected an 'O' or 'S' line`), and so are goals in the goal syntax, one a line."""
     p = Path(path)
     text = read_text(p)
     try:
         nodes = parse_objects(text, str(p))
     except FoonSyntaxError:
         _refuse_json_list(text, str(p))
+        _refuse_goal_lines(text, str(p))
         raise
     if len(nodes) != 1:
         raise FoonSyntaxError(str(p), nodes[1][1] if len(nodes) > 1 else 0,
                               f"goal file must hold exactly one object node, found {len(nodes)}")
     return spec_of_node(nodes[0][0])
+
+
+def _refuse_goal_lines(text: str, path: str) -> None:
+    """Raise a located error naming `--goals` when every line of `text` that is no comment is a goal in the goal
+    syntax (`guacamole`, `onion: chopped`: one goal a line, as `--goals` reads them); else return. O(length)."""
+    lines = [(i, s) for i, raw in enumerate(text.split("\n"), start=1) if (s := raw.strip()) and not s.startswith("#")]
+    if any("\t" in line or re.match(r"(?:[OSM]\s|//)", line) for _, line in lines):  # FOON lines with a mistake:
+        return  # the parser's error says what is wrong there
+    try:
+        for _, line in lines:
+            parse_goal_spec(line)
+    except ValueError:
+        return
+    if lines:
+        raise FoonSyntaxError(path, lines[0][0], f"{count(len(lines), 'goal')} in the goal syntax, one a line, not the "
+                                                 "one goal node in FOON O/S lines a goal file holds",
+                                                 belongs=("goals",))
 
 
 def _refuse_json_list(text: str, path: str) -> None:
