@@ -111,7 +111,9 @@ def test_instances_help_names_every_encoding_it_counts_for():
     plan --help said "instances encoding: N objects of LABEL" and the refusal "--encoding instances" only."""
     assert "instances and relational encodings: N objects of LABEL" in " ".join(run("plan", "--help").output.split())
     counted = run("plan", "--goal", "guacamole", "--encoding", "relational", "--instances", "cutting board=2")
-    assert counted.exit_code == 0 and "2 x cutting board (empty): 2 given, where FOON's unfolded plan takes" in counted.stderr
+    assert counted.exit_code == 0
+    assert ("2 x cutting board (empty): 2 given by `cutting board=2` (the instances stated per label), where FOON's "
+            "unfolded plan takes") in counted.stderr
 
 
 
@@ -121,8 +123,46 @@ def test_a_count_restoring_units_set_is_not_called_stated():
     r = run("plan", "--goal", "guacamole", "--restore")
     assert r.exit_code == 0, r.stderr
     note = next(line for line in r.stderr.splitlines() if line.startswith("note: objects: 3 x cutting board (empty)"))
-    assert "3 given, where FOON's unfolded plan takes 5 (a stated count, restoring units' peak" in note, note
+    assert "3 set by the restoring units' peak, where FOON's unfolded plan takes 5" in note, note
     assert "the count stated" not in note
+
+
+def test_the_objects_note_names_who_gave_a_count(tmp_path):
+    """newcomer60: the note on a count FOON's plan does not take said `k given, where FOON's unfolded plan takes n
+    (a stated count, restoring units' peak, or the relational encoding's own counting)`: three sources, never the
+    one that applies. It names it: the kitchen file's line, the scene, `--instances` (above), the restoring units
+    (above), or the encoding itself, in text and in `plan --format json`'s notes."""
+    from foon2pddl.io.inputs import load_goal, load_kitchen, load_network
+    from foon2pddl.pddl.compile import compile_goal
+
+    example = ROOT / "foon2pddl" / "data" / "example_kitchen.txt"
+    lines = []
+    for node in load_kitchen(example, load_network([]), 3).sorted_nodes():
+        line = node.label + (": " + ", ".join(s.describe() for s in node.states) if node.states else "")
+        lines.append(("2 x " if node.label == "cutting board" else "") + line)
+    kitchen = tmp_path / "k.txt"
+    kitchen.write_text("\n".join(lines) + "\n")
+    at = 1 + next(i for i, line in enumerate(lines) if line.startswith("2 x "))
+    r = run("plan", "--goal", "guacamole", "--kitchen", kitchen)
+    assert r.exit_code == 0, r.stderr
+    said = f"note: objects: 2 x cutting board (empty): 2 given by the kitchen file (k.txt:{at}), where FOON's"
+    assert said in r.stderr, r.stderr
+    notes = json.loads(run("plan", "--goal", "guacamole", "--kitchen", kitchen, "--format", "json").stdout)[
+        "validation"]["notes"]
+    assert any(n.startswith(said.removeprefix("note: ")) for n in notes), notes
+    # a scene's three bowls, where the whipped cream's plan takes one
+    objects = json.loads((ROOT / "tests" / "data" / "scene" / "whipped_cream_scene.json").read_text())["objects"]
+    objects += [{"id": f"bowl_{k}", "label": "bowl", "states": ["empty"], "on": "counter_1"} for k in (2, 3)]
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"objects": objects}))
+    net = load_network([])
+    foon = net.at(3)
+    goal = load_goal("whipped cream: whipped, in [bowl]", None, foon)
+    compiled = compile_goal(foon, load_kitchen(scene, net, 3), goal, "instances")
+    said = compiled.task.comments  # the problem file's header
+    assert any(n.startswith("objects: 3 x bowl (empty): 3 given by the scene, where FOON's unfolded plan takes 1")
+               for n in said), said
+    assert not any("a stated count" in n for n in said)
 
 PHYSICAL_OPTIONS = (("--restore",), ("--instances", "bowl=2"), ("--instances", "bowl=x"), ("--category-types",))
 

@@ -372,10 +372,11 @@ def test_the_task_says_why_it_has_several_objects_of_a_label():
     units = tuple(range(len(foon.units)))
     goal = load_goal("guacamole", None, foon)
     counts = derive_counts(foon, units, kitchen.nodes, goal.candidates, overrides={"bowl": 3})
-    reasons = count_reasons(foon, counts, kitchen.nodes)
+    reasons = count_reasons(foon, counts, kitchen.nodes, instances={"bowl": 3})
     many = [(n, k) for n, k in counts.at_node if k > 1]
     assert len(reasons) == len(many)
-    assert any(r.startswith("3 x bowl (empty): 3 given, where FOON's unfolded plan takes") for r in reasons)
+    assert any(r.startswith("3 x bowl (empty): 3 given by `bowl=3` (the instances stated per label), where FOON's "
+                            "unfolded plan takes") for r in reasons)
 
 
 def test_an_object_the_kitchen_completion_starts_in_a_made_state_does_not_let_a_plan_skip_the_unit():

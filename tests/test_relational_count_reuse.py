@@ -76,11 +76,11 @@ def test_the_count_note_says_how_many_takings_an_object_left_there_again_serves(
     assert count_reasons(Foon(units), counts, KITCHEN) == (
         "2 x measuring cup (empty): FOON's plan, unfolded, takes one out of that state each time it fires scoop x3; "
         "1 of those takings use one a unit put back in it",)
-    # without the reuse, fewer objects than takings can only be a stated count
+    # without the reuse and with no count given, fewer objects than takings are the encoding's own count
     stated = InstanceCounts(((EMPTY, 2),), (), ((1, 3),))
     assert count_reasons(Foon(units), stated, KITCHEN) == (
-        "2 x measuring cup (empty): 2 given, where FOON's unfolded plan takes 3 (a stated count, restoring units' "
-        "peak, or the relational encoding's own counting)",)
+        "2 x measuring cup (empty): 2 counted by the relational encoding itself (no count was given), where FOON's "
+        "unfolded plan takes 3",)
 
 
 def test_the_count_note_tells_a_foon_exp_copy_from_its_original():

@@ -43,6 +43,9 @@ class Kitchen:
     scene: tuple[SceneObject, ...] = ()
     #: the line of its file that first lists each node (a file's kitchen; a scene's are its objects'): for messages
     lines: tuple[tuple[ObjectNode, int], ...] = field(default=(), compare=False, repr=False)
+    #: the nodes among `counts` whose count restoring units set (`pddl.restore.with_restore`), not the kitchen's own:
+    #: for the notes that say who gave a count
+    restored: frozenset[ObjectNode] = field(default=frozenset(), compare=False, repr=False)
 
     def __contains__(self, node: object) -> bool:
         return node in self.nodes

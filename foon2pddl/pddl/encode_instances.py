@@ -209,7 +209,8 @@ def encode_instances(
         units=f.units,
         labels=table.labels,
         comments=header("instances", inp, options, len(units)) + count_lines(counts)
-        + tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen))
+        + tuple(f"objects: {w}" for w in count_reasons(f, counts, inp.kitchen, given=kitchen.project(level),
+                                                        instances=dict(options.instances), encoding="instances"))
         + (("lanes: each instance changes state only as in the unfolded plan",) if lane is not None else ()),
         instances=tuple(instances),
     ))

@@ -115,7 +115,8 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
         return counting[done][1]
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
     units, plans, drops, counts = rd.units, rd.plans, rd.drops, rd.counts
-    reasons = count_reasons(f, rd.explained or counts, ob.kitchen, rd.roles_of, through=rd.explained is not None)
+    reasons = count_reasons(f, rd.explained or counts, ob.kitchen, rd.roles_of, through=rd.explained is not None,
+                            given=kitchen.project(level), instances=dict(options.instances))
     why = tuple(f"objects: {w}" for w in (*reasons, *((ob.narrowed,) if ob.narrowed else ())))
     # labels of objects held where their node names no place (a scene's onion in the fridge): moving one
     # leaves whatever holds it

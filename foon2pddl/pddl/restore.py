@@ -155,4 +155,6 @@ def with_restore(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3) -> tu
     counts = derive_counts(inp.foon, tuple(range(len(foon.units))), inp.kitchen, inp.candidates,
                            stated=kitchen.project(level).stated_counts())
     mine = restore_counts(inp.foon, counts, ready)  # the kitchen as given: its ready states are `ready`'s
-    return augmented, replace(kitchen, counts=tuple(sorted({**mine, **dict(kitchen.counts)}.items())))
+    own = dict(kitchen.counts)
+    return augmented, replace(kitchen, counts=tuple(sorted({**mine, **own}.items())),
+                              restored=frozenset(n for n in mine if n not in own))
