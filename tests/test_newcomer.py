@@ -1183,3 +1183,23 @@ def test_a_goal_file_in_the_goal_syntax_names_the_options_that_take_it(tmp_path)
     assert run("plan", "--goals", goals).exit_code == 0
     broken = write(tmp_path / "b.txt", "O\tguacamole\t1\nX\tin\t[bowl]\n")  # FOON lines with a mistake: the parser's
     assert "expected an 'O' or 'S' line" in run("plan", "--goal-file", broken).stderr
+
+
+def test_a_scene_too_small_for_instances_names_the_relational_encoding(tmp_path):
+    """newcomer60: `plan --kitchen my_scene.json --goal guacamole --encoding instances` (a scene with one cutting
+    board) said the scene has too few objects (step 5 needs one more cutting board), true of `instances`, which
+    frees no holder; the default `relational` plans the same scene with its one board (the avocado is scooped off
+    it first). The reason names that encoding, and the hint is true here."""
+    objects = [{"id": n.label.replace(" ", "_") + "_1", "label": n.label,
+                "states": [s.describe() for s in n.states]}
+               for n in read_kitchen(example_path("example_kitchen.txt")).sorted_nodes()
+               if not any(s.related for s in n.states)]  # the carton's and the bottle's contents left out
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"objects": objects}))
+    short = run("plan", "--kitchen", scene, "--goal", "guacamole", "--encoding", "instances")
+    assert short.exit_code == 1, short.stderr
+    reason = next(line for line in short.stderr.splitlines() if line.startswith("reason: "))
+    assert "the scene has too few objects" in reason and "needs one more cutting board" in reason, reason
+    assert "`--encoding relational`" in reason, reason
+    relational = run("plan", "--kitchen", scene, "--goal", "guacamole", "--encoding", "relational")
+    assert relational.exit_code == 0, relational.stderr

@@ -61,7 +61,7 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
     if kitchen.scene:
         short = short_step(foon, kitchen, goal)
         if short:
-            return f"FOON's semantics makes the goal, but the scene has too few objects: {short}", True
+            return f"FOON's semantics makes the goal, but the scene has too few objects: {short}" + _freed(encoding), True
     if encoding == "relational" and (kitchen.stated_counts() or instances):
         short = short_step(foon, kitchen, goal, dict(instances))
         if short:
@@ -75,6 +75,13 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
             return _too_few("; ".join(s.describe() for s in short)), True
     return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
            "encoding (see its message)" + _try_tree(encoding), True
+
+
+def _freed(encoding: str) -> str:
+    """What to try when a scene is short under `instances`, which frees no holder: `relational` takes an object off
+    a holder and the holder serves the next step (the guacamole scene with one cutting board plans there)."""
+    return ("; under `--encoding relational` (the default) a holder serves again once its object moves off it, "
+            "so the scene's objects may do there") if encoding == "instances" else ""
 
 
 def _too_few(where: str) -> str:
