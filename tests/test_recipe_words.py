@@ -64,3 +64,23 @@ def test_a_place_that_holds_a_place_is_said_as_a_place_outward():
         ", on the baking tray (in [oven]), in the oven (contains {baking tray}, on, preheated)"), bake
     fries = _steps("0035-oven-baked_sweet_potato_fries.txt")
     assert any(s.endswith("in the baking tray (in [oven]), in the oven (on, with [baking tray])") for s in fries), fries
+
+
+def test_an_input_the_step_works_into_what_it_changes_is_used_up_not_a_tool(tmp_path):
+    """newcomer60: a spread whose butter (softened) is an input and no output, the toast gaining `buttered`, read
+    `spread toast, with the butter (softened), knife, on the plate`: the butter as a tool. An input no output keeps,
+    whose label begins a state the step's outputs gain, is used up into what changes (0049's spread at
+    0049-turkey_sandwich.txt:25, `bread (buttered {butter})`, read the same way). A tool the unit leaves out of its
+    outputs gains nothing in its name, so it stays a tool (0002's chop of the rosemary)."""
+    mine = tmp_path / "toast.txt"
+    mine.write_text("//\nO\tbutter\t1\nS\tsoftened\nO\tknife\t0\nO\ttoast\t1\nS\ton\t[plate]\nO\tplate\t0\n"
+                    "M\tspread\t<Assumed>\t<Assumed>\nO\ttoast\t1\nS\ton\t[plate]\nS\tbuttered\nO\tknife\t0\n"
+                    "S\tdirty\nO\tplate\t0\n//\n")
+    (unit,) = parse_file(mine).foon.units
+    assert recipe_text(unit) == "spread toast, using up the butter (softened), with the knife, on the plate"
+    shared = _unit("0049-turkey_sandwich.txt", 25)
+    assert recipe_text(shared) == ("spread bread (sliced), using up the butter (in [bowl]), with the knife (clean), "
+                                   "on the cutting board, in the bowl (contains {butter})")
+    chop = next(u for u in parse_file(SUBGRAPHS / "0002-bacon_macaroni_and_cheese.txt").foon.units
+                if u.motion.label == "chop" and any(i.label == "rosemary" for i in u.inputs))
+    assert recipe_text(chop).endswith(", with the knife (clean)"), recipe_text(chop)

@@ -336,7 +336,8 @@ def recipe_text(unit: FunctionalUnit, on: frozenset[str] = frozenset()) -> str:
     holders = {i.label for i, _, _ in moves} | said
     rest = [i for i in unit.inputs if i.label not in said and not (_holders(i, named) & holders)]
     places = [i for i in rest if any(i.label in _holders(n, named) for n in unit.inputs)]
-    tools = [i for i in rest if i not in places]
+    used = [i for i in rest if i not in places and _worked_in(unit, i, new)]
+    tools = [i for i in rest if i not in places and i not in used]
     if not moves and not between:  # a place said once: `cut lime (whole), with the knife, on the cutting board`
         at = {p.label for p in places}
         text = f"{unit.motion.label} " + ", ".join(_unplaced(i) if (_place(i, named) or ("", ""))[1] in at
@@ -345,6 +346,8 @@ def recipe_text(unit: FunctionalUnit, on: frozenset[str] = frozenset()) -> str:
             word = next((_INTO.get(p[0], p[0]) for o in new.values()
                          if o.label not in by_label and (p := _place(o, named)) and p[1] == into.label), "into")
             text += f" {word} the {into.describe()}"
+    if used:  # `spread toast, using up the butter (softened), with the knife`: the butter is no tool
+        text += ", using up the " + ", ".join(i.describe() for i in used)
     if tools:
         text += ", with the " + ", ".join(t.describe() for t in tools)
     for word, group in _by_word(_ordered_places(places, changed or [i for i, _, _ in moves], named), unit, named):
@@ -354,6 +357,16 @@ def recipe_text(unit: FunctionalUnit, on: frozenset[str] = frozenset()) -> str:
         text += ", making " + ", ".join(_unplaced(o) + (f" {p[0]} the {p[1]}" if (p := _place(o, named)) else "")
                                         for o in made)
     return text
+
+
+def _worked_in(unit: FunctionalUnit, node: ObjectNode, new: dict[str, ObjectNode]) -> bool:
+    """Whether the step uses `node` up into what it changes: no output keeps its label, and a state an output
+    gains begins with it (`butter (softened)` spread on `toast (buttered)`). A tool FOON's unit leaves out of
+    its outputs (the public data often does: `knife (clean)`) names no new state, so it stays a tool."""
+    if any(o.label == node.label for o in unit.outputs):
+        return False
+    gained = {s.label for o in new.values() for s in o.states} - {s.label for i in unit.inputs for s in i.states}
+    return any(word.startswith(node.label) for state in gained for word in (state, *state.split()))
 
 
 def _by_word(places: list[ObjectNode], unit: FunctionalUnit, named: Aliases) -> list[tuple[str, list[ObjectNode]]]:
