@@ -21,13 +21,13 @@ from ..model.kitchen import Kitchen
 from .constraints import add_must_use, constrained_inputs, must_use_cone
 from .encode_compat import encode_compat
 from .encode_instances import encode_instances
-from .encode_lifted import compile_lifted
 from .encode_ocp import encode_ocp
 from .encode_relational import encode_relational
 from .encode_state import encode_state
 from .encode_tree import encode_tree
 from .encoding import EncodeOptions
 from .instance_replay import INSTANCE_VIEW, instance_trace
+from .lifted_plans import compile_lifted
 from .registry import Compiled, Encoding
 from .relational_replay import RELATIONAL_VIEW, relational_trace
 from .task import PlanningTask, settle_goal

@@ -33,7 +33,7 @@ concrete and only its *parameters* are generalized:
 
 Soundness: an atom determines its node (`node_of`), the initial atoms are those
 of kitchen nodes and an action adds the atoms of the output nodes of the
-grounded unit, so a valid plan maps back (`ground_unit`) to concrete units
+grounded unit, so a valid plan maps back (`lifted_plans.ground_unit`) to concrete units
 whose inputs are each in the kitchen or made before: a task tree that
 `tasktree.validate` accepts at the concrete level. The encoding is incomplete
 where a grounded action orders two same-category objects of one node
@@ -42,22 +42,21 @@ differently from the action that needs the node.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from ..analysis.reachability import reachable
 from ..errors import UsageError
-from ..generalize.categories import CategoryIndex, load_index
+from ..generalize.categories import CategoryIndex
 from ..generalize.grounding import ground, input_labels
 from ..generalize.relevance import Ordering, relevant, shared_grounding
-from ..generalize.substitute import rename_derived, substitute_node, substitute_unit, unit_labels
+from ..generalize.substitute import substitute_unit, unit_labels
 from ..model.constraints import node_labels
 from ..model.dedupe import dedupe_units
 from ..model.foon import Foon, FunctionalUnit, ObjectNode
 from ..model.goal import Goal
 from ..model.kitchen import Kitchen
 from ..model.levels import project, project_node
-from ..model.tasktree import TaskTree, validate
 from .arg_types import narrow_arguments
 from .costs import unit_cost
 from .encoding import (
@@ -72,11 +71,9 @@ from .encoding import (
 )
 from .lifted_atoms import Family, Shape, family_label, node_atom_labels, representations, shape_label
 from .names import NameTable
-from .registry import Compiled, PlanDecodeError
 from .task import Action, Atom, PlanningTask, Predicate
 
-__all__ = ["POLICIES", "ROOT_TYPE", "LiftedTask", "LiftedUnit", "compile_lifted", "encode_lifted", "generalizer",
-           "ground_unit", "lift", "lift_unit"]
+__all__ = ["POLICIES", "ROOT_TYPE", "LiftedTask", "LiftedUnit", "encode_lifted", "generalizer", "lift", "lift_unit"]
 
 #: The root of the category types: objects in no category have it, predicates take it (some PDDL
 #: parsers reject `object` written out as a parameter type).
@@ -333,59 +330,3 @@ def encode_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, index: CategoryIndex
     return LiftedTask(narrow_arguments(task), lifted, level, {n: s for s, n in names.families.items()},
                       {name: label for label, (name, _) in declared.items()})
 
-
-def ground_unit(lt: LiftedTask, action_index: int, args: tuple[str, ...]) -> FunctionalUnit:
-    """The concrete unit of lifted unit `action_index` with its parameters bound to the objects `args` (PDDL names).
-
-    Raises PlanDecodeError when `args` do not fit the action (count, unknown object).
-    """
-    lu = lt.lifted[action_index]
-    if len(args) != len(lu.params):
-        raise PlanDecodeError(f"action of unit {action_index} takes {len(lu.params)} arguments, got {len(args)}")
-    unknown = [a for a in args if a not in lt.objects]
-    if unknown:
-        raise PlanDecodeError(f"unknown object {unknown[0]!r}")
-    binding = {label: lt.objects[a] for (label, _), a in zip(lu.params, args, strict=True)}
-    changed = {k: v for k, v in binding.items() if k != v}
-    if not changed:
-        return lu.unit
-    note = "gen: " + ", ".join(f"{k} -> {v}" for k, v in sorted(changed.items()))
-    return substitute_unit(lu.unit, binding, note=note)
-
-
-def plan_bindings(lt: LiftedTask, steps: Sequence[str]) -> dict[str, str]:
-    """Recipe object -> kitchen object, for every parameter a plan bound to another object."""
-    out: dict[str, str] = {}
-    for step in steps:
-        name, *args = step.split()
-        action = lt.task.action_for(name)
-        if action is None or action.unit is None or len(args) != len(lt.lifted[action.unit].params):
-            continue
-        for (label, _), a in zip(lt.lifted[action.unit].params, args, strict=True):
-            if lt.objects.get(a, label) != label:
-                out.setdefault(label, lt.objects[a])
-    return out
-
-
-def rename_made(lt: LiftedTask, tree: TaskTree, steps: Sequence[str], kitchen_nodes: frozenset[ObjectNode]) -> TaskTree:
-    """The tree with what the plan made from a substituted object renamed with it, as FOON-EXP names it.
-
-    `substitute.rename_derived`: a lime squeezed where the recipe squeezed a lemon gives `lime juice`,
-    in every unit and in the goal node; when the renamed tree would not validate (a new name colliding
-    with another object), the recipe's names are kept.
-    """
-    fixed = frozenset().union(*(node_labels(n) for n in kitchen_nodes)) - {""}
-    renames = rename_derived(tree.units, plan_bindings(lt, steps), fixed)
-    if not renames:
-        return tree
-    renamed = TaskTree(tuple(substitute_unit(u, renames) for u in tree.units), substitute_node(tree.goal, renames),
-                       tree.level)
-    return renamed if validate(renamed, kitchen_nodes).ok else tree
-
-
-def compile_lifted(foon: Foon, kitchen: Kitchen, goal: Goal, level: int, options: EncodeOptions) -> Compiled:
-    """The registered `gen-lifted` encoder: `encode_lifted` with the options' category index (default: shipped)."""
-    index = options.category_index if options.category_index is not None else load_index()
-    lt = encode_lifted(foon, kitchen, goal, index, level, prune=options.prune, policy=options.policy, options=options)
-    return Compiled(lt.task, True, lambda unit, args: ground_unit(lt, unit, args),
-                    lambda tree, steps, kitchen_nodes: rename_made(lt, tree, steps, kitchen_nodes))
