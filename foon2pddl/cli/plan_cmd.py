@@ -230,7 +230,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
     searching = (nullcontext() if status == "solved"
                  else slow_step(f"finding why there is no plan for {target.describe()!r}"))
     with searching:
-        reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts)
+        reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts,
+                                       net.foon if NETWORKS[network].as_read else None)
     hinted = explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes
     if fmt == "json":
         hints = hint_words(hint_lines(net, kit, single_goal(goal), goal_file, level)) if hinted else []

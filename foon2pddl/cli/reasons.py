@@ -35,14 +35,15 @@ def explained(status, encoding: str) -> bool:
 
 
 def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
-                   instances: tuple[tuple[str, int], ...] = ()) -> tuple[str, bool]:
+                   instances: tuple[tuple[str, int], ...] = (), full=None) -> tuple[str, bool]:
     """(FOON's account of a failed plan, whether FOON's semantics makes the goal from `kitchen`).
 
     Under constraints: the native constrained retrieval's words. Otherwise the missing
     kitchen additions when the fixpoint does not reach the goal; when it does, what in
     the encoding rules it out (a scene's objects, or under `relational` the stated counts, the step of
     FOON's task tree that runs short: `short_step`; under `instances`, the counts stated below what the
-    unfolded plan uses), else that the planner found no plan.
+    unfolded plan uses; under `relational` at level 1 or 2, with `full`, the network at level 3, the readings
+    the level's missing lists change: `level_reason`), else that the planner found no plan.
     """
     from ..analysis.reachability import reachable
     from ..retrieval.explain import explain_unreachable
@@ -73,6 +74,10 @@ def why_unsolvable(foon, kitchen, goal, cons, encoding: str = "tree",
                                  overrides=dict(instances))
         if short:
             return _too_few("; ".join(s.describe() for s in short)), True
+    if encoding == "relational" and full is not None and foon.level < 3:
+        said = level_reason(foon, kitchen, goal, full)
+        if said:
+            return said, True
     return f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the {encoding} " \
            "encoding (see its message)" + _try_tree(encoding), True
 
@@ -82,6 +87,30 @@ def _freed(encoding: str) -> str:
     a holder and the holder serves the next step (the guacamole scene with one cutting board plans there)."""
     return ("; under `--encoding relational` (the default) a holder serves again once its object moves off it, "
             "so the scene's objects may do there") if encoding == "instances" else ""
+
+
+def level_reason(foon, kitchen, goal, full) -> str | None:
+    """Why the `relational` planner finds no plan at level 1 or 2 (`foon`; `full`: the network at level 3) where
+    FOON's semantics makes the goal: the level leaves out the ingredient lists from which the encoding reads which
+    container holds what and whether a pour leaves some behind, and the units of FOON's task tree it reads otherwise
+    (`pddl.level_readings`: the milk poured whole out of the measuring cup that level 3 says keeps some). None when
+    there is no tree or no unit of it reads otherwise."""
+    from ..pddl.level_readings import lost_readings
+    from ..retrieval.api import retrieve
+
+    tree = retrieve(foon, kitchen, goal).tree
+    if tree is None:
+        return None
+    by_place = {(s.path, s.line): u for u in full.units for s in u.sources}
+    units = dict.fromkeys(by_place[s.path, s.line] for u in tree.units for s in u.sources[:1]
+                          if (s.path, s.line) in by_place)
+    lost = lost_readings(units, foon.level)
+    if not lost:
+        return None
+    return (f"FOON's semantics makes the goal from this kitchen; the planner found no plan for the relational "
+            f"encoding at level {foon.level}, whose nodes leave out the ingredient lists from which it reads which "
+            "container holds what and whether a pour leaves some behind; FOON's task tree is read otherwise than at "
+            "level 3: " + "; ".join(lost) + "; `--level 3` reads the lists" + _try_tree("relational"))
 
 
 def _too_few(where: str) -> str:
@@ -128,7 +157,7 @@ def foreign_reason(status, encoding: str) -> str | None:
 
 
 def failure_reason(status, encoding: str, task, foon, kitchen, goal, cons,
-                   instances: tuple[tuple[str, int], ...] = ()) -> tuple[str | None, bool]:
+                   instances: tuple[tuple[str, int], ...] = (), full=None) -> tuple[str | None, bool]:
     """(the `reason:` of a planner's answer without a plan, whether FOON's semantics makes the goal): one decision
     for a single `plan` and each row of a batch. FOON's reason (`why_unsolvable`) where `explained`; for a planner
     error, what the encoding needs of a planner; for `state`/`ocp`, `foreign_reason` where FOON's semantics makes
@@ -136,12 +165,12 @@ def failure_reason(status, encoding: str, task, foon, kitchen, goal, cons,
     from ..status import PlanStatus
 
     if explained(status, encoding):
-        return why_unsolvable(foon, kitchen, goal, cons, encoding, instances)
+        return why_unsolvable(foon, kitchen, goal, cons, encoding, instances, full)
     if status == PlanStatus.ERROR:
         return unsupported_reason(task), True
     if (foreign := foreign_reason(status, encoding)) is None:
         return None, True
-    fails, makes = why_unsolvable(foon, kitchen, goal, cons, encoding, instances)
+    fails, makes = why_unsolvable(foon, kitchen, goal, cons, encoding, instances, full)
     return (foreign if makes else fails), makes
 
 

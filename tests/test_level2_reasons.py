@@ -1,0 +1,30 @@
+"""A relational plan with none at level 1 or 2 says what the level reads otherwise (issue 24: reasons that name the
+cause; issue 21: level 2's relational plans).
+
+FOON's level 2 drops ingredient lists, from which the relational encoding reads which container holds what and
+whether a pour leaves some behind; a dish level 3 plans then said only `translator: no relaxed solution`.
+"""
+
+from __future__ import annotations
+
+from click.testing import CliRunner
+from conftest import SUBGRAPHS
+
+from foon2pddl.cli import main
+
+
+def test_a_level_2_dish_without_a_plan_says_what_level_2_reads_otherwise():
+    """`0004-pancake_batter.txt` plans at level 3; at level 2 the relational planner finds none, and the reason was
+    only `the planner found no plan ... (see its message)` under `translator: no relaxed solution`. The measuring
+    cup FOON says keeps milk after the pour at `:46` (a portion is poured) says nothing at level 2 (the milk leaves it
+    whole): the reason names the level, the lists it leaves out, and the units it reads otherwise."""
+    path = str(SUBGRAPHS / "0004-pancake_batter.txt")
+    result = CliRunner().invoke(main, ["plan", path, "--level", "2", "--goal", "pancake batter"])
+    assert result.exit_code == 1, result.output
+    reason = next(line for line in result.stderr.splitlines() if line.startswith("reason: "))
+    assert "relational encoding at level 2, whose nodes leave out the ingredient lists" in reason
+    assert ("0004-pancake_batter.txt:46: milk leaves a portion out of the unit's measuring cup into the unit's bowl "
+            "at level 3, moves whole out of the unit's measuring cup into the unit's bowl at level 2") in reason
+    assert "`--level 3` reads the lists" in reason
+    three = CliRunner().invoke(main, ["plan", path, "--goal", "pancake batter"])
+    assert three.exit_code == 0 and "solved" in three.stderr  # the hint is true: level 3 plans it
