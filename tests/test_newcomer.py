@@ -1203,3 +1203,21 @@ def test_a_scene_too_small_for_instances_names_the_relational_encoding(tmp_path)
     assert "`--encoding relational`" in reason, reason
     relational = run("plan", "--kitchen", scene, "--goal", "guacamole", "--encoding", "relational")
     assert relational.exit_code == 0, relational.stderr
+
+
+def test_a_weighted_batch_in_csv_keeps_each_goals_success_probability():
+    """Issue 24's pass at stop 61: `retrieve --goal guacamole --goal lemonade --method weighted --rates motion.txt
+    --format jsonl` gives each row its `probability` (3.669e-09 for the guacamole); `--format csv`, the same table,
+    had no such column, so a weighted batch in CSV lost what the method maximizes (docs/retrieval.md)."""
+    import csv
+    import io
+
+    from conftest import SEARCH_INPUTS
+
+    args = ("retrieve", "--goal", "guacamole", "--goal", "lemonade", "--method", "weighted", "--rates",
+            SEARCH_INPUTS / "motion.txt")
+    rows = [json.loads(line) for line in run(*args, "--format", "jsonl").stdout.splitlines()]
+    table = list(csv.DictReader(io.StringIO(run(*args, "--format", "csv").stdout)))
+    assert [r["goal"] for r in table] == ["guacamole", "lemonade"], table
+    assert float(table[0]["probability"]) == pytest.approx(rows[0]["probability"]) and rows[0]["probability"] > 0
+    assert table[1]["probability"] == "" and rows[1]["probability"] is None

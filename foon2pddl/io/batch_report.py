@@ -12,7 +12,7 @@ from collections.abc import Iterable, Sequence
 from ..model.words import count
 
 TABLE_FORMATS = ("text", "csv", "jsonl")
-CSV_COLUMNS = ("goal", "status", "units", "inferred", "seconds", "reason", "source", "file")
+CSV_COLUMNS = ("goal", "status", "units", "inferred", "seconds", "reason", "probability", "source", "file")
 
 #: Longest file name stem derived from a goal.
 STEM_MAX = 80
@@ -30,12 +30,13 @@ def format_table(rows: Sequence[dict], fmt: str, total: bool = True) -> str:
     `text` ends with the `summary` line unless `total` is false."""
     if fmt == "jsonl":
         return "".join(json.dumps(r, ensure_ascii=False) + "\n" for r in rows)
-    if fmt == "csv":
+    if fmt == "csv":  # the jsonl keys in their order; `probability` where the rows carry it (retrieve's)
+        columns = [c for c in CSV_COLUMNS if c != "probability" or any(c in r for r in rows)]
         out = io.StringIO()
         w = csv.writer(out, lineterminator="\n")
-        w.writerow(CSV_COLUMNS)
+        w.writerow(columns)
         for r in rows:
-            w.writerow([_cell(r.get(c)) for c in CSV_COLUMNS])
+            w.writerow([_cell(r.get(c)) for c in columns])
         return out.getvalue()
     if fmt != "text":
         raise ValueError(f"unknown table format {fmt!r} (expected one of {', '.join(TABLE_FORMATS)})")
