@@ -142,10 +142,11 @@ def quiet_places(nodes: Iterable[ObjectNode], units: Iterable[FunctionalUnit],
                                    if c not in names and not any(head_of(c, x) for x in names)}
 
 
-def listings(nodes: Iterable[ObjectNode]) -> frozenset[tuple[str, str]]:
-    """(holder label, content label) for every label one of `nodes` lists (`places.listed`): the holders a task
-    says hold that label."""
-    return frozenset((x.label, c) for x in nodes for c in listed(x))
+def listings(nodes: Iterable[ObjectNode], alias: Mapping[str, str] | None = None) -> frozenset[tuple[str, str]]:
+    """(holder label, content label) for every label one of `nodes` lists (`places.listed`), a listed name read
+    through the task's `alias` (`holder_words.task_aliases`): the holders a task says hold that label."""
+    alias = alias or {}
+    return frozenset((x.label, alias.get(c, c)) for x in nodes for c in listed(x))
 
 
 def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str],
@@ -168,13 +169,16 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
               holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset(),
               sole: frozenset[ObjectNode] = frozenset(),
-              lists: frozenset[tuple[str, str]] | None = None) -> UnitPlan:
+              lists: frozenset[tuple[str, str]] | None = None, names: Mapping[str, str] | None = None) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holder_flows.gained`; module doc), whose nodes have `labels` and place
     objects in or on objects of the labels `holding`, fill holders by the names `called` (`called_fills`); `sole`;
     `lists`: (holder label, content label) for every label a node of the task lists (`listings`; None: not known,
-    every holder the unit does not name may keep a portion)."""
+    every holder the unit does not name may keep a portion); `names`: the task's aliases
+    (`holder_words.task_aliases`), through which a place's holder is read against `lists` (`pan`, the cooking pan),
+    as the count reads a late emptying (`late_emptied`)."""
+    names = names or {}
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
     slots: list[Slot] = []
@@ -211,7 +215,7 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
                 # whichever container holds it is emptied of it (it ends in no place; it holds objects a portion
                 # would leave behind: the buttered bread leaves the plate whole, the butter in it with it)
                 late_empties = True
-            elif lists is None or r.role.before in kitchen or (src.holder, r.role.label) in lists:
+            elif lists is None or r.role.before in kitchen or (names.get(src.holder, src.holder), r.role.label) in lists:
                 fate = Fate.SPLITS  # a holder the unit does not name may be a carton: it keeps what it lists
             else:  # made by a unit of the task, in a holder no node of the task lists it in: nothing says that
                 # holder keeps some, so the whole leaves whichever holds it (the loaf off the board,

@@ -209,11 +209,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     if "task" not in memo:
         task_nodes = set(inp.kitchen) | {n for u in units for n in (*f.units[u].inputs, *f.units[u].outputs)}
         gains = frozenset().union(*(gained(f.units[u]) for u in units))
+        alias = dict(task_aliases([f.units[u] for u in units], {n.label for n in task_nodes}))
         memo["task"] = (task_nodes, gains, frozenset(n.label for n in task_nodes),
                         holding_labels(f.units[u] for u in units),
                         called_fills(f.units[u] for u in units),  # FOON-GEN's `pan`: the cookware
-                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes),
-                        dict(task_aliases([f.units[u] for u in units], {n.label for n in task_nodes})))
+                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes, alias), alias)
     task_nodes, filled, labels, holding, called, once, lists, alias = memo["task"]
     home = inp.kitchen | narrow if narrow else inp.kitchen  # the kitchen the counts are derived in
 
@@ -227,7 +227,7 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         key = ("plan", u, silent, sole, u in split)  # `split` matters only by whether it holds `u`: read once
         if key not in memo:
             memo[key] = plan_unit(f.units[u], inp.kitchen, silent, filled, labels, holding, called, sole,
-                                  None if u in split else lists)
+                                  None if u in split else lists, alias)
         return memo[key]
 
     def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> tuple:  # made once
