@@ -108,9 +108,10 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     ob = task_objects(inp, st, scene, kitchen.project(level).stated_counts(), dict(options.instances), (
         IS, IN, ON, OCCUPIED, NOT_MADE, CONSUMED, PRECEDES, GOAL_REACHED, GOAL_OBJECT, STATE_TYPE, ROOT_TYPE, LIVE),
         options.narrow, options.through, options.placed, counting, options.own)
-    # the wide objects are one per reading (`relational_objects._objects`): a count equal to one encoded before is
-    # that task (FOON's own plan unfolded or makers by holder reach counting as the wide count: `plan` compiles it once)
-    done = ("encoded", id(ob), options.costs, id(options.rates), options.categories) if not ob.narrowed else None
+    # the objects are one per count (`relational_objects.task_objects`, kept in `counting`): a count equal to one
+    # encoded before is that task (FOON's own plan unfolded or makers by holder reach counting as the wide count, the
+    # narrow count that is the one through the stitches: `plan` compiles it once)
+    done = ("encoded", id(ob), options.costs, id(options.rates), options.categories)
     if done in counting:
         return counting[done][1]
     rd, table, instances, alias, placed, nodes = ob.reading, ob.table, list(ob.instances), ob.alias, ob.placed, set(ob.nodes)
@@ -197,8 +198,7 @@ def encode_relational(foon: Foon, kitchen: Kitchen, goal: Goal, level: int = 3,
     task = tallied(task)  # a role that only checks a state other actions leave: (occupied s), kept by a tally
     out = Compiled(task, every_step=True, placed=moved, notes=tuple(notes) + why, narrowed=ob.narrowed,
                    counted=frozenset(origin.get(u, u) for u, _ in rd.counts.firings))  # the units of the plan counted from
-    if done is not None:
-        counting[done] = options, out  # the options kept: their rates' id names no other while the memo lives
+    counting[done] = options, out  # the options kept: their rates' id names no other while the memo lives
     return out
 
 

@@ -99,9 +99,20 @@ def task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], s
     the same `inp`, `st`, `stated` and `overrides` (`encode_relational`'s, across `planners.solve.plan`'s counts: the
     wide count, which each of them starts from, is derived once). Counted small, the kitchen is read from the wide
     count, and from it without a filled container taken again when that lowered it (module doc): at most two small
-    counts, the one of fewer objects kept."""
+    counts, the one of fewer objects kept. Each count is made once per `memo` (the same object each time it is asked
+    for: `encode_relational` encodes it once, by its id, while the memo lives), so a narrow count that is the one
+    through the stitches is that count (reread60's F12)."""
     memo = {} if memo is None else memo  # the units' readings and counts the countings share (`read_units`)
-    reserved = tuple(reserved)
+    key = ("task objects", narrow, through, placed, own)
+    if key not in memo:
+        memo[key] = _task_objects(inp, st, scene, stated, overrides, tuple(reserved), narrow, through, placed, memo, own)
+    return memo[key]
+
+
+def _task_objects(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], stated: Mapping[ObjectNode, int],
+                  overrides: Mapping[str, int], reserved: tuple[str, ...], narrow: bool, through: bool, placed: bool,
+                  memo: dict, own: bool) -> TaskObjects:
+    """`task_objects`, made: O(the counts it derives)."""
     wide = _objects(inp, st, scene, stated, overrides, reserved, None, memo, placed=placed and not narrow,
                     other_makers=not own)
     if not narrow or scene or (through and not st.origin):

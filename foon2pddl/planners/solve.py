@@ -272,7 +272,7 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
         out = planned(small, time_limit, short)
         for again in ({"through": True}, {"placed": True}):
             if out.result.planner == UNREACHED and (other := compiled(True, **again)).narrowed \
-                    and other.task != small.task:  # counted small through the stitches already (no own plan)
+                    and other.task is not small.task:  # counted small through the stitches already (no own plan)
                 small, out = other, planned(other, time_limit, short)
         return out
 
