@@ -18,7 +18,7 @@ from ..analysis.reachability import Reachability
 from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.places import listed, places
-from .holder_words import read_names
+from .holder_words import listed_as
 from .relational_init import kitchen_implied
 
 __all__ = ["AT_HAND", "kitchen_held", "made_in_plan", "makers_together", "needs"]
@@ -71,7 +71,7 @@ def _makers_together(reach: Reachability, u: int, first: bool = False, placed: b
         for x in ix.inputs[u]:
             held, box = ix.nodes[x], ix.nodes[c]
             if (x == c or reach.node_round[x] == 0 or reach.node_round[c] == 0
-                    or held.label not in read_names(listed(box), alias)
+                    or held.label not in listed_as(box, alias)
                     or box.label not in {alias.get(h, h) for _, h in places(held)}
                     or reach.achiever[x] == reach.achiever[c]):
                 continue

@@ -15,8 +15,8 @@ from ..model.pairing import Role, unit_roles
 from ..model.places import listed, places
 from ..model.where import short_path, unit_where
 
-__all__ = ["UnitWords", "aliased", "mismatches", "newly_listed", "part_of", "read_names", "renamed", "reported", "takers", "task_aliases",
-           "unit_words"]
+__all__ = ["UnitWords", "aliased", "listed_as", "mismatches", "newly_listed", "part_of", "read_names", "renamed", "reported",
+           "takers", "task_aliases", "unit_words"]
 
 
 @dataclass(frozen=True)
@@ -86,19 +86,28 @@ def read_names(names: Iterable[str], alias: Mapping[str, str]) -> frozenset[str]
     return frozenset(alias.get(x, x) for x in names)
 
 
-def aliased(node: ObjectNode | None, alias: dict[str, str]) -> ObjectNode | None:
-    """`node` with the names of its lists and places read through `alias` (the node itself when none apply)."""
-    if node is None or not alias:
+def aliased(node: ObjectNode | None, alias: Mapping[str, str]) -> ObjectNode | None:
+    """`node` with the names of its lists and places read through `alias` (the node itself when none apply): the
+    related objects of `contains`, `with`, `in` and `on`, and the ingredients of every state (`cooking pan (greased
+    {butter})` lists the butter as `contains` would, `places.listed`). O(names of the node)."""
+    if node is None or not alias or not any(st.related in alias or any(i in alias for i in st.ingredients)
+                                            for st in node.states):
         return node
     states = []
     for st in node.states:
-        if st.label in ("in", "on", "with") and st.related in alias:
-            st = make_state(st.label, alias[st.related], list(st.ingredients))
-        elif st.label == "contains" and any(i in alias for i in (*st.ingredients, st.related)):
-            st = make_state(st.label, alias.get(st.related, st.related),
-                            sorted({alias.get(i, i) for i in st.ingredients}))
+        related = alias.get(st.related, st.related) if st.label in ("contains", "in", "on", "with") else st.related
+        if related != st.related or any(i in alias for i in st.ingredients):
+            st = make_state(st.label, related, [alias.get(i, i) for i in st.ingredients])
         states.append(st)
     return make_node(node.label, states)
+
+
+def listed_as(node: ObjectNode | None, alias: Mapping[str, str]) -> frozenset[str]:
+    """The labels `node` lists (`places.listed`) read through `alias`, a unit's (`unit_aliases`, as `unit_words`
+    reads its nodes) or a task's (`task_aliases`): the one reading of a list by other names, `greased {butter}` as
+    the unit's `unsalted butter` (reread60's F5: the task's readings read the names `listed` gives, the unit's the
+    lists of its renamed nodes, which kept other states' names; they differed there). O(names of the node)."""
+    return listed(aliased(node, alias))
 
 
 def mismatches(unit: FunctionalUnit) -> tuple[str, ...]:

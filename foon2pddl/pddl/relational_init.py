@@ -10,7 +10,7 @@ from ..model.aliases import unit_aliases
 from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.physical import Relation
 from ..model.places import describes_contents, holds_unsaid, listed, moved_into, place_of, place_state, places
-from .holder_words import aliased, read_names, task_aliases
+from .holder_words import aliased, listed_as, task_aliases
 from .instance_names import counted_objects, named_objects
 from .names import NameTable
 from .task import Instance
@@ -60,7 +60,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
         if x.start is not None:
             by_label.setdefault(x.label, []).append(x)
     # an object's node a unit takes with a node of label C that lists it: that unit's C holds it, no other C it takes
-    claimed = {(a, b.label) for a, b in paired if a is not None and a.label in read_names(listed(b), alias)}
+    claimed = {(a, b.label) for a, b in paired if a is not None and a.label in listed_as(b, alias)}
     used: set[tuple[str, str]] = set()
     given: set[str] = set()  # the holders given an object
     wanted: dict[str, dict[str, int]] = {}
@@ -72,7 +72,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
             continue
         rel, label = place[0], alias.get(place[1], place[1])
         pool = [h for h in by_label.get(label, ()) if h.name != x.name]
-        listing = [h for h in pool if x.label in read_names(listed(h.start), alias)]
+        listing = [h for h in pool if x.label in listed_as(h.start, alias)]
         free = [h for h in listing if (h.name, x.label) not in used]
         if label in silent:
             quiet = [h for h in pool if not describes_contents(h.start)]
@@ -97,7 +97,7 @@ def holder_init(instances: list[Instance], alias: dict[str, str] | None = None,
     unsaid: dict[str, ObjectNode] = {}  # per label, a node holding what it does not say (level 2's `bowl (contains)`)
     for n in sorted(nodes, key=lambda n: (n.label not in wanted or met.get(n.label, set()).isdisjoint(_reached([n], follows)), n)):
         if place_of(n) is None:  # a holder that is itself somewhere would need a holder of its own
-            listing_nodes.setdefault((n.label, read_names(listed(n), alias)), n)
+            listing_nodes.setdefault((n.label, listed_as(n, alias)), n)
             if holds_unsaid(n):
                 unsaid.setdefault(n.label, n)
     implied = [make_node(label, []) for label in sorted(plain)] + [listing_nodes.get((label, frozenset(items)), unsaid.get(
@@ -258,7 +258,7 @@ def implied_contents(instances: list[Instance], alias: dict[str, str], placed: f
     for h in sorted(instances, key=lambda x: x.name):
         if h.start is None or h.label not in placed or not describes_contents(h.start):
             continue
-        for item in sorted(read_names(listed(h.start), alias)):
+        for item in sorted(listed_as(h.start, alias)):
             if spare.get((item, h.label), 0) > 0:
                 spare[(item, h.label)] -= 1
                 continue

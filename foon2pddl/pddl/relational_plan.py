@@ -51,7 +51,7 @@ from ..model.foon import FunctionalUnit, ObjectNode, make_node, make_state
 from ..model.pairing import Role
 from ..model.places import describes_contents, head_of, listed, places
 from .holder_flows import Flow, gained, unit_flows
-from .holder_words import read_names
+from .holder_words import listed_as
 from .holders import Fate, RelRole, relational_roles
 
 __all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
@@ -144,9 +144,8 @@ def quiet_places(nodes: Iterable[ObjectNode], units: Iterable[FunctionalUnit],
 
 def listings(nodes: Iterable[ObjectNode], alias: Mapping[str, str] | None = None) -> frozenset[tuple[str, str]]:
     """(holder label, content label) for every label one of `nodes` lists (`places.listed`), a listed name read
-    through the task's `alias` (`holder_words.task_aliases`): the holders a task says hold that label."""
-    alias = alias or {}
-    return frozenset((x.label, alias.get(c, c)) for x in nodes for c in listed(x))
+    through the task's `alias` (`holder_words.task_aliases`, `listed_as`): the holders a task says hold that label."""
+    return frozenset((x.label, c) for x in nodes for c in listed_as(x, alias or {}))
 
 
 def _fills(holder: str, label: str, filled: frozenset[tuple[str, str]], labels: frozenset[str],
@@ -291,7 +290,7 @@ def _late_holders(plan: UnitPlan, alias: Mapping[str, str], kitchen: frozenset[O
         if any(t.rel.role.label == holder for t in plan.slots):
             continue  # the unit names one of that label: which holds the object is the unit's reading (two breads
             # on [cutting board] and one board listing bread, `0061-club_sandwich.txt:180`), no holder to add
-        homes = [x for x in kitchen if x.label == holder and read_names(listed(x), alias) == {label}
+        homes = [x for x in kitchen if x.label == holder and listed_as(x, alias) == {label}
                  and not places(x) and (s.rel.role.before, x) not in taken]
         if len(homes) == 1 and (emptied := late_emptied(plan, homes[0], alias)) in kitchen:
             out.append(Role(holder, homes[0], emptied))
@@ -305,7 +304,7 @@ def taken_with(units: Iterable[FunctionalUnit],
     inputs^2)."""
     alias = alias or {}
     return frozenset((a, h) for u in units for a in u.inputs for h in u.inputs
-                     if h != a and a.label in read_names(listed(h), alias))
+                     if h != a and a.label in listed_as(h, alias))
 
 
 def _late_leaving(plan: UnitPlan, alias: Mapping[str, str]) -> dict[str, frozenset[str]]:
@@ -328,7 +327,7 @@ def late_emptied(plan: UnitPlan, node: ObjectNode, alias: Mapping[str, str]) -> 
     for the count (`count_roles`: a role FOON leaves out of the outputs ends so). O(r + l) for l listed names."""
     left = [s.rel.role.label for s in plan.slots
             if s.late_empties and alias.get(s.rel.source.holder, s.rel.source.holder) == node.label]
-    if not left or not describes_contents(node) or read_names(listed(node), alias).isdisjoint(left):
+    if not left or not describes_contents(node) or listed_as(node, alias).isdisjoint(left):
         return None
     return without(node, _late_leaving(plan, alias)[node.label], dict(alias))
 

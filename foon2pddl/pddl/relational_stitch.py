@@ -31,7 +31,7 @@ from ..model.foon import Foon, FunctionalUnit, ObjectNode, State
 from ..model.memo import per_network
 from ..model.places import CONTENT_STATES, listed, place_of, place_state, places
 from .encoding import LevelInputs
-from .holder_words import read_names, task_aliases
+from .holder_words import listed_as, read_names, task_aliases
 from .relational_init import kitchen_placed
 
 __all__ = ["kitchen_stitches", "stitch_notes", "stitched"]
@@ -65,7 +65,7 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
     for k in full:
         if k not in taking:  # no unit of the task takes K
             continue
-        items, takers = read_names(_held_in(k, taking[k], read_names(listed(k), alias)), alias), taking[k]
+        items, takers = read_names(_held_in(k, taking[k], listed_as(k, alias)), alias), taking[k]
         taken = {x for u in takers for x in u.inputs
                  if (p := place_of(x)) is not None and alias.get(p[1], p[1]) == k.label and x.label in items}
         if not {x for x in taken if x not in kitchen and x in made} - kitchen_placed(taken, kitchen):
@@ -79,11 +79,11 @@ def kitchen_stitches(units: Sequence[FunctionalUnit], kitchen: Iterable[ObjectNo
             if not rest - laid <= _rest(p):
                 continue
             kept, says = (items - read_names((x for s in laid for x in (*s.ingredients, s.related) if x), alias),
-                          read_names(listed(p), alias))
+                          listed_as(p, alias))
             if not kept <= says:
                 continue
             roles = {n.label for n in (*u.inputs, *u.outputs)}
-            before = frozenset().union(*(read_names(listed(i), alias) for i in u.inputs if i.label == k.label))
+            before = frozenset().union(*(listed_as(i, alias) for i in u.inputs if i.label == k.label))
             if not (says - kept) & (roles | before):
                 found.setdefault(p, u)
                 makers_of.setdefault(p, []).append(u)

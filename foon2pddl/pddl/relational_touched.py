@@ -36,7 +36,7 @@ from collections.abc import Iterable
 from ..model.foon import ObjectNode
 from ..model.physical import Relation
 from ..model.places import describes_contents, listed, moved_into, places
-from .holder_words import read_names
+from .holder_words import listed_as
 from .holders import Fate
 from .relational_plan import Slot, UnitPlan, late_emptied
 
@@ -78,7 +78,7 @@ def late_empties(plan: UnitPlan, nodes: Iterable[ObjectNode],
     for k, s in enumerate(plan.slots):
         if s.late_empties:
             label, holder = s.rel.role.label, alias.get(s.rel.source.holder, s.rel.source.holder)
-            out[k] = [(n, new) for n in sorted(x for x in nodes if x.label == holder and label in read_names(listed(x), alias))
+            out[k] = [(n, new) for n in sorted(x for x in nodes if x.label == holder and label in listed_as(x, alias))
                       if (new := late_emptied(plan, n, alias)) is not None]
     return out
 
