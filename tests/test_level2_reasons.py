@@ -28,3 +28,20 @@ def test_a_level_2_dish_without_a_plan_says_what_level_2_reads_otherwise():
     assert "`--level 3` reads the lists" in reason
     three = CliRunner().invoke(main, ["plan", path, "--goal", "pancake batter"])
     assert three.exit_code == 0 and "solved" in three.stderr  # the hint is true: level 3 plans it
+
+
+
+def test_each_object_is_compared_with_its_own_level_2_reading():
+    """A unit whose equal level-2 nodes are kept once has fewer roles at level 2 than at level 3; comparing the two
+    lists position by position paired an object with another's reading: 0005's sprinkle at :149 said `bowl stays at
+    level 3, moves whole out of the unit's bowl into whichever bean mix at level 2` (the salt's reading given to the
+    bowl), its pick-and-place at :457 `bread is consumed ... at level 3, is made into whichever cutting board at level
+    2` (the sandwich's). Each object is compared with the level-2 role of its own projected nodes."""
+    from foon2pddl.io.files import load
+    from foon2pddl.pddl.level_readings import lost_readings
+
+    units = {u.sources[0].line: u for u in load([SUBGRAPHS / "0005-chipotle-bean_sandwich.txt"])[0].units}
+    (sprinkle,) = lost_readings([units[149]], 2)
+    assert sprinkle.endswith(":149: salt leaves a portion out of the unit's bowl into whichever bean mix at level 3, "
+                             "moves whole out of the unit's bowl into whichever bean mix at level 2"), sprinkle
+    assert lost_readings([units[457]], 2) == ()  # the bread is consumed into the sandwich at both levels
