@@ -51,8 +51,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from math import prod
 
+from .effect_order import EffectPart, effect_parts, variables
 from .prune import static_facts
-from .task import Action, Atom, Conditional, PlanningTask, Predicate
+from .task import Action, Atom, PlanningTask, Predicate
 
 __all__ = ["CHAIN", "IDLE", "SPLIT_ABOVE", "SWEEPS_PER_BINDING", "Split", "split"]
 
@@ -109,10 +110,6 @@ def _sizes(task: PlanningTask) -> dict[str, int]:
     return sizes
 
 
-def _vars(atoms) -> set[str]:
-    return {x for a in atoms for x in a.args if x.startswith("?")}
-
-
 def _renamed(atom: Atom, var: str, to: str) -> Atom:
     return Atom(atom.predicate, tuple(to if x == var else x for x in atom.args))
 
@@ -145,101 +142,19 @@ def _groups(checked: list[str], pre: tuple[Atom, ...]) -> list[list[str]]:
     return [[v for v in checked if group[v] == g] for g in sorted(set(group.values()))]
 
 
-def _compatible(a: str, b: str, below: dict[str, set[str]]) -> bool:
-    return a in below.get(b, {b}) or b in below.get(a, {a})
-
-
-def _may_meet(one: tuple[Atom, dict[str, str]], other: tuple[Atom, dict[str, str]], below: dict[str, set[str]],
-              kind: dict[str, str]) -> bool:
-    """Whether two atoms, each with the types of its variables, may be one ground atom."""
-    (a, at), (b, bt) = one, other
-    if a.predicate != b.predicate or len(a.args) != len(b.args):
-        return False
-    for x, y in zip(a.args, b.args, strict=True):
-        if x not in at and y not in bt:
-            if x != y:
-                return False
-        elif not _compatible(at.get(x, kind.get(x, "object")), bt.get(y, kind.get(y, "object")), below):
-            return False
-    return True
-
-
-@dataclass
-class _Part:
-    """Effects of an action that name the same parameters: unconditional adds and deletes, conditionals."""
-
-    names: set[str]
-    add: list[Atom] = field(default_factory=list)
-    delete: list[Atom] = field(default_factory=list)
-    conditional: list[Conditional] = field(default_factory=list)
-
-    def scoped(self, params: dict[str, str], which: str) -> list[tuple[Atom, dict[str, str]]]:
-        """The part's atoms of one kind ('add', 'delete', 'when') with the types of their variables."""
-        out = [(a, params) for a in (self.add if which == "add" else self.delete if which == "delete" else ())]
-        for c in self.conditional:
-            scope = {**params, **dict(c.quantified)}
-            out += [(a, scope) for a in (c.add if which == "add" else c.delete if which == "delete" else c.when)]
-        return out
-
-
-def _effect_parts(action: Action, own: list[Atom], own_del: list[Atom], below, kind) -> list[_Part]:
-    """The action's effects grouped by the parameters they name, in an order that does what the action does:
-    no part changes an atom a later part's conditions read, none adds an atom a later part deletes (groups that
-    must come before each other are one part)."""
-    params = dict(action.params)
-    parts: dict[frozenset[str], _Part] = {}
-    for atoms, kind_ in ((own, "add"), (own_del, "delete")):
-        for a in atoms:
-            getattr(parts.setdefault(frozenset(_vars((a,))), _Part(set(_vars((a,))))), kind_).append(a)
-    for c in action.conditional:
-        names = _vars(c.atoms()) - {v for v, _ in c.quantified}
-        parts.setdefault(frozenset(names), _Part(set(names))).conditional.append(c)
-    groups = list(parts.values())
-
-    def meet(xs, ys) -> bool:
-        return any(_may_meet(x, y, below, kind) for x in xs for y in ys)
-
-    writes = [g.scoped(params, "add") + g.scoped(params, "delete") for g in groups]
-    first = [[meet(writes[j], groups[i].scoped(params, "when"))  # i must come before j
-              or meet(groups[j].scoped(params, "add"), groups[i].scoped(params, "delete")) for j in range(len(groups))]
-             for i in range(len(groups))]
-    n = len(groups)
-    for k in range(n):  # transitive closure
-        for i in range(n):
-            if first[i][k]:
-                first[i] = [x or y for x, y in zip(first[i], first[k], strict=True)]
-    comp = [min(j for j in range(n) if j == i or first[i][j] and first[j][i]) for i in range(n)]
-    order: list[int] = []
-    todo = sorted(set(comp))
-    while todo:  # the first component nothing left must come before
-        c = next(c for c in todo if not any(first[d][c] and not first[c][d] for d in todo if d != c))
-        todo.remove(c)
-        order.append(c)
-    out = []
-    for c in order:
-        merged = _Part(set())
-        for g in (groups[i] for i in range(n) if comp[i] == c):
-            merged.names |= g.names
-            merged.add += g.add
-            merged.delete += g.delete
-            merged.conditional += g.conditional
-        out.append(merged)
-    return out
-
-
 def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]], above: int, taken: set[str],
                kind: dict[str, str], static: dict[str, list[tuple[str, ...]]]):
     """The chain of parts of `action` with their join entries, or None when it stays whole."""
     size = {v: sizes.get(t, 0) for v, t in action.params}
-    fixed = [a for a in action.pre if a.predicate in static and _vars((a,))]
+    fixed = [a for a in action.pre if a.predicate in static and variables((a,))]
 
     def fixed_over(names) -> list[Atom]:  # the static preconditions a part binding `names` checks
-        return [a for a in fixed if _vars((a,)) <= set(names)]
+        return [a for a in fixed if variables((a,)) <= set(names)]
 
     matches = {a: _facts(a, static) for a in fixed}  # once per action: `bindings` is asked for every merge tried
 
     def bindings(names) -> int:
-        return _bindings(names, size, [(matches[a], _vars((a,))) for a in fixed_over(names)])
+        return _bindings(names, size, [(matches[a], variables((a,))) for a in fixed_over(names)])
 
     def weight(names, conditional) -> int:  # bindings x (1 + objects its sweeps range over)
         return bindings(names) * (1 + sum(prod(sizes.get(t, 0) for _, t in c.quantified) for c in conditional))
@@ -249,7 +164,7 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
         return None
     own = [e for e in action.add if not _subsumed(e, True, action, below)]
     own_del = [e for e in action.delete if not _subsumed(e, False, action, below)]
-    named = _vars((*own, *own_del, *(x for c in action.conditional for x in c.atoms())))
+    named = variables((*own, *own_del, *(x for c in action.conditional for x in c.atoms())))
     order = [v for v, _ in action.params]
     kept = [v for v in order if v in named]
     checked = [v for v in order if v not in named]
@@ -259,15 +174,15 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
     done: set[str] = set()
     for v in kept:
         done.add(v)
-        atoms = [a for a in action.pre if v in _vars((a,)) and _vars((a,)) <= done]
-        binds.append(({v, *_vars(atoms)}, atoms))
-    ground = [a for a in action.pre if not _vars((a,))]  # with the first part
+        atoms = [a for a in action.pre if v in variables((a,)) and variables((a,)) <= done]
+        binds.append(({v, *variables(atoms)}, atoms))
+    ground = [a for a in action.pre if not variables((a,))]  # with the first part
     binds[:1] = [(binds[0][0], ground + binds[0][1])] if binds else [(set(), ground)]
     for g in _groups(checked, action.pre):
-        atoms = [a for a in action.pre if _vars((a,)) & set(g)]
-        binds.append(({*g, *_vars(atoms)}, atoms))
+        atoms = [a for a in action.pre if variables((a,)) & set(g)]
+        binds.append(({*g, *variables(atoms)}, atoms))
     binds = _merged(binds, lambda a, b: bindings(a | b) <= above)
-    effects = _merged([(p.names, p) for p in _effect_parts(action, own, own_del, below, kind)],
+    effects = _merged([(p.names, p) for p in effect_parts(action, own, own_del, below, kind)],
                       lambda a, b: bindings(a | b) <= max(bindings(x) for x in (a, b)))
     names_of = [x for x, _ in binds] + [x for x, _ in effects]
     if not effects or len(names_of) < 2 or max(*(weight(x, ()) for x, _ in binds),
@@ -292,7 +207,7 @@ def _split_one(action: Action, sizes: dict[str, int], below: dict[str, set[str]]
         bound |= vs
         body = binds[i][1] if i < len(binds) else []
         body = [*body, *(a for a in fixed_over(vs) if a not in body)]  # static: true whenever it held, so each part checks
-        eff = effects[i - len(binds)][1] if i >= len(binds) else _Part(set())
+        eff = effects[i - len(binds)][1] if i >= len(binds) else EffectPart(set())
         parts.append(Action(
             names[i], params=tuple((v, types[v]) for v in order if v in vs), unit=action.unit, roles=action.roles,
             pre=(_at(IDLE if i == 0 else stage[i - 1]), *(Atom(record[v], (v,)) for v in old), *body),
@@ -328,13 +243,13 @@ def _bindings(names, size: dict[str, int], fixed: list[tuple[int, set[str]]]) ->
 
 def _merged(parts: list, fits) -> list:
     """`parts` ((parameter names, content) pairs, in order) with neighbours joined while `fits(names, names)`;
-    contents are lists or `_Part`s."""
+    contents are lists or `EffectPart`s (`effect_order`)."""
     out = [parts[0]] if parts else []
     for names, content in parts[1:]:
         last_names, last = out[-1]
         if fits(last_names, names):
-            if isinstance(last, _Part):
-                last = _Part(last.names | content.names, last.add + content.add, last.delete + content.delete,
+            if isinstance(last, EffectPart):
+                last = EffectPart(last.names | content.names, last.add + content.add, last.delete + content.delete,
                              last.conditional + content.conditional)
             else:
                 last = last + content
