@@ -1221,3 +1221,24 @@ def test_a_weighted_batch_in_csv_keeps_each_goals_success_probability():
     assert [r["goal"] for r in table] == ["guacamole", "lemonade"], table
     assert float(table[0]["probability"]) == pytest.approx(rows[0]["probability"]) and rows[0]["probability"] > 0
     assert table[1]["probability"] == "" and rows[1]["probability"] is None
+
+
+def test_a_step_with_no_free_tool_names_the_one_lying_on_a_place_the_step_names(tmp_path):
+    """Issue 24's pass at stop 61: a scene for the orange juice (0073-orange_juice.txt, whose board stands `on
+    [surface]`) with its knife on the counter, labelled `surface`: `plan --skills` kept the cut abstract, saying `the
+    step lists no tool to cut with (none stands free on the table)`, above the FOON line `..., knife (clean) -> ...`.
+    The knife is on a place the step names, so it is no tool (docs/skills.md); the reason now says so."""
+    objects = [{"id": "counter_1", "label": "surface"}, {"id": "fridge_1", "label": "fridge"},
+               {"id": "orange_a", "label": "orange", "states": ["whole"], "in": "fridge_1"},
+               {"id": "colander_1", "label": "colander", "states": ["empty"], "on": "counter_1"},
+               {"id": "tap", "label": "faucet", "states": ["off"]},
+               {"id": "board_1", "label": "cutting board", "states": ["empty"], "on": "counter_1"},
+               {"id": "knife_1", "label": "knife", "states": ["clean"], "on": "counter_1"},
+               {"id": "squeezer_1", "label": "squeezer", "states": ["clean"], "on": "counter_1"},
+               {"id": "glass_1", "label": "drinking glass", "states": ["empty"], "on": "counter_1"}]
+    scene = write(tmp_path / "scene.json", json.dumps({"objects": objects}))
+    r = run("plan", SUBGRAPHS / "0073-orange_juice.txt", "--kitchen", scene, "--goal", "orange juice", "--skills")
+    assert r.exit_code in (0, 1), r.stderr
+    cut = next(line for line in r.stdout.splitlines() if line.startswith("5. cut"))
+    assert "(none stands free on the table: knife_1 is on counter_1, a place the step names, so not taken as a " \
+           "tool)" in cut, cut

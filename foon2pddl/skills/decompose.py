@@ -20,14 +20,14 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from enum import StrEnum
 
-from ..model.physical import PhysicalTrace
+from ..model.physical import PhysicalTrace, Relation
 from ..model.tasktree import Validation
 from ..pddl.task import Atom, PlanningTask
 from ..planners.process import cpu_seconds
 from .domain import TRANSPORT, SkillDomain
 from .fd_micro import solve_micro
 from .memo import MicroMemo
-from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem
+from .micro import MicroProblem, Naming, _roles, dynamic_facts, micro_problem, set_aside
 from .profile import Robot
 from .replay import Replayer, SkillError, check
 from .shorten import irredundant
@@ -158,8 +158,10 @@ def _plan_step(trace: PhysicalTrace, index: int, table: MotionTable, domain: Ski
     if status != "solved" and "?t" in {v for v, _ in domain.by_name[skill].params} and not _has_tool(problem):
         lacking = (f"the motion table gives {motion!r} no by-hand skill" if hand is None else
                    f"the motion table's by-hand skill {hand!r} for {motion!r} is not defined in {domain.path}")
-        return out(StepStatus.FAILED, f"the step lists no tool to {skill} with (none stands free on the table) and "
-                   + lacking, problem, reused=reused)
+        lying = "; ".join(f"{o} is {'in' if r is Relation.IN else 'on'} {h}" for o, r, h in set_aside(trace, index))
+        why = f": {lying}, a place the step names, so not taken as a tool" if lying else ""
+        return out(StepStatus.FAILED, f"the step lists no tool to {skill} with (none stands free on the table{why}) "
+                   "and " + lacking, problem, reused=reused)
     if status != "solved":
         return out(StepStatus.FAILED, f"micro task {status}: {message}", problem, reused=reused)
     calls = tuple((line.split()[0], tuple(line.split()[1:])) for line in plan)

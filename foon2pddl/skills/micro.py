@@ -46,6 +46,7 @@ from functools import cached_property
 
 from ..model.foon import ObjectNode
 from ..model.physical import ObjectState, PhysicalTrace, Relation
+from ..model.places import places
 from ..pddl.names import NameTable
 from ..pddl.render import render_problem
 from ..pddl.task import Atom, PlanningTask
@@ -201,6 +202,18 @@ def stands_free(trace: PhysicalTrace, index: int):
         return lambda s: s.holder is None
     labels = {o.id: o.label for o in trace.objects}
     return lambda s: s.holder is None or labels.get(s.holder) not in named
+
+
+def set_aside(trace: PhysicalTrace, index: int) -> tuple[tuple[str, Relation | None, str], ...]:
+    """The step's objects that would pass for tools but for where they lie: unchanged, staying in or on a holder
+    the step's unit names (so `stands_free` says no), though their own node names no place (a scene's knife on a
+    counter labelled `surface`, where the recipe's board stands `on [surface]`): (id, relation, holder) each, for
+    a step that finds no tool to say why. O(objects of the step)."""
+    before, after = trace.after(index - 1), trace.after(index)
+    free = stands_free(trace, index)
+    return tuple((oid, b.relation, b.holder) for oid in step_objects(trace, index)
+                 if (b := before[oid]).holder is not None and not free(b) and b.node is not None
+                 and not places(b.node) and (a := after[oid]).holder == b.holder and a.node == b.node)
 
 
 def _restated(before: Mapping[str, ObjectState], after: Mapping[str, ObjectState],
