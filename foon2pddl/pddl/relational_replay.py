@@ -9,8 +9,9 @@ encoding decides is redone here, so the trace is exactly what the PDDL says, and
 the independent replay (`planners.physical_replay`) judges the encoding itself.
 Per unit step, each role is bound to the parameter the action gives it, or (a
 role checked by `(occupied s)`) to the object in the role's node that holds, or
-is held by, a bound object where the unit says so, else the first such object by
-name; the binding says what the unit requires of it (`Action.roles`: its node
+is held by, a bound object where the unit says so, else one holding a bound object the unit takes out of a holder
+of that label it does not name (the two bowls of salt and pepper a level-2 sprinkle reads, the salt in one of
+them), else the first such object by name; the binding says what the unit requires of it (`Action.roles`: its node
 before, and the node it must end in). Every other object the step changes or
 names (a portion poured off, a holder the unit does not name, contents that
 followed their container) is bound with its node before and after the step. An
@@ -122,7 +123,8 @@ def relational_trace(task: PlanningTask, steps: Sequence[str]) -> PhysicalTrace:
 def _role_objects(unit, action, args, was, now, label, step, n) -> list[str]:
     """The object bound to each role: its parameter, or for a role checked by `(occupied s)` an object in its
     node, chosen so that holders agree with the unit: the holder of a named object the unit places in that role,
-    or an object held by a named role the unit places it in (else the first such by name). Roles linked to a
+    or an object held by a named role the unit places it in, else one holding a named object the unit takes out of
+    a holder of that label it does not name (else the first such by name). Roles linked to a
     named one are chosen first, then the rest in role order. O(roles^2 x objects)."""
     given = iter(args)
     names: list[str | None] = [next(given) if bound else None for _, bound in action.roles]
@@ -160,7 +162,10 @@ def _role_objects(unit, action, args, was, now, label, step, n) -> list[str]:
         # an unnamed holder and what it holds: a pair that agrees, if the state has one
         inner = [j for j in todo if j != k and rels[j].source is not None and rels[j].source.role == k]
         pairs = [h for h in pool if any(was[x].holder == h for j in inner for x in fits(j))]
-        pick = (pairs or pool or [None])[0]
+        # else one holding a named object the unit takes from a holder of that label it does not name
+        held = [h for h in pool if any(names[j] is not None and was[names[j]].holder == h for j, r in enumerate(rels)
+                                       if r.source is not None and r.source.role is None and r.source.holder == roles[k].label)]
+        pick = (pairs or held or pool or [None])[0]
         if pick is None:
             raise PlanDecodeError(f"plan step {n} ({step}): no {roles[k].label} is {show_node(roles[k].before)}")
         names[k] = pick
