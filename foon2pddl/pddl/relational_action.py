@@ -21,8 +21,10 @@ its holder facts, from the unit's reading in the task (`relational_plan.UnitPlan
   no role of the unit follow their container's list (`holder_flows.Flow`), by one
   quantified conditional effect per node they can be in.
 
-Which roles are parameters: a role whose object changes or moves, the holders a bound object's facts name, and
-what sits in a changing holder (to a fixpoint, O(r^2) for r roles); holders the unit does not name are one
+Which roles are parameters: a role whose object changes or moves, the holders a bound object's facts name, what
+sits in a changing holder, and an object in a holder role whose node does not say what it holds, with that holder
+(`places.holds_unsaid`: level 2's `container (contains)`; no list ties the parmesan to the container the unit reads,
+`0019-garlic-parmesan_chicken.txt:64`, so `(in ?container ?parmesan)` does) (to a fixpoint, O(r^2) for r roles); holders the unit does not name are one
 parameter per label and unit, or a quantified conditional effect for a source, never a parameter per source.
 """
 
@@ -31,6 +33,7 @@ from __future__ import annotations
 from ..model.foon import ObjectNode
 from ..model.pairing import Role
 from ..model.physical import Relation
+from ..model.places import holds_unsaid
 from . import relational_touched
 from .costs import unit_cost
 from .encode_instances import IS, NOT_MADE, OCCUPIED, PRECEDES, ROOT_TYPE
@@ -87,6 +90,8 @@ def unit_action(u: int, plan: UnitPlan, table: NameTable, const: dict[ObjectNode
             if src is not None and src.role is not None and not bound[k] and (s.fate is Fate.STAYS and changes[src.role]
                     or s.fate is Fate.SPLITS and (bound[src.role] or s.rel.role.before in entered)):
                 need.append(k)  # it stays in that holder, or a portion comes out of it (of a node an action fills)
+            if src is not None and src.role is not None and holds_unsaid(slots[src.role].rel.role.before):
+                need += [k, src.role]  # no list says which object that holder holds: the holder fact does
             for j in need:
                 if not bound[j]:
                     bound[j] = grew = True
