@@ -49,11 +49,12 @@ def motions(draw):
 
 @st.composite
 def units(draw, pool=None):
+    """A level-3 unit: each node once per side, as the readers keep them (a line written twice is one object)."""
     node = nodes(pool)
     return FunctionalUnit(
-        tuple(draw(st.lists(node, min_size=1, max_size=4))),
+        tuple(draw(st.lists(node, min_size=1, max_size=4, unique=True))),
         draw(motions()),
-        tuple(draw(st.lists(node, min_size=1, max_size=4))),
+        tuple(draw(st.lists(node, min_size=1, max_size=4, unique=True))),
         (Source("gen.foon", draw(st.integers(0, 500))),),
     )
 

@@ -48,12 +48,13 @@ def test_identity_is_coarser_at_lower_levels(a, b):
         assert hash(project_node(a, 2)) == hash(project_node(b, 2))
 
 
-def test_project_unit_collapses_a_node_listed_twice():
+def test_project_unit_keeps_a_node_per_object():
+    """Two bowls that differ only by their lists stay two bowls at level 2 (issue 21: the unit's objects)."""
     salty = make_node("bowl", [make_state("contains", "", ["salt"])])
     sweet = make_node("bowl", [make_state("contains", "", ["sugar"])])
     unit = FunctionalUnit((salty, sweet), Motion("mix"), (salty,), (Source("f", 3),))
     two = project_unit(unit, 2)
-    assert len(two.inputs) == 1 and two.sources == unit.sources
+    assert len(two.inputs) == 2 and two.inputs[0] == two.inputs[1] and two.sources == unit.sources
     assert project_unit(unit, 3) is unit
 
 

@@ -200,7 +200,9 @@ def _nodes(d: dict, key: str, where: tuple, level: int) -> tuple[ObjectNode, ...
         raise _Invalid(where + (key,), f"{key} must be a list of object nodes, found {_kind(items)}")
     if not items:
         raise _Invalid(where + (key,), f"{key} is empty (a unit needs at least one)")
-    return tuple(_node(n, where + (key, i), level) for i, n in enumerate(items))
+    nodes = tuple(_node(n, where + (key, i), level) for i, n in enumerate(items))
+    # at level 3 a node written twice is one object; below it, one node per object (`levels.project_unit`)
+    return tuple(dict.fromkeys(nodes)) if level == 3 else nodes
 
 
 def _motion(data: Any, where: tuple) -> Motion:

@@ -126,6 +126,16 @@ def _comment_head(text: str) -> tuple[int, int]:
     return skip, line + 1
 
 
+def _once(texts: list[str], nodes: tuple[ObjectNode, ...]) -> tuple[list[str], tuple[ObjectNode, ...]]:
+    """One side of a unit with a node written twice kept once (the first), texts and nodes alike: a line written
+    twice is one object (`pairing.unit_roles`). O(n) for n objects; the usual side, no node twice, as given."""
+    if len(set(nodes)) == len(nodes):
+        return texts, nodes
+    first = {n: k for k, n in reversed(tuple(enumerate(nodes)))}
+    keep = sorted(first.values())
+    return [texts[k] for k in keep], tuple(nodes[k] for k in keep)
+
+
 class _Made(dict):
     """A dictionary that makes a missing value with `make(key)` and keeps it; a hit is looked up in C, also
     through `map(made.__getitem__, keys)`."""
@@ -207,7 +217,8 @@ class _Reader:
             self.warnings.append(ParseWarning(self.path, start, problem))
         else:
             url = self.urls[-1] if self.urls else None
-            self.units.append(FunctionalUnit(tuple(inputs), motion, tuple(outputs), (Source(self.path, start, url),)))
+            self.units.append(FunctionalUnit(tuple(dict.fromkeys(inputs)), motion, tuple(dict.fromkeys(outputs)),
+                                             (Source(self.path, start, url),)))  # a line written twice: one object
 
     def read_plain(self, text: str, first: int = 1) -> ParseResult | None:
         """The network of plain text (`_plain`; its line 1 is line `first` of the file) read block by block,
@@ -283,8 +294,10 @@ class _Reader:
                     raise _NotPlain  # a block starting with a state line, no inputs or outputs, two motions
                 motion = motion_of(outs[0])
                 del ins[0], outs[0]
-                units.append(make_unit(tuple(map(node_of, ins)), motion, tuple(map(node_of, outs)),
-                                       (make_source(path, start),)))
+                ins_n, outs_n = tuple(map(node_of, ins)), tuple(map(node_of, outs))
+                ins, ins_n = _once(ins, ins_n)
+                outs, outs_n = _once(outs, outs_n)
+                units.append(make_unit(ins_n, motion, outs_n, (make_source(path, start),)))
                 ins_ids.append(tuple(map(number, ins)))
                 outs_ids.append(tuple(map(number, outs)))
         except (_NotPlain, FoonSyntaxError):

@@ -34,16 +34,18 @@ def project_node(node: ObjectNode, level: int) -> ObjectNode:
 
 
 def project_unit(unit: FunctionalUnit, level: int, node=None) -> FunctionalUnit:
-    """A unit with its nodes projected; a node listed twice on one side is kept once.
+    """A unit with its nodes projected, one per node of `unit`: nodes that become equal stay listed each time.
 
-    `node` replaces `project_node(n, level)` (used by `project` to memoize).
+    A unit's nodes are its objects (`pairing.unit_roles`): the pour from `bowl (contains {egg})` into `bowl
+    (contains {flour})` is a pour between two bowls at level 2 too, where both are `bowl (contains)`; kept once,
+    it had one bowl, the egg never left it, and the dish was unsolvable for the encodings with objects. A set of
+    nodes is unchanged (`tree`: FOON's semantics, the same facts). `node` replaces `project_node(n, level)` (used
+    by `project` to memoize).
     """
     if level == 3:
         return unit
     node = node or (lambda n: project_node(n, level))
-    ins = tuple(dict.fromkeys(node(n) for n in unit.inputs))
-    outs = tuple(dict.fromkeys(node(n) for n in unit.outputs))
-    return FunctionalUnit(ins, unit.motion, outs, unit.sources)
+    return FunctionalUnit(tuple(map(node, unit.inputs)), unit.motion, tuple(map(node, unit.outputs)), unit.sources)
 
 
 @bulk

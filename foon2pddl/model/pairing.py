@@ -29,8 +29,11 @@ pairs are taken greedily, each node at most once. Ambiguity: when a unit has
 several inputs of one label and fewer outputs (two bowls combined into one), the
 rule picks the input most like the output as the one that "becomes" it; FOON
 does not say which physical object it was. A node listed twice on one side
-counts once (as `levels.project_unit` does at levels 1 and 2): in the public
-data that is a duplicated line, not two objects in one state.
+is two objects: at levels 1 and 2, two nodes that differ only in what the
+level leaves out (`levels.project_unit`: the two bowls of a pour are both
+`bowl (contains)` at level 2). A line written twice in a file is one object:
+the readers keep it once (`io.parser`, `io.jsonio`; in the public data,
+`0019-garlic-parmesan_chicken.txt:64` lists `breadcrumb (in [bowl])` twice).
 """
 
 from __future__ import annotations
@@ -85,11 +88,11 @@ def _overlap(a: ObjectNode, b: ObjectNode) -> tuple[int, int]:
 
 @lru_cache(maxsize=1 << 14)
 def unit_roles(unit: FunctionalUnit) -> tuple[Role, ...]:
-    """The roles of `unit`: one per distinct input (in input order), then one per unpaired output (in order).
+    """The roles of `unit`: one per input (in input order), then one per unpaired output (in order).
 
     O(k^2 log k) for k nodes of one label (k is tiny in practice); cached per unit.
     """
-    inputs, outputs = tuple(dict.fromkeys(unit.inputs)), tuple(dict.fromkeys(unit.outputs))
+    inputs, outputs = unit.inputs, unit.outputs
     moving = {n.label for n in inputs if n.motion_flag}  # FOON's motion identifier: the objects the hand moves
     pairs = []
     for i, a in enumerate(inputs):

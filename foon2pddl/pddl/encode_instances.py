@@ -23,7 +23,8 @@
   role (`pairing.unit_roles`): a moved object must be in its input node's
   state and goes to its output node's state (delete + add); kept and
   read-only objects must be in their input node's state and stay there (when
-  that node is stable they are no parameter: `(occupied s)` is checked instead,
+  that node is stable and no other role of the unit is in it, they are no parameter: `(occupied s)` is checked
+  instead,
   which keeps grounding small: seven read-only bowls of a salad would be 9^7
   groundings with nine bowls, and the plan's instance for them is
   chosen when the plan is replayed, `instance_replay`); a new
@@ -60,6 +61,7 @@ with no holders (`instance_replay`, the encoding's replay hook).
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Collection, Mapping
 from itertools import pairwise
 
@@ -148,7 +150,8 @@ def encode_instances(
     for u in units:
         unit = f.units[u]
         roles = unit_roles(unit)
-        bound = tuple(r.changes or r.before not in stable for r in roles)
+        twice = {n for n, k in Counter(r.before for r in roles).items() if k > 1}  # two bowls at level 2: two objects
+        bound = tuple(r.changes or r.before not in stable or r.before in twice for r in roles)
         params_table = NameTable()
         params = [f"?{params_table.name(r.label, key=k)}" for k, r in enumerate(roles)]
         pre, add, delete = [], [], []

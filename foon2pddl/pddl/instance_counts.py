@@ -28,7 +28,8 @@ unfolding a delete-free plan backwards:
 2. Unfolding, from the last unit to the first: a node's *demand* is the number
    of instances that must pass through it: one per role that moves an instance
    out of it (`pairing.RoleKind.MOVED`) per firing of the consuming unit, plus
-   one when some unit only reads it (read-only and kept roles, the goal) after
+   the most one unit reads at once (one; two for the two `bowl (contains)` of a level-2 pour,
+   `levels.project_unit`) when some unit only reads it (read-only and kept roles, the goal) after
    every unit that moves one out of it, and so needs one instance to stay (a
    reader before a mover reads the instance the mover takes later). A unit fires F times, F being the largest
    demand among the nodes it is credited with making (moved and new roles);
@@ -147,12 +148,12 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
     `roles_of` gives a unit's object roles (an encoding with other rules of what becomes of objects); `steps`
     gets (unit, times) per firing unit, last first."""
     consumed: Counter[ObjectNode] = Counter()
-    read: set[ObjectNode] = {target}
+    read: Counter[ObjectNode] = Counter({target: 1})  # the most one unit reads at once (two bowls at level 2)
     created: Counter[str] = Counter()
     firings: dict[int, int] = {}
 
     def demand(node: ObjectNode) -> int:
-        return consumed[node] + (node in read)
+        return consumed[node] + read[node]
 
     for u in reversed(plan):
         roles = roles_of(foon.units[u])
@@ -165,18 +166,19 @@ def unfold(foon: Foon, plan: Sequence[int], kitchen: frozenset[ObjectNode], targ
             steps.append((u, times))
         for n in makes:
             consumed.pop(n, None)
-            read.discard(n)
+            read.pop(n, None)
         read_only = {r.before for r in roles if r.kind is RoleKind.READ_ONLY}
         for n in {r.after for r in roles if r.kind is RoleKind.NEW and r.after in kitchen and r.after in read_only}:
             consumed[n] = max(0, consumed[n] - times)  # each firing's portion serves one later taker of the node
+        reads = Counter(r.before for r in roles if r.kind in (RoleKind.READ_ONLY, RoleKind.KEPT))
         for r in roles:
             if r.kind is RoleKind.NEW:
                 created[r.label] += times
             elif r.kind is RoleKind.MOVED:
                 consumed[r.before] += times
             elif not consumed[r.before]:  # a later unit moves one out of that state: read it before
-                read.add(r.before)
-    at_kitchen = Counter({n: demand(n) for n in set(consumed) | read if n in kitchen and demand(n) > 0})
+                read[r.before] = max(read[r.before], reads[r.before])
+    at_kitchen = Counter({n: demand(n) for n in set(consumed) | set(read) if n in kitchen and demand(n) > 0})
     return at_kitchen, created, firings
 
 
