@@ -42,6 +42,7 @@ def test_each_object_is_compared_with_its_own_level_2_reading():
 
     units = {u.sources[0].line: u for u in load([SUBGRAPHS / "0005-chipotle-bean_sandwich.txt"])[0].units}
     (sprinkle,) = lost_readings([units[149]], 2)
+    # level 2 keeps the sprinkle's two bowls (`levels.project_unit`), and no list says which holds the salt
     assert sprinkle.endswith(":149: salt leaves a portion out of the unit's bowl into whichever bean mix at level 3, "
-                             "moves whole out of the unit's bowl into whichever bean mix at level 2"), sprinkle
+                             "moves whole out of whichever bowl into whichever bean mix at level 2"), sprinkle
     assert lost_readings([units[457]], 2) == ()  # the bread is consumed into the sandwich at both levels
