@@ -46,3 +46,16 @@ def test_each_object_is_compared_with_its_own_level_2_reading():
     assert sprinkle.endswith(":149: salt leaves a portion out of the unit's bowl into whichever bean mix at level 3, "
                              "moves whole out of whichever bowl into whichever bean mix at level 2"), sprinkle
     assert lost_readings([units[457]], 2) == ()  # the bread is consumed into the sandwich at both levels
+
+
+def test_an_object_paired_otherwise_at_level_2_is_still_compared_at_its_position():
+    """0008's pour at :255: the bowl moves whole into the double boiler at level 3 and stays at level 2 (its level-2
+    role is paired with another output). Looked up by its projected (before, after) it found no role and was not
+    compared; at its position in the projected unit, a role of its label, it is."""
+    from foon2pddl.io.files import load
+    from foon2pddl.pddl.level_readings import lost_readings
+
+    units = {u.sources[0].line: u for u in load([SUBGRAPHS / "0008-buckeye_candy-allrecipes.txt"])[0].units}
+    assert lost_readings([units[255]], 2) == (
+        f"pour at {SUBGRAPHS / '0008-buckeye_candy-allrecipes.txt'}:255: bowl moves whole into the unit's double boiler "
+        "at level 3, stays at level 2",)

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..model.foon import FunctionalUnit, ObjectNode
-from ..model.levels import project_node, project_unit
+from ..model.foon import FunctionalUnit
+from ..model.levels import project_unit
 from ..model.where import unit_where
 from .holders import Fate, Place, RelRole, relational_roles
 
@@ -38,24 +38,19 @@ def _reading(rel: RelRole) -> str:
     return _FATE[rel.fate] + _place("out of", rel.source) + _place("into", rel.target)
 
 
-def _at(node: ObjectNode | None, level: int) -> ObjectNode | None:
-    return None if node is None else project_node(node, level)
-
-
 def lost_readings(units: Iterable[FunctionalUnit], level: int, shown: int = 3) -> tuple[str, ...]:
     """For the first `shown` of `units` (level 3, in order) whose objects `level` reads otherwise: `pour at
     FILE:LINE: milk leaves a portion out of the unit's measuring cup ... at level 3, moves whole ... at level 2`
-    (the first such object of the unit); () at level 3. Each object is compared with the level's role of its own
-    projected nodes (the first such), not with the role at its position: equal level-2 nodes kept once leave fewer
-    roles (0003's add at :33 has one bowl for two); an object with no such role is not compared."""
+    (the first such object of the unit); () at level 3. An object is compared with the role at its position in the
+    projected unit (`levels.project_unit` keeps a node per node), and only when that role is of its label: a unit
+    paired otherwise at the level (an output left unpaired) shifts the roles after it, and another object's reading
+    is not its own."""
     if level >= 3:
         return ()
     out: list[str] = []
     for unit in units:
-        coarse = {(r.role.before, r.role.after): r for r in reversed(relational_roles(project_unit(unit, level)))}
-        for a in relational_roles(unit):
-            b = coarse.get((_at(a.role.before, level), _at(a.role.after, level)))
-            if b is None:
+        for a, b in zip(relational_roles(unit), relational_roles(project_unit(unit, level)), strict=False):
+            if a.role.label != b.role.label:  # not one object (roles paired otherwise at the level): not compared
                 continue
             said = _reading(a), _reading(b)
             if said[0] != said[1]:
