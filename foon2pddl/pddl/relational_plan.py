@@ -9,7 +9,10 @@
   the omelette cooked from the egg mixture in the pan), and what the units put into that label (its node drops the labels,
   `without`: the syrup soaked into the cranberries) when the task's units fill
   containers of its label with that label (`holder_flows.gained`: the measuring cup the cream was poured into) and its node
-  is no kitchen node, unless it goes onto an object in that container (the lemon juice the carrot in the salad bowl is
+  is no kitchen node, or one a unit of the task fills with that object's node (`filled_by_task`), a unit FOON's plan as
+  counted fires, in a node it starts no kitchen object in (`relational_reading._moved_whole`: the eggs and bacon
+  pizza's cup the faucet fills at `0085-mini_bacon_egg_breakfast_pizza.txt:231`, in the node another recipe's kitchen
+  cup of water is in), unless it goes onto an object in that container (the lemon juice the carrot in the salad bowl is
   seasoned with: it is still in the bowl, and the bowl still lists it); else it keeps its contents (a carton, a bag, a
   packet: the kitchen stocks them), but one no other unit takes or takes from, fired once (`sole`:
   `relational_reading`), of what goes into a node like its own is emptied: the hamburger's salt `in [bowl]`
@@ -54,8 +57,9 @@ from .holder_flows import Flow, gained, unit_flows
 from .holder_words import listed_as
 from .holders import Fate, RelRole, relational_roles
 
-__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "holding_labels",
-           "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "taken_with", "without"]
+__all__ = ["CONSUMED_STATE", "Slot", "UnitPlan", "called_fills", "consumed_node", "count_roles", "filled_by_task",
+           "holding_labels", "late_emptied", "listings", "plan_unit", "quiet_places", "silent_labels", "taken_with",
+           "without"]
 
 #: The state label of the node a consumed object is counted as leaving to (never a FOON node of the task).
 CONSUMED_STATE = "consumed into a mixture"
@@ -164,11 +168,23 @@ def called_fills(units: Iterable[FunctionalUnit]) -> frozenset[tuple[str, str]]:
     return frozenset((name, x) for u in units for name, lab in unit_aliases(u) for h, x in gained(u) if h == lab)
 
 
+def filled_by_task(units: Iterable[FunctionalUnit], kitchen: frozenset[ObjectNode]
+                   ) -> frozenset[tuple[ObjectNode, ObjectNode]]:
+    """(an object's node, a container's node listing its label) for every two output nodes one of `units` makes
+    together, the object's no kitchen node: a container a unit of the task fills with that object (the faucet's turn
+    on at `0085-mini_bacon_egg_breakfast_pizza.txt:231` makes `water (from [faucet], in [measuring cup])` with
+    `measuring cup (contains {water})`, though a universal FOON's kitchen has that cup too, for the ramen's pour at
+    `0054-quick_ramen_noodles.txt:180`). O(sum of outputs^2)."""
+    return frozenset((a, h) for u in units for a in u.outputs for h in u.outputs
+                     if h != a and a not in kitchen and a.label in listed(h))
+
+
 def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: frozenset[str],
               filled: frozenset[tuple[str, str]], labels: frozenset[str] = frozenset(),
               holding: frozenset[str] = frozenset(), called: frozenset[tuple[str, str]] = frozenset(),
               sole: frozenset[ObjectNode] = frozenset(),
-              lists: frozenset[tuple[str, str]] | None = None, names: Mapping[str, str] | None = None) -> UnitPlan:
+              lists: frozenset[tuple[str, str]] | None = None, names: Mapping[str, str] | None = None,
+              task_filled: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()) -> UnitPlan:
     """The unit's slots in a task whose kitchen nodes are `kitchen`, in which the labels `silent` are holders
     no node says the contents of (`silent_labels`), whose units put contents into holders as `filled`
     says ((holder label, content label), `holder_flows.gained`; module doc), whose nodes have `labels` and place
@@ -176,7 +192,10 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
     `lists`: (holder label, content label) for every label a node of the task lists (`listings`; None: not known,
     every holder the unit does not name may keep a portion); `names`: the task's aliases
     (`holder_words.task_aliases`), through which a place's holder is read against `lists` (`pan`, the cooking pan),
-    as the count reads a late emptying (`late_emptied`)."""
+    as the count reads a late emptying (`late_emptied`); `task_filled`: the (object node, container node)
+    pairs a unit of the task fills (`filled_by_task`), a unit the plan as counted fires, in a node it starts no
+    kitchen object in (`relational_reading._moved_whole`): the whole of the object leaves the container, though the
+    kitchen has that container's node too."""
     names = names or {}
     rels = relational_roles(unit)
     alias = dict(unit_aliases(unit))
@@ -190,7 +209,8 @@ def plan_unit(unit: FunctionalUnit, kitchen: frozenset[ObjectNode], silent: froz
         if fate in (Fate.SPLITS, Fate.CONSUMED) and src is not None and src.role is not None:
             holder = rels[src.role].role
             made_in = any(x.fate is Fate.NEW and x.target is not None and x.target.role == src.role for x in rels)
-            whole = holder.before not in kitchen or (holder.before in sole and r.after == r.role.before)  # (a split)
+            whole = (holder.before not in kitchen or (r.role.before, holder.before) in task_filled  # (a unit filled it)
+                     or (holder.before in sole and r.after == r.role.before))  # (a split)
             if holder.after is None and whole and (holder.label, r.role.label) in filled and not (
                     fate is Fate.CONSUMED and made_in):  # (consumed into what the unit makes there: still in it)
                 fate = Fate.MOVES if fate is Fate.SPLITS else fate  # a container an earlier unit filled, which FOON

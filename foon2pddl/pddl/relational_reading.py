@@ -33,6 +33,7 @@ from .relational_plan import (
     UnitPlan,
     called_fills,
     count_roles,
+    filled_by_task,
     holding_labels,
     listings,
     plan_unit,
@@ -70,6 +71,9 @@ class Reading:
     #: was counted beside it: `counts` with that plan's firings, named by the task's units, to say why the counts are
     #: what they are (`count_reasons`); None where FOON's own plan says it. For the notes only, no part of the task
     explained: InstanceCounts | None = None
+    #: the (object node, container node) pairs a unit of the task the plan as counted fires fills, in a node the plan
+    #: starts no kitchen object in: the whole leaves it (`plan_unit`'s `task_filled`, `_moved_whole`)
+    task_filled: frozenset[tuple[ObjectNode, ObjectNode]] = frozenset()
 
 
 @dataclass(frozen=True)
@@ -141,6 +145,25 @@ def _rest_stays(sole: frozenset[ObjectNode], counted: Sequence[tuple[Foon, Insta
     return frozenset(out)
 
 
+def _moved_whole(fills: frozenset[tuple[ObjectNode, ObjectNode]], counted: Sequence[tuple[Foon, InstanceCounts]]
+                 ) -> frozenset[tuple[ObjectNode, ObjectNode]]:
+    """The pairs of `fills` (`relational_plan.filled_by_task`) that FOON's plan as counted fills: a unit it fires
+    makes both nodes, and it starts no object in the container's node, nor one of the pair's label in a holder of the
+    container's label (else the plan takes the kitchen's stock, which keeps what it lists: the egg noodle's plan
+    pours flour out of the kitchen's spoon of flour at `0030-5_easy_microwave_desserts-chocolate_chip_cookie.txt:45`;
+    read as emptied by the noodles' own pour at `0044-egg_noodles_from_scratch.txt:148`, which the plan does not
+    fire, that spoon is one an action can touch: two objects more in the problem, the plan the same). A pair no unit
+    of the plan fills is left as it was read: of GEN trial 10 goal 57's 626 pairs, 30 (each moved whole, the counts
+    of many units' new roles cost its encoding 4x). O(fills + firings x outputs^2 + fills x kitchen nodes counted)."""
+    made = {(a, h) for net, c in counted for u, k in c.firings if k > 0
+            for a in net.units[u].outputs for h in net.units[u].outputs} & fills
+    for _, c in counted:
+        start = [x for x, k in c.at_node if k > 0]
+        made -= {(a, h) for a, h in made if h in start or any(
+            x.label == a.label and any(p[1] == h.label for p in places(x)) for x in start)}
+    return frozenset(made)
+
+
 def _fired_again(counted: Sequence[tuple[Foon, InstanceCounts]]) -> frozenset[FunctionalUnit]:
     """The units FOON's plan as counted fires more than once. A made object such a unit takes whole from a holder
     no node lists it in (`relational_plan.listings`) is read as a portion again: the second firing takes what the
@@ -200,7 +223,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
     reach with `placed` (`count_together.makers_together`), and the plans with a needed node made by another of its
     makers counted too with `other_makers` (`instance_counts.derive_counts`; without: FOON's own plan unfolded), and a
     container a unit fills in a kitchen node taken again with `refill` (`count_reuse._refilled_with`; another idea
-    than `Reading.filled`, the (holder, content) label pairs the units fill). `memo`: a dict shared by the calls with
+    than `Reading.filled`, the (holder, content) label pairs the units fill). A container a unit of the task fills,
+    in a node the kitchen has too, is emptied whole by a unit taking what it holds when the wide count's plan (no
+    `narrow`, `placed` or other switch) fills it (`_moved_whole`; `Reading.task_filled`): every other count takes
+    that count's pairs as they are, so its counts of the units' other readings stay the ones already derived, and a
+    small count is read as the wide one. `memo`: a dict shared by the calls with
     the same `inp`, `st`, `stated` and `overrides` (counted wide, then small): the units' readings by speakers and
     the counts by plan and kitchen are made once (the same values: read twice, they cost a GEN trial's encoding a
     third more)."""
@@ -213,8 +240,9 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         memo["task"] = (task_nodes, gains, frozenset(n.label for n in task_nodes),
                         holding_labels(f.units[u] for u in units),
                         called_fills(f.units[u] for u in units),  # FOON-GEN's `pan`: the cookware
-                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes, alias), alias)
-    task_nodes, filled, labels, holding, called, once, lists, alias = memo["task"]
+                        _taken_once(f, units, inp.kitchen, gains), listings(task_nodes, alias), alias,
+                        filled_by_task([f.units[u] for u in units], inp.kitchen))
+    task_nodes, filled, labels, holding, called, once, lists, alias, task_filled = memo["task"]
     home = inp.kitchen | narrow if narrow else inp.kitchen  # the kitchen the counts are derived in
 
     def quiet(speakers: Sequence[int]) -> frozenset[str]:
@@ -223,17 +251,19 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = quiet_places(task_nodes, [f.units[u] for u in units], [f.units[u] for u in speakers])
         return memo[key]
 
-    def plan_of(u: int, silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> UnitPlan:
-        key = ("plan", u, silent, sole, u in split)  # `split` matters only by whether it holds `u`: read once
+    def plan_of(u: int, silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int],
+                fills: frozenset[tuple[ObjectNode, ObjectNode]]) -> UnitPlan:
+        key = ("plan", u, silent, sole, u in split, fills)  # `split` matters only by whether it holds `u`: read once
         if key not in memo:
             memo[key] = plan_unit(f.units[u], inp.kitchen, silent, filled, labels, holding, called, sole,
-                                  None if u in split else lists, alias)
+                                  None if u in split else lists, alias, fills)
         return memo[key]
 
-    def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> tuple:  # made once
-        key = ("plans", silent, sole, split)
+    def plans_of(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int],
+                 fills: frozenset[tuple[ObjectNode, ObjectNode]]) -> tuple:  # made once
+        key = ("plans", silent, sole, split, fills)
         if key not in memo:
-            plans, drops = kept_in_place(f, units, {u: plan_of(u, silent, sole, split) for u in units})
+            plans, drops = kept_in_place(f, units, {u: plan_of(u, silent, sole, split, fills) for u in units})
             if "fired" not in memo:  # FOON's own plan as counted, in firing order: the taker it fires first is named
                 found = delete_free_plan(inp.foon, inp.kitchen, inp.candidates, together=True)
                 memo["fired"] = found[0] if found is not None else ()
@@ -243,10 +273,11 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             memo[key] = plans, drops, said, portions, {f.units[u]: p for u, p in plans.items()}
         return memo[key]
 
-    def roles_in(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int]) -> RolesOf:
-        key = ("roles", silent, sole, split, home)  # counted in `home`: read once per unit
+    def roles_in(silent: frozenset[str], sole: frozenset[ObjectNode], split: frozenset[int],
+                 fills: frozenset[tuple[ObjectNode, ObjectNode]]) -> RolesOf:
+        key = ("roles", silent, sole, split, fills, home)  # counted in `home`: read once per unit
         if key not in memo:
-            by_unit, roles = plans_of(silent, sole, split)[4], {}
+            by_unit, roles = plans_of(silent, sole, split, fills)[4], {}
             if ("started", home) not in memo:  # where the kitchen's objects still are: once per counting kitchen
                 memo["started", home] = placed_since_start([f.units[u] for u in units], home, alias)
             if "taken" not in memo:  # (object, holder) node pairs the task's units take together
@@ -292,21 +323,31 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
             counted = [(now, other)] if other.total < counted[0][1].total else counted
         return counted
 
-    def read(speakers: Sequence[int], sole: frozenset[ObjectNode]) -> Reading:
-        silent, split = quiet(speakers), frozenset()
-        while True:  # two fixpoints at once: a kitchen container a unit the plan fires again takes, or another
+    def read(speakers: Sequence[int], sole: frozenset[ObjectNode],
+             fills: frozenset[tuple[ObjectNode, ObjectNode]] | None = None, fixed: bool = False) -> Reading:
+        silent, split, opened, fills = quiet(speakers), frozenset(), fills is not None, fills or frozenset()
+        while True:  # three fixpoints at once: a kitchen container a unit the plan fires again takes, or another
             # takes from, leaves the rest where it stays (`sole` shrinks); a made object a unit fired again takes whole
-            # from a holder no node lists it in is a portion (`split` grows)
-            plans, drops, said, portions, _ = plans_of(silent, sole, split)
-            roles_of = roles_in(silent, sole, split)
+            # from a holder no node lists it in is a portion (`split` grows); a container a unit of the task fills
+            # is emptied whole only while the plan as counted fires that unit and starts no kitchen object in its node
+            # (`fills` shrinks, `_moved_whole`; not when `fixed`: the wide count's pairs)
+            plans, drops, said, portions, _ = plans_of(silent, sole, split, fills)
+            roles_of = roles_in(silent, sole, split, fills)
             counted = counted_by(roles_of)
-            again = _rest_stays(sole, counted)
+            again, stocked = _rest_stays(sole, counted), frozenset() if fixed else fills - _moved_whole(fills, counted)
             fired = _fired_again(counted)  # a made object it takes whole from a holder no node lists it in: a portion
             more = frozenset(u for u in units if u not in split and f.units[u] in fired
-                             and plan_of(u, silent, sole, split) != plan_of(u, silent, sole, split | {u}))
-            if not again and not more:
-                break
-            sole, split = sole - again, split | more  # `sole` shrinks, `split` grows: at most |sole| + |units| rounds
+                             and plan_of(u, silent, sole, split, fills) != plan_of(u, silent, sole, split | {u}, fills))
+            if not again and not more and not stocked:
+                if opened:
+                    break
+                # read first with no pair moved whole, then only the pairs the plan so counted fills: GEN trial 10
+                # goal 57 has 626 pairs, 30 of them filled by its plan; all of them whole at first, then shrinking,
+                # derived 49 counts for its 6 compiles where 30 were derived before (each whole pair changes the
+                # roles of many units); so 32
+                opened, fills = True, _moved_whole(task_filled, counted)
+                continue  # read with them: where they change no unit's roles, the counts are memo hits (`_asking`)
+            sole, split, fills = sole - again, split | more, fills - stocked  # at most |sole| + |units| + |fills| rounds
         counts = counted[0][1].widest(counted[1][1]) if len(counted) > 1 else counted[0][1]
         if narrow is not None and through:  # counted in `st.through`: its plan named by the task's unit indexes
             counts = counts.renumbered(st.in_task)
@@ -318,9 +359,14 @@ def read_units(inp: LevelInputs, st: Stitched, scene: Sequence[SceneObject], sta
         acting = {f.units[u] for u in kept}
         return Reading(kept, silent, plans, tuple(d for d in drops if d[3] in acting), roles_of, counts, have, filled,
                        tuple(said[u] for u in kept if u in said), tuple(portions[u] for u in kept if u in portions),
-                       sole, explained)
+                       sole, explained, fills)
 
-    first = read(units, once)
+    standard = narrow is None and not placed and other_makers and refill  # the wide count every other one follows
+    if not standard and "fills" not in memo:  # the pairs the wide count's plan fills: read once per memo, whichever
+        read_units(inp, st, scene, stated, overrides, memo=memo)  # count is asked first (the same pairs each time)
+    first = read(units, once, None if standard else memo["fills"], not standard)
     if quiet(first.units) != first.silent:
-        return read(first.units, first.sole)
+        first = read(first.units, first.sole, first.task_filled, not standard)
+    if standard:
+        memo["fills"] = first.task_filled
     return first
