@@ -214,8 +214,8 @@ def _outward(x: str, fixed: set[str], before: dict[str, ObjectState],
 @dataclass(frozen=True)
 class _Moves:
     """Where a step moves things (`_moved`): each move said (`x from h into g`), where each goes, the holders the
-    moves name, the objects first taken out of a holder the unit does not list, the holders lifted to pour from,
-    and what the step makes that is no portion."""
+    moves name, the objects first taken out of a holder the unit does not list, the holders lifted off their place
+    (something leaves them by the step), and what the step makes that is no portion."""
 
     said: tuple[str, ...]
     dests: tuple[str | None, ...]
@@ -228,8 +228,8 @@ class _Moves:
 def _moved(step: TraceStep, before: dict[str, ObjectState], after: dict[str, ObjectState]) -> _Moves:
     """The first rule of where a thing is said: what changes holder, from where, into what. A portion made of a
     surviving object (`m (a portion of s) from h into g`), each bound object whose holder changes, a holder the
-    unit does not list left first (`take x out of fridge_1`), and a holder something is poured out of that
-    leaves its place for none, lifted (`take squeezer_1 off surface_1`). O(bindings)."""
+    unit does not list left first (`take x out of fridge_1`), and a holder something leaves (poured out, or used
+    up in it) that itself leaves its place for none, lifted (`take squeezer_1 off surface_1`). O(bindings)."""
     made = [b.object for b in step.bindings if b.before is None]
     moves, dests, holders, taken = [], [], set(), []
     listed = {b.object for b in step.bindings if b.role}  # the objects the unit names
@@ -245,7 +245,7 @@ def _moved(step: TraceStep, before: dict[str, ObjectState], after: dict[str, Obj
     for b in step.bindings:
         x, was, now = b.object, before[b.object], after[b.object]
         if b.before is not None and was.holder != now.holder and not now.consumed:
-            if was.holder and now.holder is None and x in poured_from:  # lifted to pour from, not itself poured
+            if was.holder and now.holder is None and x in poured_from:  # lifted to work from, not itself poured
                 lifted.append((x, f"take {x} {'out of' if was.relation is Relation.IN else 'off'} {was.holder}"))
                 holders.add(was.holder)
                 continue
@@ -309,9 +309,9 @@ def step_words(step: TraceStep, before: dict[str, ObjectState], after: dict[str,
     holder the unit does not list (a scene's fridge or shelf: where it is kept, not what the unit pours from)
     is taken out first: `take sugar_1 out of fridge_1, pour it into pitcher_1`. A holder the unit lists, or any
     holder of an object whose node names a place (`sandwich (in [pan])` lifted from a skillet), stays the motion's
-    `from`. A holder something is poured out of that itself leaves its place for none (FOON's output
-    `squeezer (dirty)` no longer `on [surface]`) is lifted to pour from, not poured: `take squeezer_1 off
-    surface_1, pour orange_juice_1 from squeezer_1 into drinking_glass_1`.
+    `from`. A holder something leaves (poured out of it, used up in it) that itself leaves its place for none (FOON's
+    output `squeezer (dirty)` no longer `on [surface]`) is lifted, not poured: `take squeezer_1 off surface_1, pour
+    orange_juice_1 from squeezer_1 into drinking_glass_1`; `take pot_1 off stove_2, drain pot_1, using up water_1`.
     """
     moved = _moved(step, before, after)
     made, moves, taken, lifted = list(moved.made), list(moved.said), moved.taken, moved.lifted
