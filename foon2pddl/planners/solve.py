@@ -174,8 +174,11 @@ def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCOD
     competes with the first makers' one and the fewest-counting is kept, `instance_counts.derive_counts`, so it may
     be the wide task again: tests/test_relational_placed_gate.py) is planned within what is left, and a note says so; its outcome is kept only when it solves (a plan the relational
     replay rejects, or none, leaves the outcome naming the units out of holder reach). The counts share one memo
-    (`compile_goal`'s `memo`): the network is read, each distinct count derived, and each distinct wide task encoded
-    and planned, once per call (a count equal to the wide one gives that task: `encode_relational`).
+    (`compile_goal`'s `memo`): the network is read, and each distinct count derived, encoded and planned, once per
+    call (a count asked for again is the same object, `relational_objects.task_objects`, encoded once by
+    `encode_relational`: the narrow count that is the one through the stitches, FOON's own plan unfolded or makers by
+    holder reach counting as the wide count, are that task: `plan` compares tasks by identity, FOON's own plan's by
+    its objects).
     """
     if planner == DEFAULT_PLANNER and planner_cmd is None:
         from . import fd
