@@ -30,13 +30,13 @@ def test_a_level_2_dish_without_a_plan_says_what_level_2_reads_otherwise():
     assert three.exit_code == 0 and "solved" in three.stderr  # the hint is true: level 3 plans it
 
 
-
 def test_each_object_is_compared_with_its_own_level_2_reading():
-    """A unit whose equal level-2 nodes are kept once has fewer roles at level 2 than at level 3; comparing the two
-    lists position by position paired an object with another's reading: 0005's sprinkle at :149 said `bowl stays at
-    level 3, moves whole out of the unit's bowl into whichever bean mix at level 2` (the salt's reading given to the
-    bowl), its pick-and-place at :457 `bread is consumed ... at level 3, is made into whichever cutting board at level
-    2` (the sandwich's). Each object is compared with the level-2 role of its own projected nodes."""
+    """Each object is compared with its own level-2 role: the one at its position in the projected unit, of its label
+    (`levels.project_unit` keeps a node per node since 494e862). Before, equal level-2 nodes were kept once, a unit
+    had fewer roles at level 2, and position paired an object with another's reading: 0005's sprinkle at :149 said
+    `bowl stays at level 3, moves whole out of the unit's bowl into whichever bean mix at level 2` (the salt's reading
+    given to the bowl), its pick-and-place at :457 `bread is consumed ... at level 3, is made into whichever cutting
+    board at level 2` (the sandwich's)."""
     from foon2pddl.io.files import load
     from foon2pddl.pddl.level_readings import lost_readings
 
