@@ -26,6 +26,17 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
     return outcome
 
 
+def rejected_plan(foon: Foon, kitchen: Kitchen, goal: Goal, where: str, **options):
+    """The `relational` plan of `goal`, asserted physically wrong: the planner found one, no count `plan` tries gave a
+    right one (status `error`), and every step the physical replay rejects is FOON's unit `where` (`file:line`, the
+    file's name), as `consumed-elsewhere` (FOON's words there contradict each other about a holder, issue 21)."""
+    outcome = plan(foon, kitchen, goal, "relational", **options)
+    assert outcome.status == "error" and outcome.rejected, outcome.message
+    for problem in outcome.rejected:
+        assert f"/{where}: step " in problem and problem.endswith("[consumed-elsewhere]"), problem
+    return outcome
+
+
 def alone_roles(kitchen: frozenset[ObjectNode]) -> Callable[[FunctionalUnit], tuple[Role, ...]]:
     """The relational reading of each unit alone from `kitchen` (`relational_plan.plan_unit`: nothing silent, nothing
     stitched), as the roles `instance_counts.derive_counts` and `count_order` take (`count_roles`)."""
@@ -88,6 +99,12 @@ def clean_dish_plan(path: Path):
     """`clean_plan` of a recipe file's (first) dish from its default kitchen, 60 s."""
     foon, goal = dish_goal(path)
     return clean_plan(foon, default_kitchen(foon), goal, time_limit=60)
+
+
+def rejected_dish_plan(path: Path, where: str):
+    """`rejected_plan` of a recipe file's (first) dish from its default kitchen, 60 s, at its unit `where` (a line)."""
+    foon, goal = dish_goal(path)
+    return rejected_plan(foon, default_kitchen(foon), goal, f"{path.name}:{where}", time_limit=60)
 
 
 def instances_objects(path: Path) -> int:

@@ -839,12 +839,14 @@ def test_what_a_step_uses_up_goes_onto_a_container_it_is_made_on():
 
 def test_the_objects_account_says_a_soiled_tool_with_with_too():
     """The relational account under the tree had the same reading: `peel cucumber_1, peeler_1`, `cut lemon_1,
-    knife_1 with cutting_board_1` (the greek salad of the shared subgraphs); a tool the step only soils is one the
-    step uses, as in the recipe words above."""
-    r = run("plan", SUBGRAPHS / "ACT-0034-greek_salad.txt", "--goal", "greek salad")
+    knife_1 with cutting_board_1` (the greek salad of the shared subgraphs, whose plan the physical replay now
+    rejects: issue 21; the coleslaw peels and chops as it does); a tool the step only soils is one the step uses, as
+    in the recipe words above."""
+    r = run("plan", SUBGRAPHS / "0022-better_than_kfc_coleslaw.txt", "--goal", "coleslaw")
     assert r.exit_code == 0, r.stderr
     account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
-    assert any(line.endswith("peel cucumber_1 with peeler_1") for line in account), account
+    assert any(line.endswith("peel carrot_1 with peeler_1") for line in account), account
+    assert any(line.endswith("chop onion_1 with knife_1") for line in account), account
     assert not any(", peeler_1" in line or ", knife_1 with" in line for line in account), account
 
 
@@ -955,13 +957,15 @@ def test_the_objects_account_says_a_pan_and_what_it_cooks_as_contents_and_place(
 
 
 def test_no_objects_account_line_runs_two_parts_together():
-    """The greek salad of the shared subgraphs, whose account had both glitches above."""
+    """The greek salad of the shared subgraphs had both glitches above; its plan the physical replay now rejects
+    (issue 21), and the tomato soup's last steps move an ingredient into the bowl of the soup they change."""
     import re
 
-    r = run("plan", SUBGRAPHS / "ACT-0034-greek_salad.txt", "--goal", "greek salad")
+    r = run("plan", SUBGRAPHS / "0011-easy_tomato_soup.txt", "--goal", "tomato soup")
     assert r.exit_code == 0, r.stderr
     account = r.stdout.split("objects, step by step (relational encoding):")[1].splitlines()
-    assert account[-1] == "41. pick-and-place feta_cheese_2 from spoon_1 into bowl_4, changing greek_salad_1"
+    assert account[-1] == ("24. sprinkle coriander_2 (a portion of coriander_1) from container_1 into bowl_3, "
+                           "changing tomato_soup_1")
     assert not [line for line in account if re.search(r"(into|onto) \w+_\d+ \w+_\d+|-> *$|->  ", line)]
 
 # -- -o: one convention for every output ---------------------------------------------------------------

@@ -60,7 +60,7 @@ def test_reported_label_mismatches_are_aliases():
 
 
 def test_holder_kinds_leave_out_the_binding_kinds():
-    assert K.STATE_MISMATCH not in HOLDER_KINDS and K.MISPLACED in HOLDER_KINDS and len(HOLDER_KINDS) == 11
+    assert K.STATE_MISMATCH not in HOLDER_KINDS and K.MISPLACED in HOLDER_KINDS and len(HOLDER_KINDS) == 12
 
 
 def test_nested_contents_cover_the_list_and_mixtures_absorb_what_sat_on_them():

@@ -5,16 +5,18 @@ takes `bowl (contains {lettuce, crouton, salad dressing})`, which the mix at `:3
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from node_words import contains, inside, n
-from relational_checks import clean_dish_plan, clean_unit_plan, instances_objects
+from relational_checks import dish_goal, instances_objects, rejected_dish_plan
 
 from foon2pddl.model.foon import Foon, FunctionalUnit, Motion
 from foon2pddl.model.goal import Goal, GoalSpec
-from foon2pddl.model.kitchen import Kitchen
+from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.input_stitch import stitches
+from foon2pddl.planners.solve import plan
 
 DATA = Path(__file__).parent / "data" / "foon-subgraphs"
 
@@ -58,14 +60,24 @@ def test_the_salad_is_mixed_once_in_one_bowl():
     # FOON's own plan fires the pour twice (the mix moves one bowl on, the sprinkle takes another as poured)
     labels = sorted(x.label for x in small.task.instances)
     assert labels.count("lettuce") == 1 and labels.count("dressing") == 1
-    outcome = clean_unit_plan(UNITS, KITCHEN, SALAD)
+    # FOON's last mix takes the salad mix `in [bowl]` and makes the salad `in [bowl]`, listing neither in the
+    # other's bowl: the plan mixes the salad mix left in the first bowl into a salad made in another, physically
+    # wrong (issue 21): the replay rejects it there, and every step before replays right
+    outcome = plan(Foon(UNITS), Kitchen(frozenset(KITCHEN)), goal, "relational")
     assert [s.unit.motion.label for s in outcome.trace.steps] == ["pour", "mix", "sprinkle", "mix"]
+    assert outcome.status == "error"
+    (problem,) = outcome.rejected
+    assert re.fullmatch(r"step 4: mix: salad_mix_1 is consumed in (bowl_\d+), but the step makes caesar_salad_1 in "
+                        r"(?!\1)bowl_\d+ \[consumed-elsewhere\]", problem), problem
 
 
 def test_the_caesar_salad_makes_its_dressing_once():
     # counted as FOON's plan fires it, the dressing's blender chain (`:1` to `:199`) fired twice: 44 objects in the
-    # problem, `instances` 37
+    # problem, `instances` 37. Its plan mixes the salad mix in another bowl than the salad's (`:367`, issue 21)
+    # (the small count's plan, and the wide one's tried after it, too)
     path = DATA / "ACT-0080-caesar_salad.txt"
-    outcome = clean_dish_plan(path)
-    assert len(outcome.task.objects) <= instances_objects(path)
-    assert [x.label for x in outcome.task.instances].count("salad dressing") == 1
+    rejected_dish_plan(path, "367")
+    foon, goal = dish_goal(path)
+    small = compile_goal(foon, default_kitchen(foon), goal, "relational", narrow=True).task
+    assert len(small.objects) <= instances_objects(path)
+    assert [x.label for x in small.instances].count("salad dressing") == 1

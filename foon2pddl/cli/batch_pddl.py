@@ -119,7 +119,8 @@ def plan_batch(view, entries, encoding: str, level: int, table_fmt: str, tree_fm
         with slow_step(f"planning goal {len(rows) + 1} of {len(entries)}: {goal.describe()!r}"):
             outcome = plan(view.foon, view.kitchen, goal, encoding, level, **plan_options)
             why, _ = failure_reason(outcome.status, encoding, outcome.task, view.foon, view.kitchen, goal,
-                                    Constraints(), plan_options.get("instances", ()))
+                                    Constraints(), plan_options.get("instances", ()), rejected=outcome.rejected,
+                                    notes=outcome.decoded.notes if outcome.decoded is not None else ())
         tree = outcome.tree if outcome.status == "solved" else None
         reason = "" if tree is not None else outcome.message or outcome.result.message
         reason += "" if why is None else ": " + why

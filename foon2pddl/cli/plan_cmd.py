@@ -231,7 +231,8 @@ def plan_(paths, goal, goals_file, goal_file, kitchen, utensils, containment, en
                  else slow_step(f"finding why there is no plan for {target.describe()!r}"))
     with searching:
         reason, makes = failure_reason(status, encoding, outcome.task, foon, kit, target, cons, counts,
-                                       net.foon if NETWORKS[network].as_read else None)
+                                       net.foon if NETWORKS[network].as_read else None, rejected=outcome.rejected,
+                                       notes=outcome.decoded.notes if outcome.decoded is not None else ())
     hinted = explained(status, encoding) and NETWORKS[network].as_read and not cons.items and not makes
     if fmt == "json":
         hints = hint_words(hint_lines(net, kit, single_goal(goal), goal_file, level)) if hinted else []

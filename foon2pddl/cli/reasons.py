@@ -11,6 +11,7 @@ fixpoint, which also "makes" a dish from other categories' ingredients.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 
@@ -142,6 +143,20 @@ def unsupported_reason(task) -> str | None:
     return "; ".join(said) or None
 
 
+def rejected_reason(problems: tuple[str, ...], notes: tuple[str, ...]) -> str:
+    """Why a found plan is no answer: the physical replay rejects it (`problems`, shown on the status line) and no
+    count had a right one. Names the first problem's FOON unit (`file:line`) and its label-mismatch `notes` on the
+    objects the replay names (else all of them): a recipe that contradicts itself, not a planner that failed."""
+    where = problems[0].split(": step ", 1)[0] if ": step " in problems[0] else ""
+    said = [n.split(f"{where}: ", 1)[1] for n in notes if where and f"{where}: " in n]
+    named = {x.replace("_", " ") for p in problems if p.startswith(where) for x in re.findall(r"([a-z][\w-]*?)_\d+", p)}
+    said = [n for n in said if n.split(" is ", 1)[0] in named] or said  # the words on the objects the replay names
+    return ("the planner found a plan, but replayed object by object it is physically wrong (docs/pddl.md, Physical "
+            "checks), and no count `plan` tried had a physically right one" + (
+                f"; FOON's words at {Path(where).name} contradict each other: " + "; ".join(said) if said
+                else f"; at {Path(where).name}" if where else ""))
+
+
 def foreign_reason(status, encoding: str) -> str | None:
     """Why an encoding that is not FOON's semantics (`state`, `ocp`: one object per label, deletes) has no plan,
     where FOON's reason would not apply; None for the other encodings and for a plan or an error."""
@@ -157,17 +172,20 @@ def foreign_reason(status, encoding: str) -> str | None:
 
 
 def failure_reason(status, encoding: str, task, foon, kitchen, goal, cons,
-                   instances: tuple[tuple[str, int], ...] = (), full=None) -> tuple[str | None, bool]:
+                   instances: tuple[tuple[str, int], ...] = (), full=None, rejected: tuple[str, ...] = (),
+                   notes: tuple[str, ...] = ()) -> tuple[str | None, bool]:
     """(the `reason:` of a planner's answer without a plan, whether FOON's semantics makes the goal): one decision
-    for a single `plan` and each row of a batch. FOON's reason (`why_unsolvable`) where `explained`; for a planner
-    error, what the encoding needs of a planner; for `state`/`ocp`, `foreign_reason` where FOON's semantics makes
-    the goal, else FOON's reason; None (nothing to add) otherwise."""
+    for a single `plan` and each row of a batch. FOON's reason (`why_unsolvable`) where `explained`; for a plan the
+    physical replay rejects (`rejected`: `PlanOutcome.rejected`), where and what FOON's words say there
+    (`rejected_reason`, from the outcome's `notes`); for another error, what the encoding needs of a planner; for
+    `state`/`ocp`, `foreign_reason` where FOON's semantics makes the goal, else FOON's reason; None (nothing to add)
+    otherwise."""
     from ..status import PlanStatus
 
     if explained(status, encoding):
         return why_unsolvable(foon, kitchen, goal, cons, encoding, instances, full)
     if status == PlanStatus.ERROR:
-        return unsupported_reason(task), True
+        return (rejected_reason(rejected, notes) if rejected else unsupported_reason(task)), True
     if (foreign := foreign_reason(status, encoding)) is None:
         return None, True
     fails, makes = why_unsolvable(foon, kitchen, goal, cons, encoding, instances, full)

@@ -18,7 +18,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["STATUSES", "PlanResult", "parse_plan_text", "run_planner", "step_action", "cleanup", "commands", "decode",
            "copies", "executable", "external", "fd", "fd_reuse", "fd_speedups", "foon_places", "goal_replanner", "instance_physical",
-           "physical_replay", "process", "registry", "replay_findings", "result", "sas", "solve", "trace_check", "translate_server", "translator", "up_engine"]
+           "physical_replay", "process", "registry", "replay_findings", "replay_where", "result", "sas", "solve", "trace_check", "translate_server", "translator", "up_engine"]
 
 #: The default planner (`planners.registry.PLANNERS`); unregistered names are unified-planning engines.
 DEFAULT_PLANNER = "fd"

@@ -54,7 +54,20 @@ own words, never with an encoding's facts (it is the oracle that checks them).
 * a bound object whose node (before or after) names `in [C]` while the step binds objects labelled C as
   roles or chosen holders (not a board an effect emptied, nor one it makes, for a node from before it) is in one
   of those (`HOLDER_NOT_BOUND`: a plan defrosts bowl_7 in the microwave while the salmon sits in bowl_2), unless
-  `trace.gaps` reports C's or the holder's pair (the unit's only bowl lists its contents without the onion).
+  `trace.gaps` reports C's or the holder's pair (the unit's only bowl lists its contents without the onion);
+* where the step does its work (`replay_where`), read off holders and bindings alone (no FOON list), so it
+  holds for `trace.gaps`' pairs too, where the encoding binds the holder late. An object the step consumes is in the holder of an object
+  the step makes (or on a mixture it consumes there; `CONSUMED_ELSEWHERE`: 0050's mix at level 2 made the egg
+  mixture in bowl_1 of the milk in bowl_2), unless it stood free, the step makes nothing held, or the step brings
+  it there: it rests on its holder (the slice lifted onto the sandwich), or the unit names a holder of its
+  holder's label besides where it makes its products (the measuring cup of a pour and stir, or a second bowl).
+  Any other object the step changes, in a holder of label C, while the step changes objects labelled C that it
+  binds as roles or chosen holders (the bowl a pour empties), is in a C it binds so too (`HOLDER_NOT_BOUND`
+  for work in place or used up, `WRONG_SOURCE` for a move: the unit empties bowl_1 while the milk leaves bowl_2);
+  where anything arrives, and what holds that, is no such C, and a bowl the step binds and leaves as it is says
+  nothing of where the work is (`ACT-0003-blueberry_muffin.txt:220` names a bowl of batter and pours the
+  blueberry from its own). Exempt, as for a source: the undescribed initial holder. Reported once per step, kind
+  and object.
 
 FOON's names are read through the trace's aliases (`salad` for `carrot salad`), and a node a step sets also
 through that step's own (`TraceStep.aliases`: the club sandwich's `toothpick (in [sandwich])`).
@@ -73,6 +86,7 @@ from ..model.physical import ObjectState, PhysicalTrace, Relation, TraceStep
 from ..model.places import describes_contents, listed, places
 from .foon_places import container_labels, step_source
 from .replay_findings import Disagreement, DisagreementKind, ReplayReport
+from .replay_where import where_done
 
 __all__ = ["replay"]
 
@@ -113,6 +127,11 @@ class _Replay:
 
     def listed(self, node: ObjectNode | None, oid: str | None = None) -> frozenset[str]:
         return frozenset(self.reading(oid).get(x, x) for x in listed(node))
+
+    def kept(self, oid: str, state: ObjectState) -> bool:
+        """Still in the holder a start state put it in while its node named no place (the scene's fridge)."""
+        first = self.initial[oid]
+        return state.holder == first.holder and not self.places(first.node, oid)
 
     def stands_for(self, oid: str) -> frozenset[str]:
         return self.absorbed.get(oid, frozenset()) | {self.label[oid]}
@@ -248,15 +267,15 @@ class _Replay:
             if h is not None and after[b.object].holder != h and self.label[b.object] in self.listed(after[h].node, h):
                 self.stale[(h, self.label[b.object])] = (after[h].node, k)
         self._holders_bound(step, before, after, add)
+        said = {(d.kind, d.objects[0]) for d in self.found if d.step == k}
+        where_done(step, before, after, self.label, self.kept, lambda n, o: {c for _, c in self.places(n, o)}, said, add)
         self._absorb(step, before, after)
 
     def _moves(self, oid, node_before, before, after, bound, add, prior) -> None:
         was, now = before[oid], after[oid]
         if was.holder == now.holder:
             return
-        first = self.initial[oid]
-        scene = was.holder == first.holder and not self.places(first.node, oid)
-        if was.holder is not None and not scene:
+        if was.holder is not None and not self.kept(oid, was):
             h, n = self.label[was.holder], node_before or was.node  # in the words of the step that set it, or this one's
             named = {c for _, c in self.places(n, oid)} | {prior.get(c, c) for _, c in places(n)}
             if h not in named and not self.stands_for(oid) & self.gaps.get(h, frozenset()):  # as for placement

@@ -27,6 +27,7 @@ class DisagreementKind(StrEnum):
     WRONG_SOURCE = "wrong-source"
     UNBOUND_TARGET = "unbound-target"
     HOLDER_NOT_BOUND = "holder-not-bound"
+    CONSUMED_ELSEWHERE = "consumed-elsewhere"
 
 
 #: Kinds about where objects are (holders, placements, contents, pour sources and targets); the others are

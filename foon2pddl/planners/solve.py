@@ -104,6 +104,14 @@ class PlanOutcome:
         return self.decoded.validation if self.decoded is not None else None
 
     @property
+    def rejected(self) -> tuple[str, ...]:
+        """The physical replay's words on a plan the planner found and the replay rejects, first problem first
+        (empty otherwise): a plan that is physically wrong (`physical_replay`), not a planner that failed."""
+        d = self.decoded if self.result.solved else None
+        found = d.trace_check if d is not None and d.plan_check.ok else None
+        return () if found is None or found.ok else found.problems
+
+    @property
     def message(self) -> str:
         """Why there is no valid tree (empty when there is one)."""
         if self.decode_error:
