@@ -10,6 +10,7 @@ from foon2pddl.model.foon import Foon, FunctionalUnit, ObjectNode
 from foon2pddl.model.goal import Goal, GoalSpec, resolve_goal, spec_of_node
 from foon2pddl.model.kitchen import Kitchen, default_kitchen
 from foon2pddl.model.pairing import Role
+from foon2pddl.model.where import beyond_foon
 from foon2pddl.pddl.compile import compile_goal
 from foon2pddl.pddl.relational_plan import count_roles, plan_unit
 from foon2pddl.planners import solve
@@ -27,13 +28,19 @@ def clean_plan(foon: Foon, kitchen: Kitchen, goal: Goal, **options):
 
 
 def rejected_plan(foon: Foon, kitchen: Kitchen, goal: Goal, where: str, **options):
-    """The `relational` plan of `goal`, asserted physically wrong: the planner found one, no count `plan` tries gave a
-    right one (status `error`), and every step the physical replay rejects is FOON's unit `where` (`file:line`, the
-    file's name), as `consumed-elsewhere` (FOON's words there contradict each other about a holder, issue 21)."""
-    outcome = plan(foon, kitchen, goal, "relational", **options)
+    """The `relational` plan of `goal` from `plan`'s counts alone (`solve.plan_counted`), asserted physically wrong:
+    the planner found one, no count gave a right one (status `error`), and every step the physical replay rejects is
+    FOON's unit `where` (`file:line`, the file's name), as `consumed-elsewhere` (FOON's words there contradict each
+    other about a holder, issue 21). `plan` itself then falls back to an assumed transfer: asserted solved,
+    replay-clean, each step beyond FOON naming `where`, and the note once."""
+    outcome = solve.plan_counted(foon, kitchen, goal, "relational", **options)
     assert outcome.status == "error" and outcome.rejected, outcome.message
     for problem in outcome.rejected:
         assert f"/{where}: step " in problem and problem.endswith("[consumed-elsewhere]"), problem
+    fallback = clean_plan(foon, kitchen, goal, **options)
+    beyond = [u for u in fallback.tree.units if beyond_foon(u)]
+    assert beyond and all(beyond_foon(u).endswith(f"/{where}") for u in beyond)
+    assert len([n for n in fallback.decoded.notes if n.startswith("transfer: beyond FOON")]) == 1
     return outcome
 
 

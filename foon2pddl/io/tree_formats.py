@@ -19,6 +19,7 @@ from ..errors import FoonError, MissingDependencyError, UsageError
 from ..model.foon import FunctionalUnit, ObjectNode
 from ..model.kitchen import Kitchen
 from ..model.tasktree import TaskTree
+from ..model.where import beyond_foon
 from ..model.words import count
 from .jsonio import node_to_dict
 from .recipe_words import PLACE_WORDS, recipe_text, surfaces
@@ -115,8 +116,15 @@ def _numbered(tree: TaskTree, used: list[ObjectNode] | None, say) -> str:
         lines.append("from the kitchen: " + ("; ".join(n.describe() for n in used) or "nothing"))
     if not tree.units:
         lines.append("nothing to do: the goal is already available")
-    lines += [f"{i}. {say(u)}" for i, u in enumerate(tree.units, start=1)]
+    lines += [f"{i}. {say(u)}{_beyond(u)}" for i, u in enumerate(tree.units, start=1)]
     return "\n".join(lines) + "\n"
+
+
+def _beyond(unit: FunctionalUnit) -> str:
+    """` (beyond FOON: ...)` after an assumed transfer unit's step (`model.where.beyond_foon`), else nothing."""
+    where = beyond_foon(unit)
+    return f" (beyond FOON: poured over for FOON's unit at {where}, whose words leave it in another holder)" \
+        if where else ""
 
 
 def _recipe(tree: TaskTree, used: list[ObjectNode] | None) -> str:
@@ -150,7 +158,7 @@ def _json(tree: TaskTree, used: list[ObjectNode] | None) -> str:
         "level": tree.level,
         "units": len(tree.units),
         "steps": [
-            {"step": i, "text": step_text(u), "motion": u.motion.label,
+            {"step": i, "text": step_text(u) + _beyond(u), "motion": u.motion.label,
              "inputs": [node_to_dict(n) for n in u.inputs],
              "outputs": [node_to_dict(n) for n in u.outputs]}
             for i, u in enumerate(tree.units, start=1)

@@ -14,7 +14,11 @@ from pathlib import Path
 
 from .foon import FunctionalUnit, Source
 
-__all__ = ["short_path", "shown_path", "source_where", "unit_where"]
+__all__ = ["TRANSFER_SOURCE", "beyond_foon", "short_path", "shown_path", "source_where", "unit_where"]
+
+#: The source path of an assumed transfer unit (`pddl.transfer`): its url is the `FILE:LINE` of the unit it serves.
+TRANSFER_SOURCE = "assumed-transfer"
+
 
 @lru_cache(maxsize=4096)
 def short_path(path: str) -> str:
@@ -47,3 +51,10 @@ def source_where(src: Source, path: Callable[[str], str] = shown_path) -> str:
     """`FILE:LINE` of one source, then ` (expanded from X)` for a FOON-EXP copy, which shares its original's line
     (PDDL comments and count reasons: one file:line must not read as two units); `path` as `unit_where`'s."""
     return f"{path(src.path)}:{src.line}" + (f" (expanded from {src.expanded_from})" if src.expanded_from else "")
+
+
+def beyond_foon(unit: FunctionalUnit) -> str:
+    """The `FILE:LINE` of the FOON unit an assumed transfer unit (`pddl.transfer`) pours an ingredient over for;
+    empty for any other unit (the words a plan's step and its JSON add: the step is beyond FOON)."""
+    src = unit.source
+    return src.url or "?" if src is not None and src.path == TRANSFER_SOURCE else ""

@@ -32,12 +32,15 @@ from ..pddl.render import render
 from ..pddl.restore import fewer, returns, with_restore
 from ..pddl.split_actions import Split, split
 from ..pddl.task import PlanningTask
+from ..pddl.transfer import transfer_network
 from ..status import PlanStatus
 from . import DEFAULT_PLANNER, PlanResult, run_planner
 from .copies import busy
 from .decode import Decoded, PlanDecodeError, check, finished, plan_tree
+from .physical_replay import replay
+from .replay_findings import DisagreementKind
 
-__all__ = ["PHASES", "PlanOutcome", "outcome_of", "plan", "plan_restoring"]
+__all__ = ["PHASES", "PlanOutcome", "outcome_of", "plan", "plan_counted", "plan_restoring"]
 
 #: The planner named by the outcome of a goal that constraints exclude (nothing was planned).
 EXCLUDED = "constraints"
@@ -144,13 +147,38 @@ def outcome_of(result: PlanResult, compiled: Compiled, goal: Goal, kitchen_nodes
     return PlanOutcome(result, compiled, decoded, timings=timings)
 
 
-def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
-         planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
-         time_limit: float | None = None, prune: bool = True, costs: str | None = None,
-         rates: Rates | None = None, category_index: CategoryIndex | None = None,
-         up_validate: bool = False, constraints: Constraints | None = None, search=None,
-         instances: tuple[tuple[str, int], ...] = (),
-         categories: tuple[tuple[str, tuple[str, ...]], ...] = (), cpu_limit: float | None = None) -> PlanOutcome:
+def plan(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3,
+         **options) -> PlanOutcome:
+    """`plan_counted` (its doc: the counts tried, in order); when the plan of every count it tried is one the physical
+    replay rejects, and only as `consumed-elsewhere` at units whose words leave an ingredient in another holder than
+    the one they make their product in (`pddl.transfer`), the network with an assumed transfer unit per such
+    ingredient (`pour`, source `assumed-transfer:K`, beyond FOON) is planned once more, with the same options, and
+    kept when it solves, with a note naming the units (issue 21: a physically right plan that says what FOON left out,
+    rather than `error`). Any other outcome is `plan_counted`'s, unchanged."""
+    outcome = plan_counted(foon, kitchen, goal, encoding, level, **options)
+    if encoding != "relational" or outcome.status != PlanStatus.ERROR or not outcome.rejected or outcome.trace is None:
+        return outcome
+    found = replay(outcome.trace).disagreements
+    if not found or any(d.kind is not DisagreementKind.CONSUMED_ELSEWHERE for d in found):
+        return outcome
+    wheres = sorted({d.source for d in found})
+    augmented, added = transfer_network(foon, wheres)
+    if not added:
+        return outcome
+    again = plan_counted(augmented, kitchen, goal, encoding, level, **options)
+    if again.status != PlanStatus.SOLVED:
+        return outcome
+    return _noted(again, f"transfer: beyond FOON, {count(added, 'assumed pour')} of an ingredient into the holder the "
+                         f"unit makes its product in, where FOON's words leave it in another: {', '.join(wheres)}")
+
+
+def plan_counted(foon: Foon, kitchen: Kitchen, goal: Goal, encoding: str = DEFAULT_ENCODING, level: int = 3, *,
+                 planner: str = DEFAULT_PLANNER, planner_cmd: str | None = None, optimal: bool = False,
+                 time_limit: float | None = None, prune: bool = True, costs: str | None = None,
+                 rates: Rates | None = None, category_index: CategoryIndex | None = None,
+                 up_validate: bool = False, constraints: Constraints | None = None, search=None,
+                 instances: tuple[tuple[str, int], ...] = (),
+                 categories: tuple[tuple[str, tuple[str, ...]], ...] = (), cpu_limit: float | None = None) -> PlanOutcome:
     """Compile `goal` over `foon` from `kitchen`, plan, and map the plan back to a validated task tree.
 
     `encoding` is any registered encoding; `category_index` is the category index of lifted ones (default: the shipped
