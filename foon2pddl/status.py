@@ -56,7 +56,10 @@ class CellStatus(StrEnum):
 
     `unsolvable`: proven (the fixpoint, a planner's proof); `gave up`: a planner's search
     stopped without a plan or a proof; `budget exhausted`: a native search's budget ran out.
-    `lost`: its worker died or its task was killed (no answer; a rerun redoes it).
+    `rejected`: a planner found a plan and the physical replay rejects it, and no count had a physically right
+    one (FOON's own words contradict each other where the plan works: docs/pddl.md, "Plans the replay rejects"); no
+    tree is returned, and a rerun gives the same answer. `lost`: its worker died or its task was killed (no
+    answer; a rerun redoes it).
     """
 
     SOLVED = "solved"
@@ -65,6 +68,7 @@ class CellStatus(StrEnum):
     BUDGET_EXHAUSTED = "budget exhausted"
     TIMEOUT = "timeout"
     ERROR = "error"
+    REJECTED = "rejected"
     LOST = "lost"
 
 

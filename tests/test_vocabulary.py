@@ -33,8 +33,9 @@ def test_statuses_are_their_old_strings():
 def test_every_plan_and_retrieval_status_maps_to_a_cell_status():
     for status in (*PlanStatus, *RetrievalStatus):
         assert cell_status(status) in CellStatus
-    # every cell status but a lost worker's comes from a solver's status
-    assert {cell_status(s) for s in (*PlanStatus, *RetrievalStatus)} == set(CellStatus) - {"lost"}
+    # every cell status but a lost worker's and a rejected plan's (a planner's `error` whose plan the physical
+    # replay rejects: experiment.outcomes.plan_outcome reads it off the outcome) comes from a solver's status
+    assert {cell_status(s) for s in (*PlanStatus, *RetrievalStatus)} == set(CellStatus) - {"lost", "rejected"}
     # a proof of unsolvability and a search that gave up stay apart
     assert cell_status(PlanStatus.UNSOLVABLE) is not cell_status(PlanStatus.GAVE_UP)
     assert cell_status(RetrievalStatus.UNREACHABLE) is CellStatus.UNSOLVABLE

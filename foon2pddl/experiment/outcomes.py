@@ -101,9 +101,11 @@ def _bound(result) -> tuple[float | None, float | None]:
 def plan_outcome(outcome, steps: tuple[str, ...], kitchen_nodes=None, per_item: int = 1) -> Outcome:
     """Outcome of a planner run mapped back to a tree (`PlanOutcome`). A plan over physical objects (its
     `trace`) is executable when it decodes (decoding replays it: `planners.decode.check_trace`, with
-    holders the relational replay); another valid tree is scheduled over the objects of `kitchen_nodes`
+    holders the relational replay: a plan it rejects is `rejected`, with no tree); another valid tree is scheduled over the objects of `kitchen_nodes`
     when given (`physical`)."""
     times = dict(outcome.timings)
+    if outcome.rejected:  # a plan found and physically wrong: no tree, and not a bug (`CellStatus.REJECTED`)
+        return Outcome(CellStatus.REJECTED, outcome.message, times, None, len(steps) if steps else None)
     tree = outcome.tree
     units = len(tree) if tree is not None else None
     status = cell_status(outcome.status)  # `error` when a plan was found that does not decode or validate

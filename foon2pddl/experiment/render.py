@@ -255,10 +255,14 @@ def optimality_md(data: ReportData) -> str:
                      "median bound of the rest"], rows, "llrrrrr")
 
 
+#: Statuses given a column only when some cell has them (a lost worker; a plan the physical replay rejects).
+_SHOWN_IF_ANY = frozenset({CellStatus.LOST, CellStatus.REJECTED})
+
+
 def statuses_md(data: ReportData) -> str:
     """Cells per status for every solver and network, with the trees returned and validated."""
     rows = status_rows(data)
-    shown = [s for s in STATUSES if s != CellStatus.LOST or any(r.counts.get(s) for r in rows)]
+    shown = [s for s in STATUSES if s not in _SHOWN_IF_ANY or any(r.counts.get(s) for r in rows)]
     return md_table(["solver", "network", *shown, "trees returned", "validated", "pass FOON simulation"],
                     [[r.solver, net_name(r.network), *(r.counts.get(s, 0) for s in shown), r.trees, r.validated,
                       r.foon_valid] for r in rows], "ll" + "r" * (len(shown) + 3))
