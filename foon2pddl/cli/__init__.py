@@ -26,7 +26,7 @@ from ..planners.cleanup import command_scope
 from . import progress
 
 __all__ = ["COMMANDS", "main", "analyze_cmd", "batch", "batch_pddl", "check_cmd", "compile_cmd", "examples_cmd", "expand_cmd",
-           "experiment_cmd", "generalize_cmd", "goal_listing", "goals_cmd", "kitchen_note", "loading", "merge_cmd", "object_options", "options",
+           "experiment_cmd", "generalize_cmd", "goal_listing", "goals_cmd", "kitchen_note", "loading", "merge_cmd", "network_hints", "object_options", "options",
            "outputs", "plan_cmd", "progress", "reasons", "retrieve_cmd", "similarity_cmd", "skills_cli", "stats_cmd"]
 
 #: Command name -> the module (in this package) that defines it. The group imports a command's

@@ -31,6 +31,7 @@ from .loading import (
     view_goal,
     warn_unmatched_constraints,
 )
+from .network_hints import hint_lines, hint_words, networks_hint
 from .object_options import category_chains, checked_instances
 from .options import (
     check_time_limit,
@@ -44,7 +45,7 @@ from .options import (
 )
 from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
-from .reasons import beyond_foon_note, explained, failure_reason, hint_lines, hint_words, networks_hint
+from .reasons import beyond_foon_note, explained, failure_reason
 from .skills_cli import EXIT, check_skill_usage, plan_with_skills, skill_encoding, skill_options
 
 

@@ -23,6 +23,7 @@ from . import main
 from .batch import batch_entries, finish, write_trees
 from .goal_listing import goals_listing
 from .loading import constraint_inputs, load_view, view_goal
+from .network_hints import hint_lines, hint_words, networks_hint
 from .options import (
     chosen_similarity,
     constraints_options,
@@ -34,7 +35,7 @@ from .options import (
 )
 from .outputs import check_output, emit, expansion_notes
 from .progress import slow_step
-from .reasons import gen_reading_note, hint_lines, hint_words, networks_hint
+from .reasons import gen_reading_note
 
 
 class Limit(click.ParamType):
