@@ -182,3 +182,17 @@ def test_the_plan_again_with_fewer_is_bounded_by_cpu_not_by_a_shorter_wall_limit
     outcome = plan_restoring(_cuts(), KITCHEN, GOAL, "relational", time_limit=30)
     assert [o.label for o in outcome.trace.objects].count("knife") == 1, outcome.decoded.notes
     assert all(cpu is not None and cpu <= solve.RETRY_SECONDS for _, cpu in runs[1:])  # the retry's runs
+
+
+def test_a_kitchen_projected_to_a_coarser_level_keeps_which_counts_restoring_units_set():
+    """`Kitchen.restored` (`with_restore`: the counts the restoring units' peak set, for the note that says who gave
+    a count) survives `project`: a level-3 kitchen handed to an encoder at level 2 was rebuilt without it, and the
+    note said "given by the kitchen file" for a count no file stated (rv61's bfb2310 nit, reread61's F4)."""
+    from foon2pddl.model.levels import project_node
+    from foon2pddl.pddl.count_reasons import given_by
+
+    board = n("cutting board", "empty", make_state("with", "", ("onion",)))
+    kitchen = Kitchen(frozenset({board}), counts=((board, 3),), restored=frozenset({board}))
+    low = kitchen.project(2)
+    assert low.restored == {project_node(board, 2)} and low.restored <= low.stated_counts().keys()
+    assert given_by(project_node(board, 2), low, {}) == "set by the restoring units' peak"

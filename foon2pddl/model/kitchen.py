@@ -69,12 +69,13 @@ class Kitchen:
         for n, k in self.counts:  # nodes that become one at `level` add up their counts
             p = project_node(n, level)
             counts[p] = counts.get(p, 0) + k
+        restored = frozenset(project_node(n, level) for n in self.restored)  # who gave a count (`with_restore`)
         if self.scene:
-            return scene_kitchen([replace(o, node=project_node(o.node, level)) for o in self.scene], self.source,
-                                 level)
+            return replace(scene_kitchen([replace(o, node=project_node(o.node, level)) for o in self.scene],
+                                         self.source, level), restored=restored)
         lines = first_lines((project_node(n, level), line) for n, line in self.lines)  # merged nodes: the first
         return Kitchen(frozenset(project_node(n, level) for n in self.nodes), level, self.source,
-                       tuple(sorted(counts.items())), lines=tuple(sorted(lines.items())))
+                       tuple(sorted(counts.items())), lines=tuple(sorted(lines.items())), restored=restored)
 
     def line_numbers(self) -> dict[ObjectNode, int]:
         """Node -> the line of the kitchen's file that first lists it (nodes not read from a file line: absent)."""
