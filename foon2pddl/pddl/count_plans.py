@@ -95,9 +95,8 @@ def _other_makers(reach: Reachability, target: ObjectNode, together: bool, place
     objects by `score` (unfolded as they are) and have fewer units, or swap the one unit for the other and keep the
     rest where the other takes only some of the one's inputs (`_fewer_units`), one plan per (node, maker): a maker
     that fires in the fixpoint and does not need the node through first achievers (`count_together.needs`), in node
-    then FOON order; then those swaps together, each kept when it counts fewer again on the plan with those kept before and
-    pulls in nothing new there (`_fewer_units` against that plan, the unit it replaces that plan's maker of the node;
-    greedy, in that order), when that is another plan. The universal FOON's baked garlic bread: its first achiever of `bread (contains {garlic
+    then FOON order; then those swaps together, each kept when it counts fewer again (greedy, in that order), when
+    that is another plan. The universal FOON's baked garlic bread: its first achiever of `bread (contains {garlic
     butter}, on [cutting board])` is the spread at `0010-cheesy_garlic_bread.txt:176`, taking 0016's bowl of garlic
     butter and 0010's garlic butter in the food processor bowl, so both garlic-butter chains were counted; the spread
     at `0016-easy_garlic_bread-one-pot-chef.txt:125` makes that node from 0016's chain alone. `derive_counts` counts
@@ -124,13 +123,12 @@ def _other_makers(reach: Reachability, target: ObjectNode, together: bool, place
                     out[other] = None
                     kept.append((n, m))
     preset: dict[int, int] = {}
-    best, fewest, best_made = plan, least, made
+    best, fewest = plan, least
     for n, m in kept if len(kept) > 1 else ():  # together: each swap counted on the plan with those kept before
-        now: dict[int, int] = {}
-        both = _chosen(reach, target, together, False, placed, preset={**preset, n: m}, made_by=now, most=len(best))
-        if both not in (None, best) and _fewer_units(reach, both, best, best_made.get(n, -1), m) and (
+        both = _chosen(reach, target, together, False, placed, preset={**preset, n: m}, most=len(best) + 2)
+        if both is not None and (len(both) < len(best) or len(set(both) ^ set(best)) <= 2) and (
                 k := score(both, target)) < fewest:
-            preset, best, fewest, best_made = {**preset, n: m}, both, k, now
+            preset, best, fewest = {**preset, n: m}, both, k
     if best not in out and best != plan:
         out[best] = None
     return tuple(out)
@@ -138,9 +136,7 @@ def _other_makers(reach: Reachability, target: ObjectNode, together: bool, place
 
 def _fewer_units(reach: Reachability, alt: Sequence[int], plan: Sequence[int], u: int, m: int) -> bool:
     """Whether the plan `alt`, `plan` with unit `m` making a node of unit `u`'s, has fewer units, or swaps `u` for
-    `m` alone, `m` taking only some of `u`'s inputs (the peel that takes no knife): it pulls in nothing new. The one
-    rule for a swap, alone against the plan chosen first and together against the plan with the swaps kept before
-    (`_other_makers`)."""
+    `m` alone, `m` taking only some of `u`'s inputs (the peel that takes no knife): it pulls in nothing new."""
     ix = reach.index
     return len(alt) < len(plan) or (len(alt) == len(plan) and set(alt) ^ set(plan) == {u, m}
                                     and set(ix.inputs[m]) < set(ix.inputs[u]))
